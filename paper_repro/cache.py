@@ -1,0 +1,42 @@
+"""On-disk cache of long computations, keyed by their parameters.
+
+A cached value is the JSON of the computation's result (exact rationals as strings), stored in
+``.cache/<name>/<sha256 of the canonical parameters>.json`` together with the parameters
+themselves; a cache hit returns exactly what the computation returned, so caches never change
+results.  Bump :data:`CACHE_VERSION` when a computation's meaning changes.  Set
+``PAPER_REPRO_NO_CACHE=1`` to bypass the cache.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import os
+from collections.abc import Callable
+from typing import TypeVar
+
+from .io import ROOT, dumps, write_text
+
+CACHE_VERSION = 1
+CACHE_DIR = ROOT / ".cache"
+
+T = TypeVar("T")
+
+
+def key(name: str, params: dict) -> str:
+    canon = json.dumps({"v": CACHE_VERSION, "name": name, "params": params}, sort_keys=True)
+    return hashlib.sha256(canon.encode()).hexdigest()[:32]
+
+
+def cached(name: str, params: dict, compute: Callable[[], T]) -> T:
+    """Return ``compute()``, memoised on disk under ``name`` and the JSON-serialisable ``params``."""
+    if os.environ.get("PAPER_REPRO_NO_CACHE"):
+        return json.loads(dumps(compute()))
+    path = CACHE_DIR / name / f"{key(name, params)}.json"
+    if path.exists():
+        stored = json.loads(path.read_text())
+        if stored.get("params") == json.loads(json.dumps(params)):
+            return stored["value"]
+    value = json.loads(dumps(compute()))  # the same JSON form a cache hit returns
+    write_text(path, dumps({"name": name, "params": params, "value": value}))
+    return value

@@ -1,0 +1,132 @@
+"""Claim ``symmetry``: the cyclic relations and the six symmetry properties of Fig. oriented_graph(b).
+
+Transcribed verbatim from Section sec:RGB (exponents in the order of
+:data:`paper_repro.labels.SLOTS`), independent of the R formula + cyclic rule that
+:mod:`paper_repro.labels` uses to build G and B:
+
+* printed explicit G formulas (i <= n and i > n) and B formulas;
+* printed relations ``R_{2n,2n-i,j}(u,v,w) = R_{2n,i,j}(w,v,u)``, ``G_{2n,2n-i,j}(u,v,w) = G_{2n,i,j}(u,w,v)``,
+  ``B_{2n,2n-i,j}(u,v,w) = B_{2n,i,j}(v,u,w)`` (i > n);
+* caption of Fig. oriented_graph(b): R, G, B families are each symmetric in (w,u), (v,w), (u,v);
+  adjacent families R-G, G-B, B-R are exchanged by (v,u), (u,w), (w,v).
+
+Monomial identities are checked exactly on exponent vectors (a proof for each n in range) and
+numerically at high precision at random points (the evaluators themselves).
+"""
+
+from __future__ import annotations
+
+import mpmath
+import numpy as np
+
+from ..alphas import alpha_mp
+from ..basis import evaluate
+from ..labels import BasisLabel, compose, exponents, full_system
+from ..registry import Outcome, claim
+
+
+def printed_g(n: int, i: int, j: int) -> tuple[int, ...]:
+    """Printed G_{2n,2n-i,j}: i<=n: sin^{2n-i}(w/2) sin^i(v/2) cos^{i-j}(u/2) sin^j(u/2);
+    i>n: sin^i(v/2) sin^{2n-i}(w/2) cos^{2n-i-j}(u/2) sin^j(u/2)."""
+    if i <= n:
+        return (j, i - j, i, 0, 2 * n - i, 0)
+    return (j, 2 * n - i - j, i, 0, 2 * n - i, 0)
+
+
+def printed_b(n: int, i: int, j: int) -> tuple[int, ...]:
+    """Printed B_{2n,2n-i,j}: i<=n: sin^{2n-i}(v/2) sin^i(u/2) cos^{i-j}(w/2) sin^j(w/2);
+    i>n: sin^i(u/2) sin^{2n-i}(v/2) cos^{2n-i-j}(w/2) sin^j(w/2)."""
+    if i <= n:
+        return (i, 0, 2 * n - i, 0, j, i - j)
+    return (i, 0, 2 * n - i, 0, j, 2 * n - i - j)
+
+
+# Variable substitutions as the argument tuples fed to a function of (u, v, w).
+SWAP_UW, SWAP_VW, SWAP_UV = (2, 1, 0), (0, 2, 1), (1, 0, 2)
+
+#: Printed second-half relations X_{2n,2n-i,j}(u,v,w) = X_{2n,i,j}(sigma) for i > n.
+PRINTED_HALF = {"R": SWAP_UW, "G": SWAP_VW, "B": SWAP_UV}
+
+#: Fig. oriented_graph(b): (substitution, family, image family).
+SIX_PROPERTIES = [
+    ("(w,u)", SWAP_UW, "R", "R"), ("(v,w)", SWAP_VW, "G", "G"), ("(u,v)", SWAP_UV, "B", "B"),
+    ("(v,u)", SWAP_UV, "R", "G"), ("(u,w)", SWAP_UW, "G", "B"), ("(w,v)", SWAP_VW, "B", "R"),
+]
+
+
+def family_image(n: int, sub: tuple[int, int, int], color: str, target: str) -> dict[str, str] | None:
+    """Label map ``X(sub) -> Y`` if the substitution maps family ``color`` onto family ``target``."""
+    targets = {exponents(lab): lab.name for lab in full_system(n, target)}
+    out = {}
+    for lab in full_system(n, color):
+        img = compose(exponents(lab), sub)
+        if img not in targets:
+            return None
+        out[lab.name] = targets[img]
+    return out if len(set(out.values())) == len(targets) else None
+
+
+def structural_checks(n: int) -> list[str]:
+    """Exact (exponent-vector) checks; returns a list of failures (empty if all hold)."""
+    fails = []
+    for j in range(n + 1):
+        for i in range(j, 2 * n - j + 1):
+            if exponents(BasisLabel("G", n, i, j)) != printed_g(n, i, j):
+                fails.append(f"printed G_{{{2 * n},{2 * n - i},{j}}} != R(w,u,v)")
+            if exponents(BasisLabel("B", n, i, j)) != printed_b(n, i, j):
+                fails.append(f"printed B_{{{2 * n},{2 * n - i},{j}}} != R(v,w,u)")
+            if i > n:
+                for color, sub in PRINTED_HALF.items():
+                    lhs = exponents(BasisLabel(color, n, i, j))
+                    rhs = compose(exponents(BasisLabel(color, n, 2 * n - i, j)), sub)
+                    if lhs != rhs:
+                        fails.append(f"printed half relation fails for {color}_{{{2 * n},{2 * n - i},{j}}}")
+    for name, sub, color, target in SIX_PROPERTIES:
+        if family_image(n, sub, color, target) is None:
+            fails.append(f"substitution {name} does not map family {color} onto {target}")
+    return fails
+
+
+def numeric_check(n: int, alpha_text: str, count: int, dps: int, seed: int) -> mpmath.mpf:
+    """Max |X(sigma(p)) - Y(p)| over the six properties and the cyclic rule, at random points."""
+    rng = np.random.default_rng(seed)
+    with mpmath.workdps(dps):
+        alpha = alpha_mp(alpha_text)
+        bary = rng.dirichlet(np.ones(3), size=count)
+        pts = np.array([[alpha * mpmath.mpf(float(b)) for b in row[:2]] for row in bary], dtype=object)
+        pts = np.column_stack([pts, alpha - pts[:, 0] - pts[:, 1]])
+        worst = mpmath.mpf(0)
+        checks = [(sub, color, target) for _, sub, color, target in SIX_PROPERTIES]
+        checks += [((2, 0, 1), "R", "G"), ((1, 2, 0), "R", "B")]  # G(u,v,w) = R(w,u,v), B = R(v,w,u)
+        for sub, color, target in checks:
+            src = list(full_system(n, color))
+            if (sub, color, target) in checks[-2:]:
+                tgt = [BasisLabel(target, n, lab.i, lab.j) for lab in src]
+            else:
+                mp = family_image(n, sub, color, target)
+                by_name = {lab.name: lab
+                           for lab in full_system(n, target)}
+                tgt = [by_name[mp[lab.name]] for lab in src]
+            lhs = evaluate(n, alpha, pts[:, list(sub)], "mp", dps=dps, labels=src)
+            rhs = evaluate(n, alpha, pts, "mp", dps=dps, labels=tgt)
+            worst = max(worst, max(abs(x) for x in (lhs - rhs).reshape(-1)))
+        return worst
+
+
+@claim("symmetry", paper_ref=["fig:oriented_graph", "R_system_geq_n", "G_system", "B_system"],
+       statement="The printed G and B formulas equal R(w,u,v) and R(v,w,u); the printed half relations and "
+                 "the six symmetry properties of Fig. oriented_graph(b) hold.",
+       kind="proof", n_max=10, alphas=["pi/6", "pi/2", "5pi/6"], points=8, dps=40, seed=7)
+def run(n_max: int, alphas: list[str], points: int, dps: int, seed: int) -> Outcome:
+    fails = {n: structural_checks(n) for n in range(1, n_max + 1)}
+    fails = {str(n): f for n, f in fails.items() if f}
+    worst = mpmath.mpf(0)
+    for n in range(1, n_max + 1):
+        for k, a in enumerate(alphas):
+            worst = max(worst, numeric_check(n, a, points, dps, seed + 100 * n + k))
+    tol = mpmath.mpf(10) ** (-(dps - 10))
+    maps = {name: family_image(2, sub, c, t) for name, sub, c, t in SIX_PROPERTIES}
+    return Outcome(not fails and worst <= tol, {
+        "exact_monomial_checks": "all hold" if not fails else fails, "n_range": [1, n_max],
+        "numeric_max_abs_error": mpmath.nstr(worst, 3), "numeric_tolerance": f"1e-{dps - 10}",
+        "label_maps_n_2": maps})

@@ -1,0 +1,79 @@
+"""Command line: ``python -m paper_repro {claims,figures,reproduce,labels}``.
+
+* ``claims [--only ID ...] [--n N] [--alpha A] [--extended]`` -- run claims and print the table.
+  A full run (no ``--only``/``--n``/``--alpha``) also writes ``data/``; a partial run only prints.
+* ``figures [--only ID ...]`` -- regenerate figures, ``figures/manifest.json`` and the gallery.
+* ``reproduce [--extended]`` -- everything: claims, data, figures, gallery; exit 1 if a claim fails.
+* ``labels N`` -- the paper labels of T_{2n} with their internal indices and exponents.
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+
+from . import report
+from .labels import SLOTS, exponents, united_system
+from .registry import CLAIMS, FIGURES, load_all
+
+
+def _parse_alpha(text: str) -> str:
+    from .alphas import alpha_float
+
+    alpha_float(text)  # validates: ValueError names alpha and the range
+    return text
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(prog="python -m paper_repro", description=__doc__,
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+    sub = parser.add_subparsers(dest="cmd", required=True)
+    pc = sub.add_parser("claims", help="run registered claims")
+    pc.add_argument("--only", nargs="+", metavar="ID", help="claim ids to run")
+    pc.add_argument("--n", type=int, help="run at this order n only (claims that take n)")
+    pc.add_argument("--alpha", type=str, help="run at this alpha only, e.g. 'pi/3' or '1.2'")
+    pc.add_argument("--extended", action="store_true", help="use the extended parameter ranges")
+    pf = sub.add_parser("figures", help="regenerate figures and the gallery")
+    pf.add_argument("--only", nargs="+", metavar="ID")
+    pr = sub.add_parser("reproduce", help="claims, data, figures and gallery")
+    pr.add_argument("--extended", action="store_true")
+    pl = sub.add_parser("labels", help="print the labels of T_{2n}")
+    pl.add_argument("n", type=int)
+    args = parser.parse_args(argv)
+    load_all()
+    try:
+        if args.cmd == "labels":
+            for k, lab in enumerate(united_system(args.n)):
+                e = exponents(lab)
+                mono = " ".join(f"{SLOTS[s]}^{e[s]}" for s in range(6) if e[s])
+                print(f"{k:4d}  {lab.paper:14s} level {lab.j}  {mono}")
+            return 0
+        if args.cmd == "claims":
+            unknown = sorted(set(args.only or []) - set(CLAIMS))
+            if unknown:
+                raise ValueError(f"--only: unknown claim id(s) {unknown}; known: {sorted(CLAIMS)}")
+            overrides = {}
+            if args.n is not None:
+                from .validation import check_n
+
+                n = check_n(args.n, "--n")
+                overrides.update(ns=[n], n_min=n, n_max=n, bernstein_ns=[n], ns_numeric=[n], n_exact_max=n)
+            if args.alpha is not None:
+                overrides.update(alphas=[_parse_alpha(args.alpha)])
+            partial = bool(args.only or overrides)
+            ok = report.run_claims(args.only, overrides, extended=args.extended, write=not partial)
+            return 0 if ok else 1
+        if args.cmd == "figures":
+            unknown = sorted(set(args.only or []) - set(FIGURES))
+            if unknown:
+                raise ValueError(f"--only: unknown figure id(s) {unknown}; known: {sorted(FIGURES)}")
+            report.make_figures(args.only)
+            return 0
+        if args.cmd == "reproduce":
+            ok = report.run_claims(None, {}, extended=args.extended, write=True)
+            report.make_figures(None)
+            return 0 if ok else 1
+    except ValueError as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return 2
+    return 0

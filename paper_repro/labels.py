@@ -1,0 +1,184 @@
+"""The index set of T_{2n}^alpha and the single map between paper labels and internal indices.
+
+Every function of the joint system (eq. ``united_system``) is a monomial in the six half-angle
+values ``sin(u/2), cos(u/2), sin(v/2), cos(v/2), sin(w/2), cos(w/2)``.  This module stores each
+function as its paper label together with its exponent vector; every evaluator of the package
+(:mod:`paper_repro.basis`) works from these exponent vectors, so the formulas of
+eqs. ``R_system_leq_n``, ``R_system_geq_n`` are written exactly once, here.
+
+Paper conventions (Section ``sec:RGB``):
+
+* ``R_{2n,2n-i,j}`` with level ``j = 0..n`` and ``i = j..2n-j`` (eq. ``R_system``);
+  for ``i <= n`` (eq. ``R_system_leq_n``)::
+
+      R_{2n,2n-i,j}(u,v,w) = sin^{2n-i}(u/2) sin^i(w/2) cos^{i-j}(v/2) sin^j(v/2)
+
+  and for ``i > n`` (eq. ``R_system_geq_n``)::
+
+      R_{2n,2n-i,j}(u,v,w) = sin^i(w/2) sin^{2n-i}(u/2) cos^{2n-i-j}(v/2) sin^j(v/2).
+
+* ``G_{...}(u,v,w) = R_{...}(w,u,v)`` and ``B_{...}(u,v,w) = R_{...}(v,w,u)`` (eq. ``G_system``,
+  ``B_system``); the explicit G and B formulas printed in the paper are transcribed separately in
+  :mod:`paper_repro.claims.symmetry` and compared with these.
+* ``T_{2n}`` (eq. ``united_system``) keeps, for each colour, the levels ``j = 0..n-1`` with
+  ``i = j..2n-1-j``, plus the centre ``R_{2n,n,n} = G_{2n,n,n} = B_{2n,n,n}``.
+
+Internal order of ``T_{2n}`` (the one used for every matrix, vector and control net): first the
+centre, then colours R, G, B; within a colour by level ``j`` ascending, then by ``i`` ascending.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+from functools import cache
+
+import numpy as np
+
+from .validation import check_n
+
+COLORS = ("R", "G", "B")
+
+#: Slots of an exponent vector: sin/cos of u/2, v/2, w/2.
+SLOTS = ("sin u/2", "cos u/2", "sin v/2", "cos v/2", "sin w/2", "cos w/2")
+
+
+@dataclass(frozen=True)
+class BasisLabel:
+    """One function of the systems R_{2n}, G_{2n}, B_{2n}.
+
+    ``color`` is ``"R"``, ``"G"`` or ``"B"``; ``n`` the order; ``i`` and ``j`` the paper's running
+    indices, so that the paper label is ``{color}_{2n,2n-i,j}``.
+    """
+
+    color: str
+    n: int
+    i: int
+    j: int
+
+    @property
+    def first(self) -> int:
+        """The middle index ``2n - i`` of the label."""
+        return 2 * self.n - self.i
+
+    @property
+    def is_centre(self) -> bool:
+        return self.i == self.n and self.j == self.n
+
+    @property
+    def name(self) -> str:
+        """Label in the function's own colour, e.g. ``G_{4,2,2}`` for the centre seen as a G function."""
+        return f"{self.color}_{{{2 * self.n},{self.first},{self.j}}}"
+
+    @property
+    def paper(self) -> str:
+        """Paper label, e.g. ``R_{4,3,1}``; the centre is always written ``R_{2n,n,n}``."""
+        color = "R" if self.is_centre else self.color
+        return f"{color}_{{{2 * self.n},{self.first},{self.j}}}"
+
+    @property
+    def coefficient(self) -> str:
+        """Paper name of the normalizing coefficient, e.g. ``r_{4,3,1}``."""
+        return self.paper[0].lower() + self.paper[1:]
+
+    @property
+    def control_point(self) -> str:
+        """Paper name of the control point, e.g. ``r_{4,3,1}`` (bold in the paper)."""
+        return self.coefficient
+
+
+def r_exponents(n: int, i: int, j: int) -> tuple[int, int, int, int, int, int]:
+    """Exponents of ``R_{2n,2n-i,j}`` (eqs. R_system_leq_n, R_system_geq_n) in :data:`SLOTS`."""
+    if not (0 <= j <= n and j <= i <= 2 * n - j):
+        raise ValueError(f"(i, j) = ({i}, {j}) is not an index of R_{{2n}} for n = {n}")
+    m = i if i <= n else 2 * n - i  # cos power of v/2 is m - j in both branches
+    return (2 * n - i, 0, j, m - j, i, 0)
+
+
+# Action of a permutation of the variables on exponent vectors.  A function F(u,v,w) composed
+# with a substitution is again a monomial; ``_compose`` gives the exponents of
+# F(x_{s[0]}, x_{s[1]}, x_{s[2]}) where x = (u, v, w).
+def compose(exps: tuple[int, ...], s: tuple[int, int, int]) -> tuple[int, ...]:
+    """Exponents of ``F(x[s[0]], x[s[1]], x[s[2]])`` given the exponents of ``F(u, v, w)``."""
+    out = [0] * 6
+    for slot in range(3):  # argument position of F
+        target = s[slot]  # variable that is fed into that position
+        out[2 * target] += exps[2 * slot]
+        out[2 * target + 1] += exps[2 * slot + 1]
+    return tuple(out)
+
+
+#: G(u,v,w) = R(w,u,v) and B(u,v,w) = R(v,w,u): the arguments fed to R, as variable indices.
+CYCLIC = {"R": (0, 1, 2), "G": (2, 0, 1), "B": (1, 2, 0)}
+
+
+def exponents(label: BasisLabel) -> tuple[int, ...]:
+    """Exponent vector of any R, G or B function, from the R formula and the cyclic rule."""
+    return compose(r_exponents(label.n, label.i, label.j), CYCLIC[label.color])
+
+
+@cache
+def full_system(n: int, color: str) -> tuple[BasisLabel, ...]:
+    """The full system ``R_{2n}``, ``G_{2n}`` or ``B_{2n}`` (eqs. R_system..B_system), (n+1)^2 labels."""
+    check_n(n)
+    return tuple(BasisLabel(color, n, i, j) for j in range(n + 1) for i in range(j, 2 * n - j + 1))
+
+
+@cache
+def united_system(n: int) -> tuple[BasisLabel, ...]:
+    """The labels of ``T_{2n}`` (eq. united_system) in the package's internal order."""
+    check_n(n)
+    labels = [BasisLabel("R", n, n, n)]
+    for color in COLORS:
+        labels += [BasisLabel(color, n, i, j) for j in range(n) for i in range(j, 2 * n - j)]
+    return tuple(labels)
+
+
+@cache
+def exponent_matrix(n: int) -> np.ndarray:
+    """``(delta_n, 6)`` integer array: the exponent vectors of ``T_{2n}`` in internal order."""
+    arr = np.array([exponents(lab) for lab in united_system(n)], dtype=np.int64)
+    arr.setflags(write=False)
+    return arr
+
+
+@cache
+def index_of(n: int) -> dict[str, int]:
+    """Map from paper label (``'R_{4,3,1}'``, also ``'r_{4,3,1}'``) to internal index in T_{2n}.
+
+    Aliases are included: every label of the full systems R_{2n}, G_{2n}, B_{2n} that denotes
+    the same function as a member of T_{2n} (e.g. ``R_{2n,0,0} = G_{2n,2n,0}``, the centre
+    ``G_{2n,n,n}``) maps to that member's index.
+    """
+    by_exps = {exponents(lab): k for k, lab in enumerate(united_system(n))}
+    out: dict[str, int] = {}
+    for color in COLORS:
+        for lab in full_system(n, color):
+            k = by_exps[exponents(lab)]
+            name = f"{color}_{{{2 * n},{lab.first},{lab.j}}}"
+            out[name] = k
+            out[name[0].lower() + name[1:]] = k
+    return out
+
+
+_LABEL_RE = re.compile(r"^([RGBrgb])_\{?(\d+),(\d+),(\d+)\}?$")
+
+
+def parse_label(text: str) -> BasisLabel:
+    """Parse ``'R_{4,3,1}'``, ``'g_{6,5,0}'`` or ``'R_4,3,1'`` into a :class:`BasisLabel`."""
+    m = _LABEL_RE.match(text.strip())
+    if not m:
+        raise ValueError(f"label {text!r} is not of the form X_{{2n,2n-i,j}} with X in R, G, B")
+    color, two_n, first, j = m.group(1).upper(), int(m.group(2)), int(m.group(3)), int(m.group(4))
+    if two_n % 2 or two_n == 0:
+        raise ValueError(f"label {text!r}: the first index must be 2n with n >= 1")
+    n = two_n // 2
+    lab = BasisLabel(color, n, two_n - first, j)
+    r_exponents(n, lab.i, lab.j)  # validates the range
+    return lab
+
+
+def delta(n: int) -> int:
+    """The printed dimension formula delta_n = 3n(n+1) + 1 (Theorem joint_systems_linear_independence)."""
+    check_n(n)
+    return 3 * n * (n + 1) + 1

@@ -1,0 +1,144 @@
+"""Claim and figure registries.
+
+A *claim* is a statement of the paper checked by a program.  Each claim module registers a
+function with :func:`claim`; the function receives its parameters as keyword arguments and
+returns an :class:`Outcome`.  :func:`run_claim` turns that into a :class:`ClaimResult`, the record
+written to ``data/claims.json``.
+
+A *figure* is registered with :func:`figure`; the function receives the output folder and returns
+the files it wrote.
+
+Kinds of claim (say what is proven and what is evidence):
+
+* ``proof`` -- exhaustive or exact checks that settle the statement for the stated range;
+* ``exact-evidence`` -- exact arithmetic at sampled parameters (e.g. rational-tangent alpha);
+* ``numeric-evidence`` -- floating-point / high-precision checks at sampled parameters.
+"""
+
+from __future__ import annotations
+
+import importlib
+import time
+from collections.abc import Callable
+from dataclasses import asdict, dataclass, field
+from typing import Any
+
+KINDS = ("proof", "exact-evidence", "numeric-evidence")
+
+
+@dataclass
+class Outcome:
+    """What a claim function returns."""
+
+    passed: bool
+    measured: dict[str, Any]
+    kind: str | None = None  # overrides the registered kind when the run decides it
+    errata: list[dict[str, Any]] = field(default_factory=list)
+    #: data files to publish: path relative to ``data/`` -> JSON-able object, or str for text files
+    data: dict[str, Any] = field(default_factory=dict)
+
+
+@dataclass
+class ClaimResult:
+    id: str
+    paper_ref: list[str]
+    statement: str
+    kind: str
+    parameters: dict[str, Any]
+    measured: dict[str, Any]
+    status: str
+
+    def as_dict(self) -> dict[str, Any]:
+        return asdict(self)
+
+
+@dataclass
+class Claim:
+    id: str
+    paper_ref: list[str]
+    statement: str
+    kind: str
+    func: Callable[..., Outcome]
+    defaults: dict[str, Any]
+    extended: dict[str, Any] | None = None  # parameters for `make reproduce-extended`
+
+
+@dataclass
+class Figure:
+    id: str
+    caption: str
+    paper_label: str | None
+    func: Callable[..., list]
+    module: str
+    outputs: list[str]  # file names written into figures/
+
+
+CLAIMS: dict[str, Claim] = {}
+FIGURES: dict[str, Figure] = {}
+
+#: Modules that register claims and figures, in report order.
+CLAIM_MODULES = (
+    "paper_repro.claims.dimension",
+    "paper_repro.claims.boundary",
+    "paper_repro.claims.symmetry",
+    "paper_repro.claims.univariate",
+)
+FIGURE_MODULES = (
+    "paper_repro.figures.graph",
+)
+
+
+def claim(id: str, *, paper_ref: list[str], statement: str, kind: str, extended: dict | None = None,
+          **defaults: Any) -> Callable[[Callable[..., Outcome]], Callable[..., Outcome]]:
+    """Register a claim function under ``id`` with default parameters ``defaults``."""
+    if kind not in KINDS:
+        raise ValueError(f"kind must be one of {KINDS}, got {kind!r}")
+
+    def deco(func: Callable[..., Outcome]) -> Callable[..., Outcome]:
+        if id in CLAIMS:
+            raise ValueError(f"claim {id!r} registered twice")
+        CLAIMS[id] = Claim(id, list(paper_ref), statement, kind, func, dict(defaults), extended)
+        return func
+
+    return deco
+
+
+def figure(id: str, *, caption: str, outputs: list[str], paper_label: str | None = None) -> Callable:
+    """Register a figure generator ``func(outdir) -> list[Path]`` that writes ``outputs`` into outdir."""
+
+    def deco(func: Callable[..., list]) -> Callable[..., list]:
+        if id in FIGURES:
+            raise ValueError(f"figure {id!r} registered twice")
+        FIGURES[id] = Figure(id, caption, paper_label, func, func.__module__, list(outputs))
+        return func
+
+    return deco
+
+
+def load_all() -> None:
+    """Import every claim and figure module (registration happens on import)."""
+    for mod in CLAIM_MODULES + FIGURE_MODULES:
+        importlib.import_module(mod)
+
+
+def run_claim(c: Claim, overrides: dict[str, Any] | None = None, extended: bool = False
+              ) -> tuple[ClaimResult, Outcome, float]:
+    """Run one claim; returns its result, the raw outcome (errata, data files), and the seconds it took."""
+    params = dict(c.defaults)
+    if extended and c.extended:
+        params.update(c.extended)
+    for k, v in (overrides or {}).items():
+        if k in params:
+            params[k] = v
+    t0 = time.perf_counter()
+    try:
+        out = c.func(**params)
+    except Exception as exc:  # a crashing check is a failing claim, reported as such
+        out = Outcome(False, {"error": f"{type(exc).__name__}: {exc}"})
+    seconds = time.perf_counter() - t0
+    kind = out.kind or c.kind
+    if kind not in KINDS:
+        raise ValueError(f"claim {c.id}: kind {kind!r} not in {KINDS}")
+    result = ClaimResult(c.id, c.paper_ref, c.statement, kind, params, out.measured,
+                         "pass" if out.passed else "fail")
+    return result, out, seconds

@@ -1,0 +1,48 @@
+import json
+import subprocess
+import sys
+
+import pytest
+
+from paper_repro.io import atomic_path, write_json
+from paper_repro.report import gallery_html
+
+
+def _cli(*args):
+    return subprocess.run([sys.executable, "-m", "paper_repro", *args], capture_output=True, text=True)
+
+
+def test_cli_claims_only_partial_run():
+    r = _cli("claims", "--only", "dimension", "--n", "4")
+    assert r.returncode == 0, r.stderr
+    assert "dimension" in r.stdout and "PASS" in r.stdout
+
+
+@pytest.mark.parametrize("args,msg", [(("claims", "--n", "0"), "--n must be a positive integer"),
+                                      (("claims", "--alpha", "4"), "alpha must lie"),
+                                      (("claims", "--only", "nope"), "unknown claim")])
+def test_cli_bad_input(args, msg):
+    r = _cli(*args)
+    assert r.returncode == 2 and msg in r.stderr
+
+
+def test_cli_labels():
+    r = _cli("labels", "1")
+    assert r.returncode == 0 and "R_{2,1,1}" in r.stdout
+
+
+def test_atomic_write_leaves_nothing_on_error(tmp_path):
+    target = tmp_path / "x.json"
+    with pytest.raises(RuntimeError):
+        with atomic_path(target) as tmp:
+            tmp.write_text("half")
+            raise RuntimeError("boom")
+    assert not target.exists() and list(tmp_path.iterdir()) == []
+    write_json(target, {"a": 1})
+    assert json.loads(target.read_text()) == {"a": 1}
+
+
+def test_gallery_is_offline():
+    page = gallery_html([{"id": "x", "caption": "c", "paper_label": None, "generator": "m:f",
+                          "outputs": ["figures/x.png"]}])
+    assert "http" not in page.replace("arXiv", "")
