@@ -17,7 +17,7 @@ from dataclasses import dataclass
 
 import mpmath
 import numpy as np
-from flint import fmpq, fmpq_mat, nmod_mat
+from flint import arb, fmpq, fmpq_mat, nmod_mat
 
 #: Default prime for modular computations (the Mersenne prime 2^31 - 1).
 DEFAULT_PRIME = 2_147_483_647
@@ -109,6 +109,25 @@ class ModpArith(Arith):
         if q == 0:
             raise ValueError(f"p = {self.p} divides the denominator of {x}; choose another prime")
         return int(x.p) * pow(q, -1, self.p) % self.p
+
+
+@dataclass(frozen=True)
+class BallArith(Arith):
+    """Ball arithmetic with python-flint ``arb`` (precision set by ``flint.ctx.prec``)."""
+
+    name: str = "ball"
+
+    def asarray(self, values) -> np.ndarray:
+        out = np.empty(np.shape(values), dtype=object)
+        flat = out.reshape(-1)
+        for k, x in enumerate(np.asarray(values, dtype=object).reshape(-1)):
+            flat[k] = arb(x)
+        return out
+
+    def ones(self, shape: tuple[int, ...]) -> np.ndarray:
+        out = np.empty(shape, dtype=object)
+        out.fill(arb(1))
+        return out
 
 
 def get_arith(arith: str | Arith = "float", *, dps: int = 50, p: int = DEFAULT_PRIME) -> Arith:

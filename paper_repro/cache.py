@@ -17,7 +17,7 @@ from typing import TypeVar
 
 from .io import ROOT, dumps, write_text
 
-CACHE_VERSION = 1
+CACHE_VERSION = 2
 CACHE_DIR = ROOT / ".cache"
 
 T = TypeVar("T")

@@ -77,12 +77,17 @@ class RationalPoints:
     alpha: RationalAngle
     tu: tuple[fmpq, ...]
     tv: tuple[fmpq, ...]
+    #: ``False`` allows points of the whole plane u + v + w = alpha (used for collocation of identities
+    #: that hold on the plane, see :mod:`paper_repro.normalization`).
+    check: bool = True
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "tu", tuple(_q(x) for x in self.tu))
         object.__setattr__(self, "tv", tuple(_q(x) for x in self.tv))
         if len(self.tu) != len(self.tv):
             raise ValueError("points: tu and tv must have the same length")
+        if not self.check:
+            return
         for x in self.tu + self.tv:
             if not (0 <= x < 1):
                 raise ValueError(f"points: quarter-angle tangents must lie in [0, 1), got {x}")
@@ -174,13 +179,17 @@ def half_angle_values(points, alpha, arith: Arith) -> list[np.ndarray]:
     if arith.name in ("exact", "modp"):
         raise ValueError(f"arith {arith.name!r} needs RationalPoints (rational quarter-angle tangents)")
     arr = check_points(points, alpha)
+    return plane_half_angle_values(arr, arith)
+
+
+def plane_half_angle_values(uvw: np.ndarray, arith: Arith) -> list[np.ndarray]:
+    """Half-angle sines/cosines of ``(P, 3)`` points of the plane, unchecked (``float`` or ``mp``)."""
     if arith.name == "float":
-        half = arr.astype(np.float64) / 2
+        half = np.asarray(uvw, dtype=np.float64) / 2
         s, c = np.sin(half), np.cos(half)
-        return [s[:, 0], c[:, 0], s[:, 1], c[:, 1], s[:, 2], c[:, 2]]
-    half = arith.asarray(arr) / 2
-    sin, cos = np.frompyfunc(mpmath.sin, 1, 1), np.frompyfunc(mpmath.cos, 1, 1)
-    s, c = sin(half), cos(half)
+    else:
+        half = arith.asarray(uvw) / 2
+        s, c = np.frompyfunc(mpmath.sin, 1, 1)(half), np.frompyfunc(mpmath.cos, 1, 1)(half)
     return [s[:, 0], c[:, 0], s[:, 1], c[:, 1], s[:, 2], c[:, 2]]
 
 

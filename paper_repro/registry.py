@@ -82,9 +82,13 @@ CLAIM_MODULES = (
     "paper_repro.claims.boundary",
     "paper_repro.claims.symmetry",
     "paper_repro.claims.univariate",
+    "paper_repro.claims.partition_of_unity",
+    "paper_repro.claims.normalizing_closed_forms",
+    "paper_repro.claims.nonnegativity",
 )
 FIGURE_MODULES = (
     "paper_repro.figures.graph",
+    "paper_repro.figures.normalization_plots",
 )
 
 
