@@ -40,3 +40,14 @@ def cached(name: str, params: dict, compute: Callable[[], T]) -> T:
     value = json.loads(dumps(compute()))  # the same JSON form a cache hit returns
     write_text(path, dumps({"name": name, "params": params, "value": value}))
     return value
+
+
+def code_fingerprint() -> str:
+    """sha256 of every source file of the package: part of the key of cached claim results, so that
+    any change of the code invalidates them."""
+    h = hashlib.sha256()
+    pkg = ROOT / "paper_repro"
+    for path in sorted(pkg.rglob("*.py")):
+        h.update(path.relative_to(pkg).as_posix().encode())
+        h.update(path.read_bytes())
+    return h.hexdigest()[:16]

@@ -210,35 +210,36 @@ def sample_points(alpha, count: int, seed: int = 0, interior: bool = True) -> np
 
 
 def sample_rational_points(alpha: RationalAngle, count: int, seed: int = 0,
-                           denominator: int | None = None) -> RationalPoints:
-    """``count`` seeded random interior rational points (quarter-angle tangents with given denominator).
+                           max_denominator: int = 1000) -> RationalPoints:
+    """``count`` seeded random interior rational points of Omega^alpha.
 
-    Chooses u/4 and v/4 with tangents ``k/denominator`` such that u + v < alpha strictly; distinct
-    points are returned (duplicates are skipped).  The default denominator grows with ``count`` so
-    that the grid always holds enough points.
+    Barycentric coordinates are drawn uniformly (as :func:`sample_points`), and the quarter-angle
+    tangents of u and v are rounded to rationals with denominator <= ``max_denominator``; points
+    outside the domain after rounding and duplicates are redrawn.  (Points on a common grid line
+    u = const would make collocation matrices rank deficient: the restriction of T_{2n} to such a
+    line has dimension <= 2n + 1, so generic points are needed.)
     """
+    from fractions import Fraction
+
     rng = np.random.default_rng(seed)
     a = float(alpha)
-    if denominator is None:
-        denominator = max(31, int(3 * math.sqrt(count) / math.tan(a / 4)) + 1)
-    seen: set[tuple[int, int]] = set()
+    seen: set[tuple[fmpq, fmpq]] = set()
     tus: list[fmpq] = []
     tvs: list[fmpq] = []
-    limit = math.tan(a / 4)
-    kmax = max(2, int(limit * denominator))
     attempts = 0
     while len(tus) < count:
         attempts += 1
-        if attempts > 200 * count + 1000:
-            raise ValueError(f"could not find {count} distinct rational points; raise the denominator")
-        ku, kv = (int(x) for x in rng.integers(1, kmax, size=2))
-        if (ku, kv) in seen:
+        if attempts > 100 * count + 1000:
+            raise ValueError(f"could not find {count} distinct rational points; raise max_denominator")
+        x, y, _ = 0.98 * rng.dirichlet(np.ones(3)) + 0.02 / 3
+        fu = Fraction(math.tan(a * x / 4)).limit_denominator(max_denominator)
+        fv = Fraction(math.tan(a * y / 4)).limit_denominator(max_denominator)
+        key = (fmpq(fu.numerator, fu.denominator), fmpq(fv.numerator, fv.denominator))
+        if key in seen or key[0] <= 0 or key[1] <= 0:
             continue
-        u = 4 * math.atan(ku / denominator)
-        v = 4 * math.atan(kv / denominator)
-        if u + v >= a * (1 - 1e-9):
+        if 4 * math.atan(float(fu)) + 4 * math.atan(float(fv)) >= a * (1 - 1e-9):
             continue
-        seen.add((ku, kv))
-        tus.append(fmpq(ku, denominator))
-        tvs.append(fmpq(kv, denominator))
+        seen.add(key)
+        tus.append(key[0])
+        tvs.append(key[1])
     return RationalPoints(alpha, tuple(tus), tuple(tvs))

@@ -23,6 +23,8 @@ from collections.abc import Callable
 from dataclasses import asdict, dataclass, field
 from typing import Any
 
+from .cache import cached, code_fingerprint
+
 KINDS = ("proof", "exact-evidence", "numeric-evidence")
 
 
@@ -85,10 +87,16 @@ CLAIM_MODULES = (
     "paper_repro.claims.partition_of_unity",
     "paper_repro.claims.normalizing_closed_forms",
     "paper_repro.claims.nonnegativity",
+    "paper_repro.claims.linear_independence",
+    "paper_repro.claims.derivative_signs",
+    "paper_repro.claims.equivalence_classes",
+    "paper_repro.claims.coincidence",
+    "paper_repro.claims.basis_transformation",
 )
 FIGURE_MODULES = (
     "paper_repro.figures.graph",
     "paper_repro.figures.normalization_plots",
+    "paper_repro.figures.independence",
 )
 
 
@@ -135,10 +143,17 @@ def run_claim(c: Claim, overrides: dict[str, Any] | None = None, extended: bool 
         if k in params:
             params[k] = v
     t0 = time.perf_counter()
-    try:
-        out = c.func(**params)
-    except Exception as exc:  # a crashing check is a failing claim, reported as such
-        out = Outcome(False, {"error": f"{type(exc).__name__}: {exc}"})
+
+    def compute() -> dict:
+        try:
+            out = c.func(**params)
+        except Exception as exc:  # a crashing check is a failing claim, reported as such
+            out = Outcome(False, {"error": f"{type(exc).__name__}: {exc}"})
+        return asdict(out)
+
+    # whole-claim cache: keyed by id, parameters and the package source (see cache.code_fingerprint)
+    stored = cached("claims", {"id": c.id, "params": params, "code": code_fingerprint()}, compute)
+    out = Outcome(**stored)
     seconds = time.perf_counter() - t0
     kind = out.kind or c.kind
     if kind not in KINDS:

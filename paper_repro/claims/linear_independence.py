@@ -1,0 +1,96 @@
+"""Claim ``linear_independence``: Theorem joint_systems_linear_independence.
+
+* High precision: the delta_n x delta_n collocation matrix of the normalized system T-bar_{2n} at
+  seeded interior points; singular values by mpmath SVD (n <= svd_n_max) or a certified lower bound
+  of sigma_min from the ball-arithmetic inverse (larger n); rank by the gap criterion of
+  :func:`paper_repro.rank.numeric_rank`; the precision is doubled while sigma_min/sigma_max is within
+  20 digits of the working precision.
+* Exact certificate: the collocation matrix at rational points (rational quarter tangents) reduced
+  modulo the prime 2^31 - 1; full rank over F_p implies full rank over Q, i.e. linear independence
+  of T_{2n}^alpha *for that alpha* (a proof for each sampled alpha).
+* Negative control: one function replaced by the sum of two others must be rank deficient by both.
+"""
+
+from __future__ import annotations
+
+import mpmath
+import numpy as np
+from flint import fmpq
+from tqdm import tqdm
+
+from ..alphas import alpha_mp
+from ..arith import ModpArith
+from ..basis import evaluate
+from ..domain import rational_alpha, sample_rational_points
+from ..labels import delta
+from ..normalization import evaluate_normalized
+from ..rank import ball_sigma_min_bound, modp_rank, mp_domain_points, mp_singular_values, numeric_rank
+from ..registry import Outcome, claim
+
+
+def collocation_mp(n: int, alpha_text: str, dps: int, seed: int, control: bool = False) -> np.ndarray:
+    with mpmath.workdps(dps):
+        alpha = alpha_mp(alpha_text)
+        a = evaluate_normalized(n, alpha, mp_domain_points(alpha, delta(n), seed), "mp", dps=dps)
+        if control:
+            a[:, -1] = a[:, 0] + a[:, 1]
+        return a
+
+
+def numeric_case(n: int, alpha_text: str, dps: int, svd_n_max: int, seed: int, control: bool = False) -> dict:
+    for _ in range(4):
+        a = collocation_mp(n, alpha_text, dps, seed, control)
+        if n <= svd_n_max:
+            sv = mp_singular_values(a, dps)
+            smin, smax, rank = sv[-1], sv[0], numeric_rank(sv, dps)
+            method = "mpmath SVD"
+        else:
+            try:
+                smin, kappa = ball_sigma_min_bound(a, dps)
+            except ZeroDivisionError:
+                dps *= 2
+                continue
+            smax = smin * kappa  # upper bound of ||A||_F >= sigma_max
+            # same gap criterion as numeric_rank: the certified bound must clear the rounding level
+            gap_ok = smin > smax * mpmath.mpf(10) ** (-(dps - 10))
+            rank = delta(n) if gap_ok else f"< {delta(n)} or undecided at {dps} digits"
+            method = "ball inverse: sigma_min >= 1/||A^-1||_F, condition <= ||A||_F ||A^-1||_F (certified)"
+        if smin > smax * mpmath.mpf(10) ** (-(dps - 20)):
+            break
+        dps *= 2
+    return {"n": n, "alpha": alpha_text, "dps": dps, "sigma_min": mpmath.nstr(smin, 4),
+            "condition": mpmath.nstr(smax / smin, 4), "rank": rank, "delta_n": delta(n), "method": method}
+
+
+def modp_case(n: int, t: str, seed: int, control: bool = False) -> int:
+    alpha = rational_alpha(fmpq(*map(int, t.split("/"))))
+    ar = ModpArith()
+    a = evaluate(n, alpha, sample_rational_points(alpha, delta(n), seed=seed), ar)
+    if control:
+        a[:, -1] = (a[:, 0] + a[:, 1]) % ar.p
+    return modp_rank(a, ar.p)
+
+
+@claim("linear_independence", paper_ref=["joint_systems_linear_independence", "united_system"],
+       statement="T_{2n}^alpha is linearly independent: collocation matrices have full rank delta_n "
+                 "(high precision singular values, and exactly modulo a prime).",
+       kind="exact-evidence", ns=list(range(1, 9)), alphas=["pi/6", "pi/3", "pi/2", "2pi/3", "5pi/6"], dps=50,
+       svd_n_max=4, exact_ns=list(range(1, 21)), rational_ts=["1/3", "1/7"], seed=5,
+       extended={"exact_ns": list(range(1, 31)) + [35, 40]})
+def run(ns, alphas, dps, svd_n_max, exact_ns, rational_ts, seed) -> Outcome:
+    numeric = [numeric_case(n, a, dps, svd_n_max, seed) for n in tqdm(ns, desc="rank (mp)", leave=False)
+               for a in alphas]
+    exact = {t: {str(n): modp_case(n, t, seed) for n in tqdm(exact_ns, desc=f"rank mod p t={t}", leave=False)}
+             for t in rational_ts}
+    numeric_ok = all(r["rank"] == r["delta_n"] for r in numeric)
+    exact_ok = all(exact[t][str(n)] == delta(n) for t in rational_ts for n in exact_ns)
+    ctrl_n = 3
+    ctrl_mp = numeric_rank(mp_singular_values(collocation_mp(ctrl_n, "pi/3", dps, seed, control=True), dps), dps)
+    ctrl_modp = modp_case(ctrl_n, rational_ts[0], seed, control=True)
+    control_ok = ctrl_mp == delta(ctrl_n) - 1 and ctrl_modp == delta(ctrl_n) - 1
+    return Outcome(numeric_ok and exact_ok and control_ok, {
+        "numeric": numeric, "exact_rank_mod_p": exact, "prime": ModpArith().p,
+        "largest_n_certified_exactly": max(exact_ns),
+        "negative_control": {"n": ctrl_n, "mp_rank": ctrl_mp, "modp_rank": ctrl_modp, "expected": delta(ctrl_n) - 1},
+        "scope": "full rank mod p proves linear independence at each sampled rational-tangent alpha; "
+                 "evidence for all alpha in (0, pi)"})

@@ -1,0 +1,185 @@
+"""Figures of Section sec:linear_independence, computed from the actual derivatives.
+
+Every function of T_{2n} is a product U(u) V(v) W(w) of powers of half-angle sines and cosines, so
+its derivatives along the parametrizations of the proof factor: derivatives at 0 are exact
+(:mod:`paper_repro.derivatives`), derivatives at a generic interior point are evaluated with mpmath.
+
+* ``derivative_scheme_n_4``: for k = 0..4, which functions have a vanishing 4th order mixed partial
+  d^4/dv^{4-k} dw^k at y = 0 under parametrization_for_partition_of_unity (black) or not (coloured);
+  grey: functions whose sin(v/2) power exceeds 4 - k.
+* ``linear_independence_j_0`` and ``linear_independence_j_1__j_n_minus_1``: the successive elimination
+  steps of the proof (parametrizations parametrization_1_y_0, _2_x_0, _3_y_0 in turn, derivative
+  order r = 0, 1, ..., n-1): coloured = non-vanishing (their coefficients are forced to 0), black =
+  vanishing, white = eliminated before.  The script checks that only the centre survives.
+* ``singular_values``: new -- singular value spectra of the normalized collocation matrices.
+"""
+
+from __future__ import annotations
+
+from math import comb
+from pathlib import Path
+
+import mpmath
+import numpy as np
+from flint import fmpq
+
+from ..derivatives import mixed_derivative
+from ..labels import exponents, united_system
+from ..registry import figure
+from . import COLOR_OF, plt, save
+from .graph import position
+
+HALF = fmpq(1, 2)
+
+
+def _factor(e: tuple[int, ...], var: int) -> tuple[int, int]:
+    """(sin power, cos power) of variable ``var`` (0 = u, 1 = v, 2 = w) in exponent vector ``e``."""
+    return e[2 * var], e[2 * var + 1]
+
+
+def deriv_at_0(e, var: int, z: int) -> fmpq:
+    s, c = _factor(e, var)
+    return mixed_derivative(c, HALF, s, HALF, z)
+
+
+def deriv_at(e, var: int, z: int, x: mpmath.mpf) -> mpmath.mpf:
+    s, c = _factor(e, var)
+    if s == 0 and c == 0:
+        return mpmath.mpf(1 if z == 0 else 0)
+    return mpmath.diff(lambda t: mpmath.sin(t / 2) ** s * mpmath.cos(t / 2) ** c, x, z)
+
+
+# (variable set to 0 by the substitution, the variable running with it, the third) for each
+# parametrization of the proof; the derivative of order r is sum_k C(r,k) (-1)^k d^{r-k}_first d^k_second
+PARAMS = {"parametrization_1_y_0": (1, 2, 0), "parametrization_2_x_0": (0, 1, 2),
+          "parametrization_3_y_0": (2, 0, 1)}
+
+
+def nonvanishing(e, param: str, r: int, alpha: mpmath.mpf) -> bool:
+    """Whether the r-th derivative of the function along ``param`` at the boundary is non-zero."""
+    zero_var, other, fixed = PARAMS[param]
+    with mpmath.workdps(30):
+        for x in (alpha / 3, alpha * 5 / 7):
+            total = mpmath.mpf(0)
+            for k in range(r + 1):
+                d0 = deriv_at_0(e, zero_var, r - k)
+                if d0 == 0:
+                    continue
+                total += comb(r, k) * (-1) ** k * mpmath.mpf(int(d0.p)) / int(d0.q) * deriv_at(e, other, k, alpha - x)
+            total *= deriv_at(e, fixed, 0, x)
+            if abs(total) > mpmath.mpf(10) ** -20:
+                return True
+    return False
+
+
+def elimination(n: int, alpha: float = 1.0) -> list[dict]:
+    """The steps of the proof: list of {r, param, alive_before, nonvanishing} (indices into T_{2n})."""
+    labels = united_system(n)
+    alive = set(range(len(labels)))
+    steps = []
+    for r in range(n):
+        for param in PARAMS:
+            nz = {k for k in alive if nonvanishing(exponents(labels[k]), param, r, mpmath.mpf(alpha))}
+            steps.append({"r": r, "param": param, "alive_before": sorted(alive), "nonvanishing": sorted(nz)})
+            alive -= nz
+    if alive != {0}:
+        raise AssertionError(f"elimination for n={n} leaves {[labels[k].paper for k in sorted(alive)]}")
+    return steps
+
+
+def _draw_step(ax, n: int, step: dict, title: str) -> None:
+    labels = united_system(n)
+    for k, lab in enumerate(labels):
+        p = position(lab)
+        if k not in step["alive_before"]:
+            ax.plot(*p, "o", ms=6, mfc="white", mec="0.6")
+        elif k in step["nonvanishing"]:
+            ax.plot(*p, "o", ms=6, color=COLOR_OF["centre"] if lab.is_centre else COLOR_OF[lab.color])
+        else:
+            ax.plot(*p, "o", ms=6, color="black")
+    ax.set_title(title, fontsize=8)
+    ax.set_aspect("equal")
+    ax.axis("off")
+
+
+def _steps_figure(n: int, rows: list[int], path: Path) -> Path:
+    steps = elimination(n)
+    fig, axes = plt.subplots(len(rows), 3, figsize=(11, 3.8 * len(rows)), squeeze=False)
+    letters = "abcdefghi"
+    for a, r in enumerate(rows):
+        for b, st in enumerate(s for s in steps if s["r"] == r):
+            _draw_step(axes[a, b], n, st, f"({letters[3 * a + b]}) r = {r}, {st['param']}")
+    fig.suptitle(f"n = {n}: coloured = non-vanishing derivative (coefficient forced to 0), black = vanishing, "
+                 "white = eliminated before", fontsize=9)
+    return save(fig, path)
+
+
+@figure("linear_independence_j_0", paper_label="fig:linear_independence_j_0",
+        outputs=["linear_independence_j_0.png"],
+        caption="Zeroth order step of the proof for n = 4 under the three parametrizations, computed from the "
+                "functions' values on the boundary.")
+def make_j0(outdir: Path) -> list[Path]:
+    return [_steps_figure(4, [0], outdir / "linear_independence_j_0.png")]
+
+
+@figure("linear_independence_j_1__j_n_minus_1", paper_label="fig:linear_independence_j_1__j_n_minus_1",
+        outputs=["linear_independence_j_1__j_n_minus_1.png"],
+        caption="First (r = 1) and (n-1)th order steps of the proof for n = 4, computed from the actual "
+                "derivatives; after the last step only the centre R_{8,4,4} survives.")
+def make_j1(outdir: Path) -> list[Path]:
+    return [_steps_figure(4, [1, 3], outdir / "linear_independence_j_1__j_n_minus_1.png")]
+
+
+@figure("derivative_scheme_n_4", paper_label="fig:derivative_scheme_n_4", outputs=["derivative_scheme_n_4.png"],
+        caption="n = 4: black = the 4th order mixed partial d^4/dv^(4-k) dw^k vanishes at y = 0 under "
+                "parametrization_for_partition_of_unity, coloured = it does not; grey discs: sin(v/2) power > 4-k.")
+def make_scheme(outdir: Path, n: int = 4) -> list[Path]:
+    labels = united_system(n)
+    fig, axes = plt.subplots(1, 5, figsize=(18, 4))
+    for k, ax in enumerate(axes):
+        for lab in labels:
+            e = exponents(lab)
+            p = position(lab)
+            v_zero = deriv_at_0(e, 1, 4 - k) == 0
+            w_const = k > 0 and e[4] == 0 and e[5] == 0
+            if e[2] > 4 - k:
+                ax.plot(*p, "o", ms=13, color="0.85", zorder=1)
+            color = "black" if (v_zero or w_const) else (COLOR_OF["centre"] if lab.is_centre else COLOR_OF[lab.color])
+            ax.plot(*p, "o", ms=6, color=color, zorder=2)
+        ax.set_title(rf"({'abcde'[k]}) $\partial^4/\partial v^{{{4 - k}}}\partial w^{{{k}}}$", fontsize=9)
+        ax.set_aspect("equal")
+        ax.axis("off")
+    return [save(fig, outdir / "derivative_scheme_n_4.png")]
+
+
+@figure("singular_values", outputs=["singular_values.png"],
+        caption="New: singular values of the normalized collocation matrices (mpmath, 50 digits) for n = 1..4 at "
+                "alpha = pi/6 and 5pi/6 (left); condition number versus n for the five alpha of claim "
+                "linear_independence (right, from data/claims.json).")
+def make_singular_values(outdir: Path) -> list[Path]:
+    import json
+
+    from ..alphas import alpha_float
+    from ..claims.linear_independence import collocation_mp
+    from ..io import DATA
+    from ..rank import mp_singular_values
+
+    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(13, 4.6))
+    for a_text, ls in (("pi/6", "-"), ("5pi/6", "--")):
+        for n in (1, 2, 3, 4):
+            sv = mp_singular_values(collocation_mp(n, a_text, 50, 5), 50)
+            ax1.semilogy(np.arange(1, len(sv) + 1), [float(s) for s in sv], ls, label=f"n={n}, α={a_text}")
+    ax1.set_xlabel("index")
+    ax1.set_ylabel("singular value")
+    ax1.legend(fontsize=7, ncol=2)
+    ax1.grid(alpha=0.3)
+    claims = {c["id"]: c for c in json.loads((DATA / "claims.json").read_text())}
+    rows = claims["linear_independence"]["measured"]["numeric"]
+    for a_text in sorted({r["alpha"] for r in rows}, key=alpha_float):
+        sel = [r for r in rows if r["alpha"] == a_text]
+        ax2.semilogy([r["n"] for r in sel], [float(r["condition"]) for r in sel], "o-", label=f"α = {a_text}")
+    ax2.set_xlabel("order n")
+    ax2.set_ylabel("condition number (n > 4: certified upper bound)")
+    ax2.legend(fontsize=8)
+    ax2.grid(alpha=0.3)
+    return [save(fig, outdir / "singular_values.png")]

@@ -1,0 +1,71 @@
+"""Rank of collocation matrices: high precision (singular values) and exact (modulo a prime).
+
+* :func:`mp_singular_values` -- mpmath SVD at a given precision;
+* :func:`ball_sigma_min_bound` -- certified lower bound of sigma_min (and upper bound of the
+  condition number) from the inverse in flint ball arithmetic, used where mpmath SVD is slow;
+* :func:`numeric_rank` -- rank by the gap criterion: sigma_i counts if ``sigma_i > sigma_1 * 10^-(dps-10)``
+  (everything below is at the level of rounding of the working precision);
+* :func:`modp_rank` -- exact rank over F_p (flint ``nmod_mat``); rank over F_p <= rank over Q, so full
+  rank modulo p certifies full rank of the rational matrix.
+"""
+
+from __future__ import annotations
+
+import mpmath
+import numpy as np
+from flint import arb, arb_mat, ctx
+
+from .arith import to_nmod_mat
+
+
+def mp_singular_values(a: np.ndarray, dps: int) -> list[mpmath.mpf]:
+    """Singular values (descending) of an object array of mpf, at ``dps`` digits."""
+    with mpmath.workdps(dps):
+        s = mpmath.svd_r(mpmath.matrix(a.tolist()), compute_uv=False)
+        return sorted((s[k] for k in range(len(s))), reverse=True)
+
+
+def numeric_rank(sv: list[mpmath.mpf], dps: int) -> int:
+    """Gap criterion: singular values above ``sigma_1 * 10^-(dps - 10)``."""
+    tau = sv[0] * mpmath.mpf(10) ** (-(dps - 10))
+    return sum(1 for s in sv if s > tau)
+
+
+def ball_sigma_min_bound(a: np.ndarray, dps: int) -> tuple[mpmath.mpf, mpmath.mpf]:
+    """Certified ``(lower bound of sigma_min, upper bound of the 2-norm condition number)``.
+
+    Ball arithmetic (flint ``arb_mat.inv``): ``sigma_min = 1/||A^-1||_2 >= 1/||A^-1||_F`` and
+    ``kappa_2 <= ||A||_F ||A^-1||_F``.  Entries are taken as their ``dps``-digit decimal strings (the
+    enclosure is for that rounded matrix).  ``ZeroDivisionError`` if the inverse cannot be certified.
+    """
+    old = ctx.prec
+    ctx.prec = int(3.4 * dps) + 64
+    try:
+        m = arb_mat([[arb(mpmath.nstr(x, dps + 5)) for x in row] for row in a])
+        inv = m.inv()
+        rows, cols = a.shape
+        fro_inv = sum((inv[i, j] ** 2 for i in range(rows) for j in range(cols)), arb(0)).sqrt()
+        fro = sum((m[i, j] ** 2 for i in range(rows) for j in range(cols)), arb(0)).sqrt()
+        lower = (1 / fro_inv).lower()
+        kappa = (fro * fro_inv).upper()
+        with mpmath.workdps(dps):
+            return mpmath.mpf(lower.str(dps, radius=False)), mpmath.mpf(kappa.str(dps, radius=False))
+    finally:
+        ctx.prec = old
+
+
+def modp_rank(a: np.ndarray, p: int) -> int:
+    """Exact rank over F_p of an int64 array with entries in [0, p)."""
+    return to_nmod_mat(a, p).rank()
+
+
+def mp_domain_points(alpha: mpmath.mpf, count: int, seed: int) -> np.ndarray:
+    """``count`` seeded interior points of Omega^alpha as mpf, exactly on the plane (w = alpha - u - v)."""
+    from .domain import sample_points
+
+    raw = sample_points(1.0, count, seed=seed)
+    pts = np.empty((count, 3), dtype=object)
+    for k, (x, y, _) in enumerate(raw):
+        u, v = alpha * mpmath.mpf(float(x)), alpha * mpmath.mpf(float(y))
+        pts[k] = (u, v, alpha - u - v)
+    return pts

@@ -1,0 +1,116 @@
+import mpmath
+import numpy as np
+from flint import fmpq
+from hypothesis import given
+from hypothesis import strategies as st
+
+from paper_repro.arith import ModpArith
+from paper_repro.basis import evaluate
+from paper_repro.claims.basis_transformation import transformation
+from paper_repro.claims.linear_independence import modp_case, numeric_case
+from paper_repro.derivatives import (
+    cos_power_derivative,
+    mixed_derivative,
+    printed_sign_cos,
+    printed_sign_m,
+    printed_sign_sin,
+    sign,
+    sin_power_derivative,
+)
+from paper_repro.domain import rational_alpha, sample_rational_points
+from paper_repro.figures.independence import elimination
+from paper_repro.fourier import classes, evaluate_v, new_classes, printed_representatives, related, v_labels
+from paper_repro.labels import delta
+from paper_repro.rank import ball_sigma_min_bound, modp_rank, mp_singular_values, numeric_rank
+
+from .strategies import rational_alphas, rational_points
+
+
+def test_numeric_rank_gap_criterion_and_control():
+    rng = np.random.default_rng(0)
+    with mpmath.workdps(40):
+        a = np.array([[mpmath.mpf(float(x)) for x in row] for row in rng.normal(size=(6, 6))], dtype=object)
+        assert numeric_rank(mp_singular_values(a, 40), 40) == 6
+        a[:, 5] = a[:, 0] + a[:, 1]
+        assert numeric_rank(mp_singular_values(a, 40), 40) == 5
+        lower, _ = ball_sigma_min_bound(a, 40)  # the rounded matrix is invertible, but only just
+        assert lower < mpmath.mpf(10) ** -30
+
+
+def test_linear_independence_small_cases():
+    for n in (1, 2, 3):
+        res = numeric_case(n, "pi/3", 50, 4, 5)
+        assert res["rank"] == delta(n)
+        assert modp_case(n, "1/3", 5) == delta(n)
+        assert modp_case(n, "1/3", 5, control=True) == delta(n) - 1
+    res = numeric_case(5, "pi/2", 50, 4, 5)  # ball-arithmetic path
+    assert res["rank"] == delta(5) and "certified" in res["method"]
+    assert numeric_case(5, "pi/2", 50, 4, 5, control=True)["rank"] != delta(5)
+
+
+@given(st.integers(1, 14))
+def test_class_counts(n):
+    assert len(classes(n)) == 1 + 3 * n * (n + 1) // 2
+    new = new_classes(n)
+    assert len(new) == 3 * n
+    reps = printed_representatives(n)
+    assert {next(c for c in classes(n) if r in c) for r in reps} == set(new)
+
+
+@given(st.integers(1, 6), st.tuples(*[st.integers(0, 6)] * 3), st.tuples(*[st.integers(0, 6)] * 3))
+def test_relation_symmetric(n, a, b):
+    a = tuple(min(x, n) for x in a)
+    b = tuple(min(x, n) for x in b)
+    assert related(a, b, n) == related(b, a, n)
+    assert related(a, a, n)
+
+
+def test_v2_matches_paper():
+    assert "cos(v+2w)" in v_labels(2) and "sin(u+2v)" in v_labels(2) and len(v_labels(2)) == 19
+
+
+@given(st.data(), st.integers(1, 3), rational_alphas())
+def test_v_exact_float_agree(data, n, alpha):
+    pts = data.draw(rational_points(alpha, max_size=3))
+    ex = evaluate_v(n, alpha, pts, "exact")
+    fl = evaluate_v(n, alpha, pts, "float")
+    assert np.max(np.abs(np.array([[float(x) for x in row] for row in ex]) - fl)) < 1e-12
+    ar = ModpArith()
+    mp_ = evaluate_v(n, alpha, pts, ar)
+    assert [ar.from_fmpq(x) for x in ex.ravel()] == [int(x) for x in mp_.ravel()]
+
+
+def test_coincidence_rank_small():
+    alpha = rational_alpha((2, 5))
+    ar = ModpArith()
+    for n in (1, 2, 3):
+        pts = sample_rational_points(alpha, delta(n) + 4, seed=1)
+        both = np.hstack([evaluate(n, alpha, pts, ar), evaluate_v(n, alpha, pts, ar)])
+        assert modp_rank(both, ar.p) == delta(n)
+
+
+def test_derivative_values():
+    assert cos_power_derivative(2, fmpq(1), 2) == -2  # (cos^2 t)'' at 0
+    assert sin_power_derivative(3, fmpq(2), 3) == 6 * 8  # j! mu^j
+    assert printed_sign_cos(2, 2) == 1 and sign(cos_power_derivative(2, fmpq(1), 2)) == -1  # the erratum
+    assert printed_sign_cos(1, 2) is None
+
+
+@given(st.integers(0, 6), st.integers(0, 6), st.integers(1, 16), st.sampled_from([fmpq(1, 3), fmpq(2), fmpq(5, 4)]),
+       st.sampled_from([fmpq(1, 2), fmpq(3)]))
+def test_proposition_and_sine_rule(i, j, z, lam, mu):
+    if i + j:
+        assert printed_sign_m(j, z) == sign(mixed_derivative(i, lam, j, mu, z))
+    if j:
+        assert printed_sign_sin(j, z) == sign(sin_power_derivative(j, mu, z))
+
+
+def test_elimination_leaves_centre():
+    for n in (2, 3):
+        steps = elimination(n)
+        assert len(steps) == 3 * n
+
+
+def test_basis_transformation_n1():
+    m, ok = transformation(1, "1/2")
+    assert ok and m.nrows() == 7
