@@ -92,11 +92,14 @@ CLAIM_MODULES = (
     "paper_repro.claims.equivalence_classes",
     "paper_repro.claims.coincidence",
     "paper_repro.claims.basis_transformation",
+    "paper_repro.claims.limits_claims",
+    "paper_repro.claims.order_elevation",
 )
 FIGURE_MODULES = (
     "paper_repro.figures.graph",
     "paper_repro.figures.normalization_plots",
     "paper_repro.figures.independence",
+    "paper_repro.figures.limits_fig",
 )
 
 

@@ -1,0 +1,72 @@
+"""Order elevation n -> n+1 (Example exmp:degree_elevation_from_1_to_2, Question 1 of sec:open_problems).
+
+Since span T_{2n} = V_n is contained in V_{n+1} = span T_{2n+2} (claims ``coincidence``), every
+blending function of order n is a combination of those of order n+1: ``T-bar_n = T-bar_{n+1} E``
+with a ``(delta_{n+1}, delta_n)`` matrix E, and the elevated control net is ``E @ net``.  Rows of E
+sum to 1 (both systems are partitions of unity).  E is computed exactly at rational-tangent alpha
+(collocation at rational points, verified at further points) and in float for any alpha.
+"""
+
+from __future__ import annotations
+
+from functools import lru_cache
+
+import numpy as np
+from flint import fmpq
+
+from .arith import to_fmpq_mat
+from .domain import RationalAngle, rational_alpha, sample_points, sample_rational_points
+from .labels import delta
+from .normalization import evaluate_normalized
+from .patches import check_net
+from .validation import check_alpha, check_n
+
+
+@lru_cache(maxsize=64)
+def elevation_matrix_exact(n: int, alpha: RationalAngle, verify: int = 3, seed: int = 4) -> list[list[fmpq]]:
+    """Exact E with T-bar_n(p) = T-bar_{n+1}(p) E, verified at ``verify`` extra rational points."""
+    n = check_n(n)
+    d1 = delta(n + 1)
+    pts = sample_rational_points(alpha, d1 + verify, seed=seed)
+    big = evaluate_normalized(n + 1, alpha, pts, "exact")
+    small = evaluate_normalized(n, alpha, pts, "exact")
+    e = to_fmpq_mat(big[:d1]).solve(to_fmpq_mat(small[:d1]))
+    if to_fmpq_mat(big[d1:]) * e != to_fmpq_mat(small[d1:]):
+        raise ArithmeticError(f"elevation {n}->{n + 1} fails at verification points (t={alpha.t})")
+    return [[e[i, j] for j in range(e.ncols())] for i in range(e.nrows())]
+
+
+@lru_cache(maxsize=64)
+def _elevation_matrix_float(n: int, alpha: float) -> np.ndarray:
+    d1 = delta(n + 1)
+    pts = sample_points(alpha, 3 * d1, seed=12)
+    big, small = evaluate_normalized(n + 1, alpha, pts), evaluate_normalized(n, alpha, pts)
+    e, *_ = np.linalg.lstsq(big, small, rcond=None)
+    return e
+
+
+def elevation_matrix(n: int, alpha) -> np.ndarray:
+    """E as a float array: exact (then rounded) for a :class:`RationalAngle`, least squares otherwise."""
+    if isinstance(alpha, RationalAngle):
+        return np.array([[float(x) for x in row] for row in elevation_matrix_exact(n, alpha)])
+    return _elevation_matrix_float(check_n(n), check_alpha(alpha))
+
+
+def elevate(net, n: int, alpha, times: int = 1) -> np.ndarray:
+    """Control net of the same patch written in order ``n + times`` (repeated order elevation).
+
+    ``net`` is a ``(delta_n, d)`` array or ``{label: point}``; ``alpha`` a float in (0, pi) or a
+    :class:`RationalAngle` (then the matrices are exact before rounding).
+    """
+    arr = check_net(net, n)
+    for k in range(times):
+        arr = elevation_matrix(n + k, alpha) @ arr
+    return arr
+
+
+def rational_alpha_near(alpha: float, denominator: int = 1000) -> RationalAngle:
+    """A rational-tangent alpha close to ``alpha``: tan(alpha/4) rounded to ``denominator``."""
+    from fractions import Fraction
+
+    f = Fraction(np.tan(check_alpha(alpha) / 4)).limit_denominator(denominator)
+    return rational_alpha(fmpq(f.numerator, f.denominator))
