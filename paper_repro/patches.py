@@ -9,6 +9,7 @@ the paper's labels (``'r_{4,3,1}'``, ``'g_{4,4,0}'``, ...; aliases such as ``'r_
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+import re
 
 import numpy as np
 
@@ -82,3 +83,61 @@ class Patch:
 
     def at_barycentric(self, bary) -> np.ndarray:
         return self(barycentric_to_uvw(self.alpha, bary))
+
+    def boundary_net(self, edge: str) -> np.ndarray:
+        """Control polygon of a boundary curve (the paper's list after Definition def:surface_patch):
+        ``'u=0'``: g_{2n,2n-i,0}, ``'v=0'``: r_{2n,2n-i,0}, ``'w=0'``: b_{2n,2n-i,0}, i = 0..2n."""
+        letter = {"u=0": "g", "v=0": "r", "w=0": "b"}[edge]
+        idx = index_of(self.n)
+        return np.stack([self.net[idx[f"{letter}_{{{2 * self.n},{2 * self.n - i},0}}"]] for i in range(2 * self.n + 1)])
+
+    def boundary_curve(self, edge: str, t) -> np.ndarray:
+        """The boundary curve as a univariate curve sum_i p_i A_{2n,2n-i}(t) (eq. univariate_basis);
+        t is w on u=0, u on v=0, v on w=0."""
+        from .univariate import A
+
+        a = A(self.n, self.alpha, np.asarray(t, dtype=np.float64))  # columns A_{2n,0..2n}
+        return a[:, ::-1] @ self.boundary_net(edge)
+
+    def mesh(self, resolution: int = 16) -> tuple[np.ndarray, np.ndarray]:
+        """Triangle mesh: vertices ``(V, d)`` on a barycentric grid, faces ``(F, 3)``."""
+        r = int(resolution)
+        if r < 1:
+            raise ValueError(f"resolution must be a positive integer, got {resolution}")
+        ids, bary = {}, []
+        for i in range(r + 1):
+            for j in range(r + 1 - i):
+                ids[(i, j)] = len(bary)
+                bary.append((i / r, j / r, 1 - (i + j) / r))
+        faces = []
+        for i in range(r):
+            for j in range(r - i):
+                faces.append((ids[(i, j)], ids[(i + 1, j)], ids[(i, j + 1)]))
+                if i + j + 1 < r:
+                    faces.append((ids[(i + 1, j)], ids[(i + 1, j + 1)], ids[(i, j + 1)]))
+        return self.at_barycentric(np.array(bary)), np.array(faces, dtype=np.int64)
+
+
+def merge_meshes(meshes: list[tuple[np.ndarray, np.ndarray]]) -> tuple[np.ndarray, np.ndarray]:
+    """Concatenate meshes (vertices are not welded)."""
+    verts, faces, offset = [], [], 0
+    for v, f in meshes:
+        verts.append(v)
+        faces.append(f + offset)
+        offset += len(v)
+    return np.concatenate(verts), np.concatenate(faces)
+
+
+def export_mesh(path, vertices: np.ndarray, faces: np.ndarray) -> None:
+    """Write a triangle mesh (OBJ, PLY, ... by extension) with meshio, atomically."""
+    import meshio
+
+    from .io import atomic_path
+
+    mesh = meshio.Mesh(np.asarray(vertices, dtype=np.float64), [("triangle", np.asarray(faces, dtype=np.int32))])
+    suffix = str(path).rsplit(".", 1)[-1]
+    with atomic_path(path) as tmp:
+        meshio.write(tmp, mesh, file_format={"obj": "obj", "ply": "ply"}.get(suffix, suffix))
+        # meshio writes the current time into the (ASCII) header; drop it so reruns give identical bytes
+        raw = tmp.read_bytes()
+        tmp.write_bytes(re.sub(rb"Created by meshio v([0-9.]+), [0-9T:.\-]+", rb"Created by meshio v\1", raw, count=1))

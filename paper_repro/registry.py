@@ -94,12 +94,15 @@ CLAIM_MODULES = (
     "paper_repro.claims.basis_transformation",
     "paper_repro.claims.limits_claims",
     "paper_repro.claims.order_elevation",
+    "paper_repro.claims.torus",
+    "paper_repro.claims.surfaces_claims",
 )
 FIGURE_MODULES = (
     "paper_repro.figures.graph",
     "paper_repro.figures.normalization_plots",
     "paper_repro.figures.independence",
     "paper_repro.figures.limits_fig",
+    "paper_repro.figures.patches_fig",
 )
 
 

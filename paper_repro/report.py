@@ -13,6 +13,7 @@ import json
 from pathlib import Path
 from typing import Any
 
+import numpy as np
 from tqdm import tqdm
 
 from .io import BUILD, DATA, FIGURES, ROOT, rel, write_json, write_text
@@ -77,7 +78,14 @@ def run_claims(only: list[str] | None, overrides: dict[str, Any], extended: bool
         write_text(DATA / f"claims{suffix}.md", claims_markdown(results))
         for relpath, obj in sorted(data_files.items()):
             path = DATA / relpath
-            write_text(path, obj) if isinstance(obj, str) else write_json(path, obj)
+            if isinstance(obj, dict) and "__mesh__" in obj:
+                from .patches import export_mesh
+
+                export_mesh(path, np.array(obj["__mesh__"]["vertices"]), np.array(obj["__mesh__"]["faces"]))
+            elif isinstance(obj, str):
+                write_text(path, obj)
+            else:
+                write_json(path, obj)
         if not extended:
             unique = list({e["id"]: e for e in sorted(errata, key=lambda e: e["id"])}.values())
             write_json(DATA / "errata.json", unique)
