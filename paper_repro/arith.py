@@ -45,42 +45,54 @@ class FloatArith(Arith):
 
 
 @dataclass(frozen=True)
-class MpArith(Arith):
+class ObjectArith(Arith):
+    """Arithmetics on numpy object arrays of scalars; subclasses say how a scalar is made (``convert``)."""
+
+    def convert(self, x):
+        raise NotImplementedError
+
+    def asarray(self, values) -> np.ndarray:
+        out = np.empty(np.shape(values), dtype=object)
+        flat = out.reshape(-1)
+        for k, x in enumerate(np.asarray(values, dtype=object).reshape(-1)):
+            flat[k] = self.convert(x)
+        return out
+
+    def ones(self, shape: tuple[int, ...]) -> np.ndarray:
+        out = np.empty(shape, dtype=object)
+        out.fill(self.convert(1))
+        return out
+
+
+@dataclass(frozen=True)
+class MpArith(ObjectArith):
     """mpmath arithmetic; ``dps`` decimal digits (applied by callers with ``mpmath.workdps``)."""
 
     name: str = "mp"
     dps: int = 50
 
-    def asarray(self, values) -> np.ndarray:
-        out = np.empty(np.shape(values), dtype=object)
-        flat = out.reshape(-1)
-        for k, x in enumerate(np.asarray(values, dtype=object).reshape(-1)):
-            flat[k] = mpmath.mpf(x)
-        return out
-
-    def ones(self, shape: tuple[int, ...]) -> np.ndarray:
-        out = np.empty(shape, dtype=object)
-        out.fill(mpmath.mpf(1))
-        return out
+    def convert(self, x):
+        return mpmath.mpf(x)
 
 
 @dataclass(frozen=True)
-class ExactArith(Arith):
+class ExactArith(ObjectArith):
     """Exact rational arithmetic with python-flint ``fmpq``."""
 
     name: str = "exact"
 
-    def asarray(self, values) -> np.ndarray:
-        out = np.empty(np.shape(values), dtype=object)
-        flat = out.reshape(-1)
-        for k, x in enumerate(np.asarray(values, dtype=object).reshape(-1)):
-            flat[k] = x if isinstance(x, fmpq) else fmpq(x)
-        return out
+    def convert(self, x):
+        return x if isinstance(x, fmpq) else fmpq(x)
 
-    def ones(self, shape: tuple[int, ...]) -> np.ndarray:
-        out = np.empty(shape, dtype=object)
-        out.fill(fmpq(1))
-        return out
+
+@dataclass(frozen=True)
+class BallArith(ObjectArith):
+    """Ball arithmetic with python-flint ``arb`` (precision set by ``flint.ctx.prec``)."""
+
+    name: str = "ball"
+
+    def convert(self, x):
+        return arb(x)
 
 
 @dataclass(frozen=True)
@@ -109,25 +121,6 @@ class ModpArith(Arith):
         if q == 0:
             raise ValueError(f"p = {self.p} divides the denominator of {x}; choose another prime")
         return int(x.p) * pow(q, -1, self.p) % self.p
-
-
-@dataclass(frozen=True)
-class BallArith(Arith):
-    """Ball arithmetic with python-flint ``arb`` (precision set by ``flint.ctx.prec``)."""
-
-    name: str = "ball"
-
-    def asarray(self, values) -> np.ndarray:
-        out = np.empty(np.shape(values), dtype=object)
-        flat = out.reshape(-1)
-        for k, x in enumerate(np.asarray(values, dtype=object).reshape(-1)):
-            flat[k] = arb(x)
-        return out
-
-    def ones(self, shape: tuple[int, ...]) -> np.ndarray:
-        out = np.empty(shape, dtype=object)
-        out.fill(arb(1))
-        return out
 
 
 def get_arith(arith: str | Arith = "float", *, dps: int = 50, p: int = DEFAULT_PRIME) -> Arith:

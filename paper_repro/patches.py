@@ -8,8 +8,8 @@ the paper's labels (``'r_{4,3,1}'``, ``'g_{4,4,0}'``, ...; aliases such as ``'r_
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
 import re
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -70,16 +70,22 @@ class Patch:
                 raise ValueError("weights must be finite, non-negative and not all zero (rank 1)")
             self.weights = w
 
-    def basis(self, points) -> np.ndarray:
-        return evaluate_normalized(self.n, self.alpha, points)
+    def basis(self, points, arith: str = "float", dps: int = 50) -> np.ndarray:
+        return evaluate_normalized(self.n, self.alpha, points, arith, dps=dps)
 
-    def __call__(self, points) -> np.ndarray:
-        """Evaluate at ``(P, 3)`` points ``(u, v, w)`` of Omega^alpha: ``(P, d)``."""
-        b = self.basis(points)
+    def __call__(self, points, arith: str = "float", dps: int = 50) -> np.ndarray:
+        """Evaluate at ``(P, 3)`` points ``(u, v, w)`` of Omega^alpha: ``(P, d)``.
+
+        ``arith='mp'`` evaluates the basis with mpmath at ``dps`` digits (points may be mpf; the net's
+        float entries are taken as exact binary values).
+        """
+        b = self.basis(points, arith, dps)
+        net = self.net if arith == "float" else self.net.astype(object)
         if self.weights is None:
-            return b @ self.net
-        bw = b * self.weights[None, :]
-        return (bw @ self.net) / bw.sum(axis=1, keepdims=True)
+            return b.dot(net)
+        w = self.weights if arith == "float" else self.weights.astype(object)
+        bw = b * w[None, :]
+        return bw.dot(net) / bw.sum(axis=1)[:, None]
 
     def at_barycentric(self, bary) -> np.ndarray:
         return self(barycentric_to_uvw(self.alpha, bary))

@@ -50,7 +50,7 @@ def node_distance(net: np.ndarray, n: int, alpha: float) -> float:
        statement="The printed 1->2 elevated control points equal the exact elevation and are convex combinations; "
                  "general elevation n->n+1 exists (V_n in V_{n+1}) and its weights are non-negative at all sampled "
                  "alpha for n <= n_max.",
-       kind="exact-evidence", ts=["1/20", "1/7", "1/3", "1/2", "2/3", "9/10", "19/20"], n_max=5, random_nets=20,
+       kind="exact-evidence", ts=["1/20", "1/7", "1/3", "1/2", "2/3", "9/10", "19/20"], n_max=6, random_nets=20,
        seed=17, chain_alpha="2/5", chain_orders=6)
 def run(ts, n_max, random_nets, seed, chain_alpha, chain_orders) -> Outcome:
     alphas = [rational_alpha(fmpq(*map(int, t.split("/")))) for t in ts]
