@@ -13,6 +13,7 @@ import hashlib
 import json
 import os
 from collections.abc import Callable
+from functools import lru_cache
 from typing import TypeVar
 
 from .io import ROOT, dumps, write_text
@@ -42,9 +43,11 @@ def cached(name: str, params: dict, compute: Callable[[], T]) -> T:
     return value
 
 
+@lru_cache(maxsize=1)
 def code_fingerprint() -> str:
     """sha256 of every source file of the package: part of the key of cached claim results, so that
-    any change of the code invalidates them."""
+    any change of the code invalidates them.  Computed once per process (at first use, when the
+    modules are loaded), so that editing files during a run cannot file old results under a new key."""
     h = hashlib.sha256()
     pkg = ROOT / "paper_repro"
     for path in sorted(pkg.rglob("*.py")):

@@ -135,6 +135,7 @@ def figure(id: str, *, caption: str, outputs: list[str], paper_label: str | None
 
 def load_all() -> None:
     """Import every claim and figure module (registration happens on import)."""
+    code_fingerprint()  # fix the key of cached results to the code as loaded now
     for mod in CLAIM_MODULES + FIGURE_MODULES:
         importlib.import_module(mod)
 

@@ -114,3 +114,14 @@ def test_elimination_leaves_centre():
 def test_basis_transformation_n1():
     m, ok = transformation(1, "1/2")
     assert ok and m.nrows() == 7
+
+
+def test_span_residual_detects_functions_outside_the_space(monkeypatch):
+    from paper_repro.claims import coincidence
+
+    assert coincidence.span_residual(2, "pi/4", 40, 9) < 1e-25
+    real = coincidence.evaluate_v
+    # the last delta_2 functions of V_3 include order-3 frequencies, which are not in span T_4
+    monkeypatch.setattr(coincidence, "evaluate_v",
+                        lambda n, alpha, pts, arith, dps: real(n + 1, alpha, pts, arith, dps=dps)[:, -delta(n):])
+    assert coincidence.span_residual(2, "pi/4", 40, 9) > 1e-6
