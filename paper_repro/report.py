@@ -90,8 +90,21 @@ def run_claims(only: list[str] | None, overrides: dict[str, Any], extended: bool
             unique = list({e["id"]: e for e in sorted(errata, key=lambda e: e["id"])}.values())
             write_json(DATA / "errata.json", unique)
             update_readme(results, unique)
+            write_paper_map()
         write_json(BUILD / f"timings{suffix}.json", {k: round(v, 3) for k, v in seconds.items()})
     return not failed
+
+
+def write_paper_map() -> None:
+    """data/paper_map.{json,md} from the registries (skipped if the paper source is not beside the repo)."""
+    from . import paper_map
+
+    m = paper_map.build(CLAIMS, FIGURE_REGISTRY)
+    if m is None:
+        print("paper map: ../shared/paper not found, data/paper_map.* left unchanged")
+        return
+    write_json(DATA / "paper_map.json", m)
+    write_text(DATA / "paper_map.md", paper_map.markdown(m))
 
 
 def _replace_block(text: str, name: str, body: str) -> str:

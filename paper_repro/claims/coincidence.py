@@ -48,7 +48,10 @@ def span_residual(n: int, a_text: str, dps: int, seed: int) -> mpmath.mpf:
         ctx.prec = old
 
 
-@claim("coincidence", paper_ref=["sec:coincidence", "dimension", "iterative_construction_of_trivariate_extension"],
+@claim("coincidence", paper_ref=["sec:coincidence", "dimension", "iterative_construction_of_trivariate_extension",
+                                 "truncated_Fourier_vector_space",
+                                 "constrained_trivariate_extension_of_truncated_Fourier_series",
+                                 "possible_products_inclusion"],
        statement="span T_{2n}^alpha = span V_n^alpha: the combined collocation matrix [T | V] has rank delta_n, "
                  "as have T and V alone.",
        kind="exact-evidence", ns=list(range(1, 9)), rational_ts=["1/3", "2/5"], mp_ns=[1, 2, 3, 4],

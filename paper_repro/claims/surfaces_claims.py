@@ -25,7 +25,8 @@ def _mesh_data(pieces, resolution: int) -> dict:
     return {"__mesh__": {"vertices": np.round(v, 12).tolist(), "faces": f.tolist()}}
 
 
-@claim("dupin_cyclide", paper_ref=["Dupin_in_3d", "def:rational_patch", "fig:dupin_03"],
+@claim("dupin_cyclide", paper_ref=["Dupin_in_3d", "def:rational_patch", "fig:dupin_03",
+                                   "sec:triangular_rational_trigonometric_patches"],
        statement="The ring Dupin cyclide (a=6, b=4 sqrt 2, c=2, mu=3, alpha=pi/2) is described exactly by second order "
                  "rational patches with non-negative weights: 16 cover the triangles u+v <= alpha of the 4x4 phase "
                  "grid, 32 the whole cyclide; neighbours join.",
@@ -70,7 +71,7 @@ def _random_net(rng, n):
 
 
 @claim("patch_properties", paper_ref=["def:surface_patch", "def:rational_patch", "triangular_trig_surface",
-                                      "rational_patch", "sec:triangular_trigonometric_patches"],
+                                      "rational_patch", "sec:triangular_trigonometric_patches", "sec:applications"],
        statement="Patches are affinely invariant, lie in the convex hull of their nets (n <= 3), interpolate the "
                  "corners, have the printed boundary curves and corner tangent planes; rational patches are "
                  "projectively invariant. Torus patches join continuously.",

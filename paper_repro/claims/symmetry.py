@@ -113,7 +113,8 @@ def numeric_check(n: int, alpha_text: str, count: int, dps: int, seed: int) -> m
         return worst
 
 
-@claim("symmetry", paper_ref=["fig:oriented_graph", "R_system_geq_n", "G_system", "B_system"],
+@claim("symmetry", paper_ref=["fig:oriented_graph", "R_system", "R_system_leq_n", "R_system_geq_n", "G_system",
+                              "B_system"],
        statement="The printed G and B formulas equal R(w,u,v) and R(v,w,u); the printed half relations and "
                  "the six symmetry properties of Fig. oriented_graph(b) hold.",
        kind="proof", n_max=10, alphas=["pi/6", "pi/2", "5pi/6"], points=8, dps=40, seed=7)
