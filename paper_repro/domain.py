@@ -193,6 +193,16 @@ def plane_half_angle_values(uvw: np.ndarray, arith: Arith) -> list[np.ndarray]:
     return [s[:, 0], c[:, 0], s[:, 1], c[:, 1], s[:, 2], c[:, 2]]
 
 
+def mp_domain_points(alpha: mpmath.mpf, count: int, seed: int) -> np.ndarray:
+    """``count`` seeded interior points of Omega^alpha as mpf, exactly on the plane (w = alpha - u - v)."""
+    raw = sample_points(1.0, count, seed=seed)
+    pts = np.empty((count, 3), dtype=object)
+    for k, (x, y, _) in enumerate(raw):
+        u, v = alpha * mpmath.mpf(float(x)), alpha * mpmath.mpf(float(y))
+        pts[k] = (u, v, alpha - u - v)
+    return pts
+
+
 def barycentric_to_uvw(alpha, bary) -> np.ndarray:
     """Points ``alpha * (x, y, z)`` for barycentric ``(x, y, z)`` rows (x + y + z = 1)."""
     b = np.asarray(bary, dtype=np.float64)

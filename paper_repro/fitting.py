@@ -18,10 +18,9 @@ import numpy as np
 from flint import fmpq
 
 from .arith import to_fmpq_mat
-from .domain import RationalAngle, RationalPoints, sample_rational_points
+from .domain import RationalAngle, RationalPoints, mp_domain_points, sample_rational_points
 from .labels import delta
 from .normalization import evaluate_normalized
-from .rank import mp_domain_points
 
 
 @dataclass

@@ -58,14 +58,3 @@ def modp_rank(a: np.ndarray, p: int) -> int:
     """Exact rank over F_p of an int64 array with entries in [0, p)."""
     return to_nmod_mat(a, p).rank()
 
-
-def mp_domain_points(alpha: mpmath.mpf, count: int, seed: int) -> np.ndarray:
-    """``count`` seeded interior points of Omega^alpha as mpf, exactly on the plane (w = alpha - u - v)."""
-    from .domain import sample_points
-
-    raw = sample_points(1.0, count, seed=seed)
-    pts = np.empty((count, 3), dtype=object)
-    for k, (x, y, _) in enumerate(raw):
-        u, v = alpha * mpmath.mpf(float(x)), alpha * mpmath.mpf(float(y))
-        pts[k] = (u, v, alpha - u - v)
-    return pts

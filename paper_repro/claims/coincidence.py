@@ -14,11 +14,11 @@ from flint import fmpq
 from ..alphas import alpha_mp
 from ..arith import ModpArith
 from ..basis import evaluate
-from ..domain import rational_alpha, sample_rational_points
+from ..domain import mp_domain_points, rational_alpha, sample_rational_points
 from ..fourier import evaluate_v
 from ..labels import delta
 from ..normalization import evaluate_normalized
-from ..rank import modp_rank, mp_domain_points, mp_singular_values, numeric_rank
+from ..rank import modp_rank, mp_singular_values, numeric_rank
 from ..registry import Outcome, claim
 
 

@@ -21,10 +21,10 @@ from tqdm import tqdm
 from ..alphas import alpha_mp
 from ..arith import ModpArith
 from ..basis import evaluate
-from ..domain import rational_alpha, sample_rational_points
+from ..domain import mp_domain_points, rational_alpha, sample_rational_points
 from ..labels import delta
 from ..normalization import evaluate_normalized
-from ..rank import ball_sigma_min_bound, modp_rank, mp_domain_points, mp_singular_values, numeric_rank
+from ..rank import ball_sigma_min_bound, modp_rank, mp_singular_values, numeric_rank
 from ..registry import Outcome, claim
 
 

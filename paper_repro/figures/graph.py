@@ -54,6 +54,19 @@ def edges(n: int) -> list[tuple[BasisLabel, BasisLabel]]:
     return out
 
 
+def net_edges(n: int) -> list[tuple[int, int]]:
+    """The graph's edges as pairs of internal indices of T_{2n} (aliases resolved, duplicates dropped)."""
+    from ..labels import index_of
+
+    ix = index_of(n)
+    out: list[tuple[int, int]] = []
+    for a, b in edges(n):
+        pair = (ix[a.name], ix[b.name])
+        if pair not in out:
+            out.append(pair)
+    return out
+
+
 def _node_color(lab: BasisLabel) -> str:
     return COLOR_OF["centre"] if lab.is_centre else COLOR_OF[lab.color]
 

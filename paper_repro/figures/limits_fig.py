@@ -14,7 +14,7 @@ from ..limits import bezier_limit, limit_terms, multinomial
 from ..patches import Patch
 from ..registry import figure
 from . import COLOR_OF, plt, save
-from .graph import edges, position
+from .graph import edges, net_edges, position
 
 
 def _color(lab) -> str:
@@ -79,13 +79,7 @@ def _demo_net_order_1() -> np.ndarray:
 
 
 def _draw_net(ax, net, n, color, label, ms):
-    labels = united_system(n)
-    idx = {lab.paper: k for k, lab in enumerate(labels)}
-    for a, b in edges(n):
-        ka = idx.get(a.paper, idx.get(a.name))
-        kb = idx.get(b.paper, idx.get(b.name))
-        if ka is None or kb is None:
-            continue
+    for ka, kb in net_edges(n):
         ax.plot(*np.stack([net[ka], net[kb]]).T, color=color, lw=0.8)
     ax.scatter(*net.T, color=color, s=ms, label=label, depthshade=False)
 

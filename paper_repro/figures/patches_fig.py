@@ -12,29 +12,11 @@ from ..patches import Patch
 from ..registry import figure
 from ..surfaces import cyclide_pieces, torus_pieces
 from . import COLOR_OF, plt, save
-from .graph import edges, position
+from .graph import net_edges, position
 
 
 def _color(lab) -> str:
     return COLOR_OF["centre"] if lab.is_centre else COLOR_OF[lab.color]
-
-
-def _net_edges(n):
-    idx = {lab.paper: k for k, lab in enumerate(united_system(n))}
-    out = []
-    for a, b in edges(n):
-        ka, kb = idx.get(a.paper, idx.get(a.name)), idx.get(b.paper, idx.get(b.name))
-        if ka is not None and kb is not None:
-            out.append((ka, kb))
-    # edges to aliases (e.g. R_{2n,j,j} = G_{2n,2n-j,j}) resolve through the exponent match
-    from ..labels import index_of
-
-    ix = index_of(n)
-    for a, b in edges(n):
-        ka, kb = ix.get(a.name), ix.get(b.name)
-        if ka is not None and kb is not None and (ka, kb) not in out:
-            out.append((ka, kb))
-    return out
 
 
 @figure("associated_control_net", paper_label="fig:associated_control_net", outputs=["associated_control_net.png"],
@@ -44,7 +26,7 @@ def make_layout(outdir: Path, n: int = 3) -> list[Path]:
     fig, ax = plt.subplots(figsize=(8, 7.2))
     labels = united_system(n)
     pos = np.array([position(lab) for lab in labels])
-    for ka, kb in _net_edges(n):
+    for ka, kb in net_edges(n):
         ax.plot(*pos[[ka, kb]].T, color="0.6", lw=0.8, zorder=1)
     for lab, p in zip(labels, pos):
         ax.plot(*p, "o", ms=6, color=_color(lab), zorder=2)
@@ -79,7 +61,7 @@ def make_third_order(outdir: Path) -> list[Path]:
     for k, (elev, azim) in enumerate(((25, -60), (55, 30), (8, -100))):
         ax = fig.add_subplot(1, 3, k + 1, projection="3d")
         _surface(ax, verts, faces, "#9ecae1", 0.8)
-        for ka, kb in _net_edges(3):
+        for ka, kb in net_edges(3):
             ax.plot(*net[[ka, kb]].T, color="0.3", lw=0.7)
         ax.scatter(*net.T, c=[_color(lab) for lab in united_system(3)], s=12, depthshade=False)
         ax.view_init(elev=elev, azim=azim)
@@ -104,7 +86,7 @@ def make_torus(outdir: Path) -> list[Path]:
         _surface(ax, v, f, cmap(k % 20), 0.75)
     first = next(p for p in pieces if p.phi == 0 and p.psi == 0 and not p.upper)
     net = first.patch.net
-    for ka, kb in _net_edges(2):
+    for ka, kb in net_edges(2):
         ax.plot(*net[[ka, kb]].T, color="black", lw=1.0)
     ax.scatter(*net.T, color="black", s=14, depthshade=False)
     ax.view_init(elev=30, azim=-35)
