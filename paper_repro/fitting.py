@@ -34,8 +34,8 @@ class ExactTrig:
     cw: fmpq
     sw: fmpq
 
-    def _cs(self, r: int, g: int, b: int, phase: tuple[fmpq, fmpq] = (fmpq(1), fmpq(0))):
-        re, im = phase
+    def _cs(self, r: int, g: int, b: int) -> tuple[fmpq, fmpq]:
+        re, im = fmpq(1), fmpq(0)
         for (c, s), k in (((self.cu, self.su), r), ((self.cv, self.sv), g), ((self.cw, self.sw), b)):
             if k < 0:
                 s, k = -s, -k

@@ -86,11 +86,12 @@ def A(n: int, alpha, t, arith: str = "float") -> np.ndarray:
     if arith == "mp":
         a = mpmath.mpf(alpha)
         ts = [mpmath.mpf(x) for x in np.atleast_1d(np.asarray(t, dtype=object))]
+        consts = [c_const(n, i, a, "mp") for i in range(2 * n + 1)]
         out = np.empty((len(ts), 2 * n + 1), dtype=object)
         for k, x in enumerate(ts):
             s1, s2 = mpmath.sin((a - x) / 2), mpmath.sin(x / 2)
             for i in range(2 * n + 1):
-                out[k, i] = c_const(n, i, a, "mp") * s1 ** (2 * n - i) * s2**i
+                out[k, i] = consts[i] * s1 ** (2 * n - i) * s2**i
         return out
     tt = np.atleast_1d(np.asarray(t, dtype=np.float64))
     if np.any(tt < -1e-12 * alpha) or np.any(tt > alpha * (1 + 1e-12)):
