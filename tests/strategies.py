@@ -5,7 +5,7 @@ from fractions import Fraction
 from flint import fmpq
 from hypothesis import strategies as st
 
-from paper_repro.domain import RationalPoints, rational_alpha
+from paper_repro.core.domain import RationalPoints, rational_alpha
 
 orders = st.integers(min_value=1, max_value=6)
 alphas = st.floats(min_value=0.05, max_value=3.1, allow_nan=False)

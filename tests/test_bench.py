@@ -2,8 +2,8 @@
 
 import pytest
 
-from paper_repro.basis import evaluate
-from paper_repro.domain import rational_alpha, sample_points, sample_rational_points
+from paper_repro.core.basis import evaluate
+from paper_repro.core.domain import rational_alpha, sample_points, sample_rational_points
 
 pytestmark = pytest.mark.benchmark
 

@@ -4,8 +4,8 @@ import sys
 
 import pytest
 
-from paper_repro.io import atomic_path, write_json
-from paper_repro.report import gallery_html
+from paper_repro.app.report import gallery_html
+from paper_repro.util.io import atomic_path, write_json
 
 
 def _cli(*args):

@@ -4,7 +4,7 @@ import pytest
 
 from paper_repro.claims import boundary, dimension, symmetry
 from paper_repro.claims import univariate as uni
-from paper_repro.registry import CLAIMS, load_all, run_claim
+from paper_repro.util.registry import CLAIMS, load_all, run_claim
 
 
 @pytest.fixture(scope="module", autouse=True)

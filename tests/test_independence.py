@@ -4,11 +4,11 @@ from flint import fmpq
 from hypothesis import given
 from hypothesis import strategies as st
 
-from paper_repro.arith import ModpArith
-from paper_repro.basis import evaluate
 from paper_repro.claims.basis_transformation import transformation
 from paper_repro.claims.linear_independence import modp_case, numeric_case
-from paper_repro.derivatives import (
+from paper_repro.core.basis import evaluate
+from paper_repro.core.context import ModpContext
+from paper_repro.core.derivatives import (
     cos_power_derivative,
     mixed_derivative,
     printed_sign_cos,
@@ -17,11 +17,11 @@ from paper_repro.derivatives import (
     sign,
     sin_power_derivative,
 )
-from paper_repro.domain import rational_alpha, sample_rational_points
+from paper_repro.core.domain import rational_alpha, sample_rational_points
+from paper_repro.core.fourier import classes, evaluate_v, new_classes, printed_representatives, related, v_labels
+from paper_repro.core.labels import delta
+from paper_repro.core.rank import ball_sigma_min_bound, modp_rank, mp_singular_values, numeric_rank
 from paper_repro.figures.independence import elimination
-from paper_repro.fourier import classes, evaluate_v, new_classes, printed_representatives, related, v_labels
-from paper_repro.labels import delta
-from paper_repro.rank import ball_sigma_min_bound, modp_rank, mp_singular_values, numeric_rank
 
 from .strategies import rational_alphas, rational_points
 
@@ -75,14 +75,14 @@ def test_v_exact_float_agree(data, n, alpha):
     ex = evaluate_v(n, alpha, pts, "exact")
     fl = evaluate_v(n, alpha, pts, "float")
     assert np.max(np.abs(np.array([[float(x) for x in row] for row in ex]) - fl)) < 1e-12
-    ar = ModpArith()
+    ar = ModpContext()
     mp_ = evaluate_v(n, alpha, pts, ar)
-    assert [ar.from_fmpq(x) for x in ex.ravel()] == [int(x) for x in mp_.ravel()]
+    assert [ar.from_rational(x) for x in ex.ravel()] == [int(x) for x in mp_.ravel()]
 
 
 def test_coincidence_rank_small():
     alpha = rational_alpha((2, 5))
-    ar = ModpArith()
+    ar = ModpContext()
     for n in (1, 2, 3):
         pts = sample_rational_points(alpha, delta(n) + 4, seed=1)
         both = np.hstack([evaluate(n, alpha, pts, ar), evaluate_v(n, alpha, pts, ar)])

@@ -2,7 +2,7 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from paper_repro.labels import (
+from paper_repro.core.labels import (
     BasisLabel,
     delta,
     exponent_matrix,

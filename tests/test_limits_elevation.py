@@ -6,11 +6,11 @@ from hypothesis import strategies as st
 
 from paper_repro.claims.limits_claims import run_conversion
 from paper_repro.claims.order_elevation import printed_matrix
-from paper_repro.domain import sample_points
-from paper_repro.elevation import elevate, elevation_matrix_exact
-from paper_repro.labels import delta, united_system
-from paper_repro.limits import bernstein_eval, bezier_limit, conversion_matrix, limit_degree
-from paper_repro.patches import Patch, net_from_labels
+from paper_repro.core.domain import sample_points
+from paper_repro.core.elevation import elevate, elevation_matrix_exact
+from paper_repro.core.labels import delta, united_system
+from paper_repro.core.limits import bernstein_eval, bezier_limit, conversion_matrix, limit_degree
+from paper_repro.surfaces.patch import Patch, net_from_labels
 
 from .strategies import alphas, rational_alphas
 

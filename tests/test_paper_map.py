@@ -1,7 +1,7 @@
 import pytest
 
-from paper_repro import paper_map
-from paper_repro.registry import CLAIMS, FIGURES, load_all
+from paper_repro.app import paper_map
+from paper_repro.util.registry import CLAIMS, FIGURES, load_all
 
 
 def test_paper_map_lists_every_label():
@@ -18,4 +18,4 @@ def test_paper_map_lists_every_label():
 
 def test_code_mentions_ignores_plain_words():
     assert paper_map.code_mentions("dimension") == []
-    assert "paper_repro/printed_torus.py" in paper_map.code_mentions("exmp:torus")
+    assert "paper_repro/printed/torus.py" in paper_map.code_mentions("exmp:torus")

@@ -7,12 +7,13 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from paper_repro.claims.torus import CORRECTED, exact_torus, printed_net
-from paper_repro.domain import rational_alpha, sample_points
-from paper_repro.fitting import fit_exact, fit_mp
-from paper_repro.labels import delta, index_of
-from paper_repro.patches import Patch, export_mesh
-from paper_repro.printed_torus import torus
-from paper_repro.surfaces import cyclide_parts, cyclide_pieces, join_error
+from paper_repro.core.domain import rational_alpha, sample_points
+from paper_repro.core.labels import delta, index_of
+from paper_repro.printed.torus import torus
+from paper_repro.surfaces.fitting import fit_exact, fit_mp
+from paper_repro.surfaces.mesh import export_mesh
+from paper_repro.surfaces.models import cyclide_parts, cyclide_pieces, join_error
+from paper_repro.surfaces.patch import Patch
 
 from .strategies import alphas
 

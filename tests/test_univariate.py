@@ -3,7 +3,7 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from paper_repro.univariate import A, c_const, c_numerator
+from paper_repro.core.univariate import A, c_const, c_numerator
 
 from .strategies import alphas, orders
 

@@ -1,1 +1,1 @@
-"""Claim modules, one per claim of the paper (registered in :mod:`paper_repro.registry`)."""
+"""Claim modules, one per claim of the paper (registered in :mod:`paper_repro.util.registry`)."""

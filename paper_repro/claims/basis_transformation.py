@@ -12,23 +12,30 @@ from __future__ import annotations
 
 from flint import fmpq, fmpq_mat
 
-from ..arith import to_fmpq_mat
-from ..domain import rational_alpha, sample_rational_points
-from ..fourier import evaluate_v, v_labels
-from ..labels import delta, united_system
-from ..normalization import evaluate_normalized
-from ..registry import Outcome, claim
+from paper_repro.core.collocation import collocate
+from paper_repro.core.context import ExactContext, to_fmpq_mat
+from paper_repro.core.domain import rational_alpha, sample_rational_points
+from paper_repro.core.fourier import evaluate_v, v_labels
+from paper_repro.core.labels import delta, united_system
+from paper_repro.core.normalization import evaluate_normalized
+from paper_repro.util.registry import Outcome, claim
 
 
 def transformation(n: int, t: str, seed: int = 3) -> tuple[fmpq_mat, bool]:
+    """Exact M with V_n = T-bar_{2n} M at alpha = 4 atan(t), by the one collocation routine (verified at 3
+    extra rational points; ``check`` is False if they disagree)."""
     alpha = rational_alpha(fmpq(*map(int, t.split("/"))))
     d = delta(n)
-    pts = sample_rational_points(alpha, d + 3, seed=seed)
-    a = evaluate_normalized(n, alpha, pts, "exact")
-    b = evaluate_v(n, alpha, pts, "exact")
-    m = to_fmpq_mat(a[:d]).solve(to_fmpq_mat(b[:d]))
-    check = to_fmpq_mat(a[d:]) * m == to_fmpq_mat(b[d:])
-    return m, check
+    ctx = ExactContext()
+
+    def system(k: int):
+        pts = sample_rational_points(alpha, d + 3, seed=seed + k)
+        return evaluate_normalized(n, alpha, pts, ctx), evaluate_v(n, alpha, pts, ctx)
+
+    try:
+        return to_fmpq_mat(collocate(ctx, system, d, what="basis transformation").solution), True
+    except ArithmeticError:
+        return fmpq_mat(d, d), False
 
 
 def _entries(m: fmpq_mat, exact: bool) -> list[list[str]]:

@@ -17,11 +17,11 @@ from __future__ import annotations
 import mpmath
 import numpy as np
 
-from ..alphas import alpha_mp
-from ..basis import evaluate
-from ..labels import united_system
-from ..registry import Outcome, claim
-from ..univariate import A, c_const
+from paper_repro.core.alphas import alpha_mp
+from paper_repro.core.basis import evaluate
+from paper_repro.core.labels import united_system
+from paper_repro.core.univariate import A, c_const
+from paper_repro.util.registry import Outcome, claim
 
 
 #: Matching tolerance at ``dps`` digits: values are O(1), so residuals are rounding only.

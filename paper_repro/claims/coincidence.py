@@ -11,15 +11,15 @@ import mpmath
 import numpy as np
 from flint import fmpq
 
-from ..alphas import alpha_mp
-from ..arith import ModpArith
-from ..basis import evaluate
-from ..domain import mp_domain_points, rational_alpha, sample_rational_points
-from ..fourier import evaluate_v
-from ..labels import delta
-from ..normalization import evaluate_normalized
-from ..rank import modp_rank, mp_singular_values, numeric_rank
-from ..registry import Outcome, claim
+from paper_repro.core.alphas import alpha_mp
+from paper_repro.core.basis import evaluate
+from paper_repro.core.context import ModpContext
+from paper_repro.core.domain import mp_domain_points, rational_alpha, sample_rational_points
+from paper_repro.core.fourier import evaluate_v
+from paper_repro.core.labels import delta
+from paper_repro.core.normalization import evaluate_normalized
+from paper_repro.core.rank import modp_rank, mp_singular_values, numeric_rank
+from paper_repro.util.registry import Outcome, claim
 
 
 def span_residual(n: int, a_text: str, dps: int, seed: int) -> mpmath.mpf:
@@ -57,7 +57,7 @@ def span_residual(n: int, a_text: str, dps: int, seed: int) -> mpmath.mpf:
        kind="exact-evidence", ns=list(range(1, 9)), rational_ts=["1/3", "2/5"], mp_ns=[1, 2, 3, 4],
        ball_ns=[5, 6, 7, 8], alphas=["pi/4", "3pi/4"], dps=50, seed=9)
 def run(ns, rational_ts, mp_ns, alphas, dps, seed, ball_ns) -> Outcome:
-    ar = ModpArith()
+    ar = ModpContext()
     exact = {}
     for t in rational_ts:
         alpha = rational_alpha(fmpq(*map(int, t.split("/"))))

@@ -1,6 +1,6 @@
 """Claim ``derivative_signs``: Lemma lem:sign_cos_power_derivative and Proposition derivative_cosine_sine.
 
-The printed sign rules (verbatim, :mod:`paper_repro.derivatives`) against exact derivatives at 0
+The printed sign rules (verbatim, :mod:`paper_repro.core.derivatives`) against exact derivatives at 0
 computed from Taylor series with rational lambda, mu.  Disagreements become errata (with the
 corrected rule, itself checked on the same range).
 """
@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from flint import fmpq
 
-from ..derivatives import (
+from paper_repro.core.derivatives import (
     corrected_sign_cos,
     cos_power_derivative,
     mixed_derivative,
@@ -19,7 +19,7 @@ from ..derivatives import (
     sign,
     sin_power_derivative,
 )
-from ..registry import Outcome, claim
+from paper_repro.util.registry import Outcome, claim
 
 
 @claim("derivative_signs", paper_ref=["lem:sign_cos_power_derivative", "sign_cos_power_derivative",

@@ -13,8 +13,8 @@ Linear independence (that these functions are a basis) is the separate claim of 
 
 from __future__ import annotations
 
-from ..labels import COLORS, delta, exponents, full_system, united_system
-from ..registry import Outcome, claim
+from paper_repro.core.labels import COLORS, delta, exponents, full_system, united_system
+from paper_repro.util.registry import Outcome, claim
 
 
 def printed_index_sum(n: int) -> int:

@@ -3,10 +3,18 @@ iterative_construction_of_trivariate_extension and Corollary dimension, exhausti
 
 from __future__ import annotations
 
-from ..cache import cached
-from ..fourier import classes, is_transitive, new_classes, printed_representatives, related, v_labels, v_system
-from ..labels import delta
-from ..registry import Outcome, claim
+from paper_repro.core.fourier import (
+    classes,
+    is_transitive,
+    new_classes,
+    printed_representatives,
+    related,
+    v_labels,
+    v_system,
+)
+from paper_repro.core.labels import delta
+from paper_repro.util.cache import cached
+from paper_repro.util.registry import Outcome, claim
 
 
 def per_n(n: int) -> dict:

@@ -3,7 +3,7 @@
 * High precision: the delta_n x delta_n collocation matrix of the normalized system T-bar_{2n} at
   seeded interior points; singular values by mpmath SVD (n <= svd_n_max) or a certified lower bound
   of sigma_min from the ball-arithmetic inverse (larger n); rank by the gap criterion of
-  :func:`paper_repro.rank.numeric_rank`; the precision is doubled while sigma_min/sigma_max is within
+  :func:`paper_repro.core.rank.numeric_rank`; the precision is doubled while sigma_min/sigma_max is within
   20 digits of the working precision.
 * Exact certificate: the collocation matrix at rational points (rational quarter tangents) reduced
   modulo the prime 2^31 - 1; full rank over F_p implies full rank over Q, i.e. linear independence
@@ -18,14 +18,14 @@ import numpy as np
 from flint import fmpq
 from tqdm import tqdm
 
-from ..alphas import alpha_mp
-from ..arith import ModpArith
-from ..basis import evaluate
-from ..domain import mp_domain_points, rational_alpha, sample_rational_points
-from ..labels import delta
-from ..normalization import evaluate_normalized
-from ..rank import ball_sigma_min_bound, modp_rank, mp_singular_values, numeric_rank
-from ..registry import Outcome, claim
+from paper_repro.core.alphas import alpha_mp
+from paper_repro.core.basis import evaluate
+from paper_repro.core.context import ModpContext
+from paper_repro.core.domain import mp_domain_points, rational_alpha, sample_rational_points
+from paper_repro.core.labels import delta
+from paper_repro.core.normalization import evaluate_normalized
+from paper_repro.core.rank import ball_sigma_min_bound, modp_rank, mp_singular_values, numeric_rank
+from paper_repro.util.registry import Outcome, claim
 
 
 def collocation_mp(n: int, alpha_text: str, dps: int, seed: int, control: bool = False) -> np.ndarray:
@@ -64,7 +64,7 @@ def numeric_case(n: int, alpha_text: str, dps: int, svd_n_max: int, seed: int, c
 
 def modp_case(n: int, t: str, seed: int, control: bool = False) -> int:
     alpha = rational_alpha(fmpq(*map(int, t.split("/"))))
-    ar = ModpArith()
+    ar = ModpContext()
     a = evaluate(n, alpha, sample_rational_points(alpha, delta(n), seed=seed), ar)
     if control:
         a[:, -1] = (a[:, 0] + a[:, 1]) % ar.p
@@ -89,7 +89,7 @@ def run(ns, alphas, dps, svd_n_max, exact_ns, rational_ts, seed) -> Outcome:
     ctrl_modp = modp_case(ctrl_n, rational_ts[0], seed, control=True)
     control_ok = ctrl_mp == delta(ctrl_n) - 1 and ctrl_modp == delta(ctrl_n) - 1
     return Outcome(numeric_ok and exact_ok and control_ok, {
-        "numeric": numeric, "exact_rank_mod_p": exact, "prime": ModpArith().p,
+        "numeric": numeric, "exact_rank_mod_p": exact, "prime": ModpContext().p,
         "largest_n_certified_exactly": max(exact_ns),
         "negative_control": {"n": ctrl_n, "mp_rank": ctrl_mp, "modp_rank": ctrl_modp, "expected": delta(ctrl_n) - 1},
         "scope": "full rank mod p proves linear independence at each sampled rational-tangent alpha; "

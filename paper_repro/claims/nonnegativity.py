@@ -1,7 +1,7 @@
 """Claims ``nonnegativity`` (n <= 3, as the paper states) and ``nonnegativity_extended`` (open Question 1).
 
 For each n: the closed forms ``r = P(cos(alpha/2)) / sin^{2n+j}(alpha/2)`` of every coefficient are
-recovered exactly (:mod:`paper_repro.closed_forms`); P has no root in 0 < c < 1 and is positive there
+recovered exactly (:mod:`paper_repro.core.closed_forms`); P has no root in 0 < c < 1 and is positive there
 (Sturm sequences, exact) -- so the closed form is positive for every alpha in (0, pi).  Where the
 closed form is *proven* (degree bound, n <= proof_n_max) this proves r > 0 for every alpha, hence
 the normalized basis is non-negative (every R, G, B function is non-negative on Omega^alpha) and
@@ -15,10 +15,10 @@ from __future__ import annotations
 
 from flint import fmpq_poly
 
-from ..closed_forms import closed_forms_cached, prove, sign_on_unit_interval
-from ..labels import united_system
-from ..normalization import orbits
-from ..registry import Outcome, claim
+from paper_repro.core.closed_forms import closed_forms_cached, prove, sign_on_unit_interval
+from paper_repro.core.labels import united_system
+from paper_repro.core.normalization import orbits
+from paper_repro.util.registry import Outcome, claim
 
 
 def poly_str(p: fmpq_poly, var: str = "c") -> str:

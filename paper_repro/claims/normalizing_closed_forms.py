@@ -1,8 +1,8 @@
 """Claim ``normalizing_closed_forms``: every printed normalizing-coefficient formula, verbatim
-(:mod:`paper_repro.printed_normalization`), against independent exact computation.
+(:mod:`paper_repro.printed.normalization`), against independent exact computation.
 
 * Final forms of Examples normalizing_coefficients_n_1..3: checked at B + 1 values of alpha with the
-  degree bound of :mod:`paper_repro.closed_forms` -- a proof for all alpha (or a counterexample).
+  degree bound of :mod:`paper_repro.core.closed_forms` -- a proof for all alpha (or a counterexample).
 * Intermediate expressions of the same Examples, Remark normalizing_coeff_of_level_0 and Proposition
   prop:level_1_coefficients (n = 2..n_max) and the relations of Example exmp:from_1_to_2: exact
   comparison at sampled rational-tangent alpha (exact evidence); Remark and Proposition are in
@@ -15,12 +15,12 @@ from __future__ import annotations
 
 from flint import fmpq, fmpq_poly
 
-from ..closed_forms import ClosedForm, closed_forms_cached, prove
-from ..domain import rational_alpha
-from ..normalization import coefficients
-from ..printed_normalization import FINAL, INTERMEDIATE, from_1_to_2, prop_level_1, remark_level_0
-from ..registry import Outcome, claim
-from ..univariate import c_const, c_numerator
+from paper_repro.core.closed_forms import ClosedForm, closed_forms_cached, prove
+from paper_repro.core.domain import rational_alpha
+from paper_repro.core.normalization import coefficients
+from paper_repro.core.univariate import c_const, c_numerator
+from paper_repro.printed.normalization import FINAL, INTERMEDIATE, from_1_to_2, prop_level_1, remark_level_0
+from paper_repro.util.registry import Outcome, claim
 
 
 def _alphas(ts):

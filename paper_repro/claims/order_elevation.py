@@ -7,12 +7,12 @@ from fractions import Fraction
 import numpy as np
 from flint import fmpq
 
-from ..domain import rational_alpha, sample_points
-from ..elevation import elevate, elevation_matrix_exact
-from ..labels import delta, index_of, united_system
-from ..patches import Patch
-from ..printed_limits import printed_elevation_rows
-from ..registry import Outcome, claim
+from paper_repro.core.domain import rational_alpha, sample_points
+from paper_repro.core.elevation import elevate, elevation_matrix_exact
+from paper_repro.core.labels import delta, index_of, united_system
+from paper_repro.printed.limits import printed_elevation_rows
+from paper_repro.surfaces.patch import Patch
+from paper_repro.util.registry import Outcome, claim
 
 
 def _q(x) -> fmpq:
@@ -31,7 +31,7 @@ def printed_matrix(alpha) -> list[list[fmpq]]:
 
 def node_distance(net: np.ndarray, n: int, alpha: float) -> float:
     """max distance from each control point to the patch point at its node's barycentric position."""
-    from ..figures.graph import CORNERS, position
+    from paper_repro.figures.graph import CORNERS, position
 
     patch = Patch(n, alpha, net)
     worst = 0.0

@@ -14,12 +14,12 @@ import mpmath
 import numpy as np
 from flint import fmpq
 
-from ..alphas import alpha_float, alpha_mp
-from ..basis import evaluate
-from ..domain import rational_alpha, sample_points, sample_rational_points
-from ..labels import index_of
-from ..normalization import coefficient_vector, evaluate_normalized, solve_full_exact
-from ..registry import Outcome, claim
+from paper_repro.core.alphas import alpha_float, alpha_mp
+from paper_repro.core.basis import evaluate
+from paper_repro.core.domain import rational_alpha, sample_points, sample_rational_points
+from paper_repro.core.labels import index_of
+from paper_repro.core.normalization import coefficient_vector, evaluate_normalized, solve_full_exact
+from paper_repro.util.registry import Outcome, claim
 
 
 def printed_symmetry_conditions(n: int) -> list[tuple[str, str]]:

@@ -6,11 +6,11 @@ import mpmath
 import numpy as np
 from scipy.spatial import Delaunay
 
-from ..domain import sample_points
-from ..labels import delta, index_of, united_system
-from ..patches import Patch, merge_meshes
-from ..registry import Outcome, claim
-from ..surfaces import cyclide_parts, cyclide_pieces, join_error, torus_pieces
+from paper_repro.core.domain import sample_points
+from paper_repro.core.labels import delta, index_of, united_system
+from paper_repro.surfaces.models import cyclide_parts, cyclide_pieces, join_error, torus_pieces
+from paper_repro.surfaces.patch import Patch, merge_meshes
+from paper_repro.util.registry import Outcome, claim
 
 CYCLIDE = {"a": "6", "b": "sqrt(32)", "c": "2", "mu": "3"}
 
@@ -77,7 +77,7 @@ def _random_net(rng, n):
                  "projectively invariant. Torus patches join continuously.",
        kind="numeric-evidence", ns=[1, 2, 3], alphas=["0.4", "pi/2", "2.8"], nets=4, points=400, seed=23)
 def run_properties(ns, alphas, nets, points, seed) -> Outcome:
-    from ..alphas import alpha_float
+    from paper_repro.core.alphas import alpha_float
 
     rng = np.random.default_rng(seed)
     res = {"affine": 0.0, "convex_hull_outside": 0, "corners": 0.0, "boundary": 0.0, "tangent_planes": 0.0,

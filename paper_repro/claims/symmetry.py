@@ -1,8 +1,8 @@
 """Claim ``symmetry``: the cyclic relations and the six symmetry properties of Fig. oriented_graph(b).
 
 Transcribed verbatim from Section sec:RGB (exponents in the order of
-:data:`paper_repro.labels.SLOTS`), independent of the R formula + cyclic rule that
-:mod:`paper_repro.labels` uses to build G and B:
+:data:`paper_repro.core.labels.SLOTS`), independent of the R formula + cyclic rule that
+:mod:`paper_repro.core.labels` uses to build G and B:
 
 * printed explicit G formulas (i <= n and i > n) and B formulas;
 * printed relations ``R_{2n,2n-i,j}(u,v,w) = R_{2n,i,j}(w,v,u)``, ``G_{2n,2n-i,j}(u,v,w) = G_{2n,i,j}(u,w,v)``,
@@ -19,10 +19,10 @@ from __future__ import annotations
 import mpmath
 import numpy as np
 
-from ..alphas import alpha_mp
-from ..basis import evaluate
-from ..labels import BasisLabel, compose, exponents, full_system
-from ..registry import Outcome, claim
+from paper_repro.core.alphas import alpha_mp
+from paper_repro.core.basis import evaluate
+from paper_repro.core.labels import BasisLabel, compose, exponents, full_system
+from paper_repro.util.registry import Outcome, claim
 
 
 def printed_g(n: int, i: int, j: int) -> tuple[int, ...]:

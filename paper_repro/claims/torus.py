@@ -1,9 +1,9 @@
 """Claim ``torus_exact``: Example exmp:torus -- the printed control net of the toroidal triangle.
 
 * Independent net: fitting the torus (eq. toroidal_triangle) in the normalized basis of order 2
-  (:mod:`paper_repro.fitting`), exactly at rational-tangent alpha with rational rho, mu, and in
+  (:mod:`paper_repro.surfaces.fitting`), exactly at rational-tangent alpha with rational rho, mu, and in
   mpmath at any alpha.
-* Every printed coordinate (:mod:`paper_repro.printed_torus`) is compared with it over several
+* Every printed coordinate (:mod:`paper_repro.printed.torus`) is compared with it over several
   (alpha, rho, mu); disagreeing coordinates become errata with a corrected closed form that is itself
   verified (exactly at rational-tangent alpha, and at high precision).
 * Maximum deviation from the torus of the patch built from the printed net and from the computed net.
@@ -15,13 +15,13 @@ import mpmath
 import numpy as np
 from flint import fmpq
 
-from ..alphas import alpha_mp
-from ..domain import rational_alpha, sample_points
-from ..fitting import ExactTrig, fit_exact, fit_mp
-from ..labels import index_of, united_system
-from ..patches import Patch
-from ..printed_torus import PRINTED, torus
-from ..registry import Outcome, claim
+from paper_repro.core.alphas import alpha_mp
+from paper_repro.core.domain import rational_alpha, sample_points
+from paper_repro.core.labels import index_of, united_system
+from paper_repro.printed.torus import PRINTED, torus
+from paper_repro.surfaces.fitting import ExactTrig, fit_exact, fit_mp
+from paper_repro.surfaces.patch import Patch
+from paper_repro.util.registry import Outcome, claim
 
 #: Corrected closed forms (found by inspection of the computed net, verified below), label -> axis -> f.
 CORRECTED = {("b_{4,3,1}", "x"): (

@@ -17,10 +17,10 @@ import mpmath
 import numpy as np
 from flint import fmpq, fmpq_poly
 
-from ..alphas import alpha_mp
-from ..domain import RationalAngle, rational_alpha
-from ..registry import Outcome, claim
-from ..univariate import A, bernstein, c_numerator, c_numerator_by_expansion
+from paper_repro.core.alphas import alpha_mp
+from paper_repro.core.domain import RationalAngle, rational_alpha
+from paper_repro.core.univariate import A, bernstein, c_numerator, c_numerator_by_expansion
+from paper_repro.util.registry import Outcome, claim
 
 
 def constants_match(n: int) -> bool:

@@ -1,4 +1,4 @@
-"""Figure scripts (registered in :mod:`paper_repro.registry`) and their shared helpers.
+"""Figure scripts (registered in :mod:`paper_repro.util.registry`) and their shared helpers.
 
 Figures are written as PNG with fixed metadata (no timestamps), so reruns give identical bytes.
 """
@@ -12,7 +12,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-from ..io import atomic_path  # noqa: E402
+from paper_repro.util.io import atomic_path  # noqa: E402
 
 COLOR_OF = {"R": "#d62728", "G": "#2ca02c", "B": "#1f5fbf", "centre": "#ff9900"}
 DPI = 110

@@ -18,8 +18,9 @@ from pathlib import Path
 import numpy as np
 from scipy.spatial import ConvexHull
 
-from ..labels import COLORS, BasisLabel, exponents, full_system, united_system
-from ..registry import figure
+from paper_repro.core.labels import COLORS, BasisLabel, exponents, full_system, united_system
+from paper_repro.util.registry import figure
+
 from . import COLOR_OF, plt, save
 
 CORNERS = {"u": np.array([0.0, 0.0]), "w": np.array([1.0, 0.0]), "v": np.array([0.5, np.sqrt(3) / 2])}
@@ -56,7 +57,7 @@ def edges(n: int) -> list[tuple[BasisLabel, BasisLabel]]:
 
 def net_edges(n: int) -> list[tuple[int, int]]:
     """The graph's edges as pairs of internal indices of T_{2n} (aliases resolved, duplicates dropped)."""
-    from ..labels import index_of
+    from paper_repro.core.labels import index_of
 
     ix = index_of(n)
     out: list[tuple[int, int]] = []

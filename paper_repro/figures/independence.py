@@ -2,7 +2,7 @@
 
 Every function of T_{2n} is a product U(u) V(v) W(w) of powers of half-angle sines and cosines, so
 its derivatives along the parametrizations of the proof factor: derivatives at 0 are exact
-(:mod:`paper_repro.derivatives`), derivatives at a generic interior point are evaluated with mpmath.
+(:mod:`paper_repro.core.derivatives`), derivatives at a generic interior point are evaluated with mpmath.
 
 * ``derivative_scheme_n_4``: for k = 0..4, which functions have a vanishing 4th order mixed partial
   d^4/dv^{4-k} dw^k at y = 0 under parametrization_for_partition_of_unity (black) or not (coloured);
@@ -23,9 +23,10 @@ import mpmath
 import numpy as np
 from flint import fmpq
 
-from ..derivatives import mixed_derivative
-from ..labels import exponents, united_system
-from ..registry import figure
+from paper_repro.core.derivatives import mixed_derivative
+from paper_repro.core.labels import exponents, united_system
+from paper_repro.util.registry import figure
+
 from . import COLOR_OF, plt, save
 from .graph import position
 
@@ -159,10 +160,10 @@ def make_scheme(outdir: Path, n: int = 4) -> list[Path]:
 def make_singular_values(outdir: Path) -> list[Path]:
     import json
 
-    from ..alphas import alpha_float
-    from ..claims.linear_independence import collocation_mp
-    from ..io import DATA
-    from ..rank import mp_singular_values
+    from paper_repro.claims.linear_independence import collocation_mp
+    from paper_repro.core.alphas import alpha_float
+    from paper_repro.core.rank import mp_singular_values
+    from paper_repro.util.io import DATA
 
     fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(13, 4.6))
     for a_text, ls in (("pi/6", "-"), ("5pi/6", "--")):

@@ -7,12 +7,13 @@ from pathlib import Path
 
 import numpy as np
 
-from ..elevation import elevate
-from ..io import DATA
-from ..labels import united_system
-from ..limits import bezier_limit, limit_terms, multinomial
-from ..patches import Patch
-from ..registry import figure
+from paper_repro.core.elevation import elevate
+from paper_repro.core.labels import united_system
+from paper_repro.core.limits import bezier_limit, limit_terms, multinomial
+from paper_repro.surfaces.patch import Patch
+from paper_repro.util.io import DATA
+from paper_repro.util.registry import figure
+
 from . import COLOR_OF, plt, save
 from .graph import edges, net_edges, position
 

@@ -7,10 +7,11 @@ from pathlib import Path
 import mpmath
 import numpy as np
 
-from ..labels import united_system
-from ..patches import Patch
-from ..registry import figure
-from ..surfaces import cyclide_pieces, torus_pieces
+from paper_repro.core.labels import united_system
+from paper_repro.surfaces.models import cyclide_pieces, torus_pieces
+from paper_repro.surfaces.patch import Patch
+from paper_repro.util.registry import figure
+
 from . import COLOR_OF, plt, save
 from .graph import net_edges, position
 

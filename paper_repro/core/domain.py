@@ -3,7 +3,7 @@
 Two kinds of points:
 
 * real points ``(u, v, w)`` (float or mpmath), checked to lie on Omega^alpha within
-  :data:`~paper_repro.validation.DOMAIN_TOL` (relative to alpha);
+  :data:`~paper_repro.util.validation.DOMAIN_TOL` (relative to alpha);
 * rational points (:class:`RationalPoints`): alpha, u and v are given through the rational
   tangents of their quarter angles, ``t = tan(x/4)``, so that ``sin(x/2) = 2t/(1+t^2)`` and
   ``cos(x/2) = (1-t^2)/(1+t^2)`` are rational; w/2 = alpha/2 - u/2 - v/2 then has rational sine and
@@ -19,8 +19,8 @@ import mpmath
 import numpy as np
 from flint import fmpq
 
-from .arith import Arith, ModpArith
-from .validation import DOMAIN_TOL, check_alpha
+from paper_repro.core.context import Context, ExactContext
+from paper_repro.util.validation import DOMAIN_TOL, check_alpha
 
 
 def _q(x) -> fmpq:
@@ -29,6 +29,14 @@ def _q(x) -> fmpq:
     if isinstance(x, tuple):
         return fmpq(*x)
     return fmpq(x)
+
+
+def _sin_half(t: fmpq) -> fmpq:
+    return 2 * t / (1 + t**2)
+
+
+def _cos_half(t: fmpq) -> fmpq:
+    return (1 - t**2) / (1 + t**2)
 
 
 @dataclass(frozen=True)
@@ -44,11 +52,11 @@ class RationalAngle:
 
     @property
     def sin_half(self) -> fmpq:
-        return 2 * self.t / (1 + self.t**2)
+        return _sin_half(self.t)
 
     @property
     def cos_half(self) -> fmpq:
-        return (1 - self.t**2) / (1 + self.t**2)
+        return _cos_half(self.t)
 
     def mp(self) -> mpmath.mpf:
         """The angle itself, ``4 atan(t)``, at the current mpmath precision."""
@@ -74,11 +82,11 @@ class RationalPoints:
     >= 0 (checked exactly: ``sin(w/2) >= 0``).
     """
 
-    alpha: RationalAngle
+    alpha: RationalAngle | None
     tu: tuple[fmpq, ...]
     tv: tuple[fmpq, ...]
     #: ``False`` allows points of the whole plane u + v + w = alpha (used for collocation of identities
-    #: that hold on the plane, see :mod:`paper_repro.normalization`).
+    #: that hold on the plane, see :mod:`paper_repro.core.normalization`).
     check: bool = True
 
     def __post_init__(self) -> None:
@@ -88,6 +96,8 @@ class RationalPoints:
             raise ValueError("points: tu and tv must have the same length")
         if not self.check:
             return
+        if not isinstance(self.alpha, RationalAngle):
+            raise TypeError(f"points: alpha must be a RationalAngle, got {type(self.alpha).__name__}")
         for x in self.tu + self.tv:
             if not (0 <= x < 1):
                 raise ValueError(f"points: quarter-angle tangents must lie in [0, 1), got {x}")
@@ -101,17 +111,22 @@ class RationalPoints:
 
     def half_angle_values(self) -> list[list[fmpq]]:
         """``[sin u/2, cos u/2, sin v/2, cos v/2, sin w/2, cos w/2]`` as lists of exact rationals."""
-        sh, ch = self.alpha.sin_half, self.alpha.cos_half
-        out: list[list[fmpq]] = [[] for _ in range(6)]
+        return [list(v) for v in half_angle_values(self, None, ExactContext())]
+
+    def quarter_values(self) -> list[list[fmpq]]:
+        """``[sin u/2, cos u/2, sin v/2, cos v/2]`` exactly (no alpha needed)."""
+        out: list[list[fmpq]] = [[], [], [], []]
         for tu, tv in zip(self.tu, self.tv):
-            su, cu = RationalAngle(tu).sin_half, RationalAngle(tu).cos_half
-            sv, cv = RationalAngle(tv).sin_half, RationalAngle(tv).cos_half
-            c_uv, s_uv = cu * cv - su * sv, su * cv + cu * sv  # cos, sin of (u+v)/2
-            sw = sh * c_uv - ch * s_uv  # sin(alpha/2 - (u+v)/2)
-            cw = ch * c_uv + sh * s_uv
-            for slot, val in enumerate((su, cu, sv, cv, sw, cw)):
+            vals = (_sin_half(tu), _cos_half(tu), _sin_half(tv), _cos_half(tv))
+            for slot, val in enumerate(vals):
                 out[slot].append(val)
         return out
+
+    def uvw_float(self) -> np.ndarray:
+        """The points as an ``(P, 3)`` float array."""
+        a = float(self.alpha)
+        rows = [[float(RationalAngle(tu)), float(RationalAngle(tv))] for tu, tv in zip(self.tu, self.tv)]
+        return np.array([[u, v, a - u - v] for u, v in rows], dtype=np.float64).reshape(-1, 3)
 
     def uvw_mp(self) -> np.ndarray:
         """The points as an ``(P, 3)`` object array of mpf, at the current mpmath precision."""
@@ -157,39 +172,46 @@ def _is_mp(points) -> bool:
     return isinstance(first, mpmath.mpf)
 
 
-def half_angle_values(points, alpha, arith: Arith) -> list[np.ndarray]:
-    """Six arrays ``sin u/2, cos u/2, sin v/2, cos v/2, sin w/2, cos w/2`` in the given arithmetic.
+def half_angle_values(points, alpha, ctx: Context) -> list[np.ndarray]:
+    """Six arrays ``sin u/2, cos u/2, sin v/2, cos v/2, sin w/2, cos w/2`` in the context ``ctx``.
 
-    ``points`` is an ``(P, 3)`` array of ``(u, v, w)`` for the ``float`` and ``mp`` arithmetics,
-    and a :class:`RationalPoints` for ``exact`` and ``modp`` (then ``alpha`` may be ``None`` or
-    must equal ``points.alpha``).
+    ``points`` is a :class:`RationalPoints` (every context: the rational half-angle values of u and v
+    are converted, w follows from :meth:`Context.w_half`; ``alpha`` may be ``None``, then the
+    points' own alpha is used, or a number, for alpha-independent collocation points) or a ``(P, 3)``
+    array of real ``(u, v, w)`` (the real contexts only).
+
+    >>> from paper_repro.core.context import get_context
+    >>> a = rational_alpha(fmpq(1, 2))
+    >>> pts = RationalPoints(a, (fmpq(1, 5),), (fmpq(1, 7),))
+    >>> sw_exact = half_angle_values(pts, None, get_context("exact"))[4][0]
+    >>> sw_float = half_angle_values(pts.uvw_float(), float(a), get_context("float"))[4][0]
+    >>> bool(abs(float(sw_exact) - sw_float) < 1e-15)
+    True
     """
     if isinstance(points, RationalPoints):
-        if alpha is not None and alpha != points.alpha:
+        if alpha is None:
+            alpha = points.alpha
+            if alpha is None:
+                raise ValueError("alpha: these points carry no alpha; pass alpha")
+        elif points.alpha is not None and alpha != points.alpha:
             raise ValueError("alpha does not match the alpha of the rational points")
-        vals = points.half_angle_values()
-        if arith.name == "exact":
-            return [arith.asarray(v) for v in vals]
-        if arith.name == "modp":
-            assert isinstance(arith, ModpArith)
-            return [arith.asarray([arith.from_fmpq(x) for x in v]) for v in vals]
-        if arith.name == "mp":
-            return half_angle_values(points.uvw_mp(), points.alpha.mp(), arith)
-        return half_angle_values(points.uvw_mp().astype(np.float64), float(points.alpha), arith)
-    if arith.name in ("exact", "modp"):
-        raise ValueError(f"arith {arith.name!r} needs RationalPoints (rational quarter-angle tangents)")
+        with ctx.scope():
+            su, cu, sv, cv = (ctx.asarray([ctx.from_rational(x) for x in col]) for col in points.quarter_values())
+            sa, ca = ctx.alpha_half(alpha)
+            sw, cw = ctx.w_half(ctx, sa, ca, su, cu, sv, cv)
+        return [su, cu, sv, cv, sw, cw]
+    if ctx.exact:
+        raise TypeError(f"arith {ctx.name!r} needs RationalPoints (rational quarter-angle tangents), "
+                        f"got {type(points).__name__}")
     arr = check_points(points, alpha)
-    return plane_half_angle_values(arr, arith)
+    return plane_half_angle_values(arr, ctx)
 
 
-def plane_half_angle_values(uvw: np.ndarray, arith: Arith) -> list[np.ndarray]:
-    """Half-angle sines/cosines of ``(P, 3)`` points of the plane, unchecked (``float`` or ``mp``)."""
-    if arith.name == "float":
-        half = np.asarray(uvw, dtype=np.float64) / 2
-        s, c = np.sin(half), np.cos(half)
-    else:
-        half = arith.asarray(uvw) / 2
-        s, c = np.frompyfunc(mpmath.sin, 1, 1)(half), np.frompyfunc(mpmath.cos, 1, 1)(half)
+def plane_half_angle_values(uvw: np.ndarray, ctx: Context) -> list[np.ndarray]:
+    """Half-angle sines/cosines of ``(P, 3)`` real points of the plane, unchecked."""
+    with ctx.scope():
+        half = ctx.div(ctx.asarray(uvw), ctx.convert(2))
+        s, c = ctx.sin(half), ctx.cos(half)
     return [s[:, 0], c[:, 0], s[:, 1], c[:, 1], s[:, 2], c[:, 2]]
 
 

@@ -10,7 +10,7 @@ from __future__ import annotations
 import re
 from pathlib import Path
 
-from .io import ROOT
+from paper_repro.util.io import ROOT
 
 PAPER = ROOT.parent / "shared" / "paper" / "triangular-trigonometric-patches.tex"
 

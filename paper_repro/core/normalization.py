@@ -12,7 +12,7 @@ The coefficients ``r_{2n,2n-i,j}, g_{...}, b_{...}`` are the unique solution of
   (it holds on the triangle, hence everywhere on the plane), so the collocation points may be fixed
   independently of alpha (:func:`fixed_points`; w = alpha - u - v may be negative).  Then every
   coefficient is a rational function of t = tan(alpha/4) of bounded degree (:func:`cramer_degree_bound`),
-  which is what makes the closed-form checks of :mod:`paper_repro.closed_forms` proofs.
+  which is what makes the closed-form checks of :mod:`paper_repro.core.closed_forms` proofs.
 
 Arithmetics: exact rationals at rational-tangent alpha (``'exact'``), mpmath (``'mp'``) and float.
 """
@@ -23,14 +23,15 @@ from functools import cache, lru_cache
 
 import mpmath
 import numpy as np
-from flint import arb, arb_mat, ctx, fmpq, fmpq_mat
+from flint import arb, fmpq
 
-from .arith import BallArith, to_fmpq_mat
-from .basis import evaluate, monomials
-from .cache import cached
-from .domain import RationalAngle, RationalPoints
-from .labels import BasisLabel, compose, exponent_matrix, exponents, united_system
-from .validation import check_alpha, check_n
+from paper_repro.core.basis import evaluate
+from paper_repro.core.collocation import Collocation, collocate
+from paper_repro.core.context import BallContext, Context, ExactContext, get_context
+from paper_repro.core.domain import RationalAngle, RationalPoints
+from paper_repro.core.labels import BasisLabel, compose, exponents, united_system
+from paper_repro.util.cache import cached
+from paper_repro.util.validation import check_alpha, check_n
 
 PERMUTATIONS = ((0, 1, 2), (0, 2, 1), (1, 0, 2), (1, 2, 0), (2, 0, 1), (2, 1, 0))
 
@@ -81,63 +82,60 @@ def fixed_points(n: int, count: int, seed: int = 0) -> tuple[tuple[fmpq, ...], t
     return tuple(fmpq(a, q) for a, _ in pairs), tuple(fmpq(b, q) for _, b in pairs)
 
 
-def _plane_points(alpha: RationalAngle, tu, tv) -> RationalPoints:
-    return RationalPoints(alpha, tuple(tu), tuple(tv), check=False)
+def _plane_points(tu, tv) -> RationalPoints:
+    """alpha-independent points of the plane u + v + w = alpha (w may be negative)."""
+    return RationalPoints(None, tuple(tu), tuple(tv), check=False)
+
+
+def reduced_matrix(n: int, alpha, pts: RationalPoints, ctx: Context) -> np.ndarray:
+    """``(P, m)`` array: the orbit sums of T_{2n} at the points, in the context ``ctx``."""
+    vals = evaluate(n, alpha, pts, ctx)
+    with ctx.scope():
+        return ctx.dot(vals, ctx.asarray(orbit_matrix(n)))
 
 
 def reduced_matrix_exact(n: int, alpha: RationalAngle, pts: RationalPoints) -> np.ndarray:
     """``(P, m)`` object array of fmpq: orbit sums of T_{2n} at the points."""
-    vals = evaluate(n, alpha, pts, "exact")
-    om = orbit_matrix(n)
-    out = np.empty((vals.shape[0], om.shape[1]), dtype=object)
-    for o in range(om.shape[1]):
-        cols = np.nonzero(om[:, o])[0]
-        for p in range(vals.shape[0]):
-            acc = fmpq(0)
-            for k in cols:
-                acc += vals[p, k]
-            out[p, o] = acc
-    return out
+    return reduced_matrix(n, alpha, pts, ExactContext())
+
+
+def solve_reduced(n: int, alpha, ctx: Context, *, verify: int = 3, seed: int = 0,
+                  attempts: int = 5) -> Collocation:
+    """Orbit coefficients (in :func:`orbits` order) by :func:`~paper_repro.core.collocation.collocate`.
+
+    The square system at m fixed alpha-independent points (:func:`fixed_points`) is solved in ``ctx``
+    and the identity checked at ``verify`` further points; a singular point set is replaced by the
+    next one, up to ``attempts`` sets.
+    """
+    n = check_n(n)
+    m = len(orbits(n))
+
+    def system(k: int):
+        tu, tv = fixed_points(n, m + verify, seed + k)
+        a = reduced_matrix(n, alpha, _plane_points(tu, tv), ctx)
+        return a, ctx.ones((a.shape[0], 1))
+
+    return collocate(ctx, system, m, attempts=attempts, what=f"partition of unity (n={n})")
 
 
 def solve_reduced_exact(n: int, alpha: RationalAngle, *, verify: int = 3, seed: int = 0,
                         attempts: int = 5) -> tuple[list[fmpq], int]:
-    """Exact orbit coefficients (in :func:`orbits` order) at rational-tangent alpha.
-
-    Solves the square system at m fixed points and checks the identity exactly at ``verify`` further
-    points (``ArithmeticError`` if it fails).  A singular point set is replaced by the next one, up to
-    ``attempts`` sets; returns ``(solution, index of the point set used)``.
-    """
-    n = check_n(n)
-    m = len(orbits(n))
-    for attempt in range(attempts):
-        tu, tv = fixed_points(n, m + verify, seed + attempt)
-        mat = reduced_matrix_exact(n, alpha, _plane_points(alpha, tu, tv))
-        a = to_fmpq_mat(mat[:m])
-        try:
-            x = a.solve(fmpq_mat(m, 1, [1] * m))
-        except ZeroDivisionError:
-            continue
-        sol = [x[k, 0] for k in range(m)]
-        for p in range(m, m + verify):
-            if sum((mat[p, k] * sol[k] for k in range(m)), fmpq(0)) != 1:
-                raise ArithmeticError(f"partition of unity fails at a verification point (n={n}, t={alpha.t})")
-        return sol, attempt
-    raise ArithmeticError(f"collocation matrix singular for {attempts} point sets (n={n}, t={alpha.t})")
+    """Exact orbit coefficients at rational-tangent alpha: ``(solution, index of the point set used)``."""
+    res = solve_reduced(n, alpha, ExactContext(), verify=verify, seed=seed, attempts=attempts)
+    return list(res.solution.reshape(-1)), res.point_set
 
 
 def solve_full_exact(n: int, alpha: RationalAngle, *, seed: int = 0) -> list[fmpq]:
     """Exact coefficients of all delta_n functions (no symmetry assumed), internal order."""
+    ctx = ExactContext()
     d = len(united_system(n))
-    for attempt in range(5):
-        tu, tv = fixed_points(n, d, seed + 77 + attempt)
-        vals = evaluate(n, alpha, _plane_points(alpha, tu, tv), "exact")
-        try:
-            x = to_fmpq_mat(vals).solve(fmpq_mat(d, 1, [1] * d))
-        except ZeroDivisionError:
-            continue
-        return [x[k, 0] for k in range(d)]
-    raise ArithmeticError(f"full collocation matrix singular for 5 point sets (n={n})")
+
+    def system(k: int):
+        tu, tv = fixed_points(n, d, seed + 77 + k)
+        vals = evaluate(n, alpha, _plane_points(tu, tv), ctx)
+        return vals, ctx.ones((d, 1))
+
+    return list(collocate(ctx, system, d, what=f"full partition of unity (n={n})").solution.reshape(-1))
 
 
 def cramer_degree_bound(n: int) -> int:
@@ -170,60 +168,50 @@ def exact_coefficients_cached(n: int, alpha: RationalAngle) -> tuple[list[fmpq],
 def _ball_orbit_coefficients(n: int, alpha_str: str, digits: int) -> tuple[str, ...]:
     """Orbit coefficients to ``digits`` correct significant digits, as decimal strings.
 
-    Ball arithmetic (flint ``arb``): the fixed collocation points have rational half-angle sines and
-    cosines, only sin(alpha/2), cos(alpha/2) are balls; the reduced system is solved with ``arb_mat``
-    and the working precision doubled until every coefficient's radius is below ``10^-digits`` of its
-    midpoint.  The result is therefore certified (up to the decimal rounding of alpha itself).
+    Ball arithmetic (:class:`~paper_repro.core.context.BallContext`): the fixed collocation points have
+    rational half-angle sines and cosines, only sin(alpha/2), cos(alpha/2) are balls; the reduced system
+    is solved by :func:`solve_reduced` and the precision doubled until every coefficient's radius is
+    below ``10^-digits`` of its midpoint.  The result is therefore certified (up to the decimal
+    rounding of alpha itself).
     """
-    m = len(orbits(n))
-    tu, tv = fixed_points(n, m, 0)
     prec = int(3.33 * digits) + 64
-    old = ctx.prec
-    try:
-        for _ in range(8):
-            ctx.prec = prec
-            half = arb(alpha_str) / 2
-            vals = [[] for _ in range(6)]
-            sh, ch = half.sin(), half.cos()
-            for a, b in zip(tu, tv):
-                su, cu = RationalAngle(a).sin_half, RationalAngle(a).cos_half
-                sv, cv = RationalAngle(b).sin_half, RationalAngle(b).cos_half
-                c_uv, s_uv = cu * cv - su * sv, su * cv + cu * sv
-                row = (su, cu, sv, cv, sh * arb(c_uv) - ch * arb(s_uv), ch * arb(c_uv) + sh * arb(s_uv))
-                for slot, val in enumerate(row):
-                    vals[slot].append(arb(val))
-            trig = [np.array(v, dtype=object) for v in vals]
-            red = monomials(exponent_matrix(n), trig, BallArith()).dot(orbit_matrix(n).astype(object))
+    for _ in range(8):
+        ctx = BallContext(prec=prec)
+        with ctx.scope():
             try:
-                x = arb_mat(red.tolist()).solve(arb_mat(m, 1, [1] * m))
-            except ZeroDivisionError:
+                xs = list(solve_reduced(n, arb(alpha_str), ctx, verify=0, attempts=1).solution.reshape(-1))
+            except ArithmeticError:
                 prec *= 2
                 continue
-            xs = [x[k, 0] for k in range(m)]
             if all(v.rad() <= abs(v.mid()) * arb(10) ** (-digits) for v in xs):
                 return tuple(v.mid().str(digits + 5, radius=False) for v in xs)
-            prec *= 2
-    finally:
-        ctx.prec = old
+        prec *= 2
     raise ArithmeticError(f"normalization: no certified {digits} digits up to {prec // 2} bits (n={n})")
 
 
-def orbit_coefficients(n: int, alpha, arith: str = "float", *, dps: int | None = None) -> list:
-    """Orbit coefficients (order of :func:`orbits`) in ``'float'``, ``'mp'`` or ``'exact'``.
+def orbit_coefficients(n: int, alpha, arith: str | Context = "float", *, dps: int | None = None) -> list:
+    """Orbit coefficients (order of :func:`orbits`) in any arithmetic.
 
-    ``alpha`` is a number in (0, pi) (``'float'``, ``'mp'``; mpf allowed) or a :class:`RationalAngle`
-    (``'exact'``).  ``'mp'`` returns ``dps`` (default: the current mpmath precision) certified digits,
-    ``'float'`` 20 certified digits rounded to float64 (ball arithmetic, see
-    :func:`_ball_orbit_coefficients`).
+    Exact arithmetics (``'exact'``, ``'modp'``): alpha must be a :class:`RationalAngle`; the exact
+    rational solution (cached on disk) is converted.  Real arithmetics: a certified ball solve to the
+    context's digits (``'float'``: 20 digits, rounded to float64; ``'mp'``: ``dps`` digits, default the
+    current mpmath precision).
+
+    At tan(alpha/4) = 1/2 (sin(alpha/2) = 4/5, cos(alpha/2) = 3/5) Example normalizing_coefficients_n_1
+    gives 1/s^2 = 25/16, 2c/s^2 = 15/8 and 2/s = 5/2:
+
+    >>> from paper_repro.core.domain import rational_alpha
+    >>> [str(x) for x in orbit_coefficients(1, rational_alpha(fmpq(1, 2)), "exact")]
+    ['25/16', '15/8', '5/2']
     """
     n = check_n(n)
-    if arith not in ("float", "mp", "exact"):
-        raise ValueError(f"arith must be 'float', 'mp' or 'exact', got {arith!r}")
-    if arith == "exact":
+    ctx = get_context(arith, dps=dps or mpmath.mp.dps)
+    if ctx.exact:
         if not isinstance(alpha, RationalAngle):
-            raise ValueError("alpha must be a RationalAngle (rational tan(alpha/4)) for arith='exact'")
-        return exact_coefficients_cached(n, alpha)[0]
-    digits = (dps or mpmath.mp.dps) if arith == "mp" else 20
+            raise TypeError(f"alpha must be a RationalAngle (rational tan(alpha/4)) for arith {ctx.name!r}, "
+                            f"got {type(alpha).__name__}")
+        return [ctx.from_rational(x) for x in exact_coefficients_cached(n, alpha)[0]]
+    digits = max(ctx.digits, 20)
     if isinstance(alpha, RationalAngle):
         with mpmath.workdps(digits + 20):
             alpha = alpha.mp()
@@ -231,40 +219,49 @@ def orbit_coefficients(n: int, alpha, arith: str = "float", *, dps: int | None =
     with mpmath.workdps(digits + 20):
         alpha_str = mpmath.nstr(mpmath.mpf(alpha), digits + 15, strip_zeros=False)
     xs = _ball_orbit_coefficients(n, alpha_str, digits)
-    if arith == "mp":
-        with mpmath.workdps(digits):
-            return [mpmath.mpf(v) for v in xs]
-    return [float(v) for v in xs]
+    with ctx.scope():
+        return [ctx.convert(v) for v in xs]  # decimal strings: every real context parses them
 
 
-def coefficient_vector(n: int, alpha, arith: str = "float", *, dps: int | None = None) -> np.ndarray:
-    """Coefficients of all delta_n functions in internal order (float array, or object array)."""
-    orb = orbit_coefficients(n, alpha, arith, dps=dps)
-    out = np.empty(len(united_system(n)), dtype=np.float64 if arith == "float" else object)
+def coefficient_vector(n: int, alpha, arith: str | Context = "float", *, dps: int | None = None) -> np.ndarray:
+    """Coefficients of all delta_n functions in internal order, as an array of the context."""
+    ctx = get_context(arith, dps=dps or mpmath.mp.dps)
+    orb = orbit_coefficients(n, alpha, ctx)
+    out = ctx.zeros((len(united_system(n)),))
     for (_, members), x in zip(orbits(n), orb):
         for k in members:
             out[k] = x
     return out
 
 
-def coefficients(n: int, alpha, arith: str = "float", *, dps: int | None = None) -> dict[str, object]:
-    """Normalizing coefficients keyed by paper label: ``{'r_{4,4,0}': ..., 'g_{4,3,1}': ..., ...}``.
+def coefficients(n: int, alpha, arith: str | Context = "float", *, dps: int | None = None) -> dict[str, object]:
+    """Normalizing coefficients (eq. normalizing_weights) keyed by paper label.
 
     Every function of T_{2n} appears once, under its own label (the centre as ``r_{2n,n,n}``).
+
+    >>> from paper_repro.core.domain import rational_alpha
+    >>> c = coefficients(1, rational_alpha(fmpq(1, 2)), "exact")
+    >>> str(c["r_{2,2,0}"]), str(c["g_{2,1,0}"]), str(c["r_{2,1,1}"])
+    ('25/16', '15/8', '5/2')
     """
     vec = coefficient_vector(n, alpha, arith, dps=dps)
     return {lab.coefficient: vec[k] for k, lab in enumerate(united_system(n))}
 
 
-def evaluate_normalized(n: int, alpha, points, arith: str = "float", *, dps: int = 50) -> np.ndarray:
-    """Values of the blending functions T-bar_{2n}^alpha (eq. normalized_united_system): ``(P, delta_n)``."""
-    raw = evaluate(n, alpha, points, arith, dps=dps)
-    vec = coefficient_vector(n, alpha, arith, dps=None if arith != "mp" else dps)
-    if arith == "mp":
-        with mpmath.workdps(dps):
-            return raw * vec[None, :]
-    return raw * vec[None, :]
+def evaluate_normalized(n: int, alpha, points, arith: str | Context = "float", *, dps: int = 50) -> np.ndarray:
+    """Values of the blending functions T-bar_{2n}^alpha (eq. normalized_united_system): ``(P, delta_n)``.
+
+    >>> import numpy as np
+    >>> v = evaluate_normalized(2, 1.0, [[0.2, 0.3, 0.5]])
+    >>> bool(abs(v.sum() - 1) < 1e-14)
+    True
+    """
+    ctx = get_context(arith, dps=dps)
+    raw = evaluate(n, alpha, points, ctx)
+    vec = coefficient_vector(n, alpha, ctx)
+    with ctx.scope():
+        return ctx.mul(raw, vec[None, :])
 
 
 __all__ = ["orbits", "coefficients", "coefficient_vector", "orbit_coefficients", "evaluate_normalized",
-           "solve_reduced_exact", "solve_full_exact", "cramer_degree_bound"]
+           "solve_reduced", "solve_reduced_exact", "solve_full_exact", "cramer_degree_bound"]

@@ -11,7 +11,7 @@ from fractions import Fraction
 
 import mpmath
 
-from .validation import check_alpha
+from paper_repro.util.validation import check_alpha
 
 _PI_RE = re.compile(r"^\s*(\d*)\s*\*?\s*pi\s*(?:/\s*(\d+))?\s*$")
 

@@ -15,7 +15,7 @@ import mpmath
 import numpy as np
 from flint import arb, arb_mat, ctx
 
-from .arith import to_nmod_mat
+from paper_repro.core.context import ModpContext
 
 
 def mp_singular_values(a: np.ndarray, dps: int) -> list[mpmath.mpf]:
@@ -55,6 +55,6 @@ def ball_sigma_min_bound(a: np.ndarray, dps: int) -> tuple[mpmath.mpf, mpmath.mp
 
 
 def modp_rank(a: np.ndarray, p: int) -> int:
-    """Exact rank over F_p of an int64 array with entries in [0, p)."""
-    return to_nmod_mat(a, p).rank()
+    """Exact rank over F_p of an int64 array with entries in [0, p) (a lower bound of the rank over Q)."""
+    return ModpContext(p=p).rank(a)
 

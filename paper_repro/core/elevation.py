@@ -14,35 +14,47 @@ from functools import lru_cache
 import numpy as np
 from flint import fmpq
 
-from .arith import to_fmpq_mat
-from .domain import RationalAngle, rational_alpha, sample_points, sample_rational_points
-from .labels import delta
-from .normalization import evaluate_normalized
-from .patches import check_net
-from .validation import check_alpha, check_n
+from paper_repro.core.collocation import Collocation, collocate
+from paper_repro.core.context import Context, ExactContext, FloatContext
+from paper_repro.core.domain import RationalAngle, rational_alpha, sample_points, sample_rational_points
+from paper_repro.core.labels import delta
+from paper_repro.core.nets import check_net
+from paper_repro.core.normalization import evaluate_normalized
+from paper_repro.util.validation import check_alpha, check_n
+
+
+def elevation_system(n: int, alpha, ctx: Context, *, verify: int = 3, seed: int = 4, rows: int | None = None
+                     ) -> Collocation:
+    """E with T-bar_n(p) = T-bar_{n+1}(p) E by :func:`~paper_repro.core.collocation.collocate` in ``ctx``.
+
+    The exact arithmetics collocate at rational points of Omega^alpha (alpha a :class:`RationalAngle`);
+    the real ones at seeded random points.  ``rows`` collocation rows (default delta_{n+1}; more give a
+    least-squares solve in float).
+    """
+    n = check_n(n)
+    d1 = delta(n + 1)
+    m = rows or d1
+
+    def system(k: int):
+        if ctx.exact:
+            pts = sample_rational_points(alpha, m + verify, seed=seed + k)
+        else:
+            pts = sample_points(float(alpha), m + verify, seed=seed + k)
+        return evaluate_normalized(n + 1, alpha, pts, ctx), evaluate_normalized(n, alpha, pts, ctx)
+
+    return collocate(ctx, system, m, what=f"elevation {n}->{n + 1}")
 
 
 @lru_cache(maxsize=64)
 def elevation_matrix_exact(n: int, alpha: RationalAngle, verify: int = 3, seed: int = 4) -> list[list[fmpq]]:
     """Exact E with T-bar_n(p) = T-bar_{n+1}(p) E, verified at ``verify`` extra rational points."""
-    n = check_n(n)
-    d1 = delta(n + 1)
-    pts = sample_rational_points(alpha, d1 + verify, seed=seed)
-    big = evaluate_normalized(n + 1, alpha, pts, "exact")
-    small = evaluate_normalized(n, alpha, pts, "exact")
-    e = to_fmpq_mat(big[:d1]).solve(to_fmpq_mat(small[:d1]))
-    if to_fmpq_mat(big[d1:]) * e != to_fmpq_mat(small[d1:]):
-        raise ArithmeticError(f"elevation {n}->{n + 1} fails at verification points (t={alpha.t})")
-    return [[e[i, j] for j in range(e.ncols())] for i in range(e.nrows())]
+    return elevation_system(n, alpha, ExactContext(), verify=verify, seed=seed).solution.tolist()
 
 
 @lru_cache(maxsize=64)
 def _elevation_matrix_float(n: int, alpha: float) -> np.ndarray:
-    d1 = delta(n + 1)
-    pts = sample_points(alpha, 3 * d1, seed=12)
-    big, small = evaluate_normalized(n + 1, alpha, pts), evaluate_normalized(n, alpha, pts)
-    e, *_ = np.linalg.lstsq(big, small, rcond=None)
-    return e
+    """E in float: least squares over 3 delta_{n+1} seeded points (the square systems are ill-conditioned)."""
+    return elevation_system(n, alpha, FloatContext(), verify=0, seed=12, rows=3 * delta(n + 1)).solution
 
 
 def elevation_matrix(n: int, alpha) -> np.ndarray:

@@ -6,7 +6,7 @@ ring Dupin cyclide (eq. Dupin_in_3d), over squares [phi, phi + alpha] x [psi, ps
 * upper: U = phi + alpha - u, V = psi + alpha - v.
 
 Each triangle's control net (and, for the rational cyclide, weights) is fitted exactly in the
-normalized basis (:mod:`paper_repro.fitting`).
+normalized basis (:mod:`paper_repro.surfaces.fitting`).
 """
 
 from __future__ import annotations
@@ -16,8 +16,8 @@ from dataclasses import dataclass
 import mpmath
 import numpy as np
 
-from .fitting import fit_mp
-from .patches import Patch
+from paper_repro.surfaces.fitting import fit_mp
+from paper_repro.surfaces.patch import Patch
 
 
 @dataclass

@@ -7,7 +7,7 @@
 * quotient sets by union-find over the relation (the transitive closure; whether the relation is
   already transitive is reported by :func:`is_transitive`);
 * V_n by Proposition iterative_construction_of_trivariate_extension: 1 and cos, sin of one
-  representative of each new class, evaluated in any arithmetic of :mod:`paper_repro.arith`
+  representative of each new class, evaluated in any arithmetic of :mod:`paper_repro.core.context`
   (cos and sin of integer combinations of u, v, w are polynomials in the half-angle values, so they
   are exact rationals at rational points).
 """
@@ -17,12 +17,11 @@ from __future__ import annotations
 from functools import cache
 from itertools import product
 
-import mpmath
 import numpy as np
 
-from .arith import Arith, get_arith
-from .domain import half_angle_values
-from .validation import check_n
+from paper_repro.core.context import Context, get_context
+from paper_repro.core.domain import half_angle_values
+from paper_repro.util.validation import check_n
 
 Triple = tuple[int, int, int]
 
@@ -111,44 +110,41 @@ def v_labels(n: int) -> list[str]:
     return ["1" if kind == "1" else f"{kind}({arg(t)})" for kind, t in v_system(n)]
 
 
-def evaluate_v(n: int, alpha, points, arith: str | Arith = "float", *, dps: int = 50) -> np.ndarray:
+def full_angles(half: list, ctx: Context) -> list[tuple]:
+    """``[(cos u, sin u), (cos v, sin v), (cos w, sin w)]`` from the six half-angle values
+    (``cos x = c^2 - s^2``, ``sin x = 2 s c``), in the context ``ctx``."""
+    su, cu, sv, cv, sw, cw = half
+    return [(ctx.sub(ctx.mul(c, c), ctx.mul(s, s)), ctx.add(ctx.mul(s, c), ctx.mul(s, c)))
+            for s, c in ((su, cu), (sv, cv), (sw, cw))]
+
+
+def cos_sin_combination(full: list[tuple], triple: Triple, ctx: Context, one) -> tuple:
+    """``(cos, sin)`` of ``r u + g v + b w`` by complex multiplication of the full-angle values.
+
+    ``full`` as returned by :func:`full_angles`; ``one`` is the context's 1 (scalar or array); negative
+    multiples use the conjugate.  The single implementation of the recurrence.
+    """
+    re, im = one, ctx.sub(one, one)
+    for (c, s), power in zip(full, triple):
+        if power < 0:
+            s, power = ctx.sub(ctx.sub(s, s), s), -power
+        for _ in range(power):
+            re, im = ctx.sub(ctx.mul(re, c), ctx.mul(im, s)), ctx.add(ctx.mul(re, s), ctx.mul(im, c))
+    return re, im
+
+
+def evaluate_v(n: int, alpha, points, arith: str | Context = "float", *, dps: int = 50) -> np.ndarray:
     """Values of V_n^alpha at ``points`` (``(P, 3)`` real points or :class:`RationalPoints`): ``(P, delta_n)``.
 
-    Uses only ring operations on the half-angle values: cos x = c^2 - s^2, sin x = 2 s c for x = u, v, w,
-    then complex multiplication for the integer combination.
+    Uses only ring operations on the half-angle values (:func:`full_angles`, :func:`cos_sin_combination`).
     """
-    ar = get_arith(arith, dps=dps)
-    ctx = mpmath.workdps(dps) if ar.name == "mp" else _null()
-    with ctx:
-        su, cu, sv, cv, sw, cw = half_angle_values(points, alpha, ar)
-        full = [(_sub(ar, ar.mul(cu, cu), ar.mul(su, su)), _add(ar, ar.mul(su, cu), ar.mul(su, cu))),
-                (_sub(ar, ar.mul(cv, cv), ar.mul(sv, sv)), _add(ar, ar.mul(sv, cv), ar.mul(sv, cv))),
-                (_sub(ar, ar.mul(cw, cw), ar.mul(sw, sw)), _add(ar, ar.mul(sw, cw), ar.mul(sw, cw)))]
-        npts = len(su)
+    ctx = get_context(arith, dps=dps)
+    half = half_angle_values(points, alpha, ctx)
+    with ctx.scope():
+        full = full_angles(half, ctx)
+        one = ctx.ones((len(half[0]),))
         cols = []
         for kind, t in v_system(n):
-            re, im = ar.ones((npts,)), _sub(ar, ar.ones((npts,)), ar.ones((npts,)))
-            for var, power in enumerate(t):
-                for _ in range(power):
-                    c, s = full[var]
-                    re, im = _sub(ar, ar.mul(re, c), ar.mul(im, s)), _add(ar, ar.mul(re, s), ar.mul(im, c))
+            re, im = cos_sin_combination(full, t, ctx, one)
             cols.append(re if kind in ("1", "cos") else im)
         return np.stack(cols, axis=1)
-
-
-class _null:
-    def __enter__(self):
-        return self
-
-    def __exit__(self, *exc):
-        return False
-
-
-def _add(ar: Arith, a, b):
-    out = a + b
-    return out % ar.p if ar.name == "modp" else out
-
-
-def _sub(ar: Arith, a, b):
-    out = a - b
-    return out % ar.p if ar.name == "modp" else out

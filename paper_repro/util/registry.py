@@ -23,7 +23,7 @@ from collections.abc import Callable
 from dataclasses import asdict, dataclass, field
 from typing import Any
 
-from .cache import cached, code_fingerprint
+from paper_repro.util.cache import cached, code_fingerprint
 
 KINDS = ("proof", "exact-evidence", "numeric-evidence")
 
@@ -140,26 +140,50 @@ def load_all() -> None:
         importlib.import_module(mod)
 
 
+#: How the command line's ``--n N`` maps onto the parameters a claim takes (only those it has).
+N_PARAMETERS = {"ns": lambda n: [n], "n_min": lambda n: n, "n_max": lambda n: n, "bernstein_ns": lambda n: [n],
+                "ns_numeric": lambda n: [n], "n_exact_max": lambda n: n}
+ALPHA_PARAMETERS = {"alphas": lambda a: [a]}
+
+
+def cli_overrides(c: Claim, n: int | None, alpha: str | None) -> dict[str, Any] | None:
+    """Overrides of claim ``c`` for ``--n``/``--alpha``; ``None`` if the claim takes neither given option."""
+    out: dict[str, Any] = {}
+    for given, table in ((n, N_PARAMETERS), (alpha, ALPHA_PARAMETERS)):
+        if given is None:
+            continue
+        hits = {k: f(given) for k, f in table.items() if k in c.defaults}
+        if not hits:
+            return None
+        out.update(hits)
+    return out
+
+
 def run_claim(c: Claim, overrides: dict[str, Any] | None = None, extended: bool = False
               ) -> tuple[ClaimResult, Outcome, float]:
-    """Run one claim; returns its result, the raw outcome (errata, data files), and the seconds it took."""
+    """Run one claim; returns its result, the raw outcome (errata, data files), and the seconds it took.
+
+    ``overrides`` may only name parameters the claim takes (``ValueError`` listing them otherwise).  A
+    claim that raises is reported as failing with the error, and that failure is never cached.
+    """
     params = dict(c.defaults)
     if extended and c.extended:
         params.update(c.extended)
-    for k, v in (overrides or {}).items():
-        if k in params:
-            params[k] = v
+    unknown = sorted(set(overrides or {}) - set(params))
+    if unknown:
+        raise ValueError(f"claim {c.id!r} takes no parameter(s) {unknown}; it takes {sorted(params)}")
+    params.update(overrides or {})
     t0 = time.perf_counter()
 
     def compute() -> dict:
-        try:
-            out = c.func(**params)
-        except Exception as exc:  # a crashing check is a failing claim, reported as such
-            out = Outcome(False, {"error": f"{type(exc).__name__}: {exc}"})
-        return asdict(out)
+        return asdict(c.func(**params))
 
-    # whole-claim cache: keyed by id, parameters and the package source (see cache.code_fingerprint)
-    stored = cached("claims", {"id": c.id, "params": params, "code": code_fingerprint()}, compute)
+    try:
+        # whole-claim cache: keyed by id, parameters and the package source (see cache.code_fingerprint)
+        stored, hit = cached("claims", {"id": c.id, "params": params, "code": code_fingerprint()}, compute,
+                             report_hit=True)
+    except Exception as exc:  # a crashing check is a failing claim, reported as such (and not cached)
+        stored, hit = asdict(Outcome(False, {"error": f"{type(exc).__name__}: {exc}"})), False
     out = Outcome(**stored)
     seconds = time.perf_counter() - t0
     kind = out.kind or c.kind
@@ -167,4 +191,5 @@ def run_claim(c: Claim, overrides: dict[str, Any] | None = None, extended: bool 
         raise ValueError(f"claim {c.id}: kind {kind!r} not in {KINDS}")
     result = ClaimResult(c.id, c.paper_ref, c.statement, kind, params, out.measured,
                          "pass" if out.passed else "fail")
+    result.cached = hit  # type: ignore[attr-defined]
     return result, out, seconds

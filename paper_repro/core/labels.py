@@ -3,7 +3,7 @@
 Every function of the joint system (eq. ``united_system``) is a monomial in the six half-angle
 values ``sin(u/2), cos(u/2), sin(v/2), cos(v/2), sin(w/2), cos(w/2)``.  This module stores each
 function as its paper label together with its exponent vector; every evaluator of the package
-(:mod:`paper_repro.basis`) works from these exponent vectors, so the formulas of
+(:mod:`paper_repro.core.basis`) works from these exponent vectors, so the formulas of
 eqs. ``R_system_leq_n``, ``R_system_geq_n`` are written exactly once, here.
 
 Paper conventions (Section ``sec:RGB``):
@@ -35,7 +35,7 @@ from functools import cache
 
 import numpy as np
 
-from .validation import check_n
+from paper_repro.util.validation import check_n
 
 COLORS = ("R", "G", "B")
 

@@ -4,12 +4,12 @@ For every orbit representative ``r_{2n,2n-i,j}`` we look for a polynomial P with
 coefficients such that ``r_{2n,2n-i,j}^alpha = P(cos(alpha/2)) / sin^{2n+j}(alpha/2)``.
 
 * Recovery (:func:`recover`): exact coefficients at rational-tangent alpha
-  (:mod:`paper_repro.normalization`), ``y = r s^{2n+j}`` interpolated exactly in ``c = cos(alpha/2)``
+  (:mod:`paper_repro.core.normalization`), ``y = r s^{2n+j}`` interpolated exactly in ``c = cos(alpha/2)``
   with increasing degree until the interpolant also matches at ``verify`` further alpha.
   That alone is *evidence*.
 * Proof (:func:`prove`): with the alpha-independent collocation points every coefficient is a
   rational function of t = tan(alpha/4) whose numerator and denominator have degree <= 4nm
-  (:func:`paper_repro.normalization.cramer_degree_bound`); ``P(c)/s^k`` is one with numerator degree
+  (:func:`paper_repro.core.normalization.cramer_degree_bound`); ``P(c)/s^k`` is one with numerator degree
   <= 2 max(deg P, k) and denominator degree <= 2 max(deg P - k, 0) + k.  Their difference, cleared of
   denominators, has degree <= B = 4nm + 2 max(deg P, k) + k, so agreement at B + 1 distinct t (where
   the fixed collocation matrix is non-singular) proves the closed form for *every* alpha.
@@ -25,9 +25,15 @@ from dataclasses import dataclass
 from flint import fmpq, fmpq_mat, fmpq_poly
 from tqdm import tqdm
 
-from .cache import cached
-from .domain import RationalAngle, rational_alpha
-from .normalization import cramer_degree_bound, exact_coefficients_cached, orbits, parse_fmpq, solve_reduced_exact
+from paper_repro.core.domain import RationalAngle, rational_alpha
+from paper_repro.core.normalization import (
+    cramer_degree_bound,
+    exact_coefficients_cached,
+    orbits,
+    parse_fmpq,
+    solve_reduced_exact,
+)
+from paper_repro.util.cache import cached
 
 
 def t_grid(count: int, start: int = 2) -> list[RationalAngle]:

@@ -12,13 +12,14 @@ from __future__ import annotations
 import argparse
 import sys
 
+from paper_repro.core.labels import SLOTS, exponents, united_system
+from paper_repro.util.registry import CLAIMS, FIGURES, load_all
+
 from . import report
-from .labels import SLOTS, exponents, united_system
-from .registry import CLAIMS, FIGURES, load_all
 
 
 def _parse_alpha(text: str) -> str:
-    from .alphas import alpha_float
+    from paper_repro.core.alphas import alpha_float
 
     alpha_float(text)  # validates: ValueError names alpha and the range
     return text
@@ -52,16 +53,26 @@ def main(argv: list[str] | None = None) -> int:
             unknown = sorted(set(args.only or []) - set(CLAIMS))
             if unknown:
                 raise ValueError(f"--only: unknown claim id(s) {unknown}; known: {sorted(CLAIMS)}")
-            overrides = {}
-            if args.n is not None:
-                from .validation import check_n
+            from paper_repro.util.registry import cli_overrides
+            from paper_repro.util.validation import check_n
 
-                n = check_n(args.n, "--n")
-                overrides.update(ns=[n], n_min=n, n_max=n, bernstein_ns=[n], ns_numeric=[n], n_exact_max=n)
-            if args.alpha is not None:
-                overrides.update(alphas=[_parse_alpha(args.alpha)])
-            partial = bool(args.only or overrides)
-            ok = report.run_claims(args.only, overrides, extended=args.extended, write=not partial)
+            n = check_n(args.n, "--n") if args.n is not None else None
+            alpha = _parse_alpha(args.alpha) if args.alpha is not None else None
+            per_claim: dict[str, dict] = {}
+            skipped = []
+            for cid in args.only or list(CLAIMS):
+                ov = cli_overrides(CLAIMS[cid], n, alpha)
+                if ov is None:
+                    if args.only:
+                        raise ValueError(f"claim {cid!r} takes no {'--n' if n is not None else '--alpha'}; "
+                                         f"it takes {sorted(CLAIMS[cid].defaults)}")
+                    skipped.append(cid)
+                else:
+                    per_claim[cid] = ov
+            if skipped:
+                print(f"skipped (they take no --n/--alpha): {', '.join(skipped)}")
+            partial = bool(args.only or n is not None or alpha is not None)
+            ok = report.run_claims(list(per_claim), per_claim, extended=args.extended, write=not partial)
             return 0 if ok else 1
         if args.cmd == "figures":
             unknown = sorted(set(args.only or []) - set(FIGURES))
@@ -70,7 +81,7 @@ def main(argv: list[str] | None = None) -> int:
             report.make_figures(args.only)
             return 0
         if args.cmd == "reproduce":
-            ok = report.run_claims(None, {}, extended=args.extended, write=True)
+            ok = report.run_claims(None, None, extended=args.extended, write=True)
             report.make_figures(None)
             return 0 if ok else 1
     except ValueError as exc:

@@ -16,7 +16,7 @@ from collections.abc import Callable
 from functools import lru_cache
 from typing import TypeVar
 
-from .io import ROOT, dumps, write_text
+from paper_repro.util.io import ROOT, dumps, write_text
 
 CACHE_VERSION = 2
 CACHE_DIR = ROOT / ".cache"
@@ -29,18 +29,27 @@ def key(name: str, params: dict) -> str:
     return hashlib.sha256(canon.encode()).hexdigest()[:32]
 
 
-def cached(name: str, params: dict, compute: Callable[[], T]) -> T:
-    """Return ``compute()``, memoised on disk under ``name`` and the JSON-serialisable ``params``."""
+def cached(name: str, params: dict, compute: Callable[[], T], *, report_hit: bool = False):
+    """Return ``compute()``, memoised on disk under ``name`` and the JSON-serialisable ``params``.
+
+    An exception raised by ``compute`` propagates and nothing is stored.  With ``report_hit`` the
+    result is ``(value, True if it came from the cache)``.  ``PAPER_REPRO_NO_CACHE=1`` bypasses the
+    cache (nothing read, nothing written).
+    """
     if os.environ.get("PAPER_REPRO_NO_CACHE"):
-        return json.loads(dumps(compute()))
+        value = json.loads(dumps(compute()))
+        return (value, False) if report_hit else value
     path = CACHE_DIR / name / f"{key(name, params)}.json"
     if path.exists():
-        stored = json.loads(path.read_text())
+        try:
+            stored = json.loads(path.read_text())
+        except (OSError, ValueError):
+            stored = {}
         if stored.get("params") == json.loads(json.dumps(params)):
-            return stored["value"]
+            return (stored["value"], True) if report_hit else stored["value"]
     value = json.loads(dumps(compute()))  # the same JSON form a cache hit returns
     write_text(path, dumps({"name": name, "params": params, "value": value}))
-    return value
+    return (value, False) if report_hit else value
 
 
 @lru_cache(maxsize=1)

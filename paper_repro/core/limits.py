@@ -2,7 +2,7 @@
 
 With u = alpha x, v = alpha y, w = alpha z (x + y + z = 1) a function of level j of T_{2n} has
 sine exponents (a, b, c) for (u, v, w) with a + b + c = 2n + j, and its coefficient is
-P(cos(alpha/2)) / sin^{2n+j}(alpha/2) (:mod:`paper_repro.closed_forms`).  Since
+P(cos(alpha/2)) / sin^{2n+j}(alpha/2) (:mod:`paper_repro.core.closed_forms`).  Since
 sin(alpha x/2) / sin(alpha/2) -> x and cos -> 1::
 
     lim T-bar_f(alpha x, alpha y, alpha z) = P_f(1) x^a y^b z^c,
@@ -19,10 +19,10 @@ from math import factorial
 import numpy as np
 from flint import fmpq
 
-from .closed_forms import closed_forms_cached
-from .labels import delta, exponents, united_system
-from .normalization import orbits
-from .patches import check_net
+from paper_repro.core.closed_forms import closed_forms_cached
+from paper_repro.core.labels import delta, exponents, united_system
+from paper_repro.core.nets import check_net
+from paper_repro.core.normalization import orbits
 
 
 def limit_terms(n: int) -> list[tuple[fmpq, tuple[int, int, int]]]:

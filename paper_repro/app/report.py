@@ -16,9 +16,9 @@ from typing import Any
 import numpy as np
 from tqdm import tqdm
 
-from .io import BUILD, DATA, FIGURES, ROOT, rel, write_json, write_text
-from .registry import CLAIMS, ClaimResult, run_claim
-from .registry import FIGURES as FIGURE_REGISTRY
+from paper_repro.util.io import BUILD, DATA, FIGURES, ROOT, rel, write_json, write_text
+from paper_repro.util.registry import CLAIMS, ClaimResult, run_claim
+from paper_repro.util.registry import FIGURES as FIGURE_REGISTRY
 
 
 def _short(text: str, width: int) -> str:
@@ -55,16 +55,18 @@ def claims_markdown(results: list[ClaimResult]) -> str:
     return "\n".join(out)
 
 
-def run_claims(only: list[str] | None, overrides: dict[str, Any], extended: bool = False,
+def run_claims(only: list[str] | None, overrides: dict[str, dict[str, Any]] | None, extended: bool = False,
                write: bool = True) -> bool:
-    """Run claims, print the table, and (if ``write``) publish data; returns True if all pass."""
+    """Run claims, print the table, and (if ``write``) publish data; returns True if all pass.
+
+    ``overrides`` maps claim ids to parameter overrides (each checked by :func:`run_claim`)."""
     ids = [c for c in CLAIMS if not only or c in only]
     results: list[ClaimResult] = []
     errata: list[dict] = []
     data_files: dict[str, Any] = {}
     seconds: dict[str, float] = {}
     for cid in tqdm(ids, desc="claims", unit="claim", leave=False):
-        res, out, sec = run_claim(CLAIMS[cid], overrides, extended=extended)
+        res, out, sec = run_claim(CLAIMS[cid], (overrides or {}).get(cid), extended=extended)
         results.append(res)
         errata += out.errata
         data_files.update(out.data)
@@ -79,7 +81,7 @@ def run_claims(only: list[str] | None, overrides: dict[str, Any], extended: bool
         for relpath, obj in sorted(data_files.items()):
             path = DATA / relpath
             if isinstance(obj, dict) and "__mesh__" in obj:
-                from .patches import export_mesh
+                from paper_repro.surfaces.mesh import export_mesh
 
                 export_mesh(path, np.array(obj["__mesh__"]["vertices"]), np.array(obj["__mesh__"]["faces"]))
             elif isinstance(obj, str):

@@ -16,9 +16,10 @@ from math import comb
 
 import mpmath
 import numpy as np
-from flint import fmpq, fmpq_poly
+from flint import fmpq_poly
 
-from .validation import check_alpha, check_n
+from paper_repro.core.context import Context, get_context, power_table
+from paper_repro.util.validation import check_alpha, check_n
 
 
 def c_numerator(n: int, i: int) -> list[int]:
@@ -52,53 +53,53 @@ def c_numerator_by_expansion(n: int) -> list[fmpq_poly]:
     return acc
 
 
-def _poly_eval(coeffs, x):
-    acc = 0 * x
-    for c in reversed(coeffs):
-        acc = acc * x + c
-    return acc
+def _power(ctx: Context, x, k: int):
+    out = ctx.convert(1)
+    for _ in range(k):
+        out = ctx.mul(out, x)
+    return out
 
 
-def c_const(n: int, i: int, alpha, arith: str = "float"):
-    """``c_{2n,i}^alpha`` from the printed formula, in ``'float'``, ``'mp'`` or ``'exact'``.
+def c_const(n: int, i: int, alpha, arith: str | Context = "float"):
+    """``c_{2n,i}^alpha`` from the printed formula, in any arithmetic (``'mp'``: the current precision).
 
-    For ``'exact'`` pass a :class:`~paper_repro.domain.RationalAngle` as ``alpha``.
+    For the exact arithmetics pass a :class:`~paper_repro.core.domain.RationalAngle` as ``alpha``.
+
+    >>> import math
+    >>> bool(abs(c_const(1, 1, 1.0) - 2 * math.cos(0.5) / math.sin(0.5) ** 2) < 1e-12)
+    True
     """
     coeffs = c_numerator(n, i)
-    if arith == "exact":
-        s, c = alpha.sin_half, alpha.cos_half
-        return _poly_eval([fmpq(k) for k in coeffs], c) / s ** (2 * n)
-    check_alpha(alpha)
-    if arith == "mp":
-        a = mpmath.mpf(alpha)
-        return _poly_eval([mpmath.mpf(k) for k in coeffs], mpmath.cos(a / 2)) / mpmath.sin(a / 2) ** (2 * n)
-    a = float(alpha)
-    return _poly_eval(coeffs, np.cos(a / 2)) / np.sin(a / 2) ** (2 * n)
+    ctx = get_context(arith, dps=mpmath.mp.dps)
+    if not hasattr(alpha, "sin_half"):
+        check_alpha(alpha)
+    with ctx.scope():
+        s, c = ctx.alpha_half(alpha)
+        acc = ctx.convert(0)
+        for k in reversed(coeffs):
+            acc = ctx.add(ctx.mul(acc, c), ctx.convert(k))
+        return ctx.div(acc, _power(ctx, s, 2 * n))
 
 
-def A(n: int, alpha, t, arith: str = "float") -> np.ndarray:
+def A(n: int, alpha, t, arith: str | Context = "float") -> np.ndarray:
     """``A_{2n,i}^alpha(t)`` for ``i = 0..2n`` at the points ``t`` (array): shape ``(len(t), 2n+1)``.
 
-    ``arith`` is ``'float'`` or ``'mp'`` (then ``t`` may hold mpf and the current precision is used).
+    Real arithmetics (``'mp'``: the current precision; ``t`` may hold mpf); ``t`` must lie in [0, alpha].
     """
     n = check_n(n)
-    check_alpha(alpha)
-    if arith == "mp":
-        a = mpmath.mpf(alpha)
-        ts = [mpmath.mpf(x) for x in np.atleast_1d(np.asarray(t, dtype=object))]
-        consts = [c_const(n, i, a, "mp") for i in range(2 * n + 1)]
-        out = np.empty((len(ts), 2 * n + 1), dtype=object)
-        for k, x in enumerate(ts):
-            s1, s2 = mpmath.sin((a - x) / 2), mpmath.sin(x / 2)
-            for i in range(2 * n + 1):
-                out[k, i] = consts[i] * s1 ** (2 * n - i) * s2**i
-        return out
-    tt = np.atleast_1d(np.asarray(t, dtype=np.float64))
-    if np.any(tt < -1e-12 * alpha) or np.any(tt > alpha * (1 + 1e-12)):
-        raise ValueError(f"t must lie in [0, alpha] = [0, {alpha}]")
-    s1, s2 = np.sin((alpha - tt) / 2), np.sin(tt / 2)
-    cols = [c_const(n, i, alpha) * s1 ** (2 * n - i) * s2**i for i in range(2 * n + 1)]
-    return np.stack(cols, axis=1)
+    a_f = check_alpha(alpha)
+    ctx = get_context(arith, dps=mpmath.mp.dps)
+    tt_f = np.atleast_1d(np.asarray(t, dtype=np.float64))
+    if np.any(tt_f < -1e-12 * a_f) or np.any(tt_f > a_f * (1 + 1e-12)):
+        raise ValueError(f"t must lie in [0, alpha] = [0, {a_f}]")
+    consts = [c_const(n, i, alpha, ctx) for i in range(2 * n + 1)]
+    with ctx.scope():
+        tt = ctx.asarray(np.atleast_1d(np.asarray(t, dtype=object)))
+        a, two = ctx.convert(alpha), ctx.convert(2)
+        s1, s2 = ctx.sin(ctx.div(ctx.sub(a, tt), two)), ctx.sin(ctx.div(tt, two))
+        cols = [ctx.mul(ctx.mul(consts[i], power_table(s1, 2 * n, ctx)[2 * n - i]), power_table(s2, 2 * n, ctx)[i])
+                for i in range(2 * n + 1)]
+        return np.stack(cols, axis=1)
 
 
 def bernstein(m: int, s) -> np.ndarray:

@@ -1,0 +1,63 @@
+"""Evaluation of the (un-normalized) joint system T_{2n}^alpha (eq. united_system).
+
+Every function is the monomial whose exponents :mod:`paper_repro.core.labels` stores; this module
+multiplies half-angle values accordingly, in any arithmetic of :mod:`paper_repro.core.context`.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+import numpy as np
+
+from paper_repro.core.context import Context, get_context, power_table
+from paper_repro.core.domain import half_angle_values
+from paper_repro.core.labels import BasisLabel, exponent_matrix, exponents
+from paper_repro.util.validation import check_n
+
+
+def monomials(exps: np.ndarray, trig: Sequence[np.ndarray], ctx: Context) -> np.ndarray:
+    """Evaluate monomials ``prod_s trig[s] ** exps[f, s]``: returns an ``(P, F)`` array.
+
+    ``exps`` is ``(F, 6)`` (slots as in :data:`paper_repro.core.labels.SLOTS`), ``trig`` six arrays of
+    length P.  Only ``ctx.mul`` is used, so this is the single evaluator of every arithmetic.
+    """
+    exps = np.asarray(exps, dtype=np.int64)
+    npts = len(trig[0])
+    out = ctx.ones((npts, exps.shape[0]))
+    kmax = int(exps.max()) if exps.size else 0
+    for slot in range(6):
+        if not exps[:, slot].any():
+            continue
+        table = power_table(trig[slot], kmax, ctx)  # (kmax+1, P)
+        out = ctx.mul(out, table[exps[:, slot]].T)
+    return out
+
+
+def evaluate(n: int, alpha, points, arith: str | Context = "float", *, dps: int = 50,
+             labels: Sequence[BasisLabel] | None = None) -> np.ndarray:
+    """Values of T_{2n}^alpha (un-normalized, eq. united_system) at ``points``: an ``(P, delta_n)`` array.
+
+    Parameters
+    ----------
+    n : order, a positive integer.
+    alpha : shape parameter in (0, pi) (a number, or a :class:`RationalAngle` -- required by the exact
+        arithmetics).
+    points : ``(P, 3)`` array of ``(u, v, w)`` on Omega^alpha (real arithmetics) or :class:`RationalPoints`
+        (every arithmetic).
+    arith : a context or its name (:func:`paper_repro.core.context.get_context`; ``dps`` for ``'mp'``).
+    labels : evaluate these functions instead of T_{2n} (any R, G, B labels of order n).
+
+    Columns follow :func:`paper_repro.core.labels.united_system` (or ``labels``).
+
+    >>> import numpy as np
+    >>> v = evaluate(1, 1.0, [[0.5, 0.25, 0.25]])
+    >>> v.shape, bool(np.all(v > 0))
+    ((1, 7), True)
+    """
+    n = check_n(n)
+    ctx = get_context(arith, dps=dps)
+    exps = exponent_matrix(n) if labels is None else np.array([exponents(lab) for lab in labels])
+    trig = half_angle_values(points, alpha, ctx)
+    with ctx.scope():
+        return monomials(exps, trig, ctx)

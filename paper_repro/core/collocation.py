@@ -1,0 +1,68 @@
+"""The one collocation routine: collocate at points, solve, verify at further points.
+
+Used by the normalizing coefficients (:mod:`paper_repro.core.normalization`), fitting
+(:mod:`paper_repro.surfaces.fitting`), order elevation (:mod:`paper_repro.core.elevation`) and the basis
+transformation (claim ``basis_transformation``).  The caller supplies ``system(k)``: the matrix ``A``
+and right-hand side ``B`` evaluated at point set ``k`` (``m`` collocation rows followed by the
+verification rows); the routine solves the first ``m`` rows in the context's arithmetic, checks the
+rest (exactly in the exact arithmetics, to the working precision otherwise) and reports which point
+set it used.  A singular point set is replaced by the next one.
+
+>>> import numpy as np
+>>> from paper_repro.core.context import get_context
+>>> ctx = get_context("exact")
+>>> def system(k):  # y = 2x + 1 sampled at x = 0, 1 (collocation) and 5 (verification)
+...     xs = [0, 1, 5]
+...     return ctx.asarray([[x, 1] for x in xs]), ctx.asarray([[2 * x + 1] for x in xs])
+>>> res = collocate(ctx, system, m=2)
+>>> res.solution.reshape(-1).tolist(), res.point_set, res.verified
+([2, 1], 0, 1)
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+
+import numpy as np
+
+from paper_repro.core.context import Context
+
+
+@dataclass
+class Collocation:
+    """Result of :func:`collocate`: the solution (in the context), the point set used, rows verified."""
+
+    solution: np.ndarray
+    point_set: int
+    verified: int
+
+
+def collocate(ctx: Context, system: Callable[[int], tuple[np.ndarray, np.ndarray]], m: int, *,
+              attempts: int = 5, what: str = "collocation", rtol: float | None = None) -> Collocation:
+    """Solve ``A[:m] X = B[:m]`` for the first non-singular point set and verify ``A[m:] X = B[m:]``.
+
+    ``ArithmeticError`` if the verification rows disagree (the identity sought does not hold) or if
+    ``attempts`` point sets are all singular.  ``rtol`` replaces the context's own tolerance of the
+    verification residual (relative to the largest right-hand side) in the real arithmetics.
+    """
+    for k in range(attempts):
+        a, b = system(k)
+        with ctx.scope():
+            try:
+                x = ctx.solve(a[:m], b[:m])
+            except ZeroDivisionError:
+                continue
+            extra = a.shape[0] - m
+            if extra:
+                resid = ctx.sub(ctx.dot(a[m:], x), b[m:])
+                scale = float(np.max(np.abs(ctx.to_float(b)))) if not ctx.exact else 1.0
+                if rtol is not None and not ctx.exact:
+                    ok = float(np.max(np.abs(ctx.to_float(resid)))) <= rtol * max(scale, 1.0)
+                else:
+                    ok = ctx.residual_ok(resid, scale)
+                if not ok:
+                    raise ArithmeticError(f"{what}: the solution fails at the {extra} verification point(s) "
+                                          f"of point set {k} (arith {ctx.name!r})")
+        return Collocation(x, k, extra)
+    raise ArithmeticError(f"{what}: the collocation matrix is singular for {attempts} point sets (arith {ctx.name!r})")

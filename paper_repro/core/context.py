@@ -1,0 +1,516 @@
+"""Arithmetic contexts: one formula, every arithmetic (in the spirit of mpmath's ``ctx_fp``/``ctx_mp``).
+
+A context owns everything that depends on the arithmetic: how a number is made (``convert``,
+``from_rational``), the ring operations on arrays (``add``, ``sub``, ``mul``, ``div``), ``sin``/``cos``
+where they are meaningful, the half-angle values of points of Omega^alpha (the w formula is written
+once, :meth:`Context.w_half`), a precision scope (:meth:`Context.scope`), and linear algebra with the
+right library (:meth:`Context.solve`, :meth:`Context.rank`).  Modules below this one never compare
+arithmetic names: they call the context they were given.
+
+* :class:`FloatContext` (``'float'``) -- numpy float64, vectorised;
+* :class:`MpContext` (``'mp'``) -- mpmath at its own ``dps`` (entered with :meth:`~Context.scope`);
+* :class:`ExactContext` (``'exact'``) -- exact rationals, python-flint ``fmpq`` (``fmpq_mat`` solves);
+* :class:`BallContext` (``'ball'``) -- python-flint ``arb`` balls at ``prec`` bits (``arb_mat`` solves);
+* :class:`ModpContext` (``'modp'``) -- integers modulo a prime ``p < 2**31`` (``nmod_mat``): the image
+  of an exact computation, used for fast exact rank certificates.
+
+>>> ctx = get_context("exact")
+>>> ctx.mul(ctx.asarray([1, 2]), ctx.asarray([fmpq(1, 3), fmpq(1, 4)])).tolist()
+[1/3, 1/2]
+>>> get_context("mp", dps=30).name, get_context("modp", p=7).p
+('mp', 7)
+>>> get_context("fast")
+Traceback (most recent call last):
+...
+ValueError: arith must be one of ['ball', 'exact', 'float', 'modp', 'mp'] or a Context, got 'fast'
+"""
+
+from __future__ import annotations
+
+import contextlib
+import math
+import numbers
+from dataclasses import dataclass
+from fractions import Fraction
+
+import mpmath
+import numpy as np
+from flint import arb, arb_mat, fmpq, fmpq_mat, nmod_mat
+from flint import ctx as flint_ctx
+
+#: Default prime for modular computations (the Mersenne prime 2^31 - 1).
+DEFAULT_PRIME = 2_147_483_647
+
+
+def _to_fraction(x) -> Fraction:
+    """Exact value of a rational-like scalar (int, Fraction, fmpq, float as its binary value, 'p/q')."""
+    if isinstance(x, fmpq):
+        return Fraction(int(x.p), int(x.q))
+    if isinstance(x, str):
+        return Fraction(x)
+    if isinstance(x, (bool, np.bool_)):
+        raise TypeError(f"expected a number, got the boolean {x!r}")
+    if isinstance(x, numbers.Rational):
+        return Fraction(int(x.numerator), int(x.denominator))
+    if isinstance(x, (numbers.Real, np.floating)):
+        xf = float(x)
+        if not math.isfinite(xf):
+            raise ValueError(f"expected a finite number, got {xf}")
+        return Fraction(xf)
+    if isinstance(x, mpmath.mpf):
+        if not mpmath.isfinite(x):
+            raise ValueError(f"expected a finite number, got {x}")
+        man, exp = x.man_exp
+        return Fraction(int(man)) * Fraction(2) ** int(exp)
+    raise TypeError(f"expected a rational or real number, got {type(x).__name__}")
+
+
+@dataclass(frozen=True)
+class Context:
+    """Base class of the arithmetic contexts; the float64 behaviour is the default."""
+
+    name: str = "float"
+    #: ``True`` where values are exact images of rationals (exact, modp): such contexts take
+    #: alpha and points through rational quarter-angle tangents and cannot evaluate sin/cos.
+    exact: bool = False
+
+    # --- numbers and arrays -------------------------------------------------------------------
+    def convert(self, x):
+        """One scalar of this arithmetic from a Python/numpy/mpmath/flint number."""
+        return float(x)
+
+    def from_rational(self, q: fmpq):
+        """The scalar representing the exact rational ``q`` (as exactly as the arithmetic allows)."""
+        return int(q.p) / int(q.q)
+
+    def asarray(self, values) -> np.ndarray:
+        return np.asarray(values, dtype=np.float64)
+
+    def ones(self, shape: tuple[int, ...]) -> np.ndarray:
+        return np.ones(shape, dtype=np.float64)
+
+    def zeros(self, shape: tuple[int, ...]) -> np.ndarray:
+        return np.zeros(shape, dtype=np.float64)
+
+    def add(self, a, b):
+        return a + b
+
+    def sub(self, a, b):
+        return a - b
+
+    def mul(self, a, b):
+        return a * b
+
+    def div(self, a, b):
+        return a / b
+
+    def dot(self, a: np.ndarray, b: np.ndarray) -> np.ndarray:
+        """Matrix product of two arrays of this arithmetic."""
+        return a.dot(b)
+
+    def to_float(self, a) -> np.ndarray:
+        """Values as float64 (for plotting and comparisons)."""
+        return np.asarray(a, dtype=np.float64)
+
+    # --- transcendental functions ------------------------------------------------------------------
+    def sin(self, a):
+        return np.sin(a)
+
+    def cos(self, a):
+        return np.cos(a)
+
+    # --- precision --------------------------------------------------------------------------------
+    def scope(self):
+        """Context manager in which this arithmetic's precision is in force (no-op where fixed)."""
+        return contextlib.nullcontext(self)
+
+    @property
+    def digits(self) -> int:
+        """Significant decimal digits of the arithmetic (``0`` for exact ones)."""
+        return 16
+
+    # --- half-angle values of points of Omega^alpha ----------------------------------------------
+    @staticmethod
+    def w_half(ctx: Context, sa, ca, su, cu, sv, cv):
+        """``sin(w/2), cos(w/2)`` for ``w = alpha - u - v`` from the half-angle values of alpha, u, v.
+
+        The angle-difference formulas, written once for every arithmetic::
+
+            sin(w/2) = sin(a/2) cos((u+v)/2) - cos(a/2) sin((u+v)/2)
+            cos(w/2) = cos(a/2) cos((u+v)/2) + sin(a/2) sin((u+v)/2)
+        """
+        c_uv = ctx.sub(ctx.mul(cu, cv), ctx.mul(su, sv))
+        s_uv = ctx.add(ctx.mul(su, cv), ctx.mul(cu, sv))
+        sw = ctx.sub(ctx.mul(sa, c_uv), ctx.mul(ca, s_uv))
+        cw = ctx.add(ctx.mul(ca, c_uv), ctx.mul(sa, s_uv))
+        return sw, cw
+
+    def alpha_half(self, alpha):
+        """``(sin(alpha/2), cos(alpha/2))`` as scalars of this arithmetic.
+
+        ``alpha`` is a :class:`~paper_repro.core.domain.RationalAngle` (exact half-angle values) or,
+        in the real arithmetics, a number.
+        """
+        sh = getattr(alpha, "sin_half", None)
+        if sh is not None:
+            return self.from_rational(sh), self.from_rational(alpha.cos_half)
+        if self.exact:
+            raise TypeError(f"arith {self.name!r} needs alpha as a RationalAngle (rational tan(alpha/4)), "
+                            f"got {type(alpha).__name__}")
+        half = self.div(self.convert(alpha), self.convert(2))
+        return self.sin(half), self.cos(half)
+
+    # --- linear algebra ---------------------------------------------------------------------------
+    def solve(self, a: np.ndarray, b: np.ndarray) -> np.ndarray:
+        """Solution ``X`` of ``A X = B``: square systems exactly solved (``ZeroDivisionError`` if singular),
+        overdetermined ones in the least-squares sense (float only)."""
+        a, b = np.asarray(a, dtype=np.float64), np.asarray(b, dtype=np.float64)
+        if a.shape[0] != a.shape[1]:
+            return np.linalg.lstsq(a, b, rcond=None)[0]
+        try:
+            return np.linalg.solve(a, b)
+        except np.linalg.LinAlgError as exc:
+            raise ZeroDivisionError(f"singular matrix: {exc}") from None
+
+    def rank(self, a: np.ndarray) -> int:
+        """Rank of ``a`` (numerical rank by SVD for the real arithmetics)."""
+        return int(np.linalg.matrix_rank(np.asarray(a, dtype=np.float64)))
+
+    def residual_ok(self, residual: np.ndarray, scale: float) -> bool:
+        """Whether a verification residual is zero up to the arithmetic's rounding."""
+        r = float(np.max(np.abs(self.to_float(residual)))) if np.size(residual) else 0.0
+        return r <= max(scale, 1.0) * 10.0 ** (-(self.digits - 4))
+
+
+@dataclass(frozen=True)
+class FloatContext(Context):
+    name: str = "float"
+
+
+@dataclass(frozen=True)
+class ObjectContext(Context):
+    """Arithmetics on numpy object arrays of scalars; subclasses say how a scalar is made."""
+
+    def asarray(self, values) -> np.ndarray:
+        src = np.asarray(values, dtype=object)
+        out = np.empty(src.shape, dtype=object)
+        flat = out.reshape(-1)
+        for k, x in enumerate(src.reshape(-1)):
+            flat[k] = self.convert(x)
+        return out
+
+    def ones(self, shape: tuple[int, ...]) -> np.ndarray:
+        out = np.empty(shape, dtype=object)
+        out.fill(self.convert(1))
+        return out
+
+    def zeros(self, shape: tuple[int, ...]) -> np.ndarray:
+        out = np.empty(shape, dtype=object)
+        out.fill(self.convert(0))
+        return out
+
+    def to_float(self, a) -> np.ndarray:
+        return np.vectorize(lambda x: float(x), otypes=[np.float64])(np.asarray(a, dtype=object))
+
+    def _map(self, f, a):
+        arr = np.asarray(a, dtype=object)
+        return np.frompyfunc(f, 1, 1)(arr) if arr.ndim else f(arr.item())
+
+
+@dataclass(frozen=True)
+class MpContext(ObjectContext):
+    """mpmath at ``dps`` decimal digits; computations run inside :meth:`scope`."""
+
+    name: str = "mp"
+    dps: int = 50
+
+    def __post_init__(self) -> None:
+        if isinstance(self.dps, bool) or not isinstance(self.dps, numbers.Integral) or not 5 <= self.dps <= 10_000:
+            raise ValueError(f"dps must be an integer from 5 to 10000, got {self.dps!r}")
+
+    def convert(self, x):
+        if isinstance(x, fmpq):
+            return self.from_rational(x)
+        if isinstance(x, Fraction):
+            return mpmath.mpf(x.numerator) / x.denominator
+        if isinstance(x, arb):
+            return mpmath.mpf(x.mid().str(self.dps + 5, radius=False))
+        return mpmath.mpf(x)
+
+    def from_rational(self, q: fmpq):
+        return mpmath.mpf(int(q.p)) / int(q.q)
+
+    def sin(self, a):
+        return self._map(mpmath.sin, a)
+
+    def cos(self, a):
+        return self._map(mpmath.cos, a)
+
+    def scope(self):
+        return mpmath.workdps(self.dps)
+
+    @property
+    def digits(self) -> int:
+        return self.dps
+
+    def solve(self, a: np.ndarray, b: np.ndarray) -> np.ndarray:
+        with self.scope():
+            mat = mpmath.matrix(np.asarray(a, dtype=object).tolist())
+            rhs = np.asarray(b, dtype=object)
+            cols = rhs.reshape(rhs.shape[0], -1)
+            try:
+                sols = [mpmath.lu_solve(mat, mpmath.matrix(list(cols[:, j]))) for j in range(cols.shape[1])]
+            except ZeroDivisionError:
+                raise ZeroDivisionError("singular matrix") from None
+            out = np.array([[s[i] for s in sols] for i in range(mat.rows)], dtype=object)
+            return out.reshape((mat.rows,) + rhs.shape[1:])
+
+    def rank(self, a: np.ndarray) -> int:
+        """Gap criterion on the singular values: those above ``sigma_1 10^-(dps-10)`` count."""
+        with self.scope():
+            s = mpmath.svd_r(mpmath.matrix(np.asarray(a, dtype=object).tolist()), compute_uv=False)
+            sv = sorted((s[k] for k in range(len(s))), reverse=True)
+            tau = sv[0] * mpmath.mpf(10) ** (-(self.dps - 10))
+            return sum(1 for x in sv if x > tau)
+
+
+@dataclass(frozen=True)
+class ExactContext(ObjectContext):
+    """Exact rational arithmetic with python-flint ``fmpq``."""
+
+    name: str = "exact"
+    exact: bool = True
+
+    def convert(self, x):
+        if isinstance(x, fmpq):
+            return x
+        if isinstance(x, (int, np.integer)) and not isinstance(x, (bool, np.bool_)):
+            return fmpq(int(x))
+        f = _to_fraction(x)
+        return fmpq(f.numerator, f.denominator)
+
+    def from_rational(self, q: fmpq):
+        return q
+
+    def sin(self, a):
+        raise TypeError("arith 'exact' has no sin/cos: give alpha and points through rational quarter-angle "
+                        "tangents (RationalAngle, RationalPoints)")
+
+    cos = sin
+
+    @property
+    def digits(self) -> int:
+        return 0
+
+    def solve(self, a: np.ndarray, b: np.ndarray) -> np.ndarray:
+        a, b = np.asarray(a, dtype=object), np.asarray(b, dtype=object)
+        cols = b.reshape(b.shape[0], -1)
+        x = to_fmpq_mat(a).solve(to_fmpq_mat(cols))  # ZeroDivisionError if singular
+        out = np.array([[x[i, j] for j in range(x.ncols())] for i in range(x.nrows())], dtype=object)
+        return out.reshape((a.shape[1],) + b.shape[1:])
+
+    def rank(self, a: np.ndarray) -> int:
+        return to_fmpq_mat(np.asarray(a, dtype=object)).rank()
+
+    def residual_ok(self, residual: np.ndarray, scale: float) -> bool:
+        return all(x == 0 for x in np.asarray(residual, dtype=object).reshape(-1))
+
+
+@dataclass(frozen=True)
+class BallContext(ObjectContext):
+    """Ball arithmetic with python-flint ``arb`` at ``prec`` bits (entered with :meth:`scope`)."""
+
+    name: str = "ball"
+    prec: int = 200
+
+    def __post_init__(self) -> None:
+        if isinstance(self.prec, bool) or not isinstance(self.prec, numbers.Integral) or not 20 <= self.prec:
+            raise ValueError(f"prec must be an integer >= 20 (bits), got {self.prec!r}")
+
+    def convert(self, x):
+        if isinstance(x, arb):
+            return x
+        if isinstance(x, fmpq):
+            return self.from_rational(x)
+        if isinstance(x, mpmath.mpf):
+            return arb(mpmath.nstr(x, int(self.prec / 3.32) + 5))
+        if isinstance(x, Fraction):
+            return arb(x.numerator) / x.denominator
+        return arb(x)
+
+    def from_rational(self, q: fmpq):
+        return arb(int(q.p)) / int(q.q)
+
+    def sin(self, a):
+        return self._map(lambda x: x.sin(), a)
+
+    def cos(self, a):
+        return self._map(lambda x: x.cos(), a)
+
+    @contextlib.contextmanager
+    def scope(self):
+        old = flint_ctx.prec
+        flint_ctx.prec = self.prec
+        try:
+            yield self
+        finally:
+            flint_ctx.prec = old
+
+    @property
+    def digits(self) -> int:
+        return int(self.prec / 3.33)
+
+    def to_float(self, a) -> np.ndarray:
+        return np.vectorize(lambda x: float(x.mid()), otypes=[np.float64])(np.asarray(a, dtype=object))
+
+    def solve(self, a: np.ndarray, b: np.ndarray) -> np.ndarray:
+        a, b = np.asarray(a, dtype=object), np.asarray(b, dtype=object)
+        cols = b.reshape(b.shape[0], -1)
+        with self.scope():
+            x = arb_mat(a.tolist()).solve(arb_mat(cols.tolist()))  # ZeroDivisionError if not certified
+        out = np.array([[x[i, j] for j in range(x.ncols())] for i in range(x.nrows())], dtype=object)
+        return out.reshape((a.shape[1],) + b.shape[1:])
+
+    def rank(self, a: np.ndarray) -> int:
+        """Certified full rank or ``ValueError``: a ball matrix has a rank only where it is certified."""
+        a = np.asarray(a, dtype=object)
+        if a.shape[0] == a.shape[1]:
+            with self.scope():
+                try:
+                    arb_mat(a.tolist()).inv()
+                    return a.shape[0]
+                except ZeroDivisionError:
+                    pass
+        raise ValueError("ball arithmetic certifies full rank of square matrices only; use 'exact' or 'modp'")
+
+    def residual_ok(self, residual: np.ndarray, scale: float) -> bool:
+        bound = arb(max(scale, 1.0)) * arb(10) ** (-(self.digits - 4))
+        return all(abs(x).upper() <= bound for x in np.asarray(residual, dtype=object).reshape(-1))
+
+
+@dataclass(frozen=True)
+class ModpContext(Context):
+    """Arithmetic modulo the prime ``p`` (``p < 2**31`` so products fit in int64)."""
+
+    name: str = "modp"
+    exact: bool = True
+    p: int = DEFAULT_PRIME
+
+    def __post_init__(self) -> None:
+        if isinstance(self.p, bool) or not isinstance(self.p, numbers.Integral) or not (2 < self.p < 2**31):
+            raise ValueError(f"p must be a prime with 2 < p < 2**31, got {self.p!r}")
+
+    def convert(self, x):
+        if isinstance(x, (int, np.integer)) and not isinstance(x, (bool, np.bool_)):
+            return int(x) % self.p
+        f = _to_fraction(x)
+        return self.from_rational(fmpq(f.numerator, f.denominator))
+
+    def from_rational(self, q: fmpq) -> int:
+        """Image of a rational in F_p; ``ValueError`` if p divides its denominator."""
+        d = int(q.q) % self.p
+        if d == 0:
+            raise ValueError(f"p = {self.p} divides the denominator of {q}; choose another prime")
+        return int(q.p) * pow(d, -1, self.p) % self.p
+
+    def asarray(self, values) -> np.ndarray:
+        src = np.asarray(values, dtype=object)
+        if src.dtype != object or all(isinstance(x, (int, np.integer)) for x in src.reshape(-1)):
+            return np.asarray(values, dtype=np.int64) % self.p
+        return np.array([self.convert(x) for x in src.reshape(-1)], dtype=np.int64).reshape(src.shape)
+
+    def ones(self, shape: tuple[int, ...]) -> np.ndarray:
+        return np.ones(shape, dtype=np.int64)
+
+    def zeros(self, shape: tuple[int, ...]) -> np.ndarray:
+        return np.zeros(shape, dtype=np.int64)
+
+    def add(self, a, b):
+        return (a + b) % self.p
+
+    def sub(self, a, b):
+        return (a - b) % self.p
+
+    def mul(self, a, b):
+        return (a * b) % self.p
+
+    def div(self, a, b):
+        inv = np.vectorize(lambda x: pow(int(x), -1, self.p), otypes=[np.int64])(b)
+        return (a * inv) % self.p
+
+    def dot(self, a, b):
+        return (np.asarray(a, dtype=object).dot(np.asarray(b, dtype=object)) % self.p).astype(np.int64)
+
+    def to_float(self, a):
+        raise TypeError("values modulo p have no real value")
+
+    def sin(self, a):
+        raise TypeError("arith 'modp' has no sin/cos: give alpha and points through rational quarter-angle "
+                        "tangents (RationalAngle, RationalPoints)")
+
+    cos = sin
+
+    @property
+    def digits(self) -> int:
+        return 0
+
+    def solve(self, a, b):
+        a, b = np.asarray(a), np.asarray(b)
+        cols = b.reshape(b.shape[0], -1)
+        x = to_nmod_mat(a, self.p).solve(to_nmod_mat(cols, self.p))
+        out = np.array([[int(x[i, j]) for j in range(x.ncols())] for i in range(x.nrows())], dtype=np.int64)
+        return out.reshape((a.shape[1],) + b.shape[1:])
+
+    def rank(self, a) -> int:
+        """Exact rank over F_p (a lower bound of the rank over Q of the rational matrix it images)."""
+        return to_nmod_mat(np.asarray(a), self.p).rank()
+
+    def residual_ok(self, residual, scale: float) -> bool:
+        return not np.any(np.asarray(residual) % self.p)
+
+
+_NAMES = ("ball", "exact", "float", "modp", "mp")
+
+
+def get_context(arith: str | Context = "float", *, dps: int = 50, p: int = DEFAULT_PRIME,
+                prec: int | None = None) -> Context:
+    """Context by name: ``'float'``, ``'mp'`` (``dps`` digits), ``'exact'``, ``'ball'`` (``prec`` bits,
+    default ``3.33 dps + 20``), ``'modp'`` (prime ``p``); a :class:`Context` is returned as it is."""
+    if isinstance(arith, Context):
+        return arith
+    if not isinstance(arith, str) or arith not in _NAMES:
+        raise ValueError(f"arith must be one of {list(_NAMES)} or a Context, got {arith!r}")
+    if arith == "float":
+        return FloatContext()
+    if arith == "mp":
+        return MpContext(dps=dps)
+    if arith == "exact":
+        return ExactContext()
+    if arith == "ball":
+        return BallContext(prec=prec if prec is not None else int(3.33 * dps) + 20)
+    return ModpContext(p=p)
+
+
+def power_table(x: np.ndarray, kmax: int, ctx: Context) -> np.ndarray:
+    """Stack ``[x**0, x**1, ..., x**kmax]`` along a new first axis, using only ``ctx.mul``."""
+    table = [ctx.ones(np.shape(x))]
+    for _ in range(kmax):
+        table.append(ctx.mul(table[-1], x))
+    return np.stack(table)
+
+
+def to_fmpq_mat(a: np.ndarray) -> fmpq_mat:
+    """2-D object array of rationals to a flint matrix."""
+    a = np.asarray(a, dtype=object)
+    return fmpq_mat(a.shape[0], a.shape[1], [x for row in a for x in row])
+
+
+def to_nmod_mat(a: np.ndarray, p: int) -> nmod_mat:
+    """2-D integer array (entries in [0, p)) to a flint ``nmod_mat``."""
+    a = np.asarray(a)
+    return nmod_mat(a.shape[0], a.shape[1], [int(x) for x in a.reshape(-1)], p)
+
+
+# Backwards-compatible names (the first round called contexts "arithmetics").
+Arith = Context
+get_arith = get_context

@@ -1,0 +1,100 @@
+"""Control nets of surfaces whose coordinates lie in V_n (exact description by a patch).
+
+``fit(surface, n, alpha)``: the coordinates of ``surface(u, v, w)`` (a callable on Omega^alpha, or on
+the plane u + v + w = alpha) are interpolated in the normalized basis T-bar_{2n}^alpha at delta_n
+points; if they lie in the space the interpolant *is* the surface, which is checked at further
+points (``ValueError`` otherwise).  Arithmetics: mpmath (any alpha) or exact rationals (rational-tangent
+alpha and a surface that maps rational points to rationals, e.g. trigonometric polynomials with
+rational coefficients, evaluated through :class:`ExactTrig`).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+
+import mpmath
+import numpy as np
+from flint import fmpq
+
+from paper_repro.core.collocation import collocate
+from paper_repro.core.context import ExactContext, MpContext
+from paper_repro.core.domain import (
+    RationalAngle,
+    RationalPoints,
+    half_angle_values,
+    mp_domain_points,
+    sample_rational_points,
+)
+from paper_repro.core.fourier import cos_sin_combination, full_angles
+from paper_repro.core.labels import delta
+from paper_repro.core.normalization import evaluate_normalized
+
+
+@dataclass
+class ExactTrig:
+    """sin/cos of integer combinations of u, v, w at a rational point, exactly (for exact fitting)."""
+
+    full: list[tuple[fmpq, fmpq]]  # (cos, sin) of u, v, w
+
+    def _cs(self, r: int, g: int, b: int) -> tuple[fmpq, fmpq]:
+        return cos_sin_combination(self.full, (r, g, b), _EXACT, fmpq(1))
+
+    def cos(self, r: int = 0, g: int = 0, b: int = 0) -> fmpq:
+        return self._cs(r, g, b)[0]
+
+    def sin(self, r: int = 0, g: int = 0, b: int = 0) -> fmpq:
+        return self._cs(r, g, b)[1]
+
+
+_EXACT = ExactContext()
+
+
+def exact_trig_points(pts: RationalPoints) -> list[ExactTrig]:
+    half = half_angle_values(pts, None, _EXACT)
+    full = full_angles(half, _EXACT)
+    return [ExactTrig([(c[k], s[k]) for c, s in full]) for k in range(len(pts))]
+
+
+def fit_exact(surface: Callable[[ExactTrig], list[fmpq]], n: int, alpha: RationalAngle, verify: int = 4,
+              seed: int = 21) -> list[list[fmpq]]:
+    """Exact control net (rows in internal order) of ``surface``, a function of :class:`ExactTrig`.
+
+    ``ValueError`` if the surface is not in the span (the verification points disagree).
+    """
+    d = delta(n)
+
+    def system(k: int):
+        pts = sample_rational_points(alpha, d + verify, seed=seed + k)
+        basis = evaluate_normalized(n, alpha, pts, _EXACT)
+        return basis, _EXACT.asarray([list(surface(t)) for t in exact_trig_points(pts)])
+
+    try:
+        net = collocate(_EXACT, system, d, what="fit").solution
+    except ArithmeticError as exc:
+        raise ValueError(f"surface: its coordinates are not in the span of T_{{{2 * n}}} ({exc})") from None
+    return net.tolist()
+
+
+def fit_mp(surface: Callable, n: int, alpha, dps: int = 40, verify: int = 4, seed: int = 21,
+           tol_digits: int | None = None) -> np.ndarray:
+    """Control net (object array of mpf) of ``surface(u, v, w) -> sequence`` by collocation in mpmath.
+
+    ``ValueError`` if the surface is not in the span: the residual at the verification points exceeds
+    ``10^-(tol_digits)`` relative (default ``dps - 15`` digits).
+    """
+    d = delta(n)
+    ctx = MpContext(dps=dps)
+
+    def system(k: int):
+        with ctx.scope():
+            a = mpmath.mpf(alpha)
+            pts = mp_domain_points(a, d + verify, seed + k)
+            basis = evaluate_normalized(n, a, pts, ctx)
+            return basis, np.array([list(surface(*p)) for p in pts], dtype=object)
+
+    try:
+        res = collocate(ctx, system, d, what="fit", rtol=10.0 ** (-(tol_digits or dps - 15)))
+    except ArithmeticError as exc:
+        raise ValueError(f"surface: not in the span of T_{{{2 * n}}} ({exc})") from None
+    return res.solution

@@ -1,0 +1,239 @@
+"""Triangular (rational) trigonometric patches (Definitions def:surface_patch, def:rational_patch).
+
+A thin public class over the core: :class:`Patch` validates once and evaluates in any arithmetic
+context; the float path is the blocked kernel of :mod:`paper_repro.core.fast`, the others go through
+:func:`paper_repro.core.normalization.evaluate_normalized`.
+"""
+
+from __future__ import annotations
+
+from functools import cached_property
+
+import numpy as np
+
+from paper_repro.core.context import Context, FloatContext, get_context
+from paper_repro.core.derivatives_basis import basis_derivative
+from paper_repro.core.domain import RationalPoints, barycentric_to_uvw, check_points
+from paper_repro.core.fast import FloatKernel
+from paper_repro.core.labels import delta, exponent_matrix, index_of
+from paper_repro.core.nets import check_net, check_net_exact, net_from_labels  # noqa: F401 (re-exported)
+from paper_repro.core.normalization import coefficient_vector, evaluate_normalized
+from paper_repro.util.validation import check_alpha, check_n
+
+
+class Patch:
+    """Triangular trigonometric patch s_n^alpha (eq. triangular_trig_surface), or its rational form
+    (eq. rational_patch) when ``weights`` are given.
+
+    Parameters
+    ----------
+    n : order (a positive integer).
+    alpha : shape parameter in (0, pi): a number, or a :class:`~paper_repro.core.domain.RationalAngle`
+        (rational ``tan(alpha/4)``; needed for exact evaluation).
+    net : control net, ``(delta_n, d)`` rows in the order of :func:`paper_repro.core.labels.united_system`
+        -- the centre ``r_{2n,n,n}`` first, then the R, G, B functions, each colour by level ``j``
+        ascending and ``i`` ascending -- or a mapping ``{'r_{4,3,1}': point, ...}`` keyed by the paper's
+        labels.  Entries may be floats, ints, ``Fraction`` or ``fmpq`` (kept exactly for exact evaluation).
+    weights : optional non-negative weights of the rational patch, one per control point.
+    arith : default arithmetic of :meth:`__call__` (``'float'``, ``'mp'``, ``'exact'``, ``'ball'``, ``'modp'``
+        or a context).
+
+    Control-net order for n = 1 (delta_1 = 7):
+
+    >>> from paper_repro.core.labels import united_system
+    >>> [lab.control_point for lab in united_system(1)]
+    ['r_{2,1,1}', 'r_{2,2,0}', 'r_{2,1,0}', 'g_{2,2,0}', 'g_{2,1,0}', 'b_{2,2,0}', 'b_{2,1,0}']
+
+    The corners interpolate (u = alpha is the corner of r_{2,2,0}):
+
+    >>> import numpy as np
+    >>> net = np.arange(14.0).reshape(7, 2)
+    >>> p = Patch(1, 1.0, net)
+    >>> p([[1.0, 0.0, 0.0]]).round(12).tolist()
+    [[2.0, 3.0]]
+
+    Exact evaluation at rational points (alpha = 4 atan(1/2)):
+
+    >>> from flint import fmpq
+    >>> from paper_repro.core.domain import RationalPoints, rational_alpha
+    >>> a = rational_alpha(fmpq(1, 2))
+    >>> q = Patch(1, a, net.astype(int))
+    >>> pts = RationalPoints(a, (fmpq(1, 5),), (fmpq(1, 7),))
+    >>> exact = q(pts, arith="exact")
+    >>> bool(abs(float(exact[0, 0]) - q(pts)[0, 0]) < 1e-13)
+    True
+    """
+
+    def __init__(self, n: int, alpha, net, weights=None, arith: str | Context = "float"):
+        self.n = check_n(n)
+        check_alpha(alpha)
+        self.alpha = alpha
+        self.net_exact = check_net_exact(net, self.n)
+        self.net = self.net_exact.astype(np.float64)
+        self.ctx = get_context(arith)
+        self.weights_exact = None
+        self.weights = None
+        if weights is not None:
+            try:
+                w = np.asarray(weights, dtype=object)
+                wf = w.astype(np.float64)
+            except (TypeError, ValueError):
+                raise TypeError("weights must be real numbers") from None
+            if wf.shape != (delta(self.n),):
+                raise ValueError(f"weights must have shape ({delta(self.n)},) for n = {self.n}, got {wf.shape}")
+            if not np.all(np.isfinite(wf)) or np.any(wf < 0) or wf.sum() == 0:
+                raise ValueError("weights must be finite, non-negative and not all zero (rank 1)")
+            self.weights_exact, self.weights = w, wf
+
+    def __repr__(self) -> str:
+        kind = "rational " if self.weights is not None else ""
+        return f"<{kind}Patch n={self.n} alpha={float(self.alpha):.6g} dim={self.net.shape[1]}>"
+
+    @property
+    def dimension(self) -> int:
+        return self.net.shape[1]
+
+    # --- the float fast path ----------------------------------------------------------------------
+    @cached_property
+    def _kernel(self) -> tuple[FloatKernel, np.ndarray, np.ndarray | None]:
+        coef = coefficient_vector(self.n, self.alpha, "float")
+        if self.weights is None:
+            return FloatKernel(exponent_matrix(self.n)), coef[:, None] * self.net, None
+        cw = coef * self.weights
+        return FloatKernel(exponent_matrix(self.n)), cw[:, None] * self.net, cw
+
+    def _float_points(self, points) -> np.ndarray:
+        if isinstance(points, RationalPoints):
+            return points.uvw_float()
+        return np.asarray(check_points(points, self.alpha), dtype=np.float64)
+
+    # --- evaluation -------------------------------------------------------------------------------
+    def basis(self, points, arith: str | Context | None = None, dps: int = 50) -> np.ndarray:
+        """Blending values T-bar_{2n}^alpha at the points: ``(P, delta_n)``."""
+        return evaluate_normalized(self.n, self.alpha, points, self._ctx(arith, dps))
+
+    def _ctx(self, arith, dps) -> Context:
+        return self.ctx if arith is None else get_context(arith, dps=dps)
+
+    def __call__(self, points, arith: str | Context | None = None, dps: int = 50) -> np.ndarray:
+        """Patch points at ``points``: ``(P, 3)`` real ``(u, v, w)`` of Omega^alpha or :class:`RationalPoints`.
+
+        The float path works in blocks (memory independent of the number of points); ``arith='mp'``
+        evaluates with mpmath at ``dps`` digits, ``'exact'`` exactly (rational-tangent alpha and
+        :class:`RationalPoints`; the net's float entries are taken as their exact binary values).
+        """
+        ctx = self._ctx(arith, dps)
+        if isinstance(ctx, FloatContext):
+            kernel, cnet, cw = self._kernel
+            return kernel.contract(self._float_points(points), cnet, cw)
+        b = evaluate_normalized(self.n, self.alpha, points, ctx)
+        return self._combine(b, ctx)
+
+    def _combine(self, b: np.ndarray, ctx: Context) -> np.ndarray:
+        with ctx.scope():
+            net = ctx.asarray(self.net_exact)
+            if self.weights is None:
+                return ctx.dot(b, net)
+            bw = ctx.mul(b, ctx.asarray(self.weights_exact)[None, :])
+            return ctx.div(ctx.dot(bw, net), bw.sum(axis=1)[:, None])
+
+    def derivative(self, points, direction: str | tuple = "u", arith: str | Context | None = None,
+                   dps: int = 50) -> np.ndarray:
+        """Directional derivative of the patch along Omega^alpha: ``(P, d)``.
+
+        ``direction`` is ``'u'`` (d/du with v fixed, w = alpha - u - v), ``'v'`` (d/dv with u fixed),
+        ``'w'`` (d/dw with u fixed) or a triple ``(du, dv, dw)`` with ``du + dv + dw = 0``
+        (:data:`~paper_repro.core.derivatives_basis.DIRECTIONS`).  Rational patches use the quotient rule.
+        """
+        ctx = self._ctx(arith, dps)
+        b = evaluate_normalized(self.n, self.alpha, points, ctx)
+        db = basis_derivative(self.n, self.alpha, points, direction, ctx)
+        with ctx.scope():
+            net = ctx.asarray(self.net_exact)
+            if self.weights is None:
+                return ctx.dot(db, net)
+            w = ctx.asarray(self.weights_exact)[None, :]
+            bw, dbw = ctx.mul(b, w), ctx.mul(db, w)
+            den, dden = bw.sum(axis=1)[:, None], dbw.sum(axis=1)[:, None]
+            num, dnum = ctx.dot(bw, net), ctx.dot(dbw, net)
+            return ctx.div(ctx.sub(ctx.mul(dnum, den), ctx.mul(num, dden)), ctx.mul(den, den))
+
+    def normals(self, points) -> np.ndarray:
+        """Unit normals (float, 3-D nets): the normalized cross product of the derivatives along
+        ``'u'`` and ``'v'`` (:data:`~paper_repro.core.derivatives_basis.DIRECTIONS`); NaN where it vanishes."""
+        if self.dimension != 3:
+            raise ValueError(f"normals need a 3-D control net, this one is {self.dimension}-D")
+        du = self.derivative(points, "u", "float")
+        dv = self.derivative(points, "v", "float")
+        nrm = np.cross(du, dv)
+        length = np.linalg.norm(nrm, axis=1, keepdims=True)
+        with np.errstate(invalid="ignore", divide="ignore"):
+            return np.where(length > 0, nrm / length, np.nan)
+
+    def at_barycentric(self, bary) -> np.ndarray:
+        """Patch points at barycentric ``(x, y, z)`` rows (x + y + z = 1, the point alpha (x, y, z))."""
+        return self(barycentric_to_uvw(self.alpha, bary))
+
+    def boundary_net(self, edge: str) -> np.ndarray:
+        """Control polygon of a boundary curve (the paper's list after Definition def:surface_patch):
+        ``'u=0'``: g_{2n,2n-i,0}, ``'v=0'``: r_{2n,2n-i,0}, ``'w=0'``: b_{2n,2n-i,0}, i = 0..2n."""
+        letters = {"u=0": "g", "v=0": "r", "w=0": "b"}
+        if edge not in letters:
+            raise ValueError(f"edge must be one of {sorted(letters)}, got {edge!r}")
+        idx = index_of(self.n)
+        return np.stack([self.net[idx[f"{letters[edge]}_{{{2 * self.n},{2 * self.n - i},0}}"]]
+                         for i in range(2 * self.n + 1)])
+
+    def boundary_curve(self, edge: str, t) -> np.ndarray:
+        """The boundary curve as a univariate curve sum_i p_i A_{2n,2n-i}(t) (eq. univariate_basis);
+        t is w on u=0, u on v=0, v on w=0."""
+        from paper_repro.core.univariate import A
+
+        a = A(self.n, float(self.alpha), np.asarray(t, dtype=np.float64))  # columns A_{2n,0..2n}
+        return a[:, ::-1] @ self.boundary_net(edge)
+
+    def mesh(self, resolution: int = 16, normals: bool = False):
+        """Triangle mesh on a barycentric grid: ``(vertices (V, d), faces (F, 3))``, and the unit vertex
+        normals ``(V, 3)`` as a third item when ``normals`` (3-D nets; see :meth:`normals`)."""
+        return mesh_of(self, resolution, normals)
+
+
+def triangle_grid(resolution: int) -> tuple[np.ndarray, np.ndarray]:
+    """Barycentric grid points ``(V, 3)`` and faces ``(F, 3)`` of a triangle with ``resolution`` steps a side."""
+    if isinstance(resolution, bool) or not isinstance(resolution, (int, np.integer)) or not 1 <= resolution <= 4096:
+        raise ValueError(f"resolution must be an integer from 1 to 4096, got {resolution!r}")
+    r = int(resolution)
+    ids, bary = {}, []
+    for i in range(r + 1):
+        for j in range(r + 1 - i):
+            ids[(i, j)] = len(bary)
+            bary.append((i / r, j / r, 1 - (i + j) / r))
+    faces = []
+    for i in range(r):
+        for j in range(r - i):
+            faces.append((ids[(i, j)], ids[(i + 1, j)], ids[(i, j + 1)]))
+            if i + j + 1 < r:
+                faces.append((ids[(i + 1, j)], ids[(i + 1, j + 1)], ids[(i, j + 1)]))
+    return np.array(bary), np.array(faces, dtype=np.int64)
+
+
+def mesh_of(patch: Patch, resolution: int = 16, normals: bool = False):
+    bary, faces = triangle_grid(resolution)
+    verts = patch.at_barycentric(bary)
+    if not normals:
+        return verts, faces
+    nrm = patch.normals(barycentric_to_uvw(patch.alpha, bary))
+    return verts, faces, nrm
+
+
+def merge_meshes(meshes: list[tuple[np.ndarray, ...]]) -> tuple[np.ndarray, ...]:
+    """Concatenate meshes ``(vertices, faces[, normals])`` (vertices are not welded)."""
+    verts, faces, extra, offset = [], [], [], 0
+    for m in meshes:
+        verts.append(m[0])
+        faces.append(m[1] + offset)
+        if len(m) > 2:
+            extra.append(m[2])
+        offset += len(m[0])
+    out = (np.concatenate(verts), np.concatenate(faces))
+    return out + (np.concatenate(extra),) if extra and len(extra) == len(meshes) else out
