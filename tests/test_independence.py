@@ -11,9 +11,6 @@ from paper_repro.core.context import ModpContext
 from paper_repro.core.derivatives import (
     cos_power_derivative,
     mixed_derivative,
-    printed_sign_cos,
-    printed_sign_m,
-    printed_sign_sin,
     sign,
     sin_power_derivative,
 )
@@ -22,6 +19,7 @@ from paper_repro.core.fourier import classes, evaluate_v, new_classes, printed_r
 from paper_repro.core.labels import delta
 from paper_repro.core.rank import ball_sigma_min_bound, modp_rank, mp_singular_values, numeric_rank
 from paper_repro.figures.independence import elimination
+from paper_repro.printed.derivatives import printed_sign_cos, printed_sign_m, printed_sign_sin
 
 from .strategies import rational_alphas, rational_points
 

@@ -55,7 +55,9 @@ def test_parse_label_roundtrip():
 
 @pytest.mark.parametrize("bad", [0, -1, 1.5, True, "2", None])
 def test_invalid_n(bad):
-    with pytest.raises(ValueError, match="n must be a positive integer"):
+    # a wrong value is a ValueError, a wrong type a TypeError; both name n and its range
+    with pytest.raises(ValueError if isinstance(bad, int) and not isinstance(bad, bool) else TypeError,
+                       match="n must be a positive integer"):
         united_system(bad)
 
 

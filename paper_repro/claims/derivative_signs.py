@@ -13,12 +13,10 @@ from paper_repro.core.derivatives import (
     corrected_sign_cos,
     cos_power_derivative,
     mixed_derivative,
-    printed_sign_cos,
-    printed_sign_m,
-    printed_sign_sin,
     sign,
     sin_power_derivative,
 )
+from paper_repro.printed.derivatives import printed_sign_cos, printed_sign_m, printed_sign_sin
 from paper_repro.util.registry import Outcome, claim
 
 

@@ -14,12 +14,8 @@ Linear independence (that these functions are a basis) is the separate claim of 
 from __future__ import annotations
 
 from paper_repro.core.labels import COLORS, delta, exponents, full_system, united_system
+from paper_repro.printed.dimension import printed_index_sum
 from paper_repro.util.registry import Outcome, claim
-
-
-def printed_index_sum(n: int) -> int:
-    """The sum printed in the proof of Theorem joint_systems_linear_independence."""
-    return 1 + 3 * sum(1 for j in range(n) for i in range(j, 2 * n - j))
 
 
 def distinct_functions(n: int) -> int:

@@ -13,6 +13,7 @@ from paper_repro.core.fourier import (
     v_system,
 )
 from paper_repro.core.labels import delta
+from paper_repro.printed.coincidence import EXAMPLES_N3, PRINTED_V2
 from paper_repro.util.cache import cached
 from paper_repro.util.registry import Outcome, claim
 
@@ -25,15 +26,6 @@ def per_n(n: int) -> dict:
     return {"classes": len(cl), "new_classes": len(new), "representatives_distinct": len(set(rep_classes)) == len(reps),
             "representatives_are_the_new_classes": set(rep_classes) == set(new), "transitive": is_transitive(n),
             "dim_V": len(v_system(n)), "delta_n": delta(n)}
-
-
-#: Worked examples of the text after Definition equivalence_relation_definition (n = 3), verbatim.
-EXAMPLES_N3 = [((0, 0, 1), (1, 1, 0), True), ((1, 3, 2), (2, 0, 1), True), ((2, 0, 1), (0, 2, 1), True),
-               ((1, 3, 2), (0, 2, 1), True), ((1, 0, 0), (0, 1, 0), False)]
-#: The printed V_2 (Section sec:coincidence), as function labels.
-PRINTED_V2 = {"1", "cos(u)", "sin(u)", "cos(v)", "sin(v)", "cos(w)", "sin(w)", "cos(2w)", "sin(2w)", "cos(v+2w)",
-              "sin(v+2w)", "cos(2u)", "sin(2u)", "cos(2u+w)", "sin(2u+w)", "cos(2v)", "sin(2v)", "cos(u+2v)",
-              "sin(u+2v)"}
 
 
 @claim("equivalence_classes", paper_ref=["equivalence_relation_definition", "equivalence_conditions_1",

@@ -14,27 +14,16 @@
 from __future__ import annotations
 
 import mpmath
-import numpy as np
 from flint import fmpq
 from tqdm import tqdm
 
-from paper_repro.core.alphas import alpha_mp
 from paper_repro.core.basis import evaluate
+from paper_repro.core.collocation import collocation_mp
 from paper_repro.core.context import ModpContext
-from paper_repro.core.domain import mp_domain_points, rational_alpha, sample_rational_points
+from paper_repro.core.domain import rational_alpha, sample_rational_points
 from paper_repro.core.labels import delta
-from paper_repro.core.normalization import evaluate_normalized
 from paper_repro.core.rank import ball_sigma_min_bound, modp_rank, mp_singular_values, numeric_rank
 from paper_repro.util.registry import Outcome, claim
-
-
-def collocation_mp(n: int, alpha_text: str, dps: int, seed: int, control: bool = False) -> np.ndarray:
-    with mpmath.workdps(dps):
-        alpha = alpha_mp(alpha_text)
-        a = evaluate_normalized(n, alpha, mp_domain_points(alpha, delta(n), seed), "mp", dps=dps)
-        if control:
-            a[:, -1] = a[:, 0] + a[:, 1]
-        return a
 
 
 def numeric_case(n: int, alpha_text: str, dps: int, svd_n_max: int, seed: int, control: bool = False) -> dict:

@@ -31,7 +31,7 @@ def printed_matrix(alpha) -> list[list[fmpq]]:
 
 def node_distance(net: np.ndarray, n: int, alpha: float) -> float:
     """max distance from each control point to the patch point at its node's barycentric position."""
-    from paper_repro.figures.graph import CORNERS, position
+    from paper_repro.core.layout import CORNERS, position
 
     patch = Patch(n, alpha, net)
     worst = 0.0

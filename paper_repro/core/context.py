@@ -73,6 +73,8 @@ class Context:
     #: ``True`` where values are exact images of rationals (exact, modp): such contexts take
     #: alpha and points through rational quarter-angle tangents and cannot evaluate sin/cos.
     exact: bool = False
+    #: ``True`` where values are certified enclosures (ball): results must contain the true value.
+    encloses: bool = False
 
     # --- numbers and arrays -------------------------------------------------------------------
     def convert(self, x):
@@ -321,6 +323,7 @@ class BallContext(ObjectContext):
     """Ball arithmetic with python-flint ``arb`` at ``prec`` bits (entered with :meth:`scope`)."""
 
     name: str = "ball"
+    encloses: bool = True
     prec: int = 200
 
     def __post_init__(self) -> None:

@@ -3,8 +3,7 @@ Proposition derivative_cosine_sine).
 
 ``C^p_{i,lambda}(0)``, ``S^p_{j,mu}(0)`` and ``M^z_{i,lambda,j,mu}(0)`` are computed independently as
 ``p! [t^p]`` of exact truncated power series (flint ``fmpq_poly``, rational lambda and mu); the
-printed sign rules are transcribed verbatim as :func:`printed_sign_cos`, :func:`printed_sign_sin`,
-:func:`printed_sign_m` (``None`` where the printed case analysis gives no value).
+printed sign rules are transcribed verbatim in :mod:`paper_repro.printed.derivatives`.
 """
 
 from __future__ import annotations
@@ -48,40 +47,6 @@ def mixed_derivative(i: int, lam: fmpq, j: int, mu: fmpq, z: int) -> fmpq:
 
 def sign(x: fmpq) -> int:
     return (x > 0) - (x < 0)
-
-
-def printed_sign_cos(i: int, p: int) -> int | None:
-    """eq. sign_cos_power_derivative: -1 if p-i = 2r with r odd; 0 if p odd; +1 if p-i = 2r with r even."""
-    if p % 2 == 1:
-        return 0
-    if (p - i) % 2 == 0:
-        r = (p - i) // 2
-        return -1 if r % 2 == 1 else 1
-    return None  # p even, p - i odd: no printed case applies
-
-
-def printed_sign_sin(j: int, p: int) -> int | None:
-    """eq. sign_sin_power_derivative: -1 if p>=j, p-j=2r, r odd; 0 if p<j or (p-j odd and p>j);
-    +1 if p>=j, p-j=2r, r even."""
-    if p < j or ((p - j) % 2 == 1 and p > j):
-        return 0
-    r = (p - j) // 2
-    return -1 if r % 2 == 1 else 1
-
-
-def printed_sign_m(j: int, z: int) -> int | None:
-    """eq. derivative_cosine_sine_at_0 (z >= 1, i + j != 0): -1 if z-j = 2 mod 4 and z>=j;
-    0 if z<j or (z-j = +-1 mod 4 and z>j); +1 if z-j = 0 mod 4 and z>=j."""
-    if z < j:
-        return 0
-    d = (z - j) % 4
-    if d == 2:
-        return -1
-    if d in (1, 3) and z > j:
-        return 0
-    if d == 0:
-        return 1
-    return None
 
 
 def corrected_sign_cos(i: int, p: int) -> int:

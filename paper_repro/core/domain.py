@@ -142,24 +142,29 @@ def check_points(points, alpha, tol: float = DOMAIN_TOL) -> np.ndarray:
     """Return ``points`` as an ``(P, 3)`` array after checking that they lie on Omega^alpha.
 
     A point is accepted if ``|u + v + w - alpha| <= tol * alpha`` and ``u, v, w >= -tol * alpha``.
-    Raises ``ValueError`` naming the first offending point otherwise.
+    Raises ``ValueError``/``TypeError`` naming ``points`` (and the first offending point) otherwise.
     """
-    check_alpha(alpha)
-    arr = np.asarray(points, dtype=object if _is_mp(points) else np.float64)
-    if arr.ndim == 1:
-        arr = arr.reshape(1, -1)
-    if arr.ndim != 2 or arr.shape[1] != 3:
-        raise ValueError(f"points must have shape (P, 3) of (u, v, w), got shape {np.shape(points)}")
-    fl = arr.astype(np.float64)
-    a = float(alpha)
+    a = check_alpha(alpha)
+    if isinstance(points, (str, bytes)):
+        raise TypeError(f"points must be a (P, 3) array of (u, v, w), got a string {points!r}")
+    try:
+        arr = np.asarray(points, dtype=object if _is_mp(points) else np.float64)
+        fl = arr.astype(np.float64)
+    except (TypeError, ValueError):
+        raise TypeError("points must be a (P, 3) array of real numbers (u, v, w)") from None
+    if arr.ndim == 1 and arr.shape[0] == 3:
+        arr, fl = arr.reshape(1, 3), fl.reshape(1, 3)
+    if arr.ndim != 2 or arr.shape[1] != 3 or arr.shape[0] == 0:
+        raise ValueError(f"points must have shape (P, 3) of (u, v, w) with P >= 1, got shape {np.shape(points)}")
     if not np.all(np.isfinite(fl)):
-        raise ValueError("points must be finite")
+        raise ValueError("points must be finite (no NaN or inf)")
     slack = tol * a
     bad = np.nonzero((np.abs(fl.sum(axis=1) - a) > slack) | (fl.min(axis=1) < -slack))[0]
     if bad.size:
         k = int(bad[0])
+        pt = ", ".join(f"{float(x):.6g}" for x in fl[k])
         raise ValueError(
-            f"points: point {k} = {tuple(fl[k])} is not on Omega^alpha (u+v+w = alpha = {a}, u,v,w >= 0)"
+            f"points: point {k} = ({pt}) is not on Omega^alpha (u + v + w = alpha = {a:.6g}, u, v, w >= 0)"
             f" within tolerance {tol} * alpha")
     return arr
 
@@ -231,9 +236,23 @@ def barycentric_to_uvw(alpha, bary) -> np.ndarray:
     return float(alpha) * b
 
 
+def check_count(count, name: str = "count", limit: int = 10**8) -> int:
+    """A number of points: an integer from 0 to ``limit`` (larger requests would not fit in memory)."""
+    if isinstance(count, bool) or not isinstance(count, (int, np.integer)) or not 0 <= count <= limit:
+        raise ValueError(f"{name} must be an integer from 0 to {limit}, got {count!r}")
+    return int(count)
+
+
 def sample_points(alpha, count: int, seed: int = 0, interior: bool = True) -> np.ndarray:
-    """``count`` seeded uniformly random points of Omega^alpha, as an ``(count, 3)`` float array."""
+    """``count`` seeded uniformly random points of Omega^alpha, as an ``(count, 3)`` float array.
+
+    >>> sample_points(1.0, -1)
+    Traceback (most recent call last):
+    ...
+    ValueError: count must be an integer from 0 to 100000000, got -1
+    """
     check_alpha(alpha)
+    check_count(count)
     rng = np.random.default_rng(seed)
     bary = rng.dirichlet(np.ones(3), size=count)
     if interior:
@@ -253,6 +272,9 @@ def sample_rational_points(alpha: RationalAngle, count: int, seed: int = 0,
     """
     from fractions import Fraction
 
+    if not isinstance(alpha, RationalAngle):
+        raise TypeError(f"alpha must be a RationalAngle, got {type(alpha).__name__}")
+    check_count(count, limit=10**6)
     rng = np.random.default_rng(seed)
     a = float(alpha)
     seen: set[tuple[fmpq, fmpq]] = set()

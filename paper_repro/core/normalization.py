@@ -211,6 +211,11 @@ def orbit_coefficients(n: int, alpha, arith: str | Context = "float", *, dps: in
             raise TypeError(f"alpha must be a RationalAngle (rational tan(alpha/4)) for arith {ctx.name!r}, "
                             f"got {type(alpha).__name__}")
         return [ctx.from_rational(x) for x in exact_coefficients_cached(n, alpha)[0]]
+    if ctx.encloses:  # solve in the context itself: the enclosures then contain the true coefficients
+        if not isinstance(alpha, RationalAngle):
+            check_alpha(alpha)
+        with ctx.scope():
+            return list(solve_reduced(n, alpha, ctx, verify=0, attempts=1).solution.reshape(-1))
     digits = max(ctx.digits, 20)
     if isinstance(alpha, RationalAngle):
         with mpmath.workdps(digits + 20):

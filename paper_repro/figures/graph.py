@@ -19,18 +19,12 @@ import numpy as np
 from scipy.spatial import ConvexHull
 
 from paper_repro.core.labels import COLORS, BasisLabel, exponents, full_system, united_system
+from paper_repro.core.layout import CORNERS, edges, net_edges, position  # noqa: F401 (re-exported)
 from paper_repro.util.registry import figure
 
 from . import COLOR_OF, plt, save
 
-CORNERS = {"u": np.array([0.0, 0.0]), "w": np.array([1.0, 0.0]), "v": np.array([0.5, np.sqrt(3) / 2])}
 SHORT = ("s_u", "c_u", "s_v", "c_v", "s_w", "c_w")
-
-
-def position(lab: BasisLabel) -> np.ndarray:
-    e = exponents(lab)
-    a, b, c = e[0], e[2], e[4]
-    return (a * CORNERS["u"] + b * CORNERS["v"] + c * CORNERS["w"]) / (a + b + c)
 
 
 def ratio_text(num: BasisLabel, den: BasisLabel) -> str:
@@ -39,33 +33,6 @@ def ratio_text(num: BasisLabel, den: BasisLabel) -> str:
     top = " ".join(SHORT[k] + (f"^{d[k]}" if d[k] > 1 else "") for k in range(6) if d[k] > 0) or "1"
     bot = " ".join(SHORT[k] + (f"^{-d[k]}" if d[k] < -1 else "") for k in range(6) if d[k] < 0)
     return f"${top}$" if not bot else rf"$\frac{{{top}}}{{{bot}}}$"
-
-
-def edges(n: int) -> list[tuple[BasisLabel, BasisLabel]]:
-    """Directed edges (from, to) of the reconstructed weighted graph of order n."""
-    out = []
-    for color in COLORS:
-        for j in range(n):
-            for i in range(j, 2 * n - j):  # side edge between i and i+1, oriented towards i = n
-                a, b = BasisLabel(color, n, i, j), BasisLabel(color, n, i + 1, j)
-                out.append((a, b) if i < n else (b, a))
-            for i in range(j + 1, 2 * n - j):  # inward edge to level j+1
-                if j + 1 <= i <= 2 * n - j - 1:
-                    out.append((BasisLabel(color, n, i, j), BasisLabel(color, n, i, j + 1)))
-    return out
-
-
-def net_edges(n: int) -> list[tuple[int, int]]:
-    """The graph's edges as pairs of internal indices of T_{2n} (aliases resolved, duplicates dropped)."""
-    from paper_repro.core.labels import index_of
-
-    ix = index_of(n)
-    out: list[tuple[int, int]] = []
-    for a, b in edges(n):
-        pair = (ix[a.name], ix[b.name])
-        if pair not in out:
-            out.append(pair)
-    return out
 
 
 def _node_color(lab: BasisLabel) -> str:

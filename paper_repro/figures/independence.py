@@ -25,10 +25,10 @@ from flint import fmpq
 
 from paper_repro.core.derivatives import mixed_derivative
 from paper_repro.core.labels import exponents, united_system
+from paper_repro.core.layout import position
 from paper_repro.util.registry import figure
 
 from . import COLOR_OF, plt, save
-from .graph import position
 
 HALF = fmpq(1, 2)
 
@@ -160,8 +160,8 @@ def make_scheme(outdir: Path, n: int = 4) -> list[Path]:
 def make_singular_values(outdir: Path) -> list[Path]:
     import json
 
-    from paper_repro.claims.linear_independence import collocation_mp
     from paper_repro.core.alphas import alpha_float
+    from paper_repro.core.collocation import collocation_mp
     from paper_repro.core.rank import mp_singular_values
     from paper_repro.util.io import DATA
 

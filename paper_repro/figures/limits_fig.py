@@ -9,13 +9,13 @@ import numpy as np
 
 from paper_repro.core.elevation import elevate
 from paper_repro.core.labels import united_system
+from paper_repro.core.layout import edges, net_edges, position
 from paper_repro.core.limits import bezier_limit, limit_terms, multinomial
 from paper_repro.surfaces.patch import Patch
 from paper_repro.util.io import DATA
 from paper_repro.util.registry import figure
 
 from . import COLOR_OF, plt, save
-from .graph import edges, net_edges, position
 
 
 def _color(lab) -> str:

@@ -8,12 +8,12 @@ import mpmath
 import numpy as np
 
 from paper_repro.core.labels import united_system
+from paper_repro.core.layout import net_edges, position
 from paper_repro.surfaces.models import cyclide_pieces, torus_pieces
 from paper_repro.surfaces.patch import Patch
 from paper_repro.util.registry import figure
 
 from . import COLOR_OF, plt, save
-from .graph import net_edges, position
 
 
 def _color(lab) -> str:

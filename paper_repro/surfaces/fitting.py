@@ -18,7 +18,7 @@ import numpy as np
 from flint import fmpq
 
 from paper_repro.core.collocation import collocate
-from paper_repro.core.context import ExactContext, MpContext
+from paper_repro.core.context import Context, ExactContext, MpContext, get_context
 from paper_repro.core.domain import (
     RationalAngle,
     RationalPoints,
@@ -98,3 +98,23 @@ def fit_mp(surface: Callable, n: int, alpha, dps: int = 40, verify: int = 4, see
     except ArithmeticError as exc:
         raise ValueError(f"surface: not in the span of T_{{{2 * n}}} ({exc})") from None
     return res.solution
+
+
+def fit(surface: Callable, n: int, alpha, arith: str | Context = "mp", **kwargs):
+    """Control net of ``surface`` in the normalized basis of order ``n`` (collocation, verified).
+
+    Exact arithmetics: ``alpha`` a :class:`RationalAngle`, ``surface(trig) -> coordinates`` called with an
+    :class:`ExactTrig` (exact sin/cos of integer combinations of u, v, w); returns rows of rationals.
+    Real arithmetics (mp): ``surface(u, v, w) -> coordinates``; returns an object array of mpf
+    (``dps`` keyword, default 40).  ``ValueError`` if the surface is not in the span.
+
+    >>> from flint import fmpq
+    >>> from paper_repro.core.domain import rational_alpha
+    >>> net = fit(lambda t: [t.cos(1, 0, 0), t.sin(0, 1, 0)], 1, rational_alpha(fmpq(1, 3)), "exact")
+    >>> len(net), len(net[0])
+    (7, 2)
+    """
+    ctx = get_context(arith)
+    if ctx.exact:
+        return fit_exact(surface, n, alpha, **kwargs)
+    return fit_mp(surface, n, alpha, **kwargs)

@@ -1,0 +1,134 @@
+"""Fuzzing the public API with hypothesis: every bad input gets a ValueError/TypeError that names the
+parameter -- never a traceback from deep inside numpy/flint, a hang or a silent wrong answer."""
+
+import math
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from paper_repro import (
+    Patch,
+    coefficients,
+    elevate,
+    evaluate,
+    evaluate_normalized,
+    export_mesh,
+    rational_alpha,
+    sample_points,
+)
+from paper_repro.core.labels import delta
+
+bad_n = st.one_of(st.integers(max_value=0), st.floats(), st.text(max_size=3), st.none(), st.booleans(),
+                  st.just(1.5), st.just([1]))
+bad_alpha = st.one_of(st.floats().filter(lambda a: not (0 < a < math.pi)), st.text(max_size=3), st.none(),
+                      st.sampled_from([0, math.pi, -1, 4, float("nan"), float("inf"), -float("inf"), 0.0]))
+bad_points = st.one_of(
+    st.just([]), st.just([[0.5, 0.5]]), st.just([[0.5, 0.2, 0.3, 0.0]]), st.just([[float("nan"), 0.5, 0.5]]),
+    st.just([[2.0, -0.5, -0.5]]), st.just([[0.9, 0.9, 0.9]]), st.just("points"), st.just([["a", "b", "c"]]),
+    st.just(np.zeros((2, 2, 3))), st.just([[float("inf"), 0.0, 0.0]]))
+
+ERR = (ValueError, TypeError)
+
+
+def _names(exc: Exception, *words: str) -> bool:
+    text = str(exc)
+    return any(w in text for w in words)
+
+
+@settings(max_examples=30)
+@given(bad_n)
+def test_bad_n(n):
+    for call in (lambda: evaluate(n, 1.0, [[0.3, 0.3, 0.4]]), lambda: coefficients(n, 1.0),
+                 lambda: Patch(n, 1.0, np.zeros((7, 3)))):
+        with pytest.raises(ERR) as info:
+            call()
+        assert _names(info.value, "n must"), str(info.value)
+
+
+@settings(max_examples=30)
+@given(bad_alpha)
+def test_bad_alpha(alpha):
+    for call in (lambda: evaluate_normalized(1, alpha, [[0.3, 0.3, 0.4]]), lambda: coefficients(2, alpha),
+                 lambda: Patch(1, alpha, np.zeros((7, 3))), lambda: sample_points(alpha, 3)):
+        with pytest.raises(ERR) as info:
+            call()
+        assert _names(info.value, "alpha"), str(info.value)
+
+
+@settings(max_examples=30)
+@given(bad_points)
+def test_bad_points(points):
+    p = Patch(1, 1.0, np.zeros((7, 3)))
+    for call in (lambda: evaluate(1, 1.0, points), lambda: p(points), lambda: p.derivative(points)):
+        with pytest.raises(ERR) as info:
+            call()
+        assert _names(info.value, "points"), str(info.value)
+
+
+@settings(max_examples=30)
+@given(st.one_of(st.just(np.zeros((6, 3))), st.just(np.zeros((7,))), st.just(np.full((7, 3), np.nan)),
+                 st.just([["x"] * 3] * 7), st.just({"r_{2,2,0}": (0, 0, 0)}), st.just({"q_{2,2,0}": (0, 0, 0)}),
+                 st.just(np.zeros((7, 0))), st.just([[0, 0, 0]] * 6 + [[0, 0]])))
+def test_bad_nets(net):
+    with pytest.raises(ERR) as info:
+        Patch(1, 1.0, net)
+    assert _names(info.value, "net"), str(info.value)
+    with pytest.raises(ERR):
+        elevate(net, 1, 1.0)
+
+
+@settings(max_examples=20)
+@given(st.one_of(st.just(np.ones(6)), st.just(-np.ones(7)), st.just(np.zeros(7)), st.just(np.full(7, np.nan)),
+                 st.just(["a"] * 7)))
+def test_bad_weights(weights):
+    with pytest.raises(ERR) as info:
+        Patch(1, 1.0, np.zeros((7, 3)), weights)
+    assert _names(info.value, "weights"), str(info.value)
+
+
+def test_bad_arith_counts_and_sizes(tmp_path):
+    with pytest.raises(ValueError, match="arith must be one of"):
+        evaluate(1, 1.0, [[0.3, 0.3, 0.4]], "quad")
+    with pytest.raises(ValueError, match="count must be an integer from 0"):
+        sample_points(1.0, -1)
+    with pytest.raises(ValueError, match="count must be an integer from 0"):
+        sample_points(1.0, 10**12)  # would not fit in memory: refused at once
+    with pytest.raises(ValueError, match="resolution must be an integer"):
+        Patch(1, 1.0, np.zeros((7, 3))).mesh(10**6)
+    with pytest.raises(TypeError, match="RationalPoints"):
+        evaluate(1, 1.0, [[0.3, 0.3, 0.4]], "exact")
+    with pytest.raises(ValueError, match="extension must be one of"):
+        export_mesh(tmp_path / "m.xyz", np.eye(3), [[0, 1, 2]])
+    with pytest.raises(ValueError, match="does not exist"):
+        export_mesh(tmp_path / "no" / "such" / "m.obj", np.eye(3), [[0, 1, 2]])
+    assert not (tmp_path / "no").exists()
+    with pytest.raises(ValueError, match="faces must index"):
+        export_mesh(tmp_path / "m.obj", np.eye(3), [[0, 1, 5]])
+    with pytest.raises(ValueError, match="direction"):
+        Patch(1, 1.0, np.zeros((7, 3))).derivative([[0.3, 0.3, 0.4]], (1, 1, 1))
+    with pytest.raises(ValueError, match="n must"):
+        delta(0)
+    with pytest.raises(ValueError, match="alpha"):
+        rational_alpha((0, 1))
+
+
+def test_messages_print_plain_numbers():
+    with pytest.raises(ValueError) as info:
+        evaluate(1, 1.0, [[0.9, 0.9, 0.9]])
+    assert "np.float64" not in str(info.value) and "mpf(" not in str(info.value)
+    import mpmath
+
+    with pytest.raises(ValueError) as info:
+        coefficients(1, mpmath.mpf(0))
+    assert "mpf(" not in str(info.value)
+
+
+@settings(max_examples=25)
+@given(st.integers(1, 4), st.floats(1e-3, math.pi - 1e-3), st.integers(0, 2**32 - 1))
+def test_good_inputs_never_raise_and_partition_unity(n, alpha, seed):
+    pts = sample_points(alpha, 5, seed=seed)
+    vals = evaluate_normalized(n, alpha, pts)
+    assert vals.shape == (5, delta(n)) and np.all(np.isfinite(vals))
+    assert np.max(np.abs(vals.sum(axis=1) - 1)) < 1e-9
