@@ -26,8 +26,10 @@ test: $(STAMP)                 ## fast test suite
 test-all: $(STAMP)             ## every test, slow ones included
 	$(PY) -m pytest -q -m "not benchmark"
 
-bench: $(STAMP)                ## speed benchmarks (pytest-benchmark)
-	$(PY) -m pytest -q -m benchmark --benchmark-enable --benchmark-only
+bench: $(STAMP)                ## speed: pytest-benchmark, then the comparison with bezier and mpmath -> reports/
+	mkdir -p reports
+	$(PY) -m pytest -q -m benchmark --benchmark-enable --benchmark-only --benchmark-json=reports/pytest-benchmark.json tests
+	$(PY) -m paper_repro.app.bench
 
 figures: $(STAMP)
 	$(PY) -m paper_repro figures

@@ -57,9 +57,13 @@ def collocate(ctx: Context, system: Callable[[int], tuple[np.ndarray, np.ndarray
             extra = a.shape[0] - m
             if extra:
                 resid = ctx.sub(ctx.dot(a[m:], x), b[m:])
-                scale = float(np.max(np.abs(ctx.to_float(b)))) if not ctx.exact else 1.0
+                if ctx.exact:
+                    scale = 1.0
+                else:  # size of the terms |A| |x| of the verification rows (and of the right-hand side)
+                    ax = np.abs(ctx.to_float(a[m:])) @ np.abs(ctx.to_float(x)).reshape(x.shape[0], -1)
+                    scale = max(float(np.max(ax)), float(np.max(np.abs(ctx.to_float(b)))))
                 if rtol is not None and not ctx.exact:
-                    ok = float(np.max(np.abs(ctx.to_float(resid)))) <= rtol * max(scale, 1.0)
+                    ok = float(np.max(np.abs(ctx.to_float(resid)))) <= rtol * scale
                 else:
                     ok = ctx.residual_ok(resid, scale)
                 if not ok:

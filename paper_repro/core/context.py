@@ -179,9 +179,11 @@ class Context:
         return int(np.linalg.matrix_rank(np.asarray(a, dtype=np.float64)))
 
     def residual_ok(self, residual: np.ndarray, scale: float) -> bool:
-        """Whether a verification residual is zero up to the arithmetic's rounding."""
+        """Whether a verification residual is zero up to rounding amplified by the conditioning of the
+        system: ``|r| <= scale 10^(-0.6 digits)`` (``scale`` = the size of the terms, ``|A| |x|``); an
+        identity that does not hold leaves a residual of the order of ``scale``."""
         r = float(np.max(np.abs(self.to_float(residual)))) if np.size(residual) else 0.0
-        return r <= max(scale, 1.0) * 10.0 ** (-(self.digits - 4))
+        return r <= max(scale, 1e-300) * 10.0 ** (-0.6 * self.digits)
 
 
 @dataclass(frozen=True)
@@ -387,7 +389,7 @@ class BallContext(ObjectContext):
         raise ValueError("ball arithmetic certifies full rank of square matrices only; use 'exact' or 'modp'")
 
     def residual_ok(self, residual: np.ndarray, scale: float) -> bool:
-        bound = arb(max(scale, 1.0)) * arb(10) ** (-(self.digits - 4))
+        bound = arb(max(scale, 1e-300)) * arb(10) ** (-int(0.6 * self.digits))
         return all(abs(x).upper() <= bound for x in np.asarray(residual, dtype=object).reshape(-1))
 
 

@@ -138,7 +138,7 @@ class RationalPoints:
         return np.array(rows, dtype=object).reshape(-1, 3)
 
 
-def check_points(points, alpha, tol: float = DOMAIN_TOL) -> np.ndarray:
+def check_points(points, alpha, tol: float = DOMAIN_TOL, offset: int = 0) -> np.ndarray:
     """Return ``points`` as an ``(P, 3)`` array after checking that they lie on Omega^alpha.
 
     A point is accepted if ``|u + v + w - alpha| <= tol * alpha`` and ``u, v, w >= -tol * alpha``.
@@ -162,9 +162,10 @@ def check_points(points, alpha, tol: float = DOMAIN_TOL) -> np.ndarray:
     bad = np.nonzero((np.abs(fl.sum(axis=1) - a) > slack) | (fl.min(axis=1) < -slack))[0]
     if bad.size:
         k = int(bad[0])
+        pt_index = k + offset
         pt = ", ".join(f"{float(x):.6g}" for x in fl[k])
         raise ValueError(
-            f"points: point {k} = ({pt}) is not on Omega^alpha (u + v + w = alpha = {a:.6g}, u, v, w >= 0)"
+            f"points: point {pt_index} = ({pt}) is not on Omega^alpha (u + v + w = alpha = {a:.6g}, u, v, w >= 0)"
             f" within tolerance {tol} * alpha")
     return arr
 

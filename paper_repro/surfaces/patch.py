@@ -14,7 +14,7 @@ import numpy as np
 from paper_repro.core.context import Context, FloatContext, get_context
 from paper_repro.core.derivatives_basis import basis_derivative
 from paper_repro.core.domain import RationalPoints, barycentric_to_uvw, check_points
-from paper_repro.core.fast import FloatKernel
+from paper_repro.core.fast import BLOCK, FloatKernel
 from paper_repro.core.labels import delta, exponent_matrix, index_of
 from paper_repro.core.nets import check_net, check_net_exact, net_from_labels  # noqa: F401 (re-exported)
 from paper_repro.core.normalization import coefficient_vector, evaluate_normalized
@@ -102,10 +102,20 @@ class Patch:
         cw = coef * self.weights
         return FloatKernel(exponent_matrix(self.n)), cw[:, None] * self.net, cw
 
-    def _float_points(self, points) -> np.ndarray:
+    def _float_call(self, points) -> np.ndarray:
+        """The fast path: points validated and evaluated block by block (work memory independent of P)."""
+        kernel, cnet, cw = self._kernel
         if isinstance(points, RationalPoints):
-            return points.uvw_float()
-        return np.asarray(check_points(points, self.alpha), dtype=np.float64)
+            arr = points.uvw_float()
+        else:
+            arr = np.asarray(points) if isinstance(points, np.ndarray) else check_points(points, self.alpha)
+            if arr.ndim != 2 or arr.shape[1:] != (3,) or arr.shape[0] == 0 or arr.dtype.kind not in "fiu":
+                arr = check_points(points, self.alpha)  # raises the documented error
+        out = np.empty((arr.shape[0], self.dimension))
+        for start in range(0, arr.shape[0], BLOCK):
+            blk = np.asarray(check_points(arr[start:start + BLOCK], self.alpha, offset=start), dtype=np.float64)
+            out[start:start + blk.shape[0]] = kernel.contract(blk, cnet, cw)
+        return out
 
     # --- evaluation -------------------------------------------------------------------------------
     def basis(self, points, arith: str | Context | None = None, dps: int = 50) -> np.ndarray:
@@ -124,8 +134,7 @@ class Patch:
         """
         ctx = self._ctx(arith, dps)
         if isinstance(ctx, FloatContext):
-            kernel, cnet, cw = self._kernel
-            return kernel.contract(self._float_points(points), cnet, cw)
+            return self._float_call(points)
         b = evaluate_normalized(self.n, self.alpha, points, ctx)
         return self._combine(b, ctx)
 

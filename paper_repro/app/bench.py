@@ -1,0 +1,163 @@
+"""`make bench`: patch evaluation against the `bezier` package and the mpmath route, in one run.
+
+Writes ``reports/bench.json`` and ``reports/bench.md`` (timings are machine-dependent, so they live in
+``reports/``, never in ``data/``):
+
+* patch evaluation at ``points`` random points of Omega^alpha (alpha = pi/2), best of ``repeat``:
+  :class:`~paper_repro.surfaces.patch.Patch` (blocked float kernel) versus
+  ``bezier.Triangle.evaluate_cartesian_multi`` of degree 3n - 1 (the degree of the alpha -> 0 limit) on
+  the same points, and versus the mpmath route (``arith='mp'``, 30 digits) per point; peak memory of
+  the float path (tracemalloc) at two point counts, to show it does not grow with them;
+* exact normalizing coefficients at one alpha (flint ``fmpq_mat``) versus the same collocation solved
+  with mpmath at 50 digits, per n, with fitted growth exponents.
+
+Run: ``python -m paper_repro.app.bench [--points N] [--quick]``.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import os
+import platform
+import time
+import tracemalloc
+
+import numpy as np
+
+from paper_repro.core.context import ExactContext, MpContext
+from paper_repro.core.domain import rational_alpha, sample_points
+from paper_repro.core.labels import delta
+from paper_repro.core.normalization import solve_reduced
+from paper_repro.surfaces.patch import Patch
+from paper_repro.util.io import ROOT, write_json, write_text
+
+REPORTS = ROOT / "reports"
+
+
+def _best(f, repeat: int) -> float:
+    best = math.inf
+    for _ in range(repeat):
+        t0 = time.perf_counter()
+        f()
+        best = min(best, time.perf_counter() - t0)
+    return best
+
+
+def _peak_bytes(f) -> int:
+    tracemalloc.start()
+    f()
+    peak = tracemalloc.get_traced_memory()[1]
+    tracemalloc.stop()
+    return peak
+
+
+def _growth(ns: list[int], ts: list[float]) -> float | None:
+    """Least-squares exponent k of t ~ C n^k."""
+    pairs = [(math.log(n), math.log(t)) for n, t in zip(ns, ts) if t > 0]
+    if len(pairs) < 2:
+        return None
+    x, y = np.array(pairs).T
+    return round(float(np.polyfit(x, y, 1)[0]), 2)
+
+
+def patch_comparison(ns: list[int], points: int, repeat: int, mp_points: int) -> list[dict]:
+    import bezier
+
+    alpha = math.pi / 2
+    pts = sample_points(alpha, points, seed=1)
+    bary = np.asfortranarray(pts[:, :2] / alpha)
+    rows = []
+    for n in ns:
+        rng = np.random.default_rng(n)
+        patch = Patch(n, alpha, rng.normal(size=(delta(n), 3)))
+        patch(pts[:10])  # coefficients and kernel set up outside the timing
+        t_ours = _best(lambda p=patch: p(pts), repeat)
+        deg = 3 * n - 1
+        tri = bezier.Triangle(np.asfortranarray(rng.normal(size=(3, (deg + 1) * (deg + 2) // 2))), degree=deg,
+                              copy=False)
+        t_bez = _best(lambda t=tri: t.evaluate_cartesian_multi(bary), repeat)
+        few = pts[:mp_points]
+        t_mp = _best(lambda p=patch: p(few, arith="mp", dps=30), 1) / mp_points * points
+        peak_small = _peak_bytes(lambda p=patch: p(pts[: points // 10]))
+        peak_big = _peak_bytes(lambda p=patch: p(pts))
+        out_bytes = points * 3 * 8
+        rows.append({"n": n, "delta_n": delta(n), "bezier_degree": deg, "points": points,
+                     "patch_s": round(t_ours, 4), "bezier_s": round(t_bez, 4),
+                     "speedup_vs_bezier": round(t_bez / t_ours, 2),
+                     "mp_route_s_extrapolated": round(t_mp, 1), "speedup_vs_mp": round(t_mp / t_ours),
+                     "peak_work_MB_at_10pct_points": round((peak_small - out_bytes / 10) / 1e6, 1),
+                     "peak_work_MB_at_all_points": round((peak_big - out_bytes) / 1e6, 1)})
+        print(f"n={n}: patch {t_ours:.3f}s  bezier {t_bez:.3f}s  ({t_bez / t_ours:.2f}x)  mp route ~{t_mp:.0f}s",
+              flush=True)
+    return rows
+
+
+def exact_comparison(ns: list[int]) -> dict:
+    alpha = rational_alpha((1, 3))
+    rows = []
+    for n in ns:
+        t_ex = _best(lambda n=n: solve_reduced(n, alpha, ExactContext(), verify=1), 1)
+        ctx = MpContext(dps=50)
+        t_mp = _best(lambda n=n: solve_reduced(n, float(alpha), ctx, verify=1), 1)
+        rows.append({"n": n, "unknowns": (n + 1) * (n + 2) // 2, "exact_s": round(t_ex, 4), "mp50_s": round(t_mp, 4),
+                     "ratio_mp_over_exact": round(t_mp / t_ex, 2)})
+        print(f"exact coefficients n={n}: flint {t_ex:.3f}s  mpmath {t_mp:.3f}s", flush=True)
+    return {"alpha": "4 atan(1/3)", "rows": rows,
+            "growth_exponent_exact": _growth([r["n"] for r in rows], [r["exact_s"] for r in rows]),
+            "growth_exponent_mp": _growth([r["n"] for r in rows], [r["mp50_s"] for r in rows])}
+
+
+def machine() -> dict:
+    import bezier
+    import flint
+    import mpmath
+
+    return {"python": platform.python_version(), "platform": platform.platform(), "cpus": os.cpu_count(),
+            "processor": platform.processor() or platform.machine(), "numpy": np.__version__,
+            "bezier": bezier.__version__, "python-flint": flint.__version__, "mpmath": mpmath.__version__}
+
+
+def markdown(rep: dict) -> str:
+    out = ["# Benchmarks", "", "Generated by `make bench` (machine-dependent; not part of `data/`).", "",
+           f"Machine: {rep['machine']['processor']}, {rep['machine']['cpus']} CPUs, Python {rep['machine']['python']}, "
+           f"numpy {rep['machine']['numpy']}, bezier {rep['machine']['bezier']}.", "",
+           f"## Patch evaluation, {rep['patch'][0]['points']:,} random points of Ω^α, α = π/2 (best of "
+           f"{rep['repeat']})", "",
+           "| n | δ_n | `Patch` (s) | `bezier.Triangle` deg 3n−1 (s) | speed-up vs bezier | mpmath route, 30 digits "
+           "(s, extrapolated) | speed-up vs mp | extra memory at 10% / 100% of the points (MB) |",
+           "|---|---|---|---|---|---|---|---|"]
+    for r in rep["patch"]:
+        out.append(f"| {r['n']} | {r['delta_n']} | {r['patch_s']} | {r['bezier_s']} | {r['speedup_vs_bezier']}× | "
+                   f"{r['mp_route_s_extrapolated']} | {r['speedup_vs_mp']}× | {r['peak_work_MB_at_10pct_points']} / "
+                   f"{r['peak_work_MB_at_all_points']} |")
+    ex = rep["exact"]
+    out += ["", f"## Exact normalizing coefficients at α = {ex['alpha']}: flint versus mpmath (50 digits)", "",
+            "| n | unknowns | flint fmpq_mat (s) | mpmath lu_solve (s) | mpmath / flint |", "|---|---|---|---|---|"]
+    for r in ex["rows"]:
+        out.append(f"| {r['n']} | {r['unknowns']} | {r['exact_s']} | {r['mp50_s']} | {r['ratio_mp_over_exact']} |")
+    out += ["", f"Growth exponents (t ~ n^k): flint {ex['growth_exponent_exact']}, mpmath {ex['growth_exponent_mp']}.",
+            ""]
+    return "\n".join(out)
+
+
+def main(argv: list[str] | None = None) -> int:
+    ap = argparse.ArgumentParser(prog="python -m paper_repro.app.bench")
+    ap.add_argument("--points", type=int, default=1_000_000)
+    ap.add_argument("--repeat", type=int, default=3)
+    ap.add_argument("--quick", action="store_true", help="small sizes (a smoke run)")
+    args = ap.parse_args(argv)
+    points = 20_000 if args.quick else args.points
+    ns = [1, 2, 3] if args.quick else [1, 2, 3, 4, 6]
+    rep = {"machine": machine(), "repeat": args.repeat,
+           "patch": patch_comparison(ns, points, args.repeat, mp_points=20 if args.quick else 200),
+           "exact": exact_comparison([2, 3] if args.quick else [2, 3, 4, 5, 6, 7, 8])}
+    write_json(REPORTS / "bench.json", rep)
+    write_text(REPORTS / "bench.md", markdown(rep))
+    print(f"wrote {REPORTS / 'bench.json'} and {REPORTS / 'bench.md'}")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
