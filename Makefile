@@ -5,14 +5,27 @@ VENV   := .venv
 PY     := $(VENV)/bin/python
 STAMP  := $(VENV)/.installed-stamp
 
-.PHONY: venv reproduce reproduce-extended test test-all bench figures lint clean
+.PHONY: venv lock reproduce reproduce-extended test test-all bench figures lint clean distclean
 
-$(STAMP): pyproject.toml
-	$(PYTHON) -m venv $(VENV)
-	$(PY) -m pip install --quiet --disable-pip-version-check -e '.[dev]'
+# The environment: the exact versions of requirements.lock (what `make reproduce` was run with, so
+# figures stay byte-identical), then the package itself without resolving anything.  A failed install
+# removes the half-built environment, so nothing stale is reused.
+$(STAMP): pyproject.toml requirements.lock
+	@$(PYTHON) -c 'import sys; sys.exit(0 if sys.version_info >= (3, 11) else 1)' 2>/dev/null || \
+	  { echo "paper_repro needs Python >= 3.11, but '$(PYTHON)' is $$($(PYTHON) -V 2>&1); run with PYTHON=python3.11 (or newer)." >&2; exit 1; }
+	rm -f $(STAMP)
+	$(PYTHON) -m venv $(VENV) || { rm -rf $(VENV); exit 1; }
+	$(PY) -m pip install --quiet --disable-pip-version-check -r requirements.lock || { rm -rf $(VENV); exit 1; }
+	$(PY) -m pip install --quiet --disable-pip-version-check --no-deps -e . || { rm -rf $(VENV); exit 1; }
 	touch $(STAMP)
 
 venv: $(STAMP)
+
+lock: $(STAMP)                 ## refresh requirements.lock from pyproject's ranges (newest that install)
+	$(PYTHON) -m venv build/lock-venv
+	build/lock-venv/bin/python -m pip install --quiet --disable-pip-version-check '.[dev]'
+	build/lock-venv/bin/python -m pip freeze --exclude-editable | grep -v '^paper.repro' > requirements.lock
+	rm -rf build/lock-venv
 
 reproduce: $(STAMP)            ## all claims, data/, figures/, gallery
 	$(PY) -m paper_repro reproduce
@@ -37,5 +50,8 @@ figures: $(STAMP)
 lint: $(STAMP)
 	$(PY) -m ruff check paper_repro tests
 
-clean:                         ## caches and build products (not data/ or figures/)
+clean:                         ## caches and build products (not data/ or figures/, not the environment)
 	rm -rf build .cache .pytest_cache .hypothesis .ruff_cache
+
+distclean: clean               ## also the environment .venv/ (the next target rebuilds it)
+	rm -rf $(VENV)

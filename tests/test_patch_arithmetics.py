@@ -94,3 +94,18 @@ def test_patch_derivative_and_normals_float():
     nrm = p.normals(pts)
     assert np.allclose(np.linalg.norm(nrm, axis=1), 1.0)
     assert np.max(np.abs(np.einsum("ij,ij->i", nrm, p.derivative(pts, "v")))) < 1e-12
+
+
+def test_blocks_cover_every_point_and_errors_name_the_global_index():
+    import pytest
+
+    from paper_repro.core.fast import BLOCK
+
+    alpha = 0.9
+    pts = np.random.default_rng(5).dirichlet(np.ones(3), size=BLOCK + 7) * alpha
+    net = np.random.default_rng(6).normal(size=(delta(2), 3))
+    fast = Patch(2, alpha, net)(pts)
+    assert np.max(np.abs(fast - evaluate_normalized(2, alpha, pts).dot(net))) < 1e-13
+    pts[BLOCK + 3] = [alpha, alpha, 0.0]
+    with pytest.raises(ValueError, match=f"point {BLOCK + 3} "):
+        Patch(2, alpha, net)(pts)

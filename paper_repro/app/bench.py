@@ -17,7 +17,6 @@ Run: ``python -m paper_repro.app.bench [--points N] [--quick]``.
 from __future__ import annotations
 
 import argparse
-import json
 import math
 import os
 import platform

@@ -14,9 +14,9 @@ from pathlib import Path
 from typing import Any
 
 import numpy as np
-from tqdm import tqdm
 
 from paper_repro.util.io import BUILD, DATA, FIGURES, ROOT, rel, write_json, write_text
+from paper_repro.util.progress import progress
 from paper_repro.util.registry import CLAIMS, ClaimResult, run_claim
 from paper_repro.util.registry import FIGURES as FIGURE_REGISTRY
 
@@ -65,7 +65,7 @@ def run_claims(only: list[str] | None, overrides: dict[str, dict[str, Any]] | No
     errata: list[dict] = []
     data_files: dict[str, Any] = {}
     seconds: dict[str, float] = {}
-    for cid in tqdm(ids, desc="claims", unit="claim", leave=False):
+    for cid in progress(ids, "claims"):
         res, out, sec = run_claim(CLAIMS[cid], (overrides or {}).get(cid), extended=extended)
         results.append(res)
         errata += out.errata
@@ -142,7 +142,7 @@ def update_readme(results: list[ClaimResult], errata: list[dict]) -> None:
 def make_figures(only: list[str] | None) -> list[Path]:
     """Regenerate figures (all, or ``only``), then the manifest and gallery (always over all figures)."""
     written: list[Path] = []
-    for fid, fig in tqdm(list(FIGURE_REGISTRY.items()), desc="figures", unit="fig", leave=False):
+    for fid, fig in progress(list(FIGURE_REGISTRY.items()), "figures"):
         if only and fid not in only:
             continue
         paths = fig.func(FIGURES)

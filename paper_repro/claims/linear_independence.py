@@ -15,7 +15,6 @@ from __future__ import annotations
 
 import mpmath
 from flint import fmpq
-from tqdm import tqdm
 
 from paper_repro.core.basis import evaluate
 from paper_repro.core.collocation import collocation_mp
@@ -23,6 +22,7 @@ from paper_repro.core.context import ModpContext
 from paper_repro.core.domain import rational_alpha, sample_rational_points
 from paper_repro.core.labels import delta
 from paper_repro.core.rank import ball_sigma_min_bound, modp_rank, mp_singular_values, numeric_rank
+from paper_repro.util.progress import progress
 from paper_repro.util.registry import Outcome, claim
 
 
@@ -67,9 +67,9 @@ def modp_case(n: int, t: str, seed: int, control: bool = False) -> int:
        svd_n_max=4, exact_ns=list(range(1, 21)), rational_ts=["1/3", "1/7"], seed=5,
        extended={"exact_ns": list(range(1, 31)) + [35, 40]})
 def run(ns, alphas, dps, svd_n_max, exact_ns, rational_ts, seed) -> Outcome:
-    numeric = [numeric_case(n, a, dps, svd_n_max, seed) for n in tqdm(ns, desc="rank (mp)", leave=False)
+    numeric = [numeric_case(n, a, dps, svd_n_max, seed) for n in progress(ns, "rank (mp) n")
                for a in alphas]
-    exact = {t: {str(n): modp_case(n, t, seed) for n in tqdm(exact_ns, desc=f"rank mod p t={t}", leave=False)}
+    exact = {t: {str(n): modp_case(n, t, seed) for n in progress(exact_ns, f"rank mod p t={t} n")}
              for t in rational_ts}
     numeric_ok = all(r["rank"] == r["delta_n"] for r in numeric)
     exact_ok = all(exact[t][str(n)] == delta(n) for t in rational_ts for n in exact_ns)

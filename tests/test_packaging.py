@@ -1,0 +1,37 @@
+"""Packaging facts a reader depends on: LICENSE, CITATION.cff, the lock file, the Python check."""
+
+import re
+import subprocess
+import sys
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+
+
+def test_citation_cff_fields():
+    text = (ROOT / "CITATION.cff").read_text(encoding="utf-8")
+    for key in ("cff-version: 1.2.0", "message:", "title:", "authors:", "preferred-citation:", "type: article",
+                "arXiv:1309.4747", "https://arxiv.org/abs/1309.4747"):
+        assert key in text, key
+    assert not re.search(r"\t", text)  # YAML forbids tabs for indentation
+    assert (ROOT / "LICENSE").read_text().startswith("MIT License")
+
+
+def test_lock_pins_every_dependency_exactly():
+    lines = [ln for ln in (ROOT / "requirements.lock").read_text().splitlines() if ln and not ln.startswith("#")]
+    assert lines and all(re.fullmatch(r"[A-Za-z0-9_.\-]+==[A-Za-z0-9_.+\-]+", ln) for ln in lines), lines
+    names = {ln.split("==")[0].lower().replace("_", "-") for ln in lines}
+    for dep in ("numpy", "scipy", "mpmath", "python-flint", "matplotlib", "pytest", "hypothesis", "bezier"):
+        assert dep in names, dep
+
+
+def test_makefile_stops_on_an_old_python(tmp_path):
+    fake = tmp_path / "python3"
+    fake.write_text("#!/bin/sh\nif [ \"$1\" = -V ]; then echo 'Python 3.10.12'; exit 0; fi\nexit 1\n")
+    fake.chmod(0o755)
+    proc = subprocess.run(["make", "-s", "-C", str(ROOT), "-n" if False else "venv", f"PYTHON={fake}",
+                           f"VENV={tmp_path / 'venv'}"], capture_output=True, text=True)
+    assert proc.returncode != 0
+    assert "needs Python >= 3.11" in proc.stderr and "3.10.12" in proc.stderr
+    assert not (tmp_path / "venv").exists()
+    assert sys.version_info >= (3, 11)
