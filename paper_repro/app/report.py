@@ -142,7 +142,8 @@ def update_readme(results: list[ClaimResult], errata: list[dict]) -> None:
 def make_figures(only: list[str] | None) -> list[Path]:
     """Regenerate figures (all, or ``only``), then the manifest and gallery (always over all figures)."""
     written: list[Path] = []
-    for fid, fig in progress(list(FIGURE_REGISTRY.items()), "figures"):
+    for fid in progress(list(FIGURE_REGISTRY), "figures"):
+        fig = FIGURE_REGISTRY[fid]
         if only and fid not in only:
             continue
         paths = fig.func(FIGURES)
