@@ -16,21 +16,24 @@ from typing import Any
 import numpy as np
 
 from paper_repro.util.io import BUILD, DATA, FIGURES, ROOT, rel, write_json, write_text
-from paper_repro.util.progress import progress
-from paper_repro.util.registry import CLAIMS, ClaimResult, run_claim
+from paper_repro.util.registry import CLAIMS, ClaimResult, Outcome, check_overrides, load_all, run_claim
 from paper_repro.util.registry import FIGURES as FIGURE_REGISTRY
+from paper_repro.util.sweep import sweep
 
 
 def _short(text: str, width: int) -> str:
     return text if len(text) <= width else text[: width - 1] + "…"
 
 
-def claims_table(results: list[ClaimResult], seconds: dict[str, float] | None = None) -> str:
-    """Plain-text table: id, paper label(s), statement, kind, status (and seconds)."""
+def claims_table(results: list[ClaimResult], seconds: dict[str, float] | None = None,
+                 cached: dict[str, bool] | None = None) -> str:
+    """Plain-text table: id, paper label(s), statement, kind, status (and seconds; ``cached`` marks results
+    read from the claim cache)."""
     rows = [("id", "paper label", "statement", "kind", "status") + (("s",) if seconds else ())]
     for r in results:
         row = (r.id, _short(", ".join(r.paper_ref), 34), _short(r.statement, 60), r.kind, r.status.upper())
-        rows.append(row + ((f"{seconds[r.id]:.1f}",) if seconds else ()))
+        mark = " (cached)" if cached and cached.get(r.id) else ""
+        rows.append(row + ((f"{seconds[r.id]:.1f}{mark}",) if seconds else ()))
     widths = [max(len(row[k]) for row in rows) for k in range(len(rows[0]))]
     lines = ["  ".join(cell.ljust(w) for cell, w in zip(row, widths)) for row in rows]
     lines.insert(1, "  ".join("-" * w for w in widths))
@@ -55,23 +58,36 @@ def claims_markdown(results: list[ClaimResult]) -> str:
     return "\n".join(out)
 
 
+def _run_one(job: tuple[str, dict | None, bool]) -> tuple[ClaimResult, Outcome, float]:
+    """One claim in a worker (module level, so that processes can run it)."""
+    cid, ov, extended = job
+    return run_claim(CLAIMS[cid], ov, extended=extended)
+
+
 def run_claims(only: list[str] | None, overrides: dict[str, dict[str, Any]] | None, extended: bool = False,
-               write: bool = True) -> bool:
+               write: bool = True, executor=None) -> bool:
     """Run claims, print the table, and (if ``write``) publish data; returns True if all pass.
 
-    ``overrides`` maps claim ids to parameter overrides (each checked by :func:`run_claim`)."""
+    ``overrides`` maps claim ids to parameter overrides (each checked by :func:`run_claim`).  The claims
+    run through :func:`paper_repro.util.sweep.sweep` (local processes on every core by default, or
+    ``executor``); results are collected in registry order, so the output does not depend on it."""
     ids = [c for c in CLAIMS if not only or c in only]
+    for cid in ids:  # reject unknown parameters before any work starts
+        check_overrides(CLAIMS[cid], (overrides or {}).get(cid), extended)
     results: list[ClaimResult] = []
     errata: list[dict] = []
     data_files: dict[str, Any] = {}
     seconds: dict[str, float] = {}
-    for cid in progress(ids, "claims"):
-        res, out, sec = run_claim(CLAIMS[cid], (overrides or {}).get(cid), extended=extended)
+    cached: dict[str, bool] = {}
+    jobs = [(cid, (overrides or {}).get(cid), extended) for cid in ids]
+    for cid, (res, out, sec) in zip(ids, sweep(_run_one, jobs, executor=executor, initializer=load_all,
+                                              desc="claims", label=lambda job: job[0])):
         results.append(res)
         errata += out.errata
         data_files.update(out.data)
         seconds[cid] = sec
-    print(claims_table(results, seconds))
+        cached[cid] = res.cached
+    print(claims_table(results, seconds, cached))
     failed = [r.id for r in results if r.status != "pass"]
     print(f"\n{len(results) - len(failed)} passed, {len(failed)} failed" + (f": {failed}" if failed else ""))
     if write:
@@ -93,8 +109,24 @@ def run_claims(only: list[str] | None, overrides: dict[str, dict[str, Any]] | No
             write_json(DATA / "errata.json", unique)
             update_readme(results, unique)
             write_paper_map()
-        write_json(BUILD / f"timings{suffix}.json", {k: round(v, 3) for k, v in seconds.items()})
+        _record_timings(BUILD / f"timings{suffix}.json", seconds, cached)
     return not failed
+
+
+def _record_timings(path: Path, seconds: dict[str, float], cached: dict[str, bool]) -> None:
+    """Keep the latest cold (computed) and warm (cached) time of every claim, each under its own key, so a
+    warm run never overwrites the cold timings."""
+    try:
+        old = json.loads(path.read_text())
+    except (OSError, ValueError):
+        old = {}
+    if not isinstance(old.get("cold"), dict):
+        old = {"cold": {}, "warm": {}}
+    for cid, sec in seconds.items():
+        old["warm" if cached.get(cid) else "cold"][cid] = round(sec, 3)
+    hits = sum(1 for v in cached.values() if v)
+    old["total_last_run"] = {"seconds": round(sum(seconds.values()), 1), "cached": hits, "computed": len(cached) - hits}
+    write_json(path, old)
 
 
 def write_paper_map() -> None:
@@ -139,17 +171,21 @@ def update_readme(results: list[ClaimResult], errata: list[dict]) -> None:
     write_text(path, text)
 
 
-def make_figures(only: list[str] | None) -> list[Path]:
-    """Regenerate figures (all, or ``only``), then the manifest and gallery (always over all figures)."""
-    written: list[Path] = []
-    for fid in progress(list(FIGURE_REGISTRY), "figures"):
-        fig = FIGURE_REGISTRY[fid]
-        if only and fid not in only:
-            continue
-        paths = fig.func(FIGURES)
-        if sorted(p.name for p in paths) != sorted(fig.outputs):
-            raise RuntimeError(f"figure {fid} wrote {[p.name for p in paths]}, declared {fig.outputs}")
-        written += paths
+def _make_one(fid: str) -> list[Path]:
+    """One figure in a worker (module level, so that processes can run it)."""
+    fig = FIGURE_REGISTRY[fid]
+    paths = [Path(p) for p in fig.func(FIGURES)]
+    if sorted(p.name for p in paths) != sorted(fig.outputs):
+        raise RuntimeError(f"figure {fid} wrote {[p.name for p in paths]}, declared {fig.outputs}")
+    return paths
+
+
+def make_figures(only: list[str] | None, executor=None) -> list[Path]:
+    """Regenerate figures (all, or ``only``; through :func:`~paper_repro.util.sweep.sweep`), then the
+    manifest and gallery (always over all figures)."""
+    ids = [fid for fid in FIGURE_REGISTRY if not only or fid in only]
+    written = [p for paths in sweep(_make_one, ids, executor=executor, initializer=load_all, desc="figures")
+               for p in paths]
     manifest = []
     for fid, fig in FIGURE_REGISTRY.items():
         outputs = [rel(FIGURES / name) for name in fig.outputs]

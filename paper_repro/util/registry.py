@@ -159,13 +159,9 @@ def cli_overrides(c: Claim, n: int | None, alpha: str | None) -> dict[str, Any] 
     return out
 
 
-def run_claim(c: Claim, overrides: dict[str, Any] | None = None, extended: bool = False
-              ) -> tuple[ClaimResult, Outcome, float]:
-    """Run one claim; returns its result, the raw outcome (errata, data files), and the seconds it took.
-
-    ``overrides`` may only name parameters the claim takes (``ValueError`` listing them otherwise).  A
-    claim that raises is reported as failing with the error, and that failure is never cached.
-    """
+def check_overrides(c: Claim, overrides: dict[str, Any] | None, extended: bool = False) -> dict[str, Any]:
+    """The claim's parameters with ``overrides`` applied; ``ValueError`` listing the accepted names if an
+    override names a parameter the claim does not take."""
     params = dict(c.defaults)
     if extended and c.extended:
         params.update(c.extended)
@@ -173,6 +169,17 @@ def run_claim(c: Claim, overrides: dict[str, Any] | None = None, extended: bool 
     if unknown:
         raise ValueError(f"claim {c.id!r} takes no parameter(s) {unknown}; it takes {sorted(params)}")
     params.update(overrides or {})
+    return params
+
+
+def run_claim(c: Claim, overrides: dict[str, Any] | None = None, extended: bool = False
+              ) -> tuple[ClaimResult, Outcome, float]:
+    """Run one claim; returns its result, the raw outcome (errata, data files), and the seconds it took.
+
+    ``overrides`` may only name parameters the claim takes (``ValueError`` listing them otherwise).  A
+    claim that raises is reported as failing with the error, and that failure is never cached.
+    """
+    params = check_overrides(c, overrides, extended)
     t0 = time.perf_counter()
 
     def compute() -> dict:

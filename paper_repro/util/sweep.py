@@ -1,0 +1,76 @@
+"""Sweeps over parameters (claims, benchmarks, extended runs) through a ``concurrent.futures.Executor``.
+
+By default local processes on every core (``os.cpu_count()``; ``PAPER_REPRO_WORKERS`` overrides, ``1`` runs
+in this process); any executor a caller passes is used as it is -- a ``ProcessPoolExecutor``, a
+``ThreadPoolExecutor`` or a ``dask.distributed`` client's executor (``client.get_executor()``), so a sweep
+can run on a cluster::
+
+    from dask.distributed import Client          # pip install 'paper_repro[dask]'
+    client = Client("scheduler-address:8786")     # or Client() for a local cluster
+    results = sweep(task, items, executor=client.get_executor())
+
+Results come back in the order of ``items`` whatever order the workers finish in, so a sweep's output
+does not depend on the executor.  ``task`` must be a module-level function (picklable).
+
+>>> from concurrent.futures import ThreadPoolExecutor
+>>> with ThreadPoolExecutor(2) as ex:
+...     sweep(abs, [-3, 1, -2], executor=ex)
+[3, 1, 2]
+>>> sweep(abs, [-1], workers=1)
+[1]
+"""
+
+from __future__ import annotations
+
+import os
+import sys
+from collections.abc import Callable, Iterable
+from concurrent.futures import Executor, ProcessPoolExecutor, as_completed
+from typing import TypeVar
+
+T = TypeVar("T")
+R = TypeVar("R")
+
+
+def default_workers() -> int:
+    env = os.environ.get("PAPER_REPRO_WORKERS")
+    if env:
+        if not env.isdigit() or int(env) < 1:
+            raise ValueError(f"PAPER_REPRO_WORKERS must be a positive integer, got {env!r}")
+        return int(env)
+    return os.cpu_count() or 1
+
+
+def sweep(task: Callable[[T], R], items: Iterable[T], *, executor: Executor | None = None,
+          workers: int | None = None, initializer: Callable[[], None] | None = None,
+          desc: str | None = None, label: Callable[[T], str] = str) -> list[R]:
+    """``[task(item) for item in items]``, computed by ``executor`` (or local processes), in order.
+
+    ``initializer`` runs once in each new local worker process (e.g. to register claims); ``desc``
+    prints one plain progress line per finished item to stderr.
+    """
+    seq = list(items)
+    n = workers if workers is not None else default_workers()
+    if executor is None and (n <= 1 or len(seq) <= 1):
+        if initializer:
+            initializer()
+        out = []
+        for k, item in enumerate(seq, 1):
+            out.append(task(item))
+            if desc:
+                print(f"{desc} {k}/{len(seq)}: {label(item)}", file=sys.stderr, flush=True)
+        return out
+    own = executor is None
+    ex = executor or ProcessPoolExecutor(max_workers=n, initializer=initializer)
+    try:
+        futures = {ex.submit(task, item): k for k, item in enumerate(seq)}
+        results: list = [None] * len(seq)
+        for done, fut in enumerate(as_completed(futures), 1):
+            k = futures[fut]
+            results[k] = fut.result()
+            if desc:
+                print(f"{desc} {done}/{len(seq)}: {label(seq[k])}", file=sys.stderr, flush=True)
+        return results
+    finally:
+        if own:
+            ex.shutdown()

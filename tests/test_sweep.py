@@ -1,0 +1,50 @@
+"""Sweeps through executors: order kept, any executor accepted, a dask cluster where installed."""
+
+import os
+from concurrent.futures import ProcessPoolExecutor, ThreadPoolExecutor
+
+import pytest
+
+from paper_repro.util.sweep import default_workers, sweep
+
+
+def _square(x):
+    return x * x
+
+
+def test_order_is_kept_with_processes_threads_and_inline():
+    items = list(range(12))
+    expected = [x * x for x in items]
+    with ProcessPoolExecutor(2) as ex:
+        assert sweep(_square, items, executor=ex) == expected
+    with ThreadPoolExecutor(3) as ex:
+        assert sweep(_square, items, executor=ex) == expected
+    assert sweep(_square, items, workers=1) == expected
+    assert sweep(_square, items, workers=2) == expected
+
+
+def test_workers_from_environment(monkeypatch):
+    monkeypatch.setenv("PAPER_REPRO_WORKERS", "3")
+    assert default_workers() == 3
+    monkeypatch.setenv("PAPER_REPRO_WORKERS", "zero")
+    with pytest.raises(ValueError, match="PAPER_REPRO_WORKERS"):
+        default_workers()
+    monkeypatch.delenv("PAPER_REPRO_WORKERS")
+    assert default_workers() == (os.cpu_count() or 1)
+
+
+def test_a_claim_sweep_gives_the_same_results_inline_and_in_processes():
+    from paper_repro.app.report import _run_one
+    from paper_repro.util.registry import load_all
+
+    load_all()
+    jobs = [("dimension", {"n_min": 1, "n_max": 6}, False), ("symmetry", None, False)]
+    inline = [r[0].as_dict() for r in sweep(_run_one, jobs, workers=1)]
+    procs = [r[0].as_dict() for r in sweep(_run_one, jobs, workers=2, initializer=load_all)]
+    assert inline == procs and all(r["status"] == "pass" for r in inline)
+
+
+def test_dask_local_cluster():
+    distributed = pytest.importorskip("distributed", reason="dask.distributed not installed (extra paper_repro[dask])")
+    with distributed.Client(processes=False, n_workers=1, threads_per_worker=2, dashboard_address=None) as client:
+        assert sweep(_square, [3, 1, 2], executor=client.get_executor()) == [9, 1, 4]
