@@ -66,8 +66,10 @@ def test_univariate_constants_and_detection(monkeypatch):
 
 
 def test_univariate_claim_small():
-    res, _, _ = run_claim(CLAIMS["univariate"], {"n_exact_max": 5, "ns_numeric": [1, 2], "bernstein_ns": [1, 2],
-                                                 "alphas": ["pi/3"]})
+    res, _, _ = run_claim(CLAIMS["univariate"], {"n_exact_max": 5, "ns_numeric": [1, 2], "alphas": ["pi/3"]})
+    assert res.status == "pass", res.measured
+    assert "n = 1..5" in res.statement  # the range it ran with, filled in
+    res, _, _ = run_claim(CLAIMS["univariate_limit_order"], {"bernstein_ns": [1, 2]})
     assert res.status == "pass", res.measured
     orders = res.measured["bernstein_observed_order"]
     assert all(abs(o - 2) < 0.05 for o in orders.values())

@@ -12,8 +12,9 @@ from .strategies import alphas, orders
 def test_partition_of_unity_float(n, alpha, fr):
     vals = A(n, alpha, np.array(fr) * alpha)
     assert np.all(vals >= 0)
-    # sum of 2n+1 non-negative O(1)..O(c_max) terms: rounding relative to the largest term
-    assert np.allclose(vals.sum(axis=1), 1.0, rtol=0, atol=1e-12 * max(1.0, c_const(n, n, alpha) * 1e-2))
+    # 2n+1 non-negative terms summing to 1, each a product of <= 2n+2 float factors (relative error
+    # <= (2n+2) eps each, eps = 1.1e-16) and a constant of relative error ~ (2n+1) eps: |sum - 1| <= 1e-13
+    assert np.max(np.abs(vals.sum(axis=1) - 1.0)) <= 1e-13
 
 
 @given(orders, alphas)

@@ -53,8 +53,9 @@ def _markdown(n: int, m: fmpq_mat, t: str) -> str:
 
 
 @claim("basis_transformation", paper_ref=["que:open_problem_basis_transformation", "sec:coincidence"],
-       statement="Computed answer to the open question at sampled alpha: the exact matrix M with V_n = T-bar_{2n} M "
-                 "(and its inverse), verified at extra points.",
+       statement="Data for the open question, not an answer to it: at one alpha (tan(alpha/4) = {t}) the exact "
+                 "matrix M with V_n = T-bar_{2n} M (and its inverse), n in {ns}, verified at 3 extra points. "
+                 "The open question asks for M as a function of alpha; that is not given here.",
        kind="exact-evidence", ns=list(range(1, 7)), t="1/2", exact_n_max=3)
 def run(ns, t, exact_n_max) -> Outcome:
     checks, data, md = {}, {}, ["# Basis transformation between T̄_{2n} and V_n", "",

@@ -75,7 +75,8 @@ def check_edge(n: int, alpha, edge: str, count: int, dps: int) -> dict:
 
 @claim("boundary", paper_ref=["boundary_property_1", "boundary_property_2", "boundary_property_3"],
        statement="On each edge of Omega^alpha exactly 2n+1 functions of T_{2n} survive and they are the "
-                 "univariate B-basis functions A_{2n,2n-i}/c_{2n,2n-i} (eqs. boundary_property_1..3).",
+                 "univariate B-basis functions A_{2n,2n-i}/c_{2n,2n-i} (eqs. boundary_property_1..3); "
+                 "n = {ns}, alpha in {alphas}, {dps} digits.",
        kind="numeric-evidence", ns=list(range(1, 9)), alphas=["pi/6", "pi/3", "pi/2", "2pi/3", "5pi/6", "3.1"],
        points_per_edge=12, dps=50)
 def run(ns: list[int], alphas: list[str], points_per_edge: int, dps: int) -> Outcome:

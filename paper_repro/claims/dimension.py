@@ -25,7 +25,8 @@ def distinct_functions(n: int) -> int:
 
 @claim("dimension", paper_ref=["joint_systems_linear_independence", "united_system", "dimension"],
        statement="T_{2n} has delta_n = 3n(n+1)+1 functions: the printed closed form, the printed index "
-                 "sum and the number of distinct functions of R_{2n} u G_{2n} u B_{2n} agree.",
+                 "sum and the number of distinct functions of R_{2n} u G_{2n} u B_{2n} agree, "
+                 "for n = {n_min}..{n_max}.",
        kind="proof", n_min=1, n_max=50)
 def run(n_min: int, n_max: int) -> Outcome:
     bad = []

@@ -51,7 +51,8 @@ def limit_table(n: int) -> dict:
 @claim("bernstein_limit", paper_ref=["que:limiting_case", "fig:limit_cases_n_1_2_3"],
        statement="As alpha -> 0 (u = alpha x, v = alpha y, w = alpha z) each normalized function of level j tends to "
                  "P(1) x^a y^b z^c, a rational multiple of the Bernstein polynomial P^{2n+j}_{a,b,c}; the centre tends "
-                 "to 0. Convergence is of order alpha^2.",
+                 "to 0 (exactly, n = 1..{n_max}). Convergence is of order alpha^2 (numerically, "
+                 "n in {convergence_ns}).",
        kind="exact-evidence", n_max=10, convergence_ns=[1, 2, 3, 5], ks=list(range(2, 9)), grid=6, dps=40)
 def run_limit(n_max, convergence_ns, ks, grid, dps) -> Outcome:
     orders, errors = {}, {}
@@ -75,7 +76,8 @@ def run_limit(n_max, convergence_ns, ks, grid, dps) -> Outcome:
 
 
 @claim("bezier_limit_degree", paper_ref=["que:limiting_case"],
-       statement="Question que:limiting_case answered for n <= n_max: the alpha -> 0 limit of an order-n patch is a "
+       statement="Question que:limiting_case answered for n = 1..{n_max} (evidence; no proof for all n): the"
+                 " alpha -> 0 limit of an order-n patch is a "
                  "Bezier triangle of degree exactly 3n-1 (levels j give degrees 2n+j, the centre vanishes).",
        kind="exact-evidence", n_max=10)
 def run_degree(n_max) -> Outcome:

@@ -62,7 +62,9 @@ def modp_case(n: int, t: str, seed: int, control: bool = False) -> int:
 
 @claim("linear_independence", paper_ref=["joint_systems_linear_independence", "united_system"],
        statement="T_{2n}^alpha is linearly independent: collocation matrices have full rank delta_n "
-                 "(high precision singular values, and exactly modulo a prime).",
+                 "(high precision singular values for n = {ns} at alpha in {alphas}; exactly modulo a "
+                 "prime for n = {exact_ns} at tan(alpha/4) in {rational_ts}). Full rank at a point proves "
+                 "independence at that alpha.",
        kind="exact-evidence", ns=list(range(1, 9)), alphas=["pi/6", "pi/3", "pi/2", "2pi/3", "5pi/6"], dps=50,
        svd_n_max=4, exact_ns=list(range(1, 21)), rational_ts=["1/3", "1/7"], seed=5,
        extended={"exact_ns": list(range(1, 31)) + [35, 40]})

@@ -91,8 +91,10 @@ def run_paper(ns) -> Outcome:
 
 
 @claim("nonnegativity_extended", paper_ref=["sec:open_problems"],
-       statement="Open Question 1, by computation: for n = 4..n_max every normalizing coefficient is "
-                 "P(cos(alpha/2))/sin^{2n+j}(alpha/2) with P positive on (0,1); proven for n <= proof_n_max.",
+       statement="Open Question 1, by computation: for n = {n_min}..{n_max} every normalizing coefficient "
+                 "is P(cos(alpha/2))/sin^{2n+j}(alpha/2) with P positive on (0,1); proven for every alpha for "
+                 "n <= {proof_n_max}; beyond, evidence (forms recovered at sampled alpha; the positivity of "
+                 "those forms is proven).",
        kind="exact-evidence", n_min=4, n_max=10, proof_n_max=5, publish_n_max=10, table_n_max=4, suffix="",
        extended={"n_max": 20, "proof_n_max": 8, "publish_n_max": 20, "suffix": "_extended"})
 def run_extended(n_min, n_max, proof_n_max, publish_n_max, table_n_max, suffix) -> Outcome:

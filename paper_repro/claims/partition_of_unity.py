@@ -37,7 +37,9 @@ def printed_symmetry_conditions(n: int) -> list[tuple[str, str]]:
 @claim("partition_of_unity", paper_ref=["sec:partition_of_unity", "normalizing_weights", "symmetry_condition_1",
                                         "symmetry_condition_2", "symmetry_condition_3", "normalized_united_system"],
        statement="T-bar_{2n} is a partition of unity with unique coefficients that satisfy the printed symmetry "
-                 "conditions; the reduced (symmetric) system gives the same coefficients as the full one.",
+                 "conditions; the reduced (symmetric) system gives the same coefficients as the full one "
+                 "(exactly at tan(alpha/4) in {rational_ts} for n = {ns}; the full system for n <= "
+                 "{full_system_n_max}).",
        kind="exact-evidence", ns=list(range(1, 9)), rational_ts=["1/5", "1/3", "2/5", "3/4"], exact_points=6,
        full_system_n_max=4, alphas=["0.1", "pi/6", "pi/2", "5pi/6", "3.1"], float_points=2000, mp_points=5, seed=11)
 def run(ns, rational_ts, exact_points, full_system_n_max, alphas, float_points, mp_points, seed) -> Outcome:

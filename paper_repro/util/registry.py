@@ -18,6 +18,7 @@ Kinds of claim (say what is proven and what is evidence):
 from __future__ import annotations
 
 import importlib
+import re
 import time
 from collections.abc import Callable
 from dataclasses import asdict, dataclass, field
@@ -159,6 +160,27 @@ def cli_overrides(c: Claim, n: int | None, alpha: str | None) -> dict[str, Any] 
     return out
 
 
+def _range_text(value: Any) -> str:
+    """A parameter as a reader writes it: consecutive integer lists as ``a..b``."""
+    if isinstance(value, list) and len(value) > 2 and all(isinstance(v, int) for v in value) \
+            and value == list(range(value[0], value[-1] + 1)):
+        return f"{value[0]}..{value[-1]}"
+    if isinstance(value, list):
+        return ", ".join(str(v) for v in value)
+    return str(value)
+
+
+def fill_statement(statement: str, params: dict[str, Any]) -> str:
+    """Fill ``{name}`` placeholders of a claim statement with the parameters it ran with (other braces,
+    such as ``T_{2n}``, are left as they are).
+
+    >>> fill_statement("proven for n = 1..{n_max}, T_{2n}", {"n_max": 8})
+    'proven for n = 1..8, T_{2n}'
+    """
+    return re.sub(r"\{(\w+)\}", lambda m: _range_text(params[m.group(1)]) if m.group(1) in params else m.group(0),
+                  statement)
+
+
 def check_overrides(c: Claim, overrides: dict[str, Any] | None, extended: bool = False) -> dict[str, Any]:
     """The claim's parameters with ``overrides`` applied; ``ValueError`` listing the accepted names if an
     override names a parameter the claim does not take."""
@@ -196,7 +218,7 @@ def run_claim(c: Claim, overrides: dict[str, Any] | None = None, extended: bool 
     kind = out.kind or c.kind
     if kind not in KINDS:
         raise ValueError(f"claim {c.id}: kind {kind!r} not in {KINDS}")
-    result = ClaimResult(c.id, c.paper_ref, c.statement, kind, params, out.measured,
+    result = ClaimResult(c.id, c.paper_ref, fill_statement(c.statement, params), kind, params, out.measured,
                          "pass" if out.passed else "fail")
     result.cached = hit  # type: ignore[attr-defined]
     return result, out, seconds
