@@ -5,6 +5,8 @@ path agrees to 1e-13 relative; ball enclosures contain the exact value; derivati
 differences; the fast float kernel equals the generic context path.
 """
 
+import math
+
 import mpmath
 import numpy as np
 from flint import arb, fmpq
@@ -109,3 +111,14 @@ def test_blocks_cover_every_point_and_errors_name_the_global_index():
     pts[BLOCK + 3] = [alpha, alpha, 0.0]
     with pytest.raises(ValueError, match=f"point {BLOCK + 3} "):
         Patch(2, alpha, net)(pts)
+
+
+@settings(max_examples=25)
+@given(st.integers(1, 6), st.one_of(st.floats(1e-3, math.pi - 1e-3), st.sampled_from([1e-3, math.pi - 1e-3])),
+       st.integers(0, 2**16))
+def test_float_path_accuracy_sweep(n, alpha, seed):
+    # issue: max relative error <= 1e-13 against the mp path for n <= 6, alpha in [1e-3, pi - 1e-3]
+    from paper_repro.claims.float_accuracy import errors
+
+    pou, rel = errors(n, alpha, 4, seed, 30)
+    assert pou <= 1e-13 and rel <= 1e-13

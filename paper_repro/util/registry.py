@@ -97,6 +97,7 @@ CLAIM_MODULES = (
     "paper_repro.claims.order_elevation",
     "paper_repro.claims.torus",
     "paper_repro.claims.surfaces_claims",
+    "paper_repro.claims.float_accuracy",
 )
 FIGURE_MODULES = (
     "paper_repro.figures.graph",
@@ -104,6 +105,7 @@ FIGURE_MODULES = (
     "paper_repro.figures.independence",
     "paper_repro.figures.limits_fig",
     "paper_repro.figures.patches_fig",
+    "paper_repro.figures.accuracy",
 )
 
 
