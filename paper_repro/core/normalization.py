@@ -66,6 +66,7 @@ def orbit_matrix(n: int) -> np.ndarray:
     return mat
 
 
+@cache
 def fixed_points(n: int, count: int, seed: int = 0) -> tuple[tuple[fmpq, ...], tuple[fmpq, ...]]:
     """``count`` alpha-independent collocation points: quarter tangents (tu, tv) = (a/q, b/q), 0 < a < b < q.
 
@@ -87,11 +88,21 @@ def _plane_points(tu, tv) -> RationalPoints:
     return RationalPoints(None, tuple(tu), tuple(tv), check=False)
 
 
+@cache
+def _orbit_columns(n: int) -> tuple[np.ndarray, np.ndarray]:
+    """Columns of T_{2n} ordered orbit by orbit, and where each orbit starts (for ``np.add.reduceat``)."""
+    perm = [k for _, members in orbits(n) for k in members]
+    starts = np.cumsum([0] + [len(m) for _, m in orbits(n)][:-1])
+    return np.array(perm), starts
+
+
 def reduced_matrix(n: int, alpha, pts: RationalPoints, ctx: Context) -> np.ndarray:
     """``(P, m)`` array: the orbit sums of T_{2n} at the points, in the context ``ctx``."""
     vals = evaluate(n, alpha, pts, ctx)
+    perm, starts = _orbit_columns(n)
     with ctx.scope():
-        return ctx.dot(vals, ctx.asarray(orbit_matrix(n)))
+        sums = np.add.reduceat(vals[:, perm], starts, axis=1)  # at most 6 terms per sum
+        return ctx.add(sums, ctx.zeros(sums.shape))  # brings the sums back into the arithmetic (mod p)
 
 
 def reduced_matrix_exact(n: int, alpha: RationalAngle, pts: RationalPoints) -> np.ndarray:
