@@ -5,7 +5,7 @@ VENV   := .venv
 PY     := $(VENV)/bin/python
 STAMP  := $(VENV)/.installed-stamp
 
-.PHONY: venv lock reproduce reproduce-extended test test-all bench figures lint clean distclean
+.PHONY: venv lock report check-gallery reproduce reproduce-extended test test-all bench figures lint clean distclean
 
 # The environment: the exact versions of requirements.lock (what `make reproduce` was run with, so
 # figures stay byte-identical), then the package itself without resolving anything.  A failed install
@@ -21,7 +21,7 @@ $(STAMP): pyproject.toml requirements.lock
 
 venv: $(STAMP)
 
-lock: $(STAMP)                 ## refresh requirements.lock from pyproject's ranges (newest that install)
+lock:                          ## refresh requirements.lock from pyproject's ranges (newest that install)
 	$(PYTHON) -m venv build/lock-venv
 	build/lock-venv/bin/python -m pip install --quiet --disable-pip-version-check '.[dev]'
 	build/lock-venv/bin/python -m pip freeze --exclude-editable | grep -v '^paper.repro' > requirements.lock
@@ -38,6 +38,14 @@ test: $(STAMP)                 ## fast test suite
 
 test-all: $(STAMP)             ## every test, slow ones included
 	$(PY) -m pytest -q -m "not benchmark"
+
+report: $(STAMP)               ## the whole suite (slow claim tests too) as reports/tests.html + reports/junit.xml
+	mkdir -p reports
+	$(PY) -m pytest -q -m "not benchmark" --html=reports/tests.html --self-contained-html \
+	  --junitxml=reports/junit.xml -o junit_family=xunit2 || test -f reports/junit.xml
+
+check-gallery: $(STAMP)        ## open figures/index.html in headless chromium (installed if missing), screenshot
+	$(PY) -m paper_repro.app.check_gallery --install
 
 bench: $(STAMP)                ## speed: pytest-benchmark, then the comparison with bezier and mpmath -> reports/
 	mkdir -p reports

@@ -1,8 +1,9 @@
 """The paper map: every ``\\label`` of the paper's LaTeX source -> claims, figures and code.
 
-Generated from the claim and figure registries (their ``paper_ref``/``paper_label``) and from the
-package's source (files that name the label).  The LaTeX source is read from ``../shared/paper``
-beside the repository; where it is absent the committed map is left as it is.
+Generated from the claim and figure registries (their ``paper_ref``/``paper_label``), the package's
+source (files that name the label) and the committed index of the paper's labels
+(:mod:`paper_repro.app.paper_index`, ``data/paper_index.json``), so it is rebuilt in a clone of this
+repository alone; the index itself is regenerated from ``../shared/paper`` when that is present.
 """
 
 from __future__ import annotations
@@ -22,6 +23,13 @@ def labels_of_paper(path: Path = PAPER) -> list[str] | None:
     return re.findall(r"\\label\{([^}]*)\}", path.read_text(encoding="utf-8"))
 
 
+def labels_of_index() -> list[dict]:
+    """The committed index of the paper's labels (works without the paper's source)."""
+    from paper_repro.app.paper_index import load_index
+
+    return load_index()
+
+
 def kind_of(label: str) -> str:
     prefix = label.split(":", 1)[0] if ":" in label else ""
     return {"sec": "section", "fig": "figure", "lem": "lemma", "prop": "proposition", "exmp": "example",
@@ -38,18 +46,17 @@ def code_mentions(label: str) -> list[str]:
 
 
 def build(claims: dict, figures: dict) -> dict | None:
-    """``{"labels": [...], "summary": {...}}`` or None if the paper source is not available."""
-    labels = labels_of_paper()
-    if labels is None:
-        return None
+    """``{"labels": [...], "summary": {...}}`` from the committed paper index."""
+    index = labels_of_index()
     rows = []
-    for lab in labels:
-        rows.append({"label": lab, "kind": kind_of(lab),
+    for rec in index:
+        lab = rec["label"]
+        rows.append({"label": lab, "paper": rec["display"], "kind": rec["kind"],
                      "claims": [cid for cid, c in claims.items() if lab in c.paper_ref],
                      "figures": [fid for fid, f in figures.items() if f.paper_label == lab],
                      "code": code_mentions(lab)})
     covered = [r for r in rows if r["claims"] or r["figures"]]
-    return {"source": "shared/paper/triangular-trigonometric-patches.tex", "labels": rows,
+    return {"source": "data/paper_index.json (from shared/paper/triangular-trigonometric-patches.tex)", "labels": rows,
             "summary": {"labels": len(rows), "covered_by_claim_or_figure": len(covered),
                         "only_in_code": [r["label"] for r in rows if not (r["claims"] or r["figures"]) and r["code"]],
                         "not_covered": [r["label"] for r in rows if not (r["claims"] or r["figures"] or r["code"])]}}
@@ -63,8 +70,9 @@ def markdown(m: dict) -> str:
            f"{len(s['only_in_code'])} only referenced in code; {len(s['not_covered'])} not covered "
            "(mostly intermediate equations of the proof of Theorem joint_systems_linear_independence, "
            "checked as a whole by claim `linear_independence` and the elimination figures).", "",
-           "| label | kind | claims | figures | code |", "|---|---|---|---|---|"]
+           "| in the PDF | label | kind | claims | figures | code |", "|---|---|---|---|---|---|"]
     for r in m["labels"]:
-        out.append(f"| `{r['label']}` | {r['kind']} | {', '.join(r['claims'])} | {', '.join(r['figures'])} | "
+        out.append(f"| {r['paper']} | `{r['label']}` | {r['kind']} | {', '.join(r['claims'])} | "
+                   f"{', '.join(r['figures'])} | "
                    f"{', '.join(c.removeprefix('paper_repro/') for c in r['code'])} |")
     return "\n".join(out) + "\n"

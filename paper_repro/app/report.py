@@ -130,13 +130,18 @@ def _record_timings(path: Path, seconds: dict[str, float], cached: dict[str, boo
 
 
 def write_paper_map() -> None:
-    """data/paper_map.{json,md} from the registries (skipped if the paper source is not beside the repo)."""
-    from . import paper_map
+    """data/paper_index.json (regenerated where the paper's source is beside the clone) and
+    data/paper_map.{json,md} from the registries and the committed index."""
+    from . import paper_index, paper_map
 
+    index = paper_index.regenerate()
+    if index is None:
+        print("paper index: ../shared/paper not beside this clone; using the committed data/paper_index.json")
+    else:
+        write_json(paper_index.INDEX, {"source": "shared/paper/triangular-trigonometric-patches.tex",
+                                       "numbering": "derived from the LaTeX counters (paper_repro/app/paper_index.py)",
+                                       "labels": index})
     m = paper_map.build(CLAIMS, FIGURE_REGISTRY)
-    if m is None:
-        print("paper map: ../shared/paper not found, data/paper_map.* left unchanged")
-        return
     write_json(DATA / "paper_map.json", m)
     write_text(DATA / "paper_map.md", paper_map.markdown(m))
 
