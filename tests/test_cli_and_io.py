@@ -1,10 +1,11 @@
 import json
+import re
 import subprocess
 import sys
 
 import pytest
 
-from paper_repro.app.report import gallery_html
+from paper_repro.app.gallery import gallery_html
 from paper_repro.util.io import atomic_path, write_json
 
 
@@ -42,7 +43,12 @@ def test_atomic_write_leaves_nothing_on_error(tmp_path):
     assert json.loads(target.read_text()) == {"a": 1}
 
 
-def test_gallery_is_offline():
-    page = gallery_html([{"id": "x", "caption": "c", "paper_label": None, "generator": "m:f",
-                          "outputs": ["figures/x.png"]}])
-    assert "http" not in page.replace("arXiv", "")
+def test_gallery_is_offline_and_renders_math():
+    page = gallery_html([{"id": "x", "caption": "coefficients r_{4,3,1}^alpha versus alpha", "paper_label": None,
+                          "paper_number": None, "claims": [], "generator": "m:f", "parameters": {},
+                          "command": "python -m paper_repro figures --only x",
+                          "files": [{"path": "figures/x.png", "sha256": "0" * 64}], "outputs": ["figures/x.png"]}])
+    external = re.findall(r"""(?:src|href)=["'](?:https?:)?//""", page)
+    assert not external, external
+    assert "<math" in page and "r_{4,3,1}" not in page.split("<h2 id=\"figures\">")[1].split("</figure>")[0]
+    assert "vendor/plotly.min.js" in page

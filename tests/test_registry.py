@@ -36,3 +36,12 @@ def test_crash_is_a_failure_and_not_cached(tmp_path, monkeypatch):
 def test_cli_overrides_only_for_claims_that_take_them():
     assert cli_overrides(CLAIMS["dimension"], 5, None) == {"n_min": 5, "n_max": 5}
     assert cli_overrides(CLAIMS["dimension"], None, "pi/3") is None
+
+
+def test_every_published_erratum_has_a_severity():
+    import json
+
+    from paper_repro.util.io import DATA
+
+    errata = json.loads((DATA / "errata.json").read_text())
+    assert errata and all(e.get("severity") in ("typo", "statement", "result") for e in errata), errata

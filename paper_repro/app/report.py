@@ -8,13 +8,16 @@ committed) rather than to ``data/``.
 
 from __future__ import annotations
 
-import html
+import hashlib
+import inspect
 import json
+import os
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 
+from paper_repro.util.cache import CACHE_DIR, code_fingerprint
 from paper_repro.util.io import BUILD, DATA, FIGURES, ROOT, rel, write_json, write_text
 from paper_repro.util.registry import CLAIMS, ClaimResult, Outcome, check_overrides, load_all, run_claim
 from paper_repro.util.registry import FIGURES as FIGURE_REGISTRY
@@ -158,9 +161,13 @@ def _replace_block(text: str, name: str, body: str) -> str:
 def errata_markdown(errata: list[dict]) -> str:
     if not errata:
         return "No discrepancy found so far.\n"
-    rows = ["| id | paper ref | item | printed | corrected |", "|---|---|---|---|---|"]
+    from paper_repro.app.paper_index import display_of
+
+    rows = ["Severity: **typo** (meaning clear, nothing downstream changes), **statement** (a printed formula or rule "
+            "is false as written), **result** (a result of the paper changes).", "",
+            "| id | in the paper | severity | item | printed | corrected |", "|---|---|---|---|---|---|"]
     for e in errata:
-        cells = [e["id"], f"`{e['paper_ref']}`", e["item"], e["printed"], e["corrected"]]
+        cells = [e["id"], display_of(e["paper_ref"]), e["severity"], e["item"], e["printed"], e["corrected"]]
         rows.append("| " + " | ".join(str(c).replace("|", "\\|") for c in cells) + " |")
     return "\n".join(rows) + "\n"
 
@@ -185,48 +192,79 @@ def _make_one(fid: str) -> list[Path]:
     return paths
 
 
+def sha256_of(path: Path) -> str:
+    return hashlib.sha256(path.read_bytes()).hexdigest()
+
+
+def figure_files(fig) -> list[Path]:
+    """Every file of a figure: each declared PNG and the SVG beside it."""
+    return [FIGURES / name for png in fig.outputs for name in (png, str(Path(png).with_suffix(".svg")))]
+
+
+def _data_fingerprint() -> str:
+    """sha256 over every file of data/ (what figures read besides the code)."""
+    h = hashlib.sha256()
+    for path in sorted(p for p in DATA.rglob("*") if p.is_file()):
+        h.update(path.relative_to(DATA).as_posix().encode())
+        h.update(path.read_bytes())
+    return h.hexdigest()[:16]
+
+
+def _figure_key(fid: str, data_fp: str) -> Path:
+    return CACHE_DIR / "figures" / f"{fid}-{code_fingerprint()}-{data_fp}.json"
+
+
+def _up_to_date(fid: str, data_fp: str) -> bool:
+    """The figure was made by this code from this data, and its files are still what was made."""
+    key = _figure_key(fid, data_fp)
+    if os.environ.get("PAPER_REPRO_NO_CACHE") or not key.exists():
+        return False
+    recorded = json.loads(key.read_text())
+    files = figure_files(FIGURE_REGISTRY[fid])
+    return all(p.exists() and recorded.get(p.name) == sha256_of(p) for p in files)
+
+
 def make_figures(only: list[str] | None, executor=None) -> list[Path]:
     """Regenerate figures (all, or ``only``; through :func:`~paper_repro.util.sweep.sweep`), then the
-    manifest and gallery (always over all figures)."""
-    ids = [fid for fid in FIGURE_REGISTRY if not only or fid in only]
+    manifest and gallery (always over all figures).  A figure already made by the same code from the
+    same ``data/`` whose files are unchanged is not redrawn (its hashes are checked)."""
+    data_fp = _data_fingerprint()
+    ids = [fid for fid in FIGURE_REGISTRY if (not only or fid in only) and not _up_to_date(fid, data_fp)]
+    skipped = len([fid for fid in FIGURE_REGISTRY if not only or fid in only]) - len(ids)
     written = [p for paths in sweep(_make_one, ids, executor=executor, initializer=load_all, desc="figures")
                for p in paths]
-    manifest = []
-    for fid, fig in FIGURE_REGISTRY.items():
-        outputs = [rel(FIGURES / name) for name in fig.outputs]
-        manifest.append({"id": fid, "caption": fig.caption, "paper_label": fig.paper_label,
-                         "generator": f"{fig.module}:{fig.func.__name__}", "outputs": outputs})
+    for fid in ids:
+        write_json(_figure_key(fid, data_fp), {p.name: sha256_of(p) for p in figure_files(FIGURE_REGISTRY[fid])})
+    manifest = build_manifest()
     write_json(FIGURES / "manifest.json", manifest)
-    write_text(FIGURES / "index.html", gallery_html(manifest))
-    print(f"figures: {len(written)} written, manifest lists {len(manifest)}")
+    from paper_repro.app.gallery import write_gallery
+
+    write_gallery(manifest)
+    print(f"figures: {len(written)} written, {skipped} up to date, manifest lists {len(manifest)}")
     return written
 
 
-def gallery_html(manifest: list[dict]) -> str:
-    """Offline gallery: every figure with its caption and paper label, plus the claims table."""
+def build_manifest() -> list[dict]:
+    """figures/manifest.json: per figure its caption, paper label and number, the claims it belongs to with
+    their status, the generating function with its parameters, the command, and every file with sha256."""
+    from paper_repro.app.paper_index import load_index
+
+    index = {r["label"]: r for r in load_index()}
     claims_path = DATA / "claims.json"
-    claims = json.loads(claims_path.read_text()) if claims_path.exists() else []
-    parts = ["<!DOCTYPE html>", '<html lang="en"><head><meta charset="utf-8">',
-             "<title>paper_repro gallery</title>",
-             "<style>body{font-family:sans-serif;max-width:1100px;margin:2em auto;color:#222}"
-             "figure{margin:2em 0;border-top:1px solid #ddd;padding-top:1em}img{max-width:100%}"
-             "table{border-collapse:collapse}td,th{border:1px solid #ccc;padding:3px 6px;font-size:90%}"
-             ".pass{color:#060}.fail{color:#b00}</style></head><body>",
-             "<h1>A constructive approach to triangular trigonometric patches: reproduced</h1>",
-             "<p>Generated by <code>make reproduce</code>. Paper: R&oacute;th, Juh&aacute;sz, Krist&aacute;ly, "
-             "arXiv 1309.4747.</p>", "<h2>Claims</h2>", "<table><tr><th>id</th><th>paper label(s)</th>"
-             "<th>statement</th><th>kind</th><th>status</th></tr>"]
-    for c in claims:
-        parts.append(f"<tr><td>{html.escape(c['id'])}</td><td>{html.escape(', '.join(c['paper_ref']))}</td>"
-                     f"<td>{html.escape(c['statement'])}</td><td>{c['kind']}</td>"
-                     f"<td class=\"{c['status']}\">{c['status']}</td></tr>")
-    parts.append("</table><h2>Figures</h2>")
-    for m in manifest:
-        label = f" (paper: <code>{html.escape(m['paper_label'])}</code>)" if m["paper_label"] else " (new)"
-        parts.append(f"<figure id=\"{m['id']}\"><h3>{html.escape(m['id'])}{label}</h3>")
-        for out in m["outputs"]:
-            parts.append(f"<img src=\"{html.escape(Path(out).name)}\" alt=\"{html.escape(m['id'])}\">")
-        parts.append(f"<figcaption>{html.escape(m['caption'])}<br><small>generator: "
-                     f"<code>{html.escape(m['generator'])}</code></small></figcaption></figure>")
-    parts.append("</body></html>\n")
-    return "\n".join(parts)
+    status = {c["id"]: c["status"] for c in json.loads(claims_path.read_text())} if claims_path.exists() else {}
+    manifest = []
+    for fid, fig in FIGURE_REGISTRY.items():
+        cids = list(fig.claims) + [c.id for c in CLAIMS.values() if fig.paper_label and fig.paper_label in c.paper_ref
+                                   and c.id not in fig.claims]
+        params = {k: v.default for k, v in inspect.signature(fig.func).parameters.items()
+                  if v.default is not inspect.Parameter.empty}
+        rec = index.get(fig.paper_label or "", {})
+        manifest.append({
+            "id": fid, "caption": fig.caption, "paper_label": fig.paper_label,
+            "paper_number": rec.get("display") or None,
+            "claims": [{"id": c, "status": status.get(c, "not run")} for c in cids],
+            "generator": f"{fig.module}:{fig.func.__name__}", "parameters": params,
+            "command": f"python -m paper_repro figures --only {fid}",
+            "files": [{"path": rel(p), "sha256": sha256_of(p)} for p in figure_files(fig) if p.exists()],
+            "outputs": [rel(FIGURES / name) for name in fig.outputs]})
+    return manifest

@@ -62,7 +62,7 @@ def run(i_max, j_max, p_max, m_i_max, m_j_max, z_max, rates) -> Outcome:
         examples = [c for c in cos_bad if c["lambda"] == "1"][:6]
         errata.append({
             "id": "lemma-sign-cos-power", "paper_ref": "lem:sign_cos_power_derivative",
-            "item": "sign C^p_{i,lambda}(0), eq. sign_cos_power_derivative",
+            "item": "sign C^p_{i,lambda}(0), eq. sign_cos_power_derivative", "severity": "statement",
             "printed": "-1 if p-i = 2r with r odd; 0 if p odd; +1 if p-i = 2r with r even",
             "corrected": "0 if p is odd; (-1)^(p/2) if p is even (for every i >= 1, lambda > 0)",
             "evidence": f"exact Taylor coefficients: {len(cos_bad)} of {n_cos} cases (i <= {i_max}, p <= {p_max}, "

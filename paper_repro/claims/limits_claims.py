@@ -120,6 +120,7 @@ def run_conversion() -> Outcome:
                 match = [s for s in idx if w[idx.index(s)] == vec]
                 corrected = f"p_{{{','.join(map(str, match[0]))}}}" if match else "no index has these weights"
                 errata.append({"id": f"conversion-{key}", "paper_ref": "que:limiting_case", "item": key,
+                               "severity": "typo",  # not an index at all: the intended point is clear
                                "printed": f"{key} = {printed}", "corrected": f"{corrected} = {printed}",
                                "evidence": f"{key} is not an index of the degree-{3 * n - 1} Bezier net "
                                            f"(indices sum to {3 * n - 1}); the printed weights are those of "
@@ -130,6 +131,7 @@ def run_conversion() -> Outcome:
             if row != vec:
                 comp = {labs[f]: row[f] for f in range(len(labs))}
                 errata.append({"id": f"conversion-{key}", "paper_ref": "que:limiting_case", "item": key,
+                               "severity": "statement",  # a valid formula that gives a wrong point as written
                                "printed": f"{key} = {printed}", "corrected": f"{key} = {_render(comp)}",
                                "evidence": "exact general conversion (limit of the normalized basis written in "
                                            f"the degree-{3 * n - 1} Bernstein basis)"})

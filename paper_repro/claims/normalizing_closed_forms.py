@@ -27,9 +27,9 @@ def _alphas(ts):
     return [rational_alpha(fmpq(*map(int, t.split("/")))) for t in ts]
 
 
-def _erratum(eid, ref, item, printed, corrected, evidence):
-    return {"id": eid, "paper_ref": ref, "item": item, "printed": printed, "corrected": corrected,
-            "evidence": evidence}
+def _erratum(eid, ref, item, printed, corrected, evidence, severity="statement"):
+    return {"id": eid, "paper_ref": ref, "item": item, "severity": severity, "printed": printed,
+            "corrected": corrected, "evidence": evidence}
 
 
 def _poly_text(p: fmpq_poly, k: int) -> str:

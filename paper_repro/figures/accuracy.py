@@ -13,7 +13,7 @@ from paper_repro.util.registry import figure
 from . import plt, save
 
 
-@figure("float_accuracy", outputs=["float_accuracy.png"],
+@figure("float_accuracy", claims=["float_accuracy"], outputs=["float_accuracy.png"],
         caption="New: accuracy of the float64 path against mpmath (30 digits) for n = 1..6 and alpha in "
                 "[1e-3, pi - 1e-3]: left, max |sum of the blending values - 1|; right, max error of patch points "
                 "relative to the net (random nets). Dashed: the 1e-13 bound of claim float_accuracy.")

@@ -153,7 +153,7 @@ def make_scheme(outdir: Path, n: int = 4) -> list[Path]:
     return [save(fig, outdir / "derivative_scheme_n_4.png")]
 
 
-@figure("singular_values", outputs=["singular_values.png"],
+@figure("singular_values", claims=["linear_independence"], outputs=["singular_values.png"],
         caption="New: singular values of the normalized collocation matrices (mpmath, 50 digits) for n = 1..4 at "
                 "alpha = pi/6 and 5pi/6 (left); condition number versus n for the five alpha of claim "
                 "linear_independence (right, from data/claims.json).")

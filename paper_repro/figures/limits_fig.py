@@ -108,7 +108,7 @@ def make_elevation(outdir: Path) -> list[Path]:
     return [save(fig, outdir / "degree_elevation_from_1_to_2.png")]
 
 
-@figure("elevation_convergence", outputs=["elevation_convergence.png"],
+@figure("elevation_convergence", claims=["order_elevation"], outputs=["elevation_convergence.png"],
         caption="New: repeated order elevation 1 -> 6 of a random order-1 net; maximal distance between a control "
                 "point and the patch point at its node position, versus the order (from claim order_elevation).")
 def make_elevation_convergence(outdir: Path) -> list[Path]:

@@ -19,7 +19,7 @@ from paper_repro.util.registry import figure
 from . import plt, save
 
 
-@figure("normalizing_coefficients", outputs=["normalizing_coefficients.png"],
+@figure("normalizing_coefficients", claims=["partition_of_unity"], outputs=["normalizing_coefficients.png"],
         caption="Normalizing coefficients r_{2n,2n-i,j}^alpha versus alpha in (0, pi) for n = 1, 2, 3 (log scale); "
                 "G and B coefficients equal the R coefficient of the same orbit.")
 def make_coefficients(outdir: Path) -> list[Path]:
@@ -40,7 +40,7 @@ def make_coefficients(outdir: Path) -> list[Path]:
     return [save(fig, outdir / "normalizing_coefficients.png")]
 
 
-@figure("smallest_coefficient", outputs=["smallest_coefficient.png"],
+@figure("smallest_coefficient", claims=["nonnegativity_extended"], outputs=["smallest_coefficient.png"],
         caption="New: min over all coefficients of r_{2n,2n-i,j}^alpha sin^{2n+j}(alpha/2) = P(cos(alpha/2)) versus "
                 "the order n, for several alpha. Positive throughout (the closed forms' P have no root in (0,1)).")
 def make_smallest(outdir: Path, n_max: int = 10) -> list[Path]:

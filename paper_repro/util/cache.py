@@ -18,7 +18,7 @@ from typing import TypeVar
 
 from paper_repro.util.io import ROOT, dumps, write_text
 
-CACHE_VERSION = 2
+CACHE_VERSION = 3  # 3: equivalence-class records renamed dim_V -> functions_in_V
 CACHE_DIR = ROOT / ".cache"
 
 T = TypeVar("T")

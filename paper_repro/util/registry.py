@@ -73,7 +73,8 @@ class Figure:
     paper_label: str | None
     func: Callable[..., list]
     module: str
-    outputs: list[str]  # file names written into figures/
+    outputs: list[str]  # file names written into figures/ (PNG; an SVG of the same name is written beside)
+    claims: list[str] = field(default_factory=list)  # claims the figure illustrates (beside those citing its label)
 
 
 CLAIMS: dict[str, Claim] = {}
@@ -124,13 +125,14 @@ def claim(id: str, *, paper_ref: list[str], statement: str, kind: str, extended:
     return deco
 
 
-def figure(id: str, *, caption: str, outputs: list[str], paper_label: str | None = None) -> Callable:
+def figure(id: str, *, caption: str, outputs: list[str], paper_label: str | None = None,
+           claims: list[str] | None = None) -> Callable:
     """Register a figure generator ``func(outdir) -> list[Path]`` that writes ``outputs`` into outdir."""
 
     def deco(func: Callable[..., list]) -> Callable[..., list]:
         if id in FIGURES:
             raise ValueError(f"figure {id!r} registered twice")
-        FIGURES[id] = Figure(id, caption, paper_label, func, func.__module__, list(outputs))
+        FIGURES[id] = Figure(id, caption, paper_label, func, func.__module__, list(outputs), list(claims or []))
         return func
 
     return deco

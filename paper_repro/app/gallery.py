@@ -1,0 +1,291 @@
+"""The figure gallery ``figures/index.html``: offline, generated from the registries and ``data/``.
+
+Per figure: the paper's caption, its number in the PDF and its label, the claims it belongs to with their
+status, the generating function with its parameters, the command that regenerates it, and a SHA-256 of
+each file (PNG and SVG) -- all read from ``figures/manifest.json``.  Then: the claims table (statements
+with their ranges), the errata table (with severity), the open questions' standing, the paper map, the
+benchmark summary, the provenance of the build, and interactive 3D views (torus, Dupin cyclide, a third
+order patch with its control net, an alpha slider) drawn by plotly.js, copied from the ``plotly`` Python
+package into ``figures/vendor/`` (no CDN, no network).  Formulas are MathML (``latex2mathml``), which
+browsers render natively.  Everything is deterministic: reruns give identical bytes.
+"""
+
+from __future__ import annotations
+
+import html
+import json
+import re
+import subprocess
+from pathlib import Path
+
+import numpy as np
+
+from paper_repro.app.paper_index import display_of, load_index
+from paper_repro.util.io import DATA, FIGURES, ROOT, write_text
+
+VENDOR = FIGURES / "vendor"
+
+#: Where each open question of Section 7 stands, by the claims that address it.
+OPEN_QUESTIONS = [
+    ("Question 7.1 (unlabelled in the source): non-negativity, symmetry, closed/recursive formulas of the "
+     "normalizing coefficients", ["nonnegativity", "nonnegativity_extended", "normalizing_closed_forms"],
+     "General formulas beyond the printed levels 0 and 1: not found."),
+    ("Question 7.2 (que:open_problem_basis_transformation): the basis transformation between T̄ and V",
+     ["basis_transformation", "coincidence"], "Closed forms in cos(α/2), sin(α/2): not found."),
+    ("Question 7.3 (que:limiting_case): the α → 0 limit of the patches", ["bernstein_limit", "bezier_limit_degree",
+                                                                        "bezier_conversion"],
+     "A proof for all n: not found."),
+    ("Order elevation (Example 7.2 and the text after it)", ["order_elevation"],
+     "Closed forms of the elevation weights and a proof of their non-negativity: not found."),
+]
+
+_MATH_TOKEN = re.compile(r"\$([^$]+)\$|"
+                         r"(?<![\w\\])((?:delta|Omega|T-bar|R-bar|G-bar|B-bar|[A-Za-z])"
+                         r"(?:_\{[^}]*\}|_[A-Za-z0-9])?(?:\^\{[^}]*\}|\^[A-Za-z0-9]+)?)(?![\w{])")
+_IS_MATH = re.compile(r"[_^]")
+
+
+def math_html(text: str) -> str:
+    """Text with its formulas as MathML: ``$...$`` segments and label-like tokens such as ``r_{2n,2n-i,j}^alpha``.
+
+    >>> "<math" in math_html("coefficient r_{4,3,1}^alpha")
+    True
+    >>> math_html("a < b")
+    'a &lt; b'
+    """
+    from latex2mathml.converter import convert
+
+    out, last = [], 0
+
+    def plain(t: str) -> str:
+        return re.sub(r"\bpi\b", "π", re.sub(r"\balpha\b", "α", html.escape(t)))
+
+    for m in _MATH_TOKEN.finditer(text):
+        tex = m.group(1) or m.group(2)
+        if m.group(2) and not _IS_MATH.search(tex):
+            continue  # a plain word
+        out.append(plain(text[last:m.start()]))
+        tex = re.sub(r"^(delta|Omega)", r"\\\1", tex)
+        tex = re.sub(r"(T|R|G|B)-bar", r"\\overline{\1}", tex)
+        tex = re.sub(r"\^\{?alpha\}?", "^{ALPHA}", tex).replace("alpha", "ALPHA").replace("ALPHA", r"\alpha")
+        out.append(convert(tex))
+        last = m.end()
+    out.append(plain(text[last:]))
+    return "".join(out)
+
+
+def _git(*args: str) -> str:
+    try:
+        return subprocess.run(["git", *args], cwd=ROOT, capture_output=True, text=True, check=True).stdout.strip()
+    except (OSError, subprocess.CalledProcessError):
+        return ""
+
+
+def provenance() -> dict:
+    """The commit of the code that computed the data (the last commit touching the package, pyproject or
+    the lock), its date (not the clock), whether the code differs from it, and the locked versions."""
+    paths = ["paper_repro", "pyproject.toml", "requirements.lock"]
+    commit = _git("log", "-1", "--format=%H", "--", *paths) or "unknown (no git)"
+    date = _git("log", "-1", "--format=%cs", "--", *paths) or "unknown"
+    dirty = bool(_git("status", "--porcelain", "--", *paths))
+    lock = (ROOT / "requirements.lock").read_text().splitlines() if (ROOT / "requirements.lock").exists() else []
+    wanted = ("numpy", "scipy", "mpmath", "python-flint", "matplotlib", "plotly", "bezier")
+    versions = {ln.split("==")[0]: ln.split("==")[1] for ln in lock if "==" in ln and ln.split("==")[0] in wanted}
+    return {"commit": commit + (" + uncommitted changes" if dirty else ""), "date": date, "versions": versions}
+
+
+def _table(headers: list[str], rows: list[list[str]]) -> str:
+    head = "".join(f"<th>{h}</th>" for h in headers)
+    body = "".join("<tr>" + "".join(f"<td>{c}</td>" for c in r) + "</tr>" for r in rows)
+    return f"<table><tr>{head}</tr>{body}</table>"
+
+
+def _load(path: Path, default):
+    return json.loads(path.read_text(encoding="utf-8")) if path.exists() else default
+
+
+# --- interactive views -------------------------------------------------------------------------------
+def _mesh_trace(verts: np.ndarray, faces: np.ndarray, color: str, name: str, opacity: float = 1.0,
+                legend: bool = True) -> dict:
+    r = lambda a: [float(f"{x:.5g}") for x in a]  # noqa: E731 -- compact, deterministic numbers
+    return {"type": "mesh3d", "x": r(verts[:, 0]), "y": r(verts[:, 1]), "z": r(verts[:, 2]),
+            "i": faces[:, 0].tolist(), "j": faces[:, 1].tolist(), "k": faces[:, 2].tolist(), "color": color,
+            "opacity": opacity, "name": name, "showlegend": legend, "flatshading": False}
+
+
+def _net_trace(net: np.ndarray, edges: list[tuple[int, int]], name: str) -> dict:
+    xs, ys, zs = [], [], []
+    for a, b in edges:
+        for coord, arr in ((xs, 0), (ys, 1), (zs, 2)):
+            coord += [float(f"{net[a, arr]:.5g}"), float(f"{net[b, arr]:.5g}"), None]
+    return {"type": "scatter3d", "mode": "lines+markers", "x": xs, "y": ys, "z": zs, "name": name,
+            "line": {"color": "#333", "width": 3}, "marker": {"size": 3, "color": "#333"}}
+
+
+def views() -> dict[str, dict]:
+    """Plotly figure specs (data + layout) of the interactive views."""
+    import mpmath
+
+    from paper_repro.core.layout import net_edges
+    from paper_repro.figures.patches_fig import third_order_net
+    from paper_repro.surfaces.models import cyclide_pieces, torus_pieces
+    from paper_repro.surfaces.patch import Patch
+
+    palette = ["#4c78a8", "#f58518", "#54a24b", "#e45756", "#72b7b2", "#eeca3b", "#b279a2", "#ff9da6"]
+    layout = {"margin": {"l": 0, "r": 0, "t": 30, "b": 0}, "height": 520,
+              "scene": {"aspectmode": "data", "xaxis": {"visible": False}, "yaxis": {"visible": False},
+                        "zaxis": {"visible": False}, "camera": {"eye": {"x": 0.95, "y": -0.95, "z": 0.7}}},
+              "legend": {"x": 0, "y": 1}}
+    out: dict[str, dict] = {}
+    al = np.pi / 2
+    mu = 3.0
+    tor = torus_pieces(al, (1 + 5**0.5) / 2 * mu, mu, [0.0, al], [0.0, al, 2 * al])
+    data = [_mesh_trace(*p.patch.mesh(10), palette[k % 8], f"patch {k + 1}", legend=False) for k, p in enumerate(tor)]
+    first = next(p for p in tor if p.phi == 0 and p.psi == 0 and not p.upper)
+    data.append(_net_trace(first.patch.net, net_edges(2), "control net of the toroidal triangle (toggle)"))
+    out["torus"] = {"data": data, "layout": {**layout, "title": "Torus: 12 second-order patches"}}
+    phases = [k * al for k in range(4)]
+    with mpmath.workdps(30):
+        params = {"a": mpmath.mpf(6), "b": mpmath.sqrt(32), "c": mpmath.mpf(2), "mu": mpmath.mpf(3)}
+    cyc = cyclide_pieces(al, params, phases, phases)
+    out["dupin"] = {"data": [_mesh_trace(*p.patch.mesh(8), palette[k % 8], f"patch {k + 1}", legend=False)
+                             for k, p in enumerate(cyc)],
+                    "layout": {**layout, "title": "Dupin cyclide: 32 rational second-order patches"}}
+    net = third_order_net()
+    p3 = Patch(3, np.pi / 2, net)
+    out["third"] = {"data": [_mesh_trace(*p3.mesh(24), "#9ecae1", "order-3 patch"),
+                             _net_trace(net, net_edges(3), "control net (toggle)")],
+                    "layout": {**layout, "title": "Third-order patch (α = π/2) and its 37-point control net"}}
+    # alpha slider: one order-2 net, the patch for several alpha
+    net2 = _order2_net()
+    alphas = [0.2, 0.6, 1.0, 1.4, np.pi / 2, 2.0, 2.4, 2.8, 3.1]
+    frames = []
+    for a in alphas:
+        v, f = Patch(2, a, net2).mesh(16)
+        frames.append({"name": f"{a:.3g}", "data": [_mesh_trace(v, f, "#f58518", "patch")]})
+    steps = [{"label": fr["name"], "method": "animate",
+              "args": [[fr["name"]], {"mode": "immediate", "frame": {"duration": 0, "redraw": True}}]}
+             for fr in frames]
+    out["slider"] = {"data": frames[4]["data"] + [_net_trace(net2, net_edges(2), "control net (toggle)")],
+                     "frames": frames,
+                     "layout": {**layout, "title": "One order-2 control net, the patch as α varies",
+                                "sliders": [{"active": 4, "steps": steps, "currentvalue": {"prefix": "α = "}}]}}
+    return out
+
+
+def _order2_net() -> np.ndarray:
+    from paper_repro.core.labels import united_system
+    from paper_repro.core.layout import position
+
+    pos = np.array([position(lab) for lab in united_system(2)])
+    z = 0.5 * np.sin(np.pi * pos[:, 0]) * np.sin(np.pi * pos[:, 1] / 0.866)
+    z[0] += 0.4
+    return np.c_[pos, z]
+
+
+def write_vendor() -> Path:
+    """figures/vendor/plotly.min.js from the installed plotly package (written only when it differs)."""
+    from plotly.offline import get_plotlyjs
+
+    path = VENDOR / "plotly.min.js"
+    js = get_plotlyjs()
+    if not path.exists() or path.read_text(encoding="utf-8") != js:
+        write_text(path, js)
+    return path
+
+
+# --- the page ------------------------------------------------------------------------------------------
+def gallery_html(manifest: list[dict], view_specs: dict[str, dict] | None = None) -> str:
+    claims = _load(DATA / "claims.json", [])
+    errata = _load(DATA / "errata.json", [])
+    pmap = _load(DATA / "paper_map.json", {"labels": [], "summary": {}})
+    bench = _load(ROOT / "reports" / "bench.json", None)
+    prov = provenance()
+    status = {c["id"]: c for c in claims}
+    index = load_index()
+    css = ("body{font-family:sans-serif;max-width:1150px;margin:2em auto;color:#222;line-height:1.45}"
+           "figure{margin:2em 0;border-top:1px solid #ddd;padding-top:1em}img{max-width:100%;height:auto}"
+           "table{border-collapse:collapse;margin:0.5em 0}td,th{border:1px solid #ccc;padding:3px 6px;"
+           "font-size:90%;vertical-align:top}.pass{color:#060}.fail{color:#b00}code{font-size:90%}"
+           ".meta{font-size:88%;color:#444}.view{border:1px solid #ddd;margin:1em 0}nav a{margin-right:1em}")
+    p = ["<!DOCTYPE html>", '<html lang="en"><head><meta charset="utf-8">',
+         '<meta name="viewport" content="width=device-width, initial-scale=1">',
+         "<title>paper_repro: gallery</title>", f"<style>{css}</style>",
+         '<script src="vendor/plotly.min.js"></script></head><body>',
+         "<h1>A constructive approach to triangular trigonometric patches — reproduced</h1>",
+         "<p>Á. Róth, I. Juhász, A. Kristály, arXiv:1309.4747. Generated by <code>make reproduce</code> "
+         "from the registries and <code>data/</code>; nothing on this page is typed in by hand. "
+         "Test report: <a href=\"../reports/tests.html\">reports/tests.html</a> (after <code>make report</code>).</p>",
+         '<nav><a href="#provenance">provenance</a><a href="#claims">claims</a><a href="#errata">errata</a>'
+         '<a href="#questions">open questions</a><a href="#figures">figures</a><a href="#views">3D views</a>'
+         '<a href="#bench">performance</a><a href="#map">paper map</a></nav>',
+         '<h2 id="provenance">Provenance</h2>',
+         _table(["code commit", "date of the commit", "locked versions"],
+                [[f"<code>{html.escape(prov['commit'])}</code>", prov["date"],
+                  ", ".join(f"{k} {v}" for k, v in sorted(prov["versions"].items()))]]),
+         '<h2 id="claims">Claims</h2>',
+         _table(["id", "in the paper", "statement", "kind", "status"],
+                [[f"<code>{html.escape(c['id'])}</code>", "<br>".join(html.escape(display_of(r, index))
+                                                                      for r in c["paper_ref"]),
+                  math_html(c["statement"]), c["kind"], f"<span class=\"{c['status']}\">{c['status']}</span>"]
+                 for c in claims]),
+         '<h2 id="errata">Errata</h2>',
+         "<p>Severity: <b>typo</b> (meaning clear, nothing downstream changes), <b>statement</b> (a printed formula "
+         "or rule is false as written), <b>result</b> (a result of the paper changes).</p>",
+         _table(["id", "in the paper", "severity", "printed", "corrected", "evidence"],
+                [[f"<code>{html.escape(e['id'])}</code>", html.escape(display_of(e["paper_ref"], index)),
+                  e.get("severity", ""),
+                  math_html(e["printed"]), math_html(e["corrected"]), html.escape(e["evidence"])] for e in errata]),
+         '<h2 id="questions">Open questions of Section 7: where they stand</h2>',
+         _table(["question", "claims (kind, status)", "not reached"],
+                [[html.escape(q), "<br>".join(f"<code>{c}</code> ({status[c]['kind']}, {status[c]['status']})"
+                                              for c in cids if c in status), html.escape(missing)]
+                 for q, cids, missing in OPEN_QUESTIONS]),
+         '<h2 id="figures">Figures</h2>']
+    for m in manifest:
+        number = f"{m['paper_number']} of the paper" if m.get("paper_number") else "new (not in the paper)"
+        p.append(f'<figure id="{m["id"]}"><h3>{html.escape(m["id"])} — {html.escape(number)}'
+                 + (f' <small><code>{html.escape(m["paper_label"])}</code></small>' if m["paper_label"] else "")
+                 + "</h3>")
+        for out in m["outputs"]:
+            name = Path(out).name
+            p.append(f'<a href="{html.escape(Path(name).with_suffix(".svg").name)}"><img src="{html.escape(name)}" '
+                     f'alt="{html.escape(m["id"])}"></a>')
+        claims_txt = ", ".join(f'<code>{c["id"]}</code> <span class="{c["status"]}">{c["status"]}</span>'
+                               for c in m["claims"]) or "none"
+        files = "<br>".join(f'<code>{html.escape(f["path"])}</code> sha256 <code>{f["sha256"]}</code>'
+                            for f in m["files"])
+        params = html.escape(json.dumps(m["parameters"])) if m["parameters"] else "none"
+        p.append(f"<figcaption>{math_html(m['caption'])}<div class=\"meta\">claims: {claims_txt}<br>"
+                 f"generator: <code>{html.escape(m['generator'])}</code>, parameters <code>{params}</code><br>"
+                 f"regenerate: <code>{html.escape(m['command'])}</code><br>{files}</div></figcaption></figure>")
+    p.append('<h2 id="views">Interactive 3D views</h2><p>Drag to rotate, scroll to zoom; click a legend entry to '
+             "toggle the control net. Drawn offline by plotly.js (from the plotly package, in "
+             "<code>figures/vendor/</code>).</p>")
+    for key, spec in (view_specs or {}).items():
+        p.append(f'<div class="view" id="view-{key}"></div>')
+        p.append("<script>(function(){var s=" + json.dumps(spec, separators=(",", ":")) + ";"
+                 f"Plotly.newPlot('view-{key}',s.data,s.layout,{{displaylogo:false,responsive:true}})"
+                 ".then(function(g){if(s.frames){Plotly.addFrames(g,s.frames);}});})();</script>")
+    p.append('<h2 id="bench">Performance</h2>')
+    if bench:
+        p.append(f"<p>From <code>reports/bench.json</code> (<code>make bench</code>; {bench['machine']['cpus']} "
+                 f"CPUs, numpy {bench['machine']['numpy']}, bezier {bench['machine']['bezier']}).</p>")
+        p.append(_table(["n", "δ_n", "Patch (s)", "bezier (s)", "speed-up vs bezier", "speed-up vs mpmath"],
+                        [[str(r["n"]), str(r["delta_n"]), str(r["patch_s"]), str(r["bezier_s"]),
+                          f"{r['speedup_vs_bezier']}×", f"{r['speedup_vs_mp']}×"] for r in bench["patch"]]))
+    else:
+        p.append("<p>No benchmark report yet (<code>make bench</code>).</p>")
+    s = pmap.get("summary", {})
+    p.append(f'<h2 id="map">Paper map</h2><p>{s.get("labels", 0)} labels; {s.get("covered_by_claim_or_figure", 0)} '
+             "checked by a claim or figure.</p>")
+    p.append(_table(["in the PDF", "label", "claims", "figures"],
+                    [[html.escape(r.get("paper", "")), f"<code>{html.escape(r['label'])}</code>",
+                      ", ".join(r["claims"]), ", ".join(r["figures"])] for r in pmap.get("labels", [])]))
+    p.append("</body></html>\n")
+    return "\n".join(p)
+
+
+def write_gallery(manifest: list[dict]) -> Path:
+    write_vendor()
+    return write_text(FIGURES / "index.html", gallery_html(manifest, views()))
