@@ -21,14 +21,13 @@ the paper's labels reads the committed index, so a clone of this repository alon
 
 from __future__ import annotations
 
-import json
 import re
 from pathlib import Path
 
-from paper_repro.util.io import DATA, ROOT
+from paper_repro.util.io import ROOT
+from paper_repro.util.paper_labels import INDEX, display_of, load_index  # noqa: F401 (re-exported)
 
 PAPER = ROOT.parent / "shared" / "paper" / "triangular-trigonometric-patches.tex"
-INDEX = DATA / "paper_index.json"
 
 _TOKEN = re.compile(r"\\(begin|end)\{([A-Za-z*]+)\}|\\(section|subsection)(\*?)\{|\\label\{([^}]*)\}|"
                     r"\\\\|\\nonumber|\\notag|\\newtheorem\{(\w+)\}\{([^}]*)\}(?:\[(\w+)\])?|\\caption\{")
@@ -160,21 +159,8 @@ def stack_has_env(stack: list[str], theorem_names: dict[str, str]) -> bool:
     return any(e in theorem_names or e in _NUMBERED_MATH or e == "figure" for e in stack)
 
 
-def load_index() -> list[dict]:
-    """The committed index (``data/paper_index.json``)."""
-    return json.loads(INDEX.read_text(encoding="utf-8"))["labels"]
-
-
 def regenerate(path: Path = PAPER) -> list[dict] | None:
     """The index from the LaTeX source beside the clone, or None where it is absent."""
     if not path.exists():
         return None
     return build_index(path.read_text(encoding="utf-8"))
-
-
-def display_of(label: str, index: list[dict] | None = None) -> str:
-    """How the PDF refers to ``label`` (e.g. ``'Eq. (12)'``), with the label as the secondary key."""
-    for rec in index if index is not None else load_index():
-        if rec["label"] == label:
-            return f"{rec['display']} [{label}]" if rec["display"] and rec["number"] else label
-    return label

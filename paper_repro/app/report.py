@@ -144,6 +144,9 @@ def write_paper_map() -> None:
         write_json(paper_index.INDEX, {"source": "shared/paper/triangular-trigonometric-patches.tex",
                                        "numbering": "derived from the LaTeX counters (paper_repro/app/paper_index.py)",
                                        "labels": index})
+    from paper_repro.util import paper_labels
+
+    paper_labels._load.cache_clear()  # the index may just have been rewritten
     m = paper_map.build(CLAIMS, FIGURE_REGISTRY)
     write_json(DATA / "paper_map.json", m)
     write_text(DATA / "paper_map.md", paper_map.markdown(m))
@@ -244,6 +247,14 @@ def make_figures(only: list[str] | None, executor=None) -> list[Path]:
     return written
 
 
+def _min_text(fig) -> float | None:
+    """The smallest text of the figure, in CSS px at the gallery's width (from the sidecar ``save`` writes)."""
+    side = [FIGURES / Path(png).with_suffix(".text.json").name for png in fig.outputs]
+    sizes = [json.loads(p.read_text())["min_text_px"] for p in side if p.exists()]
+    sizes = [x for x in sizes if x is not None]
+    return min(sizes) if sizes else None
+
+
 def build_manifest() -> list[dict]:
     """figures/manifest.json: per figure its caption, paper label and number, the claims it belongs to with
     their status, the generating function with its parameters, the command, and every file with sha256."""
@@ -266,5 +277,6 @@ def build_manifest() -> list[dict]:
             "generator": f"{fig.module}:{fig.func.__name__}", "parameters": params,
             "command": f"python -m paper_repro figures --only {fid}",
             "files": [{"path": rel(p), "sha256": sha256_of(p)} for p in figure_files(fig) if p.exists()],
+            "smallest_text_px_in_gallery": _min_text(fig),
             "outputs": [rel(FIGURES / name) for name in fig.outputs]})
     return manifest

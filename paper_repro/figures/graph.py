@@ -32,7 +32,7 @@ def ratio_text(num: BasisLabel, den: BasisLabel) -> str:
     d = np.subtract(exponents(num), exponents(den))
     top = " ".join(SHORT[k] + (f"^{d[k]}" if d[k] > 1 else "") for k in range(6) if d[k] > 0) or "1"
     bot = " ".join(SHORT[k] + (f"^{-d[k]}" if d[k] < -1 else "") for k in range(6) if d[k] < 0)
-    return f"${top}$" if not bot else rf"$\frac{{{top}}}{{{bot}}}$"
+    return f"${top}$" if not bot else f"${top}\\,/\\,{bot}$"
 
 
 def _node_color(lab: BasisLabel) -> str:
@@ -45,7 +45,7 @@ def draw_weighted_graph(ax, n: int) -> None:
         ax.annotate("", xy=pb, xytext=pa, arrowprops=dict(arrowstyle="-|>", color="0.45", lw=0.8,
                                                           shrinkA=7, shrinkB=7))
         mid = (pa + pb) / 2
-        ax.text(mid[0], mid[1], ratio_text(b, a), fontsize=6.5, ha="center", va="center",
+        ax.text(mid[0], mid[1], ratio_text(b, a), fontsize=11, ha="center", va="center",
                 bbox=dict(boxstyle="round,pad=0.1", fc="white", ec="none", alpha=0.85))
     for lab in united_system(n):
         p = position(lab)
@@ -54,9 +54,9 @@ def draw_weighted_graph(ax, n: int) -> None:
         p = CORNERS[name]
         dx = {"u": -0.06, "v": 0.1, "w": 0.06}[name]
         ax.text(p[0] + dx, p[1] - 0.06 if name != "v" else p[1], rf"$\sin^{{{2 * n}}}\frac{{{name}}}{{2}}$",
-                ha="center", fontsize=9)
+                ha="center", fontsize=13)
     ax.set_title(f"(a) weighted oriented graph, n = {n}\n"
-                 r"weights: ratios of the monomials, $s_x=\sin\frac{x}{2}$, $c_x=\cos\frac{x}{2}$", fontsize=9)
+                 r"weights: ratios of the monomials, $s_x=\sin(x/2)$, $c_x=\cos(x/2)$", fontsize=14)
 
 
 def draw_domains(ax, n: int) -> None:
@@ -72,15 +72,15 @@ def draw_domains(ax, n: int) -> None:
             "B": (CORNERS["v"] + CORNERS["u"]) / 2}
     for color, pair in inside.items():
         p = 0.75 * mids[color] + 0.25 * centroid
-        ax.text(*p, f"{color}: symmetric in {pair}", color=COLOR_OF[color], ha="center", fontsize=8,
+        ax.text(*p, f"{color}: symmetric in {pair}", color=COLOR_OF[color], ha="center", fontsize=13,
                 bbox=dict(boxstyle="round,pad=0.15", fc="white", ec="none", alpha=0.8))
     borders = {"(v,u)": CORNERS["w"], "(u,w)": CORNERS["v"], "(w,v)": CORNERS["u"]}
     for pair, corner in borders.items():
         p = 0.45 * corner + 0.55 * centroid
-        ax.text(*p, f"{pair}", color="0.2", ha="center", fontsize=9, style="italic",
+        ax.text(*p, f"{pair}", color="0.2", ha="center", fontsize=13, style="italic",
                 bbox=dict(boxstyle="round,pad=0.15", fc="white", ec="none", alpha=0.8))
     ax.set_title(f"(b) symmetry domains, n = {n}: R, G, B families and the swaps\n"
-                 "exchanging adjacent domains (italic), as checked by claim `symmetry`", fontsize=9)
+                 "exchanging adjacent domains (italic), as checked by claim `symmetry`", fontsize=14)
 
 
 def _axes_clean(ax) -> None:
@@ -92,7 +92,7 @@ def _axes_clean(ax) -> None:
         caption="(a) The multiplicatively weighted oriented graph of order 2 with weights computed as ratios of the "
                 "stored functions; (b) the red, green and blue symmetry domains of order 3.")
 def make_oriented_graph(outdir: Path) -> list[Path]:
-    fig, axes = plt.subplots(1, 2, figsize=(13, 6.2))
+    fig, axes = plt.subplots(2, 1, figsize=(10.5, 20))
     draw_weighted_graph(axes[0], 2)
     draw_domains(axes[1], 3)
     for ax in axes:
@@ -112,7 +112,7 @@ def make_united_system_n_3(outdir: Path) -> list[Path]:
     for lab in united_system(n):
         p = position(lab)
         ax.plot(*p, "o", ms=6, color=_node_color(lab), zorder=3)
-        ax.text(p[0], p[1] + 0.018, f"${lab.paper}$", color=_node_color(lab), fontsize=8, ha="center",
+        ax.text(p[0], p[1] + 0.018, f"${lab.paper}$", color=_node_color(lab), fontsize=10, ha="center",
                 va="bottom", zorder=4)
     ax.set_title(rf"$T_{{{2 * n}}}^\alpha$: {len(united_system(n))} functions, levels j = 0..{n}", fontsize=10)
     _axes_clean(ax)

@@ -93,25 +93,29 @@ def _draw_step(ax, n: int, step: dict, title: str) -> None:
     for k, lab in enumerate(labels):
         p = position(lab)
         if k not in step["alive_before"]:
-            ax.plot(*p, "o", ms=6, mfc="white", mec="0.6")
+            ax.plot(*p, "o", ms=7, mfc="white", mec="0.6")
         elif k in step["nonvanishing"]:
-            ax.plot(*p, "o", ms=6, color=COLOR_OF["centre"] if lab.is_centre else COLOR_OF[lab.color])
+            ax.plot(*p, "o", ms=7, color=COLOR_OF["centre"] if lab.is_centre else COLOR_OF[lab.color])
         else:
-            ax.plot(*p, "o", ms=6, color="black")
-    ax.set_title(title, fontsize=8)
+            ax.plot(*p, "o", ms=7, color="black")
+    ax.set_title(title, fontsize=11)
     ax.set_aspect("equal")
     ax.axis("off")
 
 
 def _steps_figure(n: int, rows: list[int], path: Path) -> Path:
     steps = elimination(n)
-    fig, axes = plt.subplots(len(rows), 3, figsize=(11, 3.8 * len(rows)), squeeze=False)
+    from paper_repro.util.paper_labels import pdf_name
+
+    fig, axes = plt.subplots(len(rows), 3, figsize=(11, 4.1 * len(rows)), squeeze=False)
     letters = "abcdefghi"
-    for a, r in enumerate(rows):
-        for b, st in enumerate(s for s in steps if s["r"] == r):
-            _draw_step(axes[a, b], n, st, f"({letters[3 * a + b]}) r = {r}, {st['param']}")
-    fig.suptitle(f"n = {n}: coloured = non-vanishing derivative (coefficient forced to 0), black = vanishing, "
-                 "white = eliminated before", fontsize=9)
+    for a, order in enumerate(rows):
+        for b, st in enumerate(s for s in steps if s["r"] == order):
+            # the paper's induction index r counts from 0: step r takes derivatives of order r + 1
+            what = "values (order 0)" if order == 0 else f"r = {order - 1}: order-{order} derivatives"
+            _draw_step(axes[a, b], n, st, f"({letters[3 * a + b]}) {what}\nunder {pdf_name(st['param'])}")
+    fig.suptitle(f"n = {n}: coloured = non-vanishing (coefficient forced to 0), black = vanishing,\n"
+                 "white = eliminated in an earlier step", fontsize=12)
     return save(fig, path)
 
 
@@ -125,8 +129,9 @@ def make_j0(outdir: Path) -> list[Path]:
 
 @figure("linear_independence_j_1__j_n_minus_1", paper_label="fig:linear_independence_j_1__j_n_minus_1",
         outputs=["linear_independence_j_1__j_n_minus_1.png"],
-        caption="First (r = 1) and (n-1)th order steps of the proof for n = 4, computed from the actual "
-                "derivatives; after the last step only the centre R_{8,4,4} survives.")
+        caption="The induction steps r = 0 (first-order derivatives) and r = n - 2 (order n - 1 derivatives) of the "
+                "proof for n = 4, computed from the actual derivatives; after the last step only the centre "
+                "R_{8,4,4} survives.")
 def make_j1(outdir: Path) -> list[Path]:
     return [_steps_figure(4, [1, 3], outdir / "linear_independence_j_1__j_n_minus_1.png")]
 
@@ -136,8 +141,10 @@ def make_j1(outdir: Path) -> list[Path]:
                 "parametrization_for_partition_of_unity, coloured = it does not; grey discs: sin(v/2) power > 4-k.")
 def make_scheme(outdir: Path, n: int = 4) -> list[Path]:
     labels = united_system(n)
-    fig, axes = plt.subplots(1, 5, figsize=(18, 4))
-    for k, ax in enumerate(axes):
+    fig, axes = plt.subplots(2, 3, figsize=(13, 9))
+    axes = axes.ravel()
+    axes[5].axis("off")
+    for k, ax in enumerate(axes[:5]):
         for lab in labels:
             e = exponents(lab)
             p = position(lab)
@@ -147,7 +154,7 @@ def make_scheme(outdir: Path, n: int = 4) -> list[Path]:
                 ax.plot(*p, "o", ms=13, color="0.85", zorder=1)
             color = "black" if (v_zero or w_const) else (COLOR_OF["centre"] if lab.is_centre else COLOR_OF[lab.color])
             ax.plot(*p, "o", ms=6, color=color, zorder=2)
-        ax.set_title(rf"({'abcde'[k]}) $\partial^4/\partial v^{{{4 - k}}}\partial w^{{{k}}}$", fontsize=9)
+        ax.set_title(rf"({'abcde'[k]}) $\partial^4/\partial v^{{{4 - k}}}\partial w^{{{k}}}$", fontsize=14)
         ax.set_aspect("equal")
         ax.axis("off")
     return [save(fig, outdir / "derivative_scheme_n_4.png")]
@@ -165,14 +172,16 @@ def make_singular_values(outdir: Path) -> list[Path]:
     from paper_repro.core.rank import mp_singular_values
     from paper_repro.util.io import DATA
 
-    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(13, 4.6))
+    fig, (ax1, ax2) = plt.subplots(2, 1, figsize=(10, 11))
     for a_text, ls in (("pi/6", "-"), ("5pi/6", "--")):
         for n in (1, 2, 3, 4):
             sv = mp_singular_values(collocation_mp(n, a_text, 50, 5), 50)
             ax1.semilogy(np.arange(1, len(sv) + 1), [float(s) for s in sv], ls, label=f"n={n}, α={a_text}")
     ax1.set_xlabel("index")
     ax1.set_ylabel("singular value")
-    ax1.legend(fontsize=7, ncol=2)
+    ax1.legend(fontsize=11, ncol=2)
+    ax1.xaxis.label.set_fontsize(12)
+    ax1.yaxis.label.set_fontsize(12)
     ax1.grid(alpha=0.3)
     claims = {c["id"]: c for c in json.loads((DATA / "claims.json").read_text())}
     rows = claims["linear_independence"]["measured"]["numeric"]
@@ -181,6 +190,8 @@ def make_singular_values(outdir: Path) -> list[Path]:
         ax2.semilogy([r["n"] for r in sel], [float(r["condition"]) for r in sel], "o-", label=f"α = {a_text}")
     ax2.set_xlabel("order n")
     ax2.set_ylabel("condition number (n > 4: certified upper bound)")
-    ax2.legend(fontsize=8)
+    ax2.legend(fontsize=11)
+    ax2.xaxis.label.set_fontsize(12)
+    ax2.yaxis.label.set_fontsize(12)
     ax2.grid(alpha=0.3)
     return [save(fig, outdir / "singular_values.png")]

@@ -10,7 +10,7 @@ import numpy as np
 from paper_repro.core.elevation import elevate
 from paper_repro.core.labels import united_system
 from paper_repro.core.layout import edges, net_edges, position
-from paper_repro.core.limits import bezier_limit, limit_terms, multinomial
+from paper_repro.core.limits import limit_terms, multinomial
 from paper_repro.surfaces.patch import Patch
 from paper_repro.util.io import DATA
 from paper_repro.util.registry import figure
@@ -27,48 +27,72 @@ def _color(lab) -> str:
                 "w = alpha z): each node shows q P^m_{d,e,f} with P^m_{d,e,f} = m!/(d!e!f!) x^d y^e z^f; the centre "
                 "vanishes. (q = 1 on level 0; q != 1 on higher levels for n >= 2.)")
 def make_limit_cases(outdir: Path) -> list[Path]:
-    fig, axes = plt.subplots(1, 3, figsize=(18, 6.5))
+    # one panel a row, each as wide as the gallery, so that panel (c) is as legible as (a)
+    fig, axes = plt.subplots(3, 1, figsize=(11, 27), gridspec_kw={"height_ratios": [0.6, 1, 1.25]})
     for ax, n in zip(axes, (1, 2, 3)):
         for a, b in edges(n):
             pa, pb = position(a), position(b)
-            ax.plot([pa[0], pb[0]], [pa[1], pb[1]], color="0.85", lw=0.6, zorder=1)
+            ax.plot([pa[0], pb[0]], [pa[1], pb[1]], color="0.85", lw=0.8, zorder=1)
         for lab, (c, t) in zip(united_system(n), limit_terms(n)):
             p = position(lab)
-            ax.plot(*p, "o", ms=5, color=_color(lab), zorder=2)
+            ax.plot(*p, "o", ms=7, color=_color(lab), zorder=2)
             if c == 0:
                 text = "$0$"
             else:
                 q = c / multinomial(sum(t), t)
-                coef = "" if q == 1 else f"{q}\\,"
+                coef = "" if q == 1 else f"({q.p}/{q.q})\\,"
                 text = f"${coef}P^{{{sum(t)}}}_{{{t[0]},{t[1]},{t[2]}}}$"
-            ax.text(p[0], p[1] + 0.02, text, fontsize=6.5 if n == 3 else 8, ha="center", va="bottom",
-                    color=_color(lab))
-        ax.set_title(f"({'abc'[n - 1]}) n = {n}", fontsize=10)
+            ax.text(p[0], p[1] + 0.018, text, fontsize=12, ha="center", va="bottom", color=_color(lab))
+        ax.set_title(f"({'abc'[n - 1]}) n = {n}", fontsize=15)
         ax.set_aspect("equal")
+        ax.set_xlim(-0.08, 1.08)
         ax.axis("off")
+    fig.tight_layout()
     return [save(fig, outdir / "limit_cases_n_1_2_3.png")]
 
 
 @figure("conversion_of_limit_cases_n_1_2_3", paper_label="fig:conversion_of_limit_cases_n_1_2_3",
         outputs=["conversion_of_limit_cases_n_1_2_3.png"],
-        caption="Conversion of order-2 and order-3 control nets (coloured, laid out as the graph) to the quintic and "
-                "octic Bezier nets of the alpha -> 0 limit (black squares), by the computed general conversion.")
+        caption="Conversion of the control net of an order-2 (a) and an order-3 (b) patch to the quintic and octic "
+                "Bezier nets of the alpha -> 0 limit, by the computed general conversion: each Bezier point "
+                "p_{d,e,f} (black square) is a convex combination of control points r, g, b; arrows show, for the "
+                "points marked in yellow, which control points enter and with which weight.")
 def make_conversion(outdir: Path) -> list[Path]:
-    fig, axes = plt.subplots(1, 2, figsize=(14, 6.5))
+    from paper_repro.core.limits import conversion_matrix
+
+    fig, axes = plt.subplots(2, 1, figsize=(11, 21))
+    shown = {2: [(3, 2, 0), (1, 1, 3)], 3: [(2, 1, 5), (5, 2, 1)]}
     for ax, n in zip(axes, (2, 3)):
-        net = np.array([position(lab) for lab in united_system(n)])
-        N, bez = bezier_limit(net, n)
-        for a, b in edges(n):
-            pa, pb = position(a), position(b)
-            ax.plot([pa[0], pb[0]], [pa[1], pb[1]], color="0.8", lw=0.6)
-        for lab in united_system(n):
-            ax.plot(*position(lab), "o", ms=6, color=_color(lab), alpha=0.7)
-        for (d, e, f), p in bez.items():
-            ax.plot(*p, "s", ms=4, color="black")
-            ax.text(p[0], p[1] - 0.025, f"$p_{{{d},{e},{f}}}$", fontsize=5.5, ha="center", va="top")
-        ax.set_title(f"({'ab'[n - 2]}) n = {n} -> Bezier degree {N}", fontsize=10)
+        labels = united_system(n)
+        pos = np.array([position(lab) for lab in labels])
+        idx, w = conversion_matrix(n)
+        N = sum(idx[0])
+        bez = {t: np.array([t[1] * 0.5 + t[2] * 1.0, t[1] * np.sqrt(3) / 2]) / N for t in idx}
+        # Bezier points placed on the same triangle as the graph (corner u left, w right, v top)
+        for t, p in bez.items():
+            special = t in shown[n]
+            ax.plot(*p, "s", ms=9 if special else 6, color="#e6b800" if special else "black", zorder=3)
+            ax.text(p[0], p[1] - 0.022, f"$p_{{{t[0]},{t[1]},{t[2]}}}$", fontsize=11, ha="center", va="top",
+                    zorder=4)
+        for lab, p in zip(labels, pos):
+            ax.plot(*p, "o", ms=8, color=_color(lab), alpha=0.55, zorder=2)
+        for t in shown[n]:
+            row = w[idx.index(t)]
+            for f, wt in enumerate(row):
+                if wt == 0:
+                    continue
+                ax.annotate("", xy=bez[t], xytext=pos[f], zorder=1,
+                            arrowprops=dict(arrowstyle="->", color=_color(labels[f]), lw=0.6 + 3 * float(wt)))
+                mid = 0.62 * pos[f] + 0.38 * bez[t]
+                ax.text(mid[0], mid[1], f"${wt.p}/{wt.q}$" if wt.q != 1 else f"${wt.p}$", fontsize=11,
+                        color=_color(labels[f]), ha="center", va="center",
+                        bbox=dict(boxstyle="round,pad=0.1", fc="white", ec="none", alpha=0.85), zorder=5)
+        ax.set_title(f"({'ab'[n - 2]}) order {n} -> Bezier degree {N}: coloured discs = control points "
+                     f"(R red, G green, B blue, centre orange)", fontsize=13)
         ax.set_aspect("equal")
+        ax.set_xlim(-0.06, 1.06)
         ax.axis("off")
+    fig.tight_layout()
     return [save(fig, outdir / "conversion_of_limit_cases_n_1_2_3.png")]
 
 
@@ -100,11 +124,12 @@ def make_elevation(outdir: Path) -> list[Path]:
         ax.plot_trisurf(surf[:, 0], surf[:, 1], surf[:, 2], color="0.75", alpha=0.55, linewidth=0)
         _draw_net(ax, net1, 1, "#1f5fbf", "order 1", 25)
         _draw_net(ax, elevate(net1, 1, alpha), 2, "#d62728", "order 2 (elevated)", 12)
-        ax.set_title(f"({'abc'[k]}) α = {name}", fontsize=10)
+        ax.set_title(f"({'abc'[k]}) α = {name}", fontsize=14)
         ax.view_init(elev=28, azim=-60)
         ax.set_axis_off()
+        ax.set_box_aspect(None, zoom=1.35)  # fill the frame
         if k == 0:
-            ax.legend(fontsize=8, loc="upper left")
+            ax.legend(fontsize=12, loc="upper left")
     return [save(fig, outdir / "degree_elevation_from_1_to_2.png")]
 
 
@@ -114,11 +139,23 @@ def make_elevation(outdir: Path) -> list[Path]:
 def make_elevation_convergence(outdir: Path) -> list[Path]:
     claims = {c["id"]: c for c in json.loads((DATA / "claims.json").read_text())}
     rec = claims["order_elevation"]["measured"]["repeated_elevation_net_to_patch_distance"]
-    fig, ax = plt.subplots(figsize=(6.5, 4.2))
+    from matplotlib.ticker import FixedLocator, NullFormatter, NullLocator
+
+    fig, ax = plt.subplots(figsize=(7.5, 4.8))
     orders = np.arange(1, len(rec["by_order"]) + 1)
-    ax.loglog(orders, rec["by_order"], "o-")
-    ax.set_xlabel("order after elevation")
-    ax.set_ylabel("max distance control point - patch")
-    ax.set_title(f"α = {rec['alpha']}")
+    dist = np.array(rec["by_order"], dtype=float)
+    ax.loglog(orders, dist, "o-", label="measured")
+    slope = np.polyfit(np.log(orders[1:]), np.log(dist[1:]), 1)[0]
+    ref = dist[1] * (orders / orders[1]) ** -1.0
+    ax.loglog(orders, ref, "--", color="0.45", label="reference slope −1 (1/order)")
+    ax.xaxis.set_major_locator(FixedLocator(orders))
+    ax.xaxis.set_minor_locator(NullLocator())
+    ax.set_xticklabels([str(o) for o in orders])
+    ax.yaxis.set_minor_formatter(NullFormatter())
+    ax.set_xlabel("order after elevation", fontsize=12)
+    ax.set_ylabel("max distance control point – patch", fontsize=12)
+    ax.set_title(f"α = {rec['alpha']}; fitted slope {slope:.2f} (orders 2..{orders[-1]})", fontsize=12)
+    ax.tick_params(labelsize=11)
+    ax.legend(fontsize=11)
     ax.grid(alpha=0.3, which="both")
     return [save(fig, outdir / "elevation_convergence.png")]

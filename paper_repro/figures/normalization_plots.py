@@ -24,19 +24,22 @@ from . import plt, save
                 "G and B coefficients equal the R coefficient of the same orbit.")
 def make_coefficients(outdir: Path) -> list[Path]:
     alphas = np.linspace(0.15, 3.05, 120)
-    fig, axes = plt.subplots(1, 3, figsize=(15, 4.6))
+    fig, axes = plt.subplots(3, 1, figsize=(10, 17))
+    colors = plt.get_cmap("tab10").colors  # ten distinguishable colours; line style by level
+    styles = ["-", "--", ":", "-."]
     for ax, n in zip(axes, (1, 2, 3)):
         vals = np.array([orbit_coefficients(n, a) for a in alphas])
-        cmap = plt.get_cmap("viridis")
         for o, (rep, _) in enumerate(orbits(n)):
-            ax.semilogy(alphas, vals[:, o], color=cmap(o / max(1, len(orbits(n)) - 1)), lw=1.4,
-                        label=f"${rep.coefficient}^\\alpha$", ls="-" if rep.j % 2 == 0 else "--")
-        ax.set_xlabel(r"$\alpha$")
-        ax.set_title(f"n = {n}")
+            ax.semilogy(alphas, vals[:, o], color=colors[o % 10], lw=2, ls=styles[rep.j % 4],
+                        label=f"${rep.coefficient}^\\alpha$ (level {rep.j})")
+        ax.set_xlabel(r"$\alpha$", fontsize=13)
+        ax.set_title(f"n = {n}", fontsize=14)
         ax.set_xticks([0, np.pi / 4, np.pi / 2, 3 * np.pi / 4, np.pi], ["0", "π/4", "π/2", "3π/4", "π"])
+        ax.tick_params(labelsize=12)
         ax.grid(alpha=0.3, which="both")
-        ax.legend(fontsize=7, ncol=2)
-    axes[0].set_ylabel("coefficient (log scale)")
+        ax.legend(fontsize=12, ncol=2, loc="upper right")
+        ax.set_ylabel("coefficient (log scale)", fontsize=13)
+    fig.tight_layout()
     return [save(fig, outdir / "normalizing_coefficients.png")]
 
 
@@ -44,7 +47,7 @@ def make_coefficients(outdir: Path) -> list[Path]:
         caption="New: min over all coefficients of r_{2n,2n-i,j}^alpha sin^{2n+j}(alpha/2) = P(cos(alpha/2)) versus "
                 "the order n, for several alpha. Positive throughout (the closed forms' P have no root in (0,1)).")
 def make_smallest(outdir: Path, n_max: int = 10) -> list[Path]:
-    fig, ax = plt.subplots(figsize=(8, 5))
+    fig, ax = plt.subplots(figsize=(9, 6))
     ns = list(range(1, n_max + 1))
     for frac, lab in ((0.05, "0.05π"), (1 / 6, "π/6"), (1 / 2, "π/2"), (0.9, "0.9π"), (0.99, "0.99π")):
         c_q = _fmpq(np.cos(np.pi * frac / 2))
@@ -54,14 +57,12 @@ def make_smallest(outdir: Path, n_max: int = 10) -> list[Path]:
             arg = min(vals, key=vals.get)
             mins.append(vals[arg])
             argmins.append(arg)
-        line, = ax.semilogy(ns, mins, "o-", label=f"α = {lab}")
-        ax.annotate(f"${argmins[-1]}$", (ns[-1], mins[-1]), textcoords="offset points", xytext=(6, 0),
-                    fontsize=7, color=line.get_color(), va="center")
-    ax.set_xlabel("order n")
-    ax.set_ylabel(r"$\min\; r^\alpha_{2n,2n-i,j}\,\sin^{2n+j}(\alpha/2)$ (minimiser labelled at n = 10)")
-    ax.set_xlim(0.5, n_max + 2)
+        ax.semilogy(ns, mins, "o-", label=f"α = {lab}; minimiser at n = {n_max}: ${argmins[-1]}$")
+    ax.set_xlabel("order n", fontsize=13)
+    ax.set_ylabel(r"$\min\; r^\alpha_{2n,2n-i,j}\,\sin^{2n+j}(\alpha/2)$", fontsize=13)
+    ax.tick_params(labelsize=12)
     ax.grid(alpha=0.3, which="both")
-    ax.legend()
+    ax.legend(fontsize=11)
     return [save(fig, outdir / "smallest_coefficient.png")]
 
 

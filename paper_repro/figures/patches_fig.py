@@ -31,7 +31,7 @@ def make_layout(outdir: Path, n: int = 3) -> list[Path]:
         ax.plot(*pos[[ka, kb]].T, color="0.6", lw=0.8, zorder=1)
     for lab, p in zip(labels, pos):
         ax.plot(*p, "o", ms=6, color=_color(lab), zorder=2)
-        ax.text(p[0], p[1] + 0.018, rf"$\mathbf{{{lab.control_point[0]}}}{lab.control_point[1:]}$", fontsize=7.5,
+        ax.text(p[0], p[1] + 0.018, rf"$\mathbf{{{lab.control_point[0]}}}{lab.control_point[1:]}$", fontsize=10,
                 ha="center", va="bottom", color=_color(lab))
     ax.set_aspect("equal")
     ax.axis("off")
@@ -67,6 +67,8 @@ def make_third_order(outdir: Path) -> list[Path]:
         ax.scatter(*net.T, c=[_color(lab) for lab in united_system(3)], s=12, depthshade=False)
         ax.view_init(elev=elev, azim=azim)
         ax.set_axis_off()
+        ax.set_box_aspect(None, zoom=1.4)  # fill the frame
+    fig.subplots_adjust(left=0, right=1, bottom=0, top=1, wspace=0)
     return [save(fig, outdir / "third_order_patch.png")]
 
 
@@ -91,8 +93,9 @@ def make_torus(outdir: Path) -> list[Path]:
         ax.plot(*net[[ka, kb]].T, color="black", lw=1.0)
     ax.scatter(*net.T, color="black", s=14, depthshade=False)
     ax.view_init(elev=30, azim=-35)
-    ax.set_box_aspect((1, 1, 0.45))
+    ax.set_box_aspect((1, 1, 0.45), zoom=1.5)  # fill the frame
     ax.set_axis_off()
+    fig.subplots_adjust(left=0, right=1, bottom=0, top=1)
     return [save(fig, outdir / "torus.png")]
 
 
@@ -114,6 +117,6 @@ def make_dupin(outdir: Path) -> list[Path]:
             v, f = p.patch.mesh(10)
             _surface(ax, v, f, cmap(k % 20), alpha)
         ax.view_init(elev=35, azim=-50)
-        ax.set_box_aspect((1, 1, 0.55))
+        ax.set_box_aspect((1, 1, 0.55), zoom=1.45)  # fill the frame
         ax.set_axis_off()
     return [save(fig, outdir / "dupin_03.png")]
