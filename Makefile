@@ -15,7 +15,7 @@ $(STAMP): pyproject.toml requirements.lock
 	  { echo "paper_repro needs Python >= 3.11, but '$(PYTHON)' is $$($(PYTHON) -V 2>&1); run with PYTHON=python3.11 (or newer)." >&2; exit 1; }
 	rm -f $(STAMP)
 	$(PYTHON) -m venv $(VENV) || { rm -rf $(VENV); exit 1; }
-	$(PY) -m pip install --quiet --disable-pip-version-check -r requirements.lock || { rm -rf $(VENV); exit 1; }
+	$(PY) -m pip install --quiet --disable-pip-version-check --require-hashes -r requirements.lock || { rm -rf $(VENV); exit 1; }
 	$(PY) -m pip install --quiet --disable-pip-version-check --no-deps -e . || { rm -rf $(VENV); exit 1; }
 	touch $(STAMP)
 
@@ -25,7 +25,10 @@ lock:                          ## refresh requirements.lock from pyproject's ran
 	$(PYTHON) -m venv build/lock-venv
 	build/lock-venv/bin/python -m pip install --quiet --disable-pip-version-check '.[dev]'
 	build/lock-venv/bin/python -m pip freeze --exclude-editable | grep -v '^paper.repro' > requirements.lock
-	rm -rf build/lock-venv
+	rm -rf build/lock-venv build/lock-wheels
+	$(PYTHON) -m pip download --quiet --no-deps --only-binary=:all: -r requirements.lock -d build/lock-wheels
+	$(PYTHON) tools/hash_lock.py requirements.lock build/lock-wheels
+	rm -rf build/lock-wheels
 
 reproduce: $(STAMP)            ## all claims, data/, figures/, gallery
 	$(PY) -m paper_repro reproduce

@@ -19,7 +19,8 @@ def test_citation_cff_fields():
 
 def test_lock_pins_every_dependency_exactly():
     lines = [ln for ln in (ROOT / "requirements.lock").read_text().splitlines() if ln and not ln.startswith("#")]
-    assert lines and all(re.fullmatch(r"[A-Za-z0-9_.\-]+==[A-Za-z0-9_.+\-]+", ln) for ln in lines), lines
+    pattern = r"[A-Za-z0-9_.\-]+==[A-Za-z0-9_.+\-]+( --hash=sha256:[0-9a-f]{64})+"
+    assert lines and all(re.fullmatch(pattern, ln) for ln in lines), lines
     names = {ln.split("==")[0].lower().replace("_", "-") for ln in lines}
     for dep in ("numpy", "scipy", "mpmath", "python-flint", "matplotlib", "pytest", "hypothesis", "bezier"):
         assert dep in names, dep
