@@ -61,6 +61,19 @@ def claims_markdown(results: list[ClaimResult]) -> str:
     return "\n".join(out)
 
 
+#: Rough cold seconds of the heavy claims on 2 cores (used to schedule before any timing was recorded).
+COST_HINT = {"order_elevation": 70, "linear_independence": 64, "coincidence": 57, "equivalence_classes": 23,
+             "nonnegativity_extended": 21, "float_accuracy": 19, "dupin_cyclide": 8, "boundary": 6}
+
+
+def _cost_estimate(cid: str, extended: bool) -> float:
+    try:
+        cold = json.loads((BUILD / f"timings{'_extended' if extended else ''}.json").read_text())["cold"]
+        return float(cold.get(cid, COST_HINT.get(cid, 1.0)))
+    except (OSError, ValueError, KeyError, TypeError):
+        return float(COST_HINT.get(cid, 1.0))
+
+
 def _run_one(job: tuple[str, dict | None, bool]) -> tuple[ClaimResult, Outcome, float]:
     """One claim in a worker (module level, so that processes can run it)."""
     cid, ov, extended = job
@@ -82,9 +95,14 @@ def run_claims(only: list[str] | None, overrides: dict[str, dict[str, Any]] | No
     data_files: dict[str, Any] = {}
     seconds: dict[str, float] = {}
     cached: dict[str, bool] = {}
-    jobs = [(cid, (overrides or {}).get(cid), extended) for cid in ids]
-    for cid, (res, out, sec) in zip(ids, sweep(_run_one, jobs, executor=executor, initializer=load_all,
-                                              desc="claims", label=lambda job: job[0])):
+    # longest first (timings of earlier runs, else a rough hint), so two workers finish together;
+    # results are put back in registry order, so the output does not depend on this
+    order = sorted(ids, key=lambda cid: -_cost_estimate(cid, extended))
+    jobs = [(cid, (overrides or {}).get(cid), extended) for cid in order]
+    done = dict(zip(order, sweep(_run_one, jobs, executor=executor, initializer=load_all, desc="claims",
+                                 label=lambda job: job[0])))
+    for cid in ids:
+        res, out, sec = done[cid]
         results.append(res)
         errata += out.errata
         data_files.update(out.data)
@@ -233,6 +251,8 @@ def make_figures(only: list[str] | None, executor=None) -> list[Path]:
     same ``data/`` whose files are unchanged is not redrawn (its hashes are checked)."""
     data_fp = _data_fingerprint()
     ids = [fid for fid in FIGURE_REGISTRY if (not only or fid in only) and not _up_to_date(fid, data_fp)]
+    slow_first = ("singular_values", "dupin_03", "torus", "third_order_patch", "normalizing_coefficients")
+    ids.sort(key=lambda fid: slow_first.index(fid) if fid in slow_first else len(slow_first))
     skipped = len([fid for fid in FIGURE_REGISTRY if not only or fid in only]) - len(ids)
     written = [p for paths in sweep(_make_one, ids, executor=executor, initializer=load_all, desc="figures")
                for p in paths]
