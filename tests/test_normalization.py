@@ -139,3 +139,21 @@ def test_mp_normalized():
                        dtype=object)
         vals = evaluate_normalized(2, 1.0, pts, "mp", dps=30)
         assert all(abs(sum(r) - 1) < mpmath.mpf(10) ** -25 for r in vals)
+
+
+def test_symbolic_intermediate_check_can_fail(monkeypatch):
+    wrong = dict(printed.INTERMEDIATE)
+    ref, expr = wrong["r_{4,3,1}"]
+    wrong["r_{4,3,1}"] = (ref, lambda s, c, C: 3 / s * C(2))  # printed: 2 / s * C(2)
+    monkeypatch.setattr(ncf, "INTERMEDIATE", wrong)
+    out = ncf.run(ts=["1/2", "1/3", "2/5"], level_n_max=2, proof_n_max=2)
+    assert not out.passed
+    assert out.measured["intermediate_forms_symbolic"]["failed"] == ["r_{4,3,1}"]
+
+
+def test_ratfunc_identities():
+    from paper_repro.core.ratfunc import RatFunc, half_angle_functions
+
+    s, c = half_angle_functions()
+    assert 2 * s * c == 2 * s * c and not (s == c)
+    assert (1 - c * c) / s == s and RatFunc.const(1) / (s * s) * s == 1 / s
