@@ -110,6 +110,12 @@ def test_bad_arith_counts_and_sizes(tmp_path):
         Patch(1, 1.0, np.zeros((7, 3))).derivative([[0.3, 0.3, 0.4]], (1, 1, 1))
     with pytest.raises(ValueError, match="n must"):
         delta(0)
+    with pytest.raises(ValueError, match="n must be at most 60 for normalizing coefficients"):
+        coefficients(200, 1.0)  # would otherwise solve a 20301-unknown system: refused at once
+    with pytest.raises(ValueError, match="n must be a positive integer from 1 to 1000"):
+        evaluate(10**6, 1.0, [[0.3, 0.3, 0.4]])
+    with pytest.raises(ValueError, match="evaluate fewer points"):
+        evaluate(40, 1.0, np.tile([[0.3, 0.3, 0.4]], (50_000, 1)))  # 50000 x 4921 values: refused, not an OOM
     with pytest.raises(ValueError, match="alpha"):
         rational_alpha((0, 1))
 

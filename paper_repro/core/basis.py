@@ -12,8 +12,11 @@ import numpy as np
 
 from paper_repro.core.context import Context, get_context, power_table
 from paper_repro.core.domain import half_angle_values
-from paper_repro.core.labels import BasisLabel, exponent_matrix, exponents
+from paper_repro.core.labels import BasisLabel, delta, exponent_matrix, exponents
 from paper_repro.util.validation import check_n
+
+#: Largest (points x functions) array :func:`evaluate` builds at once (2e8 float64 values = 1.6 GB).
+MAX_MATRIX_ENTRIES = 200_000_000
 
 
 def monomials(exps: np.ndarray, trig: Sequence[np.ndarray], ctx: Context) -> np.ndarray:
@@ -57,6 +60,10 @@ def evaluate(n: int, alpha, points, arith: str | Context = "float", *, dps: int 
     """
     n = check_n(n)
     ctx = get_context(arith, dps=dps)
+    count = len(points) if hasattr(points, "__len__") else 0
+    if count * delta(n) > MAX_MATRIX_ENTRIES:
+        raise ValueError(f"points: {count} points x delta_n = {delta(n)} functions is more than {MAX_MATRIX_ENTRIES:,} "
+                         "values in one array; evaluate fewer points at a time (Patch evaluates in blocks)")
     exps = exponent_matrix(n) if labels is None else np.array([exponents(lab) for lab in labels])
     trig = half_angle_values(points, alpha, ctx)
     with ctx.scope():

@@ -33,6 +33,9 @@ from paper_repro.core.labels import BasisLabel, compose, exponents, united_syste
 from paper_repro.util.cache import cached
 from paper_repro.util.validation import check_alpha, check_n
 
+#: Largest order whose normalizing coefficients are computed (exact at n = 40 takes minutes).
+MAX_N_COEFFICIENTS = 60
+
 PERMUTATIONS = ((0, 1, 2), (0, 2, 1), (1, 0, 2), (1, 2, 0), (2, 0, 1), (2, 1, 0))
 
 
@@ -216,6 +219,10 @@ def orbit_coefficients(n: int, alpha, arith: str | Context = "float", *, dps: in
     ['25/16', '15/8', '5/2']
     """
     n = check_n(n)
+    if n > MAX_N_COEFFICIENTS:
+        raise ValueError(f"n must be at most {MAX_N_COEFFICIENTS} for normalizing coefficients (the collocation "
+                         f"system has (n+1)(n+2)/2 = {(n + 1) * (n + 2) // 2} unknowns and its solve would not end "
+                         f"in reasonable time), got {n}")
     ctx = get_context(arith, dps=dps or mpmath.mp.dps)
     if ctx.exact:
         if not isinstance(alpha, RationalAngle):
