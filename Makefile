@@ -45,7 +45,7 @@ test-all: $(STAMP)             ## every test, slow ones included
 report: $(STAMP)               ## the whole suite (slow claim tests too) as reports/tests.html + reports/junit.xml
 	mkdir -p reports
 	$(PY) -m pytest -q -m "not benchmark" --html=reports/tests.html --self-contained-html \
-	  --junitxml=reports/junit.xml -o junit_family=xunit2 || test -f reports/junit.xml
+	  --junitxml=reports/junit.xml -o junit_family=xunit1
 
 check-gallery: $(STAMP)        ## open figures/index.html in headless chromium (installed if missing), screenshot
 	$(PY) -m paper_repro.app.check_gallery --install
