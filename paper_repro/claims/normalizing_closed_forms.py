@@ -1,8 +1,8 @@
 """Claim ``normalizing_closed_forms``: every printed normalizing-coefficient formula, verbatim
 (:mod:`paper_repro.printed.normalization`), against independent exact computation.
 
-* Final forms of Examples normalizing_coefficients_n_1..3: checked at B + 1 values of alpha with the
-  degree bound of :mod:`paper_repro.core.closed_forms` -- a proof for all alpha (or a counterexample).
+* Final forms of Examples normalizing_coefficients_n_1..3: the identity proof of
+  :mod:`paper_repro.core.identity_proof` -- a proof for all alpha (or a counterexample).
 * Intermediate expressions of the same Examples, Remark normalizing_coeff_of_level_0 and Proposition
   prop:level_1_coefficients (n = 2..n_max) and the relations of Example exmp:from_1_to_2: exact
   comparison at sampled rational-tangent alpha (exact evidence); Remark and Proposition are in
@@ -15,7 +15,7 @@ from __future__ import annotations
 
 from flint import fmpq, fmpq_poly
 
-from paper_repro.core.closed_forms import ClosedForm, closed_forms_cached, prove
+from paper_repro.core.closed_forms import ClosedForm, closed_forms_cached, proof_cached, prove
 from paper_repro.core.domain import rational_alpha
 from paper_repro.core.labels import united_system
 from paper_repro.core.normalization import coefficients, orbits
@@ -49,17 +49,17 @@ def _poly_text(p: fmpq_poly, k: int) -> str:
                  "final forms proven for every alpha, level formulas proven for n <= {proof_n_max} and checked "
                  "exactly for n <= {level_n_max} at tan(alpha/4) in {ts}.",
        kind="proof", ts=["1/2", "1/3", "2/5", "1/7", "3/4", "5/6", "1/11", "7/9", "9/13", "4/17", "11/12", "1/23"],
-       level_n_max=10, proof_n_max=5)
+       level_n_max=10, proof_n_max=12, extended={"proof_n_max": 30})
 def run(ts, level_n_max, proof_n_max) -> Outcome:
     alphas = _alphas(ts)
     errata, checked, mismatches = [], {}, []
-    # 1. final forms: proof by degree bound
+    # 1. final forms: identity proof for every alpha
     proofs = {}
     for n in (1, 2, 3):
         forms = {lab: ClosedForm(lab, k, fmpq_poly(num)) for lab, (_, num, k) in FINAL.items()
                  if lab.startswith(f"r_{{{2 * n},")}
         res = prove(n, forms)
-        proofs[str(n)] = {k: res[k] for k in ("proved", "points_needed", "points_checked")}
+        proofs[str(n)] = {k: res[k] for k in ("proved", "points", "residual_degree_bound")}
         if not res["proved"]:
             lab = res["mismatch"]
             true = closed_forms_cached(n)[lab]
@@ -130,7 +130,7 @@ def run(ts, level_n_max, proof_n_max) -> Outcome:
     poly_ok = {}
     for n in range(2, proof_n_max + 1):
         forms = closed_forms_cached(n)
-        ok = all(forms[f"r_{{{2 * n},{2 * n - i},0}}"].numerator == fmpq_poly(c_numerator(n, 2 * n - i))
+        ok = proof_cached(n)["proved"] and all(forms[f"r_{{{2 * n},{2 * n - i},0}}"].numerator == fmpq_poly(c_numerator(n, 2 * n - i))
                  for i in range(n + 1))
         for i in range(1, n + 1):
             p = (fmpq_poly([2]) * fmpq_poly(c_numerator(n, 2 * n - 2)) if i == 1 else
@@ -166,7 +166,7 @@ def run(ts, level_n_max, proof_n_max) -> Outcome:
                                        "scope": "identity of rational functions of tan(alpha/4): every alpha"}
     passed = (not errata and all(v["proved"] for v in proofs.values()) and all(poly_ok.values())
               and not checked["intermediate_forms_symbolic"]["failed"] and not failed_12)
-    checked["scope"] = ("final forms n=1,2,3: proof for all alpha (degree bound); levels 0 and 1: proof for n <= "
+    checked["scope"] = ("final forms n=1,2,3: proof for all alpha (identity proof); levels 0 and 1: proof for n <= "
                         f"{proof_n_max} (polynomial identity with proven closed forms), exact evidence up to n = "
                         f"{level_n_max}; intermediate forms and exmp:from_1_to_2: proof for all alpha "
                         "(identities of rational functions of tan(alpha/4) with the proven final forms), also "

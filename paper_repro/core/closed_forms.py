@@ -3,16 +3,13 @@
 For every orbit representative ``r_{2n,2n-i,j}`` we look for a polynomial P with rational
 coefficients such that ``r_{2n,2n-i,j}^alpha = P(cos(alpha/2)) / sin^{2n+j}(alpha/2)``.
 
-* Recovery (:func:`recover`): exact coefficients at rational-tangent alpha
-  (:mod:`paper_repro.core.normalization`), ``y = r s^{2n+j}`` interpolated exactly in ``c = cos(alpha/2)``
-  with increasing degree until the interpolant also matches at ``verify`` further alpha.
-  That alone is *evidence*.
-* Proof (:func:`prove`): with the alpha-independent collocation points every coefficient is a
-  rational function of t = tan(alpha/4) whose numerator and denominator have degree <= 4nm
-  (:func:`paper_repro.core.normalization.cramer_degree_bound`); ``P(c)/s^k`` is one with numerator degree
-  <= 2 max(deg P, k) and denominator degree <= 2 max(deg P - k, 0) + k.  Their difference, cleared of
-  denominators, has degree <= B = 4nm + 2 max(deg P, k) + k, so agreement at B + 1 distinct t (where
-  the fixed collocation matrix is non-singular) proves the closed form for *every* alpha.
+* Recovery (:func:`recover`, :mod:`paper_repro.core.modular`): solves over F_p at rational-tangent alpha,
+  interpolation in ``c = cos(alpha/2)``, Chinese remainders.  That alone is *evidence*.
+* Proof (:func:`prove`, :mod:`paper_repro.core.identity_proof`): the partition-of-unity residual of the
+  candidates is the zero polynomial in t = tan(alpha/4) at alpha-independent points that are unisolvent
+  for the symmetric functions of the space containing T_{2n}; with two rank certificates this proves the
+  candidates for *every* alpha (the argument, with its assumptions, is in that module and in
+  ``docs/proof_of_closed_forms.md``).
 * Positivity (:func:`sign_on_unit_interval`): exact real-root count of P on the open interval
   0 < c < 1 (Sturm sequence in flint's exact ``fmpq_poly`` arithmetic) and its sign at one point.
   With a proven closed form this proves ``r > 0`` for all alpha in (0, pi).
@@ -20,37 +17,19 @@ coefficients such that ``r_{2n,2n-i,j}^alpha = P(cos(alpha/2)) / sin^{2n+j}(alph
 
 from __future__ import annotations
 
+import hashlib
+import json
 from dataclasses import dataclass
 
-from flint import fmpq, fmpq_mat, fmpq_poly
-from tqdm import tqdm
+from flint import fmpq, fmpq_poly
 
 from paper_repro.core.domain import RationalAngle, rational_alpha
-from paper_repro.core.normalization import (
-    cramer_degree_bound,
-    exact_coefficients_cached,
-    orbits,
-    parse_fmpq,
-    solve_reduced_exact,
-)
+from paper_repro.core.normalization import orbits, parse_fmpq, solve_reduced_exact
 from paper_repro.util.cache import cached
-
-
-def t_grid(count: int, start: int = 2) -> list[RationalAngle]:
-    """Distinct shape parameters alpha = 4 atan(1/k), k = start, start+1, ... (all in (0, pi))."""
-    return [rational_alpha(fmpq(1, k)) for k in range(start, start + count)]
 
 
 def sin_power(label_j: int, n: int) -> int:
     return 2 * n + label_j
-
-
-def interpolate(xs: list[fmpq], ys: list[fmpq]) -> fmpq_poly:
-    """Exact interpolating polynomial through (xs, ys) (Vandermonde solve with flint)."""
-    d = len(xs)
-    vander = fmpq_mat(d, d, [x**k for x in xs for k in range(d)])
-    coeffs = vander.solve(fmpq_mat(d, 1, ys))
-    return fmpq_poly([coeffs[k, 0] for k in range(d)])
 
 
 @dataclass
@@ -67,69 +46,33 @@ class ClosedForm:
         return {"sin_power": self.sin_power, "numerator": coeffs}
 
 
-def _values(n: int, alphas: list[RationalAngle]) -> list[list[fmpq]]:
-    return [exact_coefficients_cached(n, a)[0] for a in alphas]
+def recover(n: int, verify: int = 2, max_degree: int | None = None) -> dict[str, ClosedForm]:
+    """Closed forms ``P(c)/s^{2n+j}`` of every orbit representative (multimodular, see
+    :func:`paper_repro.core.modular.recover_modular`)."""
+    from paper_repro.core.modular import recover_modular
 
-
-def recover(n: int, verify: int = 4, max_degree: int | None = None) -> dict[str, ClosedForm]:
-    """Closed forms ``P(c)/s^{2n+j}`` of every orbit representative, verified at ``verify`` extra alpha.
-
-    Raises ``ArithmeticError`` if no polynomial of degree <= ``max_degree`` (default 6n + 4) fits.
-    """
-    orb = orbits(n)
-    limit = max_degree if max_degree is not None else 6 * n + 4
-    degree = 2 * n + 2
-    while degree <= limit:
-        alphas = t_grid(degree + 1 + verify)
-        vals = _values(n, alphas)
-        forms: dict[str, ClosedForm] = {}
-        ok = True
-        for o, (rep, _) in enumerate(orb):
-            k = sin_power(rep.j, n)
-            ys = [vals[a][o] * alphas[a].sin_half ** k for a in range(len(alphas))]
-            xs = [a.cos_half for a in alphas]
-            poly = interpolate(xs[: degree + 1], ys[: degree + 1])
-            if any(poly(xs[a]) != ys[a] for a in range(degree + 1, len(alphas))):
-                ok = False
-                break
-            forms[rep.coefficient] = ClosedForm(rep.coefficient, k, poly)
-        if ok:
-            return forms
-        degree += n + 1
-    raise ArithmeticError(f"no closed form P(c)/s^(2n+j) with deg P <= {limit} found for n = {n}")
-
-
-def proof_points_needed(n: int, forms: dict[str, ClosedForm]) -> int:
-    """B + 1 with B = 4nm + 2 max(deg P, k) + k, maximised over the forms."""
-    worst = max(2 * max(f.numerator.degree(), f.sin_power) + f.sin_power for f in forms.values())
-    return cramer_degree_bound(n) + worst + 1
+    return recover_modular(n, verify=verify, max_degree=max_degree)
 
 
 def prove(n: int, forms: dict[str, ClosedForm], progress: bool = False) -> dict:
-    """Check ``forms`` at B + 1 distinct alpha with the fixed (first) collocation point set.
+    """Prove ``forms`` for every alpha (:func:`paper_repro.core.identity_proof.prove_identity`).
 
-    Returns ``{"proved": bool, "points_needed": B+1, "points_checked": ..., "mismatch": label or None}``.
+    On failure, ``mismatch`` names the first candidate that differs from the exact coefficient at
+    tan(alpha/4) = ``t`` (1/2, or the next 1/k where the candidates differ from the exact solution).
     """
-    need = proof_points_needed(n, forms)
-    orb = orbits(n)
-    checked, k = 0, 2
-    bar = tqdm(total=need, desc=f"proof n={n}", leave=False, disable=not progress)
-    while checked < need:
-        alpha = rational_alpha(fmpq(1, k))
-        k += 1
-        try:
-            sol, _ = solve_reduced_exact(n, alpha, verify=0, attempts=1)
-        except ArithmeticError:
-            continue  # fixed point set singular at this t: not usable for the degree argument
-        for o, (rep, _) in enumerate(orb):
-            if forms[rep.coefficient].value(alpha) != sol[o]:
-                bar.close()
-                return {"proved": False, "points_needed": need, "points_checked": checked,
-                        "mismatch": rep.coefficient, "t": str(alpha.t)}
-        checked += 1
-        bar.update(1)
-    bar.close()
-    return {"proved": True, "points_needed": need, "points_checked": checked, "mismatch": None}
+    from paper_repro.core.identity_proof import prove_identity
+
+    res = prove_identity(n, forms, progress=progress)
+    res["mismatch"] = None
+    if not res["proved"]:
+        for k in range(2, 12):
+            alpha = rational_alpha(fmpq(1, k))
+            sol, _ = solve_reduced_exact(n, alpha, verify=0)
+            bad = [rep.coefficient for o, (rep, _) in enumerate(orbits(n)) if forms[rep.coefficient].value(alpha) != sol[o]]
+            if bad:
+                res["mismatch"], res["t"] = bad[0], str(alpha.t)
+                break
+    return res
 
 
 def sturm_count(p: fmpq_poly, a: fmpq, b: fmpq) -> int:
@@ -157,6 +100,16 @@ def sign_on_unit_interval(p: fmpq_poly) -> dict:
     mid = p(fmpq(1, 2))
     sign = 0 if roots or mid == 0 else (1 if mid > 0 else -1)
     return {"roots_in_open_unit_interval": roots, "sign": sign}
+
+
+def proof_cached(n: int) -> dict:
+    """:func:`prove` of the recovered forms (:func:`closed_forms_cached`), memoised on disk by n and the forms."""
+    forms = closed_forms_cached(n)
+    text = json.dumps({k: v.as_json() for k, v in sorted(forms.items())}, sort_keys=True)
+    keep = ("proved", "independence", "unisolvence", "points", "residuals_zero", "residual_degree_bound")
+    return cached("closed_form_proof", {"n": n, "forms_sha256": hashlib.sha256(text.encode()).hexdigest(),
+                                        "method": "identity-v1"},
+                  lambda: {k: v for k, v in prove(n, forms).items() if k in keep})
 
 
 def closed_forms_cached(n: int) -> dict[str, ClosedForm]:

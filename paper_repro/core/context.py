@@ -463,7 +463,7 @@ class ModpContext(Context):
         a, b = np.asarray(a), np.asarray(b)
         cols = b.reshape(b.shape[0], -1)
         x = to_nmod_mat(a, self.p).solve(to_nmod_mat(cols, self.p))
-        out = np.array([[int(x[i, j]) for j in range(x.ncols())] for i in range(x.nrows())], dtype=np.int64)
+        out = np.array([int(v) for v in x.entries()], dtype=np.int64).reshape(x.nrows(), x.ncols())
         return out.reshape((a.shape[1],) + b.shape[1:])
 
     def rank(self, a) -> int:
@@ -513,7 +513,9 @@ def to_fmpq_mat(a: np.ndarray) -> fmpq_mat:
 def to_nmod_mat(a: np.ndarray, p: int) -> nmod_mat:
     """2-D integer array (entries in [0, p)) to a flint ``nmod_mat``."""
     a = np.asarray(a)
-    return nmod_mat(a.shape[0], a.shape[1], [int(x) for x in a.reshape(-1)], p)
+    flat = a.reshape(-1)
+    flat = flat.tolist() if flat.dtype.kind in "iu" else [int(x) for x in flat]  # tolist: Python ints, fast
+    return nmod_mat(a.shape[0], a.shape[1], flat, p)
 
 
 # Backwards-compatible names (the first round called contexts "arithmetics").

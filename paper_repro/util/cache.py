@@ -9,6 +9,7 @@ results.  Bump :data:`CACHE_VERSION` when a computation's meaning changes.  Set
 
 from __future__ import annotations
 
+import fcntl
 import hashlib
 import json
 import os
@@ -40,16 +41,33 @@ def cached(name: str, params: dict, compute: Callable[[], T], *, report_hit: boo
         value = json.loads(dumps(compute()))
         return (value, False) if report_hit else value
     path = CACHE_DIR / name / f"{key(name, params)}.json"
-    if path.exists():
+    hit = _read(path, params)
+    if hit is not None:
+        return (hit["value"], True) if report_hit else hit["value"]
+    # one process computes a given entry at a time: another one asking for it meanwhile (claims run in
+    # parallel processes) waits for the lock and then reads the stored result
+    path.parent.mkdir(parents=True, exist_ok=True)
+    with open(path.with_suffix(".lock"), "a") as lock:
+        fcntl.flock(lock, fcntl.LOCK_EX)
         try:
-            stored = json.loads(path.read_text())
-        except (OSError, ValueError):
-            stored = {}
-        if stored.get("params") == json.loads(json.dumps(params)):
-            return (stored["value"], True) if report_hit else stored["value"]
-    value = json.loads(dumps(compute()))  # the same JSON form a cache hit returns
-    write_text(path, dumps({"name": name, "params": params, "value": value}))
+            hit = _read(path, params)
+            if hit is not None:
+                return (hit["value"], True) if report_hit else hit["value"]
+            value = json.loads(dumps(compute()))  # the same JSON form a cache hit returns
+            write_text(path, dumps({"name": name, "params": params, "value": value}))
+        finally:
+            fcntl.flock(lock, fcntl.LOCK_UN)
     return (value, False) if report_hit else value
+
+
+def _read(path, params: dict) -> dict | None:
+    if not path.exists():
+        return None
+    try:
+        stored = json.loads(path.read_text())
+    except (OSError, ValueError):
+        return None
+    return stored if stored.get("params") == json.loads(json.dumps(params)) else None
 
 
 @lru_cache(maxsize=1)

@@ -1,0 +1,211 @@
+"""Multimodular recovery of the closed forms ``r = P(cos(alpha/2)) / sin^{2n+j}(alpha/2)`` (open Question 1).
+
+The recovery only *finds* candidates; :mod:`paper_repro.core.identity_proof` proves them.
+
+For a prime p (below 2^31, so that numpy's int64 products do not overflow) and rational shape
+parameters ``alpha = 4 atan(1/k)``, the reduced partition-of-unity system
+(:func:`paper_repro.core.normalization.solve_reduced`) is solved over F_p (flint ``nmod_mat``).  For
+every orbit o, ``y = r_o s^{k_o}`` is a polynomial in ``c`` of degree <= D (D = 2n first, raised if the
+check fails), so D + 1 values give it by interpolation over F_p and ``verify`` further values check
+it.  The coefficients over Q follow by the Chinese remainder theorem (symmetric integer lift, or rational
+reconstruction); primes are added until the lift no longer changes with a new prime.  Every step is exact; what is
+not guaranteed is only that the stabilised reconstruction is the true rational (which the proof settles).
+
+>>> forms = recover_modular(2)
+>>> str(forms["r_{4,2,2}"].numerator), forms["r_{4,2,2}"].sin_power
+('-20*x^4 + 10*x^2 + 10', 6)
+"""
+
+from __future__ import annotations
+
+import sys
+from functools import cache
+
+import numpy as np
+from flint import fmpq, fmpq_poly, fmpz, nmod_mat
+
+from paper_repro.core.context import ModpContext, power_table
+from paper_repro.core.domain import rational_alpha
+from paper_repro.core.labels import exponent_matrix
+from paper_repro.core.normalization import _orbit_columns, _plane_points, fixed_points, orbits
+from paper_repro.util.validation import check_n
+
+#: Largest number of primes tried before giving up (each adds about 31 bits).
+MAX_PRIMES = 64
+
+
+@cache
+def primes_below(bound: int = 2**31, count: int = MAX_PRIMES) -> tuple[int, ...]:
+    """The ``count`` largest primes below ``bound``, descending (deterministic)."""
+    out, x = [], bound - 1
+    while len(out) < count:
+        if fmpz(x).is_prime():
+            out.append(x)
+        x -= 1
+    return tuple(out)
+
+
+def shape_parameters(count: int):
+    """``alpha = 4 atan(1/k)`` for ``k = 2, 3, ...``: distinct rational tangents (all alpha in (0, pi))."""
+    return [rational_alpha(fmpq(1, k)) for k in range(2, 2 + count)]
+
+
+def _nmod_solve(mat: np.ndarray, rhs: np.ndarray, p: int) -> np.ndarray:
+    """``mat^-1 rhs`` over F_p (``ZeroDivisionError`` if ``mat`` is singular)."""
+    a = nmod_mat(mat.shape[0], mat.shape[1], mat.reshape(-1).tolist(), p)
+    b = nmod_mat(rhs.shape[0], rhs.shape[1], rhs.reshape(-1).tolist(), p)
+    x = a.solve(b)
+    return np.array([int(v) for v in x.entries()], dtype=np.int64).reshape(x.nrows(), x.ncols())
+
+
+class ReducedSystemModp:
+    """The reduced partition-of-unity system of T_{2n} over F_p at the alpha-independent points
+    :func:`~paper_repro.core.normalization.fixed_points` (point set ``seed``).
+
+    Every function is ``g(u, v) * sin^e4(w/2) cos^e5(w/2)``; the factor g does not depend on alpha and is
+    computed once, so a new alpha costs only the w powers, one product and the orbit sums.  The matrix
+    is the one :func:`~paper_repro.core.normalization.reduced_matrix` builds (a test compares them).
+    """
+
+    def __init__(self, n: int, p: int, seed: int = 0) -> None:
+        self.n, self.p = n, p
+        self.ctx = ModpContext(p=p)
+        m = len(orbits(n))
+        tu, tv = fixed_points(n, m, seed)
+        self.points = _plane_points(tu, tv)
+        su, cu, sv, cv = (np.array([self.ctx.from_rational(x) for x in col], dtype=np.int64)
+                          for col in self.points.quarter_values())
+        self.quarter = (su, cu, sv, cv)
+        exps = exponent_matrix(n)
+        perm, self.starts = _orbit_columns(n)
+        self.exps = exps[perm]
+        kmax = int(exps.max())
+        g = np.ones((m, len(perm)), dtype=np.int64)
+        for slot, x in enumerate(self.quarter):
+            table = power_table(x, kmax, self.ctx)
+            g = g * table[self.exps[:, slot]].T % p
+        self.g = g
+        self.kmax = kmax
+
+    def matrix(self, alpha) -> np.ndarray:
+        ctx, p = self.ctx, self.p
+        sa, ca = ctx.alpha_half(alpha)
+        sw, cw = ctx.w_half(ctx, sa, ca, *self.quarter)
+        full = self.g * power_table(sw, self.kmax, ctx)[self.exps[:, 4]].T % p
+        full = full * power_table(cw, self.kmax, ctx)[self.exps[:, 5]].T % p
+        return np.add.reduceat(full, self.starts, axis=1) % p
+
+    def solve(self, alpha) -> np.ndarray:
+        a = self.matrix(alpha)
+        return _nmod_solve(a, np.ones((a.shape[0], 1), dtype=np.int64), self.p).reshape(-1)
+
+
+def values_modp(n: int, p: int, count: int) -> np.ndarray:
+    """``(count, m)`` array: the orbit coefficients modulo p at the first ``count`` shape parameters."""
+    for seed in range(8):  # a point set singular modulo p at some alpha is replaced by the next one
+        system = ReducedSystemModp(n, p, seed)
+        try:
+            return np.array([system.solve(alpha) for alpha in shape_parameters(count)])
+        except ZeroDivisionError:
+            continue
+    raise ArithmeticError(f"recovery n={n}: 8 point sets singular modulo {p}")
+
+
+def numerators_modp(n: int, p: int, degree: int, verify: int) -> np.ndarray | None:
+    """Coefficients (ascending) modulo p of every numerator P_o of degree <= ``degree``: ``(m, degree+1)``;
+    ``None`` if the interpolants fail at the ``verify`` further shape parameters."""
+    orb = orbits(n)
+    count = degree + 1 + verify
+    vals = values_modp(n, p, count)
+    ctx = ModpContext(p=p)
+    alphas = shape_parameters(count)
+    cs = np.array([ctx.from_rational(a.cos_half) for a in alphas], dtype=np.int64)
+    ss = np.array([ctx.from_rational(a.sin_half) for a in alphas], dtype=np.int64)
+    ks = [2 * n + rep.j for rep, _ in orb]
+    ys = np.empty_like(vals)
+    for o, k in enumerate(ks):
+        ys[:, o] = vals[:, o] * np.array([pow(int(s), k, p) for s in ss], dtype=np.int64) % p
+    vander = np.ones((count, degree + 1), dtype=np.int64)
+    for d in range(1, degree + 1):
+        vander[:, d] = vander[:, d - 1] * cs % p
+    coeffs = _nmod_solve(vander[: degree + 1], ys[: degree + 1], p)  # (degree+1, m)
+    if verify and np.any(_matmul_mod(vander[degree + 1:], coeffs, p) != ys[degree + 1:]):
+        return None
+    return coeffs.T.copy()
+
+
+def _matmul_mod(a: np.ndarray, b: np.ndarray, p: int) -> np.ndarray:
+    """``a @ b mod p`` without int64 overflow (entries < p < 2^31): column by column, reduced each step."""
+    out = np.zeros((a.shape[0], b.shape[1]), dtype=np.int64)
+    for k in range(a.shape[1]):
+        out = (out + a[:, k: k + 1] * b[k: k + 1, :]) % p
+    return out
+
+
+def rational_reconstruction(a: int, m: int) -> fmpq | None:
+    """The fraction x/y with |x|, 0 < y <= sqrt(m/2) and x = a y (mod m), or ``None`` (Wang's algorithm)."""
+    a %= m
+    bound = int(fmpz(m // 2).isqrt())
+    r0, r1, s0, s1 = m, a, 0, 1
+    while r1 > bound:
+        q = r0 // r1
+        r0, r1 = r1, r0 - q * r1
+        s0, s1 = s1, s0 - q * s1
+    if s1 == 0 or abs(s1) > bound:
+        return None
+    from math import gcd
+
+    if gcd(r1, abs(s1)) != 1:
+        return None
+    return fmpq(r1, s1) if s1 > 0 else fmpq(-r1, -s1)
+
+
+def _crt(res: list[int], mod: int, new: list[int], p: int) -> list[int]:
+    inv = pow(mod % p, -1, p)
+    return [r + mod * ((x - r) * inv % p) for r, x in zip(res, new)]
+
+
+def recover_modular(n: int, *, verify: int = 2, max_degree: int | None = None, progress: bool = False) -> dict:
+    """Closed forms ``{label: ClosedForm}`` of every orbit representative (see the module docstring).
+
+    ``ArithmeticError`` if no degree <= ``max_degree`` (default 6n + 4) fits or the reconstruction does
+    not stabilise within :data:`MAX_PRIMES` primes.
+    """
+    from paper_repro.core.closed_forms import ClosedForm
+
+    n = check_n(n)
+    orb = orbits(n)
+    limit = max_degree if max_degree is not None else 6 * n + 4
+    primes = primes_below()
+    degree = 2 * n
+    first = None
+    while degree <= limit:
+        first = numerators_modp(n, primes[0], degree, verify)
+        if first is not None:
+            break
+        degree += 2
+    if first is None:
+        raise ArithmeticError(f"no closed form P(c)/s^(2n+j) with deg P <= {limit} found for n = {n}")
+    flat = [int(x) for x in first.reshape(-1)]
+    mod, prev_int, prev_rat = primes[0], None, None
+    for p in primes[1:]:
+        coeffs = numerators_modp(n, p, degree, verify)
+        if coeffs is None:
+            raise ArithmeticError(f"recovery n={n}: the interpolants fail modulo {p} (degree {degree})")
+        flat = _crt(flat, mod, [int(x) for x in coeffs.reshape(-1)], p)
+        mod *= p
+        # integers first (the symmetric lift needs half the primes of a rational reconstruction), then
+        # rationals; either is accepted once one more prime leaves it unchanged
+        lifted = [fmpq(x - mod if 2 * x > mod else x) for x in flat]
+        rec = [rational_reconstruction(x, mod) for x in flat]
+        if progress:
+            print(f"recovery n={n}: {len(str(mod))}-digit modulus", file=sys.stderr, flush=True)
+        found = lifted if lifted == prev_int else (rec if None not in rec and rec == prev_rat else None)
+        if found is not None:
+            table = np.array(found, dtype=object).reshape(first.shape)
+            out = {}
+            for o, (rep, _) in enumerate(orb):
+                out[rep.coefficient] = ClosedForm(rep.coefficient, 2 * n + rep.j, fmpq_poly(list(table[o])))
+            return out
+        prev_int, prev_rat = lifted, rec
+    raise ArithmeticError(f"recovery n={n}: the rational reconstruction did not stabilise with {len(primes)} primes")

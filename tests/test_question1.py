@@ -1,0 +1,131 @@
+"""Question 1: multimodular recovery, the identity proof, and the cache that serves both."""
+
+from __future__ import annotations
+
+import threading
+import time
+
+import pytest
+from flint import fmpq, fmpq_poly
+
+from paper_repro.core import identity_proof as ip
+from paper_repro.core.closed_forms import ClosedForm, prove
+from paper_repro.core.context import ExactContext, ModpContext
+from paper_repro.core.domain import RationalPoints, rational_alpha
+from paper_repro.core.modular import (
+    ReducedSystemModp,
+    primes_below,
+    rational_reconstruction,
+    recover_modular,
+)
+from paper_repro.core.normalization import _plane_points, orbits, reduced_matrix
+from paper_repro.printed.normalization import FINAL
+from paper_repro.util import cache as cache_mod
+
+
+def test_fast_modp_matrix_is_the_reduced_matrix():
+    p = primes_below()[3]
+    system = ReducedSystemModp(4, p, seed=1)
+    alpha = rational_alpha(fmpq(2, 7))
+    direct = reduced_matrix(4, alpha, system.points, ModpContext(p=p))
+    assert (system.matrix(alpha) == direct).all()
+
+
+def test_rational_reconstruction():
+    m = primes_below()[0] * primes_below()[1]
+    x = fmpq(-123457, 9871)
+    image = int(x.p) * pow(int(x.q), -1, m) % m
+    assert rational_reconstruction(image, m) == x
+    assert rational_reconstruction(5, 7) is None or rational_reconstruction(5, 7) != fmpq(123457, 9871)
+
+
+def test_recovered_forms_equal_the_printed_examples():
+    """Independent source: the paper's final forms of Examples n = 1, 2, 3 (as functions of alpha)."""
+    for n in (1, 2, 3):
+        forms = recover_modular(n)
+        for t in (fmpq(1, 2), fmpq(2, 9)):
+            a = rational_alpha(t)
+            s, c = a.sin_half, a.cos_half
+            for lab, (_ref, num, k) in FINAL.items():
+                if lab.startswith(f"r_{{{2 * n},"):
+                    assert forms[lab].value(a) == fmpq_poly(num)(c) / s**k, lab
+
+
+def test_residual_polynomial_matches_a_direct_exact_evaluation():
+    """The cleared residual of a *wrong* candidate, evaluated at t, equals s^K (1+t^2)^(d+K+R) du^P dv^Q
+    times the exact residual computed from the basis functions (no clearing, no polynomials)."""
+    n = 2
+    forms = dict(recover_modular(n))
+    lab = "r_{4,3,1}"
+    forms[lab] = ClosedForm(lab, forms[lab].sin_power, forms[lab].numerator + fmpq_poly([1, 1]))
+    cache = ip.prepare(n, forms)
+    tu, tv = fmpq(1, 5), fmpq(3, 7)
+    poly = ip.residual_at_point(n, forms, tu, tv, _cache=cache)
+    assert not poly.is_zero()
+    t = fmpq(1, 3)
+    alpha = rational_alpha(t)
+    row = reduced_matrix(n, alpha, RationalPoints(None, (tu,), (tv,), check=False), ExactContext())[0]
+    rho = sum(forms[rep.coefficient].value(alpha) * row[o] for o, (rep, _) in enumerate(orbits(n))) - 1
+    du, dv = tu.p**2 + tu.q**2, tv.p**2 + tv.q**2
+    scale = alpha.sin_half ** cache["K"] * (1 + t**2) ** (cache["d"] + cache["K"] + cache["R"])
+    scale *= fmpq(int(du)) ** cache["P"] * fmpq(int(dv)) ** cache["Q"]
+    assert poly(t) == rho * scale
+    assert rho != 0
+
+
+@pytest.mark.parametrize("n", [1, 3, 5])
+def test_proof_accepts_true_forms_and_rejects_any_changed_one(n):
+    forms = recover_modular(n)
+    res = prove(n, forms)
+    assert res["proved"] and res["independence"]["full"] and res["unisolvence"]["full"]
+    for rep, _ in orbits(n)[:: max(1, len(orbits(n)) // 4)]:
+        bad = dict(forms)
+        f = forms[rep.coefficient]
+        bad[rep.coefficient] = ClosedForm(f.label, f.sin_power, f.numerator + fmpq_poly([0, 0, 0, 1]))
+        out = prove(n, bad)
+        assert not out["proved"] and out["mismatch"] == rep.coefficient
+
+
+def test_proof_rejects_a_wrong_sine_power():
+    forms = dict(recover_modular(2))
+    f = forms["r_{4,2,0}"]
+    forms["r_{4,2,0}"] = ClosedForm(f.label, f.sin_power + 1, f.numerator)
+    assert not prove(2, forms)["proved"]
+
+
+def test_proof_points_are_alpha_independent_and_distinct():
+    pts = ip.proof_points(6, 40)
+    assert len(set(zip(pts.tu, pts.tv))) == 40
+
+
+def test_cache_computes_once_under_concurrency(tmp_path, monkeypatch):
+    monkeypatch.setattr(cache_mod, "CACHE_DIR", tmp_path)
+    monkeypatch.delenv("PAPER_REPRO_NO_CACHE", raising=False)
+    calls = []
+
+    def compute():
+        calls.append(1)
+        time.sleep(0.3)
+        return {"x": 1}
+
+    results = []
+    threads = [threading.Thread(target=lambda: results.append(cache_mod.cached("t", {"a": 1}, compute)))
+               for _ in range(3)]
+    for th in threads:
+        th.start()
+    for th in threads:
+        th.join()
+    assert len(calls) == 1 and results == [{"x": 1}] * 3
+
+
+def test_cache_stores_nothing_when_the_computation_fails(tmp_path, monkeypatch):
+    monkeypatch.setattr(cache_mod, "CACHE_DIR", tmp_path)
+    monkeypatch.delenv("PAPER_REPRO_NO_CACHE", raising=False)
+
+    def boom():
+        raise RuntimeError("crash")
+
+    with pytest.raises(RuntimeError):
+        cache_mod.cached("t", {"a": 2}, boom)
+    assert not list(tmp_path.rglob("*.json"))
+    assert cache_mod.cached("t", {"a": 2}, lambda: 7) == 7
