@@ -28,8 +28,10 @@ VENDOR = FIGURES / "vendor"
 #: Where each open question of Section 7 stands, by the claims that address it.
 OPEN_QUESTIONS = [
     ("Question 7.1 (unlabelled in the source): non-negativity, symmetry, closed/recursive formulas of the "
-     "normalizing coefficients", ["nonnegativity", "nonnegativity_extended", "normalizing_closed_forms"],
-     "General formulas beyond the printed levels 0 and 1: not found."),
+     "normalizing coefficients", ["nonnegativity", "nonnegativity_extended", "normalizing_closed_forms",
+                                  "general_formulas"],
+     "Closed forms and positivity for every n (proven here for n ≤ 30); formulas of the levels above those "
+     "listed below and of the centre; proofs of the level formulas for all n."),
     ("Question 7.2 (que:open_problem_basis_transformation): the basis transformation between T̄ and V",
      ["basis_transformation", "coincidence"], "Closed forms in cos(α/2), sin(α/2): not found."),
     ("Question 7.3 (que:limiting_case): the α → 0 limit of the patches", ["bernstein_limit", "bezier_limit_degree",
@@ -241,6 +243,7 @@ def gallery_html(manifest: list[dict], view_specs: dict[str, dict] | None = None
                 [[html.escape(q), "<br>".join(f"<code>{c}</code> ({status[c]['kind']}, {status[c]['status']})"
                                               for c in cids if c in status), html.escape(missing)]
                  for q, cids, missing in OPEN_QUESTIONS]),
+         *general_formulas_html(),
          '<h2 id="figures">Figures</h2>']
     for m in manifest:
         number = f"{m['paper_number']} of the paper" if m.get("paper_number") else "new (not in the paper)"
@@ -284,6 +287,28 @@ def gallery_html(manifest: list[dict], view_specs: dict[str, dict] | None = None
                       ", ".join(r["claims"]), ", ".join(r["figures"])] for r in pmap.get("labels", [])]))
     p.append("</body></html>\n")
     return "\n".join(p)
+
+
+def general_formulas_html() -> list[str]:
+    """Question 1's level formulas from ``data/normalization/general_formulas*.json`` (the widest range present)."""
+    path = next((p for p in (DATA / "normalization" / "general_formulas_extended.json",
+                             DATA / "normalization" / "general_formulas.json") if p.exists()), None)
+    if path is None:
+        return []
+    gf = json.loads(path.read_text())
+    out = ['<h3 id="general-formulas">Question 1: formulas of the normalizing coefficients by level</h3>',
+           f"<p>From <code>{html.escape(path.relative_to(ROOT).as_posix())}</code>: "
+           + math_html("$r_{2n,2n-i,j} = P_{n,i,j}(c)/s^{2n+j}$, $c = \\cos(\\alpha/2)$, $s = \\sin(\\alpha/2)$, "
+                       "$C_{n,k}$ the coefficient of $X^k$ in $(1+2cX+X^2)^n$")
+           + ". <i>Proven for n ≤ N</i>: equal to the closed forms proven for every α for each n ≤ N; a conjecture "
+             "beyond.</p>"]
+    rows = []
+    for e in gf["levels"]:
+        formula = math_html(f"${e['latex']}$") if "latex" in e else html.escape(e.get("searched", ""))
+        rows.append([html.escape(str(e["level"])), html.escape(e.get("cases", e["kind"])), html.escape(e["status"]),
+                     formula])
+    out.append(_table(["level", "cases", "status", "formula / what was searched"], rows))
+    return out
 
 
 def write_gallery(manifest: list[dict]) -> Path:

@@ -193,6 +193,25 @@ def errata_markdown(errata: list[dict]) -> str:
     return "\n".join(rows) + "\n"
 
 
+def question1_markdown() -> str:
+    """Status of Question 1 from the claims' data: closed forms and positivity, and the level formulas."""
+    out = []
+    for suffix, how in (("", "`make reproduce`"), ("_extended", "`make reproduce-extended`")):
+        path = DATA / "normalization" / f"general_formulas{suffix}.json"
+        if not path.exists():
+            continue
+        gf = json.loads(path.read_text())
+        proven = gf["proven_closed_forms_for_n"]
+        span = f"n = {min(proven)}..{max(proven)}" if proven else "none"
+        out += [f"**{how}**: closed forms and positivity of every normalizing coefficient proven for every α for "
+                f"{span}; level formulas ([`data/normalization/general_formulas{suffix}.md`]"
+                f"(data/normalization/general_formulas{suffix}.md)):", "",
+                "| level | cases | status |", "|---|---|---|"]
+        out += [f"| {e['level']} | {e.get('cases', e['kind'])} | {e['status']} |" for e in gf["levels"]]
+        out.append("")
+    return "\n".join(out) + "\n" if out else "Not computed yet (`make reproduce`).\n"
+
+
 def update_readme(results: list[ClaimResult], errata: list[dict]) -> None:
     """Rewrite the generated claims and errata blocks of README.md."""
     path = ROOT / "README.md"
@@ -201,6 +220,7 @@ def update_readme(results: list[ClaimResult], errata: list[dict]) -> None:
     body = "\n".join(table) + "\n\nDetails (measured values, ranges): [`data/claims.md`](data/claims.md).\n"
     text = _replace_block(path.read_text(), "claims", body)
     text = _replace_block(text, "errata", errata_markdown(errata))
+    text = _replace_block(text, "question1", question1_markdown())
     write_text(path, text)
 
 

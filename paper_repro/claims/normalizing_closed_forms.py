@@ -130,8 +130,9 @@ def run(ts, level_n_max, proof_n_max) -> Outcome:
     poly_ok = {}
     for n in range(2, proof_n_max + 1):
         forms = closed_forms_cached(n)
-        ok = proof_cached(n)["proved"] and all(forms[f"r_{{{2 * n},{2 * n - i},0}}"].numerator == fmpq_poly(c_numerator(n, 2 * n - i))
-                 for i in range(n + 1))
+        ok = proof_cached(n)["proved"] and all(
+            forms[f"r_{{{2 * n},{2 * n - i},0}}"].numerator == fmpq_poly(c_numerator(n, 2 * n - i))
+            for i in range(n + 1))
         for i in range(1, n + 1):
             p = (fmpq_poly([2]) * fmpq_poly(c_numerator(n, 2 * n - 2)) if i == 1 else
                  fmpq_poly([0, i]) * fmpq_poly(c_numerator(n, 2 * n - i))

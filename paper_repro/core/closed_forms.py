@@ -68,7 +68,8 @@ def prove(n: int, forms: dict[str, ClosedForm], progress: bool = False) -> dict:
         for k in range(2, 12):
             alpha = rational_alpha(fmpq(1, k))
             sol, _ = solve_reduced_exact(n, alpha, verify=0)
-            bad = [rep.coefficient for o, (rep, _) in enumerate(orbits(n)) if forms[rep.coefficient].value(alpha) != sol[o]]
+            bad = [rep.coefficient for o, (rep, _) in enumerate(orbits(n))
+                   if forms[rep.coefficient].value(alpha) != sol[o]]
             if bad:
                 res["mismatch"], res["t"] = bad[0], str(alpha.t)
                 break

@@ -262,14 +262,15 @@ def sample_points(alpha, count: int, seed: int = 0, interior: bool = True) -> np
 
 
 def sample_rational_points(alpha: RationalAngle, count: int, seed: int = 0,
-                           max_denominator: int = 1000) -> RationalPoints:
+                           max_denominator: int | None = None) -> RationalPoints:
     """``count`` seeded random interior rational points of Omega^alpha.
 
     Barycentric coordinates are drawn uniformly (as :func:`sample_points`), and the quarter-angle
     tangents of u and v are rounded to rationals with denominator <= ``max_denominator``; points
     outside the domain after rounding and duplicates are redrawn.  (Points on a common grid line
     u = const would make collocation matrices rank deficient: the restriction of T_{2n} to such a
-    line has dimension <= 2n + 1, so generic points are needed.)
+    line has dimension <= 2n + 1, so generic points are needed.)  ``max_denominator`` defaults to 1000 for
+    alpha >= 1/2 and grows like 1/alpha below (small triangles need finer rationals to stay generic).
     """
     from fractions import Fraction
 
@@ -278,6 +279,8 @@ def sample_rational_points(alpha: RationalAngle, count: int, seed: int = 0,
     check_count(count, limit=10**6)
     rng = np.random.default_rng(seed)
     a = float(alpha)
+    if max_denominator is None:
+        max_denominator = 1000 if a >= 0.5 else int(500 / a)
     seen: set[tuple[fmpq, fmpq]] = set()
     tus: list[fmpq] = []
     tvs: list[fmpq] = []

@@ -40,16 +40,15 @@ from __future__ import annotations
 
 import sys
 from dataclasses import dataclass
-
 from math import gcd
 
 from flint import fmpq, fmpz_poly
 
+from paper_repro.core.basis import evaluate
 from paper_repro.core.context import ModpContext
 from paper_repro.core.domain import RationalPoints, rational_alpha
 from paper_repro.core.labels import exponent_matrix, united_system
 from paper_repro.core.normalization import fixed_points, orbits, reduced_matrix
-from paper_repro.core.basis import evaluate
 from paper_repro.util.validation import check_n
 
 #: The prime of the rank certificates (2^31 - 1) and the shape parameter t_0 = tan(alpha_0/4) they use.

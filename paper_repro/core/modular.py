@@ -12,8 +12,8 @@ reconstruction); primes are added until the lift no longer changes with a new pr
 not guaranteed is only that the stabilised reconstruction is the true rational (which the proof settles).
 
 >>> forms = recover_modular(2)
->>> str(forms["r_{4,2,2}"].numerator), forms["r_{4,2,2}"].sin_power
-('-20*x^4 + 10*x^2 + 10', 6)
+>>> [int(x) for x in forms["r_{4,2,2}"].numerator.coeffs()], forms["r_{4,2,2}"].sin_power
+([10, 0, 10, 0, -20], 6)
 """
 
 from __future__ import annotations

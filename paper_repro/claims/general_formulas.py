@@ -1,0 +1,128 @@
+"""Claim ``general_formulas``: formulas of the normalizing coefficients by level, beyond the printed 0 and 1.
+
+Levels 0 and 1 (Remark normalizing_coeff_of_level_0, Proposition prop:level_1_coefficients) and the levels
+found by :func:`paper_repro.core.general_formulas.fit` are compared with the proven closed forms
+(:func:`paper_repro.core.closed_forms.proof_cached`) for every n up to ``n_max``.  A level's status:
+
+* **proven for n <= N**: the formula equals the closed form for every n <= N and those closed forms are
+  proven for every alpha (so the formula is a theorem for n <= N; for larger n it is a conjecture);
+* **not found**: no formula of the searched shape, or not searched (the centre, levels above ``max_level``).
+
+Positivity for all n, *conditional* on a formula holding for all n, is stated where the formula is a sum
+of terms positive on 0 < c < 1 (checked here for the stated range of n, argued in the Markdown).
+Publishes ``data/normalization/general_formulas{suffix}.json`` and ``.md``.
+"""
+
+from __future__ import annotations
+
+from flint import fmpq_mat, fmpq_poly
+
+from paper_repro.core.closed_forms import closed_forms_cached, proof_cached
+from paper_repro.core.general_formulas import Formula, check, fit, printed_level_formulas
+from paper_repro.util.registry import Outcome, claim
+
+#: Fit range per level: small n, the rest of the range is a genuine check.
+N_FIT = {2: 8, 3: 9, 4: 11, 5: 15}
+
+POSITIVITY = {
+    (2, "interior"): "P = (n(i+1) - binom(i,2) s^2) C_{n,i} + n(i+1) c C_{n,i+1}; every C_{n,k} > 0 on 0 < c < 1 "
+                     "(a sum of positive terms) and n(i+1) - binom(i,2) s^2 >= n(i+1) - i(i-1)/2 > 0 for i <= n: "
+                     "positive for every n >= 3 and every alpha, if the formula holds for that n",
+    (2, "diagonal"): "P = (3n - 1 - 2c^2) C_{n,2} + 3(n-1) c C_{n,3} with 3n - 1 - 2c^2 >= 3n - 3 > 0: positive for "
+                     "every n >= 3 and every alpha, if the formula holds for that n",
+}
+
+
+def _status(agrees: list[int], fails: list[int], proven: list[int], first: int) -> tuple[str, int]:
+    if fails:
+        return f"fails for n = {fails[:5]}", 0
+    top = first - 1
+    while top + 1 in agrees and top + 1 in proven:
+        top += 1
+    return (f"proven for n <= {top}" if top >= first else "not checked"), top
+
+
+def _centre_recurrence(n_max: int, order: int = 2, deg_n: int = 2, deg_c: int = 4) -> dict:
+    """Search linear recurrences sum_r q_r(n, c) P_{n+r} = 0 for the centre numerators (exact null space)."""
+    pcs = {n: closed_forms_cached(n)[f"r_{{{2 * n},{n},{n}}}"].numerator for n in range(1, n_max + 1)}
+    unknowns = [(r, a, e) for r in range(order + 1) for a in range(deg_n + 1) for e in range(deg_c + 1)]
+    rows = []
+    for n in range(1, n_max - order + 1):
+        basis = [pcs[n + r] * fmpq_poly([0] * e + [1]) * n**a for r, a, e in unknowns]
+        for d in range(max(p.degree() for p in basis) + 1):
+            rows.append([p[d] for p in basis])
+    rank = fmpq_mat(len(rows), len(unknowns), [x for r in rows for x in r]).rank() if rows else 0
+    return {"searched": f"order <= {order}, degree <= {deg_n} in n and <= {deg_c} in c, data n <= {n_max}",
+            "unknowns": len(unknowns), "rank": rank, "found": rank < len(unknowns)}
+
+
+@claim("general_formulas", paper_ref=["normalizing_coeff_of_level_0", "prop:level_1_coefficients",
+                                      "sec:open_problems"],
+       statement="Open Question 1, general formulas: besides the printed levels 0 and 1, levels 2..{max_level} "
+                 "have formulas P_{n,i,j} = A_j(n,i,c) C_{n,i} + B_j(n,i,c) C_{n,i+1} with polynomial A_j, B_j "
+                 "(interior j < i <= n and diagonal i = j < n), fitted on small n and proven for n <= {n_max} "
+                 "by the proven closed forms; conjectures beyond. The centre has none of the searched shape.",
+       kind="proof", max_level=4, n_max=12, suffix="",
+       extended={"max_level": 5, "n_max": 30, "suffix": "_extended"})
+def run(max_level: int, n_max: int, suffix: str) -> Outcome:
+    proven = [n for n in range(1, n_max + 1) if proof_cached(n)["proved"]]
+    entries, ok = [], True
+    formulas: list[Formula] = list(printed_level_formulas())
+    for level in range(2, max_level + 1):
+        for kind in ("interior", "diagonal"):
+            f = fit(level, kind, N_FIT[level])
+            if f is None:
+                entries.append({"level": level, "kind": kind, "status": "not found",
+                                "searched": f"two-term shape, fitted on n <= {N_FIT[level]}"})
+                continue
+            formulas.append(f)
+    for f in formulas:
+        first = 1 if f.kind == "all" else f.level + 1  # the smallest n with a case (level 1: n >= 2, as printed)
+        res = check(f, range(first, n_max + 1))
+        status, top = _status(res["agrees_for_n"], res["fails_for_n"], proven, first)
+        ok &= not res["fails_for_n"] and top == n_max
+        entry = f.as_json() | {"status": status, "agrees_for_n": [min(res["agrees_for_n"] or [0]),
+                                                                  max(res["agrees_for_n"] or [0])],
+                               "source": "printed" if f.level <= 1 else f"fitted on n <= {N_FIT[f.level]}",
+                               "beyond": f"conjecture for n > {top}" if top else "-"}
+        if (f.level, f.kind) in POSITIVITY:
+            entry["positivity_for_all_n_if_the_formula_holds"] = POSITIVITY[(f.level, f.kind)]
+        entries.append(entry)
+    centre = _centre_recurrence(min(n_max, 22))
+    entries.append({"level": "n (centre r_{2n,n,n})", "kind": "centre", "status": "found" if centre["found"]
+                    else "not found", "searched": centre["searched"]})
+    entries.append({"level": f"> {max_level}", "kind": "interior/diagonal", "status": "not searched",
+                    "searched": f"the exact fit grows as level^4 unknowns; levels <= {max_level} here"})
+    data = {f"normalization/general_formulas{suffix}.json": {"n_max": n_max, "proven_closed_forms_for_n": proven,
+                                                           "definitions": {
+                                                               "P": "r_{2n,2n-i,j} = P_{n,i,j}(c) / s^{2n+j}",
+                                                               "C": "C_{n,k}(c) = coefficient of X^k in "
+                                                                    "(1 + 2cX + X^2)^n = s^{2n} c_{2n,k}",
+                                                               "c": "cos(alpha/2)", "s": "sin(alpha/2)"},
+                                                           "levels": entries},
+            f"normalization/general_formulas{suffix}.md": markdown(entries, n_max)}
+    return Outcome(ok, {
+        "levels": [{k: e[k] for k in ("level", "kind", "status")} for e in entries],
+        "scope": f"each formula is proven for the n it agrees with proven closed forms (n <= {n_max}); "
+                 "conjecture beyond; centre: no recurrence of the searched shape"}, data=data)
+
+
+def markdown(entries: list[dict], n_max: int) -> str:
+    lines = ["# General formulas of the normalizing coefficients (Question 1)", "",
+             "Generated by `make reproduce` (claim `general_formulas`). Notation: "
+             "$r_{2n,2n-i,j}^\\alpha = P_{n,i,j}(c)/s^{2n+j}$, $c = \\cos\\frac{\\alpha}{2}$, "
+             "$s = \\sin\\frac{\\alpha}{2}$, and $C_{n,k}(c)$ the coefficient of $X^k$ in $(1+2cX+X^2)^n$ "
+             "(so $c^\\alpha_{2n,k} = C_{n,k}/s^{2n}$, eq. univariate_basis). "
+             f"*Proven for n ≤ N* means: equal to the closed forms proven for every α, for every n ≤ N "
+             f"(N ≤ {n_max} here); beyond N the formula is a conjecture.", "",
+             "| level | cases | status | source |", "|---|---|---|---|"]
+    for e in entries:
+        lines.append(f"| {e['level']} | {e.get('cases', e['kind'])} | {e['status']} | "
+                     f"{e.get('source', e.get('searched', ''))} |")
+    lines.append("")
+    for e in entries:
+        if "latex" in e:
+            lines += [f"## Level {e['level']}, {e['cases']} ({e['status']})", "", f"$$ {e['latex']} $$", ""]
+            if "positivity_for_all_n_if_the_formula_holds" in e:
+                lines += [f"Positivity: {e['positivity_for_all_n_if_the_formula_holds']}.", ""]
+    return "\n".join(lines)

@@ -1,0 +1,168 @@
+"""General formulas of the normalizing coefficients by level (the open part of Question 1).
+
+Write ``r_{2n,2n-i,j} = P_{n,i,j}(c) / s^{2n+j}`` (c = cos(alpha/2), s = sin(alpha/2)) and
+``C_{n,k}(c) = s^{2n} c_{2n,k}``, the coefficient of X^k in (1 + 2cX + X^2)^n (eq. univariate_basis).
+The printed levels are ``P_{n,i,0} = C_{n,i}`` (Remark normalizing_coeff_of_level_0) and
+``P_{n,i,1} = i c C_{n,i} + (i+1) C_{n,i+1}`` (Proposition prop:level_1_coefficients, i >= 2).
+
+For level j we search (:func:`fit`) for a formula of the same shape,
+
+    P_{n,i,j}(c) = sum_{k=0..j} sum_{e,a,b} q_{k,e,a,b} c^e i^a n^b C_{n,i+k}(c),     e <= j, a + b <= j,
+
+separately for the *interior* j < i <= n and the *diagonal* i = j < n (there a polynomial in n only), by
+exact linear algebra over Q on the proven closed forms of small n.  The system has many more equations
+than unknowns, so consistency is already a test; the formula is then compared with the closed forms of
+every n up to the largest proven one (:func:`check`), most of them outside the fitted range.  Where it
+agrees with proven closed forms it is proven for those n; beyond, it is a conjecture.
+
+>>> f = fit(2, "interior", n_fit=8)
+>>> [str(x) for x in predict(f, 3, 3).coeffs()]  # r_{6,3,2}: (144c + 252c^3 + 24c^5)/s^8, printed in Example n=3
+['0', '144', '0', '252', '0', '24']
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from flint import fmpq, fmpq_mat, fmpq_poly
+
+from paper_repro.core.closed_forms import closed_forms_cached
+from paper_repro.core.univariate import c_numerator
+
+KINDS = ("interior", "diagonal", "all")
+
+
+@dataclass(frozen=True)
+class Formula:
+    """``P_{n,i,j} = sum q[(k, e, a, b)] c^e i^a n^b C_{n,i+k}`` for the cases ``kind`` of level ``level``."""
+
+    level: int
+    kind: str
+    terms: tuple[tuple[tuple[int, int, int, int], fmpq], ...]
+
+    def as_json(self) -> dict:
+        return {"level": self.level, "kind": self.kind, "cases": cases_text(self.level, self.kind),
+                "terms": [{"shift_k": k, "c_power": e, "i_power": a, "n_power": b, "coefficient": str(q)}
+                          for (k, e, a, b), q in self.terms],
+                "expression": "P_{n,i,j}(c) = sum over terms of coefficient * c^c_power * i^i_power * n^n_power "
+                              "* C_{n,i+shift_k}(c), C_{n,k} = coefficient of X^k in (1 + 2cX + X^2)^n",
+                "latex": latex(self)}
+
+
+def cases_text(level: int, kind: str) -> str:
+    return {"interior": f"{level} < i <= n", "diagonal": f"i = {level} < n", "all": f"{level} <= i <= n"}[kind]
+
+
+def C(n: int, k: int) -> fmpq_poly:
+    """``C_{n,k}(c)`` (the printed univariate constant times s^{2n}); zero outside 0..2n."""
+    return fmpq_poly(c_numerator(n, k)) if 0 <= k <= 2 * n else fmpq_poly([0])
+
+
+def _unknowns(level: int, kind: str) -> list[tuple[int, int, int, int]]:
+    out = []
+    for k in range(level + 1):
+        for e in range(level + 1):
+            for a in range(level + 1 if kind != "diagonal" else 1):
+                for b in range(level + 1 - a):
+                    out.append((k, e, a, b))
+    return out
+
+
+def _cases(level: int, kind: str, ns) -> list[tuple[int, int]]:
+    if kind == "interior":
+        return [(n, i) for n in ns for i in range(level + 1, n + 1)]
+    if kind == "all":
+        return [(n, i) for n in ns for i in range(level, n + 1)]
+    return [(n, level) for n in ns if n > level]
+
+
+def target(n: int, i: int, level: int) -> fmpq_poly:
+    """The closed form's numerator with sine power 2n + j (as recovered)."""
+    f = closed_forms_cached(n)[f"r_{{{2 * n},{2 * n - i},{level}}}"]
+    if f.sin_power != 2 * n + level:
+        raise ArithmeticError(f"unexpected sine power {f.sin_power} for level {level}, n = {n}")
+    return f.numerator
+
+
+def _term_poly(u: tuple[int, int, int, int], n: int, i: int) -> fmpq_poly:
+    k, e, a, b = u
+    return C(n, i + k) * fmpq_poly([0] * e + [1]) * (i**a * n**b)
+
+
+def fit(level: int, kind: str, n_fit: int) -> Formula | None:
+    """Exact fit on the closed forms of n <= ``n_fit``; ``None`` if the system is inconsistent (no formula of
+    this shape).  Among the solutions the one with every free unknown zero (reduced row echelon form)."""
+    if kind not in KINDS:
+        raise ValueError(f"kind must be one of {KINDS}, got {kind!r}")
+    unknowns = _unknowns(level, kind)
+    rows: list[list[fmpq]] = []
+    for n, i in _cases(level, kind, range(1, n_fit + 1)):
+        tgt = target(n, i, level)
+        basis = [_term_poly(u, n, i) for u in unknowns]
+        for d in range(max([tgt.degree()] + [p.degree() for p in basis]) + 1):
+            rows.append([p[d] for p in basis] + [tgt[d]])
+    if not rows:
+        return None
+    aug = fmpq_mat(len(rows), len(unknowns) + 1, [x for r in rows for x in r])
+    red, rank = aug.rref()
+    terms = []
+    for r in range(rank):
+        piv = next(c for c in range(len(unknowns) + 1) if red[r, c] != 0)
+        if piv == len(unknowns):
+            return None  # a row 0 = 1: inconsistent
+        terms.append((unknowns[piv], red[r, len(unknowns)]))
+    return Formula(level, kind, tuple((u, q) for u, q in sorted(terms) if q != 0))
+
+
+def predict(f: Formula, n: int, i: int) -> fmpq_poly:
+    out = fmpq_poly([0])
+    for u, q in f.terms:
+        out += _term_poly(u, n, i) * q
+    return out
+
+
+def check(f: Formula, ns) -> dict:
+    """Compare the formula with the closed forms for the given n: ``{"agrees_for_n": [...], "fails_for_n": [...]}``."""
+    good, bad = [], []
+    for n in ns:
+        cases = _cases(f.level, f.kind, [n])
+        if not cases:
+            continue
+        (good if all(predict(f, n, i) == target(n, i, f.level) for _, i in cases) else bad).append(n)
+    return {"agrees_for_n": good, "fails_for_n": bad}
+
+
+def latex(f: Formula) -> str:
+    """The formula in LaTeX, grouped by C_{n,i+k}."""
+    parts = []
+    for k in range(f.level + 1):
+        coeff = []
+        for (kk, e, a, b), q in f.terms:
+            if kk != k:
+                continue
+            mono = "".join(x for x in (_pow("c", e), _pow("i", a), _pow("n", b)) if x)
+            num, den = int(q.p), int(q.q)
+            mag = (f"\\tfrac{{{abs(num)}}}{{{den}}}" if den != 1 else str(abs(num)))
+            mag = "" if (mag == "1" and mono) else mag
+            coeff.append(("-" if num < 0 else "+", mag + mono))
+        if not coeff:
+            continue
+        body = "".join(f" {sg} {t}" for sg, t in coeff).strip()
+        body = body[2:] if body.startswith("+ ") else body
+        idx = "i" if k == 0 else f"i+{k}"
+        if f.kind == "diagonal":
+            idx = str(f.level + k)  # i = level
+        parts.append(f"\\left({body}\\right) C_{{n,{idx}}}")
+    return f"P_{{n,{f.level if f.kind == 'diagonal' else 'i'},{f.level}}}(c) = " + " + ".join(parts)
+
+
+def _pow(var: str, e: int) -> str:
+    return "" if e == 0 else (var if e == 1 else f"{var}^{{{e}}}")
+
+
+def printed_level_formulas() -> list[Formula]:
+    """Levels 0 and 1 as printed, in the same form (so they are checked by the same :func:`check`)."""
+    level0 = Formula(0, "all", (((0, 0, 0, 0), fmpq(1)),))
+    level1 = Formula(1, "interior", (((0, 1, 1, 0), fmpq(1)), ((1, 0, 0, 0), fmpq(1)), ((1, 0, 1, 0), fmpq(1))))
+    level1_diag = Formula(1, "diagonal", (((1, 0, 0, 0), fmpq(2)),))
+    return [level0, level1, level1_diag]

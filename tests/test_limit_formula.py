@@ -1,0 +1,95 @@
+"""The alpha -> 0 limit: closed formula of the limit factors, and cross-checks with the `bezier` package
+(a well-kept implementation of Bezier triangles that no one here wrote)."""
+
+from __future__ import annotations
+
+import mpmath
+import numpy as np
+import pytest
+from flint import fmpq
+
+from paper_repro.core.domain import rational_alpha
+from paper_repro.core.elevation import elevation_matrix_exact
+from paper_repro.core.labels import delta
+from paper_repro.core.limit_formula import (
+    limit_checks,
+    limit_factor,
+    limit_terms_formula,
+    monomials_rank,
+    partition_of_unity_holds,
+)
+from paper_repro.core.limits import bezier_limit, limit_terms
+from paper_repro.surfaces.patch import Patch
+
+bezier = pytest.importorskip("bezier")
+
+
+def _triangle(n_deg: int, bez: dict) -> bezier.Triangle:
+    """bezier's node order: (i, j) = powers of (s, t), j outer; weight s^i t^j (1-s-t)^(N-i-j).
+    With s = x, t = y, 1-s-t = z the node (i, j) is our p_{i, j, N-i-j}."""
+    nodes = [bez[(i, j, n_deg - i - j)] for j in range(n_deg + 1) for i in range(n_deg + 1 - j)]
+    return bezier.Triangle(np.asfortranarray(np.array(nodes, dtype=np.float64).T), degree=n_deg)
+
+
+@pytest.mark.parametrize("n", [1, 2, 3, 4, 5, 6])
+def test_formula_equals_limits_of_the_closed_forms(n):
+    assert limit_terms(n) == limit_terms_formula(n)
+
+
+def test_formula_printed_examples():
+    # n = 1: R-bar_{2,1,1} -> 0 (centre), R-bar_{2,1,0} -> 2 x z (Bernstein)
+    assert limit_factor(1, 1, 1) == 0 and limit_factor(1, 1, 0) == 2
+    # a level-1 diagonal and an interior factor, from the definition (2n+j)!/(a! b! c!) * rho
+    assert limit_factor(3, 1, 1) == fmpq(5040, 120) * fmpq(5, 7)
+    assert limit_factor(3, 3, 2) == fmpq(40320, 6 * 2 * 6) * fmpq(6, 8)
+
+
+def test_checks_fail_for_a_wrong_formula(monkeypatch):
+    import paper_repro.core.limit_formula as lf
+
+    good = lf.limit_factor
+    monkeypatch.setattr(lf, "limit_factor", lambda n, i, j: good(n, i, j) * (2 if (i, j) == (2, 1) else 1))
+    assert not partition_of_unity_holds(3)
+    monkeypatch.setattr(lf, "limit_factor", good)
+    assert limit_checks(3)["partition_of_unity"] and monomials_rank(3) == delta(3)
+
+
+@pytest.mark.parametrize("n", [1, 2, 3])
+def test_limit_net_in_bezier_equals_the_limit_of_the_trigonometric_patch(n):
+    """Trigonometric patch at alpha = 2^-9 and 2^-10 (mpmath, 40 digits), Richardson-extrapolated (the error
+    is O(alpha^2)), against bezier.Triangle of degree 3n - 1 with our limit net."""
+    net = np.random.default_rng(n).integers(-9, 10, size=(delta(n), 3)).astype(float)
+    deg, bez = bezier_limit(net, n)
+    assert deg == 3 * n - 1
+    tri = _triangle(deg, bez)
+    xy = np.array([[1 / 8, 1 / 4], [1 / 2, 1 / 8], [3 / 8, 3 / 8], [1 / 16, 3 / 4], [0.0, 0.5]])
+    ours = tri.evaluate_cartesian_multi(np.asfortranarray(xy)).T
+    vals = []
+    with mpmath.workdps(40):
+        for k in (9, 10):
+            alpha = mpmath.mpf(2) ** -k
+            pts = np.array([[alpha * mpmath.mpf(x), alpha * mpmath.mpf(y), alpha * (1 - mpmath.mpf(x) - mpmath.mpf(y))]
+                            for x, y in xy], dtype=object)
+            vals.append(Patch(n, alpha, net)(pts, arith="mp", dps=40))
+        limit = (4 * vals[1] - vals[0]) / 3
+    err = np.max(np.abs(np.array(limit, dtype=float) - ours))
+    assert err < 1e-9 * max(1.0, np.max(np.abs(ours)))
+    assert np.max(np.abs(np.array(vals[1], dtype=float) - ours)) > 1e-9  # the extrapolation is not idle
+
+
+@pytest.mark.parametrize("n", [1, 2])
+def test_limit_of_trigonometric_elevation_is_bezier_elevate_three_times(n):
+    """limit(E(alpha) net, order n+1) at two small rational alpha, extrapolated, equals
+    Triangle(limit net, 3n-1).elevate().elevate().elevate() (degree 3n+2)."""
+    net = np.random.default_rng(10 + n).integers(-9, 10, size=(delta(n), 3)).astype(float)
+    deg, bez = bezier_limit(net, n)
+    tri = _triangle(deg, bez).elevate().elevate().elevate()
+    lims = []
+    for t in (fmpq(1, 200), fmpq(1, 400)):
+        e = np.array([[float(x) for x in row] for row in elevation_matrix_exact(n, rational_alpha(t))])
+        deg1, bez1 = bezier_limit(e @ net, n + 1)
+        assert deg1 == 3 * n + 2
+        lims.append(np.array([bez1[(i, j, deg1 - i - j)] for j in range(deg1 + 1) for i in range(deg1 + 1 - j)]))
+    extrapolated = (4 * lims[1] - lims[0]) / 3
+    err = np.max(np.abs(extrapolated - tri.nodes.T))
+    assert err < 1e-7 * np.max(np.abs(tri.nodes))
