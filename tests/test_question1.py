@@ -169,3 +169,41 @@ def test_published_level_formulas_match_an_independent_exact_solve():
             assert value == exact[f"r_{{{2 * n},{2 * n - i},{j}}}"], (j, e["kind"], i)
             checked += 1
     assert checked > 40
+
+
+def test_matrix_identity_proof_rejects_a_changed_entry():
+    """The elevation closed forms prove; changing one non-zero entry makes the identity fail."""
+    from paper_repro.core import elevation_forms as ef
+    from paper_repro.core.matrix_forms import EntryForm, prove_matrix_identity
+
+    res = ef.closed_forms_and_proof("elevation", 1)["M"]
+    assert res["proof"]["proved"] and res["proof"]["points_unisolvent"]
+    forms = [list(row) for row in res["forms"]]
+    i, j = next((i, j) for i, row in enumerate(forms) for j, e in enumerate(row) if not e.is_zero())
+    e = forms[i][j]
+    forms[i][j] = EntryForm(e.K, e.P + fmpq_poly([0, 1]), e.Q)
+    pts = ef._plane(19, 2, seed=31)
+    from paper_repro.core.context import ExactContext, to_fmpq_mat
+
+    def at(values):
+        return lambda t: to_fmpq_mat(values(rational_alpha(t), pts, ExactContext()))
+
+    out = prove_matrix_identity(forms, at(ef._t_functions(2)), at(ef._t_functions(1)), 4, 2)
+    assert not out["proved"]
+
+
+def test_elevation_forms_agree_with_the_exact_elevation_matrix():
+    """Independent route: the normalized exact elevation matrix E (core.elevation, collocation with the
+    normalized bases) equals x_f M_gf / x_g with M from the closed forms, at a rational alpha."""
+    from paper_repro.core.elevation import elevation_matrix_exact
+    from paper_repro.core.elevation_forms import closed_forms_and_proof
+    from paper_repro.core.normalization import coefficient_vector
+
+    n, t = 2, fmpq(2, 9)
+    forms = closed_forms_and_proof("elevation", n)["M"]["forms"]
+    a = rational_alpha(t)
+    x_n, x_n1 = coefficient_vector(n, a, "exact"), coefficient_vector(n + 1, a, "exact")
+    e = elevation_matrix_exact(n, a)
+    for g, row in enumerate(forms):
+        for f, entry in enumerate(row):
+            assert e[g][f] == x_n[f] * entry.value(t) / x_n1[g]

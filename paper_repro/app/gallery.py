@@ -33,12 +33,13 @@ OPEN_QUESTIONS = [
      "Closed forms and positivity for every n (proven here for n ≤ 30); formulas of the levels above those "
      "listed below and of the centre; proofs of the level formulas for all n."),
     ("Question 7.2 (que:open_problem_basis_transformation): the basis transformation between T̄ and V",
-     ["basis_transformation", "coincidence"], "Closed forms in cos(α/2), sin(α/2): not found."),
+     ["basis_transformation", "coincidence", "transformation_closed_forms"],
+     "Closed forms for n ≥ 4 and a general pattern for all n."),
     ("Question 7.3 (que:limiting_case): the α → 0 limit of the patches", ["bernstein_limit", "bezier_limit_degree",
-                                                                        "bezier_conversion"],
-     "A proof for all n: not found."),
-    ("Order elevation (Example 7.2 and the text after it)", ["order_elevation"],
-     "Closed forms of the elevation weights and a proof of their non-negativity: not found."),
+                                                                        "bezier_conversion", "limit_formula"],
+     "A proof for all n (two finite facts, checked to n = 40, are open for all n)."),
+    ("Order elevation (Example 7.2 and the text after it)", ["order_elevation", "elevation_closed_forms"],
+     "Closed forms and non-negativity for n ≥ 4 (evidence only)."),
 ]
 
 _MATH_TOKEN = re.compile(r"\$([^$]+)\$|"
@@ -280,11 +281,14 @@ def gallery_html(manifest: list[dict], view_specs: dict[str, dict] | None = None
     else:
         p.append("<p>No benchmark report yet (<code>make bench</code>).</p>")
     s = pmap.get("summary", {})
-    p.append(f'<h2 id="map">Paper map</h2><p>{s.get("labels", 0)} labels; {s.get("covered_by_claim_or_figure", 0)} '
-             "checked by a claim or figure.</p>")
-    p.append(_table(["in the PDF", "label", "claims", "figures"],
+    p.append(f'<h2 id="map">Paper map</h2><p>{s.get("labels", 0)} labels: {s.get("covered_by_claim_or_figure", 0)} '
+             f'checked by a claim or figure, {len(s.get("excused", []))} excused (nothing to compute; reason given), '
+             f'{len(s.get("neither_checked_nor_excused", []))} neither.</p>')
+    p.append(_table(["in the PDF", "label", "claims", "figures", "excused because"],
                     [[html.escape(r.get("paper", "")), f"<code>{html.escape(r['label'])}</code>",
-                      ", ".join(r["claims"]), ", ".join(r["figures"])] for r in pmap.get("labels", [])]))
+                      ", ".join(r["claims"]), ", ".join(r["figures"]),
+                      html.escape(r.get("excused", "")) if not (r["claims"] or r["figures"]) else ""]
+                     for r in pmap.get("labels", [])]))
     p.append("</body></html>\n")
     return "\n".join(p)
 

@@ -11,6 +11,7 @@ import mpmath
 import numpy as np
 from flint import fmpq
 
+from paper_repro.core.closed_forms import proof_cached
 from paper_repro.core.labels import index_of, united_system
 from paper_repro.core.limits import bernstein_index, conversion_matrix, limit_degree, limit_terms, multinomial
 from paper_repro.core.normalization import evaluate_normalized
@@ -71,15 +72,15 @@ def run_limit(n_max, convergence_ns, ks, grid, dps) -> Outcome:
         "max_error": errors, "levels_whose_limit_is_exactly_the_Bernstein_polynomial": exact_bernstein_levels,
         "note": "level 0 limits are the Bernstein polynomials P^{2n}_{a,0,c}; for n >= 2 higher levels are rational "
                 "multiples of P^{2n+j}_{a,b,c} (data/limits/limit_terms.json)",
-        "scope": "limit coefficients exact from closed forms (proven for n <= 5, evidence beyond); convergence "
-                 "order numeric"}, data=data)
+        "scope": "limit coefficients exact from the closed forms, proven for every alpha for these n (claim "
+                 "nonnegativity_extended); the convergence order is numeric evidence"}, data=data)
 
 
 @claim("bezier_limit_degree", paper_ref=["que:limiting_case"],
-       statement="Question que:limiting_case answered for n = 1..{n_max} (evidence; no proof for all n): the"
-                 " alpha -> 0 limit of an order-n patch is a "
+       statement="Question que:limiting_case answered for n = 1..{n_max} (proof for these n; for all n see claim "
+                 "limit_formula): the alpha -> 0 limit of an order-n patch is a "
                  "Bezier triangle of degree exactly 3n-1 (levels j give degrees 2n+j, the centre vanishes).",
-       kind="exact-evidence", n_max=10)
+       kind="proof", n_max=10)
 def run_degree(n_max) -> Outcome:
     rows = {}
     for n in range(1, n_max + 1):
@@ -88,10 +89,11 @@ def run_degree(n_max) -> Outcome:
                         "centre_vanishes": limit_terms(n)[0][0] == 0}
     ok = all(r["degree"] == 3 * int(n) - 1 and r["centre_vanishes"] and r["degrees_present"] ==
              list(range(2 * int(n), 3 * int(n))) for n, r in rows.items())
+    ok &= all(proof_cached(n)["proved"] for n in range(1, n_max + 1))
     return Outcome(ok, {"per_n": rows, "rational_patches": "weights and weighted points convert with the same "
                                                           "matrix (homogeneous coordinates): a rational Bezier "
                                                           "triangle of degree 3n-1",
-                        "scope": "exact limit coefficients (closed forms proven for n <= 5, evidence beyond)"})
+                        "scope": "exact limit coefficients from the closed forms, proven for every alpha for these n"})
 
 
 def _render(terms: dict[str, fmpq]) -> str:

@@ -51,7 +51,7 @@ def node_distance(net: np.ndarray, n: int, alpha: float) -> float:
                  "general elevation n->n+1 exists (V_n in V_{n+1}) and its weights are non-negative at all sampled "
                  "alpha (tan(alpha/4) in {ts}) for n = 1..{n_max} (evidence).",
        kind="exact-evidence", ts=["1/20", "1/7", "1/3", "1/2", "2/3", "9/10", "19/20"], n_max=6, random_nets=20,
-       seed=17, chain_alpha="2/5", chain_orders=6)
+       seed=17, chain_alpha="2/5", chain_orders=6, extended={"n_max": 8})
 def run(ts, n_max, random_nets, seed, chain_alpha, chain_orders) -> Outcome:
     alphas = [rational_alpha(fmpq(*map(int, t.split("/")))) for t in ts]
     printed_ok = {t: printed_matrix(a) == elevation_matrix_exact(1, a) for t, a in zip(ts, alphas)}

@@ -16,76 +16,16 @@ its derivatives along the parametrizations of the proof factor: derivatives at 0
 
 from __future__ import annotations
 
-from math import comb
 from pathlib import Path
 
-import mpmath
 import numpy as np
-from flint import fmpq
 
-from paper_repro.core.derivatives import mixed_derivative
+from paper_repro.core.elimination import deriv_at_0, elimination
 from paper_repro.core.labels import exponents, united_system
 from paper_repro.core.layout import position
 from paper_repro.util.registry import figure
 
 from . import COLOR_OF, plt, save
-
-HALF = fmpq(1, 2)
-
-
-def _factor(e: tuple[int, ...], var: int) -> tuple[int, int]:
-    """(sin power, cos power) of variable ``var`` (0 = u, 1 = v, 2 = w) in exponent vector ``e``."""
-    return e[2 * var], e[2 * var + 1]
-
-
-def deriv_at_0(e, var: int, z: int) -> fmpq:
-    s, c = _factor(e, var)
-    return mixed_derivative(c, HALF, s, HALF, z)
-
-
-def deriv_at(e, var: int, z: int, x: mpmath.mpf) -> mpmath.mpf:
-    s, c = _factor(e, var)
-    if s == 0 and c == 0:
-        return mpmath.mpf(1 if z == 0 else 0)
-    return mpmath.diff(lambda t: mpmath.sin(t / 2) ** s * mpmath.cos(t / 2) ** c, x, z)
-
-
-# (variable set to 0 by the substitution, the variable running with it, the third) for each
-# parametrization of the proof; the derivative of order r is sum_k C(r,k) (-1)^k d^{r-k}_first d^k_second
-PARAMS = {"parametrization_1_y_0": (1, 2, 0), "parametrization_2_x_0": (0, 1, 2),
-          "parametrization_3_y_0": (2, 0, 1)}
-
-
-def nonvanishing(e, param: str, r: int, alpha: mpmath.mpf) -> bool:
-    """Whether the r-th derivative of the function along ``param`` at the boundary is non-zero."""
-    zero_var, other, fixed = PARAMS[param]
-    with mpmath.workdps(30):
-        for x in (alpha / 3, alpha * 5 / 7):
-            total = mpmath.mpf(0)
-            for k in range(r + 1):
-                d0 = deriv_at_0(e, zero_var, r - k)
-                if d0 == 0:
-                    continue
-                total += comb(r, k) * (-1) ** k * mpmath.mpf(int(d0.p)) / int(d0.q) * deriv_at(e, other, k, alpha - x)
-            total *= deriv_at(e, fixed, 0, x)
-            if abs(total) > mpmath.mpf(10) ** -20:
-                return True
-    return False
-
-
-def elimination(n: int, alpha: float = 1.0) -> list[dict]:
-    """The steps of the proof: list of {r, param, alive_before, nonvanishing} (indices into T_{2n})."""
-    labels = united_system(n)
-    alive = set(range(len(labels)))
-    steps = []
-    for r in range(n):
-        for param in PARAMS:
-            nz = {k for k in alive if nonvanishing(exponents(labels[k]), param, r, mpmath.mpf(alpha))}
-            steps.append({"r": r, "param": param, "alive_before": sorted(alive), "nonvanishing": sorted(nz)})
-            alive -= nz
-    if alive != {0}:
-        raise AssertionError(f"elimination for n={n} leaves {[labels[k].paper for k in sorted(alive)]}")
-    return steps
 
 
 def _draw_step(ax, n: int, step: dict, title: str) -> None:

@@ -91,6 +91,8 @@ CLAIM_MODULES = (
     "paper_repro.claims.nonnegativity",
     "paper_repro.claims.general_formulas",
     "paper_repro.claims.limit_formula",
+    "paper_repro.claims.independence_proof",
+    "paper_repro.claims.matrix_closed_forms",
     "paper_repro.claims.linear_independence",
     "paper_repro.claims.derivative_signs",
     "paper_repro.claims.equivalence_classes",
