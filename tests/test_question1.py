@@ -207,3 +207,21 @@ def test_elevation_forms_agree_with_the_exact_elevation_matrix():
     for g, row in enumerate(forms):
         for f, entry in enumerate(row):
             assert e[g][f] == x_n[f] * entry.value(t) / x_n1[g]
+
+
+def test_values_modp_skips_a_singular_shape_parameter(monkeypatch):
+    """A shape parameter at which every point set is singular modulo p is replaced by the next one."""
+    from paper_repro.core import modular
+
+    real = modular.ReducedSystemModp.solve
+
+    def solve(self, alpha):
+        if alpha.t == fmpq(1, 3):
+            raise ZeroDivisionError("singular")
+        return real(self, alpha)
+
+    monkeypatch.setattr(modular.ReducedSystemModp, "solve", solve)
+    vals, alphas = modular.values_modp(2, primes_below()[0], 4)
+    assert [a.t for a in alphas] == [fmpq(1, 2), fmpq(1, 4), fmpq(1, 5), fmpq(1, 6)] and vals.shape == (4, 6)
+    forms = recover_modular(2)
+    assert prove(2, forms)["proved"]

@@ -63,7 +63,8 @@ class EntryForm:
         if not self.Q.is_zero():
             q = _poly_latex(self.Q)
             num = (f"{num} + s\\left({q}\\right)" if not self.P.is_zero() else f"s\\left({q}\\right)")
-        return num if self.K == 0 else f"\\frac{{{num}}}{{s^{{{self.K}}}}}"
+        den = "s" if self.K == 1 else f"s^{{{self.K}}}"
+        return num if self.K == 0 else f"\\frac{{{num}}}{{{den}}}"
 
 
 def _poly_latex(p: fmpq_poly) -> str:

@@ -100,15 +100,28 @@ class ReducedSystemModp:
         return _nmod_solve(a, np.ones((a.shape[0], 1), dtype=np.int64), self.p).reshape(-1)
 
 
-def values_modp(n: int, p: int, count: int) -> np.ndarray:
-    """``(count, m)`` array: the orbit coefficients modulo p at the first ``count`` shape parameters."""
-    for seed in range(8):  # a point set singular modulo p at some alpha is replaced by the next one
-        system = ReducedSystemModp(n, p, seed)
-        try:
-            return np.array([system.solve(alpha) for alpha in shape_parameters(count)])
-        except ZeroDivisionError:
-            continue
-    raise ArithmeticError(f"recovery n={n}: 8 point sets singular modulo {p}")
+def values_modp(n: int, p: int, count: int) -> tuple[np.ndarray, list]:
+    """``(values, alphas)``: the orbit coefficients modulo p, ``(count, m)``, at ``count`` shape parameters.
+
+    The solution does not depend on the collocation points, so at each alpha the first of up to 4 point sets
+    that is non-singular modulo p is used; an alpha where all are singular is skipped for the next one.
+    """
+    systems: dict[int, ReducedSystemModp] = {}
+    rows, used, k = [], [], 2
+    while len(rows) < count:
+        alpha = rational_alpha(fmpq(1, k))
+        k += 1
+        if k > 10 * count + 50:
+            raise ArithmeticError(f"recovery n={n}: too many shape parameters singular modulo {p}")
+        for seed in range(4):
+            system = systems.setdefault(seed, ReducedSystemModp(n, p, seed))
+            try:
+                rows.append(system.solve(alpha))
+            except ZeroDivisionError:
+                continue
+            used.append(alpha)
+            break
+    return np.array(rows), used
 
 
 def numerators_modp(n: int, p: int, degree: int, verify: int) -> np.ndarray | None:
@@ -116,9 +129,8 @@ def numerators_modp(n: int, p: int, degree: int, verify: int) -> np.ndarray | No
     ``None`` if the interpolants fail at the ``verify`` further shape parameters."""
     orb = orbits(n)
     count = degree + 1 + verify
-    vals = values_modp(n, p, count)
+    vals, alphas = values_modp(n, p, count)
     ctx = ModpContext(p=p)
-    alphas = shape_parameters(count)
     cs = np.array([ctx.from_rational(a.cos_half) for a in alphas], dtype=np.int64)
     ss = np.array([ctx.from_rational(a.sin_half) for a in alphas], dtype=np.int64)
     ks = [2 * n + rep.j for rep, _ in orb]
