@@ -91,6 +91,10 @@ def run_transformation(n_max: int) -> Outcome:
             md.append(_table(res["N_inverse"]["forms"], t_labels, v_labs,
                              f"n = {n}: N^-1 (V_{n} = T_{{{2 * n}}} N^-1)"))
     data["basis_transformation/closed_forms.md"] = "\n".join(md)
+    poly_n = [n for n, v in per_n.items() if v["N"]["max_sin_power"] == 0]
+    pattern = (f"N (T_{{2n}} in the Fourier basis): every entry a polynomial in c and s for n in {poly_n}; "
+               "N^-1: largest power of s in a denominator " + ", ".join(
+                   f"{v['N_inverse']['max_sin_power']} (n = {n})" for n, v in per_n.items())
+               + " -- observed, not proven beyond these n")
     return Outcome(ok, {"per_n": per_n, "scope": f"proof for every alpha, n = 1..{n_max} (n = 3 tables in JSON only)",
-                        "pattern": "N entries are polynomials in c and s (no denominator, K = 0 after reduction) "
-                                   "where the max_sin_power is 0; see per_n"}, data=data)
+                        "pattern": pattern}, data=data)

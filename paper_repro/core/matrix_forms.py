@@ -90,6 +90,8 @@ def _reduce(e: EntryForm) -> EntryForm:
         p, q, k = q, fmpq_poly([0]), k - 1
     while k >= 2 and (p % one_minus).is_zero() and (q % one_minus).is_zero() and not (p.is_zero() and q.is_zero()):
         p, q, k = p // one_minus, q // one_minus, k - 2
+    if k == 1 and not p.is_zero() and (p % one_minus).is_zero():  # (P + sQ)/s = Q + s P/(1 - c^2)
+        p, q, k = q, p // one_minus, 0
     if p.is_zero() and q.is_zero():
         k = 0
     return EntryForm(k, p, q)
