@@ -17,6 +17,7 @@ from paper_repro.core.limit_formula import (
     limit_terms_formula,
     monomials_rank,
     partition_of_unity_holds,
+    uniform_factor,
 )
 from paper_repro.core.limits import bezier_limit, limit_terms
 from paper_repro.surfaces.patch import Patch
@@ -93,3 +94,43 @@ def test_limit_of_trigonometric_elevation_is_bezier_elevate_three_times(n):
     extrapolated = (4 * lims[1] - lims[0]) / 3
     err = np.max(np.abs(extrapolated - tri.nodes.T))
     assert err < 1e-7 * np.max(np.abs(tri.nodes))
+
+
+@pytest.mark.parametrize("n", [1, 2, 3, 4, 7])
+def test_lemmas_of_the_proof_for_every_n_hold(n):
+    r = limit_checks(n)
+    assert r["exponent_set"] and r["uniform_factor"] and r["telescoping"] and r["partition_of_unity"]
+    assert r["monomials_independent"] and r["degree"] == 3 * n - 1
+
+
+def test_lemma_checks_can_fail(monkeypatch):
+    """Each lemma check rejects a wrong input: a duplicated exponent triple, a wrong factor, a wrong
+    multinomial in the telescoping identity."""
+    import paper_repro.core.limit_formula as lf
+
+    good_terms = lf.limit_terms_formula
+    monkeypatch.setattr(lf, "limit_terms_formula", lambda n: good_terms(n)[:-1] + [good_terms(n)[0]])
+    assert not lf.exponent_set_characterised(3)
+    monkeypatch.setattr(lf, "limit_terms_formula", good_terms)
+    good = lf.limit_factor
+    monkeypatch.setattr(lf, "limit_factor", lambda n, i, j: good(n, i, j) + (1 if (i, j) == (3, 1) else 0))
+    assert not lf.uniform_factor_agrees(3)
+    monkeypatch.setattr(lf, "limit_factor", good)
+    good_m = lf._multinomial
+    monkeypatch.setattr(lf, "_multinomial", lambda s: good_m(s) + (1 if s == (2, 2, 1) else 0))
+    assert not lf.telescoping_holds(2)
+
+
+def test_uniform_factor_by_hand():
+    # s = (3, 1, 1), n = 2: multinomial 20, minimum 1 twice: 20 - 2 * 4!/(3! 0! 1!) = 12 = 20 * (5 - 2)/5
+    assert uniform_factor((3, 1, 1)) == 12
+    # centre (2, 2, 2): 90 - 3 * 30 = 0
+    assert uniform_factor((2, 2, 2)) == 0
+
+
+@pytest.mark.parametrize("n", [1, 2, 3, 5])
+def test_conversion_rows_are_convex_combinations_from_both_sources(n):
+    from paper_repro.core.limits import conversion_is_convex, conversion_matrix
+
+    assert conversion_is_convex(n, "formula") and conversion_is_convex(n, "closed_forms")
+    assert conversion_matrix(n, "formula") == conversion_matrix(n, "closed_forms")

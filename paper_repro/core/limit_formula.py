@@ -1,28 +1,32 @@
-"""Closed formula of the alpha -> 0 limit factors (Question que:limiting_case) and what it rests on.
+"""Closed formula of the alpha -> 0 limit factors (Question que:limiting_case), proven for every n.
 
 With u = alpha x, v = alpha y, w = alpha z (x + y + z = 1), the normalized function
 ``R-bar_{2n,2n-i,j}`` tends to ``L x^{2n-i} y^j z^i`` (:mod:`paper_repro.core.limits`; G and B by the
-cyclic rule).  The factor found from the proven closed forms (``L = P(1)``) is, for every n checked,
+cyclic rule), with
 
     L_{n,i,j} = (2n+j)! / ((2n-i)! j! i!) * rho,   rho = 1 (j = 0), (2n-j)/(2n+j) (i = j or i = 2n-j, j >= 1),
                                                  2n/(2n+j) (j < i < 2n-j),   and L = 0 for the centre (i = j = n),
 
-:func:`limit_factor`.  Three facts make it a theorem for a given n (:func:`limit_checks`):
+:func:`limit_factor`.  The written proof for every n is ``docs/limit_for_all_n.md``; its four lemmas are
+finite statements per n, checked exactly here (:func:`limit_checks`):
 
-(A) T_{2n}^alpha is linearly independent for all small alpha (paper, Theorem joint_systems_linear_independence;
-    our rank certificates show it off a finite set of alpha for n <= 40);
-(B) ``sum_f L_f x^a y^b z^c = 1`` on the simplex (an exact polynomial identity, homogenised to degree 3n);
-(C) the delta_n limit monomials x^a y^b z^c (centre included) are linearly independent on the simplex
-    (full rank modulo p of their homogenised coefficient matrix).
+1. the sine-exponent triples s of T_{2n} are distinct and are exactly the s in N^3 whose two largest entries
+   sum to 2n (:func:`exponent_set_characterised`);
+2. uniformly, ``L_s = multinomial(s) - sum_{k: s_k = min s} multinomial(s - e_k)`` (:func:`uniform_factor`);
+3. the telescoping identity ``Q_j (x+y+z) = P_{j+1} - B_{j+1}`` of Pascal's rule (:func:`telescoping_holds`),
+   from which (B) ``sum_f L_f x^a y^b z^c = 1`` on the simplex follows (also checked directly,
+   :func:`partition_of_unity_holds`);
+4. (C) the delta_n limit monomials (centre included) are linearly independent on the simplex (written proof by
+   peeling the edges; checked as the full rank modulo p of their homogenised coefficient matrix,
+   :func:`monomials_rank`).
 
-Proof for that n, given (A): with scaled coefficients y_f = r_f sin^{2n+j}(alpha/2) the partition of unity
-reads sum_f y_f(alpha) [f(alpha x, alpha y, alpha z) / sin^{2n+j}(alpha/2)] = 1, whose collocation matrix at
-delta_n points of the simplex tends to that of the limit monomials, non-singular by (C); so y(alpha) tends to
-the unique solution of sum_f y_f x^a y^b z^c = 1, which is L by (B).  (B) and (C) are finite computations
-per n, much cheaper than the closed forms, and are checked far beyond them; for *all* n they are open.
+The theorem then follows by continuity and needs neither the paper's independence theorem nor the closed
+forms: the scaled collocation matrix of T_{2n}^alpha tends to the non-singular one of the limit monomials.
 
 >>> limit_factor(2, 2, 1), limit_factor(2, 1, 1), limit_factor(2, 2, 2)
 (24, 12, 0)
+>>> uniform_factor((3, 1, 1)) == limit_factor(2, 1, 1)
+True
 """
 
 from __future__ import annotations
@@ -60,6 +64,71 @@ def limit_terms_formula(n: int) -> list[tuple[fmpq, tuple[int, int, int]]]:
         e = exponents(lab)
         out.append((limit_factor(n, lab.i, lab.j), (e[0], e[2], e[4])))
     return out
+
+
+def _multinomial(s: tuple[int, int, int]) -> int:
+    if min(s) < 0:
+        return 0
+    return factorial(sum(s)) // (factorial(s[0]) * factorial(s[1]) * factorial(s[2]))
+
+
+def uniform_factor(s: tuple[int, int, int]) -> fmpq:
+    """Lemma 2: ``L_s = multinomial(s) - sum over the minimal entries k of multinomial(s - e_k)``
+    (= multinomial(s) (|s| - t m) / |s| with m = min s attained t times)."""
+    m = min(s)
+    total = _multinomial(s)
+    for k in range(3):
+        if s[k] == m:
+            total -= _multinomial(tuple(v - (q == k) for q, v in enumerate(s)))
+    return fmpq(total)
+
+
+def exponent_set_characterised(n: int) -> bool:
+    """Lemma 1: the exponent triples of T_{2n} (from the paper's formulas, :mod:`paper_repro.core.labels`) are
+    distinct and are exactly {s in N^3 : the two largest entries of s sum to 2n}."""
+    got = [t for _, t in limit_terms_formula(n)]
+    want = {(a, b, c) for a in range(2 * n + 1) for b in range(2 * n + 1) for c in range(2 * n + 1)
+            if a + b + c - min(a, b, c) == 2 * n}
+    return len(set(got)) == len(got) and set(got) == want
+
+
+def uniform_factor_agrees(n: int) -> bool:
+    """Lemma 2 for one n: the case-wise :func:`limit_factor` equals :func:`uniform_factor` on every function."""
+    return all(c == uniform_factor(t) for c, t in limit_terms_formula(n))
+
+
+def _poly_sum(terms) -> dict[tuple[int, int, int], int]:
+    out: dict[tuple[int, int, int], int] = defaultdict(int)
+    for key, v in terms:
+        out[key] += v
+    return {k: v for k, v in out.items() if v != 0}
+
+
+def _layers(n: int, j: int) -> dict[str, dict[tuple[int, int, int], int]]:
+    """The homogeneous polynomials of degree 2n + j of the proof of Lemma 3 (as {exponent: coefficient}):
+    P_j (min s >= j), Q_j (min s >= j + 1), B_j (min s = j, each minimal entry k contributes multinomial(s - e_k))."""
+    d = 2 * n + j
+    triples = [(a, b, d - a - b) for a in range(d + 1) for b in range(d + 1 - a)]
+    p = _poly_sum((s, _multinomial(s)) for s in triples if min(s) >= j)
+    q = _poly_sum((s, _multinomial(s)) for s in triples if min(s) >= j + 1)
+    b = _poly_sum((s, _multinomial(tuple(v - (t == k) for t, v in enumerate(s))))
+                  for s in triples if min(s) == j for k in range(3) if s[k] == j)
+    return {"P": p, "Q": q, "B": b}
+
+
+def telescoping_holds(n: int) -> bool:
+    """Lemma 3 for one n: ``Q_j (x+y+z) = P_{j+1} - B_{j+1}`` exactly for j = 0..n, and the ends
+    ``P_0 = (x+y+z)^{2n}``, ``B_0 = 0``, ``P_{n+1} = B_{n+1} = 0``."""
+    layers = [_layers(n, j) for j in range(n + 2)]
+    for j in range(n + 1):
+        lhs = _poly_sum(((s[0] + (k == 0), s[1] + (k == 1), s[2] + (k == 2)), v)
+                        for s, v in layers[j]["Q"].items() for k in range(3))
+        rhs = _poly_sum(list(layers[j + 1]["P"].items()) + [(s, -v) for s, v in layers[j + 1]["B"].items()])
+        if lhs != rhs:
+            return False
+    d = 2 * n
+    sigma = {(a, b, d - a - b): _multinomial((a, b, d - a - b)) for a in range(d + 1) for b in range(d + 1 - a)}
+    return (layers[0]["P"] == sigma and not layers[0]["B"] and not layers[n + 1]["P"] and not layers[n + 1]["B"])
 
 
 def _homogenised(n: int) -> list[dict[tuple[int, int], int]]:
@@ -102,10 +171,12 @@ def monomials_rank(n: int) -> int:
 
 
 def limit_checks(n: int) -> dict:
-    """(B) and (C) for one n."""
+    """Lemmas 1-3, (B) and (C) for one n."""
     d = len(united_system(n))
     rank = monomials_rank(n)
-    return {"n": n, "partition_of_unity": partition_of_unity_holds(n), "monomials_rank": rank, "delta_n": d,
+    return {"n": n, "exponent_set": exponent_set_characterised(n), "uniform_factor": uniform_factor_agrees(n),
+            "telescoping": telescoping_holds(n),
+            "partition_of_unity": partition_of_unity_holds(n), "monomials_rank": rank, "delta_n": d,
             "monomials_independent": rank == d, "degree": max(sum(t) for c, t in limit_terms_formula(n) if c != 0)}
 
 

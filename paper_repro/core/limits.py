@@ -39,9 +39,19 @@ def limit_terms(n: int) -> list[tuple[fmpq, tuple[int, int, int]]]:
     return out
 
 
-def limit_degree(n: int) -> int:
+def _terms(n: int, source: str) -> list[tuple[fmpq, tuple[int, int, int]]]:
+    if source == "closed_forms":
+        return limit_terms(n)
+    if source == "formula":
+        from paper_repro.core.limit_formula import limit_terms_formula
+
+        return limit_terms_formula(n)
+    raise ValueError(f"source must be 'closed_forms' or 'formula', got {source!r}")
+
+
+def limit_degree(n: int, source: str = "closed_forms") -> int:
     """N = the largest degree with a non-zero limit."""
-    return max(sum(t) for c, t in limit_terms(n) if c != 0)
+    return max(sum(t) for c, t in _terms(n, source) if c != 0)
 
 
 def bernstein_index(t: tuple[int, int, int]) -> str:
@@ -57,17 +67,21 @@ def bezier_indices(N: int) -> list[tuple[int, int, int]]:
     return [(d, e, N - d - e) for d in range(N, -1, -1) for e in range(0, N - d + 1)]
 
 
-def conversion_matrix(n: int) -> tuple[list[tuple[int, int, int]], list[list[fmpq]]]:
+def conversion_matrix(n: int, source: str = "closed_forms") -> tuple[list[tuple[int, int, int]], list[list[fmpq]]]:
     """Exact weights W with Bezier point p_{def} = sum_f W[def][f] (control point f), degree N.
 
-    Each limit P_f(1) x^a y^b z^c (x+y+z)^{N-m} is expanded; its coefficient of x^d y^e z^f divided by
-    the multinomial N!/(d!e!f!) is the weight of control point f in p_{def}.
+    Each limit L_f x^a y^b z^c (x+y+z)^{N-m} is expanded; its coefficient of x^d y^e z^f divided by
+    the multinomial N!/(d!e!f!) is the weight of control point f in p_{def}:
+    ``W[r][f] = L_f multinomial(N - m; r - s_f) / multinomial(N; r)``.  ``source="closed_forms"`` takes
+    L_f = P_f(1) from the closed forms (proven for every alpha, n <= 30); ``source="formula"`` from the limit
+    formula, proven for every n (docs/limit_for_all_n.md).
     """
-    N = limit_degree(n)
+    terms = _terms(n, source)
+    N = max(sum(t) for c, t in terms if c != 0)
     idx = bezier_indices(N)
     pos = {t: k for k, t in enumerate(idx)}
     w = [[fmpq(0)] * delta(n) for _ in idx]
-    for f, (c, (a, b, cc)) in enumerate(limit_terms(n)):
+    for f, (c, (a, b, cc)) in enumerate(terms):
         if c == 0:
             continue
         k = N - (a + b + cc)
@@ -80,13 +94,21 @@ def conversion_matrix(n: int) -> tuple[list[tuple[int, int, int]], list[list[fmp
     return idx, w
 
 
+def conversion_is_convex(n: int, source: str = "closed_forms") -> bool:
+    """Every Bezier point of the limit is a convex combination: weights >= 0, each row summing to 1 (exact)."""
+    _, w = conversion_matrix(n, source)
+    return all(x >= 0 for row in w for x in row) and all(sum(row) == 1 for row in w)
+
+
 def bezier_limit(net, n: int) -> tuple[int, dict[tuple[int, int, int], np.ndarray]]:
     """Control net of the Bezier triangle that the order-n patch with ``net`` tends to as alpha -> 0.
 
-    Returns ``(N, {(d, e, f): point})``, ``p_{def}`` in the paper's notation (d for u/x, e for v/y, f for w/z).
+    Returns ``(N, {(d, e, f): point})``, ``p_{def}`` in the paper's notation (d for u/x, e for v/y, f for w/z);
+    N = 3n - 1 for every n (the weights come from the limit formula, proven for every n: claim
+    ``limit_formula``, docs/limit_for_all_n.md).
     """
     arr = check_net(net, n)
-    idx, w = conversion_matrix(n)
+    idx, w = conversion_matrix(n, "formula")
     wf = np.array([[float(x) for x in row] for row in w])
     pts = wf @ arr
     return sum(idx[0]), {t: pts[k] for k, t in enumerate(idx)}
