@@ -225,3 +225,27 @@ def test_values_modp_skips_a_singular_shape_parameter(monkeypatch):
     assert [a.t for a in alphas] == [fmpq(1, 2), fmpq(1, 4), fmpq(1, 5), fmpq(1, 6)] and vals.shape == (4, 6)
     forms = recover_modular(2)
     assert prove(2, forms)["proved"]
+
+
+def test_published_centre_end_values_match_independent_exact_solves():
+    """The centre's two end-value formulas of data/normalization/general_formulas.json against exact collocation
+    solves near alpha = 0 and alpha = pi (no closed forms involved): the coefficient is a rational function of
+    t = tan(alpha/4), smooth at both ends, so the exact values at t = 1e-6 and t = 1 - 1e-9 are within
+    O(t^2) and O(1 - t) of the limits."""
+    import json
+
+    from paper_repro.core.general_formulas import eval_expression
+    from paper_repro.core.normalization import solve_reduced_exact
+    from paper_repro.util.io import DATA
+
+    gf = json.loads((DATA / "normalization" / "general_formulas.json").read_text())
+    by_kind = {e["kind"]: e for e in gf["levels"]}
+    for n in (4, 9):
+        centre = f"r_{{{2 * n},{n},{n}}}"
+        for kind, t, scale, tol in (("centre_alpha_to_0", fmpq(1, 10**6), 3 * n - 2, 1e-8),
+                                    ("centre_alpha_to_pi", 1 - fmpq(1, 10**9), 0, 1e-7)):
+            alpha = rational_alpha(t)
+            sol, _ = solve_reduced_exact(n, alpha, verify=0)
+            value = {rep.coefficient: x for (rep, _), x in zip(orbits(n), sol)}[centre] * alpha.sin_half ** scale
+            want = eval_expression(by_kind[kind]["expression"], n)
+            assert abs(float(value) / want - 1) < tol, (n, kind, float(value), want)

@@ -15,10 +15,19 @@ Publishes ``data/normalization/general_formulas{suffix}.json`` and ``.md``.
 
 from __future__ import annotations
 
-from flint import fmpq_mat, fmpq_poly
+from flint import fmpq, fmpq_mat, fmpq_poly
 
 from paper_repro.core.closed_forms import closed_forms_cached, proof_cached
-from paper_repro.core.general_formulas import Formula, check, fit, printed_level_formulas
+from paper_repro.core.general_formulas import (
+    ALL_LEVELS_AT_1,
+    CENTRE_END_VALUES,
+    Formula,
+    centre_end_values,
+    check,
+    eval_expression,
+    fit,
+    printed_level_formulas,
+)
 from paper_repro.util.registry import Outcome, claim
 
 #: Fit range per level: small n, the rest of the range is a genuine check.
@@ -61,7 +70,11 @@ def _centre_recurrence(n_max: int, order: int = 2, deg_n: int = 2, deg_c: int = 
        statement="Open Question 1, general formulas: besides the printed levels 0 and 1, levels 2..{max_level} "
                  "have formulas P_{n,i,j} = A_j(n,i,c) C_{n,i} + B_j(n,i,c) C_{n,i+1} with polynomial A_j, B_j "
                  "(interior j < i <= n and diagonal i = j < n), fitted on small n and proven for n <= {n_max} "
-                 "by the proven closed forms; conjectures beyond. The centre has none of the searched shape.",
+                 "by the proven closed forms; conjectures beyond. The centre has none of the searched shape, but its "
+                 "end values do: s^{3n-2} r_{2n,n,n} -> 2(4n-3)(3n-3)!/((n-1)!^2 n!) as alpha -> 0 and "
+                 "r_{2n,n,n} -> sum_k binom(n,k)^3 (Franel numbers) as alpha -> pi, proven for n <= {n_max}. "
+                 "Every level at once: s^{2n+j} r_{2n,2n-i,j} -> (2n+j)!/((2n-i)! j! i!) (2n-(t-1)j)/(2n+j) as "
+                 "alpha -> 0, for every n (claim limit_formula).",
        kind="proof", max_level=4, n_max=12, suffix="",
        extended={"max_level": 5, "n_max": 30, "suffix": "_extended"})
 def run(max_level: int, n_max: int, suffix: str) -> Outcome:
@@ -91,6 +104,29 @@ def run(max_level: int, n_max: int, suffix: str) -> Outcome:
     centre = _centre_recurrence(min(n_max, 22))
     entries.append({"level": "n (centre r_{2n,n,n})", "kind": "centre", "status": "found" if centre["found"]
                     else "not found", "searched": centre["searched"]})
+    values = {n: centre_end_values(n) for n in range(1, n_max + 1)}
+    for e in CENTRE_END_VALUES:
+        agrees = [n for n, v in values.items()
+                  if v["vanishes_at_1"] and eval_expression(e["expression"], n) == v[e["kind"]]]
+        fails = [n for n in values if n not in agrees]
+        status, top = _status(agrees, fails, proven, 1)
+        ok &= not fails and top == n_max
+        entries.append({"level": "n (centre r_{2n,n,n})", "kind": e["kind"], "cases": e["name"], "status": status,
+                        "source": "guessed recurrence: " + e["recurrence"], "quantity": e["quantity"],
+                        "expression": e["expression"], "latex": e["latex"],
+                        "beyond": f"conjecture for n > {top}" if top else "-"})
+    def at_one_holds(n: int, key: str, form) -> bool:
+        value = eval_expression(ALL_LEVELS_AT_1["expression"], n, i=2 * n - int(key.split(",")[1]),
+                                j=int(key.split(",")[2].rstrip("}")))
+        return fmpq(value.numerator, value.denominator) == form.numerator(fmpq(1))
+
+    at_one = bool(proven) and all(at_one_holds(n, k, form)
+                                  for n in proven for k, form in closed_forms_cached(n).items())
+    ok &= at_one
+    entries.append(ALL_LEVELS_AT_1 | {"level": "all", "cases": ALL_LEVELS_AT_1["name"],
+                                      "status": "proven for every n" if at_one else "fails",
+                                      "source": "the alpha -> 0 limit theorem (claim limit_formula, docs/"
+                                                f"limit_for_all_n.md); agrees with the closed forms for n <= {n_max}"})
     entries.append({"level": f"> {max_level}", "kind": "interior/diagonal", "status": "not searched",
                     "searched": f"the exact fit grows as level^4 unknowns; levels <= {max_level} here"})
     data = {f"normalization/general_formulas{suffix}.json": {"n_max": n_max, "proven_closed_forms_for_n": proven,
@@ -104,7 +140,8 @@ def run(max_level: int, n_max: int, suffix: str) -> Outcome:
     return Outcome(ok, {
         "levels": [{k: e[k] for k in ("level", "kind", "status")} for e in entries],
         "scope": f"each formula is proven for the n it agrees with proven closed forms (n <= {n_max}); "
-                 "conjecture beyond; centre: no recurrence of the searched shape"}, data=data)
+                 "conjecture beyond; centre: no recurrence of the searched shape for the whole polynomial, closed "
+                 "forms of its two end values (limits alpha -> 0 and alpha -> pi) proven for the same n"}, data=data)
 
 
 def markdown(entries: list[dict], n_max: int) -> str:
@@ -123,6 +160,11 @@ def markdown(entries: list[dict], n_max: int) -> str:
     for e in entries:
         if "latex" in e:
             lines += [f"## Level {e['level']}, {e['cases']} ({e['status']})", "", f"$$ {e['latex']} $$", ""]
+            if "where" not in e and "quantity" in e:
+                lines += [f"{e['quantity']}; found as the solution of the {e['source']}; a conjecture for n beyond "
+                          "the proven range.", ""]
+            elif "where" in e:
+                lines += [f"{e['quantity']}, {e['where']}; source: {e['source']}.", ""]
             if "positivity_for_all_n_if_the_formula_holds" in e:
                 lines += [f"Positivity: {e['positivity_for_all_n_if_the_formula_holds']}.", ""]
     return "\n".join(lines)

@@ -166,3 +166,56 @@ def printed_level_formulas() -> list[Formula]:
     level1 = Formula(1, "interior", (((0, 1, 1, 0), fmpq(1)), ((1, 0, 0, 0), fmpq(1)), ((1, 0, 1, 0), fmpq(1))))
     level1_diag = Formula(1, "diagonal", (((1, 0, 0, 0), fmpq(2)),))
     return [level0, level1, level1_diag]
+
+
+#: The centre r_{2n,n,n} = P_n(c)/s^{3n}: no formula of the level shape, but its two end values have closed
+#: forms, found by guessing linear recurrences in n with polynomial coefficients on the proven closed forms
+#: (an order-1 recurrence for the first: hypergeometric; for the second the Franel recurrence
+#: (n+1)^2 a_{n+1} = (7n^2+7n+2) a_n + 8n^2 a_{n-1}).  ``expression`` is evaluated by :func:`eval_expression`.
+CENTRE_END_VALUES = (
+    {"name": "centre, alpha -> 0", "kind": "centre_alpha_to_0",
+     "quantity": "P_n(1) = 0 and Q_n(1), where P_n = (1 - c^2) Q_n; so s^{3n-2} r_{2n,n,n} -> Q_n(1) as alpha -> 0",
+     "expression": "2*(4*n-3)*factorial(3*n-3)//(factorial(n-1)**2*factorial(n))",
+     "latex": r"Q_n(1) = \frac{2(4n-3)\,(3n-3)!}{(n-1)!^2\,n!}",
+     "recurrence": "n (n+1) (4n-3) a_{n+1} = 3 (4n+1)(3n-1)(3n-2) a_n"},
+    {"name": "centre, alpha -> pi (Franel numbers)", "kind": "centre_alpha_to_pi",
+     "quantity": "P_n(0) = lim_{alpha -> pi} r_{2n,n,n}",
+     "expression": "sum(comb(n, k)**3 for k in range(n + 1))",
+     "latex": r"P_n(0) = \sum_{k=0}^{n} \binom{n}{k}^3",
+     "recurrence": "(n+1)^2 a_{n+1} = (7n^2 + 7n + 2) a_n + 8 n^2 a_{n-1}"},
+)
+
+
+#: Every level at once, at c = 1: ``P_{n,i,j}(1) = L_{n,i,j}``, the alpha -> 0 limit factor, proven for every n
+#: (claim ``limit_formula``, docs/limit_for_all_n.md): s^{2n+j} r_{2n,2n-i,j} -> L_{n,i,j}.
+ALL_LEVELS_AT_1 = {
+    "name": "alpha -> 0 limit of every coefficient", "kind": "all_levels_alpha_to_0",
+    "quantity": "lim_{alpha -> 0} s^{2n+j} r_{2n,2n-i,j} (= P_{n,i,j}(1) wherever the closed form is known)",
+    "expression": "0 if i == j == n else Fraction(factorial(2*n+j), factorial(2*n-i)*factorial(j)*factorial(i)) "
+                  "* (1 if j == 0 else Fraction(2*n-j, 2*n+j) if i == j else Fraction(2*n, 2*n+j))",
+    "latex": r"P_{n,i,j}(1) = \frac{(2n+j)!}{(2n-i)!\,j!\,i!}\cdot\frac{2n - (t-1)j}{2n+j}",
+    "where": "t = the number of minimal entries of (2n-i, j, i): 1 if j < i, 2 if i = j < n, 3 at the centre"}
+
+
+def eval_expression(expr: str, n: int, **indices: int):
+    """Evaluate a published expression in ``n`` (and ``i``, ``j``); names: comb, factorial, Fraction, sum, range.
+
+    >>> eval_expression(CENTRE_END_VALUES[1]["expression"], 3)
+    56
+    >>> eval_expression(ALL_LEVELS_AT_1["expression"], 2, i=1, j=1)
+    Fraction(12, 1)
+    """
+    from fractions import Fraction
+    from math import comb, factorial
+
+    names = {"__builtins__": {}, "n": n, "comb": comb, "factorial": factorial, "sum": sum, "range": range,
+             "Fraction": Fraction, **indices}
+    return eval(expr, names)  # noqa: S307 -- our own published expressions, no builtins
+
+
+def centre_end_values(n: int) -> dict[str, int | bool]:
+    """From the closed form of the centre: P_n(1) = 0?, Q_n(1) and P_n(0) (exact)."""
+    p = closed_forms_cached(n)[f"r_{{{2 * n},{n},{n}}}"].numerator
+    q, rem = divmod(p, fmpq_poly([1, 0, -1]))
+    return {"vanishes_at_1": p(fmpq(1)) == 0 and rem == 0, "centre_alpha_to_0": int(q(fmpq(1))),
+            "centre_alpha_to_pi": int(p(fmpq(0)))}
