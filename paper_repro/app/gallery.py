@@ -34,13 +34,14 @@ OPEN_QUESTIONS = [
      "listed below and of the centre; proofs of the level formulas for all n."),
     ("Question 7.2 (que:open_problem_basis_transformation): the basis transformation between T̄ and V",
      ["basis_transformation", "coincidence", "transformation_closed_forms"],
-     "Closed forms for n ≥ 4 and a general pattern for all n."),
+     "Closed forms for n ≥ 5 and a general pattern for all n (observed for n ≤ 4: N polynomial in c and s, "
+     "N⁻¹ with denominators up to s^{3n−1}; not proven)."),
     ("Question 7.3 (que:limiting_case): the α → 0 limit of the patches", ["bernstein_limit", "bezier_limit_degree",
                                                                         "bezier_conversion", "limit_formula"],
      "Nothing: answered for every n, polynomial and rational patches, with explicit convex conversion weights "
      "(written proof docs/limit_for_all_n.md, its lemmas checked exactly to n = 40)."),
     ("Order elevation (Example 7.2 and the text after it)", ["order_elevation", "elevation_closed_forms"],
-     "Closed forms and non-negativity for n ≥ 4 (evidence only)."),
+     "Closed forms and non-negativity for n ≥ 5 (non-negativity at sampled α to n = 8 is evidence only)."),
 ]
 
 _MATH_TOKEN = re.compile(r"\$([^$]+)\$|"
