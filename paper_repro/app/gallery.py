@@ -31,11 +31,12 @@ OPEN_QUESTIONS = [
      "normalizing coefficients", ["nonnegativity", "nonnegativity_extended", "normalizing_closed_forms",
                                   "general_formulas"],
      "Closed forms and positivity for every n (proven here for n ≤ 30); formulas of the levels above those "
-     "listed below and of the centre; proofs of the level formulas for all n."),
+     "listed below and of the whole centre polynomial (its two end values are found); proofs of the level "
+     "formulas for all n."),
     ("Question 7.2 (que:open_problem_basis_transformation): the basis transformation between T̄ and V",
      ["basis_transformation", "coincidence", "transformation_closed_forms"],
      "Closed forms for n ≥ 5 and a general pattern for all n (observed for n ≤ 4: N polynomial in c and s, "
-     "N⁻¹ with denominators up to s^{3n−1}; not proven)."),
+     "N⁻¹ with denominators up to the power 3n − 1 of s; not proven)."),
     ("Question 7.3 (que:limiting_case): the α → 0 limit of the patches", ["bernstein_limit", "bezier_limit_degree",
                                                                         "bezier_conversion", "limit_formula"],
      "Nothing: answered for every n, polynomial and rational patches, with explicit convex conversion weights "
@@ -72,7 +73,8 @@ def math_html(text: str) -> str:
         out.append(plain(text[last:m.start()]))
         tex = re.sub(r"^(delta|Omega)", r"\\\1", tex)
         tex = re.sub(r"(T|R|G|B)-bar", r"\\overline{\1}", tex)
-        tex = re.sub(r"\^\{?alpha\}?", "^{ALPHA}", tex).replace("alpha", "ALPHA").replace("ALPHA", r"\alpha")
+        tex = re.sub(r"\^alpha\b", "^{alpha}", tex)
+        tex = re.sub(r"(?<!\\)\balpha\b", r"\\alpha", tex)  # a bare alpha, not one already written \alpha
         out.append(convert(tex))
         last = m.end()
     out.append(plain(text[last:]))
