@@ -249,3 +249,16 @@ def test_published_centre_end_values_match_independent_exact_solves():
             value = {rep.coefficient: x for (rep, _), x in zip(orbits(n), sol)}[centre] * alpha.sin_half ** scale
             want = eval_expression(by_kind[kind]["expression"], n)
             assert abs(float(value) / want - 1) < tol, (n, kind, float(value), want)
+
+
+def test_interior_regularities_hold_for_found_levels_and_can_fail():
+    from paper_repro.core.general_formulas import fit, interior_pattern, latex, printed_level_formulas
+
+    for level, n_fit in ((2, 8), (3, 9)):
+        assert all(interior_pattern(fit(level, "interior", n_fit)).values())
+    # the printed level 1 (i c C_{n,i} + (i+1) C_{n,i+1}) has unequal s^0 parts: the check says so
+    assert not interior_pattern(printed_level_formulas()[1])["s0_parts_equal_F_j"]
+    # the factored rendering of level 2, derived by hand from the fitted polynomial with c^2 = 1 - s^2
+    assert latex(fit(2, "interior", 8)) == (
+        "P_{n,i,2}(c) = \\left((i + 1) n - \\tfrac{1}{2} \\, i (i - 1) s^{2}\\right) C_{n,i} + "
+        "\\left((i + 1) n c\\right) C_{n,i+1}")

@@ -26,6 +26,7 @@ from paper_repro.core.general_formulas import (
     check,
     eval_expression,
     fit,
+    interior_pattern,
     printed_level_formulas,
 )
 from paper_repro.util.registry import Outcome, claim
@@ -98,6 +99,8 @@ def run(max_level: int, n_max: int, suffix: str) -> Outcome:
                                                                   max(res["agrees_for_n"] or [0])],
                                "source": "printed" if f.level <= 1 else f"fitted on n <= {N_FIT[f.level]}",
                                "beyond": f"conjecture for n > {top}" if top else "-"}
+        if f.kind == "interior" and f.level >= 2:
+            entry["regularities"] = interior_pattern(f)
         if (f.level, f.kind) in POSITIVITY:
             entry["positivity_for_all_n_if_the_formula_holds"] = POSITIVITY[(f.level, f.kind)]
         entries.append(entry)
@@ -137,8 +140,10 @@ def run(max_level: int, n_max: int, suffix: str) -> Outcome:
                                                                "c": "cos(alpha/2)", "s": "sin(alpha/2)"},
                                                            "levels": entries},
             f"normalization/general_formulas{suffix}.md": markdown(entries, n_max)}
+    regular = [e["level"] for e in entries if all(e.get("regularities", {"": False}).values())]
     return Outcome(ok, {
         "levels": [{k: e[k] for k in ("level", "kind", "status")} for e in entries],
+        "interior_regularities_hold_for_levels": regular,
         "scope": f"each formula is proven for the n it agrees with proven closed forms (n <= {n_max}); "
                  "conjecture beyond; centre: no recurrence of the searched shape for the whole polynomial, closed "
                  "forms of its two end values (limits alpha -> 0 and alpha -> pi) proven for the same n"}, data=data)
@@ -151,12 +156,21 @@ def markdown(entries: list[dict], n_max: int) -> str:
              "$s = \\sin\\frac{\\alpha}{2}$, and $C_{n,k}(c)$ the coefficient of $X^k$ in $(1+2cX+X^2)^n$ "
              "(so $c^\\alpha_{2n,k} = C_{n,k}/s^{2n}$, eq. univariate_basis). "
              f"*Proven for n ≤ N* means: equal to the closed forms proven for every α, for every n ≤ N "
-             f"(N ≤ {n_max} here); beyond N the formula is a conjecture.", "",
+             f"(N ≤ {n_max} here); beyond N the formula is a conjecture. The brackets are written with "
+             "$c^2 = 1 - s^2$ and factored over Q (the fitted polynomials in c are in the JSON, `latex_expanded`).", "",
              "| level | cases | status | source |", "|---|---|---|---|"]
     for e in entries:
         lines.append(f"| {e['level']} | {e.get('cases', e['kind'])} | {e['status']} | "
                      f"{e.get('source', e.get('searched', ''))} |")
     lines.append("")
+    regular = [e["level"] for e in entries if all(e.get("regularities", {"": False}).values())]
+    if regular:
+        lines += ["Two regularities of the interior formulas, checked exactly for the levels "
+                  f"{', '.join(map(str, regular))} (a conjecture for every level j >= 2): the $s^0$ parts of both "
+                  "brackets are equal to $F_j = (i+1)\\,\\frac{2n\\,(2n+j-1)!}{j!\\,(2n+1)!}$ (which makes "
+                  "$P_{n,i,j}(1) = F_j \\binom{2n+1}{i+1}$ the α → 0 limit factor of claim `limit_formula`), and the "
+                  "highest power of s in the first bracket is $s^{2\\lfloor j/2 \\rfloor}$ with coefficient "
+                  "$(-1)^{\\lfloor j/2 \\rfloor}\\binom{i}{j}$.", ""]
     for e in entries:
         if "latex" in e:
             lines += [f"## Level {e['level']}, {e['cases']} ({e['status']})", "", f"$$ {e['latex']} $$", ""]

@@ -22,6 +22,7 @@ agrees with proven closed forms it is proven for those n; beyond, it is a conjec
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass
 
 from flint import fmpq, fmpq_mat, fmpq_poly
@@ -46,7 +47,7 @@ class Formula:
                           for (k, e, a, b), q in self.terms],
                 "expression": "P_{n,i,j}(c) = sum over terms of coefficient * c^c_power * i^i_power * n^n_power "
                               "* C_{n,i+shift_k}(c), C_{n,k} = coefficient of X^k in (1 + 2cX + X^2)^n",
-                "latex": latex(self)}
+                "latex": latex(self), "latex_expanded": latex_expanded(self)}
 
 
 def cases_text(level: int, kind: str) -> str:
@@ -132,8 +133,8 @@ def check(f: Formula, ns) -> dict:
     return {"agrees_for_n": good, "fails_for_n": bad}
 
 
-def latex(f: Formula) -> str:
-    """The formula in LaTeX, grouped by C_{n,i+k}."""
+def latex_expanded(f: Formula) -> str:
+    """The formula in LaTeX as fitted (a polynomial in c, i, n per C_{n,i+k})."""
     parts = []
     for k in range(f.level + 1):
         coeff = []
@@ -149,11 +150,108 @@ def latex(f: Formula) -> str:
             continue
         body = "".join(f" {sg} {t}" for sg, t in coeff).strip()
         body = body[2:] if body.startswith("+ ") else body
-        idx = "i" if k == 0 else f"i+{k}"
-        if f.kind == "diagonal":
-            idx = str(f.level + k)  # i = level
-        parts.append(f"\\left({body}\\right) C_{{n,{idx}}}")
-    return f"P_{{n,{f.level if f.kind == 'diagonal' else 'i'},{f.level}}}(c) = " + " + ".join(parts)
+        parts.append(f"\\left({body}\\right) C_{{n,{_index(f, k)}}}")
+    return _lhs(f) + " + ".join(parts)
+
+
+def _ctx():
+    from flint import fmpq_mpoly_ctx
+
+    return fmpq_mpoly_ctx.get(("n", "i", "c", "s"), "lex")
+
+
+def s_form(f: Formula) -> dict[int, dict[tuple[int, int], object]]:
+    """``{k: {(e, 2m): polynomial in n, i}}``: the coefficient of C_{n,i+k} as sum c^e s^{2m} (poly), after
+    c^2 = 1 - s^2 (e = 0, 1); polynomials are flint ``fmpq_mpoly`` in (n, i, c, s) with c, s absent."""
+    n_, i_, c_, s_ = _ctx().gens()
+    out = {}
+    for k in range(f.level + 1):
+        poly = 0 * n_
+        for (kk, e, a, b), q in f.terms:
+            if kk == k:
+                poly += q * c_ ** (e % 2) * (1 - s_**2) ** (e // 2) * i_**a * n_**b
+        if poly == 0:
+            continue
+        groups: dict[tuple[int, int], object] = {}
+        for (pn, pi, pc, ps), q in zip(poly.monoms(), poly.coeffs()):
+            groups[(pc, ps)] = groups.get((pc, ps), 0 * n_) + q * n_**pn * i_**pi
+        out[k] = groups
+    return out
+
+
+def interior_pattern(f: Formula) -> dict[str, bool]:
+    """Two regularities of the interior formulas found (levels 2..5), checked exactly per level:
+    the s^0 parts of both brackets equal F_j = (i+1) 2n (2n+j-1)! / (j! (2n+1)!) (as polynomials in n, i), and the
+    highest power of s in the first bracket is s^{2 floor(j/2)} with coefficient (-1)^{floor(j/2)} binom(i, j)."""
+    from math import factorial
+
+    j = f.level
+    n_, i_, _, _ = _ctx().gens()
+    form = s_form(f)
+    f_j = (i_ + 1) * 2 * n_
+    for t in range(2, j):
+        f_j *= 2 * n_ + t
+    f_j = f_j / factorial(j)  # (2n+j-1)!/(2n+1)! = (2n+2)(2n+3)...(2n+j-1)
+    binom = 1 + 0 * n_
+    for t in range(j):
+        binom *= i_ - t
+    binom = binom / factorial(j)
+    zero = {k: sum((g for (pc, ps), g in groups.items() if ps == 0), 0 * n_) for k, groups in form.items()}
+    top = max(ps for (_, ps) in form[0])
+    return {"s0_parts_equal_F_j": set(zero) == {0, 1} and zero[0] == f_j and zero[1] == f_j,
+            "top_power_binomial": top == 2 * (j // 2) and sum((g for (_, ps), g in form[0].items() if ps == top),
+                                                             0 * n_) == (-1) ** (j // 2) * binom}
+
+
+def latex(f: Formula) -> str:
+    """The same formula with c^2 = 1 - s^2: the coefficient of each C_{n,i+k} as a sum of c^e s^{2m} (e = 0, 1)
+    times a polynomial in n and i, factored over Q (flint).  Equal to :func:`latex_expanded` on 0 < c < 1.
+
+    >>> print(latex(printed_level_formulas()[1]))
+    P_{n,i,1}(c) = \\left(i c\\right) C_{n,i} + \\left(i + 1\\right) C_{n,i+1}
+    """
+    parts = []
+    for k, groups in s_form(f).items():
+        body = ""
+        for (pc, ps), g in sorted(groups.items(), key=lambda kv: (kv[0][1], kv[0][0])):
+            const, factors = g.factor()
+            tail = "".join(f" {x}" for x in (_pow("c", pc), _pow("s", ps)) if x)
+            text = _factored(abs(const), factors)
+            text = tail.strip() if (text == "1" and tail) else text + tail
+            body += (" - " if const < 0 else " + ") + text.strip()
+        body = body[3:] if body.startswith(" + ") else "-" + body[3:]
+        if body.startswith("(") and body.endswith(")") and body.count("(") == 1:
+            body = body[1:-1]  # a single factor: no double parentheses
+        parts.append(f"\\left({body}\\right) C_{{n,{_index(f, k)}}}")
+    return _lhs(f) + " + ".join(parts)
+
+
+def _factored(const, factors) -> str:
+    num, den = int(const.p), int(const.q)
+    out = f"\\tfrac{{{num}}}{{{den}}}" if den != 1 else str(num)
+    pieces = []
+    for fac, mult in factors:
+        t = str(fac).replace("*", " ")
+        t = "".join(f"^{{{m.group(1)}}}" if m.group(1) else m.group(0) for m in _POW.finditer(t)) if "^" in t else t
+        if len(fac) > 1:
+            t = f"({t})"
+        pieces.append(t + (f"^{{{mult}}}" if mult > 1 else ""))
+    if not pieces:
+        return out
+    return ("" if out == "1" else out + " \\, ") + " ".join(pieces)
+
+
+_POW = re.compile(r"\^(\d+)|[^^]")
+
+
+def _index(f: Formula, k: int) -> str:
+    if f.kind == "diagonal":
+        return str(f.level + k)  # i = level
+    return "i" if k == 0 else f"i+{k}"
+
+
+def _lhs(f: Formula) -> str:
+    return f"P_{{n,{f.level if f.kind == 'diagonal' else 'i'},{f.level}}}(c) = "
 
 
 def _pow(var: str, e: int) -> str:
