@@ -29,6 +29,7 @@ from paper_repro.core.general_formulas import (
     interior_pattern,
     printed_level_formulas,
 )
+from paper_repro.core.normalization import orbits
 from paper_repro.util.registry import Outcome, claim
 
 #: Fit range per level: small n, the rest of the range is a genuine check.
@@ -118,13 +119,11 @@ def run(max_level: int, n_max: int, suffix: str) -> Outcome:
                         "source": "guessed recurrence: " + e["recurrence"], "quantity": e["quantity"],
                         "expression": e["expression"], "latex": e["latex"],
                         "beyond": f"conjecture for n > {top}" if top else "-"})
-    def at_one_holds(n: int, key: str, form) -> bool:
-        value = eval_expression(ALL_LEVELS_AT_1["expression"], n, i=2 * n - int(key.split(",")[1]),
-                                j=int(key.split(",")[2].rstrip("}")))
-        return fmpq(value.numerator, value.denominator) == form.numerator(fmpq(1))
+    def at_one_holds(n: int, rep) -> bool:
+        value = eval_expression(ALL_LEVELS_AT_1["expression"], n, i=rep.i, j=rep.j)
+        return fmpq(value.numerator, value.denominator) == closed_forms_cached(n)[rep.coefficient].numerator(fmpq(1))
 
-    at_one = bool(proven) and all(at_one_holds(n, k, form)
-                                  for n in proven for k, form in closed_forms_cached(n).items())
+    at_one = bool(proven) and all(at_one_holds(n, rep) for n in proven for rep, _ in orbits(n))
     ok &= at_one
     entries.append(ALL_LEVELS_AT_1 | {"level": "all", "cases": ALL_LEVELS_AT_1["name"],
                                       "status": "proven for every n" if at_one else "fails",

@@ -67,9 +67,10 @@ def limit_terms_formula(n: int) -> list[tuple[fmpq, tuple[int, int, int]]]:
 
 
 def _multinomial(s: tuple[int, int, int]) -> int:
-    if min(s) < 0:
-        return 0
-    return factorial(sum(s)) // (factorial(s[0]) * factorial(s[1]) * factorial(s[2]))
+    """:func:`paper_repro.core.limits.multinomial` of ``s``, and 0 when an entry is negative."""
+    from paper_repro.core.limits import multinomial
+
+    return 0 if min(s) < 0 else multinomial(sum(s), s)
 
 
 def uniform_factor(s: tuple[int, int, int]) -> fmpq:
