@@ -29,11 +29,11 @@ from paper_repro.core.domain import (
 )
 from paper_repro.core.elevation import elevate, elevation_matrix
 from paper_repro.core.labels import delta, parse_label, united_system
-from paper_repro.core.limits import bezier_limit
 from paper_repro.core.normalization import coefficients, evaluate_normalized
 from paper_repro.surfaces.fitting import fit
 from paper_repro.surfaces.mesh import export_mesh
 from paper_repro.surfaces.patch import Patch, merge_meshes
+from paper_repro.theory.limits import bezier_limit
 
 __all__ = ["Patch", "RationalAngle", "RationalPoints", "basis_derivative", "bezier_limit", "coefficients", "delta",
            "elevate", "elevation_matrix", "evaluate", "evaluate_normalized", "export_mesh", "fit", "get_context",

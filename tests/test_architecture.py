@@ -7,7 +7,7 @@ from pathlib import Path
 
 PKG = Path(__file__).resolve().parent.parent / "paper_repro"
 #: Layer order, lowest first; a module may import from its own layer or lower ones.
-LAYERS = ["util", "core", "printed", "surfaces", "claims", "figures", "app"]
+LAYERS = ["util", "core", "theory", "printed", "surfaces", "claims", "figures", "app"]
 
 
 def _layer(path: Path) -> str | None:
@@ -16,11 +16,13 @@ def _layer(path: Path) -> str | None:
 
 
 def _imports(path: Path) -> list[str]:
+    """Every module named by an import of ``path`` (``from a import b`` gives ``a`` and ``a.b``)."""
     tree = ast.parse(path.read_text(encoding="utf-8"))
     out = []
     for node in ast.walk(tree):
         if isinstance(node, ast.ImportFrom) and node.module and node.level == 0:
             out.append(node.module)
+            out += [f"{node.module}.{a.name}" for a in node.names]
         elif isinstance(node, ast.Import):
             out += [a.name for a in node.names]
     return out
@@ -52,3 +54,66 @@ def test_no_comparison_of_arithmetic_names_outside_the_context_module():
 def test_the_checks_above_can_fail():
     assert _layer(PKG / "core" / "basis.py") == "core"
     assert "paper_repro.core.context" in _imports(PKG / "core" / "basis.py")
+
+
+def _module_name(path: Path) -> str:
+    rel = path.relative_to(PKG.parent).with_suffix("")
+    parts = rel.parts[:-1] if rel.name == "__init__" else rel.parts
+    return ".".join(parts)
+
+
+def _import_graph() -> dict[str, set[str]]:
+    """Module -> the package modules it imports anywhere (function-level imports included)."""
+    modules = {_module_name(p): p for p in PKG.rglob("*.py")}
+    graph: dict[str, set[str]] = {}
+    for name, path in modules.items():
+        deps = set()
+        for mod in _imports(path):
+            # ``from paper_repro.core import labels`` names a module too: keep the longest known prefix
+            while mod and mod not in modules:
+                mod = mod.rpartition(".")[0]
+            if mod and mod != name and mod != "paper_repro":
+                deps.add(mod)
+        graph[name] = deps
+    return graph
+
+
+def _cycles(graph: dict[str, set[str]]) -> list[list[str]]:
+    """Strongly connected components with more than one module (Tarjan)."""
+    index, low, stack, on, out = {}, {}, [], set(), []
+
+    def visit(v: str) -> None:
+        index[v] = low[v] = len(index)
+        stack.append(v)
+        on.add(v)
+        for w in graph.get(v, ()):
+            if w not in index:
+                visit(w)
+                low[v] = min(low[v], low[w])
+            elif w in on:
+                low[v] = min(low[v], index[w])
+        if low[v] == index[v]:
+            comp = []
+            while True:
+                w = stack.pop()
+                on.discard(w)
+                comp.append(w)
+                if w == v:
+                    break
+            if len(comp) > 1:
+                out.append(sorted(comp))
+
+    for v in sorted(graph):
+        if v not in index:
+            visit(v)
+    return out
+
+
+def test_no_import_circles():
+    """No two modules import each other, directly or through others (function-level imports count)."""
+    assert _cycles(_import_graph()) == []
+
+
+def test_the_cycle_check_can_fail():
+    assert _cycles({"a": {"b"}, "b": {"c"}, "c": {"a"}, "d": {"a"}}) == [["a", "b", "c"]]
+    assert _cycles({"a": {"b"}, "b": set()}) == []

@@ -8,19 +8,19 @@ from paper_repro.claims.basis_transformation import transformation
 from paper_repro.claims.linear_independence import modp_case, numeric_case
 from paper_repro.core.basis import evaluate
 from paper_repro.core.context import ModpContext
-from paper_repro.core.derivatives import (
+from paper_repro.core.domain import rational_alpha, sample_rational_points
+from paper_repro.core.fourier import classes, evaluate_v, new_classes, partners, related, v_labels
+from paper_repro.core.labels import delta
+from paper_repro.figures.independence import elimination
+from paper_repro.printed.coincidence import printed_representatives
+from paper_repro.printed.derivatives import printed_sign_cos, printed_sign_m, printed_sign_sin
+from paper_repro.theory.derivatives import (
     cos_power_derivative,
     mixed_derivative,
     sign,
     sin_power_derivative,
 )
-from paper_repro.core.domain import rational_alpha, sample_rational_points
-from paper_repro.core.fourier import classes, evaluate_v, new_classes, partners, related, v_labels
-from paper_repro.core.labels import delta
-from paper_repro.core.rank import ball_sigma_min_bound, modp_rank, mp_singular_values, numeric_rank
-from paper_repro.figures.independence import elimination
-from paper_repro.printed.coincidence import printed_representatives
-from paper_repro.printed.derivatives import printed_sign_cos, printed_sign_m, printed_sign_sin
+from paper_repro.theory.rank import ball_sigma_min_bound, modp_rank, mp_singular_values, numeric_rank
 
 from .strategies import rational_alphas, rational_points
 

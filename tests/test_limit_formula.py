@@ -11,7 +11,8 @@ from flint import fmpq
 from paper_repro.core.domain import rational_alpha
 from paper_repro.core.elevation import elevation_matrix_exact
 from paper_repro.core.labels import delta
-from paper_repro.core.limit_formula import (
+from paper_repro.surfaces.patch import Patch
+from paper_repro.theory.limit_formula import (
     limit_checks,
     limit_factor,
     limit_terms_formula,
@@ -19,8 +20,7 @@ from paper_repro.core.limit_formula import (
     partition_of_unity_holds,
     uniform_factor,
 )
-from paper_repro.core.limits import bezier_limit, limit_terms
-from paper_repro.surfaces.patch import Patch
+from paper_repro.theory.limits import bezier_limit, limit_terms
 
 bezier = pytest.importorskip("bezier")
 
@@ -46,7 +46,7 @@ def test_formula_printed_examples():
 
 
 def test_checks_fail_for_a_wrong_formula(monkeypatch):
-    import paper_repro.core.limit_formula as lf
+    import paper_repro.theory.limit_formula as lf
 
     good = lf.limit_factor
     monkeypatch.setattr(lf, "limit_factor", lambda n, i, j: good(n, i, j) * (2 if (i, j) == (2, 1) else 1))
@@ -106,7 +106,7 @@ def test_lemmas_of_the_proof_for_every_n_hold(n):
 def test_lemma_checks_can_fail(monkeypatch):
     """Each lemma check rejects a wrong input: a duplicated exponent triple, a wrong factor, a wrong
     multinomial in the telescoping identity."""
-    import paper_repro.core.limit_formula as lf
+    import paper_repro.theory.limit_formula as lf
 
     good_terms = lf.limit_terms_formula
     monkeypatch.setattr(lf, "limit_terms_formula", lambda n: good_terms(n)[:-1] + [good_terms(n)[0]])
@@ -130,7 +130,7 @@ def test_uniform_factor_by_hand():
 
 @pytest.mark.parametrize("n", [1, 2, 3, 5])
 def test_conversion_rows_are_convex_combinations_from_both_sources(n):
-    from paper_repro.core.limits import conversion_is_convex, conversion_matrix
+    from paper_repro.theory.limits import conversion_is_convex, conversion_matrix
 
     assert conversion_is_convex(n, "formula") and conversion_is_convex(n, "closed_forms")
     assert conversion_matrix(n, "formula") == conversion_matrix(n, "closed_forms")

@@ -9,8 +9,8 @@ from paper_repro.claims.order_elevation import printed_matrix
 from paper_repro.core.domain import sample_points
 from paper_repro.core.elevation import elevate, elevation_matrix_exact
 from paper_repro.core.labels import delta, united_system
-from paper_repro.core.limits import bernstein_eval, bezier_limit, conversion_matrix, limit_degree
 from paper_repro.surfaces.patch import Patch, net_from_labels
+from paper_repro.theory.limits import bernstein_eval, bezier_limit, conversion_matrix, limit_degree
 
 from .strategies import alphas, rational_alphas
 

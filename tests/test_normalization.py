@@ -6,12 +6,12 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from paper_repro.claims import normalizing_closed_forms as ncf
-from paper_repro.core.closed_forms import ClosedForm, prove, recover, sign_on_unit_interval, sturm_count
 from paper_repro.core.domain import rational_alpha, sample_points
 from paper_repro.core.labels import index_of, united_system
 from paper_repro.core.normalization import coefficients, evaluate_normalized, orbits, solve_full_exact
 from paper_repro.core.univariate import c_const
 from paper_repro.printed import normalization as printed
+from paper_repro.theory.closed_forms import ClosedForm, prove, recover, sign_on_unit_interval, sturm_count
 
 from .strategies import alphas, float_points, orders, rational_alphas
 
@@ -152,7 +152,7 @@ def test_symbolic_intermediate_check_can_fail(monkeypatch):
 
 
 def test_ratfunc_identities():
-    from paper_repro.core.ratfunc import RatFunc, half_angle_functions
+    from paper_repro.theory.ratfunc import RatFunc, half_angle_functions
 
     s, c = half_angle_functions()
     assert 2 * s * c == 2 * s * c and not (s == c)

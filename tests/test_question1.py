@@ -8,18 +8,18 @@ import time
 import pytest
 from flint import fmpq, fmpq_poly
 
-from paper_repro.core import identity_proof as ip
-from paper_repro.core.closed_forms import ClosedForm, prove
 from paper_repro.core.context import ExactContext, ModpContext
 from paper_repro.core.domain import RationalPoints, rational_alpha
-from paper_repro.core.modular import (
+from paper_repro.core.normalization import orbits, reduced_matrix
+from paper_repro.printed.normalization import FINAL
+from paper_repro.theory import identity_proof as ip
+from paper_repro.theory.closed_forms import ClosedForm, prove
+from paper_repro.theory.modular import (
     ReducedSystemModp,
     primes_below,
     rational_reconstruction,
     recover_modular,
 )
-from paper_repro.core.normalization import orbits, reduced_matrix
-from paper_repro.printed.normalization import FINAL
 from paper_repro.util import cache as cache_mod
 
 
@@ -173,8 +173,8 @@ def test_published_level_formulas_match_an_independent_exact_solve():
 
 def test_matrix_identity_proof_rejects_a_changed_entry():
     """The elevation closed forms prove; changing one non-zero entry makes the identity fail."""
-    from paper_repro.core import elevation_forms as ef
-    from paper_repro.core.matrix_forms import EntryForm, prove_matrix_identity
+    from paper_repro.theory import elevation_forms as ef
+    from paper_repro.theory.matrix_forms import EntryForm, prove_matrix_identity
 
     res = ef.closed_forms_and_proof("elevation", 1)["M"]
     assert res["proof"]["proved"] and res["proof"]["points_unisolvent"]
@@ -196,8 +196,8 @@ def test_elevation_forms_agree_with_the_exact_elevation_matrix():
     """Independent route: the normalized exact elevation matrix E (core.elevation, collocation with the
     normalized bases) equals x_f M_gf / x_g with M from the closed forms, at a rational alpha."""
     from paper_repro.core.elevation import elevation_matrix_exact
-    from paper_repro.core.elevation_forms import closed_forms_and_proof
     from paper_repro.core.normalization import coefficient_vector
+    from paper_repro.theory.elevation_forms import closed_forms_and_proof
 
     n, t = 2, fmpq(2, 9)
     forms = closed_forms_and_proof("elevation", n)["M"]["forms"]
@@ -211,7 +211,7 @@ def test_elevation_forms_agree_with_the_exact_elevation_matrix():
 
 def test_values_modp_skips_a_singular_shape_parameter(monkeypatch):
     """A shape parameter at which every point set is singular modulo p is replaced by the next one."""
-    from paper_repro.core import modular
+    from paper_repro.theory import modular
 
     real = modular.ReducedSystemModp.solve
 
@@ -234,8 +234,8 @@ def test_published_centre_end_values_match_independent_exact_solves():
     O(t^2) and O(1 - t) of the limits."""
     import json
 
-    from paper_repro.core.general_formulas import eval_expression
     from paper_repro.core.normalization import solve_reduced_exact
+    from paper_repro.theory.general_formulas import eval_expression
     from paper_repro.util.io import DATA
 
     gf = json.loads((DATA / "normalization" / "general_formulas.json").read_text())
@@ -252,7 +252,7 @@ def test_published_centre_end_values_match_independent_exact_solves():
 
 
 def test_interior_regularities_hold_for_found_levels_and_can_fail():
-    from paper_repro.core.general_formulas import fit, interior_pattern, latex, printed_level_formulas
+    from paper_repro.theory.general_formulas import fit, interior_pattern, latex, printed_level_formulas
 
     for level, n_fit in ((2, 8), (3, 9)):
         assert all(interior_pattern(fit(level, "interior", n_fit)).values())

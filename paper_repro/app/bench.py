@@ -97,7 +97,7 @@ def exact_comparison(ns: list[int]) -> dict:
     """Exact coefficients at one alpha three ways: the collocation solved with flint ``fmpq_mat``, the same
     collocation with mpmath at 50 digits, and the closed forms proven for every alpha (evaluated exactly;
     forms and proof are computed -- or read from the cache -- before the clock starts)."""
-    from paper_repro.core.closed_forms import closed_forms_cached, proof_cached
+    from paper_repro.theory.closed_forms import closed_forms_cached, proof_cached
 
     alpha = rational_alpha((1, 3))
     rows = []
@@ -189,7 +189,7 @@ def rank_table(ns: list[int], mp_ns: list[int] | None = None) -> dict:
 
 def recovery_table(ns: list[int]) -> dict:
     """Time of the closed-form recovery (exact solves at several alpha, interpolation) per n, no cache."""
-    from paper_repro.core import closed_forms
+    from paper_repro.theory import closed_forms
 
     rows = []
     env = os.environ.get("PAPER_REPRO_NO_CACHE")

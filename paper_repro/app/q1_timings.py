@@ -1,8 +1,8 @@
 """`make bench-question1`: time per n of the closed-form recovery and proof (Question 1), no cache.
 
 Writes ``reports/question1.json`` and ``reports/question1.md`` (machine-dependent, never ``data/``):
-recovery (:func:`paper_repro.core.modular.recover_modular`) and proof
-(:func:`paper_repro.core.identity_proof.prove_identity`) per n, each n in a fresh process (two at a time on
+recovery (:func:`paper_repro.theory.modular.recover_modular`) and proof
+(:func:`paper_repro.theory.identity_proof.prove_identity`) per n, each n in a fresh process (two at a time on
 two cores, longest first), the totals for n = 1..20 and the fitted growth exponents t ~ n^k; and the mpmath
 route to the same closed forms (high-precision solves at the same alpha, numerical interpolation, rounding to
 integers) beside it for the n it reaches.
@@ -27,8 +27,8 @@ REPORTS = ROOT / "reports"
 
 def _job(n: int) -> dict:
     os.environ["PAPER_REPRO_NO_CACHE"] = "1"
-    from paper_repro.core.identity_proof import prove_identity
-    from paper_repro.core.modular import recover_modular
+    from paper_repro.theory.identity_proof import prove_identity
+    from paper_repro.theory.modular import recover_modular
 
     t0 = time.perf_counter()
     forms = recover_modular(n)
@@ -43,8 +43,8 @@ def recover_mp(n: int, dps: int) -> dict:
     """The mpmath route: orbit coefficients at 2n + 1 alpha at ``dps`` digits, interpolation in c by an mpmath
     Vandermonde solve, coefficients rounded to integers."""
     from paper_repro.core.context import MpContext
-    from paper_repro.core.modular import shape_parameters
     from paper_repro.core.normalization import orbits, solve_reduced
+    from paper_repro.theory.modular import shape_parameters
 
     alphas = shape_parameters(2 * n + 1)
     out = {}
@@ -63,7 +63,7 @@ def recover_mp(n: int, dps: int) -> dict:
 
 
 def mp_route(ns: list[int]) -> list[dict]:
-    from paper_repro.core.modular import recover_modular
+    from paper_repro.theory.modular import recover_modular
 
     rows = []
     for n in ns:

@@ -18,7 +18,7 @@ from paper_repro.core.domain import mp_domain_points, rational_alpha, sample_rat
 from paper_repro.core.fourier import evaluate_v
 from paper_repro.core.labels import delta
 from paper_repro.core.normalization import evaluate_normalized
-from paper_repro.core.rank import modp_rank, mp_singular_values, numeric_rank
+from paper_repro.theory.rank import modp_rank, mp_singular_values, numeric_rank
 from paper_repro.util.registry import Outcome, claim
 
 

@@ -1,6 +1,6 @@
 """Claim ``derivative_signs``: Lemma lem:sign_cos_power_derivative and Proposition derivative_cosine_sine.
 
-The printed sign rules (verbatim, :mod:`paper_repro.core.derivatives`) against exact derivatives at 0
+The printed sign rules (verbatim, :mod:`paper_repro.theory.derivatives`) against exact derivatives at 0
 computed from Taylor series with rational lambda, mu.  Disagreements become errata (with the
 corrected rule, itself checked on the same range).
 """
@@ -9,14 +9,14 @@ from __future__ import annotations
 
 from flint import fmpq
 
-from paper_repro.core.derivatives import (
+from paper_repro.printed.derivatives import printed_sign_cos, printed_sign_m, printed_sign_sin
+from paper_repro.theory.derivatives import (
     corrected_sign_cos,
     cos_power_derivative,
     mixed_derivative,
     sign,
     sin_power_derivative,
 )
-from paper_repro.printed.derivatives import printed_sign_cos, printed_sign_m, printed_sign_sin
 from paper_repro.util.registry import Outcome, claim
 
 

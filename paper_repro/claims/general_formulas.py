@@ -1,8 +1,8 @@
 """Claim ``general_formulas``: formulas of the normalizing coefficients by level, beyond the printed 0 and 1.
 
 Levels 0 and 1 (Remark normalizing_coeff_of_level_0, Proposition prop:level_1_coefficients) and the levels
-found by :func:`paper_repro.core.general_formulas.fit` are compared with the proven closed forms
-(:func:`paper_repro.core.closed_forms.proof_cached`) for every n up to ``n_max``.  A level's status:
+found by :func:`paper_repro.theory.general_formulas.fit` are compared with the proven closed forms
+(:func:`paper_repro.theory.closed_forms.proof_cached`) for every n up to ``n_max``.  A level's status:
 
 * **proven for n <= N**: the formula equals the closed form for every n <= N and those closed forms are
   proven for every alpha (so the formula is a theorem for n <= N; for larger n it is a conjecture);
@@ -17,8 +17,9 @@ from __future__ import annotations
 
 from flint import fmpq, fmpq_mat, fmpq_poly
 
-from paper_repro.core.closed_forms import closed_forms_cached, proof_cached
-from paper_repro.core.general_formulas import (
+from paper_repro.core.normalization import orbits
+from paper_repro.theory.closed_forms import closed_forms_cached, proof_cached
+from paper_repro.theory.general_formulas import (
     ALL_LEVELS_AT_1,
     CENTRE_END_VALUES,
     Formula,
@@ -29,7 +30,6 @@ from paper_repro.core.general_formulas import (
     interior_pattern,
     printed_level_formulas,
 )
-from paper_repro.core.normalization import orbits
 from paper_repro.util.registry import Outcome, claim
 
 #: Fit range per level: small n, the rest of the range is a genuine check.

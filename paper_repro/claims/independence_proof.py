@@ -2,7 +2,7 @@
 joint_systems_linear_independence and the partition-of-unity system, each checked by its own computation.
 
 * Index sets: the proof removes, step by step, the functions whose derivative along a parametrization
-  does not vanish at the boundary.  :func:`paper_repro.core.elimination.elimination` computes these steps
+  does not vanish at the boundary.  :func:`paper_repro.theory.elimination.elimination` computes these steps
   from the actual derivatives; the sets that remain are compared with the sums printed in eqs.
   linear_combination_union, linear_combination_union_reduced_null_equality_1..3,
   induction_hypothesis_for_linear_independence (L_r), induction_hypothesis_nex_step (L_{r+1}),
@@ -30,12 +30,12 @@ import mpmath
 import numpy as np
 from flint import fmpq, nmod_mat
 
-from paper_repro.core.derivatives import mixed_derivative
 from paper_repro.core.domain import rational_alpha
-from paper_repro.core.elimination import elimination
 from paper_repro.core.labels import exponents, united_system
 from paper_repro.core.normalization import orbit_coefficients, orbits
 from paper_repro.printed import independence as printed
+from paper_repro.theory.derivatives import mixed_derivative
+from paper_repro.theory.elimination import elimination
 from paper_repro.util.registry import Outcome, claim
 
 #: (variables as functions of (x, y) given alpha; the running parameter; the two partial variables (a, b)

@@ -1,18 +1,18 @@
 """Claim ``limit_formula``: the alpha -> 0 limit factors in closed form, for every n (Question que:limiting_case).
 
-See :mod:`paper_repro.core.limit_formula` and the written proof ``docs/limit_for_all_n.md``.  The proof for
+See :mod:`paper_repro.theory.limit_formula` and the written proof ``docs/limit_for_all_n.md``.  The proof for
 every n rests on four lemmas, each a finite statement per n; they are checked exactly for
 n <= ``checks_n_max``.  Independently of that proof, for n <= ``closed_form_n_max`` the formula is compared
 with the limits P(1) of the closed forms, which are proven for every alpha.  Consequences (every n): the limit
 of an order-n patch is a Bezier triangle of degree 3n - 1 whose control points are convex combinations of
-the trigonometric control points with the explicit weights of :func:`paper_repro.core.limits.conversion_matrix`.
+the trigonometric control points with the explicit weights of :func:`paper_repro.theory.limits.conversion_matrix`.
 """
 
 from __future__ import annotations
 
-from paper_repro.core.closed_forms import proof_cached
-from paper_repro.core.limit_formula import conversion_weights_nonnegative, limit_checks, limit_terms_formula
-from paper_repro.core.limits import conversion_is_convex, limit_terms
+from paper_repro.theory.closed_forms import proof_cached
+from paper_repro.theory.limit_formula import conversion_weights_nonnegative, limit_checks, limit_terms_formula
+from paper_repro.theory.limits import conversion_is_convex, limit_terms
 from paper_repro.util.registry import Outcome, claim
 from paper_repro.util.sweep import sweep
 

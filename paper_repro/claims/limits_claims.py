@@ -1,6 +1,6 @@
 """Claims ``bernstein_limit``, ``bezier_limit_degree`` and ``bezier_conversion`` (alpha -> 0).
 
-See :mod:`paper_repro.core.limits` for the derivation of the limits from the closed forms.
+See :mod:`paper_repro.theory.limits` for the derivation of the limits from the closed forms.
 """
 
 from __future__ import annotations
@@ -11,11 +11,12 @@ import mpmath
 import numpy as np
 from flint import fmpq
 
-from paper_repro.core.closed_forms import proof_cached
 from paper_repro.core.labels import index_of, united_system
-from paper_repro.core.limits import bernstein_index, conversion_matrix, limit_degree, limit_terms, multinomial
 from paper_repro.core.normalization import evaluate_normalized
 from paper_repro.printed.limits import CONVERSION_N2, CONVERSION_N3
+from paper_repro.theory.closed_forms import proof_cached
+from paper_repro.theory.limit_formula import multinomial
+from paper_repro.theory.limits import bernstein_index, conversion_matrix, limit_degree, limit_terms
 from paper_repro.util.registry import Outcome, claim
 
 

@@ -3,7 +3,7 @@
 * High precision: the delta_n x delta_n collocation matrix of the normalized system T-bar_{2n} at
   seeded interior points; singular values by mpmath SVD (n <= svd_n_max) or a certified lower bound
   of sigma_min from the ball-arithmetic inverse (larger n); rank by the gap criterion of
-  :func:`paper_repro.core.rank.numeric_rank`; the precision is doubled while sigma_min/sigma_max is within
+  :func:`paper_repro.theory.rank.numeric_rank`; the precision is doubled while sigma_min/sigma_max is within
   20 digits of the working precision.
 * Exact certificate: the collocation matrix at rational points (rational quarter tangents) reduced
   modulo the prime 2^31 - 1; full rank over F_p implies full rank over Q, i.e. linear independence
@@ -17,11 +17,11 @@ import mpmath
 from flint import fmpq
 
 from paper_repro.core.basis import evaluate
-from paper_repro.core.collocation import collocation_mp
 from paper_repro.core.context import ModpContext
 from paper_repro.core.domain import rational_alpha, sample_rational_points
 from paper_repro.core.labels import delta
-from paper_repro.core.rank import ball_sigma_min_bound, modp_rank, mp_singular_values, numeric_rank
+from paper_repro.core.normalization import collocation_mp
+from paper_repro.theory.rank import ball_sigma_min_bound, modp_rank, mp_singular_values, numeric_rank
 from paper_repro.util.progress import progress
 from paper_repro.util.registry import Outcome, claim
 

@@ -1,6 +1,6 @@
 """Claims ``elevation_closed_forms`` and ``transformation_closed_forms`` (open questions of Section 7).
 
-See :mod:`paper_repro.core.elevation_forms` and :mod:`paper_repro.core.matrix_forms`: every entry as
+See :mod:`paper_repro.theory.elevation_forms` and :mod:`paper_repro.theory.matrix_forms`: every entry as
 (P(c) + s Q(c))/s^K, recovered at rational alpha and proven for every alpha by an identity in tan(alpha/4)
 at a set of alpha-independent points certified unisolvent by an exact rank.  Published in
 ``data/elevation/`` and ``data/basis_transformation/`` as JSON and LaTeX tables.
@@ -8,12 +8,12 @@ at a set of alpha-independent points certified unisolvent by an exact rank.  Pub
 
 from __future__ import annotations
 
-from paper_repro.core.closed_forms import proof_cached
-from paper_repro.core.elevation_forms import closed_forms_and_proof
 from paper_repro.core.fourier import v_labels
 from paper_repro.core.labels import united_system
-from paper_repro.core.matrix_forms import sign_on_0_pi
-from paper_repro.core.ratfunc import half_angle_functions
+from paper_repro.theory.closed_forms import proof_cached
+from paper_repro.theory.elevation_forms import closed_forms_and_proof
+from paper_repro.theory.matrix_forms import sign_on_0_pi
+from paper_repro.theory.ratfunc import half_angle_functions
 from paper_repro.util.registry import Outcome, claim
 
 

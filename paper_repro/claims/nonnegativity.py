@@ -1,8 +1,8 @@
 """Claims ``nonnegativity`` (n <= 3, as the paper states) and ``nonnegativity_extended`` (open Question 1).
 
 For each n: the closed forms ``r = P(cos(alpha/2)) / sin^{2n+j}(alpha/2)`` of every coefficient are
-recovered (:mod:`paper_repro.core.modular`) and proven for every alpha
-(:mod:`paper_repro.core.identity_proof`: the partition-of-unity residual is the zero polynomial in
+recovered (:mod:`paper_repro.theory.modular`) and proven for every alpha
+(:mod:`paper_repro.theory.identity_proof`: the partition-of-unity residual is the zero polynomial in
 tan(alpha/4) at a unisolvent set of alpha-independent points, plus two rank certificates); P has no root
 in 0 < c < 1 and is positive there (Sturm sequences, exact).  Together: r > 0 for every alpha in (0, pi),
 hence the normalized basis is non-negative (every R, G, B function is non-negative on Omega^alpha) and
@@ -15,9 +15,9 @@ from __future__ import annotations
 
 from flint import fmpq_poly
 
-from paper_repro.core.closed_forms import closed_forms_cached, proof_cached, sign_on_unit_interval
 from paper_repro.core.labels import united_system
 from paper_repro.core.normalization import orbits
+from paper_repro.theory.closed_forms import closed_forms_cached, proof_cached, sign_on_unit_interval
 from paper_repro.util.registry import Outcome, claim
 from paper_repro.util.sweep import sweep
 

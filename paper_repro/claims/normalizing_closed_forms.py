@@ -2,7 +2,7 @@
 (:mod:`paper_repro.printed.normalization`), against independent exact computation.
 
 * Final forms of Examples normalizing_coefficients_n_1..3: the identity proof of
-  :mod:`paper_repro.core.identity_proof` -- a proof for all alpha (or a counterexample).
+  :mod:`paper_repro.theory.identity_proof` -- a proof for all alpha (or a counterexample).
 * Intermediate expressions of the same Examples, Remark normalizing_coeff_of_level_0 and Proposition
   prop:level_1_coefficients (n = 2..n_max) and the relations of Example exmp:from_1_to_2: exact
   comparison at sampled rational-tangent alpha (exact evidence); Remark and Proposition are in
@@ -15,13 +15,13 @@ from __future__ import annotations
 
 from flint import fmpq, fmpq_poly
 
-from paper_repro.core.closed_forms import ClosedForm, closed_forms_cached, proof_cached, prove
 from paper_repro.core.domain import rational_alpha
 from paper_repro.core.labels import united_system
 from paper_repro.core.normalization import coefficients, orbits
-from paper_repro.core.ratfunc import half_angle_functions, poly_at
 from paper_repro.core.univariate import c_const, c_numerator
 from paper_repro.printed.normalization import FINAL, INTERMEDIATE, from_1_to_2, prop_level_1, remark_level_0
+from paper_repro.theory.closed_forms import ClosedForm, closed_forms_cached, proof_cached, prove
+from paper_repro.theory.ratfunc import half_angle_functions, poly_at
 from paper_repro.util.registry import Outcome, claim
 
 

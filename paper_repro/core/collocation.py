@@ -24,7 +24,6 @@ from __future__ import annotations
 from collections.abc import Callable
 from dataclasses import dataclass
 
-import mpmath
 import numpy as np
 
 from paper_repro.core.context import Context
@@ -71,19 +70,3 @@ def collocate(ctx: Context, system: Callable[[int], tuple[np.ndarray, np.ndarray
                                           f"of point set {k} (arith {ctx.name!r})")
         return Collocation(x, k, extra)
     raise ArithmeticError(f"{what}: the collocation matrix is singular for {attempts} point sets (arith {ctx.name!r})")
-
-
-def collocation_mp(n: int, alpha_text: str, dps: int, seed: int, control: bool = False) -> np.ndarray:
-    """Normalized collocation matrix of T_{2n} at delta_n seeded points of Omega^alpha, in mp at ``dps``
-    digits (``control``: the last column replaced by the sum of the first two, a rank-deficient control)."""
-    from paper_repro.core.alphas import alpha_mp
-    from paper_repro.core.domain import mp_domain_points
-    from paper_repro.core.labels import delta
-    from paper_repro.core.normalization import evaluate_normalized
-
-    with mpmath.workdps(dps):
-        alpha = alpha_mp(alpha_text)
-        a = evaluate_normalized(n, alpha, mp_domain_points(alpha, delta(n), seed), "mp", dps=dps)
-        if control:
-            a[:, -1] = a[:, 0] + a[:, 1]
-        return a

@@ -12,7 +12,7 @@ The coefficients ``r_{2n,2n-i,j}, g_{...}, b_{...}`` are the unique solution of
   (it holds on the triangle, hence everywhere on the plane), so the collocation points may be fixed
   independently of alpha (:func:`fixed_points`; w = alpha - u - v may be negative).  Then every
   coefficient is a rational function of t = tan(alpha/4) of bounded degree (:func:`cramer_degree_bound`),
-  which is what makes the closed-form checks of :mod:`paper_repro.core.closed_forms` proofs.
+  which is what makes the closed-form checks of :mod:`paper_repro.theory.closed_forms` proofs.
 
 Arithmetics: exact rationals at rational-tangent alpha (``'exact'``), mpmath (``'mp'``) and float.
 """
@@ -25,11 +25,12 @@ import mpmath
 import numpy as np
 from flint import arb, fmpq
 
+from paper_repro.core.alphas import alpha_mp
 from paper_repro.core.basis import evaluate
 from paper_repro.core.collocation import Collocation, collocate
 from paper_repro.core.context import BallContext, Context, ExactContext, get_context
-from paper_repro.core.domain import RationalAngle, RationalPoints
-from paper_repro.core.labels import BasisLabel, compose, exponents, united_system
+from paper_repro.core.domain import RationalAngle, RationalPoints, mp_domain_points
+from paper_repro.core.labels import BasisLabel, compose, delta, exponents, united_system
 from paper_repro.util.cache import cached
 from paper_repro.util.validation import check_alpha, check_n
 
@@ -288,3 +289,14 @@ def evaluate_normalized(n: int, alpha, points, arith: str | Context = "float", *
 
 __all__ = ["orbits", "coefficients", "coefficient_vector", "orbit_coefficients", "evaluate_normalized",
            "solve_reduced", "solve_reduced_exact", "solve_full_exact", "cramer_degree_bound"]
+
+
+def collocation_mp(n: int, alpha_text: str, dps: int, seed: int, control: bool = False) -> np.ndarray:
+    """Normalized collocation matrix of T_{2n} at delta_n seeded points of Omega^alpha, in mp at ``dps``
+    digits (``control``: the last column replaced by the sum of the first two, a rank-deficient control)."""
+    with mpmath.workdps(dps):
+        alpha = alpha_mp(alpha_text)
+        a = evaluate_normalized(n, alpha, mp_domain_points(alpha, delta(n), seed), "mp", dps=dps)
+        if control:
+            a[:, -1] = a[:, 0] + a[:, 1]
+        return a

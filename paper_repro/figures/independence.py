@@ -2,7 +2,7 @@
 
 Every function of T_{2n} is a product U(u) V(v) W(w) of powers of half-angle sines and cosines, so
 its derivatives along the parametrizations of the proof factor: derivatives at 0 are exact
-(:mod:`paper_repro.core.derivatives`), derivatives at a generic interior point are evaluated with mpmath.
+(:mod:`paper_repro.theory.derivatives`), derivatives at a generic interior point are evaluated with mpmath.
 
 * ``derivative_scheme_n_4``: for k = 0..4, which functions have a vanishing 4th order mixed partial
   d^4/dv^{4-k} dw^k at y = 0 under parametrization_for_partition_of_unity (black) or not (coloured);
@@ -20,9 +20,9 @@ from pathlib import Path
 
 import numpy as np
 
-from paper_repro.core.elimination import deriv_at_0, elimination
 from paper_repro.core.labels import exponents, united_system
 from paper_repro.core.layout import position
+from paper_repro.theory.elimination import deriv_at_0, elimination
 from paper_repro.util.registry import figure
 
 from . import COLOR_OF, plt, save
@@ -108,8 +108,8 @@ def make_singular_values(outdir: Path) -> list[Path]:
     import json
 
     from paper_repro.core.alphas import alpha_float
-    from paper_repro.core.collocation import collocation_mp
-    from paper_repro.core.rank import mp_singular_values
+    from paper_repro.core.normalization import collocation_mp
+    from paper_repro.theory.rank import mp_singular_values
     from paper_repro.util.io import DATA
 
     fig, (ax1, ax2) = plt.subplots(2, 1, figsize=(10, 11))

@@ -10,8 +10,9 @@ import numpy as np
 from paper_repro.core.elevation import elevate
 from paper_repro.core.labels import united_system
 from paper_repro.core.layout import edges, net_edges, position
-from paper_repro.core.limits import limit_terms, multinomial
 from paper_repro.surfaces.patch import Patch
+from paper_repro.theory.limit_formula import multinomial
+from paper_repro.theory.limits import limit_terms
 from paper_repro.util.io import DATA
 from paper_repro.util.registry import figure
 
@@ -58,7 +59,7 @@ def make_limit_cases(outdir: Path) -> list[Path]:
                 "p_{d,e,f} (black square) is a convex combination of control points r, g, b; arrows show, for the "
                 "points marked in yellow, which control points enter and with which weight.")
 def make_conversion(outdir: Path) -> list[Path]:
-    from paper_repro.core.limits import conversion_matrix
+    from paper_repro.theory.limits import conversion_matrix
 
     fig, axes = plt.subplots(2, 1, figsize=(11, 21))
     shown = {2: [(3, 2, 0), (1, 1, 3)], 3: [(2, 1, 5), (5, 2, 1)]}

@@ -3,7 +3,7 @@
 * ``normalizing_coefficients``: r_{2n,2n-i,j}^alpha versus alpha for n = 1, 2, 3 (log scale), computed
   by the certified ball-arithmetic solve of :mod:`paper_repro.core.normalization` (not from closed forms).
 * ``smallest_coefficient``: the smallest of r_{2n,2n-i,j}^alpha sin^{2n+j}(alpha/2) = P(cos(alpha/2))
-  over all coefficients, versus n, for several alpha (closed forms of :mod:`paper_repro.core.closed_forms`).
+  over all coefficients, versus n, for several alpha (closed forms of :mod:`paper_repro.theory.closed_forms`).
 """
 
 from __future__ import annotations
@@ -12,8 +12,8 @@ from pathlib import Path
 
 import numpy as np
 
-from paper_repro.core.closed_forms import closed_forms_cached
 from paper_repro.core.normalization import orbit_coefficients, orbits
+from paper_repro.theory.closed_forms import closed_forms_cached
 from paper_repro.util.registry import figure
 
 from . import plt, save

@@ -27,8 +27,8 @@ from dataclasses import dataclass
 
 from flint import fmpq, fmpq_mat, fmpq_poly
 
-from paper_repro.core.closed_forms import closed_forms_cached
 from paper_repro.core.univariate import c_numerator
+from paper_repro.theory.closed_forms import closed_forms_cached
 
 KINDS = ("interior", "diagonal", "all")
 

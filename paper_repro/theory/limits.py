@@ -2,7 +2,7 @@
 
 With u = alpha x, v = alpha y, w = alpha z (x + y + z = 1) a function of level j of T_{2n} has
 sine exponents (a, b, c) for (u, v, w) with a + b + c = 2n + j, and its coefficient is
-P(cos(alpha/2)) / sin^{2n+j}(alpha/2) (:mod:`paper_repro.core.closed_forms`).  Since
+P(cos(alpha/2)) / sin^{2n+j}(alpha/2) (:mod:`paper_repro.theory.closed_forms`).  Since
 sin(alpha x/2) / sin(alpha/2) -> x and cos -> 1::
 
     lim T-bar_f(alpha x, alpha y, alpha z) = P_f(1) x^a y^b z^c,
@@ -14,15 +14,14 @@ non-zero limit; :func:`conversion_matrix` gives the resulting control-net conver
 
 from __future__ import annotations
 
-from math import factorial
-
 import numpy as np
 from flint import fmpq
 
-from paper_repro.core.closed_forms import closed_forms_cached
 from paper_repro.core.labels import delta, exponents, united_system
 from paper_repro.core.nets import check_net
 from paper_repro.core.normalization import orbits
+from paper_repro.theory.closed_forms import closed_forms_cached
+from paper_repro.theory.limit_formula import limit_terms_formula, multinomial
 
 
 def limit_terms(n: int) -> list[tuple[fmpq, tuple[int, int, int]]]:
@@ -43,8 +42,6 @@ def _terms(n: int, source: str) -> list[tuple[fmpq, tuple[int, int, int]]]:
     if source == "closed_forms":
         return limit_terms(n)
     if source == "formula":
-        from paper_repro.core.limit_formula import limit_terms_formula
-
         return limit_terms_formula(n)
     raise ValueError(f"source must be 'closed_forms' or 'formula', got {source!r}")
 
@@ -56,10 +53,6 @@ def limit_degree(n: int, source: str = "closed_forms") -> int:
 
 def bernstein_index(t: tuple[int, int, int]) -> str:
     return f"P^{sum(t)}_{{{t[0]},{t[1]},{t[2]}}}"
-
-
-def multinomial(m: int, t: tuple[int, int, int]) -> int:
-    return factorial(m) // (factorial(t[0]) * factorial(t[1]) * factorial(t[2]))
 
 
 def bezier_indices(N: int) -> list[tuple[int, int, int]]:

@@ -3,9 +3,9 @@
 For every orbit representative ``r_{2n,2n-i,j}`` we look for a polynomial P with rational
 coefficients such that ``r_{2n,2n-i,j}^alpha = P(cos(alpha/2)) / sin^{2n+j}(alpha/2)``.
 
-* Recovery (:func:`recover`, :mod:`paper_repro.core.modular`): solves over F_p at rational-tangent alpha,
+* Recovery (:func:`recover`, :mod:`paper_repro.theory.modular`): solves over F_p at rational-tangent alpha,
   interpolation in ``c = cos(alpha/2)``, Chinese remainders.  That alone is *evidence*.
-* Proof (:func:`prove`, :mod:`paper_repro.core.identity_proof`): the partition-of-unity residual of the
+* Proof (:func:`prove`, :mod:`paper_repro.theory.identity_proof`): the partition-of-unity residual of the
   candidates is the zero polynomial in t = tan(alpha/4) at alpha-independent points that are unisolvent
   for the symmetric functions of the space containing T_{2n}; with two rank certificates this proves the
   candidates for *every* alpha (the argument, with its assumptions, is in that module and in
@@ -19,48 +19,34 @@ from __future__ import annotations
 
 import hashlib
 import json
-from dataclasses import dataclass
 
 from flint import fmpq, fmpq_poly
 
-from paper_repro.core.domain import RationalAngle, rational_alpha
+from paper_repro.core.domain import rational_alpha
 from paper_repro.core.normalization import orbits, parse_fmpq, solve_reduced_exact
+from paper_repro.theory.closed_form import ClosedForm, sin_power
 from paper_repro.util.cache import cached
 
-
-def sin_power(label_j: int, n: int) -> int:
-    return 2 * n + label_j
+__all__ = ["ClosedForm", "sin_power"]
 
 
-@dataclass
-class ClosedForm:
-    label: str
-    sin_power: int
-    numerator: fmpq_poly  # in c = cos(alpha/2)
-
-    def value(self, alpha: RationalAngle) -> fmpq:
-        return self.numerator(alpha.cos_half) / alpha.sin_half ** self.sin_power
-
-    def as_json(self) -> dict:
-        coeffs = [str(x) for x in self.numerator.coeffs()] or ["0"]
-        return {"sin_power": self.sin_power, "numerator": coeffs}
 
 
 def recover(n: int, verify: int = 2, max_degree: int | None = None) -> dict[str, ClosedForm]:
     """Closed forms ``P(c)/s^{2n+j}`` of every orbit representative (multimodular, see
-    :func:`paper_repro.core.modular.recover_modular`)."""
-    from paper_repro.core.modular import recover_modular
+    :func:`paper_repro.theory.modular.recover_modular`)."""
+    from paper_repro.theory.modular import recover_modular
 
     return recover_modular(n, verify=verify, max_degree=max_degree)
 
 
 def prove(n: int, forms: dict[str, ClosedForm], progress: bool = False) -> dict:
-    """Prove ``forms`` for every alpha (:func:`paper_repro.core.identity_proof.prove_identity`).
+    """Prove ``forms`` for every alpha (:func:`paper_repro.theory.identity_proof.prove_identity`).
 
     On failure, ``mismatch`` names the first candidate that differs from the exact coefficient at
     tan(alpha/4) = ``t`` (1/2, or the next 1/k where the candidates differ from the exact solution).
     """
-    from paper_repro.core.identity_proof import prove_identity
+    from paper_repro.theory.identity_proof import prove_identity
 
     res = prove_identity(n, forms, progress=progress)
     res["mismatch"] = None

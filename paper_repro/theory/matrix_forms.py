@@ -28,9 +28,9 @@ from dataclasses import dataclass
 
 from flint import fmpq, fmpq_mat, fmpq_poly
 
-from paper_repro.core.closed_forms import sturm_count
 from paper_repro.core.domain import rational_alpha
-from paper_repro.core.ratfunc import RatFunc, half_angle_functions, poly_at
+from paper_repro.theory.closed_forms import sturm_count
+from paper_repro.theory.ratfunc import RatFunc, half_angle_functions, poly_at
 
 
 @dataclass(frozen=True)

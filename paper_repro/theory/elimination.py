@@ -2,7 +2,7 @@
 
 Every function of T_{2n} is a product U(u) V(v) W(w) of powers of half-angle sines and cosines, so its
 derivatives along the parametrizations of the proof factor: derivatives at 0 are exact
-(:mod:`paper_repro.core.derivatives`), derivatives at interior points are evaluated with mpmath.
+(:mod:`paper_repro.theory.derivatives`), derivatives at interior points are evaluated with mpmath.
 :func:`elimination` follows the proof: for r = 0, 1, ..., n-1 and the parametrizations
 parametrization_1_y_0, _2_x_0, _3_y_0 in turn, the functions still alive whose r-th derivative at the
 boundary does not vanish are removed (their coefficients are forced to 0); only the centre must remain.
@@ -15,8 +15,8 @@ from math import comb
 import mpmath
 from flint import fmpq
 
-from paper_repro.core.derivatives import mixed_derivative
 from paper_repro.core.labels import exponents, united_system
+from paper_repro.theory.derivatives import mixed_derivative
 
 HALF = fmpq(1, 2)
 

@@ -1,6 +1,6 @@
 """Multimodular recovery of the closed forms ``r = P(cos(alpha/2)) / sin^{2n+j}(alpha/2)`` (open Question 1).
 
-The recovery only *finds* candidates; :mod:`paper_repro.core.identity_proof` proves them.
+The recovery only *finds* candidates; :mod:`paper_repro.theory.identity_proof` proves them.
 
 For a prime p (below 2^31, so that numpy's int64 products do not overflow) and rational shape
 parameters ``alpha = 4 atan(1/k)``, the reduced partition-of-unity system
@@ -28,6 +28,7 @@ from paper_repro.core.context import ModpContext, power_table
 from paper_repro.core.domain import rational_alpha
 from paper_repro.core.labels import exponent_matrix
 from paper_repro.core.normalization import _orbit_columns, _plane_points, fixed_points, orbits
+from paper_repro.theory.closed_form import ClosedForm
 from paper_repro.util.validation import check_n
 
 #: Largest number of primes tried before giving up (each adds about 31 bits).
@@ -183,8 +184,6 @@ def recover_modular(n: int, *, verify: int = 2, max_degree: int | None = None, p
     ``ArithmeticError`` if no degree <= ``max_degree`` (default 6n + 4) fits or the reconstruction does
     not stabilise within :data:`MAX_PRIMES` primes.
     """
-    from paper_repro.core.closed_forms import ClosedForm
-
     n = check_n(n)
     orb = orbits(n)
     limit = max_degree if max_degree is not None else 6 * n + 4

@@ -1,7 +1,7 @@
 """Proof, for every alpha, that candidate closed forms are the normalizing coefficients (Question 1).
 
 Candidates: ``x_o(alpha) = P_o(c) / s^{k_o}`` for every orbit o of T_{2n} (c = cos(alpha/2), s = sin(alpha/2)),
-e.g. from :func:`paper_repro.core.modular.recover_modular` or printed in the paper.
+e.g. from :func:`paper_repro.theory.modular.recover_modular` or printed in the paper.
 
 **The argument** (written out in ``docs/proof_of_closed_forms.md``).  On the plane u + v + w = alpha write
 the functions of T_{2n} in the coordinates (u, v).  Each is a product of powers of half-angle sines and
@@ -28,10 +28,10 @@ depend on alpha and has real dimension 3n^2 + 3n + 1 = delta_n.
    is linearly independent: outside E_1 by step 1, and for every alpha by Theorem
    joint_systems_linear_independence of the paper (checked here by exact ranks at sampled alpha only).
 
-Positivity of P_o on 0 < c < 1 (Sturm, :func:`paper_repro.core.closed_forms.sign_on_unit_interval`) then
+Positivity of P_o on 0 < c < 1 (Sturm, :func:`paper_repro.theory.closed_forms.sign_on_unit_interval`) then
 proves x_o(alpha) > 0 for every alpha in (0, pi).
 
->>> from paper_repro.core.modular import recover_modular
+>>> from paper_repro.theory.modular import recover_modular
 >>> prove_identity(2, recover_modular(2))["proved"]
 True
 """

@@ -1,7 +1,7 @@
 """Closed formula of the alpha -> 0 limit factors (Question que:limiting_case), proven for every n.
 
 With u = alpha x, v = alpha y, w = alpha z (x + y + z = 1), the normalized function
-``R-bar_{2n,2n-i,j}`` tends to ``L x^{2n-i} y^j z^i`` (:mod:`paper_repro.core.limits`; G and B by the
+``R-bar_{2n,2n-i,j}`` tends to ``L x^{2n-i} y^j z^i`` (:mod:`paper_repro.theory.limits`; G and B by the
 cyclic rule), with
 
     L_{n,i,j} = (2n+j)! / ((2n-i)! j! i!) * rho,   rho = 1 (j = 0), (2n-j)/(2n+j) (i = j or i = 2n-j, j >= 1),
@@ -58,7 +58,7 @@ def limit_factor(n: int, i: int, j: int) -> fmpq:
 
 
 def limit_terms_formula(n: int) -> list[tuple[fmpq, tuple[int, int, int]]]:
-    """Like :func:`paper_repro.core.limits.limit_terms` (internal order), from the formula."""
+    """Like :func:`paper_repro.theory.limits.limit_terms` (internal order), from the formula."""
     out = []
     for lab in united_system(n):
         e = exponents(lab)
@@ -66,10 +66,13 @@ def limit_terms_formula(n: int) -> list[tuple[fmpq, tuple[int, int, int]]]:
     return out
 
 
-def _multinomial(s: tuple[int, int, int]) -> int:
-    """:func:`paper_repro.core.limits.multinomial` of ``s``, and 0 when an entry is negative."""
-    from paper_repro.core.limits import multinomial
+def multinomial(m: int, t: tuple[int, int, int]) -> int:
+    """The multinomial coefficient m! / (t0! t1! t2!)."""
+    return factorial(m) // (factorial(t[0]) * factorial(t[1]) * factorial(t[2]))
 
+
+def _multinomial(s: tuple[int, int, int]) -> int:
+    """:func:`multinomial` of ``s``, and 0 when an entry is negative."""
     return 0 if min(s) < 0 else multinomial(sum(s), s)
 
 

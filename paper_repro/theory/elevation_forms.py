@@ -7,7 +7,7 @@
   V_n = T_{2n} N^{-1}; for the normalized basis V_n = T-bar M with ``M = diag(x)^{-1} N^{-1}`` and
   ``M^{-1} = N diag(x)``.
 
-Entries are recovered and proven by :mod:`paper_repro.core.matrix_forms`.
+Entries are recovered and proven by :mod:`paper_repro.theory.matrix_forms`.
 """
 
 from __future__ import annotations
@@ -20,8 +20,8 @@ from paper_repro.core.context import ExactContext, ModpContext, to_fmpq_mat
 from paper_repro.core.domain import RationalPoints, rational_alpha, sample_rational_points
 from paper_repro.core.fourier import evaluate_v
 from paper_repro.core.labels import delta, exponent_matrix
-from paper_repro.core.matrix_forms import prove_matrix_identity, recover_entries
 from paper_repro.core.normalization import fixed_points
+from paper_repro.theory.matrix_forms import prove_matrix_identity, recover_entries
 
 PRIME = 2**31 - 1
 T0 = fmpq(1, 3)
