@@ -110,8 +110,10 @@ def test_bad_arith_counts_and_sizes(tmp_path):
         Patch(1, 1.0, np.zeros((7, 3))).derivative([[0.3, 0.3, 0.4]], (1, 1, 1))
     with pytest.raises(ValueError, match="n must"):
         delta(0)
-    with pytest.raises(ValueError, match="n must be at most 60 for normalizing coefficients"):
-        coefficients(200, 1.0)  # would otherwise solve a 20301-unknown system: refused at once
+    with pytest.raises(ValueError, match="exceeds float64"):
+        coefficients(200, 1.0)  # r itself is about e^710 there: a clear refusal, never inf
+    with pytest.raises(ValueError, match="n must be at most 200 for normalizing coefficients in arith 'exact'"):
+        coefficients(201, rational_alpha((1, 2)), "exact")  # refused before any work (cost n^3 on O(n)-digit numbers)
     with pytest.raises(ValueError, match="n must be a positive integer from 1 to 1000"):
         evaluate(10**6, 1.0, [[0.3, 0.3, 0.4]])
     with pytest.raises(ValueError, match="evaluate fewer points"):

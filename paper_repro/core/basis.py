@@ -11,7 +11,7 @@ from collections.abc import Sequence
 import numpy as np
 
 from paper_repro.core.context import Context, get_context, power_table
-from paper_repro.core.domain import half_angle_values
+from paper_repro.core.domain import half_angle_values, scaled_half_angle_values
 from paper_repro.core.labels import BasisLabel, delta, exponent_matrix, exponents
 from paper_repro.util.validation import check_n
 
@@ -38,7 +38,7 @@ def monomials(exps: np.ndarray, trig: Sequence[np.ndarray], ctx: Context) -> np.
 
 
 def evaluate(n: int, alpha, points, arith: str | Context = "float", *, dps: int = 50,
-             labels: Sequence[BasisLabel] | None = None) -> np.ndarray:
+             labels: Sequence[BasisLabel] | None = None, scaled: bool = False) -> np.ndarray:
     """Values of T_{2n}^alpha (un-normalized, eq. united_system) at ``points``: an ``(P, delta_n)`` array.
 
     Parameters
@@ -50,6 +50,9 @@ def evaluate(n: int, alpha, points, arith: str | Context = "float", *, dps: int 
         (every arithmetic).
     arith : a context or its name (:func:`paper_repro.core.context.get_context`; ``dps`` for ``'mp'``).
     labels : evaluate these functions instead of T_{2n} (any R, G, B labels of order n).
+    scaled : divide every sine factor by sin(alpha/2), i.e. return ``f / s^{2n+j}`` (bounded by 1 on
+        Omega^alpha; multiplied by the scaled coefficients ``s^{2n+j} r`` it gives the blending values without
+        overflow for any alpha, :func:`paper_repro.core.domain.scaled_half_angle_values`).
 
     Columns follow :func:`paper_repro.core.labels.united_system` (or ``labels``).
 
@@ -65,6 +68,6 @@ def evaluate(n: int, alpha, points, arith: str | Context = "float", *, dps: int 
         raise ValueError(f"points: {count} points x delta_n = {delta(n)} functions is more than {MAX_MATRIX_ENTRIES:,} "
                          "values in one array; evaluate fewer points at a time (Patch evaluates in blocks)")
     exps = exponent_matrix(n) if labels is None else np.array([exponents(lab) for lab in labels])
-    trig = half_angle_values(points, alpha, ctx)
+    trig = (scaled_half_angle_values if scaled else half_angle_values)(points, alpha, ctx)
     with ctx.scope():
         return monomials(exps, trig, ctx)

@@ -19,7 +19,7 @@ import mpmath
 import numpy as np
 from flint import fmpq
 
-from paper_repro.core.context import Context, ExactContext
+from paper_repro.core.context import Context, ExactContext, FloatContext
 from paper_repro.util.validation import DOMAIN_TOL, check_alpha
 
 
@@ -211,6 +211,41 @@ def half_angle_values(points, alpha, ctx: Context) -> list[np.ndarray]:
                         f"got {type(points).__name__}")
     arr = check_points(points, alpha)
     return plane_half_angle_values(arr, ctx)
+
+
+#: Below this alpha the float sine ratios sin(x/2)/sin(alpha/2) are taken as x/alpha (relative error < 1e-17).
+SMALL_ALPHA = 1e-8
+
+
+def scaled_half_angle_values(points, alpha, ctx: Context) -> list[np.ndarray]:
+    """Like :func:`half_angle_values`, but the three sines divided by ``s = sin(alpha/2)``.
+
+    Every function of T_{2n} of level j has exactly 2n + j sine factors, so ``r f = (s^{2n+j} r) * f / s^{2n+j}``
+    is the scaled coefficient times the monomial in these ratios, each in [0, 1] on Omega^alpha: nothing
+    overflows or underflows for any alpha in (0, pi).  In float64 the ratios are ``x / alpha`` below
+    :data:`SMALL_ALPHA` (where sin(x/2) = x/2 to the last bit) and ``sin(x/2) / sin(alpha/2)`` above.
+
+    >>> from paper_repro.core.context import get_context
+    >>> vals = scaled_half_angle_values([[5e-301, 3e-301, 2e-301]], 1e-300, get_context("float"))
+    >>> [float(round(v[0], 12)) for v in vals[::2]]
+    [0.5, 0.3, 0.2]
+    """
+    if isinstance(points, RationalPoints) or ctx.exact or not isinstance(ctx, FloatContext):
+        vals = half_angle_values(points, alpha, ctx)
+        a = alpha if alpha is not None else points.alpha
+        with ctx.scope():
+            sa, _ = ctx.alpha_half(a)
+            for slot in (0, 2, 4):
+                vals[slot] = ctx.div(vals[slot], sa)
+        return vals
+    arr = check_points(points, alpha)
+    a = float(alpha)
+    vals = plane_half_angle_values(arr, ctx)
+    if a < SMALL_ALPHA:
+        ratio = np.clip(arr / a, 0.0, None)
+        return [ratio[:, 0], vals[1], ratio[:, 1], vals[3], ratio[:, 2], vals[5]]
+    sa = math.sin(a / 2)
+    return [vals[0] / sa, vals[1], vals[2] / sa, vals[3], vals[4] / sa, vals[5]]
 
 
 def plane_half_angle_values(uvw: np.ndarray, ctx: Context) -> list[np.ndarray]:

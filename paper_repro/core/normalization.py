@@ -1,7 +1,11 @@
 """Normalizing coefficients of T_{2n}^alpha (Section sec:partition_of_unity, eq. normalizing_weights).
 
 The coefficients ``r_{2n,2n-i,j}, g_{...}, b_{...}`` are the unique solution of
-``1 = sum_f x_f f(u, v, w)`` on Omega^alpha.  They are computed *without* the paper's closed forms:
+``1 = sum_f x_f f(u, v, w)`` on Omega^alpha.  The library evaluates them from the all-n formula
+(:mod:`paper_repro.core.normalizing_formula`, proven in docs/question1_for_all_n.md) in every arithmetic, with
+no linear solve (:func:`orbit_coefficients`, :func:`scaled_orbit_coefficients`).  This module also keeps the
+independent route, used by tests and claims to check the formula -- the collocation solve, which knows nothing
+of any closed form:
 
 * Symmetry: the group of the six permutations of (u, v, w) maps T_{2n} onto itself (claim
   ``symmetry``), so by uniqueness the coefficients are constant on its orbits; there are
@@ -19,6 +23,7 @@ Arithmetics: exact rationals at rational-tangent alpha (``'exact'``), mpmath (``
 
 from __future__ import annotations
 
+import math
 from functools import cache, lru_cache
 
 import mpmath
@@ -28,14 +33,22 @@ from flint import arb, fmpq
 from paper_repro.core.alphas import alpha_mp
 from paper_repro.core.basis import evaluate
 from paper_repro.core.collocation import Collocation, collocate
-from paper_repro.core.context import BallContext, Context, ExactContext, get_context
+from paper_repro.core.context import Context, ExactContext, FloatContext, LogContext, get_context
 from paper_repro.core.domain import RationalAngle, RationalPoints, mp_domain_points
 from paper_repro.core.labels import BasisLabel, compose, delta, exponents, united_system
+from paper_repro.core.normalizing_formula import scaled_table, sin_powers
 from paper_repro.util.cache import cached
 from paper_repro.util.validation import check_alpha, check_n
 
-#: Largest order whose normalizing coefficients are computed (exact at n = 40 takes minutes).
+#: Largest orders for the normalizing coefficients from the all-n formula (n^3 operations; measured: exact
+#: n = 45 in 0.2 s, n = 100 in 4 s, n = 200 in about 60 s; float n = 200 in 0.6 s; logarithms n = 1000 in ~100 s).
+MAX_N_EXACT = 200
+MAX_N_MP = 200
+MAX_N_FLOAT = 1000
+MAX_N_LOG = 1000
+#: Kept for the collocation solve (the independent check): (n+1)(n+2)/2 unknowns.
 MAX_N_COEFFICIENTS = 60
+_LOG_FLOAT_MAX = math.log(np.finfo(np.float64).max)
 
 PERMUTATIONS = ((0, 1, 2), (0, 2, 1), (1, 0, 2), (1, 2, 0), (2, 0, 1), (2, 1, 0))
 
@@ -179,38 +192,102 @@ def exact_coefficients_cached(n: int, alpha: RationalAngle) -> tuple[list[fmpq],
     return [parse_fmpq(x) for x in stored["solution"]], stored["point_set"]
 
 
-@lru_cache(maxsize=256)
-def _ball_orbit_coefficients(n: int, alpha_str: str, digits: int) -> tuple[str, ...]:
-    """Orbit coefficients to ``digits`` correct significant digits, as decimal strings.
+def _half_angle(alpha, ctx: Context):
+    """``(c, s, s^2)`` of alpha/2 in the context (alpha a RationalAngle, or a real in (0, pi))."""
+    if isinstance(alpha, RationalAngle):
+        if alpha.t == 0:
+            raise ValueError("alpha must lie in the open interval (0, pi): tan(alpha/4) = 0 gives alpha = 0")
+        sh, ch = ctx.from_rational(alpha.sin_half), ctx.from_rational(alpha.cos_half)
+    else:
+        if ctx.exact:
+            raise TypeError(f"alpha must be a RationalAngle (rational tan(alpha/4)) for arith {ctx.name!r}, "
+                            f"got {type(alpha).__name__}")
+        if not ctx.encloses or not isinstance(alpha, arb):
+            check_alpha(alpha)
+        sh, ch = ctx.alpha_half(alpha)
+    return ch, sh, ctx.mul(sh, sh)
 
-    Ball arithmetic (:class:`~paper_repro.core.context.BallContext`): the fixed collocation points have
-    rational half-angle sines and cosines, only sin(alpha/2), cos(alpha/2) are balls; the reduced system
-    is solved by :func:`solve_reduced` and the precision doubled until every coefficient's radius is
-    below ``10^-digits`` of its midpoint.  The result is therefore certified (up to the decimal
-    rounding of alpha itself).
+
+def _float_half_angle(alpha) -> tuple[float, float, float]:
+    """``(c, s, s^2)`` in float64, accurate for every alpha in (0, pi) (also below 1e-154, where s^2 underflows:
+    then it is 0 to within float64's range, which is what the formula needs)."""
+    a = float(alpha) if isinstance(alpha, RationalAngle) else check_alpha(alpha)
+    s = math.sin(a / 2)
+    return math.cos(a / 2), s, s * s
+
+
+@lru_cache(maxsize=64)
+def _log_scaled_float(n: int, a: float) -> tuple[float, ...]:
+    c, _, s2 = _float_half_angle(a)
+    ctx = LogContext()
+    return tuple(float(x) for x in scaled_table(n, ctx.convert(c), ctx.convert(s2), ctx))
+
+
+@lru_cache(maxsize=64)
+def _scaled_float(n: int, a: float) -> tuple[float, ...] | None:
+    c, _, s2 = _float_half_angle(a)
+    with np.errstate(over="ignore", invalid="ignore"):
+        try:
+            vals = scaled_table(n, c, s2, FloatContext())
+        except OverflowError:
+            return None
+    vals = tuple(float(x) for x in vals)
+    return vals if all(math.isfinite(x) for x in vals) else None
+
+
+def log_scaled_orbit_coefficients(n: int, alpha) -> list[float]:
+    """Natural logarithms of ``s^{2n+j} r_{2n,2n-i,j}`` (orbit order), float64, for every n up to
+    :data:`MAX_N_LOG` and every alpha in (0, pi): the logarithm never overflows.
+
+    >>> import math
+    >>> [round(math.exp(x), 12) for x in log_scaled_orbit_coefficients(1, 2.0)][:2]
+    [1.0, 1.080604611736]
     """
-    prec = int(3.33 * digits) + 64
-    for _ in range(8):
-        ctx = BallContext(prec=prec)
-        with ctx.scope():
-            try:
-                xs = list(solve_reduced(n, arb(alpha_str), ctx, verify=0, attempts=1).solution.reshape(-1))
-            except ArithmeticError:
-                prec *= 2
-                continue
-            if all(v.rad() <= abs(v.mid()) * arb(10) ** (-digits) for v in xs):
-                return tuple(v.mid().str(digits + 5, radius=False) for v in xs)
-        prec *= 2
-    raise ArithmeticError(f"normalization: no certified {digits} digits up to {prec // 2} bits (n={n})")
+    n = check_n(n)
+    if n > MAX_N_LOG:
+        raise ValueError(f"n must be at most {MAX_N_LOG} for the logarithmic coefficients (cost grows as n^3: about "
+                         f"100 s at n = 1000), got {n}")
+    return list(_log_scaled_float(n, float(alpha) if isinstance(alpha, RationalAngle) else check_alpha(alpha)))
+
+
+def scaled_orbit_coefficients(n: int, alpha, arith: str | Context = "float", *, dps: int | None = None) -> list:
+    """``s^{2n+j} r_{2n,2n-i,j}`` for the orbit representatives (order of :func:`orbits`), s = sin(alpha/2).
+
+    Evaluated from the all-n formula (:mod:`paper_repro.core.normalizing_formula`) in the given arithmetic: a sum
+    of non-negative terms, so float64 keeps its relative accuracy; bounded as alpha -> 0 (the limit factors of
+    Question 7.3), so it stays finite for every alpha in (0, pi).  In float64 it overflows only where the value
+    itself exceeds float64 (e.g. n > 200 near alpha = 0): then ``ValueError`` points to
+    :func:`log_scaled_orbit_coefficients`.
+
+    >>> from paper_repro.core.domain import rational_alpha
+    >>> [str(x) for x in scaled_orbit_coefficients(1, rational_alpha(fmpq(1, 2)), "exact")]
+    ['1', '6/5', '32/25']
+    """
+    n = check_n(n)
+    ctx = get_context(arith, dps=dps or mpmath.mp.dps)
+    limit = MAX_N_FLOAT if isinstance(ctx, FloatContext) else MAX_N_EXACT if ctx.exact else MAX_N_MP
+    if n > limit:
+        raise ValueError(f"n must be at most {limit} for normalizing coefficients in arith {ctx.name!r} (the cost "
+                         f"grows as n^3 operations on numbers of O(n) digits), got {n}")
+    if isinstance(ctx, FloatContext):
+        a = float(alpha) if isinstance(alpha, RationalAngle) else check_alpha(alpha)
+        vals = _scaled_float(n, a)
+        if vals is None:
+            raise ValueError(f"n = {n}, alpha = {a!r}: s^(2n+j) r exceeds float64 for some coefficient; use "
+                             "log_scaled_orbit_coefficients(n, alpha) (natural logarithms) or arith='mp'")
+        return list(vals)
+    with ctx.scope():
+        c, _, s2 = _half_angle(alpha, ctx)
+        return scaled_table(n, c, s2, ctx)
 
 
 def orbit_coefficients(n: int, alpha, arith: str | Context = "float", *, dps: int | None = None) -> list:
-    """Orbit coefficients (order of :func:`orbits`) in any arithmetic.
+    """Orbit coefficients ``r_{2n,2n-i,j}`` (order of :func:`orbits`) in any arithmetic, from the all-n formula
+    (no linear solve): ``s^{-(2n+j)}`` times :func:`scaled_orbit_coefficients`.
 
-    Exact arithmetics (``'exact'``, ``'modp'``): alpha must be a :class:`RationalAngle`; the exact
-    rational solution (cached on disk) is converted.  Real arithmetics: a certified ball solve to the
-    context's digits (``'float'``: 20 digits, rounded to float64; ``'mp'``: ``dps`` digits, default the
-    current mpmath precision).
+    Exact arithmetics (``'exact'``, ``'modp'``): alpha must be a :class:`RationalAngle`.  ``'ball'`` gives
+    certified enclosures, ``'mp'`` works at ``dps`` digits.  In ``'float'`` a coefficient that exceeds float64
+    (small alpha: r grows like alpha^-(2n+j)) raises ``ValueError``; the scaled values never do.
 
     At tan(alpha/4) = 1/2 (sin(alpha/2) = 4/5, cos(alpha/2) = 3/5) Example normalizing_coefficients_n_1
     gives 1/s^2 = 25/16, 2c/s^2 = 15/8 and 2/s = 5/2:
@@ -220,31 +297,44 @@ def orbit_coefficients(n: int, alpha, arith: str | Context = "float", *, dps: in
     ['25/16', '15/8', '5/2']
     """
     n = check_n(n)
-    if n > MAX_N_COEFFICIENTS:
-        raise ValueError(f"n must be at most {MAX_N_COEFFICIENTS} for normalizing coefficients (the collocation "
-                         f"system has (n+1)(n+2)/2 = {(n + 1) * (n + 2) // 2} unknowns and its solve would not end "
-                         f"in reasonable time), got {n}")
     ctx = get_context(arith, dps=dps or mpmath.mp.dps)
+    scaled = scaled_orbit_coefficients(n, alpha, ctx, dps=dps)
+    powers = sin_powers(n)
+    if isinstance(ctx, FloatContext):
+        _, s, _ = _float_half_angle(alpha)
+        log_s = math.log(s) if s > 0 else math.log(float(alpha) / 2)
+        out = []
+        for x, k in zip(scaled, powers):
+            lx = math.log(x) - k * log_s
+            if lx > _LOG_FLOAT_MAX:
+                raise ValueError(f"alpha = {float(alpha)!r}: the normalizing coefficient of level {k - 2 * n} of order "
+                                 f"n = {n} is about e^{lx:.0f} and exceeds float64; use scaled_orbit_coefficients "
+                                 "(s^(2n+j) r, always finite) or arith='mp'")
+            out.append(x / s**k if s**k > 0 else math.exp(lx))
+        return out
+    with ctx.scope():
+        _, s, _ = _half_angle(alpha, ctx)
+        return [ctx.div(x, _pow(s, k, ctx)) for x, k in zip(scaled, powers)]
+
+
+def _pow(x, k: int, ctx: Context):
+    out = ctx.from_rational(fmpq(1))
+    for _ in range(k):
+        out = ctx.mul(out, x)
+    return out
+
+
+def orbit_coefficients_collocation(n: int, alpha, arith: str | Context = "exact") -> list:
+    """The same coefficients by solving the collocation system (independent of the formula; tests and claims
+    compare the two).  Exact at a :class:`RationalAngle`, or in any context that can solve (mp, ball, float)."""
+    n = check_n(n)
+    ctx = get_context(arith)
     if ctx.exact:
         if not isinstance(alpha, RationalAngle):
-            raise TypeError(f"alpha must be a RationalAngle (rational tan(alpha/4)) for arith {ctx.name!r}, "
-                            f"got {type(alpha).__name__}")
+            raise TypeError(f"alpha must be a RationalAngle for arith {ctx.name!r}, got {type(alpha).__name__}")
         return [ctx.from_rational(x) for x in exact_coefficients_cached(n, alpha)[0]]
-    if ctx.encloses:  # solve in the context itself: the enclosures then contain the true coefficients
-        if not isinstance(alpha, RationalAngle):
-            check_alpha(alpha)
-        with ctx.scope():
-            return list(solve_reduced(n, alpha, ctx, verify=0, attempts=1).solution.reshape(-1))
-    digits = max(ctx.digits, 20)
-    if isinstance(alpha, RationalAngle):
-        with mpmath.workdps(digits + 20):
-            alpha = alpha.mp()
-    check_alpha(alpha)
-    with mpmath.workdps(digits + 20):
-        alpha_str = mpmath.nstr(mpmath.mpf(alpha), digits + 15, strip_zeros=False)
-    xs = _ball_orbit_coefficients(n, alpha_str, digits)
     with ctx.scope():
-        return [ctx.convert(v) for v in xs]  # decimal strings: every real context parses them
+        return list(solve_reduced(n, alpha, ctx, verify=0, attempts=1).solution.reshape(-1))
 
 
 def coefficient_vector(n: int, alpha, arith: str | Context = "float", *, dps: int | None = None) -> np.ndarray:
@@ -272,22 +362,41 @@ def coefficients(n: int, alpha, arith: str | Context = "float", *, dps: int | No
     return {lab.coefficient: vec[k] for k, lab in enumerate(united_system(n))}
 
 
+def scaled_coefficient_vector(n: int, alpha, arith: str | Context = "float", *, dps: int | None = None) -> np.ndarray:
+    """``s^{2n+j} r`` of all delta_n functions in internal order (finite for every alpha in (0, pi))."""
+    ctx = get_context(arith, dps=dps or mpmath.mp.dps)
+    orb = scaled_orbit_coefficients(n, alpha, ctx, dps=dps)
+    out = ctx.zeros((len(united_system(n)),))
+    for (_, members), x in zip(orbits(n), orb):
+        for k in members:
+            out[k] = x
+    return out
+
+
 def evaluate_normalized(n: int, alpha, points, arith: str | Context = "float", *, dps: int = 50) -> np.ndarray:
     """Values of the blending functions T-bar_{2n}^alpha (eq. normalized_united_system): ``(P, delta_n)``.
+
+    Computed as (s^{2n+j} r) times f / s^{2n+j} (:func:`scaled_coefficient_vector`, ``evaluate(..., scaled=True)``):
+    both factors are bounded, so the values are finite and accurate for every alpha in (0, pi), down to 1e-300.
 
     >>> import numpy as np
     >>> v = evaluate_normalized(2, 1.0, [[0.2, 0.3, 0.5]])
     >>> bool(abs(v.sum() - 1) < 1e-14)
     True
+    >>> w = evaluate_normalized(3, 1e-300, [[2e-301, 3e-301, 5e-301]])
+    >>> bool(abs(w.sum() - 1) < 1e-14 and np.isfinite(w).all())
+    True
     """
     ctx = get_context(arith, dps=dps)
-    raw = evaluate(n, alpha, points, ctx)
-    vec = coefficient_vector(n, alpha, ctx)
+    raw = evaluate(n, alpha, points, ctx, scaled=True)
+    vec = scaled_coefficient_vector(n, alpha, ctx, dps=dps)
     with ctx.scope():
         return ctx.mul(raw, vec[None, :])
 
 
 __all__ = ["orbits", "coefficients", "coefficient_vector", "orbit_coefficients", "evaluate_normalized",
+           "scaled_orbit_coefficients", "log_scaled_orbit_coefficients", "orbit_coefficients_collocation",
+           "scaled_coefficient_vector",
            "solve_reduced", "solve_reduced_exact", "solve_full_exact", "cramer_degree_bound"]
 
 
