@@ -33,12 +33,38 @@ r_{2,1,0} = 2c/s^2 and r_{2,1,1} = 2/s, i.e. s^2 r_{2,2,0} = 1, s^2 r_{2,1,0} = 
 
 from __future__ import annotations
 
+import numbers
 from math import comb
 
 import numpy as np
 from flint import fmpq
 
 from paper_repro.core.context import Context
+
+
+def _scalar(x):
+    """A scalar that numpy broadcasts as one element (polynomials and other sequences become 0-d object arrays)."""
+    if isinstance(x, np.ndarray):
+        if x.ndim or x.dtype != object:
+            return x
+        x = x.item()
+    if isinstance(x, (numbers.Number, np.generic)) or not hasattr(x, "__len__") and not hasattr(x, "__getitem__"):
+        return x
+    out = np.empty(1, dtype=object)
+    out[0] = x  # element assignment: a sequence-like x is not broadcast
+    return out.reshape(())
+
+
+def _item(x):
+    return x.item() if isinstance(x, np.ndarray) and x.ndim == 0 else x
+
+
+def _mul(ctx: Context, a, b):
+    return _item(ctx.mul(_scalar(a), _scalar(b)))
+
+
+def _add(ctx: Context, a, b):
+    return _item(ctx.add(_scalar(a), _scalar(b)))
 
 
 def multiplicity(n: int, i: int, j: int) -> int:
@@ -54,14 +80,14 @@ def t_weight(n: int, f: int, m: int) -> fmpq:
 
 def sanchez_reyes_numerators(n: int, c, ctx: Context) -> list[np.ndarray]:
     """Rows ``C[a][x] = [X^x] (1 + 2cX + X^2)^a`` for a = 0..n, x = 0..n, by C_{a+1} = (1 + 2cX + X^2) C_a."""
-    two_c = ctx.mul(ctx.from_rational(fmpq(2)), c)
+    two_c = _mul(ctx, ctx.from_rational(fmpq(2)), c)
     rows = [ctx.zeros((n + 1,))]
     rows[0][0] = ctx.from_rational(fmpq(1))
     for _ in range(n):
         prev = rows[-1]
         nxt = prev.copy()
-        nxt[1:] = ctx.add(nxt[1:], ctx.mul(two_c, prev[:-1]))
-        nxt[2:] = ctx.add(nxt[2:], prev[:-2])
+        nxt[1:] = _add(ctx, nxt[1:], _mul(ctx, two_c, prev[:-1]))
+        nxt[2:] = _add(ctx, nxt[2:], prev[:-2])
         rows.append(nxt)
     return rows
 
@@ -69,49 +95,54 @@ def sanchez_reyes_numerators(n: int, c, ctx: Context) -> list[np.ndarray]:
 def _powers(x, kmax: int, ctx: Context) -> list:
     out = [ctx.from_rational(fmpq(1))]
     for _ in range(kmax):
-        out.append(ctx.mul(out[-1], x))
+        out.append(_mul(ctx, out[-1], x))
     return out
 
 
-def scaled_table(n: int, c, s2, ctx: Context) -> list:
+def scaled_table(n: int, c, s2, ctx: Context, max_level: int | None = None) -> list:
     """``s^{2n+j} r_{2n,2n-i,j}`` for the orbit representatives, j = 0..n and i = j..n (the order of
     :func:`paper_repro.core.normalization.orbits`), from ``c = cos(alpha/2)`` and ``s2 = sin^2(alpha/2)`` given as
-    scalars of the context ``ctx``.  Only additions and multiplications of non-negative terms."""
+    scalars of the context ``ctx``.  Only additions and multiplications of non-negative terms.
+
+    ``max_level``: only the levels j <= max_level (in the same order), at a fraction of the cost.  The context may
+    also hold polynomials (``c`` an ``fmpq_poly`` in the exact context): then the values are polynomials."""
     q = ctx.from_rational
+    c, s2 = _scalar(c), _scalar(s2)
+    top = n if max_level is None else min(n, max_level)
     big_c = sanchez_reyes_numerators(n, c, ctx)
     s2p = _powers(s2, n, ctx)
     cp = _powers(c, n, ctx)
     # Q[k] as an array over i = 0..n (zero for i < k)
     table_q = []
-    for k in range(n + 1):
+    for k in range(top + 1):
         row = ctx.zeros((n + 1,))
         for b in range((k + 1) // 2, k + 1):
-            coef = ctx.mul(q(fmpq(comb(n, b) * comb(b, k - b) * 2 ** (2 * b - k))), s2p[b])
-            row[k:] = ctx.add(row[k:], ctx.mul(coef, big_c[n - b][: n + 1 - k]))
+            coef = _mul(ctx, q(fmpq(comb(n, b) * comb(b, k - b) * 2 ** (2 * b - k))), s2p[b])
+            row[k:] = _add(ctx, row[k:], _mul(ctx, coef, big_c[n - b][: n + 1 - k]))
         table_q.append(row)
     # H_m = (sum_e binom(n, e) s^{2e} t^{2e}) * (sum_f w_f(m) c^f t^f), as arrays over l = 0..n
-    a_even = [ctx.mul(q(fmpq(comb(n, e))), s2p[e]) for e in range(n // 2 + 1)]
+    a_even = [_mul(ctx, q(fmpq(comb(n, e))), s2p[e]) for e in range(n // 2 + 1)]
     h = {}
     for m in (1, 2, 3):
         weights = ctx.zeros((n + 1,))
         for f in range(n + 1):
-            weights[f] = ctx.mul(q(t_weight(n, f, m)), cp[f])
+            weights[f] = _mul(ctx, q(t_weight(n, f, m)), cp[f])
         hm = ctx.zeros((n + 1,))
         for e, ae in enumerate(a_even):
-            hm[2 * e:] = ctx.add(hm[2 * e:], ctx.mul(ae, weights[: n + 1 - 2 * e]))
+            hm[2 * e:] = _add(ctx, hm[2 * e:], _mul(ctx, ae, weights[: n + 1 - 2 * e]))
         h[m] = hm
     out = []
-    for j in range(n + 1):
+    for j in range(top + 1):
         # off the diagonal (i > j) m = 1: one array operation per l for all i at once
         acc = ctx.zeros((n + 1,))
         for ell in range(j + 1):
-            acc = ctx.add(acc, ctx.mul(h[1][ell], table_q[j - ell]))
+            acc = _add(ctx, acc, _mul(ctx, h[1][ell], table_q[j - ell]))
         diag = q(fmpq(0))
         hm = h[multiplicity(n, j, j)]
         for ell in range(j + 1):
-            diag = ctx.add(diag, ctx.mul(hm[ell], table_q[j - ell][j]))
-        out.append(diag)
-        out += list(acc[j + 1:])
+            diag = _add(ctx, diag, _mul(ctx, hm[ell], table_q[j - ell][j]))
+        out.append(_item(diag))
+        out += [_item(x) for x in acc[j + 1:]]
     return out
 
 

@@ -90,6 +90,7 @@ CLAIM_MODULES = (
     "paper_repro.claims.normalizing_closed_forms",
     "paper_repro.claims.nonnegativity",
     "paper_repro.claims.general_formulas",
+    "paper_repro.claims.question1_all_n",
     "paper_repro.claims.limit_formula",
     "paper_repro.claims.independence_proof",
     "paper_repro.claims.matrix_closed_forms",
