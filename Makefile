@@ -5,7 +5,7 @@ VENV   := .venv
 PY     := $(VENV)/bin/python
 STAMP  := $(VENV)/.installed-stamp
 
-.PHONY: venv lock report check-gallery reproduce reproduce-extended test test-all bench bench-question1 figures lint clean distclean
+.PHONY: venv lock report check-gallery reproduce reproduce-extended test test-all bench bench-coefficients bench-question1 figures lint clean distclean
 
 # The environment: the exact versions of requirements.lock (what `make reproduce` was run with, so
 # figures stay byte-identical), then the package itself without resolving anything.  A failed install
@@ -54,6 +54,10 @@ bench: $(STAMP)                ## speed: pytest-benchmark, then the comparison w
 	mkdir -p reports
 	$(PY) -m pytest -q -m benchmark --benchmark-enable --benchmark-only --benchmark-json=reports/pytest-benchmark.json tests
 	$(PY) -m paper_repro.app.bench
+
+bench-coefficients: $(STAMP)   ## accuracy (float64 vs 40 digits, n <= 200) and cost of the normalizing coefficients -> reports/
+	mkdir -p reports
+	$(PY) -m paper_repro.app.coefficient_accuracy
 
 bench-question1: $(STAMP)      ## Question 1: recovery and proof time per n (1..20, 25, 30; about 15 min) -> reports/
 	mkdir -p reports

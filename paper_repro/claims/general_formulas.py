@@ -24,13 +24,18 @@ from paper_repro.theory.general_formulas import (
     CENTRE_END_VALUES,
     Formula,
     centre_end_values,
+    centre_end_values_from_formula,
     check,
+    check_against_formula,
     eval_expression,
     fit,
     interior_pattern,
     printed_level_formulas,
 )
 from paper_repro.util.registry import Outcome, claim
+
+ALL_N_LATEX = (r"s^{2n+j} r^\alpha_{2n,2n-i,j} = [t^j X^i]\, (1+s^2t^2)^n "
+               r"\left(1 + 2(c+s^2t)X + (1+s^2t^2)X^2\right)^n \frac{1 - m c t}{(1 - c t)^{2n+1}}")
 
 #: Fit range per level: small n, the rest of the range is a genuine check.
 N_FIT = {2: 8, 3: 9, 4: 11, 5: 15}
@@ -69,17 +74,17 @@ def _centre_recurrence(n_max: int, order: int = 2, deg_n: int = 2, deg_c: int = 
 
 @claim("general_formulas", paper_ref=["normalizing_coeff_of_level_0", "prop:level_1_coefficients",
                                       "sec:open_problems"],
-       statement="Open Question 1, general formulas: besides the printed levels 0 and 1, levels 2..{max_level} "
-                 "have formulas P_{n,i,j} = A_j(n,i,c) C_{n,i} + B_j(n,i,c) C_{n,i+1} with polynomial A_j, B_j "
-                 "(interior j < i <= n and diagonal i = j < n), fitted on small n and proven for n <= {n_max} "
-                 "by the proven closed forms; conjectures beyond. The centre has none of the searched shape, but its "
-                 "end values do: s^{3n-2} r_{2n,n,n} -> 2(4n-3)(3n-3)!/((n-1)!^2 n!) as alpha -> 0 and "
-                 "r_{2n,n,n} -> sum_k binom(n,k)^3 (Franel numbers) as alpha -> pi, proven for n <= {n_max}. "
-                 "Every level at once: s^{2n+j} r_{2n,2n-i,j} -> (2n+j)!/((2n-i)! j! i!) (2n-(t-1)j)/(2n+j) as "
-                 "alpha -> 0, for every n (claim limit_formula).",
-       kind="proof", max_level=4, n_max=12, suffix="",
-       extended={"max_level": 5, "n_max": 30, "suffix": "_extended"})
-def run(max_level: int, n_max: int, suffix: str) -> Outcome:
+       statement="Open Question 1, general formulas: every coefficient of every level is given by the all-n formula "
+                 "(claim question1_all_n, proven for every n). Its level-by-level consequences: the printed levels 0 "
+                 "and 1 and the fitted levels 2..{max_level}, P_{n,i,j} = A_j(n,i,c) C_{n,i} + B_j(n,i,c) C_{n,i+1} "
+                 "(interior j < i <= n and diagonal i = j < n), equal the all-n formula as polynomials in c for "
+                 "n <= {n_cons} and the closed forms proven for every alpha for n <= {n_max}; the centre's end values "
+                 "s^{3n-2} r_{2n,n,n} -> 2(4n-3)(3n-3)!/((n-1)!^2 n!) (alpha -> 0) and r_{2n,n,n} -> sum_k "
+                 "binom(n,k)^3 (Franel numbers, alpha -> pi) follow from it, checked for n <= {n_cons}. Every level "
+                 "at alpha -> 0: s^{2n+j} r_{2n,2n-i,j} -> (2n+j)!/((2n-i)! j! i!) (2n-(t-1)j)/(2n+j) for every n.",
+       kind="proof", max_level=4, n_max=12, n_cons=30, suffix="",
+       extended={"max_level": 5, "n_max": 30, "n_cons": 60, "suffix": "_extended"})
+def run(max_level: int, n_max: int, n_cons: int, suffix: str) -> Outcome:
     proven = [n for n in range(1, n_max + 1) if proof_cached(n)["proved"]]
     entries, ok = [], True
     formulas: list[Formula] = list(printed_level_formulas())
@@ -91,34 +96,53 @@ def run(max_level: int, n_max: int, suffix: str) -> Outcome:
                                 "searched": f"two-term shape, fitted on n <= {N_FIT[level]}"})
                 continue
             formulas.append(f)
+    entries.append({"level": "all", "kind": "all-n formula", "cases": "0 <= j <= i <= n, every n",
+                    "status": "proven for every n",
+                    "latex": ALL_N_LATEX,
+                    "quantity": "s^{2n+j} r_{2n,2n-i,j}, m the number of minimal entries of (2n-i, j, i)",
+                    "where": "m = 1 for j < i, 2 for i = j < n, 3 at the centre i = j = n",
+                    "source": "hand proof with machine-checked lemmas, docs/question1_for_all_n.md "
+                              "(claim question1_all_n)"})
     for f in formulas:
         first = 1 if f.kind == "all" else f.level + 1  # the smallest n with a case (level 1: n >= 2, as printed)
         res = check(f, range(first, n_max + 1))
         status, top = _status(res["agrees_for_n"], res["fails_for_n"], proven, first)
-        ok &= not res["fails_for_n"] and top == n_max
+        cons = check_against_formula(f, range(first, n_cons + 1), max_level)
+        ok &= not res["fails_for_n"] and top == n_max and not cons["fails_for_n"]
+        status = (f"consequence of the all-n formula, checked for n <= {n_cons}" if not cons["fails_for_n"]
+                  else f"differs from the all-n formula for n = {cons['fails_for_n'][:5]}")
         entry = f.as_json() | {"status": status, "agrees_for_n": [min(res["agrees_for_n"] or [0]),
                                                                   max(res["agrees_for_n"] or [0])],
                                "source": "printed" if f.level <= 1 else f"fitted on n <= {N_FIT[f.level]}",
-                               "beyond": f"conjecture for n > {top}" if top else "-"}
+                               "closed_forms": f"equal to the closed forms proven for every alpha, n <= {top}",
+                               "beyond": f"a derivation for every n is not written; checked consequence for n <= "
+                                         f"{n_cons}"}
         if f.kind == "interior" and f.level >= 2:
             entry["regularities"] = interior_pattern(f)
         if (f.level, f.kind) in POSITIVITY:
             entry["positivity_for_all_n_if_the_formula_holds"] = POSITIVITY[(f.level, f.kind)]
         entries.append(entry)
     centre = _centre_recurrence(min(n_max, 22))
-    entries.append({"level": "n (centre r_{2n,n,n})", "kind": "centre", "status": "found" if centre["found"]
-                    else "not found", "searched": centre["searched"]})
+    entries.append({"level": "n (centre r_{2n,n,n})", "kind": "centre", "status": "given by the all-n formula "
+                    "(m = 3); no short recurrence in n" + (" found" if centre["found"] else " of the searched shape"),
+                    "searched": centre["searched"]})
     values = {n: centre_end_values(n) for n in range(1, n_max + 1)}
+    from_formula = {n: centre_end_values_from_formula(n) for n in range(1, n_cons + 1)}
     for e in CENTRE_END_VALUES:
         agrees = [n for n, v in values.items()
                   if v["vanishes_at_1"] and eval_expression(e["expression"], n) == v[e["kind"]]]
         fails = [n for n in values if n not in agrees]
         status, top = _status(agrees, fails, proven, 1)
-        ok &= not fails and top == n_max
+        fails_f = [n for n, v in from_formula.items()
+                   if not (v["vanishes_at_1"] and eval_expression(e["expression"], n) == v[e["kind"]])]
+        ok &= not fails and top == n_max and not fails_f
+        status = (f"consequence of the all-n formula, checked for n <= {n_cons}" if not fails_f
+                  else f"differs from the all-n formula for n = {fails_f[:5]}")
         entries.append({"level": "n (centre r_{2n,n,n})", "kind": e["kind"], "cases": e["name"], "status": status,
-                        "source": "guessed recurrence: " + e["recurrence"], "quantity": e["quantity"],
+                        "source": "found by guessing the recurrence " + e["recurrence"] + "; equal to the proven "
+                                  f"closed forms for n <= {top}", "quantity": e["quantity"],
                         "expression": e["expression"], "latex": e["latex"],
-                        "beyond": f"conjecture for n > {top}" if top else "-"})
+                        "beyond": f"no proof for every n (no recurrence certificate); checked for n <= {n_cons}"})
     def at_one_holds(n: int, rep) -> bool:
         value = eval_expression(ALL_LEVELS_AT_1["expression"], n, i=rep.i, j=rep.j)
         return fmpq(value.numerator, value.denominator) == closed_forms_cached(n)[rep.coefficient].numerator(fmpq(1))
@@ -129,8 +153,9 @@ def run(max_level: int, n_max: int, suffix: str) -> Outcome:
                                       "status": "proven for every n" if at_one else "fails",
                                       "source": "the alpha -> 0 limit theorem (claim limit_formula, docs/"
                                                 f"limit_for_all_n.md); agrees with the closed forms for n <= {n_max}"})
-    entries.append({"level": f"> {max_level}", "kind": "interior/diagonal", "status": "not searched",
-                    "searched": f"the exact fit grows as level^4 unknowns; levels <= {max_level} here"})
+    entries.append({"level": f"> {max_level}", "kind": "interior/diagonal", "status": "given by the all-n formula",
+                    "searched": f"no two-term level formula fitted beyond level {max_level} (the fit grows as level^4 "
+                                "unknowns); the all-n formula covers every level"})
     data = {f"normalization/general_formulas{suffix}.json": {"n_max": n_max, "proven_closed_forms_for_n": proven,
                                                            "definitions": {
                                                                "P": "r_{2n,2n-i,j} = P_{n,i,j}(c) / s^{2n+j}",
@@ -143,9 +168,9 @@ def run(max_level: int, n_max: int, suffix: str) -> Outcome:
     return Outcome(ok, {
         "levels": [{k: e[k] for k in ("level", "kind", "status")} for e in entries],
         "interior_regularities_hold_for_levels": regular,
-        "scope": f"each formula is proven for the n it agrees with proven closed forms (n <= {n_max}); "
-                 "conjecture beyond; centre: no recurrence of the searched shape for the whole polynomial, closed "
-                 "forms of its two end values (limits alpha -> 0 and alpha -> pi) proven for the same n"}, data=data)
+        "scope": "the all-n formula is proven for every n (claim question1_all_n); the level formulas and the "
+                 f"centre's end values are checked consequences of it for n <= {n_cons} and equal the closed forms "
+                 f"proven for every alpha for n <= {n_max}"}, data=data)
 
 
 def markdown(entries: list[dict], n_max: int) -> str:
@@ -154,8 +179,10 @@ def markdown(entries: list[dict], n_max: int) -> str:
              "$r_{2n,2n-i,j}^\\alpha = P_{n,i,j}(c)/s^{2n+j}$, $c = \\cos\\frac{\\alpha}{2}$, "
              "$s = \\sin\\frac{\\alpha}{2}$, and $C_{n,k}(c)$ the coefficient of $X^k$ in $(1+2cX+X^2)^n$ "
              "(so $c^\\alpha_{2n,k} = C_{n,k}/s^{2n}$, eq. univariate_basis). "
-             f"*Proven for n ≤ N* means: equal to the closed forms proven for every α, for every n ≤ N "
-             f"(N ≤ {n_max} here); beyond N the formula is a conjecture. The brackets are written with "
+             "The first row, the all-n formula, is proven for every n (docs/question1_for_all_n.md); the level "
+             "formulas and the centre's end values below are its consequences, checked as polynomial identities for "
+             "the n stated (a derivation for every n is not written), and they equal the closed forms proven for "
+             f"every α for n ≤ {n_max}. The brackets are written with "
              "$c^2 = 1 - s^2$ and factored over Q (the fitted polynomials in c are in the JSON, `latex_expanded`).", "",
              "| level | cases | status | source |", "|---|---|---|---|"]
     for e in entries:

@@ -348,17 +348,24 @@ def coefficient_vector(n: int, alpha, arith: str | Context = "float", *, dps: in
     return out
 
 
-def coefficients(n: int, alpha, arith: str | Context = "float", *, dps: int | None = None) -> dict[str, object]:
-    """Normalizing coefficients (eq. normalizing_weights) keyed by paper label.
+def coefficients(n: int, alpha, arith: str | Context = "float", *, dps: int | None = None,
+                 scaled: bool = False) -> dict[str, object]:
+    """Normalizing coefficients (eq. normalizing_weights) keyed by paper label, from the all-n formula.
 
-    Every function of T_{2n} appears once, under its own label (the centre as ``r_{2n,n,n}``).
+    Every function of T_{2n} appears once, under its own label (the centre as ``r_{2n,n,n}``).  ``scaled=True``
+    gives ``s^{2n+j} r`` instead (s = sin(alpha/2), j the level): finite for every alpha in (0, pi), where the raw
+    float64 values overflow for small alpha (then ``ValueError`` says so).
 
     >>> from paper_repro.core.domain import rational_alpha
     >>> c = coefficients(1, rational_alpha(fmpq(1, 2)), "exact")
     >>> str(c["r_{2,2,0}"]), str(c["g_{2,1,0}"]), str(c["r_{2,1,1}"])
     ('25/16', '15/8', '5/2')
+    >>> float(coefficients(2, 1e-200, scaled=True)["r_{4,2,1}"])  # the alpha -> 0 limit factor 5!/(2! 1! 2!) * 4/5
+    24.0
     """
-    vec = coefficient_vector(n, alpha, arith, dps=dps)
+    if not isinstance(scaled, bool):
+        raise TypeError(f"scaled must be True or False, got {scaled!r}")
+    vec = (scaled_coefficient_vector if scaled else coefficient_vector)(n, alpha, arith, dps=dps)
     return {lab.coefficient: vec[k] for k, lab in enumerate(united_system(n))}
 
 

@@ -24,6 +24,7 @@ from __future__ import annotations
 
 import re
 from dataclasses import dataclass
+from functools import lru_cache
 
 from flint import fmpq, fmpq_mat, fmpq_poly
 
@@ -314,6 +315,41 @@ def eval_expression(expr: str, n: int, **indices: int):
 def centre_end_values(n: int) -> dict[str, int | bool]:
     """From the closed form of the centre: P_n(1) = 0?, Q_n(1) and P_n(0) (exact)."""
     p = closed_forms_cached(n)[f"r_{{{2 * n},{n},{n}}}"].numerator
+    q, rem = divmod(p, fmpq_poly([1, 0, -1]))
+    return {"vanishes_at_1": p(fmpq(1)) == 0 and rem == 0, "centre_alpha_to_0": int(q(fmpq(1))),
+            "centre_alpha_to_pi": int(p(fmpq(0)))}
+
+
+@lru_cache(maxsize=8)
+def _formula_polys(n: int, max_level: int | None) -> tuple[fmpq_poly, ...]:
+    from paper_repro.core.context import ExactContext
+    from paper_repro.core.normalizing_formula import scaled_table
+
+    return tuple(scaled_table(n, fmpq_poly([0, 1]), fmpq_poly([1, 0, -1]), ExactContext(), max_level=max_level))
+
+
+def formula_target(n: int, i: int, level: int, max_level: int | None = None) -> fmpq_poly:
+    """s^{2n+j} r_{2n,2n-i,j} from the all-n formula (docs/question1_for_all_n.md) as a polynomial in c."""
+    top = n if max_level is None else min(n, max_level)
+    k = sum(n + 1 - j for j in range(level)) + (i - level)
+    return _formula_polys(n, top)[k]
+
+
+def check_against_formula(f: Formula, ns, max_level: int) -> dict:
+    """Compare a level formula with the all-n formula for the given n (a consequence, checked)."""
+    good, bad = [], []
+    for n in ns:
+        cases = _cases(f.level, f.kind, [n])
+        if not cases:
+            continue
+        ok = all(predict(f, n, i) == formula_target(n, i, f.level, max_level) for _, i in cases)
+        (good if ok else bad).append(n)
+    return {"agrees_for_n": good, "fails_for_n": bad}
+
+
+def centre_end_values_from_formula(n: int) -> dict[str, int | bool]:
+    """The centre's end values from the all-n formula: P(1) = 0, (P/(1 - c^2))(1) and P(0)."""
+    p = formula_target(n, n, n)
     q, rem = divmod(p, fmpq_poly([1, 0, -1]))
     return {"vanishes_at_1": p(fmpq(1)) == 0 and rem == 0, "centre_alpha_to_0": int(q(fmpq(1))),
             "centre_alpha_to_pi": int(p(fmpq(0)))}
