@@ -7,15 +7,15 @@ facts it uses are checked here, each by an independent exact computation:
 
 * :func:`restriction_identity` (Lemma 1): cos(u/2) = (z + c'x)/s', cos(w/2) = (x + c'z)/s' and
   x^2 + 2c'xz + z^2 = s'^2 on the segment (c' = cos((alpha - v)/2), s' = sin((alpha - v)/2));
-* :func:`order_table` (Lemma 2, the order lemma): for every function of T_{2n}, which coordinates y^k = z^k x^{2n-k}
+* :func:`order_table` (Lemmas 2 and 3, the order lemma): for every function of T_{2n}, which coordinates y^k = z^k x^{2n-k}
   it reaches, the order in v of each, and the leading coefficients the proof names; computed by exact power series
   in v at rational-tangent alpha and compared with the predictions of :func:`predicted_profile`;
-* :func:`triangular_block` (Lemma 3): the orbit matrix of Taylor data is block diagonal, each block lower
+* :func:`triangular_block` (the orbit system in the proof of Theorem B): the orbit matrix of Taylor data is block diagonal, each block lower
   triangular with diagonal 2^-j (so the system for the coefficients is triangular);
 * :func:`hexagon_check` (Lemma 5): every function of T_{2n} lies in the span of cos/sin(pu + qv) over the hexagon
   |p|, |q|, |p - q| <= n of 3n^2 + 3n + 1 points;
-* :func:`weights_nonnegative` (Lemma 6): the t-weights of the expanded formula are non-negative;
-* :func:`triangular_solution` (Theorem 1 at sampled alpha): solving the triangular system from the Taylor data of
+* :func:`weights_nonnegative` (Corollary C): the t-weights of the expanded formula are non-negative;
+* :func:`triangular_solution` (Theorem B at sampled alpha): solving the triangular system from the Taylor data of
   the right-hand side 1 = ((x^2 + 2c'xz + z^2)/s'^2)^n reproduces the formula's coefficients exactly.
 
 Each check returns a dict with ``ok`` and the evidence; tests feed each a wrong input and see it fail.
@@ -252,7 +252,7 @@ def order_table(n: int, alpha: RationalAngle, labels=None) -> dict:
     return {"ok": not problems, "n": n, "functions": len(labels), "problems": problems[:20]}
 
 
-# --- Lemma 3: triangularity of the orbit system --------------------------------------------------------------
+# --- the triangular orbit system of the proof of Theorem B --------------------------------------------------------------
 def triangular_block(n: int, alpha: RationalAngle) -> dict:
     """The orbit matrix M[(k, l), (i, j)] = [v^l] coordinate k of the orbit sum (i, j), rows k = 0..n, l = 0..k:
     zero unless k = i and l >= j, with diagonal [v^j] sigma^j kappa^(..) = 2^-j."""
@@ -273,7 +273,7 @@ def triangular_block(n: int, alpha: RationalAngle) -> dict:
     return {"ok": not bad, "n": n, "orbits": len(orbits(n)), "problems": bad[:20]}
 
 
-# --- Theorem 1 at sampled alpha: the triangular solve reproduces the formula -----------------------------------
+# --- Theorem B at sampled alpha: the triangular solve reproduces the formula -----------------------------------
 def triangular_solution(n: int, alpha: RationalAngle) -> dict:
     """Solve the triangular system of Lemma 3 with the Taylor data of the right-hand side
     ((x^2 + 2c'xz + z^2)/s'^2)^n (coordinate k: C_{n,k}(c')/s'^{2n}) and compare with the formula's coefficients."""
@@ -340,7 +340,7 @@ def hexagon_check(n: int, labels=None) -> dict:
             "delta_n": 3 * n * n + 3 * n + 1, "problems": bad[:10]}
 
 
-# --- Lemma 6: positivity of the weights ----------------------------------------------------------------------------
+# --- Corollary C: positivity of the weights --------------------------------------------------------------------------
 def weights_nonnegative(n: int) -> dict:
     """w_f(m) = [t^f] (1 - m t)/(1 - t)^{2n+1} >= 0 for f <= n and m = 1, 2, 3, computed as a power-series
     coefficient (not from the closed form t_weight), and equal to the closed form."""
