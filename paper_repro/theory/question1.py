@@ -7,11 +7,12 @@ facts it uses are checked here, each by an independent exact computation:
 
 * :func:`restriction_identity` (Lemma 1): cos(u/2) = (z + c'x)/s', cos(w/2) = (x + c'z)/s' and
   x^2 + 2c'xz + z^2 = s'^2 on the segment (c' = cos((alpha - v)/2), s' = sin((alpha - v)/2));
-* :func:`order_table` (Lemmas 2 and 3, the order lemma): for every function of T_{2n}, which coordinates y^k = z^k x^{2n-k}
-  it reaches, the order in v of each, and the leading coefficients the proof names; computed by exact power series
-  in v at rational-tangent alpha and compared with the predictions of :func:`predicted_profile`;
-* :func:`triangular_block` (the orbit system in the proof of Theorem B): the orbit matrix of Taylor data is block diagonal, each block lower
-  triangular with diagonal 2^-j (so the system for the coefficients is triangular);
+* :func:`order_table` (Lemmas 2 and 3, the order lemma): for every function of T_{2n}, which coordinates
+  y^k = z^k x^{2n-k} it reaches, the order in v of each, and the leading coefficients the proof names; computed
+  by exact power series in v at rational-tangent alpha and compared with the predictions of
+  :func:`predicted_profile`;
+* :func:`triangular_block` (the orbit system in the proof of Theorem B): the orbit matrix of Taylor data is block
+  diagonal, each block lower triangular with diagonal 2^-j (so the system for the coefficients is triangular);
 * :func:`hexagon_check` (Lemma 5): every function of T_{2n} lies in the span of cos/sin(pu + qv) over the hexagon
   |p|, |q|, |p - q| <= n of 3n^2 + 3n + 1 points;
 * :func:`weights_nonnegative` (Corollary C): the t-weights of the expanded formula are non-negative;
@@ -252,7 +253,7 @@ def order_table(n: int, alpha: RationalAngle, labels=None) -> dict:
     return {"ok": not problems, "n": n, "functions": len(labels), "problems": problems[:20]}
 
 
-# --- the triangular orbit system of the proof of Theorem B --------------------------------------------------------------
+# --- the triangular orbit system of the proof of Theorem B --------------------------------------------------
 def triangular_block(n: int, alpha: RationalAngle) -> dict:
     """The orbit matrix M[(k, l), (i, j)] = [v^l] coordinate k of the orbit sum (i, j), rows k = 0..n, l = 0..k:
     zero unless k = i and l >= j, with diagonal [v^j] sigma^j kappa^(..) = 2^-j."""
