@@ -42,7 +42,7 @@ test: $(STAMP)                 ## fast test suite
 test-all: $(STAMP)             ## every test, slow ones included
 	$(PY) -m pytest -q -m "not benchmark"
 
-report: $(STAMP)               ## the whole suite (slow claim tests too) as reports/tests.html + reports/junit.xml
+report: $(STAMP)               ## the whole suite (slow claim tests too) as reports/tests.html (with each claim's statement, kind, ranges, measured values) + reports/junit.xml
 	mkdir -p reports
 	$(PY) -m pytest -q -m "not benchmark" --html=reports/tests.html --self-contained-html \
 	  --junitxml=reports/junit.xml -o junit_family=xunit1
