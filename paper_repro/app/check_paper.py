@@ -89,7 +89,7 @@ def check(page: Path = PAGE, shots: Path = ROOT / "reports") -> dict:
                 driver.save_screenshot(str(shots / f"paper-{width}-top.png"))
             if width == 1280:
                 _shot_of(driver, '.badge[data-status="erratum"]', shots / "paper-1280-erratum.png", open_badge=True)
-                _shot_of(driver, "figure img", shots / "paper-1280-figure.png")
+                _shot_of(driver, 'figure[id="fig:torus"]', shots / "paper-1280-figure.png")
                 _shot_of(driver, ".stmt.question", shots / "paper-1280-question.png")
                 console, requests, external = console_and_requests(driver)
                 res.update(state)

@@ -135,9 +135,10 @@ def parse_lock(lines: list[str], wanted: tuple[str, ...] = PROVENANCE_PACKAGES) 
 
 
 def _table(headers: list[str], rows: list[list[str]]) -> str:
-    head = "".join(f"<th>{h}</th>" for h in headers)
+    """A table; no header row where every header is empty."""
+    head = f"<tr>{''.join(f'<th>{h}</th>' for h in headers)}</tr>" if any(headers) else ""
     body = "".join("<tr>" + "".join(f"<td>{c}</td>" for c in r) + "</tr>" for r in rows)
-    return f"<table><tr>{head}</tr>{body}</table>"
+    return f"<table>{head}{body}</table>"
 
 
 def _load(path: Path, default):
@@ -311,7 +312,7 @@ def _anchor(text: str) -> str:
 CSS = ("body{font-family:sans-serif;max-width:1150px;margin:2em auto;padding:0 1em;color:#222;line-height:1.45}"
        "figure{margin:2em 0;border-top:1px solid #ddd;padding-top:1em}img{max-width:100%;height:auto}"
        "table{border-collapse:collapse;margin:0.5em 0}td,th{border:1px solid #ccc;padding:3px 6px;"
-       "font-size:90%;vertical-align:top}.pass{color:#060}.fail{color:#b00}code{font-size:90%;overflow-wrap:anywhere}"
+       "font-size:90%;vertical-align:top}.pass{color:#060}.fail{color:#b00}code{font-size:90%}"
        ".meta{font-size:88%;color:#444}.meta code{overflow-wrap:anywhere}.view{border:1px solid #ddd;margin:0.5em 0}"
        "nav a{margin-right:1em}.scroll{max-width:100%;overflow-x:auto}table.mini td,table.mini th{font-size:80%;"
        "padding:1px 4px}.pair td{min-width:14em}.figindex{columns:2;font-size:95%}.view-fig{margin:1.5em 0}"
