@@ -50,6 +50,12 @@ def test_mini_source_renders_with_badges_and_numbers():
     assert info["badges"]["not yet checked"] == 3 and info["badges"]["checked"] == 0
 
 
+def test_colours_stay_in_their_group_and_alignments_align():
+    html_ = ap.mathml(r"\begin{align*}a&=\Red{b},\\ c&=\color[rgb]{0,0,1}d\normalcolor\end{align*}", True)
+    assert "<mi>&</mi>" not in html_ and html_.count("<mtr>") == 2 and "#d00000" in html_ and "#0000ff" in html_
+    assert ap.mathml(r"a\ b", False).count("\\") == 0
+
+
 def test_unparsable_math_is_shown_as_source_not_dropped():
     page, info = ap.build(MINI.replace("a = b", r"a = \frac{"), MINI_INDEX, [], [], {}, None, [])
     assert info["math_fallback"] == 1 and "a = \\frac{" in page
@@ -83,6 +89,8 @@ def test_without_the_index_every_display_is_not_yet_checked_and_errata_stand_at_
     assert info["unplaced_errata"] == 0 and info["badges"]["erratum"] == 1
     assert info["badges"]["not yet checked"] >= info["displays"]
     assert 'data-status="erratum"' in _block(page, "exmp:torus")
+    # no LaTeX leaks into the formulas: alignment tabs, stray backslashes (control spaces, unknown commands)
+    assert "<mi>&</mi>" not in page and not re.search(r"<m[a-z]+>\\", page)
 
 
 @needs_paper

@@ -87,17 +87,41 @@ def _arg(text: str, k: int) -> tuple[str, int]:
 
 
 # --- math ------------------------------------------------------------------------------------------------
+def _colour_macros(tex: str) -> str:
+    r"""``\Red{x}`` -> ``{\color{#d00000}{x}}``: the colour kept inside its own group (latex2mathml's ``\color``
+    colours everything after it in the group, across rows of an alignment)."""
+    out, k = [], 0
+    for m in re.finditer(r"\\(Red|Green|Blue|Orange)\s*\{", tex):
+        if m.start() < k:
+            continue
+        end = balanced(tex, m.end() - 1)
+        out.append(tex[k:m.start()])
+        out.append("{\\color{" + _COLORS[m.group(1)] + "}{" + _colour_macros(tex[m.end():end - 1]) + "}}")
+        k = end
+    out.append(tex[k:])
+    return "".join(out)
+
+
+def _hex(rgb: str) -> str:
+    """'1.0, 0.6, 0.0' (xcolor's rgb model) -> '#ff9900'."""
+    return "#" + "".join(f"{round(float(x) * 255):02x}" for x in rgb.split(","))
+
+
 def prepare_math(tex: str) -> str:
     """The paper's math made digestible for latex2mathml (markup only; no symbol changes)."""
+    tex = re.sub(r"\\color\[rgb\]\{([^}]*)\}(.*?)\\normalcolor",
+                 lambda m: "{\\color{" + _hex(m.group(1)) + "}{" + m.group(2) + "}}", tex, flags=re.S)
+    tex = re.sub(r"\\color\[rgb\]\{([^}]*)\}", lambda m: "\\color{" + _hex(m.group(1)) + "}", tex)
     tex = re.sub(r"\\label\{[^}]*\}|\\nonumber|\\notag|\\qedhere|\\allowbreak|\\normalcolor", "", tex)
     tex = re.sub(r"\\begin\{array\}\s*\[[tcb]\]", r"\\begin{array}", tex)
-    tex = re.sub(r"\\(Red|Green|Blue|Orange)\s*\{", lambda m: r"\color{" + _COLORS[m.group(1)] + "}{", tex)
+    tex = _colour_macros(tex)
     tex = tex.replace(r"\dfrac", r"\frac").replace(r"\dbinom", r"\binom").replace(r"\limits", "")
     tex = re.sub(r"\\overfrown\s*\{", r"\\overset{\\frown}{", tex)
     tex = re.sub(r"\\operatorname\s*\{([^}]*)\}", r"\\mathrm{\1}", tex)
     tex = re.sub(r"\\text\s*\{", r"\\mathrm{", tex)
     tex = re.sub(r"\\(?:mathbf|boldsymbol)\s*\{", r"\\mathbf{", tex)
     tex = tex.replace(r"\vert", "|").replace(r"\ell", "l")
+    tex = re.sub(r"(?<!\\)\\(?=\s|$)", r"\\;", tex)  # control space "\ " (latex2mathml prints the backslash)
     return tex.strip()
 
 
@@ -153,9 +177,10 @@ def display_tex(env: str, body: str) -> tuple[str, int]:
         numbered = 0 if re.search(r"\\nonumber|\\notag", body) else 1
     else:
         numbered = 0
-    if env.startswith(("align", "eqnarray")):
-        inner = re.sub(r"&\s*=\s*&", "&=", body) if env.startswith("eqnarray") else body
-        return r"\begin{aligned}" + inner + r"\end{aligned}", numbered
+    if env.startswith("align"):
+        return r"\begin{align*}" + body + r"\end{align*}", numbered  # latex2mathml's aligned ignores &
+    if env.startswith("eqnarray"):
+        return r"\begin{array}{rcl}" + body + r"\end{array}", numbered
     if env.startswith(("gather", "multline")):
         return r"\begin{gathered}" + body + r"\end{gathered}", numbered
     return body, numbered
@@ -679,9 +704,11 @@ def badge_html(block: Block, linker: Linker) -> str:
 
 
 def _pair(printed, corrected, severity, evidence) -> str:
+    from paper_repro.app.gallery import evidence_html
+
     return (f'<table class="pair"><tr><th>printed</th><th>corrected</th></tr><tr><td>{_rich(printed)}</td>'
             f"<td>{_rich(corrected)}</td></tr></table><div>severity: <b>{html.escape(str(severity or ''))}</b>; "
-            f"evidence: {html.escape(str(evidence or ''))}</div>")
+            f"evidence: {evidence_html(str(evidence or ''))}</div>")
 
 
 CSS = """
