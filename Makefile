@@ -5,7 +5,7 @@ VENV   := .venv
 PY     := $(VENV)/bin/python
 STAMP  := $(VENV)/.installed-stamp
 
-.PHONY: venv lock report check-gallery reproduce reproduce-extended test test-all bench bench-coefficients bench-question1 figures lint clean distclean
+.PHONY: venv lock report paper check-paper check-gallery reproduce reproduce-extended test test-all bench bench-coefficients bench-question1 figures lint clean distclean
 
 # The environment: the exact versions of requirements.lock (what `make reproduce` was run with, so
 # figures stay byte-identical), then the package itself without resolving anything.  A failed install
@@ -42,10 +42,16 @@ test: $(STAMP)                 ## fast test suite
 test-all: $(STAMP)             ## every test, slow ones included
 	$(PY) -m pytest -q -m "not benchmark"
 
-report: $(STAMP)               ## the whole suite (slow claim tests too) as reports/tests.html + reports/junit.xml
+report: $(STAMP)               ## the whole suite (slow claim tests too) as reports/tests.html (with each claim's statement, kind, ranges, measured values) + reports/junit.xml
 	mkdir -p reports
 	$(PY) -m pytest -q -m "not benchmark" --html=reports/tests.html --self-contained-html \
 	  --junitxml=reports/junit.xml -o junit_family=xunit1
+
+paper: $(STAMP)                ## the annotated paper paper/index.html (needs ../shared/paper's LaTeX source)
+	$(PY) -m paper_repro paper
+
+check-paper: $(STAMP)          ## open paper/index.html in headless chromium: badges resolve, no errors/requests
+	$(PY) -m paper_repro.app.check_paper
 
 check-gallery: $(STAMP)        ## open figures/index.html in headless chromium (installed if missing), screenshot
 	$(PY) -m paper_repro.app.check_gallery --install

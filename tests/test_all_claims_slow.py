@@ -3,6 +3,8 @@
 The claim cache is bypassed (``PAPER_REPRO_NO_CACHE``): the test re-checks, it never reads old results.
 """
 
+import json
+
 import pytest
 
 from paper_repro.util.registry import CLAIMS, load_all, run_claim
@@ -24,5 +26,7 @@ def test_claim_passes(cid, monkeypatch, record_property):
     result, _, _ = run_claim(CLAIMS[cid])
     record_property("kind", result.kind)
     record_property("statement", result.statement)
+    record_property("parameters", json.dumps(result.parameters, sort_keys=True, default=str))
+    record_property("measured", json.dumps(result.measured, sort_keys=True, default=str))
     assert result.status == "pass", result.measured
     assert not result.cached

@@ -54,7 +54,8 @@ def _blank(png: bytes) -> bool:
     return float(img[..., :3].std()) < 0.01
 
 
-def check(page: Path, screenshot: Path) -> dict:
+def make_driver(width: int = 1300, height: int = 1000):
+    """Headless Chromium (Debian's, through chromedriver) with the browser and network logs on."""
     from selenium import webdriver
     from selenium.webdriver.chrome.service import Service
 
@@ -62,11 +63,27 @@ def check(page: Path, screenshot: Path) -> dict:
     opts.binary_location = find(CHROMIUM)
     for flag in ("--headless=new", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
                  "--disable-background-networking", "--disable-component-update", "--disable-sync",
-                 "--use-angle=swiftshader", "--enable-unsafe-swiftshader", "--window-size=1300,1000",
-                 "--allow-file-access-from-files"):
+                 "--use-angle=swiftshader", "--enable-unsafe-swiftshader", f"--window-size={width},{height}",
+                 "--allow-file-access-from-files", "--hide-scrollbars"):
         opts.add_argument(flag)
     opts.set_capability("goog:loggingPrefs", {"browser": "ALL", "performance": "ALL"})
-    driver = webdriver.Chrome(service=Service(find(DRIVER)), options=opts)
+    return webdriver.Chrome(service=Service(find(DRIVER)), options=opts)
+
+
+def console_and_requests(driver) -> tuple[list, list[str], list[str]]:
+    """(console errors, every requested URL, the requests leaving this machine's files)."""
+    console = [e for e in driver.get_log("browser") if e["level"] in ("SEVERE", "ERROR")]
+    requests = []
+    for e in driver.get_log("performance"):
+        msg = json.loads(e["message"])["message"]
+        if msg.get("method") == "Network.requestWillBeSent":
+            requests.append(msg["params"]["request"]["url"])
+    external = [u for u in requests if not u.startswith(("file://", "data:", "blob:", "about:"))]
+    return console, requests, external
+
+
+def check(page: Path, screenshot: Path) -> dict:
+    driver = make_driver()
     try:
         driver.set_script_timeout(90)
         driver.get(page.resolve().as_uri())
@@ -84,13 +101,7 @@ def check(page: Path, screenshot: Path) -> dict:
             png = v.screenshot_as_png
             (screenshot.parent / f"gallery-{v.get_attribute('id')}.png").write_bytes(png)
             drawn[v.get_attribute("id")] = bool(canvases) and not _blank(png)
-        console = [e for e in driver.get_log("browser") if e["level"] in ("SEVERE", "ERROR")]
-        requests = []
-        for e in driver.get_log("performance"):
-            msg = json.loads(e["message"])["message"]
-            if msg.get("method") == "Network.requestWillBeSent":
-                requests.append(msg["params"]["request"]["url"])
-        external = [u for u in requests if not u.startswith(("file://", "data:", "blob:", "about:"))]
+        console, requests, external = console_and_requests(driver)
         driver.execute_script("window.scrollTo(0, 0)")
         height = driver.execute_script("return document.body.scrollHeight")
         driver.set_window_size(1300, min(int(height), 16000))

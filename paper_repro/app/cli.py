@@ -3,7 +3,8 @@
 * ``claims [--only ID ...] [--n N] [--alpha A] [--extended]`` -- run claims and print the table.
   A full run (no ``--only``/``--n``/``--alpha``) also writes ``data/``; a partial run only prints.
 * ``figures [--only ID ...]`` -- regenerate figures, ``figures/manifest.json`` and the gallery.
-* ``reproduce [--extended]`` -- everything: claims, data, figures, gallery; exit 1 if a claim fails.
+* ``reproduce [--extended]`` -- everything: claims, data, figures, gallery, annotated paper; exit 1 if a claim fails.
+* ``paper`` -- the annotated paper ``paper/index.html`` (needs the paper's LaTeX source beside the clone).
 * ``labels N`` -- the paper labels of T_{2n} with their internal indices and exponents.
 """
 
@@ -38,6 +39,7 @@ def main(argv: list[str] | None = None) -> int:
     pf.add_argument("--only", nargs="+", metavar="ID")
     pr = sub.add_parser("reproduce", help="claims, data, figures and gallery")
     pr.add_argument("--extended", action="store_true")
+    sub.add_parser("paper", help="the annotated paper paper/index.html")
     pl = sub.add_parser("labels", help="print the labels of T_{2n}")
     pl.add_argument("n", type=int)
     args = parser.parse_args(argv)
@@ -74,6 +76,11 @@ def main(argv: list[str] | None = None) -> int:
             partial = bool(args.only or n is not None or alpha is not None)
             ok = report.run_claims(list(per_claim), per_claim, extended=args.extended, write=not partial)
             return 0 if ok else 1
+        if args.cmd == "paper":
+            from paper_repro.app.annotated_paper import write_paper
+
+            write_paper()
+            return 0
         if args.cmd == "figures":
             unknown = sorted(set(args.only or []) - set(FIGURES))
             if unknown:
@@ -83,6 +90,9 @@ def main(argv: list[str] | None = None) -> int:
         if args.cmd == "reproduce":
             ok = report.run_claims(None, None, extended=args.extended, write=True)
             report.make_figures(None)
+            from paper_repro.app.annotated_paper import write_paper
+
+            write_paper()
             return 0 if ok else 1
     except ValueError as exc:
         print(f"error: {exc}", file=sys.stderr)

@@ -91,21 +91,55 @@ def _git(*args: str) -> str:
 
 def provenance() -> dict:
     """The commit of the code that computed the data (the last commit touching the package, pyproject or
-    the lock), its date (not the clock), whether the code differs from it, and the locked versions."""
+    the lock), its date (not the clock), whether the code differs from it, whether ``data/`` was committed
+    after the code (so it was computed by it), and the locked versions (``name==version`` of each lock line,
+    without its ``--hash=`` options)."""
     paths = ["paper_repro", "pyproject.toml", "requirements.lock"]
     commit = _git("log", "-1", "--format=%H", "--", *paths) or "unknown (no git)"
     date = _git("log", "-1", "--format=%cs", "--", *paths) or "unknown"
     dirty = bool(_git("status", "--porcelain", "--", *paths))
+    code_time = _git("log", "-1", "--format=%ct", "--", *paths)
+    data_commit = _git("log", "-1", "--format=%H", "--", "data")
+    data_time = _git("log", "-1", "--format=%ct", "--", "data")
+    data_dirty = bool(_git("status", "--porcelain", "--", "data"))
+    if not (code_time and data_time):
+        data_state = "unknown (no git history)"
+    elif data_dirty:
+        data_state = "data/ has uncommitted changes (a run of make reproduce not yet committed)"
+    elif int(data_time) >= int(code_time) and not dirty:
+        data_state = f"yes: data/ was last committed ({data_commit[:12]}) after the last change of the code"
+    else:
+        data_state = (f"no: the code changed after data/ was last committed ({data_commit[:12]}); "
+                      "run make reproduce")
     lock = (ROOT / "requirements.lock").read_text().splitlines() if (ROOT / "requirements.lock").exists() else []
-    wanted = ("numpy", "scipy", "mpmath", "python-flint", "matplotlib", "plotly", "bezier")
-    versions = {ln.split("==")[0]: ln.split("==")[1] for ln in lock if "==" in ln and ln.split("==")[0] in wanted}
-    return {"commit": commit + (" + uncommitted changes" if dirty else ""), "date": date, "versions": versions}
+    versions = parse_lock(lock)
+    return {"commit": commit + (" + uncommitted changes" if dirty else ""), "date": date, "versions": versions,
+            "data_matches_code": data_state}
+
+
+#: The packages whose versions the provenance table shows (those that compute or draw).
+PROVENANCE_PACKAGES = ("numpy", "scipy", "mpmath", "python-flint", "matplotlib", "plotly", "latex2mathml", "bezier")
+
+
+def parse_lock(lines: list[str], wanted: tuple[str, ...] = PROVENANCE_PACKAGES) -> dict[str, str]:
+    """``{package: version}`` from lock lines ``name==version [--hash=sha256:...] [\\]``.
+
+    >>> parse_lock(["numpy==2.4.6 --hash=sha256:89cd \\\\", "    --hash=sha256:aa", "scipy==1.17.1"])
+    {'numpy': '2.4.6', 'scipy': '1.17.1'}
+    """
+    out = {}
+    for ln in lines:
+        m = re.match(r"\s*([A-Za-z0-9_.-]+)==([^\s;\\]+)", ln)
+        if m and m.group(1).lower() in wanted:
+            out[m.group(1).lower()] = m.group(2)
+    return out
 
 
 def _table(headers: list[str], rows: list[list[str]]) -> str:
-    head = "".join(f"<th>{h}</th>" for h in headers)
+    """A table; no header row where every header is empty."""
+    head = f"<tr>{''.join(f'<th>{h}</th>' for h in headers)}</tr>" if any(headers) else ""
     body = "".join("<tr>" + "".join(f"<td>{c}</td>" for c in r) + "</tr>" for r in rows)
-    return f"<table><tr>{head}</tr>{body}</table>"
+    return f"<table>{head}{body}</table>"
 
 
 def _load(path: Path, default):
@@ -174,10 +208,23 @@ def views() -> dict[str, dict]:
     steps = [{"label": fr["name"], "method": "animate",
               "args": [[fr["name"]], {"mode": "immediate", "frame": {"duration": 0, "redraw": True}}]}
              for fr in frames]
+    # fixed axes over every frame (the patch moves with alpha; autoscaling per frame would cut it off), and the
+    # scene above the slider, so that the slider never covers the patch
+    allv = np.vstack([np.c_[fr["data"][0]["x"], fr["data"][0]["y"], fr["data"][0]["z"]] for fr in frames] + [net2])
+    lo, hi = allv.min(axis=0), allv.max(axis=0)
+    pad = 0.05 * (hi - lo).max()
+    span = hi - lo + 2 * pad
+    axes = {f"{ax}axis": {"visible": False, "range": [float(f"{lo[k] - pad:.4g}"), float(f"{hi[k] + pad:.4g}")]}
+            for k, ax in enumerate("xyz")}
+    scene = {**layout["scene"], **axes, "aspectmode": "manual",
+             "aspectratio": {ax: float(f"{span[k] / span.max():.4g}") for k, ax in enumerate("xyz")},
+             "domain": {"x": [0, 1], "y": [0.2, 1]}, "camera": {"eye": {"x": 1.35, "y": -1.35, "z": 1.0}}}
     out["slider"] = {"data": frames[4]["data"] + [_net_trace(net2, net_edges(2), "control net (toggle)")],
                      "frames": frames,
-                     "layout": {**layout, "title": "One order-2 control net, the patch as α varies",
-                                "sliders": [{"active": 4, "steps": steps, "currentvalue": {"prefix": "α = "}}]}}
+                     "layout": {**layout, "height": 600, "scene": scene,
+                                "title": "One order-2 control net, the patch as α varies",
+                                "sliders": [{"active": 4, "steps": steps, "currentvalue": {"prefix": "α = "},
+                                             "y": 0.02, "yanchor": "bottom", "len": 0.95, "x": 0.025}]}}
     return out
 
 
@@ -203,6 +250,76 @@ def write_vendor() -> Path:
 
 
 # --- the page ------------------------------------------------------------------------------------------
+def figure_order(manifest: list[dict]) -> list[dict]:
+    """The paper's figures by their number (Fig. 1 ... Fig. 12), then the project's own in registry order."""
+    def key(m: dict) -> tuple:
+        num = re.search(r"Fig\. (\d+)", m.get("paper_number") or "")
+        return (0, int(num.group(1)), 0) if num else (1, 0, manifest.index(m))
+    return sorted(manifest, key=key)
+
+
+#: Captions of the interactive views (what they show and how they were made).
+VIEW_CAPTIONS = {
+    "torus": "Fig. 8 of the paper, interactive: part of the ring torus (μ = 3, ρ = (1+√5)/2·μ, α = π/2) by 12 "
+             "second-order patches; the control net of the toroidal triangle of Example exmp:torus can be shown "
+             "from the legend.",
+    "dupin": "Fig. 9 of the paper, interactive: the ring Dupin cyclide (a = 6, b = 4√2, c = 2, μ = 3) by 32 rational "
+             "second-order patches, α = π/2.",
+    "third": "Fig. 7 of the paper, interactive: a third-order patch (α = π/2) with its 37-point control net.",
+    "slider": "New: one fixed second-order control net and its patch for α from 0.2 to 3.1 (slider below the view); "
+              "as α → 0 the patch tends to the degree-5 Bézier triangle of Question 7.3.",
+}
+
+
+def _pair_diff(printed: str, corrected: str) -> str:
+    """The tokens that differ between printed and corrected (``printed → corrected``), or ''."""
+    import difflib
+
+    tok = lambda t: re.findall(r"[A-Za-z]+_\{[^}]*\}|\S+", t)  # noqa: E731
+    a, b = tok(printed), tok(corrected)
+    changes = []
+    for op, i1, i2, j1, j2 in difflib.SequenceMatcher(a=a, b=b, autojunk=False).get_opcodes():
+        if op != "equal":
+            changes.append(f"{' '.join(a[i1:i2]) or '∅'} → {' '.join(b[j1:j2]) or '∅'}")
+    return "; ".join(changes) if 0 < len(changes) <= 3 else ""
+
+
+def evidence_html(text: str) -> str:
+    """Evidence text with its embedded Python lists of records (``[{'i': 1, ...}, ...]``) as small tables."""
+    import ast
+
+    out, last = [], 0
+    for m in re.finditer(r"\[\{.*?\}\]", text):
+        try:
+            rows = ast.literal_eval(m.group(0))
+        except (ValueError, SyntaxError):
+            continue
+        if not (isinstance(rows, list) and rows and all(isinstance(r, dict) for r in rows)):
+            continue
+        keys = list(dict.fromkeys(k for r in rows for k in r))
+        out.append(html.escape(text[last:m.start()]))
+        out.append('<table class="mini">' + "<tr>" + "".join(f"<th>{html.escape(str(k))}</th>" for k in keys)
+                   + "</tr>" + "".join("<tr>" + "".join(f"<td>{html.escape(str(r.get(k, '')))}</td>" for k in keys)
+                                       + "</tr>" for r in rows) + "</table>")
+        last = m.end()
+    out.append(html.escape(text[last:]))
+    return "".join(out)
+
+
+def _anchor(text: str) -> str:
+    return re.sub(r"[^A-Za-z0-9_:.-]", "-", text)
+
+
+CSS = ("body{font-family:sans-serif;max-width:1150px;margin:2em auto;padding:0 1em;color:#222;line-height:1.45}"
+       "figure{margin:2em 0;border-top:1px solid #ddd;padding-top:1em}img{max-width:100%;height:auto}"
+       "table{border-collapse:collapse;margin:0.5em 0}td,th{border:1px solid #ccc;padding:3px 6px;"
+       "font-size:90%;vertical-align:top}.pass{color:#060}.fail{color:#b00}code{font-size:90%}"
+       ".meta{font-size:88%;color:#444}.meta code{overflow-wrap:anywhere}.view{border:1px solid #ddd;margin:0.5em 0}"
+       "nav a{margin-right:1em}.scroll{max-width:100%;overflow-x:auto}table.mini td,table.mini th{font-size:80%;"
+       "padding:1px 4px}.pair td{min-width:14em}.figindex{columns:2;font-size:95%}.view-fig{margin:1.5em 0}"
+       "details.map>summary{cursor:pointer;font-weight:bold}td.diff{color:#800}")
+
+
 def gallery_html(manifest: list[dict], view_specs: dict[str, dict] | None = None) -> str:
     claims = _load(DATA / "claims.json", [])
     errata = _load(DATA / "errata.json", [])
@@ -211,57 +328,74 @@ def gallery_html(manifest: list[dict], view_specs: dict[str, dict] | None = None
     prov = provenance()
     status = {c["id"]: c for c in claims}
     index = load_index()
-    css = ("body{font-family:sans-serif;max-width:1150px;margin:2em auto;color:#222;line-height:1.45}"
-           "figure{margin:2em 0;border-top:1px solid #ddd;padding-top:1em}img{max-width:100%;height:auto}"
-           "table{border-collapse:collapse;margin:0.5em 0}td,th{border:1px solid #ccc;padding:3px 6px;"
-           "font-size:90%;vertical-align:top}.pass{color:#060}.fail{color:#b00}code{font-size:90%}"
-           ".meta{font-size:88%;color:#444}.view{border:1px solid #ddd;margin:1em 0}nav a{margin-right:1em}")
+    ordered = figure_order(manifest)
+    scroll = lambda t: f'<div class="scroll">{t}</div>'  # noqa: E731 -- wide tables scroll, the page does not
     p = ["<!DOCTYPE html>", '<html lang="en"><head><meta charset="utf-8">',
          '<meta name="viewport" content="width=device-width, initial-scale=1">',
-         "<title>paper_repro: gallery</title>", f"<style>{css}</style>",
+         "<title>paper_repro: gallery</title>", f"<style>{CSS}</style>",
          '<script src="vendor/plotly.min.js"></script></head><body>',
          "<h1>A constructive approach to triangular trigonometric patches — reproduced</h1>",
          "<p>Á. Róth, I. Juhász, A. Kristály, arXiv:1309.4747. Generated by <code>make reproduce</code> "
          "from the registries and <code>data/</code>; nothing on this page is typed in by hand. "
-         "Test report: <a href=\"../reports/tests.html\">reports/tests.html</a> (after <code>make report</code>).</p>",
+         '<b>The paper, annotated</b> (its text with a badge at every display): '
+         '<a href="../paper/index.html">paper/index.html</a> (<code>make paper</code>; needs the paper\'s LaTeX '
+         'source beside the clone). Test report: <a href="../reports/tests.html">reports/tests.html</a> '
+         "(after <code>make report</code>).</p>",
          '<nav><a href="#provenance">provenance</a><a href="#claims">claims</a><a href="#errata">errata</a>'
          '<a href="#questions">open questions</a><a href="#figures">figures</a><a href="#views">3D views</a>'
-         '<a href="#bench">performance</a><a href="#map">paper map</a></nav>',
+         '<a href="#bench">performance</a><a href="#map">paper map</a><a href="../paper/index.html">annotated paper</a>'
+         "</nav>",
          '<h2 id="provenance">Provenance</h2>',
-         _table(["code commit", "date of the commit", "locked versions"],
-                [[f"<code>{html.escape(prov['commit'])}</code>", prov["date"],
-                  ", ".join(f"{k} {v}" for k, v in sorted(prov["versions"].items()))]]),
+         _table(["", ""], [["code commit", f"<code>{html.escape(prov['commit'])}</code> ({prov['date']})"],
+                           ["data/ computed by this code", html.escape(prov["data_matches_code"])]]),
+         _table(["package", "version (requirements.lock)"],
+                [[html.escape(k), html.escape(v)] for k, v in sorted(prov["versions"].items())]),
          '<h2 id="claims">Claims</h2>',
-         _table(["id", "in the paper", "statement", "kind", "status"],
-                [[f"<code>{html.escape(c['id'])}</code>", "<br>".join(html.escape(display_of(r, index))
-                                                                      for r in c["paper_ref"]),
-                  math_html(c["statement"]), c["kind"], f"<span class=\"{c['status']}\">{c['status']}</span>"]
-                 for c in claims]),
+         scroll(_table(["id", "in the paper", "statement", "kind", "status"],
+                       [[f'<code id="claim-{html.escape(c["id"])}">{html.escape(c["id"])}</code>',
+                         "<br>".join(f'<a href="../paper/index.html#{html.escape(r)}">'
+                                     f"{html.escape(display_of(r, index))}</a>" for r in c["paper_ref"]),
+                         math_html(c["statement"]), c["kind"], f"<span class=\"{c['status']}\">{c['status']}</span>"]
+                        for c in claims])),
          '<h2 id="errata">Errata</h2>',
          "<p>Severity: <b>typo</b> (meaning clear, nothing downstream changes), <b>statement</b> (a printed formula "
-         "or rule is false as written), <b>result</b> (a result of the paper changes).</p>",
-         _table(["id", "in the paper", "severity", "printed", "corrected", "evidence"],
-                [[f"<code>{html.escape(e['id'])}</code>", html.escape(display_of(e["paper_ref"], index)),
-                  e.get("severity", ""),
-                  math_html(e["printed"]), math_html(e["corrected"]), html.escape(e["evidence"])] for e in errata]),
-         '<h2 id="questions">Open questions of Section 7: where they stand</h2>',
-         _table(["question", "claims (kind, status)", "not reached"],
-                [[html.escape(q), "<br>".join(f"<code>{c}</code> ({status[c]['kind']}, {status[c]['status']})"
-                                              for c in cids if c in status), html.escape(missing)]
-                 for q, cids, missing in OPEN_QUESTIONS]),
-         *general_formulas_html(),
-         '<h2 id="figures">Figures</h2>']
-    for m in manifest:
+         "or rule is false as written), <b>result</b> (a result of the paper changes). Each erratum is shown in its "
+         'place in the <a href="../paper/index.html">annotated paper</a>.</p>']
+    for e in errata:
+        diff = _pair_diff(e["printed"], e["corrected"])
+        p.append(f'<h3 id="erratum-{_anchor(e["id"])}"><code>{html.escape(e["id"])}</code> — '
+                 f'<a href="../paper/index.html#{html.escape(e["paper_ref"])}">'
+                 f'{html.escape(display_of(e["paper_ref"], index))}</a>, severity <b>{html.escape(e["severity"])}</b>'
+                 "</h3>")
+        p.append(scroll(f'<table class="pair"><tr><th>printed</th><th>corrected</th></tr><tr><td>'
+                        f'{math_html(e["printed"])}</td><td>{math_html(e["corrected"])}</td></tr>'
+                        + (f'<tr><td class="diff" colspan="2">changed: {math_html(diff)}</td></tr>' if diff else "")
+                        + "</table>"))
+        p.append(f'<p class="meta">evidence: {evidence_html(e["evidence"])}</p>')
+    p += ['<h2 id="questions">Open questions of Section 7: where they stand</h2>',
+          scroll(_table(["question", "claims (kind, status)", "not reached"],
+                        [[html.escape(q), "<br>".join(f'<a href="#claim-{c}"><code>{c}</code></a> '
+                                                      f"({status[c]['kind']}, {status[c]['status']})"
+                                                      for c in cids if c in status), html.escape(missing)]
+                         for q, cids, missing in OPEN_QUESTIONS])),
+          *general_formulas_html(),
+          '<h2 id="figures">Figures</h2>',
+          "<p>In the paper's order, then the project's own figures. Click a figure for its SVG.</p>",
+          '<ol class="figindex">' + "".join(
+              f'<li><a href="#{html.escape(m["id"])}">{html.escape(m["paper_number"] or "new")}: '
+              f'{html.escape(m["id"])}</a></li>' for m in ordered) + "</ol>"]
+    for m in ordered:
         number = f"{m['paper_number']} of the paper" if m.get("paper_number") else "new (not in the paper)"
-        p.append(f'<figure id="{m["id"]}"><h3>{html.escape(m["id"])} — {html.escape(number)}'
-                 + (f' <small><code>{html.escape(m["paper_label"])}</code></small>' if m["paper_label"] else "")
-                 + "</h3>")
+        paper_link = (f' <small><a href="../paper/index.html#{html.escape(m["paper_label"])}">in the annotated paper'
+                      f'</a> · <code>{html.escape(m["paper_label"])}</code></small>' if m["paper_label"] else "")
+        p.append(f'<figure id="{m["id"]}"><h3>{html.escape(number[0].upper() + number[1:])} — '
+                 f'{html.escape(m["id"])}{paper_link}</h3>')
         for out in m["outputs"]:
             name = Path(out).name
             p.append(f'<a href="{html.escape(Path(name).with_suffix(".svg").name)}"><img src="{html.escape(name)}" '
                      f'alt="{html.escape(m["id"])}"></a>')
-        claims_txt = ", ".join(f'<code>{c["id"]}</code> <span class="{c["status"]}">{c["status"]}</span>'
-                               for c in m["claims"]) or "none"
+        claims_txt = ", ".join(f'<a href="#claim-{c["id"]}"><code>{c["id"]}</code></a> '
+                               f'<span class="{c["status"]}">{c["status"]}</span>' for c in m["claims"]) or "none"
         files = "<br>".join(f'<code>{html.escape(f["path"])}</code> sha256 <code>{f["sha256"]}</code>'
                             for f in m["files"])
         params = html.escape(json.dumps(m["parameters"])) if m["parameters"] else "none"
@@ -272,7 +406,8 @@ def gallery_html(manifest: list[dict], view_specs: dict[str, dict] | None = None
              "toggle the control net. Drawn offline by plotly.js (from the plotly package, in "
              "<code>figures/vendor/</code>).</p>")
     for key, spec in (view_specs or {}).items():
-        p.append(f'<div class="view" id="view-{key}"></div>')
+        p.append(f'<figure class="view-fig" id="fig-view-{key}"><div class="view" id="view-{key}"></div>'
+                 f"<figcaption>{html.escape(VIEW_CAPTIONS.get(key, ''))}</figcaption></figure>")
         p.append("<script>(function(){var s=" + json.dumps(spec, separators=(",", ":")) + ";"
                  f"Plotly.newPlot('view-{key}',s.data,s.layout,{{displaylogo:false,responsive:true}})"
                  ".then(function(g){if(s.frames){Plotly.addFrames(g,s.frames);}});})();</script>")
@@ -286,14 +421,24 @@ def gallery_html(manifest: list[dict], view_specs: dict[str, dict] | None = None
     else:
         p.append("<p>No benchmark report yet (<code>make bench</code>).</p>")
     s = pmap.get("summary", {})
+    figs = {m["id"] for m in manifest}
     p.append(f'<h2 id="map">Paper map</h2><p>{s.get("labels", 0)} labels: {s.get("covered_by_claim_or_figure", 0)} '
              f'checked by a claim or figure, {len(s.get("excused", []))} excused (nothing to compute; reason given), '
-             f'{len(s.get("neither_checked_nor_excused", []))} neither.</p>')
-    p.append(_table(["in the PDF", "label", "claims", "figures", "excused because"],
-                    [[html.escape(r.get("paper", "")), f"<code>{html.escape(r['label'])}</code>",
-                      ", ".join(r["claims"]), ", ".join(r["figures"]),
-                      html.escape(r.get("excused", "")) if not (r["claims"] or r["figures"]) else ""]
-                     for r in pmap.get("labels", [])]))
+             f'{len(s.get("neither_checked_nor_excused", []))} neither. Each label links to its place in the '
+             "annotated paper, its claims and figures on this page, and the code that names it.</p>")
+    rows = []
+    for r in pmap.get("labels", []):
+        code = ", ".join((f'<a href="../{html.escape(c)}"><code>{html.escape(c.removeprefix("paper_repro/"))}'
+                          "</code></a>" if (ROOT / c).exists() else f"<code>{html.escape(c)}</code>")
+                         for c in r.get("code", []))
+        rows.append([f'<a href="../paper/index.html#{html.escape(r["label"])}">{html.escape(r.get("paper", ""))}</a>',
+                     f"<code>{html.escape(r['label'])}</code>",
+                     ", ".join(f'<a href="#claim-{c}">{c}</a>' for c in r["claims"]),
+                     ", ".join(f'<a href="#{f}">{f}</a>' if f in figs else f for f in r["figures"]), code,
+                     html.escape(r.get("excused", "")) if not (r["claims"] or r["figures"]) else ""])
+    p.append(f'<details class="map"><summary>the {len(rows)} labels (click to open)</summary>'
+             + scroll(_table(["in the PDF", "label", "claims", "figures", "code", "excused because"], rows))
+             + "</details>")
     p.append("</body></html>\n")
     return "\n".join(p)
 
@@ -316,7 +461,8 @@ def general_formulas_html() -> list[str]:
         formula = math_html(f"${e['latex']}$") if "latex" in e else html.escape(e.get("searched", ""))
         rows.append([html.escape(str(e["level"])), html.escape(e.get("cases", e["kind"])), html.escape(e["status"]),
                      formula])
-    out.append(_table(["level", "cases", "status", "formula / what was searched"], rows))
+    out.append('<div class="scroll">' + _table(["level", "cases", "status", "formula / what was searched"], rows)
+               + "</div>")
     return out
 
 

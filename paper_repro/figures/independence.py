@@ -28,8 +28,22 @@ from paper_repro.util.registry import figure
 from . import COLOR_OF, plt, save
 
 
+def shaded_area(points: np.ndarray, radius: float, m: int = 24) -> np.ndarray:
+    """The convex hull of ``points`` grown by ``radius`` (rounded corners): the grey area around the functions
+    present in an equality (caption of Figs. 4 and 5)."""
+    from scipy.spatial import ConvexHull
+
+    ang = np.linspace(0, 2 * np.pi, m, endpoint=False)
+    ring = radius * np.c_[np.cos(ang), np.sin(ang)]
+    cloud = (points[:, None, :] + ring[None, :, :]).reshape(-1, 2)
+    hull = ConvexHull(cloud)
+    return cloud[hull.vertices]
+
+
 def _draw_step(ax, n: int, step: dict, title: str) -> None:
     labels = united_system(n)
+    alive = np.array([position(labels[k]) for k in sorted(step["alive_before"])])
+    ax.fill(*shaded_area(alive, 0.045).T, color="0.88", zorder=0, lw=0)
     for k, lab in enumerate(labels):
         p = position(lab)
         if k not in step["alive_before"]:
@@ -55,14 +69,16 @@ def _steps_figure(n: int, rows: list[int], path: Path) -> Path:
             what = "values (order 0)" if order == 0 else f"r = {order - 1}: order-{order} derivatives"
             _draw_step(axes[a, b], n, st, f"({letters[3 * a + b]}) {what}\nunder {pdf_name(st['param'])}")
     fig.suptitle(f"n = {n}: coloured = non-vanishing (coefficient forced to 0), black = vanishing,\n"
-                 "white = eliminated in an earlier step", fontsize=12)
+                 "white = eliminated in an earlier step; grey area = the functions present in the equality",
+                 fontsize=12)
     return save(fig, path)
 
 
 @figure("linear_independence_j_0", paper_label="fig:linear_independence_j_0",
         outputs=["linear_independence_j_0.png"],
         caption="Zeroth order step of the proof for n = 4 under the three parametrizations, computed from the "
-                "functions' values on the boundary.")
+                "functions' values on the boundary; the grey shrinking areas hold the functions present in each "
+                "equality.")
 def make_j0(outdir: Path) -> list[Path]:
     return [_steps_figure(4, [0], outdir / "linear_independence_j_0.png")]
 
@@ -71,7 +87,7 @@ def make_j0(outdir: Path) -> list[Path]:
         outputs=["linear_independence_j_1__j_n_minus_1.png"],
         caption="The induction steps r = 0 (first-order derivatives) and r = n - 2 (order n - 1 derivatives) of the "
                 "proof for n = 4, computed from the actual derivatives; after the last step only the centre "
-                "R_{8,4,4} survives.")
+                "R_{8,4,4} survives; the grey shrinking areas hold the functions present in each equality.")
 def make_j1(outdir: Path) -> list[Path]:
     return [_steps_figure(4, [1, 3], outdir / "linear_independence_j_1__j_n_minus_1.png")]
 
@@ -100,6 +116,11 @@ def make_scheme(outdir: Path, n: int = 4) -> list[Path]:
     return [save(fig, outdir / "derivative_scheme_n_4.png")]
 
 
+def _pretty_alpha(text: str) -> str:
+    """'5pi/6' -> '5π/6' (the figures write π, as the paper does)."""
+    return text.replace("pi", "π").replace("*", "")
+
+
 @figure("singular_values", claims=["linear_independence"], outputs=["singular_values.png"],
         caption="New: singular values of the normalized collocation matrices (mpmath, 50 digits) for n = 1..4 at "
                 "alpha = pi/6 and 5pi/6 (left); condition number versus n for the five alpha of claim "
@@ -116,7 +137,8 @@ def make_singular_values(outdir: Path) -> list[Path]:
     for a_text, ls in (("pi/6", "-"), ("5pi/6", "--")):
         for n in (1, 2, 3, 4):
             sv = mp_singular_values(collocation_mp(n, a_text, 50, 5), 50)
-            ax1.semilogy(np.arange(1, len(sv) + 1), [float(s) for s in sv], ls, label=f"n={n}, α={a_text}")
+            ax1.semilogy(np.arange(1, len(sv) + 1), [float(s) for s in sv], ls,
+                         label=f"n = {n}, α = {_pretty_alpha(a_text)}")
     ax1.set_xlabel("index")
     ax1.set_ylabel("singular value")
     ax1.legend(fontsize=11, ncol=2)
@@ -127,7 +149,8 @@ def make_singular_values(outdir: Path) -> list[Path]:
     rows = claims["linear_independence"]["measured"]["numeric"]
     for a_text in sorted({r["alpha"] for r in rows}, key=alpha_float):
         sel = [r for r in rows if r["alpha"] == a_text]
-        ax2.semilogy([r["n"] for r in sel], [float(r["condition"]) for r in sel], "o-", label=f"α = {a_text}")
+        ax2.semilogy([r["n"] for r in sel], [float(r["condition"]) for r in sel], "o-",
+                     label=f"α = {_pretty_alpha(a_text)}")
     ax2.set_xlabel("order n")
     ax2.set_ylabel("condition number (n > 4: certified upper bound)")
     ax2.legend(fontsize=11)

@@ -44,55 +44,87 @@ def make_limit_cases(outdir: Path) -> list[Path]:
                 coef = "" if q == 1 else f"({q.p}/{q.q})\\,"
                 text = f"${coef}P^{{{sum(t)}}}_{{{t[0]},{t[1]},{t[2]}}}$"
             ax.text(p[0], p[1] + 0.018, text, fontsize=12, ha="center", va="bottom", color=_color(lab))
-        ax.set_title(f"({'abc'[n - 1]}) n = {n}", fontsize=15)
+        ax.set_title(f"({'abc'[n - 1]}) n = {n}", fontsize=15, pad=14)
         ax.set_aspect("equal")
         ax.set_xlim(-0.08, 1.08)
+        ax.set_ylim(-0.06, np.sqrt(3) / 2 + 0.11)  # room above the top node's label, below the title
         ax.axis("off")
     fig.tight_layout()
     return [save(fig, outdir / "limit_cases_n_1_2_3.png")]
 
 
+#: The Bezier points whose conversion the figure spells out: those the paper lists with an erratum (n = 3) and
+#: two printed ones of n = 2.
+CONVERSION_SHOWN = {2: [(3, 1, 1), (2, 1, 2)], 3: [(2, 1, 5), (3, 2, 3)]}
+
+
+def _frac(w) -> str:
+    return f"{w.p}/{w.q}" if w.q != 1 else f"{w.p}"
+
+
 @figure("conversion_of_limit_cases_n_1_2_3", paper_label="fig:conversion_of_limit_cases_n_1_2_3",
         outputs=["conversion_of_limit_cases_n_1_2_3.png"],
         caption="Conversion of the control net of an order-2 (a) and an order-3 (b) patch to the quintic and octic "
-                "Bezier nets of the alpha -> 0 limit, by the computed general conversion: each Bezier point "
-                "p_{d,e,f} (black square) is a convex combination of control points r, g, b; arrows show, for the "
-                "points marked in yellow, which control points enter and with which weight.")
+                "Bezier nets of the alpha -> 0 limit, by the computed general conversion. Left: the control points "
+                "r, g, b (discs) and the Bezier points p_{d,e,f} (hollow squares) on one triangle; for two Bezier "
+                "points (yellow squares) the control points that enter (ringed) are joined to them (line width ~ "
+                "weight; a ringed disc inside the yellow square sits at the Bezier point itself). Right: "
+                "their weights as a table (p_{2,1,5} and p_{3,2,3} are printed with an erratum).")
 def make_conversion(outdir: Path) -> list[Path]:
     from paper_repro.theory.limits import conversion_matrix
 
-    fig, axes = plt.subplots(2, 1, figsize=(11, 21))
-    shown = {2: [(3, 2, 0), (1, 1, 3)], 3: [(2, 1, 5), (5, 2, 1)]}
-    for ax, n in zip(axes, (2, 3)):
+    fig, axes = plt.subplots(2, 2, figsize=(15, 15.5), gridspec_kw={"width_ratios": [1.55, 1]})
+    for row, n in enumerate((2, 3)):
+        ax, tab = axes[row]
         labels = united_system(n)
         pos = np.array([position(lab) for lab in labels])
         idx, w = conversion_matrix(n)
         N = sum(idx[0])
+        # Bezier points on the same triangle as the graph (corner u left, w right, v top)
         bez = {t: np.array([t[1] * 0.5 + t[2] * 1.0, t[1] * np.sqrt(3) / 2]) / N for t in idx}
-        # Bezier points placed on the same triangle as the graph (corner u left, w right, v top)
-        for t, p in bez.items():
-            special = t in shown[n]
-            ax.plot(*p, "s", ms=9 if special else 6, color="#e6b800" if special else "black", zorder=3)
-            ax.text(p[0], p[1] - 0.022, f"$p_{{{t[0]},{t[1]},{t[2]}}}$", fontsize=11, ha="center", va="top",
-                    zorder=4)
+        for a, b in edges(n):
+            pa, pb = position(a), position(b)
+            ax.plot([pa[0], pb[0]], [pa[1], pb[1]], color="0.88", lw=0.8, zorder=0)
+        for p in bez.values():
+            ax.plot(*p, "s", ms=8, mfc="none", mec="0.25", mew=1.0, zorder=2)
         for lab, p in zip(labels, pos):
-            ax.plot(*p, "o", ms=8, color=_color(lab), alpha=0.55, zorder=2)
-        for t in shown[n]:
-            row = w[idx.index(t)]
-            for f, wt in enumerate(row):
-                if wt == 0:
-                    continue
-                ax.annotate("", xy=bez[t], xytext=pos[f], zorder=1,
-                            arrowprops=dict(arrowstyle="->", color=_color(labels[f]), lw=0.6 + 3 * float(wt)))
-                mid = 0.62 * pos[f] + 0.38 * bez[t]
-                ax.text(mid[0], mid[1], f"${wt.p}/{wt.q}$" if wt.q != 1 else f"${wt.p}$", fontsize=11,
-                        color=_color(labels[f]), ha="center", va="center",
-                        bbox=dict(boxstyle="round,pad=0.1", fc="white", ec="none", alpha=0.85), zorder=5)
-        ax.set_title(f"({'ab'[n - 2]}) order {n} -> Bezier degree {N}: coloured discs = control points "
-                     f"(R red, G green, B blue, centre orange)", fontsize=13)
+            ax.plot(*p, "o", ms=7, color=_color(lab), zorder=3)
+        rows = []
+        for k, t in enumerate(CONVERSION_SHOWN[n]):
+            weights = [(f, wt) for f, wt in enumerate(w[idx.index(t)]) if wt != 0]
+            for f, wt in weights:
+                ax.plot(*np.stack([pos[f], bez[t]]).T, color=_color(labels[f]), lw=0.8 + 5 * float(wt), alpha=0.7,
+                        zorder=1, solid_capstyle="round")
+                ax.plot(*pos[f], "o", ms=11, mfc="none", mec="black", mew=1.2, zorder=5)
+            # hollow and under the discs, so that a control point at the same place stays visible
+            ax.plot(*bez[t], "s", ms=17, mfc="#fff3b0", mec="#d4a800", mew=2.5, zorder=2.5)
+            ax.annotate(f"$p_{{{t[0]},{t[1]},{t[2]}}}$", bez[t], xytext=(12, 10 if k == 0 else -18),
+                        textcoords="offset points", fontsize=14, zorder=6,
+                        bbox=dict(boxstyle="round,pad=0.15", fc="white", ec="0.5"))
+            rows.append((t, [(labels[f], wt) for f, wt in weights]))
+        ax.set_title(f"({'ab'[n - 2]}) order {n} → Bézier degree {N}", fontsize=15)
         ax.set_aspect("equal")
-        ax.set_xlim(-0.06, 1.06)
+        ax.set_xlim(-0.04, 1.04)
+        ax.set_ylim(-0.05, np.sqrt(3) / 2 + 0.05)
         ax.axis("off")
+        # the table of weights
+        tab.axis("off")
+        y = 0.97
+        tab.text(0.0, y, "Bézier point = Σ weight × control point", fontsize=14, weight="bold", va="top",
+                 transform=tab.transAxes)
+        y -= 0.08
+        for t, terms in rows:
+            tab.text(0.0, y, f"$p_{{{t[0]},{t[1]},{t[2]}}}$ =", fontsize=15, va="top", transform=tab.transAxes)
+            y -= 0.065
+            for lab, wt in terms:
+                tab.text(0.08, y, _frac(wt), fontsize=14, va="top", ha="left", transform=tab.transAxes)
+                tab.text(0.30, y, f"${lab.control_point}$", fontsize=14, va="top", color=_color(lab),
+                         transform=tab.transAxes)
+                y -= 0.055
+            y -= 0.04
+        tab.text(0.0, y, "discs: control points (R red, G green,\nB blue, centre orange); hollow squares:\n"
+                 "Bézier points; yellow: the two spelled out", fontsize=12, va="top", color="0.25",
+                 transform=tab.transAxes)
     fig.tight_layout()
     return [save(fig, outdir / "conversion_of_limit_cases_n_1_2_3.png")]
 
@@ -104,33 +136,30 @@ def _demo_net_order_1() -> np.ndarray:
     return np.array([[*position(lab), lift[lab.paper]] for lab in united_system(1)])
 
 
-def _draw_net(ax, net, n, color, label, ms):
-    for ka, kb in net_edges(n):
-        ax.plot(*np.stack([net[ka], net[kb]]).T, color=color, lw=0.8)
-    ax.scatter(*net.T, color=color, s=ms, label=label, depthshade=False)
-
-
 @figure("degree_elevation_from_1_to_2", paper_label="fig:degree_elevation_from_1_to_2",
         outputs=["degree_elevation_from_1_to_2.png"],
         caption="Order elevation 1 -> 2 of a first order patch for (a) alpha = pi/4 < pi/2, (b) alpha = pi/2, "
-                "(c) alpha = 3pi/4 > pi/2: the order-1 net (blue), the elevated order-2 net (red) and the patch.")
+                "(c) alpha = 3pi/4 > pi/2: the order-1 net (blue), the elevated order-2 net (red) and the patch "
+                "(grey, opaque); net parts hidden by the patch are dashed.")
 def make_elevation(outdir: Path) -> list[Path]:
-    fig = plt.figure(figsize=(16, 5.2))
+    from .render3d import Scene, View
+
+    fig, axes = plt.subplots(1, 3, figsize=(16, 5.6))
     net1 = _demo_net_order_1()
-    for k, (alpha, name) in enumerate(((np.pi / 4, "π/4"), (np.pi / 2, "π/2"), (3 * np.pi / 4, "3π/4"))):
-        ax = fig.add_subplot(1, 3, k + 1, projection="3d")
-        g = 24
-        bary = np.array([(i / g, j / g, 1 - (i + j) / g) for i in range(g + 1) for j in range(g + 1 - i)])
-        surf = Patch(1, alpha, net1).at_barycentric(bary)
-        ax.plot_trisurf(surf[:, 0], surf[:, 1], surf[:, 2], color="0.75", alpha=0.55, linewidth=0)
-        _draw_net(ax, net1, 1, "#1f5fbf", "order 1", 25)
-        _draw_net(ax, elevate(net1, 1, alpha), 2, "#d62728", "order 2 (elevated)", 12)
+    for k, (ax, (alpha, name)) in enumerate(zip(axes, ((np.pi / 4, "π/4"), (np.pi / 2, "π/2"),
+                                                       (3 * np.pi / 4, "3π/4")))):
+        v, f = Patch(1, alpha, net1).mesh(24)
+        sc = Scene(View(28, -60))
+        sc.surface(v, f, "#cfcfcf")
+        sc.net(net1, net_edges(1), "#1f5fbf", line_color="#1f5fbf", size=40)
+        sc.net(elevate(net1, 1, alpha), net_edges(2), "#d62728", line_color="#d62728", size=20)
+        sc.draw(ax)
         ax.set_title(f"({'abc'[k]}) α = {name}", fontsize=14)
-        ax.view_init(elev=28, azim=-60)
-        ax.set_axis_off()
-        ax.set_box_aspect(None, zoom=1.35)  # fill the frame
         if k == 0:
+            ax.plot([], [], "o-", color="#1f5fbf", label="order 1")
+            ax.plot([], [], "o-", color="#d62728", ms=4, label="order 2 (elevated)")
             ax.legend(fontsize=12, loc="upper left")
+    fig.tight_layout()
     return [save(fig, outdir / "degree_elevation_from_1_to_2.png")]
 
 

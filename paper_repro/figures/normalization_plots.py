@@ -2,8 +2,9 @@
 
 * ``normalizing_coefficients``: r_{2n,2n-i,j}^alpha versus alpha for n = 1, 2, 3 (log scale), computed
   by the certified ball-arithmetic solve of :mod:`paper_repro.core.normalization` (not from closed forms).
-* ``smallest_coefficient``: the smallest of r_{2n,2n-i,j}^alpha sin^{2n+j}(alpha/2) = P(cos(alpha/2))
-  over all coefficients, versus n, for several alpha (closed forms of :mod:`paper_repro.theory.closed_forms`).
+* ``smallest_coefficient``: the smallest normalizing coefficient of each level versus alpha (n = 4), and the
+  smallest interior one (levels j >= 1) versus alpha for n = 1..8 (closed forms of
+  :mod:`paper_repro.theory.closed_forms`, proven for every alpha).
 """
 
 from __future__ import annotations
@@ -43,31 +44,43 @@ def make_coefficients(outdir: Path) -> list[Path]:
     return [save(fig, outdir / "normalizing_coefficients.png")]
 
 
+def _level_values(n: int, alphas: np.ndarray) -> dict[int, np.ndarray]:
+    """Per level j, the smallest normalizing coefficient r^alpha_{2n,2n-i,j} = P(cos(alpha/2)) / sin^{2n+j}(alpha/2)
+    of that level at each alpha (from the closed forms, proven for every alpha)."""
+    c, s = np.cos(alphas / 2), np.sin(alphas / 2)
+    out: dict[int, list[np.ndarray]] = {}
+    for lab, f in closed_forms_cached(n).items():
+        j = int(lab.rstrip("}").split(",")[-1])
+        coeffs = [int(x) for x in f.numerator.coeffs()]  # constant term first
+        val = np.polyval(coeffs[::-1], c) / s ** f.sin_power
+        out.setdefault(j, []).append(val)
+    return {j: np.min(v, axis=0) for j, v in sorted(out.items())}
+
+
 @figure("smallest_coefficient", claims=["nonnegativity_extended"], outputs=["smallest_coefficient.png"],
-        caption="New: min over all coefficients of r_{2n,2n-i,j}^alpha sin^{2n+j}(alpha/2) = P(cos(alpha/2)) versus "
-                "the order n, for several alpha. Positive throughout (the closed forms' P have no root in (0,1)).")
-def make_smallest(outdir: Path, n_max: int = 10) -> list[Path]:
-    fig, ax = plt.subplots(figsize=(9, 6))
-    ns = list(range(1, n_max + 1))
-    for frac, lab in ((0.05, "0.05π"), (1 / 6, "π/6"), (1 / 2, "π/2"), (0.9, "0.9π"), (0.99, "0.99π")):
-        c_q = _fmpq(np.cos(np.pi * frac / 2))
-        mins, argmins = [], []
-        for n in ns:
-            vals = {lab_: float(f.numerator(c_q)) for lab_, f in closed_forms_cached(n).items()}
-            arg = min(vals, key=vals.get)
-            mins.append(vals[arg])
-            argmins.append(arg)
-        ax.semilogy(ns, mins, "o-", label=f"α = {lab}; minimiser at n = {n_max}: ${argmins[-1]}$")
-    ax.set_xlabel("order n", fontsize=13)
-    ax.set_ylabel(r"$\min\; r^\alpha_{2n,2n-i,j}\,\sin^{2n+j}(\alpha/2)$", fontsize=13)
-    ax.tick_params(labelsize=12)
-    ax.grid(alpha=0.3, which="both")
-    ax.legend(fontsize=11)
+        caption="New: (a) for n = 4, the smallest normalizing coefficient r_{2n,2n-i,j}^alpha of each level j "
+                "versus alpha (level 0 is the boundary, level n the centre); "
+                "(b) the smallest interior coefficient (levels j >= 1) versus alpha for n = 1..8. From the closed "
+                "forms, which are proven for every alpha; every coefficient is positive.")
+def make_smallest(outdir: Path, n_levels: int = 4, n_max: int = 8) -> list[Path]:
+    alphas = np.linspace(0.08, 3.08, 151)
+    fig, (ax1, ax2) = plt.subplots(2, 1, figsize=(10, 12.5))
+    colors = plt.get_cmap("viridis")
+    for j, vals in _level_values(n_levels, alphas).items():
+        ax1.semilogy(alphas, vals, lw=2.2, color=colors(j / n_levels), ls="-" if j else "--",
+                     label=f"level {j}" + (" (centre)" if j == n_levels else " (boundary)" if j == 0 else ""))
+    ax1.set_title(f"(a) n = {n_levels}: smallest coefficient of each level", fontsize=14)
+    for n in range(1, n_max + 1):
+        levels = _level_values(n, alphas)
+        interior = np.min([v for j, v in levels.items() if j >= 1], axis=0)
+        ax2.semilogy(alphas, interior, lw=2, color=plt.get_cmap("plasma")((n - 1) / n_max), label=f"n = {n}")
+    ax2.set_title("(b) smallest interior coefficient (levels j ≥ 1)", fontsize=14)
+    for ax in (ax1, ax2):
+        ax.set_xlabel("α", fontsize=13)
+        ax.set_ylabel(r"$\min\; r^\alpha_{2n,2n-i,j}$", fontsize=13)
+        ax.set_xticks([0, np.pi / 4, np.pi / 2, 3 * np.pi / 4, np.pi], ["0", "π/4", "π/2", "3π/4", "π"])
+        ax.tick_params(labelsize=12)
+        ax.grid(alpha=0.3, which="both")
+        ax.legend(fontsize=12, ncol=2 if ax is ax2 else 1, loc="upper right")
+    fig.tight_layout()
     return [save(fig, outdir / "smallest_coefficient.png")]
-
-
-def _fmpq(x: float):
-    from flint import fmpq
-
-    num, den = float(x).as_integer_ratio()
-    return fmpq(num, den)

@@ -14,6 +14,7 @@ from paper_repro.surfaces.patch import Patch
 from paper_repro.util.registry import figure
 
 from . import COLOR_OF, plt, save
+from .render3d import Scene, View
 
 
 def _color(lab) -> str:
@@ -46,77 +47,76 @@ def third_order_net() -> np.ndarray:
     return np.c_[pos, z]
 
 
-def _surface(ax, verts, faces, color, alpha):
-    ax.plot_trisurf(verts[:, 0], verts[:, 1], verts[:, 2], triangles=faces, color=color, alpha=alpha, linewidth=0,
-                    shade=True)
+#: Opaque, distinguishable colours for the patches of a surface (no transparency: it mixes into mud).
+PATCH_COLORS = ["#8fb8de", "#f4a582", "#a6d96a", "#fdd26e", "#c2a5cf", "#80cdc1", "#f1948a", "#bababa",
+                "#5e9ccf", "#e08a5a", "#7fbf5a", "#d9b44a", "#9a7fb8", "#4fb3a3", "#d96a6a", "#8c8c8c"]
 
 
 @figure("third_order_patch", paper_label="fig:third_order_patch", outputs=["third_order_patch.png"],
-        caption="Different views of a third order triangular trigonometric patch with its 37-point control net "
-                "(alpha = pi/2).")
+        caption="Different views (a), (b), (c) of the same third order triangular trigonometric patch with its "
+                "37-point control net (alpha = pi/2). Opaque surface drawn triangle by triangle far to near; the "
+                "net's parts hidden by the patch (found with a depth buffer) are dashed grey.")
 def make_third_order(outdir: Path) -> list[Path]:
     net = third_order_net()
     patch = Patch(3, np.pi / 2, net)
-    verts, faces = patch.mesh(28)
-    fig = plt.figure(figsize=(15, 5))
-    for k, (elev, azim) in enumerate(((25, -60), (55, 30), (8, -100))):
-        ax = fig.add_subplot(1, 3, k + 1, projection="3d")
-        _surface(ax, verts, faces, "#9ecae1", 0.8)
-        for ka, kb in net_edges(3):
-            ax.plot(*net[[ka, kb]].T, color="0.3", lw=0.7)
-        ax.scatter(*net.T, c=[_color(lab) for lab in united_system(3)], s=12, depthshade=False)
-        ax.view_init(elev=elev, azim=azim)
-        ax.set_axis_off()
-        ax.set_box_aspect(None, zoom=1.4)  # fill the frame
-    fig.subplots_adjust(left=0, right=1, bottom=0, top=1, wspace=0)
+    verts, faces = patch.mesh(30)
+    colors = [_color(lab) for lab in united_system(3)]
+    fig, axes = plt.subplots(1, 3, figsize=(16, 5.6))
+    for k, (ax, view) in enumerate(zip(axes, (View(25, -60), View(60, 30), View(8, -100)))):
+        sc = Scene(view)
+        sc.surface(verts, faces, "#9ecae1")
+        sc.net(net, net_edges(3), colors, size=26)
+        sc.draw(ax)
+        ax.set_title(f"({'abc'[k]}) elevation {view.elev:g}°, azimuth {view.azim:g}°", fontsize=13)
+    fig.tight_layout()
     return [save(fig, outdir / "third_order_patch.png")]
 
 
 @figure("torus", paper_label="fig:torus", outputs=["torus.png"],
         caption="Part of the ring torus (mu = 3, rho = (1+sqrt5)/2 mu, alpha = pi/2) by 12 smoothly joined second "
-                "order patches (join gap measured in claim patch_properties); the control net of the toroidal "
-                "triangle of Example exmp:torus (computed; it differs from the printed one in b_{4,3,1}.x) in black.")
+                "order patches, opaque, one colour each (join gap measured in claim patch_properties); the control "
+                "net of the toroidal triangle of Example exmp:torus (computed; it differs from the printed one in "
+                "b_{4,3,1}.x) in black, its hidden parts dashed.")
 def make_torus(outdir: Path) -> list[Path]:
     al = np.pi / 2
     mu = 3.0
     rho = (1 + 5**0.5) / 2 * mu
     pieces = torus_pieces(al, rho, mu, [0.0, al], [0.0, al, 2 * al])
-    fig = plt.figure(figsize=(9, 7))
-    ax = fig.add_subplot(projection="3d")
-    cmap = plt.get_cmap("tab20")
+    fig, ax = plt.subplots(figsize=(10, 7))
+    sc = Scene(View(32, -35))
     for k, p in enumerate(pieces):
-        v, f = p.patch.mesh(12)
-        _surface(ax, v, f, cmap(k % 20), 0.75)
+        v, f = p.patch.mesh(16)
+        sc.surface(v, f, PATCH_COLORS[k % len(PATCH_COLORS)])
     first = next(p for p in pieces if p.phi == 0 and p.psi == 0 and not p.upper)
-    net = first.patch.net
-    for ka, kb in net_edges(2):
-        ax.plot(*net[[ka, kb]].T, color="black", lw=1.0)
-    ax.scatter(*net.T, color="black", s=14, depthshade=False)
-    ax.view_init(elev=30, azim=-35)
-    ax.set_box_aspect((1, 1, 0.45), zoom=1.5)  # fill the frame
-    ax.set_axis_off()
-    fig.subplots_adjust(left=0, right=1, bottom=0, top=1)
+    sc.net(first.patch.net, net_edges(2), "black", size=30)
+    sc.draw(ax)
+    fig.tight_layout()
     return [save(fig, outdir / "torus.png")]
 
 
 @figure("dupin_03", paper_label="fig:dupin_03", outputs=["dupin_03.png"],
         caption="Ring Dupin cyclide (a = 6, b = 4 sqrt 2, c = 2, mu = 3) by second order rational patches, alpha = "
-                "pi/2: the 16 patches of the lower triangles (left, transparent) and all 32 covering the cyclide "
-                "(right, opaque).")
+                "pi/2: (a) the 16 patches of the lower triangles in colour, the other 16 in light grey; (b) all 32 "
+                "patches covering the cyclide. Opaque, drawn triangle by triangle far to near.")
 def make_dupin(outdir: Path) -> list[Path]:
     al = np.pi / 2
     phases = [k * al for k in range(4)]
     with mpmath.workdps(30):
         params = {"a": mpmath.mpf(6), "b": mpmath.sqrt(32), "c": mpmath.mpf(2), "mu": mpmath.mpf(3)}
     pieces = cyclide_pieces(al, params, phases, phases)
-    fig = plt.figure(figsize=(15, 6.5))
-    cmap = plt.get_cmap("tab20")
-    for col, (sel, alpha) in enumerate((([p for p in pieces if not p.upper], 0.45), (pieces, 0.95))):
-        ax = fig.add_subplot(1, 2, col + 1, projection="3d")
-        for k, p in enumerate(sel):
-            v, f = p.patch.mesh(10)
-            _surface(ax, v, f, cmap(k % 20), alpha)
-        ax.view_init(elev=35, azim=-50)
-        ax.set_box_aspect((1, 1, 0.55), zoom=1.45)  # fill the frame
-        ax.set_axis_off()
+    fig, axes = plt.subplots(1, 2, figsize=(16, 6.4))
+    meshes = [p.patch.mesh(12) for p in pieces]
+    for col, ax in enumerate(axes):
+        sc = Scene(View(35, -50))
+        lower = 0
+        for p, (v, f) in zip(pieces, meshes):
+            if col == 0 and p.upper:
+                sc.surface(v, f, "#e6e6e6")
+            else:
+                sc.surface(v, f, PATCH_COLORS[lower % len(PATCH_COLORS)])
+                lower += 1
+        sc.draw(ax)
+        ax.set_title("(a) the 16 patches of the lower triangles" if col == 0 else "(b) all 32 patches",
+                     fontsize=14)
+    fig.tight_layout()
     return [save(fig, outdir / "dupin_03.png")]
