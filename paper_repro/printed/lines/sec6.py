@@ -108,13 +108,13 @@ LINES = [
          reason=('the figure (and its control net) is missing from the source; alpha = pi/2 lies in (0, '
                  'pi)')),
     Line(id='sec6-alpha-range', tex=(2251, 2251),
-         near='triangular_trig_surface', kind='range',
+         near='fig:third_order_patch', kind='range',
          verbatim='has a global free shape parameter $\\alpha \\in \\left(0,\\pi\\right).$',
          says='The patch has a global shape parameter alpha in (0, pi).',
          status='checked',
          check='sec6-alpha-range'),
     Line(id='sec6-affine-invariance', tex=(2253, 2256),
-         near='triangular_trig_surface', kind='inline',
+         near='fig:third_order_patch', kind='inline',
          verbatim=('Since the basis (\\ref{normalized_united_system}) consists of\nfunctions that form a p'
                    'artition of the unity, any patch of the type\n(\\ref{triangular_trig_surface}) is inva'
                    'riant under the affine transformations\nof its control points.'),
@@ -122,7 +122,7 @@ LINES = [
          status='checked',
          check='sec6-affine-invariance'),
     Line(id='sec6-convex-hull-n123', tex=(2256, 2256),
-         near='triangular_trig_surface', kind='inline',
+         near='fig:third_order_patch', kind='inline',
          verbatim=('Moreover, in the special cases of first, second and third order triangular trigonometr'
                    'ic patches we have already proved that their shape lies in the convex hull of their co'
                    'ntrol points, since in these cases the normalized function system (\\ref{normalized_un'
@@ -131,7 +131,7 @@ LINES = [
          status='checked',
          check='sec6-convex-hull-n123'),
     Line(id='sec6-convex-hull-open', tex=(2256, 2256),
-         near='triangular_trig_surface', kind='prose',
+         near='fig:third_order_patch', kind='prose',
          verbatim=('At the moment, the convex hull property of the patch (\\ref{triangular_trig_surface}) '
                    'of arbitrary order -- that is equivalent to the non-negativity of the normalizing coef'
                    'ficients of the basis (\\ref{united_system}) -- is an open problem.'),
@@ -141,14 +141,14 @@ LINES = [
          reason=('states an open problem; the non-negativity for sampled n and alpha is the subject of t'
                  'he nonnegativity claim')),
     Line(id='sec6-quadratic-growth', tex=(2256, 2256),
-         near='triangular_trig_surface', kind='count',
+         near='fig:third_order_patch', kind='count',
          verbatim=('considering the quadratic growth of the control points, it is very unlikely that in CA'
                    'GD patches of order higher than three would be used for modeling.'),
          says='The number of control points grows quadratically in n.',
          status='checked',
          check='sec6-quadratic-growth'),
     Line(id='sec6-boundary-u0', tex=(2263, 2265),
-         near='boundary_property_2', kind='display',
+         near='fig:third_order_patch', kind='display',
          verbatim=('\\mathbf{s}_{n}^{\\alpha}\\left(  0,\\alpha-w,w\\right)   &  =\\sum_{i=0}%\n^{2n}\\mat'
                    'hbf{g}_{2n,2n-i,0}A_{2n,2n-i}^{\\alpha}\\left(  w\\right)  ,~w\\in\\left[\n0,\\alpha\\'
                    'right]  ,\\\\'),
@@ -157,7 +157,7 @@ LINES = [
          status='checked',
          check='sec6-boundary-u0'),
     Line(id='sec6-boundary-v0', tex=(2266, 2268),
-         near='boundary_property_1', kind='display',
+         near='fig:third_order_patch', kind='display',
          verbatim=('\\mathbf{s}_{n}^{\\alpha}\\left(  u,0,\\alpha-u\\right)   &  =\\sum_{i=0}%\n^{2n}\\mat'
                    'hbf{r}_{2n,2n-i,0}A_{2n,2n-i}^{\\alpha}\\left(  u\\right)  ,~u\\in\\left[\n0,\\alpha\\'
                    'right]  ,\\\\'),
@@ -166,7 +166,7 @@ LINES = [
          status='checked',
          check='sec6-boundary-v0'),
     Line(id='sec6-boundary-w0', tex=(2269, 2271),
-         near='boundary_property_3', kind='display',
+         near='fig:third_order_patch', kind='display',
          verbatim=('\\mathbf{s}_{n}^{\\alpha}\\left(  \\alpha-v,v,0\\right)   &  =\\sum_{i=0}%\n^{2n}\\mat'
                    'hbf{b}_{2n,2n-i,0}A_{2n,2n-i}^{\\alpha}\\left(  v\\right)  ,~v\\in\\left[\n0,\\alpha\\'
                    'right]  ,'),
@@ -175,14 +175,14 @@ LINES = [
          status='checked',
          check='sec6-boundary-w0'),
     Line(id='sec6-corners', tex=(2273, 2275),
-         near='triangular_trig_surface', kind='inline',
+         near='fig:third_order_patch', kind='inline',
          verbatim=('interpolates the three\ncorners $\\mathbf{r}_{2n,2n,0}$, $\\mathbf{g}_{2n,2n,0}$ and $'
                    '\\mathbf{b}%\n_{2n,2n,0}$ of its control net'),
          says='The patch interpolates the corners r_{2n,2n,0}, g_{2n,2n,0}, b_{2n,2n,0}.',
          status='checked',
          check='sec6-corners'),
     Line(id='sec6-trig-curves', tex=(2275, 2277),
-         near='triangular_trig_surface', kind='inline',
+         near='fig:third_order_patch', kind='inline',
          verbatim=('its boundary curves can\nexactly describe arcs of any trigonometric parametric curve t'
                    'he coordinate\nfunctions of which are in the vector space (\\ref{truncated_Fourier_vec'
                    'tor_space}).'),
@@ -191,7 +191,7 @@ LINES = [
          status='checked',
          check='sec6-trig-curves'),
     Line(id='sec6-tangent-planes', tex=(2277, 2277),
-         near='triangular_trig_surface', kind='inline',
+         near='fig:third_order_patch', kind='inline',
          verbatim=('The tangent planes at these corners are spanned by the terminal edges of the control p'
                    'olygons that generate the boundary curves of the given patch.'),
          says=('The tangent plane at each corner is spanned by the terminal edges of the two boundary '
@@ -199,14 +199,14 @@ LINES = [
          status='checked',
          check='sec6-tangent-planes'),
     Line(id='sec6-bezier-limit', tex=(2277, 2277),
-         near='triangular_trig_surface', kind='inline',
+         near='fig:third_order_patch', kind='inline',
          verbatim=('Moreover, on account of Proposition \\ref{Bernstein}, when $\\alpha \\to 0$ the bounda'
                    "ry curves degenerate to B\\'ezier curves of degree $2n$."),
          says='As alpha -> 0 the boundary curves become Bezier curves of degree 2n.',
          status='checked',
          check='sec6-bezier-limit'),
     Line(id='sec6-vn-configurations', tex=(2279, 2282),
-         near='triangular_trig_surface', kind='inline',
+         near='fig:third_order_patch', kind='inline',
          verbatim=('It provides $\\alpha$-dependent control point configurations for the exact description'
                    ' of\ntriangular patches of arbitrary trigonometric surfaces the coordinate\nfunctions '
                    'of which are given in the vector space\n(\\ref{constrained_trivariate_extension_of_tru'
@@ -430,6 +430,8 @@ LINES = [
          status='erratum',
          check='claim:torus_exact',
          erratum={
+             'id': 'torus-b_{4,3,1}-x',
+             'item': 'b_{4,3,1}, x coordinate',
              'printed': 'rho (7 - 2 cos^2(a/2) + cos(a/2)) cos^2(a/2) / (4 + 2 cos a) + mu/4 sin a',
              'corrected': '3 rho (1 + cos a) / (4 + 2 cos a) + mu/4 sin a',
              'evidence': ('data/errata.json torus-{b_{4,3,1}}-x (claim torus_exact); the check sec6-torus-point-b'
