@@ -897,12 +897,20 @@ def dupin_surface() -> LineResult:
                       detail={"on_quartic": ok, "on_quartic_when_a2_ne_b2_plus_c2": off})
 
 
-def dupin_homogeneous(a, b2, c, mu, phi, psi):
-    """(X, Y/b, Z/b, W) of eq. Dupin_in_3d at U = phi + u, V = psi + v; phi, psi as (cos, sin)."""
+def dupin_homogeneous(a, b2, c, mu, phi, psi, upper: bool = False, alpha: RationalAngle | None = None):
+    """(X, Y/b, Z/b, W) of eq. Dupin_in_3d at U = phi + u, V = psi + v (upper: U = phi + alpha - u,
+    V = psi + alpha - v); phi, psi as (cos, sin)."""
+    def cs(t: ExactTrig, var: int, ph):
+        c0 = t.cos(*[1 if k == var else 0 for k in range(3)])
+        s0 = t.sin(*[1 if k == var else 0 for k in range(3)])
+        if upper:  # alpha - x
+            ca, sa = trig_of(alpha.t)
+            c0, s0 = ca * c0 + sa * s0, sa * c0 - ca * s0
+        return ph[0] * c0 - ph[1] * s0, ph[1] * c0 + ph[0] * s0
+
     def surface(t: ExactTrig):
-        cu0, su0, cv0, sv0 = t.cos(1), t.sin(1), t.cos(0, 1), t.sin(0, 1)
-        cu, su = phi[0] * cu0 - phi[1] * su0, phi[1] * cu0 + phi[0] * su0
-        cv, sv = psi[0] * cv0 - psi[1] * sv0, psi[1] * cv0 + psi[0] * sv0
+        cu, su = cs(t, 0, phi)
+        cv, sv = cs(t, 1, psi)
         W = a - c * cu * cv
         return [mu * (c - a * cu * cv) + b2 * cu, (a - mu * cv) * su, (c * cu - mu) * sv, W]
 
@@ -912,26 +920,29 @@ def dupin_homogeneous(a, b2, c, mu, phi, psi):
 @line_check("sec6-dupin-rational-patches")
 def dupin_rational_patches() -> LineResult:
     """Numerator and denominator of eq. Dupin_in_3d lie in V_2 for every phase: exact order-2 fits give rational
-    patches (weights = the fitted denominator net, non-negative for the caption's values at the sampled phases).
-    Count: sixteen triangles of side alpha = pi/2 cover (pi/2)^2/2 * 16 = 2 pi^2, half of the [0, 2pi]^2 parameter
-    torus (a whole cover needs 32)."""
+    patches (weights = the fitted denominator net, non-negative for the caption's values at the sampled phases);
+    the two triangles of a phase square share their diagonal control polygon and weights (C0 join; each patch is
+    the smooth cyclide itself).  Count: sixteen triangles of side alpha = pi/2 cover (pi/2)^2/2 * 16 = 2 pi^2,
+    a part (half) of the [0, 2pi]^2 parameter torus -- a whole cover needs 32."""
     a, b2, c, mu = DUPIN_CASES["caption"]
     alpha = rational_alpha(TS[1])
     phases = [(fmpq(1), fmpq(0)), trig_of(fmpq(1, 2)), trig_of(fmpq(3)), (fmpq(-1), fmpq(0))]
-    fits, min_w = 0, None
+    fits, min_w, joins = 0, None, True
     for phi in phases:
         for psi in phases[:2]:
             net = fit_exact(dupin_homogeneous(a, b2, c, mu, phi, psi), 2, alpha)
-            fits += 1
-            w = min(row[3] for row in net)
+            up = fit_exact(dupin_homogeneous(a, b2, c, mu, phi, psi, upper=True, alpha=alpha), 2, alpha)
+            joins &= edge_net(net, 2, "b") == reversed_edge_net(up, 2, "b")
+            fits += 2
+            w = min(row[3] for row in net + up)
             min_w = w if min_w is None else min(min_w, w)
     # parameter-area count (in units of pi^2): one triangle (pi/2)^2 / 2 = 1/8, the torus 4
     tri, whole = fmpq(1, 8), fmpq(4)
     sixteen = 16 * tri
-    ok = fits == 8 and min_w >= 0
-    return LineResult(ok, how="exact order-2 fits of (X, Y/b, Z/b, W) at tan(alpha/4) = 1/3 and 8 phase pairs; "
-                      "parameter-area count", kind="exact-evidence",
-                      detail={"fits": fits, "min_fitted_weight": str(min_w),
+    ok = fits == 16 and min_w >= 0 and joins and sixteen <= whole
+    return LineResult(ok, how="exact order-2 fits of (X, Y/b, Z/b, W) on both triangles of 8 phase squares, "
+                      "tan(alpha/4) = 1/3; parameter-area count", kind="exact-evidence",
+                      detail={"fits": fits, "min_fitted_weight": str(min_w), "diagonal_joins": joins,
                               "area_16_patches_over_pi2": str(sixteen), "area_parameter_torus_over_pi2": str(whole),
                               "patches_for_whole_cyclide": int(whole / tri)})
 
