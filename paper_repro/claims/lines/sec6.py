@@ -34,6 +34,7 @@ from paper_repro.surfaces.fitting import ExactTrig, fit_exact
 
 NS = tuple(range(1, 13))  # orders for the index-set counts
 TS = (fmpq(1, 5), fmpq(1, 3), fmpq(1, 2), fmpq(3, 4))  # tan(alpha/4) of the exact checks
+TS_TORUS = TS + (fmpq(1, 9), fmpq(2, 5), fmpq(3, 5), fmpq(7, 8))  # for the 19 torus points
 RHO_MU = ((fmpq(1), fmpq(0)), (fmpq(0), fmpq(1)), (fmpq(7, 2), fmpq(5, 3)))  # (varrho, mu) of the torus fits
 _LINE = {x.id: x for x in LINES}
 
@@ -434,9 +435,11 @@ def in_span(surface, n: int, alpha: RationalAngle) -> bool:
 def vn_configurations() -> LineResult:
     """A random element of V_n^alpha (all cos, sin(ru+gv+bw), 0 <= r, g, b <= n) has an exact control net."""
     alpha = rational_alpha(TS[1])
-    ok = all(in_span(vn_element(n, 40 + n), n, alpha) for n in (1, 2))
-    return LineResult(ok, how="exact fit (collocation, verified at 4 further points) of a random element of V_n, "
-                      "n = 1, 2, tan(alpha/4) = 1/3", kind="exact-evidence", detail={"n": [1, 2]})
+    ok = all(in_span(vn_element(n, 40 + n), n, alpha) for n in (1, 2, 3))
+    beyond = in_span(vn_element(2, 42, extra=(3, 0, 0)), 2, alpha)  # cos 3u is not in V_2
+    return LineResult(ok and not beyond, how="exact fit (collocation, verified at 4 further points) of a random "
+                      "element of V_n, n = 1, 2, 3, tan(alpha/4) = 1/3; an element with cos 3u is not fitted by "
+                      "order 2", kind="exact-evidence", detail={"n": [1, 2, 3], "order_2_fits_cos_3u": beyond})
 
 
 # --- Example exmp:torus ------------------------------------------------------------------------------------
@@ -526,7 +529,7 @@ def compare_point(label: str, formula=None, corrected: dict | None = None) -> di
     formula = formula or PRINTED_EXACT[label]
     k = index_of(2)[label]
     bad = {"x": 0, "y": 0, "z": 0}
-    for t in TS:
+    for t in TS_TORUS:
         A = Angles(rational_alpha(t))
         for rho, mu in RHO_MU:
             fitted = torus_net(t, rho, mu)[k]
@@ -545,9 +548,10 @@ def _point_check(label: str) -> LineResult:
     if label in CORRECTED_EXACT:
         corrected_ok = not any(compare_point(label, corrected=CORRECTED_EXACT[label]).values())
     return LineResult(holds, corrected_ok, how="exact fit of eq. toroidal_triangle in the order-2 normalized basis vs "
-                      "the printed coordinates, exact at tan(alpha/4) in {1/5, 1/3, 1/2, 3/4} and (varrho, mu) in "
-                      "{(1, 0), (0, 1), (7/2, 5/3)} (the coordinates are linear in varrho, mu)", kind="exact-evidence",
-                      detail={"disagreeing_cases": bad, "cases": len(TS) * len(RHO_MU)})
+                      "the printed coordinates, exact at tan(alpha/4) in {1/9, 1/5, 1/3, 2/5, 1/2, 3/5, 3/4, 7/8} "
+                      "and (varrho, mu) in {(1, 0), (0, 1), (7/2, 5/3)} (the coordinates are linear in varrho, mu)",
+                      kind="exact-evidence",
+                      detail={"disagreeing_cases": bad, "cases": len(TS_TORUS) * len(RHO_MU)})
 
 
 for _lab in PRINTED_EXACT:
