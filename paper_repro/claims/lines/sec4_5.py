@@ -680,19 +680,20 @@ for _w in (1, 2, 3):
         detail={"n_max": 3, "ts": [str(t) for t in TS[:2]]}))
 
 
-def unknown_classes(n: int) -> tuple[int, bool]:
-    """Union-find of the delta_n coefficient names by the printed symmetry conditions: number of classes and
-    whether each holds exactly one of {r_{2n,2n-i,j}}_{j=0,i=j}^{n,n}."""
-    names = [lab.coefficient for lab in united_system(n)]
-    parent = {x: x for x in names}
+def symmetry_partition(n: int) -> list[list[int]]:
+    """Classes of the delta_n functions of T_{2n} (internal indices) merged by the printed symmetry conditions
+    symmetry_condition_1..3 (union-find on the coefficient names)."""
+    labels = united_system(n)
+    idx = index_of(n)
+    parent = list(range(len(labels)))
 
-    def find(x):
+    def find(x: int) -> int:
         while parent[x] != x:
             x = parent[x]
         return x
 
-    def union(a, b):
-        parent[find(a)] = find(b)
+    def union(a: str, b: str) -> None:
+        parent[find(idx[a])] = find(idx[b])
 
     for j in range(n):
         for i in range(j + 1, n):
@@ -700,19 +701,42 @@ def unknown_classes(n: int) -> tuple[int, bool]:
         for i in range(j, 2 * n - j):
             union(f"g_{{{2 * n},{2 * n - i},{j}}}", f"r_{{{2 * n},{2 * n - i},{j}}}")
             union(f"b_{{{2 * n},{2 * n - i},{j}}}", f"r_{{{2 * n},{2 * n - i},{j}}}")
-    roots = {find(x) for x in names}
-    reps = [f"r_{{{2 * n},{2 * n - i},{j}}}" for j in range(n + 1) for i in range(j, n + 1)]
-    one_each = sorted(find(r) for r in reps) == sorted(roots)
-    return len(roots), one_each
+    groups: dict[int, list[int]] = {}
+    for k in range(len(labels)):
+        groups.setdefault(find(k), []).append(k)
+    return sorted(groups.values())
+
+
+def permutation_orbits(n: int) -> list[list[int]]:
+    """Orbits of the functions of T_{2n} under the six permutations of (u, v, w) (exponent vectors)."""
+    perms = [p for p in product(range(3), repeat=3) if len(set(p)) == 3]
+    groups: dict[tuple, list[int]] = {}
+    for k, lab in enumerate(united_system(n)):
+        e = exponents(lab)
+        pairs = ((e[0], e[1]), (e[2], e[3]), (e[4], e[5]))
+        groups.setdefault(min(tuple(pairs[p[m]] for m in range(3)) for p in perms), []).append(k)
+    return sorted(groups.values())
+
+
+def unknown_classes(n: int) -> tuple[int, bool, bool]:
+    """Number of classes of the printed symmetry conditions, whether each holds exactly one of
+    {r_{2n,2n-i,j}}_{j=0,i=j}^{n,n}, and whether the classes are the permutation orbits."""
+    part = symmetry_partition(n)
+    idx = index_of(n)
+    reps = sorted(idx[f"r_{{{2 * n},{2 * n - i},{j}}}"] for j in range(n + 1) for i in range(j, n + 1))
+    one_each = sorted(min(set(g) & set(reps)) for g in part) == reps and all(len(set(g) & set(reps)) == 1
+                                                                            for g in part)
+    return len(part), one_each, part == permutation_orbits(n)
 
 
 @line_check("sec4_5-unknowns")
 def check_unknowns() -> LineResult:
-    rows = {n: unknown_classes(n) for n in range(1, 13)}
-    ok = all(c == (n + 1) * (n + 2) // 2 and one for n, (c, one) in rows.items())
-    return LineResult(ok, how="union-find of the delta_n coefficients by symmetry_condition_1..3: the classes are "
-                      "(n+1)(n+2)/2, one per member of {r_{2n,2n-i,j}}_{j=0,i=j}^{n,n} (n <= 12)", kind="proof",
-                      detail={str(n): c for n, (c, _) in rows.items()})
+    rows = {n: unknown_classes(n) for n in range(1, 11)}
+    ok = all(c == (n + 1) * (n + 2) // 2 and one and orb for n, (c, one, orb) in rows.items())
+    return LineResult(ok, how="union-find of the delta_n coefficients by symmetry_condition_1..3: (n+1)(n+2)/2 "
+                      "classes, one per member of {r_{2n,2n-i,j}}_{j=0,i=j}^{n,n}, equal to the orbits of the six "
+                      "permutations of (u, v, w) (n <= 10)", kind="proof",
+                      detail={str(n): c for n, (c, _, _) in rows.items()})
 
 
 @line_check("sec4_5-matrix-sizes")
@@ -778,7 +802,7 @@ def check_system() -> LineResult:
         coef = {lab.coefficient: _full(n, t)[lab.coefficient] for lab in united_system(n)}
         xs = [Q(m, 7 * int(t.q)) for m in range(1, 3 * n + 4)]  # tan(x/4), x in (0, alpha)
         rows_full, rows_orbit = [], []
-        from paper_repro.core.normalization import orbits
+        part = symmetry_partition(n)
         for q in xs:
             sx, cx = _angle(q)
             su, cu = sa * cx - ca * sx, ca * cx + sa * sx  # (alpha - x)/2
@@ -788,13 +812,13 @@ def check_system() -> LineResult:
                            for lab, v in zip(united_system(n), vals)), Q(0))
                 ok &= lhs == (1 if r == 0 else 0)
                 rows_full.append(vals)
-                rows_orbit.append([sum((vals[k] for k in mem), Q(0)) for _, mem in orbits(n)])
+                rows_orbit.append([sum((vals[k] for k in mem), Q(0)) for mem in part])
 
         def rank(rows):
             return fmpq_mat([[fmpq(x.numerator, x.denominator) for x in row] for row in rows]).rank()
 
         info[str(n)] = {"rank_without_symmetry": rank(rows_full), "delta_n": len(united_system(n)),
-                        "rank_with_symmetry": rank(rows_orbit), "unknowns_with_symmetry": len(orbits(n))}
+                        "rank_with_symmetry": rank(rows_orbit), "unknowns_with_symmetry": len(part)}
         ok &= info[str(n)]["rank_with_symmetry"] == info[str(n)]["unknowns_with_symmetry"]
     return LineResult(ok, how="exact y-derivatives at y = 0 (orders 0..n) of L with the exact coefficients at "
                       f"tan(alpha/4) = {TS[0]} and 3n+3 rational x: delta_{{r,0}}; the system's rank in the orbit "
