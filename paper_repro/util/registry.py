@@ -218,8 +218,8 @@ def run_claim(c: Claim, overrides: dict[str, Any] | None = None, extended: bool 
     registered with ``uses_results`` receives ``claim_results`` (``{id: {"status", "kind", "errata"}}`` of the
     claims run before it; ``None`` when run alone) as a keyword argument; they are part of its cache key.
 
-    The rule of :mod:`paper_repro.util.measured` is enforced here: a claim whose ``measured`` holds a raw
-    float (rounding-level or more than ``MAX_DIGITS`` digits) fails, naming the offending fields.
+    The rule of :mod:`paper_repro.util.measured` is enforced here: a claim whose ``measured`` or data files hold
+    a raw float (rounding-level or more than ``MAX_DIGITS`` digits) fails, naming the offending fields.
     """
     params = check_overrides(c, overrides, extended)
     t0 = time.perf_counter()
@@ -235,9 +235,9 @@ def run_claim(c: Claim, overrides: dict[str, Any] | None = None, extended: bool 
     except Exception as exc:  # a crashing check is a failing claim, reported as such (and not cached)
         stored, hit = asdict(Outcome(False, {"error": f"{type(exc).__name__}: {exc}"})), False
     out = Outcome(**stored)
-    from paper_repro.util.measured import violations
+    from paper_repro.util.measured import data_violations, violations
 
-    bad = violations(out.measured)
+    bad = violations(out.measured) + data_violations(out.data)
     if bad:  # data/ must be machine-independent: raw floats go to build/, data/ gets bounds or rounded values
         out.passed = False
         out.measured = {**out.measured, "error": f"measured holds machine-dependent raw values at {bad} "
