@@ -752,7 +752,7 @@ def check_question_limiting_case() -> LineResult:
 
 # ---------------------------------------------------------------- Section 8
 
-@line_check("sec8-dimension-and-span")
+@line_check("sec7-s8-dimension-and-span")
 def check_dimension_and_span() -> LineResult:
     counts = {str(n): (len(united_system(n)), 3 * n * (n + 1) + 1, len(v_labels(n))) for n in range(1, 13)}
     ctx = ModpContext(p=2**31 - 1)

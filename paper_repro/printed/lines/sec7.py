@@ -902,7 +902,7 @@ LINES = [
          says=('Question: is the alpha -> 0 limit of an order-n patch a Bezier triangle of degree 3n-1 on the '
                'unit simplex; how to convert the net?  (The conjectured degree 3n-1 is checked.)'),
          status='checked', check='sec7-question-limiting-case'),
-    Line(id='sec8-wang-citation', tex=(3291, 3295), near='que:limiting_case', kind='prose',
+    Line(id='sec7-s8-wang-citation', tex=(3291, 3295), near='que:limiting_case', kind='prose',
          verbatim=('The constrained trivariate counterpart of the univariate normalized\nB-basis\\ '
                    '(\\ref{univariate_basis}) of the vector space\n(\\ref{truncated_Fourier_vector_space}) of '
                    'first and second order\ntrigonometric polynomials were introduced in recent articles '
@@ -911,25 +911,25 @@ LINES = [
                'Wang et al.'),
          status='excused',
          reason='citation'),
-    Line(id='sec8-dimension', tex=(3296, 3298), near='que:limiting_case', kind='count',
+    Line(id='sec7-s8-dimension', tex=(3296, 3298), near='que:limiting_case', kind='count',
          verbatim=('the normalized\nlinearly independent constrained trivariate function system\n'
                    '(\\ref{normalized_united_system}) of dimension $\\delta_{n}=3n\\left(n+1\\right)+1$'),
          says=('The normalized system (normalized_united_system) is linearly independent and has dimension '
                'delta_n = 3n(n+1) + 1.'),
-         status='checked', check='sec8-dimension-and-span'),
-    Line(id='sec8-spans-fourier', tex=(3298, 3300), near='que:limiting_case', kind='inline',
+         status='checked', check='sec7-s8-dimension-and-span'),
+    Line(id='sec7-s8-spans-fourier', tex=(3298, 3300), near='que:limiting_case', kind='inline',
          verbatim=('that spans the same vector space of functions as the\nconstrained trivariate extension of '
                    'the canonical basis of truncated Fourier\nseries of order $n\\in\\mathbb{N}$.'),
          says=('It spans the same space as the constrained trivariate extension of the truncated Fourier basis '
                'of order n.'),
-         status='checked', check='sec8-dimension-and-span'),
-    Line(id='sec8-patches-defined', tex=(3300, 3300), near='que:limiting_case', kind='prose',
+         status='checked', check='sec7-s8-dimension-and-span'),
+    Line(id='sec7-s8-patches-defined', tex=(3300, 3300), near='que:limiting_case', kind='prose',
          verbatim=('The proposed extension was applied to define (rational) triangular trigonometric patches of '
                    'order $n$.'),
          says='The extension was applied to define (rational) triangular trigonometric patches of order n.',
          status='excused',
          reason='prose summary'),
-    Line(id='sec8-future-work', tex=(3302, 3304), near='que:limiting_case', kind='prose',
+    Line(id='sec7-s8-future-work', tex=(3302, 3304), near='que:limiting_case', kind='prose',
          verbatim=('In Section \\ref{sec:open_problems} we have outlined some theoretical problems that will '
                    'form our forthcoming research directions. We also intend to illustrate the applicability '
                    'of\nthe proposed (rational) triangular trigonometric patches by providing '
@@ -939,7 +939,7 @@ LINES = [
                'surfaces.'),
          status='excused',
          reason='prose (plans)'),
-    Line(id='sec8-acknowledgements', tex=(3307, 3308), near='que:limiting_case', kind='prose',
+    Line(id='sec7-s8-acknowledgements', tex=(3307, 3308), near='que:limiting_case', kind='prose',
          verbatim=("\\'{A}. R\\'{o}th partially realized his research in the frames of the highly important "
                    'National Excellence Program -- working out and operating an inland student and researcher '
                    "support, identification number T\\'AMOP 4.2.4.A/2-11-1-2012-0001. The project is realized "
