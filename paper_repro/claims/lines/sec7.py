@@ -357,13 +357,15 @@ def _register_elevation(slug: str, colour: int) -> None:
         tex = VERBATIM[f"sec7-elev-{slug}"]
         per_t = {t: elevation_row_holds(tex, colour, t) for t in TS}
         proof = _printed_elevation_proof()
-        return LineResult(all(per_t.values()) and all(proof), kind="proof",
+        proven = all(proof_cached(n)["proved"] for n in (1, 2))
+        return LineResult(all(per_t.values()) and all(proof) and proven, kind="proof",
                           how="printed weights (read from the LaTeX) equal the row of the exact elevation matrix "
                               "(collocation, T-bar_2 = T-bar_4 E) at 5 rational alpha; and the whole printed matrix "
                               "satisfies T-bar_2 = T-bar_4 E as a polynomial identity in tan(alpha/4), tan(u/4), "
                               "tan(v/4) with the proven closed-form normalizing coefficients (every alpha; T-bar_4 "
                               "is a basis, so each printed row is the unique one)",
-                          detail={"tan_alpha_over_4": per_t, "identity_per_column_of_T2": list(proof)})
+                          detail={"tan_alpha_over_4": per_t, "identity_per_column_of_T2": list(proof),
+                                  "closed_forms_proven_n1_n2": proven})
 
 
 for _ln in LINES:
