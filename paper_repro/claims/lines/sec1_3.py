@@ -419,7 +419,7 @@ def _domain_points(alpha_t: fmpq, count: int) -> list[tuple[tuple[fmpq, fmpq], .
     k = 0
     while len(out) < count:
         k += 1
-        tu, tv = alpha_t * fmpq(k % 7 + 1, 11), alpha_t * fmpq((3 * k) % 5 + 1, 13 + k % 3)
+        tu, tv = alpha_t * fmpq(k, 2 * k + 5), alpha_t * fmpq(k % 9 + 1, 3 * (k % 9) + k % 4 + 5)
         hu, hv = _half(tu), _half(tv)
         hw = _diff_half(_diff_half(ha, hu), hv)
         if hw[0] > 0 and hw[1] > 0 and (hu, hv) not in [(p[0], p[1]) for p in out]:
@@ -452,6 +452,24 @@ def fourier_dimension() -> LineResult:
         ok &= rf == rt == rj == delta(n)
     return LineResult(ok, how="exact collocation ranks modulo 2^61-1 at delta_n + 12 points, tan(alpha/4) = 1/2",
                       detail=detail)
+
+
+@line_check("sec1_3-independence-rank")
+def independence_rank() -> LineResult:
+    """T_{2n} is linearly independent (so dim span T_{2n} = delta_n): its exact collocation matrix at delta_n + 5
+    rational points of Omega^alpha has rank delta_n (modulo a 61-bit prime: full rank there implies full rank over Q),
+    n = 1..5 at tan(alpha/4) = 1/2 and n = 1..4 at tan(alpha/4) = 3/4."""
+    detail, ok = {}, True
+    for at, n_max in zip(ALPHA_TS, (5, 4)):
+        for n in range(1, n_max + 1):
+            pts = _domain_points(at, delta(n) + 5)
+            rows = [[hu[0] ** e[0] * hu[1] ** e[1] * hv[0] ** e[2] * hv[1] ** e[3] * hw[0] ** e[4] * hw[1] ** e[5]
+                     for e in (exponents(lb) for lb in united_system(n))] for hu, hv, hw in pts]
+            rank = _rank(rows)
+            detail[f"n={n},t={at}"] = rank
+            ok &= rank == delta(n)
+    return LineResult(ok, how="exact collocation ranks modulo 2^61-1 (full rank mod p proves independence at that "
+                      "alpha), n = 1..5 at tan(alpha/4) = 1/2, n = 1..4 at 3/4", detail=detail)
 
 
 @line_check("sec1_3-univariate-span")

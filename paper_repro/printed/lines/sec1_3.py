@@ -896,7 +896,7 @@ LINES = [
          '$ is',
          'T_{2n} is linearly independent; dim span T_{2n} = delta_n',
          'checked',
-         check='claim:linear_independence'),
+         check='sec1_3-independence-rank'),
     Line('sec1_3-theorem-delta',
          (630, 630),
          'joint_systems_linear_independence',
