@@ -31,7 +31,8 @@ def _mesh_data(pieces, resolution: int) -> dict:
                                    "sec:triangular_rational_trigonometric_patches"],
        statement="The ring Dupin cyclide (a=6, b=4 sqrt 2, c=2, mu=3, alpha=pi/2) is described exactly by second order "
                  "rational patches with non-negative weights: 16 cover the triangles u+v <= alpha of the 4x4 phase "
-                 "grid, 32 the whole cyclide; neighbours join.",
+                 "grid, 32 the whole cyclide; neighbours join (float64: deviation from the cyclide and join gaps "
+                 "< 1e-12 at {points} seeded points per patch).",
        kind="numeric-evidence", points=150, mesh_resolution=10)
 def run_dupin(points, mesh_resolution) -> Outcome:
     al = float(mpmath.pi / 2)
@@ -137,7 +138,8 @@ def tangent_plane_exact(n: int, t_alpha: fmpq, net: list[list[int]], letter: str
                                       "rational_patch", "sec:triangular_trigonometric_patches", "sec:applications"],
        statement="Patches are affinely invariant, lie in the convex hull of their nets (n <= 3), interpolate the "
                  "corners, have the printed boundary curves and corner tangent planes; rational patches are "
-                 "projectively invariant. Torus patches join continuously.",
+                 "projectively invariant. Torus patches join continuously. Seeded random nets, n in {ns}, alpha in "
+                 "{alphas}, float64 to < 1e-9; tangent planes also exactly at tan(alpha/4) in {tangent_ts}.",
        kind="numeric-evidence", ns=[1, 2, 3], alphas=["0.4", "pi/2", "2.8"], nets=4, points=400, seed=23,
        tangent_ts=["1/3", "2/3"])
 def run_properties(ns, alphas, nets, points, seed, tangent_ts) -> Outcome:
