@@ -59,7 +59,7 @@ def _erratum_record(line) -> dict[str, Any]:
 
 def judge(lines, checks: dict, claim_results: dict[str, dict]) -> tuple[list[dict], list[dict], list[str]]:
     """(one record per line, the errata to publish, the problems found) -- see the module docstring."""
-    from paper_repro.app.paper_index import load_index
+    from paper_repro.util.paper_labels import load_index
 
     index = {r["label"]: r for r in load_index()}
     ran: dict[str, Any] = {}
