@@ -36,7 +36,16 @@ def test_rational_reconstruction():
     x = fmpq(-123457, 9871)
     image = int(x.p) * pow(int(x.q), -1, m) % m
     assert rational_reconstruction(image, m) == x
-    assert rational_reconstruction(5, 7) is None or rational_reconstruction(5, 7) != fmpq(123457, 9871)
+    # too small a modulus: the image of x does not give x back (x needs |num|, den <= sqrt(m/2))
+    p0 = primes_below()[0]
+    assert rational_reconstruction(int(x.p) * pow(int(x.q), -1, p0) % p0, p0) != x
+    # 5 = -2 (mod 7) and -2/1, 5/1 are outside the bound sqrt(7/2) < 2: no fraction reconstructs
+    assert rational_reconstruction(5, 7) is None
+    # every fraction within the bound comes back from its image (uniqueness of Wang's reconstruction)
+    for num in range(-7, 8):
+        for den in range(1, 8):
+            q = fmpq(num, den)
+            assert rational_reconstruction(int(q.p) * pow(int(q.q), -1, 101) % 101, 101) == q, q
 
 
 def test_recovered_forms_equal_the_printed_examples():

@@ -53,22 +53,48 @@ EXCUSED = {
 }
 
 
+def line_statuses() -> tuple[dict[str, dict[str, int]], dict | None]:
+    """Per label, the statuses of the transcribed lines nearest to it (claim ``every_line``,
+    ``data/paper_lines.json``; empty before its first run), and the coverage."""
+    import json
+
+    from paper_repro.util.io import DATA
+
+    try:
+        pl = json.loads((DATA / "paper_lines.json").read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return {}, None
+    out: dict[str, dict[str, int]] = {}
+    for rec in pl["lines"]:
+        counts = out.setdefault(rec["near"], {})
+        counts[rec["status"]] = counts.get(rec["status"], 0) + 1
+    return {k: dict(sorted(v.items())) for k, v in out.items()}, pl["coverage"]
+
+
 def build(claims: dict, figures: dict) -> dict | None:
-    """``{"labels": [...], "summary": {...}}`` from the committed paper index."""
+    """``{"labels": [...], "summary": {...}}`` from the committed paper index (and, per label, the statuses of
+    the transcribed lines nearest to it)."""
     index = labels_of_index()
+    statuses, coverage = line_statuses()
     rows = []
     for rec in index:
         lab = rec["label"]
         rows.append({"label": lab, "paper": rec["display"], "kind": rec["kind"],
                      "claims": [cid for cid, c in claims.items() if lab in c.paper_ref],
                      "figures": [fid for fid, f in figures.items() if f.paper_label == lab],
-                     "code": code_mentions(lab), "excused": EXCUSED.get(lab, "")})
+                     "code": code_mentions(lab), "excused": EXCUSED.get(lab, ""), "lines": statuses.get(lab, {})})
     covered = [r for r in rows if r["claims"] or r["figures"]]
     open_ = [r["label"] for r in rows if not (r["claims"] or r["figures"] or r["excused"])]
     return {"source": "data/paper_index.json (from shared/paper/triangular-trigonometric-patches.tex)", "labels": rows,
             "summary": {"labels": len(rows), "covered_by_claim_or_figure": len(covered),
                         "excused": [r["label"] for r in rows if r["excused"] and not (r["claims"] or r["figures"])],
-                        "neither_checked_nor_excused": open_}}
+                        "neither_checked_nor_excused": open_,
+                        "lines": ({k: coverage[k] for k in ("lines", "checked", "erratum", "excused")}
+                                  if coverage else None)}}
+
+
+def _line_cell(counts: dict[str, int]) -> str:
+    return "/".join(str(counts.get(s, 0)) for s in ("checked", "erratum", "excused")) if counts else ""
 
 
 def markdown(m: dict) -> str:
@@ -77,10 +103,16 @@ def markdown(m: dict) -> str:
            "and code that check or use it.", "",
            f"{s['labels']} labels: {s['covered_by_claim_or_figure']} checked by a claim or figure, "
            f"{len(s['excused'])} excused (nothing to compute, reason given), "
-           f"{len(s['neither_checked_nor_excused'])} neither.", "",
-           "| in the PDF | label | kind | claims | figures | excused because | code |", "|---|---|---|---|---|---|---|"]
+           f"{len(s['neither_checked_nor_excused'])} neither.", ""]
+    if s.get("lines"):
+        out += [f"Lines of the paper (claim `every_line`, `data/paper_lines.json`): {s['lines']['lines']} transcribed, "
+                f"{s['lines']['checked']} checked, {s['lines']['erratum']} errata, {s['lines']['excused']} excused; "
+                "column *lines*: checked/erratum/excused of the lines nearest to each label.", ""]
+    out += ["| in the PDF | label | kind | claims | figures | lines | excused because | code |",
+            "|---|---|---|---|---|---|---|---|"]
     for r in m["labels"]:
         out.append(f"| {r['paper']} | `{r['label']}` | {r['kind']} | {', '.join(r['claims'])} | "
-                   f"{', '.join(r['figures'])} | {r['excused'] if not (r['claims'] or r['figures']) else ''} | "
+                   f"{', '.join(r['figures'])} | {_line_cell(r.get('lines') or {})} | "
+                   f"{r['excused'] if not (r['claims'] or r['figures']) else ''} | "
                    f"{', '.join(c.removeprefix('paper_repro/') for c in r['code'])} |")
     return "\n".join(out) + "\n"

@@ -93,19 +93,30 @@ def run_claims(only: list[str] | None, overrides: dict[str, dict[str, Any]] | No
     results: list[ClaimResult] = []
     errata: list[dict] = []
     data_files: dict[str, Any] = {}
+    raw: dict[str, Any] = {}
     seconds: dict[str, float] = {}
     cached: dict[str, bool] = {}
     # longest first (timings of earlier runs, else a rough hint), so two workers finish together;
     # results are put back in registry order, so the output does not depend on this
-    order = sorted(ids, key=lambda cid: -_cost_estimate(cid, extended))
+    first = [cid for cid in ids if not CLAIMS[cid].uses_results]
+    order = sorted(first, key=lambda cid: -_cost_estimate(cid, extended))
     jobs = [(cid, (overrides or {}).get(cid), extended) for cid in order]
     done = dict(zip(order, sweep(_run_one, jobs, executor=executor, initializer=load_all, desc="claims",
                                  label=lambda job: job[0])))
+    # claims that resolve checks to other claims run last, here, with the results of this run
+    so_far = {cid: {"status": res.status, "kind": res.kind, "errata": sorted(e["id"] for e in out.errata)}
+              for cid, (res, out, _) in done.items()}
+    for cid in ids:
+        if CLAIMS[cid].uses_results:
+            done[cid] = run_claim(CLAIMS[cid], (overrides or {}).get(cid), extended=extended,
+                                  claim_results=so_far if so_far else None)
     for cid in ids:
         res, out, sec = done[cid]
         results.append(res)
         errata += out.errata
         data_files.update(out.data)
+        if out.raw:
+            raw[cid] = out.raw
         seconds[cid] = sec
         cached[cid] = res.cached
     print(claims_table(results, seconds, cached))
@@ -126,12 +137,24 @@ def run_claims(only: list[str] | None, overrides: dict[str, dict[str, Any]] | No
             else:
                 write_json(path, obj)
         if not extended:
-            unique = list({e["id"]: e for e in sorted(errata, key=lambda e: e["id"])}.values())
+            unique = unique_errata(errata)
             write_json(DATA / "errata.json", unique)
-            update_readme(results, unique)
+            update_readme(results, unique, (data_files.get("paper_lines.json") or {}).get("coverage"))
             write_paper_map()
         _record_timings(BUILD / f"timings{suffix}.json", seconds, cached)
+        write_json(BUILD / f"measured_raw{suffix}.json", raw)
     return not failed
+
+
+def unique_errata(errata: list[dict]) -> list[dict]:
+    """The errata sorted by id, each once; ``ValueError`` if two claims publish different errata under one id
+    (an erratum recorded twice must be the same record)."""
+    by_id: dict[str, dict] = {}
+    for e in sorted(errata, key=lambda e: e["id"]):
+        if e["id"] in by_id and by_id[e["id"]] != e:
+            raise ValueError(f"two different errata published under the id {e['id']!r}")
+        by_id[e["id"]] = e
+    return list(by_id.values())
 
 
 def _record_timings(path: Path, seconds: dict[str, float], cached: dict[str, bool]) -> None:
@@ -212,8 +235,26 @@ def question1_markdown() -> str:
     return "\n".join(out) + "\n" if out else "Not computed yet (`make reproduce`).\n"
 
 
-def update_readme(results: list[ClaimResult], errata: list[dict]) -> None:
-    """Rewrite the generated claims and errata blocks of README.md."""
+def lines_markdown(coverage: dict | None) -> str:
+    """The coverage of claim ``every_line`` (every line of the paper), from the run's ``paper_lines.json``."""
+    if not coverage:
+        return "Not computed yet (`make reproduce`).\n"
+    statuses = ("checked", "erratum", "excused")
+    out = [f"{coverage['lines']} lines of the paper that state something (displays, rows of aligned displays, "
+           f"inline index sets, ranges, bounds, parametrizations, counts, captions): **{coverage['checked']} "
+           f"checked** as printed against an independent computation, **{coverage['erratum']} errata** (the "
+           f"printed line fails, the corrected one holds), **{coverage['excused']} excused** with a reason. "
+           "Per line: [`data/paper_lines.json`](data/paper_lines.json).", "",
+           "| | " + " | ".join(statuses) + " | total |", "|---|" + "---|" * (len(statuses) + 1)]
+    for group in ("by_part", "by_kind"):
+        for key, counts in coverage[group].items():
+            out.append(f"| {group[3:]} `{key}` | " + " | ".join(str(counts.get(s, 0)) for s in statuses)
+                       + f" | {sum(counts.values())} |")
+    return "\n".join(out) + "\n"
+
+
+def update_readme(results: list[ClaimResult], errata: list[dict], line_coverage: dict | None = None) -> None:
+    """Rewrite the generated claims, errata, question-1 and line-coverage blocks of README.md."""
     path = ROOT / "README.md"
     table = ["| id | paper label(s) | kind | status |", "|---|---|---|---|"]
     table += [f"| `{r.id}` | {', '.join(r.paper_ref)} | {r.kind} | {r.status} |" for r in results]
@@ -221,6 +262,7 @@ def update_readme(results: list[ClaimResult], errata: list[dict]) -> None:
     text = _replace_block(path.read_text(), "claims", body)
     text = _replace_block(text, "errata", errata_markdown(errata))
     text = _replace_block(text, "question1", question1_markdown())
+    text = _replace_block(text, "lines", lines_markdown(line_coverage))
     write_text(path, text)
 
 

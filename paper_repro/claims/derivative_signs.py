@@ -25,7 +25,10 @@ from paper_repro.util.registry import Outcome, claim
                                       "derivative_cosine_sine_at_0"],
        statement="The printed sign rules of S^p_{j,mu}(0) (Lemma) and M^z_{i,lambda,j,mu}(0) (Proposition, used in "
                  "the proof) agree with the exact derivatives; the printed rule for C^p_{i,lambda}(0) does not "
-                 "(erratum lemma-sign-cos-power), its corrected form does.",
+                 "(erratum lemma-sign-cos-power), its corrected form does. Exact derivatives at 0 for "
+                 "i = 1..{i_max}, j = 1..{j_max}, orders p = 0..{p_max}; M with i = 0..{m_i_max}, j = 0..{m_j_max}, "
+                 "z = 1..{z_max}; at the rates "
+                 "lambda, mu in {rates} (evidence: sampled rates and orders).",
        kind="exact-evidence", i_max=12, j_max=12, p_max=30, m_i_max=8, m_j_max=8, z_max=25,
        rates=["1/2", "1", "3", "7/5"])
 def run(i_max, j_max, p_max, m_i_max, m_j_max, z_max, rates) -> Outcome:

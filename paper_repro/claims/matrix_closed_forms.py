@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from paper_repro.core.fourier import v_labels
 from paper_repro.core.labels import united_system
-from paper_repro.theory.closed_forms import proof_cached
+from paper_repro.theory.closed_forms import closed_forms_cached, proof_cached, sign_on_unit_interval
 from paper_repro.theory.elevation_forms import closed_forms_and_proof
 from paper_repro.theory.matrix_forms import sign_on_0_pi
 from paper_repro.theory.ratfunc import half_angle_functions
@@ -22,6 +22,15 @@ def _table(forms, rows: list[str], cols: list[str], title: str) -> str:
     for r, row in zip(rows, forms):
         out.append(f"| ${r}$ | " + " | ".join(f"${e.latex()}$" if not e.is_zero() else "0" for e in row) + " |")
     return "\n".join(out) + "\n"
+
+
+def normalizing_coefficients_positive(n: int) -> dict:
+    """What the normalized elevation weights E_gf = x_f M_gf / x_g use: every normalizing coefficient x of
+    order n is positive for every alpha.  Its closed form P(c)/s^k is proven (identity proof) and P > 0 on
+    0 < c < 1 (Sturm: no root there, positive at c = 1/2); s^k > 0."""
+    forms = closed_forms_cached(n)
+    positive = all(sign_on_unit_interval(f.numerator)["sign"] == 1 for f in forms.values())
+    return {"closed_forms_proven": bool(proof_cached(n)["proved"]), "numerators_positive_on_(0,1)": positive}
 
 
 def _json(forms, rows, cols, proof) -> dict:
@@ -48,12 +57,14 @@ def run_elevation(n_max: int) -> Outcome:
         forms, proof = res["forms"], res["proof"]
         signs = [sign_on_0_pi(e.ratfunc(s, c)) for row in forms for e in row]
         nonneg = all(x in (0, 1) for x in signs)
-        coeff_pos = proof_cached(n)["proved"] and proof_cached(n + 1)["proved"]
+        pos = {m: normalizing_coefficients_positive(m) for m in (n, n + 1)}
+        coeff_pos = all(all(p.values()) for p in pos.values())
         rows = [lab.paper for lab in united_system(n + 1)]
         cols = [lab.paper for lab in united_system(n)]
         per_n[str(n)] = {"proved": proof["proved"], "degree_bound": proof["degree_bound"],
                          "entries_nonzero": sum(1 for x in signs if x), "all_entries_nonnegative": nonneg,
-                         "normalizing_coefficients_proven_positive": coeff_pos}
+                         "normalizing_coefficients_proven_positive": coeff_pos,
+                         "normalizing_coefficients": {f"order {m}": p for m, p in pos.items()}}
         ok &= proof["proved"] and nonneg and coeff_pos
         data[f"elevation/closed_forms_n{n}.json"] = _json(forms, rows, cols, proof)
         if n <= 3:

@@ -19,6 +19,7 @@ from paper_repro.core.basis import evaluate
 from paper_repro.core.domain import rational_alpha, sample_points, sample_rational_points
 from paper_repro.core.labels import index_of
 from paper_repro.core.normalization import coefficient_vector, evaluate_normalized, solve_full_exact
+from paper_repro.util.measured import bound
 from paper_repro.util.registry import Outcome, claim
 
 
@@ -82,9 +83,10 @@ def run(ns, rational_ts, exact_points, full_system_n_max, alphas, float_points, 
         "exact_identity_failures": exact_fail, "symmetry_failures": sym_fail,
         "exact_checked": {"n": ns, "tan_alpha_4": rational_ts, "points_per_case": exact_points,
                           "full_system_up_to_n": full_system_n_max},
-        "float64_max_abs_error": worst_float, "float64_tolerance": tol_float,
-        "mp50_max_abs_error": mpmath.nstr(worst_mp, 3), "mp_tolerance": "1e-30",
-        "min_normalized_value_float": min_value,
+        "float64_max_abs_error": bound(worst_float, tol_float), "float64_tolerance": tol_float,
+        "mp50_max_abs_error": bound(worst_mp, 1e-30), "mp_tolerance": "1e-30",
+        "min_normalized_value_float_non_negative": bool(min_value >= 0),
         "scope": "exact at sampled rational-tangent alpha (evidence for all alpha); "
                  "see claim nonnegativity for proofs over all alpha",
-    })
+    }, raw={"float64_max_abs_error": worst_float, "mp50_max_abs_error": mpmath.nstr(worst_mp, 5),
+            "min_normalized_value_float": min_value})

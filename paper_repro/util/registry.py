@@ -39,6 +39,9 @@ class Outcome:
     errata: list[dict[str, Any]] = field(default_factory=list)
     #: data files to publish: path relative to ``data/`` -> JSON-able object, or str for text files
     data: dict[str, Any] = field(default_factory=dict)
+    #: raw machine-dependent values (floats to the last bit) behind the bounds/rounded values of ``measured``:
+    #: written to ``build/measured_raw.json``, never to ``data/`` (see :mod:`paper_repro.util.measured`)
+    raw: dict[str, Any] = field(default_factory=dict)
 
 
 @dataclass
@@ -64,6 +67,9 @@ class Claim:
     func: Callable[..., Outcome]
     defaults: dict[str, Any]
     extended: dict[str, Any] | None = None  # parameters for `make reproduce-extended`
+    #: runs after every other claim of the run and receives their results as ``claim_results`` (see
+    #: :func:`run_claim`): a claim that resolves checks to other claims (``every_line``)
+    uses_results: bool = False
 
 
 @dataclass
@@ -104,6 +110,7 @@ CLAIM_MODULES = (
     "paper_repro.claims.torus",
     "paper_repro.claims.surfaces_claims",
     "paper_repro.claims.float_accuracy",
+    "paper_repro.claims.every_line",
 )
 FIGURE_MODULES = (
     "paper_repro.figures.graph",
@@ -116,7 +123,7 @@ FIGURE_MODULES = (
 
 
 def claim(id: str, *, paper_ref: list[str], statement: str, kind: str, extended: dict | None = None,
-          **defaults: Any) -> Callable[[Callable[..., Outcome]], Callable[..., Outcome]]:
+          uses_results: bool = False, **defaults: Any) -> Callable[[Callable[..., Outcome]], Callable[..., Outcome]]:
     """Register a claim function under ``id`` with default parameters ``defaults``."""
     if kind not in KINDS:
         raise ValueError(f"kind must be one of {KINDS}, got {kind!r}")
@@ -124,7 +131,7 @@ def claim(id: str, *, paper_ref: list[str], statement: str, kind: str, extended:
     def deco(func: Callable[..., Outcome]) -> Callable[..., Outcome]:
         if id in CLAIMS:
             raise ValueError(f"claim {id!r} registered twice")
-        CLAIMS[id] = Claim(id, list(paper_ref), statement, kind, func, dict(defaults), extended)
+        CLAIMS[id] = Claim(id, list(paper_ref), statement, kind, func, dict(defaults), extended, uses_results)
         return func
 
     return deco
@@ -203,26 +210,39 @@ def check_overrides(c: Claim, overrides: dict[str, Any] | None, extended: bool =
     return params
 
 
-def run_claim(c: Claim, overrides: dict[str, Any] | None = None, extended: bool = False
-              ) -> tuple[ClaimResult, Outcome, float]:
+def run_claim(c: Claim, overrides: dict[str, Any] | None = None, extended: bool = False,
+              claim_results: dict[str, dict] | None = None) -> tuple[ClaimResult, Outcome, float]:
     """Run one claim; returns its result, the raw outcome (errata, data files), and the seconds it took.
 
     ``overrides`` may only name parameters the claim takes (``ValueError`` listing them otherwise).  A
-    claim that raises is reported as failing with the error, and that failure is never cached.
+    claim that raises is reported as failing with the error, and that failure is never cached.  A claim
+    registered with ``uses_results`` receives ``claim_results`` (``{id: {"status", "kind", "errata"}}`` of the
+    claims run before it; ``None`` when run alone) as a keyword argument; they are part of its cache key.
+
+    The rule of :mod:`paper_repro.util.measured` is enforced here: a claim whose ``measured`` or data files hold
+    a raw float (rounding-level or more than ``MAX_DIGITS`` digits) fails, naming the offending fields.
     """
     params = check_overrides(c, overrides, extended)
     t0 = time.perf_counter()
+    extra = {"claim_results": claim_results} if c.uses_results else {}
 
     def compute() -> dict:
-        return asdict(c.func(**params))
+        return asdict(c.func(**params, **extra))
 
     try:
         # whole-claim cache: keyed by id, parameters and the package source (see cache.code_fingerprint)
-        stored, hit = cached("claims", {"id": c.id, "params": params, "code": code_fingerprint()}, compute,
+        stored, hit = cached("claims", {"id": c.id, "params": params, "code": code_fingerprint(), **extra}, compute,
                              report_hit=True)
     except Exception as exc:  # a crashing check is a failing claim, reported as such (and not cached)
         stored, hit = asdict(Outcome(False, {"error": f"{type(exc).__name__}: {exc}"})), False
     out = Outcome(**stored)
+    from paper_repro.util.measured import data_violations, violations
+
+    bad = violations(out.measured) + data_violations(out.data)
+    if bad:  # data/ must be machine-independent: raw floats go to build/, data/ gets bounds or rounded values
+        out.passed = False
+        out.measured = {**out.measured, "error": f"measured holds machine-dependent raw values at {bad} "
+                                                 "(publish a bound or a rounded value: paper_repro.util.measured)"}
     seconds = time.perf_counter() - t0
     kind = out.kind or c.kind
     if kind not in KINDS:

@@ -1,0 +1,159 @@
+"""Claim ``every_line``: every line of the paper that states something, checked (issue 19).
+
+The lines are transcribed verbatim in :mod:`paper_repro.printed.lines` (one module per part of the paper), the
+checks registered in :mod:`paper_repro.claims.lines`.  This claim runs every check once and judges each line by
+its status:
+
+* ``checked``: the check finds the line holds as printed;
+* ``erratum``: the check finds the printed line fails and the corrected line holds;
+* ``excused``: the line gives a reason.
+
+A check ``"claim:<id>"`` is not re-run: it is resolved to the result of claim ``<id>`` in the same run (the
+runner passes the results of every other claim as ``claim_results``; run alone, the committed
+``data/claims.json`` is read).  That claim must exist and pass; for an erratum line with an ``id`` the claim
+must publish that erratum.  Errata of lines with their own check are published here (``data/errata.json``),
+those resolved to a claim are published by that claim already.
+
+Publishes ``data/paper_lines.json``: the coverage and, per line (sorted by source line), its transcription,
+status, check, how it was checked, and the PDF number of the nearest label (``data/paper_index.json``).
+"""
+
+from __future__ import annotations
+
+import json
+from collections import Counter
+from typing import Any
+
+from paper_repro.util.registry import Outcome, claim
+
+#: The weakest kind wins: a claim over lines of several kinds is as strong as its weakest check.
+_KIND_ORDER = ("numeric-evidence", "exact-evidence", "proof")
+
+
+def _committed_results() -> dict[str, dict]:
+    """Claim results of the committed ``data/claims.json`` and ``data/errata.json`` (a run of this claim alone)."""
+    from paper_repro.util.io import DATA
+
+    try:
+        claims = json.loads((DATA / "claims.json").read_text())
+        errata = [e["id"] for e in json.loads((DATA / "errata.json").read_text())]
+    except (OSError, ValueError):
+        return {}
+    # the committed errata do not say which claim published them: any committed erratum id resolves
+    return {c["id"]: {"status": c["status"], "kind": c["kind"], "errata": errata} for c in claims}
+
+
+def _number(label: str, index: dict[str, dict]) -> str | None:
+    rec = index.get(label)
+    if not rec or not rec.get("number"):
+        return None
+    return rec.get("display") or None
+
+
+def _erratum_record(line) -> dict[str, Any]:
+    e = line.erratum
+    return {"id": e.get("id", line.id), "paper_ref": line.near, "item": e.get("item", line.says),
+            "severity": e["severity"], "printed": e["printed"], "corrected": e["corrected"],
+            "evidence": e["evidence"], "source_lines": list(line.tex)}
+
+
+def judge(lines, checks: dict, claim_results: dict[str, dict]) -> tuple[list[dict], list[dict], list[str]]:
+    """(one record per line, the errata to publish, the problems found) -- see the module docstring."""
+    from paper_repro.util.paper_labels import load_index
+
+    index = {r["label"]: r for r in load_index()}
+    ran: dict[str, Any] = {}
+    records, errata, problems = [], [], []
+    for line in lines:
+        holds, corrected, how, kind = None, None, "", None
+        if line.status == "excused":
+            if not (line.reason or "").strip():
+                problems.append(f"{line.id}: excused without a reason")
+        elif line.check and line.check.startswith("claim:"):
+            cid = line.check.split(":", 1)[1]
+            res = claim_results.get(cid)
+            if res is None:
+                problems.append(f"{line.id}: check {line.check} names no claim result")
+            else:
+                ok = res["status"] == "pass"
+                kind = res["kind"]
+                how = f"claim {cid} ({res['status']})"
+                if line.status == "checked":
+                    holds = ok
+                else:
+                    holds = False if ok else None  # the claim records the printed line as failing
+                    eid = (line.erratum or {}).get("id")
+                    corrected = ok and (eid is None or eid in res.get("errata", []))
+                    if eid is not None and eid not in res.get("errata", []):
+                        problems.append(f"{line.id}: claim {cid} does not publish erratum {eid}")
+        else:
+            if line.check not in checks:
+                problems.append(f"{line.id}: check {line.check!r} is not registered")
+            else:
+                if line.check not in ran:
+                    try:
+                        ran[line.check] = checks[line.check]()
+                    except Exception as exc:  # a crashing check is a failing line, reported as such
+                        ran[line.check] = exc
+                r = ran[line.check]
+                if isinstance(r, Exception):
+                    problems.append(f"{line.id}: check {line.check} raised {type(r).__name__}: {r}")
+                else:
+                    holds, corrected, how, kind = r.holds_as_printed, r.corrected_holds, r.how, r.kind
+        if line.status == "checked" and holds is not True:
+            problems.append(f"{line.id}: does not hold as printed (check {line.check})")
+        if line.status == "erratum" and not (holds is False and corrected is True):
+            problems.append(f"{line.id}: erratum not confirmed (printed holds: {holds}, corrected holds: "
+                            f"{corrected}; check {line.check})")
+        erratum = None
+        if line.status == "erratum":
+            erratum = _erratum_record(line)
+            if not line.check.startswith("claim:"):
+                errata.append(erratum)
+        records.append({"id": line.id, "part": line.id.split("-", 1)[0], "tex": list(line.tex), "near": line.near,
+                        "number": _number(line.near, index), "kind": line.kind, "verbatim": line.verbatim,
+                        "says": line.says, "status": line.status, "check": line.check, "how": how or None,
+                        "proof_kind": kind, "holds_as_printed": holds, "corrected_holds": corrected,
+                        "reason": line.reason, "erratum": erratum})
+    return records, errata, problems
+
+
+def coverage(records: list[dict]) -> dict:
+    by_kind: dict[str, Counter] = {}
+    by_part: dict[str, Counter] = {}
+    for r in records:
+        by_kind.setdefault(r["kind"], Counter())[r["status"]] += 1
+        by_part.setdefault(r["part"], Counter())[r["status"]] += 1
+    total = Counter(r["status"] for r in records)
+    return {"lines": len(records), "checked": total["checked"], "erratum": total["erratum"],
+            "excused": total["excused"],
+            "by_kind": {k: dict(sorted(v.items())) for k, v in sorted(by_kind.items())},
+            "by_part": {k: dict(sorted(v.items())) for k, v in sorted(by_part.items())}}
+
+
+@claim("every_line", paper_ref=["sec:RGB", "sec:linear_independence", "sec:coincidence", "sec:partition_of_unity",
+                                "sec:applications", "sec:open_problems"],
+       statement="Every line of the paper that states something (each displayed line, each inline index set, range, "
+                 "bound, parametrization, count and caption value; data/paper_lines.json) holds as printed by an "
+                 "independent computation, or is an erratum whose printed form fails and whose corrected form "
+                 "holds, or is excused with a reason.",
+       kind="exact-evidence", uses_results=True)
+def run(claim_results: dict[str, dict] | None = None) -> Outcome:
+    from paper_repro.claims.lines import load_checks
+    from paper_repro.printed.lines import PARTS, all_lines
+
+    results = dict(_committed_results())
+    results.update(claim_results or {})
+    lines = all_lines()
+    records, errata, problems = judge(lines, load_checks(), results)
+    cov = coverage(records)
+    kinds = {r["proof_kind"] for r in records if r["proof_kind"]}
+    kind = next((k for k in _KIND_ORDER if k in kinds), "exact-evidence")
+    parts_present = sorted({r["part"] for r in records})
+    passed = not problems and bool(records)
+    measured = {"coverage": cov, "parts": parts_present, "parts_missing": [p for p in PARTS if p not in parts_present],
+                "problems": problems,
+                "checks_run": len({r["check"] for r in records if r["check"] and not r["check"].startswith("claim:")}),
+                "errata_published_here": sorted(e["id"] for e in errata)}
+    return Outcome(passed, measured, kind=kind, errata=errata,
+                   data={"paper_lines.json": {"coverage": cov, "lines": records}})

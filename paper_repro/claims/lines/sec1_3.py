@@ -1,0 +1,1401 @@
+"""Checks of the lines of Sections 1-3 (abstract, Introduction, sec:RGB, sec:linear_independence), transcribed in
+:mod:`paper_repro.printed.lines.sec1_3`.
+
+The independent computations:
+
+* the functions of T_{2n} as exponent vectors (:mod:`paper_repro.core.labels`): the union R u G u B with equal
+  functions merged, boundary restrictions, images under swaps of variables;
+* derivatives along the parametrizations of the proof, exactly: a function of T_{2n} is Z(z) O(o) F(f) with
+  factors sin^s cos^c of half angles; the r-th derivative along a parametrization is computed from the direction
+  vector of the (affine) parametrization -- not from the printed chain rule -- with the factor at 0 from exact
+  Taylor series (:func:`paper_repro.theory.derivatives.mixed_derivative`) and the other factors as exact
+  trigonometric polynomials evaluated where the half-angle sines and cosines are rational (tan(x/4) rational);
+* the elimination of the proof, recomputed from these exact derivatives: the functions whose derivative of the
+  step's order does not vanish at the boundary are removed, step by step;
+* the printed sums and primed coefficients, transcribed here as index ranges (functions of n and r), compared
+  with the computed sets and, as linear forms in the combining constants, with the computed values.
+"""
+
+from __future__ import annotations
+
+from functools import cache
+from math import comb, factorial
+
+import mpmath
+from flint import fmpq, fmpq_poly, fmpz_mpoly_ctx, nmod_mat
+
+from paper_repro.claims.lines import LineResult, line_check
+from paper_repro.core.domain import rational_alpha
+from paper_repro.core.labels import BasisLabel, delta, exponents, full_system, index_of, united_system
+from paper_repro.core.univariate import c_const, c_numerator, c_numerator_by_expansion
+from paper_repro.theory.derivatives import mixed_derivative, sin_power_derivative
+
+HALF = fmpq(1, 2)
+#: alpha = 4 atan(t) for these t, and interior parameters x = 4 atan(t_x) with t_x < t (exact half angles).
+ALPHA_TS = (fmpq(1, 2), fmpq(3, 4))
+X_FRACTIONS = (fmpq(1, 3), fmpq(5, 7))
+N_PROOF = range(1, 7)  # orders n for which the proof's steps are recomputed
+
+
+# -- exact half-angle arithmetic ------------------------------------------------------------------------------
+def _half(t: fmpq) -> tuple[fmpq, fmpq]:
+    """(sin(x/2), cos(x/2)) for x = 4 atan(t)."""
+    return 2 * t / (1 + t**2), (1 - t**2) / (1 + t**2)
+
+
+def _diff_half(a: tuple[fmpq, fmpq], b: tuple[fmpq, fmpq]) -> tuple[fmpq, fmpq]:
+    """Half angles of A - B from those of A and B."""
+    return a[0] * b[1] - a[1] * b[0], a[1] * b[1] + a[0] * b[0]
+
+
+@cache
+def _tpoly_derivative(s: int, c: int, k: int) -> tuple[tuple[tuple[int, int], fmpq], ...]:
+    """d^k/dt^k sin^s(t/2) cos^c(t/2) as a sum of q sin^a(t/2) cos^b(t/2)."""
+    poly = {(s, c): fmpq(1)}
+    for _ in range(k):
+        out: dict[tuple[int, int], fmpq] = {}
+        for (a, b), q in poly.items():
+            if a:
+                out[(a - 1, b + 1)] = out.get((a - 1, b + 1), fmpq(0)) + q * fmpq(a, 2)
+            if b:
+                out[(a + 1, b - 1)] = out.get((a + 1, b - 1), fmpq(0)) - q * fmpq(b, 2)
+        poly = {key: q for key, q in out.items() if q != 0}
+    return tuple(poly.items())
+
+
+def _factor_derivative(s: int, c: int, k: int, half: tuple[fmpq, fmpq]) -> fmpq:
+    """d^k/dt^k sin^s(t/2) cos^c(t/2) at the angle whose half-angle sine and cosine are ``half``."""
+    return sum((q * half[0] ** a * half[1] ** b for (a, b), q in _tpoly_derivative(s, c, k)), fmpq(0))
+
+
+# -- the parametrizations of the proof, as printed maps (x, y) -> (u, v, w) -------------------------------------
+#: name -> (map, running variable, which parameter is set to 0)
+PARAMS = {
+    "parametrization_for_partition_of_unity": (lambda a, x, y: (a - x, y, x - y), "y"),
+    "parametrization_1_y_0": (lambda a, x, y: (x, y, a - x - y), "y"),
+    "parametrization_2_x_0": (lambda a, x, y: (x, a - x - y, y), "x"),
+    "parametrization_3_y_0": (lambda a, x, y: (a - x - y, x, y), "y"),
+}
+
+
+@cache
+def step_geometry(param: str) -> tuple[tuple[int, int, int], int, int, int]:
+    """Computed from the printed map: (direction of d/d(running) in (u, v, w), the coordinate that vanishes when the
+    running parameter is 0, the coordinate equal to the other parameter there, the remaining coordinate)."""
+    fmap, run = PARAMS[param]
+    a, p, q = fmpq(7, 5), fmpq(2, 5), fmpq(1, 5)  # any alpha and point; the maps are affine
+    base = fmap(a, p, q)
+    moved = fmap(a, p + 1, q) if run == "x" else fmap(a, p, q + 1)
+    direction = tuple(int(m - b) for m, b in zip(moved, base))
+    at0 = fmap(a, fmpq(0), q) if run == "x" else fmap(a, p, fmpq(0))
+    other_param = q if run == "x" else p
+    zero = [k for k in range(3) if at0[k] == 0]
+    fixed = [k for k in range(3) if at0[k] == other_param and at0[k] != 0]
+    assert len(zero) == 1 and len(fixed) == 1, (param, at0)
+    rest = 3 - zero[0] - fixed[0]
+    return direction, zero[0], fixed[0], rest
+
+
+def _split(e: tuple[int, ...], var: int) -> tuple[int, int]:
+    return e[2 * var], e[2 * var + 1]
+
+
+def boundary_point(alpha_t: fmpq, x_frac: fmpq) -> dict[str, tuple[fmpq, fmpq]]:
+    """Half angles of alpha, of the boundary parameter t (tan(t/4) = x_frac tan(alpha/4)) and of alpha - t."""
+    ha, ht = _half(alpha_t), _half(alpha_t * x_frac)
+    return {"alpha": ha, "t": ht, "alpha-t": _diff_half(ha, ht)}
+
+
+def mixed_partial(e: tuple[int, ...], param: str, z_order: int, o_order: int, pt) -> fmpq:
+    """d^{z_order}/d(zero var) d^{o_order}/d(other var) of the function with exponents e, at the boundary point
+    (zero var = 0, fixed var = t, other var = alpha - t)."""
+    _, zero, fixed, rest = step_geometry(param)
+    zs, zc = _split(e, zero)
+    d0 = mixed_derivative(zc, HALF, zs, HALF, z_order)
+    if d0 == 0:
+        return fmpq(0)
+    fs, fc = _split(e, fixed)
+    os_, oc = _split(e, rest)
+    return d0 * _factor_derivative(os_, oc, o_order, pt["alpha-t"]) * _factor_derivative(fs, fc, 0, pt["t"])
+
+
+def step_value(e: tuple[int, ...], param: str, r: int, pt) -> fmpq:
+    """The r-th derivative along the parametrization at the boundary, from the direction vector."""
+    direction, zero, _fixed, rest = step_geometry(param)
+    dz, do = direction[zero], direction[rest]
+    return sum((comb(r, k) * dz ** (r - k) * do**k * mixed_partial(e, param, r - k, k, pt) for k in range(r + 1)),
+               fmpq(0))
+
+
+def _points():
+    return [boundary_point(a, x) for a in ALPHA_TS for x in X_FRACTIONS]
+
+
+@cache
+def survivors(n: int, param: str, r: int, alive: frozenset[int]) -> frozenset[int]:
+    """Indices (into T_{2n}) of the alive functions whose r-th derivative along ``param`` does not vanish."""
+    labels = united_system(n)
+    pts = _points()
+    return frozenset(k for k in alive if any(step_value(exponents(labels[k]), param, r, p) != 0 for p in pts))
+
+
+STEP_PARAMS = ("parametrization_1_y_0", "parametrization_2_x_0", "parametrization_3_y_0")
+
+
+@cache
+def elimination(n: int, orders: int | None = None) -> tuple[tuple[int, str, frozenset[int], frozenset[int]], ...]:
+    """The proof's steps recomputed: (order r, parametrization, alive before, removed), orders 0..orders-1."""
+    alive = frozenset(range(len(united_system(n))))
+    steps = []
+    for r in range(n if orders is None else orders):
+        for param in STEP_PARAMS:
+            gone = survivors(n, param, r, alive)
+            steps.append((r, param, alive, gone))
+            alive = alive - gone
+    return tuple(steps)
+
+
+def alive_after(n: int, r: int, param_index: int) -> frozenset[int]:
+    """Functions left after the step (order r, parametrization 1/2/3 = param_index 0/1/2)."""
+    _, _, before, gone = elimination(n)[3 * r + param_index]
+    return before - gone
+
+
+def alive_before(n: int, r: int, param_index: int = 0) -> frozenset[int]:
+    return elimination(n)[3 * r + param_index][2]
+
+
+# -- printed sums as index sets -------------------------------------------------------------------------------
+def lab(color: str, n: int, i: int, j: int) -> int:
+    """Internal index of the printed label color_{2n,2n-i,j} (aliases resolved by the package's label map)."""
+    return index_of(n)[f"{color}_{{{2 * n},{2 * n - i},{j}}}"]
+
+
+def dsum(color: str, n: int, j_from: int, j_to: int, i_from=lambda j: j, i_to=None) -> set[int]:
+    """sum_{j=j_from}^{j_to} sum_{i=i_from(j)}^{i_to(j)} of color_{2n,2n-i,j}; i_to defaults to 2n-1-j."""
+    i_to = i_to or (lambda j: 2 * n - 1 - j)
+    return {lab(color, n, i, j) for j in range(j_from, j_to + 1) for i in range(i_from(j), i_to(j) + 1)}
+
+
+def isum(color: str, n: int, j: int, i_from: int, i_to: int) -> set[int]:
+    return {lab(color, n, i, j) for i in range(i_from, i_to + 1)}
+
+
+def centre(n: int) -> set[int]:
+    return {lab("R", n, n, n)}
+
+
+def _names(n: int, idx) -> list[str]:
+    labels = united_system(n)
+    return sorted(labels[k].paper for k in idx)
+
+
+def _set_result(printed, computed, how: str, kind: str = "exact-evidence", corrected=None) -> LineResult:
+    """Compare printed(n[, r]) with computed(n[, r]) as sets for every n, r given (dicts keyed by (n, r))."""
+    bad = {f"n={n},r={r}": {"printed_only": _names(n, printed[(n, r)] - computed[(n, r)]),
+                            "computed_only": _names(n, computed[(n, r)] - printed[(n, r)])}
+           for (n, r) in printed if printed[(n, r)] != computed[(n, r)]}
+    detail = {"cases": len(printed), "mismatches": len(bad), "first_mismatches": dict(list(bad.items())[:2])}
+    corr = None
+    if corrected is not None:
+        corr = all(corrected[key] == computed[key] for key in corrected)
+        detail["corrected_mismatches"] = sum(corrected[key] != computed[key] for key in corrected)
+    return LineResult(not bad, corr, how=how, kind=kind, detail=detail)
+
+
+# ==============================================================================================================
+# Sections 1-2
+# ==============================================================================================================
+@line_check("sec1_3-alpha-range")
+def alpha_range() -> LineResult:
+    """alpha in (0, pi): the printed c_{2n,i} are polynomials in cos(alpha/2) with non-negative integer coefficients
+    over sin^{2n}(alpha/2), so positive for alpha in (0, pi); at alpha = pi the odd ones vanish (A_{2n,i} = 0 for odd
+    i: no basis), so the range cannot be extended to pi."""
+    ok_pos = all(min(c_numerator(n, i)) >= 0 and sum(c_numerator(n, i)) > 0
+                 for n in range(1, 16) for i in range(2 * n + 1))
+    # at alpha = pi: cos(alpha/2) = 0, so the numerator is its constant term, zero exactly for odd i
+    zero_at_pi = all((c_numerator(n, i)[0] == 0) == (i % 2 == 1) for n in range(1, 16) for i in range(2 * n + 1))
+    exact_pos = all(c_const(n, i, rational_alpha(t), "exact") > 0 for n in range(1, 6) for i in range(2 * n + 1)
+                    for t in (fmpq(1, 100), fmpq(1, 2), fmpq(99, 100)))
+    return LineResult(ok_pos and zero_at_pi and exact_pos, how="coefficients of the printed c_{2n,i} as polynomials "
+                      "in cos(alpha/2) (n <= 15); exact values at tan(alpha/4) in 1/100, 1/2, 99/100 (n <= 5)",
+                      kind="proof", detail={"nonnegative_polynomials": ok_pos, "odd_vanish_at_pi": zero_at_pi,
+                                            "positive_at_samples": exact_pos})
+
+
+def distinct_union(n: int) -> set[tuple[int, ...]]:
+    """Distinct functions (exponent vectors) of R_{2n} u G_{2n} u B_{2n} (full systems, eqs. R_system..B_system)."""
+    return {exponents(x) for color in "RGB" for x in full_system(n, color)}
+
+
+@line_check("sec1_3-delta-count")
+def delta_count() -> LineResult:
+    """delta_n = 3n(n+1)+1: the number of distinct functions of R u G u B, and the printed double sum
+    1 + 3 sum_{j=0}^{n-1} sum_{i=j}^{2n-1-j} 1, for n = 1..40."""
+    rows = []
+    for n in range(1, 41):
+        printed_sum = 1 + 3 * sum(1 for j in range(n) for i in range(j, 2 * n - j))
+        rows.append((len(distinct_union(n)), printed_sum, 3 * n * (n + 1) + 1, delta(n)))
+    ok = all(len(set(r)) == 1 for r in rows)
+    return LineResult(ok, how="count of distinct exponent vectors of R u G u B against the printed double sum and "
+                      "closed form, n = 1..40", kind="proof", detail={"n_max": 40, "all_equal": ok,
+                                                                      "first": list(rows[0]), "last": list(rows[-1])})
+
+
+def united_printed(n: int) -> set[tuple[int, ...]]:
+    """eq. united_system as printed: centre and, per colour, j = 0..n-1, i = j..2n-1-j."""
+    out = {exponents(BasisLabel("R", n, n, n))}
+    for color in "RGB":
+        out |= {exponents(BasisLabel(color, n, i, j)) for j in range(n) for i in range(j, 2 * n - j)}
+    return out
+
+
+@line_check("sec1_3-united-dedupe")
+def united_dedupe(ranges=None) -> LineResult:
+    """The printed index set of T_{2n} lists each distinct function of R u G u B exactly once (n = 1..20)."""
+    ranges = ranges or (lambda n, j: range(j, 2 * n - j))
+    ok = True
+    for n in range(1, 21):
+        listed = [exponents(BasisLabel("R", n, n, n))] + [exponents(BasisLabel(c, n, i, j)) for c in "RGB"
+                                                          for j in range(n) for i in ranges(n, j)]
+        ok &= len(listed) == len(set(listed)) and set(listed) == distinct_union(n)
+    return LineResult(ok, how="printed ranges against the distinct functions of the full systems, n = 1..20",
+                      kind="proof", detail={"n_max": 20, "equal_without_repetition": ok})
+
+
+@line_check("sec1_3-levels")
+def levels() -> LineResult:
+    """n levels numbered 0..n-1 (the centre is the common centroid): the levels j of the non-centre functions."""
+    ok = all({lb.j for lb in united_system(n) if not lb.is_centre} == set(range(n)) for n in range(1, 21))
+    return LineResult(ok, how="levels of T_{2n} from its labels, n = 1..20", kind="proof", detail={"ok": ok})
+
+
+@line_check("sec1_3-corners-centre")
+def corners_centre() -> LineResult:
+    """The outermost nodes store sin^{2n}(u/2), sin^{2n}(v/2), sin^{2n}(w/2); every path ends at the centre
+    sin^n(u/2) sin^n(v/2) sin^n(w/2) = R_{2n,n,n} = G_{2n,n,n} = B_{2n,n,n} (the three labels are one function)."""
+    ok = True
+    for n in range(1, 21):
+        ex = {exponents(lb) for lb in united_system(n)}
+        corners = {(2 * n, 0, 0, 0, 0, 0), (0, 0, 2 * n, 0, 0, 0), (0, 0, 0, 0, 2 * n, 0)}
+        centre_all = {exponents(BasisLabel(c, n, n, n)) for c in "RGB"}  # R_{2n,n,n} = G_{2n,n,n} = B_{2n,n,n}
+        ok &= corners <= ex and centre_all == {(n, 0, n, 0, n, 0)}
+    return LineResult(ok, how="exponent vectors of T_{2n}, n = 1..20", kind="proof", detail={"ok": ok})
+
+
+@line_check("sec1_3-nonnegative")
+def nonnegative() -> LineResult:
+    """The functions of R, G, B are non-negative on Omega^alpha: products of non-negative powers of sines and cosines
+    of half angles in [0, alpha/2] subset [0, pi/2) (exponents checked for the full systems, n = 1..30)."""
+    ok = all(min(exponents(lb)) >= 0 for n in range(1, 31) for c in "RGB" for lb in full_system(n, c))
+    return LineResult(ok, how="exponent vectors of the full systems, n = 1..30", kind="proof", detail={"ok": ok})
+
+
+@line_check("sec1_3-rgb-index-sets")
+def rgb_index_sets() -> LineResult:
+    """{j=0..n, i=j..2n-j} is the disjoint union of the halves {j=0..n, i=j..n} (eq. R_system_leq_n) and
+    {j=0..n-1, i=n+1..2n-j} (eq. R_system_geq_n), has (n+1)^2 members, and all printed powers are >= 0 on it."""
+    ok = True
+    for n in range(1, 31):
+        full = {(i, j) for j in range(n + 1) for i in range(j, 2 * n - j + 1)}
+        low = {(i, j) for j in range(n + 1) for i in range(j, n + 1)}
+        high = {(i, j) for j in range(n) for i in range(n + 1, 2 * n - j + 1)}
+        powers_ok = all(i - j >= 0 for i, j in low) and all(2 * n - i - j >= 0 for i, j in high)
+        ok &= not (low & high) and low | high == full and len(full) == (n + 1) ** 2 and powers_ok
+    return LineResult(ok, how="index sets counted, n = 1..30", kind="proof", detail={"ok": ok})
+
+
+@line_check("sec1_3-order-n3")
+def order_n3() -> LineResult:
+    """T_6^alpha is the system of order n = 3 (2n = 6), with delta_3 = 37 functions."""
+    labs = united_system(3)
+    ok = all(lb.paper.split(",")[0].endswith("6") for lb in labs) and len(labs) == 37
+    return LineResult(ok, how="labels of T_{2n} for n = 3", kind="proof", detail={"functions": len(labs)})
+
+
+def _boundary(var: int) -> LineResult:
+    """T_{2n} restricted to {var = 0}: the non-vanishing functions are exactly sin^{i}((alpha-t)/2) sin^{2n-i}(t/2),
+    i = 0..2n, each once, i.e. A_{2n,2n-i}(t)/c_{2n,2n-i}, checked on exponents and by exact values of the
+    package's A_{2n,k} at rational points."""
+    ok = True
+    for n in range(1, 13):
+        rest = [k for k in range(3) if k != var]
+        restricted = []
+        for lb in united_system(n):
+            e = exponents(lb)
+            if e[2 * var] > 0:
+                continue  # contains sin(var/2): vanishes on the edge
+            restricted.append((e[2 * rest[0]], e[2 * rest[0] + 1], e[2 * rest[1]], e[2 * rest[1] + 1]))
+        # cos powers must be 0 on the surviving ones (no cos factor in A), and the sin powers sum to 2n
+        target = sorted((2 * n - i, 0, i, 0) for i in range(2 * n + 1))
+        ok &= sorted(restricted) == target
+    # values: A_{2n,k}(t)/c_{2n,k} = sin^{2n-k}((alpha-t)/2) sin^k(t/2), exactly at rational points
+    for n in range(1, 5):
+        for pt in _points()[:2]:
+            a = rational_alpha(ALPHA_TS[0])
+            for k in range(2 * n + 1):
+                ck = c_const(n, k, a, "exact")
+                value = ck * pt["alpha-t"][0] ** (2 * n - k) * pt["t"][0] ** k
+                ok &= value / ck == _factor_derivative(2 * n - k, 0, 0, pt["alpha-t"]) * pt["t"][0] ** k
+    return LineResult(ok, how="exponent vectors of T_{2n} restricted to the edge, n = 1..12", kind="proof",
+                      detail={"ok": ok})
+
+
+@line_check("sec1_3-boundary-v0")
+def boundary_v0() -> LineResult:
+    return _boundary(1)
+
+
+@line_check("sec1_3-boundary-u0")
+def boundary_u0() -> LineResult:
+    return _boundary(0)
+
+
+@line_check("sec1_3-boundary-w0")
+def boundary_w0() -> LineResult:
+    return _boundary(2)
+
+
+@line_check("sec1_3-c-formula")
+def c_formula() -> LineResult:
+    """The printed c_{2n,i} make sum_i A_{2n,i} = 1: the numerators equal the coefficients of
+    (X^2 + 2 cos(alpha/2) X Y + Y^2)^n (polynomial identity, n = 1..15), and the partition of unity holds exactly at
+    rational points (n = 1..5)."""
+    poly_ok = all(fmpq_poly(c_numerator(n, i)) == c_numerator_by_expansion(n)[i]
+                  for n in range(1, 16) for i in range(2 * n + 1))
+    pu_ok = True
+    for n in range(1, 6):
+        for at in ALPHA_TS:
+            a = rational_alpha(at)
+            for pt in (boundary_point(at, x) for x in X_FRACTIONS):
+                total = sum((c_const(n, i, a, "exact") * pt["alpha-t"][0] ** (2 * n - i) * pt["t"][0] ** i
+                             for i in range(2 * n + 1)), fmpq(0))
+                pu_ok &= total == 1
+    return LineResult(poly_ok and pu_ok, how="polynomial identity in cos(alpha/2) with the expansion of "
+                      "(X^2+2cXY+Y^2)^n (n <= 15); exact partition of unity at 4 rational points (n <= 5)",
+                      kind="proof", detail={"polynomial_identity": poly_ok, "partition_of_unity": pu_ok})
+
+
+@line_check("sec1_3-c-symmetry")
+def c_symmetry() -> LineResult:
+    ok = all(c_numerator(n, i) == c_numerator(n, 2 * n - i)[: i + 1] and not any(c_numerator(n, 2 * n - i)[i + 1:])
+             for n in range(1, 31) for i in range(n + 1))
+    return LineResult(ok, how="the printed c_{2n,i} and c_{2n,2n-i} as polynomials in cos(alpha/2), n = 1..30",
+                      kind="proof", detail={"ok": ok})
+
+
+P = 2**61 - 1
+
+
+def _modp(q: fmpq) -> int:
+    return int(q.p) % P * pow(int(q.q) % P, -1, P) % P
+
+
+def _rank(rows: list[list[fmpq]]) -> int:
+    return nmod_mat(len(rows), len(rows[0]), [_modp(q) for row in rows for q in row], P).rank()
+
+
+def _angle(half: tuple[fmpq, fmpq]) -> tuple[fmpq, fmpq]:
+    """(cos, sin) of the full angle from its half angle."""
+    s, c = half
+    return c * c - s * s, 2 * s * c
+
+
+def _cmul(a, b):
+    return a[0] * b[0] - a[1] * b[1], a[0] * b[1] + a[1] * b[0]
+
+
+def _cpow(a, k):
+    out = (fmpq(1), fmpq(0))
+    for _ in range(k):
+        out = _cmul(out, a)
+    return out
+
+
+def _domain_points(alpha_t: fmpq, count: int) -> list[tuple[tuple[fmpq, fmpq], ...]]:
+    """Half angles of (u, v, w) at points of Omega^alpha with rational tan(u/4), tan(v/4) (deterministic)."""
+    out = []
+    ha = _half(alpha_t)
+    k = 0
+    while len(out) < count:
+        k += 1
+        tu, tv = alpha_t * fmpq(k, 2 * k + 5), alpha_t * fmpq(k % 9 + 1, 3 * (k % 9) + k % 4 + 5)
+        hu, hv = _half(tu), _half(tv)
+        hw = _diff_half(_diff_half(ha, hu), hv)
+        if hw[0] > 0 and hw[1] > 0 and (hu, hv) not in [(p[0], p[1]) for p in out]:
+            out.append((hu, hv, hw))
+    return out
+
+
+@line_check("sec1_3-fourier-dimension")
+def fourier_dimension() -> LineResult:
+    """The system {cos(ru+gv+bw), sin(ru+gv+bw)}_{r,g,b=0}^{n} on Omega^alpha spans a space of dimension delta_n
+    equal to span T_{2n} (ranks of exact collocation matrices modulo a 61-bit prime, n = 1..3)."""
+    detail = {}
+    ok = True
+    for n in (1, 2, 3):
+        pts = _domain_points(ALPHA_TS[0], delta(n) + 12)
+        rows_f, rows_t = [], []
+        for hu, hv, hw in pts:
+            eu, ev, ew = _angle(hu), _angle(hv), _angle(hw)
+            row = []
+            for r in range(n + 1):
+                for g in range(n + 1):
+                    for b in range(n + 1):
+                        z = _cmul(_cmul(_cpow(eu, r), _cpow(ev, g)), _cpow(ew, b))
+                        row += [z[0], z[1]]
+            rows_f.append(row)
+            rows_t.append([hu[0] ** e[0] * hu[1] ** e[1] * hv[0] ** e[2] * hv[1] ** e[3] * hw[0] ** e[4]
+                           * hw[1] ** e[5] for e in (exponents(lb) for lb in united_system(n))])
+        rf, rt, rj = _rank(rows_f), _rank(rows_t), _rank([a + b for a, b in zip(rows_f, rows_t)])
+        detail[str(n)] = {"rank_fourier": rf, "rank_T": rt, "rank_joint": rj, "delta": delta(n)}
+        ok &= rf == rt == rj == delta(n)
+    return LineResult(ok, how="exact collocation ranks modulo 2^61-1 at delta_n + 12 points, tan(alpha/4) = 1/2",
+                      detail=detail)
+
+
+@line_check("sec1_3-independence-rank")
+def independence_rank() -> LineResult:
+    """T_{2n} is linearly independent (so dim span T_{2n} = delta_n): its exact collocation matrix at delta_n + 5
+    rational points of Omega^alpha has rank delta_n (modulo a 61-bit prime: full rank there implies full rank over Q),
+    n = 1..5 at tan(alpha/4) = 1/2 and n = 1..4 at tan(alpha/4) = 3/4."""
+    detail, ok = {}, True
+    for at, n_max in zip(ALPHA_TS, (5, 4)):
+        for n in range(1, n_max + 1):
+            pts = _domain_points(at, delta(n) + 5)
+            rows = [[hu[0] ** e[0] * hu[1] ** e[1] * hv[0] ** e[2] * hv[1] ** e[3] * hw[0] ** e[4] * hw[1] ** e[5]
+                     for e in (exponents(lb) for lb in united_system(n))] for hu, hv, hw in pts]
+            rank = _rank(rows)
+            detail[f"n={n},t={at}"] = rank
+            ok &= rank == delta(n)
+    return LineResult(ok, how="exact collocation ranks modulo 2^61-1 (full rank mod p proves independence at that "
+                      "alpha), n = 1..5 at tan(alpha/4) = 1/2, n = 1..4 at 3/4", detail=detail)
+
+
+@line_check("sec1_3-univariate-span")
+def univariate_span() -> LineResult:
+    """{A_{2n,i}}_{i=0}^{2n} and {cos(it), sin(it)}_{i=0}^{n} span the same (2n+1)-dimensional space."""
+    detail, ok = {}, True
+    for n in range(1, 6):
+        a = rational_alpha(ALPHA_TS[0])
+        rows_a, rows_f = [], []
+        for k in range(2 * n + 6):
+            pt = boundary_point(ALPHA_TS[0], fmpq(k + 1, 2 * n + 8))
+            rows_a.append([c_const(n, i, a, "exact") * pt["alpha-t"][0] ** (2 * n - i) * pt["t"][0] ** i
+                           for i in range(2 * n + 1)])
+            e = _angle(pt["t"])
+            rows_f.append([q for m in range(n + 1) for q in _cpow(e, m)])
+        ra, rf, rj = _rank(rows_a), _rank(rows_f), _rank([x + y for x, y in zip(rows_a, rows_f)])
+        detail[str(n)] = [ra, rf, rj]
+        ok &= ra == rj == 2 * n + 1 and rf == 2 * n + 1
+    return LineResult(ok, how="exact collocation ranks (A | Fourier) at 2n+6 rational points, n = 1..5",
+                      detail=detail)
+
+
+@line_check("sec1_3-bernstein-limit")
+def bernstein_limit() -> LineResult:
+    """lim_{alpha->0} A_{2n,i}(alpha s) = binom(2n,i) (1-s)^{2n-i} s^i: sin^{2n}(alpha/2) c_{2n,i} -> the numerator at
+    cos = 1, which equals binom(2n, i) (exact, n <= 15); and the value at alpha = 1e-12 (50 digits) is within 1e-20."""
+    exact = all(sum(c_numerator(n, i)) == comb(2 * n, i) for n in range(1, 16) for i in range(2 * n + 1))
+    worst = mpmath.mpf(0)
+    with mpmath.workdps(50):
+        alpha = mpmath.mpf("1e-12")
+        for n in (1, 2, 3, 5):
+            for i in range(2 * n + 1):
+                for s in (mpmath.mpf("0.2"), mpmath.mpf("0.7")):
+                    a_val = (c_const(n, i, alpha, "mp") * mpmath.sin((alpha - alpha * s) / 2) ** (2 * n - i)
+                             * mpmath.sin(alpha * s / 2) ** i)
+                    worst = max(worst, abs(a_val - comb(2 * n, i) * (1 - s) ** (2 * n - i) * s**i))
+    ok = exact and worst < mpmath.mpf("1e-20")
+    return LineResult(ok, how="exact limit of the coefficient polynomial; 50-digit values at alpha = 1e-12",
+                      kind="numeric-evidence", detail={"coefficient_limit_exact": exact, "below_1e-20": bool(ok)})
+
+
+def _a_sum(order: int, n_sub: int, t_alpha: fmpq, pt, first: int, last: int) -> fmpq:
+    """sum_{i=first}^{last} A^alpha_{2 order, i}(t) (A as in eq. univariate_basis, c from the package)."""
+    a = rational_alpha(t_alpha)
+    return sum((c_const(order, i, a, "exact") * pt["alpha-t"][0] ** (2 * order - i) * pt["t"][0] ** i
+                for i in range(first, last + 1)), fmpq(0))
+
+
+@line_check("sec1_3-bernstein-identity")
+def bernstein_identity(sub=lambda n: n) -> LineResult:
+    """Printed A_{2n,0} + A_{2n,1} + A_{2n,2} = 1: false for n >= 2 (exact values); A_{2,0} + A_{2,1} + A_{2,2} = 1
+    holds (order 1), which is what the proof raises to the power n."""
+    printed = all(_a_sum(sub(n), n, at, boundary_point(at, x), 0, 2) == 1 for n in range(1, 5)
+                  for at in ALPHA_TS for x in X_FRACTIONS)
+    corrected = all(_a_sum(1, n, at, boundary_point(at, x), 0, 2) == 1 for n in range(1, 5)
+                    for at in ALPHA_TS for x in X_FRACTIONS)
+    example = _a_sum(2, 2, ALPHA_TS[0], boundary_point(ALPHA_TS[0], X_FRACTIONS[0]), 0, 2)
+    return LineResult(printed, corrected, how="exact values at tan(alpha/4) in {1/2, 3/4}, two points each, n <= 4",
+                      detail={"n2_value_of_printed_sum": str(example)})
+
+
+@line_check("sec1_3-bernstein-power")
+def bernstein_power(sub=lambda n: n) -> LineResult:
+    """Printed sum_{i=0}^{2n} A_{2n,i}(alpha s) = (A_{2n,0}(s) + A_{2n,1}(s) + A_{2n,2}(s))^n = 1: the middle term is
+    not 1 for n >= 2; with order-1 functions (A_{2,k}) both equalities hold, and the expansion of (sum_k A_{2,k}(t))^n
+    groups into A_{2n,i}(t) at the same argument t (the printed argument s of the middle term must be alpha s)."""
+    printed, corrected = True, True
+    for n in range(1, 5):
+        for at in ALPHA_TS:
+            for x in X_FRACTIONS:
+                pt = boundary_point(at, x)
+                left = _a_sum(n, n, at, pt, 0, 2 * n)
+                printed &= left == _a_sum(sub(n), n, at, pt, 0, 2) ** n == 1
+                corrected &= left == _a_sum(1, n, at, pt, 0, 2) ** n == 1
+    # grouping: the X^{2n-i} Y^i coefficient of (c0 X^2 + c1 X Y + c2 Y^2)^n equals c_{2n,i} when c_k = c_{2,k}
+    a = rational_alpha(ALPHA_TS[0])
+    for n in range(1, 6):
+        base = [c_const(1, k, a, "exact") for k in range(3)]
+        acc = [fmpq(1)]
+        for _ in range(n):
+            new = [fmpq(0)] * (len(acc) + 2)
+            for p, q in enumerate(acc):
+                for k, bk in enumerate(base):
+                    new[p + k] += q * bk
+            acc = new
+        corrected &= acc == [c_const(n, i, a, "exact") for i in range(2 * n + 1)]
+    return LineResult(printed, corrected, how="exact values at rational points (n <= 4) and the exact expansion of "
+                      "(sum_k c_{2,k} X^{2-k} Y^k)^n against c_{2n,i} (n <= 5)")
+
+
+@line_check("sec1_3-bernstein-proof-limit")
+def bernstein_proof_limit() -> LineResult:
+    """The three terms inside the limit tend to (1-s)^2, 2(1-s)s, s^2 (50 digits at alpha = 1e-12), using
+    sin(alpha s/2)/sin(alpha/2) -> s and cos(alpha s/2) -> 1."""
+    worst = mpmath.mpf(0)
+    with mpmath.workdps(50):
+        a = mpmath.mpf("1e-12")
+        for s in (mpmath.mpf("0.1"), mpmath.mpf("0.5"), mpmath.mpf("0.9")):
+            sa = mpmath.sin(a / 2)
+            terms = (mpmath.sin((a - a * s) / 2) ** 2 / sa**2,
+                     2 * mpmath.cos(a / 2) / sa**2 * mpmath.sin((a - a * s) / 2) * mpmath.sin(a * s / 2),
+                     mpmath.sin(a * s / 2) ** 2 / sa**2)
+            limits = ((1 - s) ** 2, 2 * (1 - s) * s, s**2)
+            worst = max([worst] + [abs(t - m) for t, m in zip(terms, limits)]
+                        + [abs(mpmath.sin(a * s / 2) / sa - s), abs(mpmath.cos(a * s / 2) - 1)])
+    ok = worst < mpmath.mpf("1e-20")
+    return LineResult(ok, how="50-digit values at alpha = 1e-12, s in {0.1, 0.5, 0.9}", kind="numeric-evidence",
+                      detail={"below_1e-20": bool(ok)})
+
+
+@line_check("sec1_3-bernstein-polynomials")
+def bernstein_polynomials() -> LineResult:
+    """((1-s)^2 + 2(1-s)s + s^2)^n = ((1-s)+s)^{2n} = sum_i B_i^{2n}(s) as polynomials (n = 1..20)."""
+    s = fmpq_poly([0, 1])
+    one_m = 1 - s
+    ok = True
+    for n in range(1, 21):
+        left = (one_m**2 + 2 * one_m * s + s**2) ** n
+        mid = (one_m + s) ** (2 * n)
+        right = sum((comb(2 * n, i) * one_m ** (2 * n - i) * s**i for i in range(2 * n + 1)), fmpq_poly([0]))
+        ok &= left == mid == right
+    return LineResult(ok, how="fmpq_poly identities, n = 1..20", kind="proof", detail={"ok": ok})
+
+
+@line_check("sec1_3-sin-power-leading")
+def sin_power_leading() -> LineResult:
+    """S^j_{j,mu}(0) = j! mu^j (exact Taylor series, j = 1..15, mu in {1/2, 1, 3, 7/5})."""
+    ok = all(sin_power_derivative(j, mu, j) == factorial(j) * mu**j for j in range(1, 16)
+             for mu in (fmpq(1, 2), fmpq(1), fmpq(3), fmpq(7, 5)))
+    return LineResult(ok, how="exact Taylor coefficients", detail={"ok": ok})
+
+
+# -- chain rules and parametrizations ----------------------------------------------------------------------------
+#: printed chain rules: parametrization -> (variable differentiated r-k times, variable differentiated k times)
+PRINTED_CHAIN = {"parametrization_for_partition_of_unity": (1, 2), "parametrization_1_y_0": (1, 2),
+                 "parametrization_2_x_0": (0, 1), "parametrization_3_y_0": (2, 0)}
+
+
+def chain_ok(param: str, printed: tuple[int, int]) -> bool:
+    """The printed d^r/d(param)^r = sum_k C(r,k) (-1)^k d^{r-k}_a d^k_b holds iff the direction of the (affine)
+    parametrization is e_a - e_b; then (d_a - d_b)^r expands binomially (checked as polynomials, r <= 10)."""
+    direction = step_geometry(param)[0]
+    a, b = printed
+    want = [0, 0, 0]
+    want[a], want[b] = 1, -1
+    ctx = fmpz_mpoly_ctx.get(("a", "b"), "lex")
+    da, db = ctx.gens()
+    binom_ok = all((da - db) ** r == sum((comb(r, k) * (-1) ** k * da ** (r - k) * db**k for k in range(r + 1)),
+                                         ctx.from_dict({})) for r in range(11))
+    return tuple(want) == direction and binom_ok
+
+
+def _chain(param: str) -> LineResult:
+    ok = chain_ok(param, PRINTED_CHAIN[param])
+    return LineResult(ok, how="direction vector of the printed affine parametrization; binomial expansion of "
+                      "(d_a - d_b)^r as polynomials (r <= 10)", kind="proof",
+                      detail={"direction": list(step_geometry(param)[0])})
+
+
+@line_check("sec1_3-chain-rule-pu")
+def chain_pu() -> LineResult:
+    return _chain("parametrization_for_partition_of_unity")
+
+
+@line_check("sec1_3-chain-rule-1")
+def chain_1() -> LineResult:
+    return _chain("parametrization_1_y_0")
+
+
+@line_check("sec1_3-chain-rule-2")
+def chain_2() -> LineResult:
+    return _chain("parametrization_2_x_0")
+
+
+@line_check("sec1_3-chain-rule-3")
+def chain_3() -> LineResult:
+    return _chain("parametrization_3_y_0")
+
+
+def param_onto(param: str, y_to=lambda a, x: a - x) -> bool:
+    """The parameter triangle x in [0, alpha], y in [0, y_to(alpha, x)] is mapped into Omega^alpha (grid points,
+    exact) and its vertices onto the vertices of Omega^alpha (an affine bijection of triangles: onto)."""
+    fmap = PARAMS[param][0]
+    a = fmpq(3, 2)
+    grid = all(sum(fmap(a, x, y)) == a and min(fmap(a, x, y)) >= 0
+               for x in (fmpq(k, 8) * a for k in range(9)) for y in (fmpq(m, 8) * y_to(a, x) for m in range(9)))
+    ends = ((fmpq(0), fmpq(0)), (a, fmpq(0)), (fmpq(0), y_to(a, fmpq(0))), (a, y_to(a, a)))
+    corners = {tuple(fmap(a, x, y)) for x, y in ends}  # the parameter triangle's vertices (one listed twice)
+    return grid and corners == {(a, 0, 0), (0, a, 0), (0, 0, a)}
+
+
+def _param(param: str) -> LineResult:
+    ok = param_onto(param)
+    return LineResult(ok, how="exact images of a grid of the parameter triangle and of its vertices (alpha = 3/2)",
+                      kind="proof", detail={"onto": ok})
+
+
+@line_check("sec1_3-param-1")
+def param_1() -> LineResult:
+    return _param("parametrization_1_y_0")
+
+
+@line_check("sec1_3-param-2")
+def param_2() -> LineResult:
+    return _param("parametrization_2_x_0")
+
+
+@line_check("sec1_3-param-3")
+def param_3() -> LineResult:
+    return _param("parametrization_3_y_0")
+
+
+@line_check("sec1_3-param-ranges")
+def param_ranges() -> LineResult:
+    ok = all(param_onto(p) for p in STEP_PARAMS)
+    return LineResult(ok, how="the three parametrizations on x in [0, alpha], y in [0, alpha - x]", kind="proof",
+                      detail={"onto": ok})
+
+
+#: printed: parametrization -> (running variable, the coordinate set to 0 by running variable = 0)
+PRINTED_BOUNDARY = {"parametrization_1_y_0": ("y", 1), "parametrization_2_x_0": ("x", 0),
+                    "parametrization_3_y_0": ("y", 2)}
+
+
+@line_check("sec1_3-boundary-vars")
+def boundary_vars(printed=None) -> LineResult:
+    """Parametrizations 1, 2, 3 are differentiated in y, x, y at y = 0, x = 0, y = 0: there v_1, u_2, w_3 vanish
+    (the edges v = 0, u = 0, w = 0 of the three steps)."""
+    printed = printed or PRINTED_BOUNDARY
+    ok = all(PARAMS[p][1] == printed[p][0] and step_geometry(p)[1] == printed[p][1] for p in STEP_PARAMS)
+    return LineResult(ok, how="the printed maps evaluated at the running parameter 0", kind="proof",
+                      detail={"ok": ok})
+
+
+# ==============================================================================================================
+# The proof of Theorem joint_systems_linear_independence
+# ==============================================================================================================
+def printed_L(n: int) -> set[int]:
+    """eq. linear_combination_union: centre; R, G, B with j = 0..n-1, i = j..2n-1-j."""
+    return centre(n) | dsum("R", n, 0, n - 1) | dsum("G", n, 0, n - 1) | dsum("B", n, 0, n - 1)
+
+
+@line_check("sec1_3-L-set")
+def l_set() -> LineResult:
+    printed = {(n, 0): printed_L(n) for n in range(1, 13)}
+    computed = {(n, 0): set(range(len(united_system(n)))) for n in range(1, 13)}
+    return _set_result(printed, computed, "the printed sums against T_{2n}, n = 1..12", kind="proof")
+
+
+def _proof_sets(printed_fn, computed_fn, rs=lambda n: [0], ns=N_PROOF, corrected_fn=None, kind="exact-evidence"):
+    printed, computed, corrected = {}, {}, {}
+    for n in ns:
+        for r in rs(n):
+            printed[(n, r)] = printed_fn(n, r)
+            computed[(n, r)] = set(computed_fn(n, r))
+            if corrected_fn:
+                corrected[(n, r)] = corrected_fn(n, r)
+    return _set_result(printed, computed, "index sets of the printed sums against the elimination recomputed from "
+                       f"exact derivatives, n = {ns.start}..{ns.stop - 1}", kind=kind,
+                       corrected=corrected if corrected_fn else None)
+
+
+@line_check("sec1_3-Ltilde-set")
+def ltilde_set() -> LineResult:
+    return _proof_sets(lambda n, r: centre(n) | dsum("R", n, 1, n - 1) | isum("G", n, 0, 1, 2 * n - 1)
+                       | dsum("G", n, 1, n - 1) | dsum("B", n, 0, n - 1), lambda n, r: alive_after(n, 0, 0))
+
+
+@line_check("sec1_3-Lhat-set")
+def lhat_set() -> LineResult:
+    return _proof_sets(lambda n, r: centre(n) | dsum("R", n, 1, n - 1) | dsum("G", n, 1, n - 1)
+                       | isum("B", n, 0, 1, 2 * n - 1) | dsum("B", n, 1, n - 1), lambda n, r: alive_after(n, 0, 1))
+
+
+@line_check("sec1_3-L0-set")
+def l0_set() -> LineResult:
+    return _proof_sets(lambda n, r: centre(n) | dsum("R", n, 1, n - 1) | dsum("G", n, 1, n - 1)
+                       | dsum("B", n, 1, n - 1), lambda n, r: alive_after(n, 0, 2))
+
+
+def printed_Lr(n: int, r: int) -> set[int]:
+    """eq. induction_hypothesis_for_linear_independence (L_r): centre; R, G, B with j = r+1..n-1."""
+    return centre(n) | dsum("R", n, r + 1, n - 1) | dsum("G", n, r + 1, n - 1) | dsum("B", n, r + 1, n - 1)
+
+
+@line_check("sec1_3-Lr-set")
+def lr_set() -> LineResult:
+    return _proof_sets(printed_Lr, lambda n, r: alive_after(n, r, 2), rs=lambda n: range(n))
+
+
+@line_check("sec1_3-Lr1-set")
+def lr1_set() -> LineResult:
+    return _proof_sets(lambda n, r: centre(n) | dsum("R", n, r + 2, n - 1) | dsum("G", n, r + 2, n - 1)
+                       | dsum("B", n, r + 2, n - 1), lambda n, r: alive_after(n, r + 1, 2), rs=lambda n: range(n - 1))
+
+
+@line_check("sec1_3-level-zeroed")
+def level_zeroed() -> LineResult:
+    """The constants {rho, gamma, beta}_{2n,2n-i,r+1}, i = r+1..2n-1-(r+1), are those set to 0 by the step r -> r+1."""
+    return _proof_sets(lambda n, r: {lab(c, n, i, r + 1) for c in "RGB" for i in range(r + 1, 2 * n - 1 - (r + 1) + 1)},
+                       lambda n, r: alive_after(n, r, 2) - alive_after(n, r + 1, 2), rs=lambda n: range(n - 1))
+
+
+@line_check("sec1_3-Ltilde-r-set")
+def ltilde_r_set() -> LineResult:
+    return _proof_sets(lambda n, r: centre(n) | dsum("R", n, r + 2, n - 1)
+                       | isum("G", n, r + 1, r + 2, 2 * n - 1 - (r + 1)) | dsum("G", n, r + 2, n - 1)
+                       | dsum("B", n, r + 1, n - 1),
+                       lambda n, r: alive_after(n, r + 1, 0), rs=lambda n: range(n - 1))
+
+
+@line_check("sec1_3-Lhat-r-set")
+def lhat_r_set() -> LineResult:
+    return _proof_sets(lambda n, r: centre(n) | dsum("R", n, r + 2, n - 1) | dsum("G", n, r + 2, n - 1)
+                       | isum("B", n, r + 1, r + 2, 2 * n - 1 - (r + 1)) | dsum("B", n, r + 2, n - 1),
+                       lambda n, r: alive_after(n, r + 1, 1), rs=lambda n: range(n - 1))
+
+
+@line_check("sec1_3-Ln2-set")
+def ln2_set() -> LineResult:
+    return _proof_sets(lambda n, r: centre(n) | {lab(c, n, i, n - 1) for c in "RGB" for i in range(n - 1, n + 1)},
+                       lambda n, r: alive_after(n, n - 2, 2), ns=range(2, N_PROOF.stop))
+
+
+@line_check("sec1_3-Ln1-set")
+def ln1_set() -> LineResult:
+    """L_{n-1} = rho_{2n,n,n} R_{2n,n,n}, and R_{2n,n,n} is not the zero function (so rho_{2n,n,n} = 0)."""
+    res = _proof_sets(lambda n, r: centre(n), lambda n, r: alive_after(n, n - 1, 2))
+    pt = _domain_points(ALPHA_TS[0], 1)[0]
+    nonzero = all(pt[0][0] ** n * pt[1][0] ** n * pt[2][0] ** n != 0 for n in N_PROOF)
+    res.holds_as_printed &= nonzero
+    res.detail["centre_nonzero_at_a_point"] = nonzero
+    return res
+
+
+@line_check("sec1_3-elimination-orders")
+def elimination_orders() -> LineResult:
+    """The derivative orders the proof uses: level j (j = 0..n-1) is eliminated by derivatives of order j, in the
+    order parametrization 1, 2, 3; orders 0..n-1 leave only the centre, and an order-n step would remove it too."""
+    ok = True
+    for n in N_PROOF:
+        labels = united_system(n)
+        for r, _param, _before, gone in elimination(n):
+            ok &= all(labels[k].j == r and not labels[k].is_centre for k in gone)
+        ok &= alive_after(n, n - 1, 2) == frozenset({0})
+        ok &= survivors(n, STEP_PARAMS[0], n, frozenset({0})) == frozenset({0})
+    return LineResult(ok, how=f"elimination recomputed from exact derivatives, n = 1..{N_PROOF.stop - 1}",
+                      detail={"ok": ok})
+
+
+# -- value lines: linear forms in the combining constants -----------------------------------------------------
+def _computed_form(n: int, param: str, r: int, alive, pt) -> dict[int, fmpq]:
+    labels = united_system(n)
+    out = {k: step_value(exponents(labels[k]), param, r, pt) for k in alive}
+    return {k: v for k, v in out.items() if v != 0}
+
+
+def _compare_forms(printed_fn, computed_fn, ns=N_PROOF, rs=lambda n: [0], corrected_fn=None) -> LineResult:
+    """printed_fn(n, r, pt) / computed_fn(n, r, pt): {function index: value multiplying its constant}."""
+    bad, bad_corr, cases = [], [], 0
+    for n in ns:
+        for r in rs(n):
+            for at in ALPHA_TS:
+                for x in X_FRACTIONS:
+                    pt = boundary_point(at, x)
+                    pt["n"], pt["alpha_t"] = n, at
+                    comp = computed_fn(n, r, pt)
+                    cases += 1
+                    pr = {k: v for k, v in printed_fn(n, r, pt).items() if v != 0}
+                    if pr != comp:
+                        bad.append({"n": n, "r": r, "printed_only": _names(n, set(pr) - set(comp)),
+                                    "computed_only": _names(n, set(comp) - set(pr)),
+                                    "values_differ": _names(n, {k for k in set(pr) & set(comp) if pr[k] != comp[k]})})
+                    if corrected_fn is not None:
+                        co = {k: v for k, v in corrected_fn(n, r, pt).items() if v != 0}
+                        bad_corr.append(co != comp)
+    detail = {"cases": cases, "mismatches": len(bad), "first_mismatches": bad[:2]}
+    corr = None
+    if corrected_fn is not None:
+        corr = not any(bad_corr)
+        detail["corrected_mismatches"] = sum(bad_corr)
+    return LineResult(not bad, corr, how="printed terms (as coefficients of the combining constants) against exact "
+                      f"derivatives along the parametrization, n = {ns.start}..{ns.stop - 1}, tan(alpha/4) in "
+                      "{1/2, 3/4}, two boundary points each", detail=detail)
+
+
+def _sn(pt, var: str, k: int) -> fmpq:
+    """sin^k of half the boundary angle: var 't' or 'alpha-t'."""
+    return pt[var][0] ** k
+
+
+def _c(pt, i: int) -> fmpq:
+    return c_const(pt["n"], i, rational_alpha(pt["alpha_t"]), "exact")
+
+
+def _A(pt, k: int) -> fmpq:
+    """A_{2n,k}(t) (eq. univariate_basis) at the boundary parameter t."""
+    n = pt["n"]
+    return _c(pt, k) * _sn(pt, "alpha-t", 2 * n - k) * _sn(pt, "t", k)
+
+
+# order-0 step, parametrization 1 (x = t, v = 0, w = alpha - t)
+def _r0p1_terms(n, r, pt):
+    out = {}
+    for i in range(0, 2 * n):  # R_{2n,2n-i,0}(x, 0, alpha - x), evaluated as functions
+        e = exponents(BasisLabel("R", n, i, 0))
+        out[lab("R", n, i, 0)] = (pt["t"][0] ** e[0] * pt["t"][1] ** e[1] * (1 if e[2] == 0 else 0)
+                                  * pt["alpha-t"][0] ** e[4] * pt["alpha-t"][1] ** e[5])
+    e = exponents(BasisLabel("G", n, 0, 0))
+    out[lab("G", n, 0, 0)] = (pt["t"][0] ** e[0] * pt["t"][1] ** e[1] * (1 if e[2] == 0 else 0)
+                              * pt["alpha-t"][0] ** e[4] * pt["alpha-t"][1] ** e[5])
+    return out
+
+
+def _r0p1_cform(n, r, pt):
+    """sum_{i=0}^{2n} rho'_{2n,2n-i,0} c_{2n,2n-i} sin^{2n-i}(x/2) sin^i((alpha-x)/2) with the printed rho'."""
+    out = {}
+    for i in range(0, 2 * n + 1):
+        key, div = (lab("R", n, i, 0), _c(pt, 2 * n - i)) if i <= 2 * n - 1 else (lab("G", n, 0, 0), _c(pt, 0))
+        out[key] = _c(pt, 2 * n - i) / div * _sn(pt, "t", 2 * n - i) * _sn(pt, "alpha-t", i)
+    return out
+
+
+def _r0p1_aform(n, r, pt):
+    out = {}
+    for i in range(0, 2 * n + 1):
+        key, div = (lab("R", n, i, 0), _c(pt, 2 * n - i)) if i <= 2 * n - 1 else (lab("G", n, 0, 0), _c(pt, 0))
+        # A_{2n,2n-i}(x): the parameter of parametrization 1 at y = 0 is x = t
+        out[key] = _A_at(pt, 2 * n - i, "t") / div
+    return out
+
+
+def _A_at(pt, k: int, var: str) -> fmpq:
+    """A_{2n,k} at the boundary coordinate named var ('t' is the parameter; 'alpha-t' its complement)."""
+    n = pt["n"]
+    other = "alpha-t" if var == "t" else "t"
+    return _c(pt, k) * _sn(pt, other, 2 * n - k) * _sn(pt, var, k)
+
+
+def _computed_step(param_index: int, order=lambda r: r, alive_fn=None):
+    def fn(n, r, pt):
+        alive = alive_fn(n, r) if alive_fn else alive_before(n, r, param_index)
+        return _computed_form(n, STEP_PARAMS[param_index], order(r), alive, pt)
+    return fn
+
+
+@line_check("sec1_3-r0-p1-terms")
+def r0p1_terms() -> LineResult:
+    return _compare_forms(_r0p1_terms, _computed_step(0))
+
+
+@line_check("sec1_3-r0-p1-cform")
+def r0p1_cform() -> LineResult:
+    return _compare_forms(_r0p1_cform, _computed_step(0))
+
+
+@line_check("sec1_3-r0-p1-aform")
+def r0p1_aform() -> LineResult:
+    return _compare_forms(_r0p1_aform, _computed_step(0))
+
+
+@line_check("sec1_3-r0-p1-omitted")
+def r0p1_omitted() -> LineResult:
+    """All functions of T_{2n} other than R_{2n,2n-i,0} (i < 2n) and G_{2n,2n,0} contain sin(v/2) to a power >= 1."""
+    ok = True
+    for n in range(1, 13):
+        kept = dsum("R", n, 0, 0) | {lab("G", n, 0, 0)}
+        ok &= all((exponents(lb)[2] >= 1) == (k not in kept) for k, lb in enumerate(united_system(n)))
+    return LineResult(ok, how="exponent of sin(v/2) in every function of T_{2n}, n = 1..12", kind="proof",
+                      detail={"ok": ok})
+
+
+# order-0 step, parametrization 2 (u = 0, v = alpha - y, w = y; t = y)
+def _r0p2_terms(n, r, pt):
+    out = {}
+    for lb_color, i in [("G", i) for i in range(1, 2 * n)] + [("B", 0)]:
+        e = exponents(BasisLabel(lb_color, n, i, 0))
+        out[lab(lb_color, n, i, 0)] = ((1 if e[0] == 0 else 0) * pt["alpha-t"][0] ** e[2] * pt["alpha-t"][1] ** e[3]
+                                       * pt["t"][0] ** e[4] * pt["t"][1] ** e[5])
+    return out
+
+
+def _r0p2_aform(n, r, pt):
+    out = {}
+    for i in range(1, 2 * n + 1):
+        key, div = (lab("G", n, i, 0), _c(pt, 2 * n - i)) if i <= 2 * n - 1 else (lab("B", n, 0, 0), _c(pt, 0))
+        out[key] = _A_at(pt, 2 * n - i, "t") / div
+    return out
+
+
+@line_check("sec1_3-r0-p2-terms")
+def r0p2_terms() -> LineResult:
+    return _compare_forms(_r0p2_terms, _computed_step(1))
+
+
+@line_check("sec1_3-r0-p2-aform")
+def r0p2_aform() -> LineResult:
+    return _compare_forms(_r0p2_aform, _computed_step(1))
+
+
+@line_check("sec1_3-r0-p2-omitted")
+def r0p2_omitted() -> LineResult:
+    """The functions of L-tilde discarded at x = 0 all contain sin(u/2) to a power >= 1."""
+    ok = True
+    for n in range(1, 13):
+        kept = isum("G", n, 0, 1, 2 * n - 1) | {lab("B", n, 0, 0)}
+        alive = centre(n) | dsum("R", n, 1, n - 1) | isum("G", n, 0, 1, 2 * n - 1) | dsum("G", n, 1, n - 1) \
+            | dsum("B", n, 0, n - 1)
+        ok &= all((exponents(united_system(n)[k])[0] >= 1) == (k not in kept) for k in alive)
+    return LineResult(ok, how="exponent of sin(u/2) in the functions of L-tilde, n = 1..12", kind="proof",
+                      detail={"ok": ok})
+
+
+# order-0 step, parametrization 3 (u = alpha - x, v = x, w = 0; t = x)
+def _r0p3_terms(n, r, pt):
+    out = {}
+    for i in range(1, 2 * n):
+        e = exponents(BasisLabel("B", n, i, 0))
+        out[lab("B", n, i, 0)] = (pt["alpha-t"][0] ** e[0] * pt["alpha-t"][1] ** e[1] * pt["t"][0] ** e[2]
+                                  * pt["t"][1] ** e[3] * (1 if e[4] == 0 else 0))
+    return out
+
+
+def _r0p3_aform(n, r, pt):
+    return {lab("B", n, i, 0): _A_at(pt, 2 * n - i, "t") / _c(pt, 2 * n - i) for i in range(1, 2 * n)}
+
+
+@line_check("sec1_3-r0-p3-terms")
+def r0p3_terms() -> LineResult:
+    return _compare_forms(_r0p3_terms, _computed_step(2))
+
+
+@line_check("sec1_3-r0-p3-aform")
+def r0p3_aform() -> LineResult:
+    return _compare_forms(_r0p3_aform, _computed_step(2))
+
+
+def _a_system_rank(n: int, first: int, last: int) -> bool:
+    """{A_{2n,2n-i}}_{i=first}^{last} is linearly independent: exact collocation rank."""
+    rows = []
+    for k in range(last - first + 3):
+        pt = boundary_point(ALPHA_TS[0], fmpq(k + 1, last - first + 5))
+        pt["n"], pt["alpha_t"] = n, ALPHA_TS[0]
+        rows.append([_A_at(pt, 2 * n - i, "t") for i in range(first, last + 1)])
+    return _rank(rows) == last - first + 1
+
+
+@line_check("sec1_3-A-independent")
+def a_independent() -> LineResult:
+    """The subsystems {A_{2n,2n-i}} used in the order-0 step (i = 0..2n, 1..2n, 1..2n-1) are linearly independent."""
+    ok = all(_a_system_rank(n, f, last) for n in range(1, 6) for f, last in ((0, 2 * n), (1, 2 * n), (1, 2 * n - 1)))
+    return LineResult(ok, how="exact collocation ranks, n = 1..5", detail={"ok": ok})
+
+
+# -- the step r -> r+1 -------------------------------------------------------------------------------------------
+PARAM1 = "parametrization_1_y_0"
+
+
+def _kterm_computed(n, r, pt, k, param=PARAM1, alive_fn=None):
+    """d^{r+1}/d(zero var)^{r+1-k} d(other var)^k of every function of L_r at the boundary (no binomial, no sign)."""
+    labels = united_system(n)
+    alive = alive_fn(n, r) if alive_fn else alive_before(n, r + 1, 0)
+    out = {q: mixed_partial(exponents(labels[q]), param, r + 1 - k, k, pt) for q in alive}
+    return {q: v for q, v in out.items() if v != 0}
+
+
+def _dk(pt, var: str, s: int, c: int, k: int) -> fmpq:
+    """d^k/d(var)^k sin^s(var/2) cos^c(var/2) at the boundary point."""
+    return _factor_derivative(s, c, k, pt[var])
+
+
+def _M(i, j, z):
+    return mixed_derivative(i, HALF, j, HALF, z)
+
+
+def _S(j, z):
+    return sin_power_derivative(j, HALF, z)
+
+
+# rows of the printed k-th term (parametrization 1: u_1 = x = t, v_1 = 0, w_1 = alpha - t), written for the lowest
+# level m (printed: m = r+1) and the orders z in v_1 (printed: z = r+1-k) and k in w_1, so that the printed factor
+# structure can be compared with the exact mixed partials at every order, not only where most of them vanish
+KTERM_ROWS = {
+    "centre": lambda n, m, z, k, pt: {lab("R", n, n, n): _sn(pt, "t", n) * _S(n, z) * _dk(pt, "alpha-t", n, 0, k)},
+    "R-low": lambda n, m, z, k, pt: {lab("R", n, i, j): _sn(pt, "t", 2 * n - i) * _dk(pt, "alpha-t", i, 0, k)
+                                     * _M(i - j, j, z) for j in range(m, n) for i in range(j, n + 1)},
+    "R-high": lambda n, m, z, k, pt: {lab("R", n, i, j): _dk(pt, "alpha-t", i, 0, k) * _sn(pt, "t", 2 * n - i)
+                                      * _M(2 * n - i - j, j, z) for j in range(m, n)
+                                      for i in range(n + 1, 2 * n - 1 - j + 1)},
+    "G-low": lambda n, m, z, k, pt: {lab("G", n, i, j): _dk(pt, "alpha-t", 2 * n - i, 0, k) * _S(i, z)
+                                     * pt["t"][1] ** (i - j) * pt["t"][0] ** j
+                                     for j in range(m, n) for i in range(j, n + 1)},
+    "G-high": lambda n, m, z, k, pt: {lab("G", n, i, j): _S(i, z) * _dk(pt, "alpha-t", 2 * n - i, 0, k)
+                                      * pt["t"][1] ** (2 * n - i - j) * pt["t"][0] ** j
+                                      for j in range(m, n) for i in range(n + 1, 2 * n - 1 - j + 1)},
+    "B-low": lambda n, m, z, k, pt: {lab("B", n, i, j): _S(2 * n - i, z) * _sn(pt, "t", i)
+                                     * _dk(pt, "alpha-t", j, i - j, k) for j in range(m, n) for i in range(j, n + 1)},
+    "B-high": lambda n, m, z, k, pt: {lab("B", n, i, j): _sn(pt, "t", i) * _S(2 * n - i, z)
+                                      * _dk(pt, "alpha-t", j, 2 * n - i - j, k) for j in range(m, n)
+                                      for i in range(n + 1, 2 * n - 1 - j + 1)},
+}
+
+
+def _row_members(n: int, r: int, row: str, rows=None) -> set[int]:
+    pt = boundary_point(ALPHA_TS[0], X_FRACTIONS[0])
+    pt["n"], pt["alpha_t"] = n, ALPHA_TS[0]
+    return set((rows or KTERM_ROWS)[row](n, r + 1, 0, 0, pt))
+
+
+def kterm_row_check(row: str, rows=None) -> LineResult:
+    """One row of the printed k-th term: for each of its functions the printed product of factors equals the exact
+    mixed partial d^z/dv_1^z d^k/dw_1^k of that function at y = 0, for the printed orders z = r+1-k (k = 0..r+1) and,
+    to test the factor structure where it does not vanish, for all z = 0..n+2, k = 0..2; the rows together list
+    exactly the functions of L_r."""
+    rows = rows or KTERM_ROWS
+    bad, cases, nonzero = [], 0, 0
+    for n in range(2, N_PROOF.stop):
+        labels = united_system(n)
+        for r in range(n - 1):
+            covered = set().union(*(_row_members(n, r, w, rows) for w in rows))
+            if covered != set(alive_before(n, r + 1, 0)):
+                bad.append({"n": n, "r": r, "rows_do_not_cover_L_r": True})
+            at = ALPHA_TS[r % 2]
+            pt = boundary_point(at, X_FRACTIONS[n % 2])
+            pt["n"], pt["alpha_t"] = n, at
+            orders = {(r + 1 - k, k) for k in range(r + 2)} | {(z, k) for z in range(n + 3) for k in range(3)}
+            for z, k in sorted(orders):
+                for q, val in rows[row](n, r + 1, z, k, pt).items():
+                    cases += 1
+                    exact = mixed_partial(exponents(labels[q]), PARAM1, z, k, pt)
+                    nonzero += exact != 0
+                    if val != exact:
+                        bad.append({"n": n, "r": r, "z": z, "k": k, "function": labels[q].paper})
+    return LineResult(not bad, how="each printed factor product against the exact mixed partial of its function, "
+                      f"n = 2..{N_PROOF.stop - 1}, r = 0..n-2, orders z = r+1-k and z = 0..n+2, k = 0..2",
+                      detail={"cases": cases, "nonzero_cases": nonzero, "mismatches": len(bad),
+                              "first_mismatches": bad[:3]})
+
+
+for _row in KTERM_ROWS:
+    line_check(f"sec1_3-kterm-p1-{_row}")(lambda _row=_row: kterm_row_check(_row))
+
+
+def _p1_k0(n, r, pt):
+    """The printed k = 0 value: S^{r+1}_{r+1}(0) (sum_{i=r+1}^{n} rho sin^{2n-i}(u/2) sin^i(w/2)
+    + sum_{i=n+1}^{2n-1-(r+1)} rho sin^i(w/2) sin^{2n-i}(u/2)
+    + gamma_{2n,2n-(r+1),r+1} sin^{2n-(r+1)}(w/2) sin^{r+1}(u/2))."""
+    s = _S(r + 1, r + 1)
+    out = {lab("R", n, i, r + 1): s * _sn(pt, "t", 2 * n - i) * _sn(pt, "alpha-t", i) for i in range(r + 1, n + 1)}
+    out |= {lab("R", n, i, r + 1): s * _sn(pt, "alpha-t", i) * _sn(pt, "t", 2 * n - i)
+            for i in range(n + 1, 2 * n - 1 - (r + 1) + 1)}
+    out[lab("G", n, r + 1, r + 1)] = s * _sn(pt, "alpha-t", 2 * n - (r + 1)) * _sn(pt, "t", r + 1)
+    return out
+
+
+@line_check("sec1_3-r-p1-k0")
+def rp1_k0() -> LineResult:
+    return _compare_forms(_p1_k0, lambda n, r, pt: _kterm_computed(n, r, pt, 0), ns=range(2, N_PROOF.stop),
+                          rs=lambda n: range(n - 1))
+
+
+def _kpos_check(param: str, alive_fn) -> LineResult:
+    bad, cases = [], 0
+    for n in range(2, N_PROOF.stop):
+        for r in range(n - 1):
+            for at in ALPHA_TS:
+                for x in X_FRACTIONS:
+                    pt = boundary_point(at, x)
+                    for k in range(1, r + 2):
+                        cases += 1
+                        if _kterm_computed(n, r, pt, k, param, alive_fn):
+                            bad.append({"n": n, "r": r, "k": k})
+    return LineResult(not bad, how="every mixed partial with k >= 1 of every function of the equality, exactly",
+                      detail={"cases": cases, "mismatches": len(bad), "first_mismatches": bad[:3]})
+
+
+@line_check("sec1_3-r-p1-kpos")
+def rp1_kpos() -> LineResult:
+    return _kpos_check(PARAM1, lambda n, r: alive_before(n, r + 1, 0))
+
+
+def _rho_prime(n, r, pt, i):
+    """The printed rho'_{2n,2n-i,r+1}: (constant's function index, divisor)."""
+    if r + 1 <= i <= 2 * n - 1 - (r + 1):
+        return lab("R", n, i, r + 1), _c(pt, 2 * n - i)
+    if i == 2 * n - (r + 1):
+        return lab("G", n, r + 1, r + 1), _c(pt, 2 * n - (r + 1))
+    raise ValueError(f"rho' undefined for i = {i}")
+
+
+def _p1_aform(upper):
+    def fn(n, r, pt):
+        s = _S(r + 1, r + 1)
+        out = {}
+        for i in range(r + 1, upper(n, r) + 1):
+            key, div = _rho_prime(n, r, pt, i)
+            out[key] = s * _A_at(pt, 2 * n - i, "t") / div
+        return out
+    return fn
+
+
+PRINTED_P1_UPPER = (lambda n, r: 2 * n - 1 - (r + 1))  # sum_{i=r+1}^{2n-1-(r+1)} as printed
+CORRECTED_P1_UPPER = (lambda n, r: 2 * n - (r + 1))
+
+
+@line_check("sec1_3-r-p1-aform")
+def rp1_aform(upper=PRINTED_P1_UPPER) -> LineResult:
+    """Printed S^{r+1}_{r+1}(0) sum_{i=r+1}^{2n-1-(r+1)} rho' A_{2n,2n-i}(x) misses the term i = 2n-(r+1) (the gamma
+    term that rho' defines); with the upper bound 2n-(r+1) it equals the computed derivative."""
+    return _compare_forms(_p1_aform(upper), lambda n, r, pt: _kterm_computed(n, r, pt, 0), ns=range(2, N_PROOF.stop),
+                          rs=lambda n: range(n - 1), corrected_fn=_p1_aform(CORRECTED_P1_UPPER))
+
+
+@line_check("sec1_3-r-p1-rho-prime")
+def rp1_rho_prime() -> LineResult:
+    """With the printed rho' (the i = 2n-(r+1) branch divides by c_{2n,2n-(r+1)}) the A-form reproduces the
+    substituted k = 0 value term by term (over the full range r+1..2n-(r+1) that rho' is defined on); the branch
+    is right because c_{2n,r+1} = c_{2n,2n-(r+1)} (eq. symmetry_of_Sanchez_Reyes_constants)."""
+    return _compare_forms(_p1_aform(CORRECTED_P1_UPPER), _p1_k0, ns=range(2, N_PROOF.stop), rs=lambda n: range(n - 1))
+
+
+def _computed_a_indices(n: int, r: int) -> set[int]:
+    """Indices i of the A_{2n,2n-i} in the computed k = 0 value of parametrization 1 (matched through A/c)."""
+    pt = boundary_point(ALPHA_TS[0], X_FRACTIONS[0])
+    pt["n"], pt["alpha_t"] = n, ALPHA_TS[0]
+    comp = _kterm_computed(n, r, pt, 0)
+    s = _S(r + 1, r + 1)
+    found = set()
+    for val in comp.values():
+        hits = [i for i in range(2 * n + 1) if val == s * _A_at(pt, 2 * n - i, "t") / _c(pt, 2 * n - i)]
+        found |= set(hits[:1])
+    return found
+
+
+@line_check("sec1_3-r-p1-asystem")
+def rp1_asystem(upper=PRINTED_P1_UPPER) -> LineResult:
+    """The functions A_{2n,2n-i} whose independence the step needs are i = r+1..2n-(r+1) (computed); printed:
+    i = r+1..2n-1-(r+1)."""
+    bad, bad_c = [], []
+    for n in range(2, N_PROOF.stop):
+        for r in range(n - 1):
+            comp = _computed_a_indices(n, r)
+            if set(range(r + 1, upper(n, r) + 1)) != comp:
+                bad.append({"n": n, "r": r, "computed": sorted(comp)})
+            if set(range(r + 1, CORRECTED_P1_UPPER(n, r) + 1)) != comp:
+                bad_c.append((n, r))
+    return LineResult(not bad, not bad_c, how="the A_{2n,2n-i} present in the exact k = 0 value",
+                      detail={"mismatches": len(bad), "first_mismatches": bad[:2], "corrected_mismatches": len(bad_c)})
+
+
+def _zeroed_check(computed_fn, printed_level, corrected_level, i_range, color, alias) -> LineResult:
+    """Constants forced to 0 by a step: the printed primed constants of level printed_level(n, r), i in i_range,
+    against the computed ones.  A primed constant of level L and index i names color_{2n,2n-i,L} for
+    L <= i <= 2n-1-L and, as in the definitions of rho', gamma', alias_{2n,2n-L,L} for i = 2n-L; any other (n, L, i)
+    names a constant that does not exist (a mismatch)."""
+    bad, bad_c = [], []
+    for n in range(2, N_PROOF.stop):
+        for r in range(n - 1):
+            comp = set(computed_fn(n, r))
+
+            def named(level, n=n, r=r):
+                out = set()
+                for i in i_range(n, r):
+                    if level <= i <= 2 * n - 1 - level:
+                        out.add(lab(color, n, i, level))
+                    elif alias and i == 2 * n - level:
+                        out.add(lab(alias, n, level, level))
+                    else:
+                        out.add(-1 - i)
+                return out
+            if named(printed_level(n, r)) != comp:
+                bad.append({"n": n, "r": r, "computed": _names(n, comp)})
+            if named(corrected_level(n, r)) != comp:
+                bad_c.append((n, r))
+    return LineResult(not bad, not bad_c, how="constants removed by the recomputed step against the printed ones, "
+                      f"n = 2..{N_PROOF.stop - 1}", detail={"mismatches": len(bad), "first_mismatches": bad[:2],
+                                                           "corrected_mismatches": len(bad_c)})
+
+
+@line_check("sec1_3-r-p1-zeroed")
+def rp1_zeroed(level=lambda n, r: n - 1) -> LineResult:
+    """Printed rho'_{2n,2n-i,n-1} = 0, i = r+1..2n-(r+1); the step zeroes the level-(r+1) constants (rho' of level r+1,
+    its last one being gamma_{2n,2n-(r+1),r+1})."""
+    return _zeroed_check(lambda n, r: alive_before(n, r + 1, 0) - alive_after(n, r + 1, 0), level,
+                         lambda n, r: r + 1, lambda n, r: range(r + 1, 2 * n - (r + 1) + 1), "R", "G")
+
+
+# parametrization 2 (u = 0 is the zero variable, v = alpha - y the other, w = y = t fixed)
+PARAM2 = "parametrization_2_x_0"
+
+
+def _p2_k0(n, r, pt):
+    s = _S(r + 1, r + 1)
+    out = {lab("G", n, i, r + 1): s * _sn(pt, "t", 2 * n - i) * _sn(pt, "alpha-t", i) for i in range(r + 2, n + 1)}
+    out |= {lab("G", n, i, r + 1): s * _sn(pt, "alpha-t", i) * _sn(pt, "t", 2 * n - i)
+            for i in range(n + 1, 2 * n - 1 - (r + 1) + 1)}
+    out[lab("B", n, r + 1, r + 1)] = s * _sn(pt, "alpha-t", 2 * n - (r + 1)) * _sn(pt, "t", r + 1)
+    return out
+
+
+def _p2_alive(n, r):
+    return alive_before(n, r + 1, 1)
+
+
+@line_check("sec1_3-r-p2-k0")
+def rp2_k0() -> LineResult:
+    return _compare_forms(_p2_k0, lambda n, r, pt: _kterm_computed(n, r, pt, 0, PARAM2, _p2_alive),
+                          ns=range(2, N_PROOF.stop), rs=lambda n: range(n - 1))
+
+
+@line_check("sec1_3-r-p2-kpos")
+def rp2_kpos() -> LineResult:
+    return _kpos_check(PARAM2, _p2_alive)
+
+
+def _gamma_prime(n, r, pt, i):
+    if r + 2 <= i <= 2 * n - 1 - (r + 1):
+        return lab("G", n, i, r + 1), _c(pt, 2 * n - i)
+    if i == 2 * n - (r + 1):
+        return lab("B", n, r + 1, r + 1), _c(pt, 2 * n - (r + 1))
+    raise ValueError(f"gamma' undefined for i = {i}")
+
+
+def _p2_aform(n, r, pt):
+    s = _S(r + 1, r + 1)
+    out = {}
+    for i in range(r + 2, 2 * n - (r + 1) + 1):
+        key, div = _gamma_prime(n, r, pt, i)
+        out[key] = s * _A_at(pt, 2 * n - i, "t") / div
+    return out
+
+
+@line_check("sec1_3-r-p2-aform")
+def rp2_aform() -> LineResult:
+    return _compare_forms(_p2_aform, lambda n, r, pt: _kterm_computed(n, r, pt, 0, PARAM2, _p2_alive),
+                          ns=range(2, N_PROOF.stop), rs=lambda n: range(n - 1))
+
+
+@line_check("sec1_3-r-p2-asystem")
+def rp2_asystem() -> LineResult:
+    """{A_{2n,2n-i}}_{i=r+2}^{2n-(r+1)} is exactly the system of the computed value, and it is independent."""
+    ok = True
+    for n in range(2, N_PROOF.stop):
+        for r in range(n - 1):
+            pt = boundary_point(ALPHA_TS[0], X_FRACTIONS[0])
+            pt["n"], pt["alpha_t"] = n, ALPHA_TS[0]
+            comp = _kterm_computed(n, r, pt, 0, PARAM2, _p2_alive)
+            s = _S(r + 1, r + 1)
+            found = {i for val in comp.values() for i in range(2 * n + 1)
+                     if val == s * _A_at(pt, 2 * n - i, "t") / _c(pt, 2 * n - i)}
+            ok &= found == set(range(r + 2, 2 * n - (r + 1) + 1)) and _a_system_rank(n, r + 2, 2 * n - (r + 1))
+    return LineResult(ok, how="A functions present in the exact value; exact collocation rank", detail={"ok": ok})
+
+
+@line_check("sec1_3-r-p2-zeroed")
+def rp2_zeroed(level=lambda n, r: n - 1) -> LineResult:
+    """Printed gamma'_{2n,2n-i,n-1} = 0, i = r+2..2n-(r+1); the step zeroes gamma' of level r+1."""
+    return _zeroed_check(lambda n, r: alive_before(n, r + 1, 1) - alive_after(n, r + 1, 1), level,
+                         lambda n, r: r + 1, lambda n, r: range(r + 2, 2 * n - (r + 1) + 1), "G", "B")
+
+
+# parametrization 3 (w = 0, u = alpha - x the other, v = x = t fixed)
+PARAM3 = "parametrization_3_y_0"
+
+
+def _p3_alive(n, r):
+    return alive_before(n, r + 1, 2)
+
+
+def _p3_aform(n, r, pt):
+    s = _S(r + 1, r + 1)
+    return {lab("B", n, i, r + 1): s * _A_at(pt, 2 * n - i, "t") / _c(pt, 2 * n - i)
+            for i in range(r + 2, 2 * n - 1 - (r + 1) + 1)}
+
+
+@line_check("sec1_3-r-p3-aform")
+def rp3_aform() -> LineResult:
+    return _compare_forms(_p3_aform, lambda n, r, pt: _kterm_computed(n, r, pt, 0, PARAM3, _p3_alive),
+                          ns=range(2, N_PROOF.stop), rs=lambda n: range(n - 1))
+
+
+@line_check("sec1_3-r-p3-kpos")
+def rp3_kpos() -> LineResult:
+    return _kpos_check(PARAM3, _p3_alive)
+
+
+@line_check("sec1_3-r-p3-zeroed")
+def rp3_zeroed() -> LineResult:
+    """beta'_{2n,2n-i,r+1} = 0, i = r+2..2n-1-(r+1): exactly the constants the step removes."""
+    return _zeroed_check(lambda n, r: alive_before(n, r + 1, 2) - alive_after(n, r + 1, 2), lambda n, r: r + 1,
+                         lambda n, r: r + 1, lambda n, r: range(r + 2, 2 * n - 1 - (r + 1) + 1), "B", None)
+
+
+@line_check("sec1_3-fig-n4-caption")
+def fig_n4_caption(order: int = 4) -> LineResult:
+    """Fig. derivative_scheme_n_4 (n = 4, 4th-order mixed partials under parametrization_for_partition_of_unity at
+    y = 0): a function with sin(v/2) to the power j (and a v-dependence) has a vanishing partial of order z in v
+    exactly when z < j (first zero condition) or z > j with z - j = +-1 mod 4 (second), z = 0..4.  The functions that
+    do not depend on v (sin^{2n}(u/2), sin^{2n}(w/2): outside the Proposition's hypothesis i + j != 0) vanish for
+    every z >= 1 trivially; they are counted apart."""
+    n = 4
+    param = "parametrization_for_partition_of_unity"
+    direction, zero, _fixed, _rest = step_geometry(param)
+    bad, v_free = 0, 0
+    for lb in united_system(n):
+        e = exponents(lb)
+        j, i = e[2 * zero], e[2 * zero + 1]
+        if i + j == 0:
+            v_free += 1
+            continue
+        for k in range(order + 1):
+            z = order - k
+            vanish = mixed_derivative(i, HALF, j, HALF, z) == 0
+            predicted = z < j or (z > j and (z - j) % 4 in (1, 3))
+            bad += vanish != predicted
+    return LineResult(bad == 0 and direction == (0, 1, -1), how="exact derivatives at v = 0 of every function of T_8, "
+                      "orders 0..4 in v", detail={"mismatches": bad, "v_independent_functions": v_free})
+
+
+@line_check("sec1_3-interval-typo")
+def interval_typo(printed: str = r"\left[ 0\,\alpha\right]", corrected: str = r"\left[ 0,\alpha\right]") -> LineResult:
+    """An interval [a, b] is written with a comma between its endpoints; the printed [0\\,alpha] has none (a thin
+    space instead), so it does not parse as the interval [0, alpha]."""
+    def endpoints(text: str) -> list[str]:
+        inner = text.replace(r"\left[", "").replace(r"\right]", "").replace(r"\,", " ").strip()
+        return [p.strip() for p in inner.split(",")]
+    return LineResult(endpoints(printed) == ["0", r"\alpha"], endpoints(corrected) == ["0", r"\alpha"],
+                      how="the printed interval parsed into endpoints", kind="proof",
+                      detail={"printed_endpoints": endpoints(printed)})

@@ -1,0 +1,122 @@
+"""Claims say exactly what their code does (issue 19, item 2), and data/ holds only machine-independent values
+(item 3): each check below is shown to reject a wrong input."""
+
+import numpy as np
+import pytest
+from flint import fmpq, fmpq_poly
+
+from paper_repro.core.labels import delta
+from paper_repro.surfaces.patch import Patch
+from paper_repro.util.measured import bound, bound_holds, data_violations, decade_bound, sig, violations
+from paper_repro.util.registry import CLAIMS, Claim, Outcome, load_all, run_claim
+
+load_all()
+
+
+# -- univariate: the key identity is a polynomial identity in sin/cos, not a sample -----------------------------------
+def test_univariate_identity_is_proven_as_a_polynomial_identity():
+    from paper_repro.claims.univariate import base_identity_residual
+
+    assert base_identity_residual().is_zero()
+    assert not base_identity_residual(1).is_zero() and not base_identity_residual(3).is_zero()
+    assert "rational_alphas" not in CLAIMS["univariate"].defaults  # nothing sampled is called a proof
+
+
+# -- patch_properties: tangent planes with exact derivatives ----------------------------------------------------------
+@pytest.mark.parametrize("n", [1, 2, 3])
+def test_tangent_plane_check_passes_the_right_plane_and_rejects_a_wrong_one(n):
+    from paper_repro.claims.surfaces_claims import CORNERS, tangent_plane_exact, tangent_plane_residual
+
+    rng = np.random.default_rng(n)
+    patch = Patch(n, 1.3, rng.normal(size=(delta(n), 3)))
+    assert max(tangent_plane_residual(patch, c) for c in CORNERS) < 1e-12
+    # the plane of the terminal edge of one boundary polygon and the first point of the *wrong* other polygon
+    wrong = (f"r_{{{2 * n},{2 * n - 1},0}}", f"g_{{{2 * n},1,0}}")
+    assert tangent_plane_residual(patch, "r", wrong) > 1e-3  # far above the claim's tolerance 1e-9
+    net = [[int(x) for x in row] for row in rng.integers(-9, 10, size=(delta(n), 3))]
+    assert all(tangent_plane_exact(n, fmpq(1, 3), net, c) for c in CORNERS)
+    assert not tangent_plane_exact(n, fmpq(1, 3), net, "r", wrong)
+
+
+def test_patch_properties_tolerance_is_not_loose():
+    import inspect
+
+    from paper_repro.claims import surfaces_claims
+
+    src = inspect.getsource(surfaces_claims.run_properties)
+    assert "1e-4" not in src and "h = 1e-6" not in src and 'res["tangent_planes"] < tol' in src
+
+
+# -- elevation_closed_forms: the positivity it uses is checked ---------------------------------------------------------
+def test_elevation_checks_positive_normalizing_coefficients(monkeypatch):
+    from paper_repro.claims import matrix_closed_forms as m
+    from paper_repro.theory.closed_form import ClosedForm
+
+    assert m.normalizing_coefficients_positive(1) == {"closed_forms_proven": True, "numerators_positive_on_(0,1)": True}
+    # a proven form whose numerator changes sign on (0, 1) is caught
+    monkeypatch.setattr(m, "closed_forms_cached",
+                        lambda n: {"r_{2,2,0}": ClosedForm("r_{2,2,0}", 2, fmpq_poly([1, -3]))})
+    assert m.normalizing_coefficients_positive(1)["numerators_positive_on_(0,1)"] is False
+
+
+def test_symmetry_statement_states_its_range():
+    assert "{n_max}" in CLAIMS["symmetry"].statement
+
+
+# -- independence_proof_steps: the printed proof lines are run --------------------------------------------------------
+def test_proof_lines_catch_a_line_that_does_not_hold(monkeypatch):
+    from paper_repro.claims import independence_proof as ip
+    from paper_repro.claims.lines import LineResult
+    from paper_repro.printed.lines import Line
+
+    lines = [Line("sec1_3-a", (700, 700), "chain_rule", "display", "x", "x", "checked", check="good"),
+             Line("sec1_3-b", (710, 710), "chain_rule", "display", "y", "y", "erratum", check="err",
+                  erratum={"printed": "y", "corrected": "z", "evidence": "e", "severity": "typo"}),
+             Line("sec1_3-c", (720, 720), "chain_rule", "display", "g", "g", "erratum",
+                  check="claim:independence_proof_steps",
+                  erratum={"printed": "y", "corrected": "z", "evidence": "e", "severity": "typo"}),
+             Line("sec1_3-out", (100, 100), "united_system", "display", "o", "o", "checked", check="bad")]
+    checks = {"good": lambda: LineResult(True), "err": lambda: LineResult(False, True),
+              "bad": lambda: LineResult(False)}
+    monkeypatch.setattr("paper_repro.printed.lines.all_lines", lambda: lines)
+    monkeypatch.setattr("paper_repro.claims.lines.load_checks", lambda: checks)
+    out = ip.proof_lines()
+    assert out["lines"] == 3 and out["checked"] == ["sec1_3-a"] and out["erratum"] == ["sec1_3-b"]
+    assert out["resolved_to_this_claim"] == ["sec1_3-c"] and not out["failures"]  # line outside the proof ignored
+    checks["good"] = lambda: LineResult(False)
+    assert ip.proof_lines()["failures"] == ["sec1_3-a"]
+    checks["good"], checks["err"] = (lambda: LineResult(True)), (lambda: LineResult(True, True))
+    assert ip.proof_lines()["failures"] == ["sec1_3-b"]  # an erratum whose printed form holds is no erratum
+
+
+# -- data/: machine-independent values only ---------------------------------------------------------------------------
+def test_helpers():
+    assert bound(3e-15, 1e-12) == "< 1e-12" and bound_holds(bound(3e-15, 1e-12))
+    assert not bound_holds(bound(2e-12, 1e-12))
+    assert sig(0.036532646271739466, 3) == 0.0365 and decade_bound(4.44e-16) == 1e-15
+    assert decade_bound(1e-15) == 1e-15 and decade_bound(1.0000001e-15) == 1e-14
+
+
+def test_rule_finds_raw_floats():
+    assert violations({"a": 8.881784197001252e-15}) == ["a"]  # rounding level
+    assert violations({"b": [0.036532646271739466]}) == ["b/0"]  # too many digits
+    assert violations({"c": "5.74e-41", "d": "3.193e-51"}) == ["c", "d"]  # mp rounding level as text
+    assert violations({"ok": [1e-12, "< 1e-30", "1e-40", 2.0001, 7, "0.0001425", True, None, "1.538e-6"]}) == []
+    files = {"x.json": {"rows": [{"e": 4.44e-16}]}, "m.obj": {"__mesh__": {"vertices": [[0.1234567891]]}},
+             "dupin/nets.json": {"p": 4.53488372093023}}
+    assert data_violations(files) == ["x.json:rows/0/e"]
+
+
+def test_runner_fails_a_claim_that_publishes_a_raw_float(tmp_path, monkeypatch):
+    from paper_repro.util import cache
+
+    monkeypatch.setattr(cache, "CACHE_DIR", tmp_path)
+    raw = Claim("raw", ["x"], "s", "proof", lambda: Outcome(True, {"gap": 5.329070518200751e-15}), {})
+    res, _, _ = run_claim(raw)
+    assert res.status == "fail" and "gap" in res.measured["error"]
+    clean = Claim("clean", ["x"], "s", "proof", lambda: Outcome(True, {"gap": bound(5.3e-15, 1e-12)},
+                                                              raw={"gap": 5.329070518200751e-15}), {})
+    res, out, _ = run_claim(clean)
+    assert res.status == "pass" and out.raw == {"gap": 5.329070518200751e-15}
+    in_data = Claim("in_data", ["x"], "s", "proof", lambda: Outcome(True, {}, data={"f.json": [1.2345678901]}), {})
+    assert run_claim(in_data)[0].status == "fail"

@@ -1,0 +1,136 @@
+"""Lines of Sections 1-3 (abstract .. end of Section 3): every check meets its line's expectation, and the checks
+reject wrong inputs (perturbed index sets, bounds, levels, chain rules, parametrizations)."""
+
+import json
+
+import pytest
+
+from paper_repro.claims.lines import CHECKS
+from paper_repro.claims.lines import sec1_3 as C
+from paper_repro.printed.lines import sec1_3 as P
+
+OWN = sorted({line.check for line in P.LINES if line.check and not line.check.startswith("claim:")})
+
+
+@pytest.fixture(scope="module")
+def results():
+    return {cid: CHECKS[cid]() for cid in OWN}
+
+
+def _floats(obj) -> bool:
+    if isinstance(obj, float):
+        return True
+    if isinstance(obj, dict):
+        return any(_floats(v) for v in obj.values())
+    if isinstance(obj, list | tuple):
+        return any(_floats(v) for v in obj)
+    return False
+
+
+def test_every_line_meets_its_expectation(results):
+    bad = []
+    for line in P.LINES:
+        if line.check is None or line.check.startswith("claim:"):
+            continue
+        r = results[line.check]
+        if line.status == "checked" and r.holds_as_printed is not True:
+            bad.append(f"{line.id}: does not hold as printed ({r.detail})")
+        if line.status == "erratum" and not (r.holds_as_printed is False and r.corrected_holds is True):
+            bad.append(f"{line.id}: erratum not confirmed ({r.detail})")
+    assert not bad, "\n".join(bad)
+
+
+def test_every_registered_check_of_the_part_is_used_and_reports_plain_values(results):
+    assert {c for c in CHECKS if c.startswith("sec1_3-")} == set(OWN)
+    for cid, r in results.items():
+        json.dumps(r.detail)
+        assert not _floats(r.detail), cid
+        assert r.kind in ("proof", "exact-evidence", "numeric-evidence") and r.how
+
+
+def test_errata_lines_name_their_fields():
+    errata = [x for x in P.LINES if x.status == "erratum"]
+    assert len(errata) == 11
+    known = {x.erratum.get("id") for x in errata if x.check.startswith("claim:")}
+    assert known == {"lemma-sign-cos-power", "parametrization-partition-of-unity-range",
+                     "independence-proof-gamma-index"}
+
+
+# -- the checks reject wrong inputs ----------------------------------------------------------------------------
+def test_united_dedupe_rejects_the_full_ranges():
+    assert C.united_dedupe().holds_as_printed
+    # i = j..2n-j (the range of R_system) lists R_{2n,j,j} = G_{2n,2n-j,j} twice
+    assert not C.united_dedupe(ranges=lambda n, j: range(j, 2 * n - j + 1)).holds_as_printed
+    assert not C.united_dedupe(ranges=lambda n, j: range(j + 1, 2 * n - j)).holds_as_printed
+
+
+def test_chain_rule_rejects_a_wrong_pair_of_variables():
+    assert C.chain_ok("parametrization_2_x_0", (0, 1))
+    assert not C.chain_ok("parametrization_2_x_0", (1, 0))
+    assert not C.chain_ok("parametrization_3_y_0", (0, 2))
+    assert not C.chain_ok("parametrization_1_y_0", (1, 0))
+
+
+def test_parametrization_check_rejects_the_printed_partition_range():
+    assert not C.param_onto("parametrization_for_partition_of_unity")
+    assert C.param_onto("parametrization_for_partition_of_unity", y_to=lambda a, x: x)
+    assert all(C.param_onto(p) for p in C.STEP_PARAMS)
+
+
+def test_boundary_vars_rejects_a_wrong_variable():
+    wrong = dict(C.PRINTED_BOUNDARY, parametrization_2_x_0=("y", 0))
+    assert not C.boundary_vars(wrong).holds_as_printed
+    wrong = dict(C.PRINTED_BOUNDARY, parametrization_3_y_0=("y", 0))
+    assert not C.boundary_vars(wrong).holds_as_printed
+
+
+def test_sum_bound_and_levels_distinguish_printed_from_corrected():
+    assert not C.rp1_aform().holds_as_printed
+    assert C.rp1_aform(upper=C.CORRECTED_P1_UPPER).holds_as_printed
+    assert not C.rp1_asystem().holds_as_printed and C.rp1_asystem(upper=C.CORRECTED_P1_UPPER).holds_as_printed
+    assert C.rp1_zeroed(level=lambda n, r: r + 1).holds_as_printed
+    assert C.rp2_zeroed(level=lambda n, r: r + 1).holds_as_printed
+    # the correctly printed beta' line would fail with the level n-1 of the rho', gamma' lines
+    assert not C._zeroed_check(lambda n, r: C.alive_before(n, r + 1, 2) - C.alive_after(n, r + 1, 2),
+                               lambda n, r: n - 1, lambda n, r: r + 1,
+                               lambda n, r: range(r + 2, 2 * n - 1 - (r + 1) + 1), "B", None).holds_as_printed
+
+
+def test_index_set_comparison_rejects_a_shifted_level():
+    wrong = C._proof_sets(lambda n, r: C.centre(n) | C.dsum("R", n, r, n - 1) | C.dsum("G", n, r + 1, n - 1)
+                          | C.dsum("B", n, r + 1, n - 1), lambda n, r: C.alive_after(n, r, 2), rs=lambda n: range(n))
+    assert not wrong.holds_as_printed and wrong.detail["mismatches"] > 0
+
+
+def test_kth_term_rejects_a_wrong_exponent():
+    rows = dict(C.KTERM_ROWS)
+    rows["R-low"] = lambda n, m, z, k, pt: {C.lab("R", n, i, j): C._sn(pt, "t", 2 * n - i)
+                                            * C._dk(pt, "alpha-t", i, 0, k) * C._M(i - j + 1, j, z)
+                                            for j in range(m, n) for i in range(j, n + 1)}
+    assert C.kterm_row_check("R-low").holds_as_printed
+    assert not C.kterm_row_check("R-low", rows=rows).holds_as_printed
+    rows = dict(C.KTERM_ROWS)  # a row that forgets the last i of its range no longer covers L_r
+    rows["B-high"] = lambda n, m, z, k, pt: {C.lab("B", n, i, j): C._sn(pt, "t", i) * C._S(2 * n - i, z)
+                                             * C._dk(pt, "alpha-t", j, 2 * n - i - j, k) for j in range(m, n)
+                                             for i in range(n + 1, 2 * n - 1 - j)}
+    assert not C.kterm_row_check("B-high", rows=rows).holds_as_printed
+
+
+def test_bernstein_checks_accept_the_order_one_identity():
+    assert C.bernstein_identity(sub=lambda n: 1).holds_as_printed
+    assert C.bernstein_power(sub=lambda n: 1).holds_as_printed
+
+
+def test_interval_check_accepts_a_comma():
+    assert C.interval_typo(printed=r"\left[ 0,\alpha\right]").holds_as_printed
+
+
+def test_fig_n4_rule_holds_at_every_order():
+    assert all(C.fig_n4_caption(order=z).holds_as_printed for z in range(1, 9))
+
+
+def test_elimination_is_exact_and_leaves_the_centre():
+    for n in range(1, 5):
+        assert C.alive_after(n, n - 1, 2) == frozenset({0})
+        removed = [k for _r, _p, _b, gone in C.elimination(n) for k in gone]
+        assert sorted(removed) == list(range(1, len(removed) + 1))

@@ -1,0 +1,117 @@
+"""Lines of Sections sec:coincidence and sec:partition_of_unity (source lines 1414-2167): every check meets its
+expectation, and the comparisons reject wrong input."""
+
+from __future__ import annotations
+
+import json
+from fractions import Fraction
+
+import pytest
+
+from paper_repro.claims.lines import load_checks
+from paper_repro.claims.lines import sec4_5 as ck
+from paper_repro.printed import normalization as pn
+from paper_repro.printed.lines import sec4_5 as pl
+
+CHECKS = load_checks()
+OWN = sorted({line.check for line in pl.LINES if line.check and not line.check.startswith("claim:")})
+EXPECT = {}
+for _line in pl.LINES:
+    if _line.check and not _line.check.startswith("claim:"):
+        EXPECT.setdefault(_line.check, set()).add(_line.status)
+
+
+def _floats(x) -> bool:
+    if isinstance(x, float):
+        return True
+    if isinstance(x, dict):
+        return any(_floats(v) for v in x.values())
+    if isinstance(x, (list, tuple)):
+        return any(_floats(v) for v in x)
+    return False
+
+
+@pytest.mark.parametrize("check_id", OWN)
+def test_check_meets_expectation(check_id):
+    statuses = EXPECT[check_id]
+    assert len(statuses) == 1, f"{check_id} is used by lines of different status {statuses}"
+    res = CHECKS[check_id]()
+    if statuses == {"checked"}:
+        assert res.holds_as_printed is True
+    else:
+        assert res.holds_as_printed is False and res.corrected_holds is True
+    assert res.kind in ("proof", "exact-evidence", "numeric-evidence") and res.how
+    json.dumps(res.detail)
+    assert not _floats(res.detail)
+
+
+def test_every_registered_check_of_the_part_is_used():
+    mine = {k for k in CHECKS if k.startswith("sec4_5-")}
+    assert mine == set(OWN)
+
+
+def test_ids_and_ranges():
+    ids = [line.id for line in pl.LINES]
+    assert len(ids) == len(set(ids)) and all(i.startswith("sec4_5-") for i in ids)
+    assert all(1414 <= line.tex[0] <= line.tex[1] <= 2167 for line in pl.LINES)
+
+
+# -- the comparisons reject wrong input ----------------------------------------------------------------------------
+def test_relation_rejects_a_narrower_z_range():
+    assert ck.relation_matches(3)[0]
+    assert not ck.relation_matches(3, zrange=lambda n: (-n, n))[0]  # (n,n,n-1) ~ (n-1,n-1,n) needs z = 2n - 1
+
+
+def test_power_reduction_rejects_a_wrong_formula():
+    assert ck.power_reduction_ok(4, "sin")
+    assert not ck.power_reduction_ok(4, "sin", printed=lambda m, w, ep: pl.power_reduction(m, "cos", ep))
+    wrong_sign = lambda m, w, ep: pl.power_reduction(m, w, ep) * Fraction(-1)  # noqa: E731
+    assert not ck.power_reduction_ok(3, "sin", printed=wrong_sign)
+
+
+def test_k_sets_reject_a_wrong_bound():
+    wrong = dict(pl.K_UPPER)
+    wrong["0,0"] = lambda n, i, j: (Fraction(2 * n - i, 2), Fraction(i, 2), Fraction(i - j, 2) + 1, Fraction(j, 2))
+    assert ck.k_sets_agree(3)[1]["0,0"] and not ck.k_sets_agree(3, wrong)[1]["0,0"]
+
+
+def test_max_bounds_need_s4_to_range():
+    assert all(ck.max_values(5).values())
+    assert not ck.max_values(5, s4_values=(-1,))["second_max_is_i"]
+
+
+def test_exp_polynomials_reject_a_false_identity():
+    x, y, xm, xp = (1, 0), (0, 1), (1, -1), (1, 1)
+    assert not ck.EP.cos(x) * ck.EP.cos(y) == (ck.EP.cos(xm) - ck.EP.cos(xp)) * Fraction(1, 2)
+    assert not ck.EP.sin((Fraction(1, 2),)) ** 2 == ck.EP.const(1, Fraction(1, 2))
+
+
+def test_proposition_and_y_range_errata_are_sharp():
+    assert ck.prop_sets_agree(5, 0) == {n: True for n in range(1, 6)}
+    assert not ck.prop_sets_agree(5, 1)[1] and all(ck.prop_sets_agree(5, 1)[n] for n in range(2, 6))
+    assert ck.y_range_maps_into_omega(lambda a, x: x) == (True, True)
+    assert ck.y_range_maps_into_omega(lambda a, x: a - x) != (True, True)
+
+
+def test_b2_count():
+    assert len(ck.b2_classes(False)) == 5 and len(ck.b2_classes(True)) == 3
+
+
+def test_example_comparison_rejects_a_dropped_term():
+    from flint import fmpq
+
+    t = fmpq(1, 3)
+    s, c = ck._sc(t)
+    C = ck.c_indep(2, t)
+    truth = ck._orbit_coefs(2, t)["r_{4,2,2}"]
+    assert pn.INTERMEDIATE["r_{4,2,2}"][1](s, c, C) == truth
+    dropped = -6 / s**2 * C(4) - 3 * c / s**2 * C(3) + (6 / s**2 - 3 * c**2 / s**2) * C(2)  # without the "+ 2"
+    assert dropped != truth
+    assert pn.prop_level_1(2, 2, s, c, C) != pn.prop_level_1(2, 2, s, c, C) + 1 / s * C(3)
+
+
+def test_inclusion_rejects_a_too_small_E():
+    # with E_{n-1} in place of E_n the frequencies of T_{2n} do not fit: max - min reaches n
+    lab_max = max(max(f) - min(f) for lab in ck.united_system(2)
+                  for f in ck.half_monomial(ck.exponents(lab)).terms)
+    assert ck.inclusion_proof(2) and lab_max == 2

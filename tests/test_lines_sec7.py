@@ -1,0 +1,110 @@
+"""Lines of Sections 7-8 (paper_repro.printed.lines.sec7): every check meets its expectation, and the comparisons
+reject wrong inputs (a perturbed relation, elevation weight, conversion weight, index set or range)."""
+
+from __future__ import annotations
+
+from functools import cache
+
+import pytest
+
+from paper_repro.claims.lines import CHECKS
+from paper_repro.claims.lines import sec7 as C
+from paper_repro.core.labels import index_of
+from paper_repro.printed.lines import sec7_latex as X
+from paper_repro.printed.lines.sec7 import LINES
+from paper_repro.theory.ratfunc import RatFunc, half_angle_functions
+
+BY_ID = {ln.id: ln for ln in LINES}
+OWN = sorted({ln.check for ln in LINES if ln.check and not ln.check.startswith("claim:")})
+
+
+@cache
+def run(check_id: str):
+    return CHECKS[check_id]()
+
+
+def test_part_is_complete():
+    assert len([i for i in BY_ID if i.startswith("sec7-rel-") and i[10:].isdigit()]) == 19
+    assert len([i for i in BY_ID if i.startswith("sec7-elev-") and i[11:].isdigit()]) == 19
+    assert len([i for i in BY_ID if i.startswith(("sec7-conv2-", "sec7-conv3-"))]) == 7 + 16
+    assert all(c in CHECKS for c in OWN)
+    assert all(ln.tex[0] >= 2667 and ln.tex[1] <= 3309 for ln in LINES)
+
+
+@pytest.mark.parametrize("line_id", [ln.id for ln in LINES if ln.status != "excused" and
+                                     not ln.check.startswith("claim:")])
+def test_line_meets_expectation(line_id):
+    line = BY_ID[line_id]
+    res = run(line.check)
+    if line.status == "checked":
+        assert res.holds_as_printed, (line_id, res.detail)
+    else:
+        assert not res.holds_as_printed and res.corrected_holds, (line_id, res.detail)
+
+
+@pytest.mark.parametrize("line_id,fix", [
+    ("sec7-conv3-p215", ("\\Red{\\mathbf{r}_{6,1,1}}", "\\Red{\\mathbf{r}_{6,2,1}}")),
+    ("sec7-conv3-p323", ("\\Red{\\mathbf{r}_{6,2,0}}", "\\Red{\\mathbf{r}_{6,3,0}}")),
+    ("sec7-conv3-p880", ("\\mathbf{p}_{8,8,0}", "\\mathbf{p}_{8,0,0}")),
+])
+def test_known_conversion_errata(line_id, fix):
+    """The three lines covered by claim bezier_conversion: printed fails, corrected holds (own comparison)."""
+    tex = BY_ID[line_id].verbatim
+    assert BY_ID[line_id].status == "erratum" and BY_ID[line_id].check == "claim:bezier_conversion"
+    assert not C.conversion_holds(3, tex)
+    assert C.conversion_holds(3, tex.replace(*fix))
+
+
+def test_relation_rejects_perturbation():
+    tex = BY_ID["sec7-rel-r431"].verbatim
+    assert C.relation_holds(tex, "r_{4,3,1}")
+    assert not C.relation_holds(tex.replace("\\sin\\alpha", "\\sin\\frac{\\alpha}{2}", 1), "r_{4,3,1}")
+    assert not C.relation_holds(BY_ID["sec7-rel-r430"].verbatim, "r_{4,4,0}")  # right formula, wrong coefficient
+
+
+def test_elevation_rejects_perturbation():
+    tex = BY_ID["sec7-elev-r420"].verbatim
+    assert C.elevation_row_holds(tex, 0, "1/3")
+    wrong = tex.replace("\\frac{1}{2+4\\cos^{2}\\frac{\\alpha}{2}}", "\\frac{1}{4+2\\cos^{2}\\frac{\\alpha}{2}}", 1)
+    assert wrong != tex and not C.elevation_row_holds(wrong, 0, "1/3")
+    # the symbolic identity: the printed matrix passes, a matrix with two weights exchanged fails
+    s, c = half_angle_functions()
+    mat = C.printed_elevation_matrix(c * c, s * s, RatFunc.const)
+    assert all(C.elevation_identity(mat))
+    k = index_of(2)["r_{4,2,0}"]  # weights 1/(2+4c^2) r_{2,2,0} + 2c^2/(1+2c^2) r_{2,1,0} + ...
+    a, b = index_of(1)["r_{2,2,0}"], index_of(1)["r_{2,1,0}"]
+    assert not mat[k][a] == mat[k][b]
+    mat[k][a], mat[k][b] = mat[k][b], mat[k][a]
+    assert not all(C.elevation_identity(mat))
+
+
+def test_conversion_rejects_perturbation():
+    tex = BY_ID["sec7-conv3-p611"].verbatim
+    assert C.conversion_holds(3, tex)
+    assert not C.conversion_holds(3, tex.replace("\\frac{15}{28}", "\\frac{13}{28}"))
+    assert not C.conversion_holds(3, tex.replace("\\Blue{\\mathbf{b}_{6,1,0}}", "\\Green{\\mathbf{g}_{6,1,0}}"))
+
+
+def test_index_sets_reject_perturbation():
+    tex = BY_ID["sec7-unity-product"].verbatim
+    assert C.printed_first_factor(tex, 3) == C._system_exps(3)
+    assert C.printed_first_factor(tex.replace("^{2n-1-j}", "^{2n-j}", 1), 3) != C._system_exps(3)
+    assert C.printed_first_factor(tex.replace("_{j=0}^{n-1}", "_{j=1}^{n-1}", 1), 3) != C._system_exps(3)
+
+
+def test_parametrization_report_distinguishes_ranges():
+    good = C.parametrization_report({"x": ("0", "1"), "y": ("0", "1-x")})
+    bad = C.parametrization_report({"x": ("0", "1"), "y": ("0", "x")})
+    assert good["images_outside_Omega"] == good["simplex_points_not_reached"] == 0
+    assert bad["images_outside_Omega"] > 0 and bad["simplex_points_not_reached"] > 0
+    assert X.bracket_ranges(BY_ID["sec7-limit-param-v"].verbatim) == {"y": ("0", "x")}
+
+
+def test_readers_refuse_unread_latex():
+    with pytest.raises(ValueError):
+        X.relation_expression("2\\Red{r_{2,2,0}^{\\alpha}}\\cot\\frac{\\alpha}{2}")
+    with pytest.raises(ValueError):
+        X.conversion("\\mathbf{p}_{1,0,4} =\\frac{4}{5}\\Red{\\mathbf{r}_{4,1,0}}+\\frac{1}{5}"
+                     "\\Green{\\mathbf{x}_{4,4,0}}")
+    with pytest.raises(NameError):
+        X.evaluate("open('x')")
