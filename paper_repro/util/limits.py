@@ -1,0 +1,103 @@
+"""Domain of validity of the public API: accepted types, ranges and sizes (budgets from a measured cost model).
+
+Every check raises ``TypeError`` (wrong kind of value) or ``ValueError`` (right kind, outside the range or the
+budget) naming the parameter and the limit, before any work starts.  The budgets keep every call below about
+20 s and 2 GB on one core of the reference machine (2 cores, 2026); the measurements behind each limit are
+quoted next to it and in the README table ("Domain of validity"), produced by ``tools/fuzz_api.py --cost``.
+
+>>> check_int(3, "times", 0, 20)
+3
+>>> check_int(-1, "times", 0, 20)
+Traceback (most recent call last):
+...
+ValueError: times must be an integer from 0 to 20, got -1
+>>> real_scalar(1j, "alpha")
+Traceback (most recent call last):
+...
+TypeError: alpha must be a real number, got the complex number 1j
+"""
+
+from __future__ import annotations
+
+import numbers
+
+import numpy as np
+
+#: Order elevation: E of order n -> n+1 by a certified ball solve, delta_{n+1} unknowns (measured: n = 6 in 2-8 s,
+#: n = 10 in 20-60 s depending on alpha, cached on disk afterwards).
+MAX_N_ELEVATION = 10
+#: Repeated elevation: ``times`` steps (each bounded by MAX_N_ELEVATION).
+MAX_ELEVATION_STEPS = MAX_N_ELEVATION
+#: Fitting by mp collocation, delta_n unknowns in mpmath (measured: n = 4 (61 unknowns) 3 s, n = 6 (127) 25 s).
+MAX_N_FIT = 5
+#: Exact fitting (fmpq collocation; measured: n = 3 in 1 s, n = 5 in 20 s).
+MAX_N_FIT_EXACT = 4
+#: Rational sample points (pure Python loop, about 30 us per point).
+MAX_RATIONAL_POINTS = 100_000
+#: Limit Bezier net (exact conversion weights, O(n^4) fmpq operations: n = 20 in 4 s).
+MAX_N_BEZIER_LIMIT = 20
+#: Mesh resolution r: (r+1)(r+2)/2 vertices, 2 r^2 faces; r = 1024 is 0.5 M vertices (about 0.3 GB of work memory).
+MAX_MESH_RESOLUTION = 1024
+#: Precision of the mp arithmetic (decimal digits).
+MIN_DPS, MAX_DPS = 5, 10_000
+
+
+def _plain(x: object) -> str:
+    text = repr(x)
+    return text if len(text) <= 40 else text[:37] + "..."
+
+
+def check_int(value: object, name: str, lo: int, hi: int | None = None, *, why: str = "") -> int:
+    """``value`` as an int if it is an integer (Python or numpy, not bool) in ``[lo, hi]``."""
+    rng = f"from {lo} to {hi}" if hi is not None else f">= {lo}"
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (numbers.Integral, np.integer)):
+        raise TypeError(f"{name} must be an integer {rng}, got {_plain(value)} of type {type(value).__name__}")
+    v = int(value)
+    if v < lo or (hi is not None and v > hi):
+        raise ValueError(f"{name} must be an integer {rng}, got {v}" + (f" ({why})" if why else ""))
+    return v
+
+
+def real_scalar(x: object, name: str):
+    """A real scalar as a plain Python/mpmath/flint number: numpy scalars and 0-d arrays unwrapped (``.item()``;
+    ``np.longdouble`` to the nearest float64), ints, floats, ``Fraction``, mpmath ``mpf``, flint ``fmpq``/``arb``
+    kept.  ``TypeError`` naming ``name`` for booleans, strings, complex numbers and arrays."""
+    if isinstance(x, np.ndarray):
+        if x.ndim != 0:
+            raise TypeError(f"{name} must be a real number, got an array of shape {x.shape}")
+        x = x[()]
+    if isinstance(x, (bool, np.bool_)):
+        raise TypeError(f"{name} must be a real number, got the boolean {x!r}")
+    if isinstance(x, (str, bytes)):
+        raise TypeError(f"{name} must be a real number, got the string {_plain(x)}")
+    if isinstance(x, (complex, np.complexfloating)) or type(x).__name__ in ("mpc", "acb"):
+        raise TypeError(f"{name} must be a real number, got the complex number {_plain(x)}")
+    if isinstance(x, np.longdouble):
+        return float(x)
+    if isinstance(x, np.generic):
+        x = x.item()
+        if not isinstance(x, (int, float)):
+            raise TypeError(f"{name} must be a real number, got {type(x).__name__}")
+        return x
+    if isinstance(x, (numbers.Real,)) or type(x).__name__ in ("mpf", "fmpq", "fmpz", "arb", "RationalAngle"):
+        return x
+    raise TypeError(f"{name} must be a real number, got {_plain(x)} of type {type(x).__name__}")
+
+
+def check_real_array(values, name: str) -> None:
+    """Refuse complex, boolean, string and object entries that are not real numbers in an array-like input
+    (numpy would silently truncate complex numbers and parse numeric strings)."""
+    arr = values if isinstance(values, np.ndarray) else None
+    if arr is None:
+        try:
+            arr = np.asarray(values, dtype=object)
+        except ValueError:
+            raise ValueError(f"{name} must be a rectangular array of real numbers (ragged rows given)") from None
+    kind = arr.dtype.kind
+    if kind == "c":
+        raise TypeError(f"{name} must be real numbers, got complex entries")
+    if kind in "USb":
+        raise TypeError(f"{name} must be real numbers, got {'strings' if kind in 'US' else 'booleans'}")
+    if kind == "O":
+        for x in arr.reshape(-1):
+            real_scalar(x, f"{name} entries")
