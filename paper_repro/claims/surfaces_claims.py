@@ -10,7 +10,7 @@ from paper_repro.core.domain import sample_points
 from paper_repro.core.labels import delta, index_of, united_system
 from paper_repro.surfaces.models import cyclide_parts, cyclide_pieces, join_error, torus_pieces
 from paper_repro.surfaces.patch import Patch, merge_meshes
-from paper_repro.util.registry import Outcome, claim
+from paper_repro.util.registry import ALPHA_RANGES, Outcome, claim
 
 CYCLIDE = {"a": "6", "b": "sqrt(32)", "c": "2", "mu": "3"}
 
@@ -137,3 +137,9 @@ def run_properties(ns, alphas, nets, points, seed) -> Outcome:
     res["scope"] = (f"random nets (seeded), n in {ns}, alpha in {alphas}; convex hull: Delaunay point location; "
                     "tangent planes: one-sided differences with h = 1e-6 (tolerance 1e-4)")
     return Outcome(ok, res, data=data)
+
+#: --alpha range where the float checks are meaningful: the tangent-plane check uses one-sided differences with
+#: h = 1e-6 inside Omega^alpha (alpha must be much larger than h), and the convex-hull check at tolerance 1e-12 needs
+#: the float coefficients, whose conditioning grows like (pi - alpha)^-1 near pi.
+ALPHA_RANGES["patch_properties"] = (0.01, 3.14158265358979, "one-sided differences with h = 1e-6 and float "
+                                                            "conditioning near pi")
