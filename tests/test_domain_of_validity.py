@@ -271,3 +271,21 @@ def test_limits_are_documented():
                  "MAX_MESH_RESOLUTION"):
         assert f"`{name}`" in open(os.path.join(os.path.dirname(__file__), "..", "README.md")).read(), name
         assert getattr(limits, name) >= 1
+
+
+@pytest.mark.parametrize("claim", ["torus_exact", "coincidence", "patch_properties"])
+@pytest.mark.parametrize("alpha", [str(NEAR_PI), "1e-17", "1e-300"])
+def test_cli_refuses_alpha_outside_a_claims_meaningful_range(claim, alpha):
+    out = _cli("claims", "--only", claim, "--alpha", alpha)
+    lines = [ln for ln in out.stderr.splitlines() if ln.strip()]
+    assert out.returncode == 2 and len(lines) == 1 and "--alpha" in lines[0], out.stderr
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("claim", ["partition_of_unity"])
+@pytest.mark.parametrize("alpha", [str(NEAR_PI), "1e-17", "1e-300"])
+def test_cli_claim_passes_or_refuses_never_fails_on_a_parameter(claim, alpha):
+    """Inside a claim's range the verdict is the mathematics': a true statement passes (exit 0); outside it the
+    value is refused in one line (exit 2).  Exit 1 (FAIL) because of the parameter is the defect of issue 22."""
+    out = _cli("claims", "--only", claim, "--alpha", alpha, timeout=900)
+    assert out.returncode in (0, 2) and "Traceback" not in out.stderr, (out.stdout[-500:], out.stderr[-500:])

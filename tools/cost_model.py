@@ -12,14 +12,14 @@ import os
 import subprocess
 import sys
 
-SETUP = ("import math, numpy as np; from paper_repro import *; from paper_repro.core.labels import delta; "
+SETUP = ("import math, mpmath, numpy as np; from paper_repro import *; from paper_repro.core.labels import delta; "
          "from paper_repro.core.domain import rational_alpha; ")
 GROUPS = {
     "coefficients": [f"coefficients({n}, 1.0, {a!r})" for a in ("float",) for n in (10, 60, 150)]
     + [f"coefficients({n}, 1.0, 'mp')" for n in (10, 20, 40)]
     + [f"coefficients({n}, rational_alpha((1, 3)), 'exact')" for n in (10, 20, 40, 80)],
     "elevation": [f"elevation_matrix({n}, {a!r})" for n in (2, 4, 6, 8, 10) for a in (1.0, 1e-9)],
-    "fit": [f"fit(lambda u, v, w: [math.cos(u - v), math.sin(w)], {n}, 1.0)" for n in (2, 3, 4, 5)]
+    "fit": [f"fit(lambda u, v, w: [mpmath.cos(u - v), mpmath.sin(w)], {n}, 1.0)" for n in (2, 3, 4, 5)]
     + [f"fit(lambda t: [t.cos(1, 0, 0)], {n}, rational_alpha((1, 3)), 'exact')" for n in (2, 3, 4)],
     "rational_points": [f"sample_rational_points(rational_alpha((1, 2)), {c})" for c in (10**4, 10**5)],
     "bezier": [f"bezier_limit(np.zeros((delta({n}), 3)), {n})" for n in (10, 20, 30)],

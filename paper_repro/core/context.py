@@ -563,6 +563,7 @@ def get_context(arith: str | Context = "float", *, dps: int = 50, p: int = DEFAU
     if arith in ("mp", "ball"):
         from paper_repro.util.limits import MAX_DPS, MIN_DPS, check_int
 
+        dps = 50 if dps is None else dps  # None: the default precision
         dps = check_int(dps, "dps", MIN_DPS, MAX_DPS, why="decimal digits of the mp arithmetic")
     if arith == "float":
         return FloatContext()

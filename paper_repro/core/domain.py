@@ -13,6 +13,7 @@ Two kinds of points:
 from __future__ import annotations
 
 import math
+import numbers
 from dataclasses import dataclass
 
 import mpmath
@@ -174,7 +175,7 @@ def check_points(points, alpha, tol: float = DOMAIN_TOL, offset: int = 0) -> np.
     a = check_alpha(alpha)
     if isinstance(points, (str, bytes)):
         raise TypeError(f"points must be a (P, 3) array of (u, v, w), got a string {points!r}")
-    if isinstance(points, dict) or np.ndim(points) == 0 and not isinstance(points, np.ndarray):
+    if isinstance(points, (dict, set, numbers.Number, np.generic)) or points is None:
         raise TypeError(f"points must be a (P, 3) array of real numbers (u, v, w), got {type(points).__name__}")
     check_real_array(points, "points")
     try:
