@@ -25,6 +25,7 @@ from __future__ import annotations
 import os
 import signal
 import sys
+import time
 from collections.abc import Callable, Iterable
 from concurrent.futures import Executor, ProcessPoolExecutor, as_completed
 from typing import TypeVar
@@ -102,5 +103,9 @@ def _terminate(ex: ProcessPoolExecutor) -> None:
     ex.shutdown(wait=False, cancel_futures=True)
     for p in procs:
         p.terminate()
+    deadline = time.monotonic() + 1.0  # one second in all, not per worker
     for p in procs:
-        p.join(timeout=1)
+        p.join(timeout=max(0.0, deadline - time.monotonic()))
+    for p in procs:
+        if p.is_alive():
+            p.kill()
