@@ -98,8 +98,10 @@ def run(ns, rational_ts, mp_ns, alphas, dps, seed, ball_ns) -> Outcome:
                  "bounds the rank over Q only from below, and finitely many points cannot show V in span T). "
                  "The inclusion is evidence at the sampled alpha; the paper's proof is Theorem coincidence"})
 
-#: --alpha range where the 50-digit numeric ranks are decidable (gap criterion 10^-(dps-10)): the conditioning of
-#: the normalized collocation matrices grows like alpha^-2 near 0 and (pi - alpha)^-1 near pi (measured for n = 2
-#: and n = 4); outside this range a run at alpha = 3.1415926535897 took more than 400 s and alpha = 1e-17 FAILs.
-ALPHA_RANGES["coincidence"] = (0.01, 3.14158265358979, "the 50-digit numeric rank cannot separate the smallest "
-                                                       "singular value from rounding outside it")
+#: --alpha range where the claim has been run and decides: its default alphas (pi/4, 3pi/4).  Measured outside it:
+#: at alpha = 3.14 and 3.1415926535897 a run took more than 400 s (the certified ball ranks of n = 5..8 raise their
+#: precision as the collocation matrices become ill-conditioned near pi), and at 1e-17 the 50-digit numeric rank
+#: cannot separate the smallest singular value (log10 cond of the n = 4 matrix: 12.3 at alpha = 0.01).  Not bisected.
+ALPHA_RANGES["coincidence"] = (0.7853981633974483, 2.356194490192345,
+                               "measured: more than 400 s at alpha = 3.14, undecidable 50-digit ranks near 0 and pi; "
+                               "run and verified at pi/4 and 3pi/4 only")
