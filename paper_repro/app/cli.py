@@ -26,10 +26,27 @@ def _parse_alpha(text: str) -> str:
     return text
 
 
+class _Parser(argparse.ArgumentParser):
+    """argparse, but a bad argument is one line on stderr (``error: ...``) and exit 2, without the usage block."""
+
+    def error(self, message: str):
+        print(f"error: {message}", file=sys.stderr)
+        raise SystemExit(2)
+
+
 def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(prog="python -m paper_repro", description=__doc__,
-                                     formatter_class=argparse.RawDescriptionHelpFormatter)
-    sub = parser.add_subparsers(dest="cmd", required=True)
+    """Run a command; bad input is one line and exit 2, Ctrl-C one line and exit 130 (pending work cancelled)."""
+    try:
+        return _main(argv)
+    except KeyboardInterrupt:
+        print("interrupted (Ctrl-C): pending work cancelled; data/ and the cache are unchanged", file=sys.stderr)
+        return 130
+
+
+def _main(argv: list[str] | None = None) -> int:
+    parser = _Parser(prog="python -m paper_repro", description=__doc__,
+                     formatter_class=argparse.RawDescriptionHelpFormatter)
+    sub = parser.add_subparsers(dest="cmd", required=True, parser_class=_Parser)
     pc = sub.add_parser("claims", help="run registered claims")
     pc.add_argument("--only", nargs="+", metavar="ID", help="claim ids to run")
     pc.add_argument("--n", type=int, help="run at this order n only (claims that take n)")
@@ -46,7 +63,9 @@ def main(argv: list[str] | None = None) -> int:
     load_all()
     try:
         if args.cmd == "labels":
-            for k, lab in enumerate(united_system(args.n)):
+            from paper_repro.util.validation import check_n
+
+            for k, lab in enumerate(united_system(check_n(args.n, "N"))):
                 e = exponents(lab)
                 mono = " ".join(f"{SLOTS[s]}^{e[s]}" for s in range(6) if e[s])
                 print(f"{k:4d}  {lab.paper:14s} level {lab.j}  {mono}")
@@ -55,7 +74,8 @@ def main(argv: list[str] | None = None) -> int:
             unknown = sorted(set(args.only or []) - set(CLAIMS))
             if unknown:
                 raise ValueError(f"--only: unknown claim id(s) {unknown}; known: {sorted(CLAIMS)}")
-            from paper_repro.util.registry import cli_overrides
+            from paper_repro.core.alphas import alpha_float
+            from paper_repro.util.registry import check_cli_range, cli_overrides
             from paper_repro.util.validation import check_n
 
             n = check_n(args.n, "--n") if args.n is not None else None
@@ -70,6 +90,7 @@ def main(argv: list[str] | None = None) -> int:
                                          f"it takes {sorted(CLAIMS[cid].defaults)}")
                     skipped.append(cid)
                 else:
+                    check_cli_range(CLAIMS[cid], n, None if alpha is None else alpha_float(alpha))
                     per_claim[cid] = ov
             if skipped:
                 print(f"skipped (they take no --n/--alpha): {', '.join(skipped)}")
@@ -94,7 +115,7 @@ def main(argv: list[str] | None = None) -> int:
 
             write_paper()
             return 0 if ok else 1
-    except ValueError as exc:
-        print(f"error: {exc}", file=sys.stderr)
+    except (ValueError, TypeError) as exc:
+        print(f"error: {str(exc).splitlines()[0] if str(exc) else type(exc).__name__}", file=sys.stderr)
         return 2
     return 0

@@ -22,7 +22,7 @@ from paper_repro.printed.torus import PRINTED, torus
 from paper_repro.surfaces.fitting import ExactTrig, fit_exact, fit_mp
 from paper_repro.surfaces.patch import Patch
 from paper_repro.util.measured import bound, sig
-from paper_repro.util.registry import Outcome, claim
+from paper_repro.util.registry import ALPHA_RANGES, Outcome, claim
 
 #: Corrected closed forms (found by inspection of the computed net, verified below), label -> axis -> f.
 CORRECTED = {("b_{4,3,1}", "x"): (
@@ -135,3 +135,9 @@ def run(alphas, rho_mu, rational_ts, dps, points) -> Outcome:
                  "net's to 3 digits, the computed net's as the bound it clears"}, errata=errata, data=data,
                    raw={"max_deviation_from_torus_printed_net": dev_printed,
                         "max_deviation_from_torus_computed_net": dev_computed})
+
+#: --alpha range where the check is meaningful: the 40-digit collocation fit must keep the 30 digits the comparison
+#: asks for, i.e. log10 cond(T-bar_2 collocation) <= 9; measured (tools: /tmp cond table in the issue-22 report):
+#: 8.5 at alpha = 0.01, 10.5 at 1e-3, 38.5 at 1e-17; 9.9 at pi - 1e-6, 17 at 3.1415926535897.
+ALPHA_RANGES["torus_exact"] = (0.01, 3.14158265358979, "the 40-digit fit loses log10 cond digits of the 30 compared; "
+                                                       "cond > 1e9 outside")

@@ -21,7 +21,10 @@ def alpha_fraction_of_pi(text: str) -> Fraction | None:
     m = _PI_RE.match(str(text))
     if not m:
         return None
-    return Fraction(int(m.group(1) or 1), int(m.group(2) or 1))
+    num, den = int(m.group(1) or 1), int(m.group(2) or 1)
+    if den == 0:
+        raise ValueError(f"alpha: division by zero in {text!r}; alpha must lie in (0, pi), e.g. 'pi/3' or '1.2'")
+    return Fraction(num, den)
 
 
 def alpha_mp(text: str | float) -> mpmath.mpf:
@@ -32,8 +35,9 @@ def alpha_mp(text: str | float) -> mpmath.mpf:
     else:
         try:
             val = mpmath.mpf(str(text))
-        except (ValueError, TypeError):
-            raise ValueError(f"alpha must be a number or a multiple of pi like '2pi/3', got {text!r}") from None
+        except (ValueError, TypeError, ZeroDivisionError):
+            raise ValueError(f"alpha must be a number in (0, pi) or a multiple of pi like '2pi/3', "
+                             f"got {text!r}") from None
     check_alpha(val)
     return val
 

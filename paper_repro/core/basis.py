@@ -67,6 +67,12 @@ def evaluate(n: int, alpha, points, arith: str | Context = "float", *, dps: int 
     if count * delta(n) > MAX_MATRIX_ENTRIES:
         raise ValueError(f"points: {count} points x delta_n = {delta(n)} functions is more than {MAX_MATRIX_ENTRIES:,} "
                          "values in one array; evaluate fewer points at a time (Patch evaluates in blocks)")
+    if labels is not None:
+        labels = list(labels)
+        other = [lab for lab in labels if not isinstance(lab, BasisLabel) or lab.n != n]
+        if other or not labels:
+            raise ValueError(f"labels must be a non-empty list of BasisLabel of order n = {n} "
+                             f"(e.g. united_system({n})), got {other[0] if other else 'an empty list'!r}")
     exps = exponent_matrix(n) if labels is None else np.array([exponents(lab) for lab in labels])
     trig = (scaled_half_angle_values if scaled else half_angle_values)(points, alpha, ctx)
     with ctx.scope():

@@ -65,6 +65,17 @@ def _to_fraction(x) -> Fraction:
     raise TypeError(f"expected a rational or real number, got {type(x).__name__}")
 
 
+def _unwrap(x):
+    """numpy real scalars and 0-d arrays as Python numbers (mpmath and flint do not take numpy types)."""
+    if isinstance(x, np.ndarray) and x.ndim == 0:
+        x = x[()]
+    if isinstance(x, np.longdouble):
+        return float(x)
+    if isinstance(x, (np.floating, np.integer)):
+        return x.item()
+    return x
+
+
 @dataclass(frozen=True)
 class Context:
     """Base class of the arithmetic contexts; the float64 behaviour is the default."""
@@ -233,6 +244,7 @@ class MpContext(ObjectContext):
             raise ValueError(f"dps must be an integer from 5 to 10000, got {self.dps!r}")
 
     def convert(self, x):
+        x = _unwrap(x)
         if isinstance(x, fmpq):
             return self.from_rational(x)
         if isinstance(x, Fraction):
@@ -333,6 +345,7 @@ class BallContext(ObjectContext):
             raise ValueError(f"prec must be an integer >= 20 (bits), got {self.prec!r}")
 
     def convert(self, x):
+        x = _unwrap(x)
         if isinstance(x, arb):
             return x
         if isinstance(x, fmpq):
@@ -547,6 +560,11 @@ def get_context(arith: str | Context = "float", *, dps: int = 50, p: int = DEFAU
         return arith
     if not isinstance(arith, str) or arith not in _NAMES:
         raise ValueError(f"arith must be one of {list(_NAMES)} or a Context, got {arith!r}")
+    if arith in ("mp", "ball"):
+        from paper_repro.util.limits import MAX_DPS, MIN_DPS, check_int
+
+        dps = 50 if dps is None else dps  # None: the default precision
+        dps = check_int(dps, "dps", MIN_DPS, MAX_DPS, why="decimal digits of the mp arithmetic")
     if arith == "float":
         return FloatContext()
     if arith == "mp":

@@ -13,6 +13,7 @@ Two kinds of points:
 from __future__ import annotations
 
 import math
+import numbers
 from dataclasses import dataclass
 
 import mpmath
@@ -20,15 +21,42 @@ import numpy as np
 from flint import fmpq
 
 from paper_repro.core.context import Context, ExactContext, FloatContext
+from paper_repro.util.limits import MAX_RATIONAL_POINTS, check_int, check_real_array
 from paper_repro.util.validation import DOMAIN_TOL, check_alpha
 
 
-def _q(x) -> fmpq:
+def _q(x, name: str = "t") -> fmpq:
+    """An exact rational from fmpq, int, ``Fraction``, a pair ``(p, q)`` of integers, ``'p/q'`` or a float (its
+    exact binary value); ``TypeError``/``ValueError`` naming ``name`` otherwise."""
+    from fractions import Fraction
+
+    from paper_repro.util.limits import real_scalar
+
     if isinstance(x, fmpq):
         return x
     if isinstance(x, tuple):
-        return fmpq(*x)
-    return fmpq(x)
+        if len(x) != 2:
+            raise TypeError(f"{name} must be a rational: a pair (p, q) of integers, got a tuple of length {len(x)}")
+        if any(isinstance(v, (bool, np.bool_)) or not isinstance(v, (int, np.integer)) for v in x):
+            raise TypeError(f"{name} must be a rational: a pair (p, q) of integers, got {x!r}")
+        p, q = (int(v) for v in x)
+        if q == 0:
+            raise ValueError(f"{name} = {p}/0: the denominator q of (p, q) must not be 0")
+        return fmpq(p, q)
+    if isinstance(x, str):
+        try:
+            f = Fraction(x.strip())
+        except (ValueError, ZeroDivisionError):
+            raise ValueError(f"{name} must be a rational like '1/3', got {x!r}") from None
+        return fmpq(f.numerator, f.denominator)
+    x = real_scalar(x, name)
+    if isinstance(x, int):
+        return fmpq(x)
+    try:
+        f = Fraction(x)
+    except (TypeError, ValueError, OverflowError):
+        raise TypeError(f"{name} must be a finite rational or real number, got {x!r}") from None
+    return fmpq(f.numerator, f.denominator)
 
 
 def _sin_half(t: fmpq) -> fmpq:
@@ -68,7 +96,7 @@ class RationalAngle:
 
 def rational_alpha(t) -> RationalAngle:
     """Shape parameter alpha = 4 atan(t) for rational ``0 < t < 1`` (so alpha in (0, pi))."""
-    a = RationalAngle(_q(t))
+    a = RationalAngle(_q(t, "t"))
     if a.t == 0:
         raise ValueError("alpha must lie in the open interval (0, pi): tan(alpha/4) = 0 gives alpha = 0")
     return a
@@ -147,6 +175,9 @@ def check_points(points, alpha, tol: float = DOMAIN_TOL, offset: int = 0) -> np.
     a = check_alpha(alpha)
     if isinstance(points, (str, bytes)):
         raise TypeError(f"points must be a (P, 3) array of (u, v, w), got a string {points!r}")
+    if isinstance(points, (dict, set, numbers.Number, np.generic)) or points is None:
+        raise TypeError(f"points must be a (P, 3) array of real numbers (u, v, w), got {type(points).__name__}")
+    check_real_array(points, "points")
     try:
         arr = np.asarray(points, dtype=object if _is_mp(points) else np.float64)
         fl = arr.astype(np.float64)
@@ -311,7 +342,7 @@ def sample_rational_points(alpha: RationalAngle, count: int, seed: int = 0,
 
     if not isinstance(alpha, RationalAngle):
         raise TypeError(f"alpha must be a RationalAngle, got {type(alpha).__name__}")
-    check_count(count, limit=10**6)
+    check_int(count, "count", 0, MAX_RATIONAL_POINTS, why="rational points are drawn one by one")
     rng = np.random.default_rng(seed)
     a = float(alpha)
     if max_denominator is None:

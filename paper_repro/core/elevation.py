@@ -4,23 +4,44 @@ Since span T_{2n} = V_n is contained in V_{n+1} = span T_{2n+2} (claims ``coinci
 blending function of order n is a combination of those of order n+1: ``T-bar_n = T-bar_{n+1} E``
 with a ``(delta_{n+1}, delta_n)`` matrix E, and the elevated control net is ``E @ net``.  Rows of E
 sum to 1 (both systems are partitions of unity).  E is computed exactly at rational-tangent alpha
-(collocation at rational points, verified at further points) and in float for any alpha.
+(collocation at rational points, verified at further points); for a float alpha it is solved in certified ball
+arithmetic (flint ``arb``, precision raised until every entry is known to 2^-64) and rounded once to float64, so
+its rows sum to 1 to rounding and elevation is affine invariant for every alpha in (0, pi).
+
+Below :data:`ALPHA_FLAT` the matrix is taken at ``ALPHA_FLAT``: E(alpha) = E(0) + O(alpha^2) (measured:
+``max |E(alpha) - E(1e-30)|`` = 5.6e-10, 5.6e-14, 4e-18 at alpha = 1e-4, 1e-6, 1e-8 for n = 1; the test suite checks
+n <= 3), so the difference is below float64's rounding, while the ball solve at smaller alpha needs precision
+growing like log(1/alpha).
 """
 
 from __future__ import annotations
 
+import math
 from functools import lru_cache
 
 import numpy as np
 from flint import fmpq
 
 from paper_repro.core.collocation import Collocation, collocate
-from paper_repro.core.context import Context, ExactContext, FloatContext
-from paper_repro.core.domain import RationalAngle, rational_alpha, sample_points, sample_rational_points
+from paper_repro.core.context import BallContext, Context, ExactContext
+from paper_repro.core.domain import (
+    RationalAngle,
+    RationalPoints,
+    rational_alpha,
+    sample_points,
+    sample_rational_points,
+)
 from paper_repro.core.labels import delta
 from paper_repro.core.nets import check_net
-from paper_repro.core.normalization import evaluate_normalized
+from paper_repro.core.normalization import evaluate_normalized, fixed_points
+from paper_repro.util.cache import cached
+from paper_repro.util.limits import MAX_ELEVATION_STEPS, MAX_N_ELEVATION, check_int
 from paper_repro.util.validation import check_alpha, check_n
+
+#: Below this alpha, E is taken at ALPHA_FLAT (E(alpha) - E(0) = O(alpha^2) < 1e-17, see the module docstring).
+ALPHA_FLAT = 1e-9
+#: Largest ball precision (bits) tried before giving up (never reached for n <= MAX_N_ELEVATION; measured).
+MAX_PREC = 1 << 15
 
 
 def elevation_system(n: int, alpha, ctx: Context, *, verify: int = 3, seed: int = 4, rows: int | None = None
@@ -51,25 +72,88 @@ def elevation_matrix_exact(n: int, alpha: RationalAngle, verify: int = 3, seed: 
     return elevation_system(n, alpha, ExactContext(), verify=verify, seed=seed).solution.tolist()
 
 
+def _ball_solve(n: int, alpha: float, prec: int) -> np.ndarray | None:
+    """E at ``prec`` bits in ball arithmetic, collocating at alpha-independent points of the plane u + v + w =
+    alpha (:func:`~paper_repro.core.normalization.fixed_points`); the float64 midpoints, or ``None`` if some
+    entry is not certified to 2^-64 (or the ball matrix is not certified invertible)."""
+    from flint import arb, arb_mat
+
+    ctx = BallContext(prec=prec)
+    m = delta(n + 1)
+    tu, tv = fixed_points(n + 1, m, 7)
+    pts = RationalPoints(None, tu, tv, check=False)
+    with ctx.scope():
+        a = arb(alpha)  # a float is an exact binary rational
+        big = evaluate_normalized(n + 1, a, pts, ctx)
+        small = evaluate_normalized(n, a, pts, ctx)
+        try:
+            x = arb_mat(big.tolist()).solve(arb_mat(small.tolist()))
+        except ZeroDivisionError:
+            return None
+        bound = arb(2) ** -64
+        out = np.empty((x.nrows(), x.ncols()))
+        for i in range(x.nrows()):
+            for j in range(x.ncols()):
+                e = x[i, j]
+                if not e.rad() < bound:
+                    return None
+                out[i, j] = float(e.mid())
+    return out
+
+
+def start_precision(n: int, alpha: float) -> int:
+    """First ball precision tried: the collocation matrix loses about 4 (n + 1) log2(1/alpha) bits as alpha -> 0
+    (measured: n = 1, 3, 6 need 512, 512, 1024 bits at alpha = 1e-8) and a few near pi."""
+    lost = 4 * (n + 1) * max(0.0, math.log2(1 / alpha), math.log2(1 / (math.pi - alpha)))
+    return 128 + 64 * math.ceil(lost / 64)
+
+
 @lru_cache(maxsize=64)
 def _elevation_matrix_float(n: int, alpha: float) -> np.ndarray:
-    """E in float: least squares over 3 delta_{n+1} seeded points (the square systems are ill-conditioned)."""
-    return elevation_system(n, alpha, FloatContext(), verify=0, seed=12, rows=3 * delta(n + 1)).solution
+    """E rounded once to float64 from a certified ball solve (cached on disk: the exact bits are deterministic)."""
+    a = max(alpha, ALPHA_FLAT)
+
+    def compute():
+        prec = start_precision(n, a)
+        while prec <= MAX_PREC:
+            e = _ball_solve(n, a, prec)
+            if e is not None:
+                return {"prec": prec, "rows": [[x.hex() for x in row] for row in e]}
+            prec *= 2
+        raise ArithmeticError(f"elevation {n}->{n + 1} at alpha = {a!r}: not certified at {MAX_PREC} bits")
+
+    stored = cached("elevation_matrix", {"n": n, "alpha": a.hex()}, compute)
+    out = np.array([[float.fromhex(x) for x in row] for row in stored["rows"]])
+    out.setflags(write=False)
+    return out
 
 
 def elevation_matrix(n: int, alpha) -> np.ndarray:
-    """E as a float array: exact (then rounded) for a :class:`RationalAngle`, least squares otherwise."""
+    """E as a float64 array, ``(delta_{n+1}, delta_n)``: exact (then rounded) for a :class:`RationalAngle`, from a
+    certified ball solve otherwise; rows sum to 1 to rounding for every alpha in (0, pi).
+
+    ``n`` from 1 to :data:`~paper_repro.util.limits.MAX_N_ELEVATION` (time budget: see the README table).
+    """
+    n = check_int(n, "n", 1, MAX_N_ELEVATION, why="elevation matrices are solved in ball arithmetic: "
+                  "cost grows as delta_n^3 times the precision")
     if isinstance(alpha, RationalAngle):
         return np.array([[float(x) for x in row] for row in elevation_matrix_exact(n, alpha)])
-    return _elevation_matrix_float(check_n(n), check_alpha(alpha))
+    return _elevation_matrix_float(n, check_alpha(alpha)).copy()
 
 
 def elevate(net, n: int, alpha, times: int = 1) -> np.ndarray:
     """Control net of the same patch written in order ``n + times`` (repeated order elevation).
 
     ``net`` is a ``(delta_n, d)`` array or ``{label: point}``; ``alpha`` a float in (0, pi) or a
-    :class:`RationalAngle` (then the matrices are exact before rounding).
+    :class:`RationalAngle` (then the matrices are exact before rounding).  ``times`` from 0 to
+    :data:`~paper_repro.util.limits.MAX_ELEVATION_STEPS`, with ``n + times - 1 <=``
+    :data:`~paper_repro.util.limits.MAX_N_ELEVATION`.
     """
+    n = check_int(n, "n", 1, MAX_N_ELEVATION, why="elevation matrices are solved in ball arithmetic")
+    times = check_int(times, "times", 0, min(MAX_ELEVATION_STEPS, MAX_N_ELEVATION + 1 - n),
+                      why=f"n + times - 1 must be at most {MAX_N_ELEVATION} (the largest elevation matrix)")
+    if not isinstance(alpha, RationalAngle):
+        check_alpha(alpha)
     arr = check_net(net, n)
     for k in range(times):
         arr = elevation_matrix(n + k, alpha) @ arr

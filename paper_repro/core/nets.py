@@ -34,6 +34,8 @@ def _as_object_rows(net, name: str) -> np.ndarray:
         numeric = isinstance(x, (numbers.Number, np.number)) or hasattr(x, "__float__")
         if isinstance(x, (bool, np.bool_, str, bytes)) or not numeric:
             raise TypeError(f"{name} entries must be real numbers, got {type(x).__name__}")
+        if isinstance(x, (complex, np.complexfloating)) or type(x).__name__ == "mpc":
+            raise TypeError(f"{name} entries must be real numbers, got the complex number {x!r}")
     return arr
 
 

@@ -264,7 +264,7 @@ def scaled_orbit_coefficients(n: int, alpha, arith: str | Context = "float", *, 
     ['1', '6/5', '32/25']
     """
     n = check_n(n)
-    ctx = get_context(arith, dps=dps or mpmath.mp.dps)
+    ctx = get_context(arith, dps=mpmath.mp.dps if dps is None else dps)
     limit = MAX_N_FLOAT if isinstance(ctx, FloatContext) else MAX_N_EXACT if ctx.exact else MAX_N_MP
     if n > limit:
         raise ValueError(f"n must be at most {limit} for normalizing coefficients in arith {ctx.name!r} (the cost "
@@ -297,7 +297,7 @@ def orbit_coefficients(n: int, alpha, arith: str | Context = "float", *, dps: in
     ['25/16', '15/8', '5/2']
     """
     n = check_n(n)
-    ctx = get_context(arith, dps=dps or mpmath.mp.dps)
+    ctx = get_context(arith, dps=mpmath.mp.dps if dps is None else dps)
     scaled = scaled_orbit_coefficients(n, alpha, ctx, dps=dps)
     powers = sin_powers(n)
     if isinstance(ctx, FloatContext):
@@ -339,7 +339,7 @@ def orbit_coefficients_collocation(n: int, alpha, arith: str | Context = "exact"
 
 def coefficient_vector(n: int, alpha, arith: str | Context = "float", *, dps: int | None = None) -> np.ndarray:
     """Coefficients of all delta_n functions in internal order, as an array of the context."""
-    ctx = get_context(arith, dps=dps or mpmath.mp.dps)
+    ctx = get_context(arith, dps=mpmath.mp.dps if dps is None else dps)
     orb = orbit_coefficients(n, alpha, ctx)
     out = ctx.zeros((len(united_system(n)),))
     for (_, members), x in zip(orbits(n), orb):
@@ -371,7 +371,7 @@ def coefficients(n: int, alpha, arith: str | Context = "float", *, dps: int | No
 
 def scaled_coefficient_vector(n: int, alpha, arith: str | Context = "float", *, dps: int | None = None) -> np.ndarray:
     """``s^{2n+j} r`` of all delta_n functions in internal order (finite for every alpha in (0, pi))."""
-    ctx = get_context(arith, dps=dps or mpmath.mp.dps)
+    ctx = get_context(arith, dps=mpmath.mp.dps if dps is None else dps)
     orb = scaled_orbit_coefficients(n, alpha, ctx, dps=dps)
     out = ctx.zeros((len(united_system(n)),))
     for (_, members), x in zip(orbits(n), orb):

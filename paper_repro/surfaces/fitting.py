@@ -13,7 +13,6 @@ from __future__ import annotations
 from collections.abc import Callable
 from dataclasses import dataclass
 
-import mpmath
 import numpy as np
 from flint import fmpq
 
@@ -29,6 +28,8 @@ from paper_repro.core.domain import (
 from paper_repro.core.fourier import cos_sin_combination, full_angles
 from paper_repro.core.labels import delta
 from paper_repro.core.normalization import evaluate_normalized
+from paper_repro.util.limits import MAX_DPS, MAX_N_FIT, MAX_N_FIT_EXACT, MIN_DPS, check_int
+from paper_repro.util.validation import check_alpha
 
 
 @dataclass
@@ -62,6 +63,9 @@ def fit_exact(surface: Callable[[ExactTrig], list[fmpq]], n: int, alpha: Rationa
 
     ``ValueError`` if the surface is not in the span (the verification points disagree).
     """
+    n = check_int(n, "n", 1, MAX_N_FIT_EXACT, why="exact collocation with delta_n unknowns; see the README table")
+    if not isinstance(alpha, RationalAngle):
+        raise TypeError(f"alpha must be a RationalAngle for exact fitting, got {type(alpha).__name__}")
     d = delta(n)
 
     def system(k: int):
@@ -83,12 +87,18 @@ def fit_mp(surface: Callable, n: int, alpha, dps: int = 40, verify: int = 4, see
     ``ValueError`` if the surface is not in the span: the residual at the verification points exceeds
     ``10^-(tol_digits)`` relative (default ``dps - 15`` digits).
     """
+    n = check_int(n, "n", 1, MAX_N_FIT, why="mp collocation with delta_n unknowns; see the README table")
+    check_alpha(alpha)
+    dps = check_int(dps, "dps", MIN_DPS, MAX_DPS)
+    if tol_digits is not None:
+        tol_digits = check_int(tol_digits, "tol_digits", 1, dps - 1,
+                               why="the verification tolerance 10^-tol_digits must lie above the working precision")
     d = delta(n)
     ctx = MpContext(dps=dps)
 
     def system(k: int):
         with ctx.scope():
-            a = mpmath.mpf(alpha)
+            a = ctx.convert(alpha)
             pts = mp_domain_points(a, d + verify, seed + k)
             basis = evaluate_normalized(n, a, pts, ctx)
             return basis, np.array([list(surface(*p)) for p in pts], dtype=object)
@@ -114,6 +124,8 @@ def fit(surface: Callable, n: int, alpha, arith: str | Context = "mp", **kwargs)
     >>> len(net), len(net[0])
     (7, 2)
     """
+    if not callable(surface):
+        raise TypeError(f"surface must be callable, got {type(surface).__name__}")
     ctx = get_context(arith)
     if ctx.exact:
         return fit_exact(surface, n, alpha, **kwargs)

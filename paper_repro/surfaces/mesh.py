@@ -18,11 +18,15 @@ from pathlib import Path
 import numpy as np
 
 from paper_repro.util.io import atomic_path
+from paper_repro.util.limits import check_real_array
 
 FORMATS = {".obj": "obj", ".ply": "ply"}
 
 
 def _check_mesh(vertices, faces, normals) -> tuple[np.ndarray, np.ndarray, np.ndarray | None]:
+    check_real_array(vertices, "vertices")
+    if normals is not None:
+        check_real_array(normals, "normals")
     try:
         v = np.asarray(vertices, dtype=np.float64)
         f = np.asarray(faces)

@@ -13,12 +13,58 @@ import numpy as np
 
 from paper_repro.core.context import Context, FloatContext, get_context
 from paper_repro.core.derivatives_basis import basis_derivative
-from paper_repro.core.domain import RationalPoints, barycentric_to_uvw, check_points
+from paper_repro.core.domain import RationalAngle, RationalPoints, barycentric_to_uvw, check_points
 from paper_repro.core.fast import BLOCK, FloatKernel
 from paper_repro.core.labels import delta, exponent_matrix, index_of
 from paper_repro.core.nets import check_net, check_net_exact, net_from_labels  # noqa: F401 (re-exported)
 from paper_repro.core.normalization import coefficient_vector, evaluate_normalized
+from paper_repro.util.limits import MAX_MESH_RESOLUTION, check_int, check_real_array, real_scalar
 from paper_repro.util.validation import DOMAIN_TOL, check_alpha, check_n
+
+
+def check_weights(weights, n: int) -> tuple[np.ndarray, np.ndarray]:
+    """Weights of a rational patch (eq. rational_patch): ``(exact, float64)``, both divided by their largest entry.
+
+    A rational patch does not change when every weight is multiplied by the same factor, so the weights are
+    normalised (float weights by a power of two, exactly): weights scaled by 1e-300 or 1e300 give the same points.
+    They must be finite and >= 0; a zero weight at a corner control point (``r_{2n,2n,0}``, ``g_{2n,2n,0}``,
+    ``b_{2n,2n,0}``) is refused, since at that corner every other blending function vanishes and the patch is 0/0
+    there (inside the triangle every blending function is positive, so one positive weight suffices).
+    """
+    from fractions import Fraction
+
+    from flint import fmpq
+
+    from paper_repro.core.labels import index_of
+
+    check_real_array(weights, "weights")
+    try:
+        w = np.asarray(weights, dtype=object)
+        wf = w.astype(np.float64)
+    except (TypeError, ValueError, OverflowError):
+        raise TypeError("weights must be finite real numbers (float64 range)") from None
+    if wf.shape != (delta(n),):
+        raise ValueError(f"weights must have shape ({delta(n)},) for n = {n}, got {wf.shape}")
+    if not np.all(np.isfinite(wf)) or np.any(wf < 0):
+        raise ValueError("weights must be finite and non-negative")
+    idx = index_of(n)
+    corners = [f"{c}_{{{2 * n},{2 * n},0}}" for c in "rgb"]
+    zero = [lab for lab in corners if wf[idx[lab]] == 0]
+    if zero:
+        raise ValueError(f"weights: the corner weight(s) {zero} are 0, so the rational patch is 0/0 at that corner; "
+                         "corner weights must be positive")
+    exact = all(isinstance(x, (int, np.integer, Fraction, fmpq)) for x in w)
+    if exact:
+        top = max(w, key=lambda x: Fraction(int(x.p), int(x.q)) if isinstance(x, fmpq) else Fraction(x))
+        top = fmpq(int(top.p), int(top.q)) if isinstance(top, fmpq) else fmpq(Fraction(top).numerator,
+                                                                               Fraction(top).denominator)
+        w = np.array([fmpq(Fraction(x).numerator, Fraction(x).denominator) if not isinstance(x, fmpq) else x
+                      for x in w], dtype=object) / top
+    else:
+        _, e = np.frexp(wf.max())
+        wf = np.ldexp(wf, -int(e))  # exact division by a power of two
+        w = wf.astype(object)
+    return w, np.asarray(w.astype(np.float64), dtype=np.float64)
 
 
 class Patch:
@@ -67,23 +113,14 @@ class Patch:
     def __init__(self, n: int, alpha, net, weights=None, arith: str | Context = "float"):
         self.n = check_n(n)
         check_alpha(alpha)
-        self.alpha = alpha
+        self.alpha = alpha if isinstance(alpha, RationalAngle) else real_scalar(alpha, "alpha")
         self.net_exact = check_net_exact(net, self.n)
         self.net = self.net_exact.astype(np.float64)
         self.ctx = get_context(arith)
         self.weights_exact = None
         self.weights = None
         if weights is not None:
-            try:
-                w = np.asarray(weights, dtype=object)
-                wf = w.astype(np.float64)
-            except (TypeError, ValueError):
-                raise TypeError("weights must be real numbers") from None
-            if wf.shape != (delta(self.n),):
-                raise ValueError(f"weights must have shape ({delta(self.n)},) for n = {self.n}, got {wf.shape}")
-            if not np.all(np.isfinite(wf)) or np.any(wf < 0) or wf.sum() == 0:
-                raise ValueError("weights must be finite, non-negative and not all zero (rank 1)")
-            self.weights_exact, self.weights = w, wf
+            self.weights_exact, self.weights = check_weights(weights, self.n)
 
     def __repr__(self) -> str:
         kind = "rational " if self.weights is not None else ""
@@ -216,9 +253,8 @@ class Patch:
 
 def triangle_grid(resolution: int) -> tuple[np.ndarray, np.ndarray]:
     """Barycentric grid points ``(V, 3)`` and faces ``(F, 3)`` of a triangle with ``resolution`` steps a side."""
-    if isinstance(resolution, bool) or not isinstance(resolution, (int, np.integer)) or not 1 <= resolution <= 4096:
-        raise ValueError(f"resolution must be an integer from 1 to 4096, got {resolution!r}")
-    r = int(resolution)
+    r = check_int(resolution, "resolution", 1, MAX_MESH_RESOLUTION,
+                  why="(r+1)(r+2)/2 vertices and 2 r^2 faces; the budget is about 0.5 M vertices")
     ids, bary = {}, []
     for i in range(r + 1):
         for j in range(r + 1 - i):

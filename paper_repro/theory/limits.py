@@ -22,6 +22,7 @@ from paper_repro.core.nets import check_net
 from paper_repro.core.normalization import orbits
 from paper_repro.theory.closed_forms import closed_forms_cached
 from paper_repro.theory.limit_formula import limit_terms_formula, multinomial
+from paper_repro.util.limits import MAX_N_BEZIER_LIMIT, check_int
 
 
 def limit_terms(n: int) -> list[tuple[fmpq, tuple[int, int, int]]]:
@@ -100,6 +101,7 @@ def bezier_limit(net, n: int) -> tuple[int, dict[tuple[int, int, int], np.ndarra
     N = 3n - 1 for every n (the weights come from the limit formula, proven for every n: claim
     ``limit_formula``, docs/limit_for_all_n.md).
     """
+    n = check_int(n, "n", 1, MAX_N_BEZIER_LIMIT, why="exact conversion weights, O(n^4) rational operations")
     arr = check_net(net, n)
     idx, w = conversion_matrix(n, "formula")
     wf = np.array([[float(x) for x in row] for row in w])

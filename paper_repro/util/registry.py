@@ -163,6 +163,38 @@ N_PARAMETERS = {"ns": lambda n: [n], "n_min": lambda n: n, "n_max": lambda n: n,
 ALPHA_PARAMETERS = {"alphas": lambda a: [a]}
 
 
+#: Where ``--alpha`` is meaningful for a claim, when narrower than (0, pi): ``(low, high, why)``.  Outside it the
+#: check cannot decide the statement in the claim's arithmetic (the reason is ``why``), so the CLI refuses the value
+#: before any work instead of reporting a true statement as FAIL.
+ALPHA_RANGES: dict[str, tuple[float, float, str]] = {}
+
+
+def n_range(c: Claim) -> int | None:
+    """Largest order the claim has been run and timed at (its default and extended parameters): ``--n`` beyond it
+    is refused (``None`` if the claim takes no order)."""
+    values: list[int] = []
+    for params in (c.defaults, c.extended or {}):
+        for k in N_PARAMETERS:
+            v = params.get(k)
+            if isinstance(v, list):
+                values += [int(x) for x in v]
+            elif isinstance(v, int):
+                values.append(v)
+    return max(values) if values else None
+
+
+def check_cli_range(c: Claim, n: int | None, alpha: float | None) -> None:
+    """``ValueError`` naming the option and the claim's range if ``--n``/``--alpha`` lies outside it."""
+    top = n_range(c)
+    if n is not None and top is not None and n > top:
+        raise ValueError(f"--n: claim {c.id!r} runs for n from 1 to {top} (its measured budget), got {n}")
+    if alpha is not None and c.id in ALPHA_RANGES:
+        lo, hi, why = ALPHA_RANGES[c.id]
+        if not lo <= alpha <= hi:
+            raise ValueError(f"--alpha: claim {c.id!r} is meaningful for alpha in [{lo:g}, {hi:.15g}] ({why}), "
+                             f"got {alpha}")
+
+
 def cli_overrides(c: Claim, n: int | None, alpha: str | None) -> dict[str, Any] | None:
     """Overrides of claim ``c`` for ``--n``/``--alpha``; ``None`` if the claim takes neither given option."""
     out: dict[str, Any] = {}

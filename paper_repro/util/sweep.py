@@ -23,7 +23,9 @@ does not depend on the executor.  ``task`` must be a module-level function (pick
 from __future__ import annotations
 
 import os
+import signal
 import sys
+import time
 from collections.abc import Callable, Iterable
 from concurrent.futures import Executor, ProcessPoolExecutor, as_completed
 from typing import TypeVar
@@ -61,7 +63,9 @@ def sweep(task: Callable[[T], R], items: Iterable[T], *, executor: Executor | No
                 print(f"{desc} {k}/{len(seq)}: {label(item)}", file=sys.stderr, flush=True)
         return out
     own = executor is None
-    ex = executor or ProcessPoolExecutor(max_workers=n, initializer=initializer)
+    ex = executor or ProcessPoolExecutor(max_workers=n, initializer=_quiet_worker,
+                                         initargs=(initializer,))
+    futures: dict = {}
     try:
         futures = {ex.submit(task, item): k for k, item in enumerate(seq)}
         results: list = [None] * len(seq)
@@ -71,6 +75,37 @@ def sweep(task: Callable[[T], R], items: Iterable[T], *, executor: Executor | No
             if desc:
                 print(f"{desc} {done}/{len(seq)}: {label(seq[k])}", file=sys.stderr, flush=True)
         return results
+    except BaseException:
+        # Ctrl-C (or an error): cancel the pending work at once instead of draining the queue, and stop our
+        # own workers (they ignore SIGINT, so only the parent reports it); results are written atomically
+        # after a sweep, so an interrupted sweep leaves data/ and the cache as they were.
+        for fut in futures:
+            fut.cancel()
+        if own:
+            _terminate(ex)
+            own = False
+        raise
     finally:
         if own:
             ex.shutdown()
+
+
+def _quiet_worker(initializer: Callable[[], None] | None) -> None:
+    """Worker start-up: ignore SIGINT (the parent handles Ctrl-C and stops the workers), then ``initializer``."""
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    if initializer:
+        initializer()
+
+
+def _terminate(ex: ProcessPoolExecutor) -> None:
+    """Stop a local pool now: pending futures cancelled, worker processes terminated."""
+    procs = list(getattr(ex, "_processes", {}).values())
+    ex.shutdown(wait=False, cancel_futures=True)
+    for p in procs:
+        p.terminate()
+    deadline = time.monotonic() + 1.0  # one second in all, not per worker
+    for p in procs:
+        p.join(timeout=max(0.0, deadline - time.monotonic()))
+    for p in procs:
+        if p.is_alive():
+            p.kill()

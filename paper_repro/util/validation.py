@@ -8,6 +8,8 @@ from __future__ import annotations
 import math
 import numbers
 
+from paper_repro.util.limits import real_scalar
+
 #: Points may miss the domain Omega^alpha by this much (relative to alpha) in float arithmetic.
 DOMAIN_TOL = 1e-12
 #: Largest order accepted (delta_n = 3n(n+1)+1 functions; beyond this nothing fits in memory or time).
@@ -39,10 +41,12 @@ def _plain(x: object) -> str:
 def check_alpha(alpha: object, name: str = "alpha") -> float:
     """Return ``float(alpha)`` if ``0 < alpha < pi``, else raise ``ValueError``.
 
-    Accepts floats, mpmath numbers and exact rationals (anything ``float()`` accepts).
+    Accepts ints, floats, numpy real scalars and 0-d arrays, ``Fraction``, mpmath ``mpf`` and flint ``fmpq``;
+    ``TypeError`` for booleans, strings, complex numbers and arrays (:func:`paper_repro.util.limits.real_scalar`).
     """
     if isinstance(alpha, (bool, str, bytes)) or alpha is None:
         raise TypeError(f"{name} must be a real number in the open interval (0, pi), got {_plain(alpha)}")
+    alpha = real_scalar(alpha, name)
     try:
         a = float(alpha)  # type: ignore[arg-type]
     except (TypeError, ValueError, OverflowError):
