@@ -40,10 +40,11 @@ from paper_repro.core.normalizing_formula import scaled_table, sin_powers
 from paper_repro.util.cache import cached
 from paper_repro.util.validation import check_alpha, check_n
 
-#: Largest orders for the normalizing coefficients from the all-n formula (n^3 operations; measured: exact
-#: n = 45 in 0.2 s, n = 100 in 4 s, n = 200 in about 60 s; float n = 200 in 0.6 s; logarithms n = 1000 in ~100 s).
+#: Largest orders for the normalizing coefficients from the all-n formula (n^3 operations; measured on the 2-core
+#: machine: exact n = 45 in 0.2 s, n = 100 in 4 s; mp at 30 digits n = 40 in 2.6 s, n = 80 in 18 s (so about 50 s
+#: at n = 120); float n = 200 in 0.6 s; logarithms n = 500 in 17 s, n = 1000 in about 105 s).
 MAX_N_EXACT = 200
-MAX_N_MP = 200
+MAX_N_MP = 120
 MAX_N_FLOAT = 1000
 MAX_N_LOG = 1000
 #: Kept for the collocation solve (the independent check): (n+1)(n+2)/2 unknowns.
