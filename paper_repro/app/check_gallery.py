@@ -21,7 +21,7 @@ import subprocess
 import sys
 from pathlib import Path
 
-from paper_repro.util.io import FIGURES, ROOT
+from paper_repro.util.io import figures_dir, reports_dir
 
 CHROMIUM = ("chromium", "chromium-browser", "google-chrome")
 DRIVER = ("chromedriver",)
@@ -107,8 +107,8 @@ def check(page: Path, screenshot: Path) -> dict:
 def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(prog="python -m paper_repro.app.check_gallery")
     ap.add_argument("--install", action="store_true", help="apt-get install chromium and chromium-driver if missing")
-    ap.add_argument("--page", type=Path, default=FIGURES / "index.html")
-    ap.add_argument("--screenshot", type=Path, default=ROOT / "reports" / "gallery.png")
+    ap.add_argument("--page", type=Path, default=figures_dir() / "index.html")
+    ap.add_argument("--screenshot", type=Path, default=reports_dir() / "gallery.png")
     args = ap.parse_args(argv)
     if args.install:
         install()

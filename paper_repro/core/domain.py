@@ -20,7 +20,7 @@ import numpy as np
 from flint import fmpq
 
 from paper_repro.core.context import Context, ExactContext
-from paper_repro.util.validation import DOMAIN_TOL, check_alpha
+from paper_repro.util.validation import DOMAIN_TOL, check_alpha, parse_alpha
 
 
 def _q(x) -> fmpq:
@@ -144,7 +144,7 @@ def check_points(points, alpha, tol: float = DOMAIN_TOL, offset: int = 0) -> np.
     A point is accepted if ``|u + v + w - alpha| <= tol * alpha`` and ``u, v, w >= -tol * alpha``.
     Raises ``ValueError``/``TypeError`` naming ``points`` (and the first offending point) otherwise.
     """
-    a = check_alpha(alpha)
+    a = check_alpha(parse_alpha(alpha))
     if isinstance(points, (str, bytes)):
         raise TypeError(f"points must be a (P, 3) array of (u, v, w), got a string {points!r}")
     try:
@@ -252,7 +252,7 @@ def sample_points(alpha, count: int, seed: int = 0, interior: bool = True) -> np
     ...
     ValueError: count must be an integer from 0 to 100000000, got -1
     """
-    check_alpha(alpha)
+    alpha = parse_alpha(alpha)
     check_count(count)
     rng = np.random.default_rng(seed)
     bary = rng.dirichlet(np.ones(3), size=count)

@@ -20,7 +20,7 @@ from paper_repro.core.domain import RationalAngle, rational_alpha, sample_points
 from paper_repro.core.labels import delta
 from paper_repro.core.nets import check_net
 from paper_repro.core.normalization import evaluate_normalized
-from paper_repro.util.validation import check_alpha, check_n
+from paper_repro.util.validation import check_alpha, check_n, parse_alpha
 
 
 def elevation_system(n: int, alpha, ctx: Context, *, verify: int = 3, seed: int = 4, rows: int | None = None
@@ -59,6 +59,7 @@ def _elevation_matrix_float(n: int, alpha: float) -> np.ndarray:
 
 def elevation_matrix(n: int, alpha) -> np.ndarray:
     """E as a float array: exact (then rounded) for a :class:`RationalAngle`, least squares otherwise."""
+    alpha = parse_alpha(alpha)
     if isinstance(alpha, RationalAngle):
         return np.array([[float(x) for x in row] for row in elevation_matrix_exact(n, alpha)])
     return _elevation_matrix_float(check_n(n), check_alpha(alpha))
@@ -71,6 +72,7 @@ def elevate(net, n: int, alpha, times: int = 1) -> np.ndarray:
     :class:`RationalAngle` (then the matrices are exact before rounding).
     """
     arr = check_net(net, n)
+    alpha = parse_alpha(alpha)
     for k in range(times):
         arr = elevation_matrix(n + k, alpha) @ arr
     return arr
@@ -80,5 +82,5 @@ def rational_alpha_near(alpha: float, denominator: int = 1000) -> RationalAngle:
     """A rational-tangent alpha close to ``alpha``: tan(alpha/4) rounded to ``denominator``."""
     from fractions import Fraction
 
-    f = Fraction(np.tan(check_alpha(alpha) / 4)).limit_denominator(denominator)
+    f = Fraction(np.tan(check_alpha(parse_alpha(alpha)) / 4)).limit_denominator(denominator)
     return rational_alpha(fmpq(f.numerator, f.denominator))

@@ -7,7 +7,7 @@ import json
 import math
 from pathlib import Path
 
-from paper_repro.util.io import DATA
+from paper_repro.util.io import data_dir
 from paper_repro.util.registry import figure
 
 from . import plt, save
@@ -18,7 +18,7 @@ from . import plt, save
                 "[1e-3, pi - 1e-3]: left, max |sum of the blending values - 1|; right, max error of patch points "
                 "relative to the net (random nets). Dashed: the 1e-13 bound of claim float_accuracy.")
 def make_accuracy(outdir: Path) -> list[Path]:
-    rows = json.loads((DATA / "accuracy" / "float_vs_mp.json").read_text())["rows"]
+    rows = json.loads((data_dir() / "accuracy" / "float_vs_mp.json").read_text())["rows"]
     fig, axes = plt.subplots(1, 2, figsize=(12, 4.8), sharey=True)
     cmap = plt.get_cmap("viridis")
     ns = sorted({r["n"] for r in rows})

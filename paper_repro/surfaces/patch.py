@@ -16,9 +16,9 @@ from paper_repro.core.derivatives_basis import basis_derivative
 from paper_repro.core.domain import RationalPoints, barycentric_to_uvw, check_points
 from paper_repro.core.fast import BLOCK, FloatKernel
 from paper_repro.core.labels import delta, exponent_matrix, index_of
-from paper_repro.core.nets import check_net, check_net_exact, net_from_labels  # noqa: F401 (re-exported)
+from paper_repro.core.nets import LabelledNet, check_net, check_net_exact, net_from_labels  # noqa: F401 (re-exported)
 from paper_repro.core.normalization import coefficient_vector, evaluate_normalized
-from paper_repro.util.validation import DOMAIN_TOL, check_alpha, check_n
+from paper_repro.util.validation import DOMAIN_TOL, check_n, parse_alpha
 
 
 class Patch:
@@ -66,10 +66,10 @@ class Patch:
 
     def __init__(self, n: int, alpha, net, weights=None, arith: str | Context = "float"):
         self.n = check_n(n)
-        check_alpha(alpha)
-        self.alpha = alpha
+        self.alpha = alpha = parse_alpha(alpha)  # "pi/2" accepted
         self.net_exact = check_net_exact(net, self.n)
-        self.net = self.net_exact.astype(np.float64)
+        #: float64 control net; rows also by paper label: ``patch.net["r_{4,3,1}"]``
+        self.net = LabelledNet(self.net_exact.astype(np.float64), self.n)
         self.ctx = get_context(arith)
         self.weights_exact = None
         self.weights = None
