@@ -84,7 +84,7 @@ figures: $(STAMP)
 
 lint: $(STAMP)                 ## ruff, and mypy on the package (type hints of the public API)
 	$(PY) -m ruff check paper_repro tests
-	$(PY) -m mypy paper_repro
+	$(PY) -m mypy
 
 clean:                         ## caches and build products (not data/ or figures/, not the environment)
 	rm -rf build .cache .pytest_cache .hypothesis .ruff_cache .mypy_cache docs/_build

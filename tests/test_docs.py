@@ -19,7 +19,7 @@ DOCS = ROOT / "docs"
 
 
 def test_tutorial_runs(tmp_path, monkeypatch):
-    blocks = re.findall(r"```python\n(.*?)```", (DOCS / "tutorial.md").read_text(encoding="utf-8"), re.S)
+    blocks = re.findall(r"```python\n(.*?)```", (DOCS / "guide" / "tutorial.md").read_text(encoding="utf-8"), re.S)
     assert len(blocks) >= 7
     monkeypatch.chdir(tmp_path)
     scope: dict = {"__name__": "tutorial"}
@@ -46,7 +46,7 @@ def test_site_in_headless_chromium(tmp_path):
                           capture_output=True, text=True)
     assert proc.returncode == 0, proc.stderr[-3000:]
     assert not list(out.rglob("*.html")) == []
-    res = check_docs_site(out / "index.html", out / "tutorial.html")
+    res = check_docs_site(out / "index.html", out / "guide" / "tutorial.html")
     assert res["console_errors"] == [] and res["external_requests"] == [], res
     assert res["math_rendered"] > 0 and res["math_errors"] == 0, res
 

@@ -124,13 +124,13 @@ class RationalPoints:
 
     def uvw_float(self) -> np.ndarray:
         """The points as an ``(P, 3)`` float array."""
-        a = float(self.alpha)
+        a = float(self.alpha)  # type: ignore[arg-type]
         rows = [[float(RationalAngle(tu)), float(RationalAngle(tv))] for tu, tv in zip(self.tu, self.tv)]
         return np.array([[u, v, a - u - v] for u, v in rows], dtype=np.float64).reshape(-1, 3)
 
     def uvw_mp(self) -> np.ndarray:
         """The points as an ``(P, 3)`` object array of mpf, at the current mpmath precision."""
-        a = self.alpha.mp()
+        a = self.alpha.mp()  # type: ignore[union-attr]
         rows = []
         for tu, tv in zip(self.tu, self.tv):
             u, v = RationalAngle(tu).mp(), RationalAngle(tv).mp()

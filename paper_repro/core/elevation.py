@@ -16,7 +16,13 @@ from flint import fmpq
 
 from paper_repro.core.collocation import Collocation, collocate
 from paper_repro.core.context import Context, ExactContext, FloatContext
-from paper_repro.core.domain import RationalAngle, rational_alpha, sample_points, sample_rational_points
+from paper_repro.core.domain import (
+    RationalAngle,
+    RationalPoints,
+    rational_alpha,
+    sample_points,
+    sample_rational_points,
+)
 from paper_repro.core.labels import delta
 from paper_repro.core.nets import check_net
 from paper_repro.core.normalization import evaluate_normalized
@@ -36,6 +42,7 @@ def elevation_system(n: int, alpha, ctx: Context, *, verify: int = 3, seed: int 
     m = rows or d1
 
     def system(k: int):
+        pts: RationalPoints | np.ndarray
         if ctx.exact:
             pts = sample_rational_points(alpha, m + verify, seed=seed + k)
         else:

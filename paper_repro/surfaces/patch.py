@@ -219,7 +219,8 @@ def triangle_grid(resolution: int) -> tuple[np.ndarray, np.ndarray]:
     if isinstance(resolution, bool) or not isinstance(resolution, (int, np.integer)) or not 1 <= resolution <= 4096:
         raise ValueError(f"resolution must be an integer from 1 to 4096, got {resolution!r}")
     r = int(resolution)
-    ids, bary = {}, []
+    ids: dict[tuple[int, int], int] = {}
+    bary: list[tuple[float, float, float]] = []
     for i in range(r + 1):
         for j in range(r + 1 - i):
             ids[(i, j)] = len(bary)

@@ -34,7 +34,7 @@ def _plain(x: object) -> str:
         return repr(x)
     try:
         if isinstance(x, (numbers.Real,)) or type(x).__name__ in ("mpf", "fmpq", "arb"):
-            return str(x) if type(x).__name__ in ("fmpq", "arb") else repr(float(x))
+            return str(x) if type(x).__name__ in ("fmpq", "arb") else repr(float(x))  # type: ignore[arg-type]
     except (TypeError, ValueError, OverflowError):
         pass
     text = repr(x)
@@ -62,7 +62,7 @@ _ALPHA_TEXT = re.compile(
 _NUMBER_TEXT = re.compile(r"^\s*(?P<num>[+-]?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][+-]?\d+)?)\s*(?:/\s*(?P<den>\d+))?\s*$")
 
 
-def parse_alpha(alpha: object, name: str = "alpha") -> object:
+def parse_alpha(alpha: object, name: str = "alpha") -> Any:
     """The shape parameter as the package's functions take it; the one reader of alpha for the API and the CLI.
 
     A string is read as a number (``'1.2'``, ``'3/2'``) or a multiple of pi (``'pi/2'``, ``'2pi/3'``,
