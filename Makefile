@@ -6,8 +6,10 @@ PYVER  := $(shell $(PYTHON) -c 'import sys; print("%d.%d" % sys.version_info[:2]
 VENV   ?= $(if $(filter-out 3.11,$(PYVER)),.venv-$(PYVER),.venv)
 PY     := $(VENV)/bin/python
 STAMP  := $(VENV)/.installed-stamp
-# bezier has no CPython 3.13 wheel: there pip builds its locked sdist as pure Python (no compiled speed-up)
+# bezier has no CPython 3.13 wheel: there pip builds its locked sdist as pure Python (no compiled speed-up;
+# bezier's setup refuses an untested Python unless told); no effect where a wheel is installed
 export BEZIER_NO_EXTENSION := True
+export BEZIER_IGNORE_VERSION_CHECK := True
 
 .PHONY: venv lock report check-gallery test-min test-wheel docs reproduce reproduce-extended test test-all bench bench-question1 figures lint clean distclean
 
