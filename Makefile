@@ -10,6 +10,10 @@ STAMP  := $(VENV)/.installed-stamp
 # bezier's setup refuses an untested Python unless told); no effect where a wheel is installed
 export BEZIER_NO_EXTENSION := True
 export BEZIER_IGNORE_VERSION_CHECK := True
+# claim results cached by another interpreter are not reused: non-reference versions keep their cache in their venv
+ifneq ($(filter-out 3.11,$(PYVER)),)
+export PAPER_REPRO_CACHE ?= $(CURDIR)/$(VENV)/cache
+endif
 
 .PHONY: venv lock report check-gallery test-min test-wheel docs reproduce reproduce-extended test test-all bench bench-question1 figures lint clean distclean
 
@@ -66,7 +70,7 @@ test-wheel: $(STAMP)           ## build the wheel, install it in a fresh venv ou
 	$(PY) -m pytest -q -m slow tests/test_wheel.py
 
 docs: $(STAMP)                 ## the documentation site, offline -> docs/_build/html
-	$(PY) -m sphinx -q --keep-going -b html docs docs/_build/html
+	$(PY) -m sphinx -q -W --keep-going -b html docs docs/_build/html
 	@echo "docs: open docs/_build/html/index.html"
 
 report: $(STAMP)               ## the whole suite (slow claim tests too) as reports/tests.html + reports/junit.xml

@@ -45,7 +45,13 @@ def test_site_in_headless_chromium(tmp_path):
     proc = subprocess.run([sys.executable, "-m", "sphinx", "-q", "-b", "html", str(DOCS), str(out)],
                           capture_output=True, text=True)
     assert proc.returncode == 0, proc.stderr[-3000:]
-    assert not list(out.rglob("*.html")) == []
+    import paper_repro
+
+    api = (out / "guide" / "api.html").read_text(encoding="utf-8")
+    assert [n for n in paper_repro.__all__ if f'id="paper_repro.{n}"' not in api] == []  # every public name
+    for md in DOCS.glob("*.md"):  # every page of docs/ is in the site
+        if md.name != "index.md":
+            assert (out / md.with_suffix(".html").name).is_file(), md.name
     res = check_docs_site(out / "index.html", out / "guide" / "tutorial.html")
     assert res["console_errors"] == [] and res["external_requests"] == [], res
     assert res["math_rendered"] > 0 and res["math_errors"] == 0, res
