@@ -130,6 +130,7 @@ def run_claims(only: list[str] | None, overrides: dict[str, dict[str, Any]] | No
             if isinstance(obj, dict) and "__mesh__" in obj:
                 from paper_repro.surfaces.mesh import export_mesh
 
+                path.parent.mkdir(parents=True, exist_ok=True)  # a fresh --out folder has no data/meshes/ yet
                 export_mesh(path, np.array(obj["__mesh__"]["vertices"]), np.array(obj["__mesh__"]["faces"]))
             elif isinstance(obj, str):
                 write_text(path, obj)
