@@ -22,7 +22,7 @@ def test_committed_index_matches_the_source_where_present():
     if fresh is None:  # a standalone clone: the committed index is what everything reads
         assert all(r["display"] for r in committed if r["kind"] != "unnumbered")
         return
-    assert fresh == committed, "data/paper_index.json is stale: run make reproduce"
+    assert fresh == committed, "paper_repro/resources/paper_index.json is stale: run make reproduce"
     assert [r["label"] for r in fresh] == paper_map.labels_of_paper()
 
 

@@ -1,8 +1,10 @@
 """Add ``--hash=sha256:...`` to every line of requirements.lock (run by ``make lock``).
 
-The hashes are those of the distributions pip downloads for this machine (Linux x86_64, CPython 3.11:
-the project's machine kind); ``make`` installs with ``--require-hashes``, so a changed or substituted
-file is refused.  Usage: ``python tools/hash_lock.py requirements.lock WHEEL_DIR``.
+The hashes are those of every distribution in the given folders: ``make lock`` downloads the Linux x86_64
+wheels of each supported interpreter (CPython 3.11, 3.12, 3.13) and the source distribution of a pinned
+version that has no wheel for one of them (bezier on 3.13: built without its compiled speed-up,
+``BEZIER_NO_EXTENSION``); ``make`` installs with ``--require-hashes``, so a changed or substituted file is
+refused.  Usage: ``python tools/hash_lock.py requirements.lock DIR [DIR ...]``.
 """
 
 import hashlib
@@ -15,13 +17,16 @@ def norm(name: str) -> str:
     return re.sub(r"[-_.]+", "-", name).lower()
 
 
-def main(lock: str, wheel_dir: str) -> int:
+def main(lock: str, *wheel_dirs: str) -> int:
     hashes: dict[tuple[str, str], list[str]] = {}
-    for f in sorted(Path(wheel_dir).iterdir()):
+    for f in sorted(f for d in wheel_dirs for f in Path(d).iterdir()):
         m = re.match(r"^(.+?)-(\d[^-]*)(?:-|\.tar\.gz$|\.zip$)", f.name)
         if not m:
             continue
-        hashes.setdefault((norm(m.group(1)), m.group(2)), []).append(hashlib.sha256(f.read_bytes()).hexdigest())
+        h = hashlib.sha256(f.read_bytes()).hexdigest()
+        known = hashes.setdefault((norm(m.group(1)), m.group(2)), [])
+        if h not in known:
+            known.append(h)
     out, missing = [], []
     for line in Path(lock).read_text().splitlines():
         spec = line.split()[0] if line.strip() else ""

@@ -30,9 +30,7 @@ from paper_repro.core.domain import rational_alpha, sample_points
 from paper_repro.core.labels import delta
 from paper_repro.core.normalization import orbits, solve_reduced, solve_reduced_exact
 from paper_repro.surfaces.patch import Patch
-from paper_repro.util.io import ROOT, write_json, write_text
-
-REPORTS = ROOT / "reports"
+from paper_repro.util.io import reports_dir, write_json, write_text
 
 
 def _best(f, repeat: int) -> float:
@@ -277,9 +275,9 @@ def main(argv: list[str] | None = None) -> int:
            "rank": rank_table([2, 4] if args.quick else [5, 10, 15, 20, 25, 30, 35, 40],
                               [2] if args.quick else [2, 4, 6, 8]),
            "recovery": recovery_table([1, 2] if args.quick else [1, 2, 3, 4, 5, 6])}
-    write_json(REPORTS / "bench.json", rep)
-    write_text(REPORTS / "bench.md", markdown(rep))
-    print(f"wrote {REPORTS / 'bench.json'} and {REPORTS / 'bench.md'}")
+    write_json(reports_dir() / "bench.json", rep)
+    write_text(reports_dir() / "bench.md", markdown(rep))
+    print(f"wrote {reports_dir() / 'bench.json'} and {reports_dir() / 'bench.md'}")
     return 0
 
 

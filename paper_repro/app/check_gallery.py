@@ -4,9 +4,11 @@ Checks: every image loaded (``naturalWidth > 0``); every 3D view drew (its WebGL
 is not blank); no console errors; no network request (every request is a ``file://`` URL of this
 repository). A full-page screenshot is saved as ``reports/gallery.png``, and one of each view as
 ``reports/gallery-view-<name>.png``.  The browser is Debian's
-``chromium`` driven by selenium through Debian's ``chromedriver``; ``--install`` installs both with
-apt-get where they are missing.  Exit status 0 when every check passes, 1 otherwise, 3 when no Chromium
-can be had (the test suite skips then, saying so).
+``chromium`` driven by selenium through Debian's ``chromedriver``.  Nothing is installed unless asked:
+``--install`` (``make check-gallery INSTALL=1``) installs only those two with
+``apt-get install --no-install-recommends --no-upgrade``, saying so first.
+Exit status 0 when every check passes, 1 otherwise, 3 when no Chromium can be had
+(the test suite skips then, saying so).
 
 Run: ``python -m paper_repro.app.check_gallery [--install] [--page figures/index.html]``.
 """
@@ -21,7 +23,7 @@ import subprocess
 import sys
 from pathlib import Path
 
-from paper_repro.util.io import FIGURES, ROOT
+from paper_repro.util.io import figures_dir, reports_dir
 
 CHROMIUM = ("chromium", "chromium-browser", "google-chrome")
 DRIVER = ("chromedriver",)
@@ -36,14 +38,26 @@ def find(names: tuple[str, ...]) -> str | None:
     return None
 
 
+#: What ``--install`` runs (and nothing else): only the browser and its driver, no recommended packages, no
+#: upgrade of anything already installed.
+APT_INSTALL = ["apt-get", "install", "-y", "-qq", "--no-install-recommends", "--no-upgrade", "chromium",
+               "chromium-driver"]
+HOW_TO_GET = ("no headless Chromium here: run `make check-gallery INSTALL=1` (as root: apt-get installs only "
+              "chromium and chromium-driver) or install them yourself (Debian/Ubuntu: "
+              "apt-get install --no-install-recommends chromium chromium-driver)")
+
+
 def install() -> None:
-    """Debian's chromium and chromium-driver, with apt-get (this machine's user is root)."""
+    """Debian's chromium and chromium-driver with apt-get, only when missing and only when asked (``--install``):
+    says first what it will run; ``--no-install-recommends --no-upgrade``, so no other package changes."""
     if find(CHROMIUM) and find(DRIVER):
+        print("check-gallery: chromium and chromedriver are installed; nothing to install", flush=True)
         return
-    print("installing Debian's chromium and chromium-driver (apt-get) ...", flush=True)
+    print(f"check-gallery: installing Debian's chromium and chromium-driver: apt-get update, then "
+          f"{' '.join(APT_INSTALL)}", flush=True)
     env = {"DEBIAN_FRONTEND": "noninteractive", "PATH": "/usr/sbin:/usr/bin:/sbin:/bin"}
     subprocess.run(["apt-get", "update", "-qq"], check=False, env=env)
-    subprocess.run(["apt-get", "install", "-y", "-qq", "chromium", "chromium-driver"], check=False, env=env)
+    subprocess.run(APT_INSTALL, check=False, env=env)
 
 
 def _blank(png: bytes) -> bool:
@@ -117,15 +131,15 @@ def check(page: Path, screenshot: Path) -> dict:
 
 def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(prog="python -m paper_repro.app.check_gallery")
-    ap.add_argument("--install", action="store_true", help="apt-get install chromium and chromium-driver if missing")
-    ap.add_argument("--page", type=Path, default=FIGURES / "index.html")
-    ap.add_argument("--screenshot", type=Path, default=ROOT / "reports" / "gallery.png")
+    ap.add_argument("--install", action="store_true",
+                    help="if missing, apt-get install only chromium and chromium-driver (no recommends, no upgrades)")
+    ap.add_argument("--page", type=Path, default=figures_dir() / "index.html")
+    ap.add_argument("--screenshot", type=Path, default=reports_dir() / "gallery.png")
     args = ap.parse_args(argv)
     if args.install:
         install()
     if not (find(CHROMIUM) and find(DRIVER)):
-        print("check-gallery: no chromium/chromedriver on this machine (make check-gallery installs them)",
-              file=sys.stderr)
+        print(f"check-gallery: {HOW_TO_GET}.", file=sys.stderr)
         return NO_BROWSER
     res = check(args.page, args.screenshot)
     ok = (res["images"] > 0 and not res["images_not_loaded"] and res["views"] and not res["views_blank"]

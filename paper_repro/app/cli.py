@@ -1,11 +1,22 @@
-"""Command line: ``python -m paper_repro {claims,figures,reproduce,labels}``.
+"""Command line: python -m paper_repro {claims,figures,reproduce,paper,labels}.
 
-* ``claims [--only ID ...] [--n N] [--alpha A] [--extended]`` -- run claims and print the table.
-  A full run (no ``--only``/``--n``/``--alpha``) also writes ``data/``; a partial run only prints.
-* ``figures [--only ID ...]`` -- regenerate figures, ``figures/manifest.json`` and the gallery.
-* ``reproduce [--extended]`` -- everything: claims, data, figures, gallery, annotated paper; exit 1 if a claim fails.
-* ``paper`` -- the annotated paper ``paper/index.html`` (needs the paper's LaTeX source beside the clone).
-* ``labels N`` -- the paper labels of T_{2n} with their internal indices and exponents.
+  claims [--only ID ...] [--n N] [--alpha A] [--extended] [--list]
+      run claims and print the table; a full run (no --only/--n/--alpha) also writes data/,
+      a partial run only prints
+  figures [--only ID ...] [--list]
+      regenerate figures, figures/manifest.json and the gallery figures/index.html
+  reproduce [--extended]
+      everything: claims, data, figures, gallery, annotated paper; exit 1 if a claim fails
+  paper
+      the annotated paper paper/index.html (needs the paper's LaTeX source beside the clone)
+  labels N
+      the paper labels of T_{2n} with their internal indices and exponents
+
+Bad input: one line on stderr and exit 2.  Ctrl-C: one line, pending work cancelled, exit 130.
+
+Outputs go below --out DIR (default: the clone's root in a checkout, else the current
+directory; never the install location).  Cache: $PAPER_REPRO_CACHE, else .cache/ in a checkout,
+else the user's cache folder; PAPER_REPRO_NO_CACHE=1 switches it off.
 """
 
 from __future__ import annotations
@@ -20,9 +31,9 @@ from . import report
 
 
 def _parse_alpha(text: str) -> str:
-    from paper_repro.core.alphas import alpha_float
+    from paper_repro.util.validation import parse_alpha
 
-    alpha_float(text)  # validates: ValueError names alpha and the range
+    parse_alpha(text, "--alpha")  # validates: ValueError names --alpha and the range
     return text
 
 
@@ -32,6 +43,26 @@ class _Parser(argparse.ArgumentParser):
     def error(self, message: str):
         print(f"error: {message}", file=sys.stderr)
         raise SystemExit(2)
+
+
+def _first_line(text: str) -> str:
+    """The first sentence of a docstring or statement, without RST markup."""
+    import re
+
+    line = " ".join((text or "").strip().split())
+    line = re.sub(r":\w+:`~?([^`]+)`", r"\1", line).replace("``", "").replace("`", "")
+    cut = line.find(". ")
+    line = line[: cut + 1] if 0 < cut < 110 else line
+    return line if len(line) <= 110 else line[:107] + "..."
+
+
+def _list(kind: str) -> int:
+    reg = CLAIMS if kind == "claims" else FIGURES
+    width = max(len(k) for k in reg)
+    for cid, item in reg.items():
+        text = item.statement if kind == "claims" else item.caption
+        print(f"{cid.ljust(width)}  {_first_line(text)}")
+    return 0
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -47,20 +78,37 @@ def _main(argv: list[str] | None = None) -> int:
     parser = _Parser(prog="python -m paper_repro", description=__doc__,
                      formatter_class=argparse.RawDescriptionHelpFormatter)
     sub = parser.add_subparsers(dest="cmd", required=True, parser_class=_Parser)
-    pc = sub.add_parser("claims", help="run registered claims")
-    pc.add_argument("--only", nargs="+", metavar="ID", help="claim ids to run")
+    out_help = "write data/, figures/, build/ below DIR (default: the clone in a checkout, else the current directory)"
+    pc = sub.add_parser("claims", help="run registered claims", description="Run claims and print the table.")
+    pc.add_argument("--list", action="store_true", help="print the claim ids with one-line descriptions and exit")
+    pc.add_argument("--only", nargs="+", metavar="ID", help="claim ids to run (see --list)")
     pc.add_argument("--n", type=int, help="run at this order n only (claims that take n)")
-    pc.add_argument("--alpha", type=str, help="run at this alpha only, e.g. 'pi/3' or '1.2'")
-    pc.add_argument("--extended", action="store_true", help="use the extended parameter ranges")
-    pf = sub.add_parser("figures", help="regenerate figures and the gallery")
-    pf.add_argument("--only", nargs="+", metavar="ID")
-    pr = sub.add_parser("reproduce", help="claims, data, figures and gallery")
-    pr.add_argument("--extended", action="store_true")
-    sub.add_parser("paper", help="the annotated paper paper/index.html")
-    pl = sub.add_parser("labels", help="print the labels of T_{2n}")
-    pl.add_argument("n", type=int)
+    pc.add_argument("--alpha", type=str, help="run at this alpha only, in (0, pi), e.g. 'pi/3', '2pi/3' or '1.2'")
+    pc.add_argument("--extended", action="store_true", help="use the extended parameter ranges (larger n; slow)")
+    pc.add_argument("--out", metavar="DIR", help=out_help)
+    pf = sub.add_parser("figures", help="regenerate figures and the gallery",
+                        description="Regenerate figures, figures/manifest.json and the gallery figures/index.html.")
+    pf.add_argument("--list", action="store_true", help="print the figure ids with one-line descriptions and exit")
+    pf.add_argument("--only", nargs="+", metavar="ID", help="figure ids to regenerate (see --list)")
+    pf.add_argument("--out", metavar="DIR", help=out_help)
+    pr = sub.add_parser("reproduce", help="claims, data, figures and gallery",
+                        description="Every claim, data/, figures/ and the gallery; exit 1 if a claim fails.")
+    pr.add_argument("--extended", action="store_true",
+                    help="use the extended parameter ranges (larger n; about 20 minutes on 2 cores)")
+    pr.add_argument("--out", metavar="DIR", help=out_help)
+    sub.add_parser("paper", help="the annotated paper paper/index.html",
+                   description="The annotated paper paper/index.html (needs the LaTeX source beside the clone).")
+    pl = sub.add_parser("labels", help="print the labels of T_{2n}",
+                        description="The paper labels of T_{2n}: internal index, label, level and monomial.")
+    pl.add_argument("n", type=int, help="the order n (T_{2n} has 3n(n+1)+1 functions)")
     args = parser.parse_args(argv)
+    if getattr(args, "out", None):
+        from paper_repro.util.io import set_output_root
+
+        set_output_root(args.out)
     load_all()
+    if getattr(args, "list", False):
+        return _list(args.cmd)
     try:
         if args.cmd == "labels":
             from paper_repro.util.validation import check_n

@@ -21,9 +21,12 @@ from pathlib import Path
 import numpy as np
 
 from paper_repro.app.paper_index import display_of, load_index
-from paper_repro.util.io import DATA, FIGURES, ROOT, write_text
+from paper_repro.util.io import ROOT, data_dir, figures_dir, in_checkout, output_root, reports_dir, write_text
 
-VENDOR = FIGURES / "vendor"
+
+def vendor_dir() -> Path:
+    """``figures/vendor/`` below the output root (plotly.js for the offline gallery)."""
+    return figures_dir() / "vendor"
 
 #: Where each open question of Section 7 stands, by the claims that address it.
 OPEN_QUESTIONS = [
@@ -83,6 +86,8 @@ def math_html(text: str) -> str:
 
 
 def _git(*args: str) -> str:
+    if not in_checkout():  # an installed package: whatever repository surrounds site-packages is not ours
+        return ""
     try:
         return subprocess.run(["git", *args], cwd=ROOT, capture_output=True, text=True, check=True).stdout.strip()
     except (OSError, subprocess.CalledProcessError):
@@ -242,7 +247,7 @@ def write_vendor() -> Path:
     """figures/vendor/plotly.min.js from the installed plotly package (written only when it differs)."""
     from plotly.offline import get_plotlyjs
 
-    path = VENDOR / "plotly.min.js"
+    path = vendor_dir() / "plotly.min.js"
     js = get_plotlyjs()
     if not path.exists() or path.read_text(encoding="utf-8") != js:
         write_text(path, js)
@@ -321,10 +326,10 @@ CSS = ("body{font-family:sans-serif;max-width:1150px;margin:2em auto;padding:0 1
 
 
 def gallery_html(manifest: list[dict], view_specs: dict[str, dict] | None = None) -> str:
-    claims = _load(DATA / "claims.json", [])
-    errata = _load(DATA / "errata.json", [])
-    pmap = _load(DATA / "paper_map.json", {"labels": [], "summary": {}})
-    bench = _load(ROOT / "reports" / "bench.json", None)
+    claims = _load(data_dir() / "claims.json", [])
+    errata = _load(data_dir() / "errata.json", [])
+    pmap = _load(data_dir() / "paper_map.json", {"labels": [], "summary": {}})
+    bench = _load(reports_dir() / "bench.json", None)
     prov = provenance()
     status = {c["id"]: c for c in claims}
     index = load_index()
@@ -445,13 +450,13 @@ def gallery_html(manifest: list[dict], view_specs: dict[str, dict] | None = None
 
 def general_formulas_html() -> list[str]:
     """Question 1's level formulas from ``data/normalization/general_formulas*.json`` (the widest range present)."""
-    path = next((p for p in (DATA / "normalization" / "general_formulas_extended.json",
-                             DATA / "normalization" / "general_formulas.json") if p.exists()), None)
+    path = next((p for p in (data_dir() / "normalization" / "general_formulas_extended.json",
+                             data_dir() / "normalization" / "general_formulas.json") if p.exists()), None)
     if path is None:
         return []
     gf = json.loads(path.read_text())
     out = ['<h3 id="general-formulas">Question 1: formulas of the normalizing coefficients by level</h3>',
-           f"<p>From <code>{html.escape(path.relative_to(ROOT).as_posix())}</code>: "
+           f"<p>From <code>{html.escape(path.relative_to(output_root()).as_posix())}</code>: "
            + math_html("$r_{2n,2n-i,j} = P_{n,i,j}(c)/s^{2n+j}$, $c = \\cos(\\alpha/2)$, $s = \\sin(\\alpha/2)$, "
                        "$C_{n,k}$ the coefficient of $X^k$ in $(1+2cX+X^2)^n$")
            + ". <i>Proven for n ≤ N</i>: equal to the closed forms proven for every α for each n ≤ N; a conjecture "
@@ -468,4 +473,4 @@ def general_formulas_html() -> list[str]:
 
 def write_gallery(manifest: list[dict]) -> Path:
     write_vendor()
-    return write_text(FIGURES / "index.html", gallery_html(manifest, views()))
+    return write_text(figures_dir() / "index.html", gallery_html(manifest, views()))

@@ -20,9 +20,7 @@ from concurrent.futures import ProcessPoolExecutor
 import mpmath
 
 from paper_repro.app.bench import _growth, machine
-from paper_repro.util.io import ROOT, write_json, write_text
-
-REPORTS = ROOT / "reports"
+from paper_repro.util.io import reports_dir, write_json, write_text
 
 
 def _job(n: int) -> dict:
@@ -128,9 +126,9 @@ def main(argv: list[str] | None = None) -> int:
            "growth_recovery": _growth([r["n"] for r in fit], [r["recovery_s"] for r in fit]),
            "growth_proof": _growth([r["n"] for r in fit], [r["proof_s"] for r in fit]),
            "mp_route": mp_route(args.mp_n)}
-    write_json(REPORTS / "question1.json", rep)
-    write_text(REPORTS / "question1.md", markdown(rep))
-    print(f"wrote {REPORTS / 'question1.json'} and {REPORTS / 'question1.md'}")
+    write_json(reports_dir() / "question1.json", rep)
+    write_text(reports_dir() / "question1.md", markdown(rep))
+    print(f"wrote {reports_dir() / 'question1.json'} and {reports_dir() / 'question1.md'}")
     return 0 if all(r["proved"] for r in rows) else 1
 
 

@@ -11,14 +11,24 @@ from __future__ import annotations
 import hashlib
 import inspect
 import json
-import os
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 
-from paper_repro.util.cache import CACHE_DIR, code_fingerprint
-from paper_repro.util.io import BUILD, DATA, FIGURES, ROOT, rel, write_json, write_text
+from paper_repro.util import cache
+from paper_repro.util.cache import code_fingerprint
+from paper_repro.util.io import (
+    ROOT,
+    build_dir,
+    data_dir,
+    figures_dir,
+    in_checkout,
+    output_root,
+    rel,
+    write_json,
+    write_text,
+)
 from paper_repro.util.registry import CLAIMS, ClaimResult, Outcome, check_overrides, load_all, run_claim
 from paper_repro.util.registry import FIGURES as FIGURE_REGISTRY
 from paper_repro.util.sweep import sweep
@@ -68,7 +78,7 @@ COST_HINT = {"order_elevation": 70, "linear_independence": 64, "coincidence": 57
 
 def _cost_estimate(cid: str, extended: bool) -> float:
     try:
-        cold = json.loads((BUILD / f"timings{'_extended' if extended else ''}.json").read_text())["cold"]
+        cold = json.loads((build_dir() / f"timings{'_extended' if extended else ''}.json").read_text())["cold"]
         return float(cold.get(cid, COST_HINT.get(cid, 1.0)))
     except (OSError, ValueError, KeyError, TypeError):
         return float(COST_HINT.get(cid, 1.0))
@@ -124,13 +134,14 @@ def run_claims(only: list[str] | None, overrides: dict[str, dict[str, Any]] | No
     print(f"\n{len(results) - len(failed)} passed, {len(failed)} failed" + (f": {failed}" if failed else ""))
     if write:
         suffix = "_extended" if extended else ""
-        write_json(DATA / f"claims{suffix}.json", [r.as_dict() for r in results])
-        write_text(DATA / f"claims{suffix}.md", claims_markdown(results))
+        write_json(data_dir() / f"claims{suffix}.json", [r.as_dict() for r in results])
+        write_text(data_dir() / f"claims{suffix}.md", claims_markdown(results))
         for relpath, obj in sorted(data_files.items()):
-            path = DATA / relpath
+            path = data_dir() / relpath
             if isinstance(obj, dict) and "__mesh__" in obj:
                 from paper_repro.surfaces.mesh import export_mesh
 
+                path.parent.mkdir(parents=True, exist_ok=True)  # a fresh --out folder has no data/meshes/ yet
                 export_mesh(path, np.array(obj["__mesh__"]["vertices"]), np.array(obj["__mesh__"]["faces"]))
             elif isinstance(obj, str):
                 write_text(path, obj)
@@ -138,11 +149,12 @@ def run_claims(only: list[str] | None, overrides: dict[str, dict[str, Any]] | No
                 write_json(path, obj)
         if not extended:
             unique = unique_errata(errata)
-            write_json(DATA / "errata.json", unique)
-            update_readme(results, unique, (data_files.get("paper_lines.json") or {}).get("coverage"))
+            write_json(data_dir() / "errata.json", unique)
+            if in_checkout() and output_root() == ROOT:  # the README of the clone, never elsewhere
+                update_readme(results, unique, (data_files.get("paper_lines.json") or {}).get("coverage"))
             write_paper_map()
-        _record_timings(BUILD / f"timings{suffix}.json", seconds, cached)
-        write_json(BUILD / f"measured_raw{suffix}.json", raw)
+        _record_timings(build_dir() / f"timings{suffix}.json", seconds, cached)
+        write_json(build_dir() / f"measured_raw{suffix}.json", raw)
     return not failed
 
 
@@ -174,13 +186,13 @@ def _record_timings(path: Path, seconds: dict[str, float], cached: dict[str, boo
 
 
 def write_paper_map() -> None:
-    """data/paper_index.json (regenerated where the paper's source is beside the clone) and
-    data/paper_map.{json,md} from the registries and the committed index."""
+    """The paper index (package data ``paper_repro/resources/paper_index.json``, regenerated only in a checkout
+    with the paper's source beside the clone) and data/paper_map.{json,md} from the registries and the index."""
     from . import paper_index, paper_map
 
-    index = paper_index.regenerate()
+    index = paper_index.regenerate() if in_checkout() else None
     if index is None:
-        print("paper index: ../shared/paper not beside this clone; using the committed data/paper_index.json")
+        print("paper index: the paper's source is not beside a clone; using paper_repro/resources/paper_index.json")
     else:
         write_json(paper_index.INDEX, {"source": "shared/paper/triangular-trigonometric-patches.tex",
                                        "numbering": "derived from the LaTeX counters (paper_repro/app/paper_index.py)",
@@ -189,8 +201,8 @@ def write_paper_map() -> None:
 
     paper_labels._load.cache_clear()  # the index may just have been rewritten
     m = paper_map.build(CLAIMS, FIGURE_REGISTRY)
-    write_json(DATA / "paper_map.json", m)
-    write_text(DATA / "paper_map.md", paper_map.markdown(m))
+    write_json(data_dir() / "paper_map.json", m)
+    write_text(data_dir() / "paper_map.md", paper_map.markdown(m))
 
 
 def _replace_block(text: str, name: str, body: str) -> str:
@@ -220,7 +232,7 @@ def question1_markdown() -> str:
     """Status of Question 1 from the claims' data: closed forms and positivity, and the level formulas."""
     out = []
     for suffix, how in (("", "`make reproduce`"), ("_extended", "`make reproduce-extended`")):
-        path = DATA / "normalization" / f"general_formulas{suffix}.json"
+        path = data_dir() / "normalization" / f"general_formulas{suffix}.json"
         if not path.exists():
             continue
         gf = json.loads(path.read_text())
@@ -269,7 +281,7 @@ def update_readme(results: list[ClaimResult], errata: list[dict], line_coverage:
 def _make_one(fid: str) -> list[Path]:
     """One figure in a worker (module level, so that processes can run it)."""
     fig = FIGURE_REGISTRY[fid]
-    paths = [Path(p) for p in fig.func(FIGURES)]
+    paths = [Path(p) for p in fig.func(figures_dir())]
     if sorted(p.name for p in paths) != sorted(fig.outputs):
         raise RuntimeError(f"figure {fid} wrote {[p.name for p in paths]}, declared {fig.outputs}")
     return paths
@@ -281,26 +293,27 @@ def sha256_of(path: Path) -> str:
 
 def figure_files(fig) -> list[Path]:
     """Every file of a figure: each declared PNG and the SVG beside it."""
-    return [FIGURES / name for png in fig.outputs for name in (png, str(Path(png).with_suffix(".svg")))]
+    return [figures_dir() / name for png in fig.outputs for name in (png, str(Path(png).with_suffix(".svg")))]
 
 
 def _data_fingerprint() -> str:
     """sha256 over every file of data/ (what figures read besides the code)."""
     h = hashlib.sha256()
-    for path in sorted(p for p in DATA.rglob("*") if p.is_file()):
-        h.update(path.relative_to(DATA).as_posix().encode())
+    data = data_dir()
+    for path in sorted(p for p in data.rglob("*") if p.is_file()):
+        h.update(path.relative_to(data).as_posix().encode())
         h.update(path.read_bytes())
     return h.hexdigest()[:16]
 
 
 def _figure_key(fid: str, data_fp: str) -> Path:
-    return CACHE_DIR / "figures" / f"{fid}-{code_fingerprint()}-{data_fp}.json"
+    return cache.cache_dir() / "figures" / f"{fid}-{code_fingerprint()}-{data_fp}.json"
 
 
 def _up_to_date(fid: str, data_fp: str) -> bool:
     """The figure was made by this code from this data, and its files are still what was made."""
     key = _figure_key(fid, data_fp)
-    if os.environ.get("PAPER_REPRO_NO_CACHE") or not key.exists():
+    if not cache.enabled() or not key.exists():
         return False
     recorded = json.loads(key.read_text())
     files = figure_files(FIGURE_REGISTRY[fid])
@@ -318,10 +331,10 @@ def make_figures(only: list[str] | None, executor=None) -> list[Path]:
     skipped = len([fid for fid in FIGURE_REGISTRY if not only or fid in only]) - len(ids)
     written = [p for paths in sweep(_make_one, ids, executor=executor, initializer=load_all, desc="figures")
                for p in paths]
-    for fid in ids:
+    for fid in ids if cache.enabled() else ():
         write_json(_figure_key(fid, data_fp), {p.name: sha256_of(p) for p in figure_files(FIGURE_REGISTRY[fid])})
     manifest = build_manifest()
-    write_json(FIGURES / "manifest.json", manifest)
+    write_json(figures_dir() / "manifest.json", manifest)
     from paper_repro.app.gallery import write_gallery
 
     write_gallery(manifest)
@@ -331,7 +344,7 @@ def make_figures(only: list[str] | None, executor=None) -> list[Path]:
 
 def _min_text(fig) -> float | None:
     """The smallest text of the figure, in CSS px at the gallery's width (from the sidecar ``save`` writes)."""
-    side = [FIGURES / Path(png).with_suffix(".text.json").name for png in fig.outputs]
+    side = [figures_dir() / Path(png).with_suffix(".text.json").name for png in fig.outputs]
     sizes = [json.loads(p.read_text())["min_text_px"] for p in side if p.exists()]
     sizes = [x for x in sizes if x is not None]
     return min(sizes) if sizes else None
@@ -343,7 +356,7 @@ def build_manifest() -> list[dict]:
     from paper_repro.app.paper_index import load_index
 
     index = {r["label"]: r for r in load_index()}
-    claims_path = DATA / "claims.json"
+    claims_path = data_dir() / "claims.json"
     status = {c["id"]: c["status"] for c in json.loads(claims_path.read_text())} if claims_path.exists() else {}
     manifest = []
     for fid, fig in FIGURE_REGISTRY.items():
@@ -360,5 +373,5 @@ def build_manifest() -> list[dict]:
             "command": f"python -m paper_repro figures --only {fid}",
             "files": [{"path": rel(p), "sha256": sha256_of(p)} for p in figure_files(fig) if p.exists()],
             "smallest_text_px_in_gallery": _min_text(fig),
-            "outputs": [rel(FIGURES / name) for name in fig.outputs]})
+            "outputs": [rel(figures_dir() / name) for name in fig.outputs]})
     return manifest

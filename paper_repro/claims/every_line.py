@@ -15,7 +15,7 @@ must publish that erratum.  Errata of lines with their own check are published h
 those resolved to a claim are published by that claim already.
 
 Publishes ``data/paper_lines.json``: the coverage and, per line (sorted by source line), its transcription,
-status, check, how it was checked, and the PDF number of the nearest label (``data/paper_index.json``).
+status, check, how it was checked, and the PDF number of the nearest label (``paper_repro/resources/paper_index.json``).
 """
 
 from __future__ import annotations

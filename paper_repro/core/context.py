@@ -594,8 +594,8 @@ def to_nmod_mat(a: np.ndarray, p: int) -> nmod_mat:
     """2-D integer array (entries in [0, p)) to a flint ``nmod_mat``."""
     a = np.asarray(a)
     flat = a.reshape(-1)
-    flat = flat.tolist() if flat.dtype.kind in "iu" else [int(x) for x in flat]  # tolist: Python ints, fast
-    return nmod_mat(a.shape[0], a.shape[1], flat, p)
+    ints = flat.tolist() if flat.dtype.kind in "iu" else [int(x) for x in flat]  # tolist: Python ints, fast
+    return nmod_mat(a.shape[0], a.shape[1], ints, p)
 
 
 # Backwards-compatible names (the first round called contexts "arithmetics").

@@ -22,7 +22,7 @@ from flint import fmpq
 
 from paper_repro.core.context import Context, ExactContext, FloatContext
 from paper_repro.util.limits import MAX_RATIONAL_POINTS, check_int, check_real_array
-from paper_repro.util.validation import DOMAIN_TOL, check_alpha
+from paper_repro.util.validation import DOMAIN_TOL, check_alpha, parse_alpha
 
 
 def _q(x, name: str = "t") -> fmpq:
@@ -152,13 +152,13 @@ class RationalPoints:
 
     def uvw_float(self) -> np.ndarray:
         """The points as an ``(P, 3)`` float array."""
-        a = float(self.alpha)
+        a = float(self.alpha)  # type: ignore[arg-type]
         rows = [[float(RationalAngle(tu)), float(RationalAngle(tv))] for tu, tv in zip(self.tu, self.tv)]
         return np.array([[u, v, a - u - v] for u, v in rows], dtype=np.float64).reshape(-1, 3)
 
     def uvw_mp(self) -> np.ndarray:
         """The points as an ``(P, 3)`` object array of mpf, at the current mpmath precision."""
-        a = self.alpha.mp()
+        a = self.alpha.mp()  # type: ignore[union-attr]
         rows = []
         for tu, tv in zip(self.tu, self.tv):
             u, v = RationalAngle(tu).mp(), RationalAngle(tv).mp()
@@ -172,7 +172,7 @@ def check_points(points, alpha, tol: float = DOMAIN_TOL, offset: int = 0) -> np.
     A point is accepted if ``|u + v + w - alpha| <= tol * alpha`` and ``u, v, w >= -tol * alpha``.
     Raises ``ValueError``/``TypeError`` naming ``points`` (and the first offending point) otherwise.
     """
-    a = check_alpha(alpha)
+    a = check_alpha(parse_alpha(alpha))
     if isinstance(points, (str, bytes)):
         raise TypeError(f"points must be a (P, 3) array of (u, v, w), got a string {points!r}")
     if isinstance(points, (dict, set, numbers.Number, np.generic)) or points is None:
@@ -318,7 +318,7 @@ def sample_points(alpha, count: int, seed: int = 0, interior: bool = True) -> np
     ...
     ValueError: count must be an integer from 0 to 100000000, got -1
     """
-    check_alpha(alpha)
+    alpha = parse_alpha(alpha)
     check_count(count)
     rng = np.random.default_rng(seed)
     bary = rng.dirichlet(np.ones(3), size=count)

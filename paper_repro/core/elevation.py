@@ -23,7 +23,7 @@ import numpy as np
 from flint import fmpq
 
 from paper_repro.core.collocation import Collocation, collocate
-from paper_repro.core.context import BallContext, Context, ExactContext
+from paper_repro.core.context import BallContext, Context, ExactContext, FloatContext
 from paper_repro.core.domain import (
     RationalAngle,
     RationalPoints,
@@ -36,7 +36,7 @@ from paper_repro.core.nets import check_net
 from paper_repro.core.normalization import evaluate_normalized, fixed_points
 from paper_repro.util.cache import cached
 from paper_repro.util.limits import MAX_ELEVATION_STEPS, MAX_N_ELEVATION, check_int
-from paper_repro.util.validation import check_alpha, check_n
+from paper_repro.util.validation import check_alpha, check_n, parse_alpha
 
 #: Below this alpha, E is taken at ALPHA_FLAT (E(alpha) - E(0) = O(alpha^2) < 1e-17, see the module docstring).
 ALPHA_FLAT = 1e-9
@@ -57,6 +57,7 @@ def elevation_system(n: int, alpha, ctx: Context, *, verify: int = 3, seed: int 
     m = rows or d1
 
     def system(k: int):
+        pts: RationalPoints | np.ndarray
         if ctx.exact:
             pts = sample_rational_points(alpha, m + verify, seed=seed + k)
         else:
@@ -136,6 +137,7 @@ def elevation_matrix(n: int, alpha) -> np.ndarray:
     """
     n = check_int(n, "n", 1, MAX_N_ELEVATION, why="elevation matrices are solved in ball arithmetic: "
                   "cost grows as delta_n^3 times the precision")
+    alpha = parse_alpha(alpha)
     if isinstance(alpha, RationalAngle):
         return np.array([[float(x) for x in row] for row in elevation_matrix_exact(n, alpha)])
     return _elevation_matrix_float(n, check_alpha(alpha)).copy()
@@ -152,6 +154,7 @@ def elevate(net, n: int, alpha, times: int = 1) -> np.ndarray:
     n = check_int(n, "n", 1, MAX_N_ELEVATION, why="elevation matrices are solved in ball arithmetic")
     times = check_int(times, "times", 0, min(MAX_ELEVATION_STEPS, MAX_N_ELEVATION + 1 - n),
                       why=f"n + times - 1 must be at most {MAX_N_ELEVATION} (the largest elevation matrix)")
+    alpha = parse_alpha(alpha)
     if not isinstance(alpha, RationalAngle):
         check_alpha(alpha)
     arr = check_net(net, n)
@@ -164,5 +167,5 @@ def rational_alpha_near(alpha: float, denominator: int = 1000) -> RationalAngle:
     """A rational-tangent alpha close to ``alpha``: tan(alpha/4) rounded to ``denominator``."""
     from fractions import Fraction
 
-    f = Fraction(np.tan(check_alpha(alpha) / 4)).limit_denominator(denominator)
+    f = Fraction(np.tan(check_alpha(parse_alpha(alpha)) / 4)).limit_denominator(denominator)
     return rational_alpha(fmpq(f.numerator, f.denominator))

@@ -28,7 +28,7 @@ Triple = tuple[int, int, int]
 
 def E(n: int) -> list[Triple]:
     """E_n as triples (r, g, b), 0 <= r, g, b <= n, lexicographic order."""
-    return list(product(range(n + 1), repeat=3))
+    return [(r, g, b) for r, g, b in product(range(n + 1), repeat=3)]
 
 
 def related(a: Triple, b: Triple, n: int) -> bool:

@@ -82,3 +82,57 @@ def net_from_labels(points: dict, n: int) -> np.ndarray:
     if len({len(r) for r in rows.values()}) != 1:
         raise ValueError("net: control points of different dimensions")
     return np.stack([rows[k] for k in range(delta(n))])
+
+
+class LabelledNet(np.ndarray):
+    """A control net ``(delta_n, d)`` whose rows are also reachable by the paper's labels.
+
+    ``net["r_{4,3,1}"]`` (or ``"R_{4,3,1}"``, or any alias of the same function such as ``"g_{4,4,0}"`` for
+    ``r_{4,0,0}``) is the control point of that function; integer indices and slices work as on any array
+    (internal order, ``paper_repro labels N``).  Arithmetic on the net gives plain arrays.
+
+    >>> net = LabelledNet(np.arange(21.0).reshape(7, 3), 1)
+    >>> net["r_{2,1,1}"].tolist() == net[index_of(1)["r_{2,1,1}"]].tolist()
+    True
+    >>> net["x"]
+    Traceback (most recent call last):
+    ...
+    KeyError: "net: no control point labelled 'x' for order n = 1 (labels like 'r_{2,1,1}', 'g_{2,1,0}')"
+    """
+
+    n: int
+
+    def __new__(cls, array, n: int) -> LabelledNet:
+        obj = np.asarray(array).view(cls)
+        obj.n = check_n(n)
+        if obj.ndim < 1 or obj.shape[0] != delta(obj.n):
+            raise ValueError(f"net: {delta(obj.n)} rows expected for order n = {obj.n}, got shape {obj.shape}")
+        return obj
+
+    def __array_finalize__(self, obj) -> None:
+        self.n = getattr(obj, "n", 0)
+
+    def __array_wrap__(self, out_arr, context=None, return_scalar=False):
+        return np.asarray(out_arr) if not return_scalar else out_arr[()]
+
+    def _row(self, label: str) -> int:
+        key = label.strip().replace("\\mathbf", "").replace(" ", "")
+        try:
+            return index_of(self.n)[key]
+        except KeyError:
+            raise KeyError(f"net: no control point labelled {label!r} for order n = {self.n} "
+                           f"(labels like 'r_{{{2 * self.n},{2 * self.n - 1},1}}', "
+                           f"'g_{{{2 * self.n},{2 * self.n - 1},0}}')") from None
+
+    def __getitem__(self, key):
+        if isinstance(key, str):
+            return np.asarray(super().__getitem__(self._row(key)))
+        out = super().__getitem__(key)
+        return np.asarray(out) if isinstance(out, np.ndarray) else out
+
+    def __setitem__(self, key, value) -> None:
+        super().__setitem__(self._row(key) if isinstance(key, str) else key, value)
+
+    def labels(self) -> list[str]:
+        """The control point label of every row, in internal order (``net.labels()[k]`` names ``net[k]``)."""
+        return [lab.control_point for lab in united_system(self.n)]

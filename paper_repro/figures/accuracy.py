@@ -7,7 +7,7 @@ import json
 import math
 from pathlib import Path
 
-from paper_repro.util.io import DATA
+from paper_repro.util.io import data_dir
 from paper_repro.util.registry import figure
 
 from . import plt, save
@@ -19,7 +19,7 @@ from . import plt, save
                 "relative to the net (random nets); each error drawn as the next power of ten above it (the published, "
                 "machine-independent value). Dashed: the 1e-13 bound of claim float_accuracy.")
 def make_accuracy(outdir: Path) -> list[Path]:
-    rows = json.loads((DATA / "accuracy" / "float_vs_mp.json").read_text())["rows"]
+    rows = json.loads((data_dir() / "accuracy" / "float_vs_mp.json").read_text())["rows"]
     fig, axes = plt.subplots(1, 2, figsize=(12, 4.8), sharey=True)
     cmap = plt.get_cmap("viridis")
     ns = sorted({r["n"] for r in rows})

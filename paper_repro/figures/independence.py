@@ -131,7 +131,7 @@ def make_singular_values(outdir: Path) -> list[Path]:
     from paper_repro.core.alphas import alpha_float
     from paper_repro.core.normalization import collocation_mp
     from paper_repro.theory.rank import mp_singular_values
-    from paper_repro.util.io import DATA
+    from paper_repro.util.io import data_dir
 
     fig, (ax1, ax2) = plt.subplots(2, 1, figsize=(10, 11))
     for a_text, ls in (("pi/6", "-"), ("5pi/6", "--")):
@@ -145,7 +145,7 @@ def make_singular_values(outdir: Path) -> list[Path]:
     ax1.xaxis.label.set_fontsize(12)
     ax1.yaxis.label.set_fontsize(12)
     ax1.grid(alpha=0.3)
-    claims = {c["id"]: c for c in json.loads((DATA / "claims.json").read_text())}
+    claims = {c["id"]: c for c in json.loads((data_dir() / "claims.json").read_text())}
     rows = claims["linear_independence"]["measured"]["numeric"]
     for a_text in sorted({r["alpha"] for r in rows}, key=alpha_float):
         sel = [r for r in rows if r["alpha"] == a_text]

@@ -13,7 +13,7 @@ from paper_repro.core.layout import edges, net_edges, position
 from paper_repro.surfaces.patch import Patch
 from paper_repro.theory.limit_formula import multinomial
 from paper_repro.theory.limits import limit_terms
-from paper_repro.util.io import DATA
+from paper_repro.util.io import data_dir
 from paper_repro.util.registry import figure
 
 from . import COLOR_OF, plt, save
@@ -167,7 +167,7 @@ def make_elevation(outdir: Path) -> list[Path]:
         caption="New: repeated order elevation 1 -> 6 of a random order-1 net; maximal distance between a control "
                 "point and the patch point at its node position, versus the order (from claim order_elevation).")
 def make_elevation_convergence(outdir: Path) -> list[Path]:
-    claims = {c["id"]: c for c in json.loads((DATA / "claims.json").read_text())}
+    claims = {c["id"]: c for c in json.loads((data_dir() / "claims.json").read_text())}
     rec = claims["order_elevation"]["measured"]["repeated_elevation_net_to_patch_distance"]
     from matplotlib.ticker import FixedLocator, NullFormatter, NullLocator
 

@@ -130,3 +130,129 @@ def fit(surface: Callable, n: int, alpha, arith: str | Context = "mp", **kwargs)
     if ctx.exact:
         return fit_exact(surface, n, alpha, **kwargs)
     return fit_mp(surface, n, alpha, **kwargs)
+
+
+#: The boundary curves of a patch: the edge of Omega^alpha and the point of it at parameter t
+#: (as in :meth:`paper_repro.surfaces.patch.Patch.boundary_curve`: t is w on u=0, u on v=0, v on w=0).
+EDGES: dict[str, Callable[[np.ndarray, float], np.ndarray]] = {
+    "u=0": lambda t, a: np.stack([0.0 * t, a - t, t], axis=1),
+    "v=0": lambda t, a: np.stack([t, 0.0 * t, a - t], axis=1),
+    "w=0": lambda t, a: np.stack([a - t, t, 0.0 * t], axis=1),
+}
+
+
+def _columns_on(basis: np.ndarray) -> np.ndarray:
+    """Indices of the basis functions that do not vanish at the given points."""
+    return np.flatnonzero(np.abs(basis).max(axis=0) > 1e-14)
+
+
+def fit_least_squares(points, values, n: int, alpha, *, corners=None, boundary=None,
+                      full_output: bool = False):
+    """Control net of order ``n`` whose patch fits scattered data ``values`` at ``points`` by least squares.
+
+    The patch is ``sum_k p_k T-bar_k(u, v, w)`` (eq. triangular_trig_surface); the free control points minimise
+    ``sum_i |patch(points_i) - values_i|^2`` (float64, ``numpy.linalg.lstsq``).  Optionally some control points
+    are fixed first, so that the patch *interpolates*:
+
+    * ``corners``: a ``(3, d)`` array, the surface points at the corners ``(alpha, 0, 0)``, ``(0, alpha, 0)``,
+      ``(0, 0, alpha)`` of Omega^alpha (the patch passes through a corner control point there: eqs.
+      boundary_property_1..3), or ``True`` to take them from the data (points at the corners must then be
+      among ``points``);
+    * ``boundary``: ``{edge: curve}`` with edge ``'u=0'``, ``'v=0'`` or ``'w=0'`` and ``curve(t) -> (m, d)``
+      points for parameters ``t`` in ``[0, alpha]`` (t is w on u=0, u on v=0, v on w=0, as in
+      :meth:`~paper_repro.surfaces.patch.Patch.boundary_curve`).  The 2n+1 control points of that edge are
+      fitted to the curve at 8n + 1 parameters; if the curve lies in the span of the boundary basis
+      (eq. univariate_basis) the patch reproduces it exactly.  A corner shared with a fitted edge must agree
+      with it (``ValueError`` otherwise).
+
+    ``points`` are ``(P, 3)`` points of Omega^alpha (or :func:`~paper_repro.core.domain.sample_points`),
+    ``values`` a ``(P, d)`` array, ``alpha`` a number or text such as ``"pi/2"``.  Returns the net as a
+    :class:`~paper_repro.core.nets.LabelledNet` (``net["r_{4,3,1}"]``), and with ``full_output`` also the
+    root-mean-square residual at the data points.
+
+    >>> import numpy as np
+    >>> from paper_repro import Patch, sample_points
+    >>> truth = Patch(2, "pi/2", np.random.default_rng(1).normal(size=(19, 3)))
+    >>> pts = sample_points("pi/2", 200, seed=2)
+    >>> net, rms = fit_least_squares(pts, truth(pts), 2, "pi/2", full_output=True)
+    >>> bool(np.allclose(net, truth.net)), rms < 1e-12
+    (True, True)
+    >>> curve = lambda t: truth.boundary_curve("v=0", t)
+    >>> fixed = fit_least_squares(pts[:30], truth(pts[:30]) + 0.1, 2, "pi/2", boundary={"v=0": curve})
+    >>> bool(np.allclose(Patch(2, "pi/2", fixed).boundary_net("v=0"), truth.boundary_net("v=0")))
+    True
+    """
+    from paper_repro.core.domain import check_points
+    from paper_repro.core.nets import LabelledNet
+    from paper_repro.util.validation import check_n, parse_alpha
+
+    n = check_n(n)
+    a = float(parse_alpha(alpha))
+    pts = check_points(points, a)
+    vals = np.asarray(values, dtype=np.float64)
+    if vals.ndim == 1:
+        vals = vals[:, None]
+    if vals.ndim != 2 or vals.shape[0] != len(pts) or not np.isfinite(vals).all():
+        raise ValueError(f"values must be a finite ({len(pts)}, d) array, one row per point; got shape "
+                         f"{np.shape(values)}")
+    d = vals.shape[1]
+    size = delta(n)
+    fixed: dict[int, np.ndarray] = {}
+
+    def fix(k: int, p: np.ndarray, what: str) -> None:
+        if k in fixed and not np.allclose(fixed[k], p, rtol=1e-9, atol=1e-9 * (1 + np.abs(p).max())):
+            raise ValueError(f"{what}: the control point {k} is fixed twice with different values "
+                             f"({fixed[k].tolist()} and {p.tolist()}): corners and boundary curves must agree")
+        fixed[k] = p
+
+    for edge, curve in (boundary or {}).items():
+        if edge not in EDGES:
+            raise ValueError(f"boundary: edges are {sorted(EDGES)}, got {edge!r}")
+        t = np.linspace(0.0, a, 8 * n + 1)
+        target = np.asarray(curve(t), dtype=np.float64).reshape(len(t), -1)
+        if target.shape[1] != d:
+            raise ValueError(f"boundary[{edge!r}]: curve points have dimension {target.shape[1]}, the data {d}")
+        b = np.asarray(evaluate_normalized(n, a, EDGES[edge](t, a)), dtype=np.float64)
+        cols = _columns_on(b)
+        sol = np.linalg.lstsq(b[:, cols], target, rcond=None)[0]
+        for k, p in zip(cols, sol):
+            fix(int(k), p, f"boundary[{edge!r}]")
+    if corners is not None and corners is not False:
+        corner_pts = a * np.eye(3)
+        if corners is True:
+            hit = [np.flatnonzero(np.abs(pts - c).max(axis=1) <= 1e-12 * a) for c in corner_pts]
+            if any(len(h) == 0 for h in hit):
+                raise ValueError("corners=True: the points must include the three corners of Omega^alpha")
+            cvals = np.stack([vals[h[0]] for h in hit])
+        else:
+            cvals = np.asarray(corners, dtype=np.float64)
+            if cvals.shape != (3, d):
+                raise ValueError(f"corners must be a (3, {d}) array (the surface at (alpha,0,0), (0,alpha,0), "
+                                 f"(0,0,alpha)) or True, got shape {np.shape(corners)}")
+        b = np.asarray(evaluate_normalized(n, a, corner_pts), dtype=np.float64)
+        for row, p in zip(b, cvals):
+            cols = _columns_on(row[None, :])
+            if len(cols) != 1:  # pragma: no cover - the endpoint property (boundary_property_1..3) says one
+                raise ArithmeticError(f"corner: {len(cols)} basis functions do not vanish at a corner")
+            fix(int(cols[0]), p, "corners")
+    basis = np.asarray(evaluate_normalized(n, a, pts), dtype=np.float64)
+    free = [k for k in range(size) if k not in fixed]
+    rhs = vals.copy()
+    net = np.zeros((size, d))
+    for k, p in fixed.items():
+        net[k] = p
+        rhs -= np.outer(basis[:, k], p)
+    if free:
+        if len(pts) < len(free):
+            raise ValueError(f"points: {len(free)} free control points need at least as many data points, "
+                             f"got {len(pts)}")
+        sol, _, rank, _ = np.linalg.lstsq(basis[:, free], rhs, rcond=None)
+        if rank < len(free):
+            raise ValueError(f"points: the data points do not determine the {len(free)} free control points "
+                             f"(rank {rank}); give more points spread over Omega^alpha")
+        net[free] = sol
+    out = LabelledNet(net, n)
+    if full_output:
+        rms = float(np.sqrt(np.mean((basis @ net - vals) ** 2)))
+        return out, rms
+    return out

@@ -16,10 +16,10 @@ from paper_repro.core.derivatives_basis import basis_derivative
 from paper_repro.core.domain import RationalAngle, RationalPoints, barycentric_to_uvw, check_points
 from paper_repro.core.fast import BLOCK, FloatKernel
 from paper_repro.core.labels import delta, exponent_matrix, index_of
-from paper_repro.core.nets import check_net, check_net_exact, net_from_labels  # noqa: F401 (re-exported)
+from paper_repro.core.nets import LabelledNet, check_net, check_net_exact, net_from_labels  # noqa: F401 (re-exported)
 from paper_repro.core.normalization import coefficient_vector, evaluate_normalized
 from paper_repro.util.limits import MAX_MESH_RESOLUTION, check_int, check_real_array, real_scalar
-from paper_repro.util.validation import DOMAIN_TOL, check_alpha, check_n
+from paper_repro.util.validation import DOMAIN_TOL, check_alpha, check_n, parse_alpha
 
 
 def check_weights(weights, n: int) -> tuple[np.ndarray, np.ndarray]:
@@ -112,10 +112,12 @@ class Patch:
 
     def __init__(self, n: int, alpha, net, weights=None, arith: str | Context = "float"):
         self.n = check_n(n)
+        alpha = parse_alpha(alpha)  # "pi/2" accepted
         check_alpha(alpha)
         self.alpha = alpha if isinstance(alpha, RationalAngle) else real_scalar(alpha, "alpha")
         self.net_exact = check_net_exact(net, self.n)
-        self.net = self.net_exact.astype(np.float64)
+        #: float64 control net; rows also by paper label: ``patch.net["r_{4,3,1}"]``
+        self.net = LabelledNet(self.net_exact.astype(np.float64), self.n)
         self.ctx = get_context(arith)
         self.weights_exact = None
         self.weights = None
@@ -255,7 +257,8 @@ def triangle_grid(resolution: int) -> tuple[np.ndarray, np.ndarray]:
     """Barycentric grid points ``(V, 3)`` and faces ``(F, 3)`` of a triangle with ``resolution`` steps a side."""
     r = check_int(resolution, "resolution", 1, MAX_MESH_RESOLUTION,
                   why="(r+1)(r+2)/2 vertices and 2 r^2 faces; the budget is about 0.5 M vertices")
-    ids, bary = {}, []
+    ids: dict[tuple[int, int], int] = {}
+    bary: list[tuple[float, float, float]] = []
     for i in range(r + 1):
         for j in range(r + 1 - i):
             ids[(i, j)] = len(bary)

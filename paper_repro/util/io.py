@@ -9,10 +9,75 @@ from collections.abc import Iterator
 from contextlib import contextmanager
 from pathlib import Path
 
-ROOT = Path(__file__).resolve().parent.parent.parent
-DATA = ROOT / "data"
-FIGURES = ROOT / "figures"
-BUILD = ROOT / "build"
+#: The package's own folder (read only: nothing is ever written below it when installed).
+PACKAGE = Path(__file__).resolve().parent.parent
+#: What the package reads at run time (the paper index): package data, shipped in the wheel.
+RESOURCES = PACKAGE / "resources"
+#: The folder holding the package: the repository root in a checkout, ``site-packages`` when installed.
+ROOT = PACKAGE.parent
+
+#: Environment variable naming the output folder (``--out DIR`` of the command line sets it).
+OUT_ENV = "PAPER_REPRO_OUT"
+
+
+def in_checkout() -> bool:
+    """True when the package runs from a clone of the repository (its ``pyproject.toml`` beside it)."""
+    pyproject = ROOT / "pyproject.toml"
+    try:
+        return pyproject.is_file() and 'name = "paper_repro"' in pyproject.read_text(encoding="utf-8")
+    except OSError:
+        return False
+
+
+def set_output_root(path: str | os.PathLike | None) -> None:
+    """Send every output (``data/``, ``figures/``, ``build/``, ``reports/``) below ``path`` (``None``: the default).
+
+    Also sets :data:`OUT_ENV`, so worker processes started afterwards write to the same place."""
+    if path is None:
+        os.environ.pop(OUT_ENV, None)
+    else:
+        os.environ[OUT_ENV] = str(Path(path).resolve())
+
+
+def output_root() -> Path:
+    """Where outputs go: ``$PAPER_REPRO_OUT`` if set (``--out DIR``), else the repository root in a checkout
+    (so ``make reproduce`` writes ``data/`` and ``figures/`` of the clone), else the current directory.
+    Never the install location of the package."""
+    env = os.environ.get(OUT_ENV)
+    if env:
+        return Path(env).resolve()
+    return ROOT if in_checkout() else Path.cwd().resolve()
+
+
+def data_dir() -> Path:
+    """``data/`` below :func:`output_root`: the deterministic results of the claims."""
+    return output_root() / "data"
+
+
+def figures_dir() -> Path:
+    """``figures/`` below :func:`output_root`: figures, manifest and gallery."""
+    return output_root() / "figures"
+
+
+def build_dir() -> Path:
+    """``build/`` below :func:`output_root`: timings and other non-deterministic by-products."""
+    return output_root() / "build"
+
+
+def reports_dir() -> Path:
+    """``reports/`` below :func:`output_root`: benchmark and test reports."""
+    return output_root() / "reports"
+
+
+_DYNAMIC = {"DATA": data_dir, "FIGURES": figures_dir, "BUILD": build_dir}
+
+
+def __getattr__(name: str) -> Path:
+    """``DATA``, ``FIGURES``, ``BUILD``: the folders of :func:`data_dir` etc. at the time of the access
+    (kept for older callers; new code calls the functions, which follow ``--out``)."""
+    if name in _DYNAMIC:
+        return _DYNAMIC[name]()
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
 def _umask() -> int:
@@ -54,5 +119,9 @@ def write_json(path: str | os.PathLike, obj) -> Path:
 
 
 def rel(path: str | os.PathLike) -> str:
-    """Path relative to the repository root, with forward slashes."""
-    return Path(path).resolve().relative_to(ROOT).as_posix()
+    """Path relative to the output root (the repository root in a checkout), with forward slashes."""
+    p = Path(path).resolve()
+    try:
+        return p.relative_to(output_root()).as_posix()
+    except ValueError:
+        return p.as_posix()

@@ -1,4 +1,4 @@
-"""Reading the committed index of the paper's labels (``data/paper_index.json``, built by
+"""Reading the committed index of the paper's labels (``paper_repro/resources/paper_index.json``, package data built by
 :mod:`paper_repro.app.paper_index`): how the PDF names a label, for every layer that speaks of the paper.
 
 >>> pdf_name("exmp:torus")
@@ -12,9 +12,9 @@ from __future__ import annotations
 import json
 from functools import cache
 
-from paper_repro.util.io import DATA
+from paper_repro.util.io import RESOURCES
 
-INDEX = DATA / "paper_index.json"
+INDEX = RESOURCES / "paper_index.json"
 
 
 @cache

@@ -7,6 +7,11 @@ from __future__ import annotations
 
 import math
 import numbers
+import re
+from collections.abc import Callable
+from typing import Any, TypeVar
+
+F = TypeVar("F", bound=Callable[..., Any])
 
 from paper_repro.util.limits import real_scalar
 
@@ -31,7 +36,7 @@ def _plain(x: object) -> str:
         return repr(x)
     try:
         if isinstance(x, (numbers.Real,)) or type(x).__name__ in ("mpf", "fmpq", "arb"):
-            return str(x) if type(x).__name__ in ("fmpq", "arb") else repr(float(x))
+            return str(x) if type(x).__name__ in ("fmpq", "arb") else repr(float(x))  # type: ignore[arg-type]
     except (TypeError, ValueError, OverflowError):
         pass
     text = repr(x)
@@ -54,3 +59,62 @@ def check_alpha(alpha: object, name: str = "alpha") -> float:
     if not (0.0 < a < math.pi) or math.isnan(a):
         raise ValueError(f"{name} must lie in the open interval (0, pi), got {_plain(alpha)}")
     return a
+
+
+_ALPHA_TEXT = re.compile(
+    r"^\s*(?:(?P<num>\d+(?:\.\d*)?|\.\d+)\s*\*?\s*)?(?:pi|π)\s*(?:/\s*(?P<den>\d+(?:\.\d*)?))?\s*$")
+_NUMBER_TEXT = re.compile(r"^\s*(?P<num>[+-]?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][+-]?\d+)?)\s*(?:/\s*(?P<den>\d+))?\s*$")
+
+
+def parse_alpha(alpha: object, name: str = "alpha") -> Any:
+    """The shape parameter as the package's functions take it; the one reader of alpha for the API and the CLI.
+
+    A string is read as a number (``'1.2'``, ``'3/2'``) or a multiple of pi (``'pi/2'``, ``'2pi/3'``,
+    ``'2*pi/3'``, ``'0.5 pi'``, ``'π/3'``) and returned as the nearest float; any other value (a float, an
+    int, an mpmath number, a flint ``fmpq``, a
+    :class:`~paper_repro.core.domain.RationalAngle`) is checked and returned unchanged, so exact and
+    high-precision arithmetic keep their input.  Raises ``ValueError``/``TypeError`` naming ``name`` and the
+    allowed range (0, pi) otherwise.
+
+    >>> parse_alpha("pi/2") == math.pi / 2, parse_alpha("2*pi/3") == 2 * math.pi / 3, parse_alpha(" 1.5 ")
+    (True, True, 1.5)
+    >>> parse_alpha("pi")
+    Traceback (most recent call last):
+    ...
+    ValueError: alpha must lie in the open interval (0, pi), got 'pi' (= 3.141592653589793)
+    """
+    if isinstance(alpha, str):
+        m = _ALPHA_TEXT.match(alpha)
+        if m:
+            value = float(m.group("num") or 1) * math.pi / float(m.group("den") or 1)
+        else:
+            m = _NUMBER_TEXT.match(alpha)
+            if not m:
+                raise ValueError(f"{name} must be a number in (0, pi) or a multiple of pi such as 'pi/2' or "
+                                 f"'2pi/3', got {alpha!r}")
+            value = float(m.group("num")) / float(m.group("den") or 1)
+        if not 0.0 < value < math.pi:
+            raise ValueError(f"{name} must lie in the open interval (0, pi), got {alpha!r} (= {value!r})")
+        return value
+    if hasattr(alpha, "sin_half") and hasattr(alpha, "cos_half"):  # a RationalAngle: valid by construction
+        return alpha
+    check_alpha(alpha, name)
+    return alpha
+
+
+def accepts_alpha_text(func: F) -> F:
+    """Decorate an API function whose parameter ``alpha`` may be given as text (``"pi/2"``): the text is read
+    by :func:`parse_alpha` before the call; other values pass through unchanged."""
+    import functools
+    import inspect
+
+    sig = inspect.signature(func)
+
+    @functools.wraps(func)
+    def wrapper(*args, **kwargs):
+        bound = sig.bind_partial(*args, **kwargs)
+        if isinstance(bound.arguments.get("alpha"), str):
+            bound.arguments["alpha"] = parse_alpha(bound.arguments["alpha"])
+        return func(*bound.args, **bound.kwargs)
+
+    return wrapper  # type: ignore[return-value]

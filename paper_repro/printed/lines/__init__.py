@@ -17,7 +17,7 @@ occurs there (whitespace-normalised) whenever the source is beside the clone.
   ``reason`` says why.
 
 ``near`` is the nearest ``\\label`` (before the line, or the environment's own), from which reports print the
-PDF's number (``data/paper_index.json``).
+PDF's number (``paper_repro/resources/paper_index.json``).
 """
 
 from __future__ import annotations

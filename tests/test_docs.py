@@ -1,0 +1,116 @@
+"""The documentation: the tutorial's code runs as written, and the built site works offline in a browser.
+
+The site test builds ``docs/_build/html`` (``make docs``) when Sphinx is installed and opens it in headless
+Chromium (skipped, saying why, without Sphinx or a browser): no console error, no request leaving the site,
+math rendered by the vendored MathJax.
+"""
+
+from __future__ import annotations
+
+import re
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parent.parent
+DOCS = ROOT / "docs"
+
+
+def test_tutorial_runs(tmp_path, monkeypatch):
+    blocks = re.findall(r"```python\n(.*?)```", (DOCS / "guide" / "tutorial.md").read_text(encoding="utf-8"), re.S)
+    assert len(blocks) >= 7
+    monkeypatch.chdir(tmp_path)
+    scope: dict = {"__name__": "tutorial"}
+    for k, code in enumerate(blocks):
+        exec(compile(code, f"tutorial.md block {k + 1}", "exec"), scope)
+    assert (tmp_path / "sphere_octant.obj").is_file()
+
+
+def test_every_docs_page_is_in_the_site():
+    index = (DOCS / "index.md").read_text(encoding="utf-8")
+    assert ":glob:" in index  # every docs/*.md is picked up by the glob toctree
+
+
+@pytest.mark.slow
+def test_site_in_headless_chromium(tmp_path):
+    pytest.importorskip("sphinx")
+    pytest.importorskip("myst_parser")
+    from paper_repro.app import check_gallery
+
+    if not (check_gallery.find(check_gallery.CHROMIUM) and check_gallery.find(check_gallery.DRIVER)):
+        pytest.skip(check_gallery.HOW_TO_GET)
+    out = tmp_path / "html"
+    proc = subprocess.run([sys.executable, "-m", "sphinx", "-q", "-b", "html", str(DOCS), str(out)],
+                          capture_output=True, text=True)
+    assert proc.returncode == 0, proc.stderr[-3000:]
+    import paper_repro
+
+    api = (out / "guide" / "api.html").read_text(encoding="utf-8")
+    assert [n for n in paper_repro.__all__ if f'id="paper_repro.{n}"' not in api] == []  # every public name
+    for md in DOCS.glob("*.md"):  # every page of docs/ is in the site
+        if md.name != "index.md":
+            assert (out / md.with_suffix(".html").name).is_file(), md.name
+    res = check_docs_site(out / "index.html", out / "guide" / "tutorial.html")
+    assert res["console_errors"] == [] and res["external_requests"] == [], res
+    assert res["math_rendered"] > 0 and res["math_errors"] == 0, res
+
+
+def check_docs_site(*pages: Path) -> dict:
+    from selenium import webdriver
+    from selenium.webdriver.chrome.service import Service
+
+    from paper_repro.app import check_gallery
+
+    opts = webdriver.ChromeOptions()
+    opts.binary_location = check_gallery.find(check_gallery.CHROMIUM)
+    for arg in ("--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage"):
+        opts.add_argument(arg)
+    opts.set_capability("goog:loggingPrefs", {"browser": "ALL", "performance": "ALL"})
+    driver = webdriver.Chrome(service=Service(check_gallery.find(check_gallery.DRIVER)), options=opts)
+    console, external, rendered, errors = [], [], 0, 0
+    try:
+        for page in pages:
+            driver.get(page.resolve().as_uri())
+            for _ in range(100):
+                done = driver.execute_script("return !!(window.MathJax && MathJax.startup && MathJax.startup.promise"
+                                             " && document.querySelectorAll('mjx-container').length)")
+                if done:
+                    break
+                driver.implicitly_wait(0.1)
+                import time
+
+                time.sleep(0.1)
+            rendered += driver.execute_script("return document.querySelectorAll('mjx-container').length")
+            errors += driver.execute_script("return document.querySelectorAll('mjx-merror, merror').length")
+            console += [e["message"] for e in driver.get_log("browser") if e["level"] == "SEVERE"]
+            import json
+
+            for entry in driver.get_log("performance"):
+                msg = json.loads(entry["message"])["message"]
+                if msg.get("method") == "Network.requestWillBeSent":
+                    url = msg["params"]["request"]["url"]
+                    if not url.startswith(("file://", "data:", "about:")):
+                        external.append(url)
+    finally:
+        driver.quit()
+    return {"console_errors": console, "external_requests": external, "math_rendered": rendered,
+            "math_errors": errors}
+
+
+def test_check_gallery_installs_nothing_unless_asked(monkeypatch, capsys):
+    from paper_repro.app import check_gallery
+
+    calls = []
+    monkeypatch.setattr(check_gallery, "find", lambda names: None)
+    monkeypatch.setattr(check_gallery.subprocess, "run", lambda *a, **k: calls.append(a))
+    assert check_gallery.main(["--page", "x.html"]) == check_gallery.NO_BROWSER
+    assert calls == []
+    assert "INSTALL=1" in capsys.readouterr().err
+    assert check_gallery.main(["--install", "--page", "x.html"]) == check_gallery.NO_BROWSER
+    apt = [c[0] for c in calls if c[0][:2] == ["apt-get", "install"]]
+    assert apt == [check_gallery.APT_INSTALL]
+    assert "--no-install-recommends" in apt[0] and "--no-upgrade" in apt[0]
+    assert set(apt[0][-2:]) == {"chromium", "chromium-driver"}
+    assert "installing" in capsys.readouterr().out

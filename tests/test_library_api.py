@@ -1,0 +1,159 @@
+"""The library API of issue 20: alpha as text, labelled nets, least-squares fitting with interpolation, the
+alpha -> 0 limit as a bezier.Triangle, where outputs and the cache go, the CLI lists."""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import paper_repro as pr
+from paper_repro.app import cli
+from paper_repro.theory.limits import bernstein_eval
+from paper_repro.util import cache, io
+from paper_repro.util.registry import CLAIMS, FIGURES, load_all
+from paper_repro.util.validation import parse_alpha
+
+
+@pytest.mark.parametrize("text, value", [("pi/2", math.pi / 2), ("2pi/3", 2 * math.pi / 3), ("2*pi/3", 2 * math.pi / 3),
+                                         ("π/4", math.pi / 4), ("0.5 pi", math.pi / 2), ("1.25", 1.25),
+                                         ("3/2", 1.5), (" pi / 6 ", math.pi / 6)])
+def test_parse_alpha_reads_text(text, value):
+    assert parse_alpha(text) == pytest.approx(value, rel=1e-15)
+
+
+@pytest.mark.parametrize("bad", ["pi", "0", "-1", "4", "2pi", "tau/2", "", "pi/0.5"])
+def test_parse_alpha_rejects_naming_the_parameter(bad):
+    with pytest.raises(ValueError, match="alpha"):
+        parse_alpha(bad)
+
+
+def test_alpha_text_everywhere_in_the_api():
+    net = np.random.default_rng(0).normal(size=(19, 3))
+    pts = pr.sample_points("pi/2", 5, seed=1)
+    assert np.array_equal(pts, pr.sample_points(np.pi / 2, 5, seed=1))
+    assert np.array_equal(pr.Patch(2, "pi/2", net)(pts), pr.Patch(2, np.pi / 2, net)(pts))
+    assert pr.coefficients(2, "pi/3") == pr.coefficients(2, np.pi / 3)
+    assert np.array_equal(pr.evaluate_normalized(2, "pi/3", pts * (2 / 3)), pr.evaluate_normalized(2, np.pi / 3,
+                                                                                                    pts * (2 / 3)))
+    assert np.array_equal(pr.elevate(net, 2, "pi/2"), pr.elevate(net, 2, np.pi / 2))
+    with pytest.raises(ValueError, match="alpha"):
+        pr.Patch(2, "pi", net)
+
+
+def test_net_by_paper_label():
+    net = np.arange(57.0).reshape(19, 3)
+    p = pr.Patch(2, 1.0, net)
+    labels = p.net.labels()
+    assert len(labels) == 19 and len(set(labels)) == 19
+    for k, lab in enumerate(labels):
+        assert p.net[lab].tolist() == net[k].tolist()
+    assert p.net["R_{4,3,1}"].tolist() == p.net["r_{4,3,1}"].tolist()
+    assert p.net["r_{4,0,0}"].tolist() == p.net["g_{4,4,0}"].tolist()  # aliases of one function
+    with pytest.raises(KeyError, match="no control point labelled"):
+        p.net["r_{6,3,1}"]
+    assert type(p.net * 2) is np.ndarray and type(p.net[1:3]) is np.ndarray
+
+
+def test_bezier_triangle_nodes_in_bezier_order():
+    bezier = pytest.importorskip("bezier")
+    net = np.random.default_rng(3).normal(size=(37, 3))
+    tri = pr.bezier_triangle(net, 3)
+    assert isinstance(tri, bezier.Triangle) and tri.degree == 8
+    N, bez = pr.bezier_limit(net, 3)
+    st = np.random.default_rng(4).dirichlet(np.ones(3), size=20)[:, :2]
+    ours = bernstein_eval(N, np.c_[1 - st.sum(axis=1), st], bez)
+    assert np.allclose(tri.evaluate_cartesian_multi(np.asfortranarray(st)).T, ours, atol=1e-13)
+    # and it is the limit: a patch at a small alpha is close to it
+    small = pr.Patch(3, 1e-4, net)
+    assert np.allclose(small.at_barycentric(np.c_[1 - st.sum(axis=1), st]), ours, atol=1e-6)
+
+
+def test_least_squares_reproduces_a_patch_and_interpolates():
+    rng = np.random.default_rng(5)
+    truth = pr.Patch(2, "pi/2", rng.normal(size=(19, 3)))
+    pts = pr.sample_points("pi/2", 300, seed=6)
+    net = pr.fit_least_squares(pts, truth(pts), 2, "pi/2")
+    assert np.allclose(net, truth.net, atol=1e-10)
+    noisy = truth(pts) + 0.05 * rng.normal(size=(300, 3))
+    corners = truth(np.pi / 2 * np.eye(3))
+    fitted = pr.Patch(2, "pi/2", pr.fit_least_squares(pts, noisy, 2, "pi/2", corners=corners))
+    assert np.allclose(fitted(np.pi / 2 * np.eye(3)), corners, atol=1e-12)
+    free = pr.Patch(2, "pi/2", pr.fit_least_squares(pts, noisy, 2, "pi/2"))
+    assert not np.allclose(free(np.pi / 2 * np.eye(3)), corners, atol=1e-6)  # the constraint did something
+    t = np.linspace(0, np.pi / 2, 7)
+    edge = pr.fit_least_squares(pts, noisy, 2, "pi/2", boundary={"u=0": lambda s: truth.boundary_curve("u=0", s)})
+    assert np.allclose(pr.Patch(2, "pi/2", edge).boundary_curve("u=0", t), truth.boundary_curve("u=0", t), atol=1e-10)
+    with pytest.raises(ValueError, match="must agree"):
+        pr.fit_least_squares(pts, noisy, 2, "pi/2", corners=corners + 1,
+                             boundary={"u=0": lambda s: truth.boundary_curve("u=0", s)})
+    with pytest.raises(ValueError, match="values"):
+        pr.fit_least_squares(pts, noisy[:-1], 2, "pi/2")
+
+
+def test_outputs_follow_out_and_never_the_install_location(tmp_path, monkeypatch):
+    monkeypatch.delenv(io.OUT_ENV, raising=False)
+    assert io.in_checkout() and io.output_root() == io.ROOT  # a clone: data/ and figures/ of the clone
+    monkeypatch.setattr(io, "in_checkout", lambda: False)  # as installed: the current directory
+    monkeypatch.chdir(tmp_path)
+    assert io.data_dir() == tmp_path / "data" and io.figures_dir() == tmp_path / "figures"
+    io.set_output_root(tmp_path / "out")
+    try:
+        assert io.data_dir() == tmp_path / "out" / "data" and io.DATA == tmp_path / "out" / "data"
+    finally:
+        io.set_output_root(None)
+
+
+def test_cache_dir_rules(tmp_path, monkeypatch):
+    monkeypatch.setattr(cache, "CACHE_DIR", None)
+    monkeypatch.delenv(cache.CACHE_ENV, raising=False)
+    assert cache.cache_dir() == io.ROOT / ".cache"
+    monkeypatch.setattr(cache, "in_checkout", lambda: False)
+    pytest.importorskip("platformdirs")
+    user = cache.cache_dir()
+    assert "paper_repro" in user.parts and not str(user).startswith(str(io.PACKAGE))
+    monkeypatch.setenv(cache.CACHE_ENV, str(tmp_path))
+    assert cache.cache_dir() == tmp_path
+    monkeypatch.setenv(cache.NO_CACHE_ENV, "1")
+    assert not cache.enabled()
+    assert cache.cached("t", {"a": 1}, lambda: 5) == 5 and not any(Path(tmp_path).iterdir())
+
+
+def test_cli_lists_and_plain_help(capsys):
+    load_all()
+    assert cli.main(["claims", "--list"]) == 0
+    out = capsys.readouterr().out.splitlines()
+    assert [ln.split()[0] for ln in out] == list(CLAIMS) and all("``" not in ln for ln in out)
+    assert cli.main(["figures", "--list"]) == 0
+    out = capsys.readouterr().out.splitlines()
+    assert [ln.split()[0] for ln in out] == list(FIGURES)
+    with pytest.raises(SystemExit):
+        cli.main(["--help"])
+    text = capsys.readouterr().out
+    assert "``" not in text and ":func:" not in text and "--out DIR" in text
+    for sub in (["figures", "--help"], ["labels", "--help"], ["reproduce", "--help"]):
+        with pytest.raises(SystemExit):
+            cli.main(sub)
+        helptext = capsys.readouterr().out
+        assert "``" not in helptext
+    assert "figure ids" in cli_help("figures") and "the order n" in cli_help("labels")
+    assert "write data/, figures/" in cli_help("reproduce").replace("\n", " ").replace("  ", " ")
+
+
+def cli_help(cmd: str) -> str:
+    import contextlib
+    import io as _io
+
+    buf = _io.StringIO()
+    with contextlib.redirect_stdout(buf), pytest.raises(SystemExit):
+        cli.main([cmd, "--help"])
+    return buf.getvalue()
+
+
+def test_version_is_exported():
+    assert isinstance(pr.__version__, str) and pr.__version__.count(".") == 2
+    assert (Path(pr.__file__).parent / "py.typed").is_file()
+    for name in pr.__all__:
+        assert hasattr(pr, name), name
