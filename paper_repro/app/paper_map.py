@@ -85,7 +85,8 @@ def build(claims: dict, figures: dict) -> dict | None:
                      "code": code_mentions(lab), "excused": EXCUSED.get(lab, ""), "lines": statuses.get(lab, {})})
     covered = [r for r in rows if r["claims"] or r["figures"]]
     open_ = [r["label"] for r in rows if not (r["claims"] or r["figures"] or r["excused"])]
-    return {"source": "paper_repro/resources/paper_index.json (from shared/paper/triangular-trigonometric-patches.tex)", "labels": rows,
+    return {"source": "paper_repro/resources/paper_index.json (from shared/paper/triangular-trigonometric-patches.tex)",
+            "labels": rows,
             "summary": {"labels": len(rows), "covered_by_claim_or_figure": len(covered),
                         "excused": [r["label"] for r in rows if r["excused"] and not (r["claims"] or r["figures"])],
                         "neither_checked_nor_excused": open_,

@@ -23,7 +23,7 @@ import numpy as np
 from flint import fmpq
 
 from paper_repro.core.collocation import Collocation, collocate
-from paper_repro.core.context import BallContext, Context, ExactContext, FloatContext
+from paper_repro.core.context import BallContext, Context, ExactContext
 from paper_repro.core.domain import (
     RationalAngle,
     RationalPoints,

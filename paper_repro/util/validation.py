@@ -11,9 +11,9 @@ import re
 from collections.abc import Callable
 from typing import Any, TypeVar
 
-F = TypeVar("F", bound=Callable[..., Any])
-
 from paper_repro.util.limits import real_scalar
+
+F = TypeVar("F", bound=Callable[..., Any])
 
 #: Points may miss the domain Omega^alpha by this much (relative to alpha) in float arithmetic.
 DOMAIN_TOL = 1e-12
