@@ -117,21 +117,6 @@ def run_blocks(count: int, work: Callable[[int, int], None], block: int = BLOCK,
                 f.cancel()
 
 
-_LOCAL = threading.local()
-
-
-def _buffers(rows: int, cols: int, count: int, purpose: str = "basis") -> list[np.ndarray]:
-    """``count`` C-contiguous ``(rows, cols)`` work arrays owned by the calling thread, reused across blocks and
-    calls (one block's worth per thread and purpose is kept: memory bounded by the block size)."""
-    store = getattr(_LOCAL, "store", None)
-    if store is None:
-        store = _LOCAL.store = {}
-    bufs = store.get(purpose)
-    if bufs is None or bufs[0].shape != (rows, cols) or len(bufs) < count:
-        bufs = store[purpose] = [np.empty((rows, cols)) for _ in range(count)]
-    return bufs[:count]
-
-
 def scaled_trig(uvw: np.ndarray, alpha: float, sin_half_alpha: float) -> tuple[np.ndarray, np.ndarray]:
     """``(S, C)``: sine ratios ``sin(x/2)/sin(alpha/2)`` (``x/alpha`` below :data:`SMALL_ALPHA`, as
     :func:`paper_repro.core.domain.scaled_half_angle_values`) and cosines ``cos(x/2)`` of ``(P, 3)`` points."""
@@ -179,8 +164,8 @@ class FloatKernel:
         """``(top + 1, P)`` rows ``x^0 .. x^top`` (successive products, as a loop would compute them)."""
         out = np.empty((top + 1, x.shape[0]))
         out[0] = 1.0
-        if top:
-            np.cumprod(np.broadcast_to(x, (top, x.shape[0])), axis=0, out=out[1:])
+        for k in range(1, top + 1):
+            np.multiply(out[k - 1], x, out=out[k])
         return out
 
     def _table(self, var: int, sp: np.ndarray, cp: np.ndarray) -> np.ndarray:
@@ -207,14 +192,12 @@ class FloatKernel:
     def basis_rows(self, s: np.ndarray, c: np.ndarray) -> np.ndarray:
         """``(F, P)`` monomial values from ``(3, P)`` rows of (scaled) half-angle sines ``s`` and cosines ``c``.
 
-        The two ``(F, P)`` work arrays are kept per thread and reused from block to block (no allocation per
-        block); the returned array is overwritten by the next call in the same thread.
+        Row gathers by fancy indexing (measured 3x faster than ``np.take(..., out=...)`` into kept buffers).
         """
-        out, tmp = _buffers(self.F, s.shape[1], 2)
         t = [self._table(v, self._powers(s[v], self.smax[v]), self._powers(c[v], self.cmax[v])) for v in range(3)]
-        np.take(t[0], self.index[0], axis=0, out=out)
-        out *= np.take(t[1], self.index[1], axis=0, out=tmp)
-        out *= np.take(t[2], self.index[2], axis=0, out=tmp)
+        out = t[0][self.index[0]]
+        out *= t[1][self.index[1]]
+        out *= t[2][self.index[2]]
         return out
 
     def basis(self, s: np.ndarray, c: np.ndarray) -> np.ndarray:
@@ -231,18 +214,13 @@ class FloatKernel:
         """
         sp = [self._powers(s[v], self.smax[v] + 1) for v in range(3)]
         cp = [self._powers(c[v], self.cmax[v] + 1) for v in range(3)]
-        p = s.shape[1]
-        g = _buffers(self.F, p, 3 + 3 + len(directions) + 1, "deriv")
-        for v in range(3):
-            np.take(self._table(v, sp[v], cp[v]), self.index[v], axis=0, out=g[v])
+        g = [self._table(v, sp[v], cp[v])[self.index[v]] for v in range(3)]
         used = [v for v in range(3) if any(d[v] for d in directions)]
-        dg = {}
-        for k, v in enumerate(used):
-            dg[v] = np.take(self._dtable(v, sp[v], cp[v], s2), self.index[v], axis=0, out=g[3 + k])
-        tmp = g[-1]
+        dg = {v: self._dtable(v, sp[v], cp[v], s2)[self.index[v]] for v in used}
+        tmp = np.empty_like(g[0])
         outs = []
-        for k, d in enumerate(directions):
-            o = g[6 + k]
+        for d in directions:
+            o = np.empty_like(g[0])
             nz = [v for v in range(3) if d[v]]
             if not nz:
                 o[...] = 0.0
