@@ -466,7 +466,7 @@ def main(argv: list[str] | None = None) -> int:
            "load_average_at_start": list(os.getloadavg()),
            "ratios": ratio_runs(ns, points, args.repeat),
            "floor": floor_estimate([3, 6] if not args.quick else [3], points, args.repeat),
-           "memory": memory_rows(3 if args.quick else 6, [10**4, 10**5] if args.quick else [10**5, 10**7]),
+           "memory": memory_rows(3, [10**4, 10**5] if args.quick else [10**5, 10**7]),
            "mp": mp_route(ns, points, mp_points=20 if args.quick else 100)}
     if not args.patch_only:
         rep.update(exact=exact_comparison([2, 3] if args.quick else [2, 3, 4, 5, 6, 7, 8]),

@@ -162,9 +162,9 @@ class Patch:
         arr = self._float_points(points)
         out = np.empty((arr.shape[0], self.dimension))
 
-        def work(lo: int, hi: int) -> None:
+        def work(lo: int, hi: int, ws) -> None:
             s, c = scaled_trig_rows(self._checked_block(arr, lo, hi), st["alpha"], st["sa"])
-            y = aug_t @ kernel.basis_rows(s, c)  # (d, P), or (d + 1, P) with the weights' row last
+            y = aug_t @ kernel.basis_rows(s, c, ws)  # (d, P), or (d + 1, P) with the weights' row last
             out[lo:hi] = (y[:-1] / y[-1]).T if rational else y.T
 
         run_blocks(arr.shape[0], work)
@@ -181,9 +181,9 @@ class Patch:
         arr = self._float_points(points)
         outs = [np.empty((arr.shape[0], self.dimension)) for _ in directions]
 
-        def work(lo: int, hi: int) -> None:
+        def work(lo: int, hi: int, ws) -> None:
             s, c = scaled_trig_rows(self._checked_block(arr, lo, hi), st["alpha"], st["sa"])
-            vals, ders = kernel.derivatives_rows(s, c, s2, directions, values=rational)
+            vals, ders = kernel.derivatives_rows(s, c, s2, directions, values=rational, ws=ws)
             if not rational:
                 for o, db in zip(outs, ders):
                     o[lo:hi] = (aug_t @ db).T
@@ -234,13 +234,20 @@ class Patch:
         ``direction`` is ``'u'`` (d/du with v fixed, w = alpha - u - v), ``'v'`` (d/dv with u fixed),
         ``'w'`` (d/dw with u fixed) or a triple ``(du, dv, dw)`` with ``du + dv + dw = 0``
         (:data:`~paper_repro.core.derivatives_basis.DIRECTIONS`).  Rational patches use the quotient rule.
+
+        The float path is blocked like point evaluation (memory independent of the number of points): the
+        bounded bracket of :meth:`~paper_repro.core.fast.FloatKernel.derivatives_rows` contracted with the centred
+        net at unit scale, then multiplied by ``2^E / (2 sin(alpha/2))`` once (one power-of-two step), so it is
+        finite for every alpha in (0, pi) unless the derivative itself (of size extent / alpha) exceeds float64:
+        then ``OverflowError`` says so.
         """
         ctx = self._ctx(arith, dps)
         if isinstance(ctx, FloatContext):
             d = check_direction(direction)
             (y,), e = self._float_derivatives(points, [d])
+            m, k = math.frexp(2 * self._setup["sa"])  # 2 sin(alpha/2) = m 2^k, m in [0.5, 1)
             with np.errstate(over="ignore"):
-                out = np.ldexp(y / (2 * self._setup["sa"]), e)
+                out = np.ldexp(y / m, e - k)
             if not np.all(np.isfinite(out)):
                 raise OverflowError(f"the derivative exceeds float64's range (alpha = {float(self.alpha):.3g}, net "
                                     f"extent 2^{e}): its size is about extent / sin(alpha/2); evaluate it with "
