@@ -3,15 +3,20 @@
 Writes ``reports/bench.json`` and ``reports/bench.md`` (timings are machine-dependent, so they live in
 ``reports/``, never in ``data/``):
 
-* patch evaluation at ``points`` random points of Omega^alpha (alpha = pi/2), best of ``repeat``:
-  :class:`~paper_repro.surfaces.patch.Patch` (blocked float kernel) versus
-  ``bezier.Triangle.evaluate_cartesian_multi`` of degree 3n - 1 (the degree of the alpha -> 0 limit) on
-  the same points, and versus the mpmath route (``arith='mp'``, 30 digits) per point; peak memory of
-  the float path (tracemalloc) at two point counts, to show it does not grow with them;
-* exact normalizing coefficients at one alpha (flint ``fmpq_mat``) versus the same collocation solved
-  with mpmath at 50 digits, per n, with fitted growth exponents.
+* Patch / bezier ratios (issue 21) at ``points`` random points of Omega^alpha (alpha = pi/2), best of ``repeat``,
+  n = 1, 3, 6, 10, each in a fresh process, four times: idle and loaded (one busy process per core minus one,
+  started and stopped by the bench, each ending by itself after 15 min at the latest), with the default BLAS
+  threads and with ``OPENBLAS_NUM_THREADS=1``: :class:`~paper_repro.surfaces.patch.Patch` with the kernel's
+  default threads and with one, ``bezier.Triangle.evaluate_cartesian_multi`` of degree 3n - 1 (the degree of the
+  alpha -> 0 limit), ``Patch.derivative`` and ``Patch.normals`` against bezier's hodograph route;
+* the physical floor (three sin/cos pairs, the distinct s^a c^b products, one dot product of length delta_n per
+  coordinate; micro-benchmarks on cache-sized blocks) and Patch's one-thread time as a multiple of it;
+* the work memory (tracemalloc peak beyond input and output) of evaluation, derivative and normals at 1e5 and
+  1e7 points; the mpmath route per point, extrapolated;
+* (without ``--patch-only``) exact normalizing coefficients (flint) against the same collocation in mpmath, the
+  exact rank certificate, the closed-form recovery.
 
-Run: ``python -m paper_repro.app.bench [--points N] [--quick]``.
+Run: ``python -m paper_repro.app.bench [--points N] [--repeat R] [--ns 1,3,6,10] [--patch-only] [--quick]``.
 """
 
 from __future__ import annotations

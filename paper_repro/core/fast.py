@@ -44,9 +44,10 @@ import numpy as np
 
 from paper_repro.core.domain import SMALL_ALPHA
 
-#: Points per block: the (block, delta_n) work arrays stay in the CPU caches for small n (4096 measured
-#: fastest of 1024..16384 at n = 3 and n = 6 on this project's machine).
-BLOCK = 4096
+#: Points per block.  The (delta_n, block) work arrays should stay in the CPU caches: in the functions-x-points
+#: layout 1024 measured fastest of 512..4096 for n = 3, 6, 10, evaluation and derivatives (interleaved runs,
+#: min of 12, on this project's 2-core machine: 2x over 4096 at n = 3 and 10, 3x at n = 6).
+BLOCK = 1024
 
 _POOL: ThreadPoolExecutor | None = None
 _POOL_SIZE = 0
