@@ -25,6 +25,17 @@ from paper_repro.util.validation import DOMAIN_TOL, check_alpha, check_n
 NORMAL_TOL = 2.0 ** -40
 
 
+def unit_normals(du: np.ndarray, dv: np.ndarray, tol: float) -> np.ndarray:
+    """``du x dv`` normalized; NaN where ``|du x dv| <= tol (|du| + |dv|)`` (rounding noise, :meth:`Patch.normals`)."""
+    nrm = np.cross(du, dv)
+    length = np.linalg.norm(nrm, axis=1, keepdims=True)
+    small = length <= tol * (np.linalg.norm(du, axis=1, keepdims=True) + np.linalg.norm(dv, axis=1, keepdims=True))
+    with np.errstate(invalid="ignore", divide="ignore"):
+        nrm /= length
+    nrm[small[:, 0]] = np.nan
+    return nrm
+
+
 def _pow2_exponent(a: np.ndarray) -> int:
     """``e`` with ``max |a| < 2^e`` (0 for a zero or empty array): dividing by ``2^e`` is exact."""
     m = float(np.max(np.abs(a))) if a.size else 0.0
@@ -168,32 +179,39 @@ class Patch:
             out[lo:hi] = (y[:-1] / y[-1]).T if rational else y.T
 
         run_blocks(arr.shape[0], work)
-        return np.ldexp(out, st["exp"]) if st["exp"] else out
+        return np.ldexp(out, st["exp"], out=out) if st["exp"] else out
 
-    def _float_derivatives(self, points, directions) -> tuple[list[np.ndarray], int]:
-        """``2 sin(alpha/2) 2^-E`` times the derivatives along ``directions`` (bounded), and E.
+    def _float_derivatives(self, points, directions, normals: bool = False) -> tuple[list[np.ndarray], int]:
+        """``2 sin(alpha/2) 2^-E`` times the derivatives along ``directions`` (bounded), and E; with ``normals``
+        (two directions) the unit normals instead, computed block by block (no full-size intermediate).
 
-        Per block: the monomials and the brackets of :meth:`FloatKernel.derivatives`, contracted with the
+        Per block: the monomials and the brackets of :meth:`FloatKernel.derivatives_rows`, contracted with the
         centred unit-scale net; rational patches by the quotient rule ``(N' - P D') / D``.
         """
         st = self._setup
         kernel, aug_t, rational, s2 = st["kernel"], st["daug_t"], st["cw"] is not None, st["sa"] ** 2
         arr = self._float_points(points)
-        outs = [np.empty((arr.shape[0], self.dimension)) for _ in directions]
+        outs = [np.empty((arr.shape[0], self.dimension)) for _ in range(1 if normals else len(directions))]
+        tol = NORMAL_TOL * delta(self.n)
 
         def work(lo: int, hi: int, ws) -> None:
             s, c = scaled_trig_rows(self._checked_block(arr, lo, hi), st["alpha"], st["sa"])
             vals, ders = kernel.derivatives_rows(s, c, s2, directions, values=rational, ws=ws)
-            if not rational:
-                for o, db in zip(outs, ders):
-                    o[lo:hi] = (aug_t @ db).T
-                return
-            y = aug_t @ vals
-            den = y[-1]
-            pt = y[:-1] / den
-            for o, db in zip(outs, ders):
-                dy = aug_t @ db
-                o[lo:hi] = ((dy[:-1] - pt * dy[-1]) / den).T
+            if rational:
+                y = aug_t @ vals
+                den = y[-1]
+                pt = y[:-1] / den
+                res = []
+                for db in ders:
+                    dy = aug_t @ db
+                    res.append(((dy[:-1] - pt * dy[-1]) / den).T)
+            else:
+                res = [(aug_t @ db).T for db in ders]
+            if normals:
+                outs[0][lo:hi] = unit_normals(res[0], res[1], tol)
+            else:
+                for o, r in zip(outs, res):
+                    o[lo:hi] = r
 
         run_blocks(arr.shape[0], work)
         return outs, st["dexp"]
@@ -247,7 +265,7 @@ class Patch:
             (y,), e = self._float_derivatives(points, [d])
             m, k = math.frexp(2 * self._setup["sa"])  # 2 sin(alpha/2) = m 2^k, m in [0.5, 1)
             with np.errstate(over="ignore"):
-                out = np.ldexp(y / m, e - k)
+                out = np.ldexp(np.divide(y, m, out=y), e - k, out=y)
             if not np.all(np.isfinite(out)):
                 raise OverflowError(f"the derivative exceeds float64's range (alpha = {float(self.alpha):.3g}, net "
                                     f"extent 2^{e}): its size is about extent / sin(alpha/2); evaluate it with "
@@ -277,13 +295,8 @@ class Patch:
         """
         if self.dimension != 3:
             raise ValueError(f"normals need a 3-D control net, this one is {self.dimension}-D")
-        (du, dv), _ = self._float_derivatives(points, [DIRECTIONS["u"], DIRECTIONS["v"]])
-        nrm = np.cross(du, dv)
-        length = np.linalg.norm(nrm, axis=1, keepdims=True)
-        tol = NORMAL_TOL * delta(self.n) * (np.linalg.norm(du, axis=1, keepdims=True)
-                                            + np.linalg.norm(dv, axis=1, keepdims=True))
-        with np.errstate(invalid="ignore", divide="ignore"):
-            return np.where(length > tol, nrm / length, np.nan)
+        (nrm,), _ = self._float_derivatives(points, [DIRECTIONS["u"], DIRECTIONS["v"]], normals=True)
+        return nrm
 
     def at_barycentric(self, bary) -> np.ndarray:
         """Patch points at barycentric ``(x, y, z)`` rows (x + y + z = 1, the point alpha (x, y, z))."""
