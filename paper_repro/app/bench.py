@@ -151,7 +151,7 @@ def memory_rows(n: int, sizes: list[int]) -> list[dict]:
         row = {"n": n, "points": size}
         for name, f, outs in (("evaluation", lambda p=pts: patch(p), 1),
                               ("derivative", lambda p=pts: patch.derivative(p), 1),
-                              ("normals", lambda p=pts: patch.normals(p), 2)):
+                              ("normals", lambda p=pts: patch.normals(p), 1)):
             f()  # set-up outside
             row[f"{name}_work_MB"] = round((_peak_bytes(f) - outs * out_bytes) / 1e6, 1)
         rows.append(row)

@@ -32,9 +32,9 @@ True
 
 from __future__ import annotations
 
+import itertools
 import math
 import os
-import queue
 import threading
 from collections.abc import Callable
 from concurrent.futures import ThreadPoolExecutor
@@ -128,24 +128,34 @@ def run_blocks(count: int, work: Callable[[int, int, Workspace], None], block: i
             for st in starts:
                 work(st, min(st + block, count), ws)
             return
-        free: queue.SimpleQueue = queue.SimpleQueue()
-        for _ in range(k):
-            free.put(Workspace())
+        # k long-lived tasks pull block numbers from a shared counter: k futures, not one per block (a future per
+        # block is ~2 KB: 20 MB at 10^7 points), and the work memory stays one block per thread
+        counter = itertools.count()
+        lock = threading.Lock()
+        errors: dict[int, BaseException] = {}
 
-        def task(st: int) -> None:
-            ws = free.get()
-            try:
-                work(st, min(st + block, count), ws)
-            finally:
-                free.put(ws)
+        def task() -> None:
+            ws = Workspace()
+            while True:
+                with lock:
+                    if errors:
+                        return
+                    i = next(counter)
+                if i >= len(starts):
+                    return
+                st = starts[i]
+                try:
+                    work(st, min(st + block, count), ws)
+                except BaseException as exc:  # noqa: BLE001 - re-raised below, the first block's first
+                    with lock:
+                        errors[i] = exc
+                    return
 
-        futures = [_pool(k).submit(task, st) for st in starts]
-        try:
-            for f in futures:
-                f.result()
-        finally:
-            for f in futures:
-                f.cancel()
+        for f in [_pool(k).submit(task) for _ in range(k)]:
+            f.result()
+        if errors:
+            # every block before the first failing one was taken (the counter is monotonic) and has finished
+            raise errors[min(errors)]
 
 
 def scaled_trig(uvw: np.ndarray, alpha: float, sin_half_alpha: float) -> tuple[np.ndarray, np.ndarray]:
