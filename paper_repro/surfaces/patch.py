@@ -266,7 +266,7 @@ class Patch:
             m, k = math.frexp(2 * self._setup["sa"])  # 2 sin(alpha/2) = m 2^k, m in [0.5, 1)
             with np.errstate(over="ignore"):
                 out = np.ldexp(np.divide(y, m, out=y), e - k, out=y)
-            if not np.all(np.isfinite(out)):
+            if out.size and not (math.isfinite(np.max(out)) and math.isfinite(np.min(out))):  # no (P, d) mask
                 raise OverflowError(f"the derivative exceeds float64's range (alpha = {float(self.alpha):.3g}, net "
                                     f"extent 2^{e}): its size is about extent / sin(alpha/2); evaluate it with "
                                     "arith='mp', or scale the net down")
