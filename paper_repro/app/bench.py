@@ -3,15 +3,20 @@
 Writes ``reports/bench.json`` and ``reports/bench.md`` (timings are machine-dependent, so they live in
 ``reports/``, never in ``data/``):
 
-* patch evaluation at ``points`` random points of Omega^alpha (alpha = pi/2), best of ``repeat``:
-  :class:`~paper_repro.surfaces.patch.Patch` (blocked float kernel) versus
-  ``bezier.Triangle.evaluate_cartesian_multi`` of degree 3n - 1 (the degree of the alpha -> 0 limit) on
-  the same points, and versus the mpmath route (``arith='mp'``, 30 digits) per point; peak memory of
-  the float path (tracemalloc) at two point counts, to show it does not grow with them;
-* exact normalizing coefficients at one alpha (flint ``fmpq_mat``) versus the same collocation solved
-  with mpmath at 50 digits, per n, with fitted growth exponents.
+* Patch / bezier ratios (issue 21) at ``points`` random points of Omega^alpha (alpha = pi/2), best of ``repeat``,
+  n = 1, 3, 6, 10, each in a fresh process, four times: idle and loaded (one busy process per core minus one,
+  started and stopped by the bench, each ending by itself after 15 min at the latest), with the default BLAS
+  threads and with ``OPENBLAS_NUM_THREADS=1``: :class:`~paper_repro.surfaces.patch.Patch` with the kernel's
+  default threads and with one, ``bezier.Triangle.evaluate_cartesian_multi`` of degree 3n - 1 (the degree of the
+  alpha -> 0 limit), ``Patch.derivative`` and ``Patch.normals`` against bezier's hodograph route;
+* the physical floor (three sin/cos pairs, the distinct s^a c^b products, one dot product of length delta_n per
+  coordinate; micro-benchmarks on cache-sized blocks) and Patch's one-thread time as a multiple of it;
+* the work memory (tracemalloc peak beyond input and output) of evaluation, derivative and normals at 1e5 and
+  1e7 points; the mpmath route per point, extrapolated;
+* (without ``--patch-only``) exact normalizing coefficients (flint) against the same collocation in mpmath, the
+  exact rank certificate, the closed-form recovery.
 
-Run: ``python -m paper_repro.app.bench [--points N] [--quick]``.
+Run: ``python -m paper_repro.app.bench [--points N] [--repeat R] [--ns 1,3,6,10] [--patch-only] [--quick]``.
 """
 
 from __future__ import annotations
@@ -59,36 +64,188 @@ def _growth(ns: list[int], ts: list[float]) -> float | None:
     return round(float(np.polyfit(x, y, 1)[0]), 2)
 
 
-def patch_comparison(ns: list[int], points: int, repeat: int, mp_points: int) -> list[dict]:
+def _bezier_setup(n: int, rng):
+    """A random ``bezier.Triangle`` of degree 3n - 1 in 3-D and its two hodographs (degree 3n - 2, 6 rows)."""
     import bezier
+    from bezier.hazmat.triangle_helpers import jacobian_both
 
+    deg = 3 * n - 1
+    nodes = np.asfortranarray(rng.normal(size=(3, (deg + 1) * (deg + 2) // 2)))
+    tri = bezier.Triangle(nodes, degree=deg, copy=False)
+    hod = bezier.Triangle(np.asfortranarray(jacobian_both(nodes, deg, 3)), degree=deg - 1, copy=False)
+    return deg, tri, hod
+
+
+def _bezier_normals(hod, bary):
+    d = hod.evaluate_cartesian_multi(bary)
+    nrm = np.cross(d[:3].T, d[3:].T)
+    return nrm / np.linalg.norm(nrm, axis=1, keepdims=True)
+
+
+def patch_ratios(ns: list[int], points: int, repeat: int) -> list[dict]:
+    """Patch against bezier in this process (its environment decides BLAS threads): point evaluation with the
+    kernel's default threads and with one thread (``PAPER_REPRO_THREADS=1``), derivative and normals against
+    bezier's hodograph route (the two first-derivative triangles of degree 3n - 2, evaluated at the points)."""
     alpha = math.pi / 2
     pts = sample_points(alpha, points, seed=1)
-    bary = np.asfortranarray(pts[:, :2] / alpha)
+    bary = np.asfortranarray(pts[:, :2] / alpha)  # (P, 2) barycentric (s, t), Fortran order as bezier wants
     rows = []
     for n in ns:
         rng = np.random.default_rng(n)
         patch = Patch(n, alpha, rng.normal(size=(delta(n), 3)))
         patch(pts[:10])  # coefficients and kernel set up outside the timing
+        deg, tri, hod = _bezier_setup(n, rng)
         t_ours = _best(lambda p=patch: p(pts), repeat)
-        deg = 3 * n - 1
-        tri = bezier.Triangle(np.asfortranarray(rng.normal(size=(3, (deg + 1) * (deg + 2) // 2))), degree=deg,
-                              copy=False)
         t_bez = _best(lambda t=tri: t.evaluate_cartesian_multi(bary), repeat)
-        few = pts[:mp_points]
-        t_mp = _best(lambda p=patch: p(few, arith="mp", dps=30), 1) / mp_points * points
-        peak_small = _peak_bytes(lambda p=patch: p(pts[: points // 10]))
-        peak_big = _peak_bytes(lambda p=patch: p(pts))
-        out_bytes = points * 3 * 8
+        os.environ["PAPER_REPRO_THREADS"] = "1"
+        try:
+            t_one = _best(lambda p=patch: p(pts), repeat)
+        finally:
+            os.environ.pop("PAPER_REPRO_THREADS")
+        t_der = _best(lambda p=patch: p.derivative(pts, "u"), repeat)
+        t_nrm = _best(lambda p=patch: p.normals(pts), repeat)
+        t_bder = _best(lambda h=hod: h.evaluate_cartesian_multi(bary), repeat)  # both derivatives at once
+        t_bnrm = _best(lambda h=hod: _bezier_normals(h, bary), repeat)
         rows.append({"n": n, "delta_n": delta(n), "bezier_degree": deg, "points": points,
-                     "patch_s": round(t_ours, 4), "bezier_s": round(t_bez, 4),
-                     "speedup_vs_bezier": round(t_bez / t_ours, 2),
-                     "mp_route_s_extrapolated": round(t_mp, 1), "speedup_vs_mp": round(t_mp / t_ours),
-                     "peak_work_MB_at_10pct_points": round((peak_small - out_bytes / 10) / 1e6, 1),
-                     "peak_work_MB_at_all_points": round((peak_big - out_bytes) / 1e6, 1)})
-        print(f"n={n}: patch {t_ours:.3f}s  bezier {t_bez:.3f}s  ({t_bez / t_ours:.2f}x)  mp route ~{t_mp:.0f}s",
+                     "patch_s": round(t_ours, 4), "patch_1thread_s": round(t_one, 4), "bezier_s": round(t_bez, 4),
+                     "ratio_patch_over_bezier": round(t_ours / t_bez, 3),
+                     "thread_speedup": round(t_one / t_ours, 2),
+                     "derivative_s": round(t_der, 4), "normals_s": round(t_nrm, 4),
+                     "derivative_over_point": round(t_der / t_ours, 2), "normals_over_point": round(t_nrm / t_ours, 2),
+                     "bezier_hodographs_s": round(t_bder, 4), "bezier_normals_s": round(t_bnrm, 4),
+                     "derivative_over_bezier": round(t_der / t_bder, 3),
+                     "normals_over_bezier": round(t_nrm / t_bnrm, 3)})
+        print(f"  n={n}: patch {t_ours:.3f}s (1 thread {t_one:.3f}s) bezier {t_bez:.3f}s ratio {t_ours / t_bez:.3f}; "
+              f"derivative {t_der:.3f}s normals {t_nrm:.3f}s; bezier hodographs {t_bder:.3f}s normals {t_bnrm:.3f}s",
               flush=True)
     return rows
+
+
+def mp_route(ns: list[int], points: int, mp_points: int) -> list[dict]:
+    """The mpmath route (30 digits) per point, extrapolated to ``points``, against Patch's float path."""
+    alpha = math.pi / 2
+    pts = sample_points(alpha, points, seed=1)
+    rows = []
+    for n in ns:
+        patch = Patch(n, alpha, np.random.default_rng(n).normal(size=(delta(n), 3)))
+        patch(pts[:10])
+        t_ours = _best(lambda p=patch: p(pts), 3)
+        few = pts[:mp_points]
+        t_mp = _best(lambda p=patch: p(few, arith="mp", dps=30), 1) / mp_points * points
+        rows.append({"n": n, "points": points, "patch_s": round(t_ours, 4), "mp_route_s_extrapolated": round(t_mp, 1),
+                     "speedup_vs_mp": round(t_mp / t_ours)})
+        print(f"  n={n}: mp route ~{t_mp:.0f}s ({t_mp / t_ours:.0f}x)", flush=True)
+    return rows
+
+
+def memory_rows(n: int, sizes: list[int]) -> list[dict]:
+    """Peak traced memory (tracemalloc) of evaluation, derivative and normals beyond input and output, per size."""
+    alpha = math.pi / 2
+    patch = Patch(n, alpha, np.random.default_rng(n).normal(size=(delta(n), 3)))
+    rows = []
+    for size in sizes:
+        pts = sample_points(alpha, size, seed=2)
+        out_bytes = size * 3 * 8
+        row = {"n": n, "points": size}
+        for name, f, outs in (("evaluation", lambda p=pts: patch(p), 1),
+                              ("derivative", lambda p=pts: patch.derivative(p), 1),
+                              ("normals", lambda p=pts: patch.normals(p), 1)):
+            f()  # set-up outside
+            row[f"{name}_work_MB"] = round((_peak_bytes(f) - outs * out_bytes) / 1e6, 1)
+        rows.append(row)
+        print(f"  memory n={n} points={size:,}: " + ", ".join(f"{k} {v}" for k, v in row.items() if k.endswith("MB")),
+              flush=True)
+    return rows
+
+
+def floor_estimate(ns: list[int], points: int, repeat: int) -> list[dict]:
+    """The physical floor per point (issue 21), from micro-benchmarks of its operations on cache-sized blocks, one
+    thread: three sin/cos pairs, the distinct s^a c^b products of the three variables (one multiply each), and one
+    dot product of length delta_n per coordinate.  Patch's one-thread time as a multiple of it."""
+    from paper_repro.core.fast import BLOCK, FloatKernel, single_threaded_blas
+    from paper_repro.core.labels import exponent_matrix
+
+    alpha = math.pi / 2
+    pts = sample_points(alpha, points, seed=1)
+    rng = np.random.default_rng(0)
+    blk = pts[:BLOCK].copy()
+    nblocks = points / BLOCK
+    rows = []
+    for n in ns:
+        kern = FloatKernel(exponent_matrix(n))
+        products = sum(len(p) for p in kern.pairs)
+        x, y, o = rng.random((BLOCK, products)), rng.random((BLOCK, products)), np.empty((BLOCK, products))
+        b, net = rng.random((BLOCK, delta(n))), rng.random((delta(n), 3))
+        r = np.empty((BLOCK, 3))
+        with single_threaded_blas():
+            t_trig = _best(lambda: (np.sin(blk), np.cos(blk)), 50 * repeat) * nblocks
+            t_prod = _best(lambda: np.multiply(x, y, out=o), 50 * repeat) * nblocks
+            t_dot = _best(lambda: np.dot(b, net, out=r), 50 * repeat) * nblocks
+        floor = t_trig + t_prod + t_dot
+        patch = Patch(n, alpha, rng.normal(size=(delta(n), 3)))
+        patch(pts[:10])
+        os.environ["PAPER_REPRO_THREADS"] = "1"
+        try:
+            t_one = _best(lambda p=patch: p(pts), repeat)
+            # the same method as the floor: best of many single blocks (a busy machine has quiet moments)
+            t_blk = _best(lambda p=patch: p(blk), 50 * repeat) * nblocks
+        finally:
+            os.environ.pop("PAPER_REPRO_THREADS")
+        rows.append({"n": n, "points": points, "products": products, "sincos_s": round(t_trig, 4),
+                     "products_s": round(t_prod, 4), "dot_s": round(t_dot, 4), "floor_s": round(floor, 4),
+                     "floor_ns_per_point": round(floor / points * 1e9, 1), "patch_1thread_s": round(t_one, 4),
+                     "multiple_of_floor": round(t_one / floor, 2), "patch_block_best_s": round(t_blk, 4),
+                     "multiple_of_floor_same_method": round(t_blk / floor, 2)})
+        print(f"  floor n={n}: {floor:.3f}s ({floor / points * 1e9:.0f} ns/point: sincos {t_trig:.3f}, {products} "
+              f"products {t_prod:.3f}, dot {t_dot:.3f}); Patch 1 thread {t_one:.3f}s = {t_one / floor:.2f}x, "
+              f"best block x blocks {t_blk:.3f}s = {t_blk / floor:.2f}x", flush=True)
+    return rows
+
+
+def _busy(seconds: float) -> None:  # pragma: no cover - runs in the load processes
+    end = time.monotonic() + seconds
+    while time.monotonic() < end:
+        pass
+
+
+def ratio_runs(ns: list[int], points: int, repeat: int, busy_seconds: float = 900.0) -> list[dict]:
+    """:func:`patch_ratios` in fresh processes: {idle, loaded} x {default BLAS threads, OPENBLAS_NUM_THREADS=1}.
+
+    "loaded" starts one busy process per core minus one (at least one), each ending by itself after
+    ``busy_seconds`` at the latest, and stops them (by their process ids) when the measurement is done."""
+    import json
+    import subprocess
+    import sys
+    import tempfile
+
+    cores = os.cpu_count() or 1
+    runs = []
+    for load in ("idle", "loaded"):
+        for setting in ("default", "OPENBLAS_NUM_THREADS=1"):
+            env = dict(os.environ)
+            env.pop("PAPER_REPRO_THREADS", None)
+            if setting != "default":
+                env.update(OPENBLAS_NUM_THREADS="1")
+            busy = []
+            if load == "loaded":
+                busy = [subprocess.Popen([sys.executable, "-c", f"from paper_repro.app.bench import _busy; "
+                                          f"_busy({busy_seconds})"]) for _ in range(max(1, cores - 1))]
+            print(f"patch vs bezier, {load}, BLAS threads {setting}:", flush=True)
+            try:
+                with tempfile.TemporaryDirectory() as tmp:
+                    out = os.path.join(tmp, "rows.json")
+                    subprocess.run([sys.executable, "-m", "paper_repro.app.bench", "--ratios-only", out,
+                                    "--points", str(points), "--repeat", str(repeat),
+                                    "--ns", ",".join(map(str, ns))], env=env, check=True)
+                    with open(out) as fh:
+                        rows = json.load(fh)
+            finally:
+                for p in busy:
+                    p.terminate()
+                for p in busy:
+                    p.wait()
+            runs.append({"load": load, "busy_processes": len(busy), "blas_threads": setting, "rows": rows})
+    return runs
 
 
 def exact_comparison(ns: list[int]) -> dict:
@@ -218,16 +375,49 @@ def machine() -> dict:
 def markdown(rep: dict) -> str:
     out = ["# Benchmarks", "", "Generated by `make bench` (machine-dependent; not part of `data/`).", "",
            f"Machine: {rep['machine']['processor']}, {rep['machine']['cpus']} CPUs, Python {rep['machine']['python']}, "
-           f"numpy {rep['machine']['numpy']}, bezier {rep['machine']['bezier']}.", "",
-           f"## Patch evaluation, {rep['patch'][0]['points']:,} random points of Ω^α, α = π/2 (best of "
-           f"{rep['repeat']})", "",
-           "| n | δ_n | `Patch` (s) | `bezier.Triangle` deg 3n−1 (s) | speed-up vs bezier | mpmath route, 30 digits "
-           "(s, extrapolated) | speed-up vs mp | extra memory at 10% / 100% of the points (MB) |",
-           "|---|---|---|---|---|---|---|---|"]
-    for r in rep["patch"]:
-        out.append(f"| {r['n']} | {r['delta_n']} | {r['patch_s']} | {r['bezier_s']} | {r['speedup_vs_bezier']}× | "
-                   f"{r['mp_route_s_extrapolated']} | {r['speedup_vs_mp']}× | {r['peak_work_MB_at_10pct_points']} / "
-                   f"{r['peak_work_MB_at_all_points']} |")
+           f"numpy {rep['machine']['numpy']}, bezier {rep['machine']['bezier']}. Load average (1, 5, 15 min) at "
+           f"start {rep['load_average_at_start']}, at end {rep['load_average_at_end']} (the machine is shared).", "",
+           f"## Patch against bezier, {rep['points']:,} random points of Ω^α, α = π/2 (best of {rep['repeat']}), "
+           "one process each", "",
+           "Each table is one fresh process; *loaded*: one busy process per core minus one, started and stopped by "
+           "the bench. Columns: Patch with the kernel's default threads and with one (`PAPER_REPRO_THREADS=1`); "
+           "`bezier.Triangle.evaluate_cartesian_multi` of degree 3n − 1; derivative (`Patch.derivative`, 'u') and "
+           "normals (`Patch.normals`) against bezier's hodograph route (the two first-derivative triangles of degree "
+           "3n − 2 from `jacobian_both`, evaluated at the points; normals: their cross product, normalized). "
+           f"Goals (issue 21): Patch / bezier ≤ {GOALS}.", ""]
+    for run in rep["ratios"]:
+        out += [f"### {run['load']} ({run['busy_processes']} busy processes), BLAS threads: {run['blas_threads']}", "",
+                "| n | δ_n | Patch (s) | Patch, 1 thread (s) | bezier (s) | **Patch / bezier** | derivative (s) | "
+                "normals (s) | derivative / point | normals / point | derivative / bezier hodographs | "
+                "normals / bezier normals |", "|---|---|---|---|---|---|---|---|---|---|---|---|"]
+        for r in run["rows"]:
+            out.append(f"| {r['n']} | {r['delta_n']} | {r['patch_s']} | {r['patch_1thread_s']} | {r['bezier_s']} | "
+                       f"**{r['ratio_patch_over_bezier']}** | {r['derivative_s']} | {r['normals_s']} | "
+                       f"{r['derivative_over_point']} | {r['normals_over_point']} | {r['derivative_over_bezier']} | "
+                       f"{r['normals_over_bezier']} |")
+        out.append("")
+    out += ["## The physical floor (one thread)", "",
+            "Micro-benchmarks on cache-sized blocks (4096 points), scaled to the point count: three sin/cos pairs, "
+            "one multiply per distinct product s^a c^b of the three variables, one dot product of length δ_n per "
+            "coordinate. Patch's one-thread time as a multiple of it (goal ≤ 3×): the whole run (best of the repeats), "
+            "and by the floor's own method (best of many single blocks, times the number of blocks), which is the "
+            "fair comparison on a busy machine.", "",
+            "| n | products | sin/cos (s) | products (s) | dot (s) | floor (s) | ns / point | Patch, 1 thread (s) | "
+            "multiple | Patch, best block × blocks (s) | multiple, same method |",
+            "|---|---|---|---|---|---|---|---|---|---|---|"]
+    out += [f"| {r['n']} | {r['products']} | {r['sincos_s']} | {r['products_s']} | {r['dot_s']} | {r['floor_s']} | "
+            f"{r['floor_ns_per_point']} | {r['patch_1thread_s']} | {r['multiple_of_floor']}× | "
+            f"{r['patch_block_best_s']} | {r['multiple_of_floor_same_method']}× |" for r in rep["floor"]]
+    out += ["", "## Work memory beyond input and output (tracemalloc peak)", "",
+            "| n | points | evaluation (MB) | derivative (MB) | normals (MB) |", "|---|---|---|---|---|"]
+    out += [f"| {r['n']} | {r['points']:,} | {r['evaluation_work_MB']} | {r['derivative_work_MB']} | "
+            f"{r['normals_work_MB']} |" for r in rep["memory"]]
+    out += ["", "## The mpmath route (30 digits, extrapolated from a few points)", "",
+            "| n | Patch (s) | mpmath route (s) | speed-up |", "|---|---|---|---|"]
+    out += [f"| {r['n']} | {r['patch_s']} | {r['mp_route_s_extrapolated']} | {r['speedup_vs_mp']}× |"
+            for r in rep["mp"]]
+    if "exact" not in rep:
+        return "\n".join(out + [""])
     ex = rep["exact"]
     out += ["", f"## Exact normalizing coefficients at α = {ex['alpha']}: flint, mpmath (50 digits), "
             "proven closed forms", "", "| n | unknowns | flint fmpq_mat solve (s) | mpmath lu_solve (s) | "
@@ -261,20 +451,39 @@ def markdown(rep: dict) -> str:
     return "\n".join(out)
 
 
+#: Goal ratios Patch / bezier (issue 21).
+GOALS = {3: 0.2, 6: 0.5, 10: 1.0}
+
+
 def main(argv: list[str] | None = None) -> int:
+    import json
+
     ap = argparse.ArgumentParser(prog="python -m paper_repro.app.bench")
     ap.add_argument("--points", type=int, default=1_000_000)
     ap.add_argument("--repeat", type=int, default=3)
     ap.add_argument("--quick", action="store_true", help="small sizes (a smoke run)")
+    ap.add_argument("--patch-only", action="store_true", help="only the patch sections (no exact/rank/recovery)")
+    ap.add_argument("--ns", default=None, help="orders for the patch tables, comma-separated (default 1,3,6,10)")
+    ap.add_argument("--ratios-only", metavar="JSON", help=argparse.SUPPRESS)  # one process of ratio_runs
     args = ap.parse_args(argv)
     points = 20_000 if args.quick else args.points
-    ns = [1, 2, 3] if args.quick else [1, 2, 3, 4, 6]
-    rep = {"machine": machine(), "repeat": args.repeat,
-           "patch": patch_comparison(ns, points, args.repeat, mp_points=20 if args.quick else 200),
-           "exact": exact_comparison([2, 3] if args.quick else [2, 3, 4, 5, 6, 7, 8]),
-           "rank": rank_table([2, 4] if args.quick else [5, 10, 15, 20, 25, 30, 35, 40],
-                              [2] if args.quick else [2, 4, 6, 8]),
-           "recovery": recovery_table([1, 2] if args.quick else [1, 2, 3, 4, 5, 6])}
+    ns = [int(x) for x in args.ns.split(",")] if args.ns else ([1, 3] if args.quick else [1, 3, 6, 10])
+    if args.ratios_only:
+        with open(args.ratios_only, "w") as fh:
+            json.dump(patch_ratios(ns, points, args.repeat), fh)
+        return 0
+    rep = {"machine": machine(), "repeat": args.repeat, "points": points, "goals": GOALS,
+           "load_average_at_start": list(os.getloadavg()),
+           "ratios": ratio_runs(ns, points, args.repeat),
+           "floor": floor_estimate([3, 6] if not args.quick else [3], points, args.repeat),
+           "memory": memory_rows(3, [10**4, 10**5] if args.quick else [10**5, 10**7]),
+           "mp": mp_route(ns, points, mp_points=20 if args.quick else 100)}
+    if not args.patch_only:
+        rep.update(exact=exact_comparison([2, 3] if args.quick else [2, 3, 4, 5, 6, 7, 8]),
+                   rank=rank_table([2, 4] if args.quick else [5, 10, 15, 20, 25, 30, 35, 40],
+                                   [2] if args.quick else [2, 4, 6, 8]),
+                   recovery=recovery_table([1, 2] if args.quick else [1, 2, 3, 4, 5, 6]))
+    rep["load_average_at_end"] = list(os.getloadavg())
     write_json(reports_dir() / "bench.json", rep)
     write_text(reports_dir() / "bench.md", markdown(rep))
     print(f"wrote {reports_dir() / 'bench.json'} and {reports_dir() / 'bench.md'}")

@@ -420,9 +420,12 @@ def gallery_html(manifest: list[dict], view_specs: dict[str, dict] | None = None
     if bench:
         p.append(f"<p>From <code>reports/bench.json</code> (<code>make bench</code>; {bench['machine']['cpus']} "
                  f"CPUs, numpy {bench['machine']['numpy']}, bezier {bench['machine']['bezier']}).</p>")
-        p.append(_table(["n", "δ_n", "Patch (s)", "bezier (s)", "speed-up vs bezier", "speed-up vs mpmath"],
-                        [[str(r["n"]), str(r["delta_n"]), str(r["patch_s"]), str(r["bezier_s"]),
-                          f"{r['speedup_vs_bezier']}×", f"{r['speedup_vs_mp']}×"] for r in bench["patch"]]))
+        runs = bench.get("ratios", [])
+        mp = {r["n"]: r["speedup_vs_mp"] for r in bench.get("mp", [])}
+        head = ["n"] + [f"Patch / bezier, {r['load']}, BLAS {r['blas_threads']}" for r in runs] + ["speed-up vs mpmath"]
+        ns = [r["n"] for r in runs[0]["rows"]] if runs else []
+        p.append(_table(head, [[str(n)] + [str(next(x["ratio_patch_over_bezier"] for x in r["rows"] if x["n"] == n))
+                                           for r in runs] + [f"{mp.get(n, '–')}×"] for n in ns]))
     else:
         p.append("<p>No benchmark report yet (<code>make bench</code>).</p>")
     s = pmap.get("summary", {})

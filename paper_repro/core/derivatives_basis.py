@@ -5,6 +5,12 @@ so the derivative of every monomial of T_{2n} is a combination of monomials with
 one formula, evaluated by :func:`paper_repro.core.basis.monomials` in any context.  A direction
 ``(du, dv, dw)`` tangent to Omega^alpha has ``du + dv + dw = 0``.
 
+The blending functions are evaluated in the scaled form of :func:`paper_repro.core.normalization.evaluate_normalized`
+(sine ratios ``S = sin(x/2)/s``, ``s = sin(alpha/2)``, and scaled coefficients ``s^{2n+j} r``):
+``d/dx (S^a c^b) = (a S^(a-1) c^(b+1) - b s^2 S^(a+1) c^(b-1)) / (2s)``.  Every factor of the bracket is
+bounded; the factor ``1/(2s)`` is applied once, at the end, so the derivatives are finite and accurate for
+every alpha in (0, pi) (down to 1e-300; the values are then of size 1/alpha).
+
 >>> import numpy as np
 >>> pts = np.array([[0.3, 0.3, 0.4]])
 >>> h = 1e-6
@@ -18,10 +24,10 @@ from __future__ import annotations
 import numpy as np
 
 from paper_repro.core.basis import monomials
-from paper_repro.core.context import Context, get_context
-from paper_repro.core.domain import half_angle_values
+from paper_repro.core.context import Context, FloatContext, get_context
+from paper_repro.core.domain import scaled_half_angle_values
 from paper_repro.core.labels import exponent_matrix
-from paper_repro.core.normalization import coefficient_vector, evaluate_normalized  # noqa: F401 (doctest)
+from paper_repro.core.normalization import evaluate_normalized, scaled_coefficient_vector  # noqa: F401 (doctest)
 from paper_repro.util.validation import check_n
 
 #: Named directions: ``'u'`` = d/du with v fixed (w = alpha - u - v), ``'v'`` = d/dv with u fixed,
@@ -50,12 +56,17 @@ def check_direction(direction) -> tuple:
     return d
 
 
-def monomial_derivative(exps: np.ndarray, trig, direction, ctx: Context) -> np.ndarray:
-    """``(P, F)`` directional derivatives of the monomials with exponent rows ``exps``."""
+def monomial_derivative(exps: np.ndarray, trig, direction, ctx: Context, *, s2=None) -> np.ndarray:
+    """``(P, F)`` directional derivatives of the monomials with exponent rows ``exps``.
+
+    With ``s2`` (= sin^2(alpha/2)), ``trig`` holds the sine ratios ``sin(x/2)/sin(alpha/2)`` and the result is
+    ``2 sin(alpha/2)`` times the derivatives of the scaled monomials (the bounded bracket of the module doc).
+    """
     exps = np.asarray(exps, dtype=np.int64)
     npts = len(trig[0])
     total = ctx.zeros((npts, exps.shape[0]))
     half = ctx.div(ctx.convert(1), ctx.convert(2))
+    unit = ctx.convert(1)
     for var, dx in enumerate(direction):
         if dx == 0:
             continue
@@ -68,7 +79,8 @@ def monomial_derivative(exps: np.ndarray, trig, direction, ctx: Context) -> np.n
             shifted[:, slot] = np.maximum(k - 1, 0)
             other = cx if slot == sx else sx
             shifted[:, other] += 1
-            factor = ctx.asarray([ctx.mul(ctx.mul(ctx.convert(int(sign * v)), half), ctx.convert(dx)) for v in k])
+            scale = half if s2 is None else (unit if slot == sx else s2)
+            factor = ctx.asarray([ctx.mul(ctx.mul(ctx.convert(int(sign * v)), scale), ctx.convert(dx)) for v in k])
             total = ctx.add(total, ctx.mul(monomials(shifted, trig, ctx), factor[None, :]))
     return total
 
@@ -79,8 +91,16 @@ def basis_derivative(n: int, alpha, points, direction="u", arith: str | Context 
     n = check_n(n)
     d = check_direction(direction)
     ctx = get_context(arith, dps=dps)
-    trig = half_angle_values(points, alpha, ctx)
-    vec = coefficient_vector(n, alpha, ctx)
+    trig = scaled_half_angle_values(points, alpha, ctx)
+    a = alpha if alpha is not None else points.alpha
+    vec = scaled_coefficient_vector(n, a, ctx)
     with ctx.scope():
-        return ctx.mul(monomial_derivative(exponent_matrix(n), trig, d, ctx), vec[None, :])
+        sa, _ = ctx.alpha_half(a)
+        bracket = monomial_derivative(exponent_matrix(n), trig, d, ctx, s2=ctx.mul(sa, sa))
+        with np.errstate(over="ignore"):
+            out = ctx.div(ctx.mul(bracket, vec[None, :]), ctx.mul(ctx.convert(2), sa))
+    if isinstance(ctx, FloatContext) and not np.all(np.isfinite(out)):
+        raise OverflowError(f"alpha: the derivatives are of size 1/alpha and exceed float64's range at alpha = "
+                            f"{float(a):.3g}; use arith='mp'")
+    return out
 

@@ -1,12 +1,25 @@
-"""The fast float64 path: patch points and blending values in blocks, with per-variable power tables.
+"""The fast float64 path: patch points, derivatives and blending values in blocks, with per-variable
+power tables of *scaled* half-angle sines.
 
-Every function of T_{2n} is ``s_u^a c_u^b s_v^c c_v^d s_w^e c_w^f`` (half-angle sines and cosines,
-:mod:`paper_repro.core.labels`).  Per block of points the kernel computes, for each variable, the
-distinct products ``s^a c^b`` that occur (a few dozen columns), gathers and multiplies them into the
-``(block, delta_n)`` basis matrix and contracts it with the (coefficient-scaled) control net by one BLAS
-product.  Peak memory is ``O(block * delta_n)``, independent of the number of points.  The formulas
-are the same as :func:`paper_repro.core.basis.monomials` (tested against the mp path); this module only
-orders the float work.
+Every function of T_{2n} of level j is ``s_u^a c_u^b s_v^c c_v^d s_w^e c_w^f`` (half-angle sines and
+cosines, :mod:`paper_repro.core.labels`) with exactly ``a + c + e = 2n + j`` sine factors.  The kernel
+works with the ratios ``S = sin(x/2) / sin(alpha/2)`` (in [0, 1] on Omega^alpha;
+:func:`paper_repro.core.domain.scaled_half_angle_values`) and the scaled coefficients ``s^{2n+j} r``
+(:func:`paper_repro.core.normalization.scaled_coefficient_vector`), so every factor is bounded for every
+alpha in (0, pi), down to 1e-300.  Per block of points it computes, for each variable, the distinct products
+``S^a c^b`` that occur (a few dozen columns), gathers and multiplies them into the ``(block, delta_n)``
+basis matrix and contracts it with the (coefficient-scaled) control net by one BLAS product.  Peak memory
+is ``O(block * delta_n)`` per worker, independent of the number of points.
+
+Derivatives: ``d/dx (S^a c^b) = (a S^(a-1) c^(b+1) - b s^2 S^(a+1) c^(b-1)) / (2s)`` (``s = sin(alpha/2)``);
+the kernel returns the bracket (bounded) and the caller applies the factor ``1/(2s)`` once, at the end.
+
+Threads: the blocks are independent, so they run on a pool of threads (numpy releases the GIL), each block
+with a single-threaded BLAS (``threadpoolctl``).  A block is computed by the same operations in the same
+order whichever thread runs it and however many threads there are, so the result is the same to the last
+bit with 1 or k threads (tested).  The thin ``(block, delta_n) x (delta_n, d)`` products are not worth
+splitting: with a multi-threaded BLAS the threads wait on each other as soon as a core is busy (issue 21).
+``PAPER_REPRO_THREADS`` sets the number of threads (default: the CPUs this process may use).
 
 >>> import numpy as np
 >>> k = FloatKernel(np.array([[1, 0, 0, 0, 0, 0], [0, 0, 2, 1, 0, 0]]))
@@ -19,21 +32,164 @@ True
 
 from __future__ import annotations
 
+import itertools
+import math
+import os
+import threading
+from collections.abc import Callable
+from concurrent.futures import ThreadPoolExecutor
+from contextlib import contextmanager
+
 import numpy as np
 
-#: Points per block: the (block, delta_n) work arrays stay in the CPU caches for small n (4096 measured
-#: fastest of 1024..16384 at n = 3 and n = 6 on this project's machine).
-BLOCK = 4096
+from paper_repro.core.domain import SMALL_ALPHA
+
+#: Points per block.  The (delta_n, block) work arrays should stay in the CPU caches: in the functions-x-points
+#: layout 1024 measured fastest of 512..4096 for n = 3, 6, 10, evaluation and derivatives (interleaved runs,
+#: min of 12, on this project's 2-core machine: 2x over 4096 at n = 3 and 10, 3x at n = 6).
+BLOCK = 1024
+
+_POOL: ThreadPoolExecutor | None = None
+_POOL_SIZE = 0
+_POOL_LOCK = threading.Lock()
+_CONTROLLER = None
+
+
+def threads() -> int:
+    """Threads the kernel uses: ``PAPER_REPRO_THREADS`` if set (a positive integer), else the CPUs available."""
+    env = os.environ.get("PAPER_REPRO_THREADS", "").strip()
+    if env:
+        try:
+            k = int(env)
+        except ValueError:
+            raise ValueError(f"PAPER_REPRO_THREADS must be a positive integer, got {env!r}") from None
+        if k < 1:
+            raise ValueError(f"PAPER_REPRO_THREADS must be a positive integer, got {env!r}")
+        return k
+    try:
+        return max(1, len(os.sched_getaffinity(0)))
+    except AttributeError:  # pragma: no cover - not on Linux
+        return max(1, os.cpu_count() or 1)
+
+
+def _pool(size: int) -> ThreadPoolExecutor:
+    global _POOL, _POOL_SIZE
+    with _POOL_LOCK:
+        if _POOL is None or _POOL_SIZE != size:
+            if _POOL is not None:
+                _POOL.shutdown(wait=False)
+            _POOL, _POOL_SIZE = ThreadPoolExecutor(max_workers=size, thread_name_prefix="paper_repro"), size
+        return _POOL
+
+
+@contextmanager
+def single_threaded_blas():
+    """BLAS limited to one thread inside the block (``threadpoolctl``; a no-op when it is not installed)."""
+    global _CONTROLLER
+    if _CONTROLLER is None:
+        try:
+            from threadpoolctl import ThreadpoolController
+        except ImportError:  # pragma: no cover - threadpoolctl is a dependency
+            _CONTROLLER = False
+        else:
+            _CONTROLLER = ThreadpoolController()
+    if _CONTROLLER is False:
+        yield
+        return
+    with _CONTROLLER.limit(limits=1, user_api="blas"):
+        yield
+
+
+class Workspace(dict):
+    """Work arrays of one thread for one call, reused from block to block (by name and shape).
+
+    Allocating the ``(F, P)`` arrays afresh for every block costs a page fault per 4 KB each time (the allocator
+    gives large blocks back to the system on free): measured 10x the arithmetic for the derivatives on a busy
+    machine.  A workspace lives for one call, so memory is bounded by one block per thread and is returned after.
+    """
+
+    def get(self, name: str, shape: tuple[int, ...]) -> np.ndarray:  # type: ignore[override]
+        arr = dict.get(self, name)
+        if arr is None or arr.shape != shape:
+            arr = self[name] = np.empty(shape)
+        return arr
+
+
+def run_blocks(count: int, work: Callable[[int, int, Workspace], None], block: int = BLOCK,
+               workers: int | None = None) -> None:
+    """Call ``work(start, stop, workspace)`` on every block of ``range(count)``, on ``workers`` threads (default
+    :func:`threads`), BLAS single-threaded; each thread has its own :class:`Workspace` for the call.  The first
+    failing block (in order) raises its exception."""
+    starts = list(range(0, count, block))
+    k = min(threads() if workers is None else int(workers), len(starts))
+    with single_threaded_blas():
+        if k <= 1:
+            ws = Workspace()
+            for st in starts:
+                work(st, min(st + block, count), ws)
+            return
+        # k long-lived tasks pull block numbers from a shared counter: k futures, not one per block (a future per
+        # block is ~2 KB: 20 MB at 10^7 points), and the work memory stays one block per thread
+        counter = itertools.count()
+        lock = threading.Lock()
+        errors: dict[int, BaseException] = {}
+
+        def task() -> None:
+            ws = Workspace()
+            while True:
+                with lock:
+                    if errors:
+                        return
+                    i = next(counter)
+                if i >= len(starts):
+                    return
+                st = starts[i]
+                try:
+                    work(st, min(st + block, count), ws)
+                except BaseException as exc:  # noqa: BLE001 - re-raised below, the first block's first
+                    with lock:
+                        errors[i] = exc
+                    return
+
+        for f in [_pool(k).submit(task) for _ in range(k)]:
+            f.result()
+        if errors:
+            # every block before the first failing one was taken (the counter is monotonic) and has finished
+            raise errors[min(errors)]
+
+
+def scaled_trig(uvw: np.ndarray, alpha: float, sin_half_alpha: float) -> tuple[np.ndarray, np.ndarray]:
+    """``(S, C)``: sine ratios ``sin(x/2)/sin(alpha/2)`` (``x/alpha`` below :data:`SMALL_ALPHA`, as
+    :func:`paper_repro.core.domain.scaled_half_angle_values`) and cosines ``cos(x/2)`` of ``(P, 3)`` points."""
+    half = uvw * 0.5
+    if alpha < SMALL_ALPHA:
+        return np.clip(uvw / alpha, 0.0, None), np.cos(half)
+    return np.sin(half) / sin_half_alpha, np.cos(half)
+
+
+def scaled_trig_rows(uvw: np.ndarray, alpha: float, sin_half_alpha: float) -> tuple[np.ndarray, np.ndarray]:
+    """:func:`scaled_trig` transposed: ``(3, P)`` rows (contiguous per variable), the kernel's layout."""
+    rows = np.ascontiguousarray(uvw.T)
+    half = rows * 0.5
+    if alpha < SMALL_ALPHA:
+        return np.clip(rows / alpha, 0.0, None), np.cos(half)
+    return np.sin(half) / sin_half_alpha, np.cos(half)
 
 
 class FloatKernel:
-    """Evaluator of the monomials with exponent rows ``exps`` (``(F, 6)``) in float64."""
+    """Evaluator of the monomials with exponent rows ``exps`` (``(F, 6)``) in float64.
+
+    The work layout is "functions x points": per variable a ``(pairs, P)`` table of the distinct products
+    ``S^a c^b`` (rows built from the power rows by two row gathers and one product), then the ``(F, P)``
+    basis by three row gathers and two products, contracted with the net by one ``(d, F) x (F, P)`` product.
+    Every array operation runs on contiguous rows of one block.
+    """
 
     def __init__(self, exps: np.ndarray):
         exps = np.asarray(exps, dtype=np.int64)
         self.F = exps.shape[0]
         self.pairs: list[np.ndarray] = []  # per variable: distinct (s-power, c-power) rows
-        self.index: list[np.ndarray] = []  # per variable: column of each function in the pair table
+        self.index: list[np.ndarray] = []  # per variable: row of each function in the pair table
         self.smax: list[int] = []
         self.cmax: list[int] = []
         for var in range(3):
@@ -44,49 +200,164 @@ class FloatKernel:
             self.smax.append(int(pairs[:, 0].max()))
             self.cmax.append(int(pairs[:, 1].max()))
 
-    def _table(self, var: int, s: np.ndarray, c: np.ndarray) -> np.ndarray:
-        """``(P, npairs)`` values ``s^a c^b`` of the distinct pairs of variable ``var``."""
-        sp = [np.ones_like(s)]
-        for _ in range(self.smax[var]):
-            sp.append(sp[-1] * s)
-        cp = [np.ones_like(c)]
-        for _ in range(self.cmax[var]):
-            cp.append(cp[-1] * c)
+    @staticmethod
+    def _powers(x: np.ndarray, top: int, out: np.ndarray | None = None) -> np.ndarray:
+        """``(top + 1, P)`` rows ``x^0 .. x^top`` (successive products, as a loop would compute them)."""
+        if out is None:
+            out = np.empty((top + 1, x.shape[0]))
+        out[0] = 1.0
+        for k in range(1, top + 1):
+            np.multiply(out[k - 1], x, out=out[k])
+        return out
+
+    def _table(self, var: int, sp: np.ndarray, cp: np.ndarray, ws: Workspace) -> np.ndarray:
+        """``(npairs, P)`` values ``S^a c^b`` of the distinct pairs of variable ``var``."""
         pairs = self.pairs[var]
-        out = np.empty((s.shape[0], len(pairs)))
-        for k, (a, b) in enumerate(pairs):
-            if b == 0:
-                out[:, k] = sp[a]
-            elif a == 0:
-                out[:, k] = cp[b]
-            else:
-                np.multiply(sp[a], cp[b], out=out[:, k])
+        shape = (len(pairs), sp.shape[1])
+        out = np.take(sp, pairs[:, 0], axis=0, out=ws.get(f"t{var}", shape), mode="clip")
+        out *= np.take(cp, pairs[:, 1], axis=0, out=ws.get("tt", shape), mode="clip")
+        return out
+
+    def _dtable(self, var: int, sp: np.ndarray, cp: np.ndarray, s2: float, ws: Workspace) -> np.ndarray:
+        """``(npairs, P)`` bracket ``a S^(a-1) c^(b+1) - b s^2 S^(a+1) c^(b-1)`` (= 2s d/dx S^a c^b); the power rows
+        go one further than for the values."""
+        a, b = self.pairs[var][:, 0], self.pairs[var][:, 1]
+        shape = (len(a), sp.shape[1])
+        out = np.take(sp, np.maximum(a - 1, 0), axis=0, out=ws.get(f"d{var}", shape), mode="clip")
+        out *= np.take(cp, b + 1, axis=0, out=ws.get("tt", shape), mode="clip")
+        out *= a[:, None].astype(np.float64)
+        if s2:
+            second = np.take(sp, a + 1, axis=0, out=ws.get("tt", shape), mode="clip")
+            second *= np.take(cp, np.maximum(b - 1, 0), axis=0, out=ws.get("tt2", shape), mode="clip")
+            second *= (b * s2)[:, None]
+            out -= second
+        return out
+
+    def _rows(self, s: np.ndarray, c: np.ndarray, extra: int, ws: Workspace) -> tuple[list, list]:
+        """Per variable the power rows of the sines and of the cosines (one further when ``extra``)."""
+        p = s.shape[1]
+        sp = [self._powers(s[v], self.smax[v] + extra, ws.get(f"s{v}", (self.smax[v] + extra + 1, p)))
+              for v in range(3)]
+        cp = [self._powers(c[v], self.cmax[v] + extra, ws.get(f"c{v}", (self.cmax[v] + extra + 1, p)))
+              for v in range(3)]
+        return sp, cp
+
+    def _gather(self, table: np.ndarray, var: int, out: np.ndarray) -> np.ndarray:
+        # np.take with mode="clip" writes straight into ``out`` (mode="raise" buffers: 3x slower; indices are valid)
+        return np.take(table, self.index[var], axis=0, out=out, mode="clip")
+
+    def basis_rows(self, s: np.ndarray, c: np.ndarray, ws: Workspace | None = None) -> np.ndarray:
+        """``(F, P)`` monomial values from ``(3, P)`` rows of (scaled) half-angle sines ``s`` and cosines ``c``.
+
+        With a :class:`Workspace` the result lives in it (overwritten by the next block of the same thread).
+        """
+        ws = Workspace() if ws is None else ws
+        shape = (self.F, s.shape[1])
+        sp, cp = self._rows(s, c, 0, ws)
+        out = self._gather(self._table(0, sp[0], cp[0], ws), 0, ws.get("basis", shape))
+        tmp = ws.get("tmp", shape)
+        out *= self._gather(self._table(1, sp[1], cp[1], ws), 1, tmp)
+        out *= self._gather(self._table(2, sp[2], cp[2], ws), 2, tmp)
         return out
 
     def basis(self, s: np.ndarray, c: np.ndarray) -> np.ndarray:
-        """``(P, F)`` monomial values from ``(P, 3)`` half-angle sines ``s`` and cosines ``c``."""
-        out = self._table(0, s[:, 0], c[:, 0])[:, self.index[0]]
-        out *= self._table(1, s[:, 1], c[:, 1])[:, self.index[1]]
-        out *= self._table(2, s[:, 2], c[:, 2])[:, self.index[2]]
-        return out
+        """``(P, F)`` monomial values from ``(P, 3)`` (scaled) half-angle sines ``s`` and cosines ``c`` (a copy)."""
+        return self.basis_rows(np.ascontiguousarray(s.T), np.ascontiguousarray(c.T)).T.copy()
 
-    def blocks(self, uvw: np.ndarray, block: int = BLOCK):
-        """Yield ``(slice, basis values)`` per block of the ``(P, 3)`` points."""
+    def derivatives_rows(self, s: np.ndarray, c: np.ndarray, s2: float, directions, values: bool = False,
+                         ws: Workspace | None = None) -> tuple[np.ndarray | None, list[np.ndarray]]:
+        """From ``(3, P)`` rows: the monomial values ``(F, P)`` (if ``values``) and, per direction ``(du, dv, dw)``,
+        ``2s`` times their directional derivatives ``(F, P)`` (bounded; divide by ``2s`` at the end).
+
+        A direction with a zero component (all named ones) costs four products: for ``(x, 0, z)``,
+        ``g_v (x g'_u g_w + z g_u g'_w)``; otherwise the three terms are summed.
+        """
+        ws = Workspace() if ws is None else ws
+        shape = (self.F, s.shape[1])
+        sp, cp = self._rows(s, c, 1, ws)
+        g = [self._gather(self._table(v, sp[v], cp[v], ws), v, ws.get(f"g{v}", shape)) for v in range(3)]
+        used = [v for v in range(3) if any(d[v] for d in directions)]
+        dg = {v: self._gather(self._dtable(v, sp[v], cp[v], s2, ws), v, ws.get(f"dg{v}", shape)) for v in used}
+        tmp = ws.get("tmp", shape)
+        outs = []
+        for k, d in enumerate(directions):
+            o = ws.get(f"o{k}", shape)
+            nz = [v for v in range(3) if d[v]]
+            if not nz:
+                o[...] = 0.0
+            elif len(nz) == 1:
+                v = nz[0]
+                w1, w2 = (w for w in range(3) if w != v)
+                np.multiply(dg[v], g[w1], out=o)
+                o *= g[w2]
+                if d[v] != 1:
+                    o *= d[v]
+            elif len(nz) == 2:
+                x, z = nz
+                y = 3 - x - z
+                np.multiply(dg[x], g[z], out=o)
+                if d[x] != 1:
+                    o *= d[x]
+                np.multiply(dg[z], g[x], out=tmp)
+                if d[z] == -1:
+                    o -= tmp
+                else:
+                    if d[z] != 1:
+                        tmp *= d[z]
+                    o += tmp
+                o *= g[y]
+            else:
+                o[...] = 0.0
+                for v in range(3):
+                    w1, w2 = (w for w in range(3) if w != v)
+                    np.multiply(dg[v], g[w1], out=tmp)
+                    tmp *= g[w2]
+                    if d[v] != 1:
+                        tmp *= d[v]
+                    o += tmp
+            outs.append(o)
+        vals = None
+        if values:
+            vals = np.multiply(g[0], g[1], out=tmp)
+            vals *= g[2]
+        return vals, outs
+
+    def blocks(self, uvw: np.ndarray, block: int = BLOCK, alpha: float | None = None):
+        """Yield ``(slice, basis values (P, F))`` per block of the ``(P, 3)`` points (scaled sines when ``alpha``)."""
+        sa = math.sin(alpha / 2) if alpha is not None else None
         for start in range(0, uvw.shape[0], block):
-            half = uvw[start:start + block] * 0.5
-            yield slice(start, start + half.shape[0]), self.basis(np.sin(half), np.cos(half))
+            blk = uvw[start:start + block]
+            if alpha is None:
+                half = np.ascontiguousarray(blk.T) * 0.5
+                s, c = np.sin(half), np.cos(half)
+            else:
+                s, c = scaled_trig_rows(blk, alpha, sa)
+            yield slice(start, start + blk.shape[0]), self.basis_rows(s, c).T.copy()
 
     def contract(self, uvw: np.ndarray, net: np.ndarray, weights: np.ndarray | None = None,
-                 block: int = BLOCK) -> np.ndarray:
+                 block: int = BLOCK, alpha: float | None = None, workers: int | None = None) -> np.ndarray:
         """``sum_f B_f(p) net_f`` (or the rational form with ``weights``) at every point: ``(P, d)``.
 
-        ``net`` must already carry the normalizing coefficients (rows ``coef_f * point_f``); for a
-        rational patch ``weights`` are ``coef_f * w_f`` and ``net`` rows ``coef_f * w_f * point_f``.
+        ``net`` must already carry the normalizing coefficients (rows ``coef_f * point_f``; the scaled
+        coefficients ``s^{2n+j} r`` when ``alpha`` is given, then the sines are scaled too); for a rational
+        patch ``weights`` are ``coef_f * w_f`` and ``net`` rows ``coef_f * w_f * point_f``.
         """
         out = np.empty((uvw.shape[0], net.shape[1]))
-        for sl, b in self.blocks(uvw, block):
-            if weights is None:
-                np.dot(b, net, out=out[sl])
+        sa = math.sin(alpha / 2) if alpha is not None else None
+        aug_t = np.ascontiguousarray((net if weights is None else np.column_stack([net, weights])).T)
+
+        def work(lo: int, hi: int, ws: Workspace) -> None:
+            blk = uvw[lo:hi]
+            if alpha is None:
+                half = np.ascontiguousarray(blk.T) * 0.5
+                s, c = np.sin(half), np.cos(half)
             else:
-                out[sl] = b.dot(net) / b.dot(weights)[:, None]
+                s, c = scaled_trig_rows(blk, alpha, sa)
+            y = aug_t @ self.basis_rows(s, c, ws)
+            if weights is None:
+                out[lo:hi] = y.T
+            else:
+                out[lo:hi] = (y[:-1] / y[-1]).T
+
+        run_blocks(uvw.shape[0], work, block, workers)
         return out

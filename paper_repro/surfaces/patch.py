@@ -7,17 +7,18 @@ context; the float path is the blocked kernel of :mod:`paper_repro.core.fast`, t
 
 from __future__ import annotations
 
+import math
 from functools import cached_property
 
 import numpy as np
 
 from paper_repro.core.context import Context, FloatContext, get_context
-from paper_repro.core.derivatives_basis import basis_derivative
+from paper_repro.core.derivatives_basis import DIRECTIONS, basis_derivative, check_direction
 from paper_repro.core.domain import RationalAngle, RationalPoints, barycentric_to_uvw, check_points
-from paper_repro.core.fast import BLOCK, FloatKernel
+from paper_repro.core.fast import FloatKernel, run_blocks, scaled_trig_rows
 from paper_repro.core.labels import delta, exponent_matrix, index_of
 from paper_repro.core.nets import LabelledNet, check_net, check_net_exact, net_from_labels  # noqa: F401 (re-exported)
-from paper_repro.core.normalization import coefficient_vector, evaluate_normalized
+from paper_repro.core.normalization import evaluate_normalized, scaled_coefficient_vector
 from paper_repro.util.limits import MAX_MESH_RESOLUTION, check_int, check_real_array, real_scalar
 from paper_repro.util.validation import DOMAIN_TOL, check_alpha, check_n, parse_alpha
 
@@ -65,6 +66,26 @@ def check_weights(weights, n: int) -> tuple[np.ndarray, np.ndarray]:
         wf = np.ldexp(wf, -int(e))  # exact division by a power of two
         w = wf.astype(object)
     return w, np.asarray(w.astype(np.float64), dtype=np.float64)
+
+#: Relative size (per control point, unit-scale net) below which a cross product of tangents is rounding noise.
+NORMAL_TOL = 2.0 ** -40
+
+
+def unit_normals(du: np.ndarray, dv: np.ndarray, tol: float) -> np.ndarray:
+    """``du x dv`` normalized; NaN where ``|du x dv| <= tol (|du| + |dv|)`` (rounding noise, :meth:`Patch.normals`)."""
+    nrm = np.cross(du, dv)
+    length = np.linalg.norm(nrm, axis=1, keepdims=True)
+    small = length <= tol * (np.linalg.norm(du, axis=1, keepdims=True) + np.linalg.norm(dv, axis=1, keepdims=True))
+    with np.errstate(invalid="ignore", divide="ignore"):
+        nrm /= length
+    nrm[small[:, 0]] = np.nan
+    return nrm
+
+
+def _pow2_exponent(a: np.ndarray) -> int:
+    """``e`` with ``max |a| < 2^e`` (0 for a zero or empty array): dividing by ``2^e`` is exact."""
+    m = float(np.max(np.abs(a))) if a.size else 0.0
+    return math.frexp(m)[1] if m > 0 and math.isfinite(m) else 0
 
 
 class Patch:
@@ -134,34 +155,105 @@ class Patch:
 
     # --- the float fast path ----------------------------------------------------------------------
     @cached_property
-    def _kernel(self) -> tuple[FloatKernel, np.ndarray, np.ndarray | None]:
-        coef = coefficient_vector(self.n, self.alpha, "float")
-        if self.weights is None:
-            return FloatKernel(exponent_matrix(self.n)), coef[:, None] * self.net, None
-        cw = coef * self.weights
-        return FloatKernel(exponent_matrix(self.n)), cw[:, None] * self.net, cw
+    def _setup(self) -> dict:
+        """Kernel, scaled coefficients and the net brought to unit scale (powers of two, so exact).
 
-    def _float_call(self, points) -> np.ndarray:
-        """The fast path: points validated and evaluated block by block (work memory independent of P)."""
-        kernel, cnet, cw = self._kernel
-        if isinstance(points, RationalPoints):
-            arr = points.uvw_float()
+        A patch point is a convex combination of the control points, so the net is divided by a power of two
+        ``2^e >= max |p_f|`` before the contraction and the result multiplied back: nets up to 1e308 give no
+        overflow, and the bits are those of the unscaled product (multiplying by a power of two is exact).
+        """
+        a = float(self.alpha)
+        coef = scaled_coefficient_vector(self.n, self.alpha, "float")  # s^{2n+j} r, finite for every alpha
+        e = _pow2_exponent(self.net)
+        unit = np.ldexp(self.net, -e)
+        # derivatives: translation invariant (sum of the derivatives of a partition of unity is 0), so the net
+        # is centred, then scaled again to unit size: the contraction error is relative to the net's extent
+        mid = 0.5 * (unit.max(axis=0) + unit.min(axis=0))
+        centred = unit - mid
+        e2 = _pow2_exponent(centred)
+        centred = np.ldexp(centred, -e2)
+        if self.weights is None:
+            cw = None
+            cnet, dnet = coef[:, None] * unit, coef[:, None] * centred
         else:
-            arr = np.asarray(points) if isinstance(points, np.ndarray) else check_points(points, self.alpha)
-            if arr.ndim != 2 or arr.shape[1:] != (3,) or arr.shape[0] == 0 or arr.dtype.kind not in "fiu":
-                arr = check_points(points, self.alpha)  # raises the documented error
-        out = np.empty((arr.shape[0], self.dimension))
+            ew = _pow2_exponent(self.weights)
+            cw = coef * np.ldexp(self.weights, -ew)
+            cnet, dnet = cw[:, None] * unit, cw[:, None] * centred
+        return {"kernel": FloatKernel(exponent_matrix(self.n)), "alpha": a, "sa": math.sin(a / 2),
+                "cnet": cnet, "cw": cw, "exp": e, "dnet": dnet, "dexp": e + e2,
+                "aug_t": np.ascontiguousarray((cnet if cw is None else np.column_stack([cnet, cw])).T),
+                "daug_t": np.ascontiguousarray((dnet if cw is None else np.column_stack([dnet, cw])).T)}
+
+    def _float_points(self, points) -> np.ndarray:
+        """Points as a float ``(P, 3)`` array (validated block by block in :meth:`_checked_block`)."""
+        if isinstance(points, RationalPoints):
+            return points.uvw_float()
+        arr = np.asarray(points) if isinstance(points, np.ndarray) else check_points(points, self.alpha)
+        if arr.ndim != 2 or arr.shape[1:] != (3,) or arr.shape[0] == 0 or arr.dtype.kind not in "fiu":
+            arr = check_points(points, self.alpha)  # raises the documented error
+        return arr
+
+    def _checked_block(self, arr: np.ndarray, lo: int, hi: int) -> np.ndarray:
+        blk = np.asarray(arr[lo:hi], dtype=np.float64)
         a = float(self.alpha)
         slack = DOMAIN_TOL * a
-        for start in range(0, arr.shape[0], BLOCK):
-            blk = np.asarray(arr[start:start + BLOCK], dtype=np.float64)
-            # two reductions decide; a NaN or inf makes the sum non-finite.  Anything off goes to the full check,
-            # which raises the documented error naming the point.
-            sums, mins = blk.sum(axis=1), blk.min(axis=1)
-            if not (np.all(np.abs(sums - a) <= slack) and np.all(mins >= -slack)):
-                check_points(blk, self.alpha, offset=start)
-            out[start:start + blk.shape[0]] = kernel.contract(blk, cnet, cw)
-        return out
+        # two reductions decide; a NaN or inf makes the sum non-finite.  Anything off goes to the full check,
+        # which raises the documented error naming the point.
+        sums, mins = blk.sum(axis=1), blk.min(axis=1)
+        if not (np.all(np.abs(sums - a) <= slack) and np.all(mins >= -slack)):
+            check_points(blk, self.alpha, offset=lo)
+        return blk
+
+    def _float_call(self, points) -> np.ndarray:
+        """The fast path: points validated and evaluated block by block (work memory independent of P),
+        blocks spread over threads (:func:`paper_repro.core.fast.run_blocks`)."""
+        st = self._setup
+        kernel, aug_t, rational = st["kernel"], st["aug_t"], st["cw"] is not None
+        arr = self._float_points(points)
+        out = np.empty((arr.shape[0], self.dimension))
+
+        def work(lo: int, hi: int, ws) -> None:
+            s, c = scaled_trig_rows(self._checked_block(arr, lo, hi), st["alpha"], st["sa"])
+            y = aug_t @ kernel.basis_rows(s, c, ws)  # (d, P), or (d + 1, P) with the weights' row last
+            out[lo:hi] = (y[:-1] / y[-1]).T if rational else y.T
+
+        run_blocks(arr.shape[0], work)
+        return np.ldexp(out, st["exp"], out=out) if st["exp"] else out
+
+    def _float_derivatives(self, points, directions, normals: bool = False) -> tuple[list[np.ndarray], int]:
+        """``2 sin(alpha/2) 2^-E`` times the derivatives along ``directions`` (bounded), and E; with ``normals``
+        (two directions) the unit normals instead, computed block by block (no full-size intermediate).
+
+        Per block: the monomials and the brackets of :meth:`FloatKernel.derivatives_rows`, contracted with the
+        centred unit-scale net; rational patches by the quotient rule ``(N' - P D') / D``.
+        """
+        st = self._setup
+        kernel, aug_t, rational, s2 = st["kernel"], st["daug_t"], st["cw"] is not None, st["sa"] ** 2
+        arr = self._float_points(points)
+        outs = [np.empty((arr.shape[0], self.dimension)) for _ in range(1 if normals else len(directions))]
+        tol = NORMAL_TOL * delta(self.n)
+
+        def work(lo: int, hi: int, ws) -> None:
+            s, c = scaled_trig_rows(self._checked_block(arr, lo, hi), st["alpha"], st["sa"])
+            vals, ders = kernel.derivatives_rows(s, c, s2, directions, values=rational, ws=ws)
+            if rational:
+                y = aug_t @ vals
+                den = y[-1]
+                pt = y[:-1] / den
+                res = []
+                for db in ders:
+                    dy = aug_t @ db
+                    res.append(((dy[:-1] - pt * dy[-1]) / den).T)
+            else:
+                res = [(aug_t @ db).T for db in ders]
+            if normals:
+                outs[0][lo:hi] = unit_normals(res[0], res[1], tol)
+            else:
+                for o, r in zip(outs, res):
+                    o[lo:hi] = r
+
+        run_blocks(arr.shape[0], work)
+        return outs, st["dexp"]
 
     # --- evaluation -------------------------------------------------------------------------------
     def basis(self, points, arith: str | Context | None = None, dps: int = 50) -> np.ndarray:
@@ -199,8 +291,25 @@ class Patch:
         ``direction`` is ``'u'`` (d/du with v fixed, w = alpha - u - v), ``'v'`` (d/dv with u fixed),
         ``'w'`` (d/dw with u fixed) or a triple ``(du, dv, dw)`` with ``du + dv + dw = 0``
         (:data:`~paper_repro.core.derivatives_basis.DIRECTIONS`).  Rational patches use the quotient rule.
+
+        The float path is blocked like point evaluation (memory independent of the number of points): the
+        bounded bracket of :meth:`~paper_repro.core.fast.FloatKernel.derivatives_rows` contracted with the centred
+        net at unit scale, then multiplied by ``2^E / (2 sin(alpha/2))`` once (one power-of-two step), so it is
+        finite for every alpha in (0, pi) unless the derivative itself (of size extent / alpha) exceeds float64:
+        then ``OverflowError`` says so.
         """
         ctx = self._ctx(arith, dps)
+        if isinstance(ctx, FloatContext):
+            d = check_direction(direction)
+            (y,), e = self._float_derivatives(points, [d])
+            m, k = math.frexp(2 * self._setup["sa"])  # 2 sin(alpha/2) = m 2^k, m in [0.5, 1)
+            with np.errstate(over="ignore"):
+                out = np.ldexp(np.divide(y, m, out=y), e - k, out=y)
+            if out.size and not (math.isfinite(np.max(out)) and math.isfinite(np.min(out))):  # no (P, d) mask
+                raise OverflowError(f"the derivative exceeds float64's range (alpha = {float(self.alpha):.3g}, net "
+                                    f"extent 2^{e}): its size is about extent / sin(alpha/2); evaluate it with "
+                                    "arith='mp', or scale the net down")
+            return out
         b = evaluate_normalized(self.n, self.alpha, points, ctx)
         db = basis_derivative(self.n, self.alpha, points, direction, ctx)
         with ctx.scope():
@@ -215,15 +324,18 @@ class Patch:
 
     def normals(self, points) -> np.ndarray:
         """Unit normals (float, 3-D nets): the normalized cross product of the derivatives along
-        ``'u'`` and ``'v'`` (:data:`~paper_repro.core.derivatives_basis.DIRECTIONS`); NaN where it vanishes."""
+        ``'u'`` and ``'v'`` (:data:`~paper_repro.core.derivatives_basis.DIRECTIONS`); NaN where it vanishes.
+
+        Computed blocked (memory independent of the number of points) from the derivatives of the net
+        centred and scaled to unit size (so nets of any scale, 1e-300..1e300, give the same normals), without
+        the positive factor 1/(2 sin(alpha/2)).  "Vanishes" means: the cross product is below what rounding
+        can produce, ``|d_u x d_v| <= NORMAL_TOL * delta_n * (|d_u| + |d_v|)`` (unit-scale net), as at a
+        degenerate corner where a tangent is 0 or the two are parallel.
+        """
         if self.dimension != 3:
             raise ValueError(f"normals need a 3-D control net, this one is {self.dimension}-D")
-        du = self.derivative(points, "u", "float")
-        dv = self.derivative(points, "v", "float")
-        nrm = np.cross(du, dv)
-        length = np.linalg.norm(nrm, axis=1, keepdims=True)
-        with np.errstate(invalid="ignore", divide="ignore"):
-            return np.where(length > 0, nrm / length, np.nan)
+        (nrm,), _ = self._float_derivatives(points, [DIRECTIONS["u"], DIRECTIONS["v"]], normals=True)
+        return nrm
 
     def at_barycentric(self, bary) -> np.ndarray:
         """Patch points at barycentric ``(x, y, z)`` rows (x + y + z = 1, the point alpha (x, y, z))."""
@@ -257,19 +369,24 @@ def triangle_grid(resolution: int) -> tuple[np.ndarray, np.ndarray]:
     """Barycentric grid points ``(V, 3)`` and faces ``(F, 3)`` of a triangle with ``resolution`` steps a side."""
     r = check_int(resolution, "resolution", 1, MAX_MESH_RESOLUTION,
                   why="(r+1)(r+2)/2 vertices and 2 r^2 faces; the budget is about 0.5 M vertices")
-    ids: dict[tuple[int, int], int] = {}
-    bary: list[tuple[float, float, float]] = []
-    for i in range(r + 1):
-        for j in range(r + 1 - i):
-            ids[(i, j)] = len(bary)
-            bary.append((i / r, j / r, 1 - (i + j) / r))
-    faces = []
-    for i in range(r):
-        for j in range(r - i):
-            faces.append((ids[(i, j)], ids[(i + 1, j)], ids[(i, j + 1)]))
-            if i + j + 1 < r:
-                faces.append((ids[(i + 1, j)], ids[(i + 1, j + 1)], ids[(i, j + 1)]))
-    return np.array(bary), np.array(faces, dtype=np.int64)
+    rows = np.arange(r + 1)
+    length = r + 1 - rows                                   # points on row i: j = 0..r-i
+    offset = np.concatenate([[0], np.cumsum(length)[:-1]])  # id(i, j) = offset[i] + j
+    i = np.repeat(rows, length)
+    j = np.arange(i.size) - offset[i]
+    bary = np.column_stack([i / r, j / r, 1 - (i + j) / r])
+    # faces in the order (i, j) = (0, 0), (0, 1), ...: the "up" triangle, then the "down" one where it exists
+    cells = i + j < r
+    ci, cj = i[cells], j[cells]
+    up = np.column_stack([offset[ci] + cj, offset[np.minimum(ci + 1, r)] + cj, offset[ci] + cj + 1])
+    has_down = ci + cj + 1 < r
+    down = np.column_stack([offset[np.minimum(ci + 1, r)] + cj, offset[np.minimum(ci + 1, r)] + cj + 1,
+                            offset[ci] + cj + 1])[has_down]
+    start = np.arange(ci.size) + np.concatenate([[0], np.cumsum(has_down)[:-1]])
+    faces = np.empty((ci.size + int(has_down.sum()), 3), dtype=np.int64)
+    faces[start] = up
+    faces[start[has_down] + 1] = down
+    return bary, faces
 
 
 def mesh_of(patch: Patch, resolution: int = 16, normals: bool = False):
