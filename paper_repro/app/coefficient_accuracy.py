@@ -23,8 +23,14 @@ from paper_repro.core.normalization import (
 from paper_repro.util.io import ROOT, write_json, write_text
 
 REPORTS = ROOT / "reports"
-NS = (1, 2, 3, 5, 10, 20, 50, 100, 150, 200)
+NS = (1, 2, 3, 5, 10, 20, 50, 100, 200)
 ALPHAS = (1e-6, 1e-3, 0.1, 1.0, math.pi / 2, 2.5, 3.0, math.pi - 1e-3, math.pi - 1e-6)
+#: The 40-digit reference costs n^3 mp operations (minutes at n = 200): the largest n at three alphas only.
+ALPHAS_LARGE_N = (1e-6, 1.0, math.pi - 1e-6)
+
+
+def alphas_for(n: int) -> tuple[float, ...]:
+    return ALPHAS if n <= 50 else ALPHAS_LARGE_N
 
 
 def rel_error(n: int, alpha: float) -> dict:
@@ -47,11 +53,11 @@ def rel_error(n: int, alpha: float) -> dict:
 def timings() -> list[dict]:
     out = []
     a = rational_alpha(fmpq(1, 3))
-    for n in (10, 45, 100, 200):
+    for n in (10, 45, 100):
         row = {"n": n}
         for name, call in (("exact", lambda: scaled_orbit_coefficients(n, a, "exact")),
                            ("mp30", lambda: scaled_orbit_coefficients(n, 1.0, "mp", dps=30)),
-                           ("float", lambda: scaled_orbit_coefficients(n, 1.0) if n <= 150 else None),
+                           ("float", lambda: scaled_orbit_coefficients(n, 1.0)),
                            ("log", lambda: log_scaled_orbit_coefficients(n, 1.0 + n * 1e-9))):
             t0 = time.perf_counter()
             call()
@@ -75,8 +81,8 @@ def markdown(rows: list[dict], times: list[dict]) -> str:
     for n in NS:
         cells = []
         for a in ALPHAS:
-            r = next(x for x in rows if x["n"] == n and x["alpha"] == a)
-            cells.append(f"{r['max_rel_error']:.1e}" + (" (log)" if r["form"] == "log" else ""))
+            r = next((x for x in rows if x["n"] == n and x["alpha"] == a), None)
+            cells.append("–" if r is None else f"{r['max_rel_error']:.1e}" + (" (log)" if r["form"] == "log" else ""))
         lines.append(f"| {n} | " + " | ".join(cells) + " |")
     lines += ["", "## Time per call (s)", "", "| n | exact | mp 30 digits | float64 | log |", "|---|---|---|---|---|"]
     for t in times:
@@ -86,7 +92,7 @@ def markdown(rows: list[dict], times: list[dict]) -> str:
 
 
 def main() -> None:
-    rows = [rel_error(n, a) for n in NS for a in ALPHAS]
+    rows = [rel_error(n, a) for n in NS for a in alphas_for(n)]
     times = timings()
     worst = max(r["max_rel_error"] for r in rows)
     write_json(REPORTS / "coefficient_accuracy.json", {"rows": rows, "timings": times, "worst": worst})
