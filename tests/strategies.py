@@ -70,7 +70,8 @@ def real_types(x: float):
 
 
 #: Values every real parameter refuses with TypeError (booleans, strings, complex, containers, None).
-non_reals = st.sampled_from([True, _np.bool_(True), "1.0", b"1", None, 1j, _np.complex128(1), _mpmath.mpc(1, 0),
+#: (Strings are not here: "1.0" and "pi/2" are valid alphas, read by parse_alpha; tests/test_api_extras.py.)
+non_reals = st.sampled_from([True, _np.bool_(True), b"1", None, 1j, _np.complex128(1), _mpmath.mpc(1, 0),
                              [1.0], _np.array([1.0]), {1.0}, object()])
 
 

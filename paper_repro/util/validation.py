@@ -85,14 +85,16 @@ def parse_alpha(alpha: object, name: str = "alpha") -> Any:
     """
     if isinstance(alpha, str):
         m = _ALPHA_TEXT.match(alpha)
-        if m:
-            value = float(m.group("num") or 1) * math.pi / float(m.group("den") or 1)
-        else:
+        if not m:
             m = _NUMBER_TEXT.match(alpha)
             if not m:
                 raise ValueError(f"{name} must be a number in (0, pi) or a multiple of pi such as 'pi/2' or "
                                  f"'2pi/3', got {alpha!r}")
-            value = float(m.group("num")) / float(m.group("den") or 1)
+        den = float(m.group("den") or 1)
+        if den == 0:
+            raise ValueError(f"{name}: division by zero in {alpha!r}; give a number in (0, pi) such as 'pi/2'")
+        num = float(m.group("num") or 1)
+        value = num * math.pi / den if "pi" in alpha or "π" in alpha else num / den
         if not 0.0 < value < math.pi:
             raise ValueError(f"{name} must lie in the open interval (0, pi), got {alpha!r} (= {value!r})")
         return value
