@@ -45,13 +45,8 @@ SMALL = [1e-3, 1e-8, 1e-17, 1e-300]
 
 
 def mp_patch(n, alpha, net, pts, weights=None):
-    """50-digit reference: the patch in mp at the points, w recomputed as alpha - u - v in mp."""
-    p = Patch(n, alpha, net, weights=weights)
-    with mpmath.workdps(50):
-        a = mpmath.mpf(alpha)
-        q = np.array([[mpmath.mpf(x) for x in row] for row in pts], dtype=object)
-        q[:, 2] = a - q[:, 0] - q[:, 1]
-        return np.array(p(q, arith="mp", dps=50), dtype=float)
+    """50-digit reference (Patch.reference: w recomputed as alpha - u - v in mp)."""
+    return Patch(n, alpha, net, weights=weights).reference(pts, dps=50)
 
 
 # --- elevation: affine invariance (rows sum to 1) and the same patch --------------------------------------------

@@ -35,12 +35,7 @@ import paper_repro as P
 from paper_repro import *
 from paper_repro.core.labels import delta, united_system
 def mp_patch(n, alpha, net, pts, weights=None):
-    p = Patch(n, alpha, net, weights=weights)
-    with mpmath.workdps(50):
-        a = mpmath.mpf(alpha)
-        q = np.array([[mpmath.mpf(x) for x in row] for row in pts], dtype=object)
-        q[:, 2] = a - q[:, 0] - q[:, 1]
-        return np.array(p(q, arith='mp', dps=50), dtype=float)
+    return Patch(n, alpha, net, weights=weights).reference(pts, dps=50)
 def rel(a, b, scale):
     a, b = np.asarray(a, dtype=float), np.asarray(b, dtype=float)
     return float(np.max(np.abs(a - b))) / scale

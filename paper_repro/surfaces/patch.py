@@ -276,6 +276,29 @@ class Patch:
         b = evaluate_normalized(self.n, self.alpha, points, ctx)
         return self._combine(b, ctx)
 
+    def reference(self, points, dps: int = 50) -> np.ndarray:
+        """A high-precision reference for the float path: ``(P, d)`` floats.
+
+        The points' ``u`` and ``v`` are taken as their exact binary values, ``w`` is recomputed as
+        ``alpha - u - v`` at ``dps`` digits (so points that are on Omega^alpha only up to rounding are
+        moved onto it), the patch is evaluated with mpmath and rounded to float64 at the end.  This is
+        what the accuracy tests and ``tools/fuzz_api.py`` compare the float path with.
+
+        >>> p = Patch(1, 1.0, np.arange(21.0).reshape(7, 3))
+        >>> pts = [[0.2, 0.3, 0.5]]
+        >>> bool(abs(p.reference(pts) - p(pts)).max() < 1e-14)
+        True
+        """
+        import mpmath
+
+        dps = check_int(dps, "dps", 15, 1000)
+        pts = self._float_points(points)
+        with mpmath.workdps(dps):
+            a = self.alpha.mp() if isinstance(self.alpha, RationalAngle) else mpmath.mpf(self.alpha)
+            q = np.array([[mpmath.mpf(float(x)) for x in row] for row in pts], dtype=object)
+            q[:, 2] = a - q[:, 0] - q[:, 1]
+            return np.array(self(q, arith="mp", dps=dps), dtype=float)
+
     def _combine(self, b: np.ndarray, ctx: Context) -> np.ndarray:
         with ctx.scope():
             net = ctx.asarray(self.net_exact)

@@ -244,34 +244,30 @@ def _phase_steps(kind: str, n_max: int = 2) -> dict[str, bool]:
     return steps
 
 
-@line_check("sec4_5-phase-cos")
-def check_phase_cos() -> LineResult:
-    st = _phase_steps("cos")
-    return LineResult(st["step1"] and st["step2_3"], how="exponential expansion over (u, v, alpha) with "
-                      "w = alpha - u - v, every related pair of E_n, n <= 2, both signs", kind="proof",
-                      detail={k: v for k, v in st.items() if not k.startswith("last")})
+def _register_phase(kind: str, steps_how: str, za_how: str) -> None:
+    """Register the two checks of the phase identity for ``kind`` ("cos" or "sin"): its steps, and its last step
+    with the printed 'za' (sec4_5-phase-<kind> and sec4_5-phase-<kind>-za)."""
+
+    @line_check(f"sec4_5-phase-{kind}")
+    def check_steps() -> LineResult:
+        st = _phase_steps(kind)
+        return LineResult(st["step1"] and st["step2_3"], how=steps_how, kind="proof",
+                          detail={k: v for k, v in st.items() if not k.startswith("last")})
+
+    @line_check(f"sec4_5-phase-{kind}-za")
+    def check_za() -> LineResult:
+        st = _phase_steps(kind)
+        printed, corrected = st["last_za"], st["last"]
+        return LineResult(printed, corrected, how=za_how, kind="proof",
+                          detail={"printed_za": printed, "with_z_alpha": corrected})
 
 
-@line_check("sec4_5-phase-cos-za")
-def check_phase_cos_za() -> LineResult:
-    printed, corrected = _phase_steps("cos")["last_za"], _phase_steps("cos")["last"]
-    return LineResult(printed, corrected, how="last step expanded with the printed 'za' read as z times a free a, "
-                      "and with z alpha", kind="proof", detail={"printed_za": printed, "with_z_alpha": corrected})
-
-
-@line_check("sec4_5-phase-sin")
-def check_phase_sin() -> LineResult:
-    st = _phase_steps("sin")
-    return LineResult(st["step1"] and st["step2_3"], how="exponential expansion, every related pair of E_n, "
-                      "n <= 2, both signs: sin(r2 u + g2 v + b2 w) = sin(z alpha -+ X)", kind="proof",
-                      detail={k: v for k, v in st.items() if not k.startswith("last")})
-
-
-@line_check("sec4_5-phase-sin-za")
-def check_phase_sin_za() -> LineResult:
-    printed, corrected = _phase_steps("sin")["last_za"], _phase_steps("sin")["last"]
-    return LineResult(printed, corrected, how="as sec4_5-phase-cos-za for sin(za) cos X -+ cos(z alpha) sin X",
-                      kind="proof", detail={"printed_za": printed, "with_z_alpha": corrected})
+_register_phase("cos", "exponential expansion over (u, v, alpha) with w = alpha - u - v, every related pair of "
+                "E_n, n <= 2, both signs", "last step expanded with the printed 'za' read as z times a free a, "
+                "and with z alpha")
+_register_phase("sin", "exponential expansion, every related pair of E_n, n <= 2, both signs: "
+                "sin(r2 u + g2 v + b2 w) = sin(z alpha -+ X)",
+                "as sec4_5-phase-cos-za for sin(za) cos X -+ cos(z alpha) sin X")
 
 
 @line_check("sec4_5-examples-n3")
