@@ -76,7 +76,7 @@ def test_elevation_matrix_is_flat_below_alpha_flat(n):
     alpha = 1e-30 to float64 rounding (the justification of ALPHA_FLAT)."""
     direct = None
     for prec in (2048, 4096, 8192):
-        direct = _ball_solve(n, 1e-30, prec)
+        direct, _bits = _ball_solve(n, 1e-30, prec)
         if direct is not None:
             break
     assert direct is not None
@@ -284,3 +284,27 @@ def test_cli_claim_passes_or_refuses_never_fails_on_a_parameter(claim, alpha):
     value is refused in one line (exit 2).  Exit 1 (FAIL) because of the parameter is the defect of issue 22."""
     out = _cli("claims", "--only", claim, "--alpha", alpha, timeout=900)
     assert out.returncode in (0, 2) and "Traceback" not in out.stderr, (out.stdout[-500:], out.stderr[-500:])
+
+
+def test_elevation_precision_schedule():
+    """The next precision covers the bits lost at the last one (plus a margin), and doubles when nothing was
+    certified; the start precision certifies n = 2 at alpha = 1e-9 in one solve."""
+    from paper_repro.core.elevation import next_precision, start_precision
+
+    assert next_precision(1216, 36) >= 1216 - 36 + 64
+    assert next_precision(1216, 0) == 2432
+    e, bits = _ball_solve(2, 1e-9, start_precision(2, 1e-9))
+    assert e is not None and bits > 64
+    e_low, bits_low = _ball_solve(2, 1e-9, 128)
+    assert e_low is None and bits_low < 64
+
+
+def test_elevation_solve_in_a_child_process_is_the_same():
+    """Large solves run in a forked child (Ctrl-C acts at once); the child computes the same bits."""
+    from paper_repro.core.elevation import _ball_solve_task
+    from paper_repro.util.sweep import interruptible
+
+    direct, bits = _ball_solve(3, 0.7, 256)
+    child, bits_child = interruptible(_ball_solve_task, (3, 0.7, 256))
+    assert direct is not None and bits == bits_child
+    assert np.array_equal(direct, child)

@@ -36,6 +36,7 @@ from paper_repro.core.nets import check_net
 from paper_repro.core.normalization import evaluate_normalized, fixed_points
 from paper_repro.util.cache import cached
 from paper_repro.util.limits import MAX_ELEVATION_STEPS, MAX_N_ELEVATION, check_int
+from paper_repro.util.sweep import interruptible
 from paper_repro.util.validation import check_alpha, check_n, parse_alpha
 
 #: Below this alpha, E is taken at ALPHA_FLAT (E(alpha) - E(0) = O(alpha^2) < 1e-17, see the module docstring).
@@ -73,10 +74,13 @@ def elevation_matrix_exact(n: int, alpha: RationalAngle, verify: int = 3, seed: 
     return elevation_system(n, alpha, ExactContext(), verify=verify, seed=seed).solution.tolist()
 
 
-def _ball_solve(n: int, alpha: float, prec: int) -> np.ndarray | None:
+def _ball_solve(n: int, alpha: float, prec: int) -> tuple[np.ndarray | None, int]:
     """E at ``prec`` bits in ball arithmetic, collocating at alpha-independent points of the plane u + v + w =
-    alpha (:func:`~paper_repro.core.normalization.fixed_points`); the float64 midpoints, or ``None`` if some
-    entry is not certified to 2^-64 (or the ball matrix is not certified invertible)."""
+    alpha (:func:`~paper_repro.core.normalization.fixed_points`).
+
+    Returns ``(E, bits)``: the float64 midpoints (``None`` if some entry is not certified to 2^-64 or the ball
+    matrix is not certified invertible) and the number of bits the largest radius is below 1 (``bits`` > 64 when
+    certified; 0 if nothing is known), from which the caller sets the next precision."""
     from flint import arb, arb_mat
 
     ctx = BallContext(prec=prec)
@@ -88,25 +92,46 @@ def _ball_solve(n: int, alpha: float, prec: int) -> np.ndarray | None:
         big = evaluate_normalized(n + 1, a, pts, ctx)
         small = evaluate_normalized(n, a, pts, ctx)
         try:
-            x = arb_mat(big.tolist()).solve(arb_mat(small.tolist()))
+            x = arb_mat(big.tolist()).solve(arb_mat(small.tolist()), algorithm="precond")
         except ZeroDivisionError:
-            return None
-        bound = arb(2) ** -64
-        out = np.empty((x.nrows(), x.ncols()))
-        for i in range(x.nrows()):
-            for j in range(x.ncols()):
-                e = x[i, j]
-                if not e.rad() < bound:
-                    return None
-                out[i, j] = float(e.mid())
-    return out
+            return None, 0
+        rad = max((x[i, j].rad() for i in range(x.nrows()) for j in range(x.ncols())), default=arb(0))
+        if not rad.is_finite():
+            return None, 0
+        bits = prec if rad == 0 else max(0, -int(math.floor(float(rad.log() / arb(2).log()))) - 1)
+        if bits <= 64:
+            return None, bits
+        out = np.array([[float(x[i, j].mid()) for j in range(x.ncols())] for i in range(x.nrows())])
+    return out, bits
+
+
+def _ball_solve_task(args: tuple[int, float, int]) -> tuple[np.ndarray | None, int]:
+    """:func:`_ball_solve` on one tuple (a picklable task for :func:`~paper_repro.util.sweep.interruptible`)."""
+    return _ball_solve(*args)
+
+
+#: Solves whose work estimate delta_{n+1}^3 x precision exceeds this run in a child process, so that Ctrl-C stops
+#: them within a second (flint holds the GIL); measured: 1e9 is about 1.5 s (n = 7 at alpha = 1, 256 bits).
+CHILD_WORK = 1e9
 
 
 def start_precision(n: int, alpha: float) -> int:
-    """First ball precision tried: the collocation matrix loses about 4 (n + 1) log2(1/alpha) bits as alpha -> 0
-    (measured: n = 1, 3, 6 need 512, 512, 1024 bits at alpha = 1e-8) and a few near pi."""
-    lost = 4 * (n + 1) * max(0.0, math.log2(1 / alpha), math.log2(1 / (math.pi - alpha)))
-    return 128 + 64 * math.ceil(lost / 64)
+    """First ball precision tried, from the bits the preconditioned ball solve loses (measured for n = 1..10 at
+    alpha = 1, 1e-3, 1e-9 and pi - 1e-5 by ``tools/elevation_cost.py``: at most 16 (n + 1) at alpha = 1, plus at
+    most (4.5 n + 3) log2(1/alpha) as alpha -> 0 -- n = 10 loses 172, 594 and 1432 bits at alpha = 1, 1e-3,
+    1e-9 -- and little near pi).  With 96 bits to spare one solve is enough in every case measured."""
+    small, near_pi = max(0.0, math.log2(1 / alpha)), max(0.0, math.log2(1 / (math.pi - alpha)))
+    lost = 16 * (n + 1) + (4.5 * n + 3) * small + 2 * near_pi
+    return 64 * math.ceil((lost + 96) / 64)
+
+
+def next_precision(prec: int, bits: int) -> int:
+    """Precision of the next attempt after a solve at ``prec`` bits certified ``bits`` bits (not enough):
+    the bits lost are ``prec - bits``, so ``prec - bits + 64`` would just do; add a margin of 25 %, and
+    double if nothing was certified."""
+    if bits <= 0:
+        return 2 * prec
+    return 64 * math.ceil((1.25 * (prec - bits) + 96) / 64)
 
 
 @lru_cache(maxsize=64)
@@ -117,13 +142,16 @@ def _elevation_matrix_float(n: int, alpha: float) -> np.ndarray:
     def compute():
         prec = start_precision(n, a)
         while prec <= MAX_PREC:
-            e = _ball_solve(n, a, prec)
+            if delta(n + 1) ** 3 * prec > CHILD_WORK:
+                e, bits = interruptible(_ball_solve_task, (n, a, prec))
+            else:
+                e, bits = _ball_solve(n, a, prec)
             if e is not None:
                 return {"prec": prec, "rows": [[x.hex() for x in row] for row in e]}
-            prec *= 2
+            prec = max(prec + 64, next_precision(prec, bits))
         raise ArithmeticError(f"elevation {n}->{n + 1} at alpha = {a!r}: not certified at {MAX_PREC} bits")
 
-    stored = cached("elevation_matrix", {"n": n, "alpha": a.hex()}, compute)
+    stored = cached("elevation_matrix", {"n": n, "alpha": a.hex(), "schedule": 2}, compute)
     out = np.array([[float.fromhex(x) for x in row] for row in stored["rows"]])
     out.setflags(write=False)
     return out

@@ -23,9 +23,12 @@ import numbers
 
 import numpy as np
 
-#: Order elevation: E of order n -> n+1 by a certified ball solve, delta_{n+1} unknowns (measured, loaded machine:
-#: n = 4: 8 s (alpha = 1) / 20 s (alpha <= 1e-9); n = 6: 16 / 31 s; n = 8: 39 s / over 90 s; n = 10: over 90 s;
-#: cached on disk afterwards).  n <= 10 is what issue 22 asks for; n = 9, 10 exceed the 20 s budget on first use.
+#: Order elevation: E of order n -> n+1 by one certified ball solve at a precision set from the measured bit loss,
+#: delta_{n+1} unknowns (tools/elevation_cost.py -> reports/elevation_cost.md; first call, cache empty, 2 cores
+#: lightly loaded: n <= 6 under 4 s at every alpha; n = 8: 3.2 s (alpha = 1), 5.2 s (1e-3), 14 s (alpha <= 1e-9);
+#: n = 9: 4.6 / 9.3 / 28 s; n = 10: 11 / 18 / 60 s; cached on disk afterwards).  n <= 10 is what issue 22 asks for;
+#: the first call at n = 9, 10 with alpha below about 1e-4 exceeds the 20 s budget of the other limits -- accepted
+#: and documented, since the solve runs in a child process that Ctrl-C stops at once.
 MAX_N_ELEVATION = 10
 #: Repeated elevation: ``times`` steps (each bounded by MAX_N_ELEVATION).
 MAX_ELEVATION_STEPS = MAX_N_ELEVATION

@@ -90,6 +90,38 @@ def sweep(task: Callable[[T], R], items: Iterable[T], *, executor: Executor | No
             ex.shutdown()
 
 
+def interruptible(task: Callable[[T], R], item: T) -> R:
+    """``task(item)`` in a forked child process, so that Ctrl-C stops it at once even while it is inside a C
+    call that holds the GIL (flint's ball solves do): the parent waits, and on KeyboardInterrupt terminates the
+    child and re-raises.  For work of a second or more (a fork costs about 10 ms).  The child is forked, not
+    spawned, so a user's script needs no ``if __name__ == "__main__"`` guard; where ``fork`` is not available
+    the task runs in this process (and Ctrl-C acts when the C call returns).  ``item`` and the result must be
+    picklable.
+
+    >>> interruptible(abs, -3)
+    3
+    """
+    import multiprocessing as mp
+    import warnings
+
+    if "fork" not in mp.get_all_start_methods():
+        return task(item)
+    ex = ProcessPoolExecutor(max_workers=1, mp_context=mp.get_context("fork"), initializer=_quiet_worker,
+                             initargs=(None,))
+    try:
+        with warnings.catch_warnings():
+            # Python >= 3.12 warns when a process with threads forks; the child only runs ``task`` (flint and
+            # numpy object arithmetic, no lock shared with the kernel's idle thread pool) and exits.
+            warnings.simplefilter("ignore", DeprecationWarning)
+            fut = ex.submit(task, item)
+        return fut.result()
+    except BaseException:
+        _terminate(ex)
+        raise
+    finally:
+        ex.shutdown()
+
+
 def _quiet_worker(initializer: Callable[[], None] | None) -> None:
     """Worker start-up: ignore SIGINT (the parent handles Ctrl-C and stops the workers), then ``initializer``."""
     signal.signal(signal.SIGINT, signal.SIG_IGN)
