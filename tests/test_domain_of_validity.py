@@ -308,3 +308,18 @@ def test_elevation_solve_in_a_child_process_is_the_same():
     child, bits_child = interruptible(_ball_solve_task, (3, 0.7, 256))
     assert direct is not None and bits == bits_child
     assert np.array_equal(direct, child)
+
+
+@pytest.mark.parametrize("alpha", [5e-324, 1e-310, math.nextafter(sys.float_info.min, 0)])
+def test_subnormal_alpha_is_refused_naming_alpha(alpha):
+    """Below the smallest normal float64, alpha/2 underflows or loses bits: refused in one line, naming alpha."""
+    for call in (lambda: coefficients(2, alpha), lambda: Patch(1, alpha, np.zeros((7, 3))),
+                 lambda: evaluate_normalized(1, alpha, [[0.0, 0.0, alpha]])):
+        with pytest.raises(ValueError, match="alpha must lie in"):
+            call()
+
+
+def test_smallest_normal_alpha_is_accepted():
+    a = sys.float_info.min
+    r = evaluate_normalized(2, a, [[0.25 * a, 0.25 * a, 0.5 * a]])
+    assert np.all(np.isfinite(r)) and abs(r.sum() - 1) < 1e-12

@@ -129,8 +129,13 @@ def cases(rng: random.Random, with_cli: bool):
         out.append((cls, code, expect))
 
     pi = math.pi
-    tiny = [1e-3, 1e-8, 1e-17, 1e-30, 1e-60, 1e-154, 1e-200, 1e-300, 5e-324]
+    tiny = [1e-3, 1e-8, 1e-17, 1e-30, 1e-60, 1e-154, 1e-200, 1e-300, sys.float_info.min]
     near_pi = [pi - 1e-3, pi - 1e-8, 3.1415926535897, math.nextafter(pi, 0)]
+    # --- subnormal alpha (below the smallest normal float64): refused, naming alpha
+    for a in (5e-324, 1e-310):
+        for code in (f"r = evaluate_normalized(2, {a!r}, [[0.0, 0.0, {a!r}]])", f"r = coefficients(3, {a!r})",
+                     f"r = Patch(2, {a!r}, np.zeros((19, 3)))", f"r = elevate(np.zeros((7, 3)), 1, {a!r})"):
+            add("small_alpha", code, "err", ("alpha",))
     # --- small alpha (valid input): coefficients (scaled), evaluate_normalized, Patch, derivatives
     for a in tiny + near_pi:
         for n in (1, 2, 3, 6, 8):
@@ -231,7 +236,13 @@ def cases(rng: random.Random, with_cli: bool):
                 "finite(r)", ("alpha",))
             add("types", f"p = Patch(2, {ta}, np.zeros((19, 3)) + 1.0); r = np.asarray(p(sample_points(float({ta}), 3), "
                 f"arith={arith!r}), dtype=float)", "ok|err", "rel(r, 1.0, 1.0) < 1e-12", ("alpha",))
-    for bad in ("np.bool_(True)", "True", "'1.0'", "b'1'", "None", "[1.0]", "np.array([1.0])", "object()", "{1.0}"):
+    # alpha as text is accepted by design (parse_alpha: '1.0', '3/2', 'pi/2'; issue 22 lists strings like 'pi/2'
+    # among the accepted reals) and must equal the float; text that is not a number is refused
+    for text, value in (("'1.0'", "1.0"), ("'pi/2'", "math.pi / 2"), ("'2pi/3'", "2 * math.pi / 3")):
+        add("types", f"r = (list(coefficients(2, {text}).values()), list(coefficients(2, {value}).values()))",
+            "ok", "r[0] == r[1]")
+    for bad in ("np.bool_(True)", "True", "'one'", "'pi/0'", "b'1'", "None", "[1.0]", "np.array([1.0])", "object()",
+                "{1.0}"):
         add("types", f"r = coefficients(1, {bad})", "err", ("alpha",))
         add("types", f"r = Patch(1, {bad}, np.zeros((7, 3)))", "err", ("alpha",))
         add("types", f"r = evaluate_normalized(1, {bad}, [[0.3, 0.3, 0.4]])", "err", ("alpha",))

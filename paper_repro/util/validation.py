@@ -8,6 +8,7 @@ from __future__ import annotations
 import math
 import numbers
 import re
+import sys
 from collections.abc import Callable
 from typing import Any, TypeVar
 
@@ -58,6 +59,9 @@ def check_alpha(alpha: object, name: str = "alpha") -> float:
         raise TypeError(f"{name} must be a real number in the open interval (0, pi), got {_plain(alpha)}") from None
     if not (0.0 < a < math.pi) or math.isnan(a):
         raise ValueError(f"{name} must lie in the open interval (0, pi), got {_plain(alpha)}")
+    if a < sys.float_info.min:
+        raise ValueError(f"{name} must lie in (0, pi) and be at least {sys.float_info.min!r} (the smallest normal "
+                         f"float64; below it alpha/2 and the sine ratios lose their precision), got {_plain(alpha)}")
     return a
 
 
