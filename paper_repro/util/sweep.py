@@ -130,11 +130,18 @@ def _quiet_worker(initializer: Callable[[], None] | None) -> None:
 
 
 def _terminate(ex: ProcessPoolExecutor) -> None:
-    """Stop a local pool now: pending futures cancelled, worker processes terminated."""
-    procs = list(getattr(ex, "_processes", {}).values())
-    ex.shutdown(wait=False, cancel_futures=True)
+    """Stop a local pool now: worker processes terminated first (so nothing waits on them), then pending futures
+    cancelled.  The executor's own shutdown runs in a daemon thread given half a second: if Ctrl-C arrived while
+    the executor held one of its internal locks (e.g. while it was starting a worker), shutting it down from this
+    thread could wait forever; the caller exits right after, so a thread left waiting does not matter."""
+    import threading
+
+    procs = list((getattr(ex, "_processes", None) or {}).values())
     for p in procs:
         p.terminate()
+    stopper = threading.Thread(target=ex.shutdown, kwargs={"wait": False, "cancel_futures": True}, daemon=True)
+    stopper.start()
+    stopper.join(timeout=0.5)
     deadline = time.monotonic() + 1.0  # one second in all, not per worker
     for p in procs:
         p.join(timeout=max(0.0, deadline - time.monotonic()))
