@@ -50,7 +50,8 @@ from paper_repro.core.domain import SMALL_ALPHA
 BLOCK = 1024
 
 #: Functions per chunk of :meth:`FloatKernel.contract_derivatives` (a chunk's rows, 32 x 1024 doubles = 256 KB, stay
-#: in the core's cache; 16..128 measured on this 2-core machine, 32 best or tied at n = 3, 6, 10).
+#: in the core's cache).  16, 32, 64, 128 measured once per block on this busy 2-core machine (noisy, 25% steal):
+#: 32 was fastest at n = 6 and 10 (1.6x and 2.3x over the unchunked derivative), within the noise at n = 3.
 CHUNK = 32
 
 _POOL: ThreadPoolExecutor | None = None
