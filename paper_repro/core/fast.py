@@ -49,6 +49,11 @@ from paper_repro.core.domain import SMALL_ALPHA
 #: min of 12, on this project's 2-core machine: 2x over 4096 at n = 3 and 10, 3x at n = 6).
 BLOCK = 1024
 
+#: Functions per chunk of :meth:`FloatKernel.contract_derivatives` (a chunk's rows, 32 x 1024 doubles = 256 KB, stay
+#: in the core's cache).  16, 32, 64, 128 measured once per block on this busy 2-core machine (noisy, 25% steal):
+#: 32 was fastest at n = 6 and 10 (1.6x and 2.3x over the unchunked derivative), within the noise at n = 3.
+CHUNK = 32
+
 _POOL: ThreadPoolExecutor | None = None
 _POOL_SIZE = 0
 _POOL_LOCK = threading.Lock()
@@ -281,45 +286,126 @@ class FloatKernel:
         tmp = ws.get("tmp", shape)
         outs = []
         for k, d in enumerate(directions):
-            o = ws.get(f"o{k}", shape)
-            nz = [v for v in range(3) if d[v]]
-            if not nz:
-                o[...] = 0.0
-            elif len(nz) == 1:
-                v = nz[0]
-                w1, w2 = (w for w in range(3) if w != v)
-                np.multiply(dg[v], g[w1], out=o)
-                o *= g[w2]
-                if d[v] != 1:
-                    o *= d[v]
-            elif len(nz) == 2:
-                x, z = nz
-                y = 3 - x - z
-                np.multiply(dg[x], g[z], out=o)
-                if d[x] != 1:
-                    o *= d[x]
-                np.multiply(dg[z], g[x], out=tmp)
-                if d[z] == -1:
-                    o -= tmp
-                else:
-                    if d[z] != 1:
-                        tmp *= d[z]
-                    o += tmp
-                o *= g[y]
-            else:
-                o[...] = 0.0
-                for v in range(3):
-                    w1, w2 = (w for w in range(3) if w != v)
-                    np.multiply(dg[v], g[w1], out=tmp)
-                    tmp *= g[w2]
-                    if d[v] != 1:
-                        tmp *= d[v]
-                    o += tmp
-            outs.append(o)
+            outs.append(self._direction(d, g, dg, ws.get(f"o{k}", shape), tmp))
         vals = None
         if values:
             vals = np.multiply(g[0], g[1], out=tmp)
             vals *= g[2]
+        return vals, outs
+
+    @staticmethod
+    def _direction(d, g: list, dg: dict, o: np.ndarray, tmp: np.ndarray) -> np.ndarray:
+        """``o`` = ``sum_v d_v dg_v prod_{w != v} g_w`` (the bracket of the directional derivative), from the gathered
+        values ``g`` and brackets ``dg``; ``tmp`` is scratch.  A direction with a zero component costs four products:
+        for ``(x, 0, z)``, ``g_v (x g'_u g_w + z g_u g'_w)``; otherwise the three terms are summed."""
+        nz = [v for v in range(3) if d[v]]
+        if not nz:
+            o[...] = 0.0
+        elif len(nz) == 1:
+            v = nz[0]
+            w1, w2 = (w for w in range(3) if w != v)
+            np.multiply(dg[v], g[w1], out=o)
+            o *= g[w2]
+            if d[v] != 1:
+                o *= d[v]
+        elif len(nz) == 2:
+            x, z = nz
+            y = 3 - x - z
+            np.multiply(dg[x], g[z], out=o)
+            if d[x] != 1:
+                o *= d[x]
+            np.multiply(dg[z], g[x], out=tmp)
+            if d[z] == -1:
+                o -= tmp
+            else:
+                if d[z] != 1:
+                    tmp *= d[z]
+                o += tmp
+            o *= g[y]
+        else:
+            o[...] = 0.0
+            for v in range(3):
+                w1, w2 = (w for w in range(3) if w != v)
+                np.multiply(dg[v], g[w1], out=tmp)
+                tmp *= g[w2]
+                if d[v] != 1:
+                    tmp *= d[v]
+                o += tmp
+        return o
+
+    def split_net(self, net_t: np.ndarray, chunk: int = CHUNK) -> list[np.ndarray]:
+        """The ``(m, F)`` transposed net cut into contiguous column chunks of ``chunk`` functions, the operand of
+        :meth:`contract_derivatives` (cut once per call, not per block)."""
+        return [np.ascontiguousarray(net_t[:, lo:lo + chunk]) for lo in range(0, self.F, chunk)]
+
+    def contract_derivatives(self, s: np.ndarray, c: np.ndarray, s2: float, directions, nets: list[np.ndarray],
+                             values: bool = False, ws: Workspace | None = None
+                             ) -> tuple[np.ndarray | None, list[np.ndarray]]:
+        """From ``(3, P)`` rows: ``net_t @ values`` (``(m, P)``, if ``values``) and, per direction, ``net_t @`` the
+        brackets of :meth:`derivatives_rows` (``2s`` times the directional derivatives), with ``nets`` =
+        :meth:`split_net` of the ``(m, F)`` net.
+
+        The same products as :meth:`derivatives_rows`, but the functions are taken :data:`CHUNK` at a time: the
+        gathered rows, products and the partial contraction of a chunk stay in the core's cache, where the full
+        ``(F, P)`` arrays (five to nine of them) spill to main memory (measured 1.5-2x faster for n >= 3).  The
+        chunks are summed in order, so a block's result does not depend on the thread that computes it.  With two or
+        more directions (normals) the partial products ``dg_v prod_{w != v} g_w`` of the variables used are contracted
+        instead (six products per chunk for ``'u'`` and ``'v'``, not eight) and combined per direction at the end.
+        """
+        ws = Workspace() if ws is None else ws
+        p = s.shape[1]
+        chunk = nets[0].shape[1]
+        m = nets[0].shape[0]
+        sp, cp = self._rows(s, c, 1, ws)
+        tabs = [self._table(v, sp[v], cp[v], ws) for v in range(3)]
+        used = [v for v in range(3) if any(d[v] for d in directions)]
+        dtabs = {v: self._dtable(v, sp[v], cp[v], s2, ws) for v in used}
+        outs = [ws.get(f"acc{k}", (m, p)) for k in range(len(directions))]
+        vals = ws.get("accv", (m, p)) if values else None
+        part = ws.get("part", (m, p))
+        parts = {v: ws.get(f"pt{v}", (m, p)) for v in used} if len(directions) > 1 else {}
+        for i, net in enumerate(nets):
+            lo = i * chunk
+            hi = lo + net.shape[1]
+            sh = (hi - lo, p)
+            g = [np.take(tabs[v], self.index[v][lo:hi], axis=0, out=ws.get(f"cg{v}", sh), mode="clip")
+                 for v in range(3)]
+            dg = {v: np.take(dtabs[v], self.index[v][lo:hi], axis=0, out=ws.get(f"cd{v}", sh), mode="clip")
+                  for v in used}
+            o, tmp = ws.get("co", sh), ws.get("ct", sh)
+            if len(directions) == 1:
+                self._direction(directions[0], g, dg, o, tmp)
+                if i == 0:
+                    np.matmul(net, o, out=outs[0])
+                else:
+                    outs[0] += np.matmul(net, o, out=part)
+            else:  # contract the partial products dg_v prod_{w != v} g_w, combined per direction after the chunks
+                for v in used:
+                    w1, w2 = (w for w in range(3) if w != v)
+                    np.multiply(dg[v], g[w1], out=o)
+                    o *= g[w2]
+                    if i == 0:
+                        np.matmul(net, o, out=parts[v])
+                    else:
+                        parts[v] += np.matmul(net, o, out=part)
+            if values:
+                np.multiply(g[0], g[1], out=o)
+                o *= g[2]
+                if i == 0:
+                    np.matmul(net, o, out=vals)
+                else:
+                    vals += np.matmul(net, o, out=part)
+        if parts:
+            for k, d in enumerate(directions):
+                o = outs[k]
+                o[...] = 0.0
+                for v in used:
+                    if d[v] == 1:
+                        o += parts[v]
+                    elif d[v] == -1:
+                        o -= parts[v]
+                    elif d[v]:
+                        o += d[v] * parts[v]
         return vals, outs
 
     def blocks(self, uvw: np.ndarray, block: int = BLOCK, alpha: float | None = None):

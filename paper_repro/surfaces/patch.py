@@ -72,13 +72,22 @@ NORMAL_TOL = 2.0 ** -40
 
 
 def unit_normals(du: np.ndarray, dv: np.ndarray, tol: float) -> np.ndarray:
-    """``du x dv`` normalized; NaN where ``|du x dv| <= tol (|du| + |dv|)`` (rounding noise, :meth:`Patch.normals`)."""
-    nrm = np.cross(du, dv)
-    length = np.linalg.norm(nrm, axis=1, keepdims=True)
-    small = length <= tol * (np.linalg.norm(du, axis=1, keepdims=True) + np.linalg.norm(dv, axis=1, keepdims=True))
+    """``du x dv`` normalized; NaN where ``|du x dv| <= tol (|du| + |dv|)`` (rounding noise, :meth:`Patch.normals`).
+
+    ``du`` and ``dv`` are ``(3, P)`` rows (the kernel's layout), and so is the result: every operation runs on
+    contiguous rows of P values (``np.cross`` and ``np.linalg.norm`` on ``(P, 3)`` took as long as the derivatives
+    at n = 1).
+    """
+    nrm = np.empty_like(du)
+    for k in range(3):
+        i, j = (k + 1) % 3, (k + 2) % 3
+        np.multiply(du[i], dv[j], out=nrm[k])
+        nrm[k] -= du[j] * dv[i]
+    length = np.sqrt(np.einsum("ij,ij->j", nrm, nrm))
+    small = length <= tol * (np.sqrt(np.einsum("ij,ij->j", du, du)) + np.sqrt(np.einsum("ij,ij->j", dv, dv)))
     with np.errstate(invalid="ignore", divide="ignore"):
         nrm /= length
-    nrm[small[:, 0]] = np.nan
+    nrm[:, small] = np.nan
     return nrm
 
 
@@ -179,10 +188,11 @@ class Patch:
             ew = _pow2_exponent(self.weights)
             cw = coef * np.ldexp(self.weights, -ew)
             cnet, dnet = cw[:, None] * unit, cw[:, None] * centred
-        return {"kernel": FloatKernel(exponent_matrix(self.n)), "alpha": a, "sa": math.sin(a / 2),
+        kernel = FloatKernel(exponent_matrix(self.n))
+        return {"kernel": kernel, "alpha": a, "sa": math.sin(a / 2),
                 "cnet": cnet, "cw": cw, "exp": e, "dnet": dnet, "dexp": e + e2,
                 "aug_t": np.ascontiguousarray((cnet if cw is None else np.column_stack([cnet, cw])).T),
-                "daug_t": np.ascontiguousarray((dnet if cw is None else np.column_stack([dnet, cw])).T)}
+                "daug_chunks": kernel.split_net((dnet if cw is None else np.column_stack([dnet, cw])).T)}
 
     def _float_points(self, points) -> np.ndarray:
         """Points as a float ``(P, 3)`` array (validated block by block in :meth:`_checked_block`)."""
@@ -225,32 +235,30 @@ class Patch:
         (two directions) the unit normals instead, computed block by block (no full-size intermediate).
 
         Per block: the monomials and the brackets of :meth:`FloatKernel.derivatives_rows`, contracted with the
-        centred unit-scale net; rational patches by the quotient rule ``(N' - P D') / D``.
+        centred unit-scale net chunk by chunk (:meth:`FloatKernel.contract_derivatives`); rational patches by the
+        quotient rule ``(N' - P D') / D``.
         """
         st = self._setup
-        kernel, aug_t, rational, s2 = st["kernel"], st["daug_t"], st["cw"] is not None, st["sa"] ** 2
+        kernel, rational, s2 = st["kernel"], st["cw"] is not None, st["sa"] ** 2
+        nets = st["daug_chunks"]
         arr = self._float_points(points)
         outs = [np.empty((arr.shape[0], self.dimension)) for _ in range(1 if normals else len(directions))]
         tol = NORMAL_TOL * delta(self.n)
 
         def work(lo: int, hi: int, ws) -> None:
             s, c = scaled_trig_rows(self._checked_block(arr, lo, hi), st["alpha"], st["sa"])
-            vals, ders = kernel.derivatives_rows(s, c, s2, directions, values=rational, ws=ws)
-            if rational:
-                y = aug_t @ vals
+            y, dys = kernel.contract_derivatives(s, c, s2, directions, nets, values=rational, ws=ws)
+            if rational:  # (d, P) rows
                 den = y[-1]
                 pt = y[:-1] / den
-                res = []
-                for db in ders:
-                    dy = aug_t @ db
-                    res.append(((dy[:-1] - pt * dy[-1]) / den).T)
+                res = [(dy[:-1] - pt * dy[-1]) / den for dy in dys]
             else:
-                res = [(aug_t @ db).T for db in ders]
+                res = dys
             if normals:
-                outs[0][lo:hi] = unit_normals(res[0], res[1], tol)
+                outs[0][lo:hi] = unit_normals(res[0], res[1], tol).T
             else:
                 for o, r in zip(outs, res):
-                    o[lo:hi] = r
+                    o[lo:hi] = r.T
 
         run_blocks(arr.shape[0], work)
         return outs, st["dexp"]
