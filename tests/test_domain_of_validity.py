@@ -248,14 +248,20 @@ def test_cli_refuses_bad_parameters_in_one_line(args, word):
 
 
 def test_ctrl_c_stops_within_two_seconds():
-    env = dict(os.environ, PAPER_REPRO_WORKERS="2")
+    env = dict(os.environ, PAPER_REPRO_WORKERS="2", PYTHONFAULTHANDLER="1")
     p = subprocess.Popen([sys.executable, "-m", "paper_repro", "claims", "--only", "dimension", "nonnegativity",
                           "coincidence"], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env,
                          start_new_session=True)
     time.sleep(6)
     t0 = time.perf_counter()
     os.killpg(p.pid, signal.SIGINT)
-    _, err = p.communicate(timeout=30)
+    try:
+        _, err = p.communicate(timeout=30)
+    except subprocess.TimeoutExpired:  # show where it hangs: faulthandler dumps every thread on SIGABRT
+        p.send_signal(signal.SIGABRT)
+        _, err = p.communicate(timeout=30)
+        os.killpg(p.pid, signal.SIGKILL)
+        pytest.fail(f"no exit 30 s after Ctrl-C; stacks:\n{err[-6000:]}")
     assert time.perf_counter() - t0 < 2.0
     assert p.returncode == 130
     assert "Traceback" not in err and err.strip().splitlines()[-1].startswith("interrupted")
