@@ -79,11 +79,14 @@ def sweep(task: Callable[[T], R], items: Iterable[T], *, executor: Executor | No
         # Ctrl-C (or an error): cancel the pending work at once instead of draining the queue, and stop our
         # own workers (they ignore SIGINT, so only the parent reports it); results are written atomically
         # after a sweep, so an interrupted sweep leaves data/ and the cache as they were.
-        for fut in futures:
-            fut.cancel()
+        # Nothing here takes a future's lock in this thread: a Ctrl-C that lands while this thread holds one of
+        # concurrent.futures' internal locks (a with-statement interrupted between acquire and its try block)
+        # would deadlock against the executor's manager thread (seen as a rare hang on Python 3.12/3.13).
         if own:
             _terminate(ex)
             own = False
+        else:
+            _in_background(lambda: [fut.cancel() for fut in futures], 0.5)
         raise
     finally:
         if own:
@@ -129,19 +132,24 @@ def _quiet_worker(initializer: Callable[[], None] | None) -> None:
         initializer()
 
 
+def _in_background(func: Callable[[], object], seconds: float) -> None:
+    """Run ``func`` in a daemon thread and wait for it at most ``seconds`` (it may block on a lock)."""
+    import threading
+
+    t = threading.Thread(target=func, daemon=True)
+    t.start()
+    t.join(timeout=seconds)
+
+
 def _terminate(ex: ProcessPoolExecutor) -> None:
     """Stop a local pool now: worker processes terminated first (so nothing waits on them), then pending futures
     cancelled.  The executor's own shutdown runs in a daemon thread given half a second: if Ctrl-C arrived while
     the executor held one of its internal locks (e.g. while it was starting a worker), shutting it down from this
     thread could wait forever; the caller exits right after, so a thread left waiting does not matter."""
-    import threading
-
     procs = list((getattr(ex, "_processes", None) or {}).values())
     for p in procs:
         p.terminate()
-    stopper = threading.Thread(target=ex.shutdown, kwargs={"wait": False, "cancel_futures": True}, daemon=True)
-    stopper.start()
-    stopper.join(timeout=0.5)
+    _in_background(lambda: ex.shutdown(wait=False, cancel_futures=True), 0.5)
     deadline = time.monotonic() + 1.0  # one second in all, not per worker
     for p in procs:
         p.join(timeout=max(0.0, deadline - time.monotonic()))
