@@ -49,6 +49,21 @@ from paper_repro.core.domain import SMALL_ALPHA
 #: min of 12, on this project's 2-core machine: 2x over 4096 at n = 3 and 10, 3x at n = 6).
 BLOCK = 1024
 
+
+def block_for(functions: int) -> int:
+    """Points per block of a point evaluation with ``functions`` = delta_n monomials: about 2^18 table entries
+    (2 MB) per block, a power of two from :data:`BLOCK` to 8192 (n = 1, 2: 8192; n = 3, 4: 4096; n = 5, 6: 2048;
+    n >= 7: 1024).  Measured (interleaved runs, min of 5, 10^6 points, alpha = pi/2, 2 cores): with
+    two threads n = 1: 0.35 -> 0.14 s, n = 3: 0.51 -> 0.27 s, n = 6: 0.77 -> 0.66 s against 1024-point blocks
+    (the per-block Python work holds the GIL, so small blocks keep the second thread waiting); one thread
+    0.28 -> 0.22 s (n = 1), 0.42 -> 0.34 s (n = 3), 0.84 -> 0.87 s (n = 6, within the noise).
+
+    >>> [block_for(d) for d in (7, 37, 127, 331)]
+    [8192, 4096, 2048, 1024]
+    """
+    target = (1 << 18) // max(1, functions)
+    return max(BLOCK, min(8192, 1 << max(0, target.bit_length() - 1)))
+
 #: Functions per chunk of :meth:`FloatKernel.contract_derivatives` (a chunk's rows, 32 x 1024 doubles = 256 KB, stay
 #: in the core's cache).  16, 32, 64, 128 measured once per block on this busy 2-core machine (noisy, 25% steal):
 #: 32 was fastest at n = 6 and 10 (1.6x and 2.3x over the unchunked derivative), within the noise at n = 3.

@@ -15,7 +15,7 @@ import numpy as np
 from paper_repro.core.context import Context, FloatContext, get_context
 from paper_repro.core.derivatives_basis import DIRECTIONS, basis_derivative, check_direction
 from paper_repro.core.domain import RationalAngle, RationalPoints, barycentric_to_uvw, check_points
-from paper_repro.core.fast import FloatKernel, run_blocks, scaled_trig_rows
+from paper_repro.core.fast import FloatKernel, block_for, run_blocks, scaled_trig_rows
 from paper_repro.core.labels import delta, exponent_matrix, index_of
 from paper_repro.core.nets import LabelledNet, check_net, check_net_exact, net_from_labels  # noqa: F401 (re-exported)
 from paper_repro.core.normalization import evaluate_normalized, scaled_coefficient_vector
@@ -227,7 +227,7 @@ class Patch:
             y = aug_t @ kernel.basis_rows(s, c, ws)  # (d, P), or (d + 1, P) with the weights' row last
             out[lo:hi] = (y[:-1] / y[-1]).T if rational else y.T
 
-        run_blocks(arr.shape[0], work)
+        run_blocks(arr.shape[0], work, block_for(delta(self.n)))
         return np.ldexp(out, st["exp"], out=out) if st["exp"] else out
 
     def _float_derivatives(self, points, directions, normals: bool = False) -> tuple[list[np.ndarray], int]:
