@@ -15,7 +15,7 @@ ifneq ($(filter-out 3.11,$(PYVER)),)
 export PAPER_REPRO_CACHE ?= $(CURDIR)/$(VENV)/cache
 endif
 
-.PHONY: venv lock report paper check-paper check-gallery test-min test-wheel docs reproduce reproduce-extended test test-all bench bench-coefficients bench-question1 figures lint clean distclean
+.PHONY: venv lock report paper check-paper check-gallery test-min test-pythons test-wheel docs reproduce reproduce-extended test test-all bench bench-coefficients bench-question1 figures lint clean distclean
 
 # The environment: the exact versions of requirements.lock (what `make reproduce` was run with, so
 # figures stay byte-identical), then the package itself without resolving anything.  A failed install
@@ -65,6 +65,13 @@ test-min:                      ## the fast suite with the lowest versions pyproj
 	  -m "not slow and not benchmark" -p no:cacheprovider
 	PAPER_REPRO_CACHE=$(CURDIR)/build/min-venv/cache build/min-venv/bin/python -m paper_repro claims \
 	  --only limit_formula bezier_conversion dimension symmetry
+
+# the other supported interpreters: those on PATH, or PYTHONS="path/to/python3.12 path/to/python3.13"
+PYTHONS ?= $(shell command -v python3.12 python3.13 2>/dev/null)
+test-pythons:                  ## the fast suite on every other supported interpreter found (python3.12, python3.13)
+	@if [ -z "$(strip $(PYTHONS))" ]; then echo "test-pythons: no python3.12 or python3.13 found (set PYTHONS=...)"; fi
+	@for p in $(PYTHONS) ""; do [ -n "$$p" ] || continue; echo "== make test PYTHON=$$p"; \
+	  $(MAKE) --no-print-directory test PYTHON=$$p || exit 1; done
 
 test-wheel: $(STAMP)           ## build the wheel, install it in a fresh venv outside the clone, run it there (slow)
 	$(PY) -m pytest -q -m slow tests/test_wheel.py
