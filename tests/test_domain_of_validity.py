@@ -259,8 +259,9 @@ def test_ctrl_c_stops_within_two_seconds():
         _, err = p.communicate(timeout=30)
     except subprocess.TimeoutExpired:  # show where it hangs: faulthandler dumps every thread on SIGABRT
         p.send_signal(signal.SIGABRT)
+        time.sleep(2)
+        os.killpg(p.pid, signal.SIGKILL)  # workers too: they hold the pipes open
         _, err = p.communicate(timeout=30)
-        os.killpg(p.pid, signal.SIGKILL)
         pytest.fail(f"no exit 30 s after Ctrl-C; stacks:\n{err[-6000:]}")
     assert time.perf_counter() - t0 < 2.0
     assert p.returncode == 130
@@ -329,3 +330,26 @@ def test_smallest_normal_alpha_is_accepted():
     a = sys.float_info.min
     r = evaluate_normalized(2, a, [[0.25 * a, 0.25 * a, 0.5 * a]])
     assert np.all(np.isfinite(r)) and abs(r.sum() - 1) < 1e-12
+
+
+def test_ctrl_c_watchdog_ends_a_deadlocked_cli_within_two_seconds():
+    """If the orderly shutdown cannot run (here: the interrupted thread deadlocks on a lock, as a with-statement
+    of concurrent.futures interrupted at the wrong moment can), the watchdog kills the children and exits 130."""
+    code = (
+        "import threading, sys\n"
+        "from paper_repro.app import cli\n"
+        "lock = threading.Lock(); lock.acquire()\n"
+        "def stuck(argv):\n"
+        "    try:\n"
+        "        lock.acquire()\n"
+        "    except KeyboardInterrupt:\n"
+        "        lock.acquire()\n"
+        "cli._main = stuck\n"
+        "sys.exit(cli.main([]))\n")
+    p = subprocess.Popen([sys.executable, "-c", code], stderr=subprocess.PIPE, text=True, start_new_session=True)
+    time.sleep(3)
+    t0 = time.perf_counter()
+    p.send_signal(signal.SIGINT)
+    _, err = p.communicate(timeout=20)
+    assert p.returncode == 130 and time.perf_counter() - t0 < 2.5
+    assert err.strip().splitlines()[-1].startswith("interrupted")

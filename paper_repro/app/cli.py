@@ -65,13 +65,56 @@ def _list(kind: str) -> int:
     return 0
 
 
+INTERRUPTED = "interrupted (Ctrl-C): pending work cancelled; data/ and the cache are unchanged"
+#: Seconds after Ctrl-C before the watchdog ends the process itself (the orderly path takes at most 1.5 s).
+WATCHDOG_SECONDS = 1.8
+_reported = False
+
+
+def _watchdog() -> None:
+    """Started by Ctrl-C: if the orderly shutdown has not ended the process after WATCHDOG_SECONDS (say the
+    interrupted thread holds a lock that the executor's manager thread waits on), kill the child processes and
+    exit 130.  Files are written atomically (temp file + rename), so data/ and the cache stay valid."""
+    import multiprocessing
+    import os
+    import threading
+
+    def hard_exit() -> None:
+        for child in multiprocessing.active_children():
+            child.kill()
+        if not _reported:
+            os.write(2, (INTERRUPTED + "\n").encode())
+        os._exit(130)
+
+    timer = threading.Timer(WATCHDOG_SECONDS, hard_exit)
+    timer.daemon = True
+    timer.start()
+
+
+def _on_sigint(signum, frame) -> None:  # noqa: ARG001 - signal handler signature
+    _watchdog()
+    raise KeyboardInterrupt
+
+
 def main(argv: list[str] | None = None) -> int:
-    """Run a command; bad input is one line and exit 2, Ctrl-C one line and exit 130 (pending work cancelled)."""
+    """Run a command; bad input is one line and exit 2, Ctrl-C one line and exit 130 (pending work cancelled,
+    within 2 s: a watchdog ends the process if the orderly shutdown does not)."""
+    global _reported
+    import signal
+    import threading
+
+    previous = None
+    if threading.current_thread() is threading.main_thread():
+        previous = signal.signal(signal.SIGINT, _on_sigint)
     try:
         return _main(argv)
     except KeyboardInterrupt:
-        print("interrupted (Ctrl-C): pending work cancelled; data/ and the cache are unchanged", file=sys.stderr)
+        _reported = True
+        print(INTERRUPTED, file=sys.stderr)
         return 130
+    finally:
+        if previous is not None:  # called from Python (tests, notebooks): give Ctrl-C back as it was
+            signal.signal(signal.SIGINT, previous)
 
 
 def _main(argv: list[str] | None = None) -> int:
