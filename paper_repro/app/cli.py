@@ -201,6 +201,10 @@ def _main(argv: list[str] | None = None) -> int:
             return 0
         if args.cmd == "reproduce":
             ok = report.run_claims(None, None, extended=args.extended, write=True)
+            if ok and not args.extended:
+                from paper_repro.app import gallery
+
+                gallery.REPRODUCED = True
             report.make_figures(None)
             from paper_repro.app.annotated_paper import write_paper
 

@@ -94,6 +94,11 @@ def _git(*args: str) -> str:
         return ""
 
 
+#: Set by ``reproduce`` once every claim has run and written data/: the gallery then knows that data/ on disk was
+#: just recomputed by this code (if it also equals the last commit of data/, the committed data is this code's).
+REPRODUCED = False
+
+
 def provenance() -> dict:
     """The commit of the code that computed the data (the last commit touching the package, pyproject or
     the lock), its date (not the clock), whether the code differs from it, whether ``data/`` was committed
@@ -113,6 +118,9 @@ def provenance() -> dict:
         data_state = "data/ has uncommitted changes (a run of make reproduce not yet committed)"
     elif int(data_time) >= int(code_time) and not dirty:
         data_state = f"yes: data/ was last committed ({data_commit[:12]}) after the last change of the code"
+    elif REPRODUCED and not dirty:
+        data_state = (f"yes: make reproduce with this code recomputed data/ and it equals its last commit "
+                      f"({data_commit[:12]})")
     else:
         data_state = (f"no: the code changed after data/ was last committed ({data_commit[:12]}); "
                       "run make reproduce")
