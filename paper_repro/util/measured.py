@@ -55,7 +55,7 @@ _SCI = re.compile(r"^-?\d(?:\.(\d+))?e-(\d+)$")
 def bound(value: float, tol: float) -> str:
     """``"< tol"`` if ``|value| < tol`` (what ``data/`` holds); otherwise the value with the bound it missed
     (a failing claim, whose text may then depend on the machine)."""
-    v = abs(float(value))
+    v, tol = abs(float(value)), float(tol)  # an mpf tol has no format spec before mpmath 1.4
     if v < tol:
         return f"< {tol:g}"
     return f"{v:.3g} (not < {tol:g})"
