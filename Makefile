@@ -33,7 +33,7 @@ venv: $(STAMP)
 
 lock:                          ## refresh requirements.lock from pyproject's ranges (newest that install), hashes for 3.11-3.13
 	$(PYTHON) -m venv build/lock-venv
-	build/lock-venv/bin/python -m pip install --quiet --disable-pip-version-check '.[dev,docs]'
+	build/lock-venv/bin/python -m pip install --quiet --disable-pip-version-check '.[dev,docs,fast]'
 	build/lock-venv/bin/python -m pip freeze --exclude-editable | grep -v '^paper.repro' > requirements.lock
 	rm -rf build/lock-venv build/lock-wheels
 	PYTHON=$(PYTHON) sh tools/lock_download.sh requirements.lock build/lock-wheels
@@ -58,9 +58,9 @@ test-min:                      ## the fast suite with the lowest versions pyproj
 	rm -rf build/min-venv
 	$(PYTHON) -m venv build/min-venv
 	build/min-venv/bin/python -m pip install --quiet --disable-pip-version-check --only-binary=:all: \
-	  -c requirements-min.txt -e . pytest hypothesis pytest-benchmark pytest-html selenium
+	  -c requirements-min.txt -e '.[fast]' pytest hypothesis pytest-benchmark pytest-html selenium
 	build/min-venv/bin/python -m pip check
-	build/min-venv/bin/python -m pip freeze | grep -iE '^(numpy|scipy|mpmath|python.flint|matplotlib|tqdm|meshio|plotly|latex2mathml|platformdirs)=='
+	build/min-venv/bin/python -m pip freeze | grep -iE '^(numpy|scipy|mpmath|python.flint|matplotlib|tqdm|meshio|plotly|latex2mathml|platformdirs|threadpoolctl|numba)=='
 	PAPER_REPRO_CACHE=$(CURDIR)/build/min-venv/cache build/min-venv/bin/python -m pytest -q \
 	  -m "not slow and not benchmark" -p no:cacheprovider
 	PAPER_REPRO_CACHE=$(CURDIR)/build/min-venv/cache build/min-venv/bin/python -m paper_repro claims \

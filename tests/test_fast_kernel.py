@@ -22,6 +22,7 @@ from hypothesis import strategies as st
 from paper_repro import Patch
 from paper_repro.core.domain import sample_points
 from paper_repro.core.fast import BLOCK, threads
+from paper_repro.core.fast_jit import JIT_BLOCK
 from paper_repro.core.labels import delta
 
 
@@ -41,10 +42,13 @@ def _float(arr):
     return np.vectorize(float)(arr)
 
 
+@pytest.mark.parametrize("kernel", ["numpy", "auto"])
 @pytest.mark.parametrize("rational", [False, True])
-def test_same_bits_with_one_and_several_threads(monkeypatch, rational):
+def test_same_bits_with_one_and_several_threads(monkeypatch, rational, kernel):
+    # "auto": the compiled kernel where numba is installed (its blocks are JIT_BLOCK points: several of them here)
+    monkeypatch.setenv("PAPER_REPRO_KERNEL", kernel)
     alpha = 1.1
-    pts = sample_points(alpha, 3 * BLOCK + 17, seed=4)
+    pts = sample_points(alpha, 3 * JIT_BLOCK + 17, seed=4)
     n = 3
     w = np.random.default_rng(1).uniform(0.5, 2, size=delta(n)) if rational else None
     p = Patch(n, alpha, _net(n), w)
@@ -203,8 +207,12 @@ def test_degenerate_corner_gives_nan_normals():
     assert np.allclose(np.linalg.norm(p0.normals(corner), axis=1), 1.0)
 
 
+@pytest.mark.parametrize("kernel", ["numpy", "auto"])
 @pytest.mark.parametrize("what", ["derivative", "normals"])
-def test_derivatives_and_normals_memory_does_not_grow(what, monkeypatch):
+def test_derivatives_and_normals_memory_does_not_grow(what, monkeypatch, kernel):
+    # "auto" (the compiled kernel): tracemalloc sees the per-block numpy arrays around the call; the kernel's own
+    # tile arrays are numba's (a fixed size per call, independent of the points)
+    monkeypatch.setenv("PAPER_REPRO_KERNEL", kernel)
     # one thread: with k threads the number of workspaces alive depends on how many threads the pool happened
     # to start for 4 blocks (on 3.13 once 1 of 2, then 2 of 2 for 40 blocks: twice the memory, not growth)
     monkeypatch.setenv("PAPER_REPRO_THREADS", "1")

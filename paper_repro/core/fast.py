@@ -189,11 +189,17 @@ def scaled_trig(uvw: np.ndarray, alpha: float, sin_half_alpha: float) -> tuple[n
 
 def scaled_trig_rows(uvw: np.ndarray, alpha: float, sin_half_alpha: float) -> tuple[np.ndarray, np.ndarray]:
     """:func:`scaled_trig` transposed: ``(3, P)`` rows (contiguous per variable), the kernel's layout."""
-    rows = np.ascontiguousarray(uvw.T)
+    return trig_of_rows(np.ascontiguousarray(uvw.T), alpha, sin_half_alpha)
+
+
+def trig_of_rows(rows: np.ndarray, alpha: float, sin_half_alpha: float) -> tuple[np.ndarray, np.ndarray]:
+    """:func:`scaled_trig` of contiguous ``(3, P)`` rows ``(u, v, w)``."""
     half = rows * 0.5
     if alpha < SMALL_ALPHA:
         return np.clip(rows / alpha, 0.0, None), np.cos(half)
-    return np.sin(half) / sin_half_alpha, np.cos(half)
+    s = np.sin(half)
+    s /= sin_half_alpha
+    return s, np.cos(half, out=half)
 
 
 class FloatKernel:

@@ -15,7 +15,9 @@ import numpy as np
 from paper_repro.core.context import Context, FloatContext, get_context
 from paper_repro.core.derivatives_basis import DIRECTIONS, basis_derivative, check_direction
 from paper_repro.core.domain import RationalAngle, RationalPoints, barycentric_to_uvw, check_points
-from paper_repro.core.fast import FloatKernel, block_for, run_blocks, scaled_trig_rows
+from paper_repro.core.fast import BLOCK, FloatKernel, block_for, run_blocks, trig_of_rows
+from paper_repro.core.fast_jit import JIT_BLOCK, JitKernel
+from paper_repro.core.fast_jit import available as jit_available
 from paper_repro.core.labels import delta, exponent_matrix, index_of
 from paper_repro.core.nets import LabelledNet, check_net, check_net_exact, net_from_labels  # noqa: F401 (re-exported)
 from paper_repro.core.normalization import evaluate_normalized, scaled_coefficient_vector
@@ -83,12 +85,21 @@ def unit_normals(du: np.ndarray, dv: np.ndarray, tol: float) -> np.ndarray:
         i, j = (k + 1) % 3, (k + 2) % 3
         np.multiply(du[i], dv[j], out=nrm[k])
         nrm[k] -= du[j] * dv[i]
-    length = np.sqrt(np.einsum("ij,ij->j", nrm, nrm))
-    small = length <= tol * (np.sqrt(np.einsum("ij,ij->j", du, du)) + np.sqrt(np.einsum("ij,ij->j", dv, dv)))
+    length = np.sqrt(_sumsq(nrm))
+    small = length <= tol * (np.sqrt(_sumsq(du)) + np.sqrt(_sumsq(dv)))
     with np.errstate(invalid="ignore", divide="ignore"):
         nrm /= length
     nrm[:, small] = np.nan
     return nrm
+
+
+def _sumsq(rows: np.ndarray) -> np.ndarray:
+    """``x^2 + y^2 + z^2`` of ``(3, P)`` rows, in this order for every point (``np.einsum`` sums the three squares
+    in an order that depends on P: a point alone and the same point in a batch got different last bits)."""
+    out = rows[0] * rows[0]
+    out += rows[1] * rows[1]
+    out += rows[2] * rows[2]
+    return out
 
 
 def _pow2_exponent(a: np.ndarray) -> int:
@@ -189,13 +200,15 @@ class Patch:
             cw = coef * np.ldexp(self.weights, -ew)
             cnet, dnet = cw[:, None] * unit, cw[:, None] * centred
         kernel = FloatKernel(exponent_matrix(self.n))
-        return {"kernel": kernel, "alpha": a, "sa": math.sin(a / 2),
+        daug_t = np.ascontiguousarray((dnet if cw is None else np.column_stack([dnet, cw])).T)
+        return {"kernel": kernel, "jit": JitKernel(kernel) if jit_available() else None,
+                "alpha": a, "sa": math.sin(a / 2),
                 "cnet": cnet, "cw": cw, "exp": e, "dnet": dnet, "dexp": e + e2,
                 "aug_t": np.ascontiguousarray((cnet if cw is None else np.column_stack([cnet, cw])).T),
-                "daug_chunks": kernel.split_net((dnet if cw is None else np.column_stack([dnet, cw])).T)}
+                "daug_t": daug_t, "daug_chunks": kernel.split_net(daug_t)}
 
     def _float_points(self, points) -> np.ndarray:
-        """Points as a float ``(P, 3)`` array (validated block by block in :meth:`_checked_block`)."""
+        """Points as a float ``(P, 3)`` array (validated block by block in :meth:`_checked_rows`)."""
         if isinstance(points, RationalPoints):
             return points.uvw_float()
         arr = np.asarray(points) if isinstance(points, np.ndarray) else check_points(points, self.alpha)
@@ -203,31 +216,47 @@ class Patch:
             arr = check_points(points, self.alpha)  # raises the documented error
         return arr
 
-    def _checked_block(self, arr: np.ndarray, lo: int, hi: int) -> np.ndarray:
-        blk = np.asarray(arr[lo:hi], dtype=np.float64)
+    def _checked_rows(self, arr: np.ndarray, lo: int, hi: int) -> np.ndarray:
+        """Points ``lo:hi`` as contiguous ``(3, P)`` float rows (the kernel's layout), checked to lie on Omega^alpha.
+
+        Two row operations decide (a NaN or inf makes the sum non-finite); anything off goes to the full check,
+        which raises the documented error naming the point.  On rows this is a few element-wise operations:
+        ``sum(axis=1)`` and ``min(axis=1)`` of the ``(P, 3)`` block took as long as the sines and cosines.
+        """
+        rows = np.ascontiguousarray(np.asarray(arr[lo:hi]).T, dtype=np.float64)
         a = float(self.alpha)
         slack = DOMAIN_TOL * a
-        # two reductions decide; a NaN or inf makes the sum non-finite.  Anything off goes to the full check,
-        # which raises the documented error naming the point.
-        sums, mins = blk.sum(axis=1), blk.min(axis=1)
-        if not (np.all(np.abs(sums - a) <= slack) and np.all(mins >= -slack)):
-            check_points(blk, self.alpha, offset=lo)
-        return blk
+        u, v, w = rows
+        sums = u + v
+        sums += w
+        sums -= a
+        low = np.minimum(u, v)
+        np.minimum(low, w, out=low)
+        if not (np.all(np.abs(sums, out=sums) <= slack) and np.all(low >= -slack)):
+            check_points(np.asarray(arr[lo:hi], dtype=np.float64), self.alpha, offset=lo)
+        return rows
 
     def _float_call(self, points) -> np.ndarray:
         """The fast path: points validated and evaluated block by block (work memory independent of P),
         blocks spread over threads (:func:`paper_repro.core.fast.run_blocks`)."""
         st = self._setup
-        kernel, aug_t, rational = st["kernel"], st["aug_t"], st["cw"] is not None
+        kernel, jit, aug_t, rational = st["kernel"], st["jit"], st["aug_t"], st["cw"] is not None
         arr = self._float_points(points)
         out = np.empty((arr.shape[0], self.dimension))
 
         def work(lo: int, hi: int, ws) -> None:
-            s, c = scaled_trig_rows(self._checked_block(arr, lo, hi), st["alpha"], st["sa"])
+            s, c = trig_of_rows(self._checked_rows(arr, lo, hi), st["alpha"], st["sa"])
+            if jit is not None:  # the compiled kernel: (P, d), or (P, d + 1) with the weights' column last
+                if rational:
+                    y = jit.values(s, c, aug_t, ws.get("y", (hi - lo, aug_t.shape[0])))
+                    np.divide(y[:, :-1], y[:, -1:], out=out[lo:hi])
+                else:
+                    jit.values(s, c, aug_t, out[lo:hi])
+                return
             y = aug_t @ kernel.basis_rows(s, c, ws)  # (d, P), or (d + 1, P) with the weights' row last
             out[lo:hi] = (y[:-1] / y[-1]).T if rational else y.T
 
-        run_blocks(arr.shape[0], work, block_for(delta(self.n)))
+        run_blocks(arr.shape[0], work, JIT_BLOCK if jit is not None else block_for(delta(self.n)))
         return np.ldexp(out, st["exp"], out=out) if st["exp"] else out
 
     def _float_derivatives(self, points, directions, normals: bool = False) -> tuple[list[np.ndarray], int]:
@@ -245,9 +274,17 @@ class Patch:
         outs = [np.empty((arr.shape[0], self.dimension)) for _ in range(1 if normals else len(directions))]
         tol = NORMAL_TOL * delta(self.n)
 
+        jit = st["jit"]
+        dirs = np.array(directions, dtype=np.float64)
+
         def work(lo: int, hi: int, ws) -> None:
-            s, c = scaled_trig_rows(self._checked_block(arr, lo, hi), st["alpha"], st["sa"])
-            y, dys = kernel.contract_derivatives(s, c, s2, directions, nets, values=rational, ws=ws)
+            s, c = trig_of_rows(self._checked_rows(arr, lo, hi), st["alpha"], st["sa"])
+            if jit is not None:
+                m = st["daug_t"].shape[0]
+                y = ws.get("jv", (m, hi - lo)) if rational else None
+                y, dys = jit.derivatives(s, c, s2, dirs, st["daug_t"], ws.get("jd", (len(directions), m, hi - lo)), y)
+            else:
+                y, dys = kernel.contract_derivatives(s, c, s2, directions, nets, values=rational, ws=ws)
             if rational:  # (d, P) rows
                 den = y[-1]
                 pt = y[:-1] / den
@@ -260,7 +297,7 @@ class Patch:
                 for o, r in zip(outs, res):
                     o[lo:hi] = r.T
 
-        run_blocks(arr.shape[0], work)
+        run_blocks(arr.shape[0], work, JIT_BLOCK if jit is not None else BLOCK)
         return outs, st["dexp"]
 
     # --- evaluation -------------------------------------------------------------------------------
