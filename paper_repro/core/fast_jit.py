@@ -199,6 +199,36 @@ def _d2_k3(tab, dtab, i0, i1, i2, n, e, c0, c1, c2, acc):
         acc[5, p] += c2 * o2
 
 
+def _d2uv_k3(tab, dtab, i0, i1, i2, n, c0, c1, c2, acc):
+    """:func:`_d2_k3` for the directions 'u' = (1, 0, -1) and 'v' = (0, 1, -1) (the normals): the brackets
+    ``q_0 - q_2`` and ``q_1 - q_2``, the same bits as the general form (its products by 1, 0 and -1 are exact)."""
+    for p in range(n):
+        g0 = tab[i0, p]
+        g1 = tab[i1, p]
+        g2 = tab[i2, p]
+        q2 = (dtab[i2, p] * g0) * g1
+        o = (dtab[i0, p] * g1) * g2 - q2
+        o2 = (dtab[i1, p] * g0) * g2 - q2
+        acc[0, p] += c0 * o
+        acc[1, p] += c1 * o
+        acc[2, p] += c2 * o
+        acc[3, p] += c0 * o2
+        acc[4, p] += c1 * o2
+        acc[5, p] += c2 * o2
+
+
+def _d1uv_k3(tab, dtab, ix, iy, iz, n, c0, c1, c2, acc):
+    """:func:`_d1z_k3` with e_x = 1, e_z = -1 (the named directions): ``(dg_x g_y) g_z - (dg_z g_x) g_y``."""
+    for p in range(n):
+        gx = tab[ix, p]
+        gy = tab[iy, p]
+        gz = tab[iz, p]
+        o = (dtab[ix, p] * gy) * gz - (dtab[iz, p] * gx) * gy
+        acc[0, p] += c0 * o
+        acc[1, p] += c1 * o
+        acc[2, p] += c2 * o
+
+
 def _derivs_impl(S, C, pa, pb, var_of, smax, cmax, idx, net, s2, dirs, values, outs, vals):
     """Per direction row of ``dirs`` ((D, 3) floats), ``outs[r, k, p] = sum_f net[k, f] * bracket_r,f(p)`` (2s times
     the directional derivative of B_f), and with ``values`` also ``vals[k, p] = sum_f net[k, f] B_f(p)``: rows, the
@@ -243,8 +273,15 @@ def _derivs_impl(S, C, pa, pb, var_of, smax, cmax, idx, net, s2, dirs, values, o
                 zero = 0 if dirs[0, 0] == 0.0 else (1 if dirs[0, 1] == 0.0 else 2)
             x = (zero + 1) % 3
             z = (zero + 2) % 3
+            unit = zero >= 0 and dirs[0, x] == 1.0 and dirs[0, z] == -1.0
+            uv = (D == 2 and dirs[0, 0] == 1.0 and dirs[0, 1] == 0.0 and dirs[0, 2] == -1.0
+                  and dirs[1, 0] == 0.0 and dirs[1, 1] == 1.0 and dirs[1, 2] == -1.0)
             for f in range(F):
-                if zero >= 0:
+                if unit:
+                    _d1uv_k3(tab, dtab, idx[x, f], idx[zero, f], idx[z, f], n, net[0, f], net[1, f], net[2, f], acc3)
+                elif uv:
+                    _d2uv_k3(tab, dtab, idx[0, f], idx[1, f], idx[2, f], n, net[0, f], net[1, f], net[2, f], acc3)
+                elif zero >= 0:
                     _d1z_k3(tab, dtab, idx[x, f], idx[zero, f], idx[z, f], n, dirs[0, x], dirs[0, z],
                             net[0, f], net[1, f], net[2, f], acc3)
                 elif D == 1:
@@ -304,18 +341,21 @@ _COMPILED: dict | None = None
 def _compiled() -> dict:
     """The compiled functions, built on first use.  numba's on-disk cache goes to ``<cache_dir>/numba``
     (:func:`paper_repro.util.cache.cache_dir`; ``NUMBA_CACHE_DIR`` if set), never into the install location:
-    a fresh process loads them in a fraction of a second instead of compiling for about 8 s."""
+    a fresh process loads them in a fraction of a second instead of compiling for about 10 s.  With
+    ``PAPER_REPRO_NO_CACHE`` set nothing is written (every process compiles).  No fast-math: no reassociation, no
+    fused multiply-add, so the bits do not depend on the CPU's instruction set."""
     global _COMPILED
     if _COMPILED is None:
         import numba
 
-        if not os.environ.get("NUMBA_CACHE_DIR"):
-            from paper_repro.util.cache import cache_dir
+        from paper_repro.util.cache import cache_dir, enabled
 
+        if not os.environ.get("NUMBA_CACHE_DIR"):
             numba.config.CACHE_DIR = str(cache_dir() / "numba")
-        jit = numba.njit(nogil=True, cache=True, fastmath=False, error_model="numpy")
+        jit = numba.njit(nogil=True, cache=enabled(), fastmath=False, error_model="numpy")
         g = globals()
-        for name in ("_powers_tile", "_tables", "_dtables", "_vgroup", "_coefs", "_d1_k3", "_d1z_k3", "_d2_k3"):
+        for name in ("_powers_tile", "_tables", "_dtables", "_vgroup", "_coefs", "_d1_k3", "_d1z_k3", "_d2_k3",
+                     "_d1uv_k3", "_d2uv_k3"):
             g[name] = jit(g[name + "_py"])
         _COMPILED = {"values": jit(_values_impl), "derivatives": jit(_derivs_impl)}
     return _COMPILED
@@ -323,6 +363,7 @@ def _compiled() -> dict:
 
 _powers_tile_py, _tables_py, _dtables_py = _powers_tile, _tables, _dtables
 _vgroup_py, _coefs_py, _d1_k3_py, _d2_k3_py, _d1z_k3_py = _vgroup, _coefs, _d1_k3, _d2_k3, _d1z_k3
+_d1uv_k3_py, _d2uv_k3_py = _d1uv_k3, _d2uv_k3
 
 
 class JitKernel:
