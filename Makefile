@@ -67,7 +67,8 @@ test-min:                      ## the fast suite with the lowest versions pyproj
 	  --only limit_formula bezier_conversion dimension symmetry
 
 # the other supported interpreters: those on PATH, or PYTHONS="path/to/python3.12 path/to/python3.13"
-PYTHONS ?= $(shell command -v python3.12 python3.13 2>/dev/null)
+# (one `command -v` per name: dash prints only the first of several)
+PYTHONS ?= $(foreach p,python3.12 python3.13,$(shell command -v $(p) 2>/dev/null))
 test-pythons:                  ## the fast suite on every other supported interpreter found (python3.12, python3.13)
 	@if [ -z "$(strip $(PYTHONS))" ]; then echo "test-pythons: no python3.12 or python3.13 found (set PYTHONS=...)"; fi
 	@for p in $(PYTHONS) ""; do [ -n "$$p" ] || continue; echo "== make test PYTHON=$$p"; \
