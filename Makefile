@@ -67,8 +67,11 @@ test-min:                      ## the fast suite with the lowest versions pyproj
 	  --only limit_formula bezier_conversion dimension symmetry
 
 # the other supported interpreters: those on PATH, or PYTHONS="path/to/python3.12 path/to/python3.13"
-# (one `command -v` per name: dash prints only the first of several)
-PYTHONS ?= $(foreach p,python3.12 python3.13,$(shell command -v $(p) 2>/dev/null))
+# (per name: the one on PATH if it runs -- a pyenv shim of a version that is not selected does not -- else
+# pyenv's own build; one `command -v` per name, since dash prints only the first of several)
+_runs = $(shell $(1) -c '' >/dev/null 2>&1 && echo $(1))
+_find = $(or $(call _runs,$(shell command -v $(1) 2>/dev/null)),$(call _runs,$(firstword $(wildcard $(HOME)/.pyenv/versions/*/bin/$(1)))))
+PYTHONS ?= $(strip $(foreach p,python3.12 python3.13,$(call _find,$(p))))
 test-pythons:                  ## the fast suite on every other supported interpreter found (python3.12, python3.13)
 	@if [ -z "$(strip $(PYTHONS))" ]; then echo "test-pythons: no python3.12 or python3.13 found (set PYTHONS=...)"; fi
 	@for p in $(PYTHONS) ""; do [ -n "$$p" ] || continue; echo "== make test PYTHON=$$p"; \
