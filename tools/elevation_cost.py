@@ -18,7 +18,7 @@ import platform
 import time
 from pathlib import Path
 
-from paper_repro.core.elevation import _ball_solve, next_precision, start_precision
+from paper_repro.core.elevation import certified_solve, start_precision
 from paper_repro.core.labels import delta
 
 ALPHAS = (("1", 1.0), ("1e-3", 1e-3), ("1e-9", 1e-9), ("pi - 1e-5", math.pi - 1e-5))
@@ -32,17 +32,11 @@ def main() -> None:
     rows = []
     for n in range(1, args.n_max + 1):
         for name, a in ALPHAS:
-            prec, solves, t0 = start_precision(n, a), 0, time.perf_counter()
-            first = prec
-            while True:
-                solves += 1
-                e, bits = _ball_solve(n, a, prec)
-                if e is not None:
-                    break
-                prec = max(prec + 64, next_precision(prec, bits))
+            first, t0 = start_precision(n, a), time.perf_counter()
+            _, prec, lost, solves = certified_solve(n, a, child=False)
             dt = time.perf_counter() - t0
-            rows.append((n, delta(n + 1), name, first, prec - bits, solves, dt))
-            print(f"n = {n:2d}  alpha = {name:9s}  start {first:5d} bits  lost {prec - bits:5d}  solves {solves}  "
+            rows.append((n, delta(n + 1), name, first, lost, solves, dt))
+            print(f"n = {n:2d}  alpha = {name:9s}  start {first:5d} bits  lost {lost:5d}  solves {solves}  "
                   f"{dt:7.2f} s", flush=True)
     load = os.getloadavg()[0] if hasattr(os, "getloadavg") else float("nan")
     lines = ["# Order elevation: cost of the certified ball solve", "",

@@ -134,22 +134,32 @@ def next_precision(prec: int, bits: int) -> int:
     return 64 * math.ceil((1.25 * (prec - bits) + 96) / 64)
 
 
+def certified_solve(n: int, alpha: float, child: bool = True) -> tuple[np.ndarray, int, int, int]:
+    """E from the certified ball solve: ``(E, precision, bits lost, solves)``, starting at :func:`start_precision`
+    and raising it by :func:`next_precision` until every entry is certified to 64 bits.  With ``child``, solves
+    whose work exceeds :data:`CHILD_WORK` run in a child process (Ctrl-C stops them); ``tools/elevation_cost.py``
+    measures the same loop in-process."""
+    prec, solves = start_precision(n, alpha), 0
+    while prec <= MAX_PREC:
+        solves += 1
+        if child and delta(n + 1) ** 3 * prec > CHILD_WORK:
+            e, bits = interruptible(_ball_solve_task, (n, alpha, prec))
+        else:
+            e, bits = _ball_solve(n, alpha, prec)
+        if e is not None:
+            return e, prec, prec - bits, solves
+        prec = max(prec + 64, next_precision(prec, bits))
+    raise ArithmeticError(f"elevation {n}->{n + 1} at alpha = {alpha!r}: not certified at {MAX_PREC} bits")
+
+
 @lru_cache(maxsize=64)
 def _elevation_matrix_float(n: int, alpha: float) -> np.ndarray:
     """E rounded once to float64 from a certified ball solve (cached on disk: the exact bits are deterministic)."""
     a = max(alpha, ALPHA_FLAT)
 
     def compute():
-        prec = start_precision(n, a)
-        while prec <= MAX_PREC:
-            if delta(n + 1) ** 3 * prec > CHILD_WORK:
-                e, bits = interruptible(_ball_solve_task, (n, a, prec))
-            else:
-                e, bits = _ball_solve(n, a, prec)
-            if e is not None:
-                return {"prec": prec, "rows": [[x.hex() for x in row] for row in e]}
-            prec = max(prec + 64, next_precision(prec, bits))
-        raise ArithmeticError(f"elevation {n}->{n + 1} at alpha = {a!r}: not certified at {MAX_PREC} bits")
+        e, prec, _, _ = certified_solve(n, a)
+        return {"prec": prec, "rows": [[x.hex() for x in row] for row in e]}
 
     stored = cached("elevation_matrix", {"n": n, "alpha": a.hex(), "schedule": 2}, compute)
     out = np.array([[float.fromhex(x) for x in row] for row in stored["rows"]])

@@ -351,7 +351,7 @@ def _compiled() -> dict:
         from paper_repro.util.cache import cache_dir, enabled
 
         if not os.environ.get("NUMBA_CACHE_DIR"):
-            numba.config.CACHE_DIR = str(cache_dir() / "numba")
+            setattr(numba.config, "CACHE_DIR", str(cache_dir() / "numba"))  # noqa: B010 (config has no stubs)
         jit = numba.njit(nogil=True, cache=enabled(), fastmath=False, error_model="numpy")
         g = globals()
         for name in ("_powers_tile", "_tables", "_dtables", "_vgroup", "_coefs", "_d1_k3", "_d1z_k3", "_d2_k3",

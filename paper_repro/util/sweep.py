@@ -141,7 +141,7 @@ def _in_background(func: Callable[[], object], seconds: float) -> None:
     t.join(timeout=seconds)
 
 
-def _terminate(ex: ProcessPoolExecutor) -> None:
+def _terminate(ex: Executor) -> None:
     """Stop a local pool now: worker processes terminated first (so nothing waits on them), then pending futures
     cancelled.  The executor's own shutdown runs in a daemon thread given half a second: if Ctrl-C arrived while
     the executor held one of its internal locks (e.g. while it was starting a worker), shutting it down from this
