@@ -290,10 +290,6 @@ def thread_scaling(ns: list[int], points: int, reps: int = 6) -> dict:
 FLOOR_BLOCKS = (256, 1024, 8192)
 
 
-def _floor_block() -> str:
-    return ", ".join(map(str, FLOOR_BLOCKS))
-
-
 def _busy(seconds: float) -> None:  # pragma: no cover - runs in the load processes
     end = time.monotonic() + seconds
     while time.monotonic() < end:
@@ -592,7 +588,7 @@ def main(argv: list[str] | None = None) -> int:
            "ratios": ratio_runs(ns, points, args.repeat),
            "threads": thread_scaling(ns if args.quick else [3, 6, 10], points, 2 if args.quick else 6),
            "floor": floor_estimate([3, 6] if not args.quick else [3], points, args.repeat),
-           "floor_block": _floor_block(),
+           "floor_block": ", ".join(map(str, FLOOR_BLOCKS)),
            "memory": memory_rows(3, [10**4, 10**5] if args.quick else [10**5, 10**7]),
            "mp": mp_route(ns, points, mp_points=20 if args.quick else 100)}
     if not args.patch_only:

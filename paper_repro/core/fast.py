@@ -431,13 +431,14 @@ class FloatKernel:
 
     def blocks(self, uvw: np.ndarray, block: int = BLOCK, alpha: float | None = None):
         """Yield ``(slice, basis values (P, F))`` per block of the ``(P, 3)`` points (scaled sines when ``alpha``)."""
+        sa = math.sin(alpha / 2) if alpha is not None else 0.0
         for start in range(0, uvw.shape[0], block):
             blk = uvw[start:start + block]
             if alpha is None:
                 half = np.ascontiguousarray(blk.T) * 0.5
                 s, c = np.sin(half), np.cos(half)
             else:
-                s, c = scaled_trig_rows(blk, alpha, math.sin(alpha / 2))
+                s, c = scaled_trig_rows(blk, alpha, sa)
             yield slice(start, start + blk.shape[0]), self.basis_rows(s, c).T.copy()
 
     def contract(self, uvw: np.ndarray, net: np.ndarray, weights: np.ndarray | None = None,
@@ -449,6 +450,7 @@ class FloatKernel:
         patch ``weights`` are ``coef_f * w_f`` and ``net`` rows ``coef_f * w_f * point_f``.
         """
         out = np.empty((uvw.shape[0], net.shape[1]))
+        sa = math.sin(alpha / 2) if alpha is not None else 0.0
         aug_t = np.ascontiguousarray((net if weights is None else np.column_stack([net, weights])).T)
 
         def work(lo: int, hi: int, ws: Workspace) -> None:
@@ -457,7 +459,7 @@ class FloatKernel:
                 half = np.ascontiguousarray(blk.T) * 0.5
                 s, c = np.sin(half), np.cos(half)
             else:
-                s, c = scaled_trig_rows(blk, alpha, math.sin(alpha / 2))
+                s, c = scaled_trig_rows(blk, alpha, sa)
             y = aug_t @ self.basis_rows(s, c, ws)
             if weights is None:
                 out[lo:hi] = y.T

@@ -75,7 +75,7 @@ def _tables(S, C, lo, n, pa, pb, var_of, smax, cmax, sp, cp, tab):
             tab[q, p] = sp[v, a, p] * cp[v, b, p]
 
 
-def _dtables(S, C, lo, n, pa, pb, var_of, s2, sp, cp, dtab):
+def _dtables(n, pa, pb, var_of, s2, sp, cp, dtab):
     """dtab[q] = a S^(a-1) c^(b+1) - (b s2) S^(a+1) c^(b-1): the operations of FloatKernel._dtable, in its order."""
     for q in range(pa.shape[0]):
         v = var_of[q]
@@ -199,36 +199,6 @@ def _d2_k3(tab, dtab, i0, i1, i2, n, e, c0, c1, c2, acc):
         acc[5, p] += c2 * o2
 
 
-def _d2uv_k3(tab, dtab, i0, i1, i2, n, c0, c1, c2, acc):
-    """:func:`_d2_k3` for the directions 'u' = (1, 0, -1) and 'v' = (0, 1, -1) (the normals): the brackets
-    ``q_0 - q_2`` and ``q_1 - q_2``, the same bits as the general form (its products by 1, 0 and -1 are exact)."""
-    for p in range(n):
-        g0 = tab[i0, p]
-        g1 = tab[i1, p]
-        g2 = tab[i2, p]
-        q2 = (dtab[i2, p] * g0) * g1
-        o = (dtab[i0, p] * g1) * g2 - q2
-        o2 = (dtab[i1, p] * g0) * g2 - q2
-        acc[0, p] += c0 * o
-        acc[1, p] += c1 * o
-        acc[2, p] += c2 * o
-        acc[3, p] += c0 * o2
-        acc[4, p] += c1 * o2
-        acc[5, p] += c2 * o2
-
-
-def _d1uv_k3(tab, dtab, ix, iy, iz, n, c0, c1, c2, acc):
-    """:func:`_d1z_k3` with e_x = 1, e_z = -1 (the named directions): ``(dg_x g_y) g_z - (dg_z g_x) g_y``."""
-    for p in range(n):
-        gx = tab[ix, p]
-        gy = tab[iy, p]
-        gz = tab[iz, p]
-        o = (dtab[ix, p] * gy) * gz - (dtab[iz, p] * gx) * gy
-        acc[0, p] += c0 * o
-        acc[1, p] += c1 * o
-        acc[2, p] += c2 * o
-
-
 def _derivs_impl(S, C, pa, pb, var_of, smax, cmax, idx, net, s2, dirs, values, outs, vals):
     """Per direction row of ``dirs`` ((D, 3) floats), ``outs[r, k, p] = sum_f net[k, f] * bracket_r,f(p)`` (2s times
     the directional derivative of B_f), and with ``values`` also ``vals[k, p] = sum_f net[k, f] B_f(p)``: rows, the
@@ -247,6 +217,8 @@ def _derivs_impl(S, C, pa, pb, var_of, smax, cmax, idx, net, s2, dirs, values, o
     cp = np.empty((3, top + 2, TILE))
     tab = np.empty((pa.shape[0], TILE))
     dtab = np.empty((pa.shape[0], TILE))
+    smax1 = smax + 1
+    cmax1 = cmax + 1
     fast = m == 3 and not values and D <= 2
     g = np.empty(TILE)
     o = np.empty(TILE)
@@ -256,16 +228,8 @@ def _derivs_impl(S, C, pa, pb, var_of, smax, cmax, idx, net, s2, dirs, values, o
     vacc = np.empty((m, TILE))
     for lo in range(0, P, TILE):
         n = min(TILE, P - lo)
-        for v in range(3):
-            _powers_tile(S[v], smax[v] + 1, sp[v], lo, n)
-            _powers_tile(C[v], cmax[v] + 1, cp[v], lo, n)
-        for q in range(pa.shape[0]):
-            v = var_of[q]
-            a = pa[q]
-            b = pb[q]
-            for p in range(n):
-                tab[q, p] = sp[v, a, p] * cp[v, b, p]
-        _dtables(S, C, lo, n, pa, pb, var_of, s2, sp, cp, dtab)
+        _tables(S, C, lo, n, pa, pb, var_of, smax1, cmax1, sp, cp, tab)  # power rows one further
+        _dtables(n, pa, pb, var_of, s2, sp, cp, dtab)
         if fast:
             acc3[:, :n] = 0.0
             zero = -1  # one direction with exactly one zero component: two partial products
@@ -273,15 +237,8 @@ def _derivs_impl(S, C, pa, pb, var_of, smax, cmax, idx, net, s2, dirs, values, o
                 zero = 0 if dirs[0, 0] == 0.0 else (1 if dirs[0, 1] == 0.0 else 2)
             x = (zero + 1) % 3
             z = (zero + 2) % 3
-            unit = zero >= 0 and dirs[0, x] == 1.0 and dirs[0, z] == -1.0
-            uv = (D == 2 and dirs[0, 0] == 1.0 and dirs[0, 1] == 0.0 and dirs[0, 2] == -1.0
-                  and dirs[1, 0] == 0.0 and dirs[1, 1] == 1.0 and dirs[1, 2] == -1.0)
             for f in range(F):
-                if unit:
-                    _d1uv_k3(tab, dtab, idx[x, f], idx[zero, f], idx[z, f], n, net[0, f], net[1, f], net[2, f], acc3)
-                elif uv:
-                    _d2uv_k3(tab, dtab, idx[0, f], idx[1, f], idx[2, f], n, net[0, f], net[1, f], net[2, f], acc3)
-                elif zero >= 0:
+                if zero >= 0:
                     _d1z_k3(tab, dtab, idx[x, f], idx[zero, f], idx[z, f], n, dirs[0, x], dirs[0, z],
                             net[0, f], net[1, f], net[2, f], acc3)
                 elif D == 1:
@@ -354,8 +311,7 @@ def _compiled() -> dict:
             setattr(numba.config, "CACHE_DIR", str(cache_dir() / "numba"))  # noqa: B010 (config has no stubs)
         jit = numba.njit(nogil=True, cache=enabled(), fastmath=False, error_model="numpy")
         g = globals()
-        for name in ("_powers_tile", "_tables", "_dtables", "_vgroup", "_coefs", "_d1_k3", "_d1z_k3", "_d2_k3",
-                     "_d1uv_k3", "_d2uv_k3"):
+        for name in ("_powers_tile", "_tables", "_dtables", "_vgroup", "_coefs", "_d1_k3", "_d1z_k3", "_d2_k3"):
             g[name] = jit(g[name + "_py"])
         _COMPILED = {"values": jit(_values_impl), "derivatives": jit(_derivs_impl)}
     return _COMPILED
@@ -363,7 +319,6 @@ def _compiled() -> dict:
 
 _powers_tile_py, _tables_py, _dtables_py = _powers_tile, _tables, _dtables
 _vgroup_py, _coefs_py, _d1_k3_py, _d2_k3_py, _d1z_k3_py = _vgroup, _coefs, _d1_k3, _d2_k3, _d1z_k3
-_d1uv_k3_py, _d2uv_k3_py = _d1uv_k3, _d2uv_k3
 
 
 class JitKernel:
