@@ -87,6 +87,23 @@ def test_derivative_brackets_within_bound(n, alpha, seed, dirs, values):
         assert np.all(np.abs(vals - ref_vals) <= 2 * _gamma(kern.F) * (np.abs(net) @ basis))
 
 
+@pytest.mark.parametrize("n", [1, 3, 6, 10])
+def test_normals_pass_has_the_general_bits(n):
+    """The (u, v) pass of the normals (``q_0 - q_2``, ``q_1 - q_2``) against the general two-direction pass: with
+    the directions doubled the general pass computes exactly twice every product and sum (scaling by 2 is exact),
+    so halving it must give the (u, v) pass's bits."""
+    kern = FloatKernel(exponent_matrix(n))
+    jit = fast_jit.JitKernel(kern)
+    s, c = _rows(2 * fast_jit.TILE + 7, 0.9, n)
+    s2 = math.sin(0.45) ** 2
+    net = np.random.default_rng(n).normal(size=(3, kern.F))
+    uv = np.empty((2, 3, s.shape[1]))
+    jit.derivatives(s, c, s2, np.array([(1, 0, -1), (0, 1, -1)], float), net, uv)
+    general = np.empty_like(uv)
+    jit.derivatives(s, c, s2, np.array([(2, 0, -2), (0, 2, -2)], float), net, general)
+    assert np.array_equal(uv, general / 2)
+
+
 def _patch(n, alpha, rational, seed=0):
     rng = np.random.default_rng(seed)
     w = rng.uniform(0.5, 2, size=delta(n)) if rational else None

@@ -232,11 +232,13 @@ _REFERENCE_WORK = ("import numpy as np, time\nx = np.random.default_rng(0).rando
                    "for _ in range(3000):\n    np.sin(x)\nprint(time.perf_counter() - t)")
 
 
-def thread_scaling(ns: list[int], points: int, reps: int = 6) -> dict:
-    """Patch point evaluation with one thread and with the default threads, interleaved (``reps`` rounds), idle
-    and with one busy process per core minus one; and the machine's own reference: the same fixed numeric work in
-    one process, then in as many processes as cores at once (the throughput gain the hardware gives, the ceiling
-    for threads)."""
+def interleaved(ns: list[int], points: int, reps: int = 6) -> dict:
+    """Rounds (``reps``) of: Patch point evaluation with one thread, the same with the default threads, the
+    derivative along u and the normals (default threads), idle and with one busy process per core minus one.
+    Alternating the four in every round exposes them to the same load, so the ratios (threads' speed-up;
+    derivative and normals over a point evaluation, per round) are not skewed by a load that changes between
+    separate best-of runs.  Also the machine's own reference: the same fixed numeric work in one process, then in
+    as many processes as cores at once (the throughput gain the hardware gives, the ceiling for threads)."""
     import subprocess
     import sys
 
@@ -262,22 +264,32 @@ def thread_scaling(ns: list[int], points: int, reps: int = 6) -> dict:
             for n in ns:
                 patch = Patch(n, alpha, np.random.default_rng(n).normal(size=(delta(n), 3)))
                 patch(pts[:10])
-                times: dict[str, list[float]] = {"1": [], "default": []}
+                patch.normals(pts[:10])
+                work = {"1": lambda p=patch: p(pts), "default": lambda p=patch: p(pts),
+                        "derivative": lambda p=patch: p.derivative(pts, "u"), "normals": lambda p=patch: p.normals(pts)}
+                times: dict[str, list[float]] = {k: [] for k in work}
                 for _ in range(reps):
-                    for k in ("1", "default"):
+                    for k, f in work.items():
                         if k == "1":
                             os.environ["PAPER_REPRO_THREADS"] = "1"
                         try:
-                            times[k].append(_best(lambda p=patch: p(pts), 1))
+                            times[k].append(_best(f, 1))
                         finally:
                             os.environ.pop("PAPER_REPRO_THREADS", None)
-                one, many = times["1"], times["default"]
+                one, many = times["1"], np.array(times["default"])
+                per_round = {k: np.array(times[k]) / many for k in ("derivative", "normals")}
                 row = {"load": load, "n": n, "one_min_s": round(min(one), 4), "default_min_s": round(min(many), 4),
                        "speedup_min": round(min(one) / min(many), 2),
                        "speedup_median": round(float(np.median(one) / np.median(many)), 2)}
+                for k, r in per_round.items():
+                    row[f"{k}_min_s"] = round(min(times[k]), 4)
+                    row[f"{k}_over_point_median"] = round(float(np.median(r)), 2)
+                    row[f"{k}_over_point_max"] = round(float(np.max(r)), 2)
                 out["rows"].append(row)
-                print(f"  threads {load} n={n}: 1 thread {min(one):.3f}s, default {min(many):.3f}s, speed-up "
-                      f"{row['speedup_min']} (min) {row['speedup_median']} (median)", flush=True)
+                print(f"  interleaved {load} n={n}: 1 thread {min(one):.3f}s, default {min(many):.3f}s, speed-up "
+                      f"{row['speedup_min']} (min) {row['speedup_median']} (median); derivative / point "
+                      f"{row['derivative_over_point_median']} (median), normals / point "
+                      f"{row['normals_over_point_median']} (median)", flush=True)
         finally:
             for p in busy:
                 p.terminate()
@@ -503,6 +515,17 @@ def markdown(rep: dict) -> str:
         out += [f"| {r['load']} | {r['n']} | {r['one_min_s']} | {r['default_min_s']} | {r['speedup_min']}× | "
                 f"{r['speedup_median']}× |" for r in th["rows"]]
         out.append("")
+        if "normals_over_point_median" in th["rows"][0]:
+            out += ["## Derivative and normals against a point evaluation, interleaved", "",
+                    "In the same rounds as the threads' table (default threads): `Patch.derivative(points, 'u')` "
+                    "and `Patch.normals(points)` each divided by the point evaluation of the same round (goal: "
+                    "within 2×). The per-setting tables above divide best-of times taken minutes apart.", "",
+                    "| load | n | point, min (s) | derivative, min (s) | normals, min (s) | derivative / point "
+                    "(median) | (max) | normals / point (median) | (max) |", "|---|---|---|---|---|---|---|---|---|"]
+            out += [f"| {r['load']} | {r['n']} | {r['default_min_s']} | {r['derivative_min_s']} | "
+                    f"{r['normals_min_s']} | {r['derivative_over_point_median']} | {r['derivative_over_point_max']} | "
+                    f"**{r['normals_over_point_median']}** | {r['normals_over_point_max']} |" for r in th["rows"]]
+            out.append("")
     out += ["## The physical floor (one thread)", "",
             f"Micro-benchmarks on blocks of {rep.get('floor_block', 1024)} points (each operation at the size where "
             "it is fastest per point), scaled to the point count: three sin/cos pairs, "
@@ -586,7 +609,7 @@ def main(argv: list[str] | None = None) -> int:
     rep = {"machine": machine(), "repeat": args.repeat, "points": points, "goals": GOALS,
            "load_average_at_start": list(os.getloadavg()),
            "ratios": ratio_runs(ns, points, args.repeat),
-           "threads": thread_scaling(ns if args.quick else [3, 6, 10], points, 2 if args.quick else 6),
+           "threads": interleaved(ns if args.quick else [3, 6, 10], points, 2 if args.quick else 6),
            "floor": floor_estimate([3, 6] if not args.quick else [3], points, args.repeat),
            "floor_block": ", ".join(map(str, FLOOR_BLOCKS)),
            "memory": memory_rows(3, [10**4, 10**5] if args.quick else [10**5, 10**7]),

@@ -199,6 +199,24 @@ def _d2_k3(tab, dtab, i0, i1, i2, n, e, c0, c1, c2, acc):
         acc[5, p] += c2 * o2
 
 
+def _uv_k3(tab, dtab, i0, i1, i2, n, c0, c1, c2, acc):
+    """:func:`_d2_k3` for the directions u = (1, 0, -1) and v = (0, 1, -1) (normals): ``q_0 - q_2`` and
+    ``q_1 - q_2``, the same bits as the general bracket (a product by 1 is exact, a product by 0 adds a zero)."""
+    for p in range(n):
+        g0 = tab[i0, p]
+        g1 = tab[i1, p]
+        g2 = tab[i2, p]
+        q2 = (dtab[i2, p] * g0) * g1
+        o = (dtab[i0, p] * g1) * g2 - q2
+        o2 = (dtab[i1, p] * g0) * g2 - q2
+        acc[0, p] += c0 * o
+        acc[1, p] += c1 * o
+        acc[2, p] += c2 * o
+        acc[3, p] += c0 * o2
+        acc[4, p] += c1 * o2
+        acc[5, p] += c2 * o2
+
+
 def _derivs_impl(S, C, pa, pb, var_of, smax, cmax, idx, net, s2, dirs, values, outs, vals):
     """Per direction row of ``dirs`` ((D, 3) floats), ``outs[r, k, p] = sum_f net[k, f] * bracket_r,f(p)`` (2s times
     the directional derivative of B_f), and with ``values`` also ``vals[k, p] = sum_f net[k, f] B_f(p)``: rows, the
@@ -207,7 +225,8 @@ def _derivs_impl(S, C, pa, pb, var_of, smax, cmax, idx, net, s2, dirs, values, o
     Per function and point the partial products ``q_v = dg_v g_w1 g_w2`` (w1 < w2), the bracket
     ``(d_0 q_0 + d_1 q_1) + d_2 q_2`` of each direction, contracted with the net.  Three coordinates with one or two
     directions and no values (the common case: a 3D patch, its derivative or normals) run in one straight pass per
-    function (:func:`_d1_k3`, :func:`_d2_k3`); otherwise the same products go through rows of the tile."""
+    function (:func:`_d1_k3`, :func:`_d1z_k3`, :func:`_d2_k3`, and :func:`_uv_k3` for the normals' u and v);
+    otherwise the same products go through rows of the tile."""
     P = S.shape[1]
     m = net.shape[0]
     F = idx.shape[1]
@@ -237,10 +256,14 @@ def _derivs_impl(S, C, pa, pb, var_of, smax, cmax, idx, net, s2, dirs, values, o
                 zero = 0 if dirs[0, 0] == 0.0 else (1 if dirs[0, 1] == 0.0 else 2)
             x = (zero + 1) % 3
             z = (zero + 2) % 3
+            uv = (D == 2 and dirs[0, 0] == 1.0 and dirs[0, 1] == 0.0 and dirs[0, 2] == -1.0
+                  and dirs[1, 0] == 0.0 and dirs[1, 1] == 1.0 and dirs[1, 2] == -1.0)
             for f in range(F):
                 if zero >= 0:
                     _d1z_k3(tab, dtab, idx[x, f], idx[zero, f], idx[z, f], n, dirs[0, x], dirs[0, z],
                             net[0, f], net[1, f], net[2, f], acc3)
+                elif uv:
+                    _uv_k3(tab, dtab, idx[0, f], idx[1, f], idx[2, f], n, net[0, f], net[1, f], net[2, f], acc3)
                 elif D == 1:
                     _d1_k3(tab, dtab, idx[0, f], idx[1, f], idx[2, f], n, dirs[0, 0], dirs[0, 1], dirs[0, 2],
                            net[0, f], net[1, f], net[2, f], acc3)
@@ -311,7 +334,8 @@ def _compiled() -> dict:
             setattr(numba.config, "CACHE_DIR", str(cache_dir() / "numba"))  # noqa: B010 (config has no stubs)
         jit = numba.njit(nogil=True, cache=enabled(), fastmath=False, error_model="numpy")
         g = globals()
-        for name in ("_powers_tile", "_tables", "_dtables", "_vgroup", "_coefs", "_d1_k3", "_d1z_k3", "_d2_k3"):
+        for name in ("_powers_tile", "_tables", "_dtables", "_vgroup", "_coefs", "_d1_k3", "_d1z_k3", "_d2_k3",
+                     "_uv_k3"):
             g[name] = jit(g[name + "_py"])
         _COMPILED = {"values": jit(_values_impl), "derivatives": jit(_derivs_impl)}
     return _COMPILED
@@ -319,6 +343,7 @@ def _compiled() -> dict:
 
 _powers_tile_py, _tables_py, _dtables_py = _powers_tile, _tables, _dtables
 _vgroup_py, _coefs_py, _d1_k3_py, _d2_k3_py, _d1z_k3_py = _vgroup, _coefs, _d1_k3, _d2_k3, _d1z_k3
+_uv_k3_py = _uv_k3
 
 
 class JitKernel:
