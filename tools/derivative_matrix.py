@@ -11,7 +11,7 @@ counted as zero (not proven zero).
 
 Writes ``reports/derivative_matrix.md`` (timings: a report, not data).  Usage::
 
-    .venv/bin/python tools/derivative_matrix.py [--ns 1,2,3,4,6] [--alpha 1]
+    .venv/bin/python tools/derivative_matrix.py [--ns 1,2,3,4,5,6,8,10] [--alphas 1,1e-3] [--ns-small 1,2,3,4,6]
 """
 
 from __future__ import annotations
@@ -66,31 +66,40 @@ def pattern(c: arb_mat) -> tuple[list[int], int, int]:
     return cols, zeros, undecided
 
 
-def main() -> None:
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--ns", default="1,2,3,4,6")
-    ap.add_argument("--alpha", type=float, default=1.0)
-    ap.add_argument("--out", default="reports/derivative_matrix.md")
-    args = ap.parse_args()
-    lines = ["# The derivative along u as a matrix of the same order (tools/derivative_matrix.py)", "",
-             f"alpha = {args.alpha!r}; C with d/du T-bar_n = T-bar_n C, solved in ball arithmetic (collocation at "
-             "the elevation solve's alpha-independent points); 'nonzero': the ball excludes 0; 'zero': the ball "
-             "contains 0 with radius < 2^-100 (not proven); 'undecided': neither. Seconds: one solve, this machine.",
-             "", "| n | δ_n | bits | nonzero | of δ_n² | max per column | zero | undecided | seconds |",
-             "|---|---|---|---|---|---|---|---|---|"]
-    for n in (int(x) for x in args.ns.split(",")):
+def table(ns: list[int], alpha: float) -> list[str]:
+    """The report's table for one alpha (printed as it goes)."""
+    lines = [f"## alpha = {alpha!r}", "", "| n | δ_n | bits | nonzero | of δ_n² | max per column | zero | undecided | "
+             "seconds |", "|---|---|---|---|---|---|---|---|---|"]
+    for n in ns:
         prec = 256 + 32 * n
-        c, secs = derivative_matrix(n, args.alpha, prec)
+        c, secs = derivative_matrix(n, alpha, prec)
         while c is None or pattern(c)[2]:
             prec *= 2
-            c, secs = derivative_matrix(n, args.alpha, prec)
+            c, secs = derivative_matrix(n, alpha, prec)
         cols, zeros, undecided = pattern(c)
         row = (f"| {n} | {delta(n)} | {prec} | {sum(cols)} | {sum(cols) / delta(n) ** 2:.3f} | {max(cols)} | "
                f"{zeros} | {undecided} | {secs:.2f} |")
         print(row, flush=True)
         lines.append(row)
+    return lines + [""]
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--ns", default="1,2,3,4,5,6,8,10", help="orders at the first alpha")
+    ap.add_argument("--alphas", default="1,1e-3", help="comma-separated alphas")
+    ap.add_argument("--ns-small", default="1,2,3,4,6", help="orders at the further alphas")
+    ap.add_argument("--out", default="reports/derivative_matrix.md")
+    args = ap.parse_args()
+    lines = ["# The derivative along u as a matrix of the same order (tools/derivative_matrix.py)", "",
+             "C with d/du T-bar_n = T-bar_n C, solved in ball arithmetic (collocation at the elevation solve's "
+             "alpha-independent points); 'nonzero': the ball excludes 0; 'zero': the ball contains 0 with radius "
+             "< 2^-100 (not proven); 'undecided': neither. Seconds: one solve, this machine.", ""]
+    for k, alpha in enumerate(float(a) for a in args.alphas.split(",")):
+        ns = args.ns if k == 0 else args.ns_small
+        lines += table([int(x) for x in ns.split(",")], alpha)
     Path(args.out).parent.mkdir(parents=True, exist_ok=True)
-    Path(args.out).write_text("\n".join(lines) + "\n")
+    Path(args.out).write_text("\n".join(lines))
     print(f"wrote {args.out}")
 
 
