@@ -62,6 +62,37 @@ def test_same_bits_with_one_and_several_threads(monkeypatch, rational, kernel):
             assert np.array_equal(a, b, equal_nan=True)
 
 
+def _evaluate_in_child(p, pts, queue):  # module level: the target of a forked process
+    queue.put(p(pts).tobytes())
+
+
+@pytest.mark.skipif("fork" not in __import__("multiprocessing").get_all_start_methods(), reason="no fork")
+def test_a_forked_child_evaluates_after_the_parent_used_the_pool(monkeypatch):
+    """The parent's thread pool exists in a forked child as an object without threads (and with idle workers
+    counted): before the at-fork reset a multi-block evaluation in the child waited forever."""
+    import multiprocessing as mp
+    import warnings
+
+    monkeypatch.setenv("PAPER_REPRO_THREADS", "2")
+    alpha = 1.0
+    pts = sample_points(alpha, 3 * JIT_BLOCK + 5, seed=2)
+    p = Patch(3, alpha, _net(3))
+    expected = p(pts)  # the parent's pool now has (idle) threads
+    ctx = mp.get_context("fork")
+    queue = ctx.Queue()
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", DeprecationWarning)  # Python >= 3.12: forking a process with threads
+        child = ctx.Process(target=_evaluate_in_child, args=(p, pts, queue))
+        child.start()
+    try:
+        got = queue.get(timeout=60)
+    finally:
+        child.join(5)
+        if child.is_alive():
+            child.kill()
+    assert got == expected.tobytes()
+
+
 def test_threads_setting_is_validated(monkeypatch):
     monkeypatch.setenv("PAPER_REPRO_THREADS", "0")
     with pytest.raises(ValueError, match="PAPER_REPRO_THREADS"):

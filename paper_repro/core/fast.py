@@ -92,6 +92,18 @@ def threads() -> int:
         return max(1, os.cpu_count() or 1)
 
 
+def _forget_pool_after_fork() -> None:
+    """In a forked child the pool's threads do not exist (only the forking thread is copied), but the executor
+    object does, with its idle-worker count: a block submitted to it would wait forever.  The child starts with
+    no pool (a new one is made on first use) and a fresh lock (the parent's may have been held at the fork)."""
+    global _POOL, _POOL_SIZE, _POOL_LOCK
+    _POOL, _POOL_SIZE, _POOL_LOCK = None, 0, threading.Lock()
+
+
+if hasattr(os, "register_at_fork"):
+    os.register_at_fork(after_in_child=_forget_pool_after_fork)
+
+
 def _pool(size: int) -> ThreadPoolExecutor:
     global _POOL, _POOL_SIZE
     with _POOL_LOCK:
