@@ -165,12 +165,13 @@ def run_blocks(count: int, work: Callable[[int, int, Workspace], None], block: i
         counter = itertools.count()
         lock = threading.Lock()
         errors: dict[int, BaseException] = {}
+        stopped = [False]  # set by the waiting thread on Ctrl-C (a plain store: no lock taken on that path)
 
         def task() -> None:
             ws = Workspace()
             while True:
                 with lock:
-                    if errors:
+                    if errors or stopped[0]:
                         return
                     i = next(counter)
                 if i >= len(starts):
@@ -183,8 +184,14 @@ def run_blocks(count: int, work: Callable[[int, int, Workspace], None], block: i
                         errors[i] = exc
                     return
 
-        for f in [_pool(k).submit(task) for _ in range(k)]:
-            f.result()
+        try:
+            for f in [_pool(k).submit(task) for _ in range(k)]:
+                f.result()
+        except BaseException:
+            # Ctrl-C while waiting: the workers take no further block (each finishes the one it is in, a few ms),
+            # so the call stops at once and the process can exit (before, they computed every remaining block)
+            stopped[0] = True
+            raise
         if errors:
             # every block before the first failing one was taken (the counter is monotonic) and has finished
             raise errors[min(errors)]
