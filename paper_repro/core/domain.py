@@ -187,14 +187,16 @@ def check_points(points, alpha, tol: float = DOMAIN_TOL, offset: int = 0) -> np.
         arr, fl = arr.reshape(1, 3), fl.reshape(1, 3)
     if arr.ndim != 2 or arr.shape[1] != 3 or arr.shape[0] == 0:
         raise ValueError(f"points must have shape (P, 3) of (u, v, w) with P >= 1, got shape {np.shape(points)}")
-    if not np.all(np.isfinite(fl)):
-        raise ValueError("points must be finite (no NaN or inf)")
     slack = tol * a
-    bad = np.nonzero((np.abs(fl.sum(axis=1) - a) > slack) | (fl.min(axis=1) < -slack))[0]
-    if bad.size:
+    finite: np.ndarray = np.asarray(np.isfinite(fl).all(axis=1))
+    with np.errstate(invalid="ignore", over="ignore"):
+        bad = np.nonzero(~finite | (np.abs(fl.sum(axis=1) - a) > slack) | (fl.min(axis=1) < -slack))[0]
+    if bad.size:  # the first bad point, whichever way it is bad
         k = int(bad[0])
         pt_index = k + offset
         pt = ", ".join(f"{float(x):.6g}" for x in fl[k])
+        if not finite[k]:
+            raise ValueError(f"points must be finite (no NaN or inf): point {pt_index} = ({pt})")
         raise ValueError(
             f"points: point {pt_index} = ({pt}) is not on Omega^alpha (u + v + w = alpha = {a:.6g}, u, v, w >= 0)"
             f" within tolerance {tol} * alpha")

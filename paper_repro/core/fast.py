@@ -38,7 +38,7 @@ import os
 import threading
 from collections.abc import Callable
 from concurrent.futures import ThreadPoolExecutor
-from contextlib import contextmanager
+from contextlib import contextmanager, nullcontext
 
 import numpy as np
 
@@ -69,10 +69,17 @@ def block_for(functions: int) -> int:
 #: 32 was fastest at n = 6 and 10 (1.6x and 2.3x over the unchunked derivative), within the noise at n = 3.
 CHUNK = 32
 
-_POOL: ThreadPoolExecutor | None = None
-_POOL_SIZE = 0
+#: The kernel's thread pools, one per size (``PAPER_REPRO_THREADS`` values used in this process; never shut down,
+#: so a call on one thread cannot find its pool shut down by a call on another).
+_POOLS: dict[int, ThreadPoolExecutor] = {}
 _POOL_LOCK = threading.Lock()
+#: Set on the kernel's worker threads: a call made from one of them (a profiling or tracing hook, a callback)
+#: runs its blocks inline instead of waiting for the pool it is running on.
+_WORKER = threading.local()
 _CONTROLLER = None
+_BLAS_LOCK = threading.Lock()
+_BLAS_USERS = 0
+_BLAS_LIMITER = None
 
 
 def threads() -> int:
@@ -93,11 +100,12 @@ def threads() -> int:
 
 
 def _forget_pool_after_fork() -> None:
-    """In a forked child the pool's threads do not exist (only the forking thread is copied), but the executor
-    object does, with its idle-worker count: a block submitted to it would wait forever.  The child starts with
-    no pool (a new one is made on first use) and a fresh lock (the parent's may have been held at the fork)."""
-    global _POOL, _POOL_SIZE, _POOL_LOCK
-    _POOL, _POOL_SIZE, _POOL_LOCK = None, 0, threading.Lock()
+    """In a forked child the pools' threads do not exist (only the forking thread is copied), but the executors
+    do, with their idle-worker counts: a block submitted to one would wait forever.  The child starts with no
+    pool (a new one is made on first use) and fresh locks (the parent's may have been held at the fork)."""
+    global _POOLS, _POOL_LOCK, _BLAS_LOCK, _BLAS_USERS, _BLAS_LIMITER
+    _POOLS, _POOL_LOCK = {}, threading.Lock()
+    _BLAS_LOCK, _BLAS_USERS, _BLAS_LIMITER = threading.Lock(), 0, None
 
 
 if hasattr(os, "register_at_fork"):
@@ -105,19 +113,24 @@ if hasattr(os, "register_at_fork"):
 
 
 def _pool(size: int) -> ThreadPoolExecutor:
-    global _POOL, _POOL_SIZE
     with _POOL_LOCK:
-        if _POOL is None or _POOL_SIZE != size:
-            if _POOL is not None:
-                _POOL.shutdown(wait=False)
-            _POOL, _POOL_SIZE = ThreadPoolExecutor(max_workers=size, thread_name_prefix="paper_repro"), size
-        return _POOL
+        pool = _POOLS.get(size)
+        if pool is None:
+            pool = _POOLS[size] = ThreadPoolExecutor(max_workers=size, thread_name_prefix="paper_repro",
+                                                     initializer=_mark_worker)
+        return pool
+
+
+def _mark_worker() -> None:
+    _WORKER.active = True
 
 
 @contextmanager
 def single_threaded_blas():
-    """BLAS limited to one thread inside the block (``threadpoolctl``; a no-op when it is not installed)."""
-    global _CONTROLLER
+    """BLAS limited to one thread while any call of the numpy kernel runs (``threadpoolctl``; a no-op when it is
+    not installed).  The limit is process-wide, so calls on several threads share one: the first sets it, the
+    last restores the user's setting (two overlapping ``limit`` contexts would restore each other's values)."""
+    global _CONTROLLER, _BLAS_USERS, _BLAS_LIMITER
     if _CONTROLLER is None:
         try:
             from threadpoolctl import ThreadpoolController  # type: ignore[import-untyped]
@@ -128,8 +141,18 @@ def single_threaded_blas():
     if _CONTROLLER is False:
         yield
         return
-    with _CONTROLLER.limit(limits=1, user_api="blas"):
+    with _BLAS_LOCK:
+        if _BLAS_USERS == 0:
+            _BLAS_LIMITER = _CONTROLLER.limit(limits=1, user_api="blas")
+        _BLAS_USERS += 1
+    try:
         yield
+    finally:
+        with _BLAS_LOCK:
+            _BLAS_USERS -= 1
+            if _BLAS_USERS == 0 and _BLAS_LIMITER is not None:
+                _BLAS_LIMITER.restore_original_limits()
+                _BLAS_LIMITER = None
 
 
 class Workspace(dict):
@@ -148,13 +171,15 @@ class Workspace(dict):
 
 
 def run_blocks(count: int, work: Callable[[int, int, Workspace], None], block: int = BLOCK,
-               workers: int | None = None) -> None:
+               workers: int | None = None, blas: bool = True) -> None:
     """Call ``work(start, stop, workspace)`` on every block of ``range(count)``, on ``workers`` threads (default
-    :func:`threads`), BLAS single-threaded; each thread has its own :class:`Workspace` for the call.  The first
-    failing block (in order) raises its exception."""
+    :func:`threads`); each thread has its own :class:`Workspace` for the call.  With ``blas`` (the numpy kernel),
+    BLAS single-threaded meanwhile.  The first failing block (in order) raises its exception.  Called on one of
+    the pool's own threads, the blocks run inline (waiting for the pool there could wait for ever)."""
     starts = list(range(0, count, block))
-    k = min(threads() if workers is None else int(workers), len(starts))
-    with single_threaded_blas():
+    size = threads() if workers is None else int(workers)
+    k = 1 if getattr(_WORKER, "active", False) else min(size, len(starts))
+    with single_threaded_blas() if blas else nullcontext():
         if k <= 1:
             ws = Workspace()
             for st in starts:
@@ -185,7 +210,7 @@ def run_blocks(count: int, work: Callable[[int, int, Workspace], None], block: i
                     return
 
         try:
-            for f in [_pool(k).submit(task) for _ in range(k)]:
+            for f in [_pool(size).submit(task) for _ in range(k)]:
                 f.result()
         except BaseException:
             # Ctrl-C while waiting: the workers take no further block (each finishes the one it is in, a few ms),

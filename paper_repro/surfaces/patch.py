@@ -256,7 +256,7 @@ class Patch:
             y = aug_t @ kernel.basis_rows(s, c, ws)  # (d, P), or (d + 1, P) with the weights' row last
             out[lo:hi] = (y[:-1] / y[-1]).T if rational else y.T
 
-        run_blocks(arr.shape[0], work, JIT_BLOCK if jit is not None else block_for(delta(self.n)))
+        run_blocks(arr.shape[0], work, JIT_BLOCK if jit is not None else block_for(delta(self.n)), blas=jit is None)
         return np.ldexp(out, st["exp"], out=out) if st["exp"] else out
 
     def _float_derivatives(self, points, directions, normals: bool = False) -> tuple[list[np.ndarray], int]:
@@ -297,7 +297,7 @@ class Patch:
                 for o, r in zip(outs, res):
                     o[lo:hi] = r.T
 
-        run_blocks(arr.shape[0], work, JIT_BLOCK if jit is not None else BLOCK)
+        run_blocks(arr.shape[0], work, JIT_BLOCK if jit is not None else BLOCK, blas=jit is None)
         return outs, st["dexp"]
 
     # --- evaluation -------------------------------------------------------------------------------
