@@ -37,7 +37,7 @@ import math
 import os
 import threading
 from collections.abc import Callable
-from concurrent.futures import ThreadPoolExecutor
+from concurrent.futures import ThreadPoolExecutor, wait
 from contextlib import contextmanager, nullcontext
 
 import numpy as np
@@ -210,7 +210,13 @@ def run_blocks(count: int, work: Callable[[int, int, Workspace], None], block: i
                     return
 
         try:
-            for f in [_pool(size).submit(task) for _ in range(k)]:
+            futures = [_pool(size).submit(task) for _ in range(k)]
+            # wait in short steps: a Ctrl-C that the kernel delivers to one of the worker threads (a process-wide
+            # SIGINT may land on any thread) does not interrupt a blocking wait of this one; Python raises it here
+            # when the timed wait returns
+            while wait(futures, timeout=0.2).not_done:
+                pass
+            for f in futures:
                 f.result()
         except BaseException:
             # Ctrl-C while waiting: the workers take no further block (each finishes the one it is in, a few ms),
