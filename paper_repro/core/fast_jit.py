@@ -245,19 +245,21 @@ def _derivs_impl(S, C, pa, pb, var_of, smax, cmax, idx, net, s2, dirs, values, o
     acc = np.empty((D, m, TILE))
     acc3 = np.empty((6, TILE))
     vacc = np.empty((m, TILE))
+    # the straight pass of the fast case, chosen once: one direction with exactly one zero component (two partial
+    # products, zero = that component), the normals' u and v, or the general one- or two-direction pass
+    zero = -1
+    if D == 1 and (dirs[0, 0] == 0.0) + (dirs[0, 1] == 0.0) + (dirs[0, 2] == 0.0) == 1:
+        zero = 0 if dirs[0, 0] == 0.0 else (1 if dirs[0, 1] == 0.0 else 2)
+    x = (zero + 1) % 3
+    z = (zero + 2) % 3
+    uv = (D == 2 and dirs[0, 0] == 1.0 and dirs[0, 1] == 0.0 and dirs[0, 2] == -1.0
+          and dirs[1, 0] == 0.0 and dirs[1, 1] == 1.0 and dirs[1, 2] == -1.0)
     for lo in range(0, P, TILE):
         n = min(TILE, P - lo)
         _tables(S, C, lo, n, pa, pb, var_of, smax1, cmax1, sp, cp, tab)  # power rows one further
         _dtables(n, pa, pb, var_of, s2, sp, cp, dtab)
         if fast:
             acc3[:, :n] = 0.0
-            zero = -1  # one direction with exactly one zero component: two partial products
-            if D == 1 and (dirs[0, 0] == 0.0) + (dirs[0, 1] == 0.0) + (dirs[0, 2] == 0.0) == 1:
-                zero = 0 if dirs[0, 0] == 0.0 else (1 if dirs[0, 1] == 0.0 else 2)
-            x = (zero + 1) % 3
-            z = (zero + 2) % 3
-            uv = (D == 2 and dirs[0, 0] == 1.0 and dirs[0, 1] == 0.0 and dirs[0, 2] == -1.0
-                  and dirs[1, 0] == 0.0 and dirs[1, 1] == 1.0 and dirs[1, 2] == -1.0)
             for f in range(F):
                 if zero >= 0:
                     _d1z_k3(tab, dtab, idx[x, f], idx[zero, f], idx[z, f], n, dirs[0, x], dirs[0, z],
