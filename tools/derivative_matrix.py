@@ -2,10 +2,12 @@
 
 The span of T_{2n} is closed under d/du (it is the span of cos/sin(pu + qv) over the hexagon |p|, |q|, |p - q| <= n,
 ``paper_repro.theory.question1.hexagon_check``), so the derivative along u of a patch with net ``p`` is the patch
-of the same order with net ``C^T``-transformed: ``sum_f dB_f p_f = sum_g B_g (C p)_g``.  Its normals would then be
-one 6-coordinate point evaluation.  This tool solves for C in certified ball arithmetic (flint ``arb``, collocation
-at the alpha-independent points of the elevation solve) and reports, per n, its nonzero pattern and the time of
-the solve -- the cost a float path through C would pay once per (n, alpha).  Evidence for one alpha at a time:
+of the same order with net ``C^T``-transformed: ``sum_f dB_f p_f = sum_g B_g (C p)_g``; its normals are one
+6-coordinate point evaluation.  The library takes C from exact tables (:mod:`paper_repro.core.derivative_tables`,
+integer polynomials in cos(alpha/2) recovered modulo primes).  This tool solves for C independently, in certified
+ball arithmetic (flint ``arb``, collocation at the alpha-independent points of the elevation solve), and reports,
+per n, its nonzero pattern and the time of the solve (what a float path would pay per (n, alpha) without the
+tables); ``tests/test_derivative_tables.py`` checks the tables against this solve.  Evidence for one alpha at a time:
 an entry whose ball excludes 0 is certainly nonzero; one whose ball contains 0 with a radius below 2^-100 is
 counted as zero (not proven zero).
 

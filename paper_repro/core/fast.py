@@ -64,6 +64,28 @@ def block_for(functions: int) -> int:
     target = (1 << 18) // max(1, functions)
     return max(BLOCK, min(8192, 1 << max(0, target.bit_length() - 1)))
 
+#: Rows per BLAS product in :func:`contract`.  OpenBLAS's result for a ``(M, F) x (F, P)`` product depends on how
+#: many threads it uses when M is 5 or 6 (it cuts M differently: measured, OpenBLAS 0.3.31, Haswell kernels), and
+#: threadpoolctl's limit is not reliably seen by calls from other threads (joblib/threadpoolctl#205).  Products of
+#: at most 4 rows gave the same bits with 1 and 2 threads for every M measured (1..12).
+BLAS_ROWS = 4
+
+
+def contract(net_t: np.ndarray, basis: np.ndarray, out: np.ndarray | None = None) -> np.ndarray:
+    """``net_t @ basis`` (``(M, F) x (F, P)``) as products of at most :data:`BLAS_ROWS` rows, so the bits do not
+    depend on BLAS's threads.
+
+    >>> a, b = np.arange(12.0).reshape(6, 2), np.ones((2, 3))
+    >>> bool(np.array_equal(contract(a, b), a @ b))
+    True
+    """
+    if out is None:
+        out = np.empty((net_t.shape[0], basis.shape[1]))
+    for k in range(0, net_t.shape[0], BLAS_ROWS):
+        np.matmul(net_t[k: k + BLAS_ROWS], basis, out=out[k: k + BLAS_ROWS])
+    return out
+
+
 #: Functions per chunk of :meth:`FloatKernel.contract_derivatives` (a chunk's rows, 32 x 1024 doubles = 256 KB, stay
 #: in the core's cache).  16, 32, 64, 128 measured once per block on this busy 2-core machine (noisy, 25% steal):
 #: 32 was fastest at n = 6 and 10 (1.6x and 2.3x over the unchunked derivative), within the noise at n = 3.
@@ -447,25 +469,25 @@ class FloatKernel:
             if len(directions) == 1:
                 self._direction(directions[0], g, dg, o, tmp)
                 if i == 0:
-                    np.matmul(net, o, out=outs[0])
+                    contract(net, o, out=outs[0])
                 else:
-                    outs[0] += np.matmul(net, o, out=part)
+                    outs[0] += contract(net, o, out=part)
             else:  # contract the partial products dg_v prod_{w != v} g_w, combined per direction after the chunks
                 for v in used:
                     w1, w2 = (w for w in range(3) if w != v)
                     np.multiply(dg[v], g[w1], out=o)
                     o *= g[w2]
                     if i == 0:
-                        np.matmul(net, o, out=parts[v])
+                        contract(net, o, out=parts[v])
                     else:
-                        parts[v] += np.matmul(net, o, out=part)
+                        parts[v] += contract(net, o, out=part)
             if values:
                 np.multiply(g[0], g[1], out=o)
                 o *= g[2]
                 if i == 0:
-                    np.matmul(net, o, out=vals)
+                    contract(net, o, out=vals)
                 else:
-                    vals += np.matmul(net, o, out=part)
+                    vals += contract(net, o, out=part)
         if parts:
             for k, d in enumerate(directions):
                 o = outs[k]

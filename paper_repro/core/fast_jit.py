@@ -26,6 +26,10 @@ import numpy as np
 #: in the core's L1/L2 cache.
 TILE = 256
 
+#: Coordinates per pass over the functions in the values kernel: 6 takes a patch's two derivatives (normals) in one
+#: pass, the basis value computed once per function and point.
+GROUP = 6
+
 #: Points per block of the compiled path (a block is one call from a thread of
 #: :func:`paper_repro.core.fast.run_blocks`): the numpy work around the call (the trigonometric rows) is per block.
 JIT_BLOCK = 8192
@@ -93,9 +97,26 @@ def _dtables(n, pa, pb, var_of, s2, sp, cp, dtab):
                 dtab[q, p] = (sp[v, am, p] * cp[v, b + 1, p]) * fa
 
 
-def _vgroup(tab, i0, i1, i2, n, kw, c0, c1, c2, c3, acc):
-    """acc[k, p] += c_k * B(p) for the kw <= 4 coordinates of one group (one pass over the tile, B in a register)."""
-    if kw == 4:
+def _vgroup(tab, i0, i1, i2, n, kw, c0, c1, c2, c3, c4, c5, acc):
+    """acc[k, p] += c_k * B(p) for the kw <= 6 coordinates of one group (one pass over the tile, B in a register)."""
+    if kw == 6:
+        for p in range(n):
+            g = (tab[i0, p] * tab[i1, p]) * tab[i2, p]
+            acc[0, p] += c0 * g
+            acc[1, p] += c1 * g
+            acc[2, p] += c2 * g
+            acc[3, p] += c3 * g
+            acc[4, p] += c4 * g
+            acc[5, p] += c5 * g
+    elif kw == 5:
+        for p in range(n):
+            g = (tab[i0, p] * tab[i1, p]) * tab[i2, p]
+            acc[0, p] += c0 * g
+            acc[1, p] += c1 * g
+            acc[2, p] += c2 * g
+            acc[3, p] += c3 * g
+            acc[4, p] += c4 * g
+    elif kw == 4:
         for p in range(n):
             g = (tab[i0, p] * tab[i1, p]) * tab[i2, p]
             acc[0, p] += c0 * g
@@ -124,12 +145,14 @@ def _coefs(net, k0, kw, f):
     c1 = net[k0 + 1, f] if kw > 1 else 0.0
     c2 = net[k0 + 2, f] if kw > 2 else 0.0
     c3 = net[k0 + 3, f] if kw > 3 else 0.0
-    return c0, c1, c2, c3
+    c4 = net[k0 + 4, f] if kw > 4 else 0.0
+    c5 = net[k0 + 5, f] if kw > 5 else 0.0
+    return c0, c1, c2, c3, c4, c5
 
 
 def _values_impl(S, C, pa, pb, var_of, smax, cmax, idx, net, out):
-    """out[p, k] = sum_f net[k, f] * B_f(p) for the (3, P) rows S, C; out is (P, m).  The coordinates are taken four
-    at a time (one pass over the functions per group), each sum in the order of the functions."""
+    """out[p, k] = sum_f net[k, f] * B_f(p) for the (3, P) rows S, C; out is (P, m).  The coordinates are taken
+    :data:`GROUP` at a time (one pass over the functions per group), each sum in the order of the functions."""
     P = S.shape[1]
     m = net.shape[0]
     F = idx.shape[1]
@@ -137,16 +160,16 @@ def _values_impl(S, C, pa, pb, var_of, smax, cmax, idx, net, out):
     sp = np.empty((3, top + 2, TILE))
     cp = np.empty((3, top + 2, TILE))
     tab = np.empty((pa.shape[0], TILE))
-    acc = np.empty((4, TILE))
+    acc = np.empty((GROUP, TILE))
     for lo in range(0, P, TILE):
         n = min(TILE, P - lo)
         _tables(S, C, lo, n, pa, pb, var_of, smax, cmax, sp, cp, tab)
-        for k0 in range(0, m, 4):
-            kw = min(4, m - k0)
+        for k0 in range(0, m, GROUP):
+            kw = min(GROUP, m - k0)
             acc[:, :n] = 0.0
             for f in range(F):
-                c0, c1, c2, c3 = _coefs(net, k0, kw, f)
-                _vgroup(tab, idx[0, f], idx[1, f], idx[2, f], n, kw, c0, c1, c2, c3, acc)
+                c0, c1, c2, c3, c4, c5 = _coefs(net, k0, kw, f)
+                _vgroup(tab, idx[0, f], idx[1, f], idx[2, f], n, kw, c0, c1, c2, c3, c4, c5, acc)
             for p in range(n):
                 for k in range(kw):
                     out[lo + p, k0 + k] = acc[k, p]

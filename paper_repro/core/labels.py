@@ -143,6 +143,30 @@ def exponent_matrix(n: int) -> np.ndarray:
 
 
 @cache
+def variable_swap(n: int, a: int, b: int) -> np.ndarray:
+    """The permutation ``pi`` of T_{2n}'s internal indices with ``f_{pi[k]}(x) = f_k(x with the variables a and b
+    exchanged)`` (0 = u, 1 = v, 2 = w) for the monomials of :func:`exponent_matrix`: T_{2n} is invariant under
+    every permutation of (u, v, w) (the cyclic rule and ``R_{2n,2n-i,j}(w, v, u) = R_{2n,i,j}(u, v, w)``);
+    ``ValueError`` if an exchanged exponent vector were not in T_{2n}.
+
+    >>> variable_swap(1, 0, 1).tolist(), variable_swap(1, 0, 2).tolist()
+    ([0, 5, 4, 3, 2, 1, 6], [0, 3, 2, 1, 6, 5, 4])
+    """
+    if not (0 <= a <= 2 and 0 <= b <= 2 and a != b):
+        raise ValueError(f"a and b must be two different variables among 0, 1, 2, got {a}, {b}")
+    exps = exponent_matrix(n)
+    index = {tuple(int(x) for x in row): k for k, row in enumerate(exps)}
+    cols = list(range(6))
+    cols[2 * a: 2 * a + 2], cols[2 * b: 2 * b + 2] = cols[2 * b: 2 * b + 2], cols[2 * a: 2 * a + 2]
+    try:
+        pi = np.array([index[tuple(int(x) for x in row)] for row in exps[:, cols]], dtype=np.int64)
+    except KeyError as err:
+        raise ValueError(f"T_{{{2 * n}}} is not invariant under exchanging variables {a} and {b}") from err
+    pi.setflags(write=False)
+    return pi
+
+
+@cache
 def index_of(n: int) -> dict[str, int]:
     """Map from paper label (``'R_{4,3,1}'``, also ``'r_{4,3,1}'``) to internal index in T_{2n}.
 
