@@ -428,8 +428,9 @@ class Patch:
         ``'u'`` and ``'v'`` (:data:`~paper_repro.core.derivatives_basis.DIRECTIONS`); NaN where it vanishes.
 
         Computed blocked (memory independent of the number of points) from the derivatives of the net
-        centred and scaled to unit size (for n <= 10 one 6-coordinate point evaluation, see :meth:`derivative`) (so nets of any scale, 1e-300..1e300, give the same normals), without
-        the positive factor 1/(2 sin(alpha/2)).  "Vanishes" means: the cross product is below what rounding
+        centred and scaled to unit size (so nets of any scale, 1e-300..1e300, give the same normals), without
+        the positive factor 1/(2 sin(alpha/2)); for n <= 10 one 6-coordinate point evaluation (see
+        :meth:`derivative`).  "Vanishes" means: the cross product is below what rounding
         can produce, ``|d_u x d_v| <= NORMAL_TOL * delta_n * (|d_u| + |d_v|)`` (unit-scale net), as at a
         degenerate corner where a tangent is 0 or the two are parallel.
         """
