@@ -165,3 +165,52 @@ def test_tables_inside_the_certified_ball_solve(n, alpha):
                 want = predicted.get((g, f), arb(0))
                 assert x.rad() < tiny and want.rad() < tiny
                 assert x.overlaps(want), (g, f, x, want)
+
+
+def test_directions_are_tangent_in_every_arithmetic():
+    """(referee pass) A triple direction is du (1, 0, -1) + dv (0, 1, -1) in every route: a component off the plane
+    within the tolerance no longer reaches the mp route (where a net offset by 1e6 turned it into a 1e-7 error),
+    and one beyond 1e-12 of the largest component is refused whatever the components' size."""
+    n, alpha = 3, 1.0
+    net = np.random.default_rng(1).normal(size=(delta(n), 3)) + 1e6
+    p = Patch(n, alpha, net)
+    pts = sample_points(alpha, 3, seed=4)
+    d = (1.0, 0.0, -1.0 + 1e-13)
+    with mpmath.workdps(40):  # the points exactly on the plane in mp (w = alpha - u - v)
+        q = np.array([[mpmath.mpf(float(x)) for x in row] for row in pts], dtype=object)
+        q[:, 2] = mpmath.mpf(alpha) - q[:, 0] - q[:, 1]
+        ref = np.array(p.derivative(q, d, arith="mp", dps=40), dtype=float)
+    assert np.abs(p.derivative(pts, d) - ref).max() <= 1e-12 * np.abs(ref).max()
+    with pytest.raises(ValueError, match="tangent"):
+        p.derivative(pts, (1e-13, 0, 1e-13))
+    with pytest.raises(ValueError, match="direction"):
+        p.derivative(pts, (10**400, 0, -(10**400)))
+
+
+def test_large_direction_components_do_not_overflow_on_the_way():
+    """(referee pass) The direction is brought to unit size by a power of two before the nets are combined:
+    (1e306, 0, -1e306) on a net of size 1e-10 gave a false OverflowError through the table route."""
+    n, alpha = 3, 1.0
+    p = Patch(n, alpha, 1e-10 * np.random.default_rng(1).normal(size=(delta(n), 3)))
+    pts = sample_points(alpha, 3, seed=4)
+    big = p.derivative(pts, (1e306, 0, -1e306))
+    assert np.all(np.isfinite(big))
+    assert np.abs(big - 1e306 * p.derivative(pts, "u")).max() <= 1e-15 * np.abs(big).max()
+
+
+def test_table_arguments_are_checked():
+    with pytest.raises(ValueError, match="integer from 1 to"):
+        dt.table(2.0)
+    with pytest.raises(ValueError, match="delta_n"):
+        dt.derivative_nets(1, 0.5, np.ones((8, 1)))
+    with pytest.raises(ValueError, match="delta_n"):
+        dt.derivative_nets(1, 0.5, np.ones(7))
+
+
+def test_recovery_stops_when_every_parameter_is_singular(monkeypatch):
+    def singular(*args, **kwargs):
+        raise ZeroDivisionError("singular")
+
+    monkeypatch.setattr(dm, "derivative_matrix_modp", singular)
+    with pytest.raises(ArithmeticError, match="singular modulo p at every shape parameter"):
+        dm.derivative_polynomials(2)

@@ -1,6 +1,7 @@
 """Accuracy of the float path against mp at 40 digits: points, derivatives and normals (issue 21).
 
-For n = 1, 3, 6, 10 and alpha from 1e-300 to pi - 1e-3: 8 seeded points (corners and edges included), 2 nets.
+For n = 1, 3, 6, 10 and alpha from 1e-300 to pi - 1e-3: 16 points (the 3 corners, 3 points on the edges, 10 seeded
+interior points), 2 nets.
 Points relative to the net's largest coordinate; derivatives (u and v) relative to the largest derivative
 component at the points; normals: the largest difference of the unit vectors (where both are defined).
 Writes ``reports/float_accuracy.md`` (a report: raw floats, not data).  Usage::
@@ -38,7 +39,8 @@ def _unit(v: np.ndarray) -> np.ndarray:
 
 def errors(n: int, alpha: float, seed: int) -> tuple[float, float, float]:
     p = Patch(n, alpha, np.random.default_rng(seed).normal(size=(delta(n), 3)))
-    pts = sample_points(alpha, 8, seed=seed, interior=False)
+    bary = np.array([[1, 0, 0], [0, 1, 0], [0, 0, 1], [0.5, 0.5, 0], [0, 0.25, 0.75], [0.6, 0, 0.4]])
+    pts = np.vstack([alpha * bary, sample_points(alpha, 10, seed=seed)])  # 3 corners, 3 edge points, 10 inside
     with mpmath.workdps(DPS):
         ref_pts = _mp_points(pts, alpha)
         val = np.array(p(ref_pts, arith="mp", dps=DPS), dtype=float)
@@ -56,7 +58,8 @@ def errors(n: int, alpha: float, seed: int) -> tuple[float, float, float]:
 
 def main() -> None:
     rows = ["# Float path against mp (40 digits): points, derivatives, normals (tools/float_accuracy.py)", "",
-            "8 seeded points per case (corners and edges included), 2 nets (seeds 0, 1); the largest error over both.",
+            "16 points per case (the 3 corners, 3 points on the edges, 10 seeded interior points), 2 nets (seeds 0, 1); the "
+            "largest error over both; normals where both are defined (NaN at a degenerate corner).",
             "", "| n | alpha | points / max net | derivatives / max derivative | normals (unit vectors) |",
             "|---|---|---|---|---|"]
     worst = [0.0, 0.0, 0.0]

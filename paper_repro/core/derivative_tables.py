@@ -55,8 +55,9 @@ def _all_tables() -> dict:
 def table(n: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """``(rows, cols, coefs)`` of C for the direction u: entry ``C[rows[e], cols[e]] = sum_d coefs[e, d] kappa^d``
     (``coefs`` of shape ``(nnz, n + 2)``, integers as float64: exact, at most 2n in size); read-only arrays."""
-    if not has_table(n):
-        raise ValueError(f"n must be from 1 to {TABLE_MAX_N} for a table of C, got {n}")
+    if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or not has_table(int(n)):
+        raise ValueError(f"n must be an integer from 1 to {TABLE_MAX_N} for a table of C, got {n!r}")
+    n = int(n)
     t = _all_tables()[str(n)]
     out = (np.array(t["rows"], dtype=np.int64), np.array(t["cols"], dtype=np.int64),
            np.array(t["coefs"], dtype=np.float64))
@@ -95,6 +96,8 @@ def derivative_nets(n: int, kappa: float, net: np.ndarray) -> tuple[np.ndarray, 
     """``(q_u, q_v)``: the nets of ``2 s d/du`` and ``2 s d/dv`` of the patch ``sum_f net[f] m_f``
     (``net`` of shape ``(delta_n, m)``, on the scaled monomials, :func:`entries` at ``kappa = cos(alpha/2)``)."""
     net = np.asarray(net, dtype=np.float64)
+    if net.ndim != 2 or net.shape[0] != delta(n):
+        raise ValueError(f"net must be a (delta_n, m) = ({delta(n)}, m) array for n = {n}, got shape {net.shape}")
     vals = entries(n, kappa)
     pi = swap_uv(n)
     qu = apply(n, vals, net)

@@ -21,10 +21,12 @@ True
 
 from __future__ import annotations
 
+from fractions import Fraction
+
 import numpy as np
 
 from paper_repro.core.basis import monomials
-from paper_repro.core.context import Context, FloatContext, get_context
+from paper_repro.core.context import Context, FloatContext, _to_fraction, get_context
 from paper_repro.core.domain import scaled_half_angle_values
 from paper_repro.core.labels import exponent_matrix
 from paper_repro.core.normalization import evaluate_normalized, scaled_coefficient_vector  # noqa: F401 (doctest)
@@ -36,6 +38,13 @@ DIRECTIONS = {"u": (1, 0, -1), "v": (0, 1, -1), "w": (0, -1, 1)}
 
 
 def check_direction(direction) -> tuple:
+    """A direction as ``(du, dv, dw)``: a name of :data:`DIRECTIONS` (its integer triple), or a triple of real numbers
+    with ``|du + dv + dw| <= 1e-12 max(|du|, |dv|, |dw|)``, returned as exact fractions with ``dw = -du - dv``: every
+    arithmetic then differentiates along the same tangent direction ``du (1, 0, -1) + dv (0, 1, -1)``.
+
+    >>> check_direction((0.5, 0.25, -0.75)), check_direction("w")
+    ((Fraction(1, 2), Fraction(1, 4), Fraction(-3, 4)), (0, -1, 1))
+    """
     if isinstance(direction, str):
         if direction not in DIRECTIONS:
             raise ValueError(f"direction must be one of {sorted(DIRECTIONS)} or a triple (du, dv, dw) with sum 0, "
@@ -51,9 +60,23 @@ def check_direction(direction) -> tuple:
         fl = [float(x) for x in d]
     except (TypeError, ValueError):
         raise TypeError("direction components must be real numbers") from None
-    if not all(np.isfinite(fl)) or abs(sum(fl)) > 1e-12 * max(1.0, max(abs(x) for x in fl)):
-        raise ValueError(f"direction must be finite with du + dv + dw = 0 (tangent to Omega^alpha), got {d}")
-    return d
+    except OverflowError:
+        raise ValueError("direction components must be finite floats (at most about 1.8e308 in size)") from None
+    if not all(np.isfinite(fl)) or abs(sum(fl)) > 1e-12 * max(abs(x) for x in fl):
+        raise ValueError(f"direction must be finite with du + dv + dw = 0 (tangent to Omega^alpha; |sum| <= 1e-12 "
+                         f"of the largest component), got {d}")
+    du, dv = (_exact(x) for x in d[:2])
+    return du, dv, -du - dv
+
+
+def _exact(x) -> Fraction:
+    """The exact value of a direction component (a float as its binary value)."""
+    if isinstance(x, (bool, np.bool_)):
+        return Fraction(int(x))
+    try:
+        return _to_fraction(x)
+    except TypeError:
+        return Fraction(float(x))
 
 
 def monomial_derivative(exps: np.ndarray, trig, direction, ctx: Context, *, s2=None) -> np.ndarray:

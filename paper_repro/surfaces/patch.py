@@ -401,11 +401,13 @@ class Patch:
         """
         ctx = self._ctx(arith, dps)
         if isinstance(ctx, FloatContext):
-            d = check_direction(direction)
-            (y,), e = self._float_derivatives(points, [d])
+            d = [float(x) for x in check_direction(direction)]
+            # the direction brought to unit size by a power of two (exact), its exponent put back with the net's
+            kd = math.frexp(max(abs(x) for x in d))[1] if any(d) else 0
+            (y,), e = self._float_derivatives(points, [tuple(math.ldexp(x, -kd) for x in d)])
             m, k = math.frexp(2 * self._setup["sa"])  # 2 sin(alpha/2) = m 2^k, m in [0.5, 1)
             with np.errstate(over="ignore"):
-                out = np.ldexp(np.divide(y, m, out=y), e - k, out=y)
+                out = np.ldexp(np.divide(y, m, out=y), e - k + kd, out=y)
             if out.size and not (math.isfinite(np.max(out)) and math.isfinite(np.min(out))):  # no (P, d) mask
                 raise OverflowError(f"the derivative exceeds float64's range (alpha = {float(self.alpha):.3g}, net "
                                     f"extent 2^{e}): its size is about extent / sin(alpha/2); evaluate it with "

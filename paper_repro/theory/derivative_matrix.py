@@ -14,7 +14,8 @@ alpha-independent collocation points (:func:`~paper_repro.core.normalization.fix
 interpolated in kappa from the first n + 2 values and checked at the others, and the coefficients are lifted to
 the symmetric range; the recovery is repeated with a second prime and must give the same integers.  What is
 exact: each modular solve and check.  What is evidence: that the interpolants are the true polynomials for every
-alpha (a degree bound is assumed, and checked only at the extra parameters and primes).  An independent check:
+alpha (a degree bound is assumed, and checked only at the extra parameters and primes), and that the small integer
+lifts on which two primes agree are the true coefficients (no bound on their size is proven).  An independent check:
 the certified ball solve of ``tools/derivative_matrix.py`` at fixed alpha (tests compare the two).
 
 The other directions follow by symmetry: T_{2n} is invariant under every permutation of (u, v, w)
@@ -76,6 +77,9 @@ def _recover_modp(n: int, p: int, verify: int, direction) -> np.ndarray | None:
     deg = n + 1
     kappas, mats, k = [], [], 2
     while len(mats) < deg + 1 + verify:
+        if k > 4 * (deg + 1 + verify) + 50:
+            raise ArithmeticError(f"n = {n}, p = {p}: the collocation points are singular modulo p at every shape "
+                                  f"parameter tried (tan(alpha/4) = 1/2 .. 1/{k - 1})")
         alpha = rational_alpha(fmpq(1, k))
         k += 1
         try:
