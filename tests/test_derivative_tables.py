@@ -205,6 +205,8 @@ def test_table_arguments_are_checked():
         dt.derivative_nets(1, 0.5, np.ones((8, 1)))
     with pytest.raises(ValueError, match="delta_n"):
         dt.derivative_nets(1, 0.5, np.ones(7))
+    with pytest.raises(ValueError, match="kappa"):
+        dt.derivative_nets(1, float("nan"), np.ones((7, 1)))
 
 
 def test_recovery_stops_when_every_parameter_is_singular(monkeypatch):

@@ -13,9 +13,9 @@ evidence (exact checks at further parameters and a second prime, float checks ag
 at sampled alpha), not a proof.
 
 The direction ``v = (0, 1, -1)`` is u with the variables u and v exchanged (T_{2n} is symmetric:
-:func:`swap_uv`), and any in-plane direction ``(du, dv, dw)`` is ``du * u + dv * v``.  So the derivative of a
-patch with the (scaled) net ``p`` along u is the patch of the same order with the net ``C p``: a patch's
-derivatives and normals cost one point evaluation with 3 or 6 coordinates
+:func:`~paper_repro.core.labels.variable_swap`), and any in-plane direction ``(du, dv, dw)`` is
+``du * u + dv * v``.  So the derivative of a patch with the (scaled) net ``p`` along u is the patch of the
+same order with the net ``C p``: a patch's derivatives and normals cost one point evaluation with 3 or 6 coordinates
 (:meth:`paper_repro.surfaces.patch.Patch.derivative`).
 
 >>> import math, numpy as np
@@ -66,12 +66,6 @@ def table(n: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     return out
 
 
-def swap_uv(n: int) -> np.ndarray:
-    """The permutation ``pi`` with ``m_{pi[f]}(u, v, w) = m_f(v, u, w)``
-    (:func:`~paper_repro.core.labels.variable_swap`)."""
-    return variable_swap(n, 0, 1)
-
-
 def entries(n: int, kappa: float) -> np.ndarray:
     """The float64 values of C's nonzero entries at ``kappa`` (Horner's rule in the order of :func:`table`);
     each within ``(2 (n + 1) + 1) u sum_d |c_d| kappa^d`` of the exact polynomial (u = 2^-53)."""
@@ -95,11 +89,13 @@ def apply(n: int, vals: np.ndarray, net: np.ndarray) -> np.ndarray:
 def derivative_nets(n: int, kappa: float, net: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """``(q_u, q_v)``: the nets of ``2 s d/du`` and ``2 s d/dv`` of the patch ``sum_f net[f] m_f``
     (``net`` of shape ``(delta_n, m)``, on the scaled monomials, :func:`entries` at ``kappa = cos(alpha/2)``)."""
+    if not -1.0 <= kappa <= 1.0:
+        raise ValueError(f"kappa = cos(alpha/2) must be a number in [-1, 1], got {kappa!r}")
     net = np.asarray(net, dtype=np.float64)
     if net.ndim != 2 or net.shape[0] != delta(n):
         raise ValueError(f"net must be a (delta_n, m) = ({delta(n)}, m) array for n = {n}, got shape {net.shape}")
     vals = entries(n, kappa)
-    pi = swap_uv(n)
+    pi = variable_swap(n, 0, 1)  # m_{pi[f]}(u, v, w) = m_f(v, u, w)
     qu = apply(n, vals, net)
     qv = np.empty_like(qu)
     qv[pi] = apply(n, vals, net[pi])

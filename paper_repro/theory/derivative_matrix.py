@@ -39,7 +39,7 @@ from paper_repro.core.derivatives_basis import monomial_derivative
 from paper_repro.core.domain import RationalPoints, rational_alpha, scaled_half_angle_values
 from paper_repro.core.labels import delta, exponent_matrix
 from paper_repro.core.normalization import fixed_points
-from paper_repro.theory.modular import _nmod_solve, primes_below
+from paper_repro.theory.modular import _matmul_mod, _nmod_solve, primes_below
 from paper_repro.util.validation import check_n
 
 #: The direction of the recovered matrix, (du, dv, dw).
@@ -62,16 +62,6 @@ def derivative_matrix_modp(n: int, alpha, p: int, direction=DIRECTION_U, seed: i
     return _nmod_solve(vals, ders, p)
 
 
-def _interpolate(kappas: np.ndarray, values: np.ndarray, p: int) -> np.ndarray:
-    """Coefficients (ascending, ``(D + 1, E)``) over F_p of the polynomials of degree <= D through
-    ``(kappas[t], values[t, e])``, t = 0..D."""
-    deg = len(kappas) - 1
-    vander = np.ones((deg + 1, deg + 1), dtype=np.int64)
-    for d in range(1, deg + 1):
-        vander[:, d] = vander[:, d - 1] * kappas % p
-    return _nmod_solve(vander, values, p)
-
-
 def _recover_modp(n: int, p: int, verify: int, direction) -> np.ndarray | None:
     """``(n + 2, delta_n, delta_n)`` coefficients over F_p, or None if an interpolant fails a check."""
     deg = n + 1
@@ -89,15 +79,12 @@ def _recover_modp(n: int, p: int, verify: int, direction) -> np.ndarray | None:
         kappas.append(ModpContext(p=p).from_rational(alpha.cos_half))
     ks = np.array(kappas, dtype=np.int64)
     vals = np.array(mats, dtype=np.int64)
-    coefs = _interpolate(ks[: deg + 1], vals[: deg + 1], p)
-    for t in range(deg + 1, len(ks)):
-        power = np.ones((), dtype=np.int64)
-        acc = np.zeros(vals.shape[1], dtype=np.int64)
-        for d in range(deg + 1):
-            acc = (acc + coefs[d] * power) % p
-            power = power * ks[t] % p
-        if np.any(acc != vals[t]):
-            return None
+    vander = np.ones((len(ks), deg + 1), dtype=np.int64)
+    for d in range(1, deg + 1):
+        vander[:, d] = vander[:, d - 1] * ks % p
+    coefs = _nmod_solve(vander[: deg + 1], vals[: deg + 1], p)  # ascending coefficients, (deg + 1, delta_n^2)
+    if np.any(_matmul_mod(vander[deg + 1:], coefs, p) != vals[deg + 1:]):
+        return None
     m = delta(n)
     return coefs.reshape(deg + 1, m, m)
 
