@@ -355,3 +355,20 @@ def test_ctrl_c_watchdog_ends_a_deadlocked_cli_within_two_seconds():
     _, err = p.communicate(timeout=20)
     assert p.returncode == 130 and time.perf_counter() - t0 < 2.5
     assert err.strip().splitlines()[-1].startswith("interrupted")
+
+
+def test_elevation_sums_in_a_fixed_order_whatever_the_cpu():
+    # issue 31: E @ net went through BLAS, whose summation order depends on the layout and on the CPU's kernel.
+    # The elevated net must equal a left-to-right sum in Python floats (IEEE, the same on every CPU).
+    n = 2
+    net = np.random.default_rng(7).normal(size=(delta(n), 3))
+    e = elevation_matrix(n, 1.0)
+    want = [[0.0] * 3 for _ in range(e.shape[0])]
+    for g in range(e.shape[0]):
+        for d in range(3):
+            acc = 0.0
+            for f in range(e.shape[1]):
+                acc += float(e[g, f]) * float(net[f, d])
+            want[g][d] = acc
+    for arr in (net, np.asfortranarray(net), net[::-1][::-1]):
+        assert elevate(arr, n, 1.0).tolist() == want

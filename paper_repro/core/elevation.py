@@ -31,6 +31,7 @@ from paper_repro.core.domain import (
     sample_points,
     sample_rational_points,
 )
+from paper_repro.core.fast import ordered_matmul
 from paper_repro.core.labels import delta
 from paper_repro.core.nets import check_net
 from paper_repro.core.normalization import evaluate_normalized, fixed_points
@@ -197,7 +198,7 @@ def elevate(net, n: int, alpha, times: int = 1) -> np.ndarray:
         check_alpha(alpha)
     arr = check_net(net, n)
     for k in range(times):
-        arr = elevation_matrix(n + k, alpha) @ arr
+        arr = ordered_matmul(elevation_matrix(n + k, alpha), arr)
     return arr
 
 
