@@ -120,3 +120,30 @@ def test_runner_fails_a_claim_that_publishes_a_raw_float(tmp_path, monkeypatch):
     assert res.status == "pass" and out.raw == {"gap": 5.329070518200751e-15}
     in_data = Claim("in_data", ["x"], "s", "proof", lambda: Outcome(True, {}, data={"f.json": [1.2345678901]}), {})
     assert run_claim(in_data)[0].status == "fail"
+
+
+# -- question1_all_n: the lemmas run at every alpha the statement names (issue 31, item 6) ----------------------------
+def test_question1_statement_names_the_alphas_of_its_lemmas():
+    st = CLAIMS["question1_all_n"].statement
+    assert "{ts}" in st and "only" in st and "not a proof for the others" in st
+    assert "hold exactly for n <= {n_lemma};" not in st  # the old wording, with no alpha
+
+
+def test_question1_lemmas_are_checked_at_every_named_alpha(monkeypatch):
+    """A lemma failing at the second alpha only fails the claim (a check run at the first alpha only would pass)."""
+    from paper_repro.claims import question1_all_n as claim
+    from paper_repro.core.domain import rational_alpha
+
+    small = dict(n_closed=1, n_lemma=2, n_hexagon=1, n_weights=1, sampled_n=[2], ts=["1/3", "3/4"])
+    assert claim.run(**small).passed
+    bad_alpha = rational_alpha(fmpq(3, 4))
+    orig = claim.q1.order_table
+
+    def wrong_at_second(n, alpha, *a, **k):
+        out = orig(n, alpha, *a, **k)
+        return {**out, "ok": False} if alpha.t == bad_alpha.t else out
+
+    monkeypatch.setattr(claim.q1, "order_table", wrong_at_second)
+    res = claim.run(**small)
+    assert not res.passed and "n=1,t=3/4" in res.measured["lemmas_exact_for_n"]
+    assert "n=1,t=1/3" not in res.measured["lemmas_exact_for_n"]
