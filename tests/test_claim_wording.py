@@ -147,3 +147,17 @@ def test_question1_lemmas_are_checked_at_every_named_alpha(monkeypatch):
     res = claim.run(**small)
     assert not res.passed and "n=1,t=3/4" in res.measured["lemmas_exact_for_n"]
     assert "n=1,t=1/3" not in res.measured["lemmas_exact_for_n"]
+
+
+# -- general_formulas: what is proven for every n and what for the stated n only (issue 31, item 6) ------------------
+def test_general_formulas_does_not_call_the_centre_end_values_consequences():
+    st = CLAIMS["general_formulas"].statement
+    assert "follow from it" not in st and "not proven for every n" in st and "for each n <= {n_cons}" in st
+    assert "(t-1)" not in st and "(mu-1)" in st and "mu the number of minimal entries" in st
+
+
+def test_the_alpha_to_0_entry_names_mu_not_t():
+    from paper_repro.theory.general_formulas import ALL_LEVELS_AT_1
+
+    assert "(\\mu-1)" in ALL_LEVELS_AT_1["latex"] and ALL_LEVELS_AT_1["where"].startswith("mu = ")
+    assert "(t-1)" not in ALL_LEVELS_AT_1["latex"]
