@@ -5,7 +5,7 @@ import json
 
 import pytest
 
-from paper_repro.claims.lines import CHECKS
+from paper_repro.claims.lines import CHECKS, LINE_KINDS
 from paper_repro.claims.lines import sec1_3 as C
 from paper_repro.printed.lines import sec1_3 as P
 
@@ -45,7 +45,7 @@ def test_every_registered_check_of_the_part_is_used_and_reports_plain_values(res
     for cid, r in results.items():
         json.dumps(r.detail)
         assert not _floats(r.detail), cid
-        assert r.kind in ("proof", "exact-evidence", "numeric-evidence") and r.how
+        assert r.kind in LINE_KINDS and r.how
 
 
 def test_errata_lines_name_their_fields():
@@ -134,3 +134,29 @@ def test_elimination_is_exact_and_leaves_the_centre():
         assert C.alive_after(n, n - 1, 2) == frozenset({0})
         removed = [k for _r, _p, _b, gone in C.elimination(n) for k in gone]
         assert sorted(removed) == list(range(1, len(removed) + 1))
+
+
+# -- the checks read their lines from the transcription (issue 31, item 6) --------------------------------------
+@pytest.mark.parametrize("line_id, wrong", [
+    ("sec1_3-R-system", ("^{n,2n-j}", "^{n,2n-1-j}")),   # one function short per level
+    ("sec1_3-B-system", ("^{n,2n-j}", "^{n,2n}")),       # negative cosine powers
+    ("sec1_3-B-system", ("_{j=0,i=j}", "_{j=1,i=j}")),   # level 0 missing
+    ("sec1_3-G-system", ("_{j=0,i=j}", "_{j=0,i=0}")),   # i < j: negative powers
+    ("sec1_3-R-leq-n", ("^{n,n}", "^{n,n+1}")),          # the halves overlap
+])
+def test_rgb_index_sets_read_the_transcription_and_reject_a_wrong_one(line_id, wrong):
+    text = {x.id: x.verbatim for x in P.LINES}[line_id]
+    assert wrong[0] in text
+    assert C.rgb_index_sets(n_max=4).holds_as_printed
+    assert not C.rgb_index_sets({line_id: text.replace(*wrong)}, n_max=4).holds_as_printed
+
+
+def test_printed_exponents_are_those_of_the_package():
+    from paper_repro.core.labels import BasisLabel, exponents
+
+    for n in range(1, 6):
+        for c in "RGB":
+            for j in range(n + 1):
+                for i in range(j, 2 * n - j + 1):
+                    assert C.printed_exponents(c, n, i, j) == exponents(BasisLabel(c, n, i, j))
+    assert C.printed_exponents("R", 2, 1, 2) is None  # i < j

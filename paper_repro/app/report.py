@@ -114,7 +114,8 @@ def run_claims(only: list[str] | None, overrides: dict[str, dict[str, Any]] | No
     done = dict(zip(order, sweep(_run_one, jobs, executor=executor, initializer=load_all, desc="claims",
                                  label=lambda job: job[0])))
     # claims that resolve checks to other claims run last, here, with the results of this run
-    so_far = {cid: {"status": res.status, "kind": res.kind, "errata": sorted(e["id"] for e in out.errata)}
+    so_far = {cid: {"status": res.status, "kind": res.kind, "errata": sorted(e["id"] for e in out.errata),
+                    "statement": res.statement}
               for cid, (res, out, _) in done.items()}
     for cid in ids:
         if CLAIMS[cid].uses_results:

@@ -219,7 +219,7 @@ def alpha_range() -> LineResult:
                     for t in (fmpq(1, 100), fmpq(1, 2), fmpq(99, 100)))
     return LineResult(ok_pos and zero_at_pi and exact_pos, how="coefficients of the printed c_{2n,i} as polynomials "
                       "in cos(alpha/2) (n <= 15); exact values at tan(alpha/4) in 1/100, 1/2, 99/100 (n <= 5)",
-                      kind="proof", detail={"nonnegative_polynomials": ok_pos, "odd_vanish_at_pi": zero_at_pi,
+                      kind="exhaustive", detail={"nonnegative_polynomials": ok_pos, "odd_vanish_at_pi": zero_at_pi,
                                             "positive_at_samples": exact_pos})
 
 
@@ -238,7 +238,7 @@ def delta_count() -> LineResult:
         rows.append((len(distinct_union(n)), printed_sum, 3 * n * (n + 1) + 1, delta(n)))
     ok = all(len(set(r)) == 1 for r in rows)
     return LineResult(ok, how="count of distinct exponent vectors of R u G u B against the printed double sum and "
-                      "closed form, n = 1..40", kind="proof", detail={"n_max": 40, "all_equal": ok,
+                      "closed form, n = 1..40", kind="exhaustive", detail={"n_max": 40, "all_equal": ok,
                                                                       "first": list(rows[0]), "last": list(rows[-1])})
 
 
@@ -260,14 +260,14 @@ def united_dedupe(ranges=None) -> LineResult:
                                                           for j in range(n) for i in ranges(n, j)]
         ok &= len(listed) == len(set(listed)) and set(listed) == distinct_union(n)
     return LineResult(ok, how="printed ranges against the distinct functions of the full systems, n = 1..20",
-                      kind="proof", detail={"n_max": 20, "equal_without_repetition": ok})
+                      kind="exhaustive", detail={"n_max": 20, "equal_without_repetition": ok})
 
 
 @line_check("sec1_3-levels")
 def levels() -> LineResult:
     """n levels numbered 0..n-1 (the centre is the common centroid): the levels j of the non-centre functions."""
     ok = all({lb.j for lb in united_system(n) if not lb.is_centre} == set(range(n)) for n in range(1, 21))
-    return LineResult(ok, how="levels of T_{2n} from its labels, n = 1..20", kind="proof", detail={"ok": ok})
+    return LineResult(ok, how="levels of T_{2n} from its labels, n = 1..20", kind="exhaustive", detail={"ok": ok})
 
 
 @line_check("sec1_3-corners-centre")
@@ -280,7 +280,7 @@ def corners_centre() -> LineResult:
         corners = {(2 * n, 0, 0, 0, 0, 0), (0, 0, 2 * n, 0, 0, 0), (0, 0, 0, 0, 2 * n, 0)}
         centre_all = {exponents(BasisLabel(c, n, n, n)) for c in "RGB"}  # R_{2n,n,n} = G_{2n,n,n} = B_{2n,n,n}
         ok &= corners <= ex and centre_all == {(n, 0, n, 0, n, 0)}
-    return LineResult(ok, how="exponent vectors of T_{2n}, n = 1..20", kind="proof", detail={"ok": ok})
+    return LineResult(ok, how="exponent vectors of T_{2n}, n = 1..20", kind="exhaustive", detail={"ok": ok})
 
 
 @line_check("sec1_3-nonnegative")
@@ -288,21 +288,79 @@ def nonnegative() -> LineResult:
     """The functions of R, G, B are non-negative on Omega^alpha: products of non-negative powers of sines and cosines
     of half angles in [0, alpha/2] subset [0, pi/2) (exponents checked for the full systems, n = 1..30)."""
     ok = all(min(exponents(lb)) >= 0 for n in range(1, 31) for c in "RGB" for lb in full_system(n, c))
-    return LineResult(ok, how="exponent vectors of the full systems, n = 1..30", kind="proof", detail={"ok": ok})
+    return LineResult(ok, how="exponent vectors of the full systems, n = 1..30", kind="exhaustive", detail={"ok": ok})
+
+
+#: The lines whose index sets :func:`rgb_index_sets` reads (the full systems and the two halves of R).
+INDEX_SET_LINES = ("sec1_3-R-system", "sec1_3-G-system", "sec1_3-B-system", "sec1_3-R-leq-n", "sec1_3-R-geq-n-relation")
+
+
+def _transcribed(ids, override: dict[str, str] | None = None) -> dict[str, str]:
+    """The verbatim LaTeX of the lines ``ids`` (``override`` replaces some: the tests' wrong transcriptions)."""
+    from paper_repro.printed.lines.sec1_3 import LINES
+
+    text = {x.id: x.verbatim for x in LINES if x.id in ids}
+    text.update(override or {})
+    return text
+
+
+def _read_pairs(tex: str, n: int) -> list[tuple[int, int]]:
+    """The (i, j) of a printed double index set _{j=a,i=b(j)}^{c,d(j)}, read from ``tex`` at order n."""
+    from paper_repro.printed.lines.read import bound, index_set
+
+    (ov, olo, ohi), (iv, ilo, ihi) = index_set(tex)
+    if (ov, iv) != ("j", "i"):
+        raise ValueError(f"index set over {(ov, iv)}, not (j, i)")
+    return [(i, j) for j in range(bound(olo, n=n), bound(ohi, n=n) + 1)
+            for i in range(bound(ilo, n=n, j=j), bound(ihi, n=n, j=j) + 1)]
+
+
+def printed_exponents(color: str, n: int, i: int, j: int) -> tuple[int, ...] | None:
+    """Exponent vector (sin, cos of u/2, v/2, w/2) of color_{2n,2n-i,j} from the printed explicit formulas
+    (eqs. R_system_leq_n, R_system_geq_n: sin^{2n-i}(u/2) sin^i(w/2) cos^{i-j}(v/2) sin^j(v/2) for i <= n,
+    sin^i(w/2) sin^{2n-i}(u/2) cos^{2n-i-j}(v/2) sin^j(v/2) for i > n; G = R(w, u, v), B = R(v, w, u)), or ``None``
+    if a power is negative (not a function of the system).  Independent of :mod:`paper_repro.core.labels`."""
+    cos_v = i - j if i <= n else 2 * n - i - j
+    r = {"u": (2 * n - i, 0), "v": (j, cos_v), "w": (i, 0)}
+    if min(min(p) for p in r.values()) < 0:
+        return None
+    # G(u, v, w) = R(w, u, v): the R-roles (u, v, w) are played by (w, u, v); B: by (v, w, u)
+    roles = {"R": ("u", "v", "w"), "G": ("w", "u", "v"), "B": ("v", "w", "u")}[color]
+    var = {roles[0]: r["u"], roles[1]: r["v"], roles[2]: r["w"]}
+    return (*var["u"], *var["v"], *var["w"])
 
 
 @line_check("sec1_3-rgb-index-sets")
-def rgb_index_sets() -> LineResult:
-    """{j=0..n, i=j..2n-j} is the disjoint union of the halves {j=0..n, i=j..n} (eq. R_system_leq_n) and
-    {j=0..n-1, i=n+1..2n-j} (eq. R_system_geq_n), has (n+1)^2 members, and all printed powers are >= 0 on it."""
-    ok = True
-    for n in range(1, 31):
-        full = {(i, j) for j in range(n + 1) for i in range(j, 2 * n - j + 1)}
-        low = {(i, j) for j in range(n + 1) for i in range(j, n + 1)}
-        high = {(i, j) for j in range(n) for i in range(n + 1, 2 * n - j + 1)}
-        powers_ok = all(i - j >= 0 for i, j in low) and all(2 * n - i - j >= 0 for i, j in high)
-        ok &= not (low & high) and low | high == full and len(full) == (n + 1) ** 2 and powers_ok
-    return LineResult(ok, how="index sets counted, n = 1..30", kind="proof", detail={"ok": ok})
+def rgb_index_sets(override: dict[str, str] | None = None, n_max: int = 30) -> LineResult:
+    """The index sets read from the transcriptions of eqs. R_system, G_system, B_system, R_system_leq_n and
+    R_system_geq_n: for n = 1..n_max, every (i, j) of the three full systems gives non-negative powers in the printed
+    explicit formulas, the full R set is the disjoint union of the two printed halves, and R u G u B (equal
+    functions merged) has exactly delta_n = 3n(n+1)+1 members, the exponent vectors of T_{2n}
+    (:func:`~paper_repro.core.labels.united_system`).  ``override`` replaces transcriptions (tests)."""
+    text = _transcribed(INDEX_SET_LINES, override)
+    bad: list[str] = []
+    for n in range(1, n_max + 1):
+        try:
+            sets = {k: _read_pairs(text[k], n) for k in INDEX_SET_LINES}
+        except ValueError as exc:
+            return LineResult(False, how="index sets read from the transcriptions", kind="exhaustive",
+                              detail={"unread": str(exc)})
+        funcs = set()
+        for color, key in zip("RGB", INDEX_SET_LINES[:3]):
+            for i, j in sets[key]:
+                e = printed_exponents(color, n, i, j)
+                if e is None:
+                    bad.append(f"n={n}: {color}_{{{2 * n},{2 * n - i},{j}}} has a negative power")
+                else:
+                    funcs.add(e)
+        full, low, high = (set(sets[k]) for k in ("sec1_3-R-system", "sec1_3-R-leq-n", "sec1_3-R-geq-n-relation"))
+        if low & high or low | high != full or len(full) != len(sets["sec1_3-R-system"]):
+            bad.append(f"n={n}: the R set is not the disjoint union of its printed halves")
+        if len(funcs) != 3 * n * (n + 1) + 1 or funcs != {exponents(lb) for lb in united_system(n)}:
+            bad.append(f"n={n}: R u G u B has {len(funcs)} distinct functions, not those of T_{{2n}}")
+    return LineResult(not bad, how=f"index sets read from the transcriptions, powers of the printed explicit formulas "
+                      f"and the distinct functions of R u G u B against delta_n and T_{{2n}}, n = 1..{n_max}",
+                      kind="exhaustive", detail={"n_max": n_max, "problems": bad[:3]})
 
 
 @line_check("sec1_3-order-n3")
@@ -337,7 +395,7 @@ def _boundary(var: int) -> LineResult:
                 ck = c_const(n, k, a, "exact")
                 value = ck * pt["alpha-t"][0] ** (2 * n - k) * pt["t"][0] ** k
                 ok &= value / ck == _factor_derivative(2 * n - k, 0, 0, pt["alpha-t"]) * pt["t"][0] ** k
-    return LineResult(ok, how="exponent vectors of T_{2n} restricted to the edge, n = 1..12", kind="proof",
+    return LineResult(ok, how="exponent vectors of T_{2n} restricted to the edge, n = 1..12", kind="exhaustive",
                       detail={"ok": ok})
 
 
@@ -373,7 +431,7 @@ def c_formula() -> LineResult:
                 pu_ok &= total == 1
     return LineResult(poly_ok and pu_ok, how="polynomial identity in cos(alpha/2) with the expansion of "
                       "(X^2+2cXY+Y^2)^n (n <= 15); exact partition of unity at 4 rational points (n <= 5)",
-                      kind="proof", detail={"polynomial_identity": poly_ok, "partition_of_unity": pu_ok})
+                      kind="exhaustive", detail={"polynomial_identity": poly_ok, "partition_of_unity": pu_ok})
 
 
 @line_check("sec1_3-c-symmetry")
@@ -381,7 +439,7 @@ def c_symmetry() -> LineResult:
     ok = all(c_numerator(n, i) == c_numerator(n, 2 * n - i)[: i + 1] and not any(c_numerator(n, 2 * n - i)[i + 1:])
              for n in range(1, 31) for i in range(n + 1))
     return LineResult(ok, how="the printed c_{2n,i} and c_{2n,2n-i} as polynomials in cos(alpha/2), n = 1..30",
-                      kind="proof", detail={"ok": ok})
+                      kind="exhaustive", detail={"ok": ok})
 
 
 P = 2**61 - 1
@@ -591,7 +649,7 @@ def bernstein_polynomials() -> LineResult:
         mid = (one_m + s) ** (2 * n)
         right = sum((comb(2 * n, i) * one_m ** (2 * n - i) * s**i for i in range(2 * n + 1)), fmpq_poly([0]))
         ok &= left == mid == right
-    return LineResult(ok, how="fmpq_poly identities, n = 1..20", kind="proof", detail={"ok": ok})
+    return LineResult(ok, how="fmpq_poly identities, n = 1..20", kind="exhaustive", detail={"ok": ok})
 
 
 @line_check("sec1_3-sin-power-leading")
@@ -625,7 +683,7 @@ def chain_ok(param: str, printed: tuple[int, int]) -> bool:
 def _chain(param: str) -> LineResult:
     ok = chain_ok(param, PRINTED_CHAIN[param])
     return LineResult(ok, how="direction vector of the printed affine parametrization; binomial expansion of "
-                      "(d_a - d_b)^r as polynomials (r <= 10)", kind="proof",
+                      "(d_a - d_b)^r as polynomials (r <= 10)", kind="exhaustive",
                       detail={"direction": list(step_geometry(param)[0])})
 
 
@@ -663,7 +721,8 @@ def param_onto(param: str, y_to=lambda a, x: a - x) -> bool:
 
 def _param(param: str) -> LineResult:
     ok = param_onto(param)
-    return LineResult(ok, how="exact images of a grid of the parameter triangle and of its vertices (alpha = 3/2)",
+    return LineResult(ok, how="exact images of a grid of the parameter triangle and of its vertices (alpha = 3/2; "
+                      "the maps are linear in (alpha, x, y), so one alpha > 0 stands for every alpha)",
                       kind="proof", detail={"onto": ok})
 
 
@@ -716,7 +775,7 @@ def printed_L(n: int) -> set[int]:
 def l_set() -> LineResult:
     printed = {(n, 0): printed_L(n) for n in range(1, 13)}
     computed = {(n, 0): set(range(len(united_system(n)))) for n in range(1, 13)}
-    return _set_result(printed, computed, "the printed sums against T_{2n}, n = 1..12", kind="proof")
+    return _set_result(printed, computed, "the printed sums against T_{2n}, n = 1..12", kind="exhaustive")
 
 
 def _proof_sets(printed_fn, computed_fn, rs=lambda n: [0], ns=N_PROOF, corrected_fn=None, kind="exact-evidence"):
@@ -938,7 +997,7 @@ def r0p1_omitted() -> LineResult:
     for n in range(1, 13):
         kept = dsum("R", n, 0, 0) | {lab("G", n, 0, 0)}
         ok &= all((exponents(lb)[2] >= 1) == (k not in kept) for k, lb in enumerate(united_system(n)))
-    return LineResult(ok, how="exponent of sin(v/2) in every function of T_{2n}, n = 1..12", kind="proof",
+    return LineResult(ok, how="exponent of sin(v/2) in every function of T_{2n}, n = 1..12", kind="exhaustive",
                       detail={"ok": ok})
 
 
@@ -979,7 +1038,7 @@ def r0p2_omitted() -> LineResult:
         alive = centre(n) | dsum("R", n, 1, n - 1) | isum("G", n, 0, 1, 2 * n - 1) | dsum("G", n, 1, n - 1) \
             | dsum("B", n, 0, n - 1)
         ok &= all((exponents(united_system(n)[k])[0] >= 1) == (k not in kept) for k in alive)
-    return LineResult(ok, how="exponent of sin(u/2) in the functions of L-tilde, n = 1..12", kind="proof",
+    return LineResult(ok, how="exponent of sin(u/2) in the functions of L-tilde, n = 1..12", kind="exhaustive",
                       detail={"ok": ok})
 
 

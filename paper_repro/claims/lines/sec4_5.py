@@ -198,7 +198,7 @@ def check_relation() -> LineResult:
     ext = all(v == [-int(k), 2 * int(k)] for k, v in det["z_used_min_max"].items())
     return LineResult(ok and ext, how="the printed conditions (sums or differences equal to a common z in "
                       "{-n..2n}) compared with phase equivalence (a - b or a + b in Z(1,1,1)) on all pairs of E_n, "
-                      "n = 1..4; both ends of the z range are used", kind="proof", detail={**det, "n_max": 4})
+                      "n = 1..4; both ends of the z range are used", kind="exhaustive", detail={**det, "n_max": 4})
 
 
 # -- phase identities (display after the Definition) --------------------------------------------------------------
@@ -251,23 +251,23 @@ def _register_phase(kind: str, steps_how: str, za_how: str) -> None:
     @line_check(f"sec4_5-phase-{kind}")
     def check_steps() -> LineResult:
         st = _phase_steps(kind)
-        return LineResult(st["step1"] and st["step2_3"], how=steps_how, kind="proof",
+        return LineResult(st["step1"] and st["step2_3"], how=steps_how, kind="exhaustive",
                           detail={k: v for k, v in st.items() if not k.startswith("last")})
 
     @line_check(f"sec4_5-phase-{kind}-za")
     def check_za() -> LineResult:
         st = _phase_steps(kind)
         printed, corrected = st["last_za"], st["last"]
-        return LineResult(printed, corrected, how=za_how, kind="proof",
+        return LineResult(printed, corrected, how=za_how, kind="exhaustive",
                           detail={"printed_za": printed, "with_z_alpha": corrected})
 
 
 _register_phase("cos", "exponential expansion over (u, v, alpha) with w = alpha - u - v, every related pair of "
                 "E_n, n <= 2, both signs", "last step expanded with the printed 'za' read as z times a free a, "
-                "and with z alpha")
+                "and with z alpha, every related pair of E_n, n <= 2")
 _register_phase("sin", "exponential expansion, every related pair of E_n, n <= 2, both signs: "
                 "sin(r2 u + g2 v + b2 w) = sin(z alpha -+ X)",
-                "as sec4_5-phase-cos-za for sin(za) cos X -+ cos(z alpha) sin X")
+                "as sec4_5-phase-cos-za for sin(za) cos X -+ cos(z alpha) sin X, n <= 2")
 
 
 @line_check("sec4_5-examples-n3")
@@ -339,7 +339,7 @@ def check_prop_union() -> LineResult:
     printed, corrected = prop_sets_agree(10, 1), prop_sets_agree(10, 0)
     return LineResult(all(printed.values()), all(corrected.values()),
                       how="class keys: E_n/~ minus the union of E_i/~ for i from 1 (printed) and from 0 (corrected) "
-                          "against the printed representatives, n = 1..10", kind="proof",
+                          "against the printed representatives, n = 1..10", kind="exhaustive",
                       detail={"printed_fails_at_n": [n for n, v in printed.items() if not v],
                               "classes_left_at_n_1_printed": len(new_class_keys(1, 1)),
                               "corrected_holds_n_1_10": all(corrected.values())})
@@ -413,7 +413,7 @@ def check_proof_reduction() -> LineResult:
         ok_cover &= mem <= reps
     return LineResult(ok_formula and ok_cover, how="exponent vectors: the restated R_{2n,2n-i,j} equals "
                       "R_system_leq_n for j <= i <= n, and every function of T_{2n} is a permutation of variables "
-                      "of one of them (n <= 8)", kind="proof", detail={"n_max": 8})
+                      "of one of them (n <= 8)", kind="exhaustive", detail={"n_max": 8})
 
 
 def power_reduction_ok(m: int, which: str, printed=None) -> bool:
@@ -425,7 +425,7 @@ def power_reduction_ok(m: int, which: str, printed=None) -> bool:
 @line_check("sec4_5-power-reduction")
 def check_power_reduction() -> LineResult:
     res = {f"{w}^{m}": power_reduction_ok(m, w) for w in ("cos", "sin") for m in range(0, 21)}
-    return LineResult(all(res.values()), how="both sides expanded exactly, m = 0..20", kind="proof",
+    return LineResult(all(res.values()), how="both sides expanded exactly, m = 0..20", kind="exhaustive",
                       detail={"failing": [k for k, v in res.items() if not v], "m_max": 20})
 
 
@@ -458,7 +458,7 @@ def k_sets_agree(n_max: int, printed_upper=None) -> tuple[dict, dict]:
 def check_product_types() -> LineResult:
     types_ok, _ = k_sets_agree(5)
     return LineResult(all(types_ok.values()), how="exact expansion of each factor sin^{2n-i}(u/2), sin^i(w/2), "
-                      "cos^{i-j}(v/2), sin^j(v/2): cosine or sine series, n <= 5, j <= i <= n", kind="proof",
+                      "cos^{i-j}(v/2), sin^j(v/2): cosine or sine series, n <= 5, j <= i <= n", kind="exhaustive",
                       detail=types_ok)
 
 
@@ -476,7 +476,7 @@ def k_case_check(case: str) -> LineResult:
     printed, corrected = _k_results()
     return LineResult(printed[case], corrected[case] if not printed[case] else None,
                       how="the k's with a non-zero term in the exact expansion of each factor against the printed "
-                          "ranges {0..B} (B must be a non-negative integer), n <= 6, j <= i <= n", kind="proof",
+                          "ranges {0..B} (B must be a non-negative integer), n <= 6, j <= i <= n", kind="exhaustive",
                       detail={"case_i_j_mod_2": case, "printed_holds": printed[case],
                               "corrected_holds": corrected[case],
                               "example": "n=2, i=1, j=0: third factor cos^1(v/2) has k in {0}; printed bound "
@@ -523,7 +523,7 @@ def check_eight_terms() -> LineResult:
         count += 1
     return LineResult(ok, how="exact expansion of the product: a sine series whose frequencies are "
                       "+-(A, s2 C + s3 D, s4 B) (s1 = 1), every (i, j) odd and (k1..k4) in K_{1,1}, n <= 4",
-                      kind="proof", detail={"products": count})
+                      kind="exhaustive", detail={"products": count})
 
 
 @line_check("sec4_5-shift-chain")
@@ -546,7 +546,8 @@ def check_shift_chain() -> LineResult:
             ok3 &= step2.linear(on_plane) == step3.linear(on_plane)
             ok_int &= all(x.denominator == 1 for x in P)
     return LineResult(ok1 and ok2 and ok3, how="exact expansion over (u, v, w, alpha) (alpha free for the first two "
-                      "steps, alpha = u + v + w for the last), all (i, j) odd, K_{1,1}, signs, n <= 3", kind="proof",
+                      "steps, alpha = u + v + w for the last), all (i, j) odd, K_{1,1}, signs, n <= 3",
+                      kind="exhaustive",
                       detail={"step_add_subtract": ok1, "step_addition_formula": ok2, "step_constraint": ok3,
                               "integer_coefficients": ok_int})
 
@@ -566,7 +567,7 @@ def check_integer_class() -> LineResult:
             ok_le_n &= max(shifted) <= n
     return LineResult(ok_int and ok_nat and ok_same and ok_le_n, how="all (i, j) odd, K_{1,1}, signs, n <= 5: "
                       "coefficients integer, minus z = their minimum non-negative, same class, and at most n (in E_n)",
-                      kind="proof", detail={"integer": ok_int, "natural": ok_nat, "same_class": ok_same,
+                      kind="exhaustive", detail={"integer": ok_int, "natural": ok_nat, "same_class": ok_same,
                                             "in_E_n": ok_le_n})
 
 
@@ -590,7 +591,7 @@ def max_values(n_max: int, s4_values=(-1, 1)) -> dict[str, bool]:
 def check_max_bounds() -> LineResult:
     res = max_values(7)
     return LineResult(all(res.values()), how="maxima by enumeration over K_{1,1} and the signs (s4 in {-1, +1} as "
-                      "defined after the eight-term form), every odd (i, j), n <= 7", kind="proof", detail=res)
+                      "defined after the eight-term form), every odd (i, j), n <= 7", kind="exhaustive", detail=res)
 
 
 @cache
@@ -610,7 +611,7 @@ def check_inclusion() -> LineResult:
     return LineResult(all(res.values()), how="exact exponential expansion of every function of T_{2n}: each "
                       "frequency is m(1,1,1) + an element of E_n, so each term is a phase m alpha times cos/sin of an "
                       "E_n combination (n <= 3); with the class identities (sec4_5-phase-*) span T_{2n} is in "
-                      "span V_n", kind="proof", detail={str(k): v for k, v in res.items()})
+                      "span V_n", kind="exhaustive", detail={str(k): v for k, v in res.items()})
 
 
 # ---------------------------------------------------------------------------------------------------------------
@@ -624,7 +625,7 @@ def check_weights_index() -> LineResult:
         ok &= len(printed) == len(set(printed)) == 3 * n * (n + 1) + 1
         ok &= set(printed) == {lab.coefficient for lab in united_system(n)}
     return LineResult(ok, how="the printed index sets against the labels of T_{2n} (united_system), n <= 12; "
-                      "count 3n(n+1)+1", kind="proof", detail={"n_max": 12})
+                      "count 3n(n+1)+1", kind="exhaustive", detail={"n_max": 12})
 
 
 @cache
@@ -731,7 +732,7 @@ def check_unknowns() -> LineResult:
     ok = all(c == (n + 1) * (n + 2) // 2 and one and orb for n, (c, one, orb) in rows.items())
     return LineResult(ok, how="union-find of the delta_n coefficients by symmetry_condition_1..3: (n+1)(n+2)/2 "
                       "classes, one per member of {r_{2n,2n-i,j}}_{j=0,i=j}^{n,n}, equal to the orbits of the six "
-                      "permutations of (u, v, w) (n <= 10)", kind="proof",
+                      "permutations of (u, v, w) (n <= 10)", kind="exhaustive",
                       detail={str(n): c for n, (c, _, _) in rows.items()})
 
 
@@ -753,7 +754,7 @@ def check_matrix_sizes() -> LineResult:
         ok &= len(orbits) == (n + 1) * (n + 2) // 2
         ok &= len(orbits) - len(lev0) == n * (n + 1) // 2
     return LineResult(ok, how="orbits of T_{2n} under the six permutations of (u, v, w) (exponent vectors) and the "
-                      "orbits of level 0, n <= 12", kind="proof", detail={"n_max": 12})
+                      "orbits of level 0, n <= 12", kind="exhaustive", detail={"n_max": 12})
 
 
 # -- system of equations and derivatives ----------------------------------------------------------------------------
@@ -845,7 +846,7 @@ def check_chain_rule() -> LineResult:
                 ok &= direct == formula
     return LineResult(ok, how="exact exponential expansion of every function of T_{2n} (n <= 2), orders r <= n, "
                       "compared as identities in (x, y) (u = alpha - x: the constant alpha only multiplies each "
-                      "exponential by a phase, the same on both sides)", kind="proof", detail={"n_max": 2})
+                      "exponential by a phase, the same on both sides)", kind="exhaustive", detail={"n_max": 2})
 
 
 @line_check("sec4_5-tan-polynomial")
@@ -865,7 +866,8 @@ def check_tan_polynomial() -> LineResult:
     # cos(x/2) > 0 for x in [0, alpha], alpha < pi: x/2 < pi/2 (bound, no computation needed beyond that)
     return LineResult(ok, how="exponent bookkeeping of the derivatives of the monomials (n <= 6, r <= n): every term "
                       "not vanishing at v = 0 has total degree 2n in the four half-angle functions; each is linear in "
-                      "sin(x/2), cos(x/2), so dividing by cos^{2n}(x/2) gives a polynomial in tan(x/2)", kind="proof",
+                      "sin(x/2), cos(x/2), so dividing by cos^{2n}(x/2) gives a polynomial in tan(x/2)",
+                      kind="exhaustive",
                       detail={"n_max": 6})
 
 
@@ -1022,7 +1024,7 @@ def check_blending_def() -> LineResult:
         centre = [exponents(BasisLabel(X, n, n, n)) for X in "RGB"]
         ok &= centre[0] == centre[1] == centre[2]
     return LineResult(ok, how="index set of the normalized system vs the labels of T_{2n} (n <= 8); R_{2n,n,n}, "
-                      "G_{2n,n,n}, B_{2n,n,n} have the same exponent vector", kind="proof", detail={"n_max": 8})
+                      "G_{2n,n,n}, B_{2n,n,n} have the same exponent vector", kind="exhaustive", detail={"n_max": 8})
 
 
 __all__ = ["EP", "class_key", "phase_equivalent", "printed_relation", "relation_matches", "power_reduction_ok",

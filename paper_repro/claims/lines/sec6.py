@@ -344,7 +344,7 @@ def trig_curves() -> LineResult:
     ranks = {f"n={n},t={t}": a_forms_rank(n, rational_alpha(t)) for n in range(1, 7) for t in TS}
     ok = all(v == 2 * int(k.split(",")[0][2:]) + 1 for k, v in ranks.items())
     return LineResult(ok, how="exact rank of the coefficient matrix of A_{2n,i} as binary forms, n = 1..6, "
-                      "tan(alpha/4) in {1/5, 1/3, 1/2, 3/4}", kind="proof",
+                      "tan(alpha/4) in {1/5, 1/3, 1/2, 3/4}", kind="exact-evidence",
                       detail={"ranks_t_1_3": [ranks[f"n={n},t=1/3"] for n in range(1, 7)]})
 
 
