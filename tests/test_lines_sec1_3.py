@@ -160,3 +160,19 @@ def test_printed_exponents_are_those_of_the_package():
                 for i in range(j, 2 * n - j + 1):
                     assert C.printed_exponents(c, n, i, j) == exponents(BasisLabel(c, n, i, j))
     assert C.printed_exponents("R", 2, 1, 2) is None  # i < j
+
+
+@pytest.mark.parametrize("line_id", sorted(C.ZERO_LINES))
+def test_zero_conclusions_are_their_own_checks_and_reject_wrong_transcriptions(line_id, monkeypatch):
+    """gamma' = 0 (and rho', beta') is checked as the step's conclusion, not through the display before it."""
+    line = {x.id: x for x in P.LINES}[line_id]
+    assert line.check == line_id
+    assert C.zero_conclusion(line_id).holds_as_printed
+    assert not C.zero_conclusion(line_id, line.verbatim.replace("=0,", "=1,")).holds_as_printed
+    lo = line.verbatim.split("~i=")[1].split(",")[0]
+    wrong_lo = line.verbatim.replace(f"~i={lo},", f"~i={int(lo) + 1},")
+    assert not C.zero_conclusion(line_id, wrong_lo).holds_as_printed  # one constant left out
+    shorter = line.verbatim.replace("\\ldots,2n", "\\ldots,2n-2")
+    assert shorter != line.verbatim and not C.zero_conclusion(line_id, shorter).holds_as_printed
+    monkeypatch.setattr(C, "_rank", lambda rows: len(rows[0]) - 1)  # dependent restrictions: nothing is forced
+    assert not C.zero_conclusion(line_id).holds_as_printed

@@ -1458,3 +1458,63 @@ def interval_typo(printed: str = r"\left[ 0\,\alpha\right]", corrected: str = r"
     return LineResult(endpoints(printed) == ["0", r"\alpha"], endpoints(corrected) == ["0", r"\alpha"],
                       how="the printed interval parsed into endpoints", kind="proof",
                       detail={"printed_endpoints": endpoints(printed)})
+
+
+# -- the conclusions of the order-0 steps: the primed constants vanish (read from the transcription) ---------------
+#: line -> (parametrization index 0/1/2, colour of the primed constants of level 0, colour of the one at i = 2n)
+ZERO_LINES = {"sec1_3-r0-p1-zero": (0, "R", "G"), "sec1_3-r0-p2-zero": (1, "G", "B"),
+              "sec1_3-r0-p3-zero": (2, "B", None)}
+
+
+def zero_conclusion(line_id: str, verbatim: str | None = None) -> LineResult:
+    """The printed conclusion ``rho'/gamma'/beta'_{2n,2n-i,0} = 0, i = a..b`` of an order-0 step, read from its
+    transcription (range and right-hand side): the constants it names (by the definitions of the primed
+    constants: color_{2n,2n-i,0} for i <= 2n-1, the other colour's corner for i = 2n) are exactly those of the
+    functions whose restriction to the step's edge does not vanish (the elimination recomputed from exact values),
+    and those restrictions are linearly independent (exact rank at 2n + 4 points of the edge), so a vanishing
+    combination has exactly these constants equal to the printed right-hand side 0 (n = 1..6)."""
+    from paper_repro.printed.lines.read import bound, listed_range, right_hand_side
+
+    param_index, color, alias = ZERO_LINES[line_id]
+    tex = verbatim if verbatim is not None else _transcribed([line_id])[line_id]
+    lo, hi = listed_range(tex, "i")
+    rhs = right_hand_side(tex, r",~i\s*=")
+    bad = []
+    for n in N_PROOF:
+        named = set()
+        for i in range(bound(lo, n=n), bound(hi, n=n) + 1):
+            if 0 <= i <= 2 * n - 1:
+                named.add(lab(color, n, i, 0))
+            elif alias and i == 2 * n:
+                named.add(lab(alias, n, 0, 0))
+            else:
+                named.add(-1 - i)  # a constant that does not exist
+        forced = survivors(n, STEP_PARAMS[param_index], 0, alive_before(n, 0, param_index))
+        labels = united_system(n)
+        pts = [boundary_point(ALPHA_TS[0], fmpq(k, 2 * n + 5)) for k in range(1, 2 * n + 5)]
+        rows = [[step_value(exponents(labels[k]), STEP_PARAMS[param_index], 0, pt) for k in sorted(forced)]
+                for pt in pts]
+        independent = _rank(rows) == len(forced)
+        if named != forced or not independent:
+            bad.append({"n": n, "printed_only": _names(n, {k for k in named if k >= 0} - forced),
+                        "computed_only": _names(n, forced - named), "independent": independent})
+    ok = rhs == "0" and not bad
+    return LineResult(ok, how="range and right-hand side read from the transcription; the constants of the functions "
+                      "not vanishing on the step's edge (exact values) and their exact rank at 2n + 4 points of the "
+                      f"edge, n = {N_PROOF.start}..{N_PROOF.stop - 1}", kind="exhaustive",
+                      detail={"printed_range": [lo, hi], "right_hand_side": rhs, "mismatches": bad[:2]})
+
+
+@line_check("sec1_3-r0-p1-zero")
+def r0p1_zero() -> LineResult:
+    return zero_conclusion("sec1_3-r0-p1-zero")
+
+
+@line_check("sec1_3-r0-p2-zero")
+def r0p2_zero() -> LineResult:
+    return zero_conclusion("sec1_3-r0-p2-zero")
+
+
+@line_check("sec1_3-r0-p3-zero")
+def r0p3_zero() -> LineResult:
+    return zero_conclusion("sec1_3-r0-p3-zero")
