@@ -115,3 +115,16 @@ def test_inclusion_rejects_a_too_small_E():
     lab_max = max(max(f) - min(f) for lab in ck.united_system(2)
                   for f in ck.half_monomial(ck.exponents(lab)).terms)
     assert ck.inclusion_proof(2) and lab_max == 2
+
+
+# -- sec4_5-chain-sum tests its own line, "= 0" included (issue 31, item 6) --------------------------------------------
+def test_chain_sum_is_checked_with_its_value_and_rejects_wrong_transcriptions():
+    line = {x.id: x for x in pl.LINES}["sec4_5-chain-sum"]
+    assert line.check == "sec4_5-chain-sum" and ck.check_chain_sum().holds_as_printed
+    for right, wrong in (("=0,~", "=1,~"), ("\\left( -1\\right) ^{k}", "\\left( 1\\right) ^{k}"),
+                         ("v^{r-k}", "v^{r}"), ("\\dbinom{r}{k}", "\\dbinom{r}{0}"),
+                         ("\\sum_{k=0}^{r}", "\\sum_{k=1}^{r}"), ("_{y=0}", "_{y=x}")):
+        assert right in line.verbatim
+        assert not ck.check_chain_sum(line.verbatim.replace(right, wrong)).holds_as_printed, wrong
+    orders = {x.id: x for x in pl.LINES}["sec4_5-parametrization-restated"].verbatim
+    assert not ck.check_chain_sum(orders=orders.replace("r=1,2", "r=0,1")).holds_as_printed  # r = 0 gives 1

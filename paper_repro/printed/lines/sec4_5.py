@@ -1216,7 +1216,7 @@ LINES: list[Line] = [
                    't( x,y\\right) \\right) \\right\\vert _{y=0}=0,~\\forall x\\in\\left[ 0,\\alpha\\right]'),
          says='sum_k C(r,k)(-1)^k d^r L/dv^{r-k}dw^k at y = 0 equals 0 for x in [0, alpha].',
          status='checked',
-         check='sec4_5-chain-rule'),
+         check='sec4_5-chain-sum'),
     Line(id='sec4_5-chain-y-range',
          tex=(1980, 1980),
          near='normalizing_coeff_of_level_0',
