@@ -233,11 +233,38 @@ def convex_hull_n123() -> LineResult:
 
 
 # boundary curves ------------------------------------------------------------------------------------------
-EDGES = {  # printed line -> (colour of the control points, zero variable, argument variable of A)
-    "u0": ("g", 0, 2),
-    "v0": ("r", 1, 0),
-    "w0": ("b", 2, 1),
-}
+_NET_SET = re.compile(r"\\mathbf\{([rgb])\}_\{2n,2n-i,j\}\\right\\\}\s*_\{j=([^,{}]+),i=([^{}]+)\}\s*%?\s*"
+                      r"\^\{([^,{}]+),([^{}]+)\}")
+_BOUNDARY = re.compile(r"\\left\(\s*([^()]*?)\\right\)\s*&?\s*=\s*\\sum_\{i=([^{}]+)\}%?\s*\^\{([^{}]+)\}\s*"
+                       r"\\mathbf\{([rgb])\}_\{2n,2n-i,0\}A_\{2n,2n-i\}\^\{\\alpha\}\\left\(\s*([uvw])\s*\\right\)")
+VARS = ("u", "v", "w")
+
+
+def net_from_transcription(n: int, tex: str | None = None) -> list[str]:
+    """The control points of def:surface_patch read from the transcription of its net (line sec6-control-net-set;
+    that printed set lacks the centre, erratum sec6-control-net-set, which no boundary curve uses)."""
+    from paper_repro.printed.lines.read import bound
+
+    tex = _LINE["sec6-control-net-set"].verbatim if tex is None else tex
+    out = []
+    for letter, jlo, ilo, jhi, ihi in _NET_SET.findall(tex):
+        out += [f"{letter}_{{{2 * n},{2 * n - i},{j}}}" for j in range(bound(jlo, n=n), bound(jhi, n=n) + 1)
+                for i in range(bound(ilo, n=n, j=j), bound(ihi, n=n, j=j) + 1)]
+    return out
+
+
+def read_boundary(tex: str) -> tuple[int, int, str, str, str]:
+    """(zero variable, argument variable of A, colour, lower and upper bound of i) of a printed boundary curve."""
+    m = _BOUNDARY.search(tex)
+    if not m:
+        raise ValueError(f"not a boundary curve: {tex[:60]!r}")
+    args = [a.strip() for a in m.group(1).split(",")]
+    if args.count("0") != 1 or len(args) != 3:
+        raise ValueError(f"no single zero argument in s({m.group(1)})")
+    zero, arg = args.index("0"), VARS.index(m.group(5))
+    if zero == arg:
+        raise ValueError(f"A_{{2n,2n-i}}({m.group(5)}) of the variable that is 0 on the edge")
+    return zero, arg, m.group(4), m.group(2), m.group(3)
 
 
 def edge_points(alpha: RationalAngle, zero: int, ts: Sequence[fmpq]) -> RationalPoints:
@@ -249,8 +276,8 @@ def edge_points(alpha: RationalAngle, zero: int, ts: Sequence[fmpq]) -> Rational
     return RationalPoints(alpha, tuple(tq(alpha.t, t) for t in ts), tuple(ts))
 
 
-def boundary_holds(n: int, alpha: RationalAngle, zero: int, color: str, arg: int, seed: int = 3) -> bool:
-    """s on the edge x_zero = 0 equals sum_{i=0}^{2n} color_{2n,2n-i,0} A_{2n,2n-i}(x_arg) (exact)."""
+def boundary_holds(n: int, alpha: RationalAngle, zero: int, arg: int, names: Sequence[str], seed: int = 3) -> bool:
+    """s on the edge x_zero = 0 equals sum_{i=0}^{2n} names[i] A_{2n,2n-i}(x_arg) (exact, a random rational net)."""
     ts = [fmpq(k, 7) * alpha.t for k in range(1, 6)]
     pts = edge_points(alpha, zero, ts)
     net = random_net(n, 2, seed)
@@ -258,43 +285,79 @@ def boundary_holds(n: int, alpha: RationalAngle, zero: int, color: str, arg: int
     half = pts.half_angle_values()  # sin u/2, cos u/2, sin v/2, cos v/2, sin w/2, cos w/2
     idx = index_of(n)
     consts = [c_const(n, k, alpha, "exact") for k in range(2 * n + 1)]
+    if len(names) != 2 * n + 1:
+        return False
     for p in range(len(ts)):
         s_t = half[2 * arg][p]  # sin(t/2), t the argument of A
         other = 3 - zero - arg
         s_rest = half[2 * other][p]  # sin((alpha - t)/2) on this edge
         rhs = [fmpq(0), fmpq(0)]
-        for i in range(2 * n + 1):
+        for i, name in enumerate(names):
             k = 2 * n - i
             a_val = consts[k] * s_rest ** (2 * n - k) * s_t**k
-            point = net[idx[f"{color}_{{{2 * n},{k},0}}"]]
+            point = net[idx[name]]
             rhs = [rhs[d] + a_val * point[d] for d in range(2)]
         if rhs != lhs[p]:
             return False
     return True
 
 
-def _boundary(edge: str) -> LineResult:
-    color, zero, arg = EDGES[edge]
-    ok = all(boundary_holds(n, rational_alpha(t), zero, color, arg) for n in (1, 2, 3) for t in (TS[1], TS[3]))
-    return LineResult(ok, how="exact patch of a random rational net on the edge vs the printed sum of control points "
-                      "times A_{2n,2n-i} (eq. univariate_basis), 5 edge points, n = 1, 2, 3, "
-                      "tan(alpha/4) in {1/3, 3/4}",
-                      kind="exact-evidence", detail={"edge": edge, "colour": color})
+def corner_name(n: int, color: str, i: int, net: Sequence[str]) -> str | None:
+    """The control point of ``net`` whose function is the printed color_{2n,2n-i,0} (exponent vectors from the
+    printed explicit formulas, :func:`paper_repro.claims.lines.sec1_3.printed_exponents`)."""
+    from paper_repro.claims.lines.sec1_3 import printed_exponents
+
+    want = printed_exponents(color.upper(), n, i, 0)
+    labs, idx = united_system(n), index_of(n)
+    hits = [name for name in net if exponents(labs[idx[name]]) == want]
+    return hits[0] if len(hits) == 1 else None
+
+
+def boundary_curve(line_id: str, verbatim: str | None = None) -> LineResult:
+    """A printed boundary curve s(..0..) = sum_{i=a}^{b} x_{2n,2n-i,0} A_{2n,2n-i}(t), read from its transcription:
+    it holds as printed iff every control point it names is one of the net of def:surface_patch (read from its
+    transcription) and the identity holds exactly; the corrected curve names, for a term whose point is not in the
+    net, the net's point of the same function (the corner of the next colour)."""
+    from paper_repro.printed.lines.read import bound
+
+    tex = _LINE[line_id].verbatim if verbatim is None else verbatim
+    try:
+        zero, arg, color, lo, hi = read_boundary(tex)
+    except ValueError as exc:
+        return LineResult(False, how="the printed boundary curve read from the transcription", kind="exact-evidence",
+                          detail={"unread": str(exc)})
+    printed_ok, corrected_ok, renamed = True, True, {}
+    for n in (1, 2, 3):
+        net = net_from_transcription(n)
+        names = [f"{color}_{{{2 * n},{2 * n - i},0}}" for i in range(bound(lo, n=n), bound(hi, n=n) + 1)]
+        fixed = [x if x in net else corner_name(n, color, 2 * n - int(x.split(",")[1]), net) for x in names]
+        renamed.update({x: y for x, y in zip(names, fixed) if x != y})
+        in_net = all(x in net for x in names)
+        good_fixed = all(y is not None for y in fixed)
+        for t in (TS[1], TS[3]):
+            a = rational_alpha(t)
+            printed_ok &= in_net and boundary_holds(n, a, zero, arg, names)
+            corrected_ok &= good_fixed and boundary_holds(n, a, zero, arg, fixed)
+    return LineResult(printed_ok, None if printed_ok else corrected_ok,
+                      how="the curve read from the transcription (zero argument, colour, sum bounds, argument of A) "
+                      "and the net from that of def:surface_patch; exact patch of a random rational net on the edge "
+                      "vs the sum, 5 edge points, n = 1, 2, 3, tan(alpha/4) in {1/3, 3/4}", kind="exact-evidence",
+                      detail={"edge": f"{VARS[zero]} = 0", "colour": color, "not_in_the_net": renamed})
 
 
 @line_check("sec6-boundary-u0")
 def boundary_u0() -> LineResult:
-    return _boundary("u0")
+    return boundary_curve("sec6-boundary-u0")
 
 
 @line_check("sec6-boundary-v0")
 def boundary_v0() -> LineResult:
-    return _boundary("v0")
+    return boundary_curve("sec6-boundary-v0")
 
 
 @line_check("sec6-boundary-w0")
 def boundary_w0() -> LineResult:
-    return _boundary("w0")
+    return boundary_curve("sec6-boundary-w0")
 
 
 CORNERS = {"r": (0,), "g": (2,), "b": (1,)}  # colour -> the variable equal to alpha at its corner
