@@ -176,3 +176,31 @@ def test_zero_conclusions_are_their_own_checks_and_reject_wrong_transcriptions(l
     assert shorter != line.verbatim and not C.zero_conclusion(line_id, shorter).holds_as_printed
     monkeypatch.setattr(C, "_rank", lambda rows: len(rows[0]) - 1)  # dependent restrictions: nothing is forced
     assert not C.zero_conclusion(line_id).holds_as_printed
+
+
+# -- the sums of L, L-tilde, L-hat, L_0, L_r, ... are read from their rows (issue 31, item 6) ---------------------
+@pytest.mark.parametrize("check, line_id, right, wrong", [
+    ("l_set", "sec1_3-L-G-row", "\\sum\\limits_{j=0}^{n-1}", "\\sum\\limits_{j=1}^{n-1}"),
+    ("ltilde_set", "sec1_3-Ltilde-row2", "\\sum\\limits_{i=1}^{2n-1}", "\\sum\\limits_{i=0}^{2n-1}"),
+    ("lhat_set", "sec1_3-Lhat-row3", "\\beta_{2n,2n-i,0}B_{2n,2n-i,0}", "\\beta_{2n,2n-i,1}B_{2n,2n-i,1}"),
+    ("l0_set", "sec1_3-L0-row2", "\\gamma_{2n,2n-i,j}G", "\\beta_{2n,2n-i,j}G"),
+    ("lr_set", "sec1_3-Lr-row2", "\\sum\\limits_{j=r+1}^{n-1}", "\\sum\\limits_{j=r}^{n-1}"),
+    ("lr1_set", "sec1_3-Lr1-row3", "\\sum\\limits_{i=j}^{2n-1-j}", "\\sum\\limits_{i=j}^{2n-j}"),
+    ("ltilde_r_set", "sec1_3-Ltilde-r-row2", "\\gamma_{2n,2n-i,r+1}G_{2n,2n-i,r+1}",
+     "\\gamma_{2n,2n-i,r}G_{2n,2n-i,r}"),
+    ("lhat_r_set", "sec1_3-Lhat-r-row2", "\\sum\\limits_{i=r+2}", "\\sum\\limits_{i=r+3}"),
+    ("ln2_set", "sec1_3-Ln2-row3", "\\sum\\limits_{i=n-1}^{n}", "\\sum\\limits_{i=n-1}^{n+1}"),
+    ("ln1_set", "sec1_3-Ln1", "\\rho_{2n,n,n}R_{2n,n,n}", "\\rho_{2n,n,n-1}R_{2n,n,n-1}"),
+])
+def test_sum_sets_read_their_rows_and_reject_a_wrong_transcription(check, line_id, right, wrong):
+    text = {x.id: x.verbatim for x in P.LINES}[line_id]
+    assert right in text
+    fn = getattr(C, check)
+    assert fn().holds_as_printed
+    assert not fn({line_id: text.replace(right, wrong)}).holds_as_printed
+
+
+def test_a_constant_that_does_not_match_its_function_is_unread():
+    text = {x.id: x.verbatim for x in P.LINES}["sec1_3-L-R-row"]
+    res = C.l_set({"sec1_3-L-R-row": text.replace("\\rho_{2n,n,n}R", "\\gamma_{2n,n,n}R")})
+    assert not res.holds_as_printed and "does not match" in res.detail["unread"]

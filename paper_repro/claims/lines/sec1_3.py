@@ -186,8 +186,9 @@ def centre(n: int) -> set[int]:
 
 
 def _names(n: int, idx) -> list[str]:
+    """Names of the members ``idx`` of T_{2n}; a string (a printed name that is no member) is kept as it is."""
     labels = united_system(n)
-    return sorted(labels[k].paper for k in idx)
+    return sorted(labels[k].paper if isinstance(k, int) else str(k) for k in idx)
 
 
 def _set_result(printed, computed, how: str, kind: str = "exact-evidence", corrected=None) -> LineResult:
@@ -766,19 +767,46 @@ def boundary_vars(printed=None) -> LineResult:
 # ==============================================================================================================
 # The proof of Theorem joint_systems_linear_independence
 # ==============================================================================================================
-def printed_L(n: int) -> set[int]:
-    """eq. linear_combination_union: centre; R, G, B with j = 0..n-1, i = j..2n-1-j."""
-    return centre(n) | dsum("R", n, 0, n - 1) | dsum("G", n, 0, n - 1) | dsum("B", n, 0, n - 1)
+def printed_rows(check_id: str, n: int, r: int = 0, override: dict[str, str] | None = None) -> set:
+    """The functions named by the displayed rows of the lines checked by ``check_id``, read from their
+    transcriptions (sums, bounds, constants, functions: :func:`paper_repro.printed.lines.read.sum_terms`) at order
+    n and step r: indices into T_{2n} by the functions' own names (no alias); a name that is not a member of T_{2n}
+    stays in the set as a string (a mismatch).  ``override`` replaces transcriptions (tests)."""
+    from paper_repro.printed.lines.read import sum_terms, term_indices
+    from paper_repro.printed.lines.sec1_3 import LINES
+
+    rows = {x.id: x.verbatim for x in LINES if x.check == check_id and x.kind == "display"}
+    rows.update({k: v for k, v in (override or {}).items() if k in rows})
+    strict = {lb.paper: k for k, lb in enumerate(united_system(n))}
+    out: set = set()
+    for key in sorted(rows):
+        for color, i, j in term_indices(sum_terms(rows[key]), n=n, r=r):
+            name = f"{color}_{{{2 * n},{2 * n - i},{j}}}"
+            out.add(strict.get(name, name))
+    return out
+
+
+def _read_sets(check_id: str, computed_fn, rs=lambda n: [0], ns=N_PROOF, override=None) -> LineResult:
+    """:func:`_proof_sets` with the printed sets read from the transcriptions of the check's lines."""
+    try:
+        return _proof_sets(lambda n, r: printed_rows(check_id, n, r, override), computed_fn, rs=rs, ns=ns,
+                           how="index sets of the printed sums (read from the transcriptions)")
+    except ValueError as exc:
+        return LineResult(False, how="index sets of the printed sums, read from the transcriptions",
+                          detail={"unread": str(exc)})
 
 
 @line_check("sec1_3-L-set")
-def l_set() -> LineResult:
-    printed = {(n, 0): printed_L(n) for n in range(1, 13)}
-    computed = {(n, 0): set(range(len(united_system(n)))) for n in range(1, 13)}
-    return _set_result(printed, computed, "the printed sums against T_{2n}, n = 1..12", kind="exhaustive")
+def l_set(override: dict[str, str] | None = None) -> LineResult:
+    res = _read_sets("sec1_3-L-set", lambda n, r: set(range(len(united_system(n)))), ns=range(1, 13),
+                     override=override)
+    res.how = res.how.replace("against the elimination recomputed from exact derivatives", "against T_{2n}")
+    res.kind = "exhaustive"
+    return res
 
 
-def _proof_sets(printed_fn, computed_fn, rs=lambda n: [0], ns=N_PROOF, corrected_fn=None, kind="exact-evidence"):
+def _proof_sets(printed_fn, computed_fn, rs=lambda n: [0], ns=N_PROOF, corrected_fn=None, kind="exact-evidence",
+                how="index sets of the printed sums"):
     printed, computed, corrected = {}, {}, {}
     for n in ns:
         for r in rs(n):
@@ -786,43 +814,45 @@ def _proof_sets(printed_fn, computed_fn, rs=lambda n: [0], ns=N_PROOF, corrected
             computed[(n, r)] = set(computed_fn(n, r))
             if corrected_fn:
                 corrected[(n, r)] = corrected_fn(n, r)
-    return _set_result(printed, computed, "index sets of the printed sums against the elimination recomputed from "
-                       f"exact derivatives, n = {ns.start}..{ns.stop - 1}", kind=kind,
-                       corrected=corrected if corrected_fn else None)
+    return _set_result(printed, computed, f"{how} against the elimination recomputed from exact derivatives, "
+                       f"n = {ns.start}..{ns.stop - 1}", kind=kind, corrected=corrected if corrected_fn else None)
 
 
 @line_check("sec1_3-Ltilde-set")
-def ltilde_set() -> LineResult:
-    return _proof_sets(lambda n, r: centre(n) | dsum("R", n, 1, n - 1) | isum("G", n, 0, 1, 2 * n - 1)
-                       | dsum("G", n, 1, n - 1) | dsum("B", n, 0, n - 1), lambda n, r: alive_after(n, 0, 0))
+def ltilde_set(override=None) -> LineResult:
+    return _read_sets("sec1_3-Ltilde-set", lambda n, r: alive_after(n, 0, 0), override=override)
 
 
 @line_check("sec1_3-Lhat-set")
-def lhat_set() -> LineResult:
-    return _proof_sets(lambda n, r: centre(n) | dsum("R", n, 1, n - 1) | dsum("G", n, 1, n - 1)
-                       | isum("B", n, 0, 1, 2 * n - 1) | dsum("B", n, 1, n - 1), lambda n, r: alive_after(n, 0, 1))
+def lhat_set(override=None) -> LineResult:
+    return _read_sets("sec1_3-Lhat-set", lambda n, r: alive_after(n, 0, 1), override=override)
 
 
 @line_check("sec1_3-L0-set")
-def l0_set() -> LineResult:
-    return _proof_sets(lambda n, r: centre(n) | dsum("R", n, 1, n - 1) | dsum("G", n, 1, n - 1)
-                       | dsum("B", n, 1, n - 1), lambda n, r: alive_after(n, 0, 2))
+def l0_set(override=None) -> LineResult:
+    return _read_sets("sec1_3-L0-set", lambda n, r: alive_after(n, 0, 2), override=override)
 
 
-def printed_Lr(n: int, r: int) -> set[int]:
-    """eq. induction_hypothesis_for_linear_independence (L_r): centre; R, G, B with j = r+1..n-1."""
-    return centre(n) | dsum("R", n, r + 1, n - 1) | dsum("G", n, r + 1, n - 1) | dsum("B", n, r + 1, n - 1)
+def _orders(line_id: str, n: int) -> range:
+    """The orders r of a listed range ``r=a,...,b`` read from the transcription of ``line_id``."""
+    from paper_repro.printed.lines.read import bound, listed_range
+    from paper_repro.printed.lines.sec1_3 import LINES
+
+    lo, hi = listed_range({x.id: x.verbatim for x in LINES}[line_id], "r")
+    return range(bound(lo, n=n), bound(hi, n=n) + 1)
 
 
 @line_check("sec1_3-Lr-set")
-def lr_set() -> LineResult:
-    return _proof_sets(printed_Lr, lambda n, r: alive_after(n, r, 2), rs=lambda n: range(n))
+def lr_set(override=None) -> LineResult:
+    """L_r for the orders r of the printed range (line sec1_3-Lr-orders, r = 0..n-1)."""
+    return _read_sets("sec1_3-Lr-set", lambda n, r: alive_after(n, r, 2), rs=lambda n: _orders("sec1_3-Lr-orders", n),
+                      override=override)
 
 
 @line_check("sec1_3-Lr1-set")
-def lr1_set() -> LineResult:
-    return _proof_sets(lambda n, r: centre(n) | dsum("R", n, r + 2, n - 1) | dsum("G", n, r + 2, n - 1)
-                       | dsum("B", n, r + 2, n - 1), lambda n, r: alive_after(n, r + 1, 2), rs=lambda n: range(n - 1))
+def lr1_set(override=None) -> LineResult:
+    return _read_sets("sec1_3-Lr1-set", lambda n, r: alive_after(n, r + 1, 2), rs=lambda n: range(n - 1),
+                      override=override)
 
 
 @line_check("sec1_3-level-zeroed")
@@ -833,30 +863,27 @@ def level_zeroed() -> LineResult:
 
 
 @line_check("sec1_3-Ltilde-r-set")
-def ltilde_r_set() -> LineResult:
-    return _proof_sets(lambda n, r: centre(n) | dsum("R", n, r + 2, n - 1)
-                       | isum("G", n, r + 1, r + 2, 2 * n - 1 - (r + 1)) | dsum("G", n, r + 2, n - 1)
-                       | dsum("B", n, r + 1, n - 1),
-                       lambda n, r: alive_after(n, r + 1, 0), rs=lambda n: range(n - 1))
+def ltilde_r_set(override=None) -> LineResult:
+    return _read_sets("sec1_3-Ltilde-r-set", lambda n, r: alive_after(n, r + 1, 0), rs=lambda n: range(n - 1),
+                      override=override)
 
 
 @line_check("sec1_3-Lhat-r-set")
-def lhat_r_set() -> LineResult:
-    return _proof_sets(lambda n, r: centre(n) | dsum("R", n, r + 2, n - 1) | dsum("G", n, r + 2, n - 1)
-                       | isum("B", n, r + 1, r + 2, 2 * n - 1 - (r + 1)) | dsum("B", n, r + 2, n - 1),
-                       lambda n, r: alive_after(n, r + 1, 1), rs=lambda n: range(n - 1))
+def lhat_r_set(override=None) -> LineResult:
+    return _read_sets("sec1_3-Lhat-r-set", lambda n, r: alive_after(n, r + 1, 1), rs=lambda n: range(n - 1),
+                      override=override)
 
 
 @line_check("sec1_3-Ln2-set")
-def ln2_set() -> LineResult:
-    return _proof_sets(lambda n, r: centre(n) | {lab(c, n, i, n - 1) for c in "RGB" for i in range(n - 1, n + 1)},
-                       lambda n, r: alive_after(n, n - 2, 2), ns=range(2, N_PROOF.stop))
+def ln2_set(override=None) -> LineResult:
+    return _read_sets("sec1_3-Ln2-set", lambda n, r: alive_after(n, n - 2, 2), ns=range(2, N_PROOF.stop),
+                      override=override)
 
 
 @line_check("sec1_3-Ln1-set")
-def ln1_set() -> LineResult:
+def ln1_set(override=None) -> LineResult:
     """L_{n-1} = rho_{2n,n,n} R_{2n,n,n}, and R_{2n,n,n} is not the zero function (so rho_{2n,n,n} = 0)."""
-    res = _proof_sets(lambda n, r: centre(n), lambda n, r: alive_after(n, n - 1, 2))
+    res = _read_sets("sec1_3-Ln1-set", lambda n, r: alive_after(n, n - 1, 2), override=override)
     pt = _domain_points(ALPHA_TS[0], 1)[0]
     nonzero = all(pt[0][0] ** n * pt[1][0] ** n * pt[2][0] ** n != 0 for n in N_PROOF)
     res.holds_as_printed &= nonzero

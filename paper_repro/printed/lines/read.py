@@ -57,9 +57,52 @@ def right_hand_side(tex: str, before: str = r",~\\forall") -> str:
     return head.rsplit("=", 1)[1].strip(" %~")
 
 
+_SUM = re.compile(r"\\sum(?:\\limits)?_\{(\w)=([^{}]+?)\}\s*%?\s*\^\{([^{}]+?)\}")
+_TERM = re.compile(r"\\(rho|gamma|beta)_\{2n,([^{}]+?),([^{}]+?)\}\s*%?\s*([RGB])_\{2n,([^{}]+?),([^{}]+?)\}")
+_COLOUR_OF = {"rho": "R", "gamma": "G", "beta": "B"}
+
+
+def sum_terms(tex: str) -> list[tuple[list[tuple[str, str, str]], str, str, str]]:
+    """The terms ``constant_{2n,a,b} X_{2n,a,b}`` of a printed linear combination, each with the sums written
+    before it (since the previous term): ``[([(var, lo, hi), ...], colour, first index, level), ...]`` as printed.
+    A term whose constant and function disagree (colour or indices) raises ``ValueError``.
+
+    >>> sum_terms(r"\\rho_{2n,n,n}R_{2n,n,n} +\\sum_{j=1}^{n-1}\\sum_{i=j}^{2n-1-j}\\gamma_{2n,2n-i,j}G_{2n,2n-i,j}")
+    [([], 'R', 'n', 'n'), ([('j', '1', 'n-1'), ('i', 'j', '2n-1-j')], 'G', '2n-i', 'j')]
+    """
+    text = tex.replace("\\left(", "(").replace("\\right)", ")")
+    out, last = [], 0
+    for m in _TERM.finditer(text):
+        const, a, b, colour, fa, fb = m.groups()
+        if _COLOUR_OF[const] != colour or (a.strip(), b.strip()) != (fa.strip(), fb.strip()):
+            raise ValueError(f"constant {const}_{{2n,{a},{b}}} does not match {colour}_{{2n,{fa},{fb}}}")
+        sums = [(v, lo.strip(), hi.strip()) for v, lo, hi in _SUM.findall(text[last:m.start()])]
+        out.append((sums, colour, a.strip(), b.strip()))
+        last = m.end()
+    return out
+
+
+def term_indices(terms, **env: int) -> list[tuple[str, int, int]]:
+    """``(colour, i, j)`` of every function of :func:`sum_terms` (i from the first index 2n - i), bounds evaluated
+    with ``env`` (``n``, ``r``) and the outer sum variables."""
+    out: list[tuple[str, int, int]] = []
+
+    def walk(sums, colour, first, level, scope):
+        if not sums:
+            out.append((colour, 2 * scope["n"] - bound(first, **scope), bound(level, **scope)))
+            return
+        (v, lo, hi), rest = sums[0], sums[1:]
+        for x in range(bound(lo, **scope), bound(hi, **scope) + 1):
+            walk(rest, colour, first, level, {**scope, v: x})
+
+    for sums, colour, first, level in terms:
+        walk(sums, colour, first, level, dict(env))
+    return out
+
+
 def bound(expr: str, **env: int):
     """Value of a printed bound such as ``2n-1-j`` (juxtaposition is a product)."""
     return bound_value(expr, **env)
 
 
-__all__ = ["index_set", "listed_range", "interval", "right_hand_side", "bound"]
+__all__ = ["index_set", "listed_range", "interval", "right_hand_side", "sum_terms", "term_indices", "bound"]
