@@ -204,3 +204,17 @@ def test_a_constant_that_does_not_match_its_function_is_unread():
     text = {x.id: x.verbatim for x in P.LINES}["sec1_3-L-R-row"]
     res = C.l_set({"sec1_3-L-R-row": text.replace("\\rho_{2n,n,n}R", "\\gamma_{2n,n,n}R")})
     assert not res.holds_as_printed and "does not match" in res.detail["unread"]
+
+
+def test_zeroed_constants_are_read_from_the_transcription():
+    text = {x.id: x.verbatim for x in P.LINES}
+    rp3 = text["sec1_3-rp3-zeroed"]
+    assert C.rp3_zeroed().holds_as_printed
+    for right, wrong in (("=0,", "=1,"), ("i=r+2,r+3", "i=r+1,r+2"),
+                         ("2n-1-\\left( r+1\\right)", "2n-\\left( r+1\\right)"),
+                         ("\\beta_{2n,2n-i,r+1}", "\\beta_{2n,2n-i,r}")):
+        assert right in rp3, right
+        assert not C.rp3_zeroed(verbatim=rp3.replace(right, wrong)).holds_as_printed, wrong
+    rp1 = text["sec1_3-rp1-zeroed"]
+    assert C.rp1_zeroed(level=lambda n, r: r + 1).holds_as_printed  # the erratum's level
+    assert not C.rp1_zeroed(level=lambda n, r: r + 1, verbatim=rp1.replace("i=r+1,r+2", "i=r+2,r+3")).holds_as_printed

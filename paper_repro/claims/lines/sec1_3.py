@@ -18,6 +18,7 @@ The independent computations:
 
 from __future__ import annotations
 
+import re
 from functools import cache
 from math import comb, factorial
 
@@ -1335,12 +1336,42 @@ def _zeroed_check(computed_fn, printed_level, corrected_level, i_range, color, a
                                                            "corrected_mismatches": len(bad_c)})
 
 
+def read_zeroed(line_id: str, verbatim: str | None = None):
+    """(level, range of i, right-hand side) of a printed ``const'_{2n,2n-i,LEVEL} = 0, i = a, ..., b``, read from its
+    transcription, as functions of (n, r)."""
+    from paper_repro.printed.lines.read import bound, listed_range, right_hand_side
+
+    tex = verbatim if verbatim is not None else _transcribed([line_id])[line_id]
+    m = re.search(r"_\{2n,2n-i,([^{}]+)\}\^\{\\prime\}", tex)
+    if not m:
+        raise ValueError(f"no primed constant in {tex[:50]!r}")
+    level_expr = m.group(1)
+    lo, hi = listed_range(tex, "i")
+    rhs = right_hand_side(tex, r",~i\s*=")
+    return (lambda n, r: bound(level_expr, n=n, r=r),
+            lambda n, r: range(bound(lo, n=n, r=r), bound(hi, n=n, r=r) + 1), rhs)
+
+
+def _zeroed_read(line_id, computed_fn, corrected_level, color, alias, level=None, verbatim=None) -> LineResult:
+    """:func:`_zeroed_check` with the printed level, range and right-hand side read from the transcription
+    (``level`` overrides the level read: the corrected form in tests)."""
+    try:
+        read_level, i_range, rhs = read_zeroed(line_id, verbatim)
+    except ValueError as exc:
+        return LineResult(False, how="the printed constants read from the transcription", detail={"unread": str(exc)})
+    res = _zeroed_check(computed_fn, level or read_level, corrected_level, i_range, color, alias)
+    res.holds_as_printed &= rhs == "0"
+    res.detail["right_hand_side"] = rhs
+    res.how = "level, range and right-hand side read from the transcription; " + res.how
+    return res
+
+
 @line_check("sec1_3-r-p1-zeroed")
-def rp1_zeroed(level=lambda n, r: n - 1) -> LineResult:
+def rp1_zeroed(level=None, verbatim=None) -> LineResult:
     """Printed rho'_{2n,2n-i,n-1} = 0, i = r+1..2n-(r+1); the step zeroes the level-(r+1) constants (rho' of level r+1,
     its last one being gamma_{2n,2n-(r+1),r+1})."""
-    return _zeroed_check(lambda n, r: alive_before(n, r + 1, 0) - alive_after(n, r + 1, 0), level,
-                         lambda n, r: r + 1, lambda n, r: range(r + 1, 2 * n - (r + 1) + 1), "R", "G")
+    return _zeroed_read("sec1_3-rp1-zeroed", lambda n, r: alive_before(n, r + 1, 0) - alive_after(n, r + 1, 0),
+                        lambda n, r: r + 1, "R", "G", level, verbatim)
 
 
 # parametrization 2 (u = 0 is the zero variable, v = alpha - y the other, w = y = t fixed)
@@ -1411,10 +1442,10 @@ def rp2_asystem() -> LineResult:
 
 
 @line_check("sec1_3-r-p2-zeroed")
-def rp2_zeroed(level=lambda n, r: n - 1) -> LineResult:
+def rp2_zeroed(level=None, verbatim=None) -> LineResult:
     """Printed gamma'_{2n,2n-i,n-1} = 0, i = r+2..2n-(r+1); the step zeroes gamma' of level r+1."""
-    return _zeroed_check(lambda n, r: alive_before(n, r + 1, 1) - alive_after(n, r + 1, 1), level,
-                         lambda n, r: r + 1, lambda n, r: range(r + 2, 2 * n - (r + 1) + 1), "G", "B")
+    return _zeroed_read("sec1_3-rp2-zeroed", lambda n, r: alive_before(n, r + 1, 1) - alive_after(n, r + 1, 1),
+                        lambda n, r: r + 1, "G", "B", level, verbatim)
 
 
 # parametrization 3 (w = 0, u = alpha - x the other, v = x = t fixed)
@@ -1443,10 +1474,10 @@ def rp3_kpos() -> LineResult:
 
 
 @line_check("sec1_3-r-p3-zeroed")
-def rp3_zeroed() -> LineResult:
+def rp3_zeroed(verbatim=None) -> LineResult:
     """beta'_{2n,2n-i,r+1} = 0, i = r+2..2n-1-(r+1): exactly the constants the step removes."""
-    return _zeroed_check(lambda n, r: alive_before(n, r + 1, 2) - alive_after(n, r + 1, 2), lambda n, r: r + 1,
-                         lambda n, r: r + 1, lambda n, r: range(r + 2, 2 * n - 1 - (r + 1) + 1), "B", None)
+    return _zeroed_read("sec1_3-rp3-zeroed", lambda n, r: alive_before(n, r + 1, 2) - alive_after(n, r + 1, 2),
+                        lambda n, r: r + 1, "B", None, verbatim=verbatim)
 
 
 @line_check("sec1_3-fig-n4-caption")

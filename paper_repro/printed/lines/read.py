@@ -9,6 +9,8 @@ Bounds are returned as printed (strings) and evaluated with :func:`bound`.
 (('j', '0', 'n'), ('i', 'j', '2n-j'))
 >>> listed_range(r"\\gamma_{2n,2n-i,0}^{\\prime}=0,~i=1,2,\\ldots,2n.", "i")
 ('1', '2n')
+>>> listed_range(r"=0,~i=r+1,r+2,\\ldots,2n-\\left( r+1\\right) ,", "i")
+('r+1', '2n-(r+1)')
 >>> bound("2n-1-j", n=3, j=1)
 4
 """
@@ -35,6 +37,7 @@ def index_set(tex: str) -> tuple[tuple[str, str, str], tuple[str, str, str]]:
 
 def listed_range(tex: str, var: str) -> tuple[str, str]:
     """``(first, last)`` of a listed range ``var=a,b,\\ldots,c`` (or ``var=a,\\ldots,c``) in ``tex``."""
+    tex = re.sub(r"\s*\\right\)", ")", re.sub(r"\\left\(\s*", "(", tex))
     m = re.search(rf"(?<![\w\\]){var}\s*=\s*([^,=]+?)\s*,(?:\s*[^,=]+?\s*,)?\s*\\ldots\s*,\s*([^,.\s$]+)", tex)
     if not m:
         raise ValueError(f"no listed range {var}=a,...,b in {tex[:60]!r}")
