@@ -218,3 +218,18 @@ def test_zeroed_constants_are_read_from_the_transcription():
     rp1 = text["sec1_3-rp1-zeroed"]
     assert C.rp1_zeroed(level=lambda n, r: r + 1).holds_as_printed  # the erratum's level
     assert not C.rp1_zeroed(level=lambda n, r: r + 1, verbatim=rp1.replace("i=r+1,r+2", "i=r+2,r+3")).holds_as_printed
+
+
+@pytest.mark.parametrize("check, line_id, right, wrong", [
+    ("chain_1", "sec1_3-chain-1", "\\partial v_{1}^{r-k}\\partial w_{1}^{k}",
+     "\\partial w_{1}^{r-k}\\partial v_{1}^{k}"),
+    ("chain_1", "sec1_3-y-derivative-L-r", "\\left( -1\\right) ^{k}", "\\left( 1\\right) ^{k}"),
+    ("chain_2", "sec1_3-x-derivative-L-tilde-r", "\\partial u_{2}^{r+1-k}", "\\partial w_{2}^{r+1-k}"),
+    ("chain_3", "sec1_3-chain-3", "\\partial w_{3}^{r-k}\\partial u_{3}^{k}",
+     "\\partial u_{3}^{r-k}\\partial w_{3}^{k}"),
+    ("chain_pu", "sec1_3-chain-rule", "\\partial v^{r-k}\\partial w^{k}", "\\partial v^{r-k}\\partial u^{k}"),
+])
+def test_chain_rules_read_their_variables_and_reject_a_wrong_transcription(check, line_id, right, wrong):
+    text = {x.id: x.verbatim for x in P.LINES}[line_id]
+    assert right in text and getattr(C, check)().holds_as_printed
+    assert not getattr(C, check)({line_id: text.replace(right, wrong)}).holds_as_printed

@@ -663,11 +663,6 @@ def sin_power_leading() -> LineResult:
 
 
 # -- chain rules and parametrizations ----------------------------------------------------------------------------
-#: printed chain rules: parametrization -> (variable differentiated r-k times, variable differentiated k times)
-PRINTED_CHAIN = {"parametrization_for_partition_of_unity": (1, 2), "parametrization_1_y_0": (1, 2),
-                 "parametrization_2_x_0": (0, 1), "parametrization_3_y_0": (2, 0)}
-
-
 def chain_ok(param: str, printed: tuple[int, int]) -> bool:
     """The printed d^r/d(param)^r = sum_k C(r,k) (-1)^k d^{r-k}_a d^k_b holds iff the direction of the (affine)
     parametrization is e_a - e_b; then (d_a - d_b)^r expands binomially (checked as polynomials, r <= 10)."""
@@ -682,31 +677,59 @@ def chain_ok(param: str, printed: tuple[int, int]) -> bool:
     return tuple(want) == direction and binom_ok
 
 
-def _chain(param: str) -> LineResult:
-    ok = chain_ok(param, PRINTED_CHAIN[param])
-    return LineResult(ok, how="direction vector of the printed affine parametrization; binomial expansion of "
-                      "(d_a - d_b)^r as polynomials (r <= 10)", kind="exhaustive",
-                      detail={"direction": list(step_geometry(param)[0])})
+_CHAIN_PAIR = re.compile(r"\\left\(\s*(-?1)\s*\\right\)\s*\^\{k\}.*?\\partial\s*([uvw])(?:_\{\d\})?\^\{[^{}]*-k\}\s*"
+                         r"\\partial\s*([uvw])(?:_\{\d\})?\^\{k\}", re.S)
+
+
+def read_chain(tex: str) -> tuple[int, int]:
+    """(a, b) of a printed chain rule sum_k binom (-1)^k d/da^{r-k} d/db^k, read from its transcription (variables
+    u, v, w as 0, 1, 2); a sign other than (-1)^k is unread (``ValueError``)."""
+    m = _CHAIN_PAIR.search(tex)
+    if not m or m.group(1) != "-1":
+        raise ValueError(f"no chain rule sum (-1)^k d^(r-k)/da d^k/db in {tex[:50]!r}")
+    return "uvw".index(m.group(2)), "uvw".index(m.group(3))
+
+
+def _chain(param: str, check_id: str, override: dict[str, str] | None = None) -> LineResult:
+    """Every line of ``check_id`` (the chain rule and its use at order r+1) read from its transcription: the pair of
+    variables it differentiates must be the printed parametrization's direction e_a - e_b."""
+    texts = {k: v for k, v in _transcribed([x.id for x in _lines_of(check_id)], override).items()}
+    try:
+        pairs = {k: read_chain(v) for k, v in sorted(texts.items())}
+    except ValueError as exc:
+        return LineResult(False, how="the chain rule read from the transcription", detail={"unread": str(exc)})
+    ok = bool(pairs) and all(chain_ok(param, pr) for pr in pairs.values())
+    return LineResult(ok, how="the differentiated pair of variables read from each transcription against the direction "
+                      "vector of the printed affine parametrization; binomial expansion of (d_a - d_b)^r as "
+                      "polynomials (r <= 10)", kind="exhaustive",
+                      detail={"direction": list(step_geometry(param)[0]),
+                              "pairs": {k: list(v) for k, v in pairs.items()}})
+
+
+def _lines_of(check_id: str):
+    from paper_repro.printed.lines.sec1_3 import LINES
+
+    return [x for x in LINES if x.check == check_id]
 
 
 @line_check("sec1_3-chain-rule-pu")
-def chain_pu() -> LineResult:
-    return _chain("parametrization_for_partition_of_unity")
+def chain_pu(override=None) -> LineResult:
+    return _chain("parametrization_for_partition_of_unity", "sec1_3-chain-rule-pu", override)
 
 
 @line_check("sec1_3-chain-rule-1")
-def chain_1() -> LineResult:
-    return _chain("parametrization_1_y_0")
+def chain_1(override=None) -> LineResult:
+    return _chain("parametrization_1_y_0", "sec1_3-chain-rule-1", override)
 
 
 @line_check("sec1_3-chain-rule-2")
-def chain_2() -> LineResult:
-    return _chain("parametrization_2_x_0")
+def chain_2(override=None) -> LineResult:
+    return _chain("parametrization_2_x_0", "sec1_3-chain-rule-2", override)
 
 
 @line_check("sec1_3-chain-rule-3")
-def chain_3() -> LineResult:
-    return _chain("parametrization_3_y_0")
+def chain_3(override=None) -> LineResult:
+    return _chain("parametrization_3_y_0", "sec1_3-chain-rule-3", override)
 
 
 def param_onto(param: str, y_to=lambda a, x: a - x) -> bool:
