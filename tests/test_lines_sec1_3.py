@@ -77,11 +77,16 @@ def test_parametrization_check_rejects_the_printed_partition_range():
     assert all(C.param_onto(p) for p in C.STEP_PARAMS)
 
 
-def test_boundary_vars_rejects_a_wrong_variable():
-    wrong = dict(C.PRINTED_BOUNDARY, parametrization_2_x_0=("y", 0))
-    assert not C.boundary_vars(wrong).holds_as_printed
-    wrong = dict(C.PRINTED_BOUNDARY, parametrization_3_y_0=("y", 0))
-    assert not C.boundary_vars(wrong).holds_as_printed
+def test_boundary_vars_reads_the_transcriptions_and_rejects_a_wrong_variable():
+    text = {x.id: x.verbatim for x in P.LINES}
+    assert C.boundary_vars().holds_as_printed and C.boundary_vars().detail["lines"] == 8
+    assert not C.boundary_vars({"sec1_3-r0-p2-where": text["sec1_3-r0-p2-where"].replace("$x=0$", "$y=0$")}
+                               ).holds_as_printed
+    caption = text["sec1_3-fig-j1-caption-params"]
+    assert not C.boundary_vars({"sec1_3-fig-j1-caption-params": caption.replace("$x=0$ and $y=0$", "$y=0$ and $x=0$")}
+                               ).holds_as_printed
+    assert not C.boundary_vars({"sec1_3-rp3-where": text["sec1_3-rp3-where"].replace("at $y=0$", "at the edge")}
+                               ).holds_as_printed  # a point missing
 
 
 def test_sum_bound_and_levels_distinguish_printed_from_corrected():

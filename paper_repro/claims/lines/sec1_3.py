@@ -773,19 +773,32 @@ def param_ranges() -> LineResult:
                       detail={"onto": ok})
 
 
-#: printed: parametrization -> (running variable, the coordinate set to 0 by running variable = 0)
-PRINTED_BOUNDARY = {"parametrization_1_y_0": ("y", 1), "parametrization_2_x_0": ("x", 0),
-                    "parametrization_3_y_0": ("y", 2)}
+def read_boundary_vars(tex: str) -> list[tuple[str, str]]:
+    """(parametrization, variable set to 0) pairs of a line, in order: the ``\\ref{parametrization_..}`` it names and
+    the points ``$y=0$``/``$x=0$`` it evaluates at (``ValueError`` if their numbers differ or are 0)."""
+    params = re.findall(r"\\ref\{(parametrization_[123]_[xy]_0)\}", tex)
+    points = re.findall(r"\$([xy])=0\$", tex)
+    if not params or len(params) != len(points):
+        raise ValueError(f"{len(params)} parametrizations but {len(points)} points in {tex[:50]!r}")
+    return list(zip(params, points))
 
 
 @line_check("sec1_3-boundary-vars")
-def boundary_vars(printed=None) -> LineResult:
-    """Parametrizations 1, 2, 3 are differentiated in y, x, y at y = 0, x = 0, y = 0: there v_1, u_2, w_3 vanish
-    (the edges v = 0, u = 0, w = 0 of the three steps)."""
-    printed = printed or PRINTED_BOUNDARY
-    ok = all(PARAMS[p][1] == printed[p][0] and step_geometry(p)[1] == printed[p][1] for p in STEP_PARAMS)
-    return LineResult(ok, how="the printed maps evaluated at the running parameter 0", kind="proof",
-                      detail={"ok": ok})
+def boundary_vars(override: dict[str, str] | None = None) -> LineResult:
+    """Each line names parametrizations and the points where they are evaluated (read from the transcription):
+    each point must set the running parameter of that printed map to 0, where exactly one of u, v, w vanishes
+    (v_1, u_2, w_3: the edges v = 0, u = 0, w = 0 of the three steps)."""
+    texts = _transcribed([x.id for x in _lines_of("sec1_3-boundary-vars")], override)
+    try:
+        pairs = {k: read_boundary_vars(v) for k, v in sorted(texts.items())}
+    except ValueError as exc:
+        return LineResult(False, how="the parametrizations and points read from the transcriptions",
+                          detail={"unread": str(exc)})
+    bad = {k: v for k, v in pairs.items() if any(PARAMS[p][1] != var for p, var in v)}
+    edges = {p: "uvw"[step_geometry(p)[1]] for p in STEP_PARAMS}  # asserts one coordinate vanishes
+    return LineResult(not bad, how="the parametrizations and points read from each transcription against the running "
+                      "parameter of the printed maps, evaluated at 0", kind="proof",
+                      detail={"lines": len(pairs), "wrong": sorted(bad), "vanishing_coordinate": edges})
 
 
 # ==============================================================================================================
