@@ -128,3 +128,10 @@ def test_chain_sum_is_checked_with_its_value_and_rejects_wrong_transcriptions():
         assert not ck.check_chain_sum(line.verbatim.replace(right, wrong)).holds_as_printed, wrong
     orders = {x.id: x for x in pl.LINES}["sec4_5-parametrization-restated"].verbatim
     assert not ck.check_chain_sum(orders=orders.replace("r=1,2", "r=0,1")).holds_as_printed  # r = 0 gives 1
+
+
+def test_cos_nonzero_is_its_own_check_and_reads_its_interval():
+    line = {x.id: x for x in pl.LINES}["sec4_5-cos-nonzero"]
+    assert line.check == "sec4_5-cos-nonzero" and ck.check_cos_nonzero().holds_as_printed
+    assert not ck.check_cos_nonzero(line.verbatim.replace("0,\\alpha", "0,2\\alpha")).holds_as_printed
+    assert not ck.check_cos_nonzero(line.verbatim.replace("\\neq0", "=0")).holds_as_printed

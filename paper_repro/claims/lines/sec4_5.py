@@ -1115,3 +1115,26 @@ def check_chain_sum(verbatim: str | None = None, orders: str | None = None) -> L
                       "exactly with the collocation coefficients at tan(alpha/4) in {1/3, 2/5}, n = 1..3, at the "
                       "ends and three interior x", kind="exact-evidence",
                       detail={"cases": cases, "mismatches": len(bad), "first_mismatches": bad[:2]})
+
+
+@line_check("sec4_5-cos-nonzero")
+def check_cos_nonzero(verbatim: str | None = None) -> LineResult:
+    """cos^{2n}(x/2) != 0 for x in the printed interval (read from the transcription): with x in [0, alpha] and
+    alpha in (0, pi), x/2 lies in [0, pi/2), where cos is positive (decreasing, so cos(x/2) >= cos(alpha/2) > 0);
+    the bound is the end alpha, checked exactly to be positive at rational alpha up to 4 atan(999/1000)."""
+    from paper_repro.printed.lines.read import interval
+
+    tex = verbatim if verbatim is not None else {x.id: x.verbatim for x in pl.LINES}["sec4_5-cos-nonzero"]
+    try:
+        lo, hi = interval(tex, "x")
+    except ValueError as exc:
+        return LineResult(False, how="the interval read from the transcription", kind="proof",
+                          detail={"unread": str(exc)})
+    if "\\neq0" not in tex.replace(" ", "") or (lo, hi) != ("0", "\\alpha"):
+        return LineResult(False, how="the interval read from the transcription", kind="proof",
+                          detail={"interval": [lo, hi]})
+    ends_positive = all(rational_alpha(t).cos_half > 0 for t in (fmpq(1, 1000), fmpq(1, 2), fmpq(999, 1000)))
+    return LineResult(ends_positive, how="the interval [0, alpha] read from the transcription: x/2 in "
+                      "[0, alpha/2] with alpha < pi, where cos is positive (decreasing: its minimum is cos(alpha/2) > "
+                      "0, exact at rational alpha near 0 and pi)", kind="proof",
+                      detail={"interval": [lo, hi], "cos_half_alpha_positive": ends_positive})

@@ -1206,7 +1206,7 @@ LINES: list[Line] = [
          verbatim='$\\cos^{2n}\\frac{x}{2}\\neq0$ ($x\\in\\left[ 0,\\alpha\\right] $)',
          says='cos^{2n}(x/2) != 0 for x in [0, alpha].',
          status='checked',
-         check='sec4_5-tan-polynomial'),
+         check='sec4_5-cos-nonzero'),
     Line(id='sec4_5-chain-sum',
          tex=(1977, 1980),
          near='normalizing_coeff_of_level_0',
