@@ -238,3 +238,16 @@ def test_chain_rules_read_their_variables_and_reject_a_wrong_transcription(check
     text = {x.id: x.verbatim for x in P.LINES}[line_id]
     assert right in text and getattr(C, check)().holds_as_printed
     assert not getattr(C, check)({line_id: text.replace(right, wrong)}).holds_as_printed
+
+
+@pytest.mark.parametrize("line_id, right, wrong", [
+    ("sec1_3-delta-sum", "^{2n-1-j}", "^{2n-j}"),
+    ("sec1_3-delta-sum", "=1+3n", "=1+2n"),
+    ("sec1_3-theorem-delta", "+1", "+2"),
+    ("sec1_3-abstract-delta", "=3n", "=3"),
+])
+def test_delta_count_reads_every_printed_value(line_id, right, wrong):
+    text = {x.id: x.verbatim for x in P.LINES}[line_id]
+    assert right in text and C.delta_count().holds_as_printed
+    assert C.delta_count().detail["values_per_line"]["sec1_3-delta-sum"] == 2
+    assert not C.delta_count({line_id: text.replace(right, wrong, 1)}).holds_as_printed

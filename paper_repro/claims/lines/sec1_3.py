@@ -230,18 +230,47 @@ def distinct_union(n: int) -> set[tuple[int, ...]]:
     return {exponents(x) for color in "RGB" for x in full_system(n, color)}
 
 
+def read_delta(tex: str) -> list:
+    """The printed values of delta_n in ``tex`` (everything after ``\\delta_{n}=``, split at ``=``), each as a
+    function of n: a closed form such as ``3n\\left( n+1\\right) +1`` or ``1+3\\sum_{j=..}^{..}\\sum_{i=..}^{..}1``."""
+    from paper_repro.printed.lines.read import bound
+
+    body = tex.split("\\delta_{n}=", 1)[1]
+    body = re.split(r"\\\]|\$", body)[0].replace("\\left(", "(").replace("\\right)", ")").replace("%", " ")
+    out = []
+    for part in re.split(r"=(?![^{]*\})", body):  # not the = of a subscript j=0
+        part = part.strip().rstrip(".").strip()
+        m = re.fullmatch(r"(\d+)\s*\+\s*(\d+)\s*\\sum_\{j=([^{}]+)\}\^\{([^{}]+)\}\s*"
+                         r"\\sum_\{i=([^{}]+)\}\^\{([^{}]+)\}\s*1", part)
+        if m:
+            a, b, jlo, jhi, ilo, ihi = m.groups()
+            out.append(lambda n, a=a, b=b, jlo=jlo, jhi=jhi, ilo=ilo, ihi=ihi: int(a) + int(b) * sum(
+                1 for j in range(bound(jlo, n=n), bound(jhi, n=n) + 1)
+                for _ in range(bound(ilo, n=n, j=j), bound(ihi, n=n, j=j) + 1)))
+        elif "\\" in part:
+            raise ValueError(f"unread value of delta_n: {part!r}")
+        else:
+            out.append(lambda n, e=part: bound(e, n=n))
+    return out
+
+
 @line_check("sec1_3-delta-count")
-def delta_count() -> LineResult:
-    """delta_n = 3n(n+1)+1: the number of distinct functions of R u G u B, and the printed double sum
-    1 + 3 sum_{j=0}^{n-1} sum_{i=j}^{2n-1-j} 1, for n = 1..40."""
-    rows = []
-    for n in range(1, 41):
-        printed_sum = 1 + 3 * sum(1 for j in range(n) for i in range(j, 2 * n - j))
-        rows.append((len(distinct_union(n)), printed_sum, 3 * n * (n + 1) + 1, delta(n)))
-    ok = all(len(set(r)) == 1 for r in rows)
-    return LineResult(ok, how="count of distinct exponent vectors of R u G u B against the printed double sum and "
-                      "closed form, n = 1..40", kind="exhaustive", detail={"n_max": 40, "all_equal": ok,
-                                                                      "first": list(rows[0]), "last": list(rows[-1])})
+def delta_count(override: dict[str, str] | None = None) -> LineResult:
+    """delta_n = 3n(n+1)+1 = 1 + 3 sum_{j=0}^{n-1} sum_{i=j}^{2n-1-j} 1: every printed value of its three lines (read
+    from the transcriptions) equals the number of distinct functions of R u G u B, for n = 1..40."""
+    texts = _transcribed([x.id for x in _lines_of("sec1_3-delta-count")], override)
+    try:
+        values = {k: read_delta(v) for k, v in sorted(texts.items())}
+    except ValueError as exc:
+        return LineResult(False, how="the printed values read from the transcriptions, n = 1..40", kind="exhaustive",
+                          detail={"unread": str(exc)})
+    bad = [(k, n) for n in range(1, 41) for k, fs in values.items()
+           if any(f(n) != len(distinct_union(n)) for f in fs)]
+    ok = not bad and all(values.values())
+    return LineResult(ok, how="count of distinct exponent vectors of R u G u B against every printed value (closed "
+                      "form and double sum, read from the transcriptions), n = 1..40", kind="exhaustive",
+                      detail={"n_max": 40, "values_per_line": {k: len(v) for k, v in values.items()},
+                              "mismatches": bad[:3]})
 
 
 def united_printed(n: int) -> set[tuple[int, ...]]:
