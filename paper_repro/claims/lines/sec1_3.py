@@ -225,9 +225,10 @@ def alpha_range() -> LineResult:
                                             "positive_at_samples": exact_pos})
 
 
-def distinct_union(n: int) -> set[tuple[int, ...]]:
+@cache
+def distinct_union(n: int) -> frozenset[tuple[int, ...]]:
     """Distinct functions (exponent vectors) of R_{2n} u G_{2n} u B_{2n} (full systems, eqs. R_system..B_system)."""
-    return {exponents(x) for color in "RGB" for x in full_system(n, color)}
+    return frozenset(exponents(x) for color in "RGB" for x in full_system(n, color))
 
 
 def read_delta(tex: str) -> list:
