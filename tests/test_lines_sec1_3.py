@@ -57,11 +57,13 @@ def test_errata_lines_name_their_fields():
 
 
 # -- the checks reject wrong inputs ----------------------------------------------------------------------------
-def test_united_dedupe_rejects_the_full_ranges():
-    assert C.united_dedupe().holds_as_printed
+def test_united_dedupe_reads_the_transcription_and_rejects_the_full_ranges():
+    text = {x.id: x.verbatim for x in P.LINES}["sec1_3-united-system"]
+    assert C.united_dedupe().holds_as_printed and "_{j=0,i=j}^{n-1,2n-1-j}" in text
     # i = j..2n-j (the range of R_system) lists R_{2n,j,j} = G_{2n,2n-j,j} twice
-    assert not C.united_dedupe(ranges=lambda n, j: range(j, 2 * n - j + 1)).holds_as_printed
-    assert not C.united_dedupe(ranges=lambda n, j: range(j + 1, 2 * n - j)).holds_as_printed
+    assert not C.united_dedupe(text.replace("^{n-1,2n-1-j}", "^{n-1,2n-j}")).holds_as_printed
+    assert not C.united_dedupe(text.replace("_{j=0,i=j}", "_{j=0,i=j+1}")).holds_as_printed
+    assert not C.united_dedupe(text.replace("^{n-1,2n-1-j}", "^{n-2,2n-1-j}")).holds_as_printed  # a level short
 
 
 def test_chain_rule_rejects_a_wrong_pair_of_variables():

@@ -283,16 +283,25 @@ def united_printed(n: int) -> set[tuple[int, ...]]:
 
 
 @line_check("sec1_3-united-dedupe")
-def united_dedupe(ranges=None) -> LineResult:
-    """The printed index set of T_{2n} lists each distinct function of R u G u B exactly once (n = 1..20)."""
-    ranges = ranges or (lambda n, j: range(j, 2 * n - j))
-    ok = True
+def united_dedupe(verbatim: str | None = None) -> LineResult:
+    """The printed index set of T_{2n} (read from the transcription of eq. united_system, with the centre of the line
+    after it) lists each distinct function of R u G u B exactly once (n = 1..20); the functions from the printed
+    explicit formulas (:func:`printed_exponents`)."""
+    tex = verbatim if verbatim is not None else _transcribed(["sec1_3-united-system"])["sec1_3-united-system"]
+    ok, bad = True, []
     for n in range(1, 21):
-        listed = [exponents(BasisLabel("R", n, n, n))] + [exponents(BasisLabel(c, n, i, j)) for c in "RGB"
-                                                          for j in range(n) for i in ranges(n, j)]
-        ok &= len(listed) == len(set(listed)) and set(listed) == distinct_union(n)
-    return LineResult(ok, how="printed ranges against the distinct functions of the full systems, n = 1..20",
-                      kind="exhaustive", detail={"n_max": 20, "equal_without_repetition": ok})
+        try:
+            pairs = _read_pairs(tex, n)
+        except ValueError as exc:
+            return LineResult(False, how="the index set read from the transcription, n = 1..20", kind="exhaustive",
+                              detail={"unread": str(exc)})
+        listed = [printed_exponents("R", n, n, n)] + [printed_exponents(c, n, i, j) for c in "RGB" for i, j in pairs]
+        good = None not in listed and len(listed) == len(set(listed)) and set(listed) == distinct_union(n)
+        ok &= good
+        if not good:
+            bad.append(n)
+    return LineResult(ok, how="the index set read from the transcription against the distinct functions of the full "
+                      "systems, n = 1..20", kind="exhaustive", detail={"n_max": 20, "failing_n": bad[:3]})
 
 
 @line_check("sec1_3-levels")
