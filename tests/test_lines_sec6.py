@@ -179,3 +179,19 @@ def test_rank1_counterexample_and_tangent_labels():
     assert c6.tangent_labels(2, 0) == c6.terminal_edge_labels(2, "r")
     assert c6.tangent_labels(2, 0) != {"r_{4,4,0}", "r_{4,2,0}", "b_{4,1,0}"}
     assert not c6.in_span(c6.vn_element(1, 3, extra=(2, 0, 0)), 1, rational_alpha(fmpq(1, 3)))
+
+
+def test_patch_terms_and_nets_are_read_from_their_transcriptions():
+    rows = {x.id: x.verbatim for x in LINES}
+    assert c6.patch_index_sets().holds_as_printed
+    row2 = rows["sec6-patch-row-2"]
+    for right, wrong in (("\\mathbf{b}_{2n,2n-i,j}\\overline{B}", "\\mathbf{g}_{2n,2n-i,j}\\overline{G}"),
+                         ("\\sum\\limits_{i=j}^{2n-1-j}", "\\sum\\limits_{i=j}^{2n-j}")):
+        assert right in row2
+        assert not c6.patch_index_sets({"sec6-patch-row-2": row2.replace(right, wrong, 1)}).holds_as_printed
+    res = c6.control_net_set()
+    assert res.holds_as_printed is False and res.corrected_holds is True
+    assert set(res.detail["printed_sizes_n_1_2_3"]) == {"sec6-control-net-set", "sec6-rational-control-net-set"}
+    wrong = rows["sec6-rational-control-net-set"].replace("_{j=0,i=j}^{n-1,2n-1-j}", "_{j=0,i=j}^{n-2,2n-1-j}", 1)
+    assert c6.control_net_set({"sec6-rational-control-net-set": wrong}).detail["printed_sizes_n_1_2_3"][
+        "sec6-rational-control-net-set"] != res.detail["printed_sizes_n_1_2_3"]["sec6-rational-control-net-set"]

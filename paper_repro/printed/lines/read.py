@@ -62,20 +62,23 @@ def right_hand_side(tex: str, before: str = r",~\\forall") -> str:
 
 _SUM = re.compile(r"\\sum(?:\\limits)?_\{(\w)=([^{}]+?)\}\s*%?\s*\^\{([^{}]+?)\}")
 _TERM = re.compile(r"\\(rho|gamma|beta)_\{2n,([^{}]+?),([^{}]+?)\}\s*%?\s*([RGB])_\{2n,([^{}]+?),([^{}]+?)\}")
-_COLOUR_OF = {"rho": "R", "gamma": "G", "beta": "B"}
+_POINT_TERM = re.compile(r"\\mathbf\{([rgb])\}_\{2n,([^{}]+?),([^{}]+?)\}\s*%?\s*"
+                         r"\\overline\{([RGB])\}_\{2n,([^{}]+?),([^{}]+?)\}")
+_COLOUR_OF = {"rho": "R", "gamma": "G", "beta": "B", "r": "R", "g": "G", "b": "B"}
 
 
-def sum_terms(tex: str) -> list[tuple[list[tuple[str, str, str]], str, str, str]]:
+def sum_terms(tex: str, points: bool = False) -> list[tuple[list[tuple[str, str, str]], str, str, str]]:
     """The terms ``constant_{2n,a,b} X_{2n,a,b}`` of a printed linear combination, each with the sums written
     before it (since the previous term): ``[([(var, lo, hi), ...], colour, first index, level), ...]`` as printed.
-    A term whose constant and function disagree (colour or indices) raises ``ValueError``.
+    A term whose constant and function disagree (colour or indices) raises ``ValueError``.  With ``points`` the terms
+    are ``\\mathbf{x}_{2n,a,b}\\overline{X}_{2n,a,b}`` (control point times normalized function, a patch).
 
     >>> sum_terms(r"\\rho_{2n,n,n}R_{2n,n,n} +\\sum_{j=1}^{n-1}\\sum_{i=j}^{2n-1-j}\\gamma_{2n,2n-i,j}G_{2n,2n-i,j}")
     [([], 'R', 'n', 'n'), ([('j', '1', 'n-1'), ('i', 'j', '2n-1-j')], 'G', '2n-i', 'j')]
     """
     text = tex.replace("\\left(", "(").replace("\\right)", ")")
     out, last = [], 0
-    for m in _TERM.finditer(text):
+    for m in (_POINT_TERM if points else _TERM).finditer(text):
         const, a, b, colour, fa, fb = m.groups()
         if _COLOUR_OF[const] != colour or (a.strip(), b.strip()) != (fa.strip(), fb.strip()):
             raise ValueError(f"constant {const}_{{2n,{a},{b}}} does not match {colour}_{{2n,{fa},{fb}}}")
