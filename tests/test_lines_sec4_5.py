@@ -135,3 +135,27 @@ def test_cos_nonzero_is_its_own_check_and_reads_its_interval():
     assert line.check == "sec4_5-cos-nonzero" and ck.check_cos_nonzero().holds_as_printed
     assert not ck.check_cos_nonzero(line.verbatim.replace("0,\\alpha", "0,2\\alpha")).holds_as_printed
     assert not ck.check_cos_nonzero(line.verbatim.replace("\\neq0", "=0")).holds_as_printed
+
+
+@pytest.mark.parametrize("line_id, right, wrong", [
+    ("sec4_5-examples-n3-1", "1\\cdot u+1\\cdot v+0\\cdot w", "1\\cdot u+0\\cdot v+0\\cdot w"),
+    ("sec4_5-examples-n3-2", "2\\cdot u+0\\cdot v+1\\cdot w", "2\\cdot u+1\\cdot v+1\\cdot w"),
+    ("sec4_5-examples-n3-3", "\\nsim", "\\sim"),
+])
+def test_examples_are_read_from_the_transcription(line_id, right, wrong):
+    text = {x.id: x.verbatim for x in pl.LINES}[line_id]
+    assert right in text and ck.check_examples_n3().holds_as_printed
+    assert not ck.check_examples_n3({line_id: text.replace(right, wrong, 1)}).holds_as_printed
+
+
+@pytest.mark.parametrize("line_id, right, wrong", [
+    ("sec4_5-V1", "\\cos\\left( w\\right) ,\\sin\\left( w\\right)", "\\cos\\left( 2w\\right) ,\\sin\\left( 2w\\right)"),
+    ("sec4_5-n2-classes-row2", "_{b=0}^{1}", "_{b=0}^{2}"),
+    ("sec4_5-V2-row3", "\\cos\\left( u+2v\\right) ,\\sin\\left( u+2v\\right)",
+     "\\cos\\left( 2u+2v\\right) ,\\sin\\left( 2u+2v\\right)"),
+    ("sec4_5-V2-row1", "\\sin\\left( 2w\\right)", "\\sin\\left( w\\right)"),  # cos and sin disagree: unread
+])
+def test_orders_1_2_read_v1_the_classes_and_v2(line_id, right, wrong):
+    text = {x.id: x.verbatim for x in pl.LINES}[line_id]
+    assert right in text and ck.check_orders_1_2().holds_as_printed
+    assert not ck.check_orders_1_2({line_id: text.replace(right, wrong, 1)}).holds_as_printed

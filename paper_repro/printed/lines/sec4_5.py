@@ -15,21 +15,6 @@ from math import comb
 
 from paper_repro.printed.lines import Line
 
-#: Worked examples after Definition equivalence_relation_definition (n = 3), lines 1493-1502:
-#: (first triple, second triple, printed equivalent?).
-EXAMPLES_N3 = [((0, 0, 1), (1, 1, 0), True), ((1, 3, 2), (2, 0, 1), True), ((2, 0, 1), (0, 2, 1), True),
-               ((1, 3, 2), (0, 2, 1), True), ((1, 0, 0), (0, 1, 0), False)]
-
-#: Arguments of the functions added to V_0 in the printed V_1 (lines 1550-1552): u, v, w.
-V1_ARGS = [(1, 0, 0), (0, 1, 0), (0, 0, 1)]
-
-#: The six printed classes of order 2 (lines 1596-1600): {[0u+gv+2w]}_{g=0}^1, {[2u+0v+bw]}_{b=0}^1,
-#: {[ru+2v+0w]}_{r=0}^1.
-N2_CLASSES = [(0, g, 2) for g in range(2)] + [(2, 0, b) for b in range(2)] + [(r, 2, 0) for r in range(2)]
-
-#: Arguments of the functions added to V_1 in the printed V_2 (lines 1604-1613): 2w, v+2w, 2u, 2u+w, 2v, u+2v.
-V2_NEW_ARGS = [(0, 0, 2), (0, 1, 2), (2, 0, 0), (2, 0, 1), (0, 2, 0), (1, 2, 0)]
-
 
 def prop_representatives(n: int) -> list[tuple[int, int, int]]:
     """Lines 1637-1640: {[0u+gv+nw]}_{g=0}^{n-1} u {[nu+0v+bw]}_{b=0}^{n-1} u {[ru+nv+0w]}_{r=0}^{n-1}."""
