@@ -14,7 +14,7 @@ load_all()
 
 LINE_KEYS = {"id", "part", "tex", "near", "number", "kind", "verbatim", "says", "status", "check", "how",
              "proof_kind", "holds_as_printed", "corrected_holds", "reason", "erratum"}
-COVERAGE_KEYS = {"lines", "checked", "erratum", "excused", "by_kind", "by_part"}
+COVERAGE_KEYS = {"lines", "checked", "erratum", "excused", "by_kind", "by_part", "by_proof_kind"}
 ERR = {"printed": "x = 1", "corrected": "x = 2", "evidence": "exact", "severity": "typo"}
 
 
@@ -57,6 +57,7 @@ def test_fake_part_passes_with_exact_shape(fake_part):
     assert pl["coverage"]["lines"] == 4 and pl["coverage"]["checked"] == 2 and pl["coverage"]["erratum"] == 1
     assert pl["coverage"]["by_part"] == {"fake": {"checked": 2, "erratum": 1, "excused": 1}}
     assert pl["coverage"]["by_kind"]["range"] == {"erratum": 1}
+    assert pl["coverage"]["by_proof_kind"] == {"proof": 1, "exhaustive": 1, "exact-evidence": 1}
     assert [r["id"] for r in pl["lines"]] == ["fake-a", "fake-b", "fake-c", "fake-d"]  # sorted by tex
     assert all(set(r) == LINE_KEYS for r in pl["lines"])
     a, b, c, _ = pl["lines"]
@@ -142,6 +143,10 @@ def test_line_coverage_block_of_the_readme():
            "by_part": {"fake": {"checked": 2, "erratum": 1, "excused": 1}}}
     text = lines_markdown(cov)
     assert "4 lines" in text and "**2 checked**" in text and "| part `fake` | 2 | 1 | 1 | 4 |" in text
+    assert "How far" not in text  # an old coverage without kinds
+    text = lines_markdown({**cov, "by_proof_kind": {"proof": 1, "exhaustive": 2}})
+    assert "**1** proof (the check settles everything the line states), **2** exhaustive (exact and complete for " \
+           "the range of n its `how` names, not for every n)." in text
 
 
 def test_line_kinds_say_how_far_a_proof_goes(fake_part):

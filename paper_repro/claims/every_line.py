@@ -147,8 +147,10 @@ def coverage(records: list[dict]) -> dict:
         by_kind.setdefault(r["kind"], Counter())[r["status"]] += 1
         by_part.setdefault(r["part"], Counter())[r["status"]] += 1
     total = Counter(r["status"] for r in records)
+    proof_kinds = Counter(r["proof_kind"] for r in records if r["proof_kind"])
     return {"lines": len(records), "checked": total["checked"], "erratum": total["erratum"],
             "excused": total["excused"],
+            "by_proof_kind": {k: proof_kinds[k] for k in reversed(_KIND_ORDER) if proof_kinds[k]},
             "by_kind": {k: dict(sorted(v.items())) for k, v in sorted(by_kind.items())},
             "by_part": {k: dict(sorted(v.items())) for k, v in sorted(by_part.items())}}
 
