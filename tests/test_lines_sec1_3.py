@@ -253,3 +253,14 @@ def test_delta_count_reads_every_printed_value(line_id, right, wrong):
     assert right in text and C.delta_count().holds_as_printed
     assert C.delta_count().detail["values_per_line"]["sec1_3-delta-sum"] == 2
     assert not C.delta_count({line_id: text.replace(right, wrong, 1)}).holds_as_printed
+
+
+@pytest.mark.parametrize("line_id, right, wrong", [
+    ("sec1_3-r0-p1-A-system", "_{i=0}^{2n}", "_{i=1}^{2n}"),      # not the A's of the sum before it
+    ("sec1_3-r0-p2-A-system", "_{i=1}^{2n}", "_{i=0}^{2n+1}"),    # no such A
+    ("sec1_3-r0-p3-aform", "\\sum_{i=1}^{2n-1}", "\\sum_{i=1}^{2n}"),
+])
+def test_a_systems_are_read_and_tied_to_their_sums(line_id, right, wrong):
+    text = {x.id: x.verbatim for x in P.LINES}[line_id]
+    assert right in text and C.a_independent().holds_as_printed
+    assert not C.a_independent({line_id: text.replace(right, wrong)}).holds_as_printed

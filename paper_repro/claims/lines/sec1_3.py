@@ -1179,11 +1179,32 @@ def _a_system_rank(n: int, first: int, last: int) -> bool:
     return _rank(rows) == last - first + 1
 
 
+#: A-system line -> the display whose sum of A's it makes vanish term by term
+A_SYSTEM_OF = {"sec1_3-r0-p1-A-system": "sec1_3-r0-p1-aform", "sec1_3-r0-p2-A-system": "sec1_3-r0-p2-aform",
+               "sec1_3-r0-p3-A-system": "sec1_3-r0-p3-aform"}
+
+
 @line_check("sec1_3-A-independent")
-def a_independent() -> LineResult:
-    """The subsystems {A_{2n,2n-i}} used in the order-0 step (i = 0..2n, 1..2n, 1..2n-1) are linearly independent."""
-    ok = all(_a_system_rank(n, f, last) for n in range(1, 6) for f, last in ((0, 2 * n), (1, 2 * n), (1, 2 * n - 1)))
-    return LineResult(ok, how="exact collocation ranks, n = 1..5", detail={"ok": ok})
+def a_independent(override: dict[str, str] | None = None) -> LineResult:
+    """The subsystems {A_{2n,2n-i}}_{i=a}^{b} of the order-0 steps (ranges read from the transcriptions) are the
+    A's of the sum in the display before each (its bounds read too) and linearly independent (exact ranks)."""
+    from paper_repro.printed.lines.read import bound
+
+    texts = _transcribed(list(A_SYSTEM_OF) + list(A_SYSTEM_OF.values()), override)
+    ranges, ok = {}, True
+    for line_id, display in A_SYSTEM_OF.items():
+        m = re.search(r"\\right\\\}\s*_\{i=([^{}]+)\}\^\{([^{}]+)\}", texts[line_id])
+        d = re.search(r"\\sum_\{i=([^{}]+)\}\^\{([^{}]+)\}", texts[display])
+        if not m or not d:
+            return LineResult(False, how="the ranges read from the transcriptions, n = 1..5",
+                              detail={"unread": line_id if not m else display})
+        ranges[line_id] = list(m.groups())
+        for n in range(1, 6):
+            first, last = bound(m.group(1), n=n), bound(m.group(2), n=n)
+            ok &= (first, last) == (bound(d.group(1), n=n), bound(d.group(2), n=n))
+            ok &= 0 <= first <= last <= 2 * n and _a_system_rank(n, first, last)
+    return LineResult(ok, how="ranges read from the transcriptions, equal to the bounds of the sums they are used "
+                      "for; exact collocation ranks, n = 1..5", detail={"ranges": ranges})
 
 
 # -- the step r -> r+1 -------------------------------------------------------------------------------------------
