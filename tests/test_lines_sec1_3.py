@@ -264,3 +264,18 @@ def test_a_systems_are_read_and_tied_to_their_sums(line_id, right, wrong):
     text = {x.id: x.verbatim for x in P.LINES}[line_id]
     assert right in text and C.a_independent().holds_as_printed
     assert not C.a_independent({line_id: text.replace(right, wrong)}).holds_as_printed
+
+
+@pytest.mark.parametrize("line_id, right, wrong", [
+    ("sec1_3-induction-orders", "\\ldots,n$", "\\ldots,n-1$"),
+    ("sec1_3-induction-range", "\\ldots,n-1$", "\\ldots,n$"),
+    ("sec1_3-step-range", "\\ldots,n-2$", "\\ldots,n-1$"),
+    ("sec1_3-induction-conclusion", "$r=0,1,", "$r=1,2,"),
+    ("sec1_3-fig-j1-caption-orders", "$r=n-2$", "$r=n-1$"),
+    ("sec1_3-fig-j1-text", "the first and", "the second and"),
+    ("sec1_3-fig-j1-text", "L_{n-2}", "L_{n-1}"),
+])
+def test_elimination_orders_read_their_six_lines(line_id, right, wrong):
+    text = {x.id: x.verbatim for x in P.LINES}[line_id]
+    assert right in text and C.elimination_orders().holds_as_printed
+    assert not C.elimination_orders({line_id: text.replace(right, wrong, 1)}).holds_as_printed

@@ -968,18 +968,51 @@ def ln1_set(override=None) -> LineResult:
 
 
 @line_check("sec1_3-elimination-orders")
-def elimination_orders() -> LineResult:
-    """The derivative orders the proof uses: level j (j = 0..n-1) is eliminated by derivatives of order j, in the
-    order parametrization 1, 2, 3; orders 0..n-1 leave only the centre, and an order-n step would remove it too."""
-    ok = True
+def elimination_orders(override: dict[str, str] | None = None) -> LineResult:
+    """The derivative orders the proof uses, read from its six lines and compared with the elimination recomputed
+    from exact derivatives: level j is removed by the order-j steps (parametrizations 1, 2, 3) and the centre by an
+    order-n step, so the induction runs over r = 0..n (line induction-orders); L_r exists, non-empty, for
+    r = 0..n-1 (induction-range); the steps r -> r+1 are r = 0..n-2 (step-range, induction-conclusion); the figure
+    shows the first and last of them, r = 0 and r = n-2, with derivatives of orders r + 1 of L_r."""
+    from paper_repro.printed.lines.read import bound, listed_range
+
+    ids = ("sec1_3-induction-orders", "sec1_3-induction-range", "sec1_3-step-range", "sec1_3-induction-conclusion",
+           "sec1_3-fig-j1-caption-orders", "sec1_3-fig-j1-text")
+    t = _transcribed(ids, override)
+    try:
+        ranges = {k: listed_range(t[k], "r") for k in ids[:4]}
+        caption_r = re.findall(r"\$r=([^$]+)\$", t["sec1_3-fig-j1-caption-orders"])
+        head = t["sec1_3-fig-j1-text"].split("order partial derivatives")[0]
+        text_orders = re.findall(r"\b(first)\b|\$\\left\(\s*([^$]+?)\s*\\right\)\s*\$th", head)
+        text_l = re.findall(r"0=L_\{([^{}]+)\}", t["sec1_3-fig-j1-text"])
+    except ValueError as exc:
+        return LineResult(False, how="the orders read from the transcriptions", detail={"unread": str(exc)})
+    bad = []
     for n in N_PROOF:
         labels = united_system(n)
-        for r, _param, _before, gone in elimination(n):
-            ok &= all(labels[k].j == r and not labels[k].is_centre for k in gone)
-        ok &= alive_after(n, n - 1, 2) == frozenset({0})
-        ok &= survivors(n, STEP_PARAMS[0], n, frozenset({0})) == frozenset({0})
-    return LineResult(ok, how=f"elimination recomputed from exact derivatives, n = 1..{N_PROOF.stop - 1}",
-                      detail={"ok": ok})
+        removed_at = sorted({r for r, _p, _b, gone in elimination(n) if gone})
+        levels_ok = all(labels[k].j == r and not labels[k].is_centre for r, _p, _b, gone in elimination(n)
+                        for k in gone) and alive_after(n, n - 1, 2) == frozenset({0})
+        centre_order = n if survivors(n, STEP_PARAMS[0], n, frozenset({0})) == frozenset({0}) else None
+        want = {"sec1_3-induction-orders": removed_at + [centre_order],
+                "sec1_3-induction-range": removed_at,  # the orders whose steps remove a level
+                "sec1_3-step-range": [r for r in range(n) if r + 1 < n],
+                "sec1_3-induction-conclusion": [r for r in range(n) if r + 1 < n]}
+        for k, (lo, hi) in ranges.items():
+            if list(range(bound(lo, n=n), bound(hi, n=n) + 1)) != want[k]:
+                bad.append(f"n={n}: {k}")
+        steps = want["sec1_3-step-range"]
+        if n >= 2:
+            shown = [bound(x, n=n) for x in caption_r]
+            orders = [1 if o == "first" else bound(e, n=n) for o, e in text_orders]
+            if shown != [steps[0], steps[-1]] or orders != [r + 1 for r in shown] or \
+                    [bound(x, n=n) for x in text_l] != shown:
+                bad.append(f"n={n}: figure")
+        if not levels_ok:
+            bad.append(f"n={n}: levels")
+    return LineResult(not bad, how="orders read from the six transcriptions against the elimination recomputed from "
+                      f"exact derivatives, n = 1..{N_PROOF.stop - 1}", kind="exhaustive",
+                      detail={"ranges": {k: list(v) for k, v in ranges.items()}, "mismatches": bad[:3]})
 
 
 # -- value lines: linear forms in the combining constants -----------------------------------------------------
