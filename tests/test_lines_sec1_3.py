@@ -279,3 +279,15 @@ def test_elimination_orders_read_their_six_lines(line_id, right, wrong):
     text = {x.id: x.verbatim for x in P.LINES}[line_id]
     assert right in text and C.elimination_orders().holds_as_printed
     assert not C.elimination_orders({line_id: text.replace(right, wrong, 1)}).holds_as_printed
+
+
+@pytest.mark.parametrize("check, line_id, right, wrong", [
+    ("r0p1_terms", "sec1_3-r0-p1-terms", "\\sum_{i=0}^{2n-1}", "\\sum_{i=0}^{2n-2}"),
+    ("r0p1_terms", "sec1_3-r0-p1-terms", "\\gamma_{2n,2n,0}G_{2n,2n,0}", "\\gamma_{2n,2n,1}G_{2n,2n,1}"),
+    ("r0p2_terms", "sec1_3-r0-p2-terms", "0,\\alpha-y,y", "0,y,\\alpha-y"),     # not the edge of parametrization 2
+    ("r0p3_terms", "sec1_3-r0-p3-terms", "\\beta_{2n,2n-i,0}B", "\\beta_{2n,2n-i,0}G"),  # constant and function differ
+])
+def test_order_0_terms_are_read_from_the_transcription(check, line_id, right, wrong):
+    text = {x.id: x.verbatim for x in P.LINES}[line_id]
+    assert right in text and getattr(C, check)().holds_as_printed
+    assert not getattr(C, check)(text.replace(right, wrong)).holds_as_printed

@@ -1067,18 +1067,6 @@ def _A(pt, k: int) -> fmpq:
 
 
 # order-0 step, parametrization 1 (x = t, v = 0, w = alpha - t)
-def _r0p1_terms(n, r, pt):
-    out = {}
-    for i in range(0, 2 * n):  # R_{2n,2n-i,0}(x, 0, alpha - x), evaluated as functions
-        e = exponents(BasisLabel("R", n, i, 0))
-        out[lab("R", n, i, 0)] = (pt["t"][0] ** e[0] * pt["t"][1] ** e[1] * (1 if e[2] == 0 else 0)
-                                  * pt["alpha-t"][0] ** e[4] * pt["alpha-t"][1] ** e[5])
-    e = exponents(BasisLabel("G", n, 0, 0))
-    out[lab("G", n, 0, 0)] = (pt["t"][0] ** e[0] * pt["t"][1] ** e[1] * (1 if e[2] == 0 else 0)
-                              * pt["alpha-t"][0] ** e[4] * pt["alpha-t"][1] ** e[5])
-    return out
-
-
 def _r0p1_cform(n, r, pt):
     """sum_{i=0}^{2n} rho'_{2n,2n-i,0} c_{2n,2n-i} sin^{2n-i}(x/2) sin^i((alpha-x)/2) with the printed rho'."""
     out = {}
@@ -1111,9 +1099,58 @@ def _computed_step(param_index: int, order=lambda r: r, alive_fn=None):
     return fn
 
 
+def read_terms_at_edge(line_id: str, param_index: int, verbatim: str | None = None):
+    """The printed terms constant x function(point) of an order-0 step, read from the transcription: a function
+    ``(n, r, pt) -> {member of T_{2n}: its value at the boundary point}`` of the functions it names (by their own
+    names), after checking that the printed point is the step's parametrization at running parameter 0.  A name
+    that is no member of T_{2n} is kept as a string (a mismatch)."""
+    from paper_repro.printed.lines.read import sum_terms, term_indices
+
+    tex = verbatim if verbatim is not None else _transcribed([line_id])[line_id]
+    terms = sum_terms(tex)
+    points = {re.sub(r"\s+", "", x) for x in re.findall(r"\\left\(\s*([^()]*?)\s*\\right\)", tex)}
+    fmap, run = PARAMS[STEP_PARAMS[param_index]]
+    a, q = fmpq(7, 5), fmpq(2, 5)  # the printed point and the map compared at exact values of alpha and the parameter
+    at0 = fmap(a, q, fmpq(0)) if run == "y" else fmap(a, fmpq(0), q)
+    other = "x" if run == "y" else "y"
+    readable = []
+    for pt_text in points:
+        parts = pt_text.split(",")
+        vals = []
+        for part in parts:
+            expr = part.replace("\\alpha", "A")
+            if not re.fullmatch(r"[0A-Za-z+\-]+", expr):
+                raise ValueError(f"unread point {pt_text!r}")
+            vals.append(eval(expr.replace(other, "Q"), {"__builtins__": {}}, {"A": a, "Q": q}))  # noqa: S307
+        readable.append(tuple(vals))
+    if readable != [tuple(at0)] * len(readable) or not readable:
+        raise ValueError(f"the printed points {sorted(points)} are not the parametrization at {run} = 0")
+
+    def fn(n, r, pt):
+        strict = {lb.paper: k for k, lb in enumerate(united_system(n))}
+        out = {}
+        for color, i, j in term_indices(terms, n=n, r=r):
+            name = f"{color}_{{{2 * n},{2 * n - i},{j}}}"
+            k = strict.get(name, name)
+            out[k] = step_value(exponents(united_system(n)[k]), STEP_PARAMS[param_index], 0, pt) \
+                if isinstance(k, int) else fmpq(1)
+        return out
+    return fn
+
+
+def _terms_check(line_id: str, param_index: int, verbatim: str | None) -> LineResult:
+    try:
+        printed = read_terms_at_edge(line_id, param_index, verbatim)
+    except ValueError as exc:
+        return LineResult(False, how="the printed terms read from the transcription", detail={"unread": str(exc)})
+    res = _compare_forms(printed, _computed_step(param_index))
+    res.how = "terms read from the transcription (sums, constants, functions, point); " + res.how
+    return res
+
+
 @line_check("sec1_3-r0-p1-terms")
-def r0p1_terms() -> LineResult:
-    return _compare_forms(_r0p1_terms, _computed_step(0))
+def r0p1_terms(verbatim: str | None = None) -> LineResult:
+    return _terms_check("sec1_3-r0-p1-terms", 0, verbatim)
 
 
 @line_check("sec1_3-r0-p1-cform")
@@ -1138,15 +1175,6 @@ def r0p1_omitted() -> LineResult:
 
 
 # order-0 step, parametrization 2 (u = 0, v = alpha - y, w = y; t = y)
-def _r0p2_terms(n, r, pt):
-    out = {}
-    for lb_color, i in [("G", i) for i in range(1, 2 * n)] + [("B", 0)]:
-        e = exponents(BasisLabel(lb_color, n, i, 0))
-        out[lab(lb_color, n, i, 0)] = ((1 if e[0] == 0 else 0) * pt["alpha-t"][0] ** e[2] * pt["alpha-t"][1] ** e[3]
-                                       * pt["t"][0] ** e[4] * pt["t"][1] ** e[5])
-    return out
-
-
 def _r0p2_aform(n, r, pt):
     out = {}
     for i in range(1, 2 * n + 1):
@@ -1156,8 +1184,8 @@ def _r0p2_aform(n, r, pt):
 
 
 @line_check("sec1_3-r0-p2-terms")
-def r0p2_terms() -> LineResult:
-    return _compare_forms(_r0p2_terms, _computed_step(1))
+def r0p2_terms(verbatim: str | None = None) -> LineResult:
+    return _terms_check("sec1_3-r0-p2-terms", 1, verbatim)
 
 
 @line_check("sec1_3-r0-p2-aform")
@@ -1179,22 +1207,13 @@ def r0p2_omitted() -> LineResult:
 
 
 # order-0 step, parametrization 3 (u = alpha - x, v = x, w = 0; t = x)
-def _r0p3_terms(n, r, pt):
-    out = {}
-    for i in range(1, 2 * n):
-        e = exponents(BasisLabel("B", n, i, 0))
-        out[lab("B", n, i, 0)] = (pt["alpha-t"][0] ** e[0] * pt["alpha-t"][1] ** e[1] * pt["t"][0] ** e[2]
-                                  * pt["t"][1] ** e[3] * (1 if e[4] == 0 else 0))
-    return out
-
-
 def _r0p3_aform(n, r, pt):
     return {lab("B", n, i, 0): _A_at(pt, 2 * n - i, "t") / _c(pt, 2 * n - i) for i in range(1, 2 * n)}
 
 
 @line_check("sec1_3-r0-p3-terms")
-def r0p3_terms() -> LineResult:
-    return _compare_forms(_r0p3_terms, _computed_step(2))
+def r0p3_terms(verbatim: str | None = None) -> LineResult:
+    return _terms_check("sec1_3-r0-p3-terms", 2, verbatim)
 
 
 @line_check("sec1_3-r0-p3-aform")
