@@ -291,3 +291,12 @@ def test_order_0_terms_are_read_from_the_transcription(check, line_id, right, wr
     text = {x.id: x.verbatim for x in P.LINES}[line_id]
     assert right in text and getattr(C, check)().holds_as_printed
     assert not getattr(C, check)(text.replace(right, wrong)).holds_as_printed
+
+
+def test_omitted_functions_are_read_from_the_transcriptions():
+    text = {x.id: x.verbatim for x in P.LINES}
+    assert C.r0p1_omitted().holds_as_printed and C.r0p2_omitted().holds_as_printed
+    assert not C.r0p1_omitted({"sec1_3-r0-p1-omitted": text["sec1_3-r0-p1-omitted"].replace("v_{1}", "w_{1}")}
+                              ).holds_as_printed  # not the variable of the edge
+    assert not C.r0p2_omitted({"sec1_3-r0-p2-terms": text["sec1_3-r0-p2-terms"].replace("i=1}", "i=2}")}
+                              ).holds_as_printed  # a kept function called omitted

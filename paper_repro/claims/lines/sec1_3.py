@@ -1163,15 +1163,37 @@ def r0p1_aform() -> LineResult:
     return _compare_forms(_r0p1_aform, _computed_step(0))
 
 
-@line_check("sec1_3-r0-p1-omitted")
-def r0p1_omitted() -> LineResult:
-    """All functions of T_{2n} other than R_{2n,2n-i,0} (i < 2n) and G_{2n,2n,0} contain sin(v/2) to a power >= 1."""
-    ok = True
+def omitted_check(line_id: str, before: str, terms_line: str, param_index: int,
+                  override: dict[str, str] | None = None) -> LineResult:
+    """"The omitted functions contain sin(x_k/2), 0 at the edge, to a power >= 1": read from the transcriptions
+    -- the variable (``\\sin\\frac{v_{1}..``), the functions before the step (the rows of ``before``) and those
+    kept (the terms of ``terms_line``) -- every function before the step and not kept has that sine to a power
+    >= 1, every kept one has not, and the variable is the one that vanishes on the step's edge (n = 1..12)."""
+    from paper_repro.printed.lines.read import sum_terms, term_indices
+
+    t = _transcribed([line_id, terms_line], override)
+    m = re.search(r"\\sin\s*\\frac\{([uvw])_\{\d\}", t[line_id])
+    if not m:
+        return LineResult(False, how="the vanishing sine read from the transcription, n = 1..12", kind="exhaustive",
+                          detail={"unread": line_id})
+    var = "uvw".index(m.group(1))
+    ok = var == step_geometry(STEP_PARAMS[param_index])[1]
     for n in range(1, 13):
-        kept = dsum("R", n, 0, 0) | {lab("G", n, 0, 0)}
-        ok &= all((exponents(lb)[2] >= 1) == (k not in kept) for k, lb in enumerate(united_system(n)))
-    return LineResult(ok, how="exponent of sin(v/2) in every function of T_{2n}, n = 1..12", kind="exhaustive",
-                      detail={"ok": ok})
+        strict = {lb.paper: k for k, lb in enumerate(united_system(n))}
+        kept = {strict.get(f"{c}_{{{2 * n},{2 * n - i},{j}}}", "?") for c, i, j in
+                term_indices(sum_terms(t[terms_line]), n=n)}
+        alive = printed_rows(before, n, 0, override)
+        ok &= "?" not in kept and kept <= alive
+        ok &= all((exponents(united_system(n)[k])[2 * var] >= 1) == (k not in kept)
+                  for k in alive if isinstance(k, int))
+    return LineResult(ok, how=f"exponent of sin({m.group(1)}/2) in the functions before the step (read) against those "
+                      "kept (read), n = 1..12", kind="exhaustive", detail={"variable": m.group(1), "ok": bool(ok)})
+
+
+@line_check("sec1_3-r0-p1-omitted")
+def r0p1_omitted(override: dict[str, str] | None = None) -> LineResult:
+    """All functions of L other than R_{2n,2n-i,0} (i < 2n) and G_{2n,2n,0} contain sin(v/2) to a power >= 1."""
+    return omitted_check("sec1_3-r0-p1-omitted", "sec1_3-L-set", "sec1_3-r0-p1-terms", 0, override)
 
 
 # order-0 step, parametrization 2 (u = 0, v = alpha - y, w = y; t = y)
@@ -1194,16 +1216,9 @@ def r0p2_aform() -> LineResult:
 
 
 @line_check("sec1_3-r0-p2-omitted")
-def r0p2_omitted() -> LineResult:
+def r0p2_omitted(override: dict[str, str] | None = None) -> LineResult:
     """The functions of L-tilde discarded at x = 0 all contain sin(u/2) to a power >= 1."""
-    ok = True
-    for n in range(1, 13):
-        kept = isum("G", n, 0, 1, 2 * n - 1) | {lab("B", n, 0, 0)}
-        alive = centre(n) | dsum("R", n, 1, n - 1) | isum("G", n, 0, 1, 2 * n - 1) | dsum("G", n, 1, n - 1) \
-            | dsum("B", n, 0, n - 1)
-        ok &= all((exponents(united_system(n)[k])[0] >= 1) == (k not in kept) for k in alive)
-    return LineResult(ok, how="exponent of sin(u/2) in the functions of L-tilde, n = 1..12", kind="exhaustive",
-                      detail={"ok": ok})
+    return omitted_check("sec1_3-r0-p2-omitted", "sec1_3-Ltilde-set", "sec1_3-r0-p2-terms", 1, override)
 
 
 # order-0 step, parametrization 3 (u = alpha - x, v = x, w = 0; t = x)
