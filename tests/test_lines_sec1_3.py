@@ -300,3 +300,11 @@ def test_omitted_functions_are_read_from_the_transcriptions():
                               ).holds_as_printed  # not the variable of the edge
     assert not C.r0p2_omitted({"sec1_3-r0-p2-terms": text["sec1_3-r0-p2-terms"].replace("i=1}", "i=2}")}
                               ).holds_as_printed  # a kept function called omitted
+
+
+@pytest.mark.parametrize("right, wrong", [("\\gamma_{2n,2n-i,r+1}", "\\gamma_{2n,2n-i,r}"), ("_{i=r+1}", "_{i=r}"),
+                                          ("equal to $0$", "equal to $1$")])
+def test_level_zeroed_reads_the_constants(right, wrong):
+    text = {x.id: x.verbatim for x in P.LINES}["sec1_3-step-zeroed"]
+    assert right in text and C.level_zeroed().holds_as_printed
+    assert not C.level_zeroed(text.replace(right, wrong)).holds_as_printed

@@ -931,11 +931,29 @@ def lr1_set(override=None) -> LineResult:
                       override=override)
 
 
+_CONSTANT_SET = re.compile(r"\\left\\\{\s*\\rho_\{2n,2n-i,([^{}]+)\},\\gamma_\{2n,2n-i,([^{}]+)\},"
+                           r"\\beta_\{2n,2n-i,([^{}]+)\}\s*\\right\\\}\s*_\{i=([^{}]+)\}\^\{([^{}]+)\}"
+                           r".*?equal to \$(\w+)\$", re.S)
+
+
 @line_check("sec1_3-level-zeroed")
-def level_zeroed() -> LineResult:
-    """The constants {rho, gamma, beta}_{2n,2n-i,r+1}, i = r+1..2n-1-(r+1), are those set to 0 by the step r -> r+1."""
-    return _proof_sets(lambda n, r: {lab(c, n, i, r + 1) for c in "RGB" for i in range(r + 1, 2 * n - 1 - (r + 1) + 1)},
-                       lambda n, r: alive_after(n, r, 2) - alive_after(n, r + 1, 2), rs=lambda n: range(n - 1))
+def level_zeroed(verbatim: str | None = None) -> LineResult:
+    """The constants {rho, gamma, beta}_{2n,2n-i,r+1}, i = r+1..2n-1-(r+1) (levels, range and the value 0 read from
+    the transcription), are those set to 0 by the step r -> r+1."""
+    from paper_repro.printed.lines.read import bound
+
+    tex = verbatim if verbatim is not None else _transcribed(["sec1_3-step-zeroed"])["sec1_3-step-zeroed"]
+    m = _CONSTANT_SET.search(tex.replace("\\left(", "(").replace("\\right)", ")"))
+    if not m or m.group(6) != "0":
+        return LineResult(False, how="the constants read from the transcription", detail={"unread": tex[:60]})
+    levels, lo, hi = m.group(1, 2, 3), m.group(4), m.group(5)
+
+    def printed(n, r):
+        strict = {lb.paper: k for k, lb in enumerate(united_system(n))}
+        return {strict.get(f"{c}_{{{2 * n},{2 * n - i},{bound(lev, n=n, r=r)}}}", f"{c}?{i}")
+                for c, lev in zip("RGB", levels) for i in range(bound(lo, n=n, r=r), bound(hi, n=n, r=r) + 1)}
+    return _proof_sets(printed, lambda n, r: alive_after(n, r, 2) - alive_after(n, r + 1, 2), rs=lambda n: range(n - 1),
+                       how="constants of the printed set (levels, range and value read from the transcription)")
 
 
 @line_check("sec1_3-Ltilde-r-set")
