@@ -195,3 +195,30 @@ def test_patch_terms_and_nets_are_read_from_their_transcriptions():
     wrong = rows["sec6-rational-control-net-set"].replace("_{j=0,i=j}^{n-1,2n-1-j}", "_{j=0,i=j}^{n-2,2n-1-j}", 1)
     assert c6.control_net_set({"sec6-rational-control-net-set": wrong}).detail["printed_sizes_n_1_2_3"][
         "sec6-rational-control-net-set"] != res.detail["printed_sizes_n_1_2_3"]["sec6-rational-control-net-set"]
+
+
+@pytest.mark.parametrize("check, line_id, right, wrong", [
+    ("weights_set", "sec6-weights-set", "\\gamma_{2n,2n-i,j}\\right\\}  _{j=0,i=j}^{n-1,2n-1-j}",
+     "\\gamma_{2n,2n-i,j}\\right\\}  _{j=0,i=j}^{n-1,2n-j}"),
+    ("tau_index_sets", "sec6-tau-row-2", "\\gamma_{2n,2n-k,\\ell}\\overline{G}_{2n,2n-k,\\ell}",
+     "\\gamma_{2n,2n-k,\\ell}\\overline{B}_{2n,2n-k,\\ell}"),
+    ("rational_patch", "sec6-rational-row-3", "\\beta_{2n,2n-i,j}\\mathbf{b}_{2n,2n-i,j}",
+     "\\beta_{2n,2n-i,j}\\mathbf{g}_{2n,2n-i,j}"),
+    ("delta3", "sec6-delta3", "$\\delta_{3}=37$", "$\\delta_{3}=36$"),
+])
+def test_sec6_sets_are_read_from_their_transcriptions(check, line_id, right, wrong):
+    text = {x.id: x.verbatim for x in LINES}[line_id]
+    assert right in text, right
+    fn = getattr(c6, check)
+    assert fn().holds_as_printed
+    bad = text.replace(right, wrong)
+    res = fn(bad) if check in ("weights_set", "delta3") else fn({line_id: bad})
+    assert not res.holds_as_printed
+
+
+def test_weights_rank1_reads_its_sum():
+    text = {x.id: x.verbatim for x in LINES}["sec6-weights-rank1"]
+    res = c6.weights_rank1()
+    assert res.holds_as_printed is False and res.corrected_holds is True  # the recorded erratum
+    wrong = c6.weights_rank1({"sec6-weights-rank1": text.replace("\\rho_{2n,n,n}+", "")})
+    assert wrong.corrected_holds is False  # the sum read without the centre no longer names T_{2n}

@@ -46,15 +46,6 @@ def enumerate_set(letter: str, n: int, j_max: int, i_max: Callable[[int], int], 
     return [f"{letter}_{{{2 * n},{first(n, i)},{j}}}" for j in range(j_max + 1) for i in range(j, i_max(j) + 1)]
 
 
-def printed_patch_terms(n: int) -> list[str]:
-    """Terms of eq. triangular_trig_surface (and rational_patch, tau): the centre, then three double sums
-    ``j = 0..n-1``, ``i = j..2n-1-j``."""
-    out = [f"r_{{{2 * n},{n},{n}}}"]
-    for letter in "rgb":
-        out += enumerate_set(letter, n, n - 1, lambda j, n=n: 2 * n - 1 - j)
-    return out
-
-
 def printed_control_net(n: int, r_j_max: int | None = None) -> list[str]:
     """The control net of def:surface_patch / def:rational_patch as printed: r with ``j = 0..n``,
     g and b with ``j = 0..n-1``, all with ``i = j..2n-1-j``."""
@@ -143,7 +134,7 @@ def patch_index_sets(override: dict[str, str] | None = None) -> LineResult:
     return LineResult(counts_ok and distinct and full, how="enumeration of the printed sums vs united_system, "
                       "n = 1..12; exact rank of the basis at delta_n rational points, n = 1..3",
                       kind="exact-evidence",
-                      detail={"n": [NS[0], NS[-1]], "terms_n_1_2_3": [len(printed_patch_terms(n)) for n in (1, 2, 3)],
+                      detail={"n": [NS[0], NS[-1]], "terms_n_1_2_3": [len(patch_terms_read(n)) for n in (1, 2, 3)],
                               "rank_n_1_2_3": [ranks[n] for n in (1, 2, 3)], "order_n_geq_1": True})
 
 
@@ -174,16 +165,24 @@ def control_net_set(override: dict[str, str] | None = None) -> LineResult:
 
 
 @line_check("sec6-delta3")
-def delta3() -> LineResult:
-    terms = len(printed_patch_terms(3))
-    return LineResult(terms == 37 and delta(3) == 37 and len(united_system(3)) == 37,
-                      how="count of the terms of eq. triangular_trig_surface for n = 3 and of T_6",
-                      kind="proof", detail={"terms_n_3": terms, "united_system_n_3": len(united_system(3))})
+def delta3(verbatim: str | None = None) -> LineResult:
+    """delta_3 = 37 control points (order and count read from the transcription) against the terms of eq.
+    triangular_trig_surface (read) and T_6."""
+    tex = _LINE["sec6-delta3"].verbatim if verbatim is None else verbatim
+    m = re.search(r"\\delta_\{(\d+)\}=(\d+)", tex)
+    if not m:
+        return LineResult(False, how="the count read from the transcription", detail={"unread": tex[:60]})
+    n, count = int(m.group(1)), int(m.group(2))
+    terms = len(patch_terms_read(n))
+    return LineResult(terms == count == delta(n) == len(united_system(n)),
+                      how="count read from the transcription vs the terms of eq. triangular_trig_surface (read) and "
+                      "T_{2n}", kind="proof", detail={"n": n, "printed": count, "terms": terms,
+                                                       "united_system": len(united_system(n))})
 
 
 @line_check("sec6-quadratic-growth")
 def quadratic_growth() -> LineResult:
-    sizes = [len(printed_patch_terms(n)) for n in NS]
+    sizes = [len(patch_terms_read(n)) for n in NS]
     second = {c - 2 * b + a for a, b, c in zip(sizes, sizes[1:], sizes[2:])}
     first = sizes[1] - sizes[0]
     return LineResult(second == {6} and first > 0, how="second differences of the number of control points, "
@@ -799,11 +798,28 @@ def fig_torus_settings() -> LineResult:
 
 
 # --- Section 6.2: rational patches ---------------------------------------------------------------------------
+def _rows_read(ids: Sequence[str], n: int, override: dict[str, str] | None = None, **mode: bool) -> list[str]:
+    """Control point names (lower case) of the functions named by the sums of the lines ``ids``, read from their
+    transcriptions (:func:`paper_repro.printed.lines.read.sum_terms`)."""
+    from paper_repro.printed.lines.read import sum_terms, term_indices
+
+    texts = {k: _LINE[k].verbatim for k in ids}
+    texts.update({k: v for k, v in (override or {}).items() if k in texts})
+    return [f"{c.lower()}_{{{2 * n},{2 * n - i},{j}}}" for k in ids
+            for c, i, j in term_indices(sum_terms(texts[k], **mode), n=n)]
+
+
 @line_check("sec6-weights-set")
-def weights_set() -> LineResult:
-    ok = all(matches_basis(printed_patch_terms(n), n) for n in NS)
-    return LineResult(ok, how="enumeration of rho_{2n,n,n} and the three printed weight sets vs T_{2n}, n = 1..12",
-                      kind="exact-evidence", detail={"sizes_n_1_2_3": [len(printed_patch_terms(n)) for n in (1, 2, 3)]})
+def weights_set(verbatim: str | None = None) -> LineResult:
+    """The weights rho_{2n,n,n} and the three printed sets of weights (read from the transcription; it used the
+    patch's terms instead) name each function of T_{2n} once, n = 1..12."""
+    from paper_repro.printed.lines.read import constant_sets
+
+    tex = _LINE["sec6-weights-set"].verbatim if verbatim is None else verbatim
+    names = {n: [f"{c.lower()}_{{{2 * n},{2 * n - i},{j}}}" for c, i, j in constant_sets(tex, n)] for n in NS}
+    ok = all(matches_basis(v, n) for n, v in names.items())
+    return LineResult(ok, how="the printed weights read from the transcription vs T_{2n}, n = 1..12",
+                      kind="exhaustive", detail={"sizes_n_1_2_3": [len(names[n]) for n in (1, 2, 3)]})
 
 
 def tau_values(n: int, alpha: RationalAngle, weights: Sequence[fmpq], pts: RationalPoints) -> list[fmpq]:
@@ -823,9 +839,10 @@ def rank1_counterexample(n: int = 2) -> dict:
 
 
 @line_check("sec6-weights-rank1")
-def weights_rank1() -> LineResult:
-    """The sum's index sets are right, but a non-zero sum of non-negative weights lets tau vanish on Omega^alpha."""
-    sets_ok = all(matches_basis(printed_patch_terms(n), n) for n in NS)
+def weights_rank1(override: dict[str, str] | None = None) -> LineResult:
+    """The sum's index sets (read from the transcription) are right, but a non-zero sum of non-negative weights lets
+    tau vanish on Omega^alpha."""
+    sets_ok = all(matches_basis(_rows_read(("sec6-weights-rank1",), n, override, bare=True), n) for n in NS)
     ce = rank1_counterexample()
     vanishes = ce["sum"] != 0 and ce["min_weight"] >= 0 and any(v == 0 for v in ce["tau_on_edge_u0"])
     printed_holds = sets_ok and not vanishes
@@ -857,10 +874,15 @@ def rational_eval(n: int, alpha: RationalAngle, net, weights, pts: RationalPoint
 
 
 @line_check("sec6-rational-patch")
-def rational_patch() -> LineResult:
-    """The terms of eq. rational_patch are the delta_n functions of T_{2n} (enumeration); with equal weights the
-    rational patch is the polynomial patch (exact)."""
-    sets_ok = all(matches_basis(printed_patch_terms(n), n) for n in NS)
+def rational_patch(override: dict[str, str] | None = None) -> LineResult:
+    """The terms of eq. rational_patch (weight, control point and function of each, read from the transcriptions of
+    its three rows) are the delta_n functions of T_{2n}; with equal weights the rational patch is the polynomial
+    patch (exact)."""
+    rows = ("sec6-rational-row-1", "sec6-rational-row-2", "sec6-rational-row-3")
+    try:
+        sets_ok = all(matches_basis(_rows_read(rows, n, override, rational=True), n) for n in NS)
+    except ValueError as exc:
+        return LineResult(False, how="the rows read from the transcriptions", detail={"unread": str(exc)})
     alpha = rational_alpha(TS[2])
     same = True
     for n in (1, 2):
@@ -873,11 +895,13 @@ def rational_patch() -> LineResult:
 
 
 @line_check("sec6-tau-index-sets")
-def tau_index_sets() -> LineResult:
-    """tau's sums over l = 0..n-1, k = l..2n-1-l name T_{2n}; with unit weights tau = 1 (exact)."""
-    sets = all(matches_basis([f"r_{{{2 * n},{n},{n}}}"] + [f"{c}_{{{2 * n},{2 * n - k},{ell}}}" for c in "rgb"
-                                                             for ell in range(n) for k in range(ell, 2 * n - ell)], n)
-               for n in NS)
+def tau_index_sets(override: dict[str, str] | None = None) -> LineResult:
+    """tau's sums over l = 0..n-1, k = l..2n-1-l (read from the transcriptions of its rows) name T_{2n}; with unit
+    weights tau = 1 (exact)."""
+    try:
+        sets = all(matches_basis(_rows_read(("sec6-tau-row-1", "sec6-tau-row-2"), n, override), n) for n in NS)
+    except ValueError as exc:
+        return LineResult(False, how="the rows read from the transcriptions", detail={"unread": str(exc)})
     alpha = rational_alpha(TS[0])
     one = all(v == 1 for n in (1, 2, 3)
               for v in tau_values(n, alpha, [fmpq(1)] * delta(n), sample_rational_points(alpha, 3, seed=n)))

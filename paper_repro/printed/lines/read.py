@@ -60,31 +60,68 @@ def right_hand_side(tex: str, before: str = r",~\\forall") -> str:
     return head.rsplit("=", 1)[1].strip(" %~")
 
 
-_SUM = re.compile(r"\\sum(?:\\limits)?_\{(\w)=([^{}]+?)\}\s*%?\s*\^\{([^{}]+?)\}")
-_TERM = re.compile(r"\\(rho|gamma|beta)_\{2n,([^{}]+?),([^{}]+?)\}\s*%?\s*([RGB])_\{2n,([^{}]+?),([^{}]+?)\}")
+_SUM = re.compile(r"\\sum(?:\\limits)?\s*_\{(\w)=([^{}]+?)\}\s*%?\s*\^\{([^{}]+?)\}")
+_TERM = re.compile(r"\\(rho|gamma|beta)_\{2n,([^{}]+?),([^{}]+?)\}\s*%?\s*(?:\\overline\{)?([RGB])\}?"
+                   r"_\{2n,([^{}]+?),([^{}]+?)\}")
+_RATIONAL_TERM = re.compile(r"\\(rho|gamma|beta)_\{2n,([^{}]+?),([^{}]+?)\}\s*%?\s*\\mathbf\{([rgb])\}"
+                            r"_\{2n,([^{}]+?),([^{}]+?)\}\s*\\dfrac\{\\overline\{([RGB])\}_\{2n,([^{}]+?),([^{}]+?)\}")
+_CONSTANT_SETS = re.compile(r"\\left\\\{\s*\\(rho|gamma|beta)_\{2n,2n-i,j\}\s*\\right\\\}\s*"
+                            r"_\{j=([^,{}]+),i=([^{}]+)\}\s*%?\s*\^\{([^,{}]+),([^{}]+)\}")
 _POINT_TERM = re.compile(r"\\mathbf\{([rgb])\}_\{2n,([^{}]+?),([^{}]+?)\}\s*%?\s*"
                          r"\\overline\{([RGB])\}_\{2n,([^{}]+?),([^{}]+?)\}")
 _COLOUR_OF = {"rho": "R", "gamma": "G", "beta": "B", "r": "R", "g": "G", "b": "B"}
 
 
-def sum_terms(tex: str, points: bool = False) -> list[tuple[list[tuple[str, str, str]], str, str, str]]:
+_BARE_TERM = re.compile(r"\\(rho|gamma|beta)_\{2n,([^{}]+?),([^{}]+?)\}")
+
+
+def sum_terms(tex: str, points: bool = False, rational: bool = False, bare: bool = False
+              ) -> list[tuple[list[tuple[str, str, str]], str, str, str]]:
     """The terms ``constant_{2n,a,b} X_{2n,a,b}`` of a printed linear combination, each with the sums written
     before it (since the previous term): ``[([(var, lo, hi), ...], colour, first index, level), ...]`` as printed.
     A term whose constant and function disagree (colour or indices) raises ``ValueError``.  With ``points`` the terms
-    are ``\\mathbf{x}_{2n,a,b}\\overline{X}_{2n,a,b}`` (control point times normalized function, a patch).
+    are ``\\mathbf{x}_{2n,a,b}\\overline{X}_{2n,a,b}`` (control point times normalized function, a patch); with
+    ``rational`` ``\\rho_{2n,a,b}\\mathbf{r}_{2n,a,b}\\dfrac{\\overline{R}_{2n,a,b}..`` (weight, point, function).
+    ``\\ell`` is read as the variable ``l``.  With ``bare`` the terms are constants alone (a sum of weights).
 
     >>> sum_terms(r"\\rho_{2n,n,n}R_{2n,n,n} +\\sum_{j=1}^{n-1}\\sum_{i=j}^{2n-1-j}\\gamma_{2n,2n-i,j}G_{2n,2n-i,j}")
     [([], 'R', 'n', 'n'), ([('j', '1', 'n-1'), ('i', 'j', '2n-1-j')], 'G', '2n-i', 'j')]
     """
-    text = tex.replace("\\left(", "(").replace("\\right)", ")")
+    text = tex.replace("\\left(", "(").replace("\\right)", ")").replace("\\ell", "l")
     out, last = [], 0
-    for m in (_POINT_TERM if points else _TERM).finditer(text):
-        const, a, b, colour, fa, fb = m.groups()
+    pattern = _BARE_TERM if bare else _RATIONAL_TERM if rational else _POINT_TERM if points else _TERM
+    for m in pattern.finditer(text):
+        groups = m.groups()
+        if bare:
+            const, a, b = groups
+            sums = [(v, lo.strip(), hi.strip()) for v, lo, hi in _SUM.findall(text[last:m.start()])]
+            out.append((sums, _COLOUR_OF[const], a.strip(), b.strip()))
+            last = m.end()
+            continue
+        const, a, b, colour, fa, fb = groups[:6]
+        if rational:
+            point, (colour, fa, fb), (pa, pb) = colour, groups[6:], groups[4:6]
+            if _COLOUR_OF[point] != colour or (pa.strip(), pb.strip()) != (fa.strip(), fb.strip()):
+                raise ValueError(f"point {point}_{{2n,{pa},{pb}}} does not match {colour}_{{2n,{fa},{fb}}}")
         if _COLOUR_OF[const] != colour or (a.strip(), b.strip()) != (fa.strip(), fb.strip()):
             raise ValueError(f"constant {const}_{{2n,{a},{b}}} does not match {colour}_{{2n,{fa},{fb}}}")
         sums = [(v, lo.strip(), hi.strip()) for v, lo, hi in _SUM.findall(text[last:m.start()])]
         out.append((sums, colour, a.strip(), b.strip()))
         last = m.end()
+    return out
+
+
+def constant_sets(tex: str, n: int) -> list[tuple[str, int, int]]:
+    """``(colour, i, j)`` of the constants named by a printed list such as ``\\rho_{2n,n,n},\\left\\{ \\rho_{2n,2n-i,j}
+    \\right\\} _{j=0,i=j}^{n-1,2n-1-j},..`` at order n (a lone constant with numeric or n indices included)."""
+    text = tex.replace("%", " ")
+    out = []
+    for const, jlo, ilo, jhi, ihi in _CONSTANT_SETS.findall(text):
+        out += [(_COLOUR_OF[const], i, j) for j in range(bound(jlo, n=n), bound(jhi, n=n) + 1)
+                for i in range(bound(ilo, n=n, j=j), bound(ihi, n=n, j=j) + 1)]
+    rest = _CONSTANT_SETS.sub(" ", text)
+    for const, a, b in re.findall(r"\\(rho|gamma|beta)_\{2n,([^{}]+?),([^{}]+?)\}", rest):
+        out.append((_COLOUR_OF[const], 2 * n - bound(a, n=n), bound(b, n=n)))
     return out
 
 
@@ -107,8 +144,13 @@ def term_indices(terms, **env: int) -> list[tuple[str, int, int]]:
 
 
 def bound(expr: str, **env: int):
-    """Value of a printed bound such as ``2n-1-j`` (juxtaposition is a product)."""
-    return bound_value(expr, **env)
+    """Value of a printed bound such as ``2n-1-j`` (juxtaposition is a product); ``ValueError`` if it names an
+    unknown variable or does not parse."""
+    try:
+        return bound_value(expr, **env)
+    except (NameError, SyntaxError, TypeError) as exc:
+        raise ValueError(f"unread bound {expr!r}: {exc}") from exc
 
 
-__all__ = ["index_set", "listed_range", "interval", "right_hand_side", "sum_terms", "term_indices", "bound"]
+__all__ = ["index_set", "listed_range", "interval", "right_hand_side", "sum_terms", "term_indices", "constant_sets",
+           "bound"]
