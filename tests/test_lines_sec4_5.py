@@ -70,9 +70,22 @@ def test_power_reduction_rejects_a_wrong_formula():
 
 
 def test_k_sets_reject_a_wrong_bound():
-    wrong = dict(pl.K_UPPER)
+    wrong = dict(ck.read_k_upper())
     wrong["0,0"] = lambda n, i, j: (Fraction(2 * n - i, 2), Fraction(i, 2), Fraction(i - j, 2) + 1, Fraction(j, 2))
     assert ck.k_sets_agree(3)[1]["0,0"] and not ck.k_sets_agree(3, wrong)[1]["0,0"]
+
+
+@pytest.mark.parametrize("case, line_id, right, wrong", [
+    ("0,0", "sec4_5-K00", "\\frac{i}{2}", "\\frac{i+2}{2}"),
+    ("1,1", "sec4_5-K11", "K_{1,1}", "K_{1,0}"),
+])
+def test_k_factors_are_read_from_the_transcription(case, line_id, right, wrong):
+    text = {x.id: x.verbatim for x in pl.LINES}[line_id]
+    assert right in text and ck.k_case_check(case).holds_as_printed
+    assert not ck.k_case_check(case, {line_id: text.replace(right, wrong, 1)}).holds_as_printed
+    # the erratum K_{1,0}: the printed third factor fails, the corrected one holds
+    k10 = ck.k_case_check("1,0")
+    assert k10.holds_as_printed is False and k10.corrected_holds is True
 
 
 def test_max_bounds_need_s4_to_range():

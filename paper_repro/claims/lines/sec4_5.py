@@ -506,8 +506,29 @@ def factor_support(power: int, base: str) -> tuple[str, list[int]]:
     return kind, ks
 
 
+K_LINES = {"0,0": "sec4_5-K00", "1,1": "sec4_5-K11", "0,1": "sec4_5-K01", "1,0": "sec4_5-K10"}
+
+
+def read_k_upper(override: dict[str, str] | None = None) -> dict:
+    """The upper ends B of the four factors {0, 1, ..., B} of each printed K_{a,b}, read from the transcriptions
+    (``\\frac{2n-i-1}{2}`` ...), as functions (n, i, j) -> four Fractions."""
+    from paper_repro.printed.lines.read import bound
+
+    texts = _texts(set(K_LINES.values()), override)
+    out = {}
+    for case, line_id in K_LINES.items():
+        tex = texts[line_id]
+        m = re.match(r"\s*K_\{(\d),(\d)\}", tex)
+        ends = re.findall(r"\\ldots,\s*\\frac\{([^{}]+)\}%?\s*\{([^{}]+)\}", tex)
+        if not m or f"{m.group(1)},{m.group(2)}" != case or len(ends) != 4:
+            raise ValueError(f"{line_id}: not the four factors of K_{{{case}}}")
+        out[case] = (lambda n, i, j, ends=ends: tuple(Q(bound(a, n=n, i=i, j=j), bound(b, n=n, i=i, j=j))
+                                                      for a, b in ends))
+    return out
+
+
 def k_sets_agree(n_max: int, printed_upper=None) -> tuple[dict, dict]:
-    printed_upper = printed_upper or pl.K_UPPER
+    printed_upper = printed_upper or read_k_upper()
     types_ok: dict[str, bool] = {}
     sets_ok: dict[str, bool] = {}
     for n in range(1, n_max + 1):
@@ -532,20 +553,31 @@ def check_product_types() -> LineResult:
 
 
 #: The corrected K_{1,0}: third factor {0, ..., (i-j-1)/2}.
-K_UPPER_CORRECTED = {**pl.K_UPPER,
-                     "1,0": lambda n, i, j: (Q(2 * n - i - 1, 2), Q(i - 1, 2), Q(i - j - 1, 2), Q(j, 2))}
+K10_CORRECTED = lambda n, i, j: (Q(2 * n - i - 1, 2), Q(i - 1, 2), Q(i - j - 1, 2), Q(j, 2))  # noqa: E731
+
+
+def _k_results(override: dict[str, str] | None = None) -> tuple[dict, dict]:
+    if not override:
+        return _k_results_printed()
+    printed = read_k_upper(override)
+    return k_sets_agree(6, printed)[1], k_sets_agree(6, {**printed, "1,0": K10_CORRECTED})[1]
 
 
 @cache
-def _k_results() -> tuple[dict, dict]:
-    return k_sets_agree(6)[1], k_sets_agree(6, K_UPPER_CORRECTED)[1]
+def _k_results_printed() -> tuple[dict, dict]:
+    printed = read_k_upper()
+    return k_sets_agree(6, printed)[1], k_sets_agree(6, {**printed, "1,0": K10_CORRECTED})[1]
 
 
-def k_case_check(case: str) -> LineResult:
-    printed, corrected = _k_results()
+def k_case_check(case: str, override: dict[str, str] | None = None) -> LineResult:
+    try:
+        printed, corrected = _k_results(override)
+    except ValueError as exc:
+        return LineResult(False, how="the four factors read from the transcription", detail={"unread": str(exc)})
     return LineResult(printed[case], corrected[case] if not printed[case] else None,
                       how="the k's with a non-zero term in the exact expansion of each factor against the printed "
-                          "ranges {0..B} (B must be a non-negative integer), n <= 6, j <= i <= n", kind="exhaustive",
+                          "ranges {0..B} (read from the transcriptions; B must be a non-negative integer), n <= 6, "
+                          "j <= i <= n", kind="exhaustive",
                       detail={"case_i_j_mod_2": case, "printed_holds": printed[case],
                               "corrected_holds": corrected[case],
                               "example": "n=2, i=1, j=0: third factor cos^1(v/2) has k in {0}; printed bound "
@@ -553,7 +585,7 @@ def k_case_check(case: str) -> LineResult:
 
 
 for _case in ("0,0", "1,1", "0,1", "1,0"):
-    line_check(f"sec4_5-K-{_case.replace(',', '')}")(lambda _c=_case: k_case_check(_c))
+    line_check(f"sec4_5-K-{_case.replace(',', '')}")(lambda override=None, _c=_case: k_case_check(_c, override))
 
 
 @line_check("sec4_5-product-to-sum")

@@ -50,15 +50,6 @@ def power_reduction(m: int, which: str, ep):
 PRODUCT_TYPES = {"0,0": ("cos", "cos", "cos", "cos"), "1,1": ("sin", "sin", "cos", "sin"),
                  "0,1": ("cos", "cos", "cos", "sin"), "1,0": ("sin", "sin", "cos", "cos")}
 
-#: Lines 1758-1769: the printed upper ends of the four factors of K_{i mod 2, j mod 2} (each {0, 1, ..., B}).
-K_UPPER = {
-    "0,0": lambda n, i, j: (Fraction(2 * n - i, 2), Fraction(i, 2), Fraction(i - j, 2), Fraction(j, 2)),
-    "1,1": lambda n, i, j: (Fraction(2 * n - i - 1, 2), Fraction(i - 1, 2), Fraction(i - j, 2), Fraction(j - 1, 2)),
-    "0,1": lambda n, i, j: (Fraction(2 * n - i, 2), Fraction(i, 2), Fraction(i - j - 1, 2), Fraction(j - 1, 2)),
-    "1,0": lambda n, i, j: (Fraction(2 * n - i - 1, 2), Fraction(i - 1, 2), Fraction(i - j, 2), Fraction(j, 2)),
-}
-
-
 def weight_labels(n: int) -> list[str]:
     """Eq. normalizing_weights (lines 1914-1916): r_{2n,n,n} and {x_{2n,2n-i,j}}_{j=0,i=j}^{n-1,2n-1-j}."""
     out = [f"r_{{{2 * n},{n},{n}}}"]
