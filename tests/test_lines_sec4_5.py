@@ -172,3 +172,26 @@ def test_orders_1_2_read_v1_the_classes_and_v2(line_id, right, wrong):
     text = {x.id: x.verbatim for x in pl.LINES}[line_id]
     assert right in text and ck.check_orders_1_2().holds_as_printed
     assert not ck.check_orders_1_2({line_id: text.replace(right, wrong, 1)}).holds_as_printed
+
+
+def test_proposition_weights_and_partition_sum_are_read_from_their_transcriptions():
+    text = {x.id: x.verbatim for x in pl.LINES}
+    prop = ck.check_prop_union()
+    assert prop.holds_as_printed is False and prop.corrected_holds is True  # erratum: the union from i = 1
+    new = text["sec4_5-prop-new-classes"]
+    fixed = {k: text[k].replace("\\cup_{i=1}^{n-1}", "\\cup_{i=0}^{n-1}")
+             for k in ("sec4_5-prop-recurrence", "sec4_5-prop-new-classes")}
+    assert ck.check_prop_union(fixed).holds_as_printed  # the corrected start, read, holds
+    assert not ck.check_prop_union({"sec4_5-prop-new-classes": new.replace("_{b=0}^{n-1}", "_{b=1}^{n-1}")}
+                                   ).corrected_holds  # a representative missing
+    weights = text["sec4_5-weights"]
+    assert ck.check_weights_index().holds_as_printed
+    assert not ck.check_weights_index(weights.replace("r_{2n,n,n}^{\\alpha},", "")).holds_as_printed
+    assert not ck.check_weights_index(weights.replace("_{j=0,i=j}^{n-1,2n-1-j}", "_{j=0,i=j}^{n-1,2n-j}")
+                                      ).holds_as_printed
+    lsum = text["sec4_5-L-sum"]
+    assert ck.check_partition_sum().holds_as_printed
+    assert not ck.check_partition_sum(lsum.replace("\\sum_{i=j}^{2n-1-j}g", "\\sum_{i=j+1}^{2n-1-j}g")
+                                      ).holds_as_printed
+    assert not ck.check_partition_sum(lsum.replace("b_{2n,2n-i,j}^{\\alpha}B", "b_{2n,2n-i,j}^{\\alpha}G")
+                                      ).holds_as_printed

@@ -393,19 +393,47 @@ def check_b2() -> LineResult:
 
 
 # -- Proposition iterative_construction_of_trivariate_extension ---------------------------------------------------
-def prop_sets_agree(n_max: int, lowest: int) -> dict[int, bool]:
-    """E_n/~ minus the union over i = lowest..n-1 against the printed 3n representatives."""
+def read_prop_families(tex: str, n: int) -> list[tuple[int, int, int]]:
+    """The representatives of the printed families ``\\left\\{ \\left[ .. \\right] \\right\\} _{g=0}^{n-1}`` of
+    Proposition iterative_construction_of_trivariate_extension at order n, read from the transcription."""
+    from paper_repro.printed.lines.read import bound
+
+    fams = re.findall(r"\\left\[\s*(.*?)\s*\\right\]\s*\\right\\\}\s*_\{(\w)=([^{}]+)\}\^\{([^{}]+)\}", tex)
+    if len(fams) != 3:
+        raise ValueError(f"{len(fams)} families of classes, not 3")
+    return [read_triple(expr, n=n, **{var: x}) for expr, var, lo, hi in fams
+            for x in range(bound(lo, n=n), bound(hi, n=n) + 1)]
+
+
+def read_union_start(override: dict[str, str] | None = None) -> int:
+    """The lowest i of the printed union cup_{i=a}^{n-1} E_i/~ (the same in both lines of the Proposition)."""
+    texts = _texts({"sec4_5-prop-recurrence", "sec4_5-prop-new-classes"}, override)
+    starts = {m for t in texts.values() for m in re.findall(r"\\cup_\{i=(\d+)\}\^\{n-1\}", t)}
+    if len(starts) != 1:
+        raise ValueError(f"the union starts at {sorted(starts)}")
+    return int(starts.pop())
+
+
+def prop_sets_agree(n_max: int, lowest: int, override: dict[str, str] | None = None) -> dict[int, bool]:
+    """E_n/~ minus the union over i = lowest..n-1 against the printed 3n representatives (read)."""
+    tex = _texts({"sec4_5-prop-new-classes"}, override)["sec4_5-prop-new-classes"]
     out = {}
     for n in range(1, n_max + 1):
-        reps = pl.prop_representatives(n)
+        reps = read_prop_families(tex, n)
         keys = [class_key(t) for t in reps]
         out[n] = len(set(keys)) == len(reps) == 3 * n and set(keys) == new_class_keys(n, lowest)
     return out
 
 
 @line_check("sec4_5-prop-union")
-def check_prop_union() -> LineResult:
-    printed, corrected = prop_sets_agree(10, 1), prop_sets_agree(10, 0)
+def check_prop_union(override: dict[str, str] | None = None) -> LineResult:
+    """The printed union's start (read: i from 1) and the representatives (read) against the class keys; the
+    correction starts the union at i = 0."""
+    try:
+        start = read_union_start(override)
+        printed, corrected = prop_sets_agree(10, start, override), prop_sets_agree(10, 0, override)
+    except ValueError as exc:
+        return LineResult(False, how="the Proposition read from the transcriptions", detail={"unread": str(exc)})
     return LineResult(all(printed.values()), all(corrected.values()),
                       how="class keys: E_n/~ minus the union of E_i/~ for i from 1 (printed) and from 0 (corrected) "
                           "against the printed representatives, n = 1..10", kind="exhaustive",
@@ -718,15 +746,32 @@ def check_inclusion() -> LineResult:
 # ---------------------------------------------------------------------------------------------------------------
 # Section partition_of_unity
 # ---------------------------------------------------------------------------------------------------------------
+def read_weight_labels(tex: str, n: int) -> list[str]:
+    """The normalizing weights named by the printed list ``r_{2n,n,n}^{\\alpha},\\left\\{ r_{2n,2n-i,j}^{\\alpha}
+    \\right\\} _{j=0,i=j}^{n-1,2n-1-j},..`` at order n, read from the transcription."""
+    from paper_repro.printed.lines.read import bound
+
+    text = tex.replace("%", " ")
+    sets = re.compile(r"\\left\\\{\s*([rgb])_\{2n,2n-i,j\}\^\{\\alpha\}\s*\\right\\\}\s*_\{j=([^,{}]+),i=([^{}]+)\}"
+                      r"\s*\^\{([^,{}]+),([^{}]+)\}")
+    out = [f"{c}_{{{2 * n},{2 * n - i},{j}}}" for c, jlo, ilo, jhi, ihi in sets.findall(text)
+           for j in range(bound(jlo, n=n), bound(jhi, n=n) + 1)
+           for i in range(bound(ilo, n=n, j=j), bound(ihi, n=n, j=j) + 1)]
+    for c, a, b in re.findall(r"(?<![\\\w{])([rgb])_\{2n,([^{}]+?),([^{}]+?)\}", sets.sub(" ", text)):
+        out.append(f"{c}_{{{2 * n},{bound(a, n=n)},{bound(b, n=n)}}}")
+    return out
+
+
 @line_check("sec4_5-weights-index")
-def check_weights_index() -> LineResult:
+def check_weights_index(verbatim: str | None = None) -> LineResult:
+    tex = verbatim if verbatim is not None else _texts({"sec4_5-weights"})["sec4_5-weights"]
     ok = True
     for n in range(1, 13):
-        printed = pl.weight_labels(n)
+        printed = read_weight_labels(tex, n)
         ok &= len(printed) == len(set(printed)) == 3 * n * (n + 1) + 1
         ok &= set(printed) == {lab.coefficient for lab in united_system(n)}
-    return LineResult(ok, how="the printed index sets against the labels of T_{2n} (united_system), n <= 12; "
-                      "count 3n(n+1)+1", kind="exhaustive", detail={"n_max": 12})
+    return LineResult(ok, how="the printed index sets (read from the transcription) against the labels of T_{2n} "
+                      "(united_system), n <= 12; count 3n(n+1)+1", kind="exhaustive", detail={"n_max": 12})
 
 
 @cache
@@ -740,21 +785,37 @@ def _coef(n: int, t: fmpq, name: str) -> fmpq:
 
 
 @line_check("sec4_5-partition-sum")
-def check_partition_sum() -> LineResult:
-    ok, rows = True, {}
+def check_partition_sum(verbatim: str | None = None) -> LineResult:
+    """The printed sum L (its terms read from the transcription, names without aliases) with the coefficients of the
+    exact collocation solve is 1 at fresh rational points."""
+    from paper_repro.printed.lines.read import sum_terms, term_indices
+
+    tex = verbatim if verbatim is not None else _texts({"sec4_5-L-sum"})["sec4_5-L-sum"]
+    try:
+        terms = sum_terms(tex, normalizing=True)
+    except ValueError as exc:
+        return LineResult(False, how="the printed sum read from the transcription", detail={"unread": str(exc)})
+    ok, rows = bool(terms), {}
     for n in (1, 2, 3):
+        strict = {lb.paper: k for k, lb in enumerate(united_system(n))}
+        named = [f"{c}_{{{2 * n},{2 * n - i},{j}}}" for c, i, j in term_indices(terms, n=n)]
+        if any(x not in strict for x in named) or len(set(named)) != len(strict):
+            rows[f"n={n}"] = False
+            ok = False
+            continue
         for t in TS[:2]:
             alpha = rational_alpha(t)
             pts = sample_rational_points(alpha, 6, seed=23)
             vals = evaluate(n, alpha, pts, ExactContext())
             idx = index_of(n)
-            labels = pl.partition_sum_labels(n)
+            labels = named
             sums = [sum((_coef(n, t, lab.lower()) * vals[p, idx[lab]] for lab in labels), fmpq(0))
                     for p in range(len(pts))]
             rows[f"n={n},t={t}"] = all(s == 1 for s in sums)
             ok &= rows[f"n={n},t={t}"]
     return LineResult(ok, how="coefficients by exact collocation without symmetry (delta_n unknowns, full rank: "
-                      "unique), the printed sum evaluated at 6 fresh rational points of Omega^alpha",
+                      "unique), the printed sum (read from the transcription) evaluated at 6 fresh rational points of "
+                      "Omega^alpha",
                       kind="exact-evidence", detail=rows)
 
 

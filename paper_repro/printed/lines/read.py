@@ -73,23 +73,27 @@ _COLOUR_OF = {"rho": "R", "gamma": "G", "beta": "B", "r": "R", "g": "G", "b": "B
 
 
 _BARE_TERM = re.compile(r"\\(rho|gamma|beta)_\{2n,([^{}]+?),([^{}]+?)\}")
+_NORMALIZING_TERM = re.compile(r"(?<![\\\w])([rgb])_\{2n,([^{}]+?),([^{}]+?)\}\^\{\\alpha\s*\}\s*%?\s*"
+                               r"([RGB])_\{2n,([^{}]+?),([^{}]+?)\}")
 
 
-def sum_terms(tex: str, points: bool = False, rational: bool = False, bare: bool = False
+def sum_terms(tex: str, points: bool = False, rational: bool = False, bare: bool = False, normalizing: bool = False
               ) -> list[tuple[list[tuple[str, str, str]], str, str, str]]:
     """The terms ``constant_{2n,a,b} X_{2n,a,b}`` of a printed linear combination, each with the sums written
     before it (since the previous term): ``[([(var, lo, hi), ...], colour, first index, level), ...]`` as printed.
     A term whose constant and function disagree (colour or indices) raises ``ValueError``.  With ``points`` the terms
     are ``\\mathbf{x}_{2n,a,b}\\overline{X}_{2n,a,b}`` (control point times normalized function, a patch); with
     ``rational`` ``\\rho_{2n,a,b}\\mathbf{r}_{2n,a,b}\\dfrac{\\overline{R}_{2n,a,b}..`` (weight, point, function).
-    ``\\ell`` is read as the variable ``l``.  With ``bare`` the terms are constants alone (a sum of weights).
+    ``\\ell`` is read as the variable ``l``.  With ``bare`` the terms are constants alone (a sum of weights); with
+    ``normalizing`` ``r_{2n,a,b}^{\\alpha}R_{2n,a,b}`` (normalizing coefficient times function).
 
     >>> sum_terms(r"\\rho_{2n,n,n}R_{2n,n,n} +\\sum_{j=1}^{n-1}\\sum_{i=j}^{2n-1-j}\\gamma_{2n,2n-i,j}G_{2n,2n-i,j}")
     [([], 'R', 'n', 'n'), ([('j', '1', 'n-1'), ('i', 'j', '2n-1-j')], 'G', '2n-i', 'j')]
     """
     text = tex.replace("\\left(", "(").replace("\\right)", ")").replace("\\ell", "l")
     out, last = [], 0
-    pattern = _BARE_TERM if bare else _RATIONAL_TERM if rational else _POINT_TERM if points else _TERM
+    pattern = (_BARE_TERM if bare else _RATIONAL_TERM if rational else _POINT_TERM if points
+               else _NORMALIZING_TERM if normalizing else _TERM)
     for m in pattern.finditer(text):
         groups = m.groups()
         if bare:

@@ -16,11 +16,6 @@ from math import comb
 from paper_repro.printed.lines import Line
 
 
-def prop_representatives(n: int) -> list[tuple[int, int, int]]:
-    """Lines 1637-1640: {[0u+gv+nw]}_{g=0}^{n-1} u {[nu+0v+bw]}_{b=0}^{n-1} u {[ru+nv+0w]}_{r=0}^{n-1}."""
-    return [(0, g, n) for g in range(n)] + [(n, 0, b) for b in range(n)] + [(r, n, 0) for r in range(n)]
-
-
 def proof_r_exponents(n: int, i: int, j: int) -> tuple[int, ...]:
     """Lines 1683-1685: R_{2n,2n-i,j} = sin^{2n-i}(u/2) sin^i(w/2) cos^{i-j}(v/2) sin^j(v/2) (j <= i <= n), as
     exponents of (sin u/2, cos u/2, sin v/2, cos v/2, sin w/2, cos w/2)."""
@@ -49,22 +44,6 @@ def power_reduction(m: int, which: str, ep):
 #: the four parity cases "i mod 2, j mod 2" (lines 1732-1750).
 PRODUCT_TYPES = {"0,0": ("cos", "cos", "cos", "cos"), "1,1": ("sin", "sin", "cos", "sin"),
                  "0,1": ("cos", "cos", "cos", "sin"), "1,0": ("sin", "sin", "cos", "cos")}
-
-def weight_labels(n: int) -> list[str]:
-    """Eq. normalizing_weights (lines 1914-1916): r_{2n,n,n} and {x_{2n,2n-i,j}}_{j=0,i=j}^{n-1,2n-1-j}."""
-    out = [f"r_{{{2 * n},{n},{n}}}"]
-    for x in "rgb":
-        out += [f"{x}_{{{2 * n},{2 * n - i},{j}}}" for j in range(n) for i in range(j, 2 * n - j)]
-    return out
-
-
-def partition_sum_labels(n: int) -> list[str]:
-    """Lines 1922-1927: the functions of the printed sum L (centre, then the three double sums)."""
-    out = [f"R_{{{2 * n},{n},{n}}}"]
-    for x in "RGB":
-        out += [f"{x}_{{{2 * n},{2 * n - i},{j}}}" for j in range(n) for i in range(j, 2 * n - 1 - j + 1)]
-    return out
-
 
 def blending_labels(n: int) -> list[str]:
     """Eq. normalized_united_system, first row (lines 2128-2131): {R-bar, G-bar, B-bar}_{j=0,i=j}^{n-1,2n-1-j}
