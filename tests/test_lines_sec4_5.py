@@ -195,3 +195,14 @@ def test_proposition_weights_and_partition_sum_are_read_from_their_transcription
                                       ).holds_as_printed
     assert not ck.check_partition_sum(lsum.replace("b_{2n,2n-i,j}^{\\alpha}B", "b_{2n,2n-i,j}^{\\alpha}G")
                                       ).holds_as_printed
+
+
+@pytest.mark.parametrize("line_id, right, wrong", [
+    ("sec4_5-blending-set", "^{n-1,2n-1-j}", "^{n-1,2n-j}"),
+    ("sec4_5-blending-set", "\\overline{B}_{2n,2n-i,j}", "\\overline{G}_{2n,2n-i,j}"),
+    ("sec4_5-blending-centre-set", "\\overline{G}_{2n,n,n}", "\\overline{G}_{2n,n,n-1}"),
+])
+def test_blending_set_is_read_from_the_transcription(line_id, right, wrong):
+    text = {x.id: x.verbatim for x in pl.LINES}[line_id]
+    assert right in text and ck.check_blending_def().holds_as_printed
+    assert not ck.check_blending_def({line_id: text.replace(right, wrong, 1)}).holds_as_printed

@@ -1179,14 +1179,30 @@ for _lab in pn.INTERMEDIATE:
 
 
 @line_check("sec4_5-blending-def")
-def check_blending_def() -> LineResult:
-    ok = True
+def check_blending_def(override: dict[str, str] | None = None) -> LineResult:
+    """The index set of the normalized system (read from the transcription of its first row) names the non-central
+    functions of T_{2n}; the centre row names R-bar, G-bar, B-bar_{2n,n,n} (read), one function."""
+    from paper_repro.printed.lines.read import bound, index_set
+
+    texts = _texts({"sec4_5-blending-set", "sec4_5-blending-centre-set"}, override)
+    try:
+        (jv, jlo, jhi), (iv, ilo, ihi) = index_set(texts["sec4_5-blending-set"])
+    except ValueError as exc:
+        return LineResult(False, how="the index set read from the transcription, n <= 8", kind="exhaustive",
+                          detail={"unread": str(exc)})
+    colours = re.findall(r"\\overline\{([RGB])\}_\{2n,2n-i,j\}", texts["sec4_5-blending-set"])
+    centre_names = re.findall(r"\\overline\{([RGB])\}%?\s*_\{2n,n,n\}", texts["sec4_5-blending-centre-set"])
+    ok = (jv, iv) == ("j", "i") and sorted(colours) == ["B", "G", "R"] and sorted(centre_names) == ["B", "G", "R"]
     for n in range(1, 9):
-        ok &= pl.blending_labels(n) == sorted(lab.coefficient for lab in united_system(n) if not lab.is_centre)
-        centre = [exponents(BasisLabel(X, n, n, n)) for X in "RGB"]
-        ok &= centre[0] == centre[1] == centre[2]
-    return LineResult(ok, how="index set of the normalized system vs the labels of T_{2n} (n <= 8); R_{2n,n,n}, "
-                      "G_{2n,n,n}, B_{2n,n,n} have the same exponent vector", kind="exhaustive", detail={"n_max": 8})
+        named = sorted(f"{x.lower()}_{{{2 * n},{2 * n - i},{j}}}" for x in colours
+                       for j in range(bound(jlo, n=n), bound(jhi, n=n) + 1)
+                       for i in range(bound(ilo, n=n, j=j), bound(ihi, n=n, j=j) + 1))
+        ok &= named == sorted(lab.coefficient for lab in united_system(n) if not lab.is_centre)
+        centre = [exponents(BasisLabel(X, n, n, n)) for X in centre_names]
+        ok &= len(set(centre)) == 1
+    return LineResult(ok, how="index set and centre read from the transcriptions vs the labels of T_{2n} (n <= 8); "
+                      "R_{2n,n,n}, G_{2n,n,n}, B_{2n,n,n} have the same exponent vector", kind="exhaustive",
+                      detail={"n_max": 8})
 
 
 __all__ = ["EP", "class_key", "phase_equivalent", "printed_relation", "relation_matches", "power_reduction_ok",

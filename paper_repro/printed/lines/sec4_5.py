@@ -45,11 +45,6 @@ def power_reduction(m: int, which: str, ep):
 PRODUCT_TYPES = {"0,0": ("cos", "cos", "cos", "cos"), "1,1": ("sin", "sin", "cos", "sin"),
                  "0,1": ("cos", "cos", "cos", "sin"), "1,0": ("sin", "sin", "cos", "cos")}
 
-def blending_labels(n: int) -> list[str]:
-    """Eq. normalized_united_system, first row (lines 2128-2131): {R-bar, G-bar, B-bar}_{j=0,i=j}^{n-1,2n-1-j}
-    as the coefficient names, sorted."""
-    return sorted(f"{x}_{{{2 * n},{2 * n - i},{j}}}" for x in "rgb" for j in range(n) for i in range(j, 2 * n - j))
-
 
 LINES: list[Line] = [
     Line(id='sec4_5-section-title',
