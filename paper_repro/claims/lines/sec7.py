@@ -744,22 +744,43 @@ def check_conversion_convex() -> LineResult:
 
 
 @line_check("sec7-question-limiting-case")
-def check_question_limiting_case() -> LineResult:
+def check_question_limiting_case(verbatim: str | None = None) -> LineResult:
+    """The degree the Question names (read from the transcription: ``of degree $3n-1$``) against the degree of the
+    limit from the limit formula and from the proven closed forms."""
+    import re
+
+    from paper_repro.printed.lines.read import bound
+
+    m = re.search(r"of degree \$([^$]+)\$", VERBATIM["sec7-question-limiting-case"] if verbatim is None else verbatim)
+    if not m:
+        return LineResult(False, how="the degree read from the transcription, n = 1..12", kind="exhaustive",
+                          detail={"unread": "no 'of degree $..$'"})
     degrees = {str(n): limit_degree(n, "formula") for n in range(1, 13)}
     lemmas = {str(n): all(v for k, v in limit_checks(n).items() if isinstance(v, bool)) for n in range(1, 6)}
     closed = {str(n): limit_degree(n, "closed_forms") for n in (1, 2, 3, 4)}
-    ok = all(d == 3 * int(n) - 1 for n, d in {**degrees, **closed}.items()) and all(lemmas.values())
+    ok = all(d == bound(m.group(1), n=int(n)) for n, d in {**degrees, **closed}.items()) and all(lemmas.values())
     return LineResult(ok, kind="exhaustive",
                       how="degree of the limit Bezier triangle from the limit formula (n = 1..12; "
-                      "its lemmas checked exactly for n = 1..5) and from the proven closed forms (n = 1..4): 3n - 1",
+                      "its lemmas checked exactly for n = 1..5) and from the proven closed forms (n = 1..4) against "
+                      "the printed 3n - 1 (read from the transcription)",
                       detail={"degree_formula": degrees, "degree_closed_forms": closed, "lemmas": lemmas})
 
 
 # ---------------------------------------------------------------- Section 8
 
 @line_check("sec7-s8-dimension-and-span")
-def check_dimension_and_span() -> LineResult:
-    counts = {str(n): (len(united_system(n)), 3 * n * (n + 1) + 1, len(v_labels(n))) for n in range(1, 13)}
+def check_dimension_and_span(verbatim: str | None = None) -> LineResult:
+    """delta_n as printed (read from the transcription: ``\\delta_{n}=3n\\left(n+1\\right)+1``) = |T_{2n}| = |V_n|,
+    and the exact ranks of T_{2n}, V_n and both together equal delta_n."""
+    import re
+
+    from paper_repro.printed.lines.read import bound
+
+    m = re.search(r"\\delta_\{n\}=([^$]+)\$", VERBATIM["sec7-s8-dimension"] if verbatim is None else verbatim)
+    if not m:
+        return LineResult(False, how="delta_n read from the transcription", detail={"unread": "no delta_n"})
+    expr = m.group(1).replace("\\left(", "(").replace("\\right)", ")")
+    counts = {str(n): (len(united_system(n)), bound(expr, n=n), len(v_labels(n))) for n in range(1, 13)}
     ctx = ModpContext(p=2**31 - 1)
     ranks = {}
     for n in (1, 2, 3):
