@@ -206,3 +206,11 @@ def test_blending_set_is_read_from_the_transcription(line_id, right, wrong):
     text = {x.id: x.verbatim for x in pl.LINES}[line_id]
     assert right in text and ck.check_blending_def().holds_as_printed
     assert not ck.check_blending_def({line_id: text.replace(right, wrong, 1)}).holds_as_printed
+
+
+def test_relation_reads_the_z_range_of_both_lines():
+    text = {x.id: x.verbatim for x in pl.LINES}
+    assert ck.check_relation().holds_as_printed
+    short = {k: text[k].replace("\\ldots,2n", "\\ldots,2n-1") for k in ("sec4_5-z-range", "sec4_5-z-range-2")}
+    assert not ck.check_relation(short).holds_as_printed  # 2n is needed
+    assert not ck.check_relation({"sec4_5-z-range": short["sec4_5-z-range"]}).holds_as_printed  # the lines disagree

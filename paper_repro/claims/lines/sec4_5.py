@@ -193,13 +193,39 @@ def relation_matches(n_max: int = 6, zrange=None) -> tuple[bool, dict]:
     return ok, {"z_used_min_max": {str(k): v for k, v in used.items()}}
 
 
+def read_z_range(override: dict[str, str] | None = None):
+    """The printed range of z, ``z\\in\\left\\{ -n,-\\left( n-1\\right) ,\\ldots,0,1,\\ldots,2n\\right\\}``, read from
+    both lines that print it (they must agree): a function n -> (first, last)."""
+    from paper_repro.printed.lines.read import bound
+
+    texts = _texts({"sec4_5-z-range", "sec4_5-z-range-2"}, override)
+    ends = set()
+    for tex in texts.values():
+        m = re.search(r"z\\in\\left\\\{\s*([^,]+?)\s*,.*\\ldots,\s*([^\\]+?)\s*\\right\\\}", tex)
+        if not m:
+            raise ValueError(f"no range of z in {tex[:50]!r}")
+        ends.add(m.groups())
+    if len(ends) != 1:
+        raise ValueError(f"the two lines print different ranges: {sorted(ends)}")
+    lo, hi = ends.pop()
+    return lambda n: (bound(lo, n=n), bound(hi, n=n))
+
+
 @line_check("sec4_5-relation")
-def check_relation() -> LineResult:
-    ok, det = relation_matches(4)
-    ext = all(v == [-int(k), 2 * int(k)] for k, v in det["z_used_min_max"].items())
+def check_relation(override: dict[str, str] | None = None) -> LineResult:
+    """The printed conditions with z in the printed range (read from the transcriptions) against phase equivalence;
+    both ends of the range are used."""
+    try:
+        zrange = read_z_range(override)
+    except ValueError as exc:
+        return LineResult(False, how="the range of z read from the transcriptions, n = 1..4", kind="exhaustive",
+                          detail={"unread": str(exc)})
+    ok, det = relation_matches(4, zrange)
+    ext = all(tuple(v) == zrange(int(k)) for k, v in det["z_used_min_max"].items())
     return LineResult(ok and ext, how="the printed conditions (sums or differences equal to a common z in "
-                      "{-n..2n}) compared with phase equivalence (a - b or a + b in Z(1,1,1)) on all pairs of E_n, "
-                      "n = 1..4; both ends of the z range are used", kind="exhaustive", detail={**det, "n_max": 4})
+                      "{-n..2n}, the range read from the transcriptions) compared with phase equivalence (a - b or "
+                      "a + b in Z(1,1,1)) on all pairs of E_n, n = 1..4; both ends of the z range are used",
+                      kind="exhaustive", detail={**det, "n_max": 4})
 
 
 # -- phase identities (display after the Definition) --------------------------------------------------------------
