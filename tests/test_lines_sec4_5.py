@@ -214,3 +214,12 @@ def test_relation_reads_the_z_range_of_both_lines():
     short = {k: text[k].replace("\\ldots,2n", "\\ldots,2n-1") for k in ("sec4_5-z-range", "sec4_5-z-range-2")}
     assert not ck.check_relation(short).holds_as_printed  # 2n is needed
     assert not ck.check_relation({"sec4_5-z-range": short["sec4_5-z-range"]}).holds_as_printed  # the lines disagree
+
+
+def test_unknowns_are_read_from_both_lines():
+    text = {x.id: x.verbatim for x in pl.LINES}
+    assert ck.check_unknowns().holds_as_printed
+    assert not ck.check_unknowns({"sec4_5-unknowns": text["sec4_5-unknowns"].replace("^{n,n}", "^{n,n-1}")}
+                                 ).holds_as_printed  # a class without its unknown
+    assert not ck.check_unknowns({"sec4_5-closed-forms-index": text["sec4_5-closed-forms-index"].replace(
+        "_{j=0,i=j}", "_{j=0,i=0}")}).holds_as_printed  # two unknowns in one class

@@ -903,20 +903,40 @@ def permutation_orbits(n: int) -> list[list[int]]:
     return sorted(groups.values())
 
 
-def unknown_classes(n: int) -> tuple[int, bool, bool]:
-    """Number of classes of the printed symmetry conditions, whether each holds exactly one of
-    {r_{2n,2n-i,j}}_{j=0,i=j}^{n,n}, and whether the classes are the permutation orbits."""
+def unknown_classes(n: int, pairs: list[tuple[int, int]] | None = None) -> tuple[int, bool, bool]:
+    """Number of classes of the printed symmetry conditions, whether each holds exactly one of the printed unknowns
+    ``pairs`` ((i, j) of r_{2n,2n-i,j}; default {j=0..n, i=j..n}), and whether the classes are the permutation
+    orbits."""
     part = symmetry_partition(n)
     idx = index_of(n)
-    reps = sorted(idx[f"r_{{{2 * n},{2 * n - i},{j}}}"] for j in range(n + 1) for i in range(j, n + 1))
-    one_each = sorted(min(set(g) & set(reps)) for g in part) == reps and all(len(set(g) & set(reps)) == 1
-                                                                            for g in part)
+    pairs = pairs if pairs is not None else [(i, j) for j in range(n + 1) for i in range(j, n + 1)]
+    names = [f"r_{{{2 * n},{2 * n - i},{j}}}" for i, j in pairs]
+    if any(x not in idx for x in names):
+        return len(part), False, part == permutation_orbits(n)
+    reps = sorted(idx[x] for x in names)
+    one_each = all(len(set(g) & set(reps)) == 1 for g in part) and \
+        sorted(min(set(g) & set(reps)) for g in part) == reps
     return len(part), one_each, part == permutation_orbits(n)
 
 
 @line_check("sec4_5-unknowns")
-def check_unknowns() -> LineResult:
-    rows = {n: unknown_classes(n) for n in range(1, 11)}
+def check_unknowns(override: dict[str, str] | None = None) -> LineResult:
+    """The unknowns {r_{2n,2n-i,j}}_{j=0,i=j}^{n,n} of both lines that print them (read from the transcriptions)."""
+    from paper_repro.printed.lines.read import bound, index_set
+
+    rows = {}
+    for n in range(1, 11):
+        sets = []
+        for tex in _texts({"sec4_5-unknowns", "sec4_5-closed-forms-index"}, override).values():
+            try:
+                (jv, jlo, jhi), (iv, ilo, ihi) = index_set(tex)
+            except ValueError as exc:
+                return LineResult(False, how="the unknowns read from the transcriptions, n <= 10", kind="exhaustive",
+                                  detail={"unread": str(exc)})
+            sets.append(sorted((i, j) for j in range(bound(jlo, n=n), bound(jhi, n=n) + 1)
+                               for i in range(bound(ilo, n=n, j=j), bound(ihi, n=n, j=j) + 1)))
+        c, one, orb = unknown_classes(n, sets[0])
+        rows[n] = (c, one and all(x == sets[0] for x in sets), orb)
     ok = all(c == (n + 1) * (n + 2) // 2 and one and orb for n, (c, one, orb) in rows.items())
     return LineResult(ok, how="union-find of the delta_n coefficients by symmetry_condition_1..3: (n+1)(n+2)/2 "
                       "classes, one per member of {r_{2n,2n-i,j}}_{j=0,i=j}^{n,n}, equal to the orbits of the six "
