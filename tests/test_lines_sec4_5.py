@@ -223,3 +223,12 @@ def test_unknowns_are_read_from_both_lines():
                                  ).holds_as_printed  # a class without its unknown
     assert not ck.check_unknowns({"sec4_5-closed-forms-index": text["sec4_5-closed-forms-index"].replace(
         "_{j=0,i=j}", "_{j=0,i=0}")}).holds_as_printed  # two unknowns in one class
+
+
+def test_system_reads_its_orders_and_right_hand_side():
+    text = {x.id: x.verbatim for x in pl.LINES}
+    assert ck.check_system().holds_as_printed
+    assert not ck.check_system({"sec4_5-system-r-range": text["sec4_5-system-r-range"].replace(
+        "\\ldots,n", "\\ldots,n-1")}).holds_as_printed  # order n is needed for a unique solution
+    assert not ck.check_system({"sec4_5-system": text["sec4_5-system"].replace("\\delta_{r,0}", "1")}
+                               ).holds_as_printed

@@ -997,8 +997,19 @@ def _angle(q: Q) -> tuple[Q, Q]:
 
 
 @line_check("sec4_5-system")
-def check_system() -> LineResult:
-    """The system holds with the exact coefficients, and determines them given the symmetry conditions."""
+def check_system(override: dict[str, str] | None = None) -> LineResult:
+    """The system holds with the exact coefficients, and determines them given the symmetry conditions; the orders
+    r (``r=0,1,\\ldots,n``) and the right-hand side ``\\delta_{r,0}`` are read from the transcriptions."""
+    from paper_repro.printed.lines.read import bound, listed_range
+
+    t = _texts({"sec4_5-system", "sec4_5-system-r-range"}, override)
+    try:
+        r_lo, r_hi = listed_range(t["sec4_5-system-r-range"], "r")
+    except ValueError as exc:
+        return LineResult(False, how="the orders read from the transcription", detail={"unread": str(exc)})
+    if not re.search(r"=\\delta_\{r,0\}", t["sec4_5-system"].replace("%", "").replace(" ", "")):
+        return LineResult(False, how="the right-hand side read from the transcription",
+                          detail={"unread": "no =\\delta_{r,0}"})
     ok, info = True, {}
     for n in (1, 2, 3):
         t = TS[0]
@@ -1011,7 +1022,7 @@ def check_system() -> LineResult:
         for q in xs:
             sx, cx = _angle(q)
             su, cu = sa * cx - ca * sx, ca * cx + sa * sx  # (alpha - x)/2
-            for r in range(n + 1):
+            for r in range(bound(r_lo, n=n), bound(r_hi, n=n) + 1):
                 vals = [y_derivative_at_0(exponents(lab), r, su, cu, sx, cx) for lab in united_system(n)]
                 lhs = sum((Q(int(coef[lab.coefficient].p), int(coef[lab.coefficient].q)) * v
                            for lab, v in zip(united_system(n), vals)), Q(0))
