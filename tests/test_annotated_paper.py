@@ -141,3 +141,15 @@ def test_link_check_can_fail(tmp_path):
     assert resolve(page, "#a", {"a"}) is None and resolve(page, "#b", {"a"})
     assert resolve(page, "../f.html#here", set()) is None and resolve(page, "../f.html#there", set())
     assert resolve(page, "../missing.html", set()) and resolve(page, "https://example.org/", set())
+
+
+def test_badge_says_what_its_proof_kind_means():
+    """An exhaustive line is not shown as a bare "proof" (issue 31, item 6)."""
+    entry = {"id": "x", "tex": [1, 1], "status": "checked", "says": "s", "how": "count, n = 1..12",
+             "proof_kind": "exhaustive", "check": "c"}
+    block = ap.Block("display", 1, 1, "a", "", [])
+    block.entries.append(entry)
+    html_ = ap.badge_html(block, ap.Linker({}, set(), {}))
+    assert "proof kind: exhaustive (exact and complete for the range named in &#x27;how&#x27; only" in html_
+    block.entries[0] = {**entry, "proof_kind": "proof"}
+    assert "settles everything the line states" in ap.badge_html(block, ap.Linker({}, set(), {}))

@@ -393,7 +393,8 @@ class Patch:
 
         The float path is blocked like point evaluation (memory independent of the number of points). For
         n <= 10 the derivative of the patch is a patch of the same order, with the centred net at unit scale
-        multiplied by the integer-polynomial matrix of :mod:`paper_repro.core.derivative_tables`: one point
+        multiplied by the integer-polynomial matrix of :mod:`paper_repro.core.derivative_tables` (a found pattern,
+        verified n = 1..12, not proven): one point
         evaluation of that net (as fast as a point, within rounding of the direct route).  Beyond, the bounded
         bracket of :meth:`~paper_repro.core.fast.FloatKernel.derivatives_rows` contracted with that net.  Either
         is multiplied by ``2^E / (2 sin(alpha/2))`` once (one power-of-two step), so it is finite for every alpha
