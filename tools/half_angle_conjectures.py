@@ -65,7 +65,7 @@ def check_identities() -> None:
 def terms_value(p: dict, n: int, terms) -> fmpq:
     e = exponent_matrix(n)
     k, s2 = p["k"], p["s"] ** 2
-    return sum((c * k ** a * s2 ** b * mono(p, e[t]) for a, b, c, t in terms), fmpq(0))
+    return sum((int(c) * k ** int(a) * s2 ** int(b) * mono(p, e[int(t)]) for a, b, c, t in terms), fmpq(0))
 
 
 def check_rules(nmax: int) -> None:

@@ -41,8 +41,6 @@ import numpy as np
 from paper_repro.core.labels import delta, exponent_matrix
 from paper_repro.util.validation import check_n
 
-#: (a, b, coef, target): the term coef * kappa^a * sigma^b * m_target.
-Term = tuple[int, int, int, int]
 
 
 @cache
@@ -86,63 +84,84 @@ def member_parts(n: int) -> np.ndarray:
     return out
 
 
-def _rule_a(n: int, x: int, m: int, y: int, j: int) -> list[Term]:
-    """Rule (A): ``(C_X/S_X) M_X(m; Y, j)`` for 0 <= j <= m < n."""
-    table = member_table(n)
-    z = 3 - x - y
-    row = table[x, y]
-    out = [(1, 0, 1, row[m, j])]
-    out += [(ell - j - 1, 0, 1, row[m, ell]) for ell in range(j + 1, m + 1)]
-    out.append((0, 0, 1, row[m + 1, j]))
+@cache
+def _rule_a_pattern(m: int, j: int) -> tuple[np.ndarray, ...]:
+    """Rule (A) for ``(C_X/S_X) M_X(m; Y, j)`` in the parts' coordinates: ``(a, b, part, m', l)`` per term, the
+    target being ``M_X(m'; Y, l)`` (part 0) or ``M_X(m'; Z, l)`` (part 1); every coefficient +1."""
+    out = [(1, 0, 0, m, j)]
+    out += [(ell - j - 1, 0, 0, m, ell) for ell in range(j + 1, m + 1)]
+    out.append((0, 0, 0, m + 1, j))
     if j < m:
-        out.append((1, 0, 1, row[m + 1, j + 1]))
-        out += [(ell - j - 2, 0, 1, row[m + 1, ell]) for ell in range(j + 2, m + 1)]
-        out.append((m - j - 1, 1, 1, row[m + 1, m + 1]))
-    out.append((m - j, 0, 1, table[x, z, m + 1, m]))
+        out.append((1, 0, 0, m + 1, j + 1))
+        out += [(ell - j - 2, 0, 0, m + 1, ell) for ell in range(j + 2, m + 1)]
+        out.append((m - j - 1, 1, 0, m + 1, m + 1))
+    out.append((m - j, 0, 1, m + 1, m))
+    arr = np.array(out, dtype=np.int64)
+    return tuple(arr[:, k].copy() for k in range(5))
+
+
+def _terms(a, b, target) -> np.ndarray:
+    """Terms as a ``(k, 4)`` array ``(a, b, coef, target)`` with coef = 1."""
+    target = np.atleast_1d(np.asarray(target, dtype=np.int64))
+    out = np.ones((len(target), 4), dtype=np.int64)
+    out[:, 0], out[:, 1], out[:, 3] = a, b, target
     return out
 
 
-def _shift(terms: list[Term], a: int, b: int) -> list[Term]:
-    return [(a + ta, b + tb, c, t) for ta, tb, c, t in terms]
+def _rule_a(n: int, x: int, m: int, y: int, j: int) -> np.ndarray:
+    """Rule (A): ``(C_X/S_X) M_X(m; Y, j)`` for 0 <= j <= m < n, as :func:`_terms`."""
+    a, b, part, mm, ll = _rule_a_pattern(m, j)
+    ys = np.array([y, 3 - x - y])
+    return _terms(a, b, member_table(n)[x][ys[part], mm, ll])
 
 
-def _rule_an(n: int, x: int, y: int, j: int) -> list[Term]:
+def _shift(terms: np.ndarray, a: int, b: int) -> np.ndarray:
+    out = terms.copy()
+    out[:, 0] += a
+    out[:, 1] += b
+    return out
+
+
+def _rule_an(n: int, x: int, y: int, j: int) -> np.ndarray:
     """Rule (A_n): ``(C_X/S_X) M(n; Y, j)`` at level n (X not the cosine variable Y)."""
     table = member_table(n)
     z = 3 - x - y
     if j == n:
-        return [(0, 0, 1, table[y, x, n, n - 1])]
-    return [(0, 1, 1, table[x, y, n, j + 1]), (0, 1, 1, table[z, y, n - 1, j])] + _shift(_rule_a(n, z, n - 1, y, j), 1, 0)
+        return _terms(0, 0, table[y, x, n, n - 1])
+    head = _terms(0, 1, [table[x, y, n, j + 1], table[z, y, n - 1, j]])
+    return np.concatenate([head, _shift(_rule_a(n, z, n - 1, y, j), 1, 0)])
 
 
-def _rule_b(n: int, x: int, m: int, y: int, j: int) -> list[Term]:
+def _rule_b(n: int, x: int, m: int, y: int, j: int) -> np.ndarray:
     """Rule (B): ``(C_Z/S_Z) M_X(m; Y, j)`` for 1 <= m < n."""
     table = member_table(n)
     z = 3 - x - y
     if j == m:
-        return [(0, 0, 1, table[x, z, m, m - 1])]
-    return [(0, 1, 1, table[x, y, m, j + 1]), (0, 1, 1, table[x, y, m - 1, j])] + _shift(_rule_a(n, x, m - 1, y, j), 1, 0)
+        return _terms(0, 0, table[x, z, m, m - 1])
+    head = _terms(0, 1, [table[x, y, m, j + 1], table[x, y, m - 1, j]])
+    return np.concatenate([head, _shift(_rule_a(n, x, m - 1, y, j), 1, 0)])
 
 
 @cache
-def cotangent(n: int, var: int, g: int) -> tuple[Term, ...]:
-    """``L_var m_g = (C_var / S_var) m_g`` as terms (every coefficient +1), for a member with a factor S_var;
-    ``ValueError`` otherwise."""
+def cotangent(n: int, var: int, g: int) -> np.ndarray:
+    """``L_var m_g = (C_var / S_var) m_g`` as a read-only ``(k, 4)`` array of terms ``(a, b, coef, target)``
+    (every coef +1), for a member with a factor S_var; ``ValueError`` otherwise."""
     x, m, y, j = (int(v) for v in member_parts(n)[g])
     e = exponent_matrix(n)[g]
     if e[2 * var] == 0:
         raise ValueError(f"member {g} of order {n} has no factor sin({'uvw'[var]}/2)")
     if e[2 * var + 1] > 0:  # var is the cosine variable Y
-        return ((0, 0, 1, int(member_table(n)[x, y, m, j - 1])),)
-    if m == n:  # level n: var is one of the two parts X, Z (or any variable at the centre)
-        other = y if var != y else x
-        return tuple(_rule_an(n, var, other, j))
-    if var == x:
-        return tuple(_rule_a(n, x, m, y, j))
-    z = 3 - x - y
-    if var == z:
-        return tuple(_rule_b(n, x, m, y, j))
-    return tuple(_rule_b(n, x, m, z, j))  # j = m: Y and Z are interchangeable
+        out = _terms(0, 0, member_table(n)[x, y, m, j - 1])
+    elif m == n:  # level n: var is one of the two parts X, Z (or any variable at the centre)
+        out = _rule_an(n, var, y if var != y else x, j)
+    elif var == x:
+        out = _rule_a(n, x, m, y, j)
+    elif var == 3 - x - y:
+        out = _rule_b(n, x, m, y, j)
+    else:
+        out = _rule_b(n, x, m, 3 - x - y, j)  # j = m: Y and Z are interchangeable
+    out.setflags(write=False)
+    return out
 
 
 def _as_arrays(terms: list[tuple[int, int, int, int, int]]) -> tuple[np.ndarray, ...]:
@@ -164,44 +183,84 @@ def derivative_terms(n: int) -> tuple[np.ndarray, ...]:
         for var, sign in ((0, 1), (2, -1)):
             p, q = int(e[f, 2 * var]), int(e[f, 2 * var + 1])
             if p:
-                out += [(t, f, a, b, sign * p * c) for a, b, c, t in cotangent(n, var, f)]
+                out += [(int(t), f, int(a), int(b), sign * p * int(c)) for a, b, c, t in cotangent(n, var, f)]
             if q:  # var is the cosine variable: (S/C) M_X(m; Y, j) = M_X(m; Y, j + 1)
                 out.append((int(table[x, y, m, j + 1]), f, 0, 1, -sign * q))
     return _as_arrays(out)
 
 
-def elevation_part(n: int, f: int) -> int:
-    """The variable x with ``S_x^2 m_f`` a member of order n + 1 used for column f (the part X of m_f)."""
-    return int(member_parts(n)[f][0])
+def elevation_part(n: int) -> np.ndarray:
+    """For each column f, the variable x with ``S_x^2 m_f`` a member of order n + 1 (the part X of m_f)."""
+    return member_parts(n)[:, 0]
+
+
+@cache
+def _cotangent_csc(n: int, var: int) -> tuple[np.ndarray, ...]:
+    """``L_var`` on every member as compressed columns ``(indptr, target, a, b, coef)`` (empty columns for the
+    members without a factor S_var)."""
+    e = exponent_matrix(n)
+    empty = np.zeros((0, 4), dtype=np.int64)
+    cols = [cotangent(n, var, g) if e[g, 2 * var] else empty for g in range(delta(n))]
+    indptr = np.zeros(delta(n) + 1, dtype=np.int64)
+    indptr[1:] = np.cumsum([len(c) for c in cols])
+    flat = np.concatenate(cols)
+    return indptr, flat[:, 3].copy(), flat[:, 0].copy(), flat[:, 1].copy(), flat[:, 2].copy()
+
+
+def _gather(csc: tuple[np.ndarray, ...], q: np.ndarray) -> tuple[np.ndarray, ...]:
+    """The terms of the columns ``q`` of a compressed operator: ``(position in q, target, a, b, coef)``."""
+    indptr = csc[0]
+    start, counts = indptr[q], indptr[q + 1] - indptr[q]
+    pos = np.repeat(np.arange(len(q)), counts)
+    first = np.cumsum(counts) - counts
+    idx = np.arange(int(counts.sum())) - np.repeat(first, counts) + start[pos]
+    return (pos,) + tuple(arr[idx] for arr in csc[1:])
 
 
 @cache
 def elevation_terms(n: int) -> tuple[np.ndarray, ...]:
-    """M (order n -> n + 1, ``m_f = sum_g M[g, f] m'_g``) as terms ``(rows, cols, a, b, coef)``, coef > 0."""
+    """M (order n -> n + 1, ``m_f = sum_g M[g, f] m'_g``) as terms ``(rows, cols, a, b, coef)``, coef > 0:
+    ``sigma m'_{P f} + L_x L_x m'_{P f}`` for each column (vectorised over the columns with the same part x)."""
     n = check_n(n)
     big = n + 1
-    index = {tuple(int(x) for x in row): k for k, row in enumerate(exponent_matrix(big))}
-    e = exponent_matrix(n)
-    out = []
-    for f in range(delta(n)):
-        x = elevation_part(n, f)
-        lifted = [int(v) for v in e[f]]
-        lifted[2 * x] += 2
-        g = index[tuple(lifted)]
-        out.append((g, f, 0, 1, 1))
-        for a1, b1, c1, t1 in cotangent(big, x, g):
-            out += [(t2, f, a1 + a2, b1 + b2, c1 * c2) for a2, b2, c2, t2 in cotangent(big, x, t1)]
-    return _as_arrays(out)
+    lifted = exponent_matrix(n).copy()
+    part = elevation_part(n)
+    lifted[np.arange(delta(n)), 2 * part] += 2
+    key = lambda e: ((((e[:, 0] * 64 + e[:, 1]) * 64 + e[:, 2]) * 64 + e[:, 3]) * 64 + e[:, 4]) * 64 + e[:, 5]
+    big_keys = key(exponent_matrix(big))
+    order = np.argsort(big_keys)
+    loc = np.searchsorted(big_keys[order], key(lifted))
+    g = order[loc]
+    if not np.array_equal(exponent_matrix(big)[g], lifted):
+        raise AssertionError(f"S_x^2 m_f is not a member of order {big}")
+    cols = np.arange(delta(n))
+    out = [(g, cols, np.zeros_like(g), np.ones_like(g), np.ones_like(g))]
+    for var in range(3):
+        sel = cols[part == var]
+        if not len(sel):
+            continue
+        csc = _cotangent_csc(big, var)
+        p1, t1, a1, b1, c1 = _gather(csc, g[sel])
+        p2, t2, a2, b2, c2 = _gather(csc, t1)
+        out.append((t2, sel[p1[p2]], a1[p2] + a2, b1[p2] + b2, c1[p2] * c2))
+    return tuple(np.concatenate([o[k] for o in out]) for k in range(5))
 
 
 def merge(terms: tuple[np.ndarray, ...]) -> tuple[np.ndarray, ...]:
     """The same terms with equal ``(row, col, a, b)`` added, zero sums dropped, sorted by (row, col, a, b): the
     integer bivariate form of the matrix."""
     rows, cols, a, b, c = terms
-    key = np.stack([rows, cols, a, b], axis=1)
-    uniq, inv = np.unique(key, axis=0, return_inverse=True)
-    coef = np.zeros(len(uniq), dtype=np.int64)
-    np.add.at(coef, inv.reshape(-1), c)
+    if not len(rows):
+        return terms
+    amax, bmax, cmax = int(a.max()) + 1, int(b.max()) + 1, int(cols.max()) + 1
+    key = ((rows * cmax + cols) * amax + a) * bmax + b
+    order = np.argsort(key, kind="stable")
+    key = key[order]
+    start = np.flatnonzero(np.r_[True, key[1:] != key[:-1]])
+    coef = np.add.reduceat(c[order], start)  # integers: exact in any order
     keep = coef != 0
-    u = uniq[keep]
-    return u[:, 0], u[:, 1], u[:, 2], u[:, 3], coef[keep]
+    u = key[start][keep]
+    b_, u = u % bmax, u // bmax
+    a_, u = u % amax, u // amax
+    return u // cmax, u % cmax, a_, b_, coef[keep]
+
