@@ -42,7 +42,6 @@ from paper_repro.core.labels import delta, exponent_matrix
 from paper_repro.util.validation import check_n
 
 
-
 @cache
 def member_table(n: int) -> np.ndarray:
     """``K[X, Y, m, j]``: the internal index (:func:`~paper_repro.core.labels.united_system`) of the member
@@ -217,7 +216,6 @@ def _gather(csc: tuple[np.ndarray, ...], q: np.ndarray) -> tuple[np.ndarray, ...
     return (pos,) + tuple(arr[idx] for arr in csc[1:])
 
 
-@cache
 def elevation_terms(n: int) -> tuple[np.ndarray, ...]:
     """M (order n -> n + 1, ``m_f = sum_g M[g, f] m'_g``) as terms ``(rows, cols, a, b, coef)``, coef > 0:
     ``sigma m'_{P f} + L_x L_x m'_{P f}`` for each column (vectorised over the columns with the same part x)."""
