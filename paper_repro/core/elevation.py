@@ -4,7 +4,7 @@ Since span T_{2n} = V_n is contained in V_{n+1} = span T_{2n+2} (claims ``coinci
 blending function of order n is a combination of those of order n+1: ``T-bar_n = T-bar_{n+1} E``
 with a ``(delta_{n+1}, delta_n)`` matrix E, and the elevated control net is ``E @ net``.
 
-The library route is the closed form of :mod:`paper_repro.core.elevation_formula` (proven for every n in
+The library route is the closed form of :mod:`paper_repro.core.half_angle_matrices` (proven for every n in
 docs/elevation_and_derivative_for_all_n.md; claim ``elevation_all_n``): exact at a rational-tangent alpha, and in
 float the same bits on every CPU, with E >= 0 and rows summing to 1 (a convex combination) for every n and alpha.
 No linear solve: n = 10 in milliseconds, any n up to :data:`~paper_repro.util.limits.MAX_N_ELEVATION`.
@@ -31,8 +31,8 @@ from paper_repro.core.domain import (
     sample_points,
     sample_rational_points,
 )
-from paper_repro.core.elevation_formula import elevation_matrix_ctx
 from paper_repro.core.fast import ordered_matmul
+from paper_repro.core.half_angle_matrices import elevation_matrix_ctx
 from paper_repro.core.labels import delta
 from paper_repro.core.nets import check_net
 from paper_repro.core.normalization import evaluate_normalized, fixed_points

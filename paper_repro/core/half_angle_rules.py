@@ -24,7 +24,7 @@ From them, with ``D_x(S^a C^b) = a S^(a-1) C^(b+1) - b sigma S^(a+1) C^(b-1)`` (
   member of order N.  No step subtracts: M is in Z_{>=0}[kappa, sigma].
 
 This module holds the rules as integer data (terms ``(row, col, a, b, coef)`` meaning ``coef kappa^a sigma^b`` in
-entry (row, col)), built with integer arithmetic only; :mod:`paper_repro.core.elevation_formula` evaluates them in
+entry (row, col)), built with integer arithmetic only; :mod:`paper_repro.core.half_angle_matrices` evaluates them in
 every arithmetic.
 
 >>> rows, cols, a, b, c = elevation_terms(1)

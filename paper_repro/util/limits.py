@@ -23,7 +23,7 @@ import numbers
 
 import numpy as np
 
-#: Order elevation: E of order n -> n+1 from the closed form (core/elevation_formula.py; no solve), a dense
+#: Order elevation: E of order n -> n+1 from the closed form (core/half_angle_matrices.py; no solve), a dense
 #: (delta_{n+1}, delta_n) float64 array.  Measured in a fresh process (tools/cost_model.py elevation; CPU time, the
 #: 2-core machine under a load of about 8, so wall times were 4-6 x longer): n = 30 in 0.34 s CPU and 179 MB,
 #: n = 40 in 1.25 s and 409 MB, n = 50 in 3.3 s and 874 MB; time and memory grow as n^4.  n <= 40 keeps one call well

@@ -36,7 +36,7 @@ from flint import ctx as flint_ctx
 from paper_repro.core.context import Context, FloatContext, get_context
 from paper_repro.core.domain import RationalAngle
 from paper_repro.core.half_angle_rules import derivative_terms, elevation_terms, merge
-from paper_repro.core.labels import delta
+from paper_repro.core.labels import delta, variable_swap
 from paper_repro.core.normalization import orbits
 from paper_repro.core.normalizing_formula import scaled_table
 from paper_repro.util.validation import check_alpha, check_n
@@ -98,11 +98,8 @@ def derivative_form(n: int) -> tuple[np.ndarray, ...]:
     return out
 
 
-@cache
-def _layout(form_id: tuple[str, int]) -> tuple[np.ndarray, ...]:
-    """Entries of a form and, for each rank k, which monomials are the k-th of their entry (the fixed order of the
-    sums)."""
-    rows, cols, a, b, _ = (elevation_form if form_id[0] == "M" else derivative_form)(form_id[1])
+def _layout(rows: np.ndarray, cols: np.ndarray) -> tuple[np.ndarray, ...]:
+    """Entries of a sorted form and each monomial's rank within its entry (the fixed order of the sums)."""
     new = np.r_[True, (rows[1:] != rows[:-1]) | (cols[1:] != cols[:-1])]
     entry = np.cumsum(new) - 1
     first = np.flatnonzero(new)
@@ -110,11 +107,13 @@ def _layout(form_id: tuple[str, int]) -> tuple[np.ndarray, ...]:
     return entry, rows[first], cols[first], rank
 
 
-def evaluate_form(form_id: tuple[str, int], kappa, sigma, ctx: Context) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """``(rows, cols, values)`` of the nonzero entries of the form at ``(kappa, sigma)`` in ``ctx``: each entry the
-    sum of its monomials in the order (a, b) ascending, one elementwise addition per rank."""
-    rows, cols, a, b, coef = (elevation_form if form_id[0] == "M" else derivative_form)(form_id[1])
-    entry, erows, ecols, rank = _layout(form_id)
+def evaluate_terms(form: tuple[np.ndarray, ...], kappa, sigma, ctx: Context
+                   ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """``(rows, cols, values)`` of the nonzero entries of a merged form (:func:`~paper_repro.core.half_angle_rules.
+    merge`) at ``(kappa, sigma)`` in ``ctx``: each entry the sum of its monomials in the order (a, b) ascending, one
+    elementwise addition per rank (so float sums have a fixed order)."""
+    rows, cols, a, b, coef = form
+    entry, erows, ecols, rank = _layout(rows, cols)
     with ctx.scope():
         kp = [ctx.convert(1)]
         for _ in range(int(a.max()) if len(a) else 0):
@@ -123,13 +122,19 @@ def evaluate_form(form_id: tuple[str, int], kappa, sigma, ctx: Context) -> tuple
         for _ in range(int(b.max()) if len(b) else 0):
             sp.append(ctx.mul(sp[-1], sigma))
         kpa, spa = ctx.asarray(kp), ctx.asarray(sp)
-        coefs = ctx.asarray([int(c) for c in coef]) if not isinstance(ctx, FloatContext) else coef.astype(np.float64)
+        coefs = coef.astype(np.float64) if isinstance(ctx, FloatContext) else ctx.asarray([int(c) for c in coef])
         terms = ctx.mul(ctx.mul(coefs, kpa[a]), spa[b])
         vals = ctx.zeros((len(erows),))
         for k in range(int(rank.max()) + 1 if len(rank) else 0):
             sel = rank == k
             vals[entry[sel]] = ctx.add(vals[entry[sel]], terms[sel])
     return erows, ecols, vals
+
+
+def evaluate_form(form_id: tuple[str, int], kappa, sigma, ctx: Context) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """:func:`evaluate_terms` of ``('M', n)`` (:func:`elevation_form`) or ``('C', n)`` (:func:`derivative_form`)."""
+    kind, n = form_id
+    return evaluate_terms((elevation_form if kind == "M" else derivative_form)(n), kappa, sigma, ctx)
 
 
 def scaled_coefficients(n: int, kappa, sigma, ctx: Context) -> np.ndarray:
@@ -155,7 +160,13 @@ def elevation_matrix_ctx(n: int, alpha, arith: str | Context = "float") -> np.nd
     n = check_n(n)
     ctx = get_context(arith)
     kappa, sigma = half_angle(alpha, ctx)
-    rows, cols, m = evaluate_form(("M", n), kappa, sigma, ctx)
+    return elevation_from_form(elevation_form(n), n, kappa, sigma, ctx)
+
+
+def elevation_from_form(form: tuple[np.ndarray, ...], n: int, kappa, sigma, ctx: Context) -> np.ndarray:
+    """E from a merged form of M at ``(kappa, sigma)`` in ``ctx`` (:func:`elevation_matrix_ctx` with the form given:
+    the checks of :mod:`paper_repro.theory.half_angle_checks` also pass deliberately wrong forms)."""
+    rows, cols, m = evaluate_terms(form, kappa, sigma, ctx)
     x, x1 = scaled_coefficients(n, kappa, sigma, ctx), scaled_coefficients(n + 1, kappa, sigma, ctx)
     with ctx.scope():
         vals = ctx.div(ctx.mul(x[cols], m), x1[rows])
@@ -173,13 +184,44 @@ def derivative_matrix(n: int, alpha, arith: str | Context = "float") -> np.ndarr
     return _dense(rows, cols, vals, (delta(n), delta(n)), ctx)
 
 
-def derivative_entries(n: int, kappa: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """``(rows, cols, values)`` of C at ``kappa = cos(alpha/2)`` in float64 (sigma = (1 - kappa)(1 + kappa))."""
-    if not -1.0 <= kappa <= 1.0:
-        raise ValueError(f"kappa = cos(alpha/2) must be a number in [-1, 1], got {kappa!r}")
-    return evaluate_form(("C", check_n(n)), float(kappa), (1.0 - kappa) * (1.0 + kappa), FloatContext())
+def derivative_nets(n: int, alpha, net: np.ndarray, arith: str | Context = "float") -> tuple[np.ndarray, np.ndarray]:
+    """``(q_u, q_v)``: the nets of ``2 s d/du`` and ``2 s d/dv`` of the patch ``sum_f net[f] m_f`` on the scaled
+    monomials (``net`` of shape ``(delta_n, d)``), from the closed-form C in the arithmetic ``arith``.  In float each
+    output row is summed in the order of the form's entries (``np.add.at``: the same bits on every CPU).
+
+    The direction v is u with the variables u, v exchanged (:func:`~paper_repro.core.labels.variable_swap`).
+
+    >>> import math
+    >>> qu, qv = derivative_nets(1, 1.0, np.eye(7)[:, :1])   # the net of m_0 = S_u S_v S_w
+    >>> np.nonzero(qu[:, 0])[0].tolist(), qu[np.nonzero(qu[:, 0])[0], 0].tolist()
+    ([4, 6], [1.0, -1.0])
+    """
+    n = check_n(n)
+    ctx = get_context(arith)
+    net = np.asarray(net, dtype=np.float64 if isinstance(ctx, FloatContext) else object)
+    if net.ndim != 2 or net.shape[0] != delta(n):
+        raise ValueError(f"net must be a (delta_n, d) = ({delta(n)}, d) array for n = {n}, got shape {net.shape}")
+    kappa, sigma = half_angle(alpha, ctx)
+    rows, cols, vals = evaluate_form(("C", n), kappa, sigma, ctx)
+    pi = variable_swap(n, 0, 1)  # m_{pi[f]}(u, v, w) = m_f(v, u, w)
+
+    def apply(x: np.ndarray) -> np.ndarray:
+        out = ctx.zeros((delta(n), x.shape[1]))
+        with ctx.scope():
+            if isinstance(ctx, FloatContext):
+                np.add.at(out, rows, vals[:, None] * x[cols])
+            else:
+                for r, c, v in zip(rows, cols, vals):
+                    out[r] = ctx.add(out[r], ctx.mul(v, x[c]))
+        return out
+
+    qu = apply(net)
+    qv = ctx.zeros(qu.shape)
+    qv[pi] = apply(net[pi])
+    return qu, qv
 
 
-__all__ = ["elevation_matrix_ctx", "derivative_matrix", "derivative_entries", "elevation_form", "derivative_form",
-           "float_half_angle", "half_angle", "scaled_coefficients", "evaluate_form"]
+__all__ = ["elevation_matrix_ctx", "derivative_matrix", "derivative_nets", "elevation_form", "derivative_form",
+           "float_half_angle", "half_angle", "scaled_coefficients", "evaluate_form", "evaluate_terms",
+           "elevation_from_form"]
 _ = fmpq  # doctest name
