@@ -36,16 +36,21 @@ def _failures(rows: dict) -> list:
                  "+ L_x L_x m'_{Pf} with the cotangent rules (A), (A_n), (B) of two half-angle identities, so every "
                  "entry of M lies in Z_{>=0}[cos(alpha/2), sin^2(alpha/2)], E = diag(x')^{-1} M diag(x) >= 0 and its "
                  "rows sum to 1: elevation is a convex combination for every n and alpha (proof: "
-                 "docs/elevation_and_derivative_for_all_n.md). Machine checks: the identity holds exactly over Q at a "
+                 "docs/elevation_and_derivative_for_all_n.md). Machine checks: the identities (I), (II) and every "
+                 "cotangent rule used hold exactly at rational points for n <= {n_rules}; the identity holds exactly "
+                 "over Q at a "
                  "unisolvent rational point set (= exact collocation) for n <= {n_exact} and modulo a prime for "
                  "n <= {n_modp}, at tan(alpha/4) in {ts}; E = the literal exact collocation solve for "
                  "n <= {n_collocation} there; every coefficient of the bivariate form > 0 for n <= {n_signs}; "
                  "exact row sums 1 for n <= {n_rows} at the same alpha.",
-       kind="proof", ts=TS, n_exact=4, n_modp=8, n_collocation=3, n_signs=15, n_rows=8,
-       extended={"ts": TS, "n_exact": 8, "n_modp": 12, "n_collocation": 6, "n_signs": 25, "n_rows": 10})
-def run_elevation(ts, n_exact, n_modp, n_collocation, n_signs, n_rows) -> Outcome:
+       kind="proof", ts=TS, n_rules=5, n_exact=4, n_modp=8, n_collocation=3, n_signs=15, n_rows=8,
+       extended={"ts": TS, "n_rules": 9, "n_exact": 8, "n_modp": 12, "n_collocation": 6, "n_signs": 25,
+                 "n_rows": 10})
+def run_elevation(ts, n_rules, n_exact, n_modp, n_collocation, n_signs, n_rows) -> Outcome:
     t0 = time.perf_counter()
     alphas = _alphas(ts)
+    identities = hc.identities_hold()
+    rules = {n: hc.rules_hold(n) for n in range(1, n_rules + 1)}
     ident = {}
     for n in range(1, max(n_exact, n_modp) + 1):
         for t, a in zip(ts, alphas):
@@ -56,10 +61,13 @@ def run_elevation(ts, n_exact, n_modp, n_collocation, n_signs, n_rows) -> Outcom
     signs = {n: hc.nonnegative(elevation_form(n)) for n in range(1, n_signs + 1)}
     rows = {f"n={n} t={t}": hc.row_sums_exact(n, a, elevation_form(n))
             for n in range(1, n_rows + 1) for t, a in zip(ts, alphas)}
-    bad = {"identity": _failures(ident), "collocation": _failures(colloc), "signs": _failures(signs),
+    bad = {"identities_I_II": [] if identities else ["fail"], "rules": _failures(rules),
+           "identity": _failures(ident), "collocation": _failures(colloc), "signs": _failures(signs),
            "row_sums": _failures(rows)}
     ok = not any(bad.values())
     return Outcome(ok, {
+        "identities_I_II_exact_at_points": len(hc.POINTS), "rules_exact_for_n": f"1..{n_rules}",
+        "rule_evaluations": sum(v["checked"] for v in rules.values()),
         "identity_exact_over_Q_for_n": f"1..{n_exact}", "identity_mod_p_for_n": f"{n_exact + 1}..{n_modp}",
         "prime": hc.PRIME, "alphas": [f"4 atan({t})" for t in ts],
         "equals_literal_exact_collocation_for_n": f"1..{n_collocation}",

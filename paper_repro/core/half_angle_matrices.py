@@ -66,7 +66,8 @@ def half_angle(alpha, ctx: Context) -> tuple:
         if alpha.t == 0:
             raise ValueError("alpha must lie in the open interval (0, pi): tan(alpha/4) = 0 gives alpha = 0")
         s = alpha.sin_half
-        return ctx.from_rational(alpha.cos_half), ctx.from_rational(s * s)
+        with ctx.scope():  # balls and mp numbers made at the context's precision
+            return ctx.from_rational(alpha.cos_half), ctx.from_rational(s * s)
     if isinstance(ctx, FloatContext):
         return float_half_angle(alpha)
     if ctx.exact:

@@ -14,6 +14,9 @@ of them; each takes the integer form as an argument, so a test can hand it a del
   :func:`~paper_repro.core.elevation.elevation_matrix_exact` (small n: it solves a dense rational system).
 * :func:`kappa_polynomials`, :func:`tables_equal`: C with sigma = 1 - kappa^2, against the package tables recovered
   modulo two primes (:mod:`paper_repro.theory.derivative_matrix`; n <= 10) or a fresh recovery (n = 11, 12).
+* :func:`identities_hold`, :func:`rules_hold`: the identities (I), (II) and each cotangent rule, both sides evaluated
+  exactly at rational points from their own half-angle values (quarter tangents; w by the angle-difference formulas
+  written out here, not the library's).
 * :func:`nonnegative`, :func:`row_sums_exact`: every coefficient of M's bivariate form > 0; rows of the exact E sum
   to 1.
 
@@ -42,6 +45,81 @@ from paper_repro.util.validation import check_n
 
 #: The prime of the unisolvency certificates.
 PRIME = 2_147_483_629
+
+
+#: Rational test points ``(tan(alpha/4), tan(u/4), tan(v/4))``: w = alpha - u - v need not be positive (the
+#: identities hold on the whole plane).
+POINTS = ((fmpq(1, 3), fmpq(1, 7), fmpq(2, 9)), (fmpq(2, 5), fmpq(3, 11), fmpq(-1, 13)),
+          (fmpq(1, 50), fmpq(1, 300), fmpq(1, 170)), (fmpq(19, 20), fmpq(5, 17), fmpq(7, 23)))
+
+
+def _quarter(t: fmpq) -> tuple[fmpq, fmpq]:
+    d = 1 + t * t
+    return 2 * t / d, (1 - t * t) / d
+
+
+def half_angle_point(ta: fmpq, tu: fmpq, tv: fmpq) -> dict:
+    """``kappa``, ``sigma`` and the scaled values ``S = (S_u, S_v, S_w)``, ``C = (C_u, C_v, C_w)`` at alpha =
+    4 atan(ta), u = 4 atan(tu), v = 4 atan(tv), w = alpha - u - v (exact rationals)."""
+    s, k = _quarter(ta)
+    su, cu = _quarter(tu)
+    sv, cv = _quarter(tv)
+    suv, cuv = su * cv + cu * sv, cu * cv - su * sv
+    sw, cw = s * cuv - k * suv, k * cuv + s * suv
+    return {"kappa": k, "sigma": s * s, "S": (su / s, sv / s, sw / s), "C": (cu, cv, cw)}
+
+
+def identities_hold(points=POINTS) -> bool:
+    """(I) ``C_x = kappa S_x + S_y C_z + C_y S_z`` and (II) ``C_y C_z = sigma S_y S_z + kappa C_x + sigma S_x`` for
+    every permutation (x, y, z) of (u, v, w), exactly at the points."""
+    for pt in points:
+        p = half_angle_point(*pt)
+        k, s2, S, C = p["kappa"], p["sigma"], p["S"], p["C"]
+        for x in range(3):
+            for y in range(3):
+                if x == y:
+                    continue
+                z = 3 - x - y
+                if C[x] != k * S[x] + S[y] * C[z] + C[y] * S[z]:
+                    return False
+                if C[y] * C[z] != s2 * S[y] * S[z] + k * C[x] + s2 * S[x]:
+                    return False
+    return True
+
+
+def _monomial(p: dict, e) -> fmpq:
+    out = fmpq(1)
+    for x in range(3):
+        out *= p["S"][x] ** int(e[2 * x]) * p["C"][x] ** int(e[2 * x + 1])
+    return out
+
+
+def _terms_value(p: dict, n: int, terms) -> fmpq:
+    e = exponent_matrix(n)
+    return sum((int(c) * p["kappa"] ** int(a) * p["sigma"] ** int(b) * _monomial(p, e[int(t)])
+                for a, b, c, t in terms), fmpq(0))
+
+
+def rules_hold(n: int, points=POINTS[:2]) -> dict:
+    """Each cotangent ``(C_x/S_x) m_g`` of :func:`~paper_repro.core.half_angle_rules.cotangent` (rules A, A_n, B and
+    the cosine variable's rule), for every member g of T_{2n} and every variable x with a factor S_x, against the
+    product of the half-angle values, exactly at the points: ``{"checked": k, "fails": [(x, g), ...], "ok"}``."""
+    from paper_repro.core.half_angle_rules import cotangent
+
+    pts = [half_angle_point(*pt) for pt in points]
+    e = exponent_matrix(check_n(n))
+    fails, checked = [], 0
+    for g in range(delta(n)):
+        for x in range(3):
+            if not e[g, 2 * x]:
+                continue
+            terms = cotangent(n, x, g)
+            for p in pts:
+                checked += 1
+                if p["C"][x] / p["S"][x] * _monomial(p, e[g]) != _terms_value(p, n, terms):
+                    fails.append((x, g))
+                    break
+    return {"n": n, "checked": checked, "fails": fails, "ok": not fails}
 
 
 def _dense(form, shape, alpha: RationalAngle, ctx) -> np.ndarray:
