@@ -100,6 +100,13 @@ def test_C_equals_the_recovered_tables_for_n_up_to_10_and_a_wrong_C_fails():
     assert not hc.tables_equal(3, hc.perturbed(derivative_form(3), 5))
 
 
+def test_C_has_degree_at_most_n_plus_1_in_kappa_reached():
+    """Theorem 1's degree bound (a + 2b <= n + 1 for every term kappa^a sigma^b), reached for n <= 15."""
+    for n in range(1, 16):
+        _, _, a, b, _ = derivative_form(n)
+        assert int((a + 2 * b).max()) == n + 1
+
+
 def test_C_has_at_most_four_rule_terms_per_column():
     for n in (1, 4, 7):
         e = hr.exponent_matrix(n)
