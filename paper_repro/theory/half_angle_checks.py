@@ -34,7 +34,7 @@ import numpy as np
 from flint import fmpq
 
 from paper_repro.core.basis import monomials
-from paper_repro.core.context import ExactContext, ModpContext, to_fmpq_mat
+from paper_repro.core.context import Context, ExactContext, ModpContext, get_context, to_fmpq_mat
 from paper_repro.core.derivatives_basis import monomial_derivative
 from paper_repro.core.domain import RationalAngle, RationalPoints, scaled_half_angle_values
 from paper_repro.core.half_angle_matrices import elevation_from_form, evaluate_terms
@@ -130,7 +130,7 @@ def _dense(form, shape, alpha: RationalAngle, ctx) -> np.ndarray:
     return out
 
 
-def identity_check(kind: str, n: int, alpha: RationalAngle, form, *, arith: str = "exact", extra: int = 3,
+def identity_check(kind: str, n: int, alpha: RationalAngle, form, *, arith: str | Context = "exact", extra: int = 3,
                    seed: int = 5) -> dict:
     """The identity of ``kind`` ('M': elevation n -> n + 1; 'C': derivative along u) for the merged ``form`` at
     ``delta + extra`` rational points, exactly over Q (``arith='exact'``) or over F_p (``'modp'``, p =
@@ -140,16 +140,16 @@ def identity_check(kind: str, n: int, alpha: RationalAngle, form, *, arith: str 
     n = check_n(n)
     if kind not in ("M", "C"):
         raise ValueError(f"kind must be 'M' (elevation) or 'C' (derivative), got {kind!r}")
-    if arith not in ("exact", "modp"):
-        raise ValueError(f"arith must be 'exact' or 'modp', got {arith!r}")
+    mod = ModpContext(p=PRIME)
+    ctx = get_context(arith, p=PRIME)
+    if not isinstance(ctx, (ExactContext, ModpContext)):
+        raise ValueError(f"arith must be 'exact' or 'modp' (or such a context), got {arith!r}")
     if not isinstance(alpha, RationalAngle):
         raise TypeError(f"alpha must be a RationalAngle, got {type(alpha).__name__}")
     target = n + 1 if kind == "M" else n
     count = delta(target) + extra
     tu, tv = fixed_points(target, count, seed)
     pts = RationalPoints(None, tu, tv, check=False)
-    mod = ModpContext(p=PRIME)
-    ctx = ExactContext() if arith == "exact" else mod
 
     def values(c):
         trig = scaled_half_angle_values(pts, alpha, c)
@@ -162,14 +162,14 @@ def identity_check(kind: str, n: int, alpha: RationalAngle, form, *, arith: str 
 
     big, lhs = values(ctx)
     mat = _dense(form, (delta(target), delta(n)), alpha, ctx)
-    if arith == "exact":
+    if isinstance(ctx, ExactContext):
         holds = to_fmpq_mat(big) * to_fmpq_mat(mat) == to_fmpq_mat(lhs)
         big_p = values(mod)[0]
     else:
-        holds = bool(np.array_equal(_matmul_mod(big, mat, PRIME), lhs % PRIME))
+        holds = bool(np.array_equal(_matmul_mod(big, mat, ctx.p), lhs % ctx.p))
         big_p = big
     rank = mod.rank(big_p)
-    return {"kind": kind, "n": n, "t": str(alpha.t), "arith": arith, "points": count, "holds": bool(holds),
+    return {"kind": kind, "n": n, "t": str(alpha.t), "arith": ctx.name, "points": count, "holds": bool(holds),
             "rank_mod_p": int(rank), "unisolvent": rank == delta(target), "ok": bool(holds) and rank == delta(target)}
 
 
