@@ -32,7 +32,7 @@ from paper_repro.core.domain import (
     sample_rational_points,
 )
 from paper_repro.core.fast import ordered_matmul
-from paper_repro.core.half_angle_matrices import elevation_matrix_ctx
+from paper_repro.core.half_angle_matrices import elevation_entries, elevation_form, elevation_matrix_ctx, half_angle
 from paper_repro.core.labels import delta
 from paper_repro.core.nets import check_net
 from paper_repro.core.normalization import evaluate_normalized, fixed_points
@@ -189,8 +189,12 @@ def elevation_matrix(n: int, alpha) -> np.ndarray:
     if isinstance(alpha, RationalAngle):
         if alpha.t == 0:
             raise ValueError("alpha must lie in the open interval (0, pi): tan(alpha/4) = 0 gives alpha = 0")
-        e = elevation_matrix_ctx(n, alpha, ExactContext())
-        return np.array([[float(x) for x in row] for row in e.tolist()])
+        ctx = ExactContext()
+        kappa, sigma = half_angle(alpha, ctx)
+        rows, cols, vals = elevation_entries(elevation_form(n), n, kappa, sigma, ctx)  # exact, then rounded once
+        out = np.zeros((delta(n + 1), delta(n)))
+        out[rows, cols] = [float(v) for v in vals]
+        return out
     a = max(check_alpha(alpha), ALPHA_TINY)
     if n > CACHE_MAX_N:
         return elevation_matrix_ctx(n, a, FloatContext())

@@ -164,14 +164,20 @@ def elevation_matrix_ctx(n: int, alpha, arith: str | Context = "float") -> np.nd
     return elevation_from_form(elevation_form(n), n, kappa, sigma, ctx)
 
 
-def elevation_from_form(form: tuple[np.ndarray, ...], n: int, kappa, sigma, ctx: Context) -> np.ndarray:
-    """E from a merged form of M at ``(kappa, sigma)`` in ``ctx`` (:func:`elevation_matrix_ctx` with the form given:
-    the checks of :mod:`paper_repro.theory.half_angle_checks` also pass deliberately wrong forms)."""
+def elevation_entries(form: tuple[np.ndarray, ...], n: int, kappa, sigma, ctx: Context
+                      ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """``(rows, cols, values)`` of the nonzero entries of E from a merged form of M at ``(kappa, sigma)`` in ``ctx``
+    (the checks of :mod:`paper_repro.theory.half_angle_checks` also pass deliberately wrong forms)."""
     rows, cols, m = evaluate_terms(form, kappa, sigma, ctx)
     x, x1 = scaled_coefficients(n, kappa, sigma, ctx), scaled_coefficients(n + 1, kappa, sigma, ctx)
     with ctx.scope():
         vals = ctx.div(ctx.mul(x[cols], m), x1[rows])
-    return _dense(rows, cols, vals, (delta(n + 1), delta(n)), ctx)
+    return rows, cols, vals
+
+
+def elevation_from_form(form: tuple[np.ndarray, ...], n: int, kappa, sigma, ctx: Context) -> np.ndarray:
+    """The dense E of :func:`elevation_entries`."""
+    return _dense(*elevation_entries(form, n, kappa, sigma, ctx), (delta(n + 1), delta(n)), ctx)
 
 
 def derivative_matrix(n: int, alpha, arith: str | Context = "float") -> np.ndarray:
@@ -224,5 +230,5 @@ def derivative_nets(n: int, alpha, net: np.ndarray, arith: str | Context = "floa
 
 __all__ = ["elevation_matrix_ctx", "derivative_matrix", "derivative_nets", "elevation_form", "derivative_form",
            "float_half_angle", "half_angle", "scaled_coefficients", "evaluate_form", "evaluate_terms",
-           "elevation_from_form"]
+           "elevation_from_form", "elevation_entries"]
 _ = fmpq  # doctest name
