@@ -24,10 +24,10 @@ import numbers
 import numpy as np
 
 #: Order elevation: E of order n -> n+1 from the closed form (core/half_angle_matrices.py; no solve), a dense
-#: (delta_{n+1}, delta_n) float64 array.  Measured in a fresh process (tools/cost_model.py elevation; CPU time, the
-#: 2-core machine under a load of about 8, so wall times were 4-6 x longer): n = 30 in 0.34 s CPU and 179 MB,
-#: n = 40 in 1.25 s and 409 MB, n = 50 in 3.3 s and 874 MB; time and memory grow as n^4.  n <= 40 keeps one call well
-#: inside the 20 s and 2 GB budget also on a loaded machine, and repeated elevation 1 -> 41 too.
+#: (delta_{n+1}, delta_n) float64 array.  Measured cold in a fresh process (tools/elevation_speed.py, 2 cores, load
+#: about 3.4): n = 10 in 0.02-0.03 s, n = 30 in 0.3-0.47 s, n = 40 in 1.1 s CPU (1.7 s wall); peak memory (load about
+#: 8): n = 30 179 MB, n = 40 409 MB, n = 50 874 MB (3.3 s CPU); time and memory grow as n^4.  n <= 40 keeps one
+#: call well inside the 20 s and 2 GB budget also on a loaded machine, and repeated elevation 1 -> 41 too.
 MAX_N_ELEVATION = 40
 #: Repeated elevation: ``times`` steps (each bounded by MAX_N_ELEVATION).
 MAX_ELEVATION_STEPS = MAX_N_ELEVATION
