@@ -5,8 +5,8 @@
   direction v computed directly instead of by the u <-> v exchange.
 * The float route through C against the direct route (the monomials' brackets) and against central differences
   of the patch values in mp (independent of the derivative formula of both routes).
-* The found pattern (degree <= n + 1 in cos(alpha/2), coefficients <= 2n, 3n + 2 entries per column from n = 2)
-  holds on the tables: the range where it was verified.
+* The degree <= n + 1 in cos(alpha/2) (proven for every n: docs/elevation_and_derivative_for_all_n.md, Theorem 1)
+  and the observed coefficients <= 2n and 3n + 2 entries per column from n = 2 (not proven) hold on the tables.
 """
 
 from __future__ import annotations

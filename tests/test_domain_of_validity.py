@@ -183,7 +183,7 @@ def test_numeric_strings_are_refused_as_weights(bad):
 # --- sizes: refused up front, naming the parameter and the limit ------------------------------------------------
 @pytest.mark.parametrize("call,word", [
     (lambda: elevate(np.zeros((7, 3)), 1, 1.0, times=50), "times"),
-    (lambda: elevation_matrix(30, 1.0), "n must"),
+    (lambda: elevation_matrix(41, 1.0), "n must"),
     (lambda: fit(lambda u, v, w: [math.cos(u)], 8, 1.0), "n must"),
     (lambda: sample_rational_points(rational_alpha((1, 2)), 10**6), "count"),
     (lambda: bezier_limit(np.zeros((delta(1000), 3)), 1000), "n must"),

@@ -45,7 +45,8 @@ OPEN_QUESTIONS = [
                                                                         "bezier_conversion", "limit_formula"],
      "Nothing: answered for every n, polynomial and rational patches, with explicit convex conversion weights "
      "(written proof docs/limit_for_all_n.md, its lemmas checked exactly to n = 40)."),
-    ("Order elevation (Example 7.2 and the text after it)", ["order_elevation", "elevation_closed_forms"],
+    ("Order elevation (Example 7.2 and the text after it)", ["elevation_all_n", "derivative_all_n", "order_elevation",
+                                                            "elevation_closed_forms"],
      "Closed forms and non-negativity for n ≥ 5 (non-negativity at sampled α to n = 8 is evidence only)."),
 ]
 

@@ -8,9 +8,9 @@ For the scaled monomials ``m_f`` of T_{2n} (sines divided by ``s = sin(alpha/2)`
 where every entry of C is a polynomial in kappa with integer coefficients (degree <= n + 1).  The tables
 ``paper_repro/resources/derivative_tables.json`` hold these integers for n <= :data:`TABLE_MAX_N`; they are
 recovered exactly modulo two primes by :mod:`paper_repro.theory.derivative_matrix` and rewritten by
-``make reproduce`` in a checkout (a test recomputes them).  That the polynomials hold for *every* alpha is
-evidence (exact checks at further parameters and a second prime, float checks against the direct derivative
-at sampled alpha), not a proof.
+``make reproduce`` in a checkout (a test recomputes them).  That they hold for *every* alpha, and the closed form
+for every n, is proven (docs/elevation_and_derivative_for_all_n.md, Theorem 1; evaluated in every arithmetic by
+:func:`paper_repro.core.half_angle_matrices.derivative_nets`, which a test compares with these tables).
 
 The direction ``v = (0, 1, -1)`` is u with the variables u and v exchanged (T_{2n} is symmetric:
 :func:`~paper_repro.core.labels.variable_swap`), and any in-plane direction ``(du, dv, dw)`` is

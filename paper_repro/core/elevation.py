@@ -2,16 +2,16 @@
 
 Since span T_{2n} = V_n is contained in V_{n+1} = span T_{2n+2} (claims ``coincidence``), every
 blending function of order n is a combination of those of order n+1: ``T-bar_n = T-bar_{n+1} E``
-with a ``(delta_{n+1}, delta_n)`` matrix E, and the elevated control net is ``E @ net``.  Rows of E
-sum to 1 (both systems are partitions of unity).  E is computed exactly at rational-tangent alpha
-(collocation at rational points, verified at further points); for a float alpha it is solved in certified ball
-arithmetic (flint ``arb``, precision raised until every entry is known to 2^-64) and rounded once to float64, so
-its rows sum to 1 to rounding and elevation is affine invariant for every alpha in (0, pi).
+with a ``(delta_{n+1}, delta_n)`` matrix E, and the elevated control net is ``E @ net``.
 
-Below :data:`ALPHA_FLAT` the matrix is taken at ``ALPHA_FLAT``: E(alpha) = E(0) + O(alpha^2) (measured:
-``max |E(alpha) - E(1e-30)|`` = 5.6e-10, 5.6e-14, 4e-18 at alpha = 1e-4, 1e-6, 1e-8 for n = 1; the test suite checks
-n <= 3), so the difference is below float64's rounding, while the ball solve at smaller alpha needs precision
-growing like log(1/alpha).
+The library route is the closed form of :mod:`paper_repro.core.half_angle_matrices` (proven for every n in
+docs/elevation_and_derivative_for_all_n.md; claim ``elevation_all_n``): exact at a rational-tangent alpha, and in
+float the same bits on every CPU, with E >= 0 and rows summing to 1 (a convex combination) for every n and alpha.
+No linear solve: n = 10 in milliseconds, any n up to :data:`~paper_repro.util.limits.MAX_N_ELEVATION`.
+
+Two independent routes stay here as cross-checks for tests and tools (they know nothing of the closed form): the
+exact collocation solve (:func:`elevation_matrix_exact`) and the certified ball solve (:func:`certified_solve`,
+precision raised until every entry is known to 2^-64).
 """
 
 from __future__ import annotations
@@ -23,7 +23,7 @@ import numpy as np
 from flint import fmpq
 
 from paper_repro.core.collocation import Collocation, collocate
-from paper_repro.core.context import BallContext, Context, ExactContext
+from paper_repro.core.context import BallContext, Context, ExactContext, FloatContext
 from paper_repro.core.domain import (
     RationalAngle,
     RationalPoints,
@@ -31,16 +31,18 @@ from paper_repro.core.domain import (
     sample_points,
     sample_rational_points,
 )
+from paper_repro.core.half_angle_matrices import elevation_entries, elevation_form, elevation_matrix_ctx, half_angle
 from paper_repro.core.labels import delta
 from paper_repro.core.nets import check_net
 from paper_repro.core.normalization import evaluate_normalized, fixed_points
 from paper_repro.core.ordered import ordered_matmul
-from paper_repro.util.cache import cached
 from paper_repro.util.limits import MAX_ELEVATION_STEPS, MAX_N_ELEVATION, check_int
 from paper_repro.util.sweep import interruptible
 from paper_repro.util.validation import check_alpha, check_n, parse_alpha
 
-#: Below this alpha, E is taken at ALPHA_FLAT (E(alpha) - E(0) = O(alpha^2) < 1e-17, see the module docstring).
+#: Below this alpha the certified ball solve (a cross-check) needs precision growing like log(1/alpha); E(alpha) -
+#: E(0) = O(alpha^2) is below float64's rounding there (measured: max |E(alpha) - E(1e-30)| = 5.6e-10, 5.6e-14, 4e-18
+#: at alpha = 1e-4, 1e-6, 1e-8 for n = 1).  The closed form needs no such floor.
 ALPHA_FLAT = 1e-9
 #: Largest ball precision (bits) tried before giving up (never reached for n <= MAX_N_ELEVATION; measured).
 MAX_PREC = 1 << 15
@@ -153,33 +155,50 @@ def certified_solve(n: int, alpha: float, child: bool = True) -> tuple[np.ndarra
     raise ArithmeticError(f"elevation {n}->{n + 1} at alpha = {alpha!r}: not certified at {MAX_PREC} bits")
 
 
-@lru_cache(maxsize=64)
+#: Below this alpha the float closed form is taken at ALPHA_TINY: sin^2(alpha/2) would underflow, and the centre's
+#: scaled coefficient, of size sin^2(alpha/2), with it (0/0); E(alpha) = E(0) + O(alpha^2), so the difference is far
+#: below float64's rounding (a test compares with the exact E at tan(alpha/4) = 1e-40).
+ALPHA_TINY = 1e-100
+
+#: Float matrices up to this order are kept in memory (16 of them, at most 6 MB each); larger ones are recomputed.
+CACHE_MAX_N = 15
+
+
+@lru_cache(maxsize=16)
 def _elevation_matrix_float(n: int, alpha: float) -> np.ndarray:
-    """E rounded once to float64 from a certified ball solve (cached on disk: the exact bits are deterministic)."""
-    a = max(alpha, ALPHA_FLAT)
-
-    def compute():
-        e, prec, _, _ = certified_solve(n, a)
-        return {"prec": prec, "rows": [[x.hex() for x in row] for row in e]}
-
-    stored = cached("elevation_matrix", {"n": n, "alpha": a.hex(), "schedule": 2}, compute)
-    out = np.array([[float.fromhex(x) for x in row] for row in stored["rows"]])
+    """E in float64 from the closed form (read-only; the same bits on every CPU)."""
+    out = elevation_matrix_ctx(n, alpha, FloatContext())
     out.setflags(write=False)
     return out
 
 
 def elevation_matrix(n: int, alpha) -> np.ndarray:
-    """E as a float64 array, ``(delta_{n+1}, delta_n)``: exact (then rounded) for a :class:`RationalAngle`, from a
-    certified ball solve otherwise; rows sum to 1 to rounding for every alpha in (0, pi).
+    """E as a float64 array, ``(delta_{n+1}, delta_n)``, from the closed form (no solve): exact (then rounded) for a
+    :class:`RationalAngle`, for a float alpha every entry a sum of non-negative terms in kappa = cos(alpha/2) and
+    sin^2(alpha/2) (taken correctly rounded from flint), so E >= 0 and rows sum to 1 to rounding for every alpha in
+    (0, pi), with the same bits on every CPU.
 
-    ``n`` from 1 to :data:`~paper_repro.util.limits.MAX_N_ELEVATION` (time budget: see the README table).
+    ``n`` from 1 to :data:`~paper_repro.util.limits.MAX_N_ELEVATION` (time and memory: see the README table).
+
+    >>> e = elevation_matrix(2, 1.0)
+    >>> e.shape, bool(abs(e.sum(axis=1) - 1).max() < 1e-15), bool(e.min() >= 0)
+    ((37, 19), True, True)
     """
-    n = check_int(n, "n", 1, MAX_N_ELEVATION, why="elevation matrices are solved in ball arithmetic: "
-                  "cost grows as delta_n^3 times the precision")
+    n = check_int(n, "n", 1, MAX_N_ELEVATION, why="the dense E has delta_{n+1} delta_n entries")
     alpha = parse_alpha(alpha)
     if isinstance(alpha, RationalAngle):
-        return np.array([[float(x) for x in row] for row in elevation_matrix_exact(n, alpha)])
-    return _elevation_matrix_float(n, check_alpha(alpha)).copy()
+        if alpha.t == 0:
+            raise ValueError("alpha must lie in the open interval (0, pi): tan(alpha/4) = 0 gives alpha = 0")
+        ctx = ExactContext()
+        kappa, sigma = half_angle(alpha, ctx)
+        rows, cols, vals = elevation_entries(elevation_form(n), n, kappa, sigma, ctx)  # exact, then rounded once
+        out = np.zeros((delta(n + 1), delta(n)))
+        out[rows, cols] = [float(v) for v in vals]
+        return out
+    a = max(check_alpha(alpha), ALPHA_TINY)
+    if n > CACHE_MAX_N:
+        return elevation_matrix_ctx(n, a, FloatContext())
+    return _elevation_matrix_float(n, a).copy()
 
 
 def elevate(net, n: int, alpha, times: int = 1) -> np.ndarray:
@@ -190,7 +209,7 @@ def elevate(net, n: int, alpha, times: int = 1) -> np.ndarray:
     :data:`~paper_repro.util.limits.MAX_ELEVATION_STEPS`, with ``n + times - 1 <=``
     :data:`~paper_repro.util.limits.MAX_N_ELEVATION`.
     """
-    n = check_int(n, "n", 1, MAX_N_ELEVATION, why="elevation matrices are solved in ball arithmetic")
+    n = check_int(n, "n", 1, MAX_N_ELEVATION, why="the dense E has delta_{n+1} delta_n entries")
     times = check_int(times, "times", 0, min(MAX_ELEVATION_STEPS, MAX_N_ELEVATION + 1 - n),
                       why=f"n + times - 1 must be at most {MAX_N_ELEVATION} (the largest elevation matrix)")
     alpha = parse_alpha(alpha)

@@ -7,16 +7,17 @@ The span of T_{2n} is closed under differentiation along Omega^alpha (it is the 
 
     2 s d/du m_f = sum_g C[g, f](alpha) m_g.
 
-**Found pattern** (this module finds it; it is not proven): every entry of C is a polynomial with integer
-coefficients in ``kappa = cos(alpha/2)`` of degree at most n + 1.  Recovery: at ``n + 2 + verify`` shape
-parameters ``alpha = 4 atan(1/k)`` (rational half-angle sines and cosines) C is solved exactly over F_p at
-alpha-independent collocation points (:func:`~paper_repro.core.normalization.fixed_points`), each entry is
-interpolated in kappa from the first n + 2 values and checked at the others, and the coefficients are lifted to
-the symmetric range; the recovery is repeated with a second prime and must give the same integers.  What is
-exact: each modular solve and check.  What is evidence: that the interpolants are the true polynomials for every
-alpha (a degree bound is assumed, and checked only at the extra parameters and primes), and that the small integer
-lifts on which two primes agree are the true coefficients (no bound on their size is proven).  An independent check:
-the certified ball solve of ``tools/derivative_matrix.py`` at fixed alpha (tests compare the two).
+Every entry of C is a polynomial with integer coefficients in ``kappa = cos(alpha/2)`` of degree at most n + 1:
+**proven for every n** (docs/elevation_and_derivative_for_all_n.md, Theorem 1; the closed form is
+:mod:`paper_repro.core.half_angle_matrices`, claim ``derivative_all_n``).  This module recovers the same polynomials
+without the proof, as an independent cross-check of the closed form: at ``n + 2 + verify`` shape parameters
+``alpha = 4 atan(1/k)`` (rational half-angle sines and cosines) C is solved exactly over F_p at alpha-independent
+collocation points (:func:`~paper_repro.core.normalization.fixed_points`), each entry is interpolated in kappa from
+the first n + 2 values and checked at the others, and the coefficients are lifted to the symmetric range; the
+recovery is repeated with a second prime and must give the same integers.  What is exact: each modular solve and
+check.  What this route alone would leave as evidence: the small integer lifts on which two primes agree (no bound
+on their size is used); the degree bound is Theorem 1.  Another independent check: the certified ball solve of
+``tools/derivative_matrix.py`` at fixed alpha (tests compare the two).
 
 The other directions follow by symmetry: T_{2n} is invariant under every permutation of (u, v, w)
 (:func:`~paper_repro.core.labels.variable_swap`), and ``(0, 1, -1)`` is ``(1, 0, -1)`` with u and v exchanged.
@@ -95,7 +96,8 @@ def derivative_polynomials(n: int, *, primes: int = 2, verify: int = 2, directio
     ``(nnz, n + 2)`` (ascending powers), entries in row-major order.
 
     ``ArithmeticError`` if an interpolant of degree n + 1 fails at the ``verify`` extra parameters, or if the
-    ``primes`` largest primes below 2^31 give different integers (either would refute the found pattern).
+    ``primes`` largest primes below 2^31 give different integers (either would contradict Theorem 1 of
+    docs/elevation_and_derivative_for_all_n.md).
     """
     n = check_n(n)
     lifts = []
@@ -118,7 +120,8 @@ def tables_text(nmax: int, progress: bool = False) -> str:
     head = {"about": "C with 2 s d/du m_f = sum_g C[g, f] m_g for the scaled monomials m_f of T_{2n} (internal order, "
                      "paper_repro.core.labels.united_system); entry C[rows[e], cols[e]] = sum_d coefs[e][d] kappa^d, "
                      "kappa = cos(alpha/2), s = sin(alpha/2), direction u = (1, 0, -1).  Recovered modulo two primes "
-                     "by paper_repro.theory.derivative_matrix (make reproduce); a found pattern, see that module.",
+                     "by paper_repro.theory.derivative_matrix (make reproduce); equal to the closed form proven for "
+                     "every n in docs/elevation_and_derivative_for_all_n.md (paper_repro.core.half_angle_matrices).",
             "direction": list(DIRECTION_U), "nmax": nmax}
     lines = [json.dumps(head)[:-1] + ', "tables": {']
     for n in range(1, nmax + 1):

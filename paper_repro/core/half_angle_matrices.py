@@ -1,0 +1,234 @@
+"""Order elevation and the derivative matrix C in closed form, for every n, in every arithmetic.
+
+The integer forms of :mod:`paper_repro.core.half_angle_rules` (proven in docs/elevation_and_derivative_for_all_n.md)
+are evaluated here through a context (:mod:`paper_repro.core.context`): the same code gives exact matrices at a
+:class:`~paper_repro.core.domain.RationalAngle`, floats, mp numbers, balls or residues mod p.
+
+* :func:`elevation_matrix_ctx`: ``E`` with ``T-bar_n = T-bar_{n+1} E`` (Example exmp:degree_elevation_from_1_to_2,
+  Question 1 of sec:open_problems), ``E[g, f] = x_f M[g, f] / x'_g`` with x the scaled normalizing coefficients
+  (:mod:`paper_repro.core.normalizing_formula`).  Every entry of M is a polynomial in kappa = cos(alpha/2) and
+  sigma = sin^2(alpha/2) with non-negative integer coefficients, so E >= 0 and its rows sum to 1: elevation is a
+  convex combination for every n and alpha in (0, pi).
+* :func:`derivative_matrix`: C with ``2 s d/du m_f = sum_g C[g, f] m_g`` (u = (1, 0, -1)), the matrix of
+  :mod:`paper_repro.core.derivative_tables`, now for every n.
+
+Float results are the same bits on every CPU: kappa and sigma are taken from flint ``arb`` (correctly rounded, no
+libm), then only elementwise ``+``, ``*`` and ``/`` in a fixed order (no BLAS, no reductions).  Each entry of M is a
+sum of positive terms, so it keeps its relative accuracy (about (number of terms) x 2^-53).
+
+At tan(alpha/4) = 1/2 the elevation 1 -> 2 is exact and its rows sum to 1:
+
+>>> from paper_repro.core.domain import rational_alpha
+>>> from paper_repro.core.context import get_context
+>>> e = elevation_matrix_ctx(1, rational_alpha(fmpq(1, 2)), get_context("exact"))
+>>> e.shape, all(sum(row) == 1 for row in e.tolist()), min(min(row) for row in e.tolist()) >= 0
+((19, 7), True, True)
+"""
+
+from __future__ import annotations
+
+from functools import cache
+
+import numpy as np
+from flint import arb, fmpq
+from flint import ctx as flint_ctx
+
+from paper_repro.core.context import Context, FloatContext, get_context
+from paper_repro.core.domain import RationalAngle
+from paper_repro.core.half_angle_rules import derivative_terms, elevation_terms, merge
+from paper_repro.core.labels import delta, variable_swap
+from paper_repro.core.normalization import orbits
+from paper_repro.core.normalizing_formula import scaled_table
+from paper_repro.util.validation import check_alpha, check_n
+
+
+def float_half_angle(alpha: float) -> tuple[float, float]:
+    """``(kappa, sigma) = (cos(alpha/2), sin^2(alpha/2))`` correctly rounded to float64 (flint ``arb`` at 128 bits:
+    the same bits on every machine, unlike libm).
+
+    >>> float_half_angle(1.0) == (0.8775825618903728, 0.22984884706593015)
+    True
+    """
+    a = check_alpha(alpha)
+    old = flint_ctx.prec
+    flint_ctx.prec = 128
+    try:
+        half = arb(a) / 2  # a float is an exact binary rational
+        k, s = half.cos(), half.sin()
+        return float(k.mid()), float((s * s).mid())
+    finally:
+        flint_ctx.prec = old
+
+
+def half_angle(alpha, ctx: Context) -> tuple:
+    """``(kappa, sigma)`` as scalars of ``ctx``: exact at a :class:`RationalAngle`, correctly rounded in float."""
+    if isinstance(alpha, RationalAngle):
+        if alpha.t == 0:
+            raise ValueError("alpha must lie in the open interval (0, pi): tan(alpha/4) = 0 gives alpha = 0")
+        s = alpha.sin_half
+        with ctx.scope():  # balls and mp numbers made at the context's precision
+            return ctx.from_rational(alpha.cos_half), ctx.from_rational(s * s)
+    if isinstance(ctx, FloatContext):
+        return float_half_angle(alpha)
+    if ctx.exact:
+        raise TypeError(f"alpha must be a RationalAngle (rational tan(alpha/4)) for arith {ctx.name!r}, "
+                        f"got {type(alpha).__name__}")
+    if not isinstance(alpha, arb):
+        check_alpha(alpha)
+    with ctx.scope():
+        s, k = ctx.alpha_half(alpha)
+        return k, ctx.mul(s, s)
+
+
+@cache
+def elevation_form(n: int) -> tuple[np.ndarray, ...]:
+    """The integer bivariate form of M: ``(rows, cols, a, b, coef)`` sorted, ``M[g, f] = sum coef kappa^a sigma^b``
+    (read-only arrays; every coef > 0)."""
+    out = merge(elevation_terms(check_n(n)))
+    for arr in out:
+        arr.setflags(write=False)
+    return out
+
+
+@cache
+def derivative_form(n: int) -> tuple[np.ndarray, ...]:
+    """The integer bivariate form of C (direction u), as :func:`elevation_form` (signed coefficients)."""
+    out = merge(derivative_terms(check_n(n)))
+    for arr in out:
+        arr.setflags(write=False)
+    return out
+
+
+def _layout(rows: np.ndarray, cols: np.ndarray) -> tuple[np.ndarray, ...]:
+    """Entries of a sorted form and each monomial's rank within its entry (the fixed order of the sums)."""
+    new = np.r_[True, (rows[1:] != rows[:-1]) | (cols[1:] != cols[:-1])]
+    entry = np.cumsum(new) - 1
+    first = np.flatnonzero(new)
+    rank = np.arange(len(rows)) - first[entry]
+    return entry, rows[first], cols[first], rank
+
+
+def evaluate_terms(form: tuple[np.ndarray, ...], kappa, sigma, ctx: Context
+                   ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """``(rows, cols, values)`` of the nonzero entries of a merged form (:func:`~paper_repro.core.half_angle_rules.
+    merge`) at ``(kappa, sigma)`` in ``ctx``: each entry the sum of its monomials in the order (a, b) ascending, one
+    elementwise addition per rank (so float sums have a fixed order)."""
+    rows, cols, a, b, coef = form
+    entry, erows, ecols, rank = _layout(rows, cols)
+    with ctx.scope():
+        kp = [ctx.convert(1)]
+        for _ in range(int(a.max()) if len(a) else 0):
+            kp.append(ctx.mul(kp[-1], kappa))
+        sp = [ctx.convert(1)]
+        for _ in range(int(b.max()) if len(b) else 0):
+            sp.append(ctx.mul(sp[-1], sigma))
+        kpa, spa = ctx.asarray(kp), ctx.asarray(sp)
+        coefs = coef.astype(np.float64) if isinstance(ctx, FloatContext) else ctx.asarray([int(c) for c in coef])
+        terms = ctx.mul(ctx.mul(coefs, kpa[a]), spa[b])
+        vals = ctx.zeros((len(erows),))
+        for k in range(int(rank.max()) + 1 if len(rank) else 0):
+            sel = rank == k
+            vals[entry[sel]] = ctx.add(vals[entry[sel]], terms[sel])
+    return erows, ecols, vals
+
+
+def evaluate_form(form_id: tuple[str, int], kappa, sigma, ctx: Context) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """:func:`evaluate_terms` of ``('M', n)`` (:func:`elevation_form`) or ``('C', n)`` (:func:`derivative_form`)."""
+    kind, n = form_id
+    return evaluate_terms((elevation_form if kind == "M" else derivative_form)(n), kappa, sigma, ctx)
+
+
+def scaled_coefficients(n: int, kappa, sigma, ctx: Context) -> np.ndarray:
+    """The scaled normalizing coefficients ``s^{2n+j} x_f`` of all members (internal order) at ``(kappa, sigma)``
+    (Theorem B's formula, :func:`~paper_repro.core.normalizing_formula.scaled_table`)."""
+    with ctx.scope():
+        orb = scaled_table(n, kappa, sigma, ctx)
+    out = ctx.zeros((delta(n),))
+    for (_, members), x in zip(orbits(n), orb):
+        out[list(members)] = x
+    return out
+
+
+def _dense(rows, cols, vals, shape, ctx: Context) -> np.ndarray:
+    out = ctx.zeros(shape)
+    out[rows, cols] = vals
+    return out
+
+
+def elevation_matrix_ctx(n: int, alpha, arith: str | Context = "float") -> np.ndarray:
+    """E, ``(delta_{n+1}, delta_n)``, with ``T-bar_n = T-bar_{n+1} E`` in the arithmetic ``arith`` (exact needs a
+    :class:`RationalAngle`); from the closed form, no linear solve."""
+    n = check_n(n)
+    ctx = get_context(arith)
+    kappa, sigma = half_angle(alpha, ctx)
+    return elevation_from_form(elevation_form(n), n, kappa, sigma, ctx)
+
+
+def elevation_entries(form: tuple[np.ndarray, ...], n: int, kappa, sigma, ctx: Context
+                      ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """``(rows, cols, values)`` of the nonzero entries of E from a merged form of M at ``(kappa, sigma)`` in ``ctx``
+    (the checks of :mod:`paper_repro.theory.half_angle_checks` also pass deliberately wrong forms)."""
+    rows, cols, m = evaluate_terms(form, kappa, sigma, ctx)
+    x, x1 = scaled_coefficients(n, kappa, sigma, ctx), scaled_coefficients(n + 1, kappa, sigma, ctx)
+    with ctx.scope():
+        vals = ctx.div(ctx.mul(x[cols], m), x1[rows])
+    return rows, cols, vals
+
+
+def elevation_from_form(form: tuple[np.ndarray, ...], n: int, kappa, sigma, ctx: Context) -> np.ndarray:
+    """The dense E of :func:`elevation_entries`."""
+    return _dense(*elevation_entries(form, n, kappa, sigma, ctx), (delta(n + 1), delta(n)), ctx)
+
+
+def derivative_matrix(n: int, alpha, arith: str | Context = "float") -> np.ndarray:
+    """C, ``(delta_n, delta_n)``, with ``2 s d/du m_f = sum_g C[g, f] m_g`` for the scaled monomials (direction
+    u = (1, 0, -1)) in the arithmetic ``arith``, from the closed form; the direction v is C conjugated by
+    :func:`~paper_repro.core.labels.variable_swap`."""
+    n = check_n(n)
+    ctx = get_context(arith)
+    kappa, sigma = half_angle(alpha, ctx)
+    rows, cols, vals = evaluate_form(("C", n), kappa, sigma, ctx)
+    return _dense(rows, cols, vals, (delta(n), delta(n)), ctx)
+
+
+def derivative_nets(n: int, alpha, net: np.ndarray, arith: str | Context = "float") -> tuple[np.ndarray, np.ndarray]:
+    """``(q_u, q_v)``: the nets of ``2 s d/du`` and ``2 s d/dv`` of the patch ``sum_f net[f] m_f`` on the scaled
+    monomials (``net`` of shape ``(delta_n, d)``), from the closed-form C in the arithmetic ``arith``.  In float each
+    output row is summed in the order of the form's entries (``np.add.at``: the same bits on every CPU).
+
+    The direction v is u with the variables u, v exchanged (:func:`~paper_repro.core.labels.variable_swap`).
+
+    >>> import math
+    >>> qu, qv = derivative_nets(1, 1.0, np.eye(7)[:, :1])   # the net of m_0 = S_u S_v S_w
+    >>> np.nonzero(qu[:, 0])[0].tolist(), qu[np.nonzero(qu[:, 0])[0], 0].tolist()
+    ([4, 6], [1.0, -1.0])
+    """
+    n = check_n(n)
+    ctx = get_context(arith)
+    net = np.asarray(net, dtype=np.float64 if isinstance(ctx, FloatContext) else object)
+    if net.ndim != 2 or net.shape[0] != delta(n):
+        raise ValueError(f"net must be a (delta_n, d) = ({delta(n)}, d) array for n = {n}, got shape {net.shape}")
+    kappa, sigma = half_angle(alpha, ctx)
+    rows, cols, vals = evaluate_form(("C", n), kappa, sigma, ctx)
+    pi = variable_swap(n, 0, 1)  # m_{pi[f]}(u, v, w) = m_f(v, u, w)
+
+    def apply(x: np.ndarray) -> np.ndarray:
+        out = ctx.zeros((delta(n), x.shape[1]))
+        with ctx.scope():
+            if isinstance(ctx, FloatContext):
+                np.add.at(out, rows, vals[:, None] * x[cols])
+            else:
+                for r, c, v in zip(rows, cols, vals):
+                    out[r] = ctx.add(out[r], ctx.mul(v, x[c]))
+        return out
+
+    qu = apply(net)
+    qv = ctx.zeros(qu.shape)
+    qv[pi] = apply(net[pi])
+    return qu, qv
+
+
+__all__ = ["elevation_matrix_ctx", "derivative_matrix", "derivative_nets", "elevation_form", "derivative_form",
+           "float_half_angle", "half_angle", "scaled_coefficients", "evaluate_form", "evaluate_terms",
+           "elevation_from_form", "elevation_entries"]
+_ = fmpq  # doctest name

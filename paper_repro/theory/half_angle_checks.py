@@ -1,0 +1,243 @@
+"""Machine checks of the closed-form elevation matrix M and derivative matrix C (issue 30), independent of the rules.
+
+The rules (:mod:`paper_repro.core.half_angle_rules`) are proven for every n in
+docs/elevation_and_derivative_for_all_n.md.  These checks compare what the rules build with routes that know nothing
+of them; each takes the integer form as an argument, so a test can hand it a deliberately wrong one and see it fail.
+
+* :func:`identity_check`: the matrix identity itself, exactly over Q at a rational-tangent alpha, at ``delta + extra``
+  rational points of the plane u + v + w = alpha where the target system is certified unisolvent (full rank modulo a
+  prime bounds the rank over Q from below).  For M: ``m_f(p) = sum_g M[g, f] m'_g(p)``; for C:
+  ``2 s d/du m_f(p) = sum_g C[g, f] m_g(p)`` (the derivative of each monomial by
+  :func:`~paper_repro.core.derivatives_basis.monomial_derivative`).  Holding at a unisolvent set, the matrix *is*
+  the exact collocation solution there (uniqueness, Theorem joint_systems_linear_independence).
+* :func:`collocation_equal`: E against the literal exact collocation solve of
+  :func:`~paper_repro.core.elevation.elevation_matrix_exact` (small n: it solves a dense rational system).
+* :func:`kappa_polynomials`, :func:`tables_equal`: C with sigma = 1 - kappa^2, against the package tables recovered
+  modulo two primes (:mod:`paper_repro.theory.derivative_matrix`; n <= 10) or a fresh recovery (n = 11, 12).
+* :func:`identities_hold`, :func:`rules_hold`: the identities (I), (II) and each cotangent rule, both sides evaluated
+  exactly at rational points from their own half-angle values (quarter tangents; w by the angle-difference formulas
+  written out here, not the library's).
+* :func:`nonnegative`, :func:`row_sums_exact`: every coefficient of M's bivariate form > 0; rows of the exact E sum
+  to 1.
+
+>>> from paper_repro.core.domain import rational_alpha
+>>> from paper_repro.core.half_angle_matrices import elevation_form
+>>> identity_check("M", 2, rational_alpha(fmpq(1, 3)), elevation_form(2))["ok"]
+True
+"""
+
+from __future__ import annotations
+
+from math import comb
+
+import numpy as np
+from flint import fmpq
+
+from paper_repro.core.basis import monomials
+from paper_repro.core.context import Context, ExactContext, ModpContext, get_context, to_fmpq_mat
+from paper_repro.core.derivatives_basis import monomial_derivative
+from paper_repro.core.domain import RationalAngle, RationalPoints, scaled_half_angle_values
+from paper_repro.core.half_angle_matrices import elevation_from_form, evaluate_terms
+from paper_repro.core.labels import delta, exponent_matrix
+from paper_repro.core.normalization import fixed_points
+from paper_repro.theory.modular import _matmul_mod
+from paper_repro.util.validation import check_n
+
+#: The prime of the unisolvency certificates.
+PRIME = 2_147_483_629
+
+
+#: Rational test points ``(tan(alpha/4), tan(u/4), tan(v/4))``: w = alpha - u - v need not be positive (the
+#: identities hold on the whole plane).
+POINTS = ((fmpq(1, 3), fmpq(1, 7), fmpq(2, 9)), (fmpq(2, 5), fmpq(3, 11), fmpq(-1, 13)),
+          (fmpq(1, 50), fmpq(1, 300), fmpq(1, 170)), (fmpq(19, 20), fmpq(5, 17), fmpq(7, 23)))
+
+
+def _quarter(t: fmpq) -> tuple[fmpq, fmpq]:
+    d = 1 + t * t
+    return 2 * t / d, (1 - t * t) / d
+
+
+def half_angle_point(ta: fmpq, tu: fmpq, tv: fmpq) -> dict:
+    """``kappa``, ``sigma`` and the scaled values ``S = (S_u, S_v, S_w)``, ``C = (C_u, C_v, C_w)`` at alpha =
+    4 atan(ta), u = 4 atan(tu), v = 4 atan(tv), w = alpha - u - v (exact rationals)."""
+    s, k = _quarter(ta)
+    su, cu = _quarter(tu)
+    sv, cv = _quarter(tv)
+    suv, cuv = su * cv + cu * sv, cu * cv - su * sv
+    sw, cw = s * cuv - k * suv, k * cuv + s * suv
+    return {"kappa": k, "sigma": s * s, "S": (su / s, sv / s, sw / s), "C": (cu, cv, cw)}
+
+
+def identities_hold(points=POINTS) -> bool:
+    """(I) ``C_x = kappa S_x + S_y C_z + C_y S_z`` and (II) ``C_y C_z = sigma S_y S_z + kappa C_x + sigma S_x`` for
+    every permutation (x, y, z) of (u, v, w), exactly at the points."""
+    for pt in points:
+        p = half_angle_point(*pt)
+        k, s2, S, C = p["kappa"], p["sigma"], p["S"], p["C"]
+        for x in range(3):
+            for y in range(3):
+                if x == y:
+                    continue
+                z = 3 - x - y
+                if C[x] != k * S[x] + S[y] * C[z] + C[y] * S[z]:
+                    return False
+                if C[y] * C[z] != s2 * S[y] * S[z] + k * C[x] + s2 * S[x]:
+                    return False
+    return True
+
+
+def _monomial(p: dict, e) -> fmpq:
+    out = fmpq(1)
+    for x in range(3):
+        out *= p["S"][x] ** int(e[2 * x]) * p["C"][x] ** int(e[2 * x + 1])
+    return out
+
+
+def _terms_value(p: dict, n: int, terms) -> fmpq:
+    e = exponent_matrix(n)
+    return sum((int(c) * p["kappa"] ** int(a) * p["sigma"] ** int(b) * _monomial(p, e[int(t)])
+                for a, b, c, t in terms), fmpq(0))
+
+
+def rules_hold(n: int, points=POINTS[:2]) -> dict:
+    """Each cotangent ``(C_x/S_x) m_g`` of :func:`~paper_repro.core.half_angle_rules.cotangent` (rules A, A_n, B and
+    the cosine variable's rule), for every member g of T_{2n} and every variable x with a factor S_x, against the
+    product of the half-angle values, exactly at the points: ``{"checked": k, "fails": [(x, g), ...], "ok"}``."""
+    from paper_repro.core.half_angle_rules import cotangent
+
+    pts = [half_angle_point(*pt) for pt in points]
+    e = exponent_matrix(check_n(n))
+    fails, checked = [], 0
+    for g in range(delta(n)):
+        for x in range(3):
+            if not e[g, 2 * x]:
+                continue
+            terms = cotangent(n, x, g)
+            for p in pts:
+                checked += 1
+                if p["C"][x] / p["S"][x] * _monomial(p, e[g]) != _terms_value(p, n, terms):
+                    fails.append((x, g))
+                    break
+    return {"n": n, "checked": checked, "fails": fails, "ok": not fails}
+
+
+def _dense(form, shape, alpha: RationalAngle, ctx) -> np.ndarray:
+    kappa, s = ctx.from_rational(alpha.cos_half), ctx.from_rational(alpha.sin_half)
+    rows, cols, vals = evaluate_terms(form, kappa, ctx.mul(s, s), ctx)
+    out = ctx.zeros(shape)
+    out[rows, cols] = vals
+    return out
+
+
+def identity_check(kind: str, n: int, alpha: RationalAngle, form, *, arith: str | Context = "exact", extra: int = 3,
+                   seed: int = 5) -> dict:
+    """The identity of ``kind`` ('M': elevation n -> n + 1; 'C': derivative along u) for the merged ``form`` at
+    ``delta + extra`` rational points, exactly over Q (``arith='exact'``) or over F_p (``'modp'``, p =
+    :data:`PRIME`: the exact image, much faster; evidence for the identity over Q, not a proof of it); ``ok`` when it
+    holds at every point and the points are unisolvent for the target system (rank over F_p, a lower bound of the
+    rank over Q)."""
+    n = check_n(n)
+    if kind not in ("M", "C"):
+        raise ValueError(f"kind must be 'M' (elevation) or 'C' (derivative), got {kind!r}")
+    mod = ModpContext(p=PRIME)
+    ctx = get_context(arith, p=PRIME)
+    if not isinstance(ctx, (ExactContext, ModpContext)):
+        raise ValueError(f"arith must be 'exact' or 'modp' (or such a context), got {arith!r}")
+    if not isinstance(alpha, RationalAngle):
+        raise TypeError(f"alpha must be a RationalAngle, got {type(alpha).__name__}")
+    target = n + 1 if kind == "M" else n
+    count = delta(target) + extra
+    tu, tv = fixed_points(target, count, seed)
+    pts = RationalPoints(None, tu, tv, check=False)
+
+    def values(c):
+        trig = scaled_half_angle_values(pts, alpha, c)
+        with c.scope():
+            big = monomials(exponent_matrix(target), trig, c)
+            if kind == "M":
+                return big, monomials(exponent_matrix(n), trig, c)
+            s = c.from_rational(alpha.sin_half)
+            return big, monomial_derivative(exponent_matrix(n), trig, (1, 0, -1), c, s2=c.mul(s, s))
+
+    big, lhs = values(ctx)
+    mat = _dense(form, (delta(target), delta(n)), alpha, ctx)
+    if isinstance(ctx, ExactContext):
+        holds = to_fmpq_mat(big) * to_fmpq_mat(mat) == to_fmpq_mat(lhs)
+        big_p = values(mod)[0]
+    else:
+        holds = bool(np.array_equal(_matmul_mod(big, mat, ctx.p), lhs % ctx.p))
+        big_p = big
+    rank = mod.rank(big_p)
+    return {"kind": kind, "n": n, "t": str(alpha.t), "arith": ctx.name, "points": count, "holds": bool(holds),
+            "rank_mod_p": int(rank), "unisolvent": rank == delta(target), "ok": bool(holds) and rank == delta(target)}
+
+
+def collocation_equal(n: int, alpha: RationalAngle, form) -> bool:
+    """E from ``form`` equals the literal exact collocation solve (:func:`~paper_repro.core.elevation.
+    elevation_matrix_exact`, seeded rational points of the triangle, verified at three more)."""
+    from paper_repro.core.elevation import elevation_matrix_exact
+
+    ctx = ExactContext()
+    kappa, s = ctx.from_rational(alpha.cos_half), ctx.from_rational(alpha.sin_half)
+    e = elevation_from_form(form, n, kappa, s * s, ctx)
+    return e.tolist() == [list(r) for r in elevation_matrix_exact(n, alpha)]
+
+
+def row_sums_exact(n: int, alpha: RationalAngle, form) -> bool:
+    """The rows of the exact E (from ``form``) sum to 1."""
+    ctx = ExactContext()
+    kappa, s = ctx.from_rational(alpha.cos_half), ctx.from_rational(alpha.sin_half)
+    e = elevation_from_form(form, n, kappa, s * s, ctx)
+    return all(sum(row, fmpq(0)) == 1 for row in e.tolist())
+
+
+def nonnegative(form) -> dict:
+    """Signs of the bivariate form: ``ok`` when every coefficient is positive (zero sums are dropped by the merge)."""
+    coef = np.asarray(form[4])
+    return {"monomials": int(len(coef)), "min_coefficient": int(coef.min()) if len(coef) else 0,
+            "ok": bool(len(coef) and coef.min() > 0)}
+
+
+def kappa_polynomials(form) -> dict[tuple[int, int], tuple[int, ...]]:
+    """The form with sigma = 1 - kappa^2: ``{(row, col): ascending integer coefficients in kappa}`` (zero entries
+    dropped, trailing zeros stripped)."""
+    out: dict[tuple[int, int], dict[int, int]] = {}
+    for r, c, a, b, coef in zip(*(np.asarray(x).tolist() for x in form)):
+        poly = out.setdefault((r, c), {})
+        for t in range(b + 1):
+            d = a + 2 * t
+            poly[d] = poly.get(d, 0) + coef * comb(b, t) * (-1) ** t
+    res = {}
+    for key, poly in out.items():
+        top = max((d for d, v in poly.items() if v), default=-1)
+        if top >= 0:
+            res[key] = tuple(poly.get(d, 0) for d in range(top + 1))
+    return res
+
+
+def _strip(coefs) -> tuple[int, ...]:
+    c = [int(x) for x in coefs]
+    while c and c[-1] == 0:
+        c.pop()
+    return tuple(c)
+
+
+def tables_equal(n: int, form, recovered=None) -> bool:
+    """C (``form``, in kappa) equals the recovered polynomials ``(rows, cols, coefs)``: the package table
+    (:func:`~paper_repro.core.derivative_tables.table`, n <= 10) when ``recovered`` is None."""
+    if recovered is None:
+        from paper_repro.core.derivative_tables import table
+
+        recovered = table(n)
+    rows, cols, coefs = recovered
+    theirs = {(int(r), int(c)): _strip(co) for r, c, co in zip(rows, cols, coefs)}
+    return kappa_polynomials(form) == {k: v for k, v in theirs.items() if v}
+
+
+def perturbed(form, which: int = 0, by: int = 1) -> tuple[np.ndarray, ...]:
+    """A deliberately wrong copy of a merged form: coefficient ``which`` changed by ``by`` (for the tests that show
+    each check can fail)."""
+    out = tuple(np.array(x, copy=True) for x in form)
+    out[4][which] += by
+    return out
