@@ -35,7 +35,7 @@ from paper_repro.core.fast import ordered_matmul
 from paper_repro.core.labels import delta
 from paper_repro.core.nets import check_net
 from paper_repro.core.normalization import evaluate_normalized, fixed_points
-from paper_repro.util.cache import cached
+from paper_repro.util.cache import cached, hex_rows
 from paper_repro.util.limits import MAX_ELEVATION_STEPS, MAX_N_ELEVATION, check_int
 from paper_repro.util.sweep import interruptible
 from paper_repro.util.validation import check_alpha, check_n, parse_alpha
@@ -162,7 +162,8 @@ def _elevation_matrix_float(n: int, alpha: float) -> np.ndarray:
         e, prec, _, _ = certified_solve(n, a)
         return {"prec": prec, "rows": [[x.hex() for x in row] for row in e]}
 
-    stored = cached("elevation_matrix", {"n": n, "alpha": a.hex(), "schedule": 2}, compute)
+    stored = cached("elevation_matrix", {"n": n, "alpha": a.hex(), "schedule": 2}, compute,
+                    validate=hex_rows(delta(n + 1), delta(n)))
     out = np.array([[float.fromhex(x) for x in row] for row in stored["rows"]])
     out.setflags(write=False)
     return out

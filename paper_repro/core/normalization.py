@@ -37,7 +37,7 @@ from paper_repro.core.context import Context, ExactContext, FloatContext, LogCon
 from paper_repro.core.domain import RationalAngle, RationalPoints, mp_domain_points
 from paper_repro.core.labels import BasisLabel, compose, delta, exponents, united_system
 from paper_repro.core.normalizing_formula import scaled_table, sin_powers
-from paper_repro.util.cache import cached
+from paper_repro.util.cache import cached, rational_text
 from paper_repro.util.validation import check_alpha, check_n
 
 #: Largest orders for the normalizing coefficients from the all-n formula (n^3 operations; measured on the 2-core
@@ -189,7 +189,13 @@ def exact_coefficients_cached(n: int, alpha: RationalAngle) -> tuple[list[fmpq],
         sol, attempt = solve_reduced_exact(n, alpha)
         return {"solution": [str(x) for x in sol], "point_set": attempt}
 
-    stored = cached("orbit_coefficients", {"n": n, "t": str(alpha.t)}, compute)
+    def validate(value) -> str | None:
+        sol, m = value["solution"], len(orbits(n))
+        if not isinstance(sol, list) or len(sol) != m or not all(rational_text(x) for x in sol):
+            return f"solution is not a list of {m} exact rationals"
+        return None if type(value["point_set"]) is int else "point_set is not an integer"
+
+    stored = cached("orbit_coefficients", {"n": n, "t": str(alpha.t)}, compute, validate=validate)
     return [parse_fmpq(x) for x in stored["solution"]], stored["point_set"]
 
 

@@ -24,7 +24,7 @@ from collections.abc import Callable
 from dataclasses import asdict, dataclass, field
 from typing import Any
 
-from paper_repro.util.cache import cached, code_fingerprint
+from paper_repro.util.cache import cached, code_fingerprint, keys_and_types
 
 KINDS = ("proof", "exact-evidence", "numeric-evidence")
 
@@ -242,6 +242,10 @@ def check_overrides(c: Claim, overrides: dict[str, Any] | None, extended: bool =
     return params
 
 
+#: The fields of a stored claim outcome (validated before a cached outcome is used).
+_OUTCOME = keys_and_types(passed=bool, measured=dict, kind=(str, type(None)), errata=list, data=dict, raw=dict)
+
+
 def run_claim(c: Claim, overrides: dict[str, Any] | None = None, extended: bool = False,
               claim_results: dict[str, dict] | None = None) -> tuple[ClaimResult, Outcome, float]:
     """Run one claim; returns its result, the raw outcome (errata, data files), and the seconds it took.
@@ -264,7 +268,7 @@ def run_claim(c: Claim, overrides: dict[str, Any] | None = None, extended: bool 
     try:
         # whole-claim cache: keyed by id, parameters and the package source (see cache.code_fingerprint)
         stored, hit = cached("claims", {"id": c.id, "params": params, "code": code_fingerprint(), **extra}, compute,
-                             report_hit=True)
+                             report_hit=True, validate=_OUTCOME)
     except Exception as exc:  # a crashing check is a failing claim, reported as such (and not cached)
         stored, hit = asdict(Outcome(False, {"error": f"{type(exc).__name__}: {exc}"})), False
     out = Outcome(**stored)
