@@ -33,14 +33,13 @@ import hashlib
 import json
 import math
 import os
-import tempfile
 import warnings
 from collections.abc import Callable
 from functools import lru_cache
 from pathlib import Path
 from typing import Any, TypeVar
 
-from paper_repro.util.io import PACKAGE, ROOT, dumps, in_checkout, write_text
+from paper_repro.util.io import PACKAGE, ROOT, dumps, in_checkout, unwritable, write_text
 
 CACHE_VERSION = 4  # 4: entries carry the sha256 of their value (validated on read); 3: dim_V -> functions_in_V
 #: A fixed cache folder overriding :func:`cache_dir` (tests set it); ``None``: the rules of :func:`cache_dir`.
@@ -79,17 +78,9 @@ _WARNED_UNUSABLE: set[str] = set()
 
 
 def unusable(folder: Path | None = None) -> str | None:
-    """Why the cache folder cannot be written (``None`` if it can): it is created if missing, and a file is created
-    and removed in it.  ``folder`` defaults to :func:`cache_dir`."""
-    folder = cache_dir() if folder is None else Path(folder)
-    try:
-        folder.mkdir(parents=True, exist_ok=True)
-        fd, probe = tempfile.mkstemp(prefix=".probe-", dir=folder)
-        os.close(fd)
-        os.unlink(probe)
-    except OSError as exc:
-        return f"{exc.strerror or type(exc).__name__} ({folder})"
-    return None
+    """Why the cache folder cannot be written (``None`` if it can; :func:`paper_repro.util.io.unwritable`).
+    ``folder`` defaults to :func:`cache_dir`."""
+    return unwritable(cache_dir() if folder is None else folder)
 
 
 def warn_unusable(reason: str) -> None:

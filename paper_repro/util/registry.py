@@ -123,10 +123,20 @@ FIGURE_MODULES = (
 
 
 def claim(id: str, *, paper_ref: list[str], statement: str, kind: str, extended: dict | None = None,
-          uses_results: bool = False, **defaults: Any) -> Callable[[Callable[..., Outcome]], Callable[..., Outcome]]:
-    """Register a claim function under ``id`` with default parameters ``defaults``."""
+          uses_results: bool = False, alpha_range: tuple[float, float, str] | None = None,
+          **defaults: Any) -> Callable[[Callable[..., Outcome]], Callable[..., Outcome]]:
+    """Register a claim function under ``id`` with default parameters ``defaults``.
+
+    ``alpha_range = (low, high, why)``: where the claim decides its statement at every order it runs at
+    (measured: ``tools/alpha_ranges.py``); the command line refuses ``--alpha`` outside it before any work
+    (:data:`ALPHA_RANGES`)."""
     if kind not in KINDS:
         raise ValueError(f"kind must be one of {KINDS}, got {kind!r}")
+    if alpha_range is not None:
+        lo, hi, why = alpha_range
+        if not (0 < lo < hi < 3.141592653589794 and isinstance(why, str) and why):
+            raise ValueError(f"alpha_range must be (low, high, why) with 0 < low < high < pi, got {alpha_range!r}")
+        ALPHA_RANGES[id] = (lo, hi, why)
 
     def deco(func: Callable[..., Outcome]) -> Callable[..., Outcome]:
         if id in CLAIMS:
