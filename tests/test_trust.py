@@ -245,3 +245,175 @@ def test_corrupted_numba_cache_is_recompiled_with_one_warning(tmp_path):
     assert second.stderr.count("CacheWarning") == 1 and "recompiled" in second.stderr
     third = _run(tmp_path)  # rewritten: no warning
     assert third.returncode == 0 and "CacheWarning" not in third.stderr and third.stdout == first.stdout
+
+
+# --- item 5: the inputs answered wrongly before -----------------------------------------------------------------------
+
+def _patch():
+    from paper_repro.surfaces.patch import Patch
+
+    return Patch(1, 1.0, np.arange(21.0).reshape(7, 3))
+
+
+@pytest.mark.parametrize("direction", [(True, False, -1), ("0.5", 0, -0.5), ("1/2", 0, -0.5), (np.bool_(1), 0, -1)])
+def test_derivative_direction_refuses_booleans_and_strings(direction):
+    """Before: booleans and '0.5' were accepted as components ('1/2' was refused)."""
+    with pytest.raises(TypeError, match="direction components must be real numbers"):
+        _patch().derivative([[0.2, 0.3, 0.5]], direction)
+
+
+def test_derivative_direction_still_takes_real_numbers():
+    from fractions import Fraction
+
+    p = _patch()
+    a = p.derivative([[0.2, 0.3, 0.5]], (np.float64(0.5), Fraction(-1, 2), 0))
+    b = p.derivative([[0.2, 0.3, 0.5]], (0.5, -0.5, 0.0))
+    assert np.array_equal(a, b)
+
+
+@pytest.mark.parametrize("t,exc,msg", [([float("nan")], ValueError, "t must be finite"),
+                                       ([1j], TypeError, "t entries must be a real number"),
+                                       (0.5 + 1j, TypeError, "t must be a real number"),
+                                       (["0.5"], TypeError, "t entries must be"),
+                                       ([0.5, 2.0], ValueError, r"\[0, alpha\]"), ([-0.1], ValueError, "alpha")])
+def test_boundary_curve_checks_t(t, exc, msg):
+    """Before: NaN gave NaN points, complex values raw float() errors."""
+    with pytest.raises(exc, match=msg):
+        _patch().boundary_curve("u=0", t)
+
+
+def test_boundary_curve_in_range_unchanged():
+    p = _patch()
+    assert p.boundary_curve("u=0", [0.0, 0.5, 1.0]).shape == (3, 3)
+    assert np.allclose(p.boundary_curve("u=0", [0.0])[0], p([[0.0, 1.0, 0.0]])[0])
+
+
+def _alternating():
+    state = {"k": 0}
+
+    def surface(u, v, w):
+        state["k"] += 1
+        return [u, v] if state["k"] % 2 else [u]
+
+    return surface
+
+
+@pytest.mark.parametrize("arith,surface,exc,msg", [
+    ("mp", lambda u, v, w: [u + 1j, v], TypeError, "surface coordinates .* complex"),
+    ("mp", "alternating", ValueError, "surface returned .* same number"),
+    ("mp", lambda u, v, w: ["a", v], TypeError, "surface coordinates .* string"),
+    ("mp", lambda u, v, w: 3.0, TypeError, "surface must return a sequence of coordinates"),
+    ("exact", lambda t: [float("nan"), t.sin(0, 1, 0)], ValueError, "surface coordinates .* finite"),
+    ("exact", lambda t: ["1/2", t.sin(0, 1, 0)], TypeError, "surface coordinates .* string"),
+    ("exact", lambda t: [1j, t.sin(0, 1, 0)], TypeError, "surface coordinates .* complex"),
+])
+def test_fit_checks_what_the_surface_returns(arith, surface, exc, msg):
+    """Before: mpmath's and flint's own words (IndexError: matrix index out of range, cannot create mpf from 'a',
+    expected a finite number), and '1/2' silently read as a rational."""
+    from paper_repro.core.domain import rational_alpha
+    from paper_repro.surfaces.fitting import fit
+
+    if surface == "alternating":
+        surface = _alternating()
+    alpha = rational_alpha((1, 3)) if arith == "exact" else 1.0
+    with pytest.raises(exc, match=msg):
+        fit(surface, 1, alpha, arith)
+
+
+@pytest.mark.parametrize("p", [4, 2**31 - 3, 9, 2**31 - 2])
+def test_modp_refuses_composite_moduli(p):
+    from paper_repro.core.context import get_context
+
+    with pytest.raises(ValueError, match="composite"):
+        get_context("modp", p=p)
+
+
+def test_modp_takes_primes():
+    from paper_repro.core.context import get_context
+
+    assert get_context("modp", p=3).p == 3 and get_context("modp", p=2**31 - 1).p == 2**31 - 1
+
+
+def test_raw_messages_replaced():
+    """Before: 'need at least one array to concatenate', ''NoneType' object has no attribute 'strip'',
+    'expected non-negative integer', 'unhashable type: 'list'', ''float' object is not iterable'."""
+    from paper_repro.core.domain import RationalPoints, rational_alpha, sample_points
+    from paper_repro.core.labels import full_system, parse_label, united_system
+    from paper_repro.surfaces.patch import merge_meshes
+
+    with pytest.raises(ValueError, match="meshes must be a non-empty list"):
+        merge_meshes([])
+    with pytest.raises(TypeError, match="label must be a string"):
+        parse_label(None)
+    with pytest.raises(ValueError, match="seed must be an integer >= 0"):
+        sample_points(1.0, 5, seed=-1)
+    with pytest.raises(TypeError, match="n must be a positive integer"):
+        united_system([2])
+    with pytest.raises(TypeError, match="n must be a positive integer"):
+        full_system([2], "R")
+    with pytest.raises(TypeError, match="tu must be a sequence of rationals"):
+        RationalPoints(rational_alpha((1, 2)), 0.1, 0.1)
+
+
+def test_sizes_over_budget_are_refused():
+    """Before: sample_points(1.0, 10**8) needed 2.4 GB, `labels 1000` took 93 s."""
+    from paper_repro.core.domain import sample_points
+    from paper_repro.util.limits import MAX_N_LABELS, MAX_SAMPLE_POINTS
+
+    with pytest.raises(ValueError, match="2 GB budget"):
+        sample_points(1.0, 10**8)
+    assert sample_points(1.0, 3).shape == (3, 3) and MAX_SAMPLE_POINTS < 10**8
+    r = subprocess.run([sys.executable, "-m", "paper_repro", "labels", "1000"], capture_output=True, text=True,
+                       timeout=60, cwd=ROOT)
+    assert r.returncode == 2 and f"from 1 to {MAX_N_LABELS}" in r.stderr and not r.stdout
+
+
+# --- item 4: float coefficients rounded from certified digits ---------------------------------------------------------
+
+U53 = 2.0 ** -53  # the largest relative error of a correctly rounded float64
+
+
+@pytest.mark.parametrize("n,alpha,dps", [(6, 1e-17, 450), (2, 1e-60, 450), (1, 1e-150, 700), (3, 1.0, 60),
+                                         (4, 3.1415926, 80)])
+def test_float_coefficients_are_correctly_rounded_at_float_alpha(n, alpha, dps):
+    """Against the collocation solve in mpmath at ``dps`` digits (independent of the formula: a linear solve at
+    alpha-independent points).  Before: 3.4e-13 relative (n = 6, 1e-17), 8e-14 (n = 2, 1e-60), 4.9e-14 (n = 1,
+    1e-150): the division by s^(2n+j) went subnormal, or through exp(log)."""
+    import mpmath
+
+    from paper_repro.core.context import MpContext
+    from paper_repro.core.normalization import orbit_coefficients, orbit_coefficients_collocation
+
+    with mpmath.workdps(dps):
+        ref = orbit_coefficients_collocation(n, mpmath.mpf(alpha), MpContext(dps=dps))
+        got = orbit_coefficients(n, alpha)
+        assert all(isinstance(g, float) for g in got)
+        assert max(abs((g - r) / r) for g, r in zip(got, ref)) <= U53
+
+
+@pytest.mark.parametrize("n,t", [(1, (999999, 1000000)), (2, (999, 1000)), (3, (1, 10**12)), (2, (1, 3))])
+def test_float_coefficients_at_a_rational_angle_use_the_exact_angle(n, t):
+    """Against the exact collocation solve (rationals, no formula), rounded once by Python: the same floats.
+    Before: the float path computed at float(alpha), 2.3e-11 relative off at t = 999999/1000000."""
+    from fractions import Fraction
+
+    from paper_repro.core.domain import rational_alpha
+    from paper_repro.core.normalization import coefficients, exact_coefficients_cached, orbits
+
+    alpha = rational_alpha(t)
+    exact, _ = exact_coefficients_cached(n, alpha)
+    got = coefficients(n, alpha)
+    for (rep, _), x in zip(orbits(n), exact):
+        assert got[rep.coefficient] == float(Fraction(int(x.p), int(x.q)))
+
+
+def test_scaled_float_coefficients_are_certified_too():
+    from fractions import Fraction
+
+    from paper_repro.core.domain import rational_alpha
+    from paper_repro.core.normalization import coefficients
+
+    alpha = rational_alpha((1, 10**9))
+    ex = coefficients(3, alpha, "exact", scaled=True)
+    got = coefficients(3, alpha, scaled=True)
+    assert all(got[k] == float(Fraction(int(v.p), int(v.q))) for k, v in ex.items())
