@@ -97,6 +97,28 @@ def test_bad_elevation_entry_is_recomputed_with_one_warning(fresh_cache, change,
         assert np.array_equal(el.elevate(net, n, 1.0), good)
 
 
+@pytest.mark.parametrize("change", [_drop_row, _nan_row, lambda v: [], lambda v: {**v, "rows": "x"}],
+                         ids=["missing-row", "nan-row", "empty", "text"])
+def test_bad_matrix_entry_generic(fresh_cache, change):
+    """The same cases through cached() alone (any user of a hex-float matrix, whatever elevation becomes)."""
+    rows = [[float(i + j).hex() for j in range(3)] for i in range(4)]
+    calls = []
+
+    def compute():
+        calls.append(1)
+        return {"rows": rows}
+
+    check = cache.hex_rows(4, 3)
+    assert cache.cached("m", {"k": 1}, compute, validate=check) == {"rows": rows}
+    (path,) = (fresh_cache / "m").glob("*.json")
+    _tamper(path, change, rechecksum=True)
+    with warnings.catch_warnings(record=True) as rec:
+        warnings.simplefilter("always")
+        assert cache.cached("m", {"k": 1}, compute, validate=check) == {"rows": rows}
+    assert len(calls) == 2 and len(_cache_warnings(rec)) == 1
+    assert json.loads(path.read_text())["value"] == {"rows": rows}  # rewritten
+
+
 @pytest.mark.parametrize("text", ["[]", "", "{", "null", '{"name": "elevation_matrix"}'])
 def test_unparsable_entry_is_recomputed(fresh_cache, text):
     """Before: a file holding ``[]`` raised AttributeError ('list' object has no attribute 'get')."""
