@@ -52,3 +52,86 @@ def test_gallery_is_offline_and_renders_math():
     assert not external, external
     assert "<math" in page and "r_{4,3,1}" not in page.split("<h2 id=\"figures\">")[1].split("</figure>")[0]
     assert "vendor/plotly.min.js" in page
+
+
+# --- issue 31, item 3: the CLI refuses before it works --------------------------------------------------------------
+
+def _no_work(monkeypatch):
+    """Make any computation an error: the refusal must come before it."""
+    from paper_repro.app import report
+
+    def boom(*a, **k):
+        raise AssertionError("computation started before the refusal")
+
+    monkeypatch.setattr(report, "run_claims", boom)
+    monkeypatch.setattr(report, "make_figures", boom)
+
+
+@pytest.mark.parametrize("env,args,msg", [
+    ({"PAPER_REPRO_KERNEL": "bogus"}, ("claims", "--only", "dimension", "--n", "2"), "PAPER_REPRO_KERNEL"),
+    ({"PAPER_REPRO_THREADS": "abc"}, ("claims", "--only", "dimension", "--n", "2"), "PAPER_REPRO_THREADS"),
+    ({"PAPER_REPRO_THREADS": "0"}, ("figures", "--only", "oriented_graph"), "PAPER_REPRO_THREADS"),
+    ({}, ("claims", "--out", ""), "--out must name a folder"),
+    ({}, ("figures", "--out", "{afile}"), "is a file, not a folder"),
+    ({}, ("reproduce", "--out", "{afile}"), "is a file, not a folder"),
+    ({"PAPER_REPRO_CACHE": "{afile}"}, ("claims", "--only", "dimension", "--n", "2"), "cache folder cannot be written"),
+])
+def test_cli_refuses_bad_environment_before_work(tmp_path, monkeypatch, capsys, env, args, msg):
+    """Before: claims reported FAIL (exit 1), figures --out <file> printed a traceback, --out "" wrote into the
+    clone."""
+    from paper_repro.app.cli import main
+    from paper_repro.util import cache
+
+    afile = tmp_path / "afile"
+    afile.write_text("x")
+    monkeypatch.setattr(cache, "CACHE_DIR", None)
+    monkeypatch.delenv("PAPER_REPRO_NO_CACHE", raising=False)
+    monkeypatch.delenv("PAPER_REPRO_OUT", raising=False)
+    for k, v in env.items():
+        monkeypatch.setenv(k, v.format(afile=afile))
+    _no_work(monkeypatch)
+    assert main([a.format(afile=afile) for a in args]) == 2
+    err = capsys.readouterr().err.strip()
+    assert msg in err and len(err.splitlines()) == 1
+
+
+def test_cli_refuses_readonly_out_and_cache(tmp_path):
+    """Before: claims --out <read-only> computed for over 600 s, then failed; a read-only cache made claims FAIL."""
+    import os
+    import shutil
+
+    if os.geteuid() == 0 and shutil.which("unshare") is None:
+        pytest.skip("root without unshare: no folder is read-only")
+    ro = tmp_path / "ro"
+    ro.mkdir()
+    ro.chmod(0o555)
+    pre = ["unshare", "--user"] if os.geteuid() == 0 else []
+    env = {**os.environ, "PAPER_REPRO_CACHE": str(tmp_path / "cache")}
+    env.pop("PAPER_REPRO_NO_CACHE", None)
+    r = subprocess.run([*pre, sys.executable, "-m", "paper_repro", "claims", "--out", str(ro)], capture_output=True,
+                       text=True, env=env, timeout=120)
+    assert r.returncode == 2 and "--out: cannot write there: Permission denied" in r.stderr, r.stderr
+    assert len(r.stderr.strip().splitlines()) == 1 and "claims" not in r.stdout
+    env["PAPER_REPRO_CACHE"] = str(ro)
+    r = subprocess.run([*pre, sys.executable, "-m", "paper_repro", "claims", "--only", "dimension", "--n", "2"],
+                       capture_output=True, text=True, env=env, timeout=120)
+    assert r.returncode == 2 and "cache folder cannot be written" in r.stderr, r.stderr
+
+
+@pytest.mark.parametrize("alpha", ["1e-300", "1e-17", "3.14159265358"])
+def test_cli_refuses_alpha_outside_a_claims_measured_range(monkeypatch, capsys, alpha):
+    """Before: claims --only linear_independence --alpha 1e-300 (or 1e-17) --n 2 reported FAIL for a true claim."""
+    from paper_repro.app.cli import main
+
+    _no_work(monkeypatch)
+    assert main(["claims", "--only", "linear_independence", "--alpha", alpha, "--n", "2"]) == 2
+    err = capsys.readouterr().err
+    assert "linear_independence" in err and "[1e-06, 3.1415926]" in err
+
+
+def test_alpha_range_declared_in_registration():
+    from paper_repro.util.registry import ALPHA_RANGES, CLAIMS, check_cli_range, load_all
+
+    load_all()
+    assert ALPHA_RANGES["linear_independence"][:2] == (1e-6, 3.1415926)
+    check_cli_range(CLAIMS["linear_independence"], 2, 0.5)  # inside: accepted

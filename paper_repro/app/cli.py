@@ -117,6 +117,45 @@ def main(argv: list[str] | None = None) -> int:
             signal.signal(signal.SIGINT, previous)
 
 
+#: Commands that write below the output root (``claims`` only in a full run: a partial run prints).
+WRITES = ("figures", "reproduce", "paper")
+#: Commands that compute (and use the cache and the kernel).
+COMPUTES = ("claims", "figures", "reproduce", "paper")
+
+
+def _check_environment(args: argparse.Namespace) -> None:
+    """Refuse, before any work, what would make the run fail late (issue 31): a bad ``PAPER_REPRO_KERNEL`` or
+    ``PAPER_REPRO_THREADS``, an ``--out`` that is empty, a file or not writable, the output root of a command that
+    writes when it is not writable, and an unwritable cache folder.  ``ValueError`` with one line."""
+    import os
+
+    from paper_repro.core import fast, fast_jit
+    from paper_repro.util import cache
+    from paper_repro.util.io import output_root, unwritable
+
+    if getattr(args, "list", False):
+        return
+    fast_jit.available()  # ValueError naming PAPER_REPRO_KERNEL
+    fast.threads()  # ValueError naming PAPER_REPRO_THREADS
+    out = getattr(args, "out", None)
+    if out is not None:
+        if not out.strip():
+            raise ValueError("--out must name a folder, got an empty string")
+        why = unwritable(os.path.expanduser(out))
+        if why:
+            raise ValueError(f"--out: cannot write there: {why}")
+    full_claims = args.cmd == "claims" and not (args.only or args.n is not None or args.alpha is not None)
+    if out is None and (args.cmd in WRITES or full_claims):
+        why = unwritable(output_root())
+        if why:
+            raise ValueError(f"the output folder cannot be written: {why}; give --out DIR")
+    if args.cmd in COMPUTES and cache.enabled():
+        why = cache.unusable()
+        if why:
+            raise ValueError(f"the cache folder cannot be written: {why}; set {cache.CACHE_ENV} to a writable folder "
+                             f"or {cache.NO_CACHE_ENV}=1")
+
+
 def _main(argv: list[str] | None = None) -> int:
     parser = _Parser(prog="python -m paper_repro", description=__doc__,
                      formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -145,7 +184,12 @@ def _main(argv: list[str] | None = None) -> int:
                         description="The paper labels of T_{2n}: internal index, label, level and monomial.")
     pl.add_argument("n", type=int, help="the order n (T_{2n} has 3n(n+1)+1 functions)")
     args = parser.parse_args(argv)
-    if getattr(args, "out", None):
+    try:
+        _check_environment(args)
+    except ValueError as exc:
+        print(f"error: {str(exc).splitlines()[0]}", file=sys.stderr)
+        return 2
+    if getattr(args, "out", None) is not None:
         from paper_repro.util.io import set_output_root
 
         set_output_root(args.out)
@@ -154,9 +198,12 @@ def _main(argv: list[str] | None = None) -> int:
         return _list(args.cmd)
     try:
         if args.cmd == "labels":
+            from paper_repro.util.limits import MAX_N_LABELS, check_int
             from paper_repro.util.validation import check_n
 
-            for k, lab in enumerate(united_system(check_n(args.n, "N"))):
+            n = check_int(check_n(args.n, "N"), "N", 1, MAX_N_LABELS,
+                          why="3N(N+1)+1 lines, time grows as N^2: N = 1000 took 93 s")
+            for k, lab in enumerate(united_system(n)):
                 e = exponents(lab)
                 mono = " ".join(f"{SLOTS[s]}^{e[s]}" for s in range(6) if e[s])
                 print(f"{k:4d}  {lab.paper:14s} level {lab.j}  {mono}")

@@ -338,9 +338,12 @@ def _up_to_date(fid: str, data_fp: str) -> bool:
     key = _figure_key(fid, data_fp)
     if not cache.enabled() or not key.exists():
         return False
-    recorded = json.loads(key.read_text())
+    try:
+        recorded = json.loads(key.read_text())
+    except (OSError, ValueError):  # a bad record only means the figure is redrawn (and the record rewritten)
+        return False
     files = figure_files(FIGURE_REGISTRY[fid])
-    return all(p.exists() and recorded.get(p.name) == sha256_of(p) for p in files)
+    return isinstance(recorded, dict) and all(p.exists() and recorded.get(p.name) == sha256_of(p) for p in files)
 
 
 def make_figures(only: list[str] | None, executor=None) -> list[Path]:
@@ -355,7 +358,11 @@ def make_figures(only: list[str] | None, executor=None) -> list[Path]:
     written = [p for paths in sweep(_make_one, ids, executor=executor, initializer=load_all, desc="figures")
                for p in paths]
     for fid in ids if cache.enabled() else ():
-        write_json(_figure_key(fid, data_fp), {p.name: sha256_of(p) for p in figure_files(FIGURE_REGISTRY[fid])})
+        try:
+            write_json(_figure_key(fid, data_fp), {p.name: sha256_of(p) for p in figure_files(FIGURE_REGISTRY[fid])})
+        except OSError as exc:  # an unwritable cache: the figures are made, only not remembered
+            cache.warn_unusable(f"{exc.strerror or type(exc).__name__} ({cache.cache_dir()})")
+            break
     manifest = build_manifest()
     write_json(figures_dir() / "manifest.json", manifest)
     from paper_repro.app.gallery import write_gallery

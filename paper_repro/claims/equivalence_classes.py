@@ -14,7 +14,7 @@ from paper_repro.core.fourier import (
 )
 from paper_repro.core.labels import delta
 from paper_repro.printed.coincidence import EXAMPLES_N3, PRINTED_V2
-from paper_repro.util.cache import cached
+from paper_repro.util.cache import cached, keys_and_types
 from paper_repro.util.registry import Outcome, claim
 
 
@@ -28,6 +28,11 @@ def per_n(n: int) -> dict:
             "functions_in_V": len(v_system(n)), "delta_n": delta(n)}
 
 
+#: The fields of a stored per-n record (validated before a cached record is used).
+_RECORD = keys_and_types(classes=int, new_classes=int, representatives_distinct=bool,
+                         representatives_are_the_new_classes=bool, transitive=bool, functions_in_V=int, delta_n=int)
+
+
 @claim("equivalence_classes", paper_ref=["equivalence_relation_definition", "equivalence_conditions_1",
                                          "equivalence_conditions_2", "iterative_construction_of_trivariate_extension",
                                          "dimension"],
@@ -37,7 +42,8 @@ def per_n(n: int) -> dict:
                  "(n = 2, 3) hold.",
        kind="proof", n_max=30)
 def run(n_max: int) -> Outcome:
-    rows = {str(n): cached("equivalence_classes", {"n": n}, lambda n=n: per_n(n)) for n in range(1, n_max + 1)}
+    rows = {str(n): cached("equivalence_classes", {"n": n}, lambda n=n: per_n(n), validate=_RECORD)
+            for n in range(1, n_max + 1)}
     bad = [n for n, r in rows.items() if not (r["new_classes"] == 3 * int(n) and r["representatives_distinct"]
                                               and r["representatives_are_the_new_classes"]
                                               and r["functions_in_V"] == r["delta_n"]

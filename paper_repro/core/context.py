@@ -422,6 +422,10 @@ class ModpContext(Context):
     def __post_init__(self) -> None:
         if isinstance(self.p, bool) or not isinstance(self.p, numbers.Integral) or not (2 < self.p < 2**31):
             raise ValueError(f"p must be a prime with 2 < p < 2**31, got {self.p!r}")
+        from flint import fmpz
+
+        if not fmpz(int(self.p)).is_prime():  # a composite modulus has zero divisors: ranks mod p would mean nothing
+            raise ValueError(f"p must be a prime with 2 < p < 2**31, got the composite number {int(self.p)}")
 
     def convert(self, x):
         if isinstance(x, (int, np.integer)) and not isinstance(x, (bool, np.bool_)):

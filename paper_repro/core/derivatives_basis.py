@@ -56,10 +56,12 @@ def check_direction(direction) -> tuple:
         raise TypeError(f"direction must be a name or a triple (du, dv, dw), got {direction!r}") from None
     if len(d) != 3:
         raise ValueError(f"direction must have 3 components (du, dv, dw), got {len(d)}")
+    from paper_repro.util.limits import real_scalar
+
     try:
-        fl = [float(x) for x in d]
+        fl = [float(real_scalar(x, "direction components")) for x in d]  # no booleans, strings, complex numbers
     except (TypeError, ValueError):
-        raise TypeError("direction components must be real numbers") from None
+        raise TypeError(f"direction components must be real numbers (not booleans or strings), got {d!r}") from None
     except OverflowError:
         raise ValueError("direction components must be finite floats (at most about 1.8e308 in size)") from None
     if not all(np.isfinite(fl)) or abs(sum(fl)) > 1e-12 * max(abs(x) for x in fl):

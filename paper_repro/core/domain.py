@@ -21,7 +21,7 @@ import numpy as np
 from flint import fmpq
 
 from paper_repro.core.context import Context, ExactContext, FloatContext
-from paper_repro.util.limits import MAX_RATIONAL_POINTS, check_int, check_real_array
+from paper_repro.util.limits import MAX_RATIONAL_POINTS, MAX_SAMPLE_POINTS, check_int, check_real_array
 from paper_repro.util.validation import DOMAIN_TOL, check_alpha, parse_alpha
 
 
@@ -118,6 +118,10 @@ class RationalPoints:
     check: bool = True
 
     def __post_init__(self) -> None:
+        for name in ("tu", "tv"):
+            seq = getattr(self, name)
+            if isinstance(seq, (str, bytes)) or not hasattr(seq, "__iter__"):
+                raise TypeError(f"points: {name} must be a sequence of rationals (one per point), got {seq!r}")
         object.__setattr__(self, "tu", tuple(_q(x) for x in self.tu))
         object.__setattr__(self, "tv", tuple(_q(x) for x in self.tv))
         if len(self.tu) != len(self.tv):
@@ -305,10 +309,10 @@ def barycentric_to_uvw(alpha, bary) -> np.ndarray:
     return float(alpha) * b
 
 
-def check_count(count, name: str = "count", limit: int = 10**8) -> int:
+def check_count(count, name: str = "count", limit: int = 10**8, why: str = "") -> int:
     """A number of points: an integer from 0 to ``limit`` (larger requests would not fit in memory)."""
     if isinstance(count, bool) or not isinstance(count, (int, np.integer)) or not 0 <= count <= limit:
-        raise ValueError(f"{name} must be an integer from 0 to {limit}, got {count!r}")
+        raise ValueError(f"{name} must be an integer from 0 to {limit}, got {count!r}" + (f" ({why})" if why else ""))
     return int(count)
 
 
@@ -318,11 +322,11 @@ def sample_points(alpha, count: int, seed: int = 0, interior: bool = True) -> np
     >>> sample_points(1.0, -1)
     Traceback (most recent call last):
     ...
-    ValueError: count must be an integer from 0 to 100000000, got -1
+    ValueError: count must be an integer from 0 to 30000000, got -1 (about 52 bytes per point at the peak: 2 GB budget)
     """
     alpha = parse_alpha(alpha)
-    check_count(count)
-    rng = np.random.default_rng(seed)
+    check_count(count, limit=MAX_SAMPLE_POINTS, why="about 52 bytes per point at the peak: 2 GB budget")
+    rng = np.random.default_rng(check_int(seed, "seed", 0))
     bary = rng.dirichlet(np.ones(3), size=count)
     if interior:
         bary = 0.98 * bary + 0.02 / 3

@@ -346,23 +346,84 @@ def _derivs_impl(S, C, pa, pb, var_of, smax, cmax, idx, net, s2, dirs, values, o
 
 
 _COMPILED: dict | None = None
+#: numba cache files found bad in this process (one warning for all of them)
+_BAD_CACHE: list[str] = []
+
+
+def _safe_cache_class():
+    """A numba ``FunctionCache`` that never lets a corrupted cache file reach the user: a truncated, empty or garbage
+    ``.nbi``/``.nbc`` (``UnpicklingError``, ``EOFError``, or any error while rebuilding) is deleted, the function is
+    compiled afresh and its cache rewritten, with one :class:`~paper_repro.util.cache.CacheWarning` per process; a
+    cache that cannot be saved is skipped."""
+    import glob
+    import warnings
+
+    from numba.core.caching import FunctionCache
+
+    from paper_repro.util.cache import CacheWarning
+
+    class SafeFunctionCache(FunctionCache):
+        def _drop(self, exc: BaseException) -> None:
+            cache_file = self._cache_file
+            index = cache_file._index_path
+            stem = index[: -len(".nbi")]
+            for path in [index, *glob.glob(glob.escape(stem) + ".*.nbc")]:
+                try:
+                    os.unlink(path)
+                except OSError:
+                    pass
+            if not _BAD_CACHE:
+                warnings.warn(f"numba's cache of the compiled kernel was unreadable ({type(exc).__name__}: {exc}, "
+                              f"{os.path.dirname(index)}): recompiled and rewritten", CacheWarning, stacklevel=2)
+            _BAD_CACHE.append(index)
+
+        def load_overload(self, sig, target_context):
+            try:
+                return super().load_overload(sig, target_context)
+            except Exception as exc:  # noqa: BLE001 - any failure to read the cache means: compile
+                self._drop(exc)
+                return None
+
+        def save_overload(self, sig, data):
+            try:
+                super().save_overload(sig, data)
+            except Exception as exc:  # noqa: BLE001 - a cache that cannot be written is only skipped
+                self._drop(exc)
+
+    return SafeFunctionCache
 
 
 def _compiled() -> dict:
     """The compiled functions, built on first use.  numba's on-disk cache goes to ``<cache_dir>/numba``
     (:func:`paper_repro.util.cache.cache_dir`; ``NUMBA_CACHE_DIR`` if set), never into the install location:
     a fresh process loads them in a fraction of a second instead of compiling for about 10 s.  With
-    ``PAPER_REPRO_NO_CACHE`` set nothing is written (every process compiles).  No fast-math: no reassociation, no
-    fused multiply-add, so the bits do not depend on the CPU's instruction set."""
+    ``PAPER_REPRO_NO_CACHE`` set, or a cache folder that cannot be written (one
+    :class:`~paper_repro.util.cache.CacheWarning`), nothing is written and every process compiles; a corrupted cache
+    file is recompiled and rewritten (:func:`_safe_cache_class`).  No fast-math: no reassociation, no fused
+    multiply-add, so the bits do not depend on the CPU's instruction set."""
     global _COMPILED
     if _COMPILED is None:
         import numba
 
-        from paper_repro.util.cache import cache_dir, enabled
+        from paper_repro.util.cache import cache_dir, enabled, unusable, warn_unusable
 
-        if not os.environ.get("NUMBA_CACHE_DIR"):
-            setattr(numba.config, "CACHE_DIR", str(cache_dir() / "numba"))  # noqa: B010 (config has no stubs)
-        jit = numba.njit(nogil=True, cache=enabled(), fastmath=False, error_model="numpy")
+        use_cache = enabled()
+        if use_cache and not os.environ.get("NUMBA_CACHE_DIR"):
+            folder = cache_dir() / "numba"
+            why = unusable(folder)
+            if why is None:
+                setattr(numba.config, "CACHE_DIR", str(folder))  # noqa: B010 (config has no stubs)
+            else:  # numba would fall back to __pycache__ beside the package, i.e. the install location
+                warn_unusable(why)
+                use_cache = False
+        safe = _safe_cache_class() if use_cache else None
+
+        def jit(func):
+            disp = numba.njit(nogil=True, cache=False, fastmath=False, error_model="numpy")(func)
+            if safe is not None:
+                disp._cache = safe(func)  # what ``cache=True`` does (Dispatcher.enable_caching), with checks
+            return disp
+
         g = globals()
         for name in ("_powers_tile", "_tables", "_dtables", "_vgroup", "_coefs", "_d1_k3", "_d1z_k3", "_d2_k3",
                      "_uv_k3"):

@@ -117,17 +117,26 @@ def exponents(label: BasisLabel) -> tuple[int, ...]:
     return compose(r_exponents(label.n, label.i, label.j), CYCLIC[label.color])
 
 
-@cache
 def full_system(n: int, color: str) -> tuple[BasisLabel, ...]:
     """The full system ``R_{2n}``, ``G_{2n}`` or ``B_{2n}`` (eqs. R_system..B_system), (n+1)^2 labels."""
-    check_n(n)
+    if color not in COLORS:
+        raise ValueError(f"color must be one of {list(COLORS)}, got {color!r}")
+    return _full_system(check_n(n), color)
+
+
+@cache
+def _full_system(n: int, color: str) -> tuple[BasisLabel, ...]:
     return tuple(BasisLabel(color, n, i, j) for j in range(n + 1) for i in range(j, 2 * n - j + 1))
 
 
-@cache
 def united_system(n: int) -> tuple[BasisLabel, ...]:
-    """The labels of ``T_{2n}`` (eq. united_system) in the package's internal order."""
-    check_n(n)
+    """The labels of ``T_{2n}`` (eq. united_system) in the package's internal order (``n`` checked before the
+    memo's lookup: an unhashable ``n`` gets the message of :func:`check_n`)."""
+    return _united_system(check_n(n))
+
+
+@cache
+def _united_system(n: int) -> tuple[BasisLabel, ...]:
     labels = [BasisLabel("R", n, n, n)]
     for color in COLORS:
         labels += [BasisLabel(color, n, i, j) for j in range(n) for i in range(j, 2 * n - j)]
@@ -190,6 +199,8 @@ _LABEL_RE = re.compile(r"^([RGBrgb])_\{?(\d+),(\d+),(\d+)\}?$")
 
 def parse_label(text: str) -> BasisLabel:
     """Parse ``'R_{4,3,1}'``, ``'g_{6,5,0}'`` or ``'R_4,3,1'`` into a :class:`BasisLabel`."""
+    if not isinstance(text, str):
+        raise TypeError(f"label must be a string like 'R_{{4,3,1}}', got {text!r} of type {type(text).__name__}")
     m = _LABEL_RE.match(text.strip())
     if not m:
         raise ValueError(f"label {text!r} is not of the form X_{{2n,2n-i,j}} with X in R, G, B")

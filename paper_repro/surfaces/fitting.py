@@ -57,6 +57,50 @@ def exact_trig_points(pts: RationalPoints) -> list[ExactTrig]:
     return [ExactTrig([(c[k], s[k]) for c, s in full]) for k in range(len(pts))]
 
 
+def surface_coordinates(rows, exact: bool) -> list[list]:
+    """What a surface returned at each point, checked: a sequence (not text) of the same number (>= 1) of real
+    finite coordinates at every point -- rationals (``fmpq``, ``int``, ``Fraction``; a finite float is its binary
+    value) in exact arithmetic.  ``TypeError``/``ValueError`` naming ``surface`` and the point otherwise (complex,
+    text, a changing coordinate count, NaN: mpmath's and flint's own words reached the user).
+
+    >>> surface_coordinates([[1, 2], (3, 4)], exact=False)
+    [[1, 2], [3, 4]]
+    >>> surface_coordinates([[1, 2], [3]], exact=False)
+    Traceback (most recent call last):
+    ...
+    ValueError: surface returned 1 coordinate(s) at point 1 but 2 at point 0: it must return the same number everywhere
+    """
+    import math
+    from fractions import Fraction
+
+    import mpmath
+
+    from paper_repro.util.limits import real_scalar
+
+    out: list[list] = []
+    for k, row in enumerate(rows):
+        if isinstance(row, (str, bytes)) or not hasattr(row, "__iter__"):
+            raise TypeError(f"surface must return a sequence of coordinates, got {row!r} at point {k}")
+        row = list(row)
+        if not row:
+            raise ValueError(f"surface returned no coordinates at point {k}")
+        if out and len(row) != len(out[0]):
+            raise ValueError(f"surface returned {len(row)} coordinate(s) at point {k} but {len(out[0])} at point 0: "
+                             "it must return the same number everywhere")
+        for x in row:
+            x = real_scalar(x, f"surface coordinates (point {k})")
+            if exact and not isinstance(x, (int, float, Fraction, fmpq)) and type(x).__name__ != "fmpz":
+                raise TypeError(f"surface coordinates (point {k}) must be exact rationals in exact arithmetic, got "
+                                f"{type(x).__name__}")
+            finite = math.isfinite(x) if isinstance(x, float) else \
+                bool(mpmath.isfinite(x)) if type(x).__name__ == "mpf" else \
+                x.is_finite() if type(x).__name__ == "arb" else True
+            if not finite:
+                raise ValueError(f"surface coordinates (point {k}) must be finite, got {x!r}")
+        out.append(row)
+    return out
+
+
 def fit_exact(surface: Callable[[ExactTrig], list[fmpq]], n: int, alpha: RationalAngle, verify: int = 4,
               seed: int = 21) -> list[list[fmpq]]:
     """Exact control net (rows in internal order) of ``surface``, a function of :class:`ExactTrig`.
@@ -71,7 +115,7 @@ def fit_exact(surface: Callable[[ExactTrig], list[fmpq]], n: int, alpha: Rationa
     def system(k: int):
         pts = sample_rational_points(alpha, d + verify, seed=seed + k)
         basis = evaluate_normalized(n, alpha, pts, _EXACT)
-        return basis, _EXACT.asarray([list(surface(t)) for t in exact_trig_points(pts)])
+        return basis, _EXACT.asarray(surface_coordinates([surface(t) for t in exact_trig_points(pts)], exact=True))
 
     try:
         net = collocate(_EXACT, system, d, what="fit").solution
@@ -101,7 +145,7 @@ def fit_mp(surface: Callable, n: int, alpha, dps: int = 40, verify: int = 4, see
             a = ctx.convert(alpha)
             pts = mp_domain_points(a, d + verify, seed + k)
             basis = evaluate_normalized(n, a, pts, ctx)
-            return basis, np.array([list(surface(*p)) for p in pts], dtype=object)
+            return basis, np.array(surface_coordinates([surface(*p) for p in pts], exact=False), dtype=object)
 
     try:
         res = collocate(ctx, system, d, what="fit", rtol=10.0 ** (-(tol_digits or dps - 15)))

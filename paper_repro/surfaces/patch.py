@@ -462,13 +462,38 @@ class Patch:
         t is w on u=0, u on v=0, v on w=0."""
         from paper_repro.core.univariate import A
 
-        a = A(self.n, float(self.alpha), np.asarray(t, dtype=np.float64))  # columns A_{2n,0..2n}
+        a = A(self.n, float(self.alpha), check_curve_parameter(t, float(self.alpha)))  # columns A_{2n,0..2n}
         return ordered_matmul(a[:, ::-1], self.boundary_net(edge))  # the same bits on every CPU (not BLAS)
 
     def mesh(self, resolution: int = 16, normals: bool = False):
         """Triangle mesh on a barycentric grid: ``(vertices (V, d), faces (F, 3))``, and the unit vertex
         normals ``(V, 3)`` as a third item when ``normals`` (3-D nets; see :meth:`normals`)."""
         return mesh_of(self, resolution, normals)
+
+
+def check_curve_parameter(t, alpha: float) -> np.ndarray:
+    """``t`` as a float64 array of real, finite values in ``[0, alpha]`` (within the domain tolerance);
+    ``TypeError``/``ValueError`` naming ``t`` otherwise (NaN gave NaN points, complex values raw errors).
+
+    >>> check_curve_parameter([0, 0.5], 1.0).tolist()
+    [0.0, 0.5]
+    """
+    from paper_repro.util.limits import check_real_array
+    from paper_repro.util.validation import DOMAIN_TOL
+
+    if np.ndim(t) == 0:
+        from paper_repro.util.limits import real_scalar
+
+        real_scalar(t, "t")
+    else:
+        check_real_array(t, "t")
+    arr = np.asarray(t, dtype=np.float64)
+    if not np.isfinite(arr).all():
+        raise ValueError("t must be finite (NaN or infinite values given)")
+    tol = DOMAIN_TOL * alpha
+    if arr.size and (arr.min() < -tol or arr.max() > alpha + tol):
+        raise ValueError(f"t must lie in [0, alpha] = [0, {alpha!r}], got values from {arr.min()!r} to {arr.max()!r}")
+    return arr
 
 
 def triangle_grid(resolution: int) -> tuple[np.ndarray, np.ndarray]:
@@ -506,6 +531,14 @@ def mesh_of(patch: Patch, resolution: int = 16, normals: bool = False):
 
 def merge_meshes(meshes: list[tuple[np.ndarray, ...]]) -> tuple[np.ndarray, ...]:
     """Concatenate meshes ``(vertices, faces[, normals])`` (vertices are not welded)."""
+    if isinstance(meshes, (str, bytes)) or not hasattr(meshes, "__iter__"):
+        raise TypeError(f"meshes must be a list of (vertices, faces[, normals]) tuples, got {type(meshes).__name__}")
+    meshes = list(meshes)
+    if not meshes:
+        raise ValueError("meshes must be a non-empty list of (vertices, faces[, normals]) tuples, got an empty list")
+    for k, m in enumerate(meshes):
+        if not isinstance(m, (tuple, list)) or len(m) not in (2, 3):
+            raise TypeError(f"meshes[{k}] must be a tuple (vertices, faces[, normals]), got {type(m).__name__}")
     verts, faces, extra, offset = [], [], [], 0
     for m in meshes:
         verts.append(m[0])

@@ -25,7 +25,7 @@ from flint import fmpq, fmpq_poly
 from paper_repro.core.domain import rational_alpha
 from paper_repro.core.normalization import orbits, parse_fmpq, solve_reduced_exact
 from paper_repro.theory.closed_form import ClosedForm, sin_power
-from paper_repro.util.cache import cached
+from paper_repro.util.cache import cached, keys_and_types, rational_text
 
 __all__ = ["ClosedForm", "sin_power"]
 
@@ -96,11 +96,28 @@ def proof_cached(n: int) -> dict:
     keep = ("proved", "independence", "unisolvence", "points", "residuals_zero", "residual_degree_bound")
     return cached("closed_form_proof", {"n": n, "forms_sha256": hashlib.sha256(text.encode()).hexdigest(),
                                         "method": "identity-v1"},
-                  lambda: {k: v for k, v in prove(n, forms).items() if k in keep})
+                  lambda: {k: v for k, v in prove(n, forms).items() if k in keep},
+                  validate=keys_and_types(proved=bool))
+
+
+def _forms_problem(n: int, value) -> str | None:
+    """Why a stored set of closed forms is bad: not one form per orbit representative of order n, a sine power
+    that is not 2n + j, or a numerator that is not a list of exact rationals."""
+    labels = {rep.coefficient: rep.j for rep, _ in orbits(n)}
+    if not isinstance(value, dict) or set(value) != set(labels):
+        return f"not one closed form per orbit representative of order {n}"
+    for lab, form in value.items():
+        if not isinstance(form, dict) or form.get("sin_power") != 2 * n + labels[lab]:
+            return f"{lab}: sine power is not {2 * n + labels[lab]}"
+        num = form.get("numerator")
+        if not isinstance(num, list) or not num or not all(rational_text(x) for x in num):
+            return f"{lab}: numerator is not a list of exact rationals"
+    return None
 
 
 def closed_forms_cached(n: int) -> dict[str, ClosedForm]:
     """:func:`recover`, memoised on disk."""
-    stored = cached("closed_forms", {"n": n}, lambda: {k: v.as_json() for k, v in recover(n).items()})
+    stored = cached("closed_forms", {"n": n}, lambda: {k: v.as_json() for k, v in recover(n).items()},
+                    validate=lambda value: _forms_problem(n, value))
     return {k: ClosedForm(k, v["sin_power"], fmpq_poly([parse_fmpq(x) for x in v["numerator"]]))
             for k, v in stored.items()}

@@ -39,6 +39,26 @@ def set_output_root(path: str | os.PathLike | None) -> None:
         os.environ[OUT_ENV] = str(Path(path).resolve())
 
 
+def unwritable(folder: str | os.PathLike) -> str | None:
+    """Why nothing can be written in ``folder`` (``None`` if it can): it is created if missing, then a file is
+    created and removed in it.  The reason is one phrase, e.g. ``'Permission denied (/data)'``.
+
+    >>> import tempfile; unwritable(tempfile.gettempdir()) is None
+    True
+    """
+    path = Path(folder)
+    if path.exists() and not path.is_dir():
+        return f"{path} is a file, not a folder"
+    try:
+        path.mkdir(parents=True, exist_ok=True)
+        fd, probe = tempfile.mkstemp(prefix=".probe-", dir=path)
+        os.close(fd)
+        os.unlink(probe)
+    except OSError as exc:
+        return f"{exc.strerror or type(exc).__name__} ({path})"
+    return None
+
+
 def output_root() -> Path:
     """Where outputs go: ``$PAPER_REPRO_OUT`` if set (``--out DIR``), else the repository root in a checkout
     (so ``make reproduce`` writes ``data/`` and ``figures/`` of the clone), else the current directory.

@@ -43,6 +43,13 @@ MAX_N_BEZIER_LIMIT = 20
 #: Mesh resolution r: (r+1)(r+2)/2 vertices, 2 r^2 faces (measured, loaded machine: r = 512 with normals, 132k
 #: vertices, in 33 s and 210 MB; the grid is built in Python, so time grows as r^2).
 MAX_MESH_RESOLUTION = 512
+#: Random float points of :func:`~paper_repro.core.domain.sample_points`: about 52 bytes per point at the peak (the
+#: Dirichlet draw and its temporaries; measured: 10^7 points in 5.6 s and 523 MB, loaded machine), so 3 x 10^7 stay
+#: below 1.6 GB (10^8 needed 2.4 GB and more).
+MAX_SAMPLE_POINTS = 30_000_000
+#: ``python -m paper_repro labels N`` prints 3N(N+1)+1 lines: time grows as N^2 (measured, loaded machine: N = 200 in
+#: 4.5 s, N = 1000 in 93 s), so N = 400 stays below about 20 s.
+MAX_N_LABELS = 400
 #: Precision of the mp arithmetic (decimal digits).
 MIN_DPS, MAX_DPS = 5, 10_000
 

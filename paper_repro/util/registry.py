@@ -24,7 +24,7 @@ from collections.abc import Callable
 from dataclasses import asdict, dataclass, field
 from typing import Any
 
-from paper_repro.util.cache import cached, code_fingerprint
+from paper_repro.util.cache import cached, code_fingerprint, keys_and_types
 
 KINDS = ("proof", "exact-evidence", "numeric-evidence")
 
@@ -124,10 +124,20 @@ FIGURE_MODULES = (
 
 
 def claim(id: str, *, paper_ref: list[str], statement: str, kind: str, extended: dict | None = None,
-          uses_results: bool = False, **defaults: Any) -> Callable[[Callable[..., Outcome]], Callable[..., Outcome]]:
-    """Register a claim function under ``id`` with default parameters ``defaults``."""
+          uses_results: bool = False, alpha_range: tuple[float, float, str] | None = None,
+          **defaults: Any) -> Callable[[Callable[..., Outcome]], Callable[..., Outcome]]:
+    """Register a claim function under ``id`` with default parameters ``defaults``.
+
+    ``alpha_range = (low, high, why)``: where the claim decides its statement at every order it runs at
+    (measured: ``tools/alpha_ranges.py``); the command line refuses ``--alpha`` outside it before any work
+    (:data:`ALPHA_RANGES`)."""
     if kind not in KINDS:
         raise ValueError(f"kind must be one of {KINDS}, got {kind!r}")
+    if alpha_range is not None:
+        lo, hi, why = alpha_range
+        if not (0 < lo < hi < 3.141592653589794 and isinstance(why, str) and why):
+            raise ValueError(f"alpha_range must be (low, high, why) with 0 < low < high < pi, got {alpha_range!r}")
+        ALPHA_RANGES[id] = (lo, hi, why)
 
     def deco(func: Callable[..., Outcome]) -> Callable[..., Outcome]:
         if id in CLAIMS:
@@ -243,6 +253,10 @@ def check_overrides(c: Claim, overrides: dict[str, Any] | None, extended: bool =
     return params
 
 
+#: The fields of a stored claim outcome (validated before a cached outcome is used).
+_OUTCOME = keys_and_types(passed=bool, measured=dict, kind=(str, type(None)), errata=list, data=dict, raw=dict)
+
+
 def run_claim(c: Claim, overrides: dict[str, Any] | None = None, extended: bool = False,
               claim_results: dict[str, dict] | None = None) -> tuple[ClaimResult, Outcome, float]:
     """Run one claim; returns its result, the raw outcome (errata, data files), and the seconds it took.
@@ -265,7 +279,7 @@ def run_claim(c: Claim, overrides: dict[str, Any] | None = None, extended: bool 
     try:
         # whole-claim cache: keyed by id, parameters and the package source (see cache.code_fingerprint)
         stored, hit = cached("claims", {"id": c.id, "params": params, "code": code_fingerprint(), **extra}, compute,
-                             report_hit=True)
+                             report_hit=True, validate=_OUTCOME)
     except Exception as exc:  # a crashing check is a failing claim, reported as such (and not cached)
         stored, hit = asdict(Outcome(False, {"error": f"{type(exc).__name__}: {exc}"})), False
     out = Outcome(**stored)

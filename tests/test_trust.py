@@ -1,0 +1,441 @@
+"""Issue 31, items 2-5: a cache that never changes an answer nor stops the work, a CLI that refuses before it
+works, coefficients rounded from certified digits, and the hostile inputs of the issue.
+
+Each test reproduces a case of the issue (what happened before the fix is said next to it)."""
+
+from __future__ import annotations
+
+import json
+import os
+import shutil
+import subprocess
+import sys
+import warnings
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from paper_repro.core import elevation as el
+from paper_repro.core.labels import delta
+from paper_repro.util import cache
+
+ROOT = Path(__file__).resolve().parent.parent
+
+
+def _unshare_works() -> bool:
+    """``unshare --user`` runs a process without root's capabilities: a 0555 folder is then really read-only."""
+    if shutil.which("unshare") is None:
+        return False
+    try:
+        return subprocess.run(["unshare", "--user", "true"], capture_output=True, timeout=20).returncode == 0
+    except (OSError, subprocess.SubprocessError):
+        return False
+
+
+def _as_user(cmd: list[str]) -> list[str]:
+    """``cmd`` run without write access to folders it does not own (root: through ``unshare --user``)."""
+    return ["unshare", "--user", *cmd] if os.geteuid() == 0 else cmd
+
+
+needs_readonly = pytest.mark.skipif(os.geteuid() == 0 and not _unshare_works(),
+                                    reason="running as root without unshare: no folder is read-only")
+
+
+@pytest.fixture
+def fresh_cache(tmp_path, monkeypatch):
+    monkeypatch.setattr(cache, "CACHE_DIR", tmp_path / "cache")
+    monkeypatch.delenv(cache.NO_CACHE_ENV, raising=False)
+    el._elevation_matrix_float.cache_clear()
+    yield tmp_path / "cache"
+    el._elevation_matrix_float.cache_clear()
+
+
+def _cache_warnings(record) -> list[str]:
+    return [str(w.message) for w in record if issubclass(w.category, cache.CacheWarning)]
+
+
+def _elevation_entry(folder: Path) -> Path:
+    (path,) = (folder / "elevation_matrix").glob("*.json")
+    return path
+
+
+def _tamper(path: Path, change, rechecksum: bool) -> None:
+    stored = json.loads(path.read_text())
+    stored["value"] = change(stored["value"])
+    if rechecksum:  # a writer that was wrong but consistent: only the shape/finiteness checks can see it
+        stored["sha256"] = cache.checksum(stored["value"])
+    path.write_text(json.dumps(stored))
+
+
+def _drop_row(v):
+    return {**v, "rows": v["rows"][:-1]}
+
+
+def _nan_row(v):
+    return {**v, "rows": [v["rows"][0], [float("nan").hex()] * len(v["rows"][1]), *v["rows"][2:]]}
+
+
+@pytest.mark.parametrize("rechecksum", [False, True])
+@pytest.mark.parametrize("change", [_drop_row, _nan_row, lambda v: []], ids=["missing-row", "nan-row", "empty"])
+def test_bad_elevation_entry_is_recomputed_with_one_warning(fresh_cache, change, rechecksum):
+    """Before: a row missing gave a (delta_{n+1} - 1, 3) net silently, NaN rows a NaN net, ``[]`` an error."""
+    n = 2
+    net = np.random.default_rng(0).random((delta(n), 3))
+    good = el.elevate(net, n, 1.0)
+    path = _elevation_entry(fresh_cache)
+    _tamper(path, change, rechecksum)
+    el._elevation_matrix_float.cache_clear()
+    with warnings.catch_warnings(record=True) as rec:
+        warnings.simplefilter("always")
+        again = el.elevate(net, n, 1.0)
+    assert again.shape == (delta(n + 1), 3) and np.array_equal(again, good)
+    assert len(_cache_warnings(rec)) == 1 and "recomputed and rewritten" in _cache_warnings(rec)[0]
+    el._elevation_matrix_float.cache_clear()
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", cache.CacheWarning)  # rewritten: read back without a warning
+        assert np.array_equal(el.elevate(net, n, 1.0), good)
+
+
+@pytest.mark.parametrize("change", [_drop_row, _nan_row, lambda v: [], lambda v: {**v, "rows": "x"}],
+                         ids=["missing-row", "nan-row", "empty", "text"])
+def test_bad_matrix_entry_generic(fresh_cache, change):
+    """The same cases through cached() alone (any user of a hex-float matrix, whatever elevation becomes)."""
+    rows = [[float(i + j).hex() for j in range(3)] for i in range(4)]
+    calls = []
+
+    def compute():
+        calls.append(1)
+        return {"rows": rows}
+
+    check = cache.hex_rows(4, 3)
+    assert cache.cached("m", {"k": 1}, compute, validate=check) == {"rows": rows}
+    (path,) = (fresh_cache / "m").glob("*.json")
+    _tamper(path, change, rechecksum=True)
+    with warnings.catch_warnings(record=True) as rec:
+        warnings.simplefilter("always")
+        assert cache.cached("m", {"k": 1}, compute, validate=check) == {"rows": rows}
+    assert len(calls) == 2 and len(_cache_warnings(rec)) == 1
+    assert json.loads(path.read_text())["value"] == {"rows": rows}  # rewritten
+
+
+@pytest.mark.parametrize("text", ["[]", "", "{", "null", '{"name": "elevation_matrix"}'])
+def test_unparsable_entry_is_recomputed(fresh_cache, text):
+    """Before: a file holding ``[]`` raised AttributeError ('list' object has no attribute 'get')."""
+    n = 1
+    good = el.elevation_matrix(n, 0.5)
+    _elevation_entry(fresh_cache).write_text(text)
+    el._elevation_matrix_float.cache_clear()
+    with pytest.warns(cache.CacheWarning, match="recomputed"):
+        assert np.array_equal(el.elevation_matrix(n, 0.5), good)
+
+
+def test_entry_of_other_parameters_is_not_used(fresh_cache):
+    """An entry whose stored parameters are not those of its key (a copied file) is recomputed."""
+    a = cache.cached("t", {"k": 1}, lambda: {"x": 1})
+    b = cache.cached("t", {"k": 2}, lambda: {"x": 2})
+    p1 = fresh_cache / "t" / f"{cache.key('t', {'k': 1})}.json"
+    p2 = fresh_cache / "t" / f"{cache.key('t', {'k': 2})}.json"
+    shutil.copy(p2, p1)
+    with pytest.warns(cache.CacheWarning, match="parameters"):
+        assert cache.cached("t", {"k": 1}, lambda: {"x": 1}) == a != b
+
+
+def test_validators_of_every_cached_user(fresh_cache):
+    """Each ``cached(...)`` user validates its values: a consistent entry of the wrong shape is recomputed."""
+    from paper_repro.core.domain import rational_alpha
+    from paper_repro.core.normalization import exact_coefficients_cached
+    from paper_repro.theory.closed_forms import closed_forms_cached, proof_cached
+
+    alpha = rational_alpha((1, 2))
+    sol = exact_coefficients_cached(1, alpha)
+    forms = closed_forms_cached(1)
+    proof = proof_cached(1)
+    for name, change in (("orbit_coefficients", lambda v: {**v, "solution": v["solution"][:-1]}),
+                         ("closed_forms", lambda v: dict(list(v.items())[:-1])),
+                         ("closed_form_proof", lambda v: {**v, "proved": "yes"})):
+        (path,) = (fresh_cache / name).glob("*.json")
+        _tamper(path, change, rechecksum=True)
+    with warnings.catch_warnings(record=True) as rec:
+        warnings.simplefilter("always")
+        assert exact_coefficients_cached(1, alpha) == sol
+        assert {k: v.as_json() for k, v in closed_forms_cached(1).items()} == \
+            {k: v.as_json() for k, v in forms.items()}
+        assert proof_cached(1) == proof
+    assert len(_cache_warnings(rec)) == 3
+
+
+def test_claim_outcome_entry_is_validated(fresh_cache):
+    from paper_repro.util.registry import CLAIMS, load_all, run_claim
+
+    load_all()
+    c = CLAIMS["dimension"]
+    first, _, _ = run_claim(c, {"n_min": 1, "n_max": 2})
+    (path,) = (fresh_cache / "claims").glob("*.json")
+    _tamper(path, lambda v: {**v, "passed": "true"}, rechecksum=True)
+    with pytest.warns(cache.CacheWarning):
+        again, _, _ = run_claim(c, {"n_min": 1, "n_max": 2})
+    assert again.status == first.status == "pass" and not again.cached
+
+
+def test_cache_naming_a_file_works_without_cache(tmp_path, monkeypatch):
+    """Before: ``PAPER_REPRO_CACHE`` naming a file gave a raw NotADirectoryError from elevation_matrix."""
+    afile = tmp_path / "afile"
+    afile.write_text("x")
+    monkeypatch.setattr(cache, "CACHE_DIR", afile)
+    monkeypatch.delenv(cache.NO_CACHE_ENV, raising=False)
+    monkeypatch.setattr(cache, "_WARNED_UNUSABLE", set())
+    el._elevation_matrix_float.cache_clear()
+    with warnings.catch_warnings(record=True) as rec:
+        warnings.simplefilter("always")
+        e = el.elevation_matrix(1, 0.7)
+        el._elevation_matrix_float.cache_clear()
+        assert np.array_equal(el.elevation_matrix(1, 0.7), e)
+    el._elevation_matrix_float.cache_clear()
+    assert e.shape == (delta(2), delta(1))
+    assert len(_cache_warnings(rec)) == 1 and "not writable" in _cache_warnings(rec)[0]
+    assert cache.unusable(afile) is not None
+
+
+def test_unwritable_cache_folder_simulated(tmp_path, monkeypatch):
+    """A folder where nothing can be created (PermissionError on every write): computed, one warning."""
+    monkeypatch.setattr(cache, "CACHE_DIR", tmp_path)
+    monkeypatch.delenv(cache.NO_CACHE_ENV, raising=False)
+    monkeypatch.setattr(cache, "_WARNED_UNUSABLE", set())
+
+    def denied(*args, **kwargs):
+        raise PermissionError(13, "Permission denied")
+
+    monkeypatch.setattr(Path, "mkdir", denied)
+    with warnings.catch_warnings(record=True) as rec:
+        warnings.simplefilter("always")
+        assert cache.cached("t", {"a": 1}, lambda: {"x": 1}) == {"x": 1}
+        assert cache.cached("t", {"a": 2}, lambda: {"x": 2}) == {"x": 2}
+    assert len(_cache_warnings(rec)) == 1
+
+
+SCRIPT = """
+import warnings, numpy as np
+warnings.simplefilter("always")
+from paper_repro.core import elevation as el
+from paper_repro import Patch
+net = np.arange(57.0).reshape(19, 3)
+print(el.elevate(net, 2, 1.0).shape)
+print(Patch(2, 1.0, net)([[0.2, 0.3, 0.5]]).round(9).tolist())
+"""
+
+
+def _run(env_cache: Path, readonly: bool = False) -> subprocess.CompletedProcess:
+    env = {**os.environ, "PAPER_REPRO_CACHE": str(env_cache)}
+    env.pop("PAPER_REPRO_NO_CACHE", None)
+    env.pop("NUMBA_CACHE_DIR", None)
+    cmd = [sys.executable, "-c", SCRIPT]
+    return subprocess.run(_as_user(cmd) if readonly else cmd, capture_output=True, text=True, env=env, cwd=ROOT,
+                          timeout=600)
+
+
+@needs_readonly
+def test_readonly_cache_folder_works_without_cache(tmp_path):
+    """Before: a read-only cache folder gave a raw PermissionError from elevation_matrix (claims: FAIL), and numba
+    fell back to writing its cache into the package's __pycache__ (the install location)."""
+    ro = tmp_path / "ro"
+    ro.mkdir()
+    ro.chmod(0o555)
+    before = set((ROOT / "paper_repro" / "core" / "__pycache__").glob("fast_jit*.nb*"))
+    res = _run(ro, readonly=True)
+    assert res.returncode == 0, res.stderr
+    assert res.stdout.splitlines()[0] == "(37, 3)"
+    assert res.stderr.count("CacheWarning") == 1 and "not writable" in res.stderr
+    assert set((ROOT / "paper_repro" / "core" / "__pycache__").glob("fast_jit*.nb*")) == before
+    assert not any(ro.iterdir())
+
+
+@pytest.mark.skipif(__import__("importlib").util.find_spec("numba") is None, reason="numba not installed")
+def test_corrupted_numba_cache_is_recompiled_with_one_warning(tmp_path):
+    """Before: a truncated, empty or garbage .nbi/.nbc made every Patch evaluation raise UnpicklingError or
+    EOFError."""
+    first = _run(tmp_path)
+    assert first.returncode == 0, first.stderr
+    files = sorted((tmp_path / "numba").rglob("*.nb[ic]"))
+    assert files
+    for k, path in enumerate(files):  # truncated, empty and garbage, each kind on several files
+        data = path.read_bytes()
+        path.write_bytes((data[:20], b"", bytes(range(7, 250)))[k % 3])
+    second = _run(tmp_path)
+    assert second.returncode == 0, second.stderr
+    assert second.stdout == first.stdout
+    assert second.stderr.count("CacheWarning") == 1 and "recompiled" in second.stderr
+    third = _run(tmp_path)  # rewritten: no warning
+    assert third.returncode == 0 and "CacheWarning" not in third.stderr and third.stdout == first.stdout
+
+
+# --- item 5: the inputs answered wrongly before -----------------------------------------------------------------------
+
+def _patch():
+    from paper_repro.surfaces.patch import Patch
+
+    return Patch(1, 1.0, np.arange(21.0).reshape(7, 3))
+
+
+@pytest.mark.parametrize("direction", [(True, False, -1), ("0.5", 0, -0.5), ("1/2", 0, -0.5), (np.bool_(1), 0, -1)])
+def test_derivative_direction_refuses_booleans_and_strings(direction):
+    """Before: booleans and '0.5' were accepted as components ('1/2' was refused)."""
+    with pytest.raises(TypeError, match="direction components must be real numbers"):
+        _patch().derivative([[0.2, 0.3, 0.5]], direction)
+
+
+def test_derivative_direction_still_takes_real_numbers():
+    from fractions import Fraction
+
+    p = _patch()
+    a = p.derivative([[0.2, 0.3, 0.5]], (np.float64(0.5), Fraction(-1, 2), 0))
+    b = p.derivative([[0.2, 0.3, 0.5]], (0.5, -0.5, 0.0))
+    assert np.array_equal(a, b)
+
+
+@pytest.mark.parametrize("t,exc,msg", [([float("nan")], ValueError, "t must be finite"),
+                                       ([1j], TypeError, "t entries must be a real number"),
+                                       (0.5 + 1j, TypeError, "t must be a real number"),
+                                       (["0.5"], TypeError, "t entries must be"),
+                                       ([0.5, 2.0], ValueError, r"\[0, alpha\]"), ([-0.1], ValueError, "alpha")])
+def test_boundary_curve_checks_t(t, exc, msg):
+    """Before: NaN gave NaN points, complex values raw float() errors."""
+    with pytest.raises(exc, match=msg):
+        _patch().boundary_curve("u=0", t)
+
+
+def test_boundary_curve_in_range_unchanged():
+    p = _patch()
+    assert p.boundary_curve("u=0", [0.0, 0.5, 1.0]).shape == (3, 3)
+    assert np.allclose(p.boundary_curve("u=0", [0.0])[0], p([[0.0, 1.0, 0.0]])[0])
+
+
+def _alternating():
+    state = {"k": 0}
+
+    def surface(u, v, w):
+        state["k"] += 1
+        return [u, v] if state["k"] % 2 else [u]
+
+    return surface
+
+
+@pytest.mark.parametrize("arith,surface,exc,msg", [
+    ("mp", lambda u, v, w: [u + 1j, v], TypeError, "surface coordinates .* complex"),
+    ("mp", "alternating", ValueError, "surface returned .* same number"),
+    ("mp", lambda u, v, w: ["a", v], TypeError, "surface coordinates .* string"),
+    ("mp", lambda u, v, w: 3.0, TypeError, "surface must return a sequence of coordinates"),
+    ("exact", lambda t: [float("nan"), t.sin(0, 1, 0)], ValueError, "surface coordinates .* finite"),
+    ("exact", lambda t: ["1/2", t.sin(0, 1, 0)], TypeError, "surface coordinates .* string"),
+    ("exact", lambda t: [1j, t.sin(0, 1, 0)], TypeError, "surface coordinates .* complex"),
+])
+def test_fit_checks_what_the_surface_returns(arith, surface, exc, msg):
+    """Before: mpmath's and flint's own words (IndexError: matrix index out of range, cannot create mpf from 'a',
+    expected a finite number), and '1/2' silently read as a rational."""
+    from paper_repro.core.domain import rational_alpha
+    from paper_repro.surfaces.fitting import fit
+
+    if surface == "alternating":
+        surface = _alternating()
+    alpha = rational_alpha((1, 3)) if arith == "exact" else 1.0
+    with pytest.raises(exc, match=msg):
+        fit(surface, 1, alpha, arith)
+
+
+@pytest.mark.parametrize("p", [4, 2**31 - 3, 9, 2**31 - 2])
+def test_modp_refuses_composite_moduli(p):
+    from paper_repro.core.context import get_context
+
+    with pytest.raises(ValueError, match="composite"):
+        get_context("modp", p=p)
+
+
+def test_modp_takes_primes():
+    from paper_repro.core.context import get_context
+
+    assert get_context("modp", p=3).p == 3 and get_context("modp", p=2**31 - 1).p == 2**31 - 1
+
+
+def test_raw_messages_replaced():
+    """Before: 'need at least one array to concatenate', ''NoneType' object has no attribute 'strip'',
+    'expected non-negative integer', 'unhashable type: 'list'', ''float' object is not iterable'."""
+    from paper_repro.core.domain import RationalPoints, rational_alpha, sample_points
+    from paper_repro.core.labels import full_system, parse_label, united_system
+    from paper_repro.surfaces.patch import merge_meshes
+
+    with pytest.raises(ValueError, match="meshes must be a non-empty list"):
+        merge_meshes([])
+    with pytest.raises(TypeError, match="label must be a string"):
+        parse_label(None)
+    with pytest.raises(ValueError, match="seed must be an integer >= 0"):
+        sample_points(1.0, 5, seed=-1)
+    with pytest.raises(TypeError, match="n must be a positive integer"):
+        united_system([2])
+    with pytest.raises(TypeError, match="n must be a positive integer"):
+        full_system([2], "R")
+    with pytest.raises(TypeError, match="tu must be a sequence of rationals"):
+        RationalPoints(rational_alpha((1, 2)), 0.1, 0.1)
+
+
+def test_sizes_over_budget_are_refused():
+    """Before: sample_points(1.0, 10**8) needed 2.4 GB, `labels 1000` took 93 s."""
+    from paper_repro.core.domain import sample_points
+    from paper_repro.util.limits import MAX_N_LABELS, MAX_SAMPLE_POINTS
+
+    with pytest.raises(ValueError, match="2 GB budget"):
+        sample_points(1.0, 10**8)
+    assert sample_points(1.0, 3).shape == (3, 3) and MAX_SAMPLE_POINTS < 10**8
+    r = subprocess.run([sys.executable, "-m", "paper_repro", "labels", "1000"], capture_output=True, text=True,
+                       timeout=60, cwd=ROOT)
+    assert r.returncode == 2 and f"from 1 to {MAX_N_LABELS}" in r.stderr and not r.stdout
+
+
+# --- item 4: float coefficients rounded from certified digits ---------------------------------------------------------
+
+U53 = 2.0 ** -53  # the largest relative error of a correctly rounded float64
+
+
+@pytest.mark.parametrize("n,alpha,dps", [(6, 1e-17, 450), (2, 1e-60, 450), (1, 1e-150, 700), (3, 1.0, 60),
+                                         (4, 3.1415926, 80)])
+def test_float_coefficients_are_correctly_rounded_at_float_alpha(n, alpha, dps):
+    """Against the collocation solve in mpmath at ``dps`` digits (independent of the formula: a linear solve at
+    alpha-independent points).  Before: 3.4e-13 relative (n = 6, 1e-17), 8e-14 (n = 2, 1e-60), 4.9e-14 (n = 1,
+    1e-150): the division by s^(2n+j) went subnormal, or through exp(log)."""
+    import mpmath
+
+    from paper_repro.core.context import MpContext
+    from paper_repro.core.normalization import orbit_coefficients, orbit_coefficients_collocation
+
+    with mpmath.workdps(dps):
+        ref = orbit_coefficients_collocation(n, mpmath.mpf(alpha), MpContext(dps=dps))
+        got = orbit_coefficients(n, alpha)
+        assert all(isinstance(g, float) for g in got)
+        assert max(abs((g - r) / r) for g, r in zip(got, ref)) <= U53
+
+
+@pytest.mark.parametrize("n,t", [(1, (999999, 1000000)), (2, (999, 1000)), (3, (1, 10**12)), (2, (1, 3))])
+def test_float_coefficients_at_a_rational_angle_use_the_exact_angle(n, t):
+    """Against the exact collocation solve (rationals, no formula), rounded once by Python: the same floats.
+    Before: the float path computed at float(alpha), 2.3e-11 relative off at t = 999999/1000000."""
+    from fractions import Fraction
+
+    from paper_repro.core.domain import rational_alpha
+    from paper_repro.core.normalization import coefficients, exact_coefficients_cached, orbits
+
+    alpha = rational_alpha(t)
+    exact, _ = exact_coefficients_cached(n, alpha)
+    got = coefficients(n, alpha)
+    for (rep, _), x in zip(orbits(n), exact):
+        assert got[rep.coefficient] == float(Fraction(int(x.p), int(x.q)))
+
+
+def test_scaled_float_coefficients_are_certified_too():
+    from fractions import Fraction
+
+    from paper_repro.core.domain import rational_alpha
+    from paper_repro.core.normalization import coefficients
+
+    alpha = rational_alpha((1, 10**9))
+    ex = coefficients(3, alpha, "exact", scaled=True)
+    got = coefficients(3, alpha, scaled=True)
+    assert all(got[k] == float(Fraction(int(v.p), int(v.q))) for k, v in ex.items())
