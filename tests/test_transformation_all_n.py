@@ -153,3 +153,33 @@ def test_bad_arguments(kwargs, exc, text):
     args = {"n": 2, "alpha": 1.0, "direction": "V_to_T"} | kwargs
     with pytest.raises(exc, match=text):
         transformation_matrix(args.pop("n"), args.pop("alpha"), args.pop("direction"), **args)
+
+
+def test_claim_passes_at_small_n_and_fails_on_a_wrong_formula(monkeypatch):
+    from paper_repro.claims import transformation_all_n as claim_mod
+    from paper_repro.core import transformation as core_tr
+
+    params = {"n_solve": 2, "t": "1/2", "n_solve_ends": 1, "t_ends": ["9/10"], "n_closed": 1}
+    assert claim_mod.run(**params).passed
+    real = core_tr.transformation_matrix
+
+    def wrong(n, alpha, direction="V_to_T", **kw):
+        m = real(n, alpha, direction, **kw).copy()
+        m[-1, -1] = m[-1, -1] * 2 + 1
+        return m
+
+    monkeypatch.setattr(tc, "transformation_matrix", wrong)
+    assert not claim_mod.run(**params).passed
+
+
+def test_closed_forms_claim_writes_the_recovered_forms():
+    """transformation_closed_forms now writes the formula's forms; at n <= 2 they equal the forms recovered afresh
+    (and, via the frozen resource, those of the old recovery for n <= 4, checked above)."""
+    from paper_repro.claims.matrix_closed_forms import run_transformation
+
+    out = run_transformation(n_max=1, n_recover=1)
+    assert out.passed
+    entry = out.data["basis_transformation/closed_forms_n1.json"]["N_inverse (V = T N^-1)"]
+    assert entry["proof"]["recovered_afresh_equals_formula"] and entry["proof"]["machine_proof_of_recovered_forms"]
+    frozen = tc.recovered_closed_forms()["1"]["N_inverse"]
+    assert [[e["sin_power_K"] for e in row] for row in entry["entries"]] == [[e.K for e in row] for row in frozen]
