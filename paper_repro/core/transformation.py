@@ -453,7 +453,8 @@ def transformation_matrix(n: int, alpha, direction: str = "V_to_T", *, normalize
     real number in (0, pi) (then float64, bit-stable); ``arith`` overrides the arithmetic (``'float'``, ``'exact'``,
     ``'mp'`` with ``dps`` digits, ``'ball'``, or a context).  ``n`` from 1 to
     :data:`~paper_repro.util.limits.MAX_N_TRANSFORMATION`.  The float matrix of ``'V_to_T'`` loses accuracy as n
-    grows (cancellation in the generating function; README table); ``OverflowError`` if an entry exceeds float64.
+    grows and as alpha -> 0 (cancellation to about eps/s^2; measured in docs/transformation_for_all_n.md);
+    ``OverflowError`` if an entry exceeds float64.
     """
     n = check_int(n, "n", 1, MAX_N_TRANSFORMATION, why="a dense delta_n x delta_n matrix built in O(n^5) operations")
     if direction not in DIRECTIONS:
