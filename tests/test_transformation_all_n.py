@@ -183,3 +183,15 @@ def test_closed_forms_claim_writes_the_recovered_forms():
     assert entry["proof"]["recovered_afresh_equals_formula"] and entry["proof"]["machine_proof_of_recovered_forms"]
     frozen = tc.recovered_closed_forms()["1"]["N_inverse"]
     assert [[e["sin_power_K"] for e in row] for row in entry["entries"]] == [[e.K for e in row] for row in frozen]
+
+
+def test_ball_encloses_the_exact_matrix():
+    from paper_repro.core.context import get_context
+
+    exact = transformation_matrix(2, ALPHA, "V_to_T")
+    ctx = get_context("ball")
+    ball = transformation_matrix(2, ALPHA, "V_to_T", arith=ctx)
+    with ctx.scope():  # the exact value as a ball at the same precision (at 53 bits its own radius is 1e-17)
+        assert all(ball[i, j].contains(exact[i, j]) and ball[i, j].rad() < 1e-40
+                   for i in range(delta(2)) for j in range(delta(2)))
+        assert not ball[0, 1].contains(exact[0, 1] + fmpq(1, 10**30))
