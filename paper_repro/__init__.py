@@ -35,6 +35,7 @@ from paper_repro.core.labels import delta, parse_label, united_system
 from paper_repro.core.nets import LabelledNet
 from paper_repro.core.normalization import coefficients as _coefficients
 from paper_repro.core.normalization import evaluate_normalized as _evaluate_normalized
+from paper_repro.core.transformation import transformation_matrix
 from paper_repro.surfaces.fitting import fit, fit_least_squares
 from paper_repro.surfaces.limit import bezier_nodes, bezier_triangle
 from paper_repro.surfaces.mesh import export_mesh
@@ -52,4 +53,4 @@ __all__ = ["LabelledNet", "Patch", "RationalAngle", "RationalPoints", "__version
            "bezier_limit", "bezier_nodes", "bezier_triangle", "coefficients", "delta", "elevate", "elevation_matrix",
            "evaluate", "evaluate_normalized", "export_mesh", "fit", "fit_least_squares", "get_context",
            "merge_meshes", "parse_alpha", "parse_label", "rational_alpha", "sample_points",
-           "sample_rational_points", "united_system"]
+           "sample_rational_points", "transformation_matrix", "united_system"]

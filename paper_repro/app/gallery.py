@@ -38,9 +38,11 @@ OPEN_QUESTIONS = [
      "formula equals the closed forms proven by machine for n ≤ 30). Still open: proofs for every n of the "
      "centre's two end-value simplifications and of the fitted level formulas (checked consequences to n = 60)."),
     ("Question 7.2 (que:open_problem_basis_transformation): the basis transformation between T̄ and V",
-     ["basis_transformation", "coincidence", "transformation_closed_forms"],
-     "Closed forms for n ≥ 5 and a general pattern for all n (observed for n ≤ 4: N polynomial in c and s, "
-     "N⁻¹ with denominators up to the power 3n − 1 of s; not proven)."),
+     ["transformation_all_n", "basis_transformation", "coincidence", "transformation_closed_forms"],
+     "Answered for every n: V in terms of T̄ by a generating function, T̄ in terms of V by the binomial expansion, "
+     "for every α (docs/transformation_for_all_n.md, a hand proof; equal to exact solves for n ≤ 7 and, as a "
+     "polynomial identity, to the machine-proven closed forms for n ≤ 4). Still open: the observed largest power "
+     "3n − 1 of s in the denominators of N⁻¹ (n ≤ 4; the formula bounds it by 3n)."),
     ("Question 7.3 (que:limiting_case): the α → 0 limit of the patches", ["bernstein_limit", "bezier_limit_degree",
                                                                         "bezier_conversion", "limit_formula"],
      "Nothing: answered for every n, polynomial and rational patches, with explicit convex conversion weights "

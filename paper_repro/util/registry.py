@@ -100,6 +100,7 @@ CLAIM_MODULES = (
     "paper_repro.claims.limit_formula",
     "paper_repro.claims.independence_proof",
     "paper_repro.claims.matrix_closed_forms",
+    "paper_repro.claims.transformation_all_n",
     "paper_repro.claims.linear_independence",
     "paper_repro.claims.derivative_signs",
     "paper_repro.claims.equivalence_classes",

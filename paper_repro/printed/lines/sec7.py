@@ -600,8 +600,8 @@ LINES = [
                    '$\\overline{T}_{2n}^{\\alpha}$ and $V_{n}^{\\alpha}$?'),
          says='Question: the general (inverse) transformation between T-bar_{2n} and V_n?',
          status='excused',
-         reason=('an open question (the package gives the transformation in closed form for n <= 4: claim '
-                 'transformation_closed_forms)')),
+         reason=('a question; answered for every n and alpha by claim transformation_all_n (hand proof '
+                 'docs/transformation_for_all_n.md; closed forms for n <= 4: claim transformation_closed_forms)')),
     Line(id='sec7-question-2-motivation', tex=(3208, 3209), near='que:open_problem_basis_transformation', kind='prose',
          verbatim=('Answering Question \\ref{que:open_problem_basis_transformation} would be important in the '
                    'control point based exact description of triangular patches of (rational) trigonometric '
