@@ -10,6 +10,12 @@ settings.register_profile("repro", derandomize=True, deadline=None, max_examples
 settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "repro"))
 
 
+def pytest_configure(config):
+    config.addinivalue_line("markers", "other_env: builds another environment (a wheel's venv, other interpreters), "
+                            "minutes each: run by make test-all, make test-wheel, make test-pythons; left out of "
+                            "make report")
+
+
 # --- make report (pytest-html): what each claim states, its kind, ranges and measured values ---------------------
 _CLAIM_RUNS: dict[str, dict] = {}
 
@@ -23,11 +29,31 @@ def pytest_runtest_logreport(report):
             _CLAIM_RUNS[rec["id"]] = rec
 
 
+def pytest_sessionfinish(session, exitstatus):
+    """With ``--html`` (``make report``): the status script beside the report, which turns the gallery's and the
+    annotated paper's note "make report writes it" into the link."""
+    html_path = session.config.getoption("htmlpath", None)
+    if not html_path:
+        return
+    from paper_repro.app.test_report import write_status
+
+    stats = session.config.pluginmanager.get_plugin("terminalreporter").stats
+    counts = {k: len([r for r in stats.get(k, []) if getattr(r, "when", "call") in ("call", "setup")])
+              for k in ("passed", "failed", "error", "skipped")}
+    write_status(html_path, counts, _CLAIM_RUNS)
+
+
 @pytest.hookimpl(optionalhook=True)
 def pytest_html_results_summary(prefix, summary, postfix, session):
     from paper_repro.app.test_report import summary_html
 
     prefix.append(summary_html(_CLAIM_RUNS))
+    markexpr = session.config.getoption("markexpr", "") or ""
+    if "not other_env" in markexpr:
+        prefix.append("<p>Left out of this report: the tests that build other environments (marker "
+                      "<code>other_env</code>: the wheel installed in a fresh venv, the fast suite on Python 3.12 "
+                      "and 3.13), minutes each; <code>make test-wheel</code>, <code>make test-pythons</code> and "
+                      "<code>make test-all</code> run them.</p>")
 
 
 @pytest.hookimpl(optionalhook=True)

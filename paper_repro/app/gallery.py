@@ -21,6 +21,7 @@ from pathlib import Path
 import numpy as np
 
 from paper_repro.app.paper_index import display_of, load_index
+from paper_repro.app.report_link import report_link_html
 from paper_repro.util.io import ROOT, data_dir, figures_dir, in_checkout, output_root, reports_dir, write_text
 
 
@@ -352,8 +353,7 @@ def gallery_html(manifest: list[dict], view_specs: dict[str, dict] | None = None
          "from the registries and <code>data/</code>; nothing on this page is typed in by hand. "
          '<b>The paper, annotated</b> (its text with a badge at every display): '
          '<a href="../paper/index.html">paper/index.html</a> (<code>make paper</code>; needs the paper\'s LaTeX '
-         'source beside the clone). Test report: <a href="../reports/tests.html">reports/tests.html</a> '
-         "(after <code>make report</code>).</p>",
+         'source beside the clone); ' + report_link_html("../") + ".</p>",
          '<nav><a href="#provenance">provenance</a><a href="#claims">claims</a><a href="#errata">errata</a>'
          '<a href="#questions">open questions</a><a href="#figures">figures</a><a href="#views">3D views</a>'
          '<a href="#bench">performance</a><a href="#map">paper map</a><a href="../paper/index.html">annotated paper</a>'
