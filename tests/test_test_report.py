@@ -31,7 +31,7 @@ def test_reused_and_rerun_claims_are_told_apart():
     rerun = properties_of(_report({"claim": "symmetry", "measured": "{}"}))
     assert reused["reused"] == "code fingerprint abc123" and "reused" not in rerun
     page = summary_html({"dimension": reused, "symmetry": rerun})
-    assert "reused: make reproduce&#x27;s result of this code (code fingerprint abc123)" in page
+    assert "reused (make reproduce, same code)" in page and "code fingerprint abc123" in page
     assert "re-run in this report" in page
     assert "<b>1 claims re-run</b> in this report (symmetry)" in page and "<b>1 reused</b> (dimension)" in page
 

@@ -107,8 +107,7 @@ def summary_html(ran: dict[str, dict]) -> str:
     rows = []
     for cid in ids:
         if cid in ran and ran[cid].get("reused"):
-            rows.append(claim_row(ran[cid], f"reused: make reproduce's result of this code ({ran[cid]['reused']})",
-                                  index))
+            rows.append(claim_row(ran[cid], "reused (make reproduce, same code)", index))
         elif cid in ran:
             rows.append(claim_row(ran[cid], "re-run in this report", index))
         else:
@@ -118,7 +117,8 @@ def summary_html(ran: dict[str, dict]) -> str:
     how = (f"<p><b>{len(rerun)} claims re-run</b> in this report ({html.escape(', '.join(rerun)) or 'none'}); "
            f"<b>{len(reused)} reused</b> ({html.escape(', '.join(reused)) or 'none'}): their results were in the claim "
            "cache under the same id, parameters and code fingerprint (the sha256 of every source file of the "
-           "package), as <code>make reproduce</code> left them, so this code computed them. "
+           f"package: {html.escape(', '.join(sorted({r['reused'] for r in ran.values() if r.get('reused')})))}), "
+           "as <code>make reproduce</code> left them, so this code computed them. "
            "<code>make test-all</code> re-runs every claim without the cache.</p>") if ran else ""
     head = "".join(f"<th>{h}</th>" for h in ("claim", "in the paper", "statement", "kind", "ranges (parameters)",
                                             "measured (click for all)", "status", "from"))

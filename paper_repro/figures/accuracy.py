@@ -53,15 +53,15 @@ def alpha_text(alpha: float) -> str:
                 "[1e-3, pi - 1e-3], as a table: (a) max |sum of the blending values - 1|; (b) max error of patch "
                 "points relative to the net (random nets). Each cell holds the exponent k of the published decade "
                 "10^k, the smallest power of ten at or above the error (a machine-independent value); the colour "
-                "keys the decade. Every cell is at most 1e-14, below the 1e-13 bound of claim float_accuracy.")
+                "keys the decade. The claim's bound is 1e-13 (k = -13).")
 def make_accuracy(outdir: Path) -> list[Path]:
     rows = json.loads((data_dir() / "accuracy" / "float_vs_mp.json").read_text())["rows"]
     ns = sorted({r["n"] for r in rows})
     alphas = sorted({r["alpha"] for r in rows})
     fig, axes = plt.subplots(2, 1, figsize=(13, 7.6))
     used: set = set()
-    for ax, key, title in ((axes[0], "partition_of_unity_below", "(a) partition of unity: max |Σ − 1| ≤ 10^k"),
-                           (axes[1], "patch_relative_below", "(b) patch points: max error / max |net| ≤ 10^k")):
+    for ax, key, title in ((axes[0], "partition_of_unity_below", "(a) partition of unity: max |Σ − 1| ≤ $10^k$"),
+                           (axes[1], "patch_relative_below", "(b) patch points: max error / max |net| ≤ $10^k$")):
         cell = {(r["n"], r["alpha"]): exponent(r[key]) for r in rows}
         if len(cell) != len(ns) * len(alphas):
             raise ValueError(f"float_accuracy data: {len(cell)} cells, expected every n times every alpha")
