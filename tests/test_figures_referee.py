@@ -94,6 +94,7 @@ def test_conversion_labels_lie_on_no_line_and_no_marker(monkeypatch, tmp_path):
     assert n_labels == 4
 
 
+@pytest.mark.slow  # draws both 3D figures (the renderer's logic is tested fast in test_render3d.py)
 @pytest.mark.parametrize("fid", ["degree_elevation_from_1_to_2", "third_order_patch"])
 def test_3d_figures_shade_smoothly_and_dash_hidden_parts_in_their_nets_colours(fid, monkeypatch, tmp_path):
     from matplotlib.collections import LineCollection
