@@ -111,10 +111,13 @@ docs: $(STAMP)                 ## the documentation site, offline -> docs/_build
 	$(PY) -m sphinx -q -W --keep-going -b html docs docs/_build/html
 	@echo "docs: open docs/_build/html/index.html"
 
-report: $(STAMP)               ## the whole suite (slow claim tests too) as reports/tests.html (with each claim's statement, kind, ranges, measured values) + reports/junit.xml
+# The claim tests reuse what `make reproduce` computed where the claim cache holds it under the same id, parameters
+# and code fingerprint (PAPER_REPRO_REPORT_REUSE=1; the report says which were reused and which re-run); the tests
+# that build other environments (other_env: make test-wheel, make test-pythons) are left out, and the report says so.
+report: $(STAMP)               ## the suite (slow tests too) as reports/tests.html (each claim's statement, kind, ranges, measured values) + reports/junit.xml
 	mkdir -p reports
-	$(PY) -m pytest -q -m "not benchmark" --html=reports/tests.html --self-contained-html \
-	  --junitxml=reports/junit.xml -o junit_family=xunit1
+	PAPER_REPRO_REPORT_REUSE=1 $(PY) -m pytest -q -m "not benchmark and not other_env" \
+	  --html=reports/tests.html --self-contained-html --junitxml=reports/junit.xml -o junit_family=xunit1
 
 paper: $(STAMP)                ## the annotated paper paper/index.html (needs ../shared/paper's LaTeX source)
 	$(PY) -m paper_repro paper

@@ -10,8 +10,49 @@ settings.register_profile("repro", derandomize=True, deadline=None, max_examples
 settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "repro"))
 
 
+def pytest_configure(config):
+    config.addinivalue_line("markers", "other_env: builds another environment (a wheel's venv, other interpreters), "
+                            "minutes each: run by make test-all, make test-wheel, make test-pythons; left out of "
+                            "make report")
+    config.addinivalue_line("markers", "warm_ahead: its module's warm_ahead() fills the disk cache it reads; make "
+                            "report runs that in a second process from the start and these tests last")
+
+
+# --- make report on 2 cores: the heaviest cache-filling work in a second process -----------------------------------
+_WARM: list = []
+
+
+def pytest_collection_modifyitems(session, config, items):
+    """`make report` (PAPER_REPRO_REPORT_REUSE): tests marked warm_ahead run last, and their modules' warm_ahead()
+    runs from now in a second process (the suite itself is one process: the second core was idle).  The disk
+    cache's per-entry lock makes the two share the work: whichever comes first computes an entry, the other
+    reads it.  Its output goes to reports/warm_ahead.log."""
+    from paper_repro.app.test_report import reuse_certified_results
+
+    if not reuse_certified_results():
+        return
+    warm = [it for it in items if it.get_closest_marker("warm_ahead")]
+    if not warm:
+        return
+    items[:] = [it for it in items if it not in warm] + warm
+    import subprocess
+    import sys
+    from pathlib import Path
+
+    root = Path(__file__).resolve().parents[1]
+    modules = sorted({it.module.__name__ for it in warm})
+    code = ("import time; t = time.time(); " + "; ".join(f"import {m}; {m}.warm_ahead()" for m in modules)
+            + "; print('warm_ahead done: cpu', round(time.process_time(), 1), 's, wall', "
+            "round(time.time() - t, 1), 's')")
+    log = root / "reports" / "warm_ahead.log"
+    log.parent.mkdir(exist_ok=True)
+    with open(log, "w") as out:
+        _WARM.append(subprocess.Popen([sys.executable, "-c", code], cwd=root, stdout=out, stderr=subprocess.STDOUT))
+
+
 # --- make report (pytest-html): what each claim states, its kind, ranges and measured values ---------------------
 _CLAIM_RUNS: dict[str, dict] = {}
+_OTHER_REUSED: list[str] = []  # tests (not claims) that reused make reproduce's work, e.g. the figure regression
 
 
 def pytest_runtest_logreport(report):
@@ -21,6 +62,27 @@ def pytest_runtest_logreport(report):
         rec = properties_of(report)
         if rec is not None:
             _CLAIM_RUNS[rec["id"]] = rec
+        elif report.passed and dict(report.user_properties or []).get("reused"):
+            _OTHER_REUSED.append(report.nodeid)
+
+
+def pytest_sessionfinish(session, exitstatus):
+    """With ``--html`` (``make report``): the status script beside the report, which turns the gallery's and the
+    annotated paper's note "make report writes it" into the link.  A warm-ahead process still running (the run
+    was cut short) is stopped."""
+    for proc in _WARM:
+        if proc.poll() is None:
+            proc.terminate()
+            proc.wait()
+    html_path = session.config.getoption("htmlpath", None)
+    if not html_path:
+        return
+    from paper_repro.app.test_report import write_status
+
+    stats = session.config.pluginmanager.get_plugin("terminalreporter").stats
+    counts = {k: len([r for r in stats.get(k, []) if getattr(r, "when", "call") in ("call", "setup")])
+              for k in ("passed", "failed", "error", "skipped")}
+    write_status(html_path, counts, _CLAIM_RUNS)
 
 
 @pytest.hookimpl(optionalhook=True)
@@ -28,6 +90,18 @@ def pytest_html_results_summary(prefix, summary, postfix, session):
     from paper_repro.app.test_report import summary_html
 
     prefix.append(summary_html(_CLAIM_RUNS))
+    if _OTHER_REUSED:
+        import html
+
+        prefix.append(f"<p>Also reused from <code>make reproduce</code> (same code fingerprint, same data/, files "
+                      f"unchanged; not redrawn): {len(_OTHER_REUSED)} figure regression tests ("
+                      + html.escape(", ".join(n.split("[")[-1].rstrip("]") for n in _OTHER_REUSED)) + ").</p>")
+    markexpr = session.config.getoption("markexpr", "") or ""
+    if "not other_env" in markexpr:
+        prefix.append("<p>Left out of this report: the tests that build other environments (marker "
+                      "<code>other_env</code>: the wheel installed in a fresh venv, the fast suite on Python 3.12 "
+                      "and 3.13), minutes each; <code>make test-wheel</code>, <code>make test-pythons</code> and "
+                      "<code>make test-all</code> run them.</p>")
 
 
 @pytest.hookimpl(optionalhook=True)

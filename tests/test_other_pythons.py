@@ -37,6 +37,7 @@ def other_pythons() -> list[str]:
 
 
 @pytest.mark.slow
+@pytest.mark.other_env
 def test_fast_suite_on_the_other_interpreters():
     pythons = other_pythons()
     if not pythons:

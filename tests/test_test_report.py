@@ -24,3 +24,88 @@ def test_failed_claim_is_marked_and_other_tests_are_ignored():
     assert properties_of(_report({"other": "x"})) is None
     rec = properties_of(_report({"claim": "dimension", "measured": "not json"}, passed=False))
     assert rec["status"] == "fail" and rec["measured"] == "not json"
+
+
+def test_reused_and_rerun_claims_are_told_apart():
+    reused = properties_of(_report({"claim": "dimension", "reused": "1", "code": "abc123", "measured": "{}"}))
+    rerun = properties_of(_report({"claim": "symmetry", "measured": "{}"}))
+    assert reused["reused"] == "code fingerprint abc123" and "reused" not in rerun
+    page = summary_html({"dimension": reused, "symmetry": rerun})
+    assert "reused (make reproduce, same code)" in page and "code fingerprint abc123" in page
+    assert "re-run in this report" in page
+    assert "<b>1 claims re-run</b> in this report (symmetry)" in page and "<b>1 reused</b> (dimension)" in page
+
+
+def test_report_reuses_only_results_of_the_same_code(tmp_path, monkeypatch):
+    """What `make report` relies on: a claim result is reused only under the same code fingerprint."""
+    from paper_repro.util import cache, registry
+    from paper_repro.util.registry import CLAIMS, load_all, run_claim
+
+    load_all()
+    monkeypatch.setattr(cache, "CACHE_DIR", tmp_path)
+    monkeypatch.delenv(cache.NO_CACHE_ENV, raising=False)
+    first, _, _ = run_claim(CLAIMS["dimension"])
+    again, _, _ = run_claim(CLAIMS["dimension"])
+    assert not first.cached and again.cached and again.measured == first.measured
+    monkeypatch.setattr(registry, "code_fingerprint", lambda: "other code")
+    other, _, _ = run_claim(CLAIMS["dimension"])
+    assert not other.cached  # a changed package is re-run, never served an old result
+
+
+def test_reuse_is_switched_on_by_make_report_only(monkeypatch):
+    import re
+
+    from paper_repro.app.test_report import REUSE_ENV, reuse_certified_results
+    from paper_repro.util.io import ROOT
+
+    for value, on in (("", False), ("0", False), ("1", True)):
+        monkeypatch.setenv(REUSE_ENV, value)
+        assert reuse_certified_results() is on
+    make = (ROOT / "Makefile").read_text()
+    report = re.search(r"^report:.*?(?=^\S)", make, flags=re.M | re.S).group(0)
+    test_all = re.search(r"^test-all:.*?(?=^\S)", make, flags=re.M | re.S).group(0)
+    assert f"{REUSE_ENV}=1" in report and REUSE_ENV not in test_all
+
+
+def test_pages_link_the_report_only_through_the_status_note():
+    """The gallery and the annotated paper never link reports/tests.html directly (a dead link until `make report`
+    has run): they show report_link_html's note, which the status script of `make report` turns into the link."""
+    import inspect
+
+    from paper_repro.app import annotated_paper, gallery
+    from paper_repro.app.report_link import report_link_html
+
+    for mod in (gallery, annotated_paper):
+        src = inspect.getsource(mod)
+        assert 'href="../reports/tests.html"' not in src.replace("\\", "") and "report_link_html(" in src
+    assert 'class="test-report"' in report_link_html() and "<a " not in report_link_html()
+
+
+def test_report_note_becomes_the_link_in_chromium(tmp_path):
+    """In a real browser: before `make report` the page says that make report writes the report (no link, no
+    console error); after it (the status script written), the note is the link to reports/tests.html."""
+    import pytest
+
+    from paper_repro.app import check_gallery
+    from paper_repro.app.report_link import report_link_html
+    from paper_repro.app.test_report import write_status
+
+    if not (check_gallery.find(check_gallery.CHROMIUM) and check_gallery.find(check_gallery.DRIVER)):
+        pytest.skip("no chromium/chromedriver on this machine: run `make check-gallery INSTALL=1`")
+    page = tmp_path / "figures" / "index.html"
+    page.parent.mkdir()
+    page.write_text(f'<!DOCTYPE html><html><body><p id="p">{report_link_html("../")}.</p></body></html>')
+    driver = check_gallery.make_driver(800, 600)
+    try:
+        driver.get(page.as_uri())
+        before = driver.execute_script("var p=document.getElementById('p');return [p.textContent,"
+                                       "[...p.querySelectorAll('a')].map(a=>a.getAttribute('href'))]")
+        console_before, _, _ = check_gallery.console_and_requests(driver)
+        write_status(tmp_path / "reports" / "tests.html", {"passed": 3, "failed": 0}, {"dimension": {"reused": "x"}})
+        driver.get(page.as_uri())
+        after = driver.execute_script("var p=document.getElementById('p');return [p.textContent,"
+                                      "[...p.querySelectorAll('a')].map(a=>a.getAttribute('href'))]")
+    finally:
+        driver.quit()
+    assert "make report writes it" in before[0] and before[1] == [] and console_before == []
+    assert after[1] == ["../reports/tests.html"] and "3 passed" in after[0] and "1 reused" in after[0], after

@@ -28,6 +28,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from paper_repro.app.paper_index import PAPER, load_index
+from paper_repro.app.report_link import report_link_html
 from paper_repro.util.io import DATA, FIGURES, ROOT, write_text
 
 OUT = ROOT / "paper" / "index.html"
@@ -794,8 +795,8 @@ def build(source: str, index: list[dict], manifest: list[dict], claims: list[dic
             "✓ checked</span> <span class=\"badge err\" style=\"display:inline\">✗ erratum</span> "
             "<span class=\"badge exc\" style=\"display:inline\">○ excused</span> "
             "<span class=\"badge none\" style=\"display:inline\">? not yet checked</span> (click to open). "
-            f"{source_note} Gallery: <a href=\"../figures/index.html\">figures/index.html</a>; test report: "
-            f"<a href=\"../reports/tests.html\">reports/tests.html</a> (after <code>make report</code>).{summary}"
+            f"{source_note} Gallery: <a href=\"../figures/index.html\">figures/index.html</a>; "
+            f"{report_link_html('../')}.{summary}"
             f"<p>{displays} displays; {r.stats['math']} formulas as MathML, {r.stats['math_fallback']} shown as "
             "LaTeX source (the converter failed on them).</p></div>",
             body.replace("<!--TOC-->", f'<nav class="toc"><b>Contents</b><ul>{toc}</ul></nav>', 1), extra,

@@ -1,7 +1,10 @@
 """`make check-gallery`: open ``figures/index.html`` in a real, headless Chromium and check what a reader sees.
 
 Checks: every image loaded (``naturalWidth > 0``); every 3D view drew (its WebGL canvas, photographed,
-is not blank); no console errors; no network request (every request is a ``file://`` URL of this
+is not blank); every 3D view's data lies inside its frame at the initial camera (no side of the scene's box has
+anything but background within 3 px of it, legend, title and slider hidden for that photograph); a view whose
+caption names a legend shows one; a view's title is shown; no console errors; no network request (every
+request is a ``file://`` URL of this
 repository). A full-page screenshot is saved as ``reports/gallery.png``, and one of each view as
 ``reports/gallery-view-<name>.png``.  The browser is Debian's
 ``chromium`` driven by selenium through Debian's ``chromedriver``.  Nothing is installed unless asked:
@@ -23,6 +26,7 @@ import subprocess
 import sys
 from pathlib import Path
 
+from paper_repro.app.report_link import STATUS_JS
 from paper_repro.util.io import figures_dir, reports_dir
 
 CHROMIUM = ("chromium", "chromium-browser", "google-chrome")
@@ -86,7 +90,10 @@ def make_driver(width: int = 1300, height: int = 1000):
 
 def console_and_requests(driver) -> tuple[list, list[str], list[str]]:
     """(console errors, every requested URL, the requests leaving this machine's files)."""
-    console = [e for e in driver.get_log("browser") if e["level"] in ("SEVERE", "ERROR")]
+    # the one optional file: reports/tests-status.js exists only after `make report` (the page then links the
+    # report; before, it says that make report writes it), so its absence is no error
+    console = [e for e in driver.get_log("browser") if e["level"] in ("SEVERE", "ERROR")
+               and not (f"reports/{STATUS_JS}" in e.get("message", "") and "ERR_FILE_NOT_FOUND" in e["message"])]
     requests = []
     for e in driver.get_log("performance"):
         msg = json.loads(e["message"])["message"]
@@ -94,6 +101,57 @@ def console_and_requests(driver) -> tuple[list, list[str], list[str]]:
             requests.append(msg["params"]["request"]["url"])
     external = [u for u in requests if not u.startswith(("file://", "data:", "blob:", "about:"))]
     return console, requests, external
+
+
+#: Per view: its caption (the figure's figcaption), whether a legend is drawn, its layout title and whether shown.
+_JS_VIEW_INFO = """var v=arguments[0];var f=v.closest('figure');
+var cap=f?(f.querySelector('figcaption')||{}).textContent:'';
+var t=(v.layout||{}).title;var text=(t&&typeof t==='object')?t.text:t;
+return {caption:(cap||'').toLowerCase(),legend:v.querySelectorAll('g.legend').length>0,title:text||'',
+title_shown:[...v.querySelectorAll('.gtitle')].some(e=>e.textContent.trim().length>0)};"""
+
+#: The 3D scene's box in the view (CSS px, relative to the plot's container), with titles, legends and sliders hidden
+#: (they may lie over the scene's box; only the data is looked at).
+_JS_SCENE_BOX = """var v=arguments[0],hide=arguments[1];var fl=v._fullLayout;
+v.querySelectorAll('.infolayer, .menulayer, .modebar-container, .legend')
+.forEach(e=>{e.style.visibility=hide?'hidden':'';});
+if(!fl||!fl.scene)return null;var s=fl._size,d=fl.scene.domain;
+return [s.l+d.x[0]*s.w, s.t+(1-d.y[1])*s.h, (d.x[1]-d.x[0])*s.w, (d.y[1]-d.y[0])*s.h];"""
+
+
+def frame_sides_touched(img, box: tuple[float, float, float, float], band: int = 3) -> list[str]:
+    """The sides of ``box`` (x, y, width, height in pixels of the RGB(A) float image ``img``) where something other
+    than the white background lies within ``band`` pixels of the edge: data cut off by the frame (or touching it).
+
+    >>> import numpy as np
+    >>> img = np.ones((100, 100, 3)); img[40:60, 40:60] = 0.2
+    >>> frame_sides_touched(img, (0, 0, 100, 100)), frame_sides_touched(img, (0, 0, 100, 58))
+    ([], ['bottom'])
+    """
+    x, y, w, h = (int(round(c)) for c in box)
+    x0, y0 = max(x, 0), max(y, 0)
+    x1, y1 = min(x + w, img.shape[1]), min(y + h, img.shape[0])
+    sub = img[y0:y1, x0:x1, :3]
+    ink = sub.min(axis=2) < 0.94
+    bands = {"top": ink[:band], "bottom": ink[-band:], "left": ink[:, :band], "right": ink[:, -band:]}
+    return [side for side, b in bands.items() if b.any()]
+
+
+def data_outside_frame(driver, view) -> list[str]:
+    """The sides of the view's 3D scene where its data, at the initial camera, reaches the frame (screenshot of the
+    plot with legend, title and slider hidden)."""
+    import matplotlib.image as mpimg
+
+    box = driver.execute_script(_JS_SCENE_BOX, view, True)
+    try:
+        if box is None:
+            return []
+        container = view.find_element("css selector", ".svg-container")
+        img = mpimg.imread(io.BytesIO(container.screenshot_as_png), format="png")
+        ratio = img.shape[1] / max(1.0, container.size["width"])  # device pixels per CSS pixel
+        return frame_sides_touched(img, tuple(c * ratio for c in box))
+    finally:
+        driver.execute_script(_JS_SCENE_BOX, view, False)
 
 
 def check(page: Path, screenshot: Path) -> dict:
@@ -108,13 +166,22 @@ def check(page: Path, screenshot: Path) -> dict:
             ".then(()=>setTimeout(done,1500));")
         images = driver.execute_script("return [...document.images].map(i=>[i.getAttribute('src'),i.naturalWidth])")
         views = driver.find_elements("css selector", "div.view")
-        drawn = {}
+        drawn, clipped, no_legend, untitled = {}, {}, [], []
         for v in views:
             driver.execute_script("arguments[0].scrollIntoView()", v)
             canvases = v.find_elements("css selector", "canvas")
             png = v.screenshot_as_png
-            (screenshot.parent / f"gallery-{v.get_attribute('id')}.png").write_bytes(png)
-            drawn[v.get_attribute("id")] = bool(canvases) and not _blank(png)
+            vid = v.get_attribute("id")
+            (screenshot.parent / f"gallery-{vid}.png").write_bytes(png)
+            drawn[vid] = bool(canvases) and not _blank(png)
+            sides = data_outside_frame(driver, v)
+            if sides:
+                clipped[vid] = sides
+            info = driver.execute_script(_JS_VIEW_INFO, v)
+            if "legend" in info["caption"] and not info["legend"]:
+                no_legend.append(vid)
+            if info["title"] and not info["title_shown"]:
+                untitled.append(vid)
         console, requests, external = console_and_requests(driver)
         driver.execute_script("window.scrollTo(0, 0)")
         height = driver.execute_script("return document.body.scrollHeight")
@@ -125,7 +192,9 @@ def check(page: Path, screenshot: Path) -> dict:
         driver.quit()
     bad_images = [src for src, w in images if not w]
     return {"images": len(images), "images_not_loaded": bad_images, "views": drawn,
-            "views_blank": [k for k, ok in drawn.items() if not ok], "console_errors": console,
+            "views_blank": [k for k, ok in drawn.items() if not ok], "views_clipped": clipped,
+            "views_caption_names_a_missing_legend": no_legend, "views_title_not_shown": untitled,
+            "console_errors": console,
             "requests": len(requests), "external_requests": external, "screenshot": str(screenshot)}
 
 
@@ -143,7 +212,8 @@ def main(argv: list[str] | None = None) -> int:
         return NO_BROWSER
     res = check(args.page, args.screenshot)
     ok = (res["images"] > 0 and not res["images_not_loaded"] and res["views"] and not res["views_blank"]
-          and not res["console_errors"] and not res["external_requests"])
+          and not res["views_clipped"] and not res["views_caption_names_a_missing_legend"]
+          and not res["views_title_not_shown"] and not res["console_errors"] and not res["external_requests"])
     print(json.dumps(res, indent=2))
     print("check-gallery: " + ("PASS" if ok else "FAIL"))
     return 0 if ok else 1

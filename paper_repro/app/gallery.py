@@ -21,6 +21,7 @@ from pathlib import Path
 import numpy as np
 
 from paper_repro.app.paper_index import display_of, load_index
+from paper_repro.app.report_link import report_link_html
 from paper_repro.util.io import ROOT, data_dir, figures_dir, in_checkout, output_root, reports_dir, write_text
 
 
@@ -201,19 +202,24 @@ def views() -> dict[str, dict]:
     data = [_mesh_trace(*p.patch.mesh(10), palette[k % 8], f"patch {k + 1}", legend=False) for k, p in enumerate(tor)]
     first = next(p for p in tor if p.phi == 0 and p.psi == 0 and not p.upper)
     data.append(_net_trace(first.patch.net, net_edges(2), "control net of the toroidal triangle (toggle)"))
-    out["torus"] = {"data": data, "layout": {**layout, "title": "Torus: 12 second-order patches"}}
+    # one legend entry only: plotly hides a legend of one entry unless told (the caption points to it)
+    out["torus"] = {"data": data, "layout": {**layout, "showlegend": True,
+                                             "title": {"text": "Torus: 12 second-order patches"}}}
     phases = [k * al for k in range(4)]
     with mpmath.workdps(30):
         params = {"a": mpmath.mpf(6), "b": mpmath.sqrt(32), "c": mpmath.mpf(2), "mu": mpmath.mpf(3)}
     cyc = cyclide_pieces(al, params, phases, phases)
     out["dupin"] = {"data": [_mesh_trace(*p.patch.mesh(8), palette[k % 8], f"patch {k + 1}", legend=False)
                              for k, p in enumerate(cyc)],
-                    "layout": {**layout, "title": "Dupin cyclide: 32 rational second-order patches"}}
+                    "layout": {**layout, "title": {"text": "Dupin cyclide: 32 rational second-order patches"}}}
     net = third_order_net()
     p3 = Patch(3, np.pi / 2, net)
     out["third"] = {"data": [_mesh_trace(*p3.mesh(24), "#9ecae1", "order-3 patch"),
                              _net_trace(net, net_edges(3), "control net (toggle)")],
-                    "layout": {**layout, "title": "Third-order patch (α = π/2) and its 37-point control net"}}
+                    # the net's apex and the patch's front corner reach far: the eye of the other views cut the
+                    # patch off at the bottom; from further away (same direction) all of it is in the frame
+                    "layout": {**layout, "title": {"text": "Third-order patch (α = π/2) and its 37-point control net"},
+                               "scene": {**layout["scene"], "camera": {"eye": {"x": 1.3, "y": -1.3, "z": 0.95}}}}}
     # alpha slider: one order-2 net, the patch for several alpha
     net2 = _order2_net()
     alphas = [0.2, 0.6, 1.0, 1.4, np.pi / 2, 2.0, 2.4, 2.8, 3.1]
@@ -238,7 +244,7 @@ def views() -> dict[str, dict]:
     out["slider"] = {"data": frames[4]["data"] + [_net_trace(net2, net_edges(2), "control net (toggle)")],
                      "frames": frames,
                      "layout": {**layout, "height": 600, "scene": scene,
-                                "title": "One order-2 control net, the patch as α varies",
+                                "title": {"text": "One order-2 control net, the patch as α varies"},
                                 "sliders": [{"active": 4, "steps": steps, "currentvalue": {"prefix": "α = "},
                                              "y": 0.02, "yanchor": "bottom", "len": 0.95, "x": 0.025}]}}
     return out
@@ -277,8 +283,8 @@ def figure_order(manifest: list[dict]) -> list[dict]:
 #: Captions of the interactive views (what they show and how they were made).
 VIEW_CAPTIONS = {
     "torus": "Fig. 8 of the paper, interactive: part of the ring torus (μ = 3, ρ = (1+√5)/2·μ, α = π/2) by 12 "
-             "second-order patches; the control net of the toroidal triangle of Example exmp:torus can be shown "
-             "from the legend.",
+             "second-order patches, with the control net of the toroidal triangle of Example exmp:torus (hide or show "
+             "it by clicking its entry in the legend, top left).",
     "dupin": "Fig. 9 of the paper, interactive: the ring Dupin cyclide (a = 6, b = 4√2, c = 2, μ = 3) by 32 rational "
              "second-order patches, α = π/2.",
     "third": "Fig. 7 of the paper, interactive: a third-order patch (α = π/2) with its 37-point control net.",
@@ -355,8 +361,7 @@ def gallery_html(manifest: list[dict], view_specs: dict[str, dict] | None = None
          "from the registries and <code>data/</code>; nothing on this page is typed in by hand. "
          '<b>The paper, annotated</b> (its text with a badge at every display): '
          '<a href="../paper/index.html">paper/index.html</a> (<code>make paper</code>; needs the paper\'s LaTeX '
-         'source beside the clone). Test report: <a href="../reports/tests.html">reports/tests.html</a> '
-         "(after <code>make report</code>).</p>",
+         'source beside the clone); ' + report_link_html("../") + ".</p>",
          '<nav><a href="#provenance">provenance</a><a href="#claims">claims</a><a href="#errata">errata</a>'
          '<a href="#questions">open questions</a><a href="#figures">figures</a><a href="#views">3D views</a>'
          '<a href="#bench">performance</a><a href="#map">paper map</a><a href="../paper/index.html">annotated paper</a>'

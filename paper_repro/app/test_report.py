@@ -5,18 +5,52 @@ The claim tests (``tests/test_all_claims_slow.py``) record these as user propert
 hooks in ``tests/conftest.py`` put them in a summary table at the top of the report and in a column of the
 results table.  Where a claim's test did not run in the session (``-m "not slow"``), its row comes from
 ``data/claims.json`` and says so.
+
+``make report`` sets :data:`REUSE_ENV`: a claim whose result is in the claim cache under the same id, parameters
+and code fingerprint (:func:`paper_repro.util.cache.code_fingerprint`: the sha256 of every source file of the
+package) -- as ``make reproduce`` left it -- is reused, not recomputed; the others are re-run (and cached).  The
+report says which.  Without it (``make test-all``) every claim is re-run with the cache switched off.
+
+The gallery and the annotated paper show the report's link through
+:func:`paper_repro.app.report_link.report_link_html`: until
+``make report`` has run in the clone they say that it builds the report (no link to a missing file);
+``make report`` writes :data:`STATUS_JS` beside the report, which turns that note into the link.
 """
 
 from __future__ import annotations
 
 import html
 import json
+import os
+from pathlib import Path
 
+from paper_repro.app.report_link import STATUS_JS, status_js
 from paper_repro.util.io import DATA
 
 #: Links from reports/tests.html.
 GALLERY = "../figures/index.html"
 PAPER = "../paper/index.html"
+#: Set (to 1) by ``make report``: claim tests reuse results certified by the same code fingerprint.
+REUSE_ENV = "PAPER_REPRO_REPORT_REUSE"
+
+
+def reuse_certified_results() -> bool:
+    """Whether claim tests may reuse cached results of the same code (``make report``), i.e. :data:`REUSE_ENV` is
+    set to anything but ``''``/``0``.
+
+    >>> import os; os.environ.pop(REUSE_ENV, None) and None; reuse_certified_results()
+    False
+    """
+    return os.environ.get(REUSE_ENV, "") not in ("", "0")
+
+
+def write_status(html_path: Path, counts: dict[str, int], ran: dict[str, dict]) -> Path:
+    """Write :data:`STATUS_JS` beside the report ``html_path``."""
+    reused = sum(1 for r in ran.values() if r.get("reused"))
+    path = Path(html_path).parent / STATUS_JS
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_text(status_js(counts, reused, len(ran) - reused), encoding="utf-8")
+    return path
 
 
 def short_json(obj, width: int = 160) -> str:
@@ -72,17 +106,28 @@ def summary_html(ran: dict[str, dict]) -> str:
     by_id = {c["id"]: c for c in stored}
     rows = []
     for cid in ids:
-        if cid in ran:
-            rows.append(claim_row(ran[cid], "this run", index))
+        if cid in ran and ran[cid].get("reused"):
+            rows.append(claim_row(ran[cid], "reused (make reproduce, same code)", index))
+        elif cid in ran:
+            rows.append(claim_row(ran[cid], "re-run in this report", index))
         else:
             rows.append(claim_row(by_id[cid], "data/claims.json (not re-run)", index))
+    reused = sorted(cid for cid, r in ran.items() if r.get("reused"))
+    rerun = sorted(cid for cid, r in ran.items() if not r.get("reused"))
+    how = (f"<p><b>{len(rerun)} claims re-run</b> in this report ({html.escape(', '.join(rerun)) or 'none'}); "
+           f"<b>{len(reused)} reused</b> ({html.escape(', '.join(reused)) or 'none'}): their results were in the claim "
+           "cache under the same id, parameters and code fingerprint (the sha256 of every source file of the "
+           f"package: {html.escape(', '.join(sorted({r['reused'] for r in ran.values() if r.get('reused')})))}), "
+           "as <code>make reproduce</code> left them, so this code computed them. "
+           "<code>make test-all</code> re-runs every claim without the cache.</p>") if ran else ""
     head = "".join(f"<th>{h}</th>" for h in ("claim", "in the paper", "statement", "kind", "ranges (parameters)",
                                             "measured (click for all)", "status", "from"))
-    return (f'<h2>Claims: what was checked</h2><p>{len(ran)} of {len(ids)} claims checked in this run (the slow '
-            "claim tests, <code>tests/test_all_claims_slow.py</code>; <code>make report</code> runs them); "
+    return (f"<h2>Claims: what was checked</h2><p>{len(ran)} of {len(ids)} claims checked in this run, re-run or "
+            "reused (the slow claim tests, <code>tests/test_all_claims_slow.py</code>; <code>make report</code> runs "
+            "them); "
             f'links: <a href="{PAPER}">the annotated paper</a> (each label), <a href="{GALLERY}">the gallery</a> '
             "(each claim). Kinds: <b>proof</b> (settles the statement for the stated range), <b>exact-evidence</b> "
-            "(exact arithmetic at sampled parameters), <b>numeric-evidence</b> (floating point).</p>"
+            "(exact arithmetic at sampled parameters), <b>numeric-evidence</b> (floating point).</p>" + how +
             '<div style="overflow-x:auto"><table style="border-collapse:collapse;font-size:90%;table-layout:fixed;'
             'width:100%;min-width:1000px" border="1" cellpadding="3"><colgroup>'
             + "".join(f'<col style="width:{w}%">' for w in (10, 14, 22, 7, 12, 25, 4, 6))
@@ -97,6 +142,8 @@ def properties_of(report) -> dict | None:
     rec = {"id": props["claim"], "paper_ref": [s for s in props.get("paper_labels", "").split(", ") if s],
            "statement": props.get("statement", ""), "kind": props.get("kind", ""),
            "status": "pass" if report.passed else "fail"}
+    if props.get("reused"):
+        rec["reused"] = f"code fingerprint {props.get('code', '?')}"
     for key in ("parameters", "measured"):
         try:
             rec[key] = json.loads(props.get(key, "{}"))

@@ -80,7 +80,7 @@ def draw_domains(ax, n: int) -> None:
         ax.text(*p, f"{pair}", color="0.2", ha="center", fontsize=13, style="italic",
                 bbox=dict(boxstyle="round,pad=0.15", fc="white", ec="none", alpha=0.8))
     ax.set_title(f"(b) symmetry domains, n = {n}: R, G, B families and the swaps\n"
-                 "exchanging adjacent domains (italic), as checked by claim `symmetry`", fontsize=14)
+                 "exchanging adjacent domains (italic), as checked by claim “symmetry”", fontsize=14)
 
 
 def _axes_clean(ax) -> None:

@@ -113,7 +113,29 @@ def make_scheme(outdir: Path, n: int = 4) -> list[Path]:
         ax.set_title(rf"({'abcde'[k]}) $\partial^4/\partial v^{{{4 - k}}}\partial w^{{{k}}}$", fontsize=14)
         ax.set_aspect("equal")
         ax.axis("off")
+    _scheme_key(axes[5])
     return [save(fig, outdir / "derivative_scheme_n_4.png")]
+
+
+def _scheme_key(ax) -> None:
+    """The key of derivative_scheme_n_4 in its empty sixth panel: dots and the grey halo."""
+    from matplotlib.legend_handler import HandlerTuple
+    from matplotlib.lines import Line2D
+
+    def dot(color, ms=6):
+        return Line2D([], [], ls="none", marker="o", ms=ms, color=color)
+
+    halo = (dot("0.85", 13), dot("black"))  # drawn one over the other, as in the panels
+    handles = [dot("black"), (dot(COLOR_OF["R"]), dot(COLOR_OF["G"]), dot(COLOR_OF["B"]), dot(COLOR_OF["centre"])),
+               halo]
+    labels = ["the 4th order derivative\nvanishes at y = 0",
+              "it does not vanish\n(colour of the function's family)",
+              "grey halo: the function has the\nfactor sin(v/2) to a power > 4 − k,\n"
+              "the order of the derivative in v\n(so the derivative vanishes at y = 0)"]
+    ax.legend(handles, labels, handler_map={halo: HandlerTuple(ndivide=1), tuple: HandlerTuple(ndivide=None, pad=0.6)},
+              loc="center left", fontsize=11.5, frameon=False, handlelength=3.2, labelspacing=1.4,
+              title="key (panels (a)-(e): k = 0, ..., 4)",
+              title_fontsize=12, alignment="left")
 
 
 def _pretty_alpha(text: str) -> str:

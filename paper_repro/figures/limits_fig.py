@@ -71,8 +71,68 @@ def _frac(w) -> str:
                 "weight; a ringed disc inside the yellow square sits at the Bezier point itself). Right: "
                 "their weights as a table (p_{2,1,5} and p_{3,2,3} are printed with an erratum).")
 def make_conversion(outdir: Path) -> list[Path]:
+    fig = conversion_figure()
+    return [save(fig, outdir / "conversion_of_limit_cases_n_1_2_3.png")]
+
+
+#: Where a label may go around its point (offset in points), tried in this order: the first whose box touches no
+#: line and no marker of the panel is taken.
+LABEL_OFFSETS = [(12, 10), (12, -18), (-40, 10), (-40, -18), (-14, 22), (-14, -30), (20, -4), (-48, -4)] + [
+    (int(round(r * np.cos(a))) - 14, int(round(r * np.sin(a))) - 5) for r in (26, 34, 44)
+    for a in np.radians(np.arange(0, 360, 22.5))]
+
+
+def _segments_px(ax) -> list[np.ndarray]:
+    """Every line of ``ax`` in display pixels (markers as their own tiny segments)."""
+    out = []
+    for line in ax.get_lines():
+        xy = ax.transData.transform(np.asarray(line.get_xydata(), float))
+        if line.get_linestyle() not in ("None", "none", "") and len(xy) >= 2:
+            out += [xy[i:i + 2] for i in range(len(xy) - 1)]
+        if line.get_marker() not in ("None", "none", "", None):
+            r = line.get_markersize() / 72 * ax.figure.dpi / 2
+            out += [np.array([p - (r, 0), p + (r, 0)]) for p in xy] + [np.array([p - (0, r), p + (0, r)]) for p in xy]
+    return out
+
+
+def _hits(box, segments: list[np.ndarray], samples: int = 60) -> bool:
+    """Whether any segment has a point inside ``box`` (a matplotlib Bbox in pixels, grown by 2 px)."""
+    x0, y0, x1, y1 = box.x0 - 2, box.y0 - 2, box.x1 + 2, box.y1 + 2
+    t = np.linspace(0, 1, samples)[:, None]
+    for seg in segments:
+        pts = seg[0] * (1 - t) + seg[1] * t
+        if np.any((pts[:, 0] >= x0) & (pts[:, 0] <= x1) & (pts[:, 1] >= y0) & (pts[:, 1] <= y1)):
+            return True
+    return False
+
+
+def place_labels(fig, requests: list[tuple]) -> list:
+    """Boxed labels ``(ax, text, xy)`` each at the first offset of :data:`LABEL_OFFSETS` where its box lies on no
+    line, no marker and no label placed before (after the layout is final, so pixels are the saved ones)."""
+    renderer = fig.canvas.get_renderer()
+    placed, boxes = [], []
+    for ax, text, xy in requests:
+        segs = _segments_px(ax)
+        for off in LABEL_OFFSETS:
+            ann = ax.annotate(text, xy, xytext=off, textcoords="offset points", fontsize=14, zorder=6,
+                              bbox=dict(boxstyle="round,pad=0.15", fc="white", ec="0.5"))
+            # the text's extent grown by the box's padding (0.15 of the font size) and its edge
+            box = ann.get_window_extent(renderer).padded(0.15 * 14 / 72 * fig.dpi + 1)
+            if not _hits(box, segs) and not any(box.overlaps(b) for b in boxes):
+                break
+            ann.remove()
+        else:
+            raise ValueError(f"no free place for the label {text} at {xy}: add an offset to LABEL_OFFSETS")
+        placed.append(ann)
+        boxes.append(box)
+    return placed
+
+
+def conversion_figure():
+    """The figure of :func:`make_conversion` (not saved)."""
     from paper_repro.theory.limits import conversion_matrix
 
+    labels_to_place: list[tuple] = []
     fig, axes = plt.subplots(2, 2, figsize=(15, 15.5), gridspec_kw={"width_ratios": [1.55, 1]})
     for row, n in enumerate((2, 3)):
         ax, tab = axes[row]
@@ -90,7 +150,7 @@ def make_conversion(outdir: Path) -> list[Path]:
         for lab, p in zip(labels, pos):
             ax.plot(*p, "o", ms=7, color=_color(lab), zorder=3)
         rows = []
-        for k, t in enumerate(CONVERSION_SHOWN[n]):
+        for t in CONVERSION_SHOWN[n]:
             weights = [(f, wt) for f, wt in enumerate(w[idx.index(t)]) if wt != 0]
             for f, wt in weights:
                 ax.plot(*np.stack([pos[f], bez[t]]).T, color=_color(labels[f]), lw=0.8 + 5 * float(wt), alpha=0.7,
@@ -98,9 +158,7 @@ def make_conversion(outdir: Path) -> list[Path]:
                 ax.plot(*pos[f], "o", ms=11, mfc="none", mec="black", mew=1.2, zorder=5)
             # hollow and under the discs, so that a control point at the same place stays visible
             ax.plot(*bez[t], "s", ms=17, mfc="#fff3b0", mec="#d4a800", mew=2.5, zorder=2.5)
-            ax.annotate(f"$p_{{{t[0]},{t[1]},{t[2]}}}$", bez[t], xytext=(12, 10 if k == 0 else -18),
-                        textcoords="offset points", fontsize=14, zorder=6,
-                        bbox=dict(boxstyle="round,pad=0.15", fc="white", ec="0.5"))
+            labels_to_place.append((ax, f"$p_{{{t[0]},{t[1]},{t[2]}}}$", bez[t]))
             rows.append((t, [(labels[f], wt) for f, wt in weights]))
         ax.set_title(f"({'ab'[n - 2]}) order {n} → Bézier degree {N}", fontsize=15)
         ax.set_aspect("equal")
@@ -126,7 +184,8 @@ def make_conversion(outdir: Path) -> list[Path]:
                  "Bézier points; yellow: the two spelled out", fontsize=12, va="top", color="0.25",
                  transform=tab.transAxes)
     fig.tight_layout()
-    return [save(fig, outdir / "conversion_of_limit_cases_n_1_2_3.png")]
+    place_labels(fig, labels_to_place)
+    return fig
 
 
 def _demo_net_order_1() -> np.ndarray:
@@ -140,7 +199,8 @@ def _demo_net_order_1() -> np.ndarray:
         outputs=["degree_elevation_from_1_to_2.png"],
         caption="Order elevation 1 -> 2 of a first order patch for (a) alpha = pi/4 < pi/2, (b) alpha = pi/2, "
                 "(c) alpha = 3pi/4 > pi/2: the order-1 net (blue), the elevated order-2 net (red) and the patch "
-                "(grey, opaque); net parts hidden by the patch are dashed.")
+                "(grey, opaque, smoothly shaded); net parts hidden by the patch are dashed in a light tint of their "
+                "net's colour.")
 def make_elevation(outdir: Path) -> list[Path]:
     from .render3d import Scene, View
 
@@ -181,9 +241,15 @@ def make_elevation_convergence(outdir: Path) -> list[Path]:
     ax.xaxis.set_major_locator(FixedLocator(orders))
     ax.xaxis.set_minor_locator(NullLocator())
     ax.set_xticklabels([str(o) for o in orders])
+    # a log axis over less than a decade gets one labelled tick by default: label 1-1.5-2-3-5-7 steps instead
+    lo, hi = float(min(dist.min(), ref.min())), float(max(dist.max(), ref.max()))
+    yt = [m * 10.0**e for e in range(-6, 3) for m in (1, 1.5, 2, 3, 5, 7) if lo / 1.1 <= m * 10.0**e <= hi * 1.1]
+    ax.yaxis.set_major_locator(FixedLocator(yt))
+    ax.yaxis.set_minor_locator(NullLocator())
+    ax.set_yticklabels([f"{y:g}" for y in yt])
     ax.yaxis.set_minor_formatter(NullFormatter())
-    ax.set_xlabel("order after elevation", fontsize=12)
-    ax.set_ylabel("max distance control point – patch", fontsize=12)
+    ax.set_xlabel("order after elevation (log)", fontsize=12)
+    ax.set_ylabel("max distance control point – patch (log)", fontsize=12)
     ax.set_title(f"α = {rec['alpha']}; fitted slope {slope:.2f} (orders 2..{orders[-1]})", fontsize=12)
     ax.tick_params(labelsize=11)
     ax.legend(fontsize=11)

@@ -54,8 +54,9 @@ PATCH_COLORS = ["#8fb8de", "#f4a582", "#a6d96a", "#fdd26e", "#c2a5cf", "#80cdc1"
 
 @figure("third_order_patch", paper_label="fig:third_order_patch", outputs=["third_order_patch.png"],
         caption="Different views (a), (b), (c) of the same third order triangular trigonometric patch with its "
-                "37-point control net (alpha = pi/2). Opaque surface drawn triangle by triangle far to near; the "
-                "net's parts hidden by the patch (found with a depth buffer) are dashed grey.")
+                "37-point control net (alpha = pi/2). Opaque, smoothly shaded surface drawn triangle by triangle far "
+                "to near; the net's parts hidden by the patch (tested against its triangles, cut at the silhouette) "
+                "are dashed grey.")
 def make_third_order(outdir: Path) -> list[Path]:
     net = third_order_net()
     patch = Patch(3, np.pi / 2, net)
