@@ -29,6 +29,7 @@ def pytest_collection_modifyitems(session, config, items):
     reads it.  Its output goes to reports/warm_ahead.log."""
     from paper_repro.app.test_report import reuse_certified_results
 
+    _mark_bits(items)
     if not reuse_certified_results():
         return
     warm = [it for it in items if it.get_closest_marker("warm_ahead")]
@@ -139,7 +140,7 @@ BITS_TESTS = (
 )
 
 
-def pytest_collection_modifyitems(config, items):
+def _mark_bits(items) -> None:
     for item in items:
         if item.nodeid.startswith(BITS_TESTS):
             item.add_marker(pytest.mark.bits)
