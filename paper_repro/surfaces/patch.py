@@ -13,12 +13,12 @@ from functools import cached_property
 import numpy as np
 
 from paper_repro.core.context import Context, FloatContext, get_context
-from paper_repro.core.derivative_tables import derivative_nets, has_table
 from paper_repro.core.derivatives_basis import DIRECTIONS, basis_derivative, check_direction
 from paper_repro.core.domain import RationalAngle, RationalPoints, barycentric_to_uvw, check_points
-from paper_repro.core.fast import BLOCK, FloatKernel, block_for, contract, run_blocks, trig_of_rows
+from paper_repro.core.fast import FloatKernel, block_for, contract, run_blocks, trig_of_rows
 from paper_repro.core.fast_jit import JIT_BLOCK, JitKernel
 from paper_repro.core.fast_jit import available as jit_available
+from paper_repro.core.half_angle_matrices import derivative_nets
 from paper_repro.core.labels import delta, exponent_matrix, index_of
 from paper_repro.core.nets import LabelledNet, check_net, check_net_exact, net_from_labels  # noqa: F401 (re-exported)
 from paper_repro.core.normalization import evaluate_normalized, scaled_coefficient_vector
@@ -207,7 +207,7 @@ class Patch:
                 "alpha": a, "sa": math.sin(a / 2),
                 "cnet": cnet, "cw": cw, "exp": e, "dnet": dnet, "dexp": e + e2,
                 "aug_t": np.ascontiguousarray((cnet if cw is None else np.column_stack([cnet, cw])).T),
-                "daug_t": daug_t, "daug_chunks": kernel.split_net(daug_t)}
+                "daug_t": daug_t}
 
     def _float_points(self, points) -> np.ndarray:
         """Points as a float ``(P, 3)`` array (validated block by block in :meth:`_checked_rows`)."""
@@ -265,24 +265,24 @@ class Patch:
     def _derivative_nets(self) -> tuple[np.ndarray, np.ndarray]:
         """``(q_u, q_v)``, ``(delta_n, m)``: the nets of ``2 sin(alpha/2)`` times the derivatives along u and v of the
         centred unit-scale net (and the weights' column), on the same scaled monomials
-        (:func:`~paper_repro.core.derivative_tables.derivative_nets`, n <= ``TABLE_MAX_N``)."""
+        from the closed-form derivative matrix C (:func:`~paper_repro.core.half_angle_matrices.derivative_nets`,
+        proven for every n in docs/elevation_and_derivative_for_all_n.md; cos(alpha/2) correctly rounded)."""
         st = self._setup
-        return derivative_nets(self.n, math.cos(st["alpha"] / 2), st["daug_t"].T)
+        return derivative_nets(self.n, st["alpha"], st["daug_t"].T)
 
     def _float_derivatives(self, points, directions, normals: bool = False) -> tuple[list[np.ndarray], int]:
         """``2 sin(alpha/2) 2^-E`` times the derivatives along ``directions`` (bounded), and E; with ``normals``
         (two directions) the unit normals instead, computed block by block (no full-size intermediate).
 
-        For n <= ``TABLE_MAX_N`` the derivative of the patch is a patch of the same order
-        (:mod:`paper_repro.core.derivative_tables`): the derivatives along the directions (and, for a rational
+        For every n the derivative of the patch is a patch of the same order (the closed-form C,
+        :mod:`paper_repro.core.half_angle_matrices`): the derivatives along the directions (and, for a rational
         patch, the values) are one point evaluation of the stacked nets ``du q_u + dv q_v``, with the kernel of
-        :meth:`_float_call`.  Beyond, the monomials' brackets of :meth:`FloatKernel.derivatives_rows` are contracted
-        with the net (:meth:`FloatKernel.contract_derivatives`, or the compiled ``JitKernel.derivatives``).
+        :meth:`_float_call` -- one route for every n (the monomials' brackets, :meth:`FloatKernel.derivatives_rows`
+        and the compiled ``JitKernel.derivatives``, remain only as an independent cross-check in the tests).
         Rational patches by the quotient rule ``(N' - P D') / D``.
         """
         st = self._setup
-        kernel, rational, s2 = st["kernel"], st["cw"] is not None, st["sa"] ** 2
-        nets = st["daug_chunks"]
+        kernel, rational = st["kernel"], st["cw"] is not None
         arr = self._float_points(points)
         outs = [np.empty((arr.shape[0], self.dimension)) for _ in range(1 if normals else len(directions))]
         tol = NORMAL_TOL * delta(self.n)
@@ -290,27 +290,19 @@ class Patch:
         jit = st["jit"]
         dirs = np.array(directions, dtype=np.float64)
         m = st["daug_t"].shape[0]  # coordinates, and the weights' row for a rational patch
-        stacked = None
-        if has_table(self.n):
-            qu, qv = self._derivative_nets
-            parts = [st["daug_t"]] if rational else []
-            parts += [(d[0] * qu + d[1] * qv).T for d in dirs]  # d = du u + dv v in the plane (dw = -du - dv)
-            stacked = np.ascontiguousarray(np.concatenate(parts))
+        qu, qv = self._derivative_nets
+        parts = [st["daug_t"]] if rational else []
+        parts += [(d[0] * qu + d[1] * qv).T for d in dirs]  # d = du u + dv v in the plane (dw = -du - dv)
+        stacked = np.ascontiguousarray(np.concatenate(parts))
 
         def work(lo: int, hi: int, ws) -> None:
             s, c = trig_of_rows(self._checked_rows(arr, lo, hi), st["alpha"], st["sa"])
-            if stacked is not None:
-                if jit is not None:
-                    rows = jit.values(s, c, stacked, ws.get("js", (hi - lo, stacked.shape[0]))).T
-                else:
-                    rows = contract(stacked, kernel.basis_rows(s, c, ws))
-                y = rows[:m] if rational else None
-                dys = [rows[k: k + m] for k in range(m if rational else 0, rows.shape[0], m)]
-            elif jit is not None:
-                y = ws.get("jv", (m, hi - lo)) if rational else None
-                y, dys = jit.derivatives(s, c, s2, dirs, st["daug_t"], ws.get("jd", (len(directions), m, hi - lo)), y)
+            if jit is not None:
+                rows = jit.values(s, c, stacked, ws.get("js", (hi - lo, stacked.shape[0]))).T
             else:
-                y, dys = kernel.contract_derivatives(s, c, s2, directions, nets, values=rational, ws=ws)
+                rows = contract(stacked, kernel.basis_rows(s, c, ws))
+            y = rows[:m] if rational else None
+            dys = [rows[k: k + m] for k in range(m if rational else 0, rows.shape[0], m)]
             if rational:  # (d, P) rows
                 assert y is not None
                 den = y[-1]
@@ -324,11 +316,7 @@ class Patch:
                 for o, r in zip(outs, res):
                     o[lo:hi] = r.T
 
-        if jit is not None:
-            block = JIT_BLOCK
-        else:
-            block = block_for(delta(self.n)) if stacked is not None else BLOCK
-        run_blocks(arr.shape[0], work, block, blas=jit is None)
+        run_blocks(arr.shape[0], work, JIT_BLOCK if jit is not None else block_for(delta(self.n)), blas=jit is None)
         return outs, st["dexp"]
 
     # --- evaluation -------------------------------------------------------------------------------
@@ -392,11 +380,10 @@ class Patch:
         (:data:`~paper_repro.core.derivatives_basis.DIRECTIONS`).  Rational patches use the quotient rule.
 
         The float path is blocked like point evaluation (memory independent of the number of points). For
-        n <= 10 the derivative of the patch is a patch of the same order, with the centred net at unit scale
-        multiplied by the integer-polynomial matrix of :mod:`paper_repro.core.derivative_tables` (a found pattern,
-        verified n = 1..12, not proven): one point
-        evaluation of that net (as fast as a point, within rounding of the direct route).  Beyond, the bounded
-        bracket of :meth:`~paper_repro.core.fast.FloatKernel.derivatives_rows` contracted with that net.  Either
+        every n the derivative of the patch is a patch of the same order: the centred net at unit scale multiplied
+        by the derivative matrix C, whose entries are integer polynomials in cos(alpha/2) (closed form proven for
+        every n: docs/elevation_and_derivative_for_all_n.md, claim ``derivative_all_n``); then one point
+        evaluation of that net (as fast as a point, within rounding of the direct route).  It
         is multiplied by ``2^E / (2 sin(alpha/2))`` once (one power-of-two step), so it is finite for every alpha
         in (0, pi) unless the derivative itself (of size extent / alpha) exceeds float64: then ``OverflowError``
         says so.  A triple direction is taken as ``du u + dv v`` (``dw = -du - dv``).
@@ -433,7 +420,7 @@ class Patch:
 
         Computed blocked (memory independent of the number of points) from the derivatives of the net
         centred and scaled to unit size (so nets of any scale, 1e-300..1e300, give the same normals), without
-        the positive factor 1/(2 sin(alpha/2)); for n <= 10 one 6-coordinate point evaluation (see
+        the positive factor 1/(2 sin(alpha/2)); one 6-coordinate point evaluation (see
         :meth:`derivative`).  "Vanishes" means: the cross product is below what rounding
         can produce, ``|d_u x d_v| <= NORMAL_TOL * delta_n * (|d_u| + |d_v|)`` (unit-scale net), as at a
         degenerate corner where a tangent is 0 or the two are parallel.
