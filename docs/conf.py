@@ -15,16 +15,18 @@ from pathlib import Path
 HERE = Path(__file__).resolve().parent
 ROOT = HERE.parent
 sys.path.insert(0, str(ROOT))
+sys.path.insert(0, str(HERE / "_ext"))
 
 import paper_repro  # noqa: E402
 
 project = "paper_repro"
 author = "paper_repro contributors"
 release = version = paper_repro.__version__
-extensions = ["sphinx.ext.autodoc", "sphinx.ext.napoleon", "sphinx.ext.mathjax", "myst_parser"]
+extensions = ["sphinx.ext.autodoc", "sphinx.ext.napoleon", "sphinx.ext.mathjax", "myst_parser",
+              "api_check"]
 source_suffix = {".rst": "restructuredtext", ".md": "markdown"}
 myst_enable_extensions = ["dollarmath", "amsmath"]
-exclude_patterns = ["_build", "_vendor", "README.md"]
+exclude_patterns = ["_build", "_vendor", "_ext", "README.md"]
 html_theme = "furo"
 html_title = f"paper_repro {release}"
 html_static_path = ["_vendor"]
@@ -53,3 +55,4 @@ def _generated() -> None:
 
 
 _generated()
+

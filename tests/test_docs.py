@@ -26,6 +26,7 @@ def test_tutorial_runs(tmp_path, monkeypatch):
     for k, code in enumerate(blocks):
         exec(compile(code, f"tutorial.md block {k + 1}", "exec"), scope)
     assert (tmp_path / "sphere_octant.obj").is_file()
+    assert (tmp_path / "sphere_octant.stl").stat().st_size > 0 and (tmp_path / "sphere_octant.vtu").is_file()
 
 
 def test_every_docs_page_is_in_the_site():
