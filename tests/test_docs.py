@@ -115,3 +115,82 @@ def test_check_gallery_installs_nothing_unless_asked(monkeypatch, capsys):
     assert "--no-install-recommends" in apt[0] and "--no-upgrade" in apt[0]
     assert set(apt[0][-2:]) == {"chromium", "chromium-driver"}
     assert "installing" in capsys.readouterr().out
+
+
+def _napoleon_fields(obj, what: str) -> list[str]:
+    import inspect
+
+    from sphinx.ext.napoleon import Config
+    from sphinx.ext.napoleon.docstring import NumpyDocstring
+
+    doc = inspect.getdoc(obj) or ""
+    return NumpyDocstring(doc, Config(napoleon_use_param=True), what=what, obj=obj).lines()
+
+
+def _api_check():
+    sys.path.insert(0, str(DOCS / "_ext"))
+    try:
+        import api_check
+    finally:
+        sys.path.remove(str(DOCS / "_ext"))
+    return api_check
+
+
+def _documented_objects():
+    """Every object the API reference renders: the package root and the modules named in api.rst."""
+    import importlib
+    import inspect
+
+    import paper_repro
+
+    objs = {f"paper_repro.{n}": getattr(paper_repro, n) for n in paper_repro.__all__ if n != "__version__"}
+    api = (DOCS / "guide" / "api.rst").read_text(encoding="utf-8")
+    for module, members in re.findall(r"\.\. automodule:: (\S+)\n   :members:(.*)", api):
+        mod = importlib.import_module(module)
+        names = [m.strip() for m in members.split(",") if m.strip()] or [
+            n for n, o in vars(mod).items() if not n.startswith("_") and getattr(o, "__module__", None) == module]
+        objs.update({f"{module}.{n}": getattr(mod, n) for n in names})
+    for name in re.findall(r"\.\. autofunction:: (\S+)", api):
+        module, _, attr = name.rpartition(".")
+        objs[name] = getattr(importlib.import_module(module), attr)
+    out = []
+    for name, obj in objs.items():
+        if inspect.isclass(obj):
+            out.append((name, obj, "class"))
+            out += [(f"{name}.{m}", f, "method") for m, f in vars(obj).items()
+                    if not m.startswith("_") and callable(f) and f.__doc__]
+        elif callable(obj):
+            out.append((name, obj, "function"))
+    return out
+
+
+def test_no_public_docstring_is_garbled_by_napoleon():
+    """Issue 33: Patch's examples after its Parameters section were rendered as ~60 parameters ('7)', 'np', ...).
+    Every object of the API reference goes through napoleon here, as in `make docs` (where api_check fails the
+    build): every documented parameter is one of the signature's and no field holds a doctest line."""
+    check = _api_check()
+    objects = _documented_objects()
+    assert len(objects) > 60
+    bad = {name: check.field_problems(obj, _napoleon_fields(obj, what)) for name, obj, what in objects}
+    assert {k: v for k, v in bad.items() if v} == {}
+
+
+def test_the_api_check_catches_the_old_patch_docstring():
+    check = _api_check()
+
+    def garbled(n, alpha):
+        """A patch.
+
+        Parameters
+        ----------
+        n : the order.
+        alpha : the shape parameter.
+
+        Control-net order for n = 1 (delta_1 = 7):
+
+        >>> import numpy as np
+        >>> net = np.arange(14.0).reshape(7, 2)
+        """
+
+    problems = check.field_problems(garbled, _napoleon_fields(garbled, "function"))
+    assert any("doctest" in p for p in problems) and any("not in the signature" in p for p in problems), problems
