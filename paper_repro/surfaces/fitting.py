@@ -17,7 +17,7 @@ import numpy as np
 from flint import fmpq
 
 from paper_repro.core.collocation import collocate
-from paper_repro.core.context import Context, ExactContext, MpContext, get_context
+from paper_repro.core.context import Context, ExactContext, FloatContext, MpContext, get_context
 from paper_repro.core.domain import (
     RationalAngle,
     RationalPoints,
@@ -111,17 +111,17 @@ def fit_mp(surface: Callable, n: int, alpha, dps: int = 40, verify: int = 4, see
     return res.solution
 
 
-def _values(surface: Callable, pts, arith: str) -> np.ndarray:
+def _values(surface: Callable, pts, route: str) -> np.ndarray:
     """``surface`` at every point, as rows; a surface written for another arithmetic gets one sentence."""
     try:
         return np.array([list(surface(*p)) for p in pts], dtype=object)
     except TypeError as exc:
-        if arith == "mp":
+        if route == "mp":
             need = ("mpmath numbers (mpf): write it with mpmath (mpmath.sin, ...), or fit a numpy-written "
                     "surface with arith='float'")
         else:
             need = "Python floats u, v, w and returns a sequence of real coordinates"
-        raise TypeError(f"surface: fit(..., {arith!r}) calls it with {need} (it raised {exc})") from None
+        raise TypeError(f"surface: fit(..., {route!r}) calls it with {need} (it raised {exc})") from None
 
 
 def fit_float(surface: Callable, n: int, alpha, verify: int = 8, seed: int = 21, rtol: float = 1e-9) -> np.ndarray:
@@ -180,7 +180,7 @@ def fit(surface: Callable, n: int, alpha, arith: str | Context = "mp", **kwargs)
     ctx = get_context(arith)
     if ctx.exact:
         return fit_exact(surface, n, alpha, **kwargs)
-    if ctx.name == "float":
+    if isinstance(ctx, FloatContext):
         return fit_float(surface, n, alpha, **kwargs)
     return fit_mp(surface, n, alpha, **kwargs)
 
