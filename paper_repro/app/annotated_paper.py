@@ -886,6 +886,24 @@ def _load(path: Path, default):
     return json.loads(path.read_text(encoding="utf-8")) if path.exists() else default
 
 
+def paper_line(where, info: dict) -> str:
+    """What ``make paper`` says: one sentence, not the raw summary dict.
+
+    >>> print(paper_line("paper/index.html", {"badges": {"checked": 3, "erratum": 1, "excused": 2,
+    ...       "not yet checked": 0}, "displays": 5, "math": 9, "math_fallback": 0, "unplaced_entries": 0,
+    ...       "unplaced_errata": 0}))  # doctest: +NORMALIZE_WHITESPACE
+    paper: paper/index.html written: 5 displays, 9 formulas as MathML; badges 3 checked, 1 erratum, 2 excused,
+    0 not yet checked.
+    """
+    b = info["badges"]
+    text = (f"paper: {where} written: {info['displays']} displays, {info['math']} formulas as MathML"
+            + (f" ({info['math_fallback']} shown as LaTeX source)" if info["math_fallback"] else "")
+            + f"; badges {b['checked']} checked, {b['erratum']} errat{'um' if b['erratum'] == 1 else 'a'}, "
+            f"{b['excused']} excused, {b['not yet checked']} not yet checked")
+    lost = info["unplaced_entries"] + info["unplaced_errata"]
+    return text + (f"; {lost} index entries or errata without a place (listed at the end)." if lost else ".")
+
+
 def write_paper(source_path: Path = PAPER, out: Path = OUT, lines_path: Path = LINES) -> dict | None:
     """Write ``paper/index.html``; None (and one sentence) where the paper's source is absent."""
     if not source_path.exists():
@@ -895,7 +913,7 @@ def write_paper(source_path: Path = PAPER, out: Path = OUT, lines_path: Path = L
                        _load(DATA / "claims.json", []), _load(DATA / "paper_map.json", {}), _load(lines_path, None),
                        _load(DATA / "errata.json", []))
     write_text(out, page)
-    print(f"paper: {out.relative_to(ROOT) if out.is_relative_to(ROOT) else out}: " + json.dumps(info))
+    print(paper_line(out.relative_to(ROOT) if out.is_relative_to(ROOT) else out, info))
     return info
 
 
