@@ -146,6 +146,7 @@ def _useful(core: str) -> bool:
         return False
     call = re.search(r"\b([a-z]+)\(", core)
     return bool(any(c in TRIGGERS for c in core) and re.search(rf"[{LETTER}]", core)
+                or re.search(r"[0-9)][_^]", core)  # a power or index of a number: 10^8
                 or call and (call.group(1) in OPERATORS or call.group(1) in NAMED))
 
 
