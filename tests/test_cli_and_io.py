@@ -96,6 +96,7 @@ def test_reproduce_ends_with_a_summary_line(tmp_path, monkeypatch, capsys):
     monkeypatch.setattr(annotated_paper, "write_paper", lambda: None)
     (tmp_path / "data").mkdir()
     (tmp_path / "data" / "old.json").write_text("{}")  # written before the run: not counted
+    monkeypatch.setenv(io.OUT_ENV, str(tmp_path))  # --out sets it for good: restored after the test
     code = cli.main(["reproduce", "--out", str(tmp_path)])
     last = capsys.readouterr().out.strip().splitlines()[-1]
     assert code == 1

@@ -18,13 +18,16 @@ from collections.abc import Iterable, Iterator
 from typing import TypeVar
 
 T = TypeVar("T")
+#: The default stream: ``sys.stderr`` as it is when the progress starts (not when this module was imported)
+STDERR = "stderr"
 
 
 class Ticker:
     """Progress of ``total`` steps: a tqdm bar on a TTY (the last finished step as its postfix), otherwise one line
     when :meth:`close` is called (``desc: k of total done in t s``), nothing when ``stream`` is None."""
 
-    def __init__(self, total: int, desc: str, *, stream=sys.stderr):
+    def __init__(self, total: int, desc: str, *, stream=STDERR):
+        stream = sys.stderr if stream == STDERR else stream
         self.total, self.desc, self.stream, self.done = total, desc, stream, 0
         self.start = time.perf_counter()
         self.bar = None
@@ -48,7 +51,7 @@ class Ticker:
                   file=self.stream, flush=True)
 
 
-def progress(items: Iterable[T], desc: str, *, stream=sys.stderr) -> Iterator[T]:
+def progress(items: Iterable[T], desc: str, *, stream=STDERR) -> Iterator[T]:
     """Iterate ``items`` showing progress (:class:`Ticker`): a tqdm bar on a TTY, otherwise one plain line when the
     loop ends (before, one line per item: about 100 ``rank ... n k/20`` lines in a ``make reproduce`` log)."""
     seq = list(items)
