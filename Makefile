@@ -24,7 +24,7 @@ ifneq ($(filter-out 3.11,$(PYVER)),)
 export PAPER_REPRO_CACHE ?= $(CURDIR)/$(VENV)/cache
 endif
 
-.PHONY: venv lock report paper check-paper check-gallery test-min test-pythons test-wheel docs reproduce reproduce-extended test test-all bench bench-coefficients bench-question1 figures lint clean distclean
+.PHONY: test-cpus test-bits-other-cpu venv lock report paper check-paper check-gallery test-min test-pythons test-wheel docs reproduce reproduce-extended test test-all bench bench-coefficients bench-question1 figures lint clean distclean
 
 # The environment: the exact versions of requirements.lock (what `make reproduce` was run with, so
 # figures stay byte-identical), then the package itself without resolving anything.  A failed install
@@ -57,6 +57,33 @@ reproduce-extended: $(STAMP)   ## the same with the extended ranges (larger n)
 
 test: $(STAMP)                 ## fast test suite
 	$(PY) -m pytest -q -m "not slow and not benchmark"
+
+# (data/*_extended* come from reproduce-extended; the gallery index.html names the commit and the extended data.)
+# OpenBLAS kernels numpy's DYNAMIC_ARCH build can be forced to here (Zen runs the Haswell kernel in this build;
+# Sandybridge and Nehalem are pre-AVX2).  The compiled kernel also runs for numba's generic CPU target.
+CORETYPES ?= Haswell SkylakeX Zen Sandybridge Nehalem
+test-cpus: $(STAMP)            ## byte-sensitive tests (-m bits) and a cold `reproduce` data comparison under every OpenBLAS kernel and numba's generic target -> reports/cpu_bits.md (about an hour)
+	mkdir -p build/cpus reports
+	$(PY) tools/cpu_bits.py compute build/cpus/host.json
+	@for k in $(CORETYPES); do echo "== OPENBLAS_CORETYPE=$$k"; \
+	  OPENBLAS_CORETYPE=$$k $(PY) -m pytest -q -p no:cacheprovider -m bits || exit 1; \
+	  OPENBLAS_CORETYPE=$$k $(PY) tools/cpu_bits.py compute build/cpus/openblas-$$k.json || exit 1; done
+	@echo "== NUMBA_CPU_NAME=generic"
+	NUMBA_CPU_NAME=generic PAPER_REPRO_CACHE=$(CURDIR)/build/cpus/cache-generic $(PY) -m pytest -q -p no:cacheprovider -m bits
+	NUMBA_CPU_NAME=generic PAPER_REPRO_CACHE=$(CURDIR)/build/cpus/cache-generic $(PY) tools/cpu_bits.py compute build/cpus/numba-generic.json
+	$(PY) tools/cpu_bits.py compare build/cpus/host.json build/cpus/openblas-*.json build/cpus/numba-generic.json --report reports/cpu_bits.md
+	@for k in $(CORETYPES); do echo "== make reproduce, cold, OPENBLAS_CORETYPE=$$k"; rm -rf build/cpus/reproduce-$$k; \
+	  OPENBLAS_CORETYPE=$$k PAPER_REPRO_NO_CACHE=1 $(PY) -m paper_repro reproduce --out build/cpus/reproduce-$$k >/dev/null || exit 1; \
+	  diff -r -x '*_extended*' data build/cpus/reproduce-$$k/data && \
+	  diff -r -x index.html figures build/cpus/reproduce-$$k/figures || \
+	  { echo "test-cpus: data/ or figures/ differ under OPENBLAS_CORETYPE=$$k"; exit 1; }; done
+	@echo "test-cpus: same bits under $(CORETYPES) and numba's generic target (reports/cpu_bits.md)"
+
+# CI: the byte-sensitive subset under one OpenBLAS kernel other than the host's
+test-bits-other-cpu: $(STAMP)  ## the byte-sensitive tests under an OpenBLAS kernel other than the host's
+	@host=$$($(PY) -c 'import numpy, threadpoolctl; numpy.ones(2) @ numpy.ones(2); print([i["architecture"] for i in threadpoolctl.threadpool_info() if i["user_api"] == "blas"][0])'); \
+	k=Sandybridge; [ "$$host" = Sandybridge ] && k=Haswell; echo "== byte-sensitive tests: host kernel $$host, forced OPENBLAS_CORETYPE=$$k"; \
+	OPENBLAS_CORETYPE=$$k $(PY) -m pytest -q -p no:cacheprovider -m bits
 
 test-all: $(STAMP)             ## every test, slow ones included
 	$(PY) -m pytest -q -m "not benchmark"

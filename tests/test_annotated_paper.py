@@ -273,3 +273,15 @@ def test_check_paper_measures_every_display_box(tmp_path):
     res = check_paper.check(unfitted, tmp_path / "shots")
     assert all(len(res["display_overflow"][w]) == 1 for w in (1024, 1280, 1920)), res["display_overflow"]
     assert not check_paper.passed(res)
+
+
+def test_badge_says_what_its_proof_kind_means():
+    """An exhaustive line is not shown as a bare "proof" (issue 31, item 6)."""
+    entry = {"id": "x", "tex": [1, 1], "status": "checked", "says": "s", "how": "count, n = 1..12",
+             "proof_kind": "exhaustive", "check": "c"}
+    block = ap.Block("display", 1, 1, "a", "", [])
+    block.entries.append(entry)
+    html_ = ap.badge_html(block, ap.Linker({}, set(), {}))
+    assert "proof kind: exhaustive (exact and complete for the range named in &#x27;how&#x27; only" in html_
+    block.entries[0] = {**entry, "proof_kind": "proof"}
+    assert "settles everything the line states" in ap.badge_html(block, ap.Linker({}, set(), {}))

@@ -120,3 +120,52 @@ def test_runner_fails_a_claim_that_publishes_a_raw_float(tmp_path, monkeypatch):
     assert res.status == "pass" and out.raw == {"gap": 5.329070518200751e-15}
     in_data = Claim("in_data", ["x"], "s", "proof", lambda: Outcome(True, {}, data={"f.json": [1.2345678901]}), {})
     assert run_claim(in_data)[0].status == "fail"
+
+
+# -- question1_all_n: the lemmas run at every alpha the statement names (issue 31, item 6) ----------------------------
+def test_question1_statement_names_the_alphas_of_its_lemmas():
+    st = CLAIMS["question1_all_n"].statement
+    assert "{ts}" in st and "only" in st and "not a proof for the others" in st
+    assert "hold exactly for n <= {n_lemma};" not in st  # the old wording, with no alpha
+
+
+def test_question1_lemmas_are_checked_at_every_named_alpha(monkeypatch):
+    """A lemma failing at the second alpha only fails the claim (a check run at the first alpha only would pass)."""
+    from paper_repro.claims import question1_all_n as claim
+    from paper_repro.core.domain import rational_alpha
+
+    small = dict(n_closed=1, n_lemma=2, n_hexagon=1, n_weights=1, sampled_n=[2], ts=["1/3", "3/4"])
+    assert claim.run(**small).passed
+    bad_alpha = rational_alpha(fmpq(3, 4))
+    orig = claim.q1.order_table
+
+    def wrong_at_second(n, alpha, *a, **k):
+        out = orig(n, alpha, *a, **k)
+        return {**out, "ok": False} if alpha.t == bad_alpha.t else out
+
+    monkeypatch.setattr(claim.q1, "order_table", wrong_at_second)
+    res = claim.run(**small)
+    assert not res.passed and "n=1,t=3/4" in res.measured["lemmas_exact_for_n"]
+    assert "n=1,t=1/3" not in res.measured["lemmas_exact_for_n"]
+
+
+# -- general_formulas: what is proven for every n and what for the stated n only (issue 31, item 6) ------------------
+def test_general_formulas_does_not_call_the_centre_end_values_consequences():
+    st = CLAIMS["general_formulas"].statement
+    assert "follow from it" not in st and "not proven for every n" in st and "for each n <= {n_cons}" in st
+    assert "(t-1)" not in st and "(mu-1)" in st and "mu the number of minimal entries" in st
+
+
+def test_the_alpha_to_0_entry_names_mu_not_t():
+    from paper_repro.theory.general_formulas import ALL_LEVELS_AT_1
+
+    assert "(\\mu-1)" in ALL_LEVELS_AT_1["latex"] and ALL_LEVELS_AT_1["where"].startswith("mu = ")
+    assert "(t-1)" not in ALL_LEVELS_AT_1["latex"]
+
+
+def test_derivative_docstrings_call_the_table_a_found_pattern():
+    """The integer-polynomial derivative table is a found pattern until proven (issue 31, item 6)."""
+    from paper_repro.core import fast_jit
+
+    for doc in (Patch.derivative.__doc__, fast_jit.__doc__):
+        assert "found pattern, verified n = 1..12" in " ".join(doc.split())

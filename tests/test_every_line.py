@@ -14,7 +14,7 @@ load_all()
 
 LINE_KEYS = {"id", "part", "tex", "near", "number", "kind", "verbatim", "says", "status", "check", "how",
              "proof_kind", "holds_as_printed", "corrected_holds", "reason", "erratum"}
-COVERAGE_KEYS = {"lines", "checked", "erratum", "excused", "by_kind", "by_part"}
+COVERAGE_KEYS = {"lines", "checked", "erratum", "excused", "by_kind", "by_part", "by_proof_kind"}
 ERR = {"printed": "x = 1", "corrected": "x = 2", "evidence": "exact", "severity": "typo"}
 
 
@@ -57,12 +57,15 @@ def test_fake_part_passes_with_exact_shape(fake_part):
     assert pl["coverage"]["lines"] == 4 and pl["coverage"]["checked"] == 2 and pl["coverage"]["erratum"] == 1
     assert pl["coverage"]["by_part"] == {"fake": {"checked": 2, "erratum": 1, "excused": 1}}
     assert pl["coverage"]["by_kind"]["range"] == {"erratum": 1}
+    assert pl["coverage"]["by_proof_kind"] == {"proof": 1, "exhaustive": 1, "exact-evidence": 1}
     assert [r["id"] for r in pl["lines"]] == ["fake-a", "fake-b", "fake-c", "fake-d"]  # sorted by tex
     assert all(set(r) == LINE_KEYS for r in pl["lines"])
     a, b, c, _ = pl["lines"]
     assert a["number"] == pdf_name("dimension") != "dimension"  # the PDF's number of the nearest label
     assert b["number"] == pdf_name("united_system") and b["number"].startswith("Eq. (")
-    assert a["holds_as_printed"] is True and a["proof_kind"] == "proof" and "dimension" in a["how"]
+    # a line resolved to a claim of kind proof (settled for the claim's range of n) is exhaustive, not proof
+    assert a["holds_as_printed"] is True and a["proof_kind"] == "exhaustive" and "dimension" in a["how"]
+    assert b["proof_kind"] == "proof"
     assert c["holds_as_printed"] is False and c["corrected_holds"] is True
     # the erratum of a line with its own check is published, with its source lines
     assert out.errata == [{"id": "fake-c", "paper_ref": "united_system", "item": "a range", "severity": "typo",
@@ -140,3 +143,26 @@ def test_line_coverage_block_of_the_readme():
            "by_part": {"fake": {"checked": 2, "erratum": 1, "excused": 1}}}
     text = lines_markdown(cov)
     assert "4 lines" in text and "**2 checked**" in text and "| part `fake` | 2 | 1 | 1 | 4 |" in text
+    assert "How far" not in text  # an old coverage without kinds
+    text = lines_markdown({**cov, "by_proof_kind": {"proof": 1, "exhaustive": 2}})
+    assert "**1** proof (the check settles everything the line states), **2** exhaustive (exact and complete for " \
+           "the range of n its `how` names, not for every n)." in text
+
+
+def test_line_kinds_say_how_far_a_proof_goes(fake_part):
+    """"proof" only for everything the line states; a claim's proof for a range of n makes its lines exhaustive,
+    naming the range (issue 31, item 6)."""
+    res = {"dimension": {"status": "pass", "kind": "proof", "errata": [],
+                         "statement": "For n = 1..50, the dimension is delta_n."}}
+    a = every_line.run(claim_results=res).data["paper_lines.json"]["lines"][0]
+    assert a["proof_kind"] == "exhaustive" and "exhaustive for n = 1..50" in a["how"] and "not for every n" in a["how"]
+    assert every_line.claim_line_kind("nonnegativity", {"status": "pass", "kind": "proof"})[0] == "proof"
+    assert every_line.claim_line_kind("x", {"status": "pass", "kind": "exact-evidence"})[0] == "exact-evidence"
+    fake_part["checks"] = fake_checks(ok=lambda: LineResult(True, how="count, n = 1..12", kind="exhaustive"),
+                                      bad=lambda: LineResult(False, True, how="exact", kind="proof"))
+    out = every_line.run(claim_results=res)
+    assert out.passed and out.kind == "proof"  # the claim's kind: "proof" already means "for the stated range"
+    with pytest.raises(ValueError, match="names its range"):
+        LineResult(True, how="a count", kind="exhaustive")
+    with pytest.raises(ValueError, match="kind must be one of"):
+        LineResult(True, how="a count", kind="proven")

@@ -5,7 +5,7 @@ import json
 
 import pytest
 
-from paper_repro.claims.lines import CHECKS
+from paper_repro.claims.lines import CHECKS, LINE_KINDS
 from paper_repro.claims.lines import sec1_3 as C
 from paper_repro.printed.lines import sec1_3 as P
 
@@ -45,7 +45,7 @@ def test_every_registered_check_of_the_part_is_used_and_reports_plain_values(res
     for cid, r in results.items():
         json.dumps(r.detail)
         assert not _floats(r.detail), cid
-        assert r.kind in ("proof", "exact-evidence", "numeric-evidence") and r.how
+        assert r.kind in LINE_KINDS and r.how
 
 
 def test_errata_lines_name_their_fields():
@@ -57,11 +57,13 @@ def test_errata_lines_name_their_fields():
 
 
 # -- the checks reject wrong inputs ----------------------------------------------------------------------------
-def test_united_dedupe_rejects_the_full_ranges():
-    assert C.united_dedupe().holds_as_printed
+def test_united_dedupe_reads_the_transcription_and_rejects_the_full_ranges():
+    text = {x.id: x.verbatim for x in P.LINES}["sec1_3-united-system"]
+    assert C.united_dedupe().holds_as_printed and "_{j=0,i=j}^{n-1,2n-1-j}" in text
     # i = j..2n-j (the range of R_system) lists R_{2n,j,j} = G_{2n,2n-j,j} twice
-    assert not C.united_dedupe(ranges=lambda n, j: range(j, 2 * n - j + 1)).holds_as_printed
-    assert not C.united_dedupe(ranges=lambda n, j: range(j + 1, 2 * n - j)).holds_as_printed
+    assert not C.united_dedupe(text.replace("^{n-1,2n-1-j}", "^{n-1,2n-j}")).holds_as_printed
+    assert not C.united_dedupe(text.replace("_{j=0,i=j}", "_{j=0,i=j+1}")).holds_as_printed
+    assert not C.united_dedupe(text.replace("^{n-1,2n-1-j}", "^{n-2,2n-1-j}")).holds_as_printed  # a level short
 
 
 def test_chain_rule_rejects_a_wrong_pair_of_variables():
@@ -77,11 +79,16 @@ def test_parametrization_check_rejects_the_printed_partition_range():
     assert all(C.param_onto(p) for p in C.STEP_PARAMS)
 
 
-def test_boundary_vars_rejects_a_wrong_variable():
-    wrong = dict(C.PRINTED_BOUNDARY, parametrization_2_x_0=("y", 0))
-    assert not C.boundary_vars(wrong).holds_as_printed
-    wrong = dict(C.PRINTED_BOUNDARY, parametrization_3_y_0=("y", 0))
-    assert not C.boundary_vars(wrong).holds_as_printed
+def test_boundary_vars_reads_the_transcriptions_and_rejects_a_wrong_variable():
+    text = {x.id: x.verbatim for x in P.LINES}
+    assert C.boundary_vars().holds_as_printed and C.boundary_vars().detail["lines"] == 8
+    assert not C.boundary_vars({"sec1_3-r0-p2-where": text["sec1_3-r0-p2-where"].replace("$x=0$", "$y=0$")}
+                               ).holds_as_printed
+    caption = text["sec1_3-fig-j1-caption-params"]
+    assert not C.boundary_vars({"sec1_3-fig-j1-caption-params": caption.replace("$x=0$ and $y=0$", "$y=0$ and $x=0$")}
+                               ).holds_as_printed
+    assert not C.boundary_vars({"sec1_3-rp3-where": text["sec1_3-rp3-where"].replace("at $y=0$", "at the edge")}
+                               ).holds_as_printed  # a point missing
 
 
 def test_sum_bound_and_levels_distinguish_printed_from_corrected():
@@ -134,3 +141,170 @@ def test_elimination_is_exact_and_leaves_the_centre():
         assert C.alive_after(n, n - 1, 2) == frozenset({0})
         removed = [k for _r, _p, _b, gone in C.elimination(n) for k in gone]
         assert sorted(removed) == list(range(1, len(removed) + 1))
+
+
+# -- the checks read their lines from the transcription (issue 31, item 6) --------------------------------------
+@pytest.mark.parametrize("line_id, wrong", [
+    ("sec1_3-R-system", ("^{n,2n-j}", "^{n,2n-1-j}")),   # one function short per level
+    ("sec1_3-B-system", ("^{n,2n-j}", "^{n,2n}")),       # negative cosine powers
+    ("sec1_3-B-system", ("_{j=0,i=j}", "_{j=1,i=j}")),   # level 0 missing
+    ("sec1_3-G-system", ("_{j=0,i=j}", "_{j=0,i=0}")),   # i < j: negative powers
+    ("sec1_3-R-leq-n", ("^{n,n}", "^{n,n+1}")),          # the halves overlap
+])
+def test_rgb_index_sets_read_the_transcription_and_reject_a_wrong_one(line_id, wrong):
+    text = {x.id: x.verbatim for x in P.LINES}[line_id]
+    assert wrong[0] in text
+    assert C.rgb_index_sets(n_max=4).holds_as_printed
+    assert not C.rgb_index_sets({line_id: text.replace(*wrong)}, n_max=4).holds_as_printed
+
+
+def test_printed_exponents_are_those_of_the_package():
+    from paper_repro.core.labels import BasisLabel, exponents
+
+    for n in range(1, 6):
+        for c in "RGB":
+            for j in range(n + 1):
+                for i in range(j, 2 * n - j + 1):
+                    assert C.printed_exponents(c, n, i, j) == exponents(BasisLabel(c, n, i, j))
+    assert C.printed_exponents("R", 2, 1, 2) is None  # i < j
+
+
+@pytest.mark.parametrize("line_id", sorted(C.ZERO_LINES))
+def test_zero_conclusions_are_their_own_checks_and_reject_wrong_transcriptions(line_id, monkeypatch):
+    """gamma' = 0 (and rho', beta') is checked as the step's conclusion, not through the display before it."""
+    line = {x.id: x for x in P.LINES}[line_id]
+    assert line.check == line_id
+    assert C.zero_conclusion(line_id).holds_as_printed
+    assert not C.zero_conclusion(line_id, line.verbatim.replace("=0,", "=1,")).holds_as_printed
+    lo = line.verbatim.split("~i=")[1].split(",")[0]
+    wrong_lo = line.verbatim.replace(f"~i={lo},", f"~i={int(lo) + 1},")
+    assert not C.zero_conclusion(line_id, wrong_lo).holds_as_printed  # one constant left out
+    shorter = line.verbatim.replace("\\ldots,2n", "\\ldots,2n-2")
+    assert shorter != line.verbatim and not C.zero_conclusion(line_id, shorter).holds_as_printed
+    monkeypatch.setattr(C, "_rank", lambda rows: len(rows[0]) - 1)  # dependent restrictions: nothing is forced
+    assert not C.zero_conclusion(line_id).holds_as_printed
+
+
+# -- the sums of L, L-tilde, L-hat, L_0, L_r, ... are read from their rows (issue 31, item 6) ---------------------
+@pytest.mark.parametrize("check, line_id, right, wrong", [
+    ("l_set", "sec1_3-L-G-row", "\\sum\\limits_{j=0}^{n-1}", "\\sum\\limits_{j=1}^{n-1}"),
+    ("ltilde_set", "sec1_3-Ltilde-row2", "\\sum\\limits_{i=1}^{2n-1}", "\\sum\\limits_{i=0}^{2n-1}"),
+    ("lhat_set", "sec1_3-Lhat-row3", "\\beta_{2n,2n-i,0}B_{2n,2n-i,0}", "\\beta_{2n,2n-i,1}B_{2n,2n-i,1}"),
+    ("l0_set", "sec1_3-L0-row2", "\\gamma_{2n,2n-i,j}G", "\\beta_{2n,2n-i,j}G"),
+    ("lr_set", "sec1_3-Lr-row2", "\\sum\\limits_{j=r+1}^{n-1}", "\\sum\\limits_{j=r}^{n-1}"),
+    ("lr1_set", "sec1_3-Lr1-row3", "\\sum\\limits_{i=j}^{2n-1-j}", "\\sum\\limits_{i=j}^{2n-j}"),
+    ("ltilde_r_set", "sec1_3-Ltilde-r-row2", "\\gamma_{2n,2n-i,r+1}G_{2n,2n-i,r+1}",
+     "\\gamma_{2n,2n-i,r}G_{2n,2n-i,r}"),
+    ("lhat_r_set", "sec1_3-Lhat-r-row2", "\\sum\\limits_{i=r+2}", "\\sum\\limits_{i=r+3}"),
+    ("ln2_set", "sec1_3-Ln2-row3", "\\sum\\limits_{i=n-1}^{n}", "\\sum\\limits_{i=n-1}^{n+1}"),
+    ("ln1_set", "sec1_3-Ln1", "\\rho_{2n,n,n}R_{2n,n,n}", "\\rho_{2n,n,n-1}R_{2n,n,n-1}"),
+])
+def test_sum_sets_read_their_rows_and_reject_a_wrong_transcription(check, line_id, right, wrong):
+    text = {x.id: x.verbatim for x in P.LINES}[line_id]
+    assert right in text
+    fn = getattr(C, check)
+    assert fn().holds_as_printed
+    assert not fn({line_id: text.replace(right, wrong)}).holds_as_printed
+
+
+def test_a_constant_that_does_not_match_its_function_is_unread():
+    text = {x.id: x.verbatim for x in P.LINES}["sec1_3-L-R-row"]
+    res = C.l_set({"sec1_3-L-R-row": text.replace("\\rho_{2n,n,n}R", "\\gamma_{2n,n,n}R")})
+    assert not res.holds_as_printed and "does not match" in res.detail["unread"]
+
+
+def test_zeroed_constants_are_read_from_the_transcription():
+    text = {x.id: x.verbatim for x in P.LINES}
+    rp3 = text["sec1_3-rp3-zeroed"]
+    assert C.rp3_zeroed().holds_as_printed
+    for right, wrong in (("=0,", "=1,"), ("i=r+2,r+3", "i=r+1,r+2"),
+                         ("2n-1-\\left( r+1\\right)", "2n-\\left( r+1\\right)"),
+                         ("\\beta_{2n,2n-i,r+1}", "\\beta_{2n,2n-i,r}")):
+        assert right in rp3, right
+        assert not C.rp3_zeroed(verbatim=rp3.replace(right, wrong)).holds_as_printed, wrong
+    rp1 = text["sec1_3-rp1-zeroed"]
+    assert C.rp1_zeroed(level=lambda n, r: r + 1).holds_as_printed  # the erratum's level
+    assert not C.rp1_zeroed(level=lambda n, r: r + 1, verbatim=rp1.replace("i=r+1,r+2", "i=r+2,r+3")).holds_as_printed
+
+
+@pytest.mark.parametrize("check, line_id, right, wrong", [
+    ("chain_1", "sec1_3-chain-1", "\\partial v_{1}^{r-k}\\partial w_{1}^{k}",
+     "\\partial w_{1}^{r-k}\\partial v_{1}^{k}"),
+    ("chain_1", "sec1_3-y-derivative-L-r", "\\left( -1\\right) ^{k}", "\\left( 1\\right) ^{k}"),
+    ("chain_2", "sec1_3-x-derivative-L-tilde-r", "\\partial u_{2}^{r+1-k}", "\\partial w_{2}^{r+1-k}"),
+    ("chain_3", "sec1_3-chain-3", "\\partial w_{3}^{r-k}\\partial u_{3}^{k}",
+     "\\partial u_{3}^{r-k}\\partial w_{3}^{k}"),
+    ("chain_pu", "sec1_3-chain-rule", "\\partial v^{r-k}\\partial w^{k}", "\\partial v^{r-k}\\partial u^{k}"),
+])
+def test_chain_rules_read_their_variables_and_reject_a_wrong_transcription(check, line_id, right, wrong):
+    text = {x.id: x.verbatim for x in P.LINES}[line_id]
+    assert right in text and getattr(C, check)().holds_as_printed
+    assert not getattr(C, check)({line_id: text.replace(right, wrong)}).holds_as_printed
+
+
+@pytest.mark.parametrize("line_id, right, wrong", [
+    ("sec1_3-delta-sum", "^{2n-1-j}", "^{2n-j}"),
+    ("sec1_3-delta-sum", "=1+3n", "=1+2n"),
+    ("sec1_3-theorem-delta", "+1", "+2"),
+    ("sec1_3-abstract-delta", "=3n", "=3"),
+])
+def test_delta_count_reads_every_printed_value(line_id, right, wrong):
+    text = {x.id: x.verbatim for x in P.LINES}[line_id]
+    assert right in text and C.delta_count().holds_as_printed
+    assert C.delta_count().detail["values_per_line"]["sec1_3-delta-sum"] == 2
+    assert not C.delta_count({line_id: text.replace(right, wrong, 1)}).holds_as_printed
+
+
+@pytest.mark.parametrize("line_id, right, wrong", [
+    ("sec1_3-r0-p1-A-system", "_{i=0}^{2n}", "_{i=1}^{2n}"),      # not the A's of the sum before it
+    ("sec1_3-r0-p2-A-system", "_{i=1}^{2n}", "_{i=0}^{2n+1}"),    # no such A
+    ("sec1_3-r0-p3-aform", "\\sum_{i=1}^{2n-1}", "\\sum_{i=1}^{2n}"),
+])
+def test_a_systems_are_read_and_tied_to_their_sums(line_id, right, wrong):
+    text = {x.id: x.verbatim for x in P.LINES}[line_id]
+    assert right in text and C.a_independent().holds_as_printed
+    assert not C.a_independent({line_id: text.replace(right, wrong)}).holds_as_printed
+
+
+@pytest.mark.parametrize("line_id, right, wrong", [
+    ("sec1_3-induction-orders", "\\ldots,n$", "\\ldots,n-1$"),
+    ("sec1_3-induction-range", "\\ldots,n-1$", "\\ldots,n$"),
+    ("sec1_3-step-range", "\\ldots,n-2$", "\\ldots,n-1$"),
+    ("sec1_3-induction-conclusion", "$r=0,1,", "$r=1,2,"),
+    ("sec1_3-fig-j1-caption-orders", "$r=n-2$", "$r=n-1$"),
+    ("sec1_3-fig-j1-text", "the first and", "the second and"),
+    ("sec1_3-fig-j1-text", "L_{n-2}", "L_{n-1}"),
+])
+def test_elimination_orders_read_their_six_lines(line_id, right, wrong):
+    text = {x.id: x.verbatim for x in P.LINES}[line_id]
+    assert right in text and C.elimination_orders().holds_as_printed
+    assert not C.elimination_orders({line_id: text.replace(right, wrong, 1)}).holds_as_printed
+
+
+@pytest.mark.parametrize("check, line_id, right, wrong", [
+    ("r0p1_terms", "sec1_3-r0-p1-terms", "\\sum_{i=0}^{2n-1}", "\\sum_{i=0}^{2n-2}"),
+    ("r0p1_terms", "sec1_3-r0-p1-terms", "\\gamma_{2n,2n,0}G_{2n,2n,0}", "\\gamma_{2n,2n,1}G_{2n,2n,1}"),
+    ("r0p2_terms", "sec1_3-r0-p2-terms", "0,\\alpha-y,y", "0,y,\\alpha-y"),     # not the edge of parametrization 2
+    ("r0p3_terms", "sec1_3-r0-p3-terms", "\\beta_{2n,2n-i,0}B", "\\beta_{2n,2n-i,0}G"),  # constant and function differ
+])
+def test_order_0_terms_are_read_from_the_transcription(check, line_id, right, wrong):
+    text = {x.id: x.verbatim for x in P.LINES}[line_id]
+    assert right in text and getattr(C, check)().holds_as_printed
+    assert not getattr(C, check)(text.replace(right, wrong)).holds_as_printed
+
+
+def test_omitted_functions_are_read_from_the_transcriptions():
+    text = {x.id: x.verbatim for x in P.LINES}
+    assert C.r0p1_omitted().holds_as_printed and C.r0p2_omitted().holds_as_printed
+    assert not C.r0p1_omitted({"sec1_3-r0-p1-omitted": text["sec1_3-r0-p1-omitted"].replace("v_{1}", "w_{1}")}
+                              ).holds_as_printed  # not the variable of the edge
+    assert not C.r0p2_omitted({"sec1_3-r0-p2-terms": text["sec1_3-r0-p2-terms"].replace("i=1}", "i=2}")}
+                              ).holds_as_printed  # a kept function called omitted
+
+
+@pytest.mark.parametrize("right, wrong", [("\\gamma_{2n,2n-i,r+1}", "\\gamma_{2n,2n-i,r}"), ("_{i=r+1}", "_{i=r}"),
+                                          ("equal to $0$", "equal to $1$")])
+def test_level_zeroed_reads_the_constants(right, wrong):
+    text = {x.id: x.verbatim for x in P.LINES}["sec1_3-step-zeroed"]
+    assert right in text and C.level_zeroed().holds_as_printed
+    assert not C.level_zeroed(text.replace(right, wrong)).holds_as_printed

@@ -8,7 +8,7 @@ from fractions import Fraction
 
 import pytest
 
-from paper_repro.claims.lines import load_checks
+from paper_repro.claims.lines import LINE_KINDS, load_checks
 from paper_repro.claims.lines import sec4_5 as ck
 from paper_repro.printed import normalization as pn
 from paper_repro.printed.lines import sec4_5 as pl
@@ -40,7 +40,7 @@ def test_check_meets_expectation(check_id):
         assert res.holds_as_printed is True
     else:
         assert res.holds_as_printed is False and res.corrected_holds is True
-    assert res.kind in ("proof", "exact-evidence", "numeric-evidence") and res.how
+    assert res.kind in LINE_KINDS and res.how
     json.dumps(res.detail)
     assert not _floats(res.detail)
 
@@ -70,9 +70,22 @@ def test_power_reduction_rejects_a_wrong_formula():
 
 
 def test_k_sets_reject_a_wrong_bound():
-    wrong = dict(pl.K_UPPER)
+    wrong = dict(ck.read_k_upper())
     wrong["0,0"] = lambda n, i, j: (Fraction(2 * n - i, 2), Fraction(i, 2), Fraction(i - j, 2) + 1, Fraction(j, 2))
     assert ck.k_sets_agree(3)[1]["0,0"] and not ck.k_sets_agree(3, wrong)[1]["0,0"]
+
+
+@pytest.mark.parametrize("case, line_id, right, wrong", [
+    ("0,0", "sec4_5-K00", "\\frac{i}{2}", "\\frac{i+2}{2}"),
+    ("1,1", "sec4_5-K11", "K_{1,1}", "K_{1,0}"),
+])
+def test_k_factors_are_read_from_the_transcription(case, line_id, right, wrong):
+    text = {x.id: x.verbatim for x in pl.LINES}[line_id]
+    assert right in text and ck.k_case_check(case).holds_as_printed
+    assert not ck.k_case_check(case, {line_id: text.replace(right, wrong, 1)}).holds_as_printed
+    # the erratum K_{1,0}: the printed third factor fails, the corrected one holds
+    k10 = ck.k_case_check("1,0")
+    assert k10.holds_as_printed is False and k10.corrected_holds is True
 
 
 def test_max_bounds_need_s4_to_range():
@@ -115,3 +128,107 @@ def test_inclusion_rejects_a_too_small_E():
     lab_max = max(max(f) - min(f) for lab in ck.united_system(2)
                   for f in ck.half_monomial(ck.exponents(lab)).terms)
     assert ck.inclusion_proof(2) and lab_max == 2
+
+
+# -- sec4_5-chain-sum tests its own line, "= 0" included (issue 31, item 6) --------------------------------------------
+def test_chain_sum_is_checked_with_its_value_and_rejects_wrong_transcriptions():
+    line = {x.id: x for x in pl.LINES}["sec4_5-chain-sum"]
+    assert line.check == "sec4_5-chain-sum" and ck.check_chain_sum().holds_as_printed
+    for right, wrong in (("=0,~", "=1,~"), ("\\left( -1\\right) ^{k}", "\\left( 1\\right) ^{k}"),
+                         ("v^{r-k}", "v^{r}"), ("\\dbinom{r}{k}", "\\dbinom{r}{0}"),
+                         ("\\sum_{k=0}^{r}", "\\sum_{k=1}^{r}"), ("_{y=0}", "_{y=x}")):
+        assert right in line.verbatim
+        assert not ck.check_chain_sum(line.verbatim.replace(right, wrong)).holds_as_printed, wrong
+    orders = {x.id: x for x in pl.LINES}["sec4_5-parametrization-restated"].verbatim
+    assert not ck.check_chain_sum(orders=orders.replace("r=1,2", "r=0,1")).holds_as_printed  # r = 0 gives 1
+
+
+def test_cos_nonzero_is_its_own_check_and_reads_its_interval():
+    line = {x.id: x for x in pl.LINES}["sec4_5-cos-nonzero"]
+    assert line.check == "sec4_5-cos-nonzero" and ck.check_cos_nonzero().holds_as_printed
+    assert not ck.check_cos_nonzero(line.verbatim.replace("0,\\alpha", "0,2\\alpha")).holds_as_printed
+    assert not ck.check_cos_nonzero(line.verbatim.replace("\\neq0", "=0")).holds_as_printed
+
+
+@pytest.mark.parametrize("line_id, right, wrong", [
+    ("sec4_5-examples-n3-1", "1\\cdot u+1\\cdot v+0\\cdot w", "1\\cdot u+0\\cdot v+0\\cdot w"),
+    ("sec4_5-examples-n3-2", "2\\cdot u+0\\cdot v+1\\cdot w", "2\\cdot u+1\\cdot v+1\\cdot w"),
+    ("sec4_5-examples-n3-3", "\\nsim", "\\sim"),
+])
+def test_examples_are_read_from_the_transcription(line_id, right, wrong):
+    text = {x.id: x.verbatim for x in pl.LINES}[line_id]
+    assert right in text and ck.check_examples_n3().holds_as_printed
+    assert not ck.check_examples_n3({line_id: text.replace(right, wrong, 1)}).holds_as_printed
+
+
+@pytest.mark.parametrize("line_id, right, wrong", [
+    ("sec4_5-V1", "\\cos\\left( w\\right) ,\\sin\\left( w\\right)", "\\cos\\left( 2w\\right) ,\\sin\\left( 2w\\right)"),
+    ("sec4_5-n2-classes-row2", "_{b=0}^{1}", "_{b=0}^{2}"),
+    ("sec4_5-V2-row3", "\\cos\\left( u+2v\\right) ,\\sin\\left( u+2v\\right)",
+     "\\cos\\left( 2u+2v\\right) ,\\sin\\left( 2u+2v\\right)"),
+    ("sec4_5-V2-row1", "\\sin\\left( 2w\\right)", "\\sin\\left( w\\right)"),  # cos and sin disagree: unread
+])
+def test_orders_1_2_read_v1_the_classes_and_v2(line_id, right, wrong):
+    text = {x.id: x.verbatim for x in pl.LINES}[line_id]
+    assert right in text and ck.check_orders_1_2().holds_as_printed
+    assert not ck.check_orders_1_2({line_id: text.replace(right, wrong, 1)}).holds_as_printed
+
+
+def test_proposition_weights_and_partition_sum_are_read_from_their_transcriptions():
+    text = {x.id: x.verbatim for x in pl.LINES}
+    prop = ck.check_prop_union()
+    assert prop.holds_as_printed is False and prop.corrected_holds is True  # erratum: the union from i = 1
+    new = text["sec4_5-prop-new-classes"]
+    fixed = {k: text[k].replace("\\cup_{i=1}^{n-1}", "\\cup_{i=0}^{n-1}")
+             for k in ("sec4_5-prop-recurrence", "sec4_5-prop-new-classes")}
+    assert ck.check_prop_union(fixed).holds_as_printed  # the corrected start, read, holds
+    assert not ck.check_prop_union({"sec4_5-prop-new-classes": new.replace("_{b=0}^{n-1}", "_{b=1}^{n-1}")}
+                                   ).corrected_holds  # a representative missing
+    weights = text["sec4_5-weights"]
+    assert ck.check_weights_index().holds_as_printed
+    assert not ck.check_weights_index(weights.replace("r_{2n,n,n}^{\\alpha},", "")).holds_as_printed
+    assert not ck.check_weights_index(weights.replace("_{j=0,i=j}^{n-1,2n-1-j}", "_{j=0,i=j}^{n-1,2n-j}")
+                                      ).holds_as_printed
+    lsum = text["sec4_5-L-sum"]
+    assert ck.check_partition_sum().holds_as_printed
+    assert not ck.check_partition_sum(lsum.replace("\\sum_{i=j}^{2n-1-j}g", "\\sum_{i=j+1}^{2n-1-j}g")
+                                      ).holds_as_printed
+    assert not ck.check_partition_sum(lsum.replace("b_{2n,2n-i,j}^{\\alpha}B", "b_{2n,2n-i,j}^{\\alpha}G")
+                                      ).holds_as_printed
+
+
+@pytest.mark.parametrize("line_id, right, wrong", [
+    ("sec4_5-blending-set", "^{n-1,2n-1-j}", "^{n-1,2n-j}"),
+    ("sec4_5-blending-set", "\\overline{B}_{2n,2n-i,j}", "\\overline{G}_{2n,2n-i,j}"),
+    ("sec4_5-blending-centre-set", "\\overline{G}_{2n,n,n}", "\\overline{G}_{2n,n,n-1}"),
+])
+def test_blending_set_is_read_from_the_transcription(line_id, right, wrong):
+    text = {x.id: x.verbatim for x in pl.LINES}[line_id]
+    assert right in text and ck.check_blending_def().holds_as_printed
+    assert not ck.check_blending_def({line_id: text.replace(right, wrong, 1)}).holds_as_printed
+
+
+def test_relation_reads_the_z_range_of_both_lines():
+    text = {x.id: x.verbatim for x in pl.LINES}
+    assert ck.check_relation().holds_as_printed
+    short = {k: text[k].replace("\\ldots,2n", "\\ldots,2n-1") for k in ("sec4_5-z-range", "sec4_5-z-range-2")}
+    assert not ck.check_relation(short).holds_as_printed  # 2n is needed
+    assert not ck.check_relation({"sec4_5-z-range": short["sec4_5-z-range"]}).holds_as_printed  # the lines disagree
+
+
+def test_unknowns_are_read_from_both_lines():
+    text = {x.id: x.verbatim for x in pl.LINES}
+    assert ck.check_unknowns().holds_as_printed
+    assert not ck.check_unknowns({"sec4_5-unknowns": text["sec4_5-unknowns"].replace("^{n,n}", "^{n,n-1}")}
+                                 ).holds_as_printed  # a class without its unknown
+    assert not ck.check_unknowns({"sec4_5-closed-forms-index": text["sec4_5-closed-forms-index"].replace(
+        "_{j=0,i=j}", "_{j=0,i=0}")}).holds_as_printed  # two unknowns in one class
+
+
+def test_system_reads_its_orders_and_right_hand_side():
+    text = {x.id: x.verbatim for x in pl.LINES}
+    assert ck.check_system().holds_as_printed
+    assert not ck.check_system({"sec4_5-system-r-range": text["sec4_5-system-r-range"].replace(
+        "\\ldots,n", "\\ldots,n-1")}).holds_as_printed  # order n is needed for a unique solution
+    assert not ck.check_system({"sec4_5-system": text["sec4_5-system"].replace("\\delta_{r,0}", "1")}
+                               ).holds_as_printed

@@ -75,12 +75,45 @@ def test_control_net_count_rejects_the_printed_set_and_wrong_sets():
                                     n)
 
 
+def _names(color: str, n: int, last: str | None = None) -> list[str]:
+    out = [f"{color}_{{{2 * n},{2 * n - i},0}}" for i in range(2 * n)]
+    return out + [last or f"{color}_{{{2 * n},0,0}}"]
+
+
 def test_boundary_check_rejects_wrong_colour_and_wrong_argument():
     alpha = rational_alpha(fmpq(1, 3))
-    assert c6.boundary_holds(2, alpha, 0, "g", 2)
-    assert not c6.boundary_holds(2, alpha, 0, "b", 2)  # wrong control polygon
-    assert not c6.boundary_holds(2, alpha, 0, "g", 1)  # A(v) instead of A(w)
-    assert not c6.boundary_holds(2, alpha, 1, "r", 2)  # v = 0 edge with A(w)
+    assert c6.boundary_holds(2, alpha, 0, 2, _names("g", 2, "b_{4,4,0}"))
+    assert not c6.boundary_holds(2, alpha, 0, 2, _names("b", 2, "r_{4,4,0}"))  # wrong control polygon
+    assert not c6.boundary_holds(2, alpha, 0, 1, _names("g", 2, "b_{4,4,0}"))  # A(v) instead of A(w)
+    assert not c6.boundary_holds(2, alpha, 1, 2, _names("r", 2, "g_{4,4,0}"))  # v = 0 edge with A(w)
+    assert not c6.boundary_holds(2, alpha, 0, 2, _names("g", 2, "r_{4,4,0}"))  # the wrong corner at i = 2n
+
+
+@pytest.mark.parametrize("edge, color, corner, arg", [("u0", "g", "b", "w"), ("v0", "r", "g", "u"),
+                                                     ("w0", "b", "r", "v")])
+def test_boundary_curves_are_read_from_the_transcription(edge, color, corner, arg):
+    """The i = 2n term of each printed curve names no control point of the net (erratum, issue 31); the corrected
+    curve names the corner of the next colour; a wrong colour, argument or lower bound fails both."""
+    line = {x.id: x for x in LINES}[f"sec6-boundary-{edge}"]
+    res = c6.boundary_curve(line.id)
+    assert line.status == "erratum" and res.holds_as_printed is False and res.corrected_holds is True
+    assert res.detail["not_in_the_net"][f"{color}_{{2,0,0}}"] == f"{corner}_{{2,2,0}}"
+    assert f"{corner}_{{2n,2n,0}} A_{{2n,0}}({arg})" in line.erratum["corrected"]
+    other = "r" if color != "r" else "g"
+    args = "uvw".replace(arg, "")
+    for right, wrong in ((f"\\mathbf{{{color}}}", f"\\mathbf{{{other}}}"),
+                         (f"\\left(  {arg}\\right)", f"\\left(  {args[0]}\\right)"),
+                         ("\\sum_{i=0}", "\\sum_{i=1}")):
+        assert right in line.verbatim, right
+        r = c6.boundary_curve(line.id, line.verbatim.replace(right, wrong))
+        assert not r.holds_as_printed and not r.corrected_holds, wrong
+
+
+def test_net_is_read_from_the_transcription():
+    assert sorted(c6.net_from_transcription(2)) == sorted(c6.printed_control_net(2))
+    tex = {x.id: x for x in LINES}["sec6-control-net-set"].verbatim
+    assert len(c6.net_from_transcription(2, tex.replace("^{n-1,2n-1-j}", "^{n-1,2n-j}", 1))) > \
+        len(c6.printed_control_net(2))
 
 
 def test_torus_point_check_rejects_perturbed_point():
@@ -146,3 +179,46 @@ def test_rank1_counterexample_and_tangent_labels():
     assert c6.tangent_labels(2, 0) == c6.terminal_edge_labels(2, "r")
     assert c6.tangent_labels(2, 0) != {"r_{4,4,0}", "r_{4,2,0}", "b_{4,1,0}"}
     assert not c6.in_span(c6.vn_element(1, 3, extra=(2, 0, 0)), 1, rational_alpha(fmpq(1, 3)))
+
+
+def test_patch_terms_and_nets_are_read_from_their_transcriptions():
+    rows = {x.id: x.verbatim for x in LINES}
+    assert c6.patch_index_sets().holds_as_printed
+    row2 = rows["sec6-patch-row-2"]
+    for right, wrong in (("\\mathbf{b}_{2n,2n-i,j}\\overline{B}", "\\mathbf{g}_{2n,2n-i,j}\\overline{G}"),
+                         ("\\sum\\limits_{i=j}^{2n-1-j}", "\\sum\\limits_{i=j}^{2n-j}")):
+        assert right in row2
+        assert not c6.patch_index_sets({"sec6-patch-row-2": row2.replace(right, wrong, 1)}).holds_as_printed
+    res = c6.control_net_set()
+    assert res.holds_as_printed is False and res.corrected_holds is True
+    assert set(res.detail["printed_sizes_n_1_2_3"]) == {"sec6-control-net-set", "sec6-rational-control-net-set"}
+    wrong = rows["sec6-rational-control-net-set"].replace("_{j=0,i=j}^{n-1,2n-1-j}", "_{j=0,i=j}^{n-2,2n-1-j}", 1)
+    assert c6.control_net_set({"sec6-rational-control-net-set": wrong}).detail["printed_sizes_n_1_2_3"][
+        "sec6-rational-control-net-set"] != res.detail["printed_sizes_n_1_2_3"]["sec6-rational-control-net-set"]
+
+
+@pytest.mark.parametrize("check, line_id, right, wrong", [
+    ("weights_set", "sec6-weights-set", "\\gamma_{2n,2n-i,j}\\right\\}  _{j=0,i=j}^{n-1,2n-1-j}",
+     "\\gamma_{2n,2n-i,j}\\right\\}  _{j=0,i=j}^{n-1,2n-j}"),
+    ("tau_index_sets", "sec6-tau-row-2", "\\gamma_{2n,2n-k,\\ell}\\overline{G}_{2n,2n-k,\\ell}",
+     "\\gamma_{2n,2n-k,\\ell}\\overline{B}_{2n,2n-k,\\ell}"),
+    ("rational_patch", "sec6-rational-row-3", "\\beta_{2n,2n-i,j}\\mathbf{b}_{2n,2n-i,j}",
+     "\\beta_{2n,2n-i,j}\\mathbf{g}_{2n,2n-i,j}"),
+    ("delta3", "sec6-delta3", "$\\delta_{3}=37$", "$\\delta_{3}=36$"),
+])
+def test_sec6_sets_are_read_from_their_transcriptions(check, line_id, right, wrong):
+    text = {x.id: x.verbatim for x in LINES}[line_id]
+    assert right in text, right
+    fn = getattr(c6, check)
+    assert fn().holds_as_printed
+    bad = text.replace(right, wrong)
+    res = fn(bad) if check in ("weights_set", "delta3") else fn({line_id: bad})
+    assert not res.holds_as_printed
+
+
+def test_weights_rank1_reads_its_sum():
+    text = {x.id: x.verbatim for x in LINES}["sec6-weights-rank1"]
+    res = c6.weights_rank1()
+    assert res.holds_as_printed is False and res.corrected_holds is True  # the recorded erratum
+    wrong = c6.weights_rank1({"sec6-weights-rank1": text.replace("\\rho_{2n,n,n}+", "")})
+    assert wrong.corrected_holds is False  # the sum read without the centre no longer names T_{2n}

@@ -108,3 +108,13 @@ def test_readers_refuse_unread_latex():
                      "\\Green{\\mathbf{x}_{4,4,0}}")
     with pytest.raises(NameError):
         X.evaluate("open('x')")
+
+
+def test_degree_and_dimension_are_read_from_the_transcriptions():
+    """The Question's degree 3n-1 and Section 8's delta_n = 3n(n+1)+1 are read, not retyped (issue 31, item 6)."""
+    from paper_repro.claims.lines import sec7 as c7
+
+    q, d = c7.VERBATIM["sec7-question-limiting-case"], c7.VERBATIM["sec7-s8-dimension"]
+    assert c7.check_question_limiting_case().holds_as_printed and c7.check_dimension_and_span().holds_as_printed
+    assert not c7.check_question_limiting_case(q.replace("$3n-1$", "$3n$")).holds_as_printed
+    assert not c7.check_dimension_and_span(d.replace("\\right)+1$", "\\right)+2$")).holds_as_printed

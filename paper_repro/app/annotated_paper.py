@@ -683,6 +683,15 @@ class Linker:
         return "<br>".join(parts)
 
 
+#: What a line's ``proof_kind`` means (data/paper_lines.json; :mod:`paper_repro.claims.lines`).
+KIND_MEANING = {
+    "proof": "settles everything the line states",
+    "exhaustive": "exact and complete for the range named in 'how' only; the line states more (every n)",
+    "exact-evidence": "exact arithmetic at sampled parameters",
+    "numeric-evidence": "floating-point or high-precision values at sampled parameters",
+}
+
+
 _HEAD = {"checked": "✓ checked", "erratum": "✗ erratum", "excused": "○ excused"}
 _CLS = {"checked": "ok", "erratum": "err", "excused": "exc"}
 
@@ -741,7 +750,9 @@ def badge_html(block: Block, linker: Linker, errata_ids: dict[str, list[str]] | 
             rows.append(f"<div>reason: {html.escape(e['reason'])}</div>")
         for key in ("check", "how", "proof_kind"):
             if e.get(key):
-                rows.append(f"<div>{key.replace('_', ' ')}: {linker.words(str(e[key]))}</div>")
+                meaning = KIND_MEANING.get(str(e[key]), "") if key == "proof_kind" else ""
+                rows.append(f"<div>{key.replace('_', ' ')}: {linker.words(str(e[key]))}"
+                            f"{' (' + html.escape(meaning) + ')' if meaning else ''}</div>")
         for key in ("holds_as_printed", "corrected_holds"):
             if e.get(key) is not None:
                 rows.append(f"<div>{key.replace('_', ' ')}: {html.escape(str(e[key]))}</div>")

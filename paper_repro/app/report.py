@@ -164,7 +164,8 @@ def run_claims(only: list[str] | None, overrides: dict[str, dict[str, Any]] | No
     done = dict(zip(order, sweep(_run_one, jobs, executor=executor, initializer=load_all, desc="claims",
                                  label=lambda job: job[0])))
     # claims that resolve checks to other claims run last, here, with the results of this run
-    so_far = {cid: {"status": res.status, "kind": res.kind, "errata": sorted(e["id"] for e in out.errata)}
+    so_far = {cid: {"status": res.status, "kind": res.kind, "errata": sorted(e["id"] for e in out.errata),
+                    "statement": res.statement}
               for cid, (res, out, _) in done.items()}
     for cid in ids:
         if CLAIMS[cid].uses_results:
@@ -320,8 +321,16 @@ def lines_markdown(coverage: dict | None) -> str:
            f"inline index sets, ranges, bounds, parametrizations, counts, captions): **{coverage['checked']} "
            f"checked** as printed against an independent computation, **{coverage['erratum']} errata** (the "
            f"printed line fails, the corrected one holds), **{coverage['excused']} excused** with a reason. "
-           "Per line: [`data/paper_lines.json`](data/paper_lines.json).", "",
-           "| | " + " | ".join(statuses) + " | total |", "|---|" + "---|" * (len(statuses) + 1)]
+           "Per line: [`data/paper_lines.json`](data/paper_lines.json).", ""]
+    kinds = coverage.get("by_proof_kind") or {}
+    if kinds:
+        words = {"proof": "proof (the check settles everything the line states)",
+                 "exhaustive": "exhaustive (exact and complete for the range of n its `how` names, not for every n)",
+                 "exact-evidence": "exact-evidence (exact arithmetic at sampled parameters)",
+                 "numeric-evidence": "numeric-evidence (floating point or high precision at sampled parameters)"}
+        out += ["How far the checks of the checked and erratum lines go: "
+                + ", ".join(f"**{v}** {words.get(k, k)}" for k, v in kinds.items()) + ".", ""]
+    out += ["| | " + " | ".join(statuses) + " | total |", "|---|" + "---|" * (len(statuses) + 1)]
     for group in ("by_part", "by_kind"):
         for key, counts in coverage[group].items():
             out.append(f"| {group[3:]} `{key}` | " + " | ".join(str(counts.get(s, 0)) for s in statuses)

@@ -15,7 +15,9 @@ must publish that erratum.  Errata of lines with their own check are published h
 those resolved to a claim are published by that claim already.
 
 Publishes ``data/paper_lines.json``: the coverage and, per line (sorted by source line), its transcription,
-status, check, how it was checked, and the PDF number of the nearest label (``paper_repro/resources/paper_index.json``).
+status, check, how it was checked, how far that settles it (``proof_kind``: ``proof`` for everything the line states,
+``exhaustive`` for the finite range ``how`` names only, ``exact-evidence``, ``numeric-evidence``; see
+:mod:`paper_repro.claims.lines`), and the PDF number of the nearest label (``paper_repro/resources/paper_index.json``).
 """
 
 from __future__ import annotations
@@ -27,7 +29,13 @@ from typing import Any
 from paper_repro.util.registry import Outcome, claim
 
 #: The weakest kind wins: a claim over lines of several kinds is as strong as its weakest check.
-_KIND_ORDER = ("numeric-evidence", "exact-evidence", "proof")
+_KIND_ORDER = ("numeric-evidence", "exact-evidence", "exhaustive", "proof")
+
+#: Claims of kind ``proof`` whose statement covers everything the lines resolved to them state (fixed orders: the
+#: lines name orders 1, 2, 3 or printed order-2/3 conversions).  A line resolved to any other claim of kind ``proof``
+#: is ``exhaustive``: that claim settles its statement for the finite range of n it names, the line states more.
+CLAIMS_SETTLING_THEIR_LINES = {"nonnegativity": "the line states orders 1, 2, 3, the claim's range",
+                               "bezier_conversion": "the line states one printed conversion of order 3"}
 
 
 def _committed_results() -> dict[str, dict]:
@@ -40,7 +48,22 @@ def _committed_results() -> dict[str, dict]:
     except (OSError, ValueError):
         return {}
     # the committed errata do not say which claim published them: any committed erratum id resolves
-    return {c["id"]: {"status": c["status"], "kind": c["kind"], "errata": errata} for c in claims}
+    return {c["id"]: {"status": c["status"], "kind": c["kind"], "errata": errata, "statement": c["statement"]}
+            for c in claims}
+
+
+def claim_line_kind(cid: str, res: dict) -> tuple[str, str]:
+    """(kind, how) of a line resolved to claim ``cid`` with result ``res``: a ``proof`` claim that does not settle
+    everything its lines state (:data:`CLAIMS_SETTLING_THEIR_LINES`) makes them ``exhaustive`` for the range its
+    statement names."""
+    from paper_repro.claims.lines import RANGE_WORDS
+
+    how = f"claim {cid} ({res['status']})"
+    if res["kind"] != "proof" or cid in CLAIMS_SETTLING_THEIR_LINES:
+        return res["kind"], how
+    ranges = RANGE_WORDS.findall(res.get("statement") or "")
+    where = ", ".join(dict.fromkeys(ranges)) if ranges else "the range of n its statement names"
+    return "exhaustive", f"{how}: exhaustive for {where} (the claim's statement), not for every n"
 
 
 def _number(label: str, index: dict[str, dict]) -> str | None:
@@ -76,8 +99,7 @@ def judge(lines, checks: dict, claim_results: dict[str, dict]) -> tuple[list[dic
                 problems.append(f"{line.id}: check {line.check} names no claim result")
             else:
                 ok = res["status"] == "pass"
-                kind = res["kind"]
-                how = f"claim {cid} ({res['status']})"
+                kind, how = claim_line_kind(cid, res)
                 if line.status == "checked":
                     holds = ok
                 else:
@@ -125,8 +147,10 @@ def coverage(records: list[dict]) -> dict:
         by_kind.setdefault(r["kind"], Counter())[r["status"]] += 1
         by_part.setdefault(r["part"], Counter())[r["status"]] += 1
     total = Counter(r["status"] for r in records)
+    proof_kinds = Counter(r["proof_kind"] for r in records if r["proof_kind"])
     return {"lines": len(records), "checked": total["checked"], "erratum": total["erratum"],
             "excused": total["excused"],
+            "by_proof_kind": {k: proof_kinds[k] for k in reversed(_KIND_ORDER) if proof_kinds[k]},
             "by_kind": {k: dict(sorted(v.items())) for k, v in sorted(by_kind.items())},
             "by_part": {k: dict(sorted(v.items())) for k, v in sorted(by_part.items())}}
 
@@ -149,6 +173,7 @@ def run(claim_results: dict[str, dict] | None = None) -> Outcome:
     cov = coverage(records)
     kinds = {r["proof_kind"] for r in records if r["proof_kind"]}
     kind = next((k for k in _KIND_ORDER if k in kinds), "exact-evidence")
+    kind = "proof" if kind == "exhaustive" else kind  # a claim's "proof" is already "for the stated range"
     parts_present = sorted({r["part"] for r in records})
     passed = not problems and bool(records)
     measured = {"coverage": cov, "parts": parts_present, "parts_missing": [p for p in PARTS if p not in parts_present],

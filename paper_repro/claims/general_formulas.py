@@ -75,13 +75,16 @@ def _centre_recurrence(n_max: int, order: int = 2, deg_n: int = 2, deg_c: int = 
 @claim("general_formulas", paper_ref=["normalizing_coeff_of_level_0", "prop:level_1_coefficients",
                                       "sec:open_problems"],
        statement="Open Question 1, general formulas: every coefficient of every level is given by the all-n formula "
-                 "(claim question1_all_n, proven for every n). Its level-by-level consequences: the printed levels 0 "
-                 "and 1 and the fitted levels 2..{max_level}, P_{n,i,j} = A_j(n,i,c) C_{n,i} + B_j(n,i,c) C_{n,i+1} "
-                 "(interior j < i <= n and diagonal i = j < n), equal the all-n formula as polynomials in c for "
-                 "n <= {n_cons} and the closed forms proven for every alpha for n <= {n_max}; the centre's end values "
-                 "s^{3n-2} r_{2n,n,n} -> 2(4n-3)(3n-3)!/((n-1)!^2 n!) (alpha -> 0) and r_{2n,n,n} -> sum_k "
-                 "binom(n,k)^3 (Franel numbers, alpha -> pi) follow from it, checked for n <= {n_cons}. Every level "
-                 "at alpha -> 0: s^{2n+j} r_{2n,2n-i,j} -> (2n+j)!/((2n-i)! j! i!) (2n-(t-1)j)/(2n+j) for every n.",
+                 "(claim question1_all_n: a hand proof with machine-checked lemmas, for every n). The printed levels "
+                 "0 and 1 and the fitted levels 2..{max_level}, P_{n,i,j} = A_j(n,i,c) C_{n,i} + B_j(n,i,c) C_{n,i+1} "
+                 "(interior j < i <= n and diagonal i = j < n), equal the all-n formula as polynomials in c for each "
+                 "n <= {n_cons} and the closed forms proven for every alpha for each n <= {n_max} (a proof for those "
+                 "n; for larger n a conjecture). The centre's end values s^{3n-2} r_{2n,n,n} -> "
+                 "2(4n-3)(3n-3)!/((n-1)!^2 n!) (alpha -> 0) and r_{2n,n,n} -> sum_k binom(n,k)^3 (Franel numbers, "
+                 "alpha -> pi) equal the limits of the all-n formula for each n <= {n_cons} (a finite computation per "
+                 "n; not proven for every n: a conjecture beyond). Every level at alpha -> 0, for every n: "
+                 "s^{2n+j} r_{2n,2n-i,j} -> (2n+j)!/((2n-i)! j! i!) (2n-(mu-1)j)/(2n+j), mu the number of minimal "
+                 "entries of (2n-i, j, i) (claim limit_formula).",
        kind="proof", max_level=4, n_max=12, n_cons=30, suffix="",
        extended={"max_level": 5, "n_max": 30, "n_cons": 60, "suffix": "_extended"})
 def run(max_level: int, n_max: int, n_cons: int, suffix: str) -> Outcome:
@@ -109,8 +112,8 @@ def run(max_level: int, n_max: int, n_cons: int, suffix: str) -> Outcome:
         status, top = _status(res["agrees_for_n"], res["fails_for_n"], proven, first)
         cons = check_against_formula(f, range(first, n_cons + 1), max_level)
         ok &= not res["fails_for_n"] and top == n_max and not cons["fails_for_n"]
-        status = (f"consequence of the all-n formula, checked for n <= {n_cons}" if not cons["fails_for_n"]
-                  else f"differs from the all-n formula for n = {cons['fails_for_n'][:5]}")
+        status = (f"equal to the all-n formula for each n <= {n_cons} (not proven for every n)"
+                  if not cons["fails_for_n"] else f"differs from the all-n formula for n = {cons['fails_for_n'][:5]}")
         entry = f.as_json() | {"status": status, "agrees_for_n": [min(res["agrees_for_n"] or [0]),
                                                                   max(res["agrees_for_n"] or [0])],
                                "source": "printed" if f.level <= 1 else f"fitted on n <= {N_FIT[f.level]}",
@@ -136,8 +139,8 @@ def run(max_level: int, n_max: int, n_cons: int, suffix: str) -> Outcome:
         fails_f = [n for n, v in from_formula.items()
                    if not (v["vanishes_at_1"] and eval_expression(e["expression"], n) == v[e["kind"]])]
         ok &= not fails and top == n_max and not fails_f
-        status = (f"consequence of the all-n formula, checked for n <= {n_cons}" if not fails_f
-                  else f"differs from the all-n formula for n = {fails_f[:5]}")
+        status = (f"equal to the limits of the all-n formula for each n <= {n_cons} (not proven for every n)"
+                  if not fails_f else f"differs from the all-n formula for n = {fails_f[:5]}")
         entries.append({"level": "n (centre r_{2n,n,n})", "kind": e["kind"], "cases": e["name"], "status": status,
                         "source": "found by guessing the recurrence " + e["recurrence"] + "; equal to the proven "
                                   f"closed forms for n <= {top}", "quantity": e["quantity"],
@@ -168,9 +171,10 @@ def run(max_level: int, n_max: int, n_cons: int, suffix: str) -> Outcome:
     return Outcome(ok, {
         "levels": [{k: e[k] for k in ("level", "kind", "status")} for e in entries],
         "interior_regularities_hold_for_levels": regular,
-        "scope": "the all-n formula is proven for every n (claim question1_all_n); the level formulas and the "
-                 f"centre's end values are checked consequences of it for n <= {n_cons} and equal the closed forms "
-                 f"proven for every alpha for n <= {n_max}"}, data=data)
+        "scope": "the all-n formula is proven for every n (claim question1_all_n, a hand proof with machine-checked "
+                 "lemmas); the level formulas and the centre's end values agree with it for each n <= "
+                 f"{n_cons} and equal the closed forms proven for every alpha for n <= {n_max}; neither is proven "
+                 "for every n"}, data=data)
 
 
 def markdown(entries: list[dict], n_max: int) -> str:
@@ -180,8 +184,9 @@ def markdown(entries: list[dict], n_max: int) -> str:
              "$s = \\sin\\frac{\\alpha}{2}$, and $C_{n,k}(c)$ the coefficient of $X^k$ in $(1+2cX+X^2)^n$ "
              "(so $c^\\alpha_{2n,k} = C_{n,k}/s^{2n}$, eq. univariate_basis). "
              "The first row, the all-n formula, is proven for every n (docs/question1_for_all_n.md); the level "
-             "formulas and the centre's end values below are its consequences, checked as polynomial identities for "
-             "the n stated (a derivation for every n is not written), and they equal the closed forms proven for "
+             "formulas and the centre's end values below agree with it, checked as polynomial identities for each "
+             "n stated (not proven for every n: a derivation for every n is not written), and they equal the closed "
+             "forms proven for "
              f"every α for n ≤ {n_max}. The brackets are written with "
              "$c^2 = 1 - s^2$ and factored over Q (the fitted polynomials in c are in the JSON, `latex_expanded`).", "",
              "| level | cases | status | source |", "|---|---|---|---|"]

@@ -38,6 +38,8 @@ import numpy as np
 from flint import arb, arb_mat, fmpq, fmpq_mat, nmod_mat
 from flint import ctx as flint_ctx
 
+from paper_repro.core.ordered import ordered_matmul
+
 #: Default prime for modular computations (the Mersenne prime 2^31 - 1).
 DEFAULT_PRIME = 2_147_483_647
 
@@ -118,7 +120,10 @@ class Context:
         return a / b
 
     def dot(self, a: np.ndarray, b: np.ndarray) -> np.ndarray:
-        """Matrix product of two arrays of this arithmetic."""
+        """Matrix product of two arrays of this arithmetic (float64: summed in a fixed order, the same bits on
+        every CPU, :func:`~paper_repro.core.ordered.ordered_matmul`)."""
+        if a.dtype == np.float64 and b.dtype == np.float64 and a.ndim == 2 and b.ndim == 2:
+            return ordered_matmul(a, b)
         return a.dot(b)
 
     def to_float(self, a) -> np.ndarray:

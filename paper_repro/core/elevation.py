@@ -31,10 +31,10 @@ from paper_repro.core.domain import (
     sample_points,
     sample_rational_points,
 )
-from paper_repro.core.fast import ordered_matmul
 from paper_repro.core.labels import delta
 from paper_repro.core.nets import check_net
 from paper_repro.core.normalization import evaluate_normalized, fixed_points
+from paper_repro.core.ordered import ordered_matmul
 from paper_repro.util.cache import cached
 from paper_repro.util.limits import MAX_ELEVATION_STEPS, MAX_N_ELEVATION, check_int
 from paper_repro.util.sweep import interruptible

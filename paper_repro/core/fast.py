@@ -86,32 +86,6 @@ def contract(net_t: np.ndarray, basis: np.ndarray, out: np.ndarray | None = None
     return out
 
 
-def ordered_matmul(a: np.ndarray, b: np.ndarray) -> np.ndarray:
-    """``a @ b`` for a ``(M, K)`` matrix and a ``(K, d)`` array, summed in the fixed order k = 0, 1, ..., K-1 by
-    elementwise products and sums (each one IEEE-rounded; numpy fuses nothing), so the bits do not depend on the
-    memory layout of either operand, on BLAS's kernel (the CPU) or on its threads.  For the small products of
-    order elevation and basis transformation (``K`` = delta_n), where BLAS would sum in a CPU- and
-    layout-dependent order (issue 31: SkylakeX gave other bits for a Fortran-ordered net).
-
-    >>> a = np.array([[0.1, 0.2, 0.7], [1.0, 0.0, 0.0]])
-    >>> b = np.asfortranarray(np.arange(6.0).reshape(3, 2))
-    >>> ordered_matmul(a, b).tolist() == ordered_matmul(a, np.ascontiguousarray(b)).tolist()
-    True
-    >>> bool(np.allclose(ordered_matmul(a, b), a @ b))
-    True
-    """
-    a = np.ascontiguousarray(a, dtype=float)
-    b = np.ascontiguousarray(b, dtype=float)
-    if a.ndim != 2 or b.ndim != 2 or a.shape[1] != b.shape[0]:
-        raise ValueError(f"ordered_matmul: shapes {a.shape} and {b.shape} do not chain")
-    out = np.zeros((a.shape[0], b.shape[1]))
-    col = np.empty_like(out)
-    for k in range(a.shape[1]):
-        np.multiply(a[:, k: k + 1], b[k: k + 1, :], out=col)
-        out += col
-    return out
-
-
 #: Functions per chunk of :meth:`FloatKernel.contract_derivatives` (a chunk's rows, 32 x 1024 doubles = 256 KB, stay
 #: in the core's cache).  16, 32, 64, 128 measured once per block on this busy 2-core machine (noisy, 25% steal):
 #: 32 was fastest at n = 6 and 10 (1.6x and 2.3x over the unchunked derivative), within the noise at n = 3.

@@ -12,9 +12,9 @@ its own, so the two paths differ by rounding only: at most ``gamma_F sum_f |B_f|
 so the result does not depend on the number of threads.
 
 Derivatives and normals: for n <= 10 a patch's derivative is a patch of the same order
-(:mod:`paper_repro.core.derivative_tables`), so they run through the values pass with the derivative nets (the
-normals' two directions as 6 coordinates in one group, :data:`GROUP`).  The derivative pass (:func:`_derivs_impl`,
-the monomials' brackets) serves larger n.
+(:mod:`paper_repro.core.derivative_tables`; its integer-polynomial table is a found pattern, verified n = 1..12), so
+they run through the values pass with the derivative nets (the normals' two directions as 6 coordinates in one
+group, :data:`GROUP`).  The derivative pass (:func:`_derivs_impl`, the monomials' brackets) serves larger n.
 
 The functions take ``nogil=True``: the kernel's thread pool (:func:`paper_repro.core.fast.run_blocks`) runs blocks
 side by side.  ``PAPER_REPRO_KERNEL=numpy`` turns this path off.

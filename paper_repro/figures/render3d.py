@@ -22,6 +22,12 @@ from matplotlib.collections import LineCollection, PolyCollection
 from matplotlib.colors import to_rgb
 
 
+def _dot3(pts: np.ndarray, v: np.ndarray) -> np.ndarray:
+    """``pts @ v`` for 3-vectors, summed in a fixed order by elementwise operations: BLAS's order depends on the
+    CPU's kernel, and the PNG bytes with it (issue 31: the 3D figures differed under OpenBLAS's Sandybridge kernel)."""
+    return pts[..., 0] * v[..., 0] + pts[..., 1] * v[..., 1] + pts[..., 2] * v[..., 2]
+
+
 @dataclass(frozen=True)
 class View:
     """Orthographic view from elevation/azimuth in degrees (matplotlib's convention: azimuth about z)."""
@@ -38,7 +44,7 @@ class View:
     def project(self, pts: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """(2D screen coordinates, depth: larger = nearer the eye)."""
         right, up, d = self.frame()
-        return np.c_[pts @ right, pts @ up], pts @ d
+        return np.c_[_dot3(pts, right), _dot3(pts, up)], _dot3(pts, d)
 
 
 @dataclass
@@ -52,10 +58,10 @@ def _shade(tri: np.ndarray, base: np.ndarray, view: View) -> np.ndarray:
     """Lambert shading, two-sided, light from the upper left front of the viewer."""
     right, up, d = view.frame()
     light = -0.35 * right + 0.55 * up + 0.75 * d
-    light /= np.linalg.norm(light)
+    light /= np.sqrt(_dot3(light, light))
     n = np.cross(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0])
-    n /= np.maximum(np.linalg.norm(n, axis=1, keepdims=True), 1e-300)
-    lam = np.abs(n @ light)
+    n /= np.maximum(np.sqrt(_dot3(n, n))[:, None], 1e-300)
+    lam = np.abs(_dot3(n, light))
     return np.clip(base * (0.38 + 0.62 * lam[:, None]), 0, 1)
 
 

@@ -22,6 +22,7 @@ from paper_repro.core.fast_jit import available as jit_available
 from paper_repro.core.labels import delta, exponent_matrix, index_of
 from paper_repro.core.nets import LabelledNet, check_net, check_net_exact, net_from_labels  # noqa: F401 (re-exported)
 from paper_repro.core.normalization import evaluate_normalized, scaled_coefficient_vector
+from paper_repro.core.ordered import ordered_matmul
 from paper_repro.util.limits import MAX_MESH_RESOLUTION, check_int, check_real_array, real_scalar
 from paper_repro.util.validation import DOMAIN_TOL, check_alpha, check_n, parse_alpha
 
@@ -399,7 +400,8 @@ class Patch:
 
         The float path is blocked like point evaluation (memory independent of the number of points). For
         n <= 10 the derivative of the patch is a patch of the same order, with the centred net at unit scale
-        multiplied by the integer-polynomial matrix of :mod:`paper_repro.core.derivative_tables`: one point
+        multiplied by the integer-polynomial matrix of :mod:`paper_repro.core.derivative_tables` (a found pattern,
+        verified n = 1..12, not proven): one point
         evaluation of that net (as fast as a point, within rounding of the direct route).  Beyond, the bounded
         bracket of :meth:`~paper_repro.core.fast.FloatKernel.derivatives_rows` contracted with that net.  Either
         is multiplied by ``2^E / (2 sin(alpha/2))`` once (one power-of-two step), so it is finite for every alpha
@@ -468,7 +470,7 @@ class Patch:
         from paper_repro.core.univariate import A
 
         a = A(self.n, float(self.alpha), np.asarray(t, dtype=np.float64))  # columns A_{2n,0..2n}
-        return a[:, ::-1] @ self.boundary_net(edge)
+        return ordered_matmul(a[:, ::-1], self.boundary_net(edge))  # the same bits on every CPU (not BLAS)
 
     def mesh(self, resolution: int = 16, normals: bool = False):
         """Triangle mesh on a barycentric grid: ``(vertices (V, d), faces (F, 3))``, and the unit vertex

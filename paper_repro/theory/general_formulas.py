@@ -292,8 +292,8 @@ ALL_LEVELS_AT_1 = {
     "quantity": "lim_{alpha -> 0} s^{2n+j} r_{2n,2n-i,j} (= P_{n,i,j}(1) wherever the closed form is known)",
     "expression": "0 if i == j == n else Fraction(factorial(2*n+j), factorial(2*n-i)*factorial(j)*factorial(i)) "
                   "* (1 if j == 0 else Fraction(2*n-j, 2*n+j) if i == j else Fraction(2*n, 2*n+j))",
-    "latex": r"P_{n,i,j}(1) = \frac{(2n+j)!}{(2n-i)!\,j!\,i!}\cdot\frac{2n - (t-1)j}{2n+j}",
-    "where": "t = the number of minimal entries of (2n-i, j, i): 1 if j < i, 2 if i = j < n, 3 at the centre"}
+    "latex": r"P_{n,i,j}(1) = \frac{(2n+j)!}{(2n-i)!\,j!\,i!}\cdot\frac{2n - (\mu-1)j}{2n+j}",
+    "where": "mu = the number of minimal entries of (2n-i, j, i): 1 if j < i, 2 if i = j < n, 3 at the centre"}
 
 
 def eval_expression(expr: str, n: int, **indices: int):

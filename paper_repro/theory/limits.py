@@ -20,6 +20,7 @@ from flint import fmpq
 from paper_repro.core.labels import delta, exponents, united_system
 from paper_repro.core.nets import check_net
 from paper_repro.core.normalization import orbits
+from paper_repro.core.ordered import ordered_matmul
 from paper_repro.theory.closed_forms import closed_forms_cached
 from paper_repro.theory.limit_formula import limit_terms_formula, multinomial
 from paper_repro.util.limits import MAX_N_BEZIER_LIMIT, check_int
@@ -105,7 +106,7 @@ def bezier_limit(net, n: int) -> tuple[int, dict[tuple[int, int, int], np.ndarra
     arr = check_net(net, n)
     idx, w = conversion_matrix(n, "formula")
     wf = np.array([[float(x) for x in row] for row in w])
-    pts = wf @ arr
+    pts = ordered_matmul(wf, arr)  # the same bits on every CPU (not BLAS)
     return sum(idx[0]), {t: pts[k] for k, t in enumerate(idx)}
 
 

@@ -248,8 +248,8 @@ def run_claim(c: Claim, overrides: dict[str, Any] | None = None, extended: bool 
 
     ``overrides`` may only name parameters the claim takes (``ValueError`` listing them otherwise).  A
     claim that raises is reported as failing with the error, and that failure is never cached.  A claim
-    registered with ``uses_results`` receives ``claim_results`` (``{id: {"status", "kind", "errata"}}`` of the
-    claims run before it; ``None`` when run alone) as a keyword argument; they are part of its cache key.
+    registered with ``uses_results`` receives ``claim_results`` (``{id: {"status", "kind", "errata", "statement"}}``
+    of the claims run before it; ``None`` when run alone) as a keyword argument; they are part of its cache key.
 
     The rule of :mod:`paper_repro.util.measured` is enforced here: a claim whose ``measured`` or data files hold
     a raw float (rounding-level or more than ``MAX_DIGITS`` digits) fails, naming the offending fields.

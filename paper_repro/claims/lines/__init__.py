@@ -5,16 +5,32 @@ printed and, for an erratum, whether the corrected line holds; ``detail`` carrie
 machine-independent: exact rationals as strings, counts, booleans -- no raw floats).  A check never trusts the
 printed formula: it compares it with an independent computation (the package's ``core``/``theory`` code, an
 exact symbolic expansion, a count, evaluation at exact rational points).
+
+The ``kind`` of a result (:data:`LINE_KINDS`) says how far the check settles its line:
+
+* ``proof`` -- everything the line states, for every n and alpha it states it for: a symbolic identity, or a line
+  about fixed orders (an Example at n = 2, a count for T_6) checked completely;
+* ``exhaustive`` -- exact and complete, but only for the finite range of n (or of another index) that ``how``
+  names, while the line states it for every n: a proof for that range, not beyond it;
+* ``exact-evidence`` -- exact arithmetic at sampled parameters (rational-tangent alpha, rational points);
+* ``numeric-evidence`` -- floating-point or high-precision values at sampled parameters.
 """
 
 from __future__ import annotations
 
 import importlib
+import re
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any
 
 CHECKS: dict[str, Callable[[], LineResult]] = {}
+
+#: Kinds of a line check, strongest first (see the module docstring).
+LINE_KINDS = ("proof", "exhaustive", "exact-evidence", "numeric-evidence")
+
+#: How an exhaustive result names its finite range: ``n = 1..12``, ``n <= 6``, ``m = 0..20``, ``r <= 10``, ...
+RANGE_WORDS = re.compile(r"\b[a-z] (?:= -?\d+\.\.\d+|<= \d+|= \d+(?:, \d+)+)")
 
 
 @dataclass
@@ -22,8 +38,14 @@ class LineResult:
     holds_as_printed: bool
     corrected_holds: bool | None = None
     how: str = ""  # the independent computation, in a sentence ("exact expansion", "count for n = 1..12", ...)
-    kind: str = "exact-evidence"  # "proof" | "exact-evidence" | "numeric-evidence"
+    kind: str = "exact-evidence"  # one of LINE_KINDS
     detail: dict[str, Any] = field(default_factory=dict)
+
+    def __post_init__(self) -> None:
+        if self.kind not in LINE_KINDS:
+            raise ValueError(f"kind must be one of {LINE_KINDS}, got {self.kind!r}")
+        if self.kind == "exhaustive" and not RANGE_WORDS.search(self.how):
+            raise ValueError(f"an exhaustive result names its range in how (e.g. 'n = 1..12'), got {self.how!r}")
 
 
 def line_check(id: str) -> Callable[[Callable[[], LineResult]], Callable[[], LineResult]]:

@@ -18,6 +18,7 @@ The independent computations:
 
 from __future__ import annotations
 
+import re
 from functools import cache
 from math import comb, factorial
 
@@ -186,8 +187,9 @@ def centre(n: int) -> set[int]:
 
 
 def _names(n: int, idx) -> list[str]:
+    """Names of the members ``idx`` of T_{2n}; a string (a printed name that is no member) is kept as it is."""
     labels = united_system(n)
-    return sorted(labels[k].paper for k in idx)
+    return sorted(labels[k].paper if isinstance(k, int) else str(k) for k in idx)
 
 
 def _set_result(printed, computed, how: str, kind: str = "exact-evidence", corrected=None) -> LineResult:
@@ -219,27 +221,57 @@ def alpha_range() -> LineResult:
                     for t in (fmpq(1, 100), fmpq(1, 2), fmpq(99, 100)))
     return LineResult(ok_pos and zero_at_pi and exact_pos, how="coefficients of the printed c_{2n,i} as polynomials "
                       "in cos(alpha/2) (n <= 15); exact values at tan(alpha/4) in 1/100, 1/2, 99/100 (n <= 5)",
-                      kind="proof", detail={"nonnegative_polynomials": ok_pos, "odd_vanish_at_pi": zero_at_pi,
+                      kind="exhaustive", detail={"nonnegative_polynomials": ok_pos, "odd_vanish_at_pi": zero_at_pi,
                                             "positive_at_samples": exact_pos})
 
 
-def distinct_union(n: int) -> set[tuple[int, ...]]:
+@cache
+def distinct_union(n: int) -> frozenset[tuple[int, ...]]:
     """Distinct functions (exponent vectors) of R_{2n} u G_{2n} u B_{2n} (full systems, eqs. R_system..B_system)."""
-    return {exponents(x) for color in "RGB" for x in full_system(n, color)}
+    return frozenset(exponents(x) for color in "RGB" for x in full_system(n, color))
+
+
+def read_delta(tex: str) -> list:
+    """The printed values of delta_n in ``tex`` (everything after ``\\delta_{n}=``, split at ``=``), each as a
+    function of n: a closed form such as ``3n\\left( n+1\\right) +1`` or ``1+3\\sum_{j=..}^{..}\\sum_{i=..}^{..}1``."""
+    from paper_repro.printed.lines.read import bound
+
+    body = tex.split("\\delta_{n}=", 1)[1]
+    body = re.split(r"\\\]|\$", body)[0].replace("\\left(", "(").replace("\\right)", ")").replace("%", " ")
+    out = []
+    for part in re.split(r"=(?![^{]*\})", body):  # not the = of a subscript j=0
+        part = part.strip().rstrip(".").strip()
+        m = re.fullmatch(r"(\d+)\s*\+\s*(\d+)\s*\\sum_\{j=([^{}]+)\}\^\{([^{}]+)\}\s*"
+                         r"\\sum_\{i=([^{}]+)\}\^\{([^{}]+)\}\s*1", part)
+        if m:
+            a, b, jlo, jhi, ilo, ihi = m.groups()
+            out.append(lambda n, a=a, b=b, jlo=jlo, jhi=jhi, ilo=ilo, ihi=ihi: int(a) + int(b) * sum(
+                1 for j in range(bound(jlo, n=n), bound(jhi, n=n) + 1)
+                for _ in range(bound(ilo, n=n, j=j), bound(ihi, n=n, j=j) + 1)))
+        elif "\\" in part:
+            raise ValueError(f"unread value of delta_n: {part!r}")
+        else:
+            out.append(lambda n, e=part: bound(e, n=n))
+    return out
 
 
 @line_check("sec1_3-delta-count")
-def delta_count() -> LineResult:
-    """delta_n = 3n(n+1)+1: the number of distinct functions of R u G u B, and the printed double sum
-    1 + 3 sum_{j=0}^{n-1} sum_{i=j}^{2n-1-j} 1, for n = 1..40."""
-    rows = []
-    for n in range(1, 41):
-        printed_sum = 1 + 3 * sum(1 for j in range(n) for i in range(j, 2 * n - j))
-        rows.append((len(distinct_union(n)), printed_sum, 3 * n * (n + 1) + 1, delta(n)))
-    ok = all(len(set(r)) == 1 for r in rows)
-    return LineResult(ok, how="count of distinct exponent vectors of R u G u B against the printed double sum and "
-                      "closed form, n = 1..40", kind="proof", detail={"n_max": 40, "all_equal": ok,
-                                                                      "first": list(rows[0]), "last": list(rows[-1])})
+def delta_count(override: dict[str, str] | None = None) -> LineResult:
+    """delta_n = 3n(n+1)+1 = 1 + 3 sum_{j=0}^{n-1} sum_{i=j}^{2n-1-j} 1: every printed value of its three lines (read
+    from the transcriptions) equals the number of distinct functions of R u G u B, for n = 1..40."""
+    texts = _transcribed([x.id for x in _lines_of("sec1_3-delta-count")], override)
+    try:
+        values = {k: read_delta(v) for k, v in sorted(texts.items())}
+    except ValueError as exc:
+        return LineResult(False, how="the printed values read from the transcriptions, n = 1..40", kind="exhaustive",
+                          detail={"unread": str(exc)})
+    bad = [(k, n) for n in range(1, 41) for k, fs in values.items()
+           if any(f(n) != len(distinct_union(n)) for f in fs)]
+    ok = not bad and all(values.values())
+    return LineResult(ok, how="count of distinct exponent vectors of R u G u B against every printed value (closed "
+                      "form and double sum, read from the transcriptions), n = 1..40", kind="exhaustive",
+                      detail={"n_max": 40, "values_per_line": {k: len(v) for k, v in values.items()},
+                              "mismatches": bad[:3]})
 
 
 def united_printed(n: int) -> set[tuple[int, ...]]:
@@ -251,23 +283,32 @@ def united_printed(n: int) -> set[tuple[int, ...]]:
 
 
 @line_check("sec1_3-united-dedupe")
-def united_dedupe(ranges=None) -> LineResult:
-    """The printed index set of T_{2n} lists each distinct function of R u G u B exactly once (n = 1..20)."""
-    ranges = ranges or (lambda n, j: range(j, 2 * n - j))
-    ok = True
+def united_dedupe(verbatim: str | None = None) -> LineResult:
+    """The printed index set of T_{2n} (read from the transcription of eq. united_system, with the centre of the line
+    after it) lists each distinct function of R u G u B exactly once (n = 1..20); the functions from the printed
+    explicit formulas (:func:`printed_exponents`)."""
+    tex = verbatim if verbatim is not None else _transcribed(["sec1_3-united-system"])["sec1_3-united-system"]
+    ok, bad = True, []
     for n in range(1, 21):
-        listed = [exponents(BasisLabel("R", n, n, n))] + [exponents(BasisLabel(c, n, i, j)) for c in "RGB"
-                                                          for j in range(n) for i in ranges(n, j)]
-        ok &= len(listed) == len(set(listed)) and set(listed) == distinct_union(n)
-    return LineResult(ok, how="printed ranges against the distinct functions of the full systems, n = 1..20",
-                      kind="proof", detail={"n_max": 20, "equal_without_repetition": ok})
+        try:
+            pairs = _read_pairs(tex, n)
+        except ValueError as exc:
+            return LineResult(False, how="the index set read from the transcription, n = 1..20", kind="exhaustive",
+                              detail={"unread": str(exc)})
+        listed = [printed_exponents("R", n, n, n)] + [printed_exponents(c, n, i, j) for c in "RGB" for i, j in pairs]
+        good = None not in listed and len(listed) == len(set(listed)) and set(listed) == distinct_union(n)
+        ok &= good
+        if not good:
+            bad.append(n)
+    return LineResult(ok, how="the index set read from the transcription against the distinct functions of the full "
+                      "systems, n = 1..20", kind="exhaustive", detail={"n_max": 20, "failing_n": bad[:3]})
 
 
 @line_check("sec1_3-levels")
 def levels() -> LineResult:
     """n levels numbered 0..n-1 (the centre is the common centroid): the levels j of the non-centre functions."""
     ok = all({lb.j for lb in united_system(n) if not lb.is_centre} == set(range(n)) for n in range(1, 21))
-    return LineResult(ok, how="levels of T_{2n} from its labels, n = 1..20", kind="proof", detail={"ok": ok})
+    return LineResult(ok, how="levels of T_{2n} from its labels, n = 1..20", kind="exhaustive", detail={"ok": ok})
 
 
 @line_check("sec1_3-corners-centre")
@@ -280,7 +321,7 @@ def corners_centre() -> LineResult:
         corners = {(2 * n, 0, 0, 0, 0, 0), (0, 0, 2 * n, 0, 0, 0), (0, 0, 0, 0, 2 * n, 0)}
         centre_all = {exponents(BasisLabel(c, n, n, n)) for c in "RGB"}  # R_{2n,n,n} = G_{2n,n,n} = B_{2n,n,n}
         ok &= corners <= ex and centre_all == {(n, 0, n, 0, n, 0)}
-    return LineResult(ok, how="exponent vectors of T_{2n}, n = 1..20", kind="proof", detail={"ok": ok})
+    return LineResult(ok, how="exponent vectors of T_{2n}, n = 1..20", kind="exhaustive", detail={"ok": ok})
 
 
 @line_check("sec1_3-nonnegative")
@@ -288,21 +329,79 @@ def nonnegative() -> LineResult:
     """The functions of R, G, B are non-negative on Omega^alpha: products of non-negative powers of sines and cosines
     of half angles in [0, alpha/2] subset [0, pi/2) (exponents checked for the full systems, n = 1..30)."""
     ok = all(min(exponents(lb)) >= 0 for n in range(1, 31) for c in "RGB" for lb in full_system(n, c))
-    return LineResult(ok, how="exponent vectors of the full systems, n = 1..30", kind="proof", detail={"ok": ok})
+    return LineResult(ok, how="exponent vectors of the full systems, n = 1..30", kind="exhaustive", detail={"ok": ok})
+
+
+#: The lines whose index sets :func:`rgb_index_sets` reads (the full systems and the two halves of R).
+INDEX_SET_LINES = ("sec1_3-R-system", "sec1_3-G-system", "sec1_3-B-system", "sec1_3-R-leq-n", "sec1_3-R-geq-n-relation")
+
+
+def _transcribed(ids, override: dict[str, str] | None = None) -> dict[str, str]:
+    """The verbatim LaTeX of the lines ``ids`` (``override`` replaces some: the tests' wrong transcriptions)."""
+    from paper_repro.printed.lines.sec1_3 import LINES
+
+    text = {x.id: x.verbatim for x in LINES if x.id in ids}
+    text.update(override or {})
+    return text
+
+
+def _read_pairs(tex: str, n: int) -> list[tuple[int, int]]:
+    """The (i, j) of a printed double index set _{j=a,i=b(j)}^{c,d(j)}, read from ``tex`` at order n."""
+    from paper_repro.printed.lines.read import bound, index_set
+
+    (ov, olo, ohi), (iv, ilo, ihi) = index_set(tex)
+    if (ov, iv) != ("j", "i"):
+        raise ValueError(f"index set over {(ov, iv)}, not (j, i)")
+    return [(i, j) for j in range(bound(olo, n=n), bound(ohi, n=n) + 1)
+            for i in range(bound(ilo, n=n, j=j), bound(ihi, n=n, j=j) + 1)]
+
+
+def printed_exponents(color: str, n: int, i: int, j: int) -> tuple[int, ...] | None:
+    """Exponent vector (sin, cos of u/2, v/2, w/2) of color_{2n,2n-i,j} from the printed explicit formulas
+    (eqs. R_system_leq_n, R_system_geq_n: sin^{2n-i}(u/2) sin^i(w/2) cos^{i-j}(v/2) sin^j(v/2) for i <= n,
+    sin^i(w/2) sin^{2n-i}(u/2) cos^{2n-i-j}(v/2) sin^j(v/2) for i > n; G = R(w, u, v), B = R(v, w, u)), or ``None``
+    if a power is negative (not a function of the system).  Independent of :mod:`paper_repro.core.labels`."""
+    cos_v = i - j if i <= n else 2 * n - i - j
+    r = {"u": (2 * n - i, 0), "v": (j, cos_v), "w": (i, 0)}
+    if min(min(p) for p in r.values()) < 0:
+        return None
+    # G(u, v, w) = R(w, u, v): the R-roles (u, v, w) are played by (w, u, v); B: by (v, w, u)
+    roles = {"R": ("u", "v", "w"), "G": ("w", "u", "v"), "B": ("v", "w", "u")}[color]
+    var = {roles[0]: r["u"], roles[1]: r["v"], roles[2]: r["w"]}
+    return (*var["u"], *var["v"], *var["w"])
 
 
 @line_check("sec1_3-rgb-index-sets")
-def rgb_index_sets() -> LineResult:
-    """{j=0..n, i=j..2n-j} is the disjoint union of the halves {j=0..n, i=j..n} (eq. R_system_leq_n) and
-    {j=0..n-1, i=n+1..2n-j} (eq. R_system_geq_n), has (n+1)^2 members, and all printed powers are >= 0 on it."""
-    ok = True
-    for n in range(1, 31):
-        full = {(i, j) for j in range(n + 1) for i in range(j, 2 * n - j + 1)}
-        low = {(i, j) for j in range(n + 1) for i in range(j, n + 1)}
-        high = {(i, j) for j in range(n) for i in range(n + 1, 2 * n - j + 1)}
-        powers_ok = all(i - j >= 0 for i, j in low) and all(2 * n - i - j >= 0 for i, j in high)
-        ok &= not (low & high) and low | high == full and len(full) == (n + 1) ** 2 and powers_ok
-    return LineResult(ok, how="index sets counted, n = 1..30", kind="proof", detail={"ok": ok})
+def rgb_index_sets(override: dict[str, str] | None = None, n_max: int = 30) -> LineResult:
+    """The index sets read from the transcriptions of eqs. R_system, G_system, B_system, R_system_leq_n and
+    R_system_geq_n: for n = 1..n_max, every (i, j) of the three full systems gives non-negative powers in the printed
+    explicit formulas, the full R set is the disjoint union of the two printed halves, and R u G u B (equal
+    functions merged) has exactly delta_n = 3n(n+1)+1 members, the exponent vectors of T_{2n}
+    (:func:`~paper_repro.core.labels.united_system`).  ``override`` replaces transcriptions (tests)."""
+    text = _transcribed(INDEX_SET_LINES, override)
+    bad: list[str] = []
+    for n in range(1, n_max + 1):
+        try:
+            sets = {k: _read_pairs(text[k], n) for k in INDEX_SET_LINES}
+        except ValueError as exc:
+            return LineResult(False, how="index sets read from the transcriptions", kind="exhaustive",
+                              detail={"unread": str(exc)})
+        funcs = set()
+        for color, key in zip("RGB", INDEX_SET_LINES[:3]):
+            for i, j in sets[key]:
+                e = printed_exponents(color, n, i, j)
+                if e is None:
+                    bad.append(f"n={n}: {color}_{{{2 * n},{2 * n - i},{j}}} has a negative power")
+                else:
+                    funcs.add(e)
+        full, low, high = (set(sets[k]) for k in ("sec1_3-R-system", "sec1_3-R-leq-n", "sec1_3-R-geq-n-relation"))
+        if low & high or low | high != full or len(full) != len(sets["sec1_3-R-system"]):
+            bad.append(f"n={n}: the R set is not the disjoint union of its printed halves")
+        if len(funcs) != 3 * n * (n + 1) + 1 or funcs != {exponents(lb) for lb in united_system(n)}:
+            bad.append(f"n={n}: R u G u B has {len(funcs)} distinct functions, not those of T_{{2n}}")
+    return LineResult(not bad, how=f"index sets read from the transcriptions, powers of the printed explicit formulas "
+                      f"and the distinct functions of R u G u B against delta_n and T_{{2n}}, n = 1..{n_max}",
+                      kind="exhaustive", detail={"n_max": n_max, "problems": bad[:3]})
 
 
 @line_check("sec1_3-order-n3")
@@ -337,7 +436,7 @@ def _boundary(var: int) -> LineResult:
                 ck = c_const(n, k, a, "exact")
                 value = ck * pt["alpha-t"][0] ** (2 * n - k) * pt["t"][0] ** k
                 ok &= value / ck == _factor_derivative(2 * n - k, 0, 0, pt["alpha-t"]) * pt["t"][0] ** k
-    return LineResult(ok, how="exponent vectors of T_{2n} restricted to the edge, n = 1..12", kind="proof",
+    return LineResult(ok, how="exponent vectors of T_{2n} restricted to the edge, n = 1..12", kind="exhaustive",
                       detail={"ok": ok})
 
 
@@ -373,7 +472,7 @@ def c_formula() -> LineResult:
                 pu_ok &= total == 1
     return LineResult(poly_ok and pu_ok, how="polynomial identity in cos(alpha/2) with the expansion of "
                       "(X^2+2cXY+Y^2)^n (n <= 15); exact partition of unity at 4 rational points (n <= 5)",
-                      kind="proof", detail={"polynomial_identity": poly_ok, "partition_of_unity": pu_ok})
+                      kind="exhaustive", detail={"polynomial_identity": poly_ok, "partition_of_unity": pu_ok})
 
 
 @line_check("sec1_3-c-symmetry")
@@ -381,7 +480,7 @@ def c_symmetry() -> LineResult:
     ok = all(c_numerator(n, i) == c_numerator(n, 2 * n - i)[: i + 1] and not any(c_numerator(n, 2 * n - i)[i + 1:])
              for n in range(1, 31) for i in range(n + 1))
     return LineResult(ok, how="the printed c_{2n,i} and c_{2n,2n-i} as polynomials in cos(alpha/2), n = 1..30",
-                      kind="proof", detail={"ok": ok})
+                      kind="exhaustive", detail={"ok": ok})
 
 
 P = 2**61 - 1
@@ -591,7 +690,7 @@ def bernstein_polynomials() -> LineResult:
         mid = (one_m + s) ** (2 * n)
         right = sum((comb(2 * n, i) * one_m ** (2 * n - i) * s**i for i in range(2 * n + 1)), fmpq_poly([0]))
         ok &= left == mid == right
-    return LineResult(ok, how="fmpq_poly identities, n = 1..20", kind="proof", detail={"ok": ok})
+    return LineResult(ok, how="fmpq_poly identities, n = 1..20", kind="exhaustive", detail={"ok": ok})
 
 
 @line_check("sec1_3-sin-power-leading")
@@ -603,11 +702,6 @@ def sin_power_leading() -> LineResult:
 
 
 # -- chain rules and parametrizations ----------------------------------------------------------------------------
-#: printed chain rules: parametrization -> (variable differentiated r-k times, variable differentiated k times)
-PRINTED_CHAIN = {"parametrization_for_partition_of_unity": (1, 2), "parametrization_1_y_0": (1, 2),
-                 "parametrization_2_x_0": (0, 1), "parametrization_3_y_0": (2, 0)}
-
-
 def chain_ok(param: str, printed: tuple[int, int]) -> bool:
     """The printed d^r/d(param)^r = sum_k C(r,k) (-1)^k d^{r-k}_a d^k_b holds iff the direction of the (affine)
     parametrization is e_a - e_b; then (d_a - d_b)^r expands binomially (checked as polynomials, r <= 10)."""
@@ -622,31 +716,59 @@ def chain_ok(param: str, printed: tuple[int, int]) -> bool:
     return tuple(want) == direction and binom_ok
 
 
-def _chain(param: str) -> LineResult:
-    ok = chain_ok(param, PRINTED_CHAIN[param])
-    return LineResult(ok, how="direction vector of the printed affine parametrization; binomial expansion of "
-                      "(d_a - d_b)^r as polynomials (r <= 10)", kind="proof",
-                      detail={"direction": list(step_geometry(param)[0])})
+_CHAIN_PAIR = re.compile(r"\\left\(\s*(-?1)\s*\\right\)\s*\^\{k\}.*?\\partial\s*([uvw])(?:_\{\d\})?\^\{[^{}]*-k\}\s*"
+                         r"\\partial\s*([uvw])(?:_\{\d\})?\^\{k\}", re.S)
+
+
+def read_chain(tex: str) -> tuple[int, int]:
+    """(a, b) of a printed chain rule sum_k binom (-1)^k d/da^{r-k} d/db^k, read from its transcription (variables
+    u, v, w as 0, 1, 2); a sign other than (-1)^k is unread (``ValueError``)."""
+    m = _CHAIN_PAIR.search(tex)
+    if not m or m.group(1) != "-1":
+        raise ValueError(f"no chain rule sum (-1)^k d^(r-k)/da d^k/db in {tex[:50]!r}")
+    return "uvw".index(m.group(2)), "uvw".index(m.group(3))
+
+
+def _chain(param: str, check_id: str, override: dict[str, str] | None = None) -> LineResult:
+    """Every line of ``check_id`` (the chain rule and its use at order r+1) read from its transcription: the pair of
+    variables it differentiates must be the printed parametrization's direction e_a - e_b."""
+    texts = {k: v for k, v in _transcribed([x.id for x in _lines_of(check_id)], override).items()}
+    try:
+        pairs = {k: read_chain(v) for k, v in sorted(texts.items())}
+    except ValueError as exc:
+        return LineResult(False, how="the chain rule read from the transcription", detail={"unread": str(exc)})
+    ok = bool(pairs) and all(chain_ok(param, pr) for pr in pairs.values())
+    return LineResult(ok, how="the differentiated pair of variables read from each transcription against the direction "
+                      "vector of the printed affine parametrization; binomial expansion of (d_a - d_b)^r as "
+                      "polynomials (r <= 10)", kind="exhaustive",
+                      detail={"direction": list(step_geometry(param)[0]),
+                              "pairs": {k: list(v) for k, v in pairs.items()}})
+
+
+def _lines_of(check_id: str):
+    from paper_repro.printed.lines.sec1_3 import LINES
+
+    return [x for x in LINES if x.check == check_id]
 
 
 @line_check("sec1_3-chain-rule-pu")
-def chain_pu() -> LineResult:
-    return _chain("parametrization_for_partition_of_unity")
+def chain_pu(override=None) -> LineResult:
+    return _chain("parametrization_for_partition_of_unity", "sec1_3-chain-rule-pu", override)
 
 
 @line_check("sec1_3-chain-rule-1")
-def chain_1() -> LineResult:
-    return _chain("parametrization_1_y_0")
+def chain_1(override=None) -> LineResult:
+    return _chain("parametrization_1_y_0", "sec1_3-chain-rule-1", override)
 
 
 @line_check("sec1_3-chain-rule-2")
-def chain_2() -> LineResult:
-    return _chain("parametrization_2_x_0")
+def chain_2(override=None) -> LineResult:
+    return _chain("parametrization_2_x_0", "sec1_3-chain-rule-2", override)
 
 
 @line_check("sec1_3-chain-rule-3")
-def chain_3() -> LineResult:
-    return _chain("parametrization_3_y_0")
+def chain_3(override=None) -> LineResult:
+    return _chain("parametrization_3_y_0", "sec1_3-chain-rule-3", override)
 
 
 def param_onto(param: str, y_to=lambda a, x: a - x) -> bool:
@@ -663,7 +785,8 @@ def param_onto(param: str, y_to=lambda a, x: a - x) -> bool:
 
 def _param(param: str) -> LineResult:
     ok = param_onto(param)
-    return LineResult(ok, how="exact images of a grid of the parameter triangle and of its vertices (alpha = 3/2)",
+    return LineResult(ok, how="exact images of a grid of the parameter triangle and of its vertices (alpha = 3/2; "
+                      "the maps are linear in (alpha, x, y), so one alpha > 0 stands for every alpha)",
                       kind="proof", detail={"onto": ok})
 
 
@@ -689,37 +812,77 @@ def param_ranges() -> LineResult:
                       detail={"onto": ok})
 
 
-#: printed: parametrization -> (running variable, the coordinate set to 0 by running variable = 0)
-PRINTED_BOUNDARY = {"parametrization_1_y_0": ("y", 1), "parametrization_2_x_0": ("x", 0),
-                    "parametrization_3_y_0": ("y", 2)}
+def read_boundary_vars(tex: str) -> list[tuple[str, str]]:
+    """(parametrization, variable set to 0) pairs of a line, in order: the ``\\ref{parametrization_..}`` it names and
+    the points ``$y=0$``/``$x=0$`` it evaluates at (``ValueError`` if their numbers differ or are 0)."""
+    params = re.findall(r"\\ref\{(parametrization_[123]_[xy]_0)\}", tex)
+    points = re.findall(r"\$([xy])=0\$", tex)
+    if not params or len(params) != len(points):
+        raise ValueError(f"{len(params)} parametrizations but {len(points)} points in {tex[:50]!r}")
+    return list(zip(params, points))
 
 
 @line_check("sec1_3-boundary-vars")
-def boundary_vars(printed=None) -> LineResult:
-    """Parametrizations 1, 2, 3 are differentiated in y, x, y at y = 0, x = 0, y = 0: there v_1, u_2, w_3 vanish
-    (the edges v = 0, u = 0, w = 0 of the three steps)."""
-    printed = printed or PRINTED_BOUNDARY
-    ok = all(PARAMS[p][1] == printed[p][0] and step_geometry(p)[1] == printed[p][1] for p in STEP_PARAMS)
-    return LineResult(ok, how="the printed maps evaluated at the running parameter 0", kind="proof",
-                      detail={"ok": ok})
+def boundary_vars(override: dict[str, str] | None = None) -> LineResult:
+    """Each line names parametrizations and the points where they are evaluated (read from the transcription):
+    each point must set the running parameter of that printed map to 0, where exactly one of u, v, w vanishes
+    (v_1, u_2, w_3: the edges v = 0, u = 0, w = 0 of the three steps)."""
+    texts = _transcribed([x.id for x in _lines_of("sec1_3-boundary-vars")], override)
+    try:
+        pairs = {k: read_boundary_vars(v) for k, v in sorted(texts.items())}
+    except ValueError as exc:
+        return LineResult(False, how="the parametrizations and points read from the transcriptions",
+                          detail={"unread": str(exc)})
+    bad = {k: v for k, v in pairs.items() if any(PARAMS[p][1] != var for p, var in v)}
+    edges = {p: "uvw"[step_geometry(p)[1]] for p in STEP_PARAMS}  # asserts one coordinate vanishes
+    return LineResult(not bad, how="the parametrizations and points read from each transcription against the running "
+                      "parameter of the printed maps, evaluated at 0", kind="proof",
+                      detail={"lines": len(pairs), "wrong": sorted(bad), "vanishing_coordinate": edges})
 
 
 # ==============================================================================================================
 # The proof of Theorem joint_systems_linear_independence
 # ==============================================================================================================
-def printed_L(n: int) -> set[int]:
-    """eq. linear_combination_union: centre; R, G, B with j = 0..n-1, i = j..2n-1-j."""
-    return centre(n) | dsum("R", n, 0, n - 1) | dsum("G", n, 0, n - 1) | dsum("B", n, 0, n - 1)
+def printed_rows(check_id: str, n: int, r: int = 0, override: dict[str, str] | None = None) -> set:
+    """The functions named by the displayed rows of the lines checked by ``check_id``, read from their
+    transcriptions (sums, bounds, constants, functions: :func:`paper_repro.printed.lines.read.sum_terms`) at order
+    n and step r: indices into T_{2n} by the functions' own names (no alias); a name that is not a member of T_{2n}
+    stays in the set as a string (a mismatch).  ``override`` replaces transcriptions (tests)."""
+    from paper_repro.printed.lines.read import sum_terms, term_indices
+    from paper_repro.printed.lines.sec1_3 import LINES
+
+    rows = {x.id: x.verbatim for x in LINES if x.check == check_id and x.kind == "display"}
+    rows.update({k: v for k, v in (override or {}).items() if k in rows})
+    strict = {lb.paper: k for k, lb in enumerate(united_system(n))}
+    out: set = set()
+    for key in sorted(rows):
+        for color, i, j in term_indices(sum_terms(rows[key]), n=n, r=r):
+            name = f"{color}_{{{2 * n},{2 * n - i},{j}}}"
+            out.add(strict.get(name, name))
+    return out
+
+
+def _read_sets(check_id: str, computed_fn, rs=lambda n: [0], ns=N_PROOF, override=None) -> LineResult:
+    """:func:`_proof_sets` with the printed sets read from the transcriptions of the check's lines."""
+    try:
+        return _proof_sets(lambda n, r: printed_rows(check_id, n, r, override), computed_fn, rs=rs, ns=ns,
+                           how="index sets of the printed sums (read from the transcriptions)")
+    except ValueError as exc:
+        return LineResult(False, how="index sets of the printed sums, read from the transcriptions",
+                          detail={"unread": str(exc)})
 
 
 @line_check("sec1_3-L-set")
-def l_set() -> LineResult:
-    printed = {(n, 0): printed_L(n) for n in range(1, 13)}
-    computed = {(n, 0): set(range(len(united_system(n)))) for n in range(1, 13)}
-    return _set_result(printed, computed, "the printed sums against T_{2n}, n = 1..12", kind="proof")
+def l_set(override: dict[str, str] | None = None) -> LineResult:
+    res = _read_sets("sec1_3-L-set", lambda n, r: set(range(len(united_system(n)))), ns=range(1, 13),
+                     override=override)
+    res.how = res.how.replace("against the elimination recomputed from exact derivatives", "against T_{2n}")
+    res.kind = "exhaustive"
+    return res
 
 
-def _proof_sets(printed_fn, computed_fn, rs=lambda n: [0], ns=N_PROOF, corrected_fn=None, kind="exact-evidence"):
+def _proof_sets(printed_fn, computed_fn, rs=lambda n: [0], ns=N_PROOF, corrected_fn=None, kind="exact-evidence",
+                how="index sets of the printed sums"):
     printed, computed, corrected = {}, {}, {}
     for n in ns:
         for r in rs(n):
@@ -727,77 +890,94 @@ def _proof_sets(printed_fn, computed_fn, rs=lambda n: [0], ns=N_PROOF, corrected
             computed[(n, r)] = set(computed_fn(n, r))
             if corrected_fn:
                 corrected[(n, r)] = corrected_fn(n, r)
-    return _set_result(printed, computed, "index sets of the printed sums against the elimination recomputed from "
-                       f"exact derivatives, n = {ns.start}..{ns.stop - 1}", kind=kind,
-                       corrected=corrected if corrected_fn else None)
+    return _set_result(printed, computed, f"{how} against the elimination recomputed from exact derivatives, "
+                       f"n = {ns.start}..{ns.stop - 1}", kind=kind, corrected=corrected if corrected_fn else None)
 
 
 @line_check("sec1_3-Ltilde-set")
-def ltilde_set() -> LineResult:
-    return _proof_sets(lambda n, r: centre(n) | dsum("R", n, 1, n - 1) | isum("G", n, 0, 1, 2 * n - 1)
-                       | dsum("G", n, 1, n - 1) | dsum("B", n, 0, n - 1), lambda n, r: alive_after(n, 0, 0))
+def ltilde_set(override=None) -> LineResult:
+    return _read_sets("sec1_3-Ltilde-set", lambda n, r: alive_after(n, 0, 0), override=override)
 
 
 @line_check("sec1_3-Lhat-set")
-def lhat_set() -> LineResult:
-    return _proof_sets(lambda n, r: centre(n) | dsum("R", n, 1, n - 1) | dsum("G", n, 1, n - 1)
-                       | isum("B", n, 0, 1, 2 * n - 1) | dsum("B", n, 1, n - 1), lambda n, r: alive_after(n, 0, 1))
+def lhat_set(override=None) -> LineResult:
+    return _read_sets("sec1_3-Lhat-set", lambda n, r: alive_after(n, 0, 1), override=override)
 
 
 @line_check("sec1_3-L0-set")
-def l0_set() -> LineResult:
-    return _proof_sets(lambda n, r: centre(n) | dsum("R", n, 1, n - 1) | dsum("G", n, 1, n - 1)
-                       | dsum("B", n, 1, n - 1), lambda n, r: alive_after(n, 0, 2))
+def l0_set(override=None) -> LineResult:
+    return _read_sets("sec1_3-L0-set", lambda n, r: alive_after(n, 0, 2), override=override)
 
 
-def printed_Lr(n: int, r: int) -> set[int]:
-    """eq. induction_hypothesis_for_linear_independence (L_r): centre; R, G, B with j = r+1..n-1."""
-    return centre(n) | dsum("R", n, r + 1, n - 1) | dsum("G", n, r + 1, n - 1) | dsum("B", n, r + 1, n - 1)
+def _orders(line_id: str, n: int) -> range:
+    """The orders r of a listed range ``r=a,...,b`` read from the transcription of ``line_id``."""
+    from paper_repro.printed.lines.read import bound, listed_range
+    from paper_repro.printed.lines.sec1_3 import LINES
+
+    lo, hi = listed_range({x.id: x.verbatim for x in LINES}[line_id], "r")
+    return range(bound(lo, n=n), bound(hi, n=n) + 1)
 
 
 @line_check("sec1_3-Lr-set")
-def lr_set() -> LineResult:
-    return _proof_sets(printed_Lr, lambda n, r: alive_after(n, r, 2), rs=lambda n: range(n))
+def lr_set(override=None) -> LineResult:
+    """L_r for the orders r of the printed range (line sec1_3-Lr-orders, r = 0..n-1)."""
+    return _read_sets("sec1_3-Lr-set", lambda n, r: alive_after(n, r, 2), rs=lambda n: _orders("sec1_3-Lr-orders", n),
+                      override=override)
 
 
 @line_check("sec1_3-Lr1-set")
-def lr1_set() -> LineResult:
-    return _proof_sets(lambda n, r: centre(n) | dsum("R", n, r + 2, n - 1) | dsum("G", n, r + 2, n - 1)
-                       | dsum("B", n, r + 2, n - 1), lambda n, r: alive_after(n, r + 1, 2), rs=lambda n: range(n - 1))
+def lr1_set(override=None) -> LineResult:
+    return _read_sets("sec1_3-Lr1-set", lambda n, r: alive_after(n, r + 1, 2), rs=lambda n: range(n - 1),
+                      override=override)
+
+
+_CONSTANT_SET = re.compile(r"\\left\\\{\s*\\rho_\{2n,2n-i,([^{}]+)\},\\gamma_\{2n,2n-i,([^{}]+)\},"
+                           r"\\beta_\{2n,2n-i,([^{}]+)\}\s*\\right\\\}\s*_\{i=([^{}]+)\}\^\{([^{}]+)\}"
+                           r".*?equal to \$(\w+)\$", re.S)
 
 
 @line_check("sec1_3-level-zeroed")
-def level_zeroed() -> LineResult:
-    """The constants {rho, gamma, beta}_{2n,2n-i,r+1}, i = r+1..2n-1-(r+1), are those set to 0 by the step r -> r+1."""
-    return _proof_sets(lambda n, r: {lab(c, n, i, r + 1) for c in "RGB" for i in range(r + 1, 2 * n - 1 - (r + 1) + 1)},
-                       lambda n, r: alive_after(n, r, 2) - alive_after(n, r + 1, 2), rs=lambda n: range(n - 1))
+def level_zeroed(verbatim: str | None = None) -> LineResult:
+    """The constants {rho, gamma, beta}_{2n,2n-i,r+1}, i = r+1..2n-1-(r+1) (levels, range and the value 0 read from
+    the transcription), are those set to 0 by the step r -> r+1."""
+    from paper_repro.printed.lines.read import bound
+
+    tex = verbatim if verbatim is not None else _transcribed(["sec1_3-step-zeroed"])["sec1_3-step-zeroed"]
+    m = _CONSTANT_SET.search(tex.replace("\\left(", "(").replace("\\right)", ")"))
+    if not m or m.group(6) != "0":
+        return LineResult(False, how="the constants read from the transcription", detail={"unread": tex[:60]})
+    levels, lo, hi = m.group(1, 2, 3), m.group(4), m.group(5)
+
+    def printed(n, r):
+        strict = {lb.paper: k for k, lb in enumerate(united_system(n))}
+        return {strict.get(f"{c}_{{{2 * n},{2 * n - i},{bound(lev, n=n, r=r)}}}", f"{c}?{i}")
+                for c, lev in zip("RGB", levels) for i in range(bound(lo, n=n, r=r), bound(hi, n=n, r=r) + 1)}
+    return _proof_sets(printed, lambda n, r: alive_after(n, r, 2) - alive_after(n, r + 1, 2), rs=lambda n: range(n - 1),
+                       how="constants of the printed set (levels, range and value read from the transcription)")
 
 
 @line_check("sec1_3-Ltilde-r-set")
-def ltilde_r_set() -> LineResult:
-    return _proof_sets(lambda n, r: centre(n) | dsum("R", n, r + 2, n - 1)
-                       | isum("G", n, r + 1, r + 2, 2 * n - 1 - (r + 1)) | dsum("G", n, r + 2, n - 1)
-                       | dsum("B", n, r + 1, n - 1),
-                       lambda n, r: alive_after(n, r + 1, 0), rs=lambda n: range(n - 1))
+def ltilde_r_set(override=None) -> LineResult:
+    return _read_sets("sec1_3-Ltilde-r-set", lambda n, r: alive_after(n, r + 1, 0), rs=lambda n: range(n - 1),
+                      override=override)
 
 
 @line_check("sec1_3-Lhat-r-set")
-def lhat_r_set() -> LineResult:
-    return _proof_sets(lambda n, r: centre(n) | dsum("R", n, r + 2, n - 1) | dsum("G", n, r + 2, n - 1)
-                       | isum("B", n, r + 1, r + 2, 2 * n - 1 - (r + 1)) | dsum("B", n, r + 2, n - 1),
-                       lambda n, r: alive_after(n, r + 1, 1), rs=lambda n: range(n - 1))
+def lhat_r_set(override=None) -> LineResult:
+    return _read_sets("sec1_3-Lhat-r-set", lambda n, r: alive_after(n, r + 1, 1), rs=lambda n: range(n - 1),
+                      override=override)
 
 
 @line_check("sec1_3-Ln2-set")
-def ln2_set() -> LineResult:
-    return _proof_sets(lambda n, r: centre(n) | {lab(c, n, i, n - 1) for c in "RGB" for i in range(n - 1, n + 1)},
-                       lambda n, r: alive_after(n, n - 2, 2), ns=range(2, N_PROOF.stop))
+def ln2_set(override=None) -> LineResult:
+    return _read_sets("sec1_3-Ln2-set", lambda n, r: alive_after(n, n - 2, 2), ns=range(2, N_PROOF.stop),
+                      override=override)
 
 
 @line_check("sec1_3-Ln1-set")
-def ln1_set() -> LineResult:
+def ln1_set(override=None) -> LineResult:
     """L_{n-1} = rho_{2n,n,n} R_{2n,n,n}, and R_{2n,n,n} is not the zero function (so rho_{2n,n,n} = 0)."""
-    res = _proof_sets(lambda n, r: centre(n), lambda n, r: alive_after(n, n - 1, 2))
+    res = _read_sets("sec1_3-Ln1-set", lambda n, r: alive_after(n, n - 1, 2), override=override)
     pt = _domain_points(ALPHA_TS[0], 1)[0]
     nonzero = all(pt[0][0] ** n * pt[1][0] ** n * pt[2][0] ** n != 0 for n in N_PROOF)
     res.holds_as_printed &= nonzero
@@ -806,18 +986,51 @@ def ln1_set() -> LineResult:
 
 
 @line_check("sec1_3-elimination-orders")
-def elimination_orders() -> LineResult:
-    """The derivative orders the proof uses: level j (j = 0..n-1) is eliminated by derivatives of order j, in the
-    order parametrization 1, 2, 3; orders 0..n-1 leave only the centre, and an order-n step would remove it too."""
-    ok = True
+def elimination_orders(override: dict[str, str] | None = None) -> LineResult:
+    """The derivative orders the proof uses, read from its six lines and compared with the elimination recomputed
+    from exact derivatives: level j is removed by the order-j steps (parametrizations 1, 2, 3) and the centre by an
+    order-n step, so the induction runs over r = 0..n (line induction-orders); L_r exists, non-empty, for
+    r = 0..n-1 (induction-range); the steps r -> r+1 are r = 0..n-2 (step-range, induction-conclusion); the figure
+    shows the first and last of them, r = 0 and r = n-2, with derivatives of orders r + 1 of L_r."""
+    from paper_repro.printed.lines.read import bound, listed_range
+
+    ids = ("sec1_3-induction-orders", "sec1_3-induction-range", "sec1_3-step-range", "sec1_3-induction-conclusion",
+           "sec1_3-fig-j1-caption-orders", "sec1_3-fig-j1-text")
+    t = _transcribed(ids, override)
+    try:
+        ranges = {k: listed_range(t[k], "r") for k in ids[:4]}
+        caption_r = re.findall(r"\$r=([^$]+)\$", t["sec1_3-fig-j1-caption-orders"])
+        head = t["sec1_3-fig-j1-text"].split("order partial derivatives")[0]
+        text_orders = re.findall(r"\b(first)\b|\$\\left\(\s*([^$]+?)\s*\\right\)\s*\$th", head)
+        text_l = re.findall(r"0=L_\{([^{}]+)\}", t["sec1_3-fig-j1-text"])
+    except ValueError as exc:
+        return LineResult(False, how="the orders read from the transcriptions", detail={"unread": str(exc)})
+    bad = []
     for n in N_PROOF:
         labels = united_system(n)
-        for r, _param, _before, gone in elimination(n):
-            ok &= all(labels[k].j == r and not labels[k].is_centre for k in gone)
-        ok &= alive_after(n, n - 1, 2) == frozenset({0})
-        ok &= survivors(n, STEP_PARAMS[0], n, frozenset({0})) == frozenset({0})
-    return LineResult(ok, how=f"elimination recomputed from exact derivatives, n = 1..{N_PROOF.stop - 1}",
-                      detail={"ok": ok})
+        removed_at = sorted({r for r, _p, _b, gone in elimination(n) if gone})
+        levels_ok = all(labels[k].j == r and not labels[k].is_centre for r, _p, _b, gone in elimination(n)
+                        for k in gone) and alive_after(n, n - 1, 2) == frozenset({0})
+        centre_order = n if survivors(n, STEP_PARAMS[0], n, frozenset({0})) == frozenset({0}) else None
+        want = {"sec1_3-induction-orders": removed_at + [centre_order],
+                "sec1_3-induction-range": removed_at,  # the orders whose steps remove a level
+                "sec1_3-step-range": [r for r in range(n) if r + 1 < n],
+                "sec1_3-induction-conclusion": [r for r in range(n) if r + 1 < n]}
+        for k, (lo, hi) in ranges.items():
+            if list(range(bound(lo, n=n), bound(hi, n=n) + 1)) != want[k]:
+                bad.append(f"n={n}: {k}")
+        steps = want["sec1_3-step-range"]
+        if n >= 2:
+            shown = [bound(x, n=n) for x in caption_r]
+            orders = [1 if o == "first" else bound(e, n=n) for o, e in text_orders]
+            if shown != [steps[0], steps[-1]] or orders != [r + 1 for r in shown] or \
+                    [bound(x, n=n) for x in text_l] != shown:
+                bad.append(f"n={n}: figure")
+        if not levels_ok:
+            bad.append(f"n={n}: levels")
+    return LineResult(not bad, how="orders read from the six transcriptions against the elimination recomputed from "
+                      f"exact derivatives, n = 1..{N_PROOF.stop - 1}", kind="exhaustive",
+                      detail={"ranges": {k: list(v) for k, v in ranges.items()}, "mismatches": bad[:3]})
 
 
 # -- value lines: linear forms in the combining constants -----------------------------------------------------
@@ -872,18 +1085,6 @@ def _A(pt, k: int) -> fmpq:
 
 
 # order-0 step, parametrization 1 (x = t, v = 0, w = alpha - t)
-def _r0p1_terms(n, r, pt):
-    out = {}
-    for i in range(0, 2 * n):  # R_{2n,2n-i,0}(x, 0, alpha - x), evaluated as functions
-        e = exponents(BasisLabel("R", n, i, 0))
-        out[lab("R", n, i, 0)] = (pt["t"][0] ** e[0] * pt["t"][1] ** e[1] * (1 if e[2] == 0 else 0)
-                                  * pt["alpha-t"][0] ** e[4] * pt["alpha-t"][1] ** e[5])
-    e = exponents(BasisLabel("G", n, 0, 0))
-    out[lab("G", n, 0, 0)] = (pt["t"][0] ** e[0] * pt["t"][1] ** e[1] * (1 if e[2] == 0 else 0)
-                              * pt["alpha-t"][0] ** e[4] * pt["alpha-t"][1] ** e[5])
-    return out
-
-
 def _r0p1_cform(n, r, pt):
     """sum_{i=0}^{2n} rho'_{2n,2n-i,0} c_{2n,2n-i} sin^{2n-i}(x/2) sin^i((alpha-x)/2) with the printed rho'."""
     out = {}
@@ -916,9 +1117,58 @@ def _computed_step(param_index: int, order=lambda r: r, alive_fn=None):
     return fn
 
 
+def read_terms_at_edge(line_id: str, param_index: int, verbatim: str | None = None):
+    """The printed terms constant x function(point) of an order-0 step, read from the transcription: a function
+    ``(n, r, pt) -> {member of T_{2n}: its value at the boundary point}`` of the functions it names (by their own
+    names), after checking that the printed point is the step's parametrization at running parameter 0.  A name
+    that is no member of T_{2n} is kept as a string (a mismatch)."""
+    from paper_repro.printed.lines.read import sum_terms, term_indices
+
+    tex = verbatim if verbatim is not None else _transcribed([line_id])[line_id]
+    terms = sum_terms(tex)
+    points = {re.sub(r"\s+", "", x) for x in re.findall(r"\\left\(\s*([^()]*?)\s*\\right\)", tex)}
+    fmap, run = PARAMS[STEP_PARAMS[param_index]]
+    a, q = fmpq(7, 5), fmpq(2, 5)  # the printed point and the map compared at exact values of alpha and the parameter
+    at0 = fmap(a, q, fmpq(0)) if run == "y" else fmap(a, fmpq(0), q)
+    other = "x" if run == "y" else "y"
+    readable = []
+    for pt_text in points:
+        parts = pt_text.split(",")
+        vals = []
+        for part in parts:
+            expr = part.replace("\\alpha", "A")
+            if not re.fullmatch(r"[0A-Za-z+\-]+", expr):
+                raise ValueError(f"unread point {pt_text!r}")
+            vals.append(eval(expr.replace(other, "Q"), {"__builtins__": {}}, {"A": a, "Q": q}))  # noqa: S307
+        readable.append(tuple(vals))
+    if readable != [tuple(at0)] * len(readable) or not readable:
+        raise ValueError(f"the printed points {sorted(points)} are not the parametrization at {run} = 0")
+
+    def fn(n, r, pt):
+        strict = {lb.paper: k for k, lb in enumerate(united_system(n))}
+        out = {}
+        for color, i, j in term_indices(terms, n=n, r=r):
+            name = f"{color}_{{{2 * n},{2 * n - i},{j}}}"
+            k = strict.get(name, name)
+            out[k] = step_value(exponents(united_system(n)[k]), STEP_PARAMS[param_index], 0, pt) \
+                if isinstance(k, int) else fmpq(1)
+        return out
+    return fn
+
+
+def _terms_check(line_id: str, param_index: int, verbatim: str | None) -> LineResult:
+    try:
+        printed = read_terms_at_edge(line_id, param_index, verbatim)
+    except ValueError as exc:
+        return LineResult(False, how="the printed terms read from the transcription", detail={"unread": str(exc)})
+    res = _compare_forms(printed, _computed_step(param_index))
+    res.how = "terms read from the transcription (sums, constants, functions, point); " + res.how
+    return res
+
+
 @line_check("sec1_3-r0-p1-terms")
-def r0p1_terms() -> LineResult:
-    return _compare_forms(_r0p1_terms, _computed_step(0))
+def r0p1_terms(verbatim: str | None = None) -> LineResult:
+    return _terms_check("sec1_3-r0-p1-terms", 0, verbatim)
 
 
 @line_check("sec1_3-r0-p1-cform")
@@ -931,27 +1181,40 @@ def r0p1_aform() -> LineResult:
     return _compare_forms(_r0p1_aform, _computed_step(0))
 
 
-@line_check("sec1_3-r0-p1-omitted")
-def r0p1_omitted() -> LineResult:
-    """All functions of T_{2n} other than R_{2n,2n-i,0} (i < 2n) and G_{2n,2n,0} contain sin(v/2) to a power >= 1."""
-    ok = True
+def omitted_check(line_id: str, before: str, terms_line: str, param_index: int,
+                  override: dict[str, str] | None = None) -> LineResult:
+    """"The omitted functions contain sin(x_k/2), 0 at the edge, to a power >= 1": read from the transcriptions
+    -- the variable (``\\sin\\frac{v_{1}..``), the functions before the step (the rows of ``before``) and those
+    kept (the terms of ``terms_line``) -- every function before the step and not kept has that sine to a power
+    >= 1, every kept one has not, and the variable is the one that vanishes on the step's edge (n = 1..12)."""
+    from paper_repro.printed.lines.read import sum_terms, term_indices
+
+    t = _transcribed([line_id, terms_line], override)
+    m = re.search(r"\\sin\s*\\frac\{([uvw])_\{\d\}", t[line_id])
+    if not m:
+        return LineResult(False, how="the vanishing sine read from the transcription, n = 1..12", kind="exhaustive",
+                          detail={"unread": line_id})
+    var = "uvw".index(m.group(1))
+    ok = var == step_geometry(STEP_PARAMS[param_index])[1]
     for n in range(1, 13):
-        kept = dsum("R", n, 0, 0) | {lab("G", n, 0, 0)}
-        ok &= all((exponents(lb)[2] >= 1) == (k not in kept) for k, lb in enumerate(united_system(n)))
-    return LineResult(ok, how="exponent of sin(v/2) in every function of T_{2n}, n = 1..12", kind="proof",
-                      detail={"ok": ok})
+        strict = {lb.paper: k for k, lb in enumerate(united_system(n))}
+        kept = {strict.get(f"{c}_{{{2 * n},{2 * n - i},{j}}}", "?") for c, i, j in
+                term_indices(sum_terms(t[terms_line]), n=n)}
+        alive = printed_rows(before, n, 0, override)
+        ok &= "?" not in kept and kept <= alive
+        ok &= all((exponents(united_system(n)[k])[2 * var] >= 1) == (k not in kept)
+                  for k in alive if isinstance(k, int))
+    return LineResult(ok, how=f"exponent of sin({m.group(1)}/2) in the functions before the step (read) against those "
+                      "kept (read), n = 1..12", kind="exhaustive", detail={"variable": m.group(1), "ok": bool(ok)})
+
+
+@line_check("sec1_3-r0-p1-omitted")
+def r0p1_omitted(override: dict[str, str] | None = None) -> LineResult:
+    """All functions of L other than R_{2n,2n-i,0} (i < 2n) and G_{2n,2n,0} contain sin(v/2) to a power >= 1."""
+    return omitted_check("sec1_3-r0-p1-omitted", "sec1_3-L-set", "sec1_3-r0-p1-terms", 0, override)
 
 
 # order-0 step, parametrization 2 (u = 0, v = alpha - y, w = y; t = y)
-def _r0p2_terms(n, r, pt):
-    out = {}
-    for lb_color, i in [("G", i) for i in range(1, 2 * n)] + [("B", 0)]:
-        e = exponents(BasisLabel(lb_color, n, i, 0))
-        out[lab(lb_color, n, i, 0)] = ((1 if e[0] == 0 else 0) * pt["alpha-t"][0] ** e[2] * pt["alpha-t"][1] ** e[3]
-                                       * pt["t"][0] ** e[4] * pt["t"][1] ** e[5])
-    return out
-
-
 def _r0p2_aform(n, r, pt):
     out = {}
     for i in range(1, 2 * n + 1):
@@ -961,8 +1224,8 @@ def _r0p2_aform(n, r, pt):
 
 
 @line_check("sec1_3-r0-p2-terms")
-def r0p2_terms() -> LineResult:
-    return _compare_forms(_r0p2_terms, _computed_step(1))
+def r0p2_terms(verbatim: str | None = None) -> LineResult:
+    return _terms_check("sec1_3-r0-p2-terms", 1, verbatim)
 
 
 @line_check("sec1_3-r0-p2-aform")
@@ -971,35 +1234,19 @@ def r0p2_aform() -> LineResult:
 
 
 @line_check("sec1_3-r0-p2-omitted")
-def r0p2_omitted() -> LineResult:
+def r0p2_omitted(override: dict[str, str] | None = None) -> LineResult:
     """The functions of L-tilde discarded at x = 0 all contain sin(u/2) to a power >= 1."""
-    ok = True
-    for n in range(1, 13):
-        kept = isum("G", n, 0, 1, 2 * n - 1) | {lab("B", n, 0, 0)}
-        alive = centre(n) | dsum("R", n, 1, n - 1) | isum("G", n, 0, 1, 2 * n - 1) | dsum("G", n, 1, n - 1) \
-            | dsum("B", n, 0, n - 1)
-        ok &= all((exponents(united_system(n)[k])[0] >= 1) == (k not in kept) for k in alive)
-    return LineResult(ok, how="exponent of sin(u/2) in the functions of L-tilde, n = 1..12", kind="proof",
-                      detail={"ok": ok})
+    return omitted_check("sec1_3-r0-p2-omitted", "sec1_3-Ltilde-set", "sec1_3-r0-p2-terms", 1, override)
 
 
 # order-0 step, parametrization 3 (u = alpha - x, v = x, w = 0; t = x)
-def _r0p3_terms(n, r, pt):
-    out = {}
-    for i in range(1, 2 * n):
-        e = exponents(BasisLabel("B", n, i, 0))
-        out[lab("B", n, i, 0)] = (pt["alpha-t"][0] ** e[0] * pt["alpha-t"][1] ** e[1] * pt["t"][0] ** e[2]
-                                  * pt["t"][1] ** e[3] * (1 if e[4] == 0 else 0))
-    return out
-
-
 def _r0p3_aform(n, r, pt):
     return {lab("B", n, i, 0): _A_at(pt, 2 * n - i, "t") / _c(pt, 2 * n - i) for i in range(1, 2 * n)}
 
 
 @line_check("sec1_3-r0-p3-terms")
-def r0p3_terms() -> LineResult:
-    return _compare_forms(_r0p3_terms, _computed_step(2))
+def r0p3_terms(verbatim: str | None = None) -> LineResult:
+    return _terms_check("sec1_3-r0-p3-terms", 2, verbatim)
 
 
 @line_check("sec1_3-r0-p3-aform")
@@ -1017,11 +1264,32 @@ def _a_system_rank(n: int, first: int, last: int) -> bool:
     return _rank(rows) == last - first + 1
 
 
+#: A-system line -> the display whose sum of A's it makes vanish term by term
+A_SYSTEM_OF = {"sec1_3-r0-p1-A-system": "sec1_3-r0-p1-aform", "sec1_3-r0-p2-A-system": "sec1_3-r0-p2-aform",
+               "sec1_3-r0-p3-A-system": "sec1_3-r0-p3-aform"}
+
+
 @line_check("sec1_3-A-independent")
-def a_independent() -> LineResult:
-    """The subsystems {A_{2n,2n-i}} used in the order-0 step (i = 0..2n, 1..2n, 1..2n-1) are linearly independent."""
-    ok = all(_a_system_rank(n, f, last) for n in range(1, 6) for f, last in ((0, 2 * n), (1, 2 * n), (1, 2 * n - 1)))
-    return LineResult(ok, how="exact collocation ranks, n = 1..5", detail={"ok": ok})
+def a_independent(override: dict[str, str] | None = None) -> LineResult:
+    """The subsystems {A_{2n,2n-i}}_{i=a}^{b} of the order-0 steps (ranges read from the transcriptions) are the
+    A's of the sum in the display before each (its bounds read too) and linearly independent (exact ranks)."""
+    from paper_repro.printed.lines.read import bound
+
+    texts = _transcribed(list(A_SYSTEM_OF) + list(A_SYSTEM_OF.values()), override)
+    ranges, ok = {}, True
+    for line_id, display in A_SYSTEM_OF.items():
+        m = re.search(r"\\right\\\}\s*_\{i=([^{}]+)\}\^\{([^{}]+)\}", texts[line_id])
+        d = re.search(r"\\sum_\{i=([^{}]+)\}\^\{([^{}]+)\}", texts[display])
+        if not m or not d:
+            return LineResult(False, how="the ranges read from the transcriptions, n = 1..5",
+                              detail={"unread": line_id if not m else display})
+        ranges[line_id] = list(m.groups())
+        for n in range(1, 6):
+            first, last = bound(m.group(1), n=n), bound(m.group(2), n=n)
+            ok &= (first, last) == (bound(d.group(1), n=n), bound(d.group(2), n=n))
+            ok &= 0 <= first <= last <= 2 * n and _a_system_rank(n, first, last)
+    return LineResult(ok, how="ranges read from the transcriptions, equal to the bounds of the sums they are used "
+                      "for; exact collocation ranks, n = 1..5", detail={"ranges": ranges})
 
 
 # -- the step r -> r+1 -------------------------------------------------------------------------------------------
@@ -1249,12 +1517,42 @@ def _zeroed_check(computed_fn, printed_level, corrected_level, i_range, color, a
                                                            "corrected_mismatches": len(bad_c)})
 
 
+def read_zeroed(line_id: str, verbatim: str | None = None):
+    """(level, range of i, right-hand side) of a printed ``const'_{2n,2n-i,LEVEL} = 0, i = a, ..., b``, read from its
+    transcription, as functions of (n, r)."""
+    from paper_repro.printed.lines.read import bound, listed_range, right_hand_side
+
+    tex = verbatim if verbatim is not None else _transcribed([line_id])[line_id]
+    m = re.search(r"_\{2n,2n-i,([^{}]+)\}\^\{\\prime\}", tex)
+    if not m:
+        raise ValueError(f"no primed constant in {tex[:50]!r}")
+    level_expr = m.group(1)
+    lo, hi = listed_range(tex, "i")
+    rhs = right_hand_side(tex, r",~i\s*=")
+    return (lambda n, r: bound(level_expr, n=n, r=r),
+            lambda n, r: range(bound(lo, n=n, r=r), bound(hi, n=n, r=r) + 1), rhs)
+
+
+def _zeroed_read(line_id, computed_fn, corrected_level, color, alias, level=None, verbatim=None) -> LineResult:
+    """:func:`_zeroed_check` with the printed level, range and right-hand side read from the transcription
+    (``level`` overrides the level read: the corrected form in tests)."""
+    try:
+        read_level, i_range, rhs = read_zeroed(line_id, verbatim)
+    except ValueError as exc:
+        return LineResult(False, how="the printed constants read from the transcription", detail={"unread": str(exc)})
+    res = _zeroed_check(computed_fn, level or read_level, corrected_level, i_range, color, alias)
+    res.holds_as_printed &= rhs == "0"
+    res.detail["right_hand_side"] = rhs
+    res.how = "level, range and right-hand side read from the transcription; " + res.how
+    return res
+
+
 @line_check("sec1_3-r-p1-zeroed")
-def rp1_zeroed(level=lambda n, r: n - 1) -> LineResult:
+def rp1_zeroed(level=None, verbatim=None) -> LineResult:
     """Printed rho'_{2n,2n-i,n-1} = 0, i = r+1..2n-(r+1); the step zeroes the level-(r+1) constants (rho' of level r+1,
     its last one being gamma_{2n,2n-(r+1),r+1})."""
-    return _zeroed_check(lambda n, r: alive_before(n, r + 1, 0) - alive_after(n, r + 1, 0), level,
-                         lambda n, r: r + 1, lambda n, r: range(r + 1, 2 * n - (r + 1) + 1), "R", "G")
+    return _zeroed_read("sec1_3-rp1-zeroed", lambda n, r: alive_before(n, r + 1, 0) - alive_after(n, r + 1, 0),
+                        lambda n, r: r + 1, "R", "G", level, verbatim)
 
 
 # parametrization 2 (u = 0 is the zero variable, v = alpha - y the other, w = y = t fixed)
@@ -1325,10 +1623,10 @@ def rp2_asystem() -> LineResult:
 
 
 @line_check("sec1_3-r-p2-zeroed")
-def rp2_zeroed(level=lambda n, r: n - 1) -> LineResult:
+def rp2_zeroed(level=None, verbatim=None) -> LineResult:
     """Printed gamma'_{2n,2n-i,n-1} = 0, i = r+2..2n-(r+1); the step zeroes gamma' of level r+1."""
-    return _zeroed_check(lambda n, r: alive_before(n, r + 1, 1) - alive_after(n, r + 1, 1), level,
-                         lambda n, r: r + 1, lambda n, r: range(r + 2, 2 * n - (r + 1) + 1), "G", "B")
+    return _zeroed_read("sec1_3-rp2-zeroed", lambda n, r: alive_before(n, r + 1, 1) - alive_after(n, r + 1, 1),
+                        lambda n, r: r + 1, "G", "B", level, verbatim)
 
 
 # parametrization 3 (w = 0, u = alpha - x the other, v = x = t fixed)
@@ -1357,10 +1655,10 @@ def rp3_kpos() -> LineResult:
 
 
 @line_check("sec1_3-r-p3-zeroed")
-def rp3_zeroed() -> LineResult:
+def rp3_zeroed(verbatim=None) -> LineResult:
     """beta'_{2n,2n-i,r+1} = 0, i = r+2..2n-1-(r+1): exactly the constants the step removes."""
-    return _zeroed_check(lambda n, r: alive_before(n, r + 1, 2) - alive_after(n, r + 1, 2), lambda n, r: r + 1,
-                         lambda n, r: r + 1, lambda n, r: range(r + 2, 2 * n - 1 - (r + 1) + 1), "B", None)
+    return _zeroed_read("sec1_3-rp3-zeroed", lambda n, r: alive_before(n, r + 1, 2) - alive_after(n, r + 1, 2),
+                        lambda n, r: r + 1, "B", None, verbatim=verbatim)
 
 
 @line_check("sec1_3-fig-n4-caption")
@@ -1399,3 +1697,63 @@ def interval_typo(printed: str = r"\left[ 0\,\alpha\right]", corrected: str = r"
     return LineResult(endpoints(printed) == ["0", r"\alpha"], endpoints(corrected) == ["0", r"\alpha"],
                       how="the printed interval parsed into endpoints", kind="proof",
                       detail={"printed_endpoints": endpoints(printed)})
+
+
+# -- the conclusions of the order-0 steps: the primed constants vanish (read from the transcription) ---------------
+#: line -> (parametrization index 0/1/2, colour of the primed constants of level 0, colour of the one at i = 2n)
+ZERO_LINES = {"sec1_3-r0-p1-zero": (0, "R", "G"), "sec1_3-r0-p2-zero": (1, "G", "B"),
+              "sec1_3-r0-p3-zero": (2, "B", None)}
+
+
+def zero_conclusion(line_id: str, verbatim: str | None = None) -> LineResult:
+    """The printed conclusion ``rho'/gamma'/beta'_{2n,2n-i,0} = 0, i = a..b`` of an order-0 step, read from its
+    transcription (range and right-hand side): the constants it names (by the definitions of the primed
+    constants: color_{2n,2n-i,0} for i <= 2n-1, the other colour's corner for i = 2n) are exactly those of the
+    functions whose restriction to the step's edge does not vanish (the elimination recomputed from exact values),
+    and those restrictions are linearly independent (exact rank at 2n + 4 points of the edge), so a vanishing
+    combination has exactly these constants equal to the printed right-hand side 0 (n = 1..6)."""
+    from paper_repro.printed.lines.read import bound, listed_range, right_hand_side
+
+    param_index, color, alias = ZERO_LINES[line_id]
+    tex = verbatim if verbatim is not None else _transcribed([line_id])[line_id]
+    lo, hi = listed_range(tex, "i")
+    rhs = right_hand_side(tex, r",~i\s*=")
+    bad = []
+    for n in N_PROOF:
+        named = set()
+        for i in range(bound(lo, n=n), bound(hi, n=n) + 1):
+            if 0 <= i <= 2 * n - 1:
+                named.add(lab(color, n, i, 0))
+            elif alias and i == 2 * n:
+                named.add(lab(alias, n, 0, 0))
+            else:
+                named.add(-1 - i)  # a constant that does not exist
+        forced = survivors(n, STEP_PARAMS[param_index], 0, alive_before(n, 0, param_index))
+        labels = united_system(n)
+        pts = [boundary_point(ALPHA_TS[0], fmpq(k, 2 * n + 5)) for k in range(1, 2 * n + 5)]
+        rows = [[step_value(exponents(labels[k]), STEP_PARAMS[param_index], 0, pt) for k in sorted(forced)]
+                for pt in pts]
+        independent = _rank(rows) == len(forced)
+        if named != forced or not independent:
+            bad.append({"n": n, "printed_only": _names(n, {k for k in named if k >= 0} - forced),
+                        "computed_only": _names(n, forced - named), "independent": independent})
+    ok = rhs == "0" and not bad
+    return LineResult(ok, how="range and right-hand side read from the transcription; the constants of the functions "
+                      "not vanishing on the step's edge (exact values) and their exact rank at 2n + 4 points of the "
+                      f"edge, n = {N_PROOF.start}..{N_PROOF.stop - 1}", kind="exhaustive",
+                      detail={"printed_range": [lo, hi], "right_hand_side": rhs, "mismatches": bad[:2]})
+
+
+@line_check("sec1_3-r0-p1-zero")
+def r0p1_zero() -> LineResult:
+    return zero_conclusion("sec1_3-r0-p1-zero")
+
+
+@line_check("sec1_3-r0-p2-zero")
+def r0p2_zero() -> LineResult:
+    return zero_conclusion("sec1_3-r0-p2-zero")
+
+
+@line_check("sec1_3-r0-p3-zero")
+def r0p3_zero() -> LineResult:
+    return zero_conclusion("sec1_3-r0-p3-zero")

@@ -16,6 +16,7 @@ Independent machinery used here:
 
 from __future__ import annotations
 
+import re
 from fractions import Fraction
 from functools import cache
 from itertools import product
@@ -192,13 +193,39 @@ def relation_matches(n_max: int = 6, zrange=None) -> tuple[bool, dict]:
     return ok, {"z_used_min_max": {str(k): v for k, v in used.items()}}
 
 
+def read_z_range(override: dict[str, str] | None = None):
+    """The printed range of z, ``z\\in\\left\\{ -n,-\\left( n-1\\right) ,\\ldots,0,1,\\ldots,2n\\right\\}``, read from
+    both lines that print it (they must agree): a function n -> (first, last)."""
+    from paper_repro.printed.lines.read import bound
+
+    texts = _texts({"sec4_5-z-range", "sec4_5-z-range-2"}, override)
+    ends = set()
+    for tex in texts.values():
+        m = re.search(r"z\\in\\left\\\{\s*([^,]+?)\s*,.*\\ldots,\s*([^\\]+?)\s*\\right\\\}", tex)
+        if not m:
+            raise ValueError(f"no range of z in {tex[:50]!r}")
+        ends.add(m.groups())
+    if len(ends) != 1:
+        raise ValueError(f"the two lines print different ranges: {sorted(ends)}")
+    lo, hi = ends.pop()
+    return lambda n: (bound(lo, n=n), bound(hi, n=n))
+
+
 @line_check("sec4_5-relation")
-def check_relation() -> LineResult:
-    ok, det = relation_matches(4)
-    ext = all(v == [-int(k), 2 * int(k)] for k, v in det["z_used_min_max"].items())
+def check_relation(override: dict[str, str] | None = None) -> LineResult:
+    """The printed conditions with z in the printed range (read from the transcriptions) against phase equivalence;
+    both ends of the range are used."""
+    try:
+        zrange = read_z_range(override)
+    except ValueError as exc:
+        return LineResult(False, how="the range of z read from the transcriptions, n = 1..4", kind="exhaustive",
+                          detail={"unread": str(exc)})
+    ok, det = relation_matches(4, zrange)
+    ext = all(tuple(v) == zrange(int(k)) for k, v in det["z_used_min_max"].items())
     return LineResult(ok and ext, how="the printed conditions (sums or differences equal to a common z in "
-                      "{-n..2n}) compared with phase equivalence (a - b or a + b in Z(1,1,1)) on all pairs of E_n, "
-                      "n = 1..4; both ends of the z range are used", kind="proof", detail={**det, "n_max": 4})
+                      "{-n..2n}, the range read from the transcriptions) compared with phase equivalence (a - b or "
+                      "a + b in Z(1,1,1)) on all pairs of E_n, n = 1..4; both ends of the z range are used",
+                      kind="exhaustive", detail={**det, "n_max": 4})
 
 
 # -- phase identities (display after the Definition) --------------------------------------------------------------
@@ -251,58 +278,126 @@ def _register_phase(kind: str, steps_how: str, za_how: str) -> None:
     @line_check(f"sec4_5-phase-{kind}")
     def check_steps() -> LineResult:
         st = _phase_steps(kind)
-        return LineResult(st["step1"] and st["step2_3"], how=steps_how, kind="proof",
+        return LineResult(st["step1"] and st["step2_3"], how=steps_how, kind="exhaustive",
                           detail={k: v for k, v in st.items() if not k.startswith("last")})
 
     @line_check(f"sec4_5-phase-{kind}-za")
     def check_za() -> LineResult:
         st = _phase_steps(kind)
         printed, corrected = st["last_za"], st["last"]
-        return LineResult(printed, corrected, how=za_how, kind="proof",
+        return LineResult(printed, corrected, how=za_how, kind="exhaustive",
                           detail={"printed_za": printed, "with_z_alpha": corrected})
 
 
 _register_phase("cos", "exponential expansion over (u, v, alpha) with w = alpha - u - v, every related pair of "
                 "E_n, n <= 2, both signs", "last step expanded with the printed 'za' read as z times a free a, "
-                "and with z alpha")
+                "and with z alpha, every related pair of E_n, n <= 2")
 _register_phase("sin", "exponential expansion, every related pair of E_n, n <= 2, both signs: "
                 "sin(r2 u + g2 v + b2 w) = sin(z alpha -+ X)",
-                "as sec4_5-phase-cos-za for sin(za) cos X -+ cos(z alpha) sin X")
+                "as sec4_5-phase-cos-za for sin(za) cos X -+ cos(z alpha) sin X, n <= 2")
+
+
+# -- readers of the worked examples (triples ru+gv+bw as printed) -------------------------------------------------
+def read_triple(expr: str, **env: int) -> tuple[int, int, int]:
+    """``(r, g, b)`` of a printed combination such as ``1\\cdot u+3\\cdot v+2\\cdot w``, ``v+2w`` or
+    ``0\\cdot u+g\\cdot v+2\\cdot w`` (a letter coefficient taken from ``env``)."""
+    text = expr.replace("\\cdot", "").replace(" ", "").replace("%", "")
+    out = {"u": 0, "v": 0, "w": 0}
+    terms = [t for t in text.split("+") if t]
+    for term in terms:
+        m = re.fullmatch(r"(\d*|[a-z])([uvw])", term)
+        if not m:
+            raise ValueError(f"unread term {term!r} of {expr!r}")
+        c = m.group(1)
+        out[m.group(2)] += int(c) if c.isdigit() else (env[c] if c else 1)
+    return out["u"], out["v"], out["w"]
+
+
+def read_relations(tex: str) -> list[tuple[tuple[int, int, int], tuple[int, int, int], bool]]:
+    """Every pair of a printed chain ``a \\sim b \\sim c`` (all pairs of a chain of equivalences) or
+    ``a \\nsim b``, with whether it is printed as equivalent."""
+    parts = re.split(r"(\\nsim|\\sim)", tex.strip().rstrip(".,"))
+    triples, rels = [read_triple(x) for x in parts[0::2]], parts[1::2]
+    if all(r == "\\sim" for r in rels):
+        return [(a, b, True) for k, a in enumerate(triples) for b in triples[k + 1:]]
+    return [(a, b, r == "\\sim") for a, b, r in zip(triples, triples[1:], rels)]
+
+
+def read_cos_args(tex: str) -> list[tuple[int, int, int]]:
+    """Arguments of the printed ``\\cos\\left( .. \\right)`` of a set of functions, each with its ``\\sin``."""
+    cos = re.findall(r"\\cos\\left\(\s*([^()]*?)\s*\\right\)", tex)
+    sin = re.findall(r"\\sin\\left\(\s*([^()]*?)\s*\\right\)", tex)
+    if sorted(cos) != sorted(sin):
+        raise ValueError(f"cos and sin arguments differ: {cos} vs {sin}")
+    return [read_triple(x) for x in cos]
+
+
+def read_class_family(tex: str) -> list[tuple[int, int, int]]:
+    """The classes ``\\left\\{ \\left[ .. \\right] \\right\\} _{g=a}^{b}`` of a printed family."""
+    m = re.search(r"\\left\[\s*(.*?)\s*\\right\]\s*\\right\\\}\s*_\{(\w)=(\d+)\}\^\{(\d+)\}", tex)
+    if not m:
+        raise ValueError(f"no family of classes in {tex[:50]!r}")
+    expr, var, lo, hi = m.groups()
+    return [read_triple(expr, **{var: x}) for x in range(int(lo), int(hi) + 1)]
+
+
+def _texts(ids, override=None) -> dict[str, str]:
+    out = {x.id: x.verbatim for x in pl.LINES if x.id in ids}
+    out.update({k: v for k, v in (override or {}).items() if k in out})
+    return out
 
 
 @line_check("sec4_5-examples-n3")
-def check_examples_n3() -> LineResult:
-    got = [phase_equivalent(a, b) == expect for a, b, expect in pl.EXAMPLES_N3]
-    return LineResult(all(got), how="phase equivalence of the printed pairs (n = 3)", kind="proof",
-                      detail={"agree": got})
+def check_examples_n3(override: dict[str, str] | None = None) -> LineResult:
+    """Every relation of the worked examples (read from their transcriptions) against phase equivalence."""
+    texts = _texts({"sec4_5-examples-n3-1", "sec4_5-examples-n3-2", "sec4_5-examples-n3-3"}, override)
+    try:
+        pairs = [p for k in sorted(texts) for p in read_relations(texts[k])]
+    except ValueError as exc:
+        return LineResult(False, how="the printed pairs read from the transcriptions", kind="proof",
+                          detail={"unread": str(exc)})
+    got = [phase_equivalent(a, b) == expect for a, b, expect in pairs]
+    return LineResult(bool(got) and all(got), how="phase equivalence of the printed pairs (read from the "
+                      "transcriptions, n = 3)", kind="proof", detail={"pairs": len(got), "agree": got})
 
 
 # -- orders 1 and 2 -----------------------------------------------------------------------------------------------
-def _orders_1_2() -> dict[str, bool]:
+def _orders_1_2(override: dict[str, str] | None = None) -> dict[str, bool]:
+    """The worked text of orders 1 and 2; V_1, the six classes of order 2 and V_2 are read from the transcriptions
+    (the other items are the text's facts, written here)."""
     k = class_key
+    t = _texts({"sec4_5-V1", "sec4_5-n2-classes-row1", "sec4_5-n2-classes-row2", "sec4_5-n2-classes-row3",
+                "sec4_5-V2-row1", "sec4_5-V2-row2", "sec4_5-V2-row3"}, override)
+    v1 = read_cos_args(t["sec4_5-V1"])
+    n2 = [c for r in (1, 2, 3) for c in read_class_family(t[f"sec4_5-n2-classes-row{r}"])]
+    v2 = [a for r in (1, 2, 3) for a in read_cos_args(t[f"sec4_5-V2-row{r}"])]
     out = {
         "new_order_1_are_u_v_w": new_class_keys(1) == {k((1, 0, 0)), k((0, 1, 0)), k((0, 0, 1))},
         "new_order_1_contain_a_1": all(max(t) == 1 for t in E(1) if k(t) in new_class_keys(1)),
         "order_1_relations": all(phase_equivalent(a, b) for a, b in (((1, 1, 1), (0, 0, 0)), ((1, 1, 0), (0, 0, 1)),
                                                                      ((1, 0, 1), (0, 1, 0)), ((0, 1, 1), (1, 0, 0)))),
-        "V1_is_V0_plus_u_v_w": {k(t) for t in pl.V1_ARGS} == new_class_keys(1) and len(pl.V1_ARGS) == 3,
+        "V1_is_V0_plus_u_v_w": {k(t) for t in v1} == new_class_keys(1) and len(v1) == 3,
         "222_is_0": k((2, 2, 2)) == k((0, 0, 0)),
         "r1_g12_chain": all(
             tuple(x - 1 for x in (1, g, 2)) == (0, g - 1, 1) and k((1, g, 2)) == k((0, g - 1, 1)) for g in (1, 2)),
         "g1_is_w_g2_is_v_plus_w_is_u": k((1, 1, 2)) == k((0, 0, 1)) and k((1, 2, 2)) == k((0, 1, 1)) == k((1, 0, 0)),
         "r0_classes_new": all(k((0, g, 2)) in new_class_keys(2) for g in range(3)),
         "2v2w_is_2u": k((0, 2, 2)) == k((2, 0, 0)),
-        "six_classes_n2": {k(t) for t in pl.N2_CLASSES} == new_class_keys(2) and len(pl.N2_CLASSES) == 6,
-        "V2_printed": {k(t) for t in pl.V2_NEW_ARGS} == new_class_keys(2) and len(pl.V2_NEW_ARGS) == 6,
+        "six_classes_n2": {k(t) for t in n2} == new_class_keys(2) and len(n2) == 6,
+        "V2_printed": {k(t) for t in v2} == new_class_keys(2) and len(v2) == 6,
     }
     return out
 
 
 @line_check("sec4_5-orders-1-2")
-def check_orders_1_2() -> LineResult:
-    out = _orders_1_2()
-    return LineResult(all(out.values()), how="class keys of phase equivalence (order 1 and order 2 worked text)",
-                      kind="proof", detail=out)
+def check_orders_1_2(override: dict[str, str] | None = None) -> LineResult:
+    try:
+        out = _orders_1_2(override)
+    except ValueError as exc:
+        return LineResult(False, how="the worked text read from the transcriptions", kind="proof",
+                          detail={"unread": str(exc)})
+    return LineResult(all(out.values()), how="class keys of phase equivalence (order 1 and order 2 worked text; V_1, "
+                      "the six classes and V_2 read from the transcriptions)", kind="proof", detail=out)
 
 
 def b2_classes(restrict_r_le_g: bool) -> set:
@@ -324,22 +419,50 @@ def check_b2() -> LineResult:
 
 
 # -- Proposition iterative_construction_of_trivariate_extension ---------------------------------------------------
-def prop_sets_agree(n_max: int, lowest: int) -> dict[int, bool]:
-    """E_n/~ minus the union over i = lowest..n-1 against the printed 3n representatives."""
+def read_prop_families(tex: str, n: int) -> list[tuple[int, int, int]]:
+    """The representatives of the printed families ``\\left\\{ \\left[ .. \\right] \\right\\} _{g=0}^{n-1}`` of
+    Proposition iterative_construction_of_trivariate_extension at order n, read from the transcription."""
+    from paper_repro.printed.lines.read import bound
+
+    fams = re.findall(r"\\left\[\s*(.*?)\s*\\right\]\s*\\right\\\}\s*_\{(\w)=([^{}]+)\}\^\{([^{}]+)\}", tex)
+    if len(fams) != 3:
+        raise ValueError(f"{len(fams)} families of classes, not 3")
+    return [read_triple(expr, n=n, **{var: x}) for expr, var, lo, hi in fams
+            for x in range(bound(lo, n=n), bound(hi, n=n) + 1)]
+
+
+def read_union_start(override: dict[str, str] | None = None) -> int:
+    """The lowest i of the printed union cup_{i=a}^{n-1} E_i/~ (the same in both lines of the Proposition)."""
+    texts = _texts({"sec4_5-prop-recurrence", "sec4_5-prop-new-classes"}, override)
+    starts = {m for t in texts.values() for m in re.findall(r"\\cup_\{i=(\d+)\}\^\{n-1\}", t)}
+    if len(starts) != 1:
+        raise ValueError(f"the union starts at {sorted(starts)}")
+    return int(starts.pop())
+
+
+def prop_sets_agree(n_max: int, lowest: int, override: dict[str, str] | None = None) -> dict[int, bool]:
+    """E_n/~ minus the union over i = lowest..n-1 against the printed 3n representatives (read)."""
+    tex = _texts({"sec4_5-prop-new-classes"}, override)["sec4_5-prop-new-classes"]
     out = {}
     for n in range(1, n_max + 1):
-        reps = pl.prop_representatives(n)
+        reps = read_prop_families(tex, n)
         keys = [class_key(t) for t in reps]
         out[n] = len(set(keys)) == len(reps) == 3 * n and set(keys) == new_class_keys(n, lowest)
     return out
 
 
 @line_check("sec4_5-prop-union")
-def check_prop_union() -> LineResult:
-    printed, corrected = prop_sets_agree(10, 1), prop_sets_agree(10, 0)
+def check_prop_union(override: dict[str, str] | None = None) -> LineResult:
+    """The printed union's start (read: i from 1) and the representatives (read) against the class keys; the
+    correction starts the union at i = 0."""
+    try:
+        start = read_union_start(override)
+        printed, corrected = prop_sets_agree(10, start, override), prop_sets_agree(10, 0, override)
+    except ValueError as exc:
+        return LineResult(False, how="the Proposition read from the transcriptions", detail={"unread": str(exc)})
     return LineResult(all(printed.values()), all(corrected.values()),
                       how="class keys: E_n/~ minus the union of E_i/~ for i from 1 (printed) and from 0 (corrected) "
-                          "against the printed representatives, n = 1..10", kind="proof",
+                          "against the printed representatives, n = 1..10", kind="exhaustive",
                       detail={"printed_fails_at_n": [n for n, v in printed.items() if not v],
                               "classes_left_at_n_1_printed": len(new_class_keys(1, 1)),
                               "corrected_holds_n_1_10": all(corrected.values())})
@@ -413,7 +536,7 @@ def check_proof_reduction() -> LineResult:
         ok_cover &= mem <= reps
     return LineResult(ok_formula and ok_cover, how="exponent vectors: the restated R_{2n,2n-i,j} equals "
                       "R_system_leq_n for j <= i <= n, and every function of T_{2n} is a permutation of variables "
-                      "of one of them (n <= 8)", kind="proof", detail={"n_max": 8})
+                      "of one of them (n <= 8)", kind="exhaustive", detail={"n_max": 8})
 
 
 def power_reduction_ok(m: int, which: str, printed=None) -> bool:
@@ -425,7 +548,7 @@ def power_reduction_ok(m: int, which: str, printed=None) -> bool:
 @line_check("sec4_5-power-reduction")
 def check_power_reduction() -> LineResult:
     res = {f"{w}^{m}": power_reduction_ok(m, w) for w in ("cos", "sin") for m in range(0, 21)}
-    return LineResult(all(res.values()), how="both sides expanded exactly, m = 0..20", kind="proof",
+    return LineResult(all(res.values()), how="both sides expanded exactly, m = 0..20", kind="exhaustive",
                       detail={"failing": [k for k, v in res.items() if not v], "m_max": 20})
 
 
@@ -437,8 +560,29 @@ def factor_support(power: int, base: str) -> tuple[str, list[int]]:
     return kind, ks
 
 
+K_LINES = {"0,0": "sec4_5-K00", "1,1": "sec4_5-K11", "0,1": "sec4_5-K01", "1,0": "sec4_5-K10"}
+
+
+def read_k_upper(override: dict[str, str] | None = None) -> dict:
+    """The upper ends B of the four factors {0, 1, ..., B} of each printed K_{a,b}, read from the transcriptions
+    (``\\frac{2n-i-1}{2}`` ...), as functions (n, i, j) -> four Fractions."""
+    from paper_repro.printed.lines.read import bound
+
+    texts = _texts(set(K_LINES.values()), override)
+    out = {}
+    for case, line_id in K_LINES.items():
+        tex = texts[line_id]
+        m = re.match(r"\s*K_\{(\d),(\d)\}", tex)
+        ends = re.findall(r"\\ldots,\s*\\frac\{([^{}]+)\}%?\s*\{([^{}]+)\}", tex)
+        if not m or f"{m.group(1)},{m.group(2)}" != case or len(ends) != 4:
+            raise ValueError(f"{line_id}: not the four factors of K_{{{case}}}")
+        out[case] = (lambda n, i, j, ends=ends: tuple(Q(bound(a, n=n, i=i, j=j), bound(b, n=n, i=i, j=j))
+                                                      for a, b in ends))
+    return out
+
+
 def k_sets_agree(n_max: int, printed_upper=None) -> tuple[dict, dict]:
-    printed_upper = printed_upper or pl.K_UPPER
+    printed_upper = printed_upper or read_k_upper()
     types_ok: dict[str, bool] = {}
     sets_ok: dict[str, bool] = {}
     for n in range(1, n_max + 1):
@@ -458,25 +602,36 @@ def k_sets_agree(n_max: int, printed_upper=None) -> tuple[dict, dict]:
 def check_product_types() -> LineResult:
     types_ok, _ = k_sets_agree(5)
     return LineResult(all(types_ok.values()), how="exact expansion of each factor sin^{2n-i}(u/2), sin^i(w/2), "
-                      "cos^{i-j}(v/2), sin^j(v/2): cosine or sine series, n <= 5, j <= i <= n", kind="proof",
+                      "cos^{i-j}(v/2), sin^j(v/2): cosine or sine series, n <= 5, j <= i <= n", kind="exhaustive",
                       detail=types_ok)
 
 
 #: The corrected K_{1,0}: third factor {0, ..., (i-j-1)/2}.
-K_UPPER_CORRECTED = {**pl.K_UPPER,
-                     "1,0": lambda n, i, j: (Q(2 * n - i - 1, 2), Q(i - 1, 2), Q(i - j - 1, 2), Q(j, 2))}
+K10_CORRECTED = lambda n, i, j: (Q(2 * n - i - 1, 2), Q(i - 1, 2), Q(i - j - 1, 2), Q(j, 2))  # noqa: E731
+
+
+def _k_results(override: dict[str, str] | None = None) -> tuple[dict, dict]:
+    if not override:
+        return _k_results_printed()
+    printed = read_k_upper(override)
+    return k_sets_agree(6, printed)[1], k_sets_agree(6, {**printed, "1,0": K10_CORRECTED})[1]
 
 
 @cache
-def _k_results() -> tuple[dict, dict]:
-    return k_sets_agree(6)[1], k_sets_agree(6, K_UPPER_CORRECTED)[1]
+def _k_results_printed() -> tuple[dict, dict]:
+    printed = read_k_upper()
+    return k_sets_agree(6, printed)[1], k_sets_agree(6, {**printed, "1,0": K10_CORRECTED})[1]
 
 
-def k_case_check(case: str) -> LineResult:
-    printed, corrected = _k_results()
+def k_case_check(case: str, override: dict[str, str] | None = None) -> LineResult:
+    try:
+        printed, corrected = _k_results(override)
+    except ValueError as exc:
+        return LineResult(False, how="the four factors read from the transcription", detail={"unread": str(exc)})
     return LineResult(printed[case], corrected[case] if not printed[case] else None,
                       how="the k's with a non-zero term in the exact expansion of each factor against the printed "
-                          "ranges {0..B} (B must be a non-negative integer), n <= 6, j <= i <= n", kind="proof",
+                          "ranges {0..B} (read from the transcriptions; B must be a non-negative integer), n <= 6, "
+                          "j <= i <= n", kind="exhaustive",
                       detail={"case_i_j_mod_2": case, "printed_holds": printed[case],
                               "corrected_holds": corrected[case],
                               "example": "n=2, i=1, j=0: third factor cos^1(v/2) has k in {0}; printed bound "
@@ -484,7 +639,7 @@ def k_case_check(case: str) -> LineResult:
 
 
 for _case in ("0,0", "1,1", "0,1", "1,0"):
-    line_check(f"sec4_5-K-{_case.replace(',', '')}")(lambda _c=_case: k_case_check(_c))
+    line_check(f"sec4_5-K-{_case.replace(',', '')}")(lambda override=None, _c=_case: k_case_check(_c, override))
 
 
 @line_check("sec4_5-product-to-sum")
@@ -523,7 +678,7 @@ def check_eight_terms() -> LineResult:
         count += 1
     return LineResult(ok, how="exact expansion of the product: a sine series whose frequencies are "
                       "+-(A, s2 C + s3 D, s4 B) (s1 = 1), every (i, j) odd and (k1..k4) in K_{1,1}, n <= 4",
-                      kind="proof", detail={"products": count})
+                      kind="exhaustive", detail={"products": count})
 
 
 @line_check("sec4_5-shift-chain")
@@ -546,7 +701,8 @@ def check_shift_chain() -> LineResult:
             ok3 &= step2.linear(on_plane) == step3.linear(on_plane)
             ok_int &= all(x.denominator == 1 for x in P)
     return LineResult(ok1 and ok2 and ok3, how="exact expansion over (u, v, w, alpha) (alpha free for the first two "
-                      "steps, alpha = u + v + w for the last), all (i, j) odd, K_{1,1}, signs, n <= 3", kind="proof",
+                      "steps, alpha = u + v + w for the last), all (i, j) odd, K_{1,1}, signs, n <= 3",
+                      kind="exhaustive",
                       detail={"step_add_subtract": ok1, "step_addition_formula": ok2, "step_constraint": ok3,
                               "integer_coefficients": ok_int})
 
@@ -566,7 +722,7 @@ def check_integer_class() -> LineResult:
             ok_le_n &= max(shifted) <= n
     return LineResult(ok_int and ok_nat and ok_same and ok_le_n, how="all (i, j) odd, K_{1,1}, signs, n <= 5: "
                       "coefficients integer, minus z = their minimum non-negative, same class, and at most n (in E_n)",
-                      kind="proof", detail={"integer": ok_int, "natural": ok_nat, "same_class": ok_same,
+                      kind="exhaustive", detail={"integer": ok_int, "natural": ok_nat, "same_class": ok_same,
                                             "in_E_n": ok_le_n})
 
 
@@ -590,7 +746,7 @@ def max_values(n_max: int, s4_values=(-1, 1)) -> dict[str, bool]:
 def check_max_bounds() -> LineResult:
     res = max_values(7)
     return LineResult(all(res.values()), how="maxima by enumeration over K_{1,1} and the signs (s4 in {-1, +1} as "
-                      "defined after the eight-term form), every odd (i, j), n <= 7", kind="proof", detail=res)
+                      "defined after the eight-term form), every odd (i, j), n <= 7", kind="exhaustive", detail=res)
 
 
 @cache
@@ -610,21 +766,38 @@ def check_inclusion() -> LineResult:
     return LineResult(all(res.values()), how="exact exponential expansion of every function of T_{2n}: each "
                       "frequency is m(1,1,1) + an element of E_n, so each term is a phase m alpha times cos/sin of an "
                       "E_n combination (n <= 3); with the class identities (sec4_5-phase-*) span T_{2n} is in "
-                      "span V_n", kind="proof", detail={str(k): v for k, v in res.items()})
+                      "span V_n", kind="exhaustive", detail={str(k): v for k, v in res.items()})
 
 
 # ---------------------------------------------------------------------------------------------------------------
 # Section partition_of_unity
 # ---------------------------------------------------------------------------------------------------------------
+def read_weight_labels(tex: str, n: int) -> list[str]:
+    """The normalizing weights named by the printed list ``r_{2n,n,n}^{\\alpha},\\left\\{ r_{2n,2n-i,j}^{\\alpha}
+    \\right\\} _{j=0,i=j}^{n-1,2n-1-j},..`` at order n, read from the transcription."""
+    from paper_repro.printed.lines.read import bound
+
+    text = tex.replace("%", " ")
+    sets = re.compile(r"\\left\\\{\s*([rgb])_\{2n,2n-i,j\}\^\{\\alpha\}\s*\\right\\\}\s*_\{j=([^,{}]+),i=([^{}]+)\}"
+                      r"\s*\^\{([^,{}]+),([^{}]+)\}")
+    out = [f"{c}_{{{2 * n},{2 * n - i},{j}}}" for c, jlo, ilo, jhi, ihi in sets.findall(text)
+           for j in range(bound(jlo, n=n), bound(jhi, n=n) + 1)
+           for i in range(bound(ilo, n=n, j=j), bound(ihi, n=n, j=j) + 1)]
+    for c, a, b in re.findall(r"(?<![\\\w{])([rgb])_\{2n,([^{}]+?),([^{}]+?)\}", sets.sub(" ", text)):
+        out.append(f"{c}_{{{2 * n},{bound(a, n=n)},{bound(b, n=n)}}}")
+    return out
+
+
 @line_check("sec4_5-weights-index")
-def check_weights_index() -> LineResult:
+def check_weights_index(verbatim: str | None = None) -> LineResult:
+    tex = verbatim if verbatim is not None else _texts({"sec4_5-weights"})["sec4_5-weights"]
     ok = True
     for n in range(1, 13):
-        printed = pl.weight_labels(n)
+        printed = read_weight_labels(tex, n)
         ok &= len(printed) == len(set(printed)) == 3 * n * (n + 1) + 1
         ok &= set(printed) == {lab.coefficient for lab in united_system(n)}
-    return LineResult(ok, how="the printed index sets against the labels of T_{2n} (united_system), n <= 12; "
-                      "count 3n(n+1)+1", kind="proof", detail={"n_max": 12})
+    return LineResult(ok, how="the printed index sets (read from the transcription) against the labels of T_{2n} "
+                      "(united_system), n <= 12; count 3n(n+1)+1", kind="exhaustive", detail={"n_max": 12})
 
 
 @cache
@@ -638,21 +811,37 @@ def _coef(n: int, t: fmpq, name: str) -> fmpq:
 
 
 @line_check("sec4_5-partition-sum")
-def check_partition_sum() -> LineResult:
-    ok, rows = True, {}
+def check_partition_sum(verbatim: str | None = None) -> LineResult:
+    """The printed sum L (its terms read from the transcription, names without aliases) with the coefficients of the
+    exact collocation solve is 1 at fresh rational points."""
+    from paper_repro.printed.lines.read import sum_terms, term_indices
+
+    tex = verbatim if verbatim is not None else _texts({"sec4_5-L-sum"})["sec4_5-L-sum"]
+    try:
+        terms = sum_terms(tex, normalizing=True)
+    except ValueError as exc:
+        return LineResult(False, how="the printed sum read from the transcription", detail={"unread": str(exc)})
+    ok, rows = bool(terms), {}
     for n in (1, 2, 3):
+        strict = {lb.paper: k for k, lb in enumerate(united_system(n))}
+        named = [f"{c}_{{{2 * n},{2 * n - i},{j}}}" for c, i, j in term_indices(terms, n=n)]
+        if any(x not in strict for x in named) or len(set(named)) != len(strict):
+            rows[f"n={n}"] = False
+            ok = False
+            continue
         for t in TS[:2]:
             alpha = rational_alpha(t)
             pts = sample_rational_points(alpha, 6, seed=23)
             vals = evaluate(n, alpha, pts, ExactContext())
             idx = index_of(n)
-            labels = pl.partition_sum_labels(n)
+            labels = named
             sums = [sum((_coef(n, t, lab.lower()) * vals[p, idx[lab]] for lab in labels), fmpq(0))
                     for p in range(len(pts))]
             rows[f"n={n},t={t}"] = all(s == 1 for s in sums)
             ok &= rows[f"n={n},t={t}"]
     return LineResult(ok, how="coefficients by exact collocation without symmetry (delta_n unknowns, full rank: "
-                      "unique), the printed sum evaluated at 6 fresh rational points of Omega^alpha",
+                      "unique), the printed sum (read from the transcription) evaluated at 6 fresh rational points of "
+                      "Omega^alpha",
                       kind="exact-evidence", detail=rows)
 
 
@@ -714,24 +903,44 @@ def permutation_orbits(n: int) -> list[list[int]]:
     return sorted(groups.values())
 
 
-def unknown_classes(n: int) -> tuple[int, bool, bool]:
-    """Number of classes of the printed symmetry conditions, whether each holds exactly one of
-    {r_{2n,2n-i,j}}_{j=0,i=j}^{n,n}, and whether the classes are the permutation orbits."""
+def unknown_classes(n: int, pairs: list[tuple[int, int]] | None = None) -> tuple[int, bool, bool]:
+    """Number of classes of the printed symmetry conditions, whether each holds exactly one of the printed unknowns
+    ``pairs`` ((i, j) of r_{2n,2n-i,j}; default {j=0..n, i=j..n}), and whether the classes are the permutation
+    orbits."""
     part = symmetry_partition(n)
     idx = index_of(n)
-    reps = sorted(idx[f"r_{{{2 * n},{2 * n - i},{j}}}"] for j in range(n + 1) for i in range(j, n + 1))
-    one_each = sorted(min(set(g) & set(reps)) for g in part) == reps and all(len(set(g) & set(reps)) == 1
-                                                                            for g in part)
+    pairs = pairs if pairs is not None else [(i, j) for j in range(n + 1) for i in range(j, n + 1)]
+    names = [f"r_{{{2 * n},{2 * n - i},{j}}}" for i, j in pairs]
+    if any(x not in idx for x in names):
+        return len(part), False, part == permutation_orbits(n)
+    reps = sorted(idx[x] for x in names)
+    one_each = all(len(set(g) & set(reps)) == 1 for g in part) and \
+        sorted(min(set(g) & set(reps)) for g in part) == reps
     return len(part), one_each, part == permutation_orbits(n)
 
 
 @line_check("sec4_5-unknowns")
-def check_unknowns() -> LineResult:
-    rows = {n: unknown_classes(n) for n in range(1, 11)}
+def check_unknowns(override: dict[str, str] | None = None) -> LineResult:
+    """The unknowns {r_{2n,2n-i,j}}_{j=0,i=j}^{n,n} of both lines that print them (read from the transcriptions)."""
+    from paper_repro.printed.lines.read import bound, index_set
+
+    rows = {}
+    for n in range(1, 11):
+        sets = []
+        for tex in _texts({"sec4_5-unknowns", "sec4_5-closed-forms-index"}, override).values():
+            try:
+                (jv, jlo, jhi), (iv, ilo, ihi) = index_set(tex)
+            except ValueError as exc:
+                return LineResult(False, how="the unknowns read from the transcriptions, n <= 10", kind="exhaustive",
+                                  detail={"unread": str(exc)})
+            sets.append(sorted((i, j) for j in range(bound(jlo, n=n), bound(jhi, n=n) + 1)
+                               for i in range(bound(ilo, n=n, j=j), bound(ihi, n=n, j=j) + 1)))
+        c, one, orb = unknown_classes(n, sets[0])
+        rows[n] = (c, one and all(x == sets[0] for x in sets), orb)
     ok = all(c == (n + 1) * (n + 2) // 2 and one and orb for n, (c, one, orb) in rows.items())
     return LineResult(ok, how="union-find of the delta_n coefficients by symmetry_condition_1..3: (n+1)(n+2)/2 "
                       "classes, one per member of {r_{2n,2n-i,j}}_{j=0,i=j}^{n,n}, equal to the orbits of the six "
-                      "permutations of (u, v, w) (n <= 10)", kind="proof",
+                      "permutations of (u, v, w) (n <= 10)", kind="exhaustive",
                       detail={str(n): c for n, (c, _, _) in rows.items()})
 
 
@@ -753,7 +962,7 @@ def check_matrix_sizes() -> LineResult:
         ok &= len(orbits) == (n + 1) * (n + 2) // 2
         ok &= len(orbits) - len(lev0) == n * (n + 1) // 2
     return LineResult(ok, how="orbits of T_{2n} under the six permutations of (u, v, w) (exponent vectors) and the "
-                      "orbits of level 0, n <= 12", kind="proof", detail={"n_max": 12})
+                      "orbits of level 0, n <= 12", kind="exhaustive", detail={"n_max": 12})
 
 
 # -- system of equations and derivatives ----------------------------------------------------------------------------
@@ -788,8 +997,19 @@ def _angle(q: Q) -> tuple[Q, Q]:
 
 
 @line_check("sec4_5-system")
-def check_system() -> LineResult:
-    """The system holds with the exact coefficients, and determines them given the symmetry conditions."""
+def check_system(override: dict[str, str] | None = None) -> LineResult:
+    """The system holds with the exact coefficients, and determines them given the symmetry conditions; the orders
+    r (``r=0,1,\\ldots,n``) and the right-hand side ``\\delta_{r,0}`` are read from the transcriptions."""
+    from paper_repro.printed.lines.read import bound, listed_range
+
+    t = _texts({"sec4_5-system", "sec4_5-system-r-range"}, override)
+    try:
+        r_lo, r_hi = listed_range(t["sec4_5-system-r-range"], "r")
+    except ValueError as exc:
+        return LineResult(False, how="the orders read from the transcription", detail={"unread": str(exc)})
+    if not re.search(r"=\\delta_\{r,0\}", t["sec4_5-system"].replace("%", "").replace(" ", "")):
+        return LineResult(False, how="the right-hand side read from the transcription",
+                          detail={"unread": "no =\\delta_{r,0}"})
     ok, info = True, {}
     for n in (1, 2, 3):
         t = TS[0]
@@ -802,7 +1022,7 @@ def check_system() -> LineResult:
         for q in xs:
             sx, cx = _angle(q)
             su, cu = sa * cx - ca * sx, ca * cx + sa * sx  # (alpha - x)/2
-            for r in range(n + 1):
+            for r in range(bound(r_lo, n=n), bound(r_hi, n=n) + 1):
                 vals = [y_derivative_at_0(exponents(lab), r, su, cu, sx, cx) for lab in united_system(n)]
                 lhs = sum((Q(int(coef[lab.coefficient].p), int(coef[lab.coefficient].q)) * v
                            for lab, v in zip(united_system(n), vals)), Q(0))
@@ -845,7 +1065,7 @@ def check_chain_rule() -> LineResult:
                 ok &= direct == formula
     return LineResult(ok, how="exact exponential expansion of every function of T_{2n} (n <= 2), orders r <= n, "
                       "compared as identities in (x, y) (u = alpha - x: the constant alpha only multiplies each "
-                      "exponential by a phase, the same on both sides)", kind="proof", detail={"n_max": 2})
+                      "exponential by a phase, the same on both sides)", kind="exhaustive", detail={"n_max": 2})
 
 
 @line_check("sec4_5-tan-polynomial")
@@ -865,7 +1085,8 @@ def check_tan_polynomial() -> LineResult:
     # cos(x/2) > 0 for x in [0, alpha], alpha < pi: x/2 < pi/2 (bound, no computation needed beyond that)
     return LineResult(ok, how="exponent bookkeeping of the derivatives of the monomials (n <= 6, r <= n): every term "
                       "not vanishing at v = 0 has total degree 2n in the four half-angle functions; each is linear in "
-                      "sin(x/2), cos(x/2), so dividing by cos^{2n}(x/2) gives a polynomial in tan(x/2)", kind="proof",
+                      "sin(x/2), cos(x/2), so dividing by cos^{2n}(x/2) gives a polynomial in tan(x/2)",
+                      kind="exhaustive",
                       detail={"n_max": 6})
 
 
@@ -1015,15 +1236,139 @@ for _lab in pn.INTERMEDIATE:
 
 
 @line_check("sec4_5-blending-def")
-def check_blending_def() -> LineResult:
-    ok = True
+def check_blending_def(override: dict[str, str] | None = None) -> LineResult:
+    """The index set of the normalized system (read from the transcription of its first row) names the non-central
+    functions of T_{2n}; the centre row names R-bar, G-bar, B-bar_{2n,n,n} (read), one function."""
+    from paper_repro.printed.lines.read import bound, index_set
+
+    texts = _texts({"sec4_5-blending-set", "sec4_5-blending-centre-set"}, override)
+    try:
+        (jv, jlo, jhi), (iv, ilo, ihi) = index_set(texts["sec4_5-blending-set"])
+    except ValueError as exc:
+        return LineResult(False, how="the index set read from the transcription, n <= 8", kind="exhaustive",
+                          detail={"unread": str(exc)})
+    colours = re.findall(r"\\overline\{([RGB])\}_\{2n,2n-i,j\}", texts["sec4_5-blending-set"])
+    centre_names = re.findall(r"\\overline\{([RGB])\}%?\s*_\{2n,n,n\}", texts["sec4_5-blending-centre-set"])
+    ok = (jv, iv) == ("j", "i") and sorted(colours) == ["B", "G", "R"] and sorted(centre_names) == ["B", "G", "R"]
     for n in range(1, 9):
-        ok &= pl.blending_labels(n) == sorted(lab.coefficient for lab in united_system(n) if not lab.is_centre)
-        centre = [exponents(BasisLabel(X, n, n, n)) for X in "RGB"]
-        ok &= centre[0] == centre[1] == centre[2]
-    return LineResult(ok, how="index set of the normalized system vs the labels of T_{2n} (n <= 8); R_{2n,n,n}, "
-                      "G_{2n,n,n}, B_{2n,n,n} have the same exponent vector", kind="proof", detail={"n_max": 8})
+        named = sorted(f"{x.lower()}_{{{2 * n},{2 * n - i},{j}}}" for x in colours
+                       for j in range(bound(jlo, n=n), bound(jhi, n=n) + 1)
+                       for i in range(bound(ilo, n=n, j=j), bound(ihi, n=n, j=j) + 1))
+        ok &= named == sorted(lab.coefficient for lab in united_system(n) if not lab.is_centre)
+        centre = [exponents(BasisLabel(X, n, n, n)) for X in centre_names]
+        ok &= len(set(centre)) == 1
+    return LineResult(ok, how="index set and centre read from the transcriptions vs the labels of T_{2n} (n <= 8); "
+                      "R_{2n,n,n}, G_{2n,n,n}, B_{2n,n,n} have the same exponent vector", kind="exhaustive",
+                      detail={"n_max": 8})
 
 
 __all__ = ["EP", "class_key", "phase_equivalent", "printed_relation", "relation_matches", "power_reduction_ok",
            "k_sets_agree", "prop_sets_agree", "b2_classes", "max_values", "y_range_maps_into_omega", "inclusion_proof"]
+
+
+# -- the printed chain sum and its value 0 (read from the transcription) ---------------------------------------------
+_CHAIN_SUM = re.compile(
+    r"\\sum_\{k=(?P<klo>[^{}]+)\}\^\{(?P<khi>[^{}]+)\}\s*\\dbinom\{(?P<btop>[^{}]+)\}\{(?P<bbot>[^{}]+)\}\s*"
+    r"\\left\(\s*(?P<base>-?\d+)\s*\\right\)\s*\^\{(?P<sexp>[^{}]+)\}.*?"
+    r"\\partial v\^\{(?P<pv>[^{}]+)\}\s*\\partial w\^\{(?P<pw>[^{}]+)\}\}.*?"
+    r"\\right\\vert\s*_\{y=(?P<y0>[^{}]+)\}", re.S)
+
+
+def read_chain_sum(tex: str) -> dict[str, str]:
+    """The parts of the printed chain sum (bounds, binomial, sign, orders in v and w, the point y, the right-hand
+    side and the range of x), as printed."""
+    from paper_repro.printed.lines.read import interval, right_hand_side
+
+    m = _CHAIN_SUM.search(tex)
+    if not m:
+        raise ValueError(f"not a chain sum: {tex[:60]!r}")
+    return {**m.groupdict(), "rhs": right_hand_side(tex), "x_range": interval(tex, "x")}
+
+
+def chain_sum_value(parts: dict, n: int, t: fmpq, r: int, hx: tuple[Q, Q]) -> Q:
+    """The printed left-hand side, evaluated exactly: L = sum of the normalized functions of T_{2n} (coefficients by
+    the exact collocation solve at tan(alpha/4) = t, no symmetry used) at u = alpha - x, v = y0 = 0, w = x."""
+    from paper_repro.printed.lines.read import bound
+
+    if parts["y0"].strip() != "0":
+        raise ValueError(f"evaluation point y = {parts['y0']!r} not read as 0")
+    al = rational_alpha(t)
+    sa, ca = Q(int(al.sin_half.p), int(al.sin_half.q)), Q(int(al.cos_half.p), int(al.cos_half.q))
+    sx, cx = hx
+    su, cu = sa * cx - ca * sx, ca * cx + sa * sx  # half angles of u = alpha - x
+    coef = _full(n, t)
+    total = Q(0)
+    for k in range(bound(parts["klo"], r=r), bound(parts["khi"], r=r) + 1):
+        weight = comb(bound(parts["btop"], r=r, k=k), bound(parts["bbot"], r=r, k=k)) * \
+            int(parts["base"]) ** bound(parts["sexp"], r=r, k=k)
+        pv, pw = bound(parts["pv"], r=r, k=k), bound(parts["pw"], r=r, k=k)
+        for lab in united_system(n):
+            e = exponents(lab)
+            v0 = sum((q for (s, _c), q in _d({(e[2], e[3]): Q(1)}, pv).items() if s == 0), Q(0))
+            if v0 == 0:
+                continue
+            wx = sum((q * sx ** s * cx ** c for (s, c), q in _d({(e[4], e[5]): Q(1)}, pw).items()), Q(0))
+            c = coef[lab.coefficient]
+            total += weight * Q(int(c.p), int(c.q)) * su ** e[0] * cu ** e[1] * v0 * wx
+    return total
+
+
+@line_check("sec4_5-chain-sum")
+def check_chain_sum(verbatim: str | None = None, orders: str | None = None) -> LineResult:
+    """The printed sum_k C(r,k) (-1)^k d^r L / dv^(r-k) dw^k at y = 0 equals the printed right-hand side 0 for every
+    order r of the printed range (r = 1..n, line sec4_5-parametrization-restated) at x = 0, alpha (the printed
+    ends) and three interior x: everything read from the transcriptions (``verbatim``/``orders`` replace them)."""
+    from paper_repro.printed.lines.read import bound, listed_range
+
+    lines = {x.id: x.verbatim for x in pl.LINES}
+    how = "the printed chain sum read from the transcription"
+    try:
+        parts = read_chain_sum(verbatim if verbatim is not None else lines["sec4_5-chain-sum"])
+        r_lo, r_hi = listed_range(orders if orders is not None else lines["sec4_5-parametrization-restated"], "r")
+        if parts["y0"].strip() != "0":
+            raise ValueError(f"evaluation point y = {parts['y0']!r}, the check evaluates at y = 0 only")
+    except ValueError as exc:  # an unread or unexpected transcription fails the line, saying why
+        return LineResult(False, how=how, kind="exact-evidence", detail={"unread": str(exc)})
+    rhs = Q(parts["rhs"]) if parts["rhs"].lstrip("-").isdigit() else None
+    bad, cases = [], 0
+    for n in (1, 2, 3):
+        for t in TS[:2]:
+            al = rational_alpha(t)
+            ends = {"0": (Q(0), Q(1)), "\\alpha": (Q(int(al.sin_half.p), int(al.sin_half.q)),
+                                                   Q(int(al.cos_half.p), int(al.cos_half.q)))}
+            xs = [ends.get(parts["x_range"][0]), ends.get(parts["x_range"][1])]
+            xs += [_angle(Q(int(t.p), int(t.q)) * Q(m, 4)) for m in (1, 2, 3)]  # tan(x/4) = t m/4: 0 < x < alpha
+            for r in range(bound(r_lo, n=n), bound(r_hi, n=n) + 1):
+                for hx in xs:
+                    cases += 1
+                    value = None if hx is None else chain_sum_value(parts, n, t, r, hx)
+                    if rhs is None or value != rhs:
+                        bad.append({"n": n, "t": str(t), "r": r, "value": str(value)})
+    return LineResult(not bad, how="the printed sum (bounds, binomial, sign, orders, point y = 0, right-hand side, x "
+                      "range, and r from the restated parametrization, all read from the transcriptions) evaluated "
+                      "exactly with the collocation coefficients at tan(alpha/4) in {1/3, 2/5}, n = 1..3, at the "
+                      "ends and three interior x", kind="exact-evidence",
+                      detail={"cases": cases, "mismatches": len(bad), "first_mismatches": bad[:2]})
+
+
+@line_check("sec4_5-cos-nonzero")
+def check_cos_nonzero(verbatim: str | None = None) -> LineResult:
+    """cos^{2n}(x/2) != 0 for x in the printed interval (read from the transcription): with x in [0, alpha] and
+    alpha in (0, pi), x/2 lies in [0, pi/2), where cos is positive (decreasing, so cos(x/2) >= cos(alpha/2) > 0);
+    the bound is the end alpha, checked exactly to be positive at rational alpha up to 4 atan(999/1000)."""
+    from paper_repro.printed.lines.read import interval
+
+    tex = verbatim if verbatim is not None else {x.id: x.verbatim for x in pl.LINES}["sec4_5-cos-nonzero"]
+    try:
+        lo, hi = interval(tex, "x")
+    except ValueError as exc:
+        return LineResult(False, how="the interval read from the transcription", kind="proof",
+                          detail={"unread": str(exc)})
+    if "\\neq0" not in tex.replace(" ", "") or (lo, hi) != ("0", "\\alpha"):
+        return LineResult(False, how="the interval read from the transcription", kind="proof",
+                          detail={"interval": [lo, hi]})
+    ends_positive = all(rational_alpha(t).cos_half > 0 for t in (fmpq(1, 1000), fmpq(1, 2), fmpq(999, 1000)))
+    return LineResult(ends_positive, how="the interval [0, alpha] read from the transcription: x/2 in "
+                      "[0, alpha/2] with alpha < pi, where cos is positive (decreasing: its minimum is cos(alpha/2) > "
+                      "0, exact at rational alpha near 0 and pi)", kind="proof",
+                      detail={"interval": [lo, hi], "cos_half_alpha_positive": ends_positive})

@@ -46,15 +46,6 @@ def enumerate_set(letter: str, n: int, j_max: int, i_max: Callable[[int], int], 
     return [f"{letter}_{{{2 * n},{first(n, i)},{j}}}" for j in range(j_max + 1) for i in range(j, i_max(j) + 1)]
 
 
-def printed_patch_terms(n: int) -> list[str]:
-    """Terms of eq. triangular_trig_surface (and rational_patch, tau): the centre, then three double sums
-    ``j = 0..n-1``, ``i = j..2n-1-j``."""
-    out = [f"r_{{{2 * n},{n},{n}}}"]
-    for letter in "rgb":
-        out += enumerate_set(letter, n, n - 1, lambda j, n=n: 2 * n - 1 - j)
-    return out
-
-
 def printed_control_net(n: int, r_j_max: int | None = None) -> list[str]:
     """The control net of def:surface_patch / def:rational_patch as printed: r with ``j = 0..n``,
     g and b with ``j = 0..n-1``, all with ``i = j..2n-1-j``."""
@@ -110,12 +101,29 @@ def rank(rows: Sequence[Sequence[fmpq]]) -> int:
 
 
 # --- Definition def:surface_patch: index sets and counts -------------------------------------------------
+def patch_terms_read(n: int, override: dict[str, str] | None = None) -> list[str]:
+    """The control points of eq. triangular_trig_surface, read from the transcriptions of its two rows (sums, bounds,
+    control points and functions; :func:`paper_repro.printed.lines.read.sum_terms`)."""
+    from paper_repro.printed.lines.read import sum_terms, term_indices
+
+    rows = {k: _LINE[k].verbatim for k in ("sec6-patch-row-1", "sec6-patch-row-2")}
+    rows.update(override or {})
+    out = []
+    for key in sorted(rows):
+        out += [f"{c.lower()}_{{{2 * n},{2 * n - i},{j}}}" for c, i, j in
+                term_indices(sum_terms(rows[key], points=True), n=n)]
+    return out
+
+
 @line_check("sec6-patch-index-sets")
-def patch_index_sets() -> LineResult:
-    """The terms of eq. triangular_trig_surface are the delta_n functions of T_{2n}: enumerated from the printed
-    bounds, compared with the code's labels, distinct functions (exponent vectors), and of full rank (exact
-    collocation at delta_n points, n = 1, 2, 3)."""
-    counts_ok = all(matches_basis(printed_patch_terms(n), n) for n in NS)
+def patch_index_sets(override: dict[str, str] | None = None) -> LineResult:
+    """The terms of eq. triangular_trig_surface (read from the transcriptions of its rows) are the delta_n functions
+    of T_{2n}, each once: compared with the code's labels, distinct functions (exponent vectors), and of full rank
+    (exact collocation at delta_n points, n = 1, 2, 3)."""
+    try:
+        counts_ok = all(matches_basis(patch_terms_read(n, override), n) for n in NS)
+    except ValueError as exc:
+        return LineResult(False, how="the printed sums read from the transcriptions", detail={"unread": str(exc)})
     distinct = all(len({exponents(lab) for lab in united_system(n)}) == delta(n) for n in NS)
     alpha = rational_alpha(fmpq(1, 3))
     ranks = {}
@@ -126,7 +134,7 @@ def patch_index_sets() -> LineResult:
     return LineResult(counts_ok and distinct and full, how="enumeration of the printed sums vs united_system, "
                       "n = 1..12; exact rank of the basis at delta_n rational points, n = 1..3",
                       kind="exact-evidence",
-                      detail={"n": [NS[0], NS[-1]], "terms_n_1_2_3": [len(printed_patch_terms(n)) for n in (1, 2, 3)],
+                      detail={"n": [NS[0], NS[-1]], "terms_n_1_2_3": [len(patch_terms_read(n)) for n in (1, 2, 3)],
                               "rank_n_1_2_3": [ranks[n] for n in (1, 2, 3)], "order_n_geq_1": True})
 
 
@@ -138,31 +146,43 @@ def control_net_counts(n: int, printed: bool = True) -> dict:
 
 
 @line_check("sec6-control-net-set")
-def control_net_set() -> LineResult:
-    """Printed net {r}_{j=0,i=j}^{n,2n-1-j} U {g}^{n-1,..} U {b}^{n-1,..}: at j = n the i-range n..n-1 is empty."""
-    printed = {n: control_net_counts(n) for n in NS}
+def control_net_set(override: dict[str, str] | None = None) -> LineResult:
+    """Printed net {r}_{j=0,i=j}^{n,2n-1-j} U {g}^{n-1,..} U {b}^{n-1,..} (def:surface_patch and def:rational_patch,
+    each read from its transcription): at j = n the i-range n..n-1 is empty, so the centre is missing."""
+    texts = {k: _LINE[k].verbatim for k in ("sec6-control-net-set", "sec6-rational-control-net-set")}
+    texts.update(override or {})
+    printed = {k: {n: net_from_transcription(n, tex) for n in NS} for k, tex in texts.items()}
+    holds = all(matches_basis(net, n) for nets in printed.values() for n, net in nets.items())
     corrected = {n: control_net_counts(n, printed=False) for n in NS}
-    holds = all(v["equals_basis"] for v in printed.values())
     corr = all(v["equals_basis"] for v in corrected.values())
-    return LineResult(holds, corr, how="enumeration of the printed index sets vs the labels of T_{2n}, n = 1..12",
-                      kind="exact-evidence",
-                      detail={"printed_sizes_n_1_2_3": [printed[n]["size"] for n in (1, 2, 3)],
-                              "delta_n_1_2_3": [delta(n) for n in (1, 2, 3)],
-                              "printed_has_centre": any(v["has_centre"] for v in printed.values()),
+    centre = {k: any(f"r_{{{2 * n},{n},{n}}}" in net for n, net in nets.items()) for k, nets in printed.items()}
+    return LineResult(holds, corr, how="enumeration of the printed index sets (read from the transcriptions) vs the "
+                      "labels of T_{2n}, n = 1..12", kind="exhaustive",
+                      detail={"printed_sizes_n_1_2_3": {k: [len(nets[n]) for n in (1, 2, 3)]
+                                                        for k, nets in printed.items()},
+                              "delta_n_1_2_3": [delta(n) for n in (1, 2, 3)], "printed_has_centre": centre,
                               "corrected_sizes_n_1_2_3": [corrected[n]["size"] for n in (1, 2, 3)]})
 
 
 @line_check("sec6-delta3")
-def delta3() -> LineResult:
-    terms = len(printed_patch_terms(3))
-    return LineResult(terms == 37 and delta(3) == 37 and len(united_system(3)) == 37,
-                      how="count of the terms of eq. triangular_trig_surface for n = 3 and of T_6",
-                      kind="proof", detail={"terms_n_3": terms, "united_system_n_3": len(united_system(3))})
+def delta3(verbatim: str | None = None) -> LineResult:
+    """delta_3 = 37 control points (order and count read from the transcription) against the terms of eq.
+    triangular_trig_surface (read) and T_6."""
+    tex = _LINE["sec6-delta3"].verbatim if verbatim is None else verbatim
+    m = re.search(r"\\delta_\{(\d+)\}=(\d+)", tex)
+    if not m:
+        return LineResult(False, how="the count read from the transcription", detail={"unread": tex[:60]})
+    n, count = int(m.group(1)), int(m.group(2))
+    terms = len(patch_terms_read(n))
+    return LineResult(terms == count == delta(n) == len(united_system(n)),
+                      how="count read from the transcription vs the terms of eq. triangular_trig_surface (read) and "
+                      "T_{2n}", kind="proof", detail={"n": n, "printed": count, "terms": terms,
+                                                       "united_system": len(united_system(n))})
 
 
 @line_check("sec6-quadratic-growth")
 def quadratic_growth() -> LineResult:
-    sizes = [len(printed_patch_terms(n)) for n in NS]
+    sizes = [len(patch_terms_read(n)) for n in NS]
     second = {c - 2 * b + a for a, b, c in zip(sizes, sizes[1:], sizes[2:])}
     first = sizes[1] - sizes[0]
     return LineResult(second == {6} and first > 0, how="second differences of the number of control points, "
@@ -233,11 +253,38 @@ def convex_hull_n123() -> LineResult:
 
 
 # boundary curves ------------------------------------------------------------------------------------------
-EDGES = {  # printed line -> (colour of the control points, zero variable, argument variable of A)
-    "u0": ("g", 0, 2),
-    "v0": ("r", 1, 0),
-    "w0": ("b", 2, 1),
-}
+_NET_SET = re.compile(r"\\mathbf\{([rgb])\}_\{2n,2n-i,j\}\\right\\\}\s*_\{j=([^,{}]+),i=([^{}]+)\}\s*%?\s*"
+                      r"\^\{([^,{}]+),([^{}]+)\}")
+_BOUNDARY = re.compile(r"\\left\(\s*([^()]*?)\\right\)\s*&?\s*=\s*\\sum_\{i=([^{}]+)\}%?\s*\^\{([^{}]+)\}\s*"
+                       r"\\mathbf\{([rgb])\}_\{2n,2n-i,0\}A_\{2n,2n-i\}\^\{\\alpha\}\\left\(\s*([uvw])\s*\\right\)")
+VARS = ("u", "v", "w")
+
+
+def net_from_transcription(n: int, tex: str | None = None) -> list[str]:
+    """The control points of def:surface_patch read from the transcription of its net (line sec6-control-net-set;
+    that printed set lacks the centre, erratum sec6-control-net-set, which no boundary curve uses)."""
+    from paper_repro.printed.lines.read import bound
+
+    tex = _LINE["sec6-control-net-set"].verbatim if tex is None else tex
+    out = []
+    for letter, jlo, ilo, jhi, ihi in _NET_SET.findall(tex):
+        out += [f"{letter}_{{{2 * n},{2 * n - i},{j}}}" for j in range(bound(jlo, n=n), bound(jhi, n=n) + 1)
+                for i in range(bound(ilo, n=n, j=j), bound(ihi, n=n, j=j) + 1)]
+    return out
+
+
+def read_boundary(tex: str) -> tuple[int, int, str, str, str]:
+    """(zero variable, argument variable of A, colour, lower and upper bound of i) of a printed boundary curve."""
+    m = _BOUNDARY.search(tex)
+    if not m:
+        raise ValueError(f"not a boundary curve: {tex[:60]!r}")
+    args = [a.strip() for a in m.group(1).split(",")]
+    if args.count("0") != 1 or len(args) != 3:
+        raise ValueError(f"no single zero argument in s({m.group(1)})")
+    zero, arg = args.index("0"), VARS.index(m.group(5))
+    if zero == arg:
+        raise ValueError(f"A_{{2n,2n-i}}({m.group(5)}) of the variable that is 0 on the edge")
+    return zero, arg, m.group(4), m.group(2), m.group(3)
 
 
 def edge_points(alpha: RationalAngle, zero: int, ts: Sequence[fmpq]) -> RationalPoints:
@@ -249,8 +296,8 @@ def edge_points(alpha: RationalAngle, zero: int, ts: Sequence[fmpq]) -> Rational
     return RationalPoints(alpha, tuple(tq(alpha.t, t) for t in ts), tuple(ts))
 
 
-def boundary_holds(n: int, alpha: RationalAngle, zero: int, color: str, arg: int, seed: int = 3) -> bool:
-    """s on the edge x_zero = 0 equals sum_{i=0}^{2n} color_{2n,2n-i,0} A_{2n,2n-i}(x_arg) (exact)."""
+def boundary_holds(n: int, alpha: RationalAngle, zero: int, arg: int, names: Sequence[str], seed: int = 3) -> bool:
+    """s on the edge x_zero = 0 equals sum_{i=0}^{2n} names[i] A_{2n,2n-i}(x_arg) (exact, a random rational net)."""
     ts = [fmpq(k, 7) * alpha.t for k in range(1, 6)]
     pts = edge_points(alpha, zero, ts)
     net = random_net(n, 2, seed)
@@ -258,43 +305,79 @@ def boundary_holds(n: int, alpha: RationalAngle, zero: int, color: str, arg: int
     half = pts.half_angle_values()  # sin u/2, cos u/2, sin v/2, cos v/2, sin w/2, cos w/2
     idx = index_of(n)
     consts = [c_const(n, k, alpha, "exact") for k in range(2 * n + 1)]
+    if len(names) != 2 * n + 1:
+        return False
     for p in range(len(ts)):
         s_t = half[2 * arg][p]  # sin(t/2), t the argument of A
         other = 3 - zero - arg
         s_rest = half[2 * other][p]  # sin((alpha - t)/2) on this edge
         rhs = [fmpq(0), fmpq(0)]
-        for i in range(2 * n + 1):
+        for i, name in enumerate(names):
             k = 2 * n - i
             a_val = consts[k] * s_rest ** (2 * n - k) * s_t**k
-            point = net[idx[f"{color}_{{{2 * n},{k},0}}"]]
+            point = net[idx[name]]
             rhs = [rhs[d] + a_val * point[d] for d in range(2)]
         if rhs != lhs[p]:
             return False
     return True
 
 
-def _boundary(edge: str) -> LineResult:
-    color, zero, arg = EDGES[edge]
-    ok = all(boundary_holds(n, rational_alpha(t), zero, color, arg) for n in (1, 2, 3) for t in (TS[1], TS[3]))
-    return LineResult(ok, how="exact patch of a random rational net on the edge vs the printed sum of control points "
-                      "times A_{2n,2n-i} (eq. univariate_basis), 5 edge points, n = 1, 2, 3, "
-                      "tan(alpha/4) in {1/3, 3/4}",
-                      kind="exact-evidence", detail={"edge": edge, "colour": color})
+def corner_name(n: int, color: str, i: int, net: Sequence[str]) -> str | None:
+    """The control point of ``net`` whose function is the printed color_{2n,2n-i,0} (exponent vectors from the
+    printed explicit formulas, :func:`paper_repro.claims.lines.sec1_3.printed_exponents`)."""
+    from paper_repro.claims.lines.sec1_3 import printed_exponents
+
+    want = printed_exponents(color.upper(), n, i, 0)
+    labs, idx = united_system(n), index_of(n)
+    hits = [name for name in net if exponents(labs[idx[name]]) == want]
+    return hits[0] if len(hits) == 1 else None
+
+
+def boundary_curve(line_id: str, verbatim: str | None = None) -> LineResult:
+    """A printed boundary curve s(..0..) = sum_{i=a}^{b} x_{2n,2n-i,0} A_{2n,2n-i}(t), read from its transcription:
+    it holds as printed iff every control point it names is one of the net of def:surface_patch (read from its
+    transcription) and the identity holds exactly; the corrected curve names, for a term whose point is not in the
+    net, the net's point of the same function (the corner of the next colour)."""
+    from paper_repro.printed.lines.read import bound
+
+    tex = _LINE[line_id].verbatim if verbatim is None else verbatim
+    try:
+        zero, arg, color, lo, hi = read_boundary(tex)
+    except ValueError as exc:
+        return LineResult(False, how="the printed boundary curve read from the transcription", kind="exact-evidence",
+                          detail={"unread": str(exc)})
+    printed_ok, corrected_ok, renamed = True, True, {}
+    for n in (1, 2, 3):
+        net = net_from_transcription(n)
+        names = [f"{color}_{{{2 * n},{2 * n - i},0}}" for i in range(bound(lo, n=n), bound(hi, n=n) + 1)]
+        fixed = [x if x in net else corner_name(n, color, 2 * n - int(x.split(",")[1]), net) for x in names]
+        renamed.update({x: y for x, y in zip(names, fixed) if x != y})
+        in_net = all(x in net for x in names)
+        good_fixed = all(y is not None for y in fixed)
+        for t in (TS[1], TS[3]):
+            a = rational_alpha(t)
+            printed_ok &= in_net and boundary_holds(n, a, zero, arg, names)
+            corrected_ok &= good_fixed and boundary_holds(n, a, zero, arg, fixed)
+    return LineResult(printed_ok, None if printed_ok else corrected_ok,
+                      how="the curve read from the transcription (zero argument, colour, sum bounds, argument of A) "
+                      "and the net from that of def:surface_patch; exact patch of a random rational net on the edge "
+                      "vs the sum, 5 edge points, n = 1, 2, 3, tan(alpha/4) in {1/3, 3/4}", kind="exact-evidence",
+                      detail={"edge": f"{VARS[zero]} = 0", "colour": color, "not_in_the_net": renamed})
 
 
 @line_check("sec6-boundary-u0")
 def boundary_u0() -> LineResult:
-    return _boundary("u0")
+    return boundary_curve("sec6-boundary-u0")
 
 
 @line_check("sec6-boundary-v0")
 def boundary_v0() -> LineResult:
-    return _boundary("v0")
+    return boundary_curve("sec6-boundary-v0")
 
 
 @line_check("sec6-boundary-w0")
 def boundary_w0() -> LineResult:
-    return _boundary("w0")
+    return boundary_curve("sec6-boundary-w0")
 
 
 CORNERS = {"r": (0,), "g": (2,), "b": (1,)}  # colour -> the variable equal to alpha at its corner
@@ -344,7 +427,7 @@ def trig_curves() -> LineResult:
     ranks = {f"n={n},t={t}": a_forms_rank(n, rational_alpha(t)) for n in range(1, 7) for t in TS}
     ok = all(v == 2 * int(k.split(",")[0][2:]) + 1 for k, v in ranks.items())
     return LineResult(ok, how="exact rank of the coefficient matrix of A_{2n,i} as binary forms, n = 1..6, "
-                      "tan(alpha/4) in {1/5, 1/3, 1/2, 3/4}", kind="proof",
+                      "tan(alpha/4) in {1/5, 1/3, 1/2, 3/4}", kind="exact-evidence",
                       detail={"ranks_t_1_3": [ranks[f"n={n},t=1/3"] for n in range(1, 7)]})
 
 
@@ -715,11 +798,28 @@ def fig_torus_settings() -> LineResult:
 
 
 # --- Section 6.2: rational patches ---------------------------------------------------------------------------
+def _rows_read(ids: Sequence[str], n: int, override: dict[str, str] | None = None, **mode: bool) -> list[str]:
+    """Control point names (lower case) of the functions named by the sums of the lines ``ids``, read from their
+    transcriptions (:func:`paper_repro.printed.lines.read.sum_terms`)."""
+    from paper_repro.printed.lines.read import sum_terms, term_indices
+
+    texts = {k: _LINE[k].verbatim for k in ids}
+    texts.update({k: v for k, v in (override or {}).items() if k in texts})
+    return [f"{c.lower()}_{{{2 * n},{2 * n - i},{j}}}" for k in ids
+            for c, i, j in term_indices(sum_terms(texts[k], **mode), n=n)]
+
+
 @line_check("sec6-weights-set")
-def weights_set() -> LineResult:
-    ok = all(matches_basis(printed_patch_terms(n), n) for n in NS)
-    return LineResult(ok, how="enumeration of rho_{2n,n,n} and the three printed weight sets vs T_{2n}, n = 1..12",
-                      kind="exact-evidence", detail={"sizes_n_1_2_3": [len(printed_patch_terms(n)) for n in (1, 2, 3)]})
+def weights_set(verbatim: str | None = None) -> LineResult:
+    """The weights rho_{2n,n,n} and the three printed sets of weights (read from the transcription; it used the
+    patch's terms instead) name each function of T_{2n} once, n = 1..12."""
+    from paper_repro.printed.lines.read import constant_sets
+
+    tex = _LINE["sec6-weights-set"].verbatim if verbatim is None else verbatim
+    names = {n: [f"{c.lower()}_{{{2 * n},{2 * n - i},{j}}}" for c, i, j in constant_sets(tex, n)] for n in NS}
+    ok = all(matches_basis(v, n) for n, v in names.items())
+    return LineResult(ok, how="the printed weights read from the transcription vs T_{2n}, n = 1..12",
+                      kind="exhaustive", detail={"sizes_n_1_2_3": [len(names[n]) for n in (1, 2, 3)]})
 
 
 def tau_values(n: int, alpha: RationalAngle, weights: Sequence[fmpq], pts: RationalPoints) -> list[fmpq]:
@@ -739,9 +839,10 @@ def rank1_counterexample(n: int = 2) -> dict:
 
 
 @line_check("sec6-weights-rank1")
-def weights_rank1() -> LineResult:
-    """The sum's index sets are right, but a non-zero sum of non-negative weights lets tau vanish on Omega^alpha."""
-    sets_ok = all(matches_basis(printed_patch_terms(n), n) for n in NS)
+def weights_rank1(override: dict[str, str] | None = None) -> LineResult:
+    """The sum's index sets (read from the transcription) are right, but a non-zero sum of non-negative weights lets
+    tau vanish on Omega^alpha."""
+    sets_ok = all(matches_basis(_rows_read(("sec6-weights-rank1",), n, override, bare=True), n) for n in NS)
     ce = rank1_counterexample()
     vanishes = ce["sum"] != 0 and ce["min_weight"] >= 0 and any(v == 0 for v in ce["tau_on_edge_u0"])
     printed_holds = sets_ok and not vanishes
@@ -773,10 +874,15 @@ def rational_eval(n: int, alpha: RationalAngle, net, weights, pts: RationalPoint
 
 
 @line_check("sec6-rational-patch")
-def rational_patch() -> LineResult:
-    """The terms of eq. rational_patch are the delta_n functions of T_{2n} (enumeration); with equal weights the
-    rational patch is the polynomial patch (exact)."""
-    sets_ok = all(matches_basis(printed_patch_terms(n), n) for n in NS)
+def rational_patch(override: dict[str, str] | None = None) -> LineResult:
+    """The terms of eq. rational_patch (weight, control point and function of each, read from the transcriptions of
+    its three rows) are the delta_n functions of T_{2n}; with equal weights the rational patch is the polynomial
+    patch (exact)."""
+    rows = ("sec6-rational-row-1", "sec6-rational-row-2", "sec6-rational-row-3")
+    try:
+        sets_ok = all(matches_basis(_rows_read(rows, n, override, rational=True), n) for n in NS)
+    except ValueError as exc:
+        return LineResult(False, how="the rows read from the transcriptions", detail={"unread": str(exc)})
     alpha = rational_alpha(TS[2])
     same = True
     for n in (1, 2):
@@ -789,11 +895,13 @@ def rational_patch() -> LineResult:
 
 
 @line_check("sec6-tau-index-sets")
-def tau_index_sets() -> LineResult:
-    """tau's sums over l = 0..n-1, k = l..2n-1-l name T_{2n}; with unit weights tau = 1 (exact)."""
-    sets = all(matches_basis([f"r_{{{2 * n},{n},{n}}}"] + [f"{c}_{{{2 * n},{2 * n - k},{ell}}}" for c in "rgb"
-                                                             for ell in range(n) for k in range(ell, 2 * n - ell)], n)
-               for n in NS)
+def tau_index_sets(override: dict[str, str] | None = None) -> LineResult:
+    """tau's sums over l = 0..n-1, k = l..2n-1-l (read from the transcriptions of its rows) name T_{2n}; with unit
+    weights tau = 1 (exact)."""
+    try:
+        sets = all(matches_basis(_rows_read(("sec6-tau-row-1", "sec6-tau-row-2"), n, override), n) for n in NS)
+    except ValueError as exc:
+        return LineResult(False, how="the rows read from the transcriptions", detail={"unread": str(exc)})
     alpha = rational_alpha(TS[0])
     one = all(v == 1 for n in (1, 2, 3)
               for v in tau_values(n, alpha, [fmpq(1)] * delta(n), sample_rational_points(alpha, 3, seed=n)))

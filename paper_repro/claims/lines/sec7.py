@@ -127,7 +127,7 @@ def check_mixed_index_set() -> LineResult:
     counts = {str(n): len(index_set_from_text(n)) for n in (1, 2, 3)}
     ok = all(per_n.values()) and all(c == (delta(int(n)) - 1) // 3 for n, c in counts.items())
     return LineResult(ok, how="printed ranges enumerated and compared with the non-central R labels of T_{2n}, "
-                      "n = 1..12", kind="proof", detail={"equal": per_n, "counts": counts})
+                      "n = 1..12", kind="exhaustive", detail={"equal": per_n, "counts": counts})
 
 
 def product_expansion(n: int, t: str = "1/3") -> dict[tuple[str, str], list[fmpq]]:
@@ -634,7 +634,8 @@ def check_bernstein_definition() -> LineResult:
                          "same_as_bezier_indices": sorted(idx) == sorted(bezier_indices(m))}
     ok = all(v["sum_is_one"] and v["same_as_bezier_indices"] and v["count"] == (int(m) + 1) * (int(m) + 2) // 2
              for m, v in per_m.items())
-    return LineResult(ok, kind="proof", how="sum over the printed index set of m!/(d!e!f!) x^d y^e (1-x-y)^f expanded "
+    return LineResult(ok, kind="exhaustive",
+                      how="sum over the printed index set of m!/(d!e!f!) x^d y^e (1-x-y)^f expanded "
                       "exactly (fmpq_mpoly) is 1, m = 1..8; the index set has (m+1)(m+2)/2 elements",
                       detail={"per_m": per_m})
 
@@ -645,7 +646,8 @@ def check_caption_centre() -> LineResult:
     formula = {str(n): [lab.paper for lab in united_system(n) if limit_factor(n, lab.i, lab.j) == 0]
                for n in range(1, 13)}
     ok = all(v == [f"R_{{{2 * int(n)},{n},{n}}}"] for d in (closed, formula) for n, v in d.items())
-    return LineResult(ok, kind="proof", how="limit coefficients P_f(1) of the proven closed forms (n = 1..3) and the "
+    return LineResult(ok, kind="exhaustive",
+                      how="limit coefficients P_f(1) of the proven closed forms (n = 1..3) and the "
                       "limit formula (n = 1..12): exactly the centre R_{2n,n,n} tends to 0",
                       detail={"vanishing_closed_forms": closed, "vanishing_formula_n_le_12": len(formula)})
 
@@ -742,21 +744,43 @@ def check_conversion_convex() -> LineResult:
 
 
 @line_check("sec7-question-limiting-case")
-def check_question_limiting_case() -> LineResult:
+def check_question_limiting_case(verbatim: str | None = None) -> LineResult:
+    """The degree the Question names (read from the transcription: ``of degree $3n-1$``) against the degree of the
+    limit from the limit formula and from the proven closed forms."""
+    import re
+
+    from paper_repro.printed.lines.read import bound
+
+    m = re.search(r"of degree \$([^$]+)\$", VERBATIM["sec7-question-limiting-case"] if verbatim is None else verbatim)
+    if not m:
+        return LineResult(False, how="the degree read from the transcription, n = 1..12", kind="exhaustive",
+                          detail={"unread": "no 'of degree $..$'"})
     degrees = {str(n): limit_degree(n, "formula") for n in range(1, 13)}
     lemmas = {str(n): all(v for k, v in limit_checks(n).items() if isinstance(v, bool)) for n in range(1, 6)}
     closed = {str(n): limit_degree(n, "closed_forms") for n in (1, 2, 3, 4)}
-    ok = all(d == 3 * int(n) - 1 for n, d in {**degrees, **closed}.items()) and all(lemmas.values())
-    return LineResult(ok, kind="proof", how="degree of the limit Bezier triangle from the limit formula (n = 1..12; "
-                      "its lemmas checked exactly for n = 1..5) and from the proven closed forms (n = 1..4): 3n - 1",
+    ok = all(d == bound(m.group(1), n=int(n)) for n, d in {**degrees, **closed}.items()) and all(lemmas.values())
+    return LineResult(ok, kind="exhaustive",
+                      how="degree of the limit Bezier triangle from the limit formula (n = 1..12; "
+                      "its lemmas checked exactly for n = 1..5) and from the proven closed forms (n = 1..4) against "
+                      "the printed 3n - 1 (read from the transcription)",
                       detail={"degree_formula": degrees, "degree_closed_forms": closed, "lemmas": lemmas})
 
 
 # ---------------------------------------------------------------- Section 8
 
 @line_check("sec7-s8-dimension-and-span")
-def check_dimension_and_span() -> LineResult:
-    counts = {str(n): (len(united_system(n)), 3 * n * (n + 1) + 1, len(v_labels(n))) for n in range(1, 13)}
+def check_dimension_and_span(verbatim: str | None = None) -> LineResult:
+    """delta_n as printed (read from the transcription: ``\\delta_{n}=3n\\left(n+1\\right)+1``) = |T_{2n}| = |V_n|,
+    and the exact ranks of T_{2n}, V_n and both together equal delta_n."""
+    import re
+
+    from paper_repro.printed.lines.read import bound
+
+    m = re.search(r"\\delta_\{n\}=([^$]+)\$", VERBATIM["sec7-s8-dimension"] if verbatim is None else verbatim)
+    if not m:
+        return LineResult(False, how="delta_n read from the transcription", detail={"unread": "no delta_n"})
+    expr = m.group(1).replace("\\left(", "(").replace("\\right)", ")")
+    counts = {str(n): (len(united_system(n)), bound(expr, n=n), len(v_labels(n))) for n in range(1, 13)}
     ctx = ModpContext(p=2**31 - 1)
     ranks = {}
     for n in (1, 2, 3):

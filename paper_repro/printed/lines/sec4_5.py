@@ -15,26 +15,6 @@ from math import comb
 
 from paper_repro.printed.lines import Line
 
-#: Worked examples after Definition equivalence_relation_definition (n = 3), lines 1493-1502:
-#: (first triple, second triple, printed equivalent?).
-EXAMPLES_N3 = [((0, 0, 1), (1, 1, 0), True), ((1, 3, 2), (2, 0, 1), True), ((2, 0, 1), (0, 2, 1), True),
-               ((1, 3, 2), (0, 2, 1), True), ((1, 0, 0), (0, 1, 0), False)]
-
-#: Arguments of the functions added to V_0 in the printed V_1 (lines 1550-1552): u, v, w.
-V1_ARGS = [(1, 0, 0), (0, 1, 0), (0, 0, 1)]
-
-#: The six printed classes of order 2 (lines 1596-1600): {[0u+gv+2w]}_{g=0}^1, {[2u+0v+bw]}_{b=0}^1,
-#: {[ru+2v+0w]}_{r=0}^1.
-N2_CLASSES = [(0, g, 2) for g in range(2)] + [(2, 0, b) for b in range(2)] + [(r, 2, 0) for r in range(2)]
-
-#: Arguments of the functions added to V_1 in the printed V_2 (lines 1604-1613): 2w, v+2w, 2u, 2u+w, 2v, u+2v.
-V2_NEW_ARGS = [(0, 0, 2), (0, 1, 2), (2, 0, 0), (2, 0, 1), (0, 2, 0), (1, 2, 0)]
-
-
-def prop_representatives(n: int) -> list[tuple[int, int, int]]:
-    """Lines 1637-1640: {[0u+gv+nw]}_{g=0}^{n-1} u {[nu+0v+bw]}_{b=0}^{n-1} u {[ru+nv+0w]}_{r=0}^{n-1}."""
-    return [(0, g, n) for g in range(n)] + [(n, 0, b) for b in range(n)] + [(r, n, 0) for r in range(n)]
-
 
 def proof_r_exponents(n: int, i: int, j: int) -> tuple[int, ...]:
     """Lines 1683-1685: R_{2n,2n-i,j} = sin^{2n-i}(u/2) sin^i(w/2) cos^{i-j}(v/2) sin^j(v/2) (j <= i <= n), as
@@ -64,36 +44,6 @@ def power_reduction(m: int, which: str, ep):
 #: the four parity cases "i mod 2, j mod 2" (lines 1732-1750).
 PRODUCT_TYPES = {"0,0": ("cos", "cos", "cos", "cos"), "1,1": ("sin", "sin", "cos", "sin"),
                  "0,1": ("cos", "cos", "cos", "sin"), "1,0": ("sin", "sin", "cos", "cos")}
-
-#: Lines 1758-1769: the printed upper ends of the four factors of K_{i mod 2, j mod 2} (each {0, 1, ..., B}).
-K_UPPER = {
-    "0,0": lambda n, i, j: (Fraction(2 * n - i, 2), Fraction(i, 2), Fraction(i - j, 2), Fraction(j, 2)),
-    "1,1": lambda n, i, j: (Fraction(2 * n - i - 1, 2), Fraction(i - 1, 2), Fraction(i - j, 2), Fraction(j - 1, 2)),
-    "0,1": lambda n, i, j: (Fraction(2 * n - i, 2), Fraction(i, 2), Fraction(i - j - 1, 2), Fraction(j - 1, 2)),
-    "1,0": lambda n, i, j: (Fraction(2 * n - i - 1, 2), Fraction(i - 1, 2), Fraction(i - j, 2), Fraction(j, 2)),
-}
-
-
-def weight_labels(n: int) -> list[str]:
-    """Eq. normalizing_weights (lines 1914-1916): r_{2n,n,n} and {x_{2n,2n-i,j}}_{j=0,i=j}^{n-1,2n-1-j}."""
-    out = [f"r_{{{2 * n},{n},{n}}}"]
-    for x in "rgb":
-        out += [f"{x}_{{{2 * n},{2 * n - i},{j}}}" for j in range(n) for i in range(j, 2 * n - j)]
-    return out
-
-
-def partition_sum_labels(n: int) -> list[str]:
-    """Lines 1922-1927: the functions of the printed sum L (centre, then the three double sums)."""
-    out = [f"R_{{{2 * n},{n},{n}}}"]
-    for x in "RGB":
-        out += [f"{x}_{{{2 * n},{2 * n - i},{j}}}" for j in range(n) for i in range(j, 2 * n - 1 - j + 1)]
-    return out
-
-
-def blending_labels(n: int) -> list[str]:
-    """Eq. normalized_united_system, first row (lines 2128-2131): {R-bar, G-bar, B-bar}_{j=0,i=j}^{n-1,2n-1-j}
-    as the coefficient names, sorted."""
-    return sorted(f"{x}_{{{2 * n},{2 * n - i},{j}}}" for x in "rgb" for j in range(n) for i in range(j, 2 * n - j))
 
 
 LINES: list[Line] = [
@@ -1214,7 +1164,7 @@ LINES: list[Line] = [
          verbatim='$\\cos^{2n}\\frac{x}{2}\\neq0$ ($x\\in\\left[ 0,\\alpha\\right] $)',
          says='cos^{2n}(x/2) != 0 for x in [0, alpha].',
          status='checked',
-         check='sec4_5-tan-polynomial'),
+         check='sec4_5-cos-nonzero'),
     Line(id='sec4_5-chain-sum',
          tex=(1977, 1980),
          near='normalizing_coeff_of_level_0',
@@ -1224,7 +1174,7 @@ LINES: list[Line] = [
                    't( x,y\\right) \\right) \\right\\vert _{y=0}=0,~\\forall x\\in\\left[ 0,\\alpha\\right]'),
          says='sum_k C(r,k)(-1)^k d^r L/dv^{r-k}dw^k at y = 0 equals 0 for x in [0, alpha].',
          status='checked',
-         check='sec4_5-chain-rule'),
+         check='sec4_5-chain-sum'),
     Line(id='sec4_5-chain-y-range',
          tex=(1980, 1980),
          near='normalizing_coeff_of_level_0',

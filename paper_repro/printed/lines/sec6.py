@@ -154,8 +154,22 @@ LINES = [
                    'right]  ,\\\\'),
          says=('On u = 0: s(0, alpha-w, w) = sum_{i=0}^{2n} g_{2n,2n-i,0} A_{2n,2n-i}(w), w in [0, alp'
                'ha].'),
-         status='checked',
-         check='sec6-boundary-u0'),
+         status='erratum',
+         check='sec6-boundary-u0',
+         erratum={'id': 'boundary-curve-u0-corner-name',
+                  'printed': ('s(0, alpha-w, w) = sum_{i=0}^{2n} g_{2n,2n-i,0} A_{2n,2n-i}(w): its i = 2n '
+                              'term names g_{2n,0,0}'),
+                  'corrected': ('s(0, alpha-w, w) = sum_{i=0}^{2n-1} g_{2n,2n-i,0} A_{2n,2n-i}(w) + '
+                                'b_{2n,2n,0} A_{2n,0}(w)'),
+                  'evidence': ('g_{2n,0,0} is not a control point: the net of def:surface_patch (and the sums '
+                               'of eq. triangular_trig_surface) has g_{2n,2n-i,j} for i <= 2n-1-j only; the '
+                               'function G_{2n,0,0} of the full system equals B_{2n,2n,0} = sin^{2n}(v/2), whose '
+                               'control point is the corner b_{2n,2n,0}; with that name the curve equals the patch '
+                               'on the edge u = 0 exactly (random rational nets, n = 1, 2, 3, tan(alpha/4) in '
+                               '{1/3, 3/4}). The proof of Theorem joint_systems_linear_independence writes the '
+                               'same i = 2n term with the other colour\'s corner (definitions of rho\', gamma\': '
+                               'gamma_{2n,2n,0}, beta_{2n,2n,0})'),
+                  'severity': 'typo'}),
     Line(id='sec6-boundary-v0', tex=(2266, 2268),
          near='fig:third_order_patch', kind='display',
          verbatim=('\\mathbf{s}_{n}^{\\alpha}\\left(  u,0,\\alpha-u\\right)   &  =\\sum_{i=0}%\n^{2n}\\mat'
@@ -163,8 +177,22 @@ LINES = [
                    'right]  ,\\\\'),
          says=('On v = 0: s(u, 0, alpha-u) = sum_{i=0}^{2n} r_{2n,2n-i,0} A_{2n,2n-i}(u), u in [0, alp'
                'ha].'),
-         status='checked',
-         check='sec6-boundary-v0'),
+         status='erratum',
+         check='sec6-boundary-v0',
+         erratum={'id': 'boundary-curve-v0-corner-name',
+                  'printed': ('s(u, 0, alpha-u) = sum_{i=0}^{2n} r_{2n,2n-i,0} A_{2n,2n-i}(u): its i = 2n '
+                              'term names r_{2n,0,0}'),
+                  'corrected': ('s(u, 0, alpha-u) = sum_{i=0}^{2n-1} r_{2n,2n-i,0} A_{2n,2n-i}(u) + '
+                                'g_{2n,2n,0} A_{2n,0}(u)'),
+                  'evidence': ('r_{2n,0,0} is not a control point: the net of def:surface_patch (and the sums '
+                               'of eq. triangular_trig_surface) has r_{2n,2n-i,j} for i <= 2n-1-j only; the '
+                               'function R_{2n,0,0} of the full system equals G_{2n,2n,0} = sin^{2n}(w/2), whose '
+                               'control point is the corner g_{2n,2n,0}; with that name the curve equals the patch '
+                               'on the edge v = 0 exactly (random rational nets, n = 1, 2, 3, tan(alpha/4) in '
+                               '{1/3, 3/4}). The proof of Theorem joint_systems_linear_independence writes the '
+                               'same i = 2n term with the other colour\'s corner (definitions of rho\', gamma\': '
+                               'gamma_{2n,2n,0}, beta_{2n,2n,0})'),
+                  'severity': 'typo'}),
     Line(id='sec6-boundary-w0', tex=(2269, 2271),
          near='fig:third_order_patch', kind='display',
          verbatim=('\\mathbf{s}_{n}^{\\alpha}\\left(  \\alpha-v,v,0\\right)   &  =\\sum_{i=0}%\n^{2n}\\mat'
@@ -172,8 +200,22 @@ LINES = [
                    'right]  ,'),
          says=('On w = 0: s(alpha-v, v, 0) = sum_{i=0}^{2n} b_{2n,2n-i,0} A_{2n,2n-i}(v), v in [0, alp'
                'ha].'),
-         status='checked',
-         check='sec6-boundary-w0'),
+         status='erratum',
+         check='sec6-boundary-w0',
+         erratum={'id': 'boundary-curve-w0-corner-name',
+                  'printed': ('s(alpha-v, v, 0) = sum_{i=0}^{2n} b_{2n,2n-i,0} A_{2n,2n-i}(v): its i = 2n '
+                              'term names b_{2n,0,0}'),
+                  'corrected': ('s(alpha-v, v, 0) = sum_{i=0}^{2n-1} b_{2n,2n-i,0} A_{2n,2n-i}(v) + '
+                                'r_{2n,2n,0} A_{2n,0}(v)'),
+                  'evidence': ('b_{2n,0,0} is not a control point: the net of def:surface_patch (and the sums '
+                               'of eq. triangular_trig_surface) has b_{2n,2n-i,j} for i <= 2n-1-j only; the '
+                               'function B_{2n,0,0} of the full system equals R_{2n,2n,0} = sin^{2n}(u/2), whose '
+                               'control point is the corner r_{2n,2n,0}; with that name the curve equals the patch '
+                               'on the edge w = 0 exactly (random rational nets, n = 1, 2, 3, tan(alpha/4) in '
+                               '{1/3, 3/4}). The proof of Theorem joint_systems_linear_independence writes the '
+                               'same i = 2n term with the other colour\'s corner (definitions of rho\', gamma\': '
+                               'gamma_{2n,2n,0}, beta_{2n,2n,0})'),
+                  'severity': 'typo'}),
     Line(id='sec6-corners', tex=(2273, 2275),
          near='fig:third_order_patch', kind='inline',
          verbatim=('interpolates the three\ncorners $\\mathbf{r}_{2n,2n,0}$, $\\mathbf{g}_{2n,2n,0}$ and $'
