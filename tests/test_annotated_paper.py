@@ -242,7 +242,8 @@ def test_every_transcribed_line_leaves_no_block_unchecked():
     errata = json.loads((DATA / "errata.json").read_text(encoding="utf-8"))
     page, info = ap.build(PAPER.read_text(encoding="utf-8"), load_index(), [], [], {}, {"lines": entries}, errata)
     assert info["badges"]["not yet checked"] == 0, info
-    assert info["badges"]["erratum"] == sum(e["status"] == "erratum" for e in entries) == len(errata)
+    held = ap.held_errata(entries, errata)  # errata.json is rewritten by make reproduce from the same transcriptions
+    assert info["badges"]["erratum"] == sum(e["status"] == "erratum" for e in entries) + len(errata) - len(held)
     assert [e["id"] for e in errata if html_escape(e["id"]) not in page] == []
     assert ">None<" not in page
 
