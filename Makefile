@@ -1,10 +1,19 @@
 # paper_repro: `make reproduce` and `make test` need nothing but python3 (>= 3.11);
 # the first run creates .venv and installs the package with its dependencies, later runs reuse it.
 PYTHON ?= python3
+comma := ,
 # One environment per interpreter: .venv for the reference CPython 3.11 (byte-identical figures), .venv-3.12 etc.
 PYVER  := $(shell $(PYTHON) -c 'import sys; print("%d.%d" % sys.version_info[:2])' 2>/dev/null)
 VENV   ?= $(if $(filter-out 3.11,$(PYVER)),.venv-$(PYVER),.venv)
 PY     := $(VENV)/bin/python
+# An interpreter that does not run, or is older than 3.11, stops every target that needs Python with one sentence
+# (before, an empty PYVER silently chose the 3.11 .venv: `make test PYTHON=python3.99` tested 3.11).
+ifneq ($(filter-out clean distclean,$(or $(MAKECMDGOALS),default)),)
+ifeq ($(shell $(PYTHON) -c 'import sys; sys.exit(0 if sys.version_info >= (3, 11) else 1)' >/dev/null 2>&1 && echo ok),)
+_PYV := $(shell $(PYTHON) -V 2>&1 | head -n 1)
+$(error $(if $(filter Python 3.%,$(_PYV)),paper_repro needs Python >= 3.11$(comma) but '$(PYTHON)' is $(_PYV); run with PYTHON=python3.11 (or newer),PYTHON=$(PYTHON) does not run (no such interpreter); give a Python >= 3.11$(comma) e.g. PYTHON=python3.11))
+endif
+endif
 STAMP  := $(VENV)/.installed-stamp
 # bezier has no CPython 3.13 wheel: there pip builds its locked sdist as pure Python (no compiled speed-up;
 # bezier's setup refuses an untested Python unless told); no effect where a wheel is installed
@@ -101,6 +110,8 @@ _find = $(or $(call _runs,$(shell command -v $(1) 2>/dev/null)),$(call _runs,$(f
 PYTHONS ?= $(strip $(foreach p,python3.12 python3.13,$(call _find,$(p))))
 test-pythons:                  ## the fast suite on every other supported interpreter found (python3.12, python3.13)
 	@if [ -z "$(strip $(PYTHONS))" ]; then echo "test-pythons: no python3.12 or python3.13 found (set PYTHONS=...)"; fi
+	@for p in $(PYTHONS) ""; do [ -n "$$p" ] || continue; \
+	  $$p -c '' >/dev/null 2>&1 || { echo "test-pythons: $$p does not run; give interpreters that do, e.g. PYTHONS=\"python3.12 python3.13\"." >&2; exit 1; }; done
 	@for p in $(PYTHONS) ""; do [ -n "$$p" ] || continue; echo "== make test PYTHON=$$p"; \
 	  $(MAKE) --no-print-directory test PYTHON=$$p || exit 1; done
 

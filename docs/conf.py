@@ -4,6 +4,8 @@ Sphinx with autodoc + napoleon (the API reference from the docstrings), MyST for
 ``docs/*.md`` is included automatically) and the furo theme.  Math is rendered by MathJax 3 served from
 ``docs/_vendor/mathjax`` (vendored from the npm registry), so the site loads nothing from the network.
 The claims table and the errata are generated at build time from ``data/claims.md`` and ``data/errata.json``.
+Two local extensions (``docs/_ext``): ``plain_math`` renders the plain-text formulas of the proof pages as MathJax
+math (every ``docs/*.md``), ``api_check`` fails the build (``-W``) on a docstring napoleon garbles.
 """
 
 from __future__ import annotations
@@ -15,16 +17,18 @@ from pathlib import Path
 HERE = Path(__file__).resolve().parent
 ROOT = HERE.parent
 sys.path.insert(0, str(ROOT))
+sys.path.insert(0, str(HERE / "_ext"))
 
 import paper_repro  # noqa: E402
 
 project = "paper_repro"
 author = "paper_repro contributors"
 release = version = paper_repro.__version__
-extensions = ["sphinx.ext.autodoc", "sphinx.ext.napoleon", "sphinx.ext.mathjax", "myst_parser"]
+extensions = ["sphinx.ext.autodoc", "sphinx.ext.napoleon", "sphinx.ext.mathjax", "myst_parser",
+              "api_check", "plain_math"]
 source_suffix = {".rst": "restructuredtext", ".md": "markdown"}
 myst_enable_extensions = ["dollarmath", "amsmath"]
-exclude_patterns = ["_build", "_vendor", "README.md"]
+exclude_patterns = ["_build", "_vendor", "_ext", "README.md"]
 html_theme = "furo"
 html_title = f"paper_repro {release}"
 html_static_path = ["_vendor"]
@@ -53,3 +57,4 @@ def _generated() -> None:
 
 
 _generated()
+

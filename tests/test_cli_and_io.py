@@ -135,3 +135,62 @@ def test_alpha_range_declared_in_registration():
     load_all()
     assert ALPHA_RANGES["linear_independence"][:2] == (1e-6, 3.1415926)
     check_cli_range(CLAIMS["linear_independence"], 2, 0.5)  # inside: accepted
+
+
+# --- issue 33, item 6: output a person reads -------------------------------------------------------------------
+def test_progress_off_a_terminal_is_one_line_per_loop(capsys):
+    """About 100 `rank mod p t=1/3 n k/20: k` lines filled a `make reproduce` log: now one line per loop."""
+    from paper_repro.util.progress import progress
+    from paper_repro.util.sweep import sweep
+
+    assert list(progress(range(20), "rank mod p")) == list(range(20))
+    assert sweep(abs, [-3, 1, -2], workers=1, desc="claims") == [3, 1, 2]
+    err = capsys.readouterr().err.splitlines()
+    assert len(err) == 2 and err[0].startswith("rank mod p: 20 of 20 done in ")
+    assert err[1].startswith("claims: 3 of 3 done in "), err
+
+
+def test_linear_independence_shows_one_bar_for_the_claim(monkeypatch):
+    from paper_repro.claims import linear_independence as li
+
+    bars = []
+    monkeypatch.setattr(li, "progress", lambda items, desc: bars.append(desc) or items)
+    monkeypatch.setattr(li, "numeric_case", lambda n, a, *rest: {"rank": 1, "delta_n": 1})
+    monkeypatch.setattr(li, "modp_case", lambda n, t, seed, control=False: li.delta(n) - control)
+    monkeypatch.setattr(li, "numeric_rank", lambda *a: li.delta(3) - 1)
+    monkeypatch.setattr(li, "mp_singular_values", lambda *a: None)
+    monkeypatch.setattr(li, "collocation_mp", lambda *a, **k: None)
+    li.run(ns=[1, 2], alphas=["pi/2"], dps=30, svd_n_max=2, exact_ns=[1, 2, 3], rational_ts=["1/3", "1/7"], seed=5)
+    assert bars == ["linear_independence (ranks)"]
+
+
+def test_reproduce_ends_with_a_summary_line(tmp_path, monkeypatch, capsys):
+    """`make reproduce` ended with the annotated paper's raw JSON dict; now a sentence: claims passed, errata,
+    files written, time."""
+    from paper_repro.app import annotated_paper, cli, report
+    from paper_repro.util import io
+
+    def fake_claims(*a, **k):
+        io.write_text(io.data_dir() / "claims.md", "x")
+        return report.ClaimsRun(28, ("torus_exact",), 32)
+
+    monkeypatch.setattr(report, "run_claims", fake_claims)
+    monkeypatch.setattr(report, "make_figures", lambda only: io.write_text(io.figures_dir() / "a.svg", "<svg/>"))
+    monkeypatch.setattr(annotated_paper, "write_paper", lambda: None)
+    (tmp_path / "data").mkdir()
+    (tmp_path / "data" / "old.json").write_text("{}")  # written before the run: not counted
+    monkeypatch.setenv(io.OUT_ENV, str(tmp_path))  # --out sets it for good: restored after the test
+    code = cli.main(["reproduce", "--out", str(tmp_path)])
+    last = capsys.readouterr().out.strip().splitlines()[-1]
+    assert code == 1
+    assert re.fullmatch(r"reproduce: 28 of 29 claims passed \(failed: torus_exact\), 32 errata of the paper "
+                        r"recorded, 2 files written, [0-9.]+ s\.", last), last
+
+
+def test_the_annotated_paper_says_a_sentence_not_a_dict():
+    from paper_repro.app.annotated_paper import paper_line
+
+    line = paper_line("paper/index.html", {"badges": {"checked": 1, "erratum": 2, "excused": 0,
+                                                      "not yet checked": 0}, "displays": 3, "math": 4,
+                                           "math_fallback": 0, "unplaced_entries": 0, "unplaced_errata": 0})
+    assert "{" not in line and line.endswith(".") and "2 errata" in line

@@ -26,6 +26,7 @@ def test_tutorial_runs(tmp_path, monkeypatch):
     for k, code in enumerate(blocks):
         exec(compile(code, f"tutorial.md block {k + 1}", "exec"), scope)
     assert (tmp_path / "sphere_octant.obj").is_file()
+    assert (tmp_path / "sphere_octant.stl").stat().st_size > 0 and (tmp_path / "sphere_octant.vtu").is_file()
 
 
 def test_every_docs_page_is_in_the_site():
@@ -52,7 +53,8 @@ def test_site_in_headless_chromium(tmp_path):
     for md in DOCS.glob("*.md"):  # every page of docs/ is in the site
         if md.name != "index.md":
             assert (out / md.with_suffix(".html").name).is_file(), md.name
-    res = check_docs_site(out / "index.html", out / "guide" / "tutorial.html")
+    proofs = [out / md.with_suffix(".html").name for md in sorted(DOCS.glob("*.md")) if md.name != "index.md"]
+    res = check_docs_site(out / "index.html", out / "guide" / "tutorial.html", *proofs)  # proofs: no merror
     assert res["console_errors"] == [] and res["external_requests"] == [], res
     assert res["math_rendered"] > 0 and res["math_errors"] == 0, res
 
@@ -114,3 +116,163 @@ def test_check_gallery_installs_nothing_unless_asked(monkeypatch, capsys):
     assert "--no-install-recommends" in apt[0] and "--no-upgrade" in apt[0]
     assert set(apt[0][-2:]) == {"chromium", "chromium-driver"}
     assert "installing" in capsys.readouterr().out
+
+
+def _napoleon_fields(obj, what: str) -> list[str]:
+    import inspect
+
+    from sphinx.ext.napoleon import Config
+    from sphinx.ext.napoleon.docstring import NumpyDocstring
+
+    doc = inspect.getdoc(obj) or ""
+    return NumpyDocstring(doc, Config(napoleon_use_param=True), what=what, obj=obj).lines()
+
+
+def _api_check():
+    sys.path.insert(0, str(DOCS / "_ext"))
+    try:
+        import api_check
+    finally:
+        sys.path.remove(str(DOCS / "_ext"))
+    return api_check
+
+
+def _documented_objects():
+    """Every object the API reference renders: the package root and the modules named in api.rst."""
+    import importlib
+    import inspect
+
+    import paper_repro
+
+    objs = {f"paper_repro.{n}": getattr(paper_repro, n) for n in paper_repro.__all__ if n != "__version__"}
+    api = (DOCS / "guide" / "api.rst").read_text(encoding="utf-8")
+    for module, members in re.findall(r"\.\. automodule:: (\S+)\n   :members:(.*)", api):
+        mod = importlib.import_module(module)
+        names = [m.strip() for m in members.split(",") if m.strip()] or [
+            n for n, o in vars(mod).items() if not n.startswith("_") and getattr(o, "__module__", None) == module]
+        objs.update({f"{module}.{n}": getattr(mod, n) for n in names})
+    for name in re.findall(r"\.\. autofunction:: (\S+)", api):
+        module, _, attr = name.rpartition(".")
+        objs[name] = getattr(importlib.import_module(module), attr)
+    out = []
+    for name, obj in objs.items():
+        if inspect.isclass(obj):
+            out.append((name, obj, "class"))
+            out += [(f"{name}.{m}", f, "method") for m, f in vars(obj).items()
+                    if not m.startswith("_") and callable(f) and f.__doc__]
+        elif callable(obj):
+            out.append((name, obj, "function"))
+    return out
+
+
+def test_no_public_docstring_is_garbled_by_napoleon():
+    """Issue 33: Patch's examples after its Parameters section were rendered as ~60 parameters ('7)', 'np', ...).
+    Every object of the API reference goes through napoleon here, as in `make docs` (where api_check fails the
+    build): every documented parameter is one of the signature's and no field holds a doctest line."""
+    check = _api_check()
+    objects = _documented_objects()
+    assert len(objects) > 60
+    bad = {name: check.field_problems(obj, _napoleon_fields(obj, what)) for name, obj, what in objects}
+    assert {k: v for k, v in bad.items() if v} == {}
+
+
+def test_the_api_check_catches_the_old_patch_docstring():
+    check = _api_check()
+
+    def garbled(n, alpha):
+        """A patch.
+
+        Parameters
+        ----------
+        n : the order.
+        alpha : the shape parameter.
+
+        Control-net order for n = 1 (delta_1 = 7):
+
+        >>> import numpy as np
+        >>> net = np.arange(14.0).reshape(7, 2)
+        """
+
+    problems = check.field_problems(garbled, _napoleon_fields(garbled, "function"))
+    assert any("doctest" in p for p in problems) and any("not in the signature" in p for p in problems), problems
+
+
+def _plain_math():
+    sys.path.insert(0, str(DOCS / "_ext"))
+    try:
+        import plain_math
+    finally:
+        sys.path.remove(str(DOCS / "_ext"))
+    return plain_math
+
+
+@pytest.mark.parametrize("text, want", [
+    ("For R_{2n,2n−i,j} (Eqs. (8), (9)) and", "For $R_{2n,2n-i,j}$ (Eqs. (8), (9)) and"),
+    ("the system T_{2n}^α non-negative", r"the system $T_{2n}^\alpha$ non-negative"),
+    ("Write σ = x + y + z and", r"Write $\sigma = x + y + z$ and"),
+    ("Δ = {x + y + z = 1, x, y, z ≥ 0}.", r"$\Delta = \{x + y + z = 1, x, y, z \ge  0\}$."),
+    ("is (1 + 2cX + X²)^n here", "is $(1 + 2cX + X^{2})^n$ here"),
+    ("on 0 < c < 1 (Sturm), so x_f(α) > 0 and", r"on $0 < c < 1$ (Sturm), so $x_f(\alpha) > 0$ and"),
+    ("`R_{2n}` in code and $a_b$ as math stay", "`R_{2n}` in code and $a_b$ as math stay"),
+    ("times multinomial(r). So", r"times $\operatorname{multinomial}(r)$. So"),
+])
+def test_plain_math_inline(text, want):
+    assert _plain_math().convert_inline(text) == want
+
+
+def test_plain_math_display_and_untouched_blocks():
+    pm = _plain_math()
+    src = ("Text with T_{2n}.\n\n  sin²(β/2) = sin²(u/2) + sin²(w/2)   whenever u + w = β.          (U)\n\n"
+           "```python\nx_1 = a^2\n```\n\n## Heading with R_{2n}\n")
+    out = pm.convert(src).split("\n")
+    assert out[0] == "Text with $T_{2n}$."
+    assert out[2].startswith(r"$$\sin^{2}(\beta/2) = ") and out[2].endswith(r"\tag{U}$$")
+    assert r"\text{whenever}" in out[2]
+    assert "x_1 = a^2" in out and "## Heading with R_{2n}" in out
+    assert pm.convert("<!-- plain-math: off -->\nR_{2n}") == "<!-- plain-math: off -->\nR_{2n}"
+
+
+class _Text(__import__("html.parser").parser.HTMLParser):
+    """The text of a built page outside code, math, scripts and navigation; and how many math elements it has."""
+
+    def __init__(self):
+        super().__init__()
+        self.stack, self.skip, self.text, self.math = [], 0, [], 0
+
+    def handle_starttag(self, tag, attrs):
+        if tag in ("br", "img", "meta", "link", "input", "hr"):
+            return
+        cls = (dict(attrs).get("class") or "").split()
+        skip = tag in ("code", "pre", "script", "style", "nav", "aside", "head") or "math" in cls
+        self.math += "math" in cls
+        self.stack.append(skip)
+        self.skip += skip
+
+    def handle_endtag(self, tag):
+        if tag not in ("br", "img", "meta", "link", "input", "hr") and self.stack:
+            self.skip -= self.stack.pop()
+
+    def handle_data(self, data):
+        if not self.skip:
+            self.text.append(data)
+
+
+def test_proof_pages_render_their_formulas_as_math(tmp_path):
+    """Issue 33: the proof pages showed `R_{2n,2n−j,j}` as plain text.  Every docs/*.md page (the proofs, and
+    pages added later) is built; none may show an index `x_{..}`/`x_k` or a power `x^k` outside math."""
+    pytest.importorskip("sphinx")
+    pytest.importorskip("myst_parser")
+    out = tmp_path / "html"
+    proc = subprocess.run([sys.executable, "-m", "sphinx", "-q", "-W", "--keep-going", "-b", "html", str(DOCS),
+                           str(out)], capture_output=True, text=True)
+    assert proc.returncode == 0, proc.stderr[-3000:]
+    pages = [md for md in sorted(DOCS.glob("*.md")) if md.name != "index.md"]
+    assert {"question1_for_all_n.md", "limit_for_all_n.md"} <= {p.name for p in pages}
+    plain = re.compile(r"(?<![A-Za-z])[A-Za-zα-ωΩΔ][′']*_(?:\{|[A-Za-z0-9](?![a-z]))|\^[{(0-9A-Za-zα-ω]")
+    for md in pages:
+        parser = _Text()
+        parser.feed((out / md.with_suffix(".html").name).read_text(encoding="utf-8"))
+        text = " ".join(parser.text)
+        left = [text[max(0, m.start() - 30):m.end() + 30] for m in plain.finditer(text)]
+        assert left == [], (md.name, left[:5])
+        assert parser.math >= 20, (md.name, parser.math)

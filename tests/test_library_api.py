@@ -157,3 +157,73 @@ def test_version_is_exported():
     assert (Path(pr.__file__).parent / "py.typed").is_file()
     for name in pr.__all__:
         assert hasattr(pr, name), name
+
+
+def _np_torus(u, v, w):
+    return ((2 + np.sin(u)) * np.cos(v), (2 + np.sin(u)) * np.sin(v), np.cos(u))
+
+
+def test_fit_float_takes_a_numpy_written_surface():
+    """Issue 33: fit(surface, 2, alpha, 'float') called surface with mpf: TypeError: loop of ufunc does not support
+    argument 0 of type mpf.  The float route fits with floats; the torus is exact at order 2 (Example 6.1)."""
+    import mpmath
+
+    alpha = np.pi / 2
+    net = pr.fit(_np_torus, 2, alpha, "float")
+    assert net.dtype == np.float64 and net.shape == (19, 3)
+    q = pr.sample_points(alpha, 60, seed=11)
+    exact = np.array([_np_torus(*p) for p in q])
+    assert abs(pr.Patch(2, alpha, net)(q) - exact).max() < 1e-12
+    # independent: the mp fit of the same torus written with mpmath
+    mp_net = pr.fit(lambda u, v, w: ((2 + mpmath.sin(u)) * mpmath.cos(v), (2 + mpmath.sin(u)) * mpmath.sin(v),
+                                     mpmath.cos(u)), 2, alpha, "mp", dps=30).astype(float)
+    assert abs(net - mp_net).max() < 1e-11
+    with pytest.raises(ValueError, match=r"not in the span of T_\{2\}"):
+        pr.fit(_np_torus, 1, alpha, "float")  # the torus needs order 2
+
+
+def test_fit_says_what_the_surface_must_take():
+    with pytest.raises(TypeError, match=r"^surface: fit\(\.\.\., 'mp'\) calls it with mpmath numbers .*arith='float'"):
+        pr.fit(_np_torus, 2, 1.0, "mp")
+    with pytest.raises(TypeError, match=r"surface: fit\(\.\.\., 'float'\) needs real coordinates"):
+        pr.fit(lambda u, v, w: ("a", "b"), 2, 1.0, "float")
+    with pytest.raises(ValueError, match="n must be"):
+        pr.fit(_np_torus, 11, 1.0, "float")
+
+
+def test_first_compilation_is_announced_once(monkeypatch):
+    """The first evaluation in a new environment compiled for 10-17 s in silence: one line on stderr, once."""
+    import io as _io
+
+    from paper_repro.core import fast_jit
+
+    if not fast_jit.available():
+        pytest.skip("numba is not installed: nothing is compiled")
+    monkeypatch.setattr(fast_jit, "_ANNOUNCED", set())
+    monkeypatch.setattr(fast_jit, "_is_cached", lambda dispatcher: False)
+    monkeypatch.delenv("PAPER_REPRO_NO_CACHE", raising=False)
+    out = _io.StringIO()
+    assert fast_jit.announce_compilation("values", out)
+    assert not fast_jit.announce_compilation("values", out)
+    lines = out.getvalue().splitlines()
+    assert len(lines) == 1 and "compiling the float64 point kernel" in lines[0] and "once per environment" in lines[0]
+    monkeypatch.setattr(fast_jit, "_is_cached", lambda dispatcher: True)
+    assert not fast_jit.announce_compilation("derivatives", out)  # already in numba's cache: silent
+
+
+@pytest.mark.slow
+def test_first_compilation_message_in_a_fresh_cache(tmp_path):
+    import subprocess
+    import sys
+
+    from paper_repro.core import fast_jit
+
+    if not fast_jit.available():
+        pytest.skip("numba is not installed")
+    code = "import numpy as np, paper_repro as pr; pr.Patch(1, 1.0, np.ones((7, 3)))(pr.sample_points(1.0, 3))"
+    env = {**__import__("os").environ, "PAPER_REPRO_CACHE": str(tmp_path), "PAPER_REPRO_KERNEL": "numba"}
+    env.pop("PAPER_REPRO_NO_CACHE", None)
+    first = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True, timeout=300)
+    second = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True, timeout=300)
+    assert first.stderr.count("compiling the float64 point kernel") == 1, first.stderr
+    assert "compiling" not in second.stderr, second.stderr

@@ -5,6 +5,8 @@ import subprocess
 import sys
 from pathlib import Path
 
+import pytest
+
 ROOT = Path(__file__).resolve().parent.parent
 
 
@@ -36,3 +38,14 @@ def test_makefile_stops_on_an_old_python(tmp_path):
     assert "needs Python >= 3.11" in proc.stderr and "3.10.12" in proc.stderr
     assert not (tmp_path / "venv").exists()
     assert sys.version_info >= (3, 11)
+
+
+@pytest.mark.parametrize("target, var", [("test", "PYTHON"), ("test-pythons", "PYTHON"),
+                                         ("test-pythons", "PYTHONS"), ("reproduce", "PYTHON")])
+def test_makefile_stops_on_a_python_that_does_not_run(target, var):
+    """`make test PYTHON=python3.99` stopped nothing: an empty version chose the 3.11 .venv and tested that."""
+    proc = subprocess.run(["make", "--no-print-directory", "-n", "-C", str(ROOT), target, f"{var}=python3.99"],
+                          capture_output=True, text=True, timeout=60)
+    assert proc.returncode != 0, proc.stdout
+    assert "python3.99 does not run" in proc.stderr, proc.stderr
+    assert "pytest" not in proc.stdout and "paper_repro" not in proc.stdout, proc.stdout

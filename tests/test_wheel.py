@@ -37,6 +37,7 @@ def _tree(path: Path) -> dict[str, tuple[int, int]]:
 
 def _readme_example() -> str:
     text = (ROOT / "README.md").read_text(encoding="utf-8")
+    text = text[text.index("## Using the library"):]  # the example that writes patch.obj (not the quick start's)
     blocks = re.findall(r"```python\n(.*?)```", text, re.S)
     assert blocks, "README.md has no python example"
     return blocks[0]

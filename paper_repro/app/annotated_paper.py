@@ -118,8 +118,8 @@ def prepare_math(tex: str) -> str:
     tex = _colour_macros(tex)
     tex = tex.replace(r"\dfrac", r"\frac").replace(r"\dbinom", r"\binom").replace(r"\limits", "")
     tex = re.sub(r"\\overfrown\s*\{", r"\\overset{\\frown}{", tex)
-    tex = re.sub(r"\\operatorname\s*\{([^}]*)\}", r"\\mathrm{\1}", tex)
-    tex = re.sub(r"\\text\s*\{", r"\\mathrm{", tex)
+    # \text and \operatorname stay: latex2mathml writes <mtext> with the spaces around words ("\text{ and }") and
+    # <mo>mod</mo> with an operator's spacing; as \mathrm they lost both ("2(mod4)andz")
     tex = re.sub(r"\\(?:mathbf|boldsymbol)\s*\{", r"\\mathbf{", tex)
     tex = tex.replace(r"\vert", "|").replace(r"\ell", "l")
     tex = re.sub(r"(?<!\\)\\(?=\s|$)", r"\\;", tex)  # control space "\ " (latex2mathml prints the backslash)
@@ -199,6 +199,8 @@ class Block:
     labels: list[str] = field(default_factory=list)
     entries: list[dict] = field(default_factory=list)
     errata: list[dict] = field(default_factory=list)
+    #: entries of the index that cover lines of this block but stand at another block (where their badge is)
+    covered: list[tuple[dict, Block]] = field(default_factory=list)
 
 
 class Renderer:
@@ -493,7 +495,7 @@ class Renderer:
         b = self.add("heading", start, end, anchor, f"{num} {title}".strip(), labels)
         tag = "h2" if level == "section" else "h3"
         return (f'<{tag} id="{html.escape(anchor)}" data-tex="{b.first}-{b.last}">{html.escape(num)} {title}'
-                f"</{tag}>")
+                f"</{tag}>{{BADGES:{len(self.blocks) - 1}}}")
 
     def display(self, env: str, body: str, start: int, end: int) -> str:
         labels = re.findall(r"\\label\{([^}]*)\}", body)
@@ -572,15 +574,39 @@ def place_entries(blocks: list[Block], entries: list[dict]) -> list[dict]:
             continue
         best = min(hits, key=lambda bl: (order[bl.kind], bl.last - bl.first))
         best.entries.append(e)
+        for bl in hits:  # a display, statement or figure whose lines the entry also covers points to its badge
+            if bl is not best and bl.kind in ("display", "statement", "figure"):
+                bl.covered.append((e, best))
     return unplaced
 
 
+def _same_erratum(a: dict, b: dict) -> bool:
+    text = ("printed", "corrected")
+    return a.get("id") == b.get("id") or [a.get(k) for k in text] == [b.get(k) for k in text]
+
+
+def held_errata(entries: list[dict], errata: list[dict]) -> dict[str, dict]:
+    """For each erratum of ``data/errata.json`` that an entry of the line index holds (the same id, or the same
+    printed and corrected text), that entry."""
+    held = {}
+    for er in errata:
+        hit = next((e for e in entries if e.get("status") == "erratum" and _same_erratum(e.get("erratum") or {}, er)),
+                   None)
+        if hit is not None:
+            held[er["id"]] = hit
+    return held
+
+
 def place_errata(blocks: list[Block], errata: list[dict], entries: list[dict]) -> list[dict]:
-    """Errata of ``data/errata.json`` the line index does not already hold, at the block carrying their label."""
-    covered = {e.get("near") for e in entries if e.get("status") == "erratum"}
+    """Errata of ``data/errata.json`` the line index does not already hold, at the block carrying their label.
+
+    An erratum is held when an index entry has the same erratum (same id, or the same printed and corrected text):
+    its badge then names the erratum's id (before, a label match hid ``torus-b_{4,3,1}-x`` from the page and showed
+    five errata twice, at their label and at their line)."""
+    held = held_errata(entries, errata)
     unplaced = []
     for er in errata:
-        if er["paper_ref"] in covered:
+        if er["id"] in held:
             continue
         hit = next((b for b in blocks if er["paper_ref"] in b.labels), None)
         if hit is None:
@@ -667,7 +693,44 @@ KIND_MEANING = {
 }
 
 
-def badge_html(block: Block, linker: Linker) -> str:
+_HEAD = {"checked": "✓ checked", "erratum": "✗ erratum", "excused": "○ excused"}
+_CLS = {"checked": "ok", "erratum": "err", "excused": "exc"}
+
+
+def _where(block: Block) -> str:
+    """How a block is named in a pointer to it: its number, or its kind and source lines."""
+    if block.kind == "display":
+        return f"display {block.title}" if block.title else f"the display at lines {block.first}–{block.last}"
+    if block.title:
+        return block.title
+    return {"text": "the paragraph", "heading": "the heading"}.get(block.kind, block.kind) + \
+        f" at lines {block.first}–{block.last}"
+
+
+def covered_badge(block: Block) -> str:
+    """The badge of a block whose lines the index covers with entries that stand at other blocks (a statement whose
+    displays are checked, a display inside a checked paragraph): the worst of their statuses, not counted again,
+    with a link to each entry's badge."""
+    seen, targets, rows = [], [], []
+    for e, at in block.covered:
+        if e["id"] in seen:
+            continue
+        seen.append(e["id"])
+        link = f'<a href="#{html.escape(at.anchor)}">{html.escape(_where(at))}</a>'
+        if link not in targets:
+            targets.append(link)
+        rows.append(f'<div>{html.escape(e.get("status", ""))}: lines {e["tex"][0]}–{e["tex"][1]}, entry '
+                    f"<code>{html.escape(str(e['id']))}</code>, badge at {link}</div>")
+    statuses = [e.get("status") for e, _ in block.covered]
+    st = next(s for s in ("erratum", "checked", "excused") if s in statuses)
+    what = {"erratum": "holds an erratum", "checked": "checked", "excused": "excused"}[st]
+    return (f'<details class="badge {_CLS[st]} covered" data-covered="{html.escape(st)}"><summary>'
+            f"{_HEAD[st][0]} {what}, see the badge{'s' if len(targets) > 1 else ''} of {', '.join(targets)}"
+            f"</summary>{''.join(rows)}</details>")
+
+
+def badge_html(block: Block, linker: Linker, errata_ids: dict[str, list[str]] | None = None) -> str:
+    errata_ids = errata_ids or {}
     items = []
     for e in block.entries:
         st = e.get("status", "not yet checked")
@@ -681,6 +744,9 @@ def badge_html(block: Block, linker: Linker) -> str:
         if st == "erratum" and e.get("erratum"):
             er = e["erratum"]
             rows.append(_pair(er.get("printed"), er.get("corrected"), er.get("severity"), er.get("evidence")))
+            for eid in errata_ids.get(str(e.get("id")), []):
+                rows.append(f'<div>erratum <code>{html.escape(eid)}</code> of <a href="../figures/index.html#errata">'
+                            "data/errata.json</a></div>")
         if st == "excused" and e.get("reason"):
             rows.append(f"<div>reason: {html.escape(e['reason'])}</div>")
         for key in ("check", "how", "proof_kind"):
@@ -706,6 +772,8 @@ def badge_html(block: Block, linker: Linker) -> str:
                      f"{_pair(er['printed'], er['corrected'], er['severity'], er['evidence'])}"
                      f'<div>from <a href="../figures/index.html#errata">data/errata.json</a> (label '
                      f"<code>{html.escape(er['paper_ref'])}</code>)</div></details>")
+    if not items and block.covered:
+        items.append(covered_badge(block))
     if not items and block.kind in ("display", "statement", "figure"):
         ctx = linker.label_context(block.labels)
         body = (f"<div>No entry of the line-by-line index covers lines {block.first}–{block.last}.</div>"
@@ -724,11 +792,11 @@ def _pair(printed, corrected, severity, evidence) -> str:
 
 
 CSS = """
-body{font-family:Georgia,serif;max-width:980px;margin:1.5em auto;padding:0 1em;color:#222;line-height:1.5}
+body{font-family:Georgia,serif;max-width:1100px;margin:1.5em auto;padding:0 1em;color:#222;line-height:1.5}
 h1{font-size:1.6em}h2{margin-top:2em;border-bottom:1px solid #ccc}
-.display{position:relative;margin:0.8em 0;padding:0.3em 5.5em 0.3em 0.5em;overflow-x:auto;border-left:3px solid #ddd}
+.display{position:relative;margin:0.8em 0;padding:0.3em 4.2em 0.3em 0.5em;border-left:3px solid #ddd}
 .display .eqno{position:absolute;right:0.3em;top:0.4em;color:#333}
-.math{overflow-x:auto}math{font-size:1.05em}
+.math{overflow-x:auto;overflow-y:hidden;padding:0.25em 0}math{font-size:1.05em}
 code.tex{white-space:pre-wrap;background:#f6f6f6;display:inline-block}
 .stmt{margin:1em 0;padding:0.4em 0.8em;background:#fafaf5;border-left:3px solid #cc9}
 .proof{margin:0.6em 0 1em 0;padding-left:0.8em;border-left:2px dotted #ccc}
@@ -748,6 +816,19 @@ nav.toc{font-family:sans-serif;font-size:90%;columns:2}
 """
 
 
+#: Displays wider than their box are set in a smaller size until they fit (down to 55 %), as a PDF viewer scales a
+#: page: MathML has no line breaking, and the rows of an alignment are already broken where the source has ``\\``.
+#: Run at load and on resize; ``check_paper`` measures every display box afterwards.
+FIT_JS = """
+function fitDisplays(){document.querySelectorAll('.display .math').forEach(function(m){
+  var math=m.querySelector('math'); if(!math) return; math.style.fontSize='';
+  var base=parseFloat(getComputedStyle(math).fontSize), size=base;
+  while(m.scrollWidth>m.clientWidth+1 && size>0.55*base){size-=0.02*base; math.style.fontSize=size+'px';}
+  m.dataset.scale=(size/base).toFixed(2);});}
+window.addEventListener('load',fitDisplays);window.addEventListener('resize',fitDisplays);
+"""
+
+
 def build(source: str, index: list[dict], manifest: list[dict], claims: list[dict], pmap: dict,
           lines: dict | None, errata: list[dict]) -> tuple[str, dict]:
     """(the page, a summary: badges by status, unplaced entries and errata, math conversion counts)."""
@@ -757,26 +838,33 @@ def build(source: str, index: list[dict], manifest: list[dict], claims: list[dic
     unplaced = place_entries(r.blocks, entries)
     loose = place_errata(r.blocks, errata, entries)
     linker = Linker(r.claims, {m["id"] for m in manifest}, r.map)
+    errata_ids: dict[str, list[str]] = {}
+    for eid, entry in held_errata(entries, errata).items():
+        errata_ids.setdefault(str(entry["id"]), []).append(eid)
     counts = dict.fromkeys(STATUSES, 0)
     for k, b in enumerate(r.blocks):
-        badges = badge_html(b, linker)
-        counts_here = re.findall(r'data-status="([^"]+)"', badges)
-        for st in counts_here:
+        placeholder = f"{{BADGES:{k}}}"
+        badges = badge_html(b, linker, errata_ids)
+        if placeholder not in body:
+            raise RuntimeError(f"block {b.kind} at lines {b.first}-{b.last} has no place for its badges")
+        for st in re.findall(r'data-status="([^"]+)"', badges):  # one tally: the badges on the page
             counts[st] = counts.get(st, 0) + 1
-        body = body.replace(f"{{BADGES:{k}}}", badges, 1)
+        body = body.replace(placeholder, badges, 1)
     displays = sum(1 for b in r.blocks if b.kind == "display")
     toc = "".join(f'<li><a href="#{html.escape(b.anchor)}">{b.title}</a></li>' for b in r.blocks
                   if b.kind == "heading")
     if lines:
         cov = lines.get("coverage", {})
-        source_note = (f"Badges from <code>data/paper_lines.json</code>, the line-by-line index: "
-                       f"{cov.get('lines', len(entries))} entries, {cov.get('checked', '?')} checked, "
-                       f"{cov.get('erratum', '?')} errata, {cov.get('excused', '?')} excused.")
+        source_note = (f"Badges from <code>data/paper_lines.json</code>, the line-by-line index of "
+                       f"{cov.get('lines', len(entries))} entries: one badge per entry, {counts['checked']} checked, "
+                       f"{counts['erratum']} errata, {counts['excused']} excused (the table below); a display or "
+                       "statement whose lines an entry at another place covers points to that badge.")
     else:
         source_note = ("<code>data/paper_lines.json</code> (the line-by-line index) is not present yet: every display "
                        "is marked <i>not yet checked</i>; the errata of <code>data/errata.json</code> are shown at "
                        "their labels, and each badge lists what the paper map relates to the label.")
-    summary = (f'<table class="summary"><tr><th>badges</th>{"".join(f"<th>{s}</th>" for s in STATUSES)}</tr>'
+    summary = (f'<table class="summary" data-counts="{html.escape(json.dumps(counts))}"><tr><th>badges</th>'
+               f'{"".join(f"<th>{s}</th>" for s in STATUSES)}</tr>'
                f'<tr><td>count</td>{"".join(f"<td>{counts.get(s, 0)}</td>" for s in STATUSES)}</tr></table>')
     extra = ""
     if unplaced or loose:
@@ -800,7 +888,7 @@ def build(source: str, index: list[dict], manifest: list[dict], claims: list[dic
             f"<p>{displays} displays; {r.stats['math']} formulas as MathML, {r.stats['math_fallback']} shown as "
             "LaTeX source (the converter failed on them).</p></div>",
             body.replace("<!--TOC-->", f'<nav class="toc"><b>Contents</b><ul>{toc}</ul></nav>', 1), extra,
-            "</body></html>\n"]
+            f"<script>{FIT_JS}</script>", "</body></html>\n"]
     info = {"badges": counts, "displays": displays, "unplaced_entries": len(unplaced), "unplaced_errata": len(loose),
             **r.stats}
     return "\n".join(page), info
@@ -808,6 +896,24 @@ def build(source: str, index: list[dict], manifest: list[dict], claims: list[dic
 
 def _load(path: Path, default):
     return json.loads(path.read_text(encoding="utf-8")) if path.exists() else default
+
+
+def paper_line(where, info: dict) -> str:
+    """What ``make paper`` says: one sentence, not the raw summary dict.
+
+    >>> print(paper_line("paper/index.html", {"badges": {"checked": 3, "erratum": 1, "excused": 2,
+    ...       "not yet checked": 0}, "displays": 5, "math": 9, "math_fallback": 0, "unplaced_entries": 0,
+    ...       "unplaced_errata": 0}))  # doctest: +NORMALIZE_WHITESPACE
+    paper: paper/index.html written: 5 displays, 9 formulas as MathML; badges 3 checked, 1 erratum, 2 excused,
+    0 not yet checked.
+    """
+    b = info["badges"]
+    text = (f"paper: {where} written: {info['displays']} displays, {info['math']} formulas as MathML"
+            + (f" ({info['math_fallback']} shown as LaTeX source)" if info["math_fallback"] else "")
+            + f"; badges {b['checked']} checked, {b['erratum']} errat{'um' if b['erratum'] == 1 else 'a'}, "
+            f"{b['excused']} excused, {b['not yet checked']} not yet checked")
+    lost = info["unplaced_entries"] + info["unplaced_errata"]
+    return text + (f"; {lost} index entries or errata without a place (listed at the end)." if lost else ".")
 
 
 def write_paper(source_path: Path = PAPER, out: Path = OUT, lines_path: Path = LINES) -> dict | None:
@@ -819,7 +925,7 @@ def write_paper(source_path: Path = PAPER, out: Path = OUT, lines_path: Path = L
                        _load(DATA / "claims.json", []), _load(DATA / "paper_map.json", {}), _load(lines_path, None),
                        _load(DATA / "errata.json", []))
     write_text(out, page)
-    print(f"paper: {out.relative_to(ROOT) if out.is_relative_to(ROOT) else out}: " + json.dumps(info))
+    print(paper_line(out.relative_to(ROOT) if out.is_relative_to(ROOT) else out, info))
     return info
 
 

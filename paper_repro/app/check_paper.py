@@ -3,10 +3,12 @@
 Checks: every display, statement and figure carries a badge and every badge has one of the four statuses;
 every link of a badge resolves (an anchor of the page, or a file of this repository, and its ``#anchor`` where
 it points into another page of the repository); every image loaded; the formulas were laid out (MathML
-elements with a non-zero width); no horizontal overflow of the page at 1024, 1280 and 1920 px; no console
-errors; no network request (only ``file://`` URLs).  Screenshots: ``reports/paper-1280-top.png`` (the head
-of the page), ``reports/paper-1280-erratum.png`` (an erratum badge opened), ``reports/paper-1280-figure.png``
-(a regenerated figure in its place), ``reports/paper-1024-top.png``.
+elements with a non-zero width); no horizontal overflow of the page, and none of any display box (a display
+that scrolls or is clipped inside its box), at 1024, 1280 and 1920 px; the badge counts of the page's table
+equal the badges in the browser; no console errors; no network request (only ``file://`` URLs).
+Screenshots: ``reports/paper-1280-top.png`` (the head of the page), ``reports/paper-1280-erratum.png`` (an
+erratum badge opened), ``reports/paper-1280-figure.png`` (a regenerated figure in its place),
+``reports/paper-1024-top.png``.
 
 Run: ``python -m paper_repro.app.check_paper [--page paper/index.html]``; exit 0 when every check passes,
 1 otherwise, 3 when no Chromium can be had.
@@ -33,10 +35,16 @@ const unbadged=blocks.filter(b=>!b.querySelector('.badges .badge')).map(b=>b.id)
 const badges=[...document.querySelectorAll('.badge[data-status]')].map(b=>b.dataset.status);
 const links=[...document.querySelectorAll('.badges a, .answers a, .regen a, figure a')].map(a=>a.getAttribute('href'));
 const maths=[...document.querySelectorAll('math')];
+const boxes=[...document.querySelectorAll('.display')].map(b=>{const m=b.querySelector('.math')||b;
+  return {id:b.id, tex:b.dataset.tex, x:m.scrollWidth-m.clientWidth, y:m.scrollHeight-m.clientHeight,
+          scale:parseFloat((b.querySelector('.math')||{dataset:{}}).dataset.scale||'1')};});
+const table=document.querySelector('table.summary');
 const flat=maths.filter(m=>m.getBoundingClientRect().width===0 && m.offsetParent!==null).length;
 return {blocks:blocks.length, unbadged:unbadged, badges:badges, links:links, maths:maths.length, flat_math:flat,
         images:[...document.images].map(i=>[i.getAttribute('src'), i.naturalWidth]),
-        scroll_width:document.documentElement.scrollWidth, inner_width:window.innerWidth};
+        scroll_width:document.documentElement.scrollWidth, inner_width:window.innerWidth,
+        display_overflow:boxes.filter(b=>b.x>1||b.y>1), displays_scaled:boxes.filter(b=>b.scale<1).length,
+        smallest_scale:Math.min(1,...boxes.map(b=>b.scale)), page_counts:table?JSON.parse(table.dataset.counts):null};
 """
 
 
@@ -85,6 +93,12 @@ def check(page: Path = PAGE, shots: Path = ROOT / "reports") -> dict:
                 ".then(()=>setTimeout(done,500));")
             state = driver.execute_script(_JS_STATE)
             res["overflow"][width] = state["scroll_width"] - state["inner_width"]
+            # every display box, not only the page: a display that scrolls (or is clipped) inside its box
+            res.setdefault("display_overflow", {})[width] = [f"{b['id']} (lines {b['tex']}): {b['x']} px wide, "
+                                                            f"{b['y']} px tall too much" for b in state.pop(
+                                                                "display_overflow")]
+            res.setdefault("displays_scaled", {})[width] = [state.pop("displays_scaled"),
+                                                           round(state.pop("smallest_scale"), 2)]
             if width in (1024, 1280):
                 driver.save_screenshot(str(shots / f"paper-{width}-top.png"))
             if width == 1280:
@@ -100,6 +114,9 @@ def check(page: Path = PAGE, shots: Path = ROOT / "reports") -> dict:
     res["bad_status"] = sorted({s for s in res["badges"] if s not in STATUSES})
     counts = {s: res["badges"].count(s) for s in STATUSES}
     res["badges"] = counts
+    # one tally: the badges counted in the browser are the page's own table (and its header)
+    res["counts_disagree"] = None if res.get("page_counts") == counts else {"page": res.get("page_counts"),
+                                                                              "browser": counts}
     res["images_not_loaded"] = [src for src, w in res.pop("images") if not w]
     return res
 
@@ -108,6 +125,7 @@ def passed(res: dict) -> bool:
     return (res["blocks"] > 0 and not res["unbadged"] and sum(res["badges"].values()) >= res["blocks"]
             and not res["bad_links"] and not res["bad_status"] and not res["images_not_loaded"]
             and res["maths"] > 0 and not res["flat_math"] and all(v <= 0 for v in res["overflow"].values())
+            and not any(res["display_overflow"].values()) and not res["counts_disagree"]
             and not res["console_errors"] and not res["external_requests"])
 
 

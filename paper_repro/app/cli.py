@@ -247,6 +247,11 @@ def _main(argv: list[str] | None = None) -> int:
             report.make_figures(args.only)
             return 0
         if args.cmd == "reproduce":
+            import time
+
+            from paper_repro.util.io import data_dir, figures_dir, output_root
+
+            start, start_ns = time.perf_counter(), time.time_ns()
             ok = report.run_claims(None, None, extended=args.extended, write=True)
             if ok and not args.extended:
                 from paper_repro.app import gallery
@@ -256,6 +261,9 @@ def _main(argv: list[str] | None = None) -> int:
             from paper_repro.app.annotated_paper import write_paper
 
             write_paper()
+            written = report.files_written_since(start_ns, [data_dir(), figures_dir(), output_root() / "paper",
+                                                            output_root() / "README.md"])
+            print(report.reproduce_summary(ok, written, time.perf_counter() - start))
             return 0 if ok else 1
     except (ValueError, TypeError) as exc:
         print(f"error: {str(exc).splitlines()[0] if str(exc) else type(exc).__name__}", file=sys.stderr)

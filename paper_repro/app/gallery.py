@@ -306,6 +306,11 @@ def _pair_diff(printed: str, corrected: str) -> str:
     return "; ".join(changes) if 0 < len(changes) <= 3 else ""
 
 
+def _cell(value) -> str:
+    """A value of an evidence record: Python's None (no case of a printed rule applies) in words."""
+    return "<i>no case</i>" if value is None else html.escape(str(value))
+
+
 def evidence_html(text: str) -> str:
     """Evidence text with its embedded Python lists of records (``[{'i': 1, ...}, ...]``) as small tables."""
     import ast
@@ -321,7 +326,7 @@ def evidence_html(text: str) -> str:
         keys = list(dict.fromkeys(k for r in rows for k in r))
         out.append(html.escape(text[last:m.start()]))
         out.append('<table class="mini">' + "<tr>" + "".join(f"<th>{html.escape(str(k))}</th>" for k in keys)
-                   + "</tr>" + "".join("<tr>" + "".join(f"<td>{html.escape(str(r.get(k, '')))}</td>" for k in keys)
+                   + "</tr>" + "".join("<tr>" + "".join(f"<td>{_cell(r.get(k, ''))}</td>" for k in keys)
                                        + "</tr>" for r in rows) + "</table>")
         last = m.end()
     out.append(html.escape(text[last:]))

@@ -21,13 +21,16 @@ the paper's labels reads the committed index, so a clone of this repository alon
 
 from __future__ import annotations
 
+import os
 import re
 from pathlib import Path
 
 from paper_repro.util.io import ROOT
 from paper_repro.util.paper_labels import INDEX, display_of, load_index  # noqa: F401 (re-exported)
 
-PAPER = ROOT.parent / "shared" / "paper" / "triangular-trigonometric-patches.tex"
+#: The paper's LaTeX source: beside the clone (``../shared/paper``), or where ``PAPER_REPRO_PAPER`` points.
+PAPER = Path(os.environ.get("PAPER_REPRO_PAPER")
+             or ROOT.parent / "shared" / "paper" / "triangular-trigonometric-patches.tex")
 
 _TOKEN = re.compile(r"\\(begin|end)\{([A-Za-z*]+)\}|\\(section|subsection)(\*?)\{|\\label\{([^}]*)\}|"
                     r"\\\\|\\nonumber|\\notag|\\newtheorem\{(\w+)\}\{([^}]*)\}(?:\[(\w+)\])?|\\caption\{")

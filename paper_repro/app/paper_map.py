@@ -11,9 +11,8 @@ from __future__ import annotations
 import re
 from pathlib import Path
 
+from paper_repro.app.paper_index import PAPER  # one place says where the paper's source is
 from paper_repro.util.io import ROOT
-
-PAPER = ROOT.parent / "shared" / "paper" / "triangular-trigonometric-patches.tex"
 
 
 def labels_of_paper(path: Path = PAPER) -> list[str] | None:

@@ -11,6 +11,7 @@ from __future__ import annotations
 import hashlib
 import inspect
 import json
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
@@ -90,9 +91,58 @@ def _run_one(job: tuple[str, dict | None, bool]) -> tuple[ClaimResult, Outcome, 
     return run_claim(CLAIMS[cid], ov, extended=extended)
 
 
+@dataclass(frozen=True)
+class ClaimsRun:
+    """What :func:`run_claims` did: true when every claim passed."""
+
+    passed: int
+    failed: tuple[str, ...]
+    errata: int
+
+    def __bool__(self) -> bool:
+        return not self.failed
+
+
+def _duration(seconds: float) -> str:
+    """``27.3 s``, ``5 min 11 s``.
+
+    >>> _duration(27.34), _duration(311.2)
+    ('27.3 s', '5 min 11 s')
+    """
+    if seconds < 60:
+        return f"{seconds:.1f} s"
+    return f"{int(seconds // 60)} min {round(seconds % 60)} s"
+
+
+def files_written_since(start_ns: int, folders: list[Path]) -> int:
+    """Files below ``folders`` written (replaced) at or after ``start_ns`` (``time.time_ns()``)."""
+    count = 0
+    for folder in folders:
+        if folder.is_file():
+            count += folder.stat().st_mtime_ns >= start_ns
+            continue
+        for path in folder.rglob("*") if folder.is_dir() else ():
+            count += path.is_file() and not path.name.startswith(".") and path.stat().st_mtime_ns >= start_ns
+    return count
+
+
+def reproduce_summary(run: ClaimsRun, files: int, seconds: float) -> str:
+    """The last line of ``make reproduce``: claims passed, errata, files written, time.
+
+    >>> reproduce_summary(ClaimsRun(29, (), 32), 140, 311.0)
+    'reproduce: 29 of 29 claims passed, 32 errata of the paper recorded, 140 files written, 5 min 11 s.'
+    >>> reproduce_summary(ClaimsRun(28, ("torus_exact",), 32), 3, 20.0)
+    'reproduce: 28 of 29 claims passed (failed: torus_exact), 32 errata of the paper recorded, 3 files written, 20.0 s.'
+    """
+    total = run.passed + len(run.failed)
+    failed = f" (failed: {', '.join(run.failed)})" if run.failed else ""
+    return (f"reproduce: {run.passed} of {total} claims passed{failed}, {run.errata} errata of the paper recorded, "
+            f"{files} files written, {_duration(seconds)}.")
+
+
 def run_claims(only: list[str] | None, overrides: dict[str, dict[str, Any]] | None, extended: bool = False,
-               write: bool = True, executor=None) -> bool:
-    """Run claims, print the table, and (if ``write``) publish data; returns True if all pass.
+               write: bool = True, executor=None) -> ClaimsRun:
+    """Run claims, print the table, and (if ``write``) publish data; the result is true if all pass.
 
     ``overrides`` maps claim ids to parameter overrides (each checked by :func:`run_claim`).  The claims
     run through :func:`paper_repro.util.sweep.sweep` (local processes on every core by default, or
@@ -157,7 +207,7 @@ def run_claims(only: list[str] | None, overrides: dict[str, dict[str, Any]] | No
             write_derivative_tables()
         _record_timings(build_dir() / f"timings{suffix}.json", seconds, cached)
         write_json(build_dir() / f"measured_raw{suffix}.json", raw)
-    return not failed
+    return ClaimsRun(len(results) - len(failed), tuple(failed), len(unique_errata(errata)))
 
 
 def unique_errata(errata: list[dict]) -> list[dict]:

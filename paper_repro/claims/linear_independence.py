@@ -75,10 +75,14 @@ def modp_case(n: int, t: str, seed: int, control: bool = False) -> int:
        alpha_range=(1e-6, 3.1415926, "measured for n <= 8: outside it sigma_min ~ C_n alpha^2 (or near pi) drops below "
                                      "1e-25, where its published value is indistinguishable from rounding noise"))
 def run(ns, alphas, dps, svd_n_max, exact_ns, rational_ts, seed) -> Outcome:
-    numeric = [numeric_case(n, a, dps, svd_n_max, seed) for n in progress(ns, "rank (mp) n")
-               for a in alphas]
-    exact = {t: {str(n): modp_case(n, t, seed) for n in progress(exact_ns, f"rank mod p t={t} n")}
-             for t in rational_ts}
+    # one progress bar for the claim: the mp ranks (per n, every alpha), then the ranks mod p (per t and n)
+    jobs = [("mp", n) for n in ns] + [(t, n) for t in rational_ts for n in exact_ns]
+    numeric, exact = [], {t: {} for t in rational_ts}
+    for what, n in progress(jobs, "linear_independence (ranks)"):
+        if what == "mp":
+            numeric += [numeric_case(n, a, dps, svd_n_max, seed) for a in alphas]
+        else:
+            exact[what][str(n)] = modp_case(n, what, seed)
     numeric_ok = all(r["rank"] == r["delta_n"] for r in numeric)
     exact_ok = all(exact[t][str(n)] == delta(n) for t in rational_ts for n in exact_ns)
     ctrl_n = 3

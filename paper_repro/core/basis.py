@@ -54,8 +54,13 @@ def evaluate(n: int, alpha, points, arith: str | Context = "float", *, dps: int 
         Omega^alpha; multiplied by the scaled coefficients ``s^{2n+j} r`` it gives the blending values without
         overflow for any alpha, :func:`paper_repro.core.domain.scaled_half_angle_values`).
 
-    Columns follow :func:`paper_repro.core.labels.united_system` (or ``labels``).
+    Returns
+    -------
+    numpy.ndarray
+        ``(P, delta_n)`` values; columns follow :func:`paper_repro.core.labels.united_system` (or ``labels``).
 
+    Examples
+    --------
     >>> import numpy as np
     >>> v = evaluate(1, 1.0, [[0.5, 0.25, 0.25]])
     >>> v.shape, bool(np.all(v > 0))

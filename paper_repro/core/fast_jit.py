@@ -24,6 +24,8 @@ from __future__ import annotations
 
 import importlib.util
 import os
+import sys
+import threading
 
 import numpy as np
 
@@ -393,6 +395,41 @@ def _safe_cache_class():
     return SafeFunctionCache
 
 
+_ANNOUNCED: set[str] = set()
+_ANNOUNCE_LOCK = threading.Lock()
+
+
+def _is_cached(dispatcher) -> bool:
+    """Whether numba's on-disk cache holds an index for ``dispatcher`` (True when that cannot be told)."""
+    try:
+        return os.path.exists(dispatcher._cache._cache_file._index_path)  # numba's FunctionCache: its index file
+    except AttributeError:
+        return True
+
+
+def announce_compilation(kind: str, stream=None) -> bool:
+    """Say once per process, on stderr, that the first evaluation compiles (10-17 s of silence before).
+
+    ``kind`` is ``"values"`` or ``"derivatives"``; nothing is said when numba's on-disk cache already holds the
+    function (a later process loads it in about 1 s).  Returns whether a line was written.
+    """
+    with _ANNOUNCE_LOCK:
+        if kind in _ANNOUNCED:
+            return False
+        _ANNOUNCED.add(kind)
+        from paper_repro.util.cache import cache_dir, enabled
+
+        if enabled() and _is_cached(_compiled()[kind]):
+            return False
+
+        where = (f"once per environment, kept in {cache_dir() / 'numba'}" if enabled()
+                 else "in every process, since PAPER_REPRO_NO_CACHE is set")
+        what = "point" if kind == "values" else "derivative"
+        print(f"paper_repro: compiling the float64 {what} kernel (numba, about 10-20 s; {where})",
+              file=stream or sys.stderr, flush=True)
+        return True
+
+
 def _compiled() -> dict:
     """The compiled functions, built on first use.  numba's on-disk cache goes to ``<cache_dir>/numba``
     (:func:`paper_repro.util.cache.cache_dir`; ``NUMBA_CACHE_DIR`` if set), never into the install location:
@@ -461,12 +498,16 @@ class JitKernel:
 
     def values(self, s: np.ndarray, c: np.ndarray, net_t: np.ndarray, out: np.ndarray) -> np.ndarray:
         """``out[p] = net_t @ B(p)`` for ``(3, P)`` rows ``s``, ``c``; ``net_t`` is ``(m, F)``, ``out`` ``(P, m)``."""
+        if "values" not in _ANNOUNCED:
+            announce_compilation("values")
         _compiled()["values"](s, c, self.pa, self.pb, self.var_of, self.smax, self.cmax, self.idx, net_t, out)
         return out
 
     def derivatives(self, s, c, s2: float, dirs: np.ndarray, net_t: np.ndarray, outs: np.ndarray, vals=None):
         """Per direction row of ``dirs``, ``outs[r]`` (``(D, m, P)``) the contracted brackets (2s times the directional
         derivatives); ``vals`` (``(m, P)``) the values, if given."""
+        if "derivatives" not in _ANNOUNCED:
+            announce_compilation("derivatives")
         dirs = np.ascontiguousarray(dirs, dtype=np.float64)
         for r in range(0, dirs.shape[0], 2):  # the kernel takes one or two directions per pass
             with_values = vals is not None and r == 0

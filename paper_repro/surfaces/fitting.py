@@ -17,18 +17,19 @@ import numpy as np
 from flint import fmpq
 
 from paper_repro.core.collocation import collocate
-from paper_repro.core.context import Context, ExactContext, MpContext, get_context
+from paper_repro.core.context import Context, ExactContext, FloatContext, MpContext, get_context
 from paper_repro.core.domain import (
     RationalAngle,
     RationalPoints,
     half_angle_values,
     mp_domain_points,
+    sample_points,
     sample_rational_points,
 )
 from paper_repro.core.fourier import cos_sin_combination, full_angles
 from paper_repro.core.labels import delta
 from paper_repro.core.normalization import evaluate_normalized
-from paper_repro.util.limits import MAX_DPS, MAX_N_FIT, MAX_N_FIT_EXACT, MIN_DPS, check_int
+from paper_repro.util.limits import MAX_DPS, MAX_N_FIT, MAX_N_FIT_EXACT, MAX_N_FIT_FLOAT, MIN_DPS, check_int
 from paper_repro.util.validation import check_alpha
 
 
@@ -145,7 +146,7 @@ def fit_mp(surface: Callable, n: int, alpha, dps: int = 40, verify: int = 4, see
             a = ctx.convert(alpha)
             pts = mp_domain_points(a, d + verify, seed + k)
             basis = evaluate_normalized(n, a, pts, ctx)
-            return basis, np.array(surface_coordinates([surface(*p) for p in pts], exact=False), dtype=object)
+            return basis, _values(surface, pts, "mp")
 
     try:
         res = collocate(ctx, system, d, what="fit", rtol=10.0 ** (-(tol_digits or dps - 15)))
@@ -154,13 +155,64 @@ def fit_mp(surface: Callable, n: int, alpha, dps: int = 40, verify: int = 4, see
     return res.solution
 
 
+def _values(surface: Callable, pts, route: str) -> np.ndarray:
+    """``surface`` at every point, as rows; a surface written for another arithmetic gets one sentence."""
+    try:
+        rows = [surface(*p) for p in pts]
+    except TypeError as exc:
+        if route == "mp":
+            need = ("mpmath numbers (mpf): write it with mpmath (mpmath.sin, ...), or fit a numpy-written "
+                    "surface with arith='float'")
+        else:
+            need = "Python floats u, v, w and returns a sequence of real coordinates"
+        raise TypeError(f"surface: fit(..., {route!r}) calls it with {need} (it raised {exc})") from None
+    return np.array(surface_coordinates(rows, exact=False), dtype=object)  # checked: real, finite, same count
+
+
+def fit_float(surface: Callable, n: int, alpha, verify: int = 8, seed: int = 21, rtol: float = 1e-9) -> np.ndarray:
+    """Control net (float64 ``(delta_n, d)``) of ``surface(u, v, w) -> sequence`` called with floats.
+
+    For a surface written with numpy (``np.sin``): least squares in the normalized basis at ``2 delta_n``
+    seeded points of Omega^alpha, verified at ``verify`` further points.  ``ValueError`` if the residual there
+    exceeds ``rtol`` times the size of the terms (the surface is not in the span, or float64 cannot tell).
+
+    >>> import numpy as np
+    >>> net = fit_float(lambda u, v, w: (np.cos(u), np.sin(v)), 1, np.pi / 2)
+    >>> net.shape
+    (7, 2)
+    """
+    n = check_int(n, "n", 1, MAX_N_FIT_FLOAT, why="float least squares with delta_n unknowns")
+    check_alpha(alpha)
+    verify = check_int(verify, "verify", 1, 10_000)
+    alpha = float(alpha)
+    d = delta(n)
+    pts = sample_points(alpha, 2 * d + verify, seed=seed)
+    values = _values(surface, pts, "float")
+    try:
+        values = values.astype(np.float64)
+    except (TypeError, ValueError):
+        raise TypeError("surface: fit(..., 'float') needs real coordinates convertible to float64, got "
+                        f"{type(values.flat[0]).__name__}") from None
+    if values.ndim != 2 or not np.all(np.isfinite(values)):
+        raise ValueError("surface: fit(..., 'float') needs a finite sequence of coordinates at every point")
+    basis = evaluate_normalized(n, alpha, pts)
+    net = np.linalg.lstsq(basis[:2 * d], values[:2 * d], rcond=None)[0]
+    resid = np.abs(basis[2 * d:] @ net - values[2 * d:])
+    scale = max(float(np.max(np.abs(basis[2 * d:]) @ np.abs(net))), float(np.max(np.abs(values))), 1e-300)
+    if float(np.max(resid)) > rtol * scale:
+        raise ValueError(f"surface: not in the span of T_{{{2 * n}}} in float64 (residual {float(np.max(resid)):.1e}"
+                         f" of {scale:.1e} at the {verify} verification points; allowed {rtol:g} relative)")
+    return net
+
+
 def fit(surface: Callable, n: int, alpha, arith: str | Context = "mp", **kwargs):
     """Control net of ``surface`` in the normalized basis of order ``n`` (collocation, verified).
 
     Exact arithmetics: ``alpha`` a :class:`RationalAngle`, ``surface(trig) -> coordinates`` called with an
     :class:`ExactTrig` (exact sin/cos of integer combinations of u, v, w); returns rows of rationals.
-    Real arithmetics (mp): ``surface(u, v, w) -> coordinates``; returns an object array of mpf
-    (``dps`` keyword, default 40).  ``ValueError`` if the surface is not in the span.
+    ``'mp'``: ``surface(u, v, w) -> coordinates`` called with mpmath numbers (write it with ``mpmath.sin``);
+    returns an object array of mpf (``dps`` keyword, default 40).  ``'float'``: called with floats (write it
+    with ``numpy``); returns float64 (:func:`fit_float`).  ``ValueError`` if the surface is not in the span.
 
     >>> from flint import fmpq
     >>> from paper_repro.core.domain import rational_alpha
@@ -173,6 +225,8 @@ def fit(surface: Callable, n: int, alpha, arith: str | Context = "mp", **kwargs)
     ctx = get_context(arith)
     if ctx.exact:
         return fit_exact(surface, n, alpha, **kwargs)
+    if isinstance(ctx, FloatContext):
+        return fit_float(surface, n, alpha, **kwargs)
     return fit_mp(surface, n, alpha, **kwargs)
 
 

@@ -116,17 +116,24 @@ class Patch:
 
     Parameters
     ----------
-    n : order (a positive integer).
-    alpha : shape parameter in (0, pi): a number, or a :class:`~paper_repro.core.domain.RationalAngle`
-        (rational ``tan(alpha/4)``; needed for exact evaluation).
-    net : control net, ``(delta_n, d)`` rows in the order of :func:`paper_repro.core.labels.united_system`
+    n : int
+        The order, a positive integer.
+    alpha : float or RationalAngle
+        The shape parameter in (0, pi): a number (or text such as ``"pi/2"``), or a
+        :class:`~paper_repro.core.domain.RationalAngle` (rational ``tan(alpha/4)``; needed for exact evaluation).
+    net : array_like or mapping
+        The control net, ``(delta_n, d)`` rows in the order of :func:`paper_repro.core.labels.united_system`
         -- the centre ``r_{2n,n,n}`` first, then the R, G, B functions, each colour by level ``j``
         ascending and ``i`` ascending -- or a mapping ``{'r_{4,3,1}': point, ...}`` keyed by the paper's
         labels.  Entries may be floats, ints, ``Fraction`` or ``fmpq`` (kept exactly for exact evaluation).
-    weights : optional non-negative weights of the rational patch, one per control point.
-    arith : default arithmetic of :meth:`__call__` (``'float'``, ``'mp'``, ``'exact'``, ``'ball'``, ``'modp'``
-        or a context).
+    weights : array_like, optional
+        Non-negative weights of the rational patch, one per control point.
+    arith : str or Context, optional
+        Default arithmetic of :meth:`__call__`: ``'float'`` (the default), ``'mp'``, ``'exact'``, ``'ball'``,
+        ``'modp'`` or a context.
 
+    Examples
+    --------
     Control-net order for n = 1 (delta_1 = 7):
 
     >>> from paper_repro.core.labels import united_system

@@ -36,6 +36,8 @@ MAX_ELEVATION_STEPS = MAX_N_ELEVATION
 MAX_N_FIT = 4
 #: Exact fitting (fmpq collocation; measured, loaded machine: n = 4, 6, 8, 10 in 0.6, 3.9, 13, 39 s).
 MAX_N_FIT_EXACT = 8
+#: Float fitting (least squares at 2 delta_n points; n = 10: 662 x 331, well under a second).
+MAX_N_FIT_FLOAT = 10
 #: Rational sample points (a Python loop; measured, loaded machine: 10^4 points in 28 s, 10^5 over 90 s).
 MAX_RATIONAL_POINTS = 10_000
 #: Limit Bezier net (exact conversion weights; measured, loaded machine: n = 10 in 1.2 s, n = 20 in 24 s, 180 MB).

@@ -43,37 +43,64 @@ def default_workers() -> int:
     return os.cpu_count() or 1
 
 
+def process_context():
+    """The start method of the local worker processes: ``forkserver`` where there is one (Linux, macOS), else
+    ``spawn``.  Not ``fork``: forking a process that runs threads (the float kernel's pool, numba's, BLAS's) can
+    leave a child waiting on a lock another thread held, and Python 3.12 warns about it (``DeprecationWarning``:
+    "use of fork() may lead to deadlocks").  The fork server imports the package once and forks the workers from
+    that clean, single-threaded process, so a worker starts in milliseconds with the claims importable.
+
+    >>> process_context().get_start_method() in ("forkserver", "spawn")
+    True
+    """
+    import multiprocessing as mp
+
+    if "forkserver" in mp.get_all_start_methods():
+        ctx = mp.get_context("forkserver")
+        ctx.set_forkserver_preload(["paper_repro.util.registry", "numpy", "mpmath", "flint"])
+        return ctx
+    return mp.get_context("spawn")
+
+
+def process_pool(workers: int, initializer: Callable[[], None] | None = None) -> ProcessPoolExecutor:
+    """Local worker processes (:func:`process_context`) that ignore Ctrl-C and run ``initializer`` first."""
+    return ProcessPoolExecutor(max_workers=workers, mp_context=process_context(), initializer=_quiet_worker,
+                               initargs=(initializer,))
+
+
 def sweep(task: Callable[[T], R], items: Iterable[T], *, executor: Executor | None = None,
           workers: int | None = None, initializer: Callable[[], None] | None = None,
           desc: str | None = None, label: Callable[[T], str] = str) -> list[R]:
     """``[task(item) for item in items]``, computed by ``executor`` (or local processes), in order.
 
-    ``initializer`` runs once in each new local worker process (e.g. to register claims); ``desc``
-    prints one plain progress line per finished item to stderr.
+    ``initializer`` runs once in each new local worker process (e.g. to register claims); ``desc`` shows the
+    progress on stderr (:class:`~paper_repro.util.progress.Ticker`: a bar on a terminal, else one line at the end).
     """
+    from paper_repro.util.progress import Ticker
+
     seq = list(items)
     n = workers if workers is not None else default_workers()
+    ticker = Ticker(len(seq), desc or "", stream=sys.stderr if desc else None)
     if executor is None and (n <= 1 or len(seq) <= 1):
         if initializer:
             initializer()
         out = []
-        for k, item in enumerate(seq, 1):
+        for item in seq:
             out.append(task(item))
-            if desc:
-                print(f"{desc} {k}/{len(seq)}: {label(item)}", file=sys.stderr, flush=True)
+            ticker.step(label(item))
+        ticker.close()
         return out
     own = executor is None
-    ex = executor or ProcessPoolExecutor(max_workers=n, initializer=_quiet_worker,
-                                         initargs=(initializer,))
+    ex = executor or process_pool(n, initializer)
     futures: dict = {}
     try:
         futures = {ex.submit(task, item): k for k, item in enumerate(seq)}
         results: list = [None] * len(seq)
-        for done, fut in enumerate(as_completed(futures), 1):
+        for fut in as_completed(futures):
             k = futures[fut]
             results[k] = fut.result()
-            if desc:
-                print(f"{desc} {done}/{len(seq)}: {label(seq[k])}", file=sys.stderr, flush=True)
+            ticker.step(label(seq[k]))
+        ticker.close()
         return results
     except BaseException:
         # Ctrl-C (or an error): cancel the pending work at once instead of draining the queue, and stop our
