@@ -185,7 +185,7 @@ def test_fit_float_takes_a_numpy_written_surface():
 def test_fit_says_what_the_surface_must_take():
     with pytest.raises(TypeError, match=r"^surface: fit\(\.\.\., 'mp'\) calls it with mpmath numbers .*arith='float'"):
         pr.fit(_np_torus, 2, 1.0, "mp")
-    with pytest.raises(TypeError, match=r"surface: fit\(\.\.\., 'float'\) needs real coordinates"):
+    with pytest.raises(TypeError, match=r"surface coordinates \(point 0\) must be a real number"):
         pr.fit(lambda u, v, w: ("a", "b"), 2, 1.0, "float")
     with pytest.raises(ValueError, match="n must be"):
         pr.fit(_np_torus, 11, 1.0, "float")

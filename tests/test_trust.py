@@ -17,7 +17,6 @@ import numpy as np
 import pytest
 
 from paper_repro.core import elevation as el
-from paper_repro.core.labels import delta
 from paper_repro.util import cache
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -76,27 +75,6 @@ def _nan_row(v):
     return {**v, "rows": [v["rows"][0], [float("nan").hex()] * len(v["rows"][1]), *v["rows"][2:]]}
 
 
-@pytest.mark.parametrize("rechecksum", [False, True])
-@pytest.mark.parametrize("change", [_drop_row, _nan_row, lambda v: []], ids=["missing-row", "nan-row", "empty"])
-def test_bad_elevation_entry_is_recomputed_with_one_warning(fresh_cache, change, rechecksum):
-    """Before: a row missing gave a (delta_{n+1} - 1, 3) net silently, NaN rows a NaN net, ``[]`` an error."""
-    n = 2
-    net = np.random.default_rng(0).random((delta(n), 3))
-    good = el.elevate(net, n, 1.0)
-    path = _elevation_entry(fresh_cache)
-    _tamper(path, change, rechecksum)
-    el._elevation_matrix_float.cache_clear()
-    with warnings.catch_warnings(record=True) as rec:
-        warnings.simplefilter("always")
-        again = el.elevate(net, n, 1.0)
-    assert again.shape == (delta(n + 1), 3) and np.array_equal(again, good)
-    assert len(_cache_warnings(rec)) == 1 and "recomputed and rewritten" in _cache_warnings(rec)[0]
-    el._elevation_matrix_float.cache_clear()
-    with warnings.catch_warnings():
-        warnings.simplefilter("error", cache.CacheWarning)  # rewritten: read back without a warning
-        assert np.array_equal(el.elevate(net, n, 1.0), good)
-
-
 @pytest.mark.parametrize("change", [_drop_row, _nan_row, lambda v: [], lambda v: {**v, "rows": "x"}],
                          ids=["missing-row", "nan-row", "empty", "text"])
 def test_bad_matrix_entry_generic(fresh_cache, change):
@@ -119,15 +97,26 @@ def test_bad_matrix_entry_generic(fresh_cache, change):
     assert json.loads(path.read_text())["value"] == {"rows": rows}  # rewritten
 
 
-@pytest.mark.parametrize("text", ["[]", "", "{", "null", '{"name": "elevation_matrix"}'])
+def _hex_matrix(rows: int, cols: int):
+    """A cached user of a hex-float matrix (what elevation stored before its closed form), with its validator."""
+    want = [[float(i + j).hex() for j in range(cols)] for i in range(rows)]
+
+    def check(v):
+        if not (isinstance(v, dict) and isinstance(v.get("rows"), list) and len(v["rows"]) == rows):
+            raise ValueError("not a matrix of the expected shape")
+
+    return (lambda: cache.cached("m", {"k": 1}, lambda: {"rows": want}, validate=check)), {"rows": want}
+
+
+@pytest.mark.parametrize("text", ["[]", "", "{", "null", '{"name": "m"}'])
 def test_unparsable_entry_is_recomputed(fresh_cache, text):
     """Before: a file holding ``[]`` raised AttributeError ('list' object has no attribute 'get')."""
-    n = 1
-    good = el.elevation_matrix(n, 0.5)
-    _elevation_entry(fresh_cache).write_text(text)
-    el._elevation_matrix_float.cache_clear()
+    get, good = _hex_matrix(4, 3)
+    assert get() == good
+    (path,) = (fresh_cache / "m").glob("*.json")
+    path.write_text(text)
     with pytest.warns(cache.CacheWarning, match="recomputed"):
-        assert np.array_equal(el.elevation_matrix(n, 0.5), good)
+        assert get() == good
 
 
 def test_entry_of_other_parameters_is_not_used(fresh_cache):
@@ -179,20 +168,16 @@ def test_claim_outcome_entry_is_validated(fresh_cache):
 
 
 def test_cache_naming_a_file_works_without_cache(tmp_path, monkeypatch):
-    """Before: ``PAPER_REPRO_CACHE`` naming a file gave a raw NotADirectoryError from elevation_matrix."""
+    """Before: ``PAPER_REPRO_CACHE`` naming a file gave a raw NotADirectoryError (elevation_matrix, then cached)."""
     afile = tmp_path / "afile"
     afile.write_text("x")
     monkeypatch.setattr(cache, "CACHE_DIR", afile)
     monkeypatch.delenv(cache.NO_CACHE_ENV, raising=False)
     monkeypatch.setattr(cache, "_WARNED_UNUSABLE", set())
-    el._elevation_matrix_float.cache_clear()
+    get, good = _hex_matrix(4, 3)
     with warnings.catch_warnings(record=True) as rec:
         warnings.simplefilter("always")
-        e = el.elevation_matrix(1, 0.7)
-        el._elevation_matrix_float.cache_clear()
-        assert np.array_equal(el.elevation_matrix(1, 0.7), e)
-    el._elevation_matrix_float.cache_clear()
-    assert e.shape == (delta(2), delta(1))
+        assert get() == good and get() == good
     assert len(_cache_warnings(rec)) == 1 and "not writable" in _cache_warnings(rec)[0]
     assert cache.unusable(afile) is not None
 

@@ -11,10 +11,11 @@ its own, so the two paths differ by rounding only: at most ``gamma_F sum_f |B_f|
 ``tests/test_fast_jit.py``.  Every point is computed by the same operations whatever its tile, block or thread,
 so the result does not depend on the number of threads.
 
-Derivatives and normals: for n <= 10 a patch's derivative is a patch of the same order
-(:mod:`paper_repro.core.derivative_tables`; its integer-polynomial table is a found pattern, verified n = 1..12), so
-they run through the values pass with the derivative nets (the normals' two directions as 6 coordinates in one
-group, :data:`GROUP`).  The derivative pass (:func:`_derivs_impl`, the monomials' brackets) serves larger n.
+Derivatives and normals: for every n a patch's derivative is a patch of the same order (the derivative matrix C in
+closed form, :mod:`paper_repro.core.half_angle_matrices`; proven for every n in
+docs/elevation_and_derivative_for_all_n.md, no longer a found pattern), so they run through the values pass with the
+derivative nets (the normals' two directions as 6 coordinates in one group, :data:`GROUP`).  The derivative pass
+(:func:`_derivs_impl`, the monomials' brackets) is kept as an independent cross-check in the tests.
 
 The functions take ``nogil=True``: the kernel's thread pool (:func:`paper_repro.core.fast.run_blocks`) runs blocks
 side by side.  ``PAPER_REPRO_KERNEL=numpy`` turns this path off.
