@@ -30,8 +30,9 @@ LINES = [
          says=('Question 1: are the normalizing coefficients of T_{2n} non-negative and symmetric; closed or '
                'recursive formulas?'),
          status='excused',
-         reason=("an open question (the package's evidence and proofs for it are the claims symmetry, "
-                 'nonnegativity and normalizing_closed_forms, outside this section)')),
+         reason=('a question; answered for every n and alpha by claim question1_all_n (one formula for every '
+                 'coefficient, positive and symmetric: hand proof docs/question1_for_all_n.md), and by claim '
+                 'elevation_all_n (the recurrence of consecutive orders)')),
     Line(id='sec7-closed-formulas-scope', tex=(2679, 2682), near='sec:open_problems', kind='prose',
          verbatim=('Due to the\ncomplexity of this problem, closed formulas of these coefficients were given\n'
                    'only for levels $0$ and $1$ for arbitrary order, and for all levels\njust for orders $n=1$, '
@@ -70,10 +71,7 @@ LINES = [
                    '(rational) trigonometric patches\nfrom arbitrary order $n$ to $n+1$).'),
          says=('Such a transformation would give a recurrence of normalizing coefficients, their symmetry and '
                'non-negativity, and order elevation n -> n+1.'),
-         status='excused',
-         reason=('consequences of a hypothetical transformation (implications, nothing to compute); the n = 1 '
-                 'case is the content of Examples exmp:from_1_to_2 and exmp:degree_elevation_from_1_to_2, '
-                 'checked line by line below')),
+         status='checked', check='claim:elevation_all_n'),
     Line(id='sec7-method-comparison', tex=(2714, 2718), near='sec:open_problems', kind='prose',
          verbatim=('In contrast to the technique presented in the proof of\nProposition '
                    '\\ref{prop:level_1_coefficients} (cf. \\cite{tech_report}), the immediate inheritance of\n'
