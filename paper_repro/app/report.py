@@ -29,9 +29,18 @@ from paper_repro.util.io import (
     write_json,
     write_text,
 )
-from paper_repro.util.registry import CLAIMS, ClaimResult, Outcome, check_overrides, load_all, run_claim
+from paper_repro.util.registry import (
+    CLAIMS,
+    ClaimResult,
+    Outcome,
+    check_overrides,
+    claim_cache_key,
+    load_all,
+    run_claim,
+)
 from paper_repro.util.registry import FIGURES as FIGURE_REGISTRY
 from paper_repro.util.sweep import sweep
+from paper_repro.util.tasks import Task, TaskFailed, drive, timed
 
 
 def _short(text: str, width: int) -> str:
@@ -87,7 +96,36 @@ def _cost_estimate(cid: str, extended: bool) -> float:
 def _run_one(job: tuple[str, dict | None, bool]) -> tuple[ClaimResult, Outcome, float]:
     """One claim in a worker (module level, so that processes can run it)."""
     cid, ov, extended = job
+    load_all()  # a cluster worker has not imported the claims
     return run_claim(CLAIMS[cid], ov, extended=extended)
+
+
+class TaskRunner:
+    """Runs a round of tasks through :func:`~paper_repro.util.sweep.sweep` (longest first by the cost model),
+    records every task's measured cost, and puts the results back in the order asked."""
+
+    def __init__(self, extended: bool, executor=None):
+        from paper_repro.app.costs import CostModel
+
+        self.model = CostModel(extended)
+        self.executor = executor
+        self.measured: dict[str, dict[str, Any]] = {}
+        self.rounds = 0
+
+    def __call__(self, batch: list[Task]) -> list[Any]:
+        from paper_repro.app.costs import task_n
+
+        self.rounds += 1
+        order = sorted(range(len(batch)), key=lambda k: -self.model.predict(batch[k]))
+        out = sweep(timed, [batch[k] for k in order], executor=self.executor, initializer=load_all,
+                    desc=f"tasks, round {self.rounds}:", label=lambda task: task.label)
+        results: list[Any] = [None] * len(batch)
+        for k, (res, wall, cpu) in zip(order, out):
+            results[k] = res
+            task = batch[k]
+            self.measured[task.label] = {"name": task.name, "n": task_n(task), "cpu": round(cpu, 3),
+                                         "wall": round(wall, 3)}
+        return results
 
 
 def run_claims(only: list[str] | None, overrides: dict[str, dict[str, Any]] | None, extended: bool = False,
@@ -108,11 +146,31 @@ def run_claims(only: list[str] | None, overrides: dict[str, dict[str, Any]] | No
     cached: dict[str, bool] = {}
     # longest first (timings of earlier runs, else a rough hint), so two workers finish together;
     # results are put back in registry order, so the output does not depend on this
+    # Split claims (their inner loops are tasks: per n, per alpha) and whole claims go through one sweep per round
+    # (paper_repro.util.tasks.drive); whole claims first by cost (timings of earlier runs, else a rough hint).
+    # Results are put back in registry order, so the output does not depend on the order or the executor.
     first = [cid for cid in ids if not CLAIMS[cid].uses_results]
-    order = sorted(first, key=lambda cid: -_cost_estimate(cid, extended))
-    jobs = [(cid, (overrides or {}).get(cid), extended) for cid in order]
-    done = dict(zip(order, sweep(_run_one, jobs, executor=executor, initializer=load_all, desc="claims",
-                                 label=lambda job: job[0])))
+    params = {cid: check_overrides(CLAIMS[cid], (overrides or {}).get(cid), extended) for cid in first}
+    split = [cid for cid in first if CLAIMS[cid].body is not None
+             and not cache.is_cached("claims", claim_cache_key(CLAIMS[cid], params[cid]))]
+    order = sorted((cid for cid in first if cid not in split), key=lambda cid: -_cost_estimate(cid, extended))
+    jobs = [Task(_run_one, ((cid, (overrides or {}).get(cid), extended),)) for cid in order]
+    runner = TaskRunner(extended, executor)
+    asked: dict[str, list[Task]] = {}
+    driven = drive({cid: CLAIMS[cid].body(**params[cid]) for cid in split}, runner, extra=jobs, asked=asked)
+    done = {}
+    for cid, got in zip(order, driven.get(None, [])):
+        if isinstance(got, TaskFailed):
+            raise got.error
+        done[cid] = got
+    for cid in split:
+        spent = sum(runner.measured[t.label]["cpu"] for t in {t.key(): t for t in asked[cid]}.values())
+        done[cid] = run_claim(CLAIMS[cid], (overrides or {}).get(cid), extended=extended, outcome=driven[cid],
+                              seconds=spent)
+    if write:
+        from paper_repro.app.costs import record_costs
+
+        record_costs(extended, runner.measured)
     # claims that resolve checks to other claims run last, here, with the results of this run
     so_far = {cid: {"status": res.status, "kind": res.kind, "errata": sorted(e["id"] for e in out.errata),
                     "statement": res.statement}

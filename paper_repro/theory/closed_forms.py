@@ -89,10 +89,36 @@ def sign_on_unit_interval(p: fmpq_poly) -> dict:
     return {"roots_in_open_unit_interval": roots, "sign": sign}
 
 
+#: Closed forms and proofs handed to this process by a sweep (:func:`remember`): ``n -> record``.  A task on a
+#: cluster worker has no shared disk cache; it receives the records it needs as arguments instead.
+_REMEMBERED: dict[int, dict] = {}
+
+
+def _forms_sha256(stored: dict) -> str:
+    return hashlib.sha256(json.dumps(dict(sorted(stored.items())), sort_keys=True).encode()).hexdigest()
+
+
+def record(n: int) -> dict:
+    """The recovered closed forms of order ``n`` and their proof, as JSON (a task of the extended sweeps: computed
+    once, then handed to every task and claim that needs them through :func:`remember`)."""
+    forms = closed_forms_cached(n)
+    return {"n": n, "forms": {k: v.as_json() for k, v in forms.items()}, "proof": proof_cached(n)}
+
+
+def remember(rec: dict) -> None:
+    """Make :func:`closed_forms_cached` and :func:`proof_cached` of ``rec["n"]`` return ``rec`` in this process
+    (no recomputation, no disk)."""
+    _REMEMBERED[rec["n"]] = rec
+
+
 def proof_cached(n: int) -> dict:
     """:func:`prove` of the recovered forms (:func:`closed_forms_cached`), memoised on disk by n and the forms."""
     forms = closed_forms_cached(n)
     text = json.dumps({k: v.as_json() for k, v in sorted(forms.items())}, sort_keys=True)
+    rec = _REMEMBERED.get(n)
+    if rec is not None and rec.get("proof") is not None and _forms_sha256(rec["forms"]) == hashlib.sha256(
+            text.encode()).hexdigest():
+        return rec["proof"]
     keep = ("proved", "independence", "unisolvence", "points", "residuals_zero", "residual_degree_bound")
     return cached("closed_form_proof", {"n": n, "forms_sha256": hashlib.sha256(text.encode()).hexdigest(),
                                         "method": "identity-v1"},
@@ -116,8 +142,10 @@ def _forms_problem(n: int, value) -> str | None:
 
 
 def closed_forms_cached(n: int) -> dict[str, ClosedForm]:
-    """:func:`recover`, memoised on disk."""
-    stored = cached("closed_forms", {"n": n}, lambda: {k: v.as_json() for k, v in recover(n).items()},
-                    validate=lambda value: _forms_problem(n, value))
+    """:func:`recover`, memoised on disk (or handed over by :func:`remember`)."""
+    rec = _REMEMBERED.get(n)
+    stored = rec["forms"] if rec is not None else cached(
+        "closed_forms", {"n": n}, lambda: {k: v.as_json() for k, v in recover(n).items()},
+        validate=lambda value: _forms_problem(n, value))
     return {k: ClosedForm(k, v["sin_power"], fmpq_poly([parse_fmpq(x) for x in v["numerator"]]))
             for k, v in stored.items()}
