@@ -11,6 +11,7 @@ from __future__ import annotations
 import hashlib
 import inspect
 import json
+from contextlib import contextmanager
 from pathlib import Path
 from typing import Any
 
@@ -126,6 +127,68 @@ class TaskRunner:
             self.measured[task.label] = {"name": task.name, "n": task_n(task), "cpu": round(cpu, 3),
                                          "wall": round(wall, 3)}
         return results
+
+
+#: The extended parameters that ``--n-max N`` pushes to order N (the heavy claims, split into tasks per n).
+N_MAX_RANGE = (2, 200)
+
+
+def n_max_overrides(n_max: int) -> dict[str, dict[str, Any]]:
+    """Overrides of the heavy claims for ``--n-max N``: closed forms recovered and proven, positivity and levels to
+    n = N, the limit lemmas to max(40, 4N/3), the consequences of the all-n formula to 2N.
+
+    >>> n_max_overrides(36)["limit_formula"]
+    {'closed_form_n_max': 36, 'checks_n_max': 48}
+    """
+    lo, hi = N_MAX_RANGE
+    if isinstance(n_max, bool) or not isinstance(n_max, int) or not lo <= n_max <= hi:
+        raise ValueError(f"--n-max: an integer from {lo} to {hi}, got {n_max!r}")
+    return {"normalizing_closed_forms": {"proof_n_max": n_max},
+            "nonnegativity_extended": {"n_max": n_max, "publish_n_max": n_max},
+            "limit_formula": {"closed_form_n_max": n_max, "checks_n_max": max(40, -(-4 * n_max // 3))},
+            "general_formulas": {"n_max": n_max, "n_cons": 2 * n_max}}
+
+
+def estimate_cpu(overrides: dict[str, dict[str, Any]], extended: bool = True) -> dict[str, Any]:
+    """Predicted CPU seconds of the split claims' first round of tasks (the recoveries and proofs per n, the lemma
+    and exact checks: every task whose arguments are known before any result) from the cost model
+    (:mod:`paper_repro.app.costs`), and the longest of them (a lower bound of the wall time on any number of
+    workers)."""
+    from paper_repro.app.costs import CostModel
+
+    model = CostModel(extended)
+    tasks: dict[str, Task] = {}
+    for cid, ov in overrides.items():
+        c = CLAIMS.get(cid)
+        if c is None or c.body is None:
+            continue
+        body = c.body(**check_overrides(c, ov, extended))
+        tasks.update({t.key(): t for t in next(body)})
+        body.close()
+    costs = sorted(((model.predict(t), t.label) for t in tasks.values()), reverse=True)
+    return {"tasks": len(costs), "cpu_seconds": sum(c for c, _ in costs),
+            "longest": costs[0] if costs else (0.0, ""), "measured_tasks": len(model.measured)}
+
+
+@contextmanager
+def claims_executor(scheduler, n_max: dict[str, dict[str, Any]] | None, extended: bool):
+    """The executor of a run's claims (``None``: local processes; else a dask cluster,
+    :func:`paper_repro.app.cluster.open_executor`); with ``--n-max`` overrides, first prints the estimated CPU time."""
+    if n_max:
+        est = estimate_cpu(n_max, extended)
+        cost, label = est["longest"]
+        print(f"--n-max: estimated CPU time of the first round of tasks {est['cpu_seconds'] / 60:.1f} min over "
+              f"{est['tasks']} tasks (cost model fitted on {est['measured_tasks']} measured tasks, "
+              f"build/task_costs_extended.json); the longest task {label} about {cost / 60:.1f} min bounds the wall "
+              "time on any number of workers; later rounds (Sturm counts, fits, per-n formula checks) come on top",
+              flush=True)
+    if scheduler is None:
+        yield None
+        return
+    from paper_repro.app.cluster import open_executor
+
+    with open_executor(scheduler) as ex:
+        yield ex
 
 
 def run_claims(only: list[str] | None, overrides: dict[str, dict[str, Any]] | None, extended: bool = False,

@@ -72,9 +72,9 @@ def _short(a: Any) -> str:
         return f"record n={a['n']}"
     if isinstance(a, tuple | list) and a and all(isinstance(x, dict) and "n" in x for x in a):
         return f"records n={a[0]['n']}..{a[-1]['n']}"
-    if isinstance(a, tuple | list) and a and not all(isinstance(x, int | str) for x in a[:3]):
-        return f"{len(a)} {type(a[0]).__name__}"
     text = a if isinstance(a, str) else repr(a)
+    if len(text) > 80 and isinstance(a, tuple | list) and a:
+        return f"{len(a)} {type(a[0]).__name__}"
     return text if len(text) <= 80 else text[:77] + "..."
 
 
