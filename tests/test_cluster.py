@@ -191,3 +191,20 @@ def test_split_claims_give_the_same_outcome_inline_and_driven_together():
     # the closed forms of order 1..4 are asked by three claims but computed once per round
     assert calls[0] < sum(len(CLAIMS[c].body(**{**CLAIMS[c].defaults, **SMALL[c]}).send(None))
                           for c in together)
+
+
+def test_the_proof_in_chunks_is_the_proof_in_one_piece(monkeypatch):
+    """records(): the identity proof split into certificate and residual-chunk tasks gives the dict prove() gives."""
+    from paper_repro.theory import closed_forms as cf
+
+    monkeypatch.setenv(cache.NO_CACHE_ENV, "1")
+    monkeypatch.setattr(cf, "PROOF_CHUNK", 7)
+    (_, recs) = drive_inline(_returning(cf.records([6, 9])))
+    for rec in recs:
+        whole = {k: v for k, v in cf.prove(rec["n"], cf.closed_forms_cached(rec["n"])).items() if k in cf.PROOF_KEYS}
+        assert rec["proof"] == json.loads(json.dumps(whole)) and rec["proof"]["proved"]
+        assert list(rec["proof"]) == list(cf.PROOF_KEYS)
+
+
+def _returning(gen):
+    return (yield from gen)

@@ -18,7 +18,7 @@ from __future__ import annotations
 from flint import fmpq, fmpq_mat, fmpq_poly
 
 from paper_repro.core.normalization import orbits
-from paper_repro.theory.closed_forms import closed_forms_cached, proof_cached, record, remember
+from paper_repro.theory.closed_forms import closed_forms_cached, proof_cached, records, remember
 from paper_repro.theory.general_formulas import (
     ALL_LEVELS_AT_1,
     CENTRE_END_VALUES,
@@ -111,12 +111,11 @@ def run(max_level: int, n_max: int, n_cons: int, suffix: str):
     # then every formula per n (against the closed forms and against the all-n formula)
     fit_jobs = [(level, kind) for level in range(2, max_level + 1) for kind in ("interior", "diagonal")]
     top = max([n_max] + [N_FIT[level] for level, _ in fit_jobs])
-    got = yield ([Task(record, (n,)) for n in range(1, top + 1)]
-                 + [Task(centre_end_values_from_formula, (n,)) for n in range(1, n_cons + 1)])
-    records, centre_from_formula = got[:top], got[top:]
-    for rec in records:
+    centre_from_formula, recs = yield from records(
+        list(range(1, top + 1)), [Task(centre_end_values_from_formula, (n,)) for n in range(1, n_cons + 1)])
+    for rec in recs:
         remember(rec)
-    fitted = yield [Task(fit_task, (level, kind, N_FIT[level], tuple(records[: N_FIT[level]])))
+    fitted = yield [Task(fit_task, (level, kind, N_FIT[level], tuple(recs[: N_FIT[level]])))
                     for level, kind in fit_jobs]
     proven = [n for n in range(1, n_max + 1) if proof_cached(n)["proved"]]
     entries, ok = [], True
@@ -134,7 +133,7 @@ def run(max_level: int, n_max: int, n_cons: int, suffix: str):
                     "where": "m = 1 for j < i, 2 for i = j < n, 3 at the centre i = j = n",
                     "source": "hand proof with machine-checked lemmas, docs/question1_for_all_n.md "
                               "(claim question1_all_n)"})
-    per_n = yield [Task(checks_at, (n, tuple(formulas), max_level, records[n - 1] if n <= n_max else None))
+    per_n = yield [Task(checks_at, (n, tuple(formulas), max_level, recs[n - 1] if n <= n_max else None))
                    for n in range(1, max(n_cons, n_max) + 1)]
     for k, f in enumerate(formulas):
         first = 1 if f.kind == "all" else f.level + 1  # the smallest n with a case (level 1: n >= 2, as printed)

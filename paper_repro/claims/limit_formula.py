@@ -10,7 +10,7 @@ the trigonometric control points with the explicit weights of :func:`paper_repro
 
 from __future__ import annotations
 
-from paper_repro.theory.closed_forms import proof_cached, record, remember
+from paper_repro.theory.closed_forms import proof_cached, records, remember
 from paper_repro.theory.limit_formula import conversion_weights_nonnegative, limit_checks, limit_terms_formula
 from paper_repro.theory.limits import conversion_is_convex, limit_terms
 from paper_repro.util.registry import Outcome, claim
@@ -44,11 +44,10 @@ def run(closed_form_n_max: int, checks_n_max: int):
     # comparison with the closed forms per n
     convex_top = min(checks_n_max, 12)
     forms_ns = sorted(set(range(1, closed_form_n_max + 1)) | set(range(1, convex_top + 1)))
-    got = yield [Task(limit_checks, (n,)) for n in range(1, checks_n_max + 1)] + [Task(record, (n,)) for n in forms_ns]
-    checks, records = got[:checks_n_max], got[checks_n_max:]
-    for rec in records:
+    checks, recs = yield from records(forms_ns, [Task(limit_checks, (n,)) for n in range(1, checks_n_max + 1)])
+    for rec in recs:
         remember(rec)
-    agree = yield [Task(agrees_with_closed_forms, (rec,)) for rec in records if rec["n"] <= closed_form_n_max]
+    agree = yield [Task(agrees_with_closed_forms, (rec,)) for rec in recs if rec["n"] <= closed_form_n_max]
     by_closed_forms = [n for n, ok in zip(range(1, closed_form_n_max + 1), agree) if ok]
     by_checks = [r["n"] for r in checks if all(r[k] for k in LEMMAS)]
     degree_ok = all(r["degree"] == 3 * r["n"] - 1 for r in checks)

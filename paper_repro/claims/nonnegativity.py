@@ -17,7 +17,7 @@ from flint import fmpq_poly
 
 from paper_repro.core.labels import united_system
 from paper_repro.core.normalization import orbits
-from paper_repro.theory.closed_forms import closed_forms_cached, proof_cached, record, remember, sign_on_unit_interval
+from paper_repro.theory.closed_forms import closed_forms_cached, proof_cached, records, remember, sign_on_unit_interval
 from paper_repro.util.registry import Outcome, claim
 from paper_repro.util.tasks import Task
 
@@ -108,10 +108,10 @@ def run_paper(ns) -> Outcome:
 def run_extended(n_min, n_max, publish_n_max, table_n_max, suffix):
     ns = list(range(n_min, n_max + 1))
     # tasks: recovery and proof per n (shared with the other claims of the run), then the Sturm counts per n
-    records = yield [Task(record, (n,)) for n in sorted(set(ns) | set(range(1, publish_n_max + 1)))]
-    for rec in records:
+    _, recs = yield from records(sorted(set(ns) | set(range(1, publish_n_max + 1))))
+    for rec in recs:
         remember(rec)
-    by_n = {rec["n"]: rec for rec in records}
+    by_n = {rec["n"]: rec for rec in recs}
     rows = yield [Task(analyse_record, (by_n[n],)) for n in ns]
     positive = all(r["all_P_positive_on_(0,1)"] for r in rows)
     proven = [r["n"] for r in rows if r["closed_form_proof"]["proved"]]

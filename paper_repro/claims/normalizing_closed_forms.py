@@ -20,7 +20,7 @@ from paper_repro.core.labels import united_system
 from paper_repro.core.normalization import coefficients, orbits
 from paper_repro.core.univariate import c_const, c_numerator
 from paper_repro.printed.normalization import FINAL, INTERMEDIATE, from_1_to_2, prop_level_1, remark_level_0
-from paper_repro.theory.closed_forms import ClosedForm, closed_forms_cached, proof_cached, prove, record, remember
+from paper_repro.theory.closed_forms import ClosedForm, closed_forms_cached, proof_cached, prove, records, remember
 from paper_repro.theory.ratfunc import half_angle_functions, poly_at
 from paper_repro.util.registry import Outcome, claim
 from paper_repro.util.tasks import Task
@@ -158,19 +158,18 @@ def run(ts, level_n_max, proof_n_max):
     level_jobs = [(n, t) for n in range(1, level_n_max + 1) for t in ts[:6]]
     first = ([Task(final_proof, (n,)) for n in (1, 2, 3)] + [Task(intermediate_mismatches, (t,)) for t in ts]
              + [Task(intermediate_symbolic)] + [Task(level_mismatches, job) for job in level_jobs]
-             + [Task(from_1_to_2_mismatches, (t,)) for t in ts] + [Task(from_1_to_2_symbolic)]
-             + [Task(record, (n,)) for n in range(2, proof_n_max + 1)])
-    got = iter((yield first))
+             + [Task(from_1_to_2_mismatches, (t,)) for t in ts] + [Task(from_1_to_2_symbolic)])
+    got_first, recs = yield from records(list(range(2, proof_n_max + 1)), first)
+    got = iter(got_first)
     finals = [next(got) for _ in (1, 2, 3)]
     inter = [next(got) for _ in ts]
     failed_sym = next(got)
     levels = [next(got) for _ in level_jobs]
     bad_12_at = [next(got) for _ in ts]
     failed_12 = next(got)
-    records = list(got)
-    for rec in records:
+    for rec in recs:
         remember(rec)
-    poly_results = yield [Task(levels_equal_proven_forms, (rec,)) for rec in records]
+    poly_results = yield [Task(levels_equal_proven_forms, (rec,)) for rec in recs]
     errata, checked, mismatches = [], {}, []
     # 1. final forms: identity proof for every alpha
     proofs = {}
@@ -206,7 +205,7 @@ def run(ts, level_n_max, proof_n_max):
         errata.append(_erratum(f"level-{ref}-{n}-{i}", ref, f"n={n}, i={i}", "see source", "see closed_forms.json",
                                "exact comparison at sampled alpha"))
     # polynomial comparison with proven closed forms (a proof for n <= proof_n_max, given the closed form proofs)
-    poly_ok = {str(rec["n"]): ok for rec, ok in zip(records, poly_results)}
+    poly_ok = {str(rec["n"]): ok for rec, ok in zip(recs, poly_results)}
     checked["levels_0_1"] = {"n_range": [1, level_n_max], "alphas": 6, "mismatches": [list(x) for x in bad_levels],
                              "polynomial_identity_with_proven_closed_forms": poly_ok}
     # 4. Example exmp:from_1_to_2
