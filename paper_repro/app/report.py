@@ -11,6 +11,8 @@ from __future__ import annotations
 import hashlib
 import inspect
 import json
+import os
+import sys
 from contextlib import contextmanager
 from pathlib import Path
 from typing import Any
@@ -101,6 +103,10 @@ def _run_one(job: tuple[str, dict | None, bool]) -> tuple[ClaimResult, Outcome, 
     return run_claim(CLAIMS[cid], ov, extended=extended)
 
 
+#: Seconds assumed for a whole claim with no recorded cost (most take seconds; the first run starts them early).
+WHOLE_CLAIM_DEFAULT = 30.0
+
+
 class TaskRunner:
     """Runs a round of tasks through :func:`~paper_repro.util.sweep.sweep` (longest first by the cost model),
     records every task's measured cost, and puts the results back in the order asked."""
@@ -113,19 +119,34 @@ class TaskRunner:
         self.measured: dict[str, dict[str, Any]] = {}
         self.rounds = 0
 
+    def predict(self, task: Task) -> float:
+        """Predicted CPU seconds: measured before, else the cost model; a whole claim never measured as a task
+        costs its timings of earlier runs or its hint, at least WHOLE_CLAIM_DEFAULT (so it starts early)."""
+        if task.func is _run_one and task.label not in self.model.measured:
+            cid, _, extended = task.args[0]
+            return max(_cost_estimate(cid, extended), WHOLE_CLAIM_DEFAULT)
+        return self.model.predict(task)
+
     def __call__(self, batch: list[Task]) -> list[Any]:
+        import time
+
         from paper_repro.app.costs import task_n
 
         self.rounds += 1
-        order = sorted(range(len(batch)), key=lambda k: -self.model.predict(batch[k]))
+        order = sorted(range(len(batch)), key=lambda k: -self.predict(batch[k]))
+        t0 = time.perf_counter()
         out = sweep(timed, [batch[k] for k in order], executor=self.executor, initializer=load_all,
                     desc=f"tasks, round {self.rounds}:", label=lambda task: task.label)
+        wall = time.perf_counter() - t0
         results: list[Any] = [None] * len(batch)
-        for k, (res, wall, cpu) in zip(order, out):
+        for k, (res, task_wall, cpu) in zip(order, out):
             results[k] = res
             task = batch[k]
             self.measured[task.label] = {"name": task.name, "n": task_n(task), "cpu": round(cpu, 3),
-                                         "wall": round(wall, 3)}
+                                         "wall": round(task_wall, 3), "round": self.rounds}
+        cpu_sum = sum(self.measured[t.label]["cpu"] for t in batch)
+        print(f"tasks, round {self.rounds}: {len(batch)} tasks, {wall:.1f} s wall, {cpu_sum:.1f} s CPU in the tasks "
+              f"(load average {os.getloadavg()[0]:.1f})", file=sys.stderr, flush=True)
         return results
 
 
