@@ -111,9 +111,10 @@ class TaskRunner:
     """Runs a round of tasks through :func:`~paper_repro.util.sweep.sweep` (longest first by the cost model),
     records every task's measured cost, and puts the results back in the order asked."""
 
-    def __init__(self, extended: bool, executor=None):
+    def __init__(self, extended: bool, executor=None, write: bool = False):
         from paper_repro.app.costs import CostModel
 
+        self.extended, self.write = extended, write
         self.model = CostModel(extended)
         self.executor = executor
         self.measured: dict[str, dict[str, Any]] = {}
@@ -144,6 +145,10 @@ class TaskRunner:
             task = batch[k]
             self.measured[task.label] = {"name": task.name, "n": task_n(task), "cpu": round(cpu, 3),
                                          "wall": round(task_wall, 3), "round": self.rounds}
+        if self.write:  # after every round: an interrupted or failed run still leaves its measured costs
+            from paper_repro.app.costs import record_costs
+
+            record_costs(self.extended, {t.label: self.measured[t.label] for t in batch})
         cpu_sum = sum(self.measured[t.label]["cpu"] for t in batch)
         print(f"tasks, round {self.rounds}: {len(batch)} tasks, {wall:.1f} s wall, {cpu_sum:.1f} s CPU in the tasks "
               f"(load average {os.getloadavg()[0]:.1f})", file=sys.stderr, flush=True)
@@ -239,7 +244,7 @@ def run_claims(only: list[str] | None, overrides: dict[str, dict[str, Any]] | No
              and not cache.is_cached("claims", claim_cache_key(CLAIMS[cid], params[cid]))]
     order = sorted((cid for cid in first if cid not in split), key=lambda cid: -_cost_estimate(cid, extended))
     jobs = [Task(_run_one, ((cid, (overrides or {}).get(cid), extended),)) for cid in order]
-    runner = TaskRunner(extended, executor)
+    runner = TaskRunner(extended, executor, write=write)
     asked: dict[str, list[Task]] = {}
     driven = drive({cid: CLAIMS[cid].body(**params[cid]) for cid in split}, runner, extra=jobs, asked=asked)
     done = {}
@@ -251,10 +256,6 @@ def run_claims(only: list[str] | None, overrides: dict[str, dict[str, Any]] | No
         spent = sum(runner.measured[t.label]["cpu"] for t in {t.key(): t for t in asked[cid]}.values())
         done[cid] = run_claim(CLAIMS[cid], (overrides or {}).get(cid), extended=extended, outcome=driven[cid],
                               seconds=spent)
-    if write:
-        from paper_repro.app.costs import record_costs
-
-        record_costs(extended, runner.measured)
     # claims that resolve checks to other claims run last, here, with the results of this run
     so_far = {cid: {"status": res.status, "kind": res.kind, "errata": sorted(e["id"] for e in out.errata),
                     "statement": res.statement}
