@@ -208,3 +208,35 @@ def test_the_proof_in_chunks_is_the_proof_in_one_piece(monkeypatch):
 
 def _returning(gen):
     return (yield from gen)
+
+
+def test_n_max_estimate_comes_from_the_cost_model_before_any_work(tmp_path, monkeypatch):
+    """--n-max: the first round's tasks are known without computing anything; their cost is predicted from the
+    measured costs (here a fabricated file: the prediction is the fitted power law)."""
+    load_all()
+    set_output_root(tmp_path)
+    try:
+        (tmp_path / "build").mkdir()
+        costs = {f"closed_forms.recovered({n})": {"name": "closed_forms.recovered", "n": n, "cpu": n ** 3 / 1000,
+                                                  "wall": 1.0} for n in (5, 10, 20)}
+        (tmp_path / "build" / "task_costs_extended.json").write_text(json.dumps(costs))
+        est = report.estimate_cpu(report.n_max_overrides(40))
+    finally:
+        set_output_root(None)
+    assert est["longest"][1].startswith(("closed_forms.recovered(40)", "general_formulas.centre_end_values"))
+    assert est["measured_tasks"] == 3 and est["tasks"] > 100
+    from paper_repro.app.costs import CostModel
+
+    set_output_root(tmp_path)
+    try:
+        assert abs(CostModel(True).predict(Task(cf_recovered, (40,))) - 64.0) < 1e-6
+    finally:
+        set_output_root(None)
+
+
+def cf_recovered(n):  # stands for closed_forms.recovered in the cost model's eyes
+    raise AssertionError("never called")
+
+
+cf_recovered.__module__ = "paper_repro.theory.closed_forms"
+cf_recovered.__name__ = "recovered"
