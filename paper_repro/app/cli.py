@@ -1,6 +1,6 @@
 """Command line: python -m paper_repro {claims,figures,reproduce,paper,labels}.
 
-  claims [--only ID ...] [--n N] [--alpha A] [--extended] [--list]
+  claims [--only ID ...] [--n N] [--alpha A] [--extended] [--n-max N] [--scheduler SPEC] [--list]
       run claims and print the table; a full run (no --only/--n/--alpha) also writes data/,
       a partial run only prints
   figures [--only ID ...] [--list]
