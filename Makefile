@@ -42,7 +42,7 @@ venv: $(STAMP)
 
 lock:                          ## refresh requirements.lock from pyproject's ranges (newest that install), hashes for 3.11-3.13
 	$(PYTHON) -m venv build/lock-venv
-	build/lock-venv/bin/python -m pip install --quiet --disable-pip-version-check '.[dev,docs,fast]'
+	build/lock-venv/bin/python -m pip install --quiet --disable-pip-version-check '.[dev,docs,fast,dask]'
 	build/lock-venv/bin/python -m pip freeze --exclude-editable | grep -v '^paper.repro' > requirements.lock
 	rm -rf build/lock-venv build/lock-wheels
 	PYTHON=$(PYTHON) sh tools/lock_download.sh requirements.lock build/lock-wheels

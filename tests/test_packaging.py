@@ -24,8 +24,32 @@ def test_lock_pins_every_dependency_exactly():
     pattern = r"[A-Za-z0-9_.\-]+==[A-Za-z0-9_.+\-]+( --hash=sha256:[0-9a-f]{64})+"
     assert lines and all(re.fullmatch(pattern, ln) for ln in lines), lines
     names = {ln.split("==")[0].lower().replace("_", "-") for ln in lines}
-    for dep in ("numpy", "scipy", "mpmath", "python-flint", "matplotlib", "pytest", "hypothesis", "bezier"):
+    for dep in ("numpy", "scipy", "mpmath", "python-flint", "matplotlib", "pytest", "hypothesis", "bezier", "dask",
+                "distributed"):
         assert dep in names, dep
+
+
+def test_lock_holds_every_requirement_of_the_dask_extra():
+    """dask and distributed are locked with their whole dependency tree (installed with --require-hashes)."""
+    from importlib.metadata import requires
+
+    from packaging.requirements import Requirement
+
+    lines = [ln for ln in (ROOT / "requirements.lock").read_text().splitlines() if ln and not ln.startswith("#")]
+    names = {re.sub(r"[-_.]+", "-", ln.split("==")[0]).lower() for ln in lines}
+    todo, seen = ["dask", "distributed"], set()
+    while todo:
+        name = todo.pop()
+        if name in seen:
+            continue
+        seen.add(name)
+        for text in requires(name) or []:
+            req = Requirement(text)
+            if req.marker is None or req.marker.evaluate({"extra": ""}):
+                dep = re.sub(r"[-_.]+", "-", req.name).lower()
+                assert dep in names, f"{dep} (needed by {name}) is not in requirements.lock"
+                todo.append(dep)
+    assert len(seen) > 10
 
 
 def test_makefile_stops_on_an_old_python(tmp_path):

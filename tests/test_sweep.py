@@ -1,4 +1,4 @@
-"""Sweeps through executors: order kept, any executor accepted, a dask cluster where installed."""
+"""Sweeps through executors: order kept, any executor accepted, a dask cluster (tests/test_cluster.py too)."""
 
 import os
 from concurrent.futures import ThreadPoolExecutor
@@ -45,7 +45,8 @@ def test_a_claim_sweep_gives_the_same_results_inline_and_in_processes():
 
 
 def test_dask_local_cluster():
-    distributed = pytest.importorskip("distributed", reason="dask.distributed not installed (extra paper_repro[dask])")
+    import distributed  # in requirements.lock (extra paper_repro[dask]): a missing one fails, never skips
+
     with distributed.Client(processes=False, n_workers=1, threads_per_worker=2, dashboard_address=None) as client:
         assert sweep(_square, [3, 1, 2], executor=client.get_executor()) == [9, 1, 4]
 

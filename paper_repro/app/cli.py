@@ -1,12 +1,14 @@
 """Command line: python -m paper_repro {claims,figures,reproduce,paper,labels}.
 
-  claims [--only ID ...] [--n N] [--alpha A] [--extended] [--list]
+  claims [--only ID ...] [--n N] [--alpha A] [--extended] [--n-max N] [--scheduler SPEC] [--list]
       run claims and print the table; a full run (no --only/--n/--alpha) also writes data/,
       a partial run only prints
   figures [--only ID ...] [--list]
       regenerate figures, figures/manifest.json and the gallery figures/index.html
-  reproduce [--extended]
+  reproduce [--extended] [--n-max N] [--scheduler local:N|tcp://HOST:PORT]
       everything: claims, data, figures, gallery, annotated paper; exit 1 if a claim fails
+      (--scheduler, or $PAPER_REPRO_SCHEDULER: the claims' tasks on a dask cluster, docs/cluster.md;
+      --n-max N: the extended ranges pushed to order N, the estimated CPU time printed first)
   paper
       the annotated paper paper/index.html (needs the paper's LaTeX source beside the clone)
   labels N
@@ -156,6 +158,14 @@ def _check_environment(args: argparse.Namespace) -> None:
                              f"or {cache.NO_CACHE_ENV}=1")
 
 
+def _cluster_options(p: argparse.ArgumentParser) -> None:
+    p.add_argument("--scheduler", metavar="SPEC", help="run the claims' tasks on a dask.distributed cluster: "
+                   "'local:N' (N local worker processes) or 'tcp://HOST:PORT' (a running scheduler); default "
+                   "$PAPER_REPRO_SCHEDULER, else local processes (docs/cluster.md)")
+    p.add_argument("--n-max", type=int, metavar="N", help="push the extended ranges of the heavy claims to order N "
+                   "(implies --extended; prints the estimated CPU time first)")
+
+
 def _main(argv: list[str] | None = None) -> int:
     parser = _Parser(prog="python -m paper_repro", description=__doc__,
                      formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -168,6 +178,7 @@ def _main(argv: list[str] | None = None) -> int:
     pc.add_argument("--alpha", type=str, help="run at this alpha only, in (0, pi), e.g. 'pi/3', '2pi/3' or '1.2'")
     pc.add_argument("--extended", action="store_true", help="use the extended parameter ranges (larger n; slow)")
     pc.add_argument("--out", metavar="DIR", help=out_help)
+    _cluster_options(pc)
     pf = sub.add_parser("figures", help="regenerate figures and the gallery",
                         description="Regenerate figures, figures/manifest.json and the gallery figures/index.html.")
     pf.add_argument("--list", action="store_true", help="print the figure ids with one-line descriptions and exit")
@@ -178,14 +189,19 @@ def _main(argv: list[str] | None = None) -> int:
     pr.add_argument("--extended", action="store_true",
                     help="use the extended parameter ranges (larger n; about 20 minutes on 2 cores)")
     pr.add_argument("--out", metavar="DIR", help=out_help)
+    _cluster_options(pr)
     sub.add_parser("paper", help="the annotated paper paper/index.html",
                    description="The annotated paper paper/index.html (needs the LaTeX source beside the clone).")
     pl = sub.add_parser("labels", help="print the labels of T_{2n}",
                         description="The paper labels of T_{2n}: internal index, label, level and monomial.")
     pl.add_argument("n", type=int, help="the order n (T_{2n} has 3n(n+1)+1 functions)")
     args = parser.parse_args(argv)
-    try:
+    try:  # the environment, --scheduler / $PAPER_REPRO_SCHEDULER and --n-max: validated before any work
         _check_environment(args)
+        from paper_repro.app.cluster import scheduler_from
+
+        scheduler = scheduler_from(getattr(args, "scheduler", None))
+        n_max_overrides = report.n_max_overrides(args.n_max) if getattr(args, "n_max", None) is not None else None
     except ValueError as exc:
         print(f"error: {str(exc).splitlines()[0]}", file=sys.stderr)
         return 2
@@ -233,7 +249,12 @@ def _main(argv: list[str] | None = None) -> int:
             if skipped:
                 print(f"skipped (they take no --n/--alpha): {', '.join(skipped)}")
             partial = bool(args.only or n is not None or alpha is not None)
-            ok = report.run_claims(list(per_claim), per_claim, extended=args.extended, write=not partial)
+            if n_max_overrides is not None:
+                per_claim = {cid: {**ov, **n_max_overrides.get(cid, {})} for cid, ov in per_claim.items()}
+            with report.claims_executor(scheduler, per_claim if n_max_overrides else None,
+                                        args.extended or n_max_overrides is not None) as ex:
+                ok = report.run_claims(list(per_claim), per_claim, extended=args.extended or bool(n_max_overrides),
+                                       write=not partial, executor=ex)
             return 0 if ok else 1
         if args.cmd == "paper":
             from paper_repro.app.annotated_paper import write_paper
@@ -252,7 +273,9 @@ def _main(argv: list[str] | None = None) -> int:
             from paper_repro.util.io import data_dir, figures_dir, output_root
 
             start, start_ns = time.perf_counter(), time.time_ns()
-            ok = report.run_claims(None, None, extended=args.extended, write=True)
+            extended = args.extended or n_max_overrides is not None
+            with report.claims_executor(scheduler, n_max_overrides, extended) as ex:
+                ok = report.run_claims(None, n_max_overrides, extended=extended, write=True, executor=ex)
             if ok and not args.extended:
                 from paper_repro.app import gallery
 

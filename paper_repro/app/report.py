@@ -11,6 +11,9 @@ from __future__ import annotations
 import hashlib
 import inspect
 import json
+import os
+import sys
+from contextlib import contextmanager
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -30,9 +33,18 @@ from paper_repro.util.io import (
     write_json,
     write_text,
 )
-from paper_repro.util.registry import CLAIMS, ClaimResult, Outcome, check_overrides, load_all, run_claim
+from paper_repro.util.registry import (
+    CLAIMS,
+    ClaimResult,
+    Outcome,
+    check_overrides,
+    claim_cache_key,
+    load_all,
+    run_claim,
+)
 from paper_repro.util.registry import FIGURES as FIGURE_REGISTRY
 from paper_repro.util.sweep import sweep
+from paper_repro.util.tasks import Task, TaskFailed, drive, timed
 
 
 def _short(text: str, width: int) -> str:
@@ -88,6 +100,7 @@ def _cost_estimate(cid: str, extended: bool) -> float:
 def _run_one(job: tuple[str, dict | None, bool]) -> tuple[ClaimResult, Outcome, float]:
     """One claim in a worker (module level, so that processes can run it)."""
     cid, ov, extended = job
+    load_all()  # a cluster worker has not imported the claims
     return run_claim(CLAIMS[cid], ov, extended=extended)
 
 
@@ -140,6 +153,120 @@ def reproduce_summary(run: ClaimsRun, files: int, seconds: float) -> str:
             f"{files} files written, {_duration(seconds)}.")
 
 
+#: Seconds assumed for a whole claim with no recorded cost (most take seconds; the first run starts them early).
+WHOLE_CLAIM_DEFAULT = 30.0
+
+
+class TaskRunner:
+    """Runs a round of tasks through :func:`~paper_repro.util.sweep.sweep` (longest first by the cost model),
+    records every task's measured cost, and puts the results back in the order asked."""
+
+    def __init__(self, extended: bool, executor=None, write: bool = False):
+        from paper_repro.app.costs import CostModel
+
+        self.extended, self.write = extended, write
+        self.model = CostModel(extended)
+        self.executor = executor
+        self.measured: dict[str, dict[str, Any]] = {}
+        self.rounds = 0
+
+    def predict(self, task: Task) -> float:
+        """Predicted CPU seconds: measured before, else the cost model; a whole claim never measured as a task
+        costs its timings of earlier runs or its hint, at least WHOLE_CLAIM_DEFAULT (so it starts early)."""
+        if task.func is _run_one and task.label not in self.model.measured:
+            cid, _, extended = task.args[0]
+            return max(_cost_estimate(cid, extended), WHOLE_CLAIM_DEFAULT)
+        return self.model.predict(task)
+
+    def __call__(self, batch: list[Task]) -> list[Any]:
+        import time
+
+        from paper_repro.app.costs import task_n
+
+        self.rounds += 1
+        order = sorted(range(len(batch)), key=lambda k: -self.predict(batch[k]))
+        t0 = time.perf_counter()
+        out = sweep(timed, [batch[k] for k in order], executor=self.executor, initializer=load_all,
+                    desc=f"tasks, round {self.rounds}:", label=lambda task: task.label)
+        wall = time.perf_counter() - t0
+        results: list[Any] = [None] * len(batch)
+        for k, (res, task_wall, cpu) in zip(order, out):
+            results[k] = res
+            task = batch[k]
+            self.measured[task.label] = {"name": task.name, "n": task_n(task), "cpu": round(cpu, 3),
+                                         "wall": round(task_wall, 3), "round": self.rounds}
+        if self.write:  # after every round: an interrupted or failed run still leaves its measured costs
+            from paper_repro.app.costs import record_costs
+
+            record_costs(self.extended, {t.label: self.measured[t.label] for t in batch})
+        cpu_sum = sum(self.measured[t.label]["cpu"] for t in batch)
+        print(f"tasks, round {self.rounds}: {len(batch)} tasks, {wall:.1f} s wall, {cpu_sum:.1f} s CPU in the tasks "
+              f"(load average {os.getloadavg()[0]:.1f})", file=sys.stderr, flush=True)
+        return results
+
+
+#: The extended parameters that ``--n-max N`` pushes to order N (the heavy claims, split into tasks per n).
+N_MAX_RANGE = (2, 200)
+
+
+def n_max_overrides(n_max: int) -> dict[str, dict[str, Any]]:
+    """Overrides of the heavy claims for ``--n-max N``: closed forms recovered and proven, positivity and levels to
+    n = N, the limit lemmas to max(40, 4N/3), the consequences of the all-n formula to 2N.
+
+    >>> n_max_overrides(36)["limit_formula"]
+    {'closed_form_n_max': 36, 'checks_n_max': 48}
+    """
+    lo, hi = N_MAX_RANGE
+    if isinstance(n_max, bool) or not isinstance(n_max, int) or not lo <= n_max <= hi:
+        raise ValueError(f"--n-max: an integer from {lo} to {hi}, got {n_max!r}")
+    return {"normalizing_closed_forms": {"proof_n_max": n_max},
+            "nonnegativity_extended": {"n_max": n_max, "publish_n_max": n_max},
+            "limit_formula": {"closed_form_n_max": n_max, "checks_n_max": max(40, -(-4 * n_max // 3))},
+            "general_formulas": {"n_max": n_max, "n_cons": 2 * n_max}}
+
+
+def estimate_cpu(overrides: dict[str, dict[str, Any]], extended: bool = True) -> dict[str, Any]:
+    """Predicted CPU seconds of the split claims' first round of tasks (the recoveries and proofs per n, the lemma
+    and exact checks: every task whose arguments are known before any result) from the cost model
+    (:mod:`paper_repro.app.costs`), and the longest of them (a lower bound of the wall time on any number of
+    workers)."""
+    from paper_repro.app.costs import CostModel
+
+    model = CostModel(extended)
+    tasks: dict[str, Task] = {}
+    for cid, ov in overrides.items():
+        c = CLAIMS.get(cid)
+        if c is None or c.body is None:
+            continue
+        body = c.body(**check_overrides(c, ov, extended))
+        tasks.update({t.key(): t for t in next(body)})
+        body.close()
+    costs = sorted(((model.predict(t), t.label) for t in tasks.values()), reverse=True)
+    return {"tasks": len(costs), "cpu_seconds": sum(c for c, _ in costs),
+            "longest": costs[0] if costs else (0.0, ""), "measured_tasks": len(model.measured)}
+
+
+@contextmanager
+def claims_executor(scheduler, n_max: dict[str, dict[str, Any]] | None, extended: bool):
+    """The executor of a run's claims (``None``: local processes; else a dask cluster,
+    :func:`paper_repro.app.cluster.open_executor`); with ``--n-max`` overrides, first prints the estimated CPU time."""
+    if n_max:
+        est = estimate_cpu(n_max, extended)
+        cost, label = est["longest"]
+        print(f"--n-max: estimated CPU time of the first round of tasks {est['cpu_seconds'] / 60:.1f} min over "
+              f"{est['tasks']} tasks (cost model fitted on {est['measured_tasks']} measured tasks, "
+              f"build/task_costs_extended.json); the longest task {label} about {cost / 60:.1f} min bounds the wall "
+              "time on any number of workers; later rounds (Sturm counts, fits, per-n formula checks) come on top",
+              flush=True)
+    if scheduler is None:
+        yield None
+        return
+    from paper_repro.app.cluster import open_executor
+
+    with open_executor(scheduler) as ex:
+        yield ex
+
+
 def run_claims(only: list[str] | None, overrides: dict[str, dict[str, Any]] | None, extended: bool = False,
                write: bool = True, executor=None) -> ClaimsRun:
     """Run claims, print the table, and (if ``write``) publish data; the result is true if all pass.
@@ -158,11 +285,27 @@ def run_claims(only: list[str] | None, overrides: dict[str, dict[str, Any]] | No
     cached: dict[str, bool] = {}
     # longest first (timings of earlier runs, else a rough hint), so two workers finish together;
     # results are put back in registry order, so the output does not depend on this
+    # Split claims (their inner loops are tasks: per n, per alpha) and whole claims go through one sweep per round
+    # (paper_repro.util.tasks.drive); whole claims first by cost (timings of earlier runs, else a rough hint).
+    # Results are put back in registry order, so the output does not depend on the order or the executor.
     first = [cid for cid in ids if not CLAIMS[cid].uses_results]
-    order = sorted(first, key=lambda cid: -_cost_estimate(cid, extended))
-    jobs = [(cid, (overrides or {}).get(cid), extended) for cid in order]
-    done = dict(zip(order, sweep(_run_one, jobs, executor=executor, initializer=load_all, desc="claims",
-                                 label=lambda job: job[0])))
+    params = {cid: check_overrides(CLAIMS[cid], (overrides or {}).get(cid), extended) for cid in first}
+    split = [cid for cid in first if CLAIMS[cid].body is not None
+             and not cache.is_cached("claims", claim_cache_key(CLAIMS[cid], params[cid]))]
+    order = sorted((cid for cid in first if cid not in split), key=lambda cid: -_cost_estimate(cid, extended))
+    jobs = [Task(_run_one, ((cid, (overrides or {}).get(cid), extended),)) for cid in order]
+    runner = TaskRunner(extended, executor, write=write)
+    asked: dict[str, list[Task]] = {}
+    driven = drive({cid: CLAIMS[cid].body(**params[cid]) for cid in split}, runner, extra=jobs, asked=asked)
+    done = {}
+    for cid, got in zip(order, driven.get(None, [])):
+        if isinstance(got, TaskFailed):
+            raise got.error
+        done[cid] = got
+    for cid in split:
+        spent = sum(runner.measured[t.label]["cpu"] for t in {t.key(): t for t in asked[cid]}.values())
+        done[cid] = run_claim(CLAIMS[cid], (overrides or {}).get(cid), extended=extended, outcome=driven[cid],
+                              seconds=spent)
     # claims that resolve checks to other claims run last, here, with the results of this run
     so_far = {cid: {"status": res.status, "kind": res.kind, "errata": sorted(e["id"] for e in out.errata),
                     "statement": res.statement}

@@ -18,7 +18,7 @@ from __future__ import annotations
 from flint import fmpq, fmpq_mat, fmpq_poly
 
 from paper_repro.core.normalization import orbits
-from paper_repro.theory.closed_forms import closed_forms_cached, proof_cached
+from paper_repro.theory.closed_forms import closed_forms_cached, proof_cached, records, remember
 from paper_repro.theory.general_formulas import (
     ALL_LEVELS_AT_1,
     CENTRE_END_VALUES,
@@ -33,6 +33,7 @@ from paper_repro.theory.general_formulas import (
     printed_level_formulas,
 )
 from paper_repro.util.registry import Outcome, claim
+from paper_repro.util.tasks import Task
 
 ALL_N_LATEX = (r"s^{2n+j} r^\alpha_{2n,2n-i,j} = [t^j X^i]\, (1+s^2t^2)^n "
                r"\left(1 + 2(c+s^2t)X + (1+s^2t^2)X^2\right)^n \frac{1 - m c t}{(1 - c t)^{2n+1}}")
@@ -72,6 +73,24 @@ def _centre_recurrence(n_max: int, order: int = 2, deg_n: int = 2, deg_c: int = 
             "unknowns": len(unknowns), "rank": rank, "found": rank < len(unknowns)}
 
 
+def fit_task(level: int, kind: str, n_fit: int, records: tuple[dict, ...]) -> Formula | None:
+    """Task: :func:`~paper_repro.theory.general_formulas.fit` on the closed forms of ``records`` (n <= n_fit)."""
+    for rec in records:
+        remember(rec)
+    return fit(level, kind, n_fit)
+
+
+def checks_at(n: int, formulas: tuple[Formula, ...], max_level: int, rec: dict | None) -> dict:
+    """Task: every formula at order ``n`` against the all-n formula (``consequence``), and, given the closed forms
+    ``rec`` of order n, against them (``closed_forms``)."""
+    if rec is not None:
+        remember(rec)
+    out: dict = {"consequence": [not check_against_formula(f, [n], max_level)["fails_for_n"] for f in formulas]}
+    if rec is not None:
+        out["closed_forms"] = [check(f, [n]) for f in formulas]
+    return out
+
+
 @claim("general_formulas", paper_ref=["normalizing_coeff_of_level_0", "prop:level_1_coefficients",
                                       "sec:open_problems"],
        statement="Open Question 1, general formulas: every coefficient of every level is given by the all-n formula "
@@ -86,19 +105,27 @@ def _centre_recurrence(n_max: int, order: int = 2, deg_n: int = 2, deg_c: int = 
                  "s^{2n+j} r_{2n,2n-i,j} -> (2n+j)!/((2n-i)! j! i!) (2n-(mu-1)j)/(2n+j), mu the number of minimal "
                  "entries of (2n-i, j, i) (claim limit_formula).",
        kind="proof", max_level=4, n_max=12, n_cons=30, suffix="",
-       extended={"max_level": 5, "n_max": 30, "n_cons": 60, "suffix": "_extended"})
-def run(max_level: int, n_max: int, n_cons: int, suffix: str) -> Outcome:
+       extended={"max_level": 5, "n_max": 30, "n_cons": 60, "suffix": "_extended"}, split=True)
+def run(max_level: int, n_max: int, n_cons: int, suffix: str):
+    # tasks: the closed forms per n (shared with the other claims of the run), then the fits per level and kind,
+    # then every formula per n (against the closed forms and against the all-n formula)
+    fit_jobs = [(level, kind) for level in range(2, max_level + 1) for kind in ("interior", "diagonal")]
+    top = max([n_max] + [N_FIT[level] for level, _ in fit_jobs])
+    centre_from_formula, recs = yield from records(
+        list(range(1, top + 1)), [Task(centre_end_values_from_formula, (n,)) for n in range(1, n_cons + 1)])
+    for rec in recs:
+        remember(rec)
+    fitted = yield [Task(fit_task, (level, kind, N_FIT[level], tuple(recs[: N_FIT[level]])))
+                    for level, kind in fit_jobs]
     proven = [n for n in range(1, n_max + 1) if proof_cached(n)["proved"]]
     entries, ok = [], True
     formulas: list[Formula] = list(printed_level_formulas())
-    for level in range(2, max_level + 1):
-        for kind in ("interior", "diagonal"):
-            f = fit(level, kind, N_FIT[level])
-            if f is None:
-                entries.append({"level": level, "kind": kind, "status": "not found",
-                                "searched": f"two-term shape, fitted on n <= {N_FIT[level]}"})
-                continue
-            formulas.append(f)
+    for (level, kind), f in zip(fit_jobs, fitted):
+        if f is None:
+            entries.append({"level": level, "kind": kind, "status": "not found",
+                            "searched": f"two-term shape, fitted on n <= {N_FIT[level]}"})
+            continue
+        formulas.append(f)
     entries.append({"level": "all", "kind": "all-n formula", "cases": "0 <= j <= i <= n, every n",
                     "status": "proven for every n",
                     "latex": ALL_N_LATEX,
@@ -106,11 +133,16 @@ def run(max_level: int, n_max: int, n_cons: int, suffix: str) -> Outcome:
                     "where": "m = 1 for j < i, 2 for i = j < n, 3 at the centre i = j = n",
                     "source": "hand proof with machine-checked lemmas, docs/question1_for_all_n.md "
                               "(claim question1_all_n)"})
-    for f in formulas:
+    per_n = yield [Task(checks_at, (n, tuple(formulas), max_level, recs[n - 1] if n <= n_max else None))
+                   for n in range(1, max(n_cons, n_max) + 1)]
+    for k, f in enumerate(formulas):
         first = 1 if f.kind == "all" else f.level + 1  # the smallest n with a case (level 1: n >= 2, as printed)
-        res = check(f, range(first, n_max + 1))
+        res = {"agrees_for_n": [n for n in range(first, n_max + 1) for r in [per_n[n - 1]["closed_forms"][k]]
+                                if r["agrees_for_n"]],
+               "fails_for_n": [n for n in range(first, n_max + 1) for r in [per_n[n - 1]["closed_forms"][k]]
+                               if r["fails_for_n"]]}
         status, top = _status(res["agrees_for_n"], res["fails_for_n"], proven, first)
-        cons = check_against_formula(f, range(first, n_cons + 1), max_level)
+        cons = {"fails_for_n": [n for n in range(first, n_cons + 1) if not per_n[n - 1]["consequence"][k]]}
         ok &= not res["fails_for_n"] and top == n_max and not cons["fails_for_n"]
         status = (f"equal to the all-n formula for each n <= {n_cons} (not proven for every n)"
                   if not cons["fails_for_n"] else f"differs from the all-n formula for n = {cons['fails_for_n'][:5]}")
@@ -130,7 +162,7 @@ def run(max_level: int, n_max: int, n_cons: int, suffix: str) -> Outcome:
                     "(m = 3); no short recurrence in n" + (" found" if centre["found"] else " of the searched shape"),
                     "searched": centre["searched"]})
     values = {n: centre_end_values(n) for n in range(1, n_max + 1)}
-    from_formula = {n: centre_end_values_from_formula(n) for n in range(1, n_cons + 1)}
+    from_formula = dict(zip(range(1, n_cons + 1), centre_from_formula))
     for e in CENTRE_END_VALUES:
         agrees = [n for n, v in values.items()
                   if v["vanishes_at_1"] and eval_expression(e["expression"], n) == v[e["kind"]]]

@@ -10,11 +10,19 @@ the trigonometric control points with the explicit weights of :func:`paper_repro
 
 from __future__ import annotations
 
-from paper_repro.theory.closed_forms import proof_cached
+from paper_repro.theory.closed_forms import proof_cached, records, remember
 from paper_repro.theory.limit_formula import conversion_weights_nonnegative, limit_checks, limit_terms_formula
 from paper_repro.theory.limits import conversion_is_convex, limit_terms
 from paper_repro.util.registry import Outcome, claim
-from paper_repro.util.sweep import sweep
+from paper_repro.util.tasks import Task
+
+
+def agrees_with_closed_forms(rec: dict) -> bool:
+    """The formula equals the limits P(1) of the proven closed forms of order ``rec["n"]`` (a task)."""
+    remember(rec)
+    n = rec["n"]
+    return bool(proof_cached(n)["proved"] and limit_terms(n) == limit_terms_formula(n))
+
 
 LEMMAS = ("exponent_set", "uniform_factor", "telescoping", "partition_of_unity", "monomials_independent")
 
@@ -30,14 +38,17 @@ LEMMAS = ("exponent_set", "uniform_factor", "telescoping", "partition_of_unity",
                  "exactly for n <= {checks_n_max}; independently, the formula equals the limits of the closed forms "
                  "(proven for every alpha) for n <= {closed_form_n_max}.",
        kind="proof", closed_form_n_max=12, checks_n_max=20,
-       extended={"closed_form_n_max": 30, "checks_n_max": 40})
-def run(closed_form_n_max: int, checks_n_max: int) -> Outcome:
-    by_closed_forms = []
-    for n in range(1, closed_form_n_max + 1):
-        if proof_cached(n)["proved"] and limit_terms(n) == limit_terms_formula(n):
-            by_closed_forms.append(n)
-    checks = sweep(limit_checks, list(range(checks_n_max, 0, -1)), desc="limit formula lemmas")
-    checks = sorted(checks, key=lambda r: r["n"])
+       extended={"closed_form_n_max": 30, "checks_n_max": 40}, split=True)
+def run(closed_form_n_max: int, checks_n_max: int):
+    # tasks: the lemmas per n, and the closed forms per n (shared with the other claims of the run); then the
+    # comparison with the closed forms per n
+    convex_top = min(checks_n_max, 12)
+    forms_ns = sorted(set(range(1, closed_form_n_max + 1)) | set(range(1, convex_top + 1)))
+    checks, recs = yield from records(forms_ns, [Task(limit_checks, (n,)) for n in range(1, checks_n_max + 1)])
+    for rec in recs:
+        remember(rec)
+    agree = yield [Task(agrees_with_closed_forms, (rec,)) for rec in recs if rec["n"] <= closed_form_n_max]
+    by_closed_forms = [n for n, ok in zip(range(1, closed_form_n_max + 1), agree) if ok]
     by_checks = [r["n"] for r in checks if all(r[k] for k in LEMMAS)]
     degree_ok = all(r["degree"] == 3 * r["n"] - 1 for r in checks)
     weights_ok = all(conversion_weights_nonnegative(n) for n in range(1, checks_n_max + 1))

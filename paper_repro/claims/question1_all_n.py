@@ -38,8 +38,9 @@ from paper_repro.core.domain import rational_alpha, sample_rational_points
 from paper_repro.core.normalization import orbits, scaled_coefficient_vector, scaled_orbit_coefficients, solve_reduced
 from paper_repro.core.normalizing_formula import scaled_table
 from paper_repro.theory import question1 as q1
-from paper_repro.theory.closed_forms import closed_forms_cached, proof_cached
+from paper_repro.theory.closed_forms import closed_forms_cached, proof_cached, records, remember
 from paper_repro.util.registry import Outcome, claim
+from paper_repro.util.tasks import Task
 
 C = fmpq_poly([0, 1])
 S2 = fmpq_poly([1, 0, -1])
@@ -84,6 +85,43 @@ def sampled(n: int, t: fmpq, points: int, seed: int, prime: int = 2_147_483_629)
             "collocation_mod_p_agrees": agree, "prime": prime}
 
 
+def _alpha(t: str):
+    return rational_alpha(fmpq(*map(int, t.split("/"))))
+
+
+def lemma_row(n: int, t: str) -> dict:
+    """Task: the lemmas of the proof for order ``n`` at tan(alpha/4) = t (exact)."""
+    alpha = _alpha(t)
+    return {"order_lemma": q1.order_table(n, alpha)["ok"], "triangular": q1.triangular_block(n, alpha)["ok"],
+            "triangular_solve_is_the_formula": q1.triangular_solution(n, alpha)["ok"]}
+
+
+def restriction_identity(t: str) -> dict:
+    """Task: the restriction identity at tan(alpha/4) = t and fixed points."""
+    return q1.restriction_identity(_alpha(t), fmpq(1, 7), [fmpq(1, 9), fmpq(1, 5), fmpq(2, 11), fmpq(3, 13)])
+
+
+def hexagon_fails(lo: int, hi: int) -> list[int]:
+    """Task: the orders in lo..hi whose hexagon check fails."""
+    return [n for n in range(lo, hi + 1) if not q1.hexagon_check(n)["ok"]]
+
+
+def weights_fail(lo: int, hi: int) -> list[int]:
+    """Task: the orders in lo..hi with a negative weight."""
+    return [n for n in range(lo, hi + 1) if not q1.weights_nonnegative(n)["ok"]]
+
+
+def sampled_at(n: int, t: str) -> dict:
+    """Task: part 3 at order ``n`` and tan(alpha/4) = t (:func:`sampled`)."""
+    return sampled(n, fmpq(*map(int, t.split("/"))), 3, seed=n)
+
+
+def agrees_with_record(rec: dict) -> dict:
+    """Task: part 1 for the order of ``rec`` with its closed forms and proof."""
+    remember(rec)
+    return agrees_with_closed_forms(rec["n"])
+
+
 @claim("question1_all_n", paper_ref=["sec:open_problems", "normalizing_weights", "symmetry_condition_1",
                                      "symmetry_condition_2", "symmetry_condition_3",
                                      "joint_systems_linear_independence"],
@@ -101,25 +139,32 @@ def sampled(n: int, t: fmpq, points: int, seed: int, prime: int = 2_147_483_629)
        kind="proof", n_closed=12, n_lemma=12, n_hexagon=30, n_weights=60, sampled_n=[31],
        ts=["1/7", "1/3", "3/4", "9/10"],
        extended={"n_closed": 30, "n_lemma": 20, "n_hexagon": 60, "n_weights": 200, "sampled_n": [31, 40, 60],
-                 "ts": ["1/7", "1/3", "3/4", "9/10"]})
-def run(n_closed: int, n_lemma: int, n_hexagon: int, n_weights: int, sampled_n: list[int], ts: list[str]) -> Outcome:
-    tqs = [fmpq(*map(int, t.split("/"))) for t in ts]
-    part1 = {n: agrees_with_closed_forms(n) for n in range(1, n_closed + 1)}
+                 "ts": ["1/7", "1/3", "3/4", "9/10"]}, split=True)
+def run(n_closed: int, n_lemma: int, n_hexagon: int, n_weights: int, sampled_n: list[int], ts: list[str]):
+    # tasks: the closed forms per n (shared with the other claims of the run) with every check per n and per alpha,
+    # then the comparison of the formula with the proven closed forms per n
+    lemma_jobs = [(n, t) for t in ts for n in range(1, n_lemma + 1)]
+    hexa_chunks = [(a, min(a + 9, n_hexagon)) for a in range(1, n_hexagon + 1, 10)]
+    weight_chunks = [(a, min(a + 24, n_weights)) for a in range(1, n_weights + 1, 25)]
+    sample_jobs = [(n, t) for n in sampled_n for t in ts]
+    checks = ([Task(lemma_row, job) for job in lemma_jobs] + [Task(restriction_identity, (t,)) for t in ts]
+              + [Task(hexagon_fails, chunk) for chunk in hexa_chunks]
+              + [Task(weights_fail, chunk) for chunk in weight_chunks]
+              + [Task(sampled_at, job) for job in sample_jobs])
+    got, recs = yield from records(list(range(1, n_closed + 1)), checks)
+    for rec in recs:
+        remember(rec)
+    agreed = yield [Task(agrees_with_record, (rec,)) for rec in recs]
+    part1 = dict(zip(range(1, n_closed + 1), agreed))
     closed_ok = all(v["proved_closed_forms"] and not v["mismatches"] for v in part1.values())
-    lemma_rows = {}
-    for t, tq in zip(ts, tqs):
-        alpha = rational_alpha(tq)
-        for n in range(1, n_lemma + 1):
-            lemma_rows[f"n={n},t={t}"] = {"order_lemma": q1.order_table(n, alpha)["ok"],
-                                          "triangular": q1.triangular_block(n, alpha)["ok"],
-                                          "triangular_solve_is_the_formula": q1.triangular_solution(n, alpha)["ok"]}
+    it = iter(got)
+    lemma_rows = {f"n={n},t={t}": next(it) for n, t in lemma_jobs}
     lemmas_ok = all(all(v.values()) for v in lemma_rows.values())
-    ident = {t: q1.restriction_identity(rational_alpha(tq), fmpq(1, 7),
-                                        [fmpq(1, 9), fmpq(1, 5), fmpq(2, 11), fmpq(3, 13)]) for t, tq in zip(ts, tqs)}
+    ident = {t: next(it) for t in ts}
     ident_ok = all(v["ok"] for v in ident.values())
-    hexa = [n for n in range(1, n_hexagon + 1) if not q1.hexagon_check(n)["ok"]]
-    weights = [n for n in range(1, n_weights + 1) if not q1.weights_nonnegative(n)["ok"]]
-    samples = {f"n={n},t={t}": sampled(n, tq, 3, seed=n) for n in sampled_n for t, tq in zip(ts, tqs)}
+    hexa = [n for _ in hexa_chunks for n in next(it)]
+    weights = [n for _ in weight_chunks for n in next(it)]
+    samples = {f"n={n},t={t}": next(it) for n, t in sample_jobs}
     samples_ok = all(v["partition_of_unity_exact"] and v["positive"] and v["collocation_mod_p_agrees"]
                      for v in samples.values())
     ok = closed_ok and lemmas_ok and ident_ok and not hexa and not weights and samples_ok

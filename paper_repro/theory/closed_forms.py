@@ -89,15 +89,130 @@ def sign_on_unit_interval(p: fmpq_poly) -> dict:
     return {"roots_in_open_unit_interval": roots, "sign": sign}
 
 
+#: What a cached proof keeps of :func:`prove`'s answer.
+PROOF_KEYS = ("proved", "independence", "unisolvence", "points", "residuals_zero", "residual_degree_bound")
+
+#: What a stored proof must look like (validated before a cached proof is used).
+PROOF_VALID = keys_and_types(proved=bool)
+
+#: Closed forms and proofs handed to this process by a sweep (:func:`remember`): ``n -> record``.  A task on a
+#: cluster worker has no shared disk cache; it receives the records it needs as arguments instead.
+_REMEMBERED: dict[int, dict] = {}
+
+
+def _forms_sha256(stored: dict) -> str:
+    return hashlib.sha256(json.dumps(dict(sorted(stored.items())), sort_keys=True).encode()).hexdigest()
+
+
+def record(n: int) -> dict:
+    """The recovered closed forms of order ``n`` and their proof, as JSON (a task of the extended sweeps: computed
+    once, then handed to every task and claim that needs them through :func:`remember`)."""
+    forms = closed_forms_cached(n)
+    return {"n": n, "forms": {k: v.as_json() for k, v in forms.items()}, "proof": proof_cached(n)}
+
+
+#: Points of the identity proof per task (n = 30 has 499 points, about 0.4 s of CPU each).
+PROOF_CHUNK = 48
+
+
+def recovered(n: int) -> dict:
+    """Task: the closed forms of order ``n`` as JSON (:func:`closed_forms_cached`)."""
+    return {k: v.as_json() for k, v in closed_forms_cached(n).items()}
+
+
+def _forms_from_json(stored: dict) -> dict[str, ClosedForm]:
+    return {k: ClosedForm(k, v["sin_power"], fmpq_poly([parse_fmpq(x) for x in v["numerator"]]))
+            for k, v in stored.items()}
+
+
+def _proof_key(n: int, stored: dict) -> dict:
+    return {"n": n, "forms_sha256": _forms_sha256(stored), "method": "identity-v1"}
+
+
+def proof_points_count(n: int) -> int:
+    from paper_repro.theory.identity_proof import EXTRA_POINTS
+
+    return len(orbits(n)) + EXTRA_POINTS
+
+
+def unisolvence(n: int) -> dict:
+    """Task: step 2 of the identity proof (the rank certificate of the orbit sums at the proof points)."""
+    from paper_repro.theory.identity_proof import proof_points, unisolvence_certificate
+
+    return unisolvence_certificate(n, proof_points(n, proof_points_count(n)))
+
+
+def residuals_vanish(n: int, stored: dict, start: int, stop: int) -> dict:
+    """Task: step 3 of the identity proof at the proof points ``start:stop`` of order ``n`` for the forms ``stored``
+    (JSON): the first point whose residual is not zero (``None``: all zero) and the residuals' degree bound."""
+    from paper_repro.theory.identity_proof import prepare, proof_points, residual_at_point
+
+    forms = _forms_from_json(stored)
+    pts = proof_points(n, proof_points_count(n))
+    cache = prepare(n, forms)
+    bad = next((k for k in range(start, stop)
+                if not residual_at_point(n, forms, pts.tu[k], pts.tv[k], _cache=cache).is_zero()), None)
+    return {"first_nonzero": bad, "degree_bound": 2 * (cache["d"] + cache["K"] + cache["R"])}
+
+
+def records(ns: list[int], extra: list | tuple = ()):
+    """Generator of a split claim (``got, recs = yield from records(ns, tasks)``): the closed forms of every order in
+    ``ns`` recovered (one task per n, with ``extra`` tasks of the caller in the same round), then proven -- the two
+    rank certificates and the residuals in chunks of :data:`PROOF_CHUNK` points, each a task -- unless the proof is
+    cached.  Returns the results of ``extra`` and the records (:func:`record`) in the order of ``ns``; the proof is
+    the dict :func:`proof_cached` computes in one piece (and is cached under its key)."""
+    from paper_repro.theory.identity_proof import independence_certificate
+    from paper_repro.util.cache import cached, is_cached
+    from paper_repro.util.tasks import Task
+
+    extra = list(extra)
+    got = yield [Task(recovered, (n,)) for n in ns] + extra
+    forms, extra_results = dict(zip(ns, got[: len(ns)])), got[len(ns):]
+    plans: dict[int, list] = {}
+    for n in ns:
+        if is_cached("closed_form_proof", _proof_key(n, forms[n]), PROOF_VALID):
+            plans[n] = []
+            continue
+        total = proof_points_count(n)
+        plans[n] = [Task(independence_certificate, (n,)), Task(unisolvence, (n,))] + [
+            Task(residuals_vanish, (n, forms[n], a, min(a + PROOF_CHUNK, total))) for a in range(0, total, PROOF_CHUNK)]
+    got = iter((yield [t for n in ns for t in plans[n]]))
+    out = []
+    for n in ns:
+        parts = [next(got) for _ in plans[n]]
+
+        def assemble(n=n, parts=parts) -> dict:
+            if not parts:  # cached (the caller's call below reads it)
+                raise AssertionError("proof expected in the cache")
+            cert1, cert2, chunks = parts[0], parts[1], parts[2:]
+            failed = next((c["first_nonzero"] for c in chunks if c["first_nonzero"] is not None), None)
+            return {"proved": cert1["full"] and cert2["full"] and failed is None, "independence": cert1,
+                    "unisolvence": cert2, "points": proof_points_count(n), "residuals_zero": failed is None,
+                    "residual_degree_bound": chunks[0]["degree_bound"]}
+
+        proof = cached("closed_form_proof", _proof_key(n, forms[n]), assemble, validate=PROOF_VALID)
+        out.append({"n": n, "forms": forms[n], "proof": proof})
+    return extra_results, out
+
+
+def remember(rec: dict) -> None:
+    """Make :func:`closed_forms_cached` and :func:`proof_cached` of ``rec["n"]`` return ``rec`` in this process
+    (no recomputation, no disk)."""
+    _REMEMBERED[rec["n"]] = rec
+
+
 def proof_cached(n: int) -> dict:
     """:func:`prove` of the recovered forms (:func:`closed_forms_cached`), memoised on disk by n and the forms."""
     forms = closed_forms_cached(n)
     text = json.dumps({k: v.as_json() for k, v in sorted(forms.items())}, sort_keys=True)
-    keep = ("proved", "independence", "unisolvence", "points", "residuals_zero", "residual_degree_bound")
+    rec = _REMEMBERED.get(n)
+    if rec is not None and rec.get("proof") is not None and _forms_sha256(rec["forms"]) == hashlib.sha256(
+            text.encode()).hexdigest():
+        return rec["proof"]
     return cached("closed_form_proof", {"n": n, "forms_sha256": hashlib.sha256(text.encode()).hexdigest(),
                                         "method": "identity-v1"},
-                  lambda: {k: v for k, v in prove(n, forms).items() if k in keep},
-                  validate=keys_and_types(proved=bool))
+                  lambda: {k: v for k, v in prove(n, forms).items() if k in PROOF_KEYS},
+                  validate=PROOF_VALID)
 
 
 def _forms_problem(n: int, value) -> str | None:
@@ -116,8 +231,10 @@ def _forms_problem(n: int, value) -> str | None:
 
 
 def closed_forms_cached(n: int) -> dict[str, ClosedForm]:
-    """:func:`recover`, memoised on disk."""
-    stored = cached("closed_forms", {"n": n}, lambda: {k: v.as_json() for k, v in recover(n).items()},
-                    validate=lambda value: _forms_problem(n, value))
+    """:func:`recover`, memoised on disk (or handed over by :func:`remember`)."""
+    rec = _REMEMBERED.get(n)
+    stored = rec["forms"] if rec is not None else cached(
+        "closed_forms", {"n": n}, lambda: {k: v.as_json() for k, v in recover(n).items()},
+        validate=lambda value: _forms_problem(n, value))
     return {k: ClosedForm(k, v["sin_power"], fmpq_poly([parse_fmpq(x) for x in v["numerator"]]))
             for k, v in stored.items()}

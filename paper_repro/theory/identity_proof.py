@@ -176,7 +176,11 @@ def residual_at_point(n: int, forms: dict, tu: fmpq, tv: fmpq, *, _cache: dict |
     return total
 
 
-def prove_identity(n: int, forms: dict, *, extra: int = 3, progress: bool = False) -> dict:
+#: Proof points beyond the number of orbits (the unisolvence certificate needs only that many; a margin).
+EXTRA_POINTS = 3
+
+
+def prove_identity(n: int, forms: dict, *, extra: int = EXTRA_POINTS, progress: bool = False) -> dict:
     """Steps 1-3 for the candidates ``forms`` ``{orbit representative label: ClosedForm}``.
 
     ``proved`` is True when both rank certificates are full and every residual polynomial is zero.

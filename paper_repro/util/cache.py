@@ -207,6 +207,12 @@ def cached(name: str, params: dict, compute: Callable[[], T], *, report_hit: boo
     return (value, False) if report_hit else value
 
 
+def is_cached(name: str, params: dict, validate: Callable[[Any], str | None] | None = None) -> bool:
+    """Whether :func:`cached` would return a stored value for ``name`` and ``params`` (nothing computed)."""
+    return enabled() and _read(cache_dir() / name / f"{key(name, params)}.json", name, params, validate,
+                               warn=False) is not _MISS
+
+
 @lru_cache(maxsize=1)
 def code_fingerprint() -> str:
     """sha256 of every source file of the package: part of the key of cached claim results, so that

@@ -70,6 +70,9 @@ class Claim:
     #: runs after every other claim of the run and receives their results as ``claim_results`` (see
     #: :func:`run_claim`): a claim that resolves checks to other claims (``every_line``)
     uses_results: bool = False
+    #: a split claim's body (a generator yielding lists of tasks, :mod:`paper_repro.util.tasks`); ``func`` then
+    #: runs it inline
+    body: Callable[..., Any] | None = None
 
 
 @dataclass
@@ -125,13 +128,16 @@ FIGURE_MODULES = (
 
 
 def claim(id: str, *, paper_ref: list[str], statement: str, kind: str, extended: dict | None = None,
-          uses_results: bool = False, alpha_range: tuple[float, float, str] | None = None,
+          uses_results: bool = False, alpha_range: tuple[float, float, str] | None = None, split: bool = False,
           **defaults: Any) -> Callable[[Callable[..., Outcome]], Callable[..., Outcome]]:
     """Register a claim function under ``id`` with default parameters ``defaults``.
 
     ``alpha_range = (low, high, why)``: where the claim decides its statement at every order it runs at
     (measured: ``tools/alpha_ranges.py``); the command line refuses ``--alpha`` outside it before any work
-    (:data:`ALPHA_RANGES`)."""
+    (:data:`ALPHA_RANGES`).
+
+    With ``split`` the function is a generator that yields lists of tasks (:mod:`paper_repro.util.tasks`):
+    a sweep runs them on every worker; the decorator returns a function that runs them inline."""
     if kind not in KINDS:
         raise ValueError(f"kind must be one of {KINDS}, got {kind!r}")
     if alpha_range is not None:
@@ -140,10 +146,22 @@ def claim(id: str, *, paper_ref: list[str], statement: str, kind: str, extended:
             raise ValueError(f"alpha_range must be (low, high, why) with 0 < low < high < pi, got {alpha_range!r}")
         ALPHA_RANGES[id] = (lo, hi, why)
 
-    def deco(func: Callable[..., Outcome]) -> Callable[..., Outcome]:
+    def deco(func: Callable[..., Any]) -> Callable[..., Outcome]:
         if id in CLAIMS:
             raise ValueError(f"claim {id!r} registered twice")
-        CLAIMS[id] = Claim(id, list(paper_ref), statement, kind, func, dict(defaults), extended, uses_results)
+        body = None
+        if split:
+            import functools
+
+            from paper_repro.util.tasks import drive_inline
+
+            body = func
+
+            @functools.wraps(body)
+            def func(**params: Any) -> Outcome:
+                return drive_inline(body(**params))
+
+        CLAIMS[id] = Claim(id, list(paper_ref), statement, kind, func, dict(defaults), extended, uses_results, body)
         return func
 
     return deco
@@ -258,12 +276,21 @@ def check_overrides(c: Claim, overrides: dict[str, Any] | None, extended: bool =
 _OUTCOME = keys_and_types(passed=bool, measured=dict, kind=(str, type(None)), errata=list, data=dict, raw=dict)
 
 
+def claim_cache_key(c: Claim, params: dict[str, Any], claim_results: dict[str, dict] | None = None) -> dict:
+    """The key of a claim's cached result: id, parameters and the package source."""
+    extra = {"claim_results": claim_results} if c.uses_results else {}
+    return {"id": c.id, "params": params, "code": code_fingerprint(), **extra}
+
+
 def run_claim(c: Claim, overrides: dict[str, Any] | None = None, extended: bool = False,
-              claim_results: dict[str, dict] | None = None) -> tuple[ClaimResult, Outcome, float]:
+              claim_results: dict[str, dict] | None = None, outcome: Outcome | BaseException | None = None,
+              seconds: float | None = None) -> tuple[ClaimResult, Outcome, float]:
     """Run one claim; returns its result, the raw outcome (errata, data files), and the seconds it took.
 
     ``overrides`` may only name parameters the claim takes (``ValueError`` listing them otherwise).  A
-    claim that raises is reported as failing with the error, and that failure is never cached.  A claim
+    claim that raises is reported as failing with the error, and that failure is never cached.
+    ``outcome`` (with ``seconds``): what the claim's body returned (or raised) when a sweep ran its tasks
+    (:func:`paper_repro.util.tasks.drive`); it is checked, cached and reported like a computed one.  A claim
     registered with ``uses_results`` receives ``claim_results`` (``{id: {"status", "kind", "errata", "statement"}}``
     of the claims run before it; ``None`` when run alone) as a keyword argument; they are part of its cache key.
 
@@ -275,12 +302,14 @@ def run_claim(c: Claim, overrides: dict[str, Any] | None = None, extended: bool 
     extra = {"claim_results": claim_results} if c.uses_results else {}
 
     def compute() -> dict:
-        return asdict(c.func(**params, **extra))
+        if isinstance(outcome, BaseException):
+            raise outcome
+        return asdict(outcome if outcome is not None else c.func(**params, **extra))
 
     try:
         # whole-claim cache: keyed by id, parameters and the package source (see cache.code_fingerprint)
-        stored, hit = cached("claims", {"id": c.id, "params": params, "code": code_fingerprint(), **extra}, compute,
-                             report_hit=True, validate=_OUTCOME)
+        stored, hit = cached("claims", claim_cache_key(c, params, claim_results), compute, report_hit=True,
+                             validate=_OUTCOME)
     except Exception as exc:  # a crashing check is a failing claim, reported as such (and not cached)
         stored, hit = asdict(Outcome(False, {"error": f"{type(exc).__name__}: {exc}"})), False
     out = Outcome(**stored)
@@ -291,7 +320,8 @@ def run_claim(c: Claim, overrides: dict[str, Any] | None = None, extended: bool 
         out.passed = False
         out.measured = {**out.measured, "error": f"measured holds machine-dependent raw values at {bad} "
                                                  "(publish a bound or a rounded value: paper_repro.util.measured)"}
-    seconds = time.perf_counter() - t0
+    spent = time.perf_counter() - t0
+    seconds = spent if hit or seconds is None else spent + seconds  # a swept claim: its tasks' seconds
     kind = out.kind or c.kind
     if kind not in KINDS:
         raise ValueError(f"claim {c.id}: kind {kind!r} not in {KINDS}")
