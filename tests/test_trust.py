@@ -424,3 +424,43 @@ def test_scaled_float_coefficients_are_certified_too():
     ex = coefficients(3, alpha, "exact", scaled=True)
     got = coefficients(3, alpha, scaled=True)
     assert all(got[k] == float(Fraction(int(v.p), int(v.q))) for k, v in ex.items())
+
+
+# ---------------------------------------------------------------- hostile pass of the public API (BAD.md)
+# Each test below failed before its fix (checked by reverting the fix).
+
+def test_parse_alpha_text_is_the_nearest_float():
+    from fractions import Fraction
+
+    import mpmath
+
+    from paper_repro.util.validation import parse_alpha
+
+    with mpmath.workdps(60):
+        for text, exact in [("2pi/3", 2 * mpmath.pi / 3), ("2*pi/3", 2 * mpmath.pi / 3), ("π/3", mpmath.pi / 3),
+                            ("0.7pi/3", mpmath.mpf("0.7") * mpmath.pi / 3), ("1.1/3", mpmath.mpf("1.1") / 3)]:
+            got = parse_alpha(text)
+            err = abs(mpmath.mpf(got) - exact)
+            # no other float is closer: both neighbours are farther from the exact value
+            assert err <= abs(mpmath.mpf(np.nextafter(got, 0)) - exact), text
+            assert err <= abs(mpmath.mpf(np.nextafter(got, 4)) - exact), text
+    assert parse_alpha("2pi/3") == 2.0943951023931957 and parse_alpha("π/3") == 1.0471975511965979
+    assert parse_alpha("1/3") == float(Fraction(1, 3))
+
+
+@pytest.mark.parametrize("text", ["5e-324", "1e-310", "1e-400"])
+def test_parse_alpha_refuses_subnormal_text(text):
+    from paper_repro.util.validation import parse_alpha
+
+    with pytest.raises(ValueError, match=r"alpha must lie in \(0, pi\)|alpha must lie in the open interval"):
+        parse_alpha(text)
+
+
+def test_parse_alpha_does_not_echo_a_huge_text_and_huge_int_is_valueerror():
+    from paper_repro.util.validation import parse_alpha
+
+    with pytest.raises(ValueError, match="alpha") as info:
+        parse_alpha("9" * 5000)
+    assert len(str(info.value)) < 300
+    with pytest.raises(ValueError, match=r"alpha must lie in the open interval \(0, pi\)"):
+        parse_alpha(10**400)
