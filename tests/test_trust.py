@@ -464,3 +464,36 @@ def test_parse_alpha_does_not_echo_a_huge_text_and_huge_int_is_valueerror():
     assert len(str(info.value)) < 300
     with pytest.raises(ValueError, match=r"alpha must lie in the open interval \(0, pi\)"):
         parse_alpha(10**400)
+
+
+def _fit_data():
+    from paper_repro import sample_points
+
+    pts = sample_points(1.0, 50)
+    return pts, np.random.default_rng(0).normal(size=(50, 3))
+
+
+@pytest.mark.parametrize("kwargs, kind, words", [
+    (dict(corners=np.full((3, 3), np.nan)), ValueError, "corners must be a finite"),
+    (dict(boundary={"u=0": lambda t: np.full((len(t), 3), np.nan)}), ValueError, r"boundary\['u=0'\].*finite"),
+    (dict(corners="yes"), TypeError, "corners must be"),
+    (dict(boundary={"u=0": lambda t: np.zeros(3)}), ValueError, r"curve\(t\) must return a \(9, 3\)"),
+    (dict(boundary={"u=0": lambda t: np.zeros((3, len(t)))}), ValueError, r"boundary\['u=0'\]: curve\(t\)"),
+    (dict(boundary={"u=0": 5}), TypeError, r"boundary\['u=0'\] must be a callable"),
+    (dict(boundary=["u=0"]), TypeError, "boundary must be a dict"),
+    (dict(full_output="y"), TypeError, "full_output must be True or False"),
+])
+def test_fit_least_squares_refuses_bad_corners_boundary_flags(kwargs, kind, words):
+    from paper_repro.surfaces.fitting import fit_least_squares
+
+    pts, vals = _fit_data()
+    with pytest.raises(kind, match=words):
+        fit_least_squares(pts, vals, 1, 1.0, **kwargs)
+
+
+def test_fit_least_squares_refuses_numeric_strings_as_values():
+    from paper_repro.surfaces.fitting import fit_least_squares
+
+    pts, vals = _fit_data()
+    with pytest.raises(TypeError, match="values must be real numbers"):
+        fit_least_squares(pts, vals.astype(str), 1, 1.0)
