@@ -497,3 +497,35 @@ def test_fit_least_squares_refuses_numeric_strings_as_values():
     pts, vals = _fit_data()
     with pytest.raises(TypeError, match="values must be real numbers"):
         fit_least_squares(pts, vals.astype(str), 1, 1.0)
+
+
+def test_merge_meshes_refuses_mixing_normals_and_bad_faces():
+    from paper_repro.surfaces.patch import merge_meshes
+
+    v, f, n = np.eye(3), np.array([[0, 1, 2]]), np.ones((3, 3))
+    assert len(merge_meshes([(v, f, n), (v, f, n)])) == 3
+    with pytest.raises(ValueError, match="normals with every mesh or with none"):
+        merge_meshes([(v, f, n), (v, f)])
+    with pytest.raises(ValueError, match=r"meshes\[0\]: faces must index its vertices 0..2"):
+        merge_meshes([(v, np.array([[0, 1, 7]]))])
+    with pytest.raises(ValueError, match=r"meshes\[1\]: faces must index"):
+        merge_meshes([(v, f), (v, np.array([[0, -1, 2]]))])
+    with pytest.raises(ValueError, match=r"meshes\[1\]: vertices must be a finite \(V, 3\)"):
+        merge_meshes([(v, f), (v[:, :2], f)])
+    with pytest.raises(ValueError, match=r"meshes\[0\]: vertices must be a finite"):
+        merge_meshes([(v * np.nan, f)])
+
+
+def test_export_mesh_refuses_all_nan_or_infinite_normals(tmp_path):
+    from paper_repro import export_mesh
+
+    v, f = np.eye(3), np.array([[0, 1, 2]])
+    with pytest.raises(ValueError, match="normals are NaN at every vertex"):
+        export_mesh(tmp_path / "x.obj", v, f, np.full((3, 3), np.nan))
+    with pytest.raises(ValueError, match="normals must be finite"):
+        export_mesh(tmp_path / "x.ply", v, f, np.full((3, 3), np.inf))
+    assert list(tmp_path.iterdir()) == []
+    some = np.eye(3)
+    some[0] = np.nan  # one vertex without a normal (a degenerate point): written as the zero vector
+    text = export_mesh(tmp_path / "y.obj", v, f, some).read_text()
+    assert "nan" not in text.lower() and "vn 0.0 0.0 0.0" in text
