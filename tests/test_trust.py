@@ -529,3 +529,31 @@ def test_export_mesh_refuses_all_nan_or_infinite_normals(tmp_path):
     some[0] = np.nan  # one vertex without a normal (a degenerate point): written as the zero vector
     text = export_mesh(tmp_path / "y.obj", v, f, some).read_text()
     assert "nan" not in text.lower() and "vn 0.0 0.0 0.0" in text
+
+
+@pytest.mark.parametrize("call, kind, words", [
+    (lambda m: m.torus_pieces(1.0, np.nan, 1.0, [0.0], [0.0]), ValueError, "rho must be a finite"),
+    (lambda m: m.torus_pieces(1.0, 3.0, np.inf, [0.0], [0.0]), ValueError, "mu must be a finite"),
+    (lambda m: m.torus_pieces(1.0, 3.0, 1.0, "a", [0.0]), TypeError, "phis must be a sequence"),
+    (lambda m: m.torus_pieces(1.0, 3.0, 1.0, [0.0], [np.nan]), ValueError, "psis entries must be a finite"),
+    (lambda m: m.cyclide_pieces(1.0, dict(a=6, c=2, mu=3), [0.0], [0.0]), TypeError, "params must be a dict with"),
+    (lambda m: m.cyclide_pieces(1.0, [6, 4, 2, 3], [0.0], [0.0]), TypeError, "params must be a dict with"),
+    (lambda m: m.cyclide_pieces(1.0, dict(a=6, b="4", c=2, mu=3), [0.0], [0.0]), TypeError, r"params\['b'\]"),
+    (lambda m: m.join_error([], 1.0), ValueError, "pieces must be a non-empty list"),
+])
+def test_models_refuse_bad_parameters_naming_them(call, kind, words):
+    from paper_repro.surfaces import models
+
+    with pytest.raises(kind, match=words):
+        call(models)
+
+
+def test_join_error_refuses_to_report_an_unmeasured_join_as_perfect():
+    from paper_repro.surfaces.models import join_error, torus_pieces
+
+    pieces = torus_pieces(1.0, 3.0, 1.0, [0.0], [0.0])
+    assert 0 <= join_error(pieces, 1.0) < 1e-13  # the two triangles of one square meet on the diagonal
+    with pytest.raises(ValueError, match="samples must be an integer from 2"):
+        join_error(pieces, 1.0, samples=0)
+    with pytest.raises(ValueError, match="no join was measured"):
+        join_error(pieces[:1], 1.0)
