@@ -557,3 +557,17 @@ def test_join_error_refuses_to_report_an_unmeasured_join_as_perfect():
         join_error(pieces, 1.0, samples=0)
     with pytest.raises(ValueError, match="no join was measured"):
         join_error(pieces[:1], 1.0)
+
+
+def test_labelled_net_survives_pickle_and_copy():
+    import copy
+    import pickle
+
+    from paper_repro.core.nets import LabelledNet
+
+    net = LabelledNet(np.arange(57.0).reshape(19, 3), 2)
+    for back in (pickle.loads(pickle.dumps(net)), pickle.loads(pickle.dumps(net, protocol=5)), copy.deepcopy(net),
+                 copy.copy(net)):
+        assert isinstance(back, LabelledNet) and back.n == 2
+        assert np.array_equal(back, net) and back["r_{4,3,1}"].tolist() == net["r_{4,3,1}"].tolist()
+    assert np.array_equal(pickle.loads(pickle.dumps(net.T)), net.T)  # a reshaped view pickles as an array
