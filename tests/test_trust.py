@@ -571,3 +571,32 @@ def test_labelled_net_survives_pickle_and_copy():
         assert isinstance(back, LabelledNet) and back.n == 2
         assert np.array_equal(back, net) and back["r_{4,3,1}"].tolist() == net["r_{4,3,1}"].tolist()
     assert np.array_equal(pickle.loads(pickle.dumps(net.T)), net.T)  # a reshaped view pickles as an array
+
+
+def test_patch_mesh_requires_bool_normals_and_works_for_an_exact_patch():
+    import paper_repro as pr
+    from paper_repro.core.domain import rational_alpha
+
+    net = np.random.default_rng(0).normal(size=(7, 3))
+    for bad in (1, "yes"):
+        with pytest.raises(TypeError, match="normals must be True or False"):
+            pr.Patch(1, 1.0, net).mesh(4, normals=bad)
+    a = rational_alpha((1, 3))
+    exact = pr.Patch(1, a, net, arith="exact").mesh(2)
+    plain = pr.Patch(1, a, net).mesh(2)
+    assert exact[0].dtype == np.float64 and np.array_equal(exact[0], plain[0]) and np.array_equal(exact[1], plain[1])
+
+
+def test_sample_points_flags_and_seeds_are_checked():
+    import paper_repro as pr
+    from paper_repro.core.domain import rational_alpha, sample_rational_points
+
+    with pytest.raises(TypeError, match="interior must be True or False"):
+        pr.sample_points(1.0, 3, interior="no")
+    a = rational_alpha((1, 2))
+    with pytest.raises(ValueError, match="seed must be an integer >= 0"):
+        sample_rational_points(a, 3, seed=-2)
+    with pytest.raises(TypeError, match="max_denominator must be an integer >= 1"):
+        sample_rational_points(a, 3, max_denominator=10.5)
+    with pytest.raises(ValueError, match="max_denominator must be an integer >= 1"):
+        sample_rational_points(a, 3, max_denominator=0)

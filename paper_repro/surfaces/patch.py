@@ -461,8 +461,11 @@ class Patch:
 
     def mesh(self, resolution: int = 16, normals: bool = False):
         """Triangle mesh on a barycentric grid: ``(vertices (V, d), faces (F, 3))``, and the unit vertex
-        normals ``(V, 3)`` as a third item when ``normals`` (3-D nets; see :meth:`normals`)."""
-        return mesh_of(self, resolution, normals)
+        normals ``(V, 3)`` as a third item when ``normals`` is True (3-D nets; see :meth:`normals`).  Always
+        evaluated in float64, whatever the patch's default ``arith`` (a mesh is for drawing and export)."""
+        if not isinstance(normals, (bool, np.bool_)):
+            raise TypeError(f"normals must be True or False, got {normals!r}")
+        return mesh_of(self, resolution, bool(normals))
 
 
 def check_curve_parameter(t, alpha: float) -> np.ndarray:
@@ -516,7 +519,7 @@ def triangle_grid(resolution: int) -> tuple[np.ndarray, np.ndarray]:
 
 def mesh_of(patch: Patch, resolution: int = 16, normals: bool = False):
     bary, faces = triangle_grid(resolution)
-    verts = patch.at_barycentric(bary)
+    verts = patch(barycentric_to_uvw(patch.alpha, bary), arith="float")  # float64 whatever patch.ctx is
     if not normals:
         return verts, faces
     nrm = patch.normals(barycentric_to_uvw(patch.alpha, bary))
