@@ -19,4 +19,10 @@ if code == 130:
     sys.stdout.flush()
     sys.stderr.flush()
     os._exit(130)
+try:
+    sys.stdout.flush()  # the last buffered lines: a reader that went away is a quiet exit, not a traceback
+except BrokenPipeError:
+    from paper_repro.app.cli import quiet_broken_pipe
+
+    code = quiet_broken_pipe()
 sys.exit(code)

@@ -1,4 +1,5 @@
 import json
+import os
 import re
 import subprocess
 import sys
@@ -194,3 +195,17 @@ def test_the_annotated_paper_says_a_sentence_not_a_dict():
                                                       "not yet checked": 0}, "displays": 3, "math": 4,
                                            "math_fallback": 0, "unplaced_entries": 0, "unplaced_errata": 0})
     assert "{" not in line and line.endswith(".") and "2 errata" in line
+
+
+def test_cli_reader_going_away_is_a_quiet_exit(tmp_path):
+    """`python -m paper_repro labels 200 | head -1` printed a BrokenPipeError traceback (exit 1): now no traceback
+    and exit 141 (128 + SIGPIPE, as a shell reports for a Unix tool).  labels 200 prints about 8 MB, far more than
+    a pipe holds, so the writer is blocked when the reader closes."""
+    env = {**os.environ, "PAPER_REPRO_CACHE": str(tmp_path / "cache")}
+    proc = subprocess.Popen([sys.executable, "-m", "paper_repro", "labels", "200"], stdout=subprocess.PIPE,
+                            stderr=subprocess.PIPE, env=env)
+    assert proc.stdout.readline().split()[1] == b"R_{400,200,200}"
+    proc.stdout.close()
+    err = proc.stderr.read().decode()
+    assert proc.wait(timeout=120) == 141
+    assert "Traceback" not in err and "BrokenPipe" not in err, err

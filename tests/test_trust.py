@@ -424,3 +424,179 @@ def test_scaled_float_coefficients_are_certified_too():
     ex = coefficients(3, alpha, "exact", scaled=True)
     got = coefficients(3, alpha, scaled=True)
     assert all(got[k] == float(Fraction(int(v.p), int(v.q))) for k, v in ex.items())
+
+
+# ---------------------------------------------------------------- hostile pass of the public API (BAD.md)
+# Each test below failed before its fix (checked by reverting the fix).
+
+def test_parse_alpha_text_is_the_nearest_float():
+    from fractions import Fraction
+
+    import mpmath
+
+    from paper_repro.util.validation import parse_alpha
+
+    with mpmath.workdps(60):
+        for text, exact in [("2pi/3", 2 * mpmath.pi / 3), ("2*pi/3", 2 * mpmath.pi / 3), ("π/3", mpmath.pi / 3),
+                            ("0.7pi/3", mpmath.mpf("0.7") * mpmath.pi / 3), ("1.1/3", mpmath.mpf("1.1") / 3)]:
+            got = parse_alpha(text)
+            err = abs(mpmath.mpf(got) - exact)
+            # no other float is closer: both neighbours are farther from the exact value
+            assert err <= abs(mpmath.mpf(np.nextafter(got, 0)) - exact), text
+            assert err <= abs(mpmath.mpf(np.nextafter(got, 4)) - exact), text
+    assert parse_alpha("2pi/3") == 2.0943951023931957 and parse_alpha("π/3") == 1.0471975511965979
+    assert parse_alpha("1/3") == float(Fraction(1, 3))
+
+
+@pytest.mark.parametrize("text", ["5e-324", "1e-310", "1e-400"])
+def test_parse_alpha_refuses_subnormal_text(text):
+    from paper_repro.util.validation import parse_alpha
+
+    with pytest.raises(ValueError, match=r"alpha must lie in \(0, pi\)|alpha must lie in the open interval"):
+        parse_alpha(text)
+
+
+def test_parse_alpha_does_not_echo_a_huge_text_and_huge_int_is_valueerror():
+    from paper_repro.util.validation import parse_alpha
+
+    with pytest.raises(ValueError, match="alpha") as info:
+        parse_alpha("9" * 5000)
+    assert len(str(info.value)) < 300
+    with pytest.raises(ValueError, match=r"alpha must lie in the open interval \(0, pi\)"):
+        parse_alpha(10**400)
+
+
+def _fit_data():
+    from paper_repro import sample_points
+
+    pts = sample_points(1.0, 50)
+    return pts, np.random.default_rng(0).normal(size=(50, 3))
+
+
+@pytest.mark.parametrize("kwargs, kind, words", [
+    (dict(corners=np.full((3, 3), np.nan)), ValueError, "corners must be a finite"),
+    (dict(boundary={"u=0": lambda t: np.full((len(t), 3), np.nan)}), ValueError, r"boundary\['u=0'\].*finite"),
+    (dict(corners="yes"), TypeError, "corners must be"),
+    (dict(boundary={"u=0": lambda t: np.zeros(3)}), ValueError, r"curve\(t\) must return a \(9, 3\)"),
+    (dict(boundary={"u=0": lambda t: np.zeros((3, len(t)))}), ValueError, r"boundary\['u=0'\]: curve\(t\)"),
+    (dict(boundary={"u=0": 5}), TypeError, r"boundary\['u=0'\] must be a callable"),
+    (dict(boundary=["u=0"]), TypeError, "boundary must be a dict"),
+    (dict(full_output="y"), TypeError, "full_output must be True or False"),
+])
+def test_fit_least_squares_refuses_bad_corners_boundary_flags(kwargs, kind, words):
+    from paper_repro.surfaces.fitting import fit_least_squares
+
+    pts, vals = _fit_data()
+    with pytest.raises(kind, match=words):
+        fit_least_squares(pts, vals, 1, 1.0, **kwargs)
+
+
+def test_fit_least_squares_refuses_numeric_strings_as_values():
+    from paper_repro.surfaces.fitting import fit_least_squares
+
+    pts, vals = _fit_data()
+    with pytest.raises(TypeError, match="values must be real numbers"):
+        fit_least_squares(pts, vals.astype(str), 1, 1.0)
+
+
+def test_merge_meshes_refuses_mixing_normals_and_bad_faces():
+    from paper_repro.surfaces.patch import merge_meshes
+
+    v, f, n = np.eye(3), np.array([[0, 1, 2]]), np.ones((3, 3))
+    assert len(merge_meshes([(v, f, n), (v, f, n)])) == 3
+    with pytest.raises(ValueError, match="normals with every mesh or with none"):
+        merge_meshes([(v, f, n), (v, f)])
+    with pytest.raises(ValueError, match=r"meshes\[0\]: faces must index its vertices 0..2"):
+        merge_meshes([(v, np.array([[0, 1, 7]]))])
+    with pytest.raises(ValueError, match=r"meshes\[1\]: faces must index"):
+        merge_meshes([(v, f), (v, np.array([[0, -1, 2]]))])
+    with pytest.raises(ValueError, match=r"meshes\[1\]: vertices must be a finite \(V, 3\)"):
+        merge_meshes([(v, f), (v[:, :2], f)])
+    with pytest.raises(ValueError, match=r"meshes\[0\]: vertices must be a finite"):
+        merge_meshes([(v * np.nan, f)])
+
+
+def test_export_mesh_refuses_all_nan_or_infinite_normals(tmp_path):
+    from paper_repro import export_mesh
+
+    v, f = np.eye(3), np.array([[0, 1, 2]])
+    with pytest.raises(ValueError, match="normals are NaN at every vertex"):
+        export_mesh(tmp_path / "x.obj", v, f, np.full((3, 3), np.nan))
+    with pytest.raises(ValueError, match="normals must be finite"):
+        export_mesh(tmp_path / "x.ply", v, f, np.full((3, 3), np.inf))
+    assert list(tmp_path.iterdir()) == []
+    some = np.eye(3)
+    some[0] = np.nan  # one vertex without a normal (a degenerate point): written as the zero vector
+    text = export_mesh(tmp_path / "y.obj", v, f, some).read_text()
+    assert "nan" not in text.lower() and "vn 0.0 0.0 0.0" in text
+
+
+@pytest.mark.parametrize("call, kind, words", [
+    (lambda m: m.torus_pieces(1.0, np.nan, 1.0, [0.0], [0.0]), ValueError, "rho must be a finite"),
+    (lambda m: m.torus_pieces(1.0, 3.0, np.inf, [0.0], [0.0]), ValueError, "mu must be a finite"),
+    (lambda m: m.torus_pieces(1.0, 3.0, 1.0, "a", [0.0]), TypeError, "phis must be a sequence"),
+    (lambda m: m.torus_pieces(1.0, 3.0, 1.0, [0.0], [np.nan]), ValueError, "psis entries must be a finite"),
+    (lambda m: m.cyclide_pieces(1.0, dict(a=6, c=2, mu=3), [0.0], [0.0]), TypeError, "params must be a dict with"),
+    (lambda m: m.cyclide_pieces(1.0, [6, 4, 2, 3], [0.0], [0.0]), TypeError, "params must be a dict with"),
+    (lambda m: m.cyclide_pieces(1.0, dict(a=6, b="4", c=2, mu=3), [0.0], [0.0]), TypeError, r"params\['b'\]"),
+    (lambda m: m.join_error([], 1.0), ValueError, "pieces must be a non-empty list"),
+])
+def test_models_refuse_bad_parameters_naming_them(call, kind, words):
+    from paper_repro.surfaces import models
+
+    with pytest.raises(kind, match=words):
+        call(models)
+
+
+def test_join_error_refuses_to_report_an_unmeasured_join_as_perfect():
+    from paper_repro.surfaces.models import join_error, torus_pieces
+
+    pieces = torus_pieces(1.0, 3.0, 1.0, [0.0], [0.0])
+    assert 0 <= join_error(pieces, 1.0) < 1e-13  # the two triangles of one square meet on the diagonal
+    with pytest.raises(ValueError, match="samples must be an integer from 2"):
+        join_error(pieces, 1.0, samples=0)
+    with pytest.raises(ValueError, match="no join was measured"):
+        join_error(pieces[:1], 1.0)
+
+
+def test_labelled_net_survives_pickle_and_copy():
+    import copy
+    import pickle
+
+    from paper_repro.core.nets import LabelledNet
+
+    net = LabelledNet(np.arange(57.0).reshape(19, 3), 2)
+    for back in (pickle.loads(pickle.dumps(net)), pickle.loads(pickle.dumps(net, protocol=5)), copy.deepcopy(net),
+                 copy.copy(net)):
+        assert isinstance(back, LabelledNet) and back.n == 2
+        assert np.array_equal(back, net) and back["r_{4,3,1}"].tolist() == net["r_{4,3,1}"].tolist()
+    assert np.array_equal(pickle.loads(pickle.dumps(net.T)), net.T)  # a reshaped view pickles as an array
+
+
+def test_patch_mesh_requires_bool_normals_and_works_for_an_exact_patch():
+    import paper_repro as pr
+    from paper_repro.core.domain import rational_alpha
+
+    net = np.random.default_rng(0).normal(size=(7, 3))
+    for bad in (1, "yes"):
+        with pytest.raises(TypeError, match="normals must be True or False"):
+            pr.Patch(1, 1.0, net).mesh(4, normals=bad)
+    a = rational_alpha((1, 3))
+    exact = pr.Patch(1, a, net, arith="exact").mesh(2)
+    plain = pr.Patch(1, a, net).mesh(2)
+    assert exact[0].dtype == np.float64 and np.array_equal(exact[0], plain[0]) and np.array_equal(exact[1], plain[1])
+
+
+def test_sample_points_flags_and_seeds_are_checked():
+    import paper_repro as pr
+    from paper_repro.core.domain import rational_alpha, sample_rational_points
+
+    with pytest.raises(TypeError, match="interior must be True or False"):
+        pr.sample_points(1.0, 3, interior="no")
+    a = rational_alpha((1, 2))
+    with pytest.raises(ValueError, match="seed must be an integer >= 0"):
+        sample_rational_points(a, 3, seed=-2)
+    with pytest.raises(TypeError, match="max_denominator must be an integer >= 1"):
+        sample_rational_points(a, 3, max_denominator=10.5)
+    with pytest.raises(ValueError, match="max_denominator must be an integer >= 1"):
+        sample_rational_points(a, 3, max_denominator=0)

@@ -98,6 +98,27 @@ def _on_sigint(signum, frame) -> None:  # noqa: ARG001 - signal handler signatur
     raise KeyboardInterrupt
 
 
+#: Exit status after the reader of standard output went away (128 + SIGPIPE, what a shell reports for a
+#: Unix tool killed by SIGPIPE).
+BROKEN_PIPE = 141
+
+
+def quiet_broken_pipe() -> int:
+    """Point the process's standard output at ``os.devnull`` (so the interpreter's final flush does not print a
+    second error) and return :data:`BROKEN_PIPE`; no traceback.  Only the real stdout is redirected (a caller's
+    replacement, as in tests, is left alone)."""
+    import os
+
+    if sys.stdout is sys.__stdout__ and sys.stdout is not None:
+        try:
+            devnull = os.open(os.devnull, os.O_WRONLY)
+            os.dup2(devnull, sys.stdout.fileno())
+            os.close(devnull)
+        except (OSError, ValueError):
+            pass
+    return BROKEN_PIPE
+
+
 def main(argv: list[str] | None = None) -> int:
     """Run a command; bad input is one line and exit 2, Ctrl-C one line and exit 130 (pending work cancelled,
     within 2 s: a watchdog ends the process if the orderly shutdown does not)."""
@@ -114,6 +135,8 @@ def main(argv: list[str] | None = None) -> int:
         _reported = True
         print(INTERRUPTED, file=sys.stderr)
         return 130
+    except BrokenPipeError:  # the reader went away (``... | head -1``): stop quietly, as Unix tools do
+        return quiet_broken_pipe()
     finally:
         if previous is not None:  # called from Python (tests, notebooks): give Ctrl-C back as it was
             signal.signal(signal.SIGINT, previous)

@@ -326,6 +326,8 @@ def sample_points(alpha, count: int, seed: int = 0, interior: bool = True) -> np
     """
     alpha = parse_alpha(alpha)
     check_count(count, limit=MAX_SAMPLE_POINTS, why="about 52 bytes per point at the peak: 2 GB budget")
+    if not isinstance(interior, (bool, np.bool_)):
+        raise TypeError(f"interior must be True or False, got {interior!r}")
     rng = np.random.default_rng(check_int(seed, "seed", 0))
     bary = rng.dirichlet(np.ones(3), size=count)
     if interior:
@@ -349,10 +351,12 @@ def sample_rational_points(alpha: RationalAngle, count: int, seed: int = 0,
     if not isinstance(alpha, RationalAngle):
         raise TypeError(f"alpha must be a RationalAngle, got {type(alpha).__name__}")
     check_int(count, "count", 0, MAX_RATIONAL_POINTS, why="rational points are drawn one by one")
-    rng = np.random.default_rng(seed)
+    rng = np.random.default_rng(check_int(seed, "seed", 0))
     a = float(alpha)
     if max_denominator is None:
         max_denominator = 1000 if a >= 0.5 else int(500 / a)
+    else:
+        max_denominator = check_int(max_denominator, "max_denominator", 1)
     seen: set[tuple[fmpq, fmpq]] = set()
     tus: list[fmpq] = []
     tvs: list[fmpq] = []

@@ -84,6 +84,11 @@ def net_from_labels(points: dict, n: int) -> np.ndarray:
     return np.stack([rows[k] for k in range(delta(n))])
 
 
+def _rebuild_labelled_net(array: np.ndarray, n: int) -> LabelledNet:
+    """Unpickle a :class:`LabelledNet` (module level, so pickle finds it)."""
+    return LabelledNet(array, n)
+
+
 class LabelledNet(np.ndarray):
     """A control net ``(delta_n, d)`` whose rows are also reachable by the paper's labels.
 
@@ -111,6 +116,13 @@ class LabelledNet(np.ndarray):
 
     def __array_finalize__(self, obj) -> None:
         self.n = getattr(obj, "n", 0)
+
+    def __reduce__(self):
+        """Pickle and copy keep the order ``n`` (numpy's own reduction keeps only the array)."""
+        plain = np.asarray(self).copy()
+        if self.n < 1 or plain.ndim < 1 or plain.shape[0] != delta(self.n):  # a reshaped view: a plain array
+            return plain.__reduce__()
+        return (_rebuild_labelled_net, (plain, self.n))
 
     def __array_wrap__(self, out_arr, context=None, return_scalar=False):
         return np.asarray(out_arr) if not return_scalar else out_arr[()]

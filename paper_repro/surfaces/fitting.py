@@ -282,11 +282,28 @@ def fit_least_squares(points, values, n: int, alpha, *, corners=None, boundary=N
     """
     from paper_repro.core.domain import check_points
     from paper_repro.core.nets import LabelledNet
+    from paper_repro.util.limits import check_real_array
     from paper_repro.util.validation import check_n, parse_alpha
 
     n = check_n(n)
     a = float(parse_alpha(alpha))
     pts = check_points(points, a)
+    if not isinstance(full_output, (bool, np.bool_)):
+        raise TypeError(f"full_output must be True or False, got {full_output!r}")
+    if boundary is not None and not isinstance(boundary, dict):
+        raise TypeError(f"boundary must be a dict {{edge: curve}} with edges {sorted(EDGES)}, got "
+                        f"{type(boundary).__name__}")
+    for edge, curve in (boundary or {}).items():
+        if edge not in EDGES:
+            raise ValueError(f"boundary: edges are {sorted(EDGES)}, got {edge!r}")
+        if not callable(curve):
+            raise TypeError(f"boundary[{edge!r}] must be a callable curve(t) -> (m, d) points, got "
+                            f"{type(curve).__name__}")
+    if isinstance(corners, (str, bytes)):
+        raise TypeError(f"corners must be a (3, d) array of real numbers or True, got the string {corners!r:.40}")
+    if not (corners is None or isinstance(corners, (bool, np.bool_))):
+        check_real_array(corners, "corners")
+    check_real_array(values, "values")
     vals = np.asarray(values, dtype=np.float64)
     if vals.ndim == 1:
         vals = vals[:, None]
@@ -304,12 +321,18 @@ def fit_least_squares(points, values, n: int, alpha, *, corners=None, boundary=N
         fixed[k] = p
 
     for edge, curve in (boundary or {}).items():
-        if edge not in EDGES:
-            raise ValueError(f"boundary: edges are {sorted(EDGES)}, got {edge!r}")
         t = np.linspace(0.0, a, 8 * n + 1)
-        target = np.asarray(curve(t), dtype=np.float64).reshape(len(t), -1)
-        if target.shape[1] != d:
-            raise ValueError(f"boundary[{edge!r}]: curve points have dimension {target.shape[1]}, the data {d}")
+        raw = curve(t)
+        check_real_array(raw, f"boundary[{edge!r}] curve points")
+        target = np.asarray(raw, dtype=np.float64)
+        if target.ndim == 1 and d == 1 and target.shape == t.shape:
+            target = target[:, None]
+        if target.shape != (len(t), d):
+            raise ValueError(f"boundary[{edge!r}]: curve(t) must return a ({len(t)}, {d}) array for {len(t)} "
+                             f"parameters t (one point of the data's dimension {d} per t), got shape "
+                             f"{target.shape}")
+        if not np.isfinite(target).all():
+            raise ValueError(f"boundary[{edge!r}]: curve(t) must return finite points, got NaN or infinity")
         b = np.asarray(evaluate_normalized(n, a, EDGES[edge](t, a)), dtype=np.float64)
         cols = _columns_on(b)
         sol = np.linalg.lstsq(b[:, cols], target, rcond=None)[0]
@@ -324,9 +347,10 @@ def fit_least_squares(points, values, n: int, alpha, *, corners=None, boundary=N
             cvals = np.stack([vals[h[0]] for h in hit])
         else:
             cvals = np.asarray(corners, dtype=np.float64)
-            if cvals.shape != (3, d):
-                raise ValueError(f"corners must be a (3, {d}) array (the surface at (alpha,0,0), (0,alpha,0), "
-                                 f"(0,0,alpha)) or True, got shape {np.shape(corners)}")
+            if cvals.shape != (3, d) or not np.isfinite(cvals).all():
+                raise ValueError(f"corners must be a finite (3, {d}) array (the surface at (alpha,0,0), "
+                                 f"(0,alpha,0), (0,0,alpha)) or True, got shape {np.shape(corners)}"
+                                 + ("" if cvals.shape != (3, d) else " with NaN or infinity"))
         b = np.asarray(evaluate_normalized(n, a, corner_pts), dtype=np.float64)
         for row, p in zip(b, cvals):
             cols = _columns_on(row[None, :])

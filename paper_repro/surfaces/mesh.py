@@ -84,7 +84,11 @@ def _check_mesh(vertices, faces, normals) -> tuple[np.ndarray, np.ndarray, np.nd
         nrm = np.asarray(normals, dtype=np.float64)
         if nrm.shape != v.shape:
             raise ValueError(f"normals must have the shape of vertices {v.shape}, got {nrm.shape}")
-        nrm = np.nan_to_num(nrm, nan=0.0)
+        if np.isinf(nrm).any():
+            raise ValueError("normals must be finite (infinite entries given); NaN marks a vertex without a normal")
+        if np.isnan(nrm).all():
+            raise ValueError("normals are NaN at every vertex (no normal defined anywhere): pass normals=None")
+        nrm = np.nan_to_num(nrm, nan=0.0)  # a vertex without a normal (Patch.normals: NaN where degenerate)
     return v, f.astype(np.int32), nrm
 
 
@@ -106,6 +110,8 @@ def export_mesh(path, vertices, faces, normals=None) -> Path:
     Normals are stored by the formats that hold vertex normals (:data:`NORMALS`): OBJ as ``vn`` lines referenced
     by the faces, PLY as ``nx ny nz``, VTK, VTU, AVS, Gmsh and Tecplot as the point data ``Normals``; the other
     formats have no place for them (STL stores face normals, which meshio computes from the triangles).
+    A NaN normal marks a vertex without one (:meth:`~paper_repro.surfaces.patch.Patch.normals` at a degenerate
+    point) and is written as the zero vector; normals that are NaN everywhere or infinite are refused.
     The parent folder must exist (``ValueError`` otherwise); the file is written atomically, without meshio's
     timestamp and with gzip's time and name zeroed, so reruns give identical bytes.
     """

@@ -11,6 +11,7 @@ normalized basis (:mod:`paper_repro.surfaces.fitting`).
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import mpmath
@@ -61,6 +62,39 @@ def cyclide_parts(U, V, a, b, c, mu):
     return X, W
 
 
+def _real(x, name: str):
+    """A finite real number (``TypeError``/``ValueError`` naming ``name``)."""
+    from paper_repro.util.limits import real_scalar
+
+    x = real_scalar(x, name)
+    try:
+        finite = math.isfinite(float(x))
+    except OverflowError:
+        finite = False
+    if not finite:
+        raise ValueError(f"{name} must be a finite real number, got {str(x)[:40]}")
+    return x
+
+
+def _phases(values, name: str) -> list:
+    """``phis``/``psis``: a non-empty sequence of finite real numbers."""
+    if isinstance(values, (str, bytes, dict)) or not hasattr(values, "__iter__"):
+        raise TypeError(f"{name} must be a sequence of real numbers (the phases), got {type(values).__name__}")
+    out = [_real(x, f"{name} entries") for x in values]
+    if not out:
+        raise ValueError(f"{name} must hold at least one phase, got an empty sequence")
+    return out
+
+
+def _check_model(alpha, phis, psis, dps) -> tuple[list, list]:
+    from paper_repro.util.limits import MAX_DPS, MIN_DPS, check_int
+    from paper_repro.util.validation import check_alpha
+
+    check_alpha(alpha)
+    check_int(dps, "dps", MIN_DPS, MAX_DPS)
+    return _phases(phis, "phis"), _phases(psis, "psis")
+
+
 def _uv_of(phi, psi, upper, alpha):
     if upper:
         return lambda u, v: (phi + alpha - u, psi + alpha - v)
@@ -86,6 +120,8 @@ def torus_pieces(alpha: float, rho: float, mu: float, phis, psis, dps: int = 30)
     ...                  [[(2 + np.sin(0.5)) * np.cos(0.25), (2 + np.sin(0.5)) * np.sin(0.25), np.cos(0.5)]]))
     True
     """
+    phis, psis = _check_model(alpha, phis, psis, dps)
+    rho, mu = _real(rho, "rho"), _real(mu, "mu")
     out = []
     with mpmath.workdps(dps):
         a = mpmath.mpf(alpha)
@@ -113,10 +149,15 @@ def cyclide_pieces(alpha: float, params: dict, phis, psis, dps: int = 30) -> lis
     >>> join_error(pieces, np.pi / 2) < 1e-12                # the two triangles meet on the diagonal
     True
     """
+    phis, psis = _check_model(alpha, phis, psis, dps)
+    if not isinstance(params, dict) or set(params) != {"a", "b", "c", "mu"}:
+        got = sorted(map(str, params)) if isinstance(params, dict) else type(params).__name__
+        raise TypeError(f"params must be a dict with the keys 'a', 'b', 'c', 'mu' (eq. Dupin_in_3d), got {got}")
+    checked = {k: _real(v, f"params[{k!r}]") for k, v in params.items()}
     out = []
     with mpmath.workdps(dps):
         a = mpmath.mpf(alpha)
-        pr = {k: mpmath.mpf(v) for k, v in params.items()}
+        pr = {k: mpmath.mpf(v) for k, v in checked.items()}
         for phi in phis:
             for psi in psis:
                 for upper in (False, True):
@@ -136,7 +177,21 @@ def cyclide_pieces(alpha: float, params: dict, phis, psis, dps: int = 30) -> lis
 
 
 def join_error(pieces: list[Piece], alpha: float, samples: int = 9) -> float:
-    """Largest distance between pieces at ``samples`` shared points per edge of their triangles (their C0 joins)."""
+    """Largest distance between pieces at ``samples`` shared points per edge of their triangles (their C0 joins).
+
+    ``ValueError`` if nothing is measured (no pieces, ``samples`` below 2, or no point shared by two pieces):
+    0.0 would read as a perfect join.
+    """
+    from paper_repro.util.limits import check_int
+
+    if isinstance(pieces, (str, bytes)) or not hasattr(pieces, "__iter__"):
+        raise TypeError(f"pieces must be a list of Piece (from torus_pieces or cyclide_pieces), got "
+                        f"{type(pieces).__name__}")
+    pieces = list(pieces)
+    if not pieces or not all(isinstance(p, Piece) for p in pieces):
+        raise ValueError("pieces must be a non-empty list of Piece (from torus_pieces or cyclide_pieces)")
+    samples = check_int(samples, "samples", 2, 10_000, why="points per edge; one point measures only the corners")
+    alpha = _real(alpha, "alpha")
     grid_u = sorted({p.phi for p in pieces} | {p.phi + alpha for p in pieces})
     grid_v = sorted({p.psi for p in pieces} | {p.psi + alpha for p in pieces})
     pts = []
@@ -150,7 +205,7 @@ def join_error(pieces: list[Piece], alpha: float, samples: int = 9) -> float:
     for U0 in grid_u[:-1]:  # diagonals of the squares
         for V0 in grid_v[:-1]:
             pts += [(U0 + alpha * s, V0 + alpha * (1 - s)) for s in t]
-    worst = 0.0
+    worst, compared = 0.0, 0
     for U, V in pts:
         vals = []
         for p in pieces:
@@ -159,4 +214,8 @@ def join_error(pieces: list[Piece], alpha: float, samples: int = 9) -> float:
                 vals.append(p.patch(d[None, :])[0])
         for k in range(1, len(vals)):
             worst = max(worst, float(np.max(np.abs(vals[k] - vals[0]))))
+            compared += 1
+    if not compared:
+        raise ValueError(f"pieces: no point is shared by two of the {len(pieces)} pieces at alpha={alpha!r}, so no "
+                         "join was measured (give pieces of adjacent triangles, made with this alpha)")
     return worst

@@ -461,8 +461,11 @@ class Patch:
 
     def mesh(self, resolution: int = 16, normals: bool = False):
         """Triangle mesh on a barycentric grid: ``(vertices (V, d), faces (F, 3))``, and the unit vertex
-        normals ``(V, 3)`` as a third item when ``normals`` (3-D nets; see :meth:`normals`)."""
-        return mesh_of(self, resolution, normals)
+        normals ``(V, 3)`` as a third item when ``normals`` is True (3-D nets; see :meth:`normals`).  Always
+        evaluated in float64, whatever the patch's default ``arith`` (a mesh is for drawing and export)."""
+        if not isinstance(normals, (bool, np.bool_)):
+            raise TypeError(f"normals must be True or False, got {normals!r}")
+        return mesh_of(self, resolution, bool(normals))
 
 
 def check_curve_parameter(t, alpha: float) -> np.ndarray:
@@ -516,7 +519,7 @@ def triangle_grid(resolution: int) -> tuple[np.ndarray, np.ndarray]:
 
 def mesh_of(patch: Patch, resolution: int = 16, normals: bool = False):
     bary, faces = triangle_grid(resolution)
-    verts = patch.at_barycentric(bary)
+    verts = patch(barycentric_to_uvw(patch.alpha, bary), arith="float")  # float64 whatever patch.ctx is
     if not normals:
         return verts, faces
     nrm = patch.normals(barycentric_to_uvw(patch.alpha, bary))
@@ -524,7 +527,16 @@ def mesh_of(patch: Patch, resolution: int = 16, normals: bool = False):
 
 
 def merge_meshes(meshes: list[tuple[np.ndarray, ...]]) -> tuple[np.ndarray, ...]:
-    """Concatenate meshes ``(vertices, faces[, normals])`` (vertices are not welded)."""
+    """Concatenate meshes ``(vertices, faces[, normals])`` (vertices are not welded): finite ``(V, d)`` vertices
+    (one d for all: :meth:`Patch.mesh` of d-dimensional nets), integer ``(F, 3)`` faces indexing them, normals
+    with every mesh or with none (``ValueError`` otherwise).
+
+    >>> import numpy as np
+    >>> v, f = np.eye(3), np.array([[0, 1, 2]])
+    >>> merged = merge_meshes([(v, f), (v + 1, f)])
+    >>> merged[1].tolist()
+    [[0, 1, 2], [3, 4, 5]]
+    """
     if isinstance(meshes, (str, bytes)) or not hasattr(meshes, "__iter__"):
         raise TypeError(f"meshes must be a list of (vertices, faces[, normals]) tuples, got {type(meshes).__name__}")
     meshes = list(meshes)
@@ -533,12 +545,34 @@ def merge_meshes(meshes: list[tuple[np.ndarray, ...]]) -> tuple[np.ndarray, ...]
     for k, m in enumerate(meshes):
         if not isinstance(m, (tuple, list)) or len(m) not in (2, 3):
             raise TypeError(f"meshes[{k}] must be a tuple (vertices, faces[, normals]), got {type(m).__name__}")
+    if len({len(m) for m in meshes}) != 1:
+        raise ValueError("meshes: give normals with every mesh or with none (some have (vertices, faces, normals), "
+                         "others (vertices, faces)); merging would drop the normals")
+    from paper_repro.util.limits import check_real_array
+
     verts, faces, extra, offset = [], [], [], 0
-    for m in meshes:
-        verts.append(m[0])
-        faces.append(m[1] + offset)
+    for k, m in enumerate(meshes):
+        check_real_array(m[0], f"meshes[{k}] vertices")
+        v = np.asarray(m[0], dtype=np.float64)
+        dim = verts[0].shape[1] if verts else (v.shape[1] if v.ndim == 2 else 3)
+        if v.ndim != 2 or v.shape[1] != dim or dim == 0 or not np.isfinite(v).all():
+            raise ValueError(f"meshes[{k}]: vertices must be a finite (V, {dim}) array (the dimension of every mesh "
+                             f"the same, as Patch.mesh gives for a net of that dimension), got shape {v.shape}")
+        f = np.asarray(m[1])
+        if f.ndim != 2 or f.shape[1] != 3 or (f.size and not np.issubdtype(f.dtype, np.integer)):
+            raise ValueError(f"meshes[{k}]: faces must be an integer (F, 3) array, got shape {f.shape} of {f.dtype}")
+        if f.size and (f.min() < 0 or f.max() >= len(v)):
+            raise ValueError(f"meshes[{k}]: faces must index its vertices 0..{len(v) - 1}, got indices from "
+                             f"{int(f.min())} to {int(f.max())}")
+        verts.append(v)
+        faces.append(f.astype(np.int64) + offset)
         if len(m) > 2:
-            extra.append(m[2])
-        offset += len(m[0])
+            check_real_array(m[2], f"meshes[{k}] normals")
+            nrm = np.asarray(m[2], dtype=np.float64)
+            if nrm.shape != v.shape:
+                raise ValueError(f"meshes[{k}]: normals must have the shape of its vertices {v.shape}, got "
+                                 f"{nrm.shape}")
+            extra.append(nrm)
+        offset += len(v)
     out = (np.concatenate(verts), np.concatenate(faces))
-    return out + (np.concatenate(extra),) if extra and len(extra) == len(meshes) else out
+    return out + (np.concatenate(extra),) if extra else out

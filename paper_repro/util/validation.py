@@ -55,7 +55,9 @@ def check_alpha(alpha: object, name: str = "alpha") -> float:
     alpha = real_scalar(alpha, name)
     try:
         a = float(alpha)  # type: ignore[arg-type]
-    except (TypeError, ValueError, OverflowError):
+    except OverflowError:  # a real number too large for a float: the right kind, out of range
+        raise ValueError(f"{name} must lie in the open interval (0, pi), got {_plain(alpha)}") from None
+    except (TypeError, ValueError):
         raise TypeError(f"{name} must be a real number in the open interval (0, pi), got {_plain(alpha)}") from None
     if not (0.0 < a < math.pi) or math.isnan(a):
         raise ValueError(f"{name} must lie in the open interval (0, pi), got {_plain(alpha)}")
@@ -70,37 +72,58 @@ _ALPHA_TEXT = re.compile(
 _NUMBER_TEXT = re.compile(r"^\s*(?P<num>[+-]?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][+-]?\d+)?)\s*(?:/\s*(?P<den>\d+))?\s*$")
 
 
+def _nearest_float(num: str, den: str, times_pi: bool) -> float | None:
+    """``num * (pi if times_pi) / den`` (decimal texts) rounded once to the nearest float64 (``None`` if
+    ``den`` is zero): computed at 60 significant digits, then read by ``float`` (correctly rounded).
+
+    >>> _nearest_float("1", "3", True), _nearest_float("1.1", "3", False)
+    (1.0471975511965979, 0.36666666666666664)
+    """
+    import mpmath
+
+    ctx = mpmath.MPContext()  # a private context: the caller's mpmath.mp.dps is left alone
+    ctx.dps = 60
+    d = ctx.mpf(den)
+    if d == 0:
+        return None
+    x = ctx.mpf(num) * (ctx.pi if times_pi else 1) / d
+    return float(ctx.nstr(x, 60))
+
+
 def parse_alpha(alpha: object, name: str = "alpha") -> Any:
     """The shape parameter as the package's functions take it; the one reader of alpha for the API and the CLI.
 
     A string is read as a number (``'1.2'``, ``'3/2'``) or a multiple of pi (``'pi/2'``, ``'2pi/3'``,
-    ``'2*pi/3'``, ``'0.5 pi'``, ``'π/3'``) and returned as the nearest float; any other value (a float, an
+    ``'2*pi/3'``, ``'0.5 pi'``, ``'π/3'``) and returned as the float nearest to the exact value (computed
+    at 60 digits, so ``'2pi/3'`` is 2.0943951023931957, not ``2 * math.pi / 3``); any other value (a float, an
     int, an mpmath number, a flint ``fmpq``, a
     :class:`~paper_repro.core.domain.RationalAngle`) is checked and returned unchanged, so exact and
     high-precision arithmetic keep their input.  Raises ``ValueError``/``TypeError`` naming ``name`` and the
     allowed range (0, pi) otherwise.
 
-    >>> parse_alpha("pi/2") == math.pi / 2, parse_alpha("2*pi/3") == 2 * math.pi / 3, parse_alpha(" 1.5 ")
-    (True, True, 1.5)
+    >>> parse_alpha("pi/2") == math.pi / 2, parse_alpha("2*pi/3"), parse_alpha(" 1.5 ")
+    (True, 2.0943951023931957, 1.5)
     >>> parse_alpha("pi")
     Traceback (most recent call last):
     ...
     ValueError: alpha must lie in the open interval (0, pi), got 'pi' (= 3.141592653589793)
     """
     if isinstance(alpha, str):
+        shown = _plain(alpha)  # the text, truncated: a 5000-digit input is not echoed whole
         m = _ALPHA_TEXT.match(alpha)
         if not m:
             m = _NUMBER_TEXT.match(alpha)
             if not m:
                 raise ValueError(f"{name} must be a number in (0, pi) or a multiple of pi such as 'pi/2' or "
-                                 f"'2pi/3', got {alpha!r}")
-        den = float(m.group("den") or 1)
-        if den == 0:
-            raise ValueError(f"{name}: division by zero in {alpha!r}; give a number in (0, pi) such as 'pi/2'")
-        num = float(m.group("num") or 1)
-        value = num * math.pi / den if "pi" in alpha or "π" in alpha else num / den
+                                 f"'2pi/3', got {shown}")
+        value = _nearest_float(m.group("num") or "1", m.group("den") or "1", "pi" in alpha or "π" in alpha)
+        if value is None:
+            raise ValueError(f"{name}: division by zero in {shown}; give a number in (0, pi) such as 'pi/2'")
         if not 0.0 < value < math.pi:
-            raise ValueError(f"{name} must lie in the open interval (0, pi), got {alpha!r} (= {value!r})")
+            raise ValueError(f"{name} must lie in the open interval (0, pi), got {shown} (= {value!r})")
+        if value < sys.float_info.min:
+            raise ValueError(f"{name} must lie in (0, pi) and be at least {sys.float_info.min!r} (the smallest "
+                             f"normal float64), got {shown} (= {value!r})")
         return value
     if hasattr(alpha, "sin_half") and hasattr(alpha, "cos_half"):  # a RationalAngle: valid by construction
         return alpha
