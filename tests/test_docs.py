@@ -275,4 +275,5 @@ def test_proof_pages_render_their_formulas_as_math(tmp_path):
         text = " ".join(parser.text)
         left = [text[max(0, m.start() - 30):m.end() + 30] for m in plain.finditer(text)]
         assert left == [], (md.name, left[:5])
-        assert parser.math >= 20, (md.name, parser.math)
+        if "for_all_n" in md.name or md.name == "proof_of_closed_forms.md":  # the proof pages carry formulas
+            assert parser.math >= 20, (md.name, parser.math)
