@@ -65,10 +65,13 @@ def block_for(functions: int) -> int:
     return max(BLOCK, min(8192, 1 << max(0, target.bit_length() - 1)))
 
 #: Rows per BLAS product in :func:`contract`.  OpenBLAS's result for a ``(M, F) x (F, P)`` product depends on how
-#: many threads it uses when M is 5 or 6 (it cuts M differently: measured, OpenBLAS 0.3.31, Haswell kernels), and
-#: threadpoolctl's limit is not reliably seen by calls from other threads (joblib/threadpoolctl#205).  Products of
-#: at most 4 rows gave the same bits with 1 and 2 threads for every M measured (1..12).
-BLAS_ROWS = 4
+#: many threads it uses (it cuts the product differently), and threadpoolctl's limit is not reliably seen by calls
+#: from other threads (joblib/threadpoolctl#205).  Measured with OpenBLAS 0.3.31: 5 or 6 rows differed with 1 and 2
+#: threads under the Haswell kernel; 4 rows were enough there and under SkylakeX, but not under the Sandybridge,
+#: Nehalem and Haswell kernels once 6 user threads evaluated at once (issue 31: test_concurrent_calls_from_user_threads
+#: under ``OPENBLAS_CORETYPE``).  One row at a time (a product whose every entry is one dot product over F, whatever
+#: the threads) gave the serial bits under every kernel.
+BLAS_ROWS = 1
 
 
 def contract(net_t: np.ndarray, basis: np.ndarray, out: np.ndarray | None = None) -> np.ndarray:
