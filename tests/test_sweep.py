@@ -69,3 +69,67 @@ def test_local_workers_are_not_forked_from_this_threaded_process():
             assert sweep(_square, list(range(6)), workers=2) == [x * x for x in range(6)]
     finally:
         stop.set()
+
+
+@pytest.mark.skipif(not os.path.exists("/proc/self/status"), reason="reads the fork server's signal state in /proc")
+def test_the_fork_server_is_born_ignoring_ctrl_c():
+    """CI run 34: a terminal's Ctrl-C reaches the whole process group; the fork server, which CPython sets to ignore
+    SIGINT only after its preload (numpy, flint: about a second), died with a traceback.  It is now launched with
+    SIGINT ignored, which survives exec: ignored at once, long before the preload ends.  Fresh interpreter, so
+    this test's own process has no fork server yet."""
+    import subprocess
+    import sys
+
+    code = """if True:
+        import multiprocessing.forkserver as fs, time
+        from paper_repro.util.sweep import process_context
+        t = time.perf_counter()
+        process_context()
+        status = open(f"/proc/{fs._forkserver._forkserver_pid}/status").read()
+        ignored = int(next(l for l in status.splitlines() if l.startswith("SigIgn:")).split()[1], 16)
+        print(bool(ignored & 2), time.perf_counter() - t < 0.3)
+    """
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
+    assert out.returncode == 0, out.stderr
+    ignored, early = out.stdout.split()
+    if early != "True":
+        pytest.skip("the check came too late to tell a launch state from the preload's own SIG_IGN")
+    assert ignored == "True"
+
+
+def test_ctrl_c_during_submit_is_raised_after_every_worker_is_known(monkeypatch):
+    """CI run 34: a Ctrl-C inside ``submit`` (between a worker's start and the pool's note of it) orphaned the
+    worker, which died with a traceback after this process removed the queues.  The submits now run to their end
+    and the interrupt is raised after them (then every worker is terminated)."""
+    import signal
+    import threading
+    from concurrent.futures import ProcessPoolExecutor
+
+    from paper_repro.util import sweep as sweep_module
+    from paper_repro.util.sweep import process_context
+
+    if threading.current_thread() is not threading.main_thread():
+        pytest.skip("signal handlers need the main thread")
+    submitted = []
+
+    class InterruptedPool(ProcessPoolExecutor):
+        def submit(self, fn, /, *args, **kwargs):
+            fut = super().submit(fn, *args, **kwargs)
+            submitted.append(fut)
+            if len(submitted) == 2:
+                signal.raise_signal(signal.SIGINT)  # a Ctrl-C while the submits are under way
+            return fut
+
+    pools = []
+
+    def pool(workers, initializer=None):
+        pools.append(InterruptedPool(max_workers=workers, mp_context=process_context()))
+        return pools[-1]
+
+    monkeypatch.setattr(sweep_module, "process_pool", pool)
+    with pytest.raises(KeyboardInterrupt):
+        sweep(_square, list(range(6)), workers=2)
+    assert len(submitted) == 6  # before the fix: 2, the interrupt came out of the second submit
+    for p in (pools[0]._processes or {}).values():
+        p.join(timeout=5)
+        assert not p.is_alive()

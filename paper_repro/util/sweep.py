@@ -22,11 +22,12 @@ does not depend on the executor.  ``task`` must be a module-level function (pick
 
 from __future__ import annotations
 
+import contextlib
 import os
 import signal
 import sys
 import time
-from collections.abc import Callable, Iterable
+from collections.abc import Callable, Iterable, Iterator
 from concurrent.futures import Executor, ProcessPoolExecutor, as_completed
 from typing import TypeVar
 
@@ -56,10 +57,89 @@ def process_context():
     import multiprocessing as mp
 
     if "forkserver" in mp.get_all_start_methods():
+        from multiprocessing import forkserver
+
         ctx = mp.get_context("forkserver")
         ctx.set_forkserver_preload(["paper_repro.util.registry", "numpy", "mpmath", "flint"])
+        # Start the fork server now with SIGINT ignored: an ignored signal stays ignored across fork and exec, so
+        # neither the server (CPython ignores SIGINT there only after the preload, which takes a second) nor the
+        # workers it forks (restored to the server's start-up disposition) can die of a Ctrl-C with a traceback.
+        # A terminal's Ctrl-C reaches the whole process group; only the parent reports it (issue 31, CI run 34).
+        _start_ignoring_sigint(forkserver.ensure_running)
         return ctx
     return mp.get_context("spawn")
+
+
+@contextlib.contextmanager
+def _sigint_blocked() -> Iterator[None]:
+    """Block SIGINT in this thread for the ``with`` body (no-op without ``pthread_sigmask``: Windows).  A Ctrl-C
+    meanwhile stays pending and reaches this thread when the block ends -- unless another thread of the process
+    has SIGINT unblocked: the kernel may hand it that thread instead.
+
+    >>> with _sigint_blocked():
+    ...     pass
+    """
+    if not hasattr(signal, "pthread_sigmask"):
+        yield
+        return
+    old = signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT})
+    try:
+        yield
+    finally:
+        signal.pthread_sigmask(signal.SIG_SETMASK, old)
+
+
+@contextlib.contextmanager
+def deferred_sigint() -> Iterator[None]:
+    """Hold a Ctrl-C back for the ``with`` body and deliver it to the previous handler when the body ends (a
+    critical section: the body runs to its end, then ``KeyboardInterrupt`` is raised as usual).  Only the main
+    thread receives Python signal handlers; elsewhere the body runs as it is.
+
+    >>> steps = []
+    >>> try:
+    ...     with deferred_sigint():
+    ...         signal.raise_signal(signal.SIGINT)
+    ...         steps.append("body ended")
+    ... except KeyboardInterrupt:
+    ...     steps.append("interrupted")
+    >>> steps
+    ['body ended', 'interrupted']
+    """
+    import threading
+
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    caught: list = []
+    previous = signal.signal(signal.SIGINT, lambda signum, frame: caught.append((signum, frame)))
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGINT, previous if previous is not None else signal.default_int_handler)
+        if caught:
+            if callable(previous):
+                previous(*caught[0])
+            elif previous == signal.SIG_DFL:
+                signal.raise_signal(signal.SIGINT)
+
+
+def _start_ignoring_sigint(start: Callable[[], object]) -> None:
+    """Run ``start`` (which launches a process) with SIGINT ignored, so the process starts with SIGINT ignored even
+    through ``exec``.  Only the main thread can change handlers; elsewhere ``start`` just runs.  The cost: a Ctrl-C
+    during the launch (fork server and resource tracker: 4 ms measured on the 2-core test machine, once per process)
+    is held pending by the blocked main thread, but is lost if the kernel gives it to another
+    thread, which ignores it; pressing Ctrl-C again works."""
+    import threading
+
+    if threading.current_thread() is not threading.main_thread():
+        start()
+        return
+    with _sigint_blocked():
+        previous = signal.signal(signal.SIGINT, signal.SIG_IGN)
+        try:
+            start()
+        finally:
+            signal.signal(signal.SIGINT, previous if previous is not None else signal.default_int_handler)
 
 
 def process_pool(workers: int, initializer: Callable[[], None] | None = None) -> ProcessPoolExecutor:
@@ -94,7 +174,11 @@ def sweep(task: Callable[[T], R], items: Iterable[T], *, executor: Executor | No
     ex = executor or process_pool(n, initializer)
     futures: dict = {}
     try:
-        futures = {ex.submit(task, item): k for k, item in enumerate(seq)}
+        # Ctrl-C is held back while submitting: a submit may start a worker, and an interrupt between the start
+        # and the pool's note of it would orphan the worker (it then dies with a traceback once this process has
+        # exited and removed the queues' semaphores); raised right after, every worker is known and is stopped.
+        with deferred_sigint():
+            futures = {ex.submit(task, item): k for k, item in enumerate(seq)}
         results: list = [None] * len(seq)
         for fut in as_completed(futures):
             k = futures[fut]
@@ -143,7 +227,8 @@ def interruptible(task: Callable[[T], R], item: T) -> R:
             # Python >= 3.12 warns when a process with threads forks; the child only runs ``task`` (flint and
             # numpy object arithmetic, no lock shared with the kernel's idle thread pool) and exits.
             warnings.simplefilter("ignore", DeprecationWarning)
-            fut = ex.submit(task, item)
+            with deferred_sigint():  # the child is forked here: it inherits the deferring handler, then ignores SIGINT
+                fut = ex.submit(task, item)
         return fut.result()
     except BaseException:
         _terminate(ex)
