@@ -253,6 +253,10 @@ def _in_background(func: Callable[[], object], seconds: float) -> None:
     t.join(timeout=seconds)
 
 
+#: The queues of pools stopped by Ctrl-C (see :func:`_terminate`); a few pipes and semaphores per interrupt.
+_STOPPED_QUEUES: list = []
+
+
 def _terminate(ex: Executor) -> None:
     """Stop a local pool now: worker processes terminated first (so nothing waits on them), then pending futures
     cancelled.  The executor's own shutdown runs in a daemon thread given half a second: if Ctrl-C arrived while
@@ -261,6 +265,11 @@ def _terminate(ex: Executor) -> None:
     procs = list((getattr(ex, "_processes", None) or {}).values())
     for p in procs:
         p.terminate()
+    # Keep the pool's queues alive: dropped by the shutdown below, they would be collected in the executor's
+    # manager thread, whose semaphore clean-up (unlink, then tell the resource tracker) an exit right after could cut
+    # in half -- the tracker then warned of a leaked semaphore it could not find (Python 3.12 under load).  Kept,
+    # they are cleaned up by this thread: at exit, or by the CLI's ``_run_finalizers(0)`` before ``os._exit``.
+    _STOPPED_QUEUES.append((getattr(ex, "_call_queue", None), getattr(ex, "_result_queue", None)))
     _in_background(lambda: ex.shutdown(wait=False, cancel_futures=True), 0.5)
     deadline = time.monotonic() + 1.0  # one second in all, not per worker
     for p in procs:
