@@ -31,6 +31,7 @@ from paper_repro.core.domain import (
     sample_rational_points,
 )
 from paper_repro.core.elevation import elevate, elevation_matrix
+from paper_repro.core.half_angle_matrices import product_matrix as _product_matrix
 from paper_repro.core.labels import delta, parse_label, united_system
 from paper_repro.core.nets import LabelledNet
 from paper_repro.core.normalization import coefficients as _coefficients
@@ -48,9 +49,10 @@ evaluate = accepts_alpha_text(_evaluate)
 basis_derivative = accepts_alpha_text(_basis_derivative)
 coefficients = accepts_alpha_text(_coefficients)
 evaluate_normalized = accepts_alpha_text(_evaluate_normalized)
+product_matrix = accepts_alpha_text(_product_matrix)
 
 __all__ = ["LabelledNet", "Patch", "RationalAngle", "RationalPoints", "__version__", "basis_derivative",
            "bezier_limit", "bezier_nodes", "bezier_triangle", "coefficients", "delta", "elevate", "elevation_matrix",
            "evaluate", "evaluate_normalized", "export_mesh", "fit", "fit_least_squares", "get_context",
-           "merge_meshes", "parse_alpha", "parse_label", "rational_alpha", "sample_points",
+           "merge_meshes", "parse_alpha", "parse_label", "product_matrix", "rational_alpha", "sample_points",
            "sample_rational_points", "transformation_matrix", "united_system"]

@@ -35,11 +35,11 @@ from flint import ctx as flint_ctx
 
 from paper_repro.core.context import Context, FloatContext, get_context
 from paper_repro.core.domain import RationalAngle
-from paper_repro.core.half_angle_rules import derivative_terms, elevation_terms, merge
+from paper_repro.core.half_angle_rules import derivative_terms, elevation_terms, merge, product_terms
 from paper_repro.core.labels import delta, variable_swap
 from paper_repro.core.normalization import orbits
 from paper_repro.core.normalizing_formula import scaled_table
-from paper_repro.util.validation import check_alpha, check_n
+from paper_repro.util.validation import check_alpha, check_n, parse_alpha
 
 
 def float_half_angle(alpha: float) -> tuple[float, float]:
@@ -97,6 +97,48 @@ def derivative_form(n: int) -> tuple[np.ndarray, ...]:
     for arr in out:
         arr.setflags(write=False)
     return out
+
+
+@cache
+def product_form(n: int, h: int) -> tuple[np.ndarray, ...]:
+    """The integer bivariate form of P_h (``m_f m_h = sum_g P_h[g, f] m'_g``, h a member of T_2), as
+    :func:`elevation_form` (every coef > 0)."""
+    out = merge(product_terms(check_n(n), h))
+    for arr in out:
+        arr.setflags(write=False)
+    return out
+
+
+def product_matrix(n: int, h: int | str, alpha, arith: str | Context = "float") -> np.ndarray:
+    """Q, ``(delta_{n+1}, delta_n)``: the products of the normalized members of T-bar_{2n} with the normalized member
+    ``h`` of T-bar_2 in T-bar_{2(n+1)}, ``f-bar h-bar = sum_g Q[g, f] g-bar'`` (sec:open_problems, the products the
+    paper "could not write": ``h`` = ``'B_{2,2,0}'``, ``'G_{2,1,0}'``, ``'B_{2,1,0}'``, and the four others), for every
+    n, in the arithmetic ``arith`` (exact needs a :class:`RationalAngle`).  ``Q[g, f] = x_f x_h P_h[g, f] / x'_g`` with
+    P_h in Z_{>=0}[kappa, sigma], so Q >= 0; summed over the seven h, Q is the elevation matrix E.
+
+    >>> from paper_repro.core.domain import rational_alpha
+    >>> q = [product_matrix(1, h, rational_alpha(fmpq(1, 2)), "exact") for h in range(7)]
+    >>> (sum(q[1:], q[0]) == elevation_matrix_ctx(1, rational_alpha(fmpq(1, 2)), "exact")).all()
+    np.True_
+    """
+    from paper_repro.core.labels import index_of
+    from paper_repro.util.limits import MAX_N_ELEVATION, check_int
+
+    n = check_int(n, "n", 1, MAX_N_ELEVATION, why="the dense Q has delta_{n+1} delta_n entries")
+    if isinstance(h, str):
+        labels = index_of(1)
+        if h not in labels:
+            raise ValueError(f"h must be a label of T_2 such as 'B_{{2,2,0}}' or an index in [0, 6], got {h!r}")
+        h = labels[h]
+    elif isinstance(h, bool) or not isinstance(h, (int, np.integer)) or not 0 <= h < delta(1):
+        raise ValueError(f"h must be a label of T_2 such as 'B_{{2,2,0}}' or an index in [0, 6], got {h!r}")
+    ctx = get_context(arith)
+    kappa, sigma = half_angle(alpha if isinstance(alpha, arb) else parse_alpha(alpha), ctx)
+    rows, cols, p = evaluate_terms(product_form(n, int(h)), kappa, sigma, ctx)
+    x, x1, x2 = (scaled_coefficients(k, kappa, sigma, ctx) for k in (n, 1, n + 1))
+    with ctx.scope():
+        vals = ctx.div(ctx.mul(ctx.mul(x[cols], p), x1[int(h)]), x2[rows])
+    return _dense(rows, cols, vals, (delta(n + 1), delta(n)), ctx)
 
 
 def _layout(rows: np.ndarray, cols: np.ndarray) -> tuple[np.ndarray, ...]:

@@ -262,3 +262,91 @@ def merge(terms: tuple[np.ndarray, ...]) -> tuple[np.ndarray, ...]:
     a_, u = u % amax, u // amax
     return u // cmax, u % cmax, a_, b_, coef[keep]
 
+
+
+# --- Pairwise products with the first-order members (the paper's wish list after Question 1, sec:open_problems) ---
+
+@cache
+def order_one_parts() -> tuple[tuple[str, int], ...]:
+    """Each member h of T_2 (internal order) as ``('centre', -1)`` (``S_u S_v S_w``), ``('edge', y)``
+    (``S_x S_z C_y``) or ``('corner', y)`` (``S_y^2``), y in 0, 1, 2 = u, v, w.
+
+    >>> sorted(order_one_parts())[:2]
+    [('centre', -1), ('corner', 0)]
+    """
+    out = []
+    for e in exponent_matrix(1).tolist():
+        cos = [y for y in range(3) if e[2 * y + 1]]
+        if cos:
+            out.append(("edge", cos[0]))
+        elif max(e[0::2]) == 2:
+            out.append(("corner", e[0::2].index(2)))
+        else:
+            out.append(("centre", -1))
+    return tuple(out)
+
+
+def _apply_cotangent(n: int, var: int, comb: dict) -> dict:
+    """``L_var`` on a combination ``{(target, a, b): coef}`` of members of T_{2n}; ``ValueError`` when a member has
+    no factor S_var (the lowering lemma of the proof says this never happens on the products' route)."""
+    out: dict = {}
+    for (g, a0, b0), c0 in comb.items():
+        for a, b, c, t in cotangent(n, var, g).tolist():
+            key = (t, a0 + a, b0 + b)
+            out[key] = out.get(key, 0) + c0 * c
+    return out
+
+
+def product_column(n: int, h: int, f: int) -> dict:
+    """``m_f m_h = sum coef kappa^a sigma^b m'_g``: the product of the member f of T_{2n} and the member h of T_2 as
+    members g of T_{2(n+1)}, ``{(g, a, b): coef}`` (every coef > 0).  With the parts ``(X, m, Y, j)`` of m_f
+    (:func:`member_parts`), Z the third variable and N = n + 1 (docs/elevation_and_derivative_for_all_n.md,
+    Theorem P):
+
+    * centre: ``M_X(m + 1; Y, j + 1)``;  edge ``S_x S_z C_y``: ``L_y`` of the centre's product;
+    * corner ``S_X^2``: ``M_X(m; Y, j)``;  corner ``S_Z^2`` (or ``S_Y^2`` with j = m, naming the cosine variable Z):
+      ``sigma M_X(m + 2; Y, j + 2) + M_X(m + 2; Y, j)`` for m < n, ``M_Z(n; Y, j)`` for m = n;
+    * corner ``S_Y^2`` with j < m: ``L_Y^(m - j) p`` with ``p = sigma M_X(m + 2; Z, m + 2) + M_X(m + 2; Z, m)``
+      for m < n and ``p = M_Y(n; X, n)`` for m = n.
+    """
+    big = n + 1
+    table = member_table(big)
+    x, m, y, j = (int(v) for v in member_parts(n)[f])
+    z = 3 - x - y
+    kind, var = order_one_parts()[h]
+    centre = {(int(table[x, y, m + 1, j + 1]), 0, 0): 1}
+    if kind == "centre":
+        return centre
+    if kind == "edge":
+        return _apply_cotangent(big, var, centre)
+    if var == x or (m == n and var == z):  # S_X^2 m_f (at level n, X and Z play the same part)
+        return {(int(table[var, y, m, j]), 0, 0): 1}
+    if var == z or j == m:  # S_Z^2 m_f, or S_Y^2 m_f with no cosine of Y (rename the cosine variable Z)
+        cos, jj = (y, j) if var == z else (z, m)
+        if m == n:
+            return {(int(table[var, cos, n, jj]), 0, 0): 1}
+        return {(int(table[x, cos, m + 2, jj + 2]), 0, 1): 1, (int(table[x, cos, m + 2, jj]), 0, 0): 1}
+    # S_Y^2 m_f with j < m: L_Y^(m - j) of a member combination p with the cosines of Y turned into sines
+    if m < n:
+        p = {(int(table[x, z, m + 2, m + 2]), 0, 1): 1, (int(table[x, z, m + 2, m]), 0, 0): 1}
+    else:
+        p = {(int(table[y, x, n, n]), 0, 0): 1}
+    for _ in range(m - j):
+        p = _apply_cotangent(big, y, p)
+    return p
+
+
+@cache
+def product_terms(n: int, h: int) -> tuple[np.ndarray, ...]:
+    """P_h (``m_f m_h = sum_g P_h[g, f] m'_g``, T_{2n} x T_2 -> T_{2(n+1)}) as terms ``(rows, cols, a, b, coef)``
+    (coef > 0) for the member h of T_2 (:func:`order_one_parts`).
+
+    >>> rows, cols, a, b, c = product_terms(1, 0)
+    >>> bool(c.min() > 0)
+    True
+    """
+    n = check_n(n)
+    if not isinstance(h, (int, np.integer)) or isinstance(h, bool) or not 0 <= h < delta(1):
+        raise ValueError(f"h must be the index of a member of T_2, an integer in [0, {delta(1) - 1}], got {h!r}")
+    out = [(g, f, a, b, c) for f in range(delta(n)) for (g, a, b), c in product_column(n, int(h), f).items()]
+    return _as_arrays(out)

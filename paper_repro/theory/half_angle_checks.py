@@ -131,22 +131,25 @@ def _dense(form, shape, alpha: RationalAngle, ctx) -> np.ndarray:
 
 
 def identity_check(kind: str, n: int, alpha: RationalAngle, form, *, arith: str | Context = "exact", extra: int = 3,
-                   seed: int = 5) -> dict:
-    """The identity of ``kind`` ('M': elevation n -> n + 1; 'C': derivative along u) for the merged ``form`` at
+                   seed: int = 5, h: int | None = None) -> dict:
+    """The identity of ``kind`` ('M': elevation n -> n + 1; 'C': derivative along u; 'P': the product with the
+    member ``h`` of T_2, ``m_f m_h = sum_g P[g, f] m'_g``) for the merged ``form`` at
     ``delta + extra`` rational points, exactly over Q (``arith='exact'``) or over F_p (``'modp'``, p =
     :data:`PRIME`: the exact image, much faster; evidence for the identity over Q, not a proof of it); ``ok`` when it
     holds at every point and the points are unisolvent for the target system (rank over F_p, a lower bound of the
     rank over Q)."""
     n = check_n(n)
-    if kind not in ("M", "C"):
-        raise ValueError(f"kind must be 'M' (elevation) or 'C' (derivative), got {kind!r}")
+    if kind not in ("M", "C", "P"):
+        raise ValueError(f"kind must be 'M' (elevation), 'C' (derivative) or 'P' (product), got {kind!r}")
+    if (kind == "P") != (h is not None):
+        raise ValueError("h (a member of T_2) is given exactly for kind 'P'")
     mod = ModpContext(p=PRIME)
     ctx = get_context(arith, p=PRIME)
     if not isinstance(ctx, (ExactContext, ModpContext)):
         raise ValueError(f"arith must be 'exact' or 'modp' (or such a context), got {arith!r}")
     if not isinstance(alpha, RationalAngle):
         raise TypeError(f"alpha must be a RationalAngle, got {type(alpha).__name__}")
-    target = n + 1 if kind == "M" else n
+    target = n if kind == "C" else n + 1
     count = delta(target) + extra
     tu, tv = fixed_points(target, count, seed)
     pts = RationalPoints(None, tu, tv, check=False)
@@ -157,6 +160,8 @@ def identity_check(kind: str, n: int, alpha: RationalAngle, form, *, arith: str 
             big = monomials(exponent_matrix(target), trig, c)
             if kind == "M":
                 return big, monomials(exponent_matrix(n), trig, c)
+            if kind == "P":  # the product's monomial: the exponents of m_f and m_h added
+                return big, monomials(exponent_matrix(n) + exponent_matrix(1)[h], trig, c)
             s = c.from_rational(alpha.sin_half)
             return big, monomial_derivative(exponent_matrix(n), trig, (1, 0, -1), c, s2=c.mul(s, s))
 
@@ -169,7 +174,7 @@ def identity_check(kind: str, n: int, alpha: RationalAngle, form, *, arith: str 
         holds = bool(np.array_equal(_matmul_mod(big, mat, ctx.p), lhs % ctx.p))
         big_p = big
     rank = mod.rank(big_p)
-    return {"kind": kind, "n": n, "t": str(alpha.t), "arith": ctx.name, "points": count, "holds": bool(holds),
+    return {"kind": kind, "n": n, "h": h, "t": str(alpha.t), "arith": ctx.name, "points": count, "holds": bool(holds),
             "rank_mod_p": int(rank), "unisolvent": rank == delta(target), "ok": bool(holds) and rank == delta(target)}
 
 
@@ -241,3 +246,48 @@ def perturbed(form, which: int = 0, by: int = 1) -> tuple[np.ndarray, ...]:
     out = tuple(np.array(x, copy=True) for x in form)
     out[4][which] += by
     return out
+
+
+def product_sum_is_elevation(n: int, alpha: RationalAngle, forms) -> bool:
+    """``sum_h x_h P_h = M`` exactly at ``alpha`` (x_h the scaled normalizing coefficients of T_2): the products
+    with the first-order partition of unity give back the elevation (``forms[h]`` the merged form of P_h)."""
+    from paper_repro.core.half_angle_matrices import elevation_form, half_angle, scaled_coefficients
+
+    ctx = ExactContext()
+    kappa, sigma = half_angle(alpha, ctx)
+    x1 = scaled_coefficients(1, kappa, sigma, ctx)
+    total = ctx.zeros((delta(n + 1), delta(n)))
+    for h, form in enumerate(forms):
+        total = total + x1[h] * _dense(form, (delta(n + 1), delta(n)), alpha, ctx)
+    return total.tolist() == _dense(elevation_form(n), (delta(n + 1), delta(n)), alpha, ctx).tolist()
+
+
+def products_equivariant(n: int, forms) -> bool:
+    """Symmetry: for each exchange pi of two variables (a permutation of the members of every order,
+    :func:`~paper_repro.core.labels.variable_swap`), ``P_{pi h}[pi g, pi f] = P_h[g, f]`` as integer forms
+    (``forms[h]`` the merged form of P_h)."""
+    from paper_repro.core.labels import variable_swap
+
+    def as_set(form, rows=None, cols=None) -> set:
+        r, c, a, b, coef = (np.asarray(v) for v in form)
+        if rows is not None:
+            r, c = rows[r], cols[c]
+        return set(zip(r.tolist(), c.tolist(), a.tolist(), b.tolist(), coef.tolist()))
+
+    for sa, sb in ((0, 1), (1, 2), (0, 2)):
+        p1, pn, pbig = variable_swap(1, sa, sb), variable_swap(n, sa, sb), variable_swap(n + 1, sa, sb)
+        for h, form in enumerate(forms):
+            if as_set(forms[int(p1[h])]) != as_set(form, pbig, pn):
+                return False
+    return True
+
+
+def lowering_lemma(n: int) -> dict:
+    """The lemma behind the products' route: for every member g of T_{2n} and variable x with ``S_x^e`` in m_g,
+    e >= 1, every member in the rule's expansion of ``L_x m_g`` has a factor ``S_x^(e - 1)`` at least."""
+    from paper_repro.core.half_angle_rules import cotangent
+
+    e = exponent_matrix(check_n(n))
+    fails = [(g, x) for g in range(delta(n)) for x in range(3) if e[g, 2 * x]
+             and any(int(e[int(t), 2 * x]) < int(e[g, 2 * x]) - 1 for t in cotangent(n, x, g)[:, 3])]
+    return {"n": n, "fails": fails, "ok": not fails}

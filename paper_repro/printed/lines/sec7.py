@@ -32,7 +32,8 @@ LINES = [
          status='excused',
          reason=('a question; answered for every n and alpha by claim question1_all_n (one formula for every '
                  'coefficient, positive and symmetric: hand proof docs/question1_for_all_n.md), and by claim '
-                 'elevation_all_n (the recurrence of consecutive orders)')),
+                 'elevation_all_n and pairwise_products_all_n (the recurrence of consecutive orders, through the '
+                 'products the paper asks for)')),
     Line(id='sec7-closed-formulas-scope', tex=(2679, 2682), near='sec:open_problems', kind='prose',
          verbatim=('Due to the\ncomplexity of this problem, closed formulas of these coefficients were given\n'
                    'only for levels $0$ and $1$ for arbitrary order, and for all levels\njust for orders $n=1$, '
@@ -62,7 +63,7 @@ LINES = [
                    'would also provide:'),
          says=('The product can be transformed into the basis T-bar_{2(n+1)} (every pairwise product of a '
                'function of T_{2n} and one of T_2 lies in span T_{2(n+1)}).'),
-         status='checked', check='sec7-products-in-span'),
+         status='checked', check='claim:pairwise_products_all_n'),
     Line(id='sec7-transformation-consequences', tex=(2707, 2711), near='sec:open_problems', kind='prose',
          verbatim=('\\item a recurrence relation between normalizing coefficients of consecutive orders;\n'
                    '\\item the symmetry and non-negativity of normalizing coefficients;\n\\item the order '
@@ -71,7 +72,7 @@ LINES = [
                    '(rational) trigonometric patches\nfrom arbitrary order $n$ to $n+1$).'),
          says=('Such a transformation would give a recurrence of normalizing coefficients, their symmetry and '
                'non-negativity, and order elevation n -> n+1.'),
-         status='checked', check='claim:elevation_all_n'),
+         status='checked', check='claim:pairwise_products_all_n'),
     Line(id='sec7-method-comparison', tex=(2714, 2718), near='sec:open_problems', kind='prose',
          verbatim=('In contrast to the technique presented in the proof of\nProposition '
                    '\\ref{prop:level_1_coefficients} (cf. \\cite{tech_report}), the immediate inheritance of\n'
@@ -90,7 +91,7 @@ LINES = [
                    '~\\overline{R}_{2n,2n-i,j}^{\\alpha}\\cdot\\overline{G}_{2,2,0}^{\\alpha\n}'),
          says=('The mixed products R-bar_{2n,2n-i,j} times R-bar_{2,1,1}, R-bar_{2,2,0}, R-bar_{2,1,0}, '
                'G-bar_{2,2,0} can be transformed into the basis T-bar_{2(n+1)}.'),
-         status='checked', check='sec7-products-in-span'),
+         status='checked', check='claim:pairwise_products_all_n'),
     Line(id='sec7-mixed-products-index-set', tex=(2728, 2729), near='sec:open_problems', kind='index-set',
          verbatim='for all indices\n$j=0,1,\\ldots,n-1$ and $i=j,j+1,\\ldots,2n-1-j$',
          says=('... for all indices j = 0, 1, ..., n-1 and i = j, j+1, ..., 2n-1-j (the non-central R functions '
@@ -106,10 +107,12 @@ LINES = [
          says=('For R-bar_{2n,2n-i,j} times B-bar_{2,2,0}, G-bar_{2,1,0}, B-bar_{2,1,0} the authors could not '
                '(yet) write the product as a combination of T-bar_{2(n+1)}.'),
          status='excused',
-         reason=("a statement about the authors' progress, not about the functions; the products do lie in span "
-                 'T_{2(n+1)}: check sec7-products-in-span expands them exactly for n = 1, 2, 3 and finds up to '
-                 "10 terms for these three against at most 2 for the four 'easy' ones, which is consistent with "
-                 'the text')),
+         reason=("a statement about the authors' progress, not about the functions; the products are now written "
+                 'for every n by claim pairwise_products_all_n (G-bar_{2,1,0} and B-bar_{2,1,0}: one cotangent rule '
+                 'applied to the product with the centre; B-bar_{2,2,0}: the cotangent of v applied m - j times, '
+                 'the hard case; proof docs/elevation_and_derivative_for_all_n.md), and check '
+                 'sec7-products-in-span expands them exactly for n = 1, 2, 3 and finds up to 10 terms for these '
+                 "three against at most 2 for the four 'easy' ones, which is consistent with the text")),
     Line(id='sec7-first-order-products', tex=(2736, 2736), near='sec:open_problems', kind='inline',
          verbatim=('For the moment, we are only able (cf. \\cite[Lemma 5.1]{tech_report}) to transform the '
                    'pairwise products of first order blending functions into linear combinations of second '
