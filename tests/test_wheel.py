@@ -60,7 +60,7 @@ def test_wheel_installs_and_runs_outside_the_checkout(tmp_path):
                      cwd=tmp_path).stdout.strip())
     pkg = site / "paper_repro"
     assert (pkg / "resources" / "paper_index.json").is_file() and (pkg / "py.typed").is_file()
-    assert (pkg / "resources" / "derivative_tables.json").is_file()  # Patch.derivative / normals for n <= 10
+    assert (pkg / "resources" / "derivative_tables.json").is_file()  # claim derivative_all_n's independent reference
     before = _tree(site)
 
     work = tmp_path / "work"

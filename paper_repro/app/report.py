@@ -347,7 +347,6 @@ def run_claims(only: list[str] | None, overrides: dict[str, dict[str, Any]] | No
             if in_checkout() and output_root() == ROOT:  # the README of the clone, never elsewhere
                 update_readme(results, unique, (data_files.get("paper_lines.json") or {}).get("coverage"))
             write_paper_map()
-            write_derivative_tables()
         _record_timings(build_dir() / f"timings{suffix}.json", seconds, cached)
         write_json(build_dir() / f"measured_raw{suffix}.json", raw)
     return ClaimsRun(len(results) - len(failed), tuple(failed), len(unique_errata(errata)))
@@ -378,19 +377,6 @@ def _record_timings(path: Path, seconds: dict[str, float], cached: dict[str, boo
     hits = sum(1 for v in cached.values() if v)
     old["total_last_run"] = {"seconds": round(sum(seconds.values()), 1), "cached": hits, "computed": len(cached) - hits}
     write_json(path, old)
-
-
-def write_derivative_tables() -> None:
-    """The tables of the derivative matrix (package data ``paper_repro/resources/derivative_tables.json``,
-    :mod:`paper_repro.core.derivative_tables`), recomputed exactly (about 20 s) and rewritten in a checkout only:
-    an installed package never writes into its install location."""
-    if not (in_checkout() and output_root() == ROOT):
-        return
-    from paper_repro.core.derivative_tables import TABLE_MAX_N, TABLES
-    from paper_repro.theory.derivative_matrix import tables_text
-
-    write_text(TABLES, tables_text(TABLE_MAX_N))
-    print(f"derivative tables: n = 1..{TABLE_MAX_N} recomputed ({TABLES.name})")
 
 
 def write_paper_map() -> None:
