@@ -11,8 +11,9 @@ recovered exactly modulo two primes by :mod:`paper_repro.theory.derivative_matri
 ``tools/derivative_tables.py`` and recomputed by the tests (n <= 3 in the fast suite, every n <= 10 in the slow one).
 Since C has a proven closed form for every n, the library no longer reads them: they are the independent reference
 that claim ``derivative_all_n`` compares the closed form with, and ``make reproduce`` no longer recovers them.  That
-they hold for *every* alpha, and the closed form for every n, is proven (docs/elevation_and_derivative_for_all_n.md, Theorem 1; evaluated in every arithmetic by
-:func:`paper_repro.core.half_angle_matrices.derivative_nets`, which a test compares with these tables).
+they hold for *every* alpha, and the closed form for every n, is proven (docs/elevation_and_derivative_for_all_n.md,
+Theorem 1; evaluated in every arithmetic by :func:`paper_repro.core.half_angle_matrices.derivative_nets`, which a test
+compares with these tables).
 
 The direction ``v = (0, 1, -1)`` is u with the variables u and v exchanged (T_{2n} is symmetric:
 :func:`~paper_repro.core.labels.variable_swap`), and any in-plane direction ``(du, dv, dw)`` is
