@@ -298,6 +298,57 @@ def interleaved(ns: list[int], points: int, reps: int = 6) -> dict:
     return out
 
 
+#: The closed-form matrices timed by :func:`closed_forms` (issue 30): (label, call with ``n``), and the goals (s, cold).
+CLOSED_FORMS = {
+    "elevation_matrix": "paper_repro.elevation_matrix({n}, 1.0)",
+    "transformation_matrix": "paper_repro.transformation_matrix({n}, 1.0)",
+    "product_matrix B_{{2,2,0}}": "paper_repro.product_matrix({n}, 'B_{{2,2,0}}', 1.0)",
+}
+CLOSED_FORM_GOALS = {("elevation_matrix", 10): 0.05, ("elevation_matrix", 30): 1.0}
+_COLD_CALL = """
+import time, paper_repro
+t = time.perf_counter(); {call}; cold = time.perf_counter() - t
+t = time.perf_counter(); {call}; warm = time.perf_counter() - t
+print(cold, warm)
+"""
+
+
+def closed_forms(ns: dict[str, list[int]]) -> list[dict]:
+    """Each closed-form matrix of issue 30 in a fresh process (the package imported first, then the first call --
+    *cold*: its integer form built -- and a second call, *warm*), idle and with one busy process per core minus one;
+    best of two fresh processes."""
+    import subprocess
+    import sys
+
+    cores = os.cpu_count() or 1
+    rows = []
+    for load in ("idle", "loaded"):
+        busy = []
+        if load == "loaded":
+            busy = [subprocess.Popen([sys.executable, "-c", "from paper_repro.app.bench import _busy; _busy(600)"])
+                    for _ in range(max(1, cores - 1))]
+        try:
+            for name, call in CLOSED_FORMS.items():
+                for n in ns[name]:
+                    code = _COLD_CALL.format(call=call.format(n=n))
+                    runs = [tuple(map(float, subprocess.run([sys.executable, "-c", code], capture_output=True,
+                                                            text=True, check=True).stdout.split()))
+                            for _ in range(2)]
+                    cold, warm = min(r[0] for r in runs), min(r[1] for r in runs)
+                    goal = CLOSED_FORM_GOALS.get((name, n))
+                    label = name.replace("{{", "{").replace("}}", "}")
+                    rows.append({"load": load, "function": label, "n": n,
+                                 "cold_s": round(cold, 4), "warm_s": round(warm, 4), "goal_cold_s": goal,
+                                 "meets_goal": None if goal is None else cold <= goal})
+                    print(f"  closed form {load} {label} n={n}: cold {cold:.3f}s, warm {warm:.3f}s", flush=True)
+        finally:
+            for p in busy:
+                p.terminate()
+            for p in busy:
+                p.wait()
+    return rows
+
+
 #: Block sizes of the floor's micro-benchmarks (each operation is taken at its best).
 FLOOR_BLOCKS = (256, 1024, 8192)
 
@@ -526,6 +577,17 @@ def markdown(rep: dict) -> str:
                     f"{r['normals_min_s']} | {r['derivative_over_point_median']} | {r['derivative_over_point_max']} | "
                     f"**{r['normals_over_point_median']}** | {r['normals_over_point_max']} |" for r in th["rows"]]
             out.append("")
+    if rep.get("closed_forms"):
+        out += ["## Closed-form matrices (issue 30), each in a fresh process", "",
+                "The package imported first; *cold*: the first call (its integer form built), *warm*: a second call "
+                "in the same process; α = 1.0, float; best of two processes. *loaded*: one busy process per core "
+                "minus one. Goals (issue 30): `elevation_matrix` cold n = 10 ≤ 0.05 s, n = 30 ≤ 1 s.", "",
+                "| load | function | n | cold (s) | warm (s) | goal (s) | met |", "|---|---|---|---|---|---|---|"]
+        out += [f"| {r['load']} | `{r['function']}` | {r['n']} | {r['cold_s']} | {r['warm_s']} | "
+                f"{'' if r['goal_cold_s'] is None else r['goal_cold_s']} | "
+                f"{'' if r['meets_goal'] is None else ('yes' if r['meets_goal'] else '**no**')} |"
+                for r in rep["closed_forms"]]
+        out.append("")
     out += ["## The physical floor (one thread)", "",
             f"Micro-benchmarks on blocks of {rep.get('floor_block', 1024)} points (each operation at the size where "
             "it is fastest per point), scaled to the point count: three sin/cos pairs, "
@@ -609,7 +671,10 @@ def main(argv: list[str] | None = None) -> int:
     rep = {"machine": machine(), "repeat": args.repeat, "points": points, "goals": GOALS,
            "load_average_at_start": list(os.getloadavg()),
            "ratios": ratio_runs(ns, points, args.repeat),
-           "threads": interleaved(ns if args.quick else [3, 6, 10], points, 2 if args.quick else 6),
+           "threads": interleaved(ns if args.quick else [3, 6, 10, 20], points, 2 if args.quick else 6),
+           "closed_forms": closed_forms({k: [2, 3] if args.quick else [10, 20, 30] + ([40] if k == "elevation_matrix"
+                                                                                      else [])
+                                         for k in CLOSED_FORMS}),
            "floor": floor_estimate([3, 6] if not args.quick else [3], points, args.repeat),
            "floor_block": ", ".join(map(str, FLOOR_BLOCKS)),
            "memory": memory_rows(3, [10**4, 10**5] if args.quick else [10**5, 10**7]),
