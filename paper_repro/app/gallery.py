@@ -48,9 +48,13 @@ OPEN_QUESTIONS = [
                                                                         "bezier_conversion", "limit_formula"],
      "Nothing: answered for every n, polynomial and rational patches, with explicit convex conversion weights "
      "(written proof docs/limit_for_all_n.md, its lemmas checked exactly to n = 40)."),
-    ("Order elevation (Example 7.2 and the text after it)", ["elevation_all_n", "derivative_all_n", "order_elevation",
-                                                            "elevation_closed_forms"],
-     "Closed forms and non-negativity for n ≥ 5 (non-negativity at sampled α to n = 8 is evidence only)."),
+    ("Order elevation and the products of the text after Question 7.1 (Examples 7.1, 7.2)",
+     ["elevation_all_n", "pairwise_products_all_n", "derivative_all_n", "order_elevation", "elevation_closed_forms"],
+     "Answered for every n: elevation in closed form, a convex combination for every α; every product of a member of "
+     "order n with one of order 1 -- B̄_{2,2,0}, Ḡ_{2,1,0}, B̄_{2,1,0} among them -- with non-negative coefficients, "
+     "giving the recurrence of the coefficients and their inherited symmetry and positivity "
+     "(docs/elevation_and_derivative_for_all_n.md, hand proofs). Still open: whether E factors into corner-cutting "
+     "steps; the observed 9n − 2 non-zeros per row of E (n ≤ 15)."),
 ]
 
 _MATH_TOKEN = re.compile(r"\$([^$]+)\$|"
