@@ -89,7 +89,7 @@ def run_elevation(ts, n_rules, n_exact, n_modp, n_collocation, n_signs, n_rows) 
                  "n <= {n_tables} (a fresh recovery for n in {n_recovered}); the identity holds exactly over Q at a "
                  "unisolvent rational point set (= exact collocation) for n <= {n_exact} and modulo a prime for "
                  "n <= {n_modp}, at tan(alpha/4) in {ts}.",
-       kind="proof", ts=TS, n_tables=10, n_recovered=[], n_exact=4, n_modp=8,
+       kind="proof", ts=TS, n_tables=10, n_recovered=[3], n_exact=4, n_modp=8,
        extended={"ts": TS, "n_tables": 10, "n_recovered": [11, 12], "n_exact": 8, "n_modp": 12})
 def run_derivative(ts, n_tables, n_recovered, n_exact, n_modp) -> Outcome:
     from paper_repro.theory.derivative_matrix import derivative_polynomials
@@ -153,7 +153,7 @@ def recurrence_holds(n: int, alpha, forms) -> bool:
                  "Machine checks: each product identity exactly over Q at a unisolvent rational point set for "
                  "n <= {n_exact} and modulo a prime for n <= {n_modp}, at tan(alpha/4) in {ts}; the lowering lemma "
                  "for orders <= {n_lemma}; every coefficient of each P_h positive for n <= {n_signs}; "
-                 "P_{pi h}[pi g, pi f] = P_h[g, f] for the variable exchanges pi for n <= {n_symmetry}; "
+                 "P_{πh}[πg, πf] = P_h[g, f] for the three exchanges π of two variables for n <= {n_symmetry}; "
                  "sum_h x_h P_h = M and the recurrence exactly for n <= {n_sum} at the same alpha.",
        kind="proof", ts=TS, n_exact=3, n_modp=6, n_lemma=16, n_signs=15, n_symmetry=10, n_sum=6,
        extended={"ts": TS, "n_exact": 5, "n_modp": 10, "n_lemma": 31, "n_signs": 25, "n_symmetry": 20, "n_sum": 10})
