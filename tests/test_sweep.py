@@ -134,3 +134,16 @@ def test_ctrl_c_during_submit_is_raised_after_every_worker_is_known(monkeypatch)
     # the stopped pool's queues stay referenced, so their semaphores are released by this thread, never half-way by
     # the executor's manager thread at an ``os._exit`` (Python 3.12: "leaked semaphore ... No such file")
     assert any(kept is queues[0] for kept, _ in sweep_module._STOPPED_QUEUES)
+
+
+def test_the_cli_tells_multiprocessing_it_is_exiting_on_ctrl_c():
+    """CI: after Ctrl-C a stopped pool's queue feeder thread printed "Exception in thread QueueFeederThread" when its
+    pipe was closed under it; the CLI, which exits 130 right after, sets multiprocessing's exiting flag so the
+    feeder drops its write quietly.  In a subprocess: the flag is process-wide."""
+    import subprocess
+    import sys
+
+    code = ("import multiprocessing.util as u\nfrom paper_repro.app import cli\nbefore = u._exiting\n"
+            "try:\n    cli._on_sigint(2, None)\nexcept KeyboardInterrupt:\n    print(before, u._exiting, flush=True)\n")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=60)
+    assert out.stdout.split() == ["False", "True"], out.stderr

@@ -95,6 +95,13 @@ def _watchdog() -> None:
 
 def _on_sigint(signum, frame) -> None:  # noqa: ARG001 - signal handler signature
     _watchdog()
+    # The command ends now (exit 130): tell multiprocessing that this process is exiting, so the queue feeder
+    # threads of a stopped pool drop their writes quietly instead of printing a traceback when the pipes they
+    # feed are closed under them (seen in CI: "Exception in thread QueueFeederThread ... in _feed").  The same
+    # flag multiprocessing sets itself at interpreter exit; ``os._exit`` skips that, so it is set here.
+    import multiprocessing.util
+
+    multiprocessing.util._exiting = True
     raise KeyboardInterrupt
 
 
