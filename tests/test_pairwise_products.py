@@ -170,3 +170,12 @@ def test_the_claim_is_registered_as_a_proof_and_passes_on_a_small_range():
     assert c.kind == "proof"
     out = c.func(ts=["1/2"], n_exact=2, n_modp=3, n_lemma=5, n_signs=4, n_symmetry=3, n_sum=3)
     assert out.passed
+
+
+def test_product_matrix_at_a_tiny_float_alpha_is_finite_and_sums_to_the_elevation():
+    """Hostile pass: alpha = 1e-300 gave NaN (the scaled coefficients underflow); floats below ALPHA_TINY are taken
+    there, as elevation_matrix does."""
+    for a in (1e-300, 1e-30):
+        qs = [product_matrix(3, h, a) for h in range(7)]
+        assert all(np.isfinite(q).all() and q.min() >= 0 for q in qs)
+        np.testing.assert_allclose(sum(qs).sum(axis=1), 1.0, atol=1e-15)

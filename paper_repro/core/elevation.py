@@ -31,7 +31,13 @@ from paper_repro.core.domain import (
     sample_points,
     sample_rational_points,
 )
-from paper_repro.core.half_angle_matrices import elevation_entries, elevation_form, elevation_matrix_ctx, half_angle
+from paper_repro.core.half_angle_matrices import (
+    ALPHA_TINY,
+    elevation_entries,
+    elevation_form,
+    elevation_matrix_ctx,
+    half_angle,
+)
 from paper_repro.core.labels import delta
 from paper_repro.core.nets import check_net
 from paper_repro.core.normalization import evaluate_normalized, fixed_points
@@ -155,10 +161,6 @@ def certified_solve(n: int, alpha: float, child: bool = True) -> tuple[np.ndarra
     raise ArithmeticError(f"elevation {n}->{n + 1} at alpha = {alpha!r}: not certified at {MAX_PREC} bits")
 
 
-#: Below this alpha the float closed form is taken at ALPHA_TINY: sin^2(alpha/2) would underflow, and the centre's
-#: scaled coefficient, of size sin^2(alpha/2), with it (0/0); E(alpha) = E(0) + O(alpha^2), so the difference is far
-#: below float64's rounding (a test compares with the exact E at tan(alpha/4) = 1e-40).
-ALPHA_TINY = 1e-100
 
 #: Float matrices up to this order are kept in memory (16 of them, at most 6 MB each); larger ones are recomputed.
 CACHE_MAX_N = 15

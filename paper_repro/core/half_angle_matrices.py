@@ -80,6 +80,12 @@ def half_angle(alpha, ctx: Context) -> tuple:
         return k, ctx.mul(s, s)
 
 
+#: Below this alpha the float closed form is taken at ALPHA_TINY: sin^2(alpha/2) would underflow, and the centre's
+#: scaled coefficient, of size sin^2(alpha/2), with it (0/0); E(alpha) = E(0) + O(alpha^2), so the difference is far
+#: below float64's rounding (a test compares with the exact E at tan(alpha/4) = 1e-40).
+ALPHA_TINY = 1e-100
+
+
 @cache
 def elevation_form(n: int) -> tuple[np.ndarray, ...]:
     """The integer bivariate form of M: ``(rows, cols, a, b, coef)`` sorted, ``M[g, f] = sum coef kappa^a sigma^b``
@@ -133,7 +139,10 @@ def product_matrix(n: int, h: int | str, alpha, arith: str | Context = "float") 
     elif isinstance(h, bool) or not isinstance(h, (int, np.integer)) or not 0 <= h < delta(1):
         raise ValueError(f"h must be a label of T_2 such as 'B_{{2,2,0}}' or an index in [0, 6], got {h!r}")
     ctx = get_context(arith)
-    kappa, sigma = half_angle(alpha if isinstance(alpha, arb) else parse_alpha(alpha), ctx)
+    alpha = alpha if isinstance(alpha, arb) else parse_alpha(alpha)
+    if isinstance(ctx, FloatContext) and not isinstance(alpha, RationalAngle):
+        alpha = max(check_alpha(alpha), ALPHA_TINY)
+    kappa, sigma = half_angle(alpha, ctx)
     rows, cols, p = evaluate_terms(product_form(n, int(h)), kappa, sigma, ctx)
     x, x1, x2 = (scaled_coefficients(k, kappa, sigma, ctx) for k in (n, 1, n + 1))
     with ctx.scope():
