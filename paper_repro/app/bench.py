@@ -256,10 +256,7 @@ def interleaved(ns: list[int], points: int, reps: int = 6) -> dict:
 
     out = {"cores": cores, "reps": reps, "machine_gain": round(max(reference() for _ in range(3)), 2), "rows": []}
     for load in ("idle", "loaded"):
-        busy = []
-        if load == "loaded":
-            busy = [subprocess.Popen([sys.executable, "-c", "from paper_repro.app.bench import _busy; _busy(300)"])
-                    for _ in range(max(1, cores - 1))]
+        busy = _start_busy(load, 300)
         try:
             for n in ns:
                 patch = Patch(n, alpha, np.random.default_rng(n).normal(size=(delta(n), 3)))
@@ -291,10 +288,7 @@ def interleaved(ns: list[int], points: int, reps: int = 6) -> dict:
                       f"{row['derivative_over_point_median']} (median), normals / point "
                       f"{row['normals_over_point_median']} (median)", flush=True)
         finally:
-            for p in busy:
-                p.terminate()
-            for p in busy:
-                p.wait()
+            _stop_busy(busy)
     return out
 
 
@@ -320,13 +314,9 @@ def closed_forms(ns: dict[str, list[int]]) -> list[dict]:
     import subprocess
     import sys
 
-    cores = os.cpu_count() or 1
     rows = []
     for load in ("idle", "loaded"):
-        busy = []
-        if load == "loaded":
-            busy = [subprocess.Popen([sys.executable, "-c", "from paper_repro.app.bench import _busy; _busy(600)"])
-                    for _ in range(max(1, cores - 1))]
+        busy = _start_busy(load, 600)
         try:
             for name, call in CLOSED_FORMS.items():
                 for n in ns[name]:
@@ -342,15 +332,30 @@ def closed_forms(ns: dict[str, list[int]]) -> list[dict]:
                                  "meets_goal": None if goal is None else cold <= goal})
                     print(f"  closed form {load} {label} n={n}: cold {cold:.3f}s, warm {warm:.3f}s", flush=True)
         finally:
-            for p in busy:
-                p.terminate()
-            for p in busy:
-                p.wait()
+            _stop_busy(busy)
     return rows
 
 
 #: Block sizes of the floor's micro-benchmarks (each operation is taken at its best).
 FLOOR_BLOCKS = (256, 1024, 8192)
+
+
+def _start_busy(load: str, seconds: float) -> list:
+    """For ``load == 'loaded'``: one busy process per core minus one (each ends by itself after ``seconds``)."""
+    import subprocess
+    import sys
+
+    if load != "loaded":
+        return []
+    return [subprocess.Popen([sys.executable, "-c", f"from paper_repro.app.bench import _busy; _busy({seconds})"])
+            for _ in range(max(1, (os.cpu_count() or 1) - 1))]
+
+
+def _stop_busy(busy: list) -> None:
+    for p in busy:
+        p.terminate()
+    for p in busy:
+        p.wait()
 
 
 def _busy(seconds: float) -> None:  # pragma: no cover - runs in the load processes
@@ -369,7 +374,6 @@ def ratio_runs(ns: list[int], points: int, repeat: int, busy_seconds: float = 90
     import sys
     import tempfile
 
-    cores = os.cpu_count() or 1
     runs = []
     for load in ("idle", "loaded"):
         for setting in ("default", "OPENBLAS_NUM_THREADS=1"):
@@ -377,10 +381,7 @@ def ratio_runs(ns: list[int], points: int, repeat: int, busy_seconds: float = 90
             env.pop("PAPER_REPRO_THREADS", None)
             if setting != "default":
                 env.update(OPENBLAS_NUM_THREADS="1")
-            busy = []
-            if load == "loaded":
-                busy = [subprocess.Popen([sys.executable, "-c", f"from paper_repro.app.bench import _busy; "
-                                          f"_busy({busy_seconds})"]) for _ in range(max(1, cores - 1))]
+            busy = _start_busy(load, busy_seconds)
             print(f"patch vs bezier, {load}, BLAS threads {setting}:", flush=True)
             try:
                 with tempfile.TemporaryDirectory() as tmp:
@@ -391,10 +392,7 @@ def ratio_runs(ns: list[int], points: int, repeat: int, busy_seconds: float = 90
                     with open(out) as fh:
                         rows = json.load(fh)
             finally:
-                for p in busy:
-                    p.terminate()
-                for p in busy:
-                    p.wait()
+                _stop_busy(busy)
             runs.append({"load": load, "busy_processes": len(busy), "blas_threads": setting, "rows": rows})
     return runs
 
