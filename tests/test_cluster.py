@@ -240,3 +240,25 @@ def cf_recovered(n):  # stands for closed_forms.recovered in the cost model's ey
 
 cf_recovered.__module__ = "paper_repro.theory.closed_forms"
 cf_recovered.__name__ = "recovered"
+
+
+def test_extended_run_in_a_fresh_folder_draws_no_figure_and_says_so(tmp_path, capsys):
+    """`reproduce --extended --out FRESH` used to crash in the figures step (the figures read data/claims.json,
+    which only the non-extended run writes).  An extended run now redraws no figure: in a fresh folder it says so in
+    one line and writes nothing there; beside a non-extended run's output it refreshes the manifest and gallery."""
+    load_all()
+    set_output_root(tmp_path)
+    try:
+        assert report.refresh_gallery() is False
+        assert not (tmp_path / "figures").exists()
+        out = capsys.readouterr().out.strip().splitlines()
+        assert len(out) == 1 and "without --extended" in out[0]
+        (tmp_path / "data").mkdir()
+        (tmp_path / "data" / "claims.json").write_text("[]")
+        (tmp_path / "figures").mkdir()
+        (tmp_path / "figures" / "manifest.json").write_text("[]")
+        assert report.refresh_gallery() is True
+        assert (tmp_path / "figures" / "index.html").exists()
+        assert len(json.loads((tmp_path / "figures" / "manifest.json").read_text())) == len(report.FIGURE_REGISTRY)
+    finally:
+        set_output_root(None)

@@ -310,7 +310,10 @@ def _main(argv: list[str] | None = None) -> int:
                 from paper_repro.app import gallery
 
                 gallery.REPRODUCED = True
-            report.make_figures(None)
+            if extended:  # the figures are drawn from the non-extended data: only the gallery page is refreshed
+                report.refresh_gallery()
+            else:
+                report.make_figures(None)
             from paper_repro.app.annotated_paper import write_paper
 
             write_paper()

@@ -551,6 +551,24 @@ def make_figures(only: list[str] | None, executor=None) -> list[Path]:
     return written
 
 
+def refresh_gallery() -> bool:
+    """After an extended run: rebuild ``figures/manifest.json`` and the gallery page (they name the extended data)
+    without redrawing a figure -- every figure is drawn from the non-extended ``data/claims.json``, which
+    ``reproduce`` without ``--extended`` writes.  Where that file or the figures are missing (a fresh ``--out``
+    folder), say so in one line and write nothing."""
+    if not (data_dir() / "claims.json").exists() or not (figures_dir() / "manifest.json").exists():
+        print("figures: not drawn by an extended run (they come from data/claims.json, which "
+              "'python -m paper_repro reproduce' without --extended writes)")
+        return False
+    manifest = build_manifest()
+    write_json(figures_dir() / "manifest.json", manifest)
+    from paper_repro.app.gallery import write_gallery
+
+    write_gallery(manifest)
+    print(f"figures: not redrawn by an extended run; manifest ({len(manifest)}) and gallery page refreshed")
+    return True
+
+
 def _min_text(fig) -> float | None:
     """The smallest text of the figure, in CSS px at the gallery's width (from the sidecar ``save`` writes)."""
     side = [figures_dir() / Path(png).with_suffix(".text.json").name for png in fig.outputs]
