@@ -207,6 +207,11 @@ def test_threads_setting_is_validated(monkeypatch):
     monkeypatch.setenv("PAPER_REPRO_THREADS", "two")
     with pytest.raises(ValueError, match="PAPER_REPRO_THREADS"):
         threads()
+    monkeypatch.setenv("PAPER_REPRO_THREADS", "1025")  # an upper bound too (a typing error, not a machine)
+    with pytest.raises(ValueError, match=r"PAPER_REPRO_THREADS must be an integer in \[1, 1024\]"):
+        threads()
+    monkeypatch.setenv("PAPER_REPRO_THREADS", "1024")
+    assert threads() == 1024
 
 
 def test_errors_name_the_first_bad_point_with_threads(monkeypatch):

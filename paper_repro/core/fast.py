@@ -107,16 +107,22 @@ _BLAS_USERS = 0
 _BLAS_LIMITER = None
 
 
+#: Most threads ``PAPER_REPRO_THREADS`` may ask for (each thread evaluates a block of points; more threads than
+#: this is a typing error, not a machine).
+MAX_THREADS = 1024
+
+
 def threads() -> int:
-    """Threads the kernel uses: ``PAPER_REPRO_THREADS`` if set (a positive integer), else the CPUs available."""
+    """Threads the kernel uses: ``PAPER_REPRO_THREADS`` if set (an integer in [1, MAX_THREADS]), else the CPUs
+    available."""
     env = os.environ.get("PAPER_REPRO_THREADS", "").strip()
     if env:
         try:
             k = int(env)
         except ValueError:
             raise ValueError(f"PAPER_REPRO_THREADS must be a positive integer, got {env!r}") from None
-        if k < 1:
-            raise ValueError(f"PAPER_REPRO_THREADS must be a positive integer, got {env!r}")
+        if not 1 <= k <= MAX_THREADS:
+            raise ValueError(f"PAPER_REPRO_THREADS must be an integer in [1, {MAX_THREADS}], got {env!r}")
         return k
     try:
         return max(1, len(os.sched_getaffinity(0)))
