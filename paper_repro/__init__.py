@@ -19,37 +19,63 @@ contexts, domain, basis, normalization, collocation, ...) <- ``printed`` (verbat
 ``surfaces`` (patches, fitting, meshes) <- ``claims`` <- ``figures`` <- ``app`` (reports, CLI).
 """
 
-from paper_repro._version import __version__
-from paper_repro.core.basis import evaluate as _evaluate
-from paper_repro.core.context import get_context
-from paper_repro.core.derivatives_basis import basis_derivative as _basis_derivative
-from paper_repro.core.domain import (
-    RationalAngle,
-    RationalPoints,
-    rational_alpha,
-    sample_points,
-    sample_rational_points,
-)
-from paper_repro.core.elevation import elevate, elevation_matrix
-from paper_repro.core.half_angle_matrices import product_matrix as _product_matrix
-from paper_repro.core.labels import delta, parse_label, united_system
-from paper_repro.core.nets import LabelledNet
-from paper_repro.core.normalization import coefficients as _coefficients
-from paper_repro.core.normalization import evaluate_normalized as _evaluate_normalized
-from paper_repro.core.transformation import transformation_matrix
-from paper_repro.surfaces.fitting import fit, fit_least_squares
-from paper_repro.surfaces.limit import bezier_nodes, bezier_triangle
-from paper_repro.surfaces.mesh import export_mesh
-from paper_repro.surfaces.patch import Patch, merge_meshes
-from paper_repro.theory.limits import bezier_limit
-from paper_repro.util.validation import accepts_alpha_text, parse_alpha
+from importlib import import_module
+from typing import Any
 
-# alpha may be given as text ("pi/2", "2pi/3") wherever the API takes it (read by parse_alpha)
-evaluate = accepts_alpha_text(_evaluate)
-basis_derivative = accepts_alpha_text(_basis_derivative)
-coefficients = accepts_alpha_text(_coefficients)
-evaluate_normalized = accepts_alpha_text(_evaluate_normalized)
-product_matrix = accepts_alpha_text(_product_matrix)
+from paper_repro._version import __version__
+
+#: The public names and where they live.  They are imported on first use (PEP 562), so that ``import
+#: paper_repro`` -- the first thing ``python -m paper_repro`` does, before our Ctrl-C handling can run -- costs
+#: almost nothing; ``(module, name, reads alpha text)``: alpha may be given as text ("pi/2", "2pi/3") wherever
+#: the API takes it (read by :func:`~paper_repro.util.validation.parse_alpha`).
+_PUBLIC: dict[str, tuple[str, str, bool]] = {
+    "evaluate": ("paper_repro.core.basis", "evaluate", True),
+    "get_context": ("paper_repro.core.context", "get_context", False),
+    "basis_derivative": ("paper_repro.core.derivatives_basis", "basis_derivative", True),
+    "RationalAngle": ("paper_repro.core.domain", "RationalAngle", False),
+    "RationalPoints": ("paper_repro.core.domain", "RationalPoints", False),
+    "rational_alpha": ("paper_repro.core.domain", "rational_alpha", False),
+    "sample_points": ("paper_repro.core.domain", "sample_points", False),
+    "sample_rational_points": ("paper_repro.core.domain", "sample_rational_points", False),
+    "elevate": ("paper_repro.core.elevation", "elevate", False),
+    "elevation_matrix": ("paper_repro.core.elevation", "elevation_matrix", False),
+    "product_matrix": ("paper_repro.core.half_angle_matrices", "product_matrix", True),
+    "delta": ("paper_repro.core.labels", "delta", False),
+    "parse_label": ("paper_repro.core.labels", "parse_label", False),
+    "united_system": ("paper_repro.core.labels", "united_system", False),
+    "LabelledNet": ("paper_repro.core.nets", "LabelledNet", False),
+    "coefficients": ("paper_repro.core.normalization", "coefficients", True),
+    "evaluate_normalized": ("paper_repro.core.normalization", "evaluate_normalized", True),
+    "transformation_matrix": ("paper_repro.core.transformation", "transformation_matrix", False),
+    "fit": ("paper_repro.surfaces.fitting", "fit", False),
+    "fit_least_squares": ("paper_repro.surfaces.fitting", "fit_least_squares", False),
+    "bezier_nodes": ("paper_repro.surfaces.limit", "bezier_nodes", False),
+    "bezier_triangle": ("paper_repro.surfaces.limit", "bezier_triangle", False),
+    "export_mesh": ("paper_repro.surfaces.mesh", "export_mesh", False),
+    "Patch": ("paper_repro.surfaces.patch", "Patch", False),
+    "merge_meshes": ("paper_repro.surfaces.patch", "merge_meshes", False),
+    "bezier_limit": ("paper_repro.theory.limits", "bezier_limit", False),
+    "accepts_alpha_text": ("paper_repro.util.validation", "accepts_alpha_text", False),
+    "parse_alpha": ("paper_repro.util.validation", "parse_alpha", False),
+}
+
+
+def __getattr__(name: str) -> Any:
+    """The public names, imported on first use (and then kept in this module)."""
+    where = _PUBLIC.get(name)
+    if where is None:
+        raise AttributeError(f"module 'paper_repro' has no attribute {name!r}")
+    module, attr, alpha_text = where
+    value = getattr(import_module(module), attr)
+    if alpha_text:
+        value = __getattr__("accepts_alpha_text")(value)
+    globals()[name] = value
+    return value
+
+
+def __dir__() -> list[str]:
+    return sorted(set(globals()) | set(_PUBLIC))
+
 
 __all__ = ["LabelledNet", "Patch", "RationalAngle", "RationalPoints", "__version__", "basis_derivative",
            "bezier_limit", "bezier_nodes", "bezier_triangle", "coefficients", "delta", "elevate", "elevation_matrix",

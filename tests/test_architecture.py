@@ -3,6 +3,8 @@ context module compares arithmetic names."""
 
 import ast
 import re
+import subprocess
+import sys
 from pathlib import Path
 
 PKG = Path(__file__).resolve().parent.parent / "paper_repro"
@@ -117,3 +119,15 @@ def test_no_import_circles():
 def test_the_cycle_check_can_fail():
     assert _cycles({"a": {"b"}, "b": {"c"}, "c": {"a"}, "d": {"a"}}) == [["a", "b", "c"]]
     assert _cycles({"a": {"b"}, "b": set()}) == []
+
+
+def test_importing_the_package_imports_nothing_heavy():
+    """``python -m paper_repro`` imports the package before any of our code runs (runpy): a Ctrl-C then would be
+    Python's own traceback.  The package's public names are imported on first use, so that window is only the
+    interpreter's start-up; the names still work (``from paper_repro import Patch``)."""
+    code = ("import sys, paper_repro; heavy = [m for m in ('numpy', 'flint', 'mpmath', 'paper_repro.core') "
+            "if m in sys.modules]; assert not heavy, heavy; from paper_repro import Patch, coefficients; "
+            "assert Patch.__module__ == 'paper_repro.surfaces.patch'; "
+            "assert coefficients(1, 'pi/2') == coefficients(1, 3.141592653589793 / 2); "
+            "assert set(paper_repro.__all__) <= set(dir(paper_repro))")
+    subprocess.run([sys.executable, "-c", code], check=True, timeout=120)
