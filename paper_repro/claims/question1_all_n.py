@@ -24,8 +24,8 @@ What the program checks (each part independent of the others):
    positive, and the formula agrees modulo a prime with the collocation solve of the partition of unity (an
    independent linear solve, (n+1)(n+2)/2 unknowns).
 
-Cost of the sampled alpha (measured, one core): the lemmas for n <= 12 take about 0.4 s per alpha, n <= 20 about
-6 s; the n = 31 samples about 1-2 s per alpha.
+Cost of the sampled alpha (measured CPU, one core): the lemmas for n <= 12 take about 0.2 s per alpha, n <= 20
+about 2.5 s; the samples about 0.5 s per alpha at n = 31, 1 s at n = 40 and 5-10 s at n = 60.
 """
 
 from __future__ import annotations
