@@ -172,3 +172,20 @@ def test_partition_of_unity_at_rational_points(n):
     for x, y in [(fmpq(1, 3), fmpq(1, 5)), (fmpq(2, 7), fmpq(5, 11)), (fmpq(0), fmpq(1, 2))]:
         z = 1 - x - y
         assert sum((c * x ** a * y ** b * z ** e for c, (a, b, e) in limit_terms_formula(n)), fmpq(0)) == 1
+
+
+def test_monomials_rank_sees_a_dependent_set(monkeypatch):
+    """A repeated limit monomial (here on the boundary, then inside) lowers the rank: the peeling falls back to the
+    whole elimination and reports the same rank as it."""
+    import paper_repro.theory.limit_formula as lf
+
+    good = lf.limit_terms_formula(3)
+    for level in (0, 1):
+        victim = next(k for k, (_, t) in enumerate(good) if min(t) == level)
+        terms = list(good)
+        other = next(k for k in range(len(terms)) if k != victim and min(terms[k][1]) == min(terms[victim][1]))
+        terms[victim] = (terms[victim][0], terms[other][1])
+        monkeypatch.setattr(lf, "limit_terms_formula", lambda n, terms=terms: terms)
+        rank = lf.monomials_rank(3)
+        assert rank == lf._full_rank([t for _, t in terms], 9) == delta(3) - 1
+        assert not lf.limit_checks(3)["monomials_independent"]
