@@ -82,3 +82,26 @@ def test_bad_shapes_and_rational_inputs():
         rational_alpha((0, 1))
     with pytest.raises(ValueError, match="arith"):
         evaluate(1, 1.0, [[0.5, 0.25, 0.25]], "quad")
+
+
+@pytest.mark.parametrize("n", [1, 3, 5])
+def test_exact_values_are_the_products_of_the_half_angle_powers(n):
+    """The exact and modular evaluators (the sin^a cos^b of each half angle tabulated once) against the plain
+    product of the six half-angle powers, function by function."""
+    from flint import fmpq
+
+    from paper_repro.core.labels import exponents, united_system
+
+    alpha = rational_alpha(fmpq(2, 5))
+    pts = RationalPoints(alpha, (fmpq(1, 7), fmpq(1, 11), fmpq(3, 40)), (fmpq(1, 9), fmpq(2, 13), fmpq(1, 30)))
+    trig = pts.half_angle_values()
+    exact = evaluate(n, alpha, pts, "exact")
+    modp = evaluate(n, alpha, pts, ModpContext())
+    for f, lab in enumerate(united_system(n)):
+        e = exponents(lab)
+        for p in range(len(pts)):
+            want = fmpq(1)
+            for slot in range(6):
+                want *= trig[slot][p] ** e[slot]
+            assert exact[p, f] == want
+            assert int(modp[p, f]) == ModpContext().from_rational(want)

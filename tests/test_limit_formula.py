@@ -134,3 +134,58 @@ def test_conversion_rows_are_convex_combinations_from_both_sources(n):
 
     assert conversion_is_convex(n, "formula") and conversion_is_convex(n, "closed_forms")
     assert conversion_matrix(n, "formula") == conversion_matrix(n, "closed_forms")
+
+
+def test_peeled_rank_is_the_rank_of_the_whole_matrix():
+    """The boundary peeling (monomials_rank) against one elimination of the whole homogenised matrix: on the
+    limit monomials (full rank) and on random row sets, some with repeated or dependent rows (the fallback)."""
+    import random
+
+    from paper_repro.theory.limit_formula import _full_rank, peeled_rank
+
+    for n in range(1, 9):
+        exps = [t for _, t in limit_terms_formula(n)]
+        assert peeled_rank(exps, 3 * n) == _full_rank(exps, 3 * n) == delta(n)
+    rng = random.Random(5)
+    fallbacks = 0
+    for _ in range(60):
+        top = rng.randint(0, 9)
+        triples = [(a, b, c) for a in range(top + 1) for b in range(top + 1 - a) for c in range(top + 1 - a - b)]
+        exps = [rng.choice(triples) for _ in range(rng.randint(1, 2 * top + 4))]
+        full = _full_rank(exps, top)
+        assert peeled_rank(exps, top) == full, (top, exps)
+        fallbacks += full < len(exps)
+    assert fallbacks > 10  # the dependent case is exercised
+
+
+def test_peeled_rank_rejects_bad_rows():
+    from paper_repro.theory.limit_formula import peeled_rank
+
+    with pytest.raises(ValueError, match="exps"):
+        peeled_rank([(2, 2, 0)], 3)
+
+
+@pytest.mark.parametrize("n", [1, 2, 5])
+def test_partition_of_unity_at_rational_points(n):
+    """(B) independently of partition_of_unity_holds: sum_f L_f x^a y^b z^c = 1 at exact points of the simplex."""
+    assert partition_of_unity_holds(n)
+    for x, y in [(fmpq(1, 3), fmpq(1, 5)), (fmpq(2, 7), fmpq(5, 11)), (fmpq(0), fmpq(1, 2))]:
+        z = 1 - x - y
+        assert sum((c * x ** a * y ** b * z ** e for c, (a, b, e) in limit_terms_formula(n)), fmpq(0)) == 1
+
+
+def test_monomials_rank_sees_a_dependent_set(monkeypatch):
+    """A repeated limit monomial (here on the boundary, then inside) lowers the rank: the peeling falls back to the
+    whole elimination and reports the same rank as it."""
+    import paper_repro.theory.limit_formula as lf
+
+    good = lf.limit_terms_formula(3)
+    for level in (0, 1):
+        victim = next(k for k, (_, t) in enumerate(good) if min(t) == level)
+        terms = list(good)
+        other = next(k for k in range(len(terms)) if k != victim and min(terms[k][1]) == min(terms[victim][1]))
+        terms[victim] = (terms[victim][0], terms[other][1])
+        monkeypatch.setattr(lf, "limit_terms_formula", lambda n, terms=terms: terms)
+        rank = lf.monomials_rank(3)
+        assert rank == lf._full_rank([t for _, t in terms], 9) == delta(3) - 1
+        assert not lf.limit_checks(3)["monomials_independent"]

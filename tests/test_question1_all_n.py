@@ -193,3 +193,26 @@ def test_large_n_in_logarithms():
     assert len(logs) == 251 * 252 // 2 and all(math.isfinite(x) for x in logs)
     with pytest.raises(ValueError, match="exceeds float64"):
         scaled_orbit_coefficients(250, 1e-3)
+
+
+@pytest.mark.parametrize("arith", ["exact", "float", "modp"])
+def test_scaled_table_min_level_is_the_tail_of_the_table(arith):
+    ctx = get_context(arith)
+    c, s2 = ctx.from_rational(fmpq(3, 5)), ctx.from_rational(fmpq(16, 25))
+    for n in (1, 4, 7):
+        full = nf.scaled_table(n, c, s2, ctx)
+        for lo in range(n + 1):
+            tail = full[sum(n + 1 - j for j in range(lo)):]
+            assert [str(x) for x in nf.scaled_table(n, c, s2, ctx, min_level=lo)] == [str(x) for x in tail]
+        assert [str(x) for x in nf.scaled_table(n, c, s2, ctx, max_level=2, min_level=1)] == [
+            str(x) for x in full[n + 1:sum(n + 1 - j for j in range(3))]]
+    with pytest.raises(ValueError, match="min_level"):
+        nf.scaled_table(2, c, s2, ctx, min_level=-1)
+
+
+@pytest.mark.parametrize("n", [1, 2, 4, 6])
+def test_centre_end_values_from_the_formula_equal_those_of_the_closed_forms(n):
+    """The centre alone (scaled_table with min_level = n) against the recovered closed form of the centre."""
+    from paper_repro.theory.general_formulas import centre_end_values, centre_end_values_from_formula
+
+    assert centre_end_values_from_formula(n) == centre_end_values(n)

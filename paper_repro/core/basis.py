@@ -27,14 +27,35 @@ def monomials(exps: np.ndarray, trig: Sequence[np.ndarray], ctx: Context) -> np.
     """
     exps = np.asarray(exps, dtype=np.int64)
     npts = len(trig[0])
-    out = ctx.ones((npts, exps.shape[0]))
+    if ctx.exact:
+        return _monomials_by_pairs(exps, trig, ctx)
+    out = ctx.ones((exps.shape[0], npts))  # (F, P): the gathered powers below are contiguous in this layout
     kmax = int(exps.max()) if exps.size else 0
     for slot in range(6):
         if not exps[:, slot].any():
             continue
         table = power_table(trig[slot], kmax, ctx)  # (kmax+1, P)
-        out = ctx.mul(out, table[exps[:, slot]].T)
-    return out
+        out = ctx.mul(out, table[exps[:, slot]])
+    return np.ascontiguousarray(out.T)
+
+
+def _monomials_by_pairs(exps: np.ndarray, trig: Sequence[np.ndarray], ctx: Context) -> np.ndarray:
+    """:func:`monomials` in an exact arithmetic (where the order of the products does not matter): the distinct
+    ``sin^a cos^b`` of each half angle are tabulated once, so a function costs two products instead of six."""
+    npts = len(trig[0])
+    out = None
+    for var in range(3):
+        pair = exps[:, 2 * var:2 * var + 2]
+        if not pair.any():
+            continue
+        keys, inverse = np.unique(pair, axis=0, return_inverse=True)
+        sin_pow = power_table(trig[2 * var], int(keys[:, 0].max()), ctx)  # (kmax+1, P)
+        cos_pow = power_table(trig[2 * var + 1], int(keys[:, 1].max()), ctx)
+        gathered = ctx.mul(sin_pow[keys[:, 0]], cos_pow[keys[:, 1]])[inverse.reshape(-1)]  # (F, P)
+        out = gathered if out is None else ctx.mul(out, gathered)
+    if out is None:
+        return ctx.ones((npts, exps.shape[0]))
+    return np.ascontiguousarray(out.T)
 
 
 def evaluate(n: int, alpha, points, arith: str | Context = "float", *, dps: int = 50,

@@ -38,6 +38,25 @@ class Collocation:
     verified: int
 
 
+def has_equal_rows(a: np.ndarray) -> bool:
+    """Whether two rows of ``a`` are equal (exact values: int64 or hashable objects such as fmpq).  Such a
+    square matrix is singular; for collocation at points this happens when two points are images of each
+    other under a symmetry of the functions (e.g. permutations of (u, v, w) for the orbit sums).
+
+    >>> has_equal_rows(np.array([[1, 2], [3, 4], [1, 2]])), has_equal_rows(np.array([[1, 2], [2, 1]]))
+    (True, False)
+    """
+    a = np.asarray(a)
+    if a.dtype == object:
+        try:
+            rows = {tuple(row) for row in a.tolist()}
+        except TypeError:  # unhashable entries: no shortcut
+            return False
+    else:
+        rows = {row.tobytes() for row in np.ascontiguousarray(a)}
+    return len(rows) < a.shape[0]
+
+
 def collocate(ctx: Context, system: Callable[[int], tuple[np.ndarray, np.ndarray]], m: int, *,
               attempts: int = 5, what: str = "collocation", rtol: float | None = None) -> Collocation:
     """Solve ``A[:m] X = B[:m]`` for the first non-singular point set and verify ``A[m:] X = B[m:]``.
@@ -48,6 +67,8 @@ def collocate(ctx: Context, system: Callable[[int], tuple[np.ndarray, np.ndarray
     """
     for k in range(attempts):
         a, b = system(k)
+        if ctx.exact and has_equal_rows(a[:m]):
+            continue  # singular: the exact solve would raise ZeroDivisionError after a whole elimination
         with ctx.scope():
             try:
                 x = ctx.solve(a[:m], b[:m])

@@ -99,16 +99,27 @@ def _powers(x, kmax: int, ctx: Context) -> list:
     return out
 
 
-def scaled_table(n: int, c, s2, ctx: Context, max_level: int | None = None) -> list:
+def scaled_table(n: int, c, s2, ctx: Context, max_level: int | None = None, min_level: int = 0) -> list:
     """``s^{2n+j} r_{2n,2n-i,j}`` for the orbit representatives, j = 0..n and i = j..n (the order of
     :func:`paper_repro.core.normalization.orbits`), from ``c = cos(alpha/2)`` and ``s2 = sin^2(alpha/2)`` given as
     scalars of the context ``ctx``.  Only additions and multiplications of non-negative terms.
 
-    ``max_level``: only the levels j <= max_level (in the same order), at a fraction of the cost.  The context may
-    also hold polynomials (``c`` an ``fmpq_poly`` in the exact context): then the values are polynomials."""
+    ``max_level``: only the levels j <= max_level (in the same order), at a fraction of the cost; ``min_level``: only
+    the levels j >= min_level (``min_level=n``: the centre alone, O(n^2) operations instead of O(n^3)).  The context
+    may also hold polynomials (``c`` an ``fmpq_poly`` in the exact context): then the values are polynomials.
+
+    >>> from paper_repro.core.context import get_context
+    >>> ctx = get_context("exact")
+    >>> c, s2 = fmpq(3, 5), fmpq(16, 25)
+    >>> scaled_table(4, c, s2, ctx, min_level=3) == scaled_table(4, c, s2, ctx)[-3:]
+    True
+    """
     q = ctx.from_rational
     c, s2 = _scalar(c), _scalar(s2)
     top = n if max_level is None else min(n, max_level)
+    if isinstance(min_level, bool) or not isinstance(min_level, numbers.Integral) or min_level < 0:
+        raise ValueError(f"min_level must be an integer >= 0, got {min_level!r}")
+    lo = int(min_level)
     big_c = sanchez_reyes_numerators(n, c, ctx)
     s2p = _powers(s2, n, ctx)
     cp = _powers(c, n, ctx)
@@ -116,9 +127,10 @@ def scaled_table(n: int, c, s2, ctx: Context, max_level: int | None = None) -> l
     table_q = []
     for k in range(top + 1):
         row = ctx.zeros((n + 1,))
+        start = max(k, lo)  # the entries i >= start (the levels asked for need no other)
         for b in range((k + 1) // 2, k + 1):
             coef = _mul(ctx, q(fmpq(comb(n, b) * comb(b, k - b) * 2 ** (2 * b - k))), s2p[b])
-            row[k:] = _add(ctx, row[k:], _mul(ctx, coef, big_c[n - b][: n + 1 - k]))
+            row[start:] = _add(ctx, row[start:], _mul(ctx, coef, big_c[n - b][start - k: n + 1 - k]))
         table_q.append(row)
     # H_m = (sum_e binom(n, e) s^{2e} t^{2e}) * (sum_f w_f(m) c^f t^f), as arrays over l = 0..n
     a_even = [_mul(ctx, q(fmpq(comb(n, e))), s2p[e]) for e in range(n // 2 + 1)]
@@ -132,11 +144,11 @@ def scaled_table(n: int, c, s2, ctx: Context, max_level: int | None = None) -> l
             hm[2 * e:] = _add(ctx, hm[2 * e:], _mul(ctx, ae, weights[: n + 1 - 2 * e]))
         h[m] = hm
     out = []
-    for j in range(top + 1):
-        # off the diagonal (i > j) m = 1: one array operation per l for all i at once
+    for j in range(lo, top + 1):
+        # off the diagonal (i > j) m = 1: one array operation per l for all i > j at once
         acc = ctx.zeros((n + 1,))
         for ell in range(j + 1):
-            acc = _add(ctx, acc, _mul(ctx, h[1][ell], table_q[j - ell]))
+            acc[j + 1:] = _add(ctx, acc[j + 1:], _mul(ctx, h[1][ell], table_q[j - ell][j + 1:]))
         diag = q(fmpq(0))
         hm = h[multiplicity(n, j, j)]
         for ell in range(j + 1):

@@ -78,9 +78,11 @@ def _cases(level: int, kind: str, ns) -> list[tuple[int, int]]:
     return [(n, level) for n in ns if n > level]
 
 
-def target(n: int, i: int, level: int) -> fmpq_poly:
-    """The closed form's numerator with sine power 2n + j (as recovered)."""
-    f = closed_forms_cached(n)[f"r_{{{2 * n},{2 * n - i},{level}}}"]
+def target(n: int, i: int, level: int, forms: dict | None = None) -> fmpq_poly:
+    """The closed form's numerator with sine power 2n + j (as recovered); ``forms``: the closed forms of order n
+    (:func:`~paper_repro.theory.closed_forms.closed_forms_cached`, read here when not given)."""
+    forms = closed_forms_cached(n) if forms is None else forms
+    f = forms[f"r_{{{2 * n},{2 * n - i},{level}}}"]
     if f.sin_power != 2 * n + level:
         raise ArithmeticError(f"unexpected sine power {f.sin_power} for level {level}, n = {n}")
     return f.numerator
@@ -98,8 +100,9 @@ def fit(level: int, kind: str, n_fit: int) -> Formula | None:
         raise ValueError(f"kind must be one of {KINDS}, got {kind!r}")
     unknowns = _unknowns(level, kind)
     rows: list[list[fmpq]] = []
+    forms = {n: closed_forms_cached(n) for n in range(1, n_fit + 1) if _cases(level, kind, [n])}
     for n, i in _cases(level, kind, range(1, n_fit + 1)):
-        tgt = target(n, i, level)
+        tgt = target(n, i, level, forms[n])
         basis = [_term_poly(u, n, i) for u in unknowns]
         for d in range(max([tgt.degree()] + [p.degree() for p in basis]) + 1):
             rows.append([p[d] for p in basis] + [tgt[d]])
@@ -130,7 +133,8 @@ def check(f: Formula, ns) -> dict:
         cases = _cases(f.level, f.kind, [n])
         if not cases:
             continue
-        (good if all(predict(f, n, i) == target(n, i, f.level) for _, i in cases) else bad).append(n)
+        forms = closed_forms_cached(n)
+        (good if all(predict(f, n, i) == target(n, i, f.level, forms) for _, i in cases) else bad).append(n)
     return {"agrees_for_n": good, "fails_for_n": bad}
 
 
@@ -348,8 +352,12 @@ def check_against_formula(f: Formula, ns, max_level: int) -> dict:
 
 
 def centre_end_values_from_formula(n: int) -> dict[str, int | bool]:
-    """The centre's end values from the all-n formula: P(1) = 0, (P/(1 - c^2))(1) and P(0)."""
-    p = formula_target(n, n, n)
+    """The centre's end values from the all-n formula: P(1) = 0, (P/(1 - c^2))(1) and P(0) (the centre alone is
+    computed, :func:`~paper_repro.core.normalizing_formula.scaled_table` with ``min_level=n``)."""
+    from paper_repro.core.context import ExactContext
+    from paper_repro.core.normalizing_formula import scaled_table
+
+    (p,) = scaled_table(n, fmpq_poly([0, 1]), fmpq_poly([1, 0, -1]), ExactContext(), min_level=n)
     q, rem = divmod(p, fmpq_poly([1, 0, -1]))
     return {"vanishes_at_1": p(fmpq(1)) == 0 and rem == 0, "centre_alpha_to_0": int(q(fmpq(1))),
             "centre_alpha_to_pi": int(p(fmpq(0)))}

@@ -34,7 +34,7 @@ from __future__ import annotations
 from collections import defaultdict
 from math import comb, factorial
 
-from flint import fmpq, nmod_mat
+from flint import fmpq, fmpq_mpoly_ctx, nmod_mat
 
 from paper_repro.core.labels import exponents, united_system
 from paper_repro.util.validation import check_n
@@ -135,43 +135,110 @@ def telescoping_holds(n: int) -> bool:
     return (layers[0]["P"] == sigma and not layers[0]["B"] and not layers[n + 1]["P"] and not layers[n + 1]["B"])
 
 
+def _homogenised_poly(s: tuple[int, int, int], top: int) -> dict[tuple[int, int], int]:
+    """``x^a y^b z^c (x+y+z)^{top-a-b-c}`` as {(power of x, power of y): integer coefficient}."""
+    a, b, c = s
+    k = top - a - b - c
+    poly: dict[tuple[int, int], int] = {}
+    for p in range(k + 1):
+        for q in range(k - p + 1):
+            poly[(a + p, b + q)] = factorial(k) // (factorial(p) * factorial(q) * factorial(k - p - q))
+    return poly
+
+
 def _homogenised(n: int) -> list[dict[tuple[int, int], int]]:
     """``x^a y^b z^c (x+y+z)^{3n-a-b-c}`` as {(power of x, power of y): integer coefficient}, per function."""
-    top = 3 * n
-    out = []
-    for _, (a, b, c) in limit_terms_formula(n):
-        k = top - a - b - c
-        poly: dict[tuple[int, int], int] = {}
-        for p in range(k + 1):
-            for q in range(k - p + 1):
-                poly[(a + p, b + q)] = factorial(k) // (factorial(p) * factorial(q) * factorial(k - p - q))
-        out.append(poly)
-    return out
+    return [_homogenised_poly(t, 3 * n) for _, t in limit_terms_formula(n)]
 
 
 def partition_of_unity_holds(n: int) -> bool:
-    """(B): sum_f L_f x^a y^b z^c (x+y+z)^{3n-m} == (x+y+z)^{3n}, exactly."""
-    total: dict[tuple[int, int], fmpq] = defaultdict(lambda: fmpq(0))
-    for (coef, _), poly in zip(limit_terms_formula(n), _homogenised(n)):
-        if coef != 0:
-            for key, v in poly.items():
-                total[key] += coef * v
+    """(B): sum_f L_f x^a y^b z^c (x+y+z)^{3n-m} == (x+y+z)^{3n} (m = a + b + c), exactly (flint polynomials in
+    x, y, z; the functions of one degree m are summed before the multiplication by the power of x + y + z)."""
     top = 3 * n
-    target = {(p, q): comb(top, p) * comb(top - p, q) for p in range(top + 1) for q in range(top - p + 1)}
-    return all(total.get(key, 0) == v for key, v in target.items()) and all(
-        v == 0 for key, v in total.items() if key not in target)
+    ctx = fmpq_mpoly_ctx.get(("x", "y", "z"))
+    sigma = sum(ctx.gens(), ctx.from_dict({}))
+    by_power: dict[int, dict[tuple[int, int, int], fmpq]] = defaultdict(dict)
+    for coef, s in limit_terms_formula(n):
+        if coef != 0:
+            if sum(s) > top:
+                return False
+            part = by_power[top - sum(s)]
+            part[s] = part.get(s, fmpq(0)) + coef
+    total = sum((sigma ** k * ctx.from_dict(part) for k, part in by_power.items()), ctx.from_dict({}))
+    return total == sigma ** top
 
 
-def monomials_rank(n: int) -> int:
-    """(C): rank modulo :data:`PRIME` of the delta_n homogenised limit monomials (a lower bound of the rank over Q)."""
-    polys = _homogenised(n)
+def _full_rank(exps: list[tuple[int, int, int]], top: int) -> int:
+    """Rank modulo :data:`PRIME` of the coefficient matrix of ``x^s (x+y+z)^{top-|s|}``, s in ``exps`` (one
+    Gaussian elimination of the whole matrix)."""
+    polys = [_homogenised_poly(s, top) for s in exps]
     keys = sorted({k for p in polys for k in p})
+    if not polys or not keys:
+        return 0
     col = {k: c for c, k in enumerate(keys)}
     entries = [0] * (len(polys) * len(keys))
     for r, p in enumerate(polys):
         for k, v in p.items():
             entries[r * len(keys) + col[k]] = v % PRIME
     return nmod_mat(len(polys), len(keys), entries, PRIME).rank()
+
+
+def _boundary_rank(exps: list[tuple[int, int, int]], top: int) -> int:
+    """Rank modulo :data:`PRIME` of the rows ``x^s (x+y+z)^{top-|s|}`` restricted to the boundary columns (the
+    monomials of degree ``top`` with an exponent 0)."""
+    keys = [(a, b) for a in range(top + 1) for b in range(top + 1 - a) if min(a, b, top - a - b) == 0]
+    col = {k: c for c, k in enumerate(keys)}
+    entries = [0] * (len(exps) * len(keys))
+    for r, s in enumerate(exps):
+        k = top - sum(s)
+        for i in range(3):
+            if s[i] == 0:  # the monomials of x^s (x+y+z)^k free of variable i: (x_{i+1} + x_{i+2})^k x^s
+                for p in range(k + 1):
+                    e = list(s)
+                    e[(i + 1) % 3] += p
+                    e[(i + 2) % 3] += k - p
+                    entries[r * len(keys) + col[(e[0], e[1])]] = comb(k, p) % PRIME
+    return nmod_mat(len(exps), len(keys), entries, PRIME).rank()
+
+
+def peeled_rank(exps: list[tuple[int, int, int]], top: int) -> int:
+    """Rank modulo :data:`PRIME` of the coefficient matrix of ``x^s (x+y+z)^{top-|s|}`` (s in ``exps``, all
+    |s| <= ``top``) in the monomials of degree ``top``: the same number as one elimination of the whole matrix
+    (:func:`_full_rank`), computed by peeling the boundary as the proof of Lemma 4 does.
+
+    Exact linear algebra over F_p: let A be the rows with min s = 0 and B the others.  Every row of B is divisible
+    by xyz, i.e. lies in the span W of the interior monomials (all exponents >= 1), and the quotient by W keeps
+    exactly the boundary columns.  If A restricted to the boundary columns has full row rank |A| (one small
+    |A| x 3top elimination), a relation among all rows projects to a relation among A modulo W, so its A-part is 0:
+    rank(A + B) = |A| + rank(B).  Dividing B by xyz maps monomials to monomials injectively, so rank(B) is the rank
+    of the rows s - (1, 1, 1) at degree top - 3; recurse.  When a boundary block is not of full row rank the
+    remaining matrix is eliminated whole, so the result is always the rank of the full matrix modulo p.
+    For the delta_n limit monomials the blocks at top = 3k have 6k rows (Lemma 1), so the cost is O(n^4) instead of
+    the O(n^6) of the whole elimination.
+
+    >>> exps = [t for _, t in limit_terms_formula(3)]
+    >>> peeled_rank(exps, 9) == _full_rank(exps, 9) == 37
+    True
+    >>> peeled_rank([(1, 0, 0), (1, 0, 0), (0, 1, 1)], 3), _full_rank([(1, 0, 0), (1, 0, 0), (0, 1, 1)], 3)
+    (2, 2)
+    """
+    if any(min(s) < 0 or sum(s) > top for s in exps):
+        raise ValueError(f"exps: every exponent triple must be >= 0 with sum <= top = {top}")
+    done = 0
+    while exps:
+        a = [s for s in exps if min(s) == 0]
+        b = [(s[0] - 1, s[1] - 1, s[2] - 1) for s in exps if min(s) > 0]
+        if a and _boundary_rank(a, top) != len(a):
+            return done + _full_rank(exps, top)
+        done += len(a)
+        exps, top = b, top - 3
+    return done
+
+
+def monomials_rank(n: int) -> int:
+    """(C): rank modulo :data:`PRIME` of the delta_n homogenised limit monomials (a lower bound of the rank over Q),
+    computed by :func:`peeled_rank`."""
+    return peeled_rank([t for _, t in limit_terms_formula(n)], 3 * n)
 
 
 def limit_checks(n: int) -> dict:

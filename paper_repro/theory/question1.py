@@ -37,12 +37,12 @@ from paper_repro.util.validation import check_n
 
 # --- exact power series in v (truncated at order N: coefficients of v^0..v^N) ---------------------------------
 def _trunc(p: fmpq_poly, order: int) -> fmpq_poly:
-    c = p.coeffs()[: order + 1]
-    return fmpq_poly(c) if c else fmpq_poly()
+    return p.truncate(order + 1)
 
 
 def _mul(a: fmpq_poly, b: fmpq_poly, order: int) -> fmpq_poly:
-    return _trunc(a * b, order)
+    """``a b`` truncated after v^order (flint's low product: the terms above are never formed)."""
+    return a.mul_low(b, order + 1)
 
 
 def _sin_half_series(order: int) -> fmpq_poly:
