@@ -60,26 +60,46 @@ def test_recovered_forms_equal_the_printed_examples():
                     assert forms[lab].value(a) == fmpq_poly(num)(c) / s**k, lab
 
 
-def test_residual_polynomial_matches_a_direct_exact_evaluation():
-    """The cleared residual of a *wrong* candidate, evaluated at t, equals s^K (1+t^2)^(d+K+R) du^P dv^Q
-    times the exact residual computed from the basis functions (no clearing, no polynomials)."""
-    n = 2
+@pytest.mark.parametrize("n", [2, 3])
+def test_residual_polynomial_matches_a_direct_exact_evaluation(n):
+    """The cleared residual of a *wrong* candidate equals s^K (1+t^2)^(d+K+R) du^P dv^Q times the exact residual
+    computed from the basis functions (no clearing, no polynomials) at more values of t than its degree bound:
+    the whole polynomial (grouping, Horner scheme, powers of 1 + t^2) is checked, not one value."""
     forms = dict(recover_modular(n))
-    lab = "r_{4,3,1}"
+    lab = sorted(forms)[len(forms) // 2]
     forms[lab] = ClosedForm(lab, forms[lab].sin_power, forms[lab].numerator + fmpq_poly([1, 1]))
     cache = ip.prepare(n, forms)
     tu, tv = fmpq(1, 5), fmpq(3, 7)
     poly = ip.residual_at_point(n, forms, tu, tv, _cache=cache)
     assert not poly.is_zero()
-    t = fmpq(1, 3)
-    alpha = rational_alpha(t)
-    row = reduced_matrix(n, alpha, RationalPoints(None, (tu,), (tv,), check=False), ExactContext())[0]
-    rho = sum(forms[rep.coefficient].value(alpha) * row[o] for o, (rep, _) in enumerate(orbits(n))) - 1
+    bound = 2 * (cache["d"] + cache["K"] + cache["R"])
+    assert poly.degree() <= bound
     du, dv = tu.p**2 + tu.q**2, tv.p**2 + tv.q**2
-    scale = alpha.sin_half ** cache["K"] * (1 + t**2) ** (cache["d"] + cache["K"] + cache["R"])
-    scale *= fmpq(int(du)) ** cache["P"] * fmpq(int(dv)) ** cache["Q"]
-    assert poly(t) == rho * scale
-    assert rho != 0
+    pts = RationalPoints(None, (tu,), (tv,), check=False)
+    for k in range(bound + 1):
+        t = fmpq(1, k + 2)
+        alpha = rational_alpha(t)
+        row = reduced_matrix(n, alpha, pts, ExactContext())[0]
+        rho = sum(forms[rep.coefficient].value(alpha) * row[o] for o, (rep, _) in enumerate(orbits(n))) - 1
+        scale = alpha.sin_half ** cache["K"] * (1 + t**2) ** (cache["d"] + cache["K"] + cache["R"])
+        scale *= fmpq(int(du)) ** cache["P"] * fmpq(int(dv)) ** cache["Q"]
+        assert poly(t) == rho * scale
+
+
+def test_residual_polynomial_of_the_true_forms_is_zero_and_of_a_changed_one_is_not():
+    """n = 6 (several sine and cosine powers of w/2 per orbit): zero at the proof points for the recovered forms;
+    one coefficient changed by 1 gives a non-zero residual at the first point."""
+    n = 6
+    forms = dict(recover_modular(n))
+    pts = ip.proof_points(n, 4)
+    cache = ip.prepare(n, forms)
+    assert all(ip.residual_at_point(n, forms, x, y, _cache=cache).is_zero() for x, y in zip(pts.tu, pts.tv))
+    lab = sorted(forms)[-1]
+    f = forms[lab]
+    coeffs = list(f.numerator.coeffs())
+    coeffs[len(coeffs) // 2] += 1
+    forms[lab] = ClosedForm(lab, f.sin_power, fmpq_poly(coeffs))
+    assert not ip.residual_at_point(n, forms, pts.tu[0], pts.tv[0]).is_zero()
 
 
 @pytest.mark.parametrize("n", [1, 3, 5])
