@@ -20,7 +20,8 @@ depend on alpha and has real dimension 3n^2 + 3n + 1 = delta_n.
    so outside a finite set E_2 it has full column rank.
 3. *The identity at the points, for every alpha.*  At each of the N points the residual
    ``sum_o x_o(alpha) F_o - 1``, multiplied by ``s^K (1 + t^2)^{d + K + R}``, is a polynomial in t with
-   rational coefficients; it is computed exactly and is the zero polynomial.
+   rational coefficients; it is computed exactly and is the zero polynomial (:func:`residual_at_point`: the
+   sum grouped by the exponents of sin(w/2), cos(w/2) and evaluated by Horner's rule in them).
 4. For alpha outside E_1 and E_2: ``1 = sum_o y_o F_o`` for some y (step 1, and the symmetry of 1), and
    A(t)(x - y) = 0 by step 3, so x = y and ``sum_o x_o F_o = 1`` on the whole plane.  Both sides are
    continuous in alpha, so the identity holds for every alpha in (0, pi): the candidates form a partition

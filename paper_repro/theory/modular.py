@@ -22,9 +22,9 @@ import sys
 from functools import cache
 
 import numpy as np
-from flint import fmpq, fmpq_poly, fmpz, fmpz_mat, nmod_mat
+from flint import fmpq, fmpq_poly, fmpz
 
-from paper_repro.core.context import ModpContext, power_table
+from paper_repro.core.context import ModpContext, power_table, to_nmod_mat
 from paper_repro.core.domain import rational_alpha
 from paper_repro.core.labels import exponent_matrix
 from paper_repro.core.normalization import _orbit_columns, _plane_points, fixed_points, orbits
@@ -53,9 +53,7 @@ def shape_parameters(count: int):
 
 def _nmod_solve(mat: np.ndarray, rhs: np.ndarray, p: int) -> np.ndarray:
     """``mat^-1 rhs`` over F_p (``ZeroDivisionError`` if ``mat`` is singular)."""
-    # through fmpz_mat: python-flint converts a list into an fmpz_mat faster than into an nmod_mat
-    a = nmod_mat(fmpz_mat(mat.shape[0], mat.shape[1], mat.reshape(-1).tolist()), p)
-    b = nmod_mat(rhs.shape[0], rhs.shape[1], rhs.reshape(-1).tolist(), p)
+    a, b = to_nmod_mat(mat, p), to_nmod_mat(rhs, p)
     x = a.solve(b)
     return np.array([int(v) for v in x.entries()], dtype=np.int64).reshape(x.nrows(), x.ncols())
 
@@ -109,7 +107,8 @@ class ReducedSystemModp:
         ctx, p = self.ctx, self.p
         sa, ca = ctx.alpha_half(alpha)
         sw, cw = ctx.w_half(ctx, sa, ca, *self.quarter)
-        w = power_table(sw, self.kmax, ctx)[self.key_exps[:, 0]] * power_table(cw, self.kmax, ctx)[self.key_exps[:, 1]] % p
+        w = (power_table(sw, self.kmax, ctx)[self.key_exps[:, 0]]
+             * power_table(cw, self.kmax, ctx)[self.key_exps[:, 1]] % p)
         full = self.g * w[self.key_of].T % p
         return np.add.reduceat(full, self.starts, axis=1) % p
 
