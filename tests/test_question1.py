@@ -23,12 +23,29 @@ from paper_repro.theory.modular import (
 from paper_repro.util import cache as cache_mod
 
 
-def test_fast_modp_matrix_is_the_reduced_matrix():
+@pytest.mark.parametrize("n", [4, 7])
+def test_fast_modp_matrix_is_the_reduced_matrix(n):
     p = primes_below()[3]
-    system = ReducedSystemModp(4, p, seed=1)
-    alpha = rational_alpha(fmpq(2, 7))
-    direct = reduced_matrix(4, alpha, system.points, ModpContext(p=p))
-    assert (system.matrix(alpha) == direct).all()
+    system = ReducedSystemModp(n, p, seed=1)
+    for alpha in (rational_alpha(fmpq(2, 7)), rational_alpha(fmpq(1, 9))):
+        direct = reduced_matrix(n, alpha, system.points, ModpContext(p=p))
+        assert (system.matrix(alpha) == direct).all()
+
+
+def test_values_modp_builds_each_point_set_once(monkeypatch):
+    """The alpha-independent part of the system is built once per point set, not once per shape parameter."""
+    from paper_repro.theory import modular
+
+    built = []
+    real = modular.ReducedSystemModp.__init__
+
+    def init(self, *args, **kwargs):
+        built.append(args)
+        real(self, *args, **kwargs)
+
+    monkeypatch.setattr(modular.ReducedSystemModp, "__init__", init)
+    modular.values_modp(3, primes_below()[0], 9)
+    assert len(built) == len(set(built)) <= 4
 
 
 def test_rational_reconstruction():
