@@ -23,12 +23,29 @@ from paper_repro.theory.modular import (
 from paper_repro.util import cache as cache_mod
 
 
-def test_fast_modp_matrix_is_the_reduced_matrix():
+@pytest.mark.parametrize("n", [4, 7])
+def test_fast_modp_matrix_is_the_reduced_matrix(n):
     p = primes_below()[3]
-    system = ReducedSystemModp(4, p, seed=1)
-    alpha = rational_alpha(fmpq(2, 7))
-    direct = reduced_matrix(4, alpha, system.points, ModpContext(p=p))
-    assert (system.matrix(alpha) == direct).all()
+    system = ReducedSystemModp(n, p, seed=1)
+    for alpha in (rational_alpha(fmpq(2, 7)), rational_alpha(fmpq(1, 9))):
+        direct = reduced_matrix(n, alpha, system.points, ModpContext(p=p))
+        assert (system.matrix(alpha) == direct).all()
+
+
+def test_values_modp_builds_each_point_set_once(monkeypatch):
+    """The alpha-independent part of the system is built once per point set, not once per shape parameter."""
+    from paper_repro.theory import modular
+
+    built = []
+    real = modular.ReducedSystemModp.__init__
+
+    def init(self, *args, **kwargs):
+        built.append(args)
+        real(self, *args, **kwargs)
+
+    monkeypatch.setattr(modular.ReducedSystemModp, "__init__", init)
+    modular.values_modp(3, primes_below()[0], 9)
+    assert len(built) == len(set(built)) <= 4
 
 
 def test_rational_reconstruction():
@@ -60,26 +77,46 @@ def test_recovered_forms_equal_the_printed_examples():
                     assert forms[lab].value(a) == fmpq_poly(num)(c) / s**k, lab
 
 
-def test_residual_polynomial_matches_a_direct_exact_evaluation():
-    """The cleared residual of a *wrong* candidate, evaluated at t, equals s^K (1+t^2)^(d+K+R) du^P dv^Q
-    times the exact residual computed from the basis functions (no clearing, no polynomials)."""
-    n = 2
+@pytest.mark.parametrize("n", [2, 3])
+def test_residual_polynomial_matches_a_direct_exact_evaluation(n):
+    """The cleared residual of a *wrong* candidate equals s^K (1+t^2)^(d+K+R) du^P dv^Q times the exact residual
+    computed from the basis functions (no clearing, no polynomials) at more values of t than its degree bound:
+    the whole polynomial (grouping, Horner scheme, powers of 1 + t^2) is checked, not one value."""
     forms = dict(recover_modular(n))
-    lab = "r_{4,3,1}"
+    lab = sorted(forms)[len(forms) // 2]
     forms[lab] = ClosedForm(lab, forms[lab].sin_power, forms[lab].numerator + fmpq_poly([1, 1]))
     cache = ip.prepare(n, forms)
     tu, tv = fmpq(1, 5), fmpq(3, 7)
     poly = ip.residual_at_point(n, forms, tu, tv, _cache=cache)
     assert not poly.is_zero()
-    t = fmpq(1, 3)
-    alpha = rational_alpha(t)
-    row = reduced_matrix(n, alpha, RationalPoints(None, (tu,), (tv,), check=False), ExactContext())[0]
-    rho = sum(forms[rep.coefficient].value(alpha) * row[o] for o, (rep, _) in enumerate(orbits(n))) - 1
+    bound = 2 * (cache["d"] + cache["K"] + cache["R"])
+    assert poly.degree() <= bound
     du, dv = tu.p**2 + tu.q**2, tv.p**2 + tv.q**2
-    scale = alpha.sin_half ** cache["K"] * (1 + t**2) ** (cache["d"] + cache["K"] + cache["R"])
-    scale *= fmpq(int(du)) ** cache["P"] * fmpq(int(dv)) ** cache["Q"]
-    assert poly(t) == rho * scale
-    assert rho != 0
+    pts = RationalPoints(None, (tu,), (tv,), check=False)
+    for k in range(bound + 1):
+        t = fmpq(1, k + 2)
+        alpha = rational_alpha(t)
+        row = reduced_matrix(n, alpha, pts, ExactContext())[0]
+        rho = sum(forms[rep.coefficient].value(alpha) * row[o] for o, (rep, _) in enumerate(orbits(n))) - 1
+        scale = alpha.sin_half ** cache["K"] * (1 + t**2) ** (cache["d"] + cache["K"] + cache["R"])
+        scale *= fmpq(int(du)) ** cache["P"] * fmpq(int(dv)) ** cache["Q"]
+        assert poly(t) == rho * scale
+
+
+def test_residual_polynomial_of_the_true_forms_is_zero_and_of_a_changed_one_is_not():
+    """n = 6 (several sine and cosine powers of w/2 per orbit): zero at the proof points for the recovered forms;
+    one coefficient changed by 1 gives a non-zero residual at the first point."""
+    n = 6
+    forms = dict(recover_modular(n))
+    pts = ip.proof_points(n, 4)
+    cache = ip.prepare(n, forms)
+    assert all(ip.residual_at_point(n, forms, x, y, _cache=cache).is_zero() for x, y in zip(pts.tu, pts.tv))
+    lab = sorted(forms)[-1]
+    f = forms[lab]
+    coeffs = list(f.numerator.coeffs())
+    coeffs[len(coeffs) // 2] += 1
+    forms[lab] = ClosedForm(lab, f.sin_power, fmpq_poly(coeffs))
+    assert not ip.residual_at_point(n, forms, pts.tu[0], pts.tv[0]).is_zero()
 
 
 @pytest.mark.parametrize("n", [1, 3, 5])

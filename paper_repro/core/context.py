@@ -35,7 +35,7 @@ from fractions import Fraction
 
 import mpmath
 import numpy as np
-from flint import arb, arb_mat, fmpq, fmpq_mat, nmod_mat
+from flint import arb, arb_mat, fmpq, fmpq_mat, fmpz_mat, nmod_mat
 from flint import ctx as flint_ctx
 
 from paper_repro.core.ordered import ordered_matmul
@@ -602,9 +602,10 @@ def to_fmpq_mat(a: np.ndarray) -> fmpq_mat:
 def to_nmod_mat(a: np.ndarray, p: int) -> nmod_mat:
     """2-D integer array (entries in [0, p)) to a flint ``nmod_mat``."""
     a = np.asarray(a)
-    flat = a.reshape(-1)
-    ints = flat.tolist() if flat.dtype.kind in "iu" else [int(x) for x in flat]  # tolist: Python ints, fast
-    return nmod_mat(a.shape[0], a.shape[1], ints, p)
+    if a.size == 0:
+        return nmod_mat(a.shape[0], a.shape[1], [], p)
+    rows = a.tolist() if a.dtype.kind in "iu" else [[int(x) for x in row] for row in a]  # tolist: Python ints
+    return nmod_mat(fmpz_mat(rows), p)  # python-flint fills an fmpz_mat faster than an nmod_mat from a list
 
 
 # Backwards-compatible names (the first round called contexts "arithmetics").

@@ -20,7 +20,8 @@ depend on alpha and has real dimension 3n^2 + 3n + 1 = delta_n.
    so outside a finite set E_2 it has full column rank.
 3. *The identity at the points, for every alpha.*  At each of the N points the residual
    ``sum_o x_o(alpha) F_o - 1``, multiplied by ``s^K (1 + t^2)^{d + K + R}``, is a polynomial in t with
-   rational coefficients; it is computed exactly and is the zero polynomial.
+   rational coefficients; it is computed exactly and is the zero polynomial (:func:`residual_at_point`: the
+   sum grouped by the exponents of sin(w/2), cos(w/2) and evaluated by Horner's rule in them).
 4. For alpha outside E_1 and E_2: ``1 = sum_o y_o F_o`` for some y (step 1, and the symmetry of 1), and
    A(t)(x - y) = 0 by step 3, so x = y and ``sum_o x_o F_o = 1`` on the whole plane.  Both sides are
    continuous in alpha, so the identity holds for every alpha in (0, pi): the candidates form a partition
@@ -42,7 +43,7 @@ import sys
 from dataclasses import dataclass
 from math import gcd
 
-from flint import fmpq, fmpz_poly
+from flint import fmpq, fmpz_mat, fmpz_poly
 
 from paper_repro.core.basis import evaluate
 from paper_repro.core.context import ModpContext
@@ -99,23 +100,24 @@ def _powers(p, kmax: int) -> list:
 
 
 def _scaled_candidates(n: int, forms: dict, d: int, big_k: int, scale: int) -> list[fmpz_poly]:
-    """``scale * P_o(c) s^{K - k_o} (1 + t^2)^{d + K}``: integer polynomials in t, in orbit order."""
+    """``scale * P_o(c) s^{K - k_o} (1 + t^2)^{d + K}``: integer polynomials in t, in orbit order.
+
+    ``(1 + t^2)^d P(c) = sum_i a_i (1 - t^2)^i (1 + t^2)^{d - i}``: one integer matrix product for all orbits.
+    """
     one_minus = _powers(fmpz_poly([1, 0, -1]), d)
     omega = _powers(_OMEGA, d + big_k)
-    two_t = _powers(fmpz_poly([0, 2]), big_k)
-    out = []
-    for rep, _ in orbits(n):
-        f = forms[rep.coefficient]
-        hat = fmpz_poly([0])
-        for i, a in enumerate(f.numerator.coeffs()):
-            if a != 0:
-                hat += one_minus[i] * omega[d - i] * int(a * scale)
-        out.append(hat * two_t[big_k - f.sin_power] * omega[f.sin_power])
-    return out
+    basis = [one_minus[i] * omega[d - i] for i in range(d + 1)]
+    reps = [forms[rep.coefficient] for rep, _ in orbits(n)]
+    coef = fmpz_mat([[int(a * scale) for a in f.numerator.coeffs()] + [0] * (d + 1 - len(f.numerator.coeffs()))
+                     for f in reps])
+    hats = coef * fmpz_mat([[int(x) for x in h.coeffs()] + [0] * (2 * d + 1 - len(h.coeffs())) for h in basis])
+    factor = {k: fmpz_poly([0, 2]) ** (big_k - k) * omega[k] for k in {f.sin_power for f in reps}}
+    return [fmpz_poly(row) * factor[f.sin_power] for row, f in zip(hats.table(), reps)]
 
 
 def prepare(n: int, forms: dict) -> dict:
-    """What every point shares: exponents, orbits, the cleared candidates and right-hand side."""
+    """What every point shares: exponents, orbits, the cleared candidates and right-hand side, and the candidates
+    times every power of 1 + t^2 that :func:`residual_at_point` needs."""
     exps = exponent_matrix(n)
     orbit_of = [0] * len(exps)
     for o, (_, members) in enumerate(orbits(n)):
@@ -133,9 +135,27 @@ def prepare(n: int, forms: dict) -> dict:
     by_orbit: list[list[tuple[int, ...]]] = [[] for _ in orbits(n)]
     for row, o in zip(exps, orbit_of):
         by_orbit[o].append(tuple(int(x) for x in row))
+    omega = _powers(_OMEGA, r_max)
+    scaled = _scaled_candidates(n, forms, d, big_k, scale)
+    # the terms grouped by the w exponents (a, b) = (e4, e5): [(orbit, members with these exponents)]
+    by_key: dict[tuple[int, int], dict[int, list[tuple[int, ...]]]] = {}
+    for o, members in enumerate(by_orbit):
+        for e in members:
+            by_key.setdefault((e[4], e[5]), {}).setdefault(o, []).append(e)
+    shifted: dict[tuple[int, int], fmpz_poly] = {}
+    for o in range(len(scaled)):
+        prev, poly = 0, scaled[o]
+        for c in sorted({r_max - e[4] - e[5] for e in by_orbit[o]}):
+            poly = shifted[o, c] = poly * omega[c - prev]
+            prev = c
+    b_max: dict[int, int] = {}
+    for a, b in by_key:
+        b_max[a] = max(b, b_max.get(a, b))
     out = {"by_orbit": by_orbit, "R": r_max, "P": p_max, "Q": q_max, "kmax": int(exps.max()),
-            "omega": _powers(_OMEGA, r_max), "scaled": _scaled_candidates(n, forms, d, big_k, scale),
-            "rhs": fmpz_poly([0, 2]) ** big_k * _OMEGA ** (d + r_max) * scale, "d": d, "K": big_k}
+           "omega": omega, "scaled": scaled, "by_key": {k: list(v.items()) for k, v in by_key.items()},
+           "shifted": shifted, "a_max": max(a for a, _ in by_key),
+           "b_max": b_max,
+           "rhs": fmpz_poly([0, 2]) ** big_k * _OMEGA ** (d + r_max) * scale, "d": d, "K": big_k}
     return out
 
 
@@ -145,7 +165,21 @@ def _split(x: fmpq) -> tuple[int, int]:
 
 def residual_at_point(n: int, forms: dict, tu: fmpq, tv: fmpq, *, _cache: dict | None = None) -> fmpz_poly:
     """Step 3 at one point: ``s^K (1+t^2)^{d+K+R} (sum_o x_o F_o - 1)``, times a positive integer, as an
-    integer polynomial in t = tan(alpha/4) (zero exactly when the identity holds at the point)."""
+    integer polynomial in t = tan(alpha/4) (zero exactly when the identity holds at the point).
+
+    With ``sigma``, ``kappa`` the cleared sin(w/2), cos(w/2) (quadratics in t) and ``S_o`` the cleared
+    candidates, the polynomial is ``sum_{a, b} sigma^a kappa^b Z_ab - rhs`` with
+    ``Z_ab = sum_o G_{o,ab} (1+t^2)^{R-a-b} S_o``, where the integer ``G_{o,ab}`` sums the point factors of
+    the members of orbit o whose w exponents are (a, b).  The products ``(1+t^2)^c S_o`` do not depend on the
+    point (:func:`prepare`); the double sum is evaluated by Horner's rule in sigma (outer) and kappa (inner),
+    so a point costs one integer times a polynomial per (orbit, a, b) and one multiplication by a quadratic per
+    (a, b) -- instead of a product of two long polynomials per orbit.  Same polynomial, exactly.
+
+    >>> from paper_repro.theory.modular import recover_modular
+    >>> forms = recover_modular(2)
+    >>> residual_at_point(2, forms, fmpq(1, 5), fmpq(3, 7)).is_zero()
+    True
+    """
     cache = _cache if _cache is not None else prepare(n, forms)
     (a, qa), (b, qb) = _split(fmpq(tu)), _split(fmpq(tv))
     du, dv = a * a + qa * qa, b * b + qb * qb  # sin(u/2) = su/du, cos(u/2) = cu/du, same for v
@@ -153,27 +187,31 @@ def residual_at_point(n: int, forms: dict, tu: fmpq, tv: fmpq, *, _cache: dict |
     sab, cab = su * cv + cu * sv, cu * cv - su * sv  # (du dv) sin((u+v)/2), (du dv) cos((u+v)/2)
     # w/2 = alpha/2 - (u+v)/2:  sin(w/2) = sigma / (du dv (1+t^2)), cos(w/2) = kappa / (du dv (1+t^2))
     r_max, p_max, q_max = cache["R"], cache["P"], cache["Q"]
-    sig = _powers(fmpz_poly([-sab, 2 * cab, sab]), r_max)
-    kap = _powers(fmpz_poly([cab, 2 * sab, -cab]), r_max)
-    om = cache["omega"]
+    sig = fmpz_poly([-sab, 2 * cab, sab])
+    kap = fmpz_poly([cab, 2 * sab, -cab])
     kmax = cache["kmax"]
     pw = [_powers(x, kmax) for x in (su, cu, sv, cv)]
     pdu, pdv = _powers(du, p_max), _powers(dv, q_max)
-    total = -(cache["rhs"] * pdu[p_max] * pdv[q_max])
-    wcache: dict[tuple[int, int], fmpz_poly] = {}
-    for o, members in enumerate(cache["by_orbit"]):
-        acc = fmpz_poly([0])
-        for e in members:
-            r = e[4] + e[5]
-            key = (e[4], e[5])
-            w = wcache.get(key)
-            if w is None:
-                w = wcache[key] = sig[e[4]] * kap[e[5]] * om[r_max - r]
-            g = (pw[0][e[0]] * pw[1][e[1]] * pw[2][e[2]] * pw[3][e[3]]
-                 * pdu[p_max - e[0] - e[1] - r] * pdv[q_max - e[2] - e[3] - r])
-            acc += w * g
-        total += cache["scaled"][o] * acc
-    return total
+    shifted = cache["shifted"]
+    by_key = cache["by_key"]
+    total = fmpz_poly([0])
+    for ka in range(cache["a_max"], -1, -1):
+        inner = fmpz_poly([0])
+        for kb in range(cache["b_max"].get(ka, -1), -1, -1):
+            inner *= kap
+            group = by_key.get((ka, kb))
+            if group is None:
+                continue
+            r = ka + kb
+            c = r_max - r
+            for o, members in group:
+                g = 0
+                for e in members:
+                    g += (pw[0][e[0]] * pw[1][e[1]] * pw[2][e[2]] * pw[3][e[3]]
+                          * pdu[p_max - e[0] - e[1] - r] * pdv[q_max - e[2] - e[3] - r])
+                inner += shifted[o, c] * g
+        total = total * sig + inner
+    return total - cache["rhs"] * (pdu[p_max] * pdv[q_max])
 
 
 #: Proof points beyond the number of orbits (the unisolvence certificate needs only that many; a margin).

@@ -22,9 +22,9 @@ import sys
 from functools import cache
 
 import numpy as np
-from flint import fmpq, fmpq_poly, fmpz, nmod_mat
+from flint import fmpq, fmpq_poly, fmpz
 
-from paper_repro.core.context import ModpContext, power_table
+from paper_repro.core.context import ModpContext, power_table, to_nmod_mat
 from paper_repro.core.domain import rational_alpha
 from paper_repro.core.labels import exponent_matrix
 from paper_repro.core.normalization import _orbit_columns, _plane_points, fixed_points, orbits
@@ -53,8 +53,7 @@ def shape_parameters(count: int):
 
 def _nmod_solve(mat: np.ndarray, rhs: np.ndarray, p: int) -> np.ndarray:
     """``mat^-1 rhs`` over F_p (``ZeroDivisionError`` if ``mat`` is singular)."""
-    a = nmod_mat(mat.shape[0], mat.shape[1], mat.reshape(-1).tolist(), p)
-    b = nmod_mat(rhs.shape[0], rhs.shape[1], rhs.reshape(-1).tolist(), p)
+    a, b = to_nmod_mat(mat, p), to_nmod_mat(rhs, p)
     x = a.solve(b)
     return np.array([int(v) for v in x.entries()], dtype=np.int64).reshape(x.nrows(), x.ncols())
 
@@ -78,22 +77,39 @@ class ReducedSystemModp:
                           for col in self.points.quarter_values())
         self.quarter = (su, cu, sv, cv)
         exps = exponent_matrix(n)
-        perm, self.starts = _orbit_columns(n)
-        self.exps = exps[perm]
+        perm, starts = _orbit_columns(n)
+        exps = exps[perm]
         kmax = int(exps.max())
         g = np.ones((m, len(perm)), dtype=np.int64)
         for slot, x in enumerate(self.quarter):
             table = power_table(x, kmax, self.ctx)
-            g = g * table[self.exps[:, slot]].T % p
-        self.g = g
+            g = g * table[exps[:, slot]].T % p
+        # columns of one orbit with the same w exponents (e4, e5) share the alpha-dependent factor: sum them once
+        ends = list(starts[1:]) + [len(perm)]
+        keys = sorted({(int(a), int(b)) for a, b in exps[:, 4:6]})
+        key_index = {k: i for i, k in enumerate(keys)}
+        cols, key_of, new_starts = [], [], []
+        for lo, hi in zip(starts, ends):
+            new_starts.append(len(cols))
+            groups: dict[tuple[int, int], list[int]] = {}
+            for c in range(lo, hi):
+                groups.setdefault((int(exps[c, 4]), int(exps[c, 5])), []).append(c)
+            for k, members in groups.items():
+                cols.append(g[:, members].sum(axis=1) % p)
+                key_of.append(key_index[k])
+        self.g = np.stack(cols, axis=1)
+        self.key_of = np.array(key_of)
+        self.key_exps = np.array(keys, dtype=np.int64)
+        self.starts = np.array(new_starts)
         self.kmax = kmax
 
     def matrix(self, alpha) -> np.ndarray:
         ctx, p = self.ctx, self.p
         sa, ca = ctx.alpha_half(alpha)
         sw, cw = ctx.w_half(ctx, sa, ca, *self.quarter)
-        full = self.g * power_table(sw, self.kmax, ctx)[self.exps[:, 4]].T % p
-        full = full * power_table(cw, self.kmax, ctx)[self.exps[:, 5]].T % p
+        w = (power_table(sw, self.kmax, ctx)[self.key_exps[:, 0]]
+             * power_table(cw, self.kmax, ctx)[self.key_exps[:, 1]] % p)
+        full = self.g * w[self.key_of].T % p
         return np.add.reduceat(full, self.starts, axis=1) % p
 
     def solve(self, alpha) -> np.ndarray:
@@ -115,7 +131,9 @@ def values_modp(n: int, p: int, count: int) -> tuple[np.ndarray, list]:
         if k > 10 * count + 50:
             raise ArithmeticError(f"recovery n={n}: too many shape parameters singular modulo {p}")
         for seed in range(4):
-            system = systems.setdefault(seed, ReducedSystemModp(n, p, seed))
+            system = systems.get(seed)
+            if system is None:  # built once per point set (not as a setdefault argument, built every call)
+                system = systems[seed] = ReducedSystemModp(n, p, seed)
             try:
                 rows.append(system.solve(alpha))
             except ZeroDivisionError:
