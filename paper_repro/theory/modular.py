@@ -24,7 +24,7 @@ from functools import cache
 import numpy as np
 from flint import fmpq, fmpq_poly, fmpz, nmod_mat
 
-from paper_repro.core.context import ModpContext, power_table
+from paper_repro.core.context import ModpContext, power_table, to_nmod_mat
 from paper_repro.core.domain import rational_alpha
 from paper_repro.core.labels import exponent_matrix
 from paper_repro.core.normalization import _orbit_columns, _plane_points, fixed_points, orbits
@@ -148,11 +148,17 @@ def numerators_modp(n: int, p: int, degree: int, verify: int) -> np.ndarray | No
 
 
 def _matmul_mod(a: np.ndarray, b: np.ndarray, p: int) -> np.ndarray:
-    """``a @ b mod p`` without int64 overflow (entries < p < 2^31): column by column, reduced each step."""
-    out = np.zeros((a.shape[0], b.shape[1]), dtype=np.int64)
-    for k in range(a.shape[1]):
-        out = (out + a[:, k: k + 1] * b[k: k + 1, :]) % p
-    return out
+    """``a @ b mod p`` (entries in [0, p)) as an int64 array: flint's ``nmod_mat`` product (exact; p < 2^63).
+
+    >>> _matmul_mod(np.array([[1, 2], [3, 4]]), np.array([[5], [-6]]), 7).tolist()
+    [[0], [5]]
+    """
+    a, b = np.asarray(a) % p, np.asarray(b) % p
+    r, c = a.shape[0], b.shape[1]
+    if r == 0 or c == 0 or a.shape[1] == 0:
+        return np.zeros((r, c), dtype=np.int64)
+    prod = to_nmod_mat(a, p) * to_nmod_mat(b, p)
+    return np.array([int(x) for x in prod.entries()], dtype=np.int64).reshape(r, c)
 
 
 def rational_reconstruction(a: int, m: int) -> fmpq | None:
