@@ -21,6 +21,7 @@ from paper_repro.core.normalization import evaluate_normalized
 from paper_repro.theory.rank import modp_rank, mp_singular_values, numeric_rank
 from paper_repro.util.measured import bound, bound_holds
 from paper_repro.util.registry import ALPHA_RANGES, Outcome, claim
+from paper_repro.util.tasks import Task
 
 
 def span_residual(n: int, a_text: str, dps: int, seed: int) -> mpmath.mpf:
@@ -49,6 +50,25 @@ def span_residual(n: int, a_text: str, dps: int, seed: int) -> mpmath.mpf:
         ctx.prec = old
 
 
+def exact_ranks(n: int, t: str, seed: int) -> list[int]:
+    """Task: ranks modulo a prime of T_{2n}, V_n and [T | V] at delta_n + 5 rational points, tan(alpha/4) = t."""
+    ar = ModpContext()
+    alpha = rational_alpha(fmpq(*map(int, t.split("/"))))
+    pts = sample_rational_points(alpha, delta(n) + 5, seed=seed)
+    tm, vm = evaluate(n, alpha, pts, ar), evaluate_v(n, alpha, pts, ar)
+    return [modp_rank(tm, ar.p), modp_rank(vm, ar.p), modp_rank(np.hstack([tm, vm]), ar.p)]
+
+
+def singular_values(n: int, a_text: str, dps: int, seed: int) -> list:
+    """Task: the singular values of [T-bar | V] at delta_n + 5 points of Omega^alpha, ``dps`` digits (mpmath)."""
+    with mpmath.workdps(dps):
+        alpha = alpha_mp(a_text)
+        pts = mp_domain_points(alpha, delta(n) + 5, seed)
+        both = np.hstack([evaluate_normalized(n, alpha, pts, "mp", dps=dps),
+                          evaluate_v(n, alpha, pts, "mp", dps=dps)])
+    return list(mp_singular_values(both, dps))
+
+
 @claim("coincidence", paper_ref=["sec:coincidence", "dimension", "iterative_construction_of_trivariate_extension",
                                  "truncated_Fourier_vector_space",
                                  "constrained_trivariate_extension_of_truncated_Fourier_series",
@@ -58,37 +78,34 @@ def span_residual(n: int, a_text: str, dps: int, seed: int) -> mpmath.mpf:
                  "numerically at alpha in {alphas}). Independence of T and of V at those alpha is proven; "
                  "the equality of spans is evidence.",
        kind="exact-evidence", ns=list(range(1, 9)), rational_ts=["1/3", "2/5"], mp_ns=[1, 2, 3, 4],
-       ball_ns=[5, 6, 7, 8], alphas=["pi/4", "3pi/4"], dps=50, seed=9)
-def run(ns, rational_ts, mp_ns, alphas, dps, seed, ball_ns) -> Outcome:
-    ar = ModpContext()
-    exact = {}
-    for t in rational_ts:
-        alpha = rational_alpha(fmpq(*map(int, t.split("/"))))
-        for n in ns:
-            pts = sample_rational_points(alpha, delta(n) + 5, seed=seed)
-            tm, vm = evaluate(n, alpha, pts, ar), evaluate_v(n, alpha, pts, ar)
-            exact[f"{t}/n={n}"] = [modp_rank(tm, ar.p), modp_rank(vm, ar.p), modp_rank(np.hstack([tm, vm]), ar.p)]
+       ball_ns=[5, 6, 7, 8], alphas=["pi/4", "3pi/4"], dps=50, seed=9, split=True)
+def run(ns, rational_ts, mp_ns, alphas, dps, seed, ball_ns):
+    # tasks: the exact ranks per (t, n), the 50-digit singular values per (alpha, n), the ball residual per
+    # (alpha, n) (largest n first); merged below in the order of the loops
+    exact_jobs = [(t, n) for t in rational_ts for n in ns]
+    numeric_jobs = [(a_text, n) for a_text in alphas for n in mp_ns]
+    ball_jobs = [(a_text, n) for a_text in alphas for n in ball_ns]
+    tasks = ([Task(span_residual, (n, a_text, dps, seed)) for a_text, n in sorted(ball_jobs, key=lambda j: -j[1])]
+             + [Task(singular_values, (n, a_text, dps, seed)) for a_text, n in sorted(numeric_jobs,
+                                                                                     key=lambda j: -j[1])]
+             + [Task(exact_ranks, (n, t, seed)) for t, n in exact_jobs])
+    got = yield tasks
+    res = {(t.func.__name__, t.args[0], t.args[1]): r for t, r in zip(tasks, got)}
+    exact = {f"{t}/n={n}": res[("exact_ranks", n, t)] for t, n in exact_jobs}
     numeric, raw = {}, {}
-    for a_text in alphas:
-        for n in mp_ns:
-            with mpmath.workdps(dps):
-                alpha = alpha_mp(a_text)
-                pts = mp_domain_points(alpha, delta(n) + 5, seed)
-                both = np.hstack([evaluate_normalized(n, alpha, pts, "mp", dps=dps),
-                                  evaluate_v(n, alpha, pts, "mp", dps=dps)])
-            sv = mp_singular_values(both, dps)
-            numeric[f"{a_text}/n={n}"] = {"rank": numeric_rank(sv, dps),
-                                          "sigma_delta": mpmath.nstr(sv[delta(n) - 1], 4),
-                                          "sigma_delta_plus_1": bound(sv[delta(n)], 10.0 ** -(dps - 10))}
-            raw[f"{a_text}/n={n}"] = mpmath.nstr(sv[delta(n)], 5)
+    for a_text, n in numeric_jobs:
+        sv = res[("singular_values", n, a_text)]
+        numeric[f"{a_text}/n={n}"] = {"rank": numeric_rank(sv, dps),
+                                      "sigma_delta": mpmath.nstr(sv[delta(n) - 1], 4),
+                                      "sigma_delta_plus_1": bound(sv[delta(n)], 10.0 ** -(dps - 10))}
+        raw[f"{a_text}/n={n}"] = mpmath.nstr(sv[delta(n)], 5)
     # larger n: V in span T-bar, by a ball-arithmetic solve T-bar M = V at delta_n points and the
     # relative residual at 5 further points (rank [T | V] = rank T = delta_n up to rounding)
     ball = {}
-    for a_text in alphas:
-        for n in ball_ns:
-            residual = span_residual(n, a_text, dps, seed)
-            raw[f"residual {a_text}/n={n}"] = mpmath.nstr(residual, 5)
-            ball[f"{a_text}/n={n}"] = bound(residual, 10.0 ** -(dps - 20))
+    for a_text, n in ball_jobs:
+        residual = res[("span_residual", n, a_text)]
+        raw[f"residual {a_text}/n={n}"] = mpmath.nstr(residual, 5)
+        ball[f"{a_text}/n={n}"] = bound(residual, 10.0 ** -(dps - 20))
     ok_ball = all(bound_holds(v) for v in ball.values())
     ok_exact = all(v == [delta(int(k.split("n=")[1]))] * 3 for k, v in exact.items())
     ok_num = all(v["rank"] == delta(int(k.split("n=")[1])) for k, v in numeric.items()) and ok_ball

