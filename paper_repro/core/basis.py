@@ -27,14 +27,32 @@ def monomials(exps: np.ndarray, trig: Sequence[np.ndarray], ctx: Context) -> np.
     """
     exps = np.asarray(exps, dtype=np.int64)
     npts = len(trig[0])
-    out = ctx.ones((npts, exps.shape[0]))
     kmax = int(exps.max()) if exps.size else 0
+    if ctx.exact and exps.shape[0] > 1:
+        return _monomials_by_pairs(exps, trig, kmax, ctx)
+    out = ctx.ones((npts, exps.shape[0]))
     for slot in range(6):
         if not exps[:, slot].any():
             continue
         table = power_table(trig[slot], kmax, ctx)  # (kmax+1, P)
         out = ctx.mul(out, table[exps[:, slot]].T)
     return out
+
+
+def _monomials_by_pairs(exps: np.ndarray, trig: Sequence[np.ndarray], kmax: int, ctx: Context) -> np.ndarray:
+    """:func:`monomials` in an exact context: the products ``sin^a cos^b`` of one variable are formed once per
+    distinct ``(a, b)`` (526 pairs for the 2791 functions of n = 30), so the ``(P, F)`` array takes three
+    multiplications instead of six.  In exact arithmetic the order of the factors does not change a value."""
+    out = None
+    for s0 in (0, 2, 4):
+        sub = exps[:, s0:s0 + 2]
+        if not sub.any():
+            continue
+        keys, inv = np.unique(sub, axis=0, return_inverse=True)
+        first, second = power_table(trig[s0], kmax, ctx), power_table(trig[s0 + 1], kmax, ctx)
+        cols = ctx.mul(first[keys[:, 0]], second[keys[:, 1]])[inv.reshape(-1)].T  # (P, F)
+        out = cols if out is None else ctx.mul(out, cols)
+    return ctx.ones((len(trig[0]), exps.shape[0])) if out is None else out
 
 
 def evaluate(n: int, alpha, points, arith: str | Context = "float", *, dps: int = 50,
