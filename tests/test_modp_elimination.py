@@ -95,7 +95,8 @@ def test_split_claim_does_not_depend_on_the_order_of_its_tasks():
     params = dict(ns=[1, 2], alphas=["pi/3", "2pi/3"], dps=30, svd_n_max=1, exact_ns=[1, 2, 3],
                   rational_ts=["1/3", "1/7"], seed=5)
     inline = drive_inline(CLAIMS["linear_independence"].body(**params))
-    backwards = drive({"li": CLAIMS["linear_independence"].body(**params)}, lambda batch: [t() for t in reversed(batch)][::-1])["li"]
+    body = CLAIMS["linear_independence"].body(**params)
+    backwards = drive({"li": body}, lambda batch: [t() for t in reversed(batch)][::-1])["li"]
     assert inline == backwards and inline.passed
     assert [(r["n"], r["alpha"]) for r in inline.measured["numeric"]] == [(1, "pi/3"), (1, "2pi/3"), (2, "pi/3"),
                                                                           (2, "2pi/3")]
