@@ -42,7 +42,23 @@ MAX_INNER = 2**18
 #: Largest value any partial sum of a float64 product can reach: ``MAX_INNER (2^15 - 1 + 2^16 - 1)^2``, below 2^53.
 EXACT_BOUND = MAX_INNER * (2**15 - 1 + 2**16 - 1) ** 2
 #: Column blocks of at most this width are factored (and row blocks solved) column by column in int64.
-BASE = 8
+BASE = 16
+
+
+def _products(left: np.ndarray, right: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """``(L1 @ U1, L1 @ U0 + L0 @ U1, L0 @ U0)`` as exact int64 arrays (module docstring: three float64 products)."""
+    if left.shape[1] > MAX_INNER:
+        raise ValueError(f"inner dimension {left.shape[1]} > {MAX_INNER}: the float64 products would not be exact")
+    l1, l0 = (left >> 16).astype(np.float64), (left & 0xFFFF).astype(np.float64)
+    r1, r0 = (right >> 16).astype(np.float64), (right & 0xFFFF).astype(np.float64)
+    high = (l1 @ r1).astype(np.int64)
+    low = (l0 @ r0).astype(np.int64)
+    l1 += l0
+    r1 += r0
+    cross = (l1 @ r1).astype(np.int64)
+    cross -= high
+    cross -= low  # Karatsuba: L1 U0 + L0 U1
+    return high, cross, low
 
 
 def mulmod(left: np.ndarray, right: np.ndarray, p: int) -> np.ndarray:
@@ -54,16 +70,21 @@ def mulmod(left: np.ndarray, right: np.ndarray, p: int) -> np.ndarray:
     >>> bool((mulmod(a, a, 2**31 - 1) == (a.astype(object).dot(a.astype(object)) % (2**31 - 1))).all())
     True
     """
-    if left.shape[1] > MAX_INNER:
-        raise ValueError(f"inner dimension {left.shape[1]} > {MAX_INNER}: the float64 products would not be exact")
-    l1, l0 = (left >> 16).astype(np.float64), (left & 0xFFFF).astype(np.float64)
-    r1, r0 = (right >> 16).astype(np.float64), (right & 0xFFFF).astype(np.float64)
-    high = (l1 @ r1).astype(np.int64)
-    low = (l0 @ r0).astype(np.int64)
-    l1 += l0
-    r1 += r0
-    cross = (l1 @ r1).astype(np.int64) - high - low  # Karatsuba: L1 U0 + L0 U1
+    high, cross, low = _products(left, right)
     return ((high % p) * (2**32 % p) + (cross % p) * (2**16 % p) + low) % p  # < 2^62 + 2^47 + 2^52 < 2^63
+
+
+def _subtract_product(target: np.ndarray, left: np.ndarray, right: np.ndarray, p: int) -> None:
+    """``target = (target - left @ right) mod p`` in place (``target`` a view of the matrix, entries in [0, p))."""
+    high, cross, low = _products(left, right)
+    high %= p
+    high *= 2**32 % p
+    cross %= p
+    cross *= 2**16 % p
+    high += cross
+    high += low  # (L @ U) mod p + a multiple of p, below 2^62 + 2^47 + 2^52 < 2^63
+    np.subtract(target, high, out=high)  # > -2^63
+    np.remainder(high, p, out=target)
 
 
 def modp_rank_blas(a: np.ndarray, p: int) -> int:
@@ -89,24 +110,33 @@ def _factor(a: np.ndarray, k0: int, k1: int, p: int) -> bool:
     """LU with row pivoting of the columns ``k0:k1`` of ``a`` (rows ``k0:``; row exchanges over the full width),
     in place; false as soon as a column has no non-zero pivot."""
     if k1 - k0 <= BASE:
-        for j in range(k0, k1):
-            nz = np.flatnonzero(a[j:, j])
-            if nz.size == 0:
-                return False
-            piv = j + int(nz[0])
-            if piv != j:
-                a[[j, piv]] = a[[piv, j]]
-            col = a[j + 1:, j] * pow(int(a[j, j]), -1, p) % p
-            a[j + 1:, j] = col
-            if j + 1 < k1:
-                a[j + 1:, j + 1:k1] = (a[j + 1:, j + 1:k1] - col[:, None] * a[j, j + 1:k1] % p) % p
-        return True
+        return _factor_panel(a, k0, k1, p)
     mid = k0 + (k1 - k0) // 2
     if not _factor(a, k0, mid, p):
         return False
     _solve_lower(a, k0, mid, mid, k1, p)
-    a[mid:, mid:k1] = (a[mid:, mid:k1] - mulmod(a[mid:, k0:mid], a[k0:mid, mid:k1], p)) % p
+    _subtract_product(a[mid:, mid:k1], a[mid:, k0:mid], a[k0:mid, mid:k1], p)
     return _factor(a, mid, k1, p)
+
+
+def _factor_panel(a: np.ndarray, k0: int, k1: int, p: int) -> bool:
+    """:func:`_factor` of a narrow panel, column by column, on a column-major copy (its columns contiguous); the row
+    exchanges are applied to the full rows of ``a`` as they are found."""
+    panel = np.asfortranarray(a[k0:, k0:k1])
+    for j in range(k1 - k0):
+        nz = np.flatnonzero(panel[j:, j])
+        if nz.size == 0:
+            return False
+        piv = j + int(nz[0])
+        if piv != j:
+            panel[[j, piv]] = panel[[piv, j]]
+            a[[k0 + j, k0 + piv]] = a[[k0 + piv, k0 + j]]
+        col = panel[j + 1:, j] * pow(int(panel[j, j]), -1, p) % p
+        panel[j + 1:, j] = col
+        for c in range(j + 1, k1 - k0):
+            panel[j + 1:, c] = (panel[j + 1:, c] - col * panel[j, c] % p) % p
+    a[k0:, k0:k1] = panel
+    return True
 
 
 def _solve_lower(a: np.ndarray, r0: int, r1: int, c0: int, c1: int, p: int) -> None:
@@ -117,5 +147,5 @@ def _solve_lower(a: np.ndarray, r0: int, r1: int, c0: int, c1: int, p: int) -> N
         return
     mid = r0 + (r1 - r0) // 2
     _solve_lower(a, r0, mid, c0, c1, p)
-    a[mid:r1, c0:c1] = (a[mid:r1, c0:c1] - mulmod(a[mid:r1, r0:mid], a[r0:mid, c0:c1], p)) % p
+    _subtract_product(a[mid:r1, c0:c1], a[mid:r1, r0:mid], a[r0:mid, c0:c1], p)
     _solve_lower(a, mid, r1, c0, c1, p)
