@@ -50,6 +50,21 @@ def test_rank_agrees_with_flint(size, deficit):
     assert me.modp_rank_blas(a, P) == flint_rank(a) == rank
 
 
+@pytest.mark.parametrize("size,zero", [(60, 20), (100, 50), (150, 40)])
+def test_rank_of_deficient_matrices_that_need_row_exchanges(size, zero):
+    """A rank-deficient matrix whose leading block is zero: the elimination exchanges rows in almost every column,
+    and a wrong exchange shows up as a wrong rank (a generic matrix stays full rank under most bugs)."""
+    rng = np.random.default_rng(size + zero)
+    rank = size - 7
+    x, y = rng.integers(0, P, (size, rank)), rng.integers(0, P, (rank, size))
+    x[:zero, rank // 2:] = 0  # the first rows of x and the first columns of y live in complementary coordinates:
+    y[:rank // 2, :zero] = 0  # a[:zero, :zero] = 0, and the rank is at most size - 7
+    a = (x.astype(object).dot(y.astype(object)) % P).astype(np.int64)
+    assert not a[:zero, :zero].any()
+    a[rng.permutation(size)] = a.copy()
+    assert me.modp_rank_blas(a, P) == flint_rank(a) < size
+
+
 def test_rank_with_zero_pivots_and_small_prime():
     a = np.zeros((40, 40), dtype=np.int64)
     a[np.arange(40), (np.arange(40) * 7) % 40] = 3  # a permutation: every pivot needs a row exchange
