@@ -41,8 +41,8 @@ from paper_repro.core.fast import single_threaded_blas
 MAX_INNER = 2**18
 #: Largest value any partial sum of a float64 product can reach: ``MAX_INNER (2^15 - 1 + 2^16 - 1)^2``, below 2^53.
 EXACT_BOUND = MAX_INNER * (2**15 - 1 + 2**16 - 1) ** 2
-#: Column blocks of at most this width are factored (and row blocks solved) column by column in int64.
-BASE = 16
+#: Column blocks of at most this width are factored column by column in int64 (row blocks: by their inverse).
+BASE = 32
 
 
 def _products(left: np.ndarray, right: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -141,9 +141,11 @@ def _factor_panel(a: np.ndarray, k0: int, k1: int, p: int) -> bool:
 
 def _solve_lower(a: np.ndarray, r0: int, r1: int, c0: int, c1: int, p: int) -> None:
     """``a[r0:r1, c0:c1] = L^-1 a[r0:r1, c0:c1]`` for the unit lower triangular ``L`` stored in ``a[r0:r1, r0:r1]``."""
-    if r1 - r0 <= BASE:
-        for j in range(r0, r1 - 1):
-            a[j + 1:r1, c0:c1] = (a[j + 1:r1, c0:c1] - a[j + 1:r1, j, None] * a[j, c0:c1] % p) % p
+    if r1 - r0 <= BASE:  # L^-1 by the row operations of the substitution applied to I (small), then one product
+        inv = np.eye(r1 - r0, dtype=np.int64)
+        for j in range(r1 - r0 - 1):
+            inv[j + 1:] = (inv[j + 1:] - a[r0 + j + 1:r1, r0 + j, None] * inv[j] % p) % p
+        a[r0:r1, c0:c1] = mulmod(inv, a[r0:r1, c0:c1], p)
         return
     mid = r0 + (r1 - r0) // 2
     _solve_lower(a, r0, mid, c0, c1, p)
