@@ -151,18 +151,21 @@ def test_progress_off_a_terminal_is_one_line_per_loop(capsys):
     assert err[1].startswith("claims: 3 of 3 done in "), err
 
 
-def test_linear_independence_shows_one_bar_for_the_claim(monkeypatch):
-    from paper_repro.claims import linear_independence as li
+def test_linear_independence_shows_one_bar_for_the_claim(monkeypatch, capsys):
+    """Its ranks (now tasks per (n, alpha) and per (t, n) of the sweep) run under the sweep's one bar, not one line
+    per order."""
+    from paper_repro.app import report
+    from paper_repro.util import cache
+    from paper_repro.util.registry import load_all
 
-    bars = []
-    monkeypatch.setattr(li, "progress", lambda items, desc: bars.append(desc) or items)
-    monkeypatch.setattr(li, "numeric_case", lambda n, a, *rest: {"rank": 1, "delta_n": 1})
-    monkeypatch.setattr(li, "modp_case", lambda n, t, seed, control=False: li.delta(n) - control)
-    monkeypatch.setattr(li, "numeric_rank", lambda *a: li.delta(3) - 1)
-    monkeypatch.setattr(li, "mp_singular_values", lambda *a: None)
-    monkeypatch.setattr(li, "collocation_mp", lambda *a, **k: None)
-    li.run(ns=[1, 2], alphas=["pi/2"], dps=30, svd_n_max=2, exact_ns=[1, 2, 3], rational_ts=["1/3", "1/7"], seed=5)
-    assert bars == ["linear_independence (ranks)"]
+    load_all()
+    monkeypatch.setenv(cache.NO_CACHE_ENV, "1")
+    monkeypatch.setenv("PAPER_REPRO_WORKERS", "1")
+    small = {"ns": [1, 2], "alphas": ["pi/2"], "dps": 30, "svd_n_max": 2, "exact_ns": [1, 2, 3],
+             "rational_ts": ["1/3", "1/7"]}
+    assert report.run_claims(["linear_independence"], {"linear_independence": small}, write=False)
+    bars = [line for line in capsys.readouterr().err.splitlines() if " done in " in line]
+    assert len(bars) == 1 and bars[0].startswith("tasks, round 1:: 10 of 10 done in "), bars
 
 
 def test_reproduce_ends_with_a_summary_line(tmp_path, monkeypatch, capsys):

@@ -84,9 +84,9 @@ def claims_markdown(results: list[ClaimResult]) -> str:
     return "\n".join(out)
 
 
-#: Rough cold seconds of the heavy claims on 2 cores (used to schedule before any timing was recorded).
-COST_HINT = {"order_elevation": 70, "linear_independence": 64, "coincidence": 57, "equivalence_classes": 23,
-             "nonnegativity_extended": 21, "float_accuracy": 19, "dupin_cyclide": 8, "boundary": 6}
+#: Rough cold seconds of the heavy whole claims on 2 cores (used to schedule before any timing was recorded; split
+#: claims are scheduled task by task by the cost model).
+COST_HINT = {"order_elevation": 70, "coincidence": 57, "equivalence_classes": 23, "dupin_cyclide": 8, "boundary": 6}
 
 
 def _cost_estimate(cid: str, extended: bool) -> float:

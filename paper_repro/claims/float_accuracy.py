@@ -24,6 +24,7 @@ from paper_repro.core.normalization import evaluate_normalized
 from paper_repro.surfaces.patch import Patch
 from paper_repro.util.measured import bound, decade_bound, sig
 from paper_repro.util.registry import Outcome, claim
+from paper_repro.util.tasks import Task
 
 
 def alpha_grid(count: int) -> list[float]:
@@ -63,17 +64,23 @@ def errors(n: int, alpha: float, count: int, seed: int, dps: int) -> tuple[float
     return pou, rel
 
 
+def errors_at(n: int, alpha_count: int, count: int, seed: int, dps: int) -> list[tuple[float, float]]:
+    """Task: :func:`errors` of order n at every alpha of :func:`alpha_grid` (the k-th with seed ``seed + k``)."""
+    return [errors(n, alpha, count, seed + k, dps) for k, alpha in enumerate(alpha_grid(alpha_count))]
+
+
 @claim("float_accuracy", paper_ref=["normalized_united_system", "triangular_trig_surface"],
        statement="The float64 path is accurate: for n = {ns} and {alpha_count} values of alpha in [1e-3, pi - 1e-3] "
                  "(both ends included), the partition of unity holds to |sum - 1| <= {tolerance} and patch points "
                  "agree with the mp route ({dps} digits) to {tolerance} relative to the net.",
-       kind="numeric-evidence", ns=[1, 2, 3, 4, 5, 6], alpha_count=24, points=24, seed=31, dps=30, tolerance=1e-13)
-def run(ns, alpha_count, points, seed, dps, tolerance) -> Outcome:
+       kind="numeric-evidence", ns=[1, 2, 3, 4, 5, 6], alpha_count=24, points=24, seed=31, dps=30, tolerance=1e-13,
+       split=True)
+def run(ns, alpha_count, points, seed, dps, tolerance):
     grid = alpha_grid(alpha_count)
     rows, raw_rows = [], []
-    for n in ns:
-        for k, alpha in enumerate(grid):
-            pou, rel = errors(n, alpha, points, seed + k, dps)
+    per_n = yield [Task(errors_at, (n, alpha_count, points, seed, dps)) for n in ns]  # one task per n, in order
+    for n, errs in zip(ns, per_n):
+        for alpha, (pou, rel) in zip(grid, errs):
             raw_rows.append({"n": n, "alpha": alpha, "partition_of_unity": pou, "patch_relative": rel})
             rows.append({"n": n, "alpha": sig(alpha, 6), "partition_of_unity_below": decade_bound(pou),
                          "patch_relative_below": decade_bound(rel)})
