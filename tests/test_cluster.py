@@ -262,3 +262,18 @@ def test_extended_run_in_a_fresh_folder_draws_no_figure_and_says_so(tmp_path, ca
         assert len(json.loads((tmp_path / "figures" / "manifest.json").read_text())) == len(report.FIGURE_REGISTRY)
     finally:
         set_output_root(None)
+
+
+def test_an_extended_run_leaves_the_standard_line_table_alone(tmp_path):
+    """data/paper_lines.json quotes the statements of the checking claims, which name the run's ranges: an extended
+    run used to rewrite the standard table with its own ranges (a dirty tree after `make reproduce-extended`)."""
+    load_all()
+    set_output_root(tmp_path)
+    try:
+        report.run_claims(["every_line"], None, extended=True, write=True)
+        assert (tmp_path / "data" / "claims_extended.json").exists()
+        assert not (tmp_path / "data" / "paper_lines.json").exists()
+        report.run_claims(["every_line"], None, extended=False, write=True)
+        assert (tmp_path / "data" / "paper_lines.json").exists()
+    finally:
+        set_output_root(None)

@@ -153,6 +153,11 @@ def reproduce_summary(run: ClaimsRun, files: int, seconds: float) -> str:
             f"{files} files written, {_duration(seconds)}.")
 
 
+#: Data files only the standard run writes: ``paper_lines.json`` quotes, line by line, the statements of the claims
+#: that check each line, and those name the ranges of the run -- an extended run would rewrite the standard table
+#: with its own ranges (its every_line record is in ``claims_extended.json``).
+STANDARD_RUN_ONLY = frozenset({"paper_lines.json"})
+
 #: Seconds assumed for a whole claim with no recorded cost (most take seconds; the first run starts them early).
 WHOLE_CLAIM_DEFAULT = 30.0
 
@@ -331,6 +336,8 @@ def run_claims(only: list[str] | None, overrides: dict[str, dict[str, Any]] | No
         write_json(data_dir() / f"claims{suffix}.json", [r.as_dict() for r in results])
         write_text(data_dir() / f"claims{suffix}.md", claims_markdown(results))
         for relpath, obj in sorted(data_files.items()):
+            if extended and relpath in STANDARD_RUN_ONLY:
+                continue
             path = data_dir() / relpath
             if isinstance(obj, dict) and "__mesh__" in obj:
                 from paper_repro.surfaces.mesh import export_mesh
