@@ -189,6 +189,8 @@ class TaskRunner:
         from paper_repro.app.costs import task_n
 
         self.rounds += 1
+        if self.rounds > 1 and callable(getattr(self.executor, "fresh_workers", None)):
+            self.executor.fresh_workers()  # a cluster's workers restarted, as the process pool is new every round
         order = sorted(range(len(batch)), key=lambda k: -self.predict(batch[k]))
         t0 = time.perf_counter()
         out = sweep(timed, [batch[k] for k in order], executor=self.executor, initializer=load_all,
