@@ -217,7 +217,7 @@ def _main(argv: list[str] | None = None) -> int:
     pr = sub.add_parser("reproduce", help="claims, data, figures and gallery",
                         description="Every claim, data/, figures/ and the gallery; exit 1 if a claim fails.")
     pr.add_argument("--extended", action="store_true",
-                    help="use the extended parameter ranges (larger n; about 20 minutes on 2 cores)")
+                    help="use the extended parameter ranges (larger n; about 6 minutes cold on 2 cores)")
     pr.add_argument("--out", metavar="DIR", help=out_help)
     _cluster_options(pr)
     sub.add_parser("paper", help="the annotated paper paper/index.html",
