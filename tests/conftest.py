@@ -144,3 +144,31 @@ def _mark_bits(items) -> None:
     for item in items:
         if item.nodeid.startswith(BITS_TESTS):
             item.add_marker(pytest.mark.bits)
+
+
+def _sigint_state():
+    import signal
+    import threading
+
+    if threading.current_thread() is not threading.main_thread() or not hasattr(signal, "pthread_sigmask"):
+        return None
+    return signal.getsignal(signal.SIGINT), signal.SIGINT in signal.pthread_sigmask(signal.SIG_BLOCK, [])
+
+
+@pytest.fixture(autouse=True)
+def _sigint_left_as_found(request):
+    """Ctrl-C handling is process state: a test that leaves SIGINT ignored, handled or blocked would silently change
+    every later test of the Ctrl-C machinery.  The state is put back after every test, and a test that changed it is
+    named in a warning.  (The tests of that machinery set the handler they need themselves: a suite started in the
+    background inherits SIGINT ignored.)"""
+    import signal
+    import warnings
+
+    before = _sigint_state()
+    yield
+    after = _sigint_state()
+    if before is None or after == before:
+        return
+    signal.signal(signal.SIGINT, before[0])
+    signal.pthread_sigmask(signal.SIG_BLOCK if before[1] else signal.SIG_UNBLOCK, [signal.SIGINT])
+    warnings.warn(f"{request.node.nodeid} left SIGINT as {after} (was {before}); put back", stacklevel=1)

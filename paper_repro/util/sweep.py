@@ -95,6 +95,10 @@ def deferred_sigint() -> Iterator[None]:
     critical section: the body runs to its end, then ``KeyboardInterrupt`` is raised as usual).  Only the main
     thread receives Python signal handlers; elsewhere the body runs as it is.
 
+    With Ctrl-C live (as in a terminal; a process started in the background inherits SIGINT ignored, and then the
+    held interrupt is dropped, as it would have been):
+
+    >>> previous = signal.signal(signal.SIGINT, signal.default_int_handler)
     >>> steps = []
     >>> try:
     ...     with deferred_sigint():
@@ -104,6 +108,7 @@ def deferred_sigint() -> Iterator[None]:
     ...     steps.append("interrupted")
     >>> steps
     ['body ended', 'interrupted']
+    >>> _ = signal.signal(signal.SIGINT, previous)
     """
     import threading
 
