@@ -86,7 +86,7 @@ def claims_markdown(results: list[ClaimResult]) -> str:
 
 #: Rough cold seconds of the heavy whole claims on 2 cores (used to schedule before any timing was recorded; split
 #: claims are scheduled task by task by the cost model).
-COST_HINT = {"order_elevation": 70, "coincidence": 57, "equivalence_classes": 23, "dupin_cyclide": 8, "boundary": 6}
+COST_HINT = {"elevation_closed_forms": 12, "equivalence_classes": 23, "dupin_cyclide": 8, "boundary": 6}
 
 
 def _cost_estimate(cid: str, extended: bool) -> float:

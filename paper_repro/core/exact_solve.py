@@ -55,6 +55,25 @@ def _isqrt_half(m: int) -> int:
     return int(fmpz(m // 2).isqrt())
 
 
+def wang_pair(a: int, m: int, bound: int) -> tuple[int, int] | None:
+    """``(x, y)`` with ``x = a y (mod m)``, ``|x| <= bound`` and ``0 < |y| <= bound`` from the half extended Euclidean
+    algorithm of Wang's rational reconstruction, or ``None`` (no such pair is found).
+
+    >>> wang_pair(4, 7, 2)  # 4 = 1/2 modulo 7
+    (1, 2)
+    >>> wang_pair(3, 7, 1) is None
+    True
+    """
+    r0, r1, s0, s1 = m, a % m, 0, 1
+    while r1 > bound:
+        q = r0 // r1
+        r0, r1 = r1, r0 - q * r1
+        s0, s1 = s1, s0 - q * s1
+    if s1 == 0 or abs(s1) > bound:
+        return None
+    return r1, s1
+
+
 def _reconstruct_row(res: list[int], mod: int, bound: int) -> tuple[list[int], int] | None:
     """Numerators ``y`` and one denominator ``d`` with ``y_i = res_i d (mod mod)`` and |y_i|, d <= ``bound``
     (Wang's rational reconstruction, the common denominator widened entry by entry), or ``None``."""
@@ -68,14 +87,10 @@ def _reconstruct_row(res: list[int], mod: int, bound: int) -> tuple[list[int], i
         if -bound <= y <= bound:
             out.append(y)
             continue
-        r0, r1, s0, s1 = mod, y % mod, 0, 1
-        while r1 > bound:
-            q = r0 // r1
-            r0, r1 = r1, r0 - q * r1
-            s0, s1 = s1, s0 - q * s1
-        if s1 == 0 or abs(s1) > bound:
+        pair = wang_pair(y, mod, bound)
+        if pair is None:
             return None
-        g = abs(s1)
+        g = abs(pair[1])
         d *= g
         if d > bound:
             return None

@@ -26,6 +26,7 @@ from flint import fmpq, fmpq_poly, fmpz
 
 from paper_repro.core.context import ModpContext, power_table, to_nmod_mat
 from paper_repro.core.domain import rational_alpha
+from paper_repro.core.exact_solve import wang_pair
 from paper_repro.core.labels import exponent_matrix
 from paper_repro.core.normalization import _orbit_columns, _plane_points, fixed_points, orbits
 from paper_repro.theory.closed_form import ClosedForm
@@ -193,15 +194,10 @@ def _matmul_mod(a: np.ndarray, b: np.ndarray, p: int) -> np.ndarray:
 
 def rational_reconstruction(a: int, m: int) -> fmpq | None:
     """The fraction x/y with |x|, 0 < y <= sqrt(m/2) and x = a y (mod m), or ``None`` (Wang's algorithm)."""
-    a %= m
-    bound = int(fmpz(m // 2).isqrt())
-    r0, r1, s0, s1 = m, a, 0, 1
-    while r1 > bound:
-        q = r0 // r1
-        r0, r1 = r1, r0 - q * r1
-        s0, s1 = s1, s0 - q * s1
-    if s1 == 0 or abs(s1) > bound:
+    pair = wang_pair(a, m, int(fmpz(m // 2).isqrt()))
+    if pair is None:
         return None
+    r1, s1 = pair
     from math import gcd
 
     if gcd(r1, abs(s1)) != 1:
