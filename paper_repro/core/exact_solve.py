@@ -12,13 +12,13 @@ through; here instead:
    with one common denominator (Wang's rational reconstruction), until two successive reconstructions agree;
 3. the candidate is **checked exactly**: ``A X == B`` in rational arithmetic.
 
-Why the result is exact (a proof, no bound involved): the check makes X a solution of ``A X = B``; and ``A`` is
-invertible because the row-scaled integer matrix, whose determinant is det(A) times the non-zero row
-denominators, was invertible modulo a prime (step 2 used at least one prime) -- so X is *the* solution, the
-same matrix flint's ``fmpq_mat.solve`` returns.  If the reconstruction does not stabilise and pass the check within
-:data:`PRIMES` primes, or the matrix is singular modulo all of them, the routine falls back to
-``fmpq_mat.solve(algorithm="fflu")`` (which raises ``ZeroDivisionError`` for a singular matrix, like
-``fmpq_mat.solve``).  Speed only depends on these choices, never the result.
+Why the result is exact (a proof, no bound involved; ``A`` square, the moduli primes): the check makes X a solution
+of ``A X = B``; and ``A`` is invertible because the row-scaled integer matrix, whose determinant is det(A) times the
+non-zero row denominators, was invertible modulo a prime (step 2 used at least one prime: flint's modular solve
+raises on a singular matrix) -- so X is *the* solution, the same matrix flint's ``fmpq_mat.solve`` returns. If the
+reconstruction does not stabilise and pass the check within :data:`PRIMES` primes, or the matrix is singular modulo
+all of them, the routine falls back to ``fmpq_mat.solve(algorithm="fflu")`` (which raises ``ZeroDivisionError`` for
+a singular matrix, like ``fmpq_mat.solve``).  Speed only depends on these choices, never the result.
 
 >>> from flint import fmpq_mat
 >>> a = fmpq_mat(2, 2, [1, 4, 8, 3]); b = fmpq_mat(2, 3, range(6))

@@ -1,10 +1,10 @@
 """Exact full-rank test over F_p by recursive Gaussian elimination whose matrix products run in float64 BLAS.
 
 The collocation matrices of claim ``linear_independence`` (Theorem joint_systems_linear_independence) are square,
-up to 4921 x 4921 (n = 40), with entries modulo ``p = 2^31 - 1``.  flint's ``nmod_mat`` has no BLAS: its rank at
-n = 30 (2791 x 2791) costs about 3.4 s, plus 2 s to build the matrix from a Python list; the same elimination
-here costs a fraction of that, because its O(N^3) part is ``float64`` matrix products (``numpy`` / BLAS) that are
-**exact**:
+up to 4921 x 4921 (n = 40), with entries modulo ``p = 2^31 - 1``. The python-flint build used here multiplies
+``nmod_mat`` without BLAS: its rank at n = 30 (2791 x 2791) costs about 3.4 s, plus 2 s to build the matrix from a
+Python list; the same elimination here costs a fraction of that, because its O(N^3) part is ``float64`` matrix
+products (``numpy`` / BLAS) that are **exact**:
 
 * every entry is an integer in ``[0, p)``, ``p < 2^31``;
 * a product ``L @ U`` (inner dimension ``k <= MAX_INNER = 2^18``) is computed from the 16-bit halves
@@ -13,8 +13,12 @@ here costs a fraction of that, because its O(N^3) part is ``float64`` matrix pro
   the last minus the first two, in int64).  Each is a sum of ``k`` non-negative integer terms below
   ``(2^15 + 2^16)^2 < 2^34``, so every partial sum -- in whatever order BLAS adds, with or without fused
   multiply-add -- is an integer below ``k 2^34 <= 2^52 < 2^53`` (:data:`EXACT_BOUND`), exactly representable in
-  float64: every floating-point operation is exact and each product is the exact integer product, reduced modulo
-  p in int64;
+  float64: every floating-point operation is exact and each product is the exact integer product (converted to
+  int64 exactly), reduced modulo p in int64.  *Assumed*: a classical IEEE binary64 GEMM (OpenBLAS here), whose
+  partial sums are sums of the products; a Strassen-type product adds and subtracts blocks, and its intermediates
+  could pass 2^53 near ``MAX_INNER`` (the inner dimensions used here are at most about 2500, below 2^12);
+* every update reduces modulo p again, so every entry stays an integer in ``[0, p)`` throughout, not only in the
+  input;
 * everything else (pivot search, multipliers, the small triangular solves) is int64 arithmetic on values below
   ``2^63``.
 
