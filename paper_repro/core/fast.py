@@ -120,7 +120,7 @@ def threads() -> int:
         try:
             k = int(env)
         except ValueError:
-            raise ValueError(f"PAPER_REPRO_THREADS must be a positive integer, got {env!r}") from None
+            raise ValueError(f"PAPER_REPRO_THREADS must be an integer in [1, {MAX_THREADS}], got {env!r}") from None
         if not 1 <= k <= MAX_THREADS:
             raise ValueError(f"PAPER_REPRO_THREADS must be an integer in [1, {MAX_THREADS}], got {env!r}")
         return k
