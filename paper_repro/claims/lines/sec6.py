@@ -29,14 +29,14 @@ from paper_repro.core.domain import RationalAngle, RationalPoints, rational_alph
 from paper_repro.core.labels import delta, exponents, index_of, united_system
 from paper_repro.core.normalization import coefficient_vector, evaluate_normalized
 from paper_repro.core.univariate import c_const, c_numerator
-from paper_repro.printed.lines.sec6 import LINES
+from paper_repro.printed.lines import live_lines
 from paper_repro.surfaces.fitting import ExactTrig, fit_exact
 
 NS = tuple(range(1, 13))  # orders for the index-set counts
 TS = (fmpq(1, 5), fmpq(1, 3), fmpq(1, 2), fmpq(3, 4))  # tan(alpha/4) of the exact checks
 TS_TORUS = TS + (fmpq(1, 9), fmpq(2, 5), fmpq(3, 5), fmpq(7, 8))  # for the 19 torus points
 RHO_MU = ((fmpq(1), fmpq(0)), (fmpq(0), fmpq(1)), (fmpq(7, 2), fmpq(5, 3)))  # (varrho, mu) of the torus fits
-_LINE = {x.id: x for x in LINES}
+_LINE = live_lines()  # read at every lookup (the blank and mutation tests change the transcription)
 
 
 # --- helpers ---------------------------------------------------------------------------------------------

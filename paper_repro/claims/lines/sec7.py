@@ -31,6 +31,7 @@ from paper_repro.core.elevation import elevation_matrix, elevation_matrix_exact
 from paper_repro.core.fourier import evaluate_v, v_labels
 from paper_repro.core.labels import delta, exponents, index_of, parse_label, united_system
 from paper_repro.core.normalization import coefficients, evaluate_normalized, orbits
+from paper_repro.printed.lines import live_texts
 from paper_repro.printed.lines import sec7_latex as X
 from paper_repro.printed.lines.sec7 import LINES
 from paper_repro.printed.normalization import final_value
@@ -39,7 +40,7 @@ from paper_repro.theory.limit_formula import limit_checks, limit_factor, multino
 from paper_repro.theory.limits import bezier_indices, conversion_matrix, limit_degree, limit_terms
 from paper_repro.theory.ratfunc import RatFunc, half_angle_functions, poly_at
 
-VERBATIM = {ln.id: ln.verbatim for ln in LINES}
+VERBATIM = live_texts()  # read at every lookup (the blank and mutation tests change the transcription)
 #: rational tan(alpha/4) of the exact samples (alpha from 0.57 to 2.9)
 TS = ("1/7", "1/3", "1/2", "5/7", "9/10")
 

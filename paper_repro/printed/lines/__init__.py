@@ -22,7 +22,9 @@ PDF's number (``paper_repro/resources/paper_index.json``).
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from collections.abc import Iterator
+from contextlib import contextmanager
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 STATUSES = ("checked", "erratum", "excused")
@@ -80,3 +82,107 @@ def all_lines() -> list[Line]:
     if dup:
         raise ValueError(f"line ids used twice: {sorted(dup)}")
     return sorted(out, key=lambda x: x.tex)
+
+
+# -- the one accessor of the transcriptions (and the mutation tests' way to change them) -------------------------
+def _part_modules() -> list:
+    import importlib
+
+    out = []
+    for part in PARTS:
+        try:
+            out.append(importlib.import_module(f"paper_repro.printed.lines.{part}"))
+        except ModuleNotFoundError:
+            continue
+    return out
+
+
+def line(line_id: str) -> Line:
+    """The transcribed line ``line_id`` as it stands now (inside :func:`substituted`, the substituted text)."""
+    for mod in _part_modules():
+        for x in mod.LINES:
+            if x.id == line_id:
+                return x
+    raise KeyError(f"no transcribed line {line_id!r}")
+
+
+def verbatim(line_id: str) -> str:
+    """The verbatim LaTeX of line ``line_id``: what a check reads (never a retyped copy of the formula)."""
+    return line(line_id).verbatim
+
+
+class _LiveTexts(dict):
+    """``{line id: verbatim}`` read live through :func:`verbatim` (a module-level table of the transcriptions that
+    still sees :func:`substituted`)."""
+
+    def __getitem__(self, line_id: str) -> str:
+        return verbatim(line_id)
+
+    def get(self, line_id, default=None):
+        try:
+            return verbatim(line_id)
+        except KeyError:
+            return default
+
+
+class _LiveLines(dict):
+    """``{line id: Line}`` read live through :func:`line`."""
+
+    def __getitem__(self, line_id: str) -> Line:
+        return line(line_id)
+
+
+def live_texts() -> dict[str, str]:
+    """A mapping line id -> verbatim that reads the current transcription at every lookup."""
+    return _LiveTexts()
+
+
+def live_lines() -> dict[str, Line]:
+    """A mapping line id -> :class:`Line` that reads the current transcription at every lookup."""
+    return _LiveLines()
+
+
+def lines_of(check_id: str) -> list[Line]:
+    """The lines (checked or erratum) whose check is ``check_id``, in source order."""
+    return sorted((x for mod in _part_modules() for x in mod.LINES if x.check == check_id and x.status != "excused"),
+                  key=lambda x: x.tex)
+
+
+def _clear_line_caches() -> None:
+    """Forget everything computed from the transcriptions: the caches of the line checks and of the readers."""
+    import sys
+
+    for name, mod in list(sys.modules.items()):
+        if not (name.startswith("paper_repro.claims.lines") or name.startswith("paper_repro.printed")):
+            continue
+        for obj in list(vars(mod).values()):
+            if callable(obj) and hasattr(obj, "cache_clear") and getattr(obj, "__module__", "") == name:
+                obj.cache_clear()
+
+
+@contextmanager
+def substituted(texts: dict[str, str]) -> Iterator[None]:
+    """Inside the block, line ``id`` reads ``texts[id]`` instead of its transcription, for every reader (the
+    ``LINES`` lists are changed in place, the caches of the checks cleared before and after).  The blank and
+    mutation tests of the line checks (:mod:`paper_repro.claims.lines.mutation`) run the checks so."""
+    mods = _part_modules()
+    saved: list[tuple[list, int, Line]] = []
+    found = set()
+    for mod in mods:
+        for k, x in enumerate(mod.LINES):
+            if x.id in texts:
+                saved.append((mod.LINES, k, x))
+                mod.LINES[k] = replace(x, verbatim=texts[x.id])
+                found.add(x.id)
+    missing = set(texts) - found
+    if missing:
+        for lst, k, x in saved:
+            lst[k] = x
+        raise KeyError(f"no transcribed lines {sorted(missing)}")
+    _clear_line_caches()
+    try:
+        yield
+    finally:
+        for lst, k, x in saved:
+            lst[k] = x
+        _clear_line_caches()
