@@ -24,7 +24,7 @@ ifneq ($(filter-out 3.11,$(PYVER)),)
 export PAPER_REPRO_CACHE ?= $(CURDIR)/$(VENV)/cache
 endif
 
-.PHONY: test-cpus test-bits-other-cpu venv lock report paper check-paper check-gallery test-min test-pythons test-wheel docs reproduce reproduce-extended test test-all bench bench-coefficients bench-question1 figures lint clean distclean
+.PHONY: mutate-lines test-cpus test-bits-other-cpu venv lock report paper check-paper check-gallery test-min test-pythons test-wheel docs reproduce reproduce-extended test test-all bench bench-coefficients bench-question1 figures lint clean distclean
 
 # The environment: the exact versions of requirements.lock (what `make reproduce` was run with, so
 # figures stay byte-identical), then the package itself without resolving anything.  A failed install
@@ -84,6 +84,9 @@ test-bits-other-cpu: $(STAMP)  ## the byte-sensitive tests under an OpenBLAS ker
 	@host=$$($(PY) -c 'import numpy, threadpoolctl; numpy.ones(2) @ numpy.ones(2); print([i["architecture"] for i in threadpoolctl.threadpool_info() if i["user_api"] == "blas"][0])'); \
 	k=Sandybridge; [ "$$host" = Sandybridge ] && k=Haswell; echo "== byte-sensitive tests: host kernel $$host, forced OPENBLAS_CORETYPE=$$k"; \
 	OPENBLAS_CORETYPE=$$k $(PY) -m pytest -q -p no:cacheprovider -m bits
+
+mutate-lines: $(STAMP)         ## blank and mutate every checked line; each check must fail -> reports/mutate_lines.{md,json}
+	$(PY) tools/mutate_lines.py --out reports
 
 test-all: $(STAMP)             ## every test, slow ones included
 	$(PY) -m pytest -q -m "not benchmark"

@@ -128,7 +128,7 @@ def _pick(matches: list, line_id: str, op: str, most: int) -> list:
     """At most ``most`` of ``matches``, chosen by a generator seeded with the line and operator (deterministic)."""
     if len(matches) <= most:
         return matches
-    return sorted(_seed(line_id, op).sample(matches, most), key=lambda m: m.start())
+    return sorted(_seed(line_id, op).sample(matches, most), key=lambda m: m[0] if isinstance(m, tuple) else m.start())
 
 
 def _sites(pattern: str, tex: str) -> list[re.Match]:
