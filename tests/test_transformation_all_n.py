@@ -143,6 +143,8 @@ def test_formula_holds_at_float_alpha_on_points():
     ({"n": 10**6}, ValueError, "n must be an integer from 1"),
     ({"n": 2.0}, TypeError, "n must be an integer"),
     ({"direction": "V2T"}, ValueError, "direction must be one of"),
+    ({"direction": np.array(["V_to_T", "T_to_V"])}, TypeError, "direction must be one of"),
+    ({"direction": None}, TypeError, "direction must be one of"),
     ({"alpha": 4.0}, ValueError, "alpha"),
     ({"alpha": 0.0}, ValueError, "alpha"),
     ({"normalized": "yes"}, TypeError, "normalized must be True or False"),

@@ -457,6 +457,8 @@ def transformation_matrix(n: int, alpha, direction: str = "V_to_T", *, normalize
     ``OverflowError`` if an entry exceeds float64.
     """
     n = check_int(n, "n", 1, MAX_N_TRANSFORMATION, why="a dense delta_n x delta_n matrix built in O(n^5) operations")
+    if not isinstance(direction, str):
+        raise TypeError(f"direction must be one of {list(DIRECTIONS)} (a string), got {type(direction).__name__}")
     if direction not in DIRECTIONS:
         raise ValueError(f"direction must be one of {list(DIRECTIONS)}, got {direction!r}")
     if not isinstance(normalized, (bool, np.bool_)):
