@@ -157,3 +157,21 @@ def test_ply_normals_round_trip_and_gzip_is_byte_stable(tmp_path):
     raw = export_mesh(tmp_path / "m.vol.gz", v, f).read_bytes()
     assert raw[:2] == b"\x1f\x8b" and raw[4:8] == b"\0\0\0\0" and not raw[3] & 0x08  # no time, no file name
     assert raw == export_mesh(tmp_path / "other.vol.gz", v, f).read_bytes()
+
+
+def test_at_barycentric_names_the_rows_the_user_gave():
+    """`at_barycentric([[0.5, 0.5, 0.5]])` spoke of the scaled point (0.6, 0.6, 0.6) not being on Omega^alpha."""
+    import numpy as np
+    import pytest
+
+    from paper_repro.surfaces.patch import Patch
+
+    p = Patch(1, 1.2, np.zeros((7, 3)))
+    with pytest.raises(ValueError, match=r"bary row 0 = \(0.5, 0.5, 0.5\) sums to 1.5: barycentric rows"):
+        p.at_barycentric([[0.5, 0.5, 0.5]])
+    with pytest.raises(ValueError, match=r"row 1 = \(1.5, -0.5, 0\) has a negative entry"):
+        p.at_barycentric([[1, 0, 0], [1.5, -0.5, 0]])
+    with pytest.raises(TypeError):
+        p.at_barycentric([[0.5 + 0j, 0.5, 0]])
+    one = np.asarray(p.at_barycentric([1 / 3, 1 / 3, 1 / 3]), dtype=float).reshape(-1)
+    assert np.array_equal(one, np.asarray(p.at_barycentric([[1 / 3, 1 / 3, 1 / 3]]), dtype=float)[0])
