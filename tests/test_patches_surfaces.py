@@ -175,3 +175,33 @@ def test_at_barycentric_names_the_rows_the_user_gave():
         p.at_barycentric([[0.5 + 0j, 0.5, 0]])
     one = np.asarray(p.at_barycentric([1 / 3, 1 / 3, 1 / 3]), dtype=float).reshape(-1)
     assert np.array_equal(one, np.asarray(p.at_barycentric([[1 / 3, 1 / 3, 1 / 3]]), dtype=float)[0])
+
+
+def test_a_cold_derivative_validates_n_and_alpha_once():
+    """Inner code calls inner code: a first Patch and derivative at a new (n, alpha) ran check_n 15 times and
+    check_alpha 3 times (inner builders called public functions)."""
+    import collections
+    import sys
+
+    import numpy as np
+
+    import paper_repro.util.validation as val
+    from paper_repro.surfaces.patch import Patch
+
+    targets = {val.check_n.__code__: "check_n", val.check_alpha.__code__: "check_alpha"}
+    calls: collections.Counter = collections.Counter()
+
+    def prof(frame, event, arg):
+        if event == "call" and frame.f_code in targets:
+            calls[targets[frame.f_code]] += 1
+
+    n, alpha = 4, 1.2345678901  # an (n, alpha) no other test uses: cold caches for the alpha-dependent parts
+    old = sys.getprofile()
+    sys.setprofile(prof)
+    try:
+        p = Patch(n, alpha, np.random.default_rng(0).normal(size=(61, 3)))
+        p.derivative([[0.3, 0.4, alpha - 0.7]], "u")
+    finally:
+        sys.setprofile(old)
+    assert calls["check_alpha"] == 1, calls
+    assert calls["check_n"] <= 2, calls  # the patch's own check, and exponent_matrix's on a first n in the process

@@ -170,13 +170,15 @@ class RationalPoints:
         return np.array(rows, dtype=object).reshape(-1, 3)
 
 
-def check_points(points, alpha, tol: float = DOMAIN_TOL, offset: int = 0) -> np.ndarray:
+def check_points(points, alpha, tol: float = DOMAIN_TOL, offset: int = 0, *, alpha_checked: bool = False
+                 ) -> np.ndarray:
     """Return ``points`` as an ``(P, 3)`` array after checking that they lie on Omega^alpha.
 
     A point is accepted if ``|u + v + w - alpha| <= tol * alpha`` and ``u, v, w >= -tol * alpha``.
     Raises ``ValueError``/``TypeError`` naming ``points`` (and the first offending point) otherwise.
+    ``alpha_checked``: inner callers whose ``alpha`` (a float) is already validated.
     """
-    a = check_alpha(parse_alpha(alpha))
+    a = float(alpha) if alpha_checked else check_alpha(parse_alpha(alpha))
     if isinstance(points, (str, bytes)):
         raise TypeError(f"points must be a (P, 3) array of (u, v, w), got a string {points!r}")
     if isinstance(points, (dict, set, numbers.Number, np.generic)) or points is None:
