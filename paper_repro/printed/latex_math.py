@@ -69,7 +69,7 @@ from lark import Lark, Token, Transformer
 from lark.exceptions import LarkError, UnexpectedCharacters, UnexpectedEOF, UnexpectedInput, VisitError
 
 __all__ = ["LatexMathError", "Relation", "parse", "parse_relation", "parse_cases", "parse_vector", "index_set",
-           "clean", "D", "Family", "PM"]
+           "inline_math", "evaluate_sums", "clean", "D", "Family", "Cases", "PM"]
 
 
 class LatexMathError(ValueError):
@@ -93,7 +93,7 @@ DECOR = {"overline": "bar", "mathbf": "_vec", "mathcal": "cal", "widetilde": "ti
          "mathbb": "_bb", "bar": "bar", "tilde": "tilde", "hat": "hat", "boldsymbol": "_vec"}
 # macros the tokenizer reads after clean() (anything else is an unknown macro)
 KNOWN = set(GREEK) | set(FUNCS) | {"ROWBREAK",
-    "frac", "binom", "sum", "lim", "partial", "dd", "cdot", "times", "pm", "mp", "neq", "ne", "leq", "le", "geq",
+    "frac", "sqrt", "binom", "sum", "lim", "partial", "dd", "cdot", "times", "pm", "mp", "neq", "ne", "leq", "le", "geq",
     "ge", "in", "notin", "sim", "nsim", "equiv", "rightarrow", "to", "forall", "ldots", "lfloor", "rfloor",
     "prime", "pi", "infty", "LDOT", "RDOT", "RVERT", "AND", "OR", "pmod", "cup", "setminus", "subset",
     "subseteq", "approx", "{", "}"}
@@ -321,6 +321,7 @@ func: FUNC atom                       -> func
 
 ?atom: primary
      | primary "^" sarg               -> power
+     | primary "!"                    -> factorial
 
 ?primary: NUMBER                      -> number
         | NAMEVAR                     -> symbol
@@ -336,6 +337,10 @@ func: FUNC atom                       -> func
         | "(" expr ")"                -> paren
         | "(" expr "," exprlist ")"   -> tuple
         | "[" expr "," expr "]"       -> interval
+        | "(" expr "," expr "]"       -> interval_lopen
+        | "[" expr "," expr ")"       -> interval_ropen
+        | "[" expr "," expr "," exprlist "]" -> bracket_list
+        | SQRT "{" expr "}"           -> sqrt
         | "[" expr "]"                -> bracket
         | "{" expr "}"                -> paren
         | "{" "}"                     -> empty_group
@@ -371,6 +376,7 @@ COLON: ":"
 
 TAGSUP: /\{\s*\\alpha\s*\}/
 FRAC: /\\frac(?![A-Za-z])/
+SQRT: /\\sqrt(?![A-Za-z])/
 BINOM: /\\binom(?![A-Za-z])/
 SUM: /\\sum(?![A-Za-z])/
 LIM: /\\lim(?![A-Za-z])/
@@ -722,6 +728,21 @@ class _Build(Transformer):
     def interval(self, c):
         return sympy.Interval(c[0], c[1])
 
+    def interval_lopen(self, c):
+        return sympy.Interval.Lopen(c[0], c[1])
+
+    def interval_ropen(self, c):
+        return sympy.Interval.Ropen(c[0], c[1])
+
+    def bracket_list(self, c):
+        return sympy.Function("cls")(sympy.Tuple(c[0], c[1], *c[2]))
+
+    def sqrt(self, c):
+        return sympy.sqrt(c[1])
+
+    def factorial(self, c):
+        return sympy.factorial(c[0])
+
     def bracket(self, c):
         if isinstance(c[0], sympy.MatrixBase):
             return c[0]
@@ -981,10 +1002,18 @@ def parse_relation(tex: str) -> Relation:
         return Relation([sympy.Tuple(*items)], [], continues=cont)
     head = chunks[0].strip()
     r = _run("start_relation", head, arrays)
-    if not isinstance(r, Relation):
+    k = 1
+    if isinstance(r, Relation):
+        # ``n=1,2,3``: the chunks without a relation after the head list the head's last part
+        rest = []
+        while k < len(chunks) and not _RELOP_RE.search(chunks[k]):
+            rest.append(chunks[k])
+            k += 1
+        if rest:
+            r = _listing(r, rest, arrays)
+    else:
         r = Relation([r], [])
-    # a chunk after the head that has no relation continues the head (a list inside a relation is not printed)
-    r.conditions = _conditions(chunks[1:], arrays) if len(chunks) > 1 else []
+    r.conditions = _conditions(chunks[k:], arrays) if len(chunks) > k else []
     r.continues = cont
     return r
 
@@ -1096,3 +1125,51 @@ def index_set(tex: str) -> list[tuple[Any, Any, Any]]:
         raise LatexMathError(f"index set {m.group(0)}..: bounds do not pair")
     return [(sympy.Symbol(_name(v.strip())), _run("start_expr", lo.strip(), []), _run("start_expr", hi.strip(), []))
             for (v, lo), hi in zip(los, his)]
+
+
+def inline_math(tex: str) -> list[str]:
+    r"""The ``$..$`` segments of a prose line, in order (each can be given to :func:`parse_relation`).
+
+    >>> inline_math(r"for $n=1$ and $\alpha\in\left(0,\pi\right)$.")
+    ['n=1', '\\alpha\\in\\left(0,\\pi\\right)']
+    """
+    return re.findall(r"(?<!\\)\$(.+?)(?<!\\)\$", tex, flags=re.S)
+
+
+def evaluate_sums(expr):
+    r"""``expr`` with every ``Sum`` whose bounds are integers written out term by term, the paper's way: a sum
+    whose upper bound is below its lower bound is empty (0).  (sympy's ``Sum.doit`` follows Karr's convention
+    instead, where ``Sum(f, (i, 3, 1))`` is ``-f(2)``; never ``doit`` a parsed sum with crossed bounds.)
+
+    >>> e = parse(r"\sum_{j=r+1}^{n-1} x_{j}")
+    >>> evaluate_sums(e.subs({sympy.Symbol("r"): 2, sympy.Symbol("n"): 3}))
+    0
+    >>> evaluate_sums(e.subs({sympy.Symbol("r"): 0, sympy.Symbol("n"): 3}))
+    x(1) + x(2)
+    """
+    if not isinstance(expr, sympy.Basic) or not expr.args:
+        return expr
+    if isinstance(expr, sympy.Sum):
+        terms = _expand_sum(expr.function, list(expr.limits))
+        if terms is None:
+            return expr.func(evaluate_sums(expr.function), *expr.limits)
+        return evaluate_sums(sympy.Add(*terms))
+    return expr.func(*[evaluate_sums(a) for a in expr.args])
+
+
+def _expand_sum(body, limits: list):
+    """The terms of ``Sum(body, *limits)`` (the last limit is the outermost), or None if a bound is not an
+    integer."""
+    if not limits:
+        return [body]
+    var, lo, hi = limits[-1]
+    if not (lo.is_Integer and hi.is_Integer):
+        return None
+    out = []
+    for k in range(int(lo), int(hi) + 1):
+        inner = [(v, a.subs(var, k), b.subs(var, k)) for v, a, b in limits[:-1]]
+        t = _expand_sum(body.subs(var, k), inner)
+        if t is None:
+            return None
+        out += t
+    return out
