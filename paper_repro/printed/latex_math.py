@@ -92,8 +92,8 @@ COLOURS = ("Red", "Green", "Blue", "Orange", "Cyan", "Magenta", "Purple", "Brown
 DECOR = {"overline": "bar", "mathbf": "_vec", "mathcal": "cal", "widetilde": "tilde", "widehat": "hat",
          "mathbb": "_bb", "bar": "bar", "tilde": "tilde", "hat": "hat", "boldsymbol": "_vec"}
 # macros the tokenizer reads after clean() (anything else is an unknown macro)
-KNOWN = set(GREEK) | set(FUNCS) | {"ROWBREAK",
-    "frac", "sqrt", "binom", "sum", "lim", "partial", "dd", "cdot", "times", "pm", "mp", "neq", "ne", "leq", "le", "geq",
+KNOWN = set(GREEK) | set(FUNCS) | {"ROWBREAK", "frac", "sqrt",
+    "binom", "sum", "lim", "partial", "dd", "cdot", "times", "pm", "mp", "neq", "ne", "leq", "le", "geq",
     "ge", "in", "notin", "sim", "nsim", "equiv", "rightarrow", "to", "forall", "ldots", "lfloor", "rfloor",
     "prime", "pi", "infty", "LDOT", "RDOT", "RVERT", "AND", "OR", "pmod", "cup", "setminus", "subset",
     "subseteq", "approx", "{", "}"}
