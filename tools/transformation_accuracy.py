@@ -21,8 +21,13 @@ import numpy as np
 
 from paper_repro.core.context import FloatContext, get_context
 from paper_repro.core.half_angle_matrices import product_matrix
-from paper_repro.core.transformation import (FLOAT_REL_GOAL, half_angle, transformation_in_context,
-                                             v_to_t_float_alpha_min, v_to_t_float_bound)
+from paper_repro.core.transformation import (
+    FLOAT_REL_GOAL,
+    half_angle,
+    transformation_in_context,
+    v_to_t_float_alpha_min,
+    v_to_t_float_bound,
+)
 from paper_repro.util.io import write_text
 
 ALPHAS = (1e-300, 1e-9, 1e-6, 1e-4, 1e-3, 1e-2, 1.0, 3.0, math.pi - 1e-12)
