@@ -511,5 +511,6 @@ def transformation_matrix(n: int, alpha, direction: str = "V_to_T", *, normalize
     return out
 
 
-__all__ = ["DIRECTIONS", "FLOAT_REL_GOAL", "v_to_t_float_bound", "v_to_t_float_alpha_min", "transformation_matrix", "transformation_in_context", "gamma_coefficients", "scaled_theta",
+__all__ = ["DIRECTIONS", "FLOAT_REL_GOAL", "v_to_t_float_bound", "v_to_t_float_alpha_min",
+           "transformation_matrix", "transformation_in_context", "gamma_coefficients", "scaled_theta",
            "expansion_matrix", "scaled_normalizing", "half_angle", "v_columns"]
