@@ -27,7 +27,7 @@ ifneq ($(filter-out 3.11,$(PYVER)),)
 export PAPER_REPRO_CACHE ?= $(CURDIR)/$(VENV)/cache
 endif
 
-.PHONY: mutate-lines test-cpus test-bits-other-cpu venv lock report paper check-paper check-gallery test-min test-pythons test-wheel docs reproduce reproduce-extended test test-all bench bench-coefficients bench-question1 figures lint clean distclean
+.PHONY: mutate-lines mutate-code test-cpus test-bits-other-cpu venv lock report paper check-paper check-gallery test-min test-pythons test-wheel docs reproduce reproduce-extended test test-all bench bench-coefficients bench-question1 figures lint clean distclean
 
 # The environment: the exact versions of requirements.lock (what `make reproduce` was run with, so
 # figures stay byte-identical), then the package itself without resolving anything.  A failed install
@@ -90,6 +90,9 @@ test-bits-other-cpu: $(STAMP)  ## the byte-sensitive tests under an OpenBLAS ker
 
 mutate-lines: $(STAMP)         ## blank and mutate every checked line; each check must fail -> reports/mutate_lines.{md,json}
 	$(PY) tools/mutate_lines.py --out reports
+
+mutate-code: $(STAMP)          ## mutation test of the core and surfaces modules -> reports/mutate_code.{md,json} (about 1 h on 2 cores)
+	$(PY) tools/mutate_code.py --out reports
 
 test-all: $(STAMP)             ## every test, slow ones included
 	$(PY) -m pytest -q -m "not benchmark"
