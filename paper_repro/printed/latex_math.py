@@ -69,7 +69,7 @@ from lark import Lark, Token, Transformer
 from lark.exceptions import LarkError, UnexpectedCharacters, UnexpectedEOF, UnexpectedInput, VisitError
 
 __all__ = ["LatexMathError", "Relation", "parse", "parse_relation", "parse_cases", "parse_vector", "index_set",
-           "inline_math", "evaluate_sums", "clean", "D", "Family", "Cases", "PM"]
+           "inline_math", "evaluate_sums", "Term", "terms", "clean", "D", "Family", "Cases", "PM"]
 
 
 class LatexMathError(ValueError):
@@ -94,7 +94,7 @@ DECOR = {"overline": "bar", "mathbf": "_vec", "mathcal": "cal", "widetilde": "ti
 # macros the tokenizer reads after clean() (anything else is an unknown macro)
 KNOWN = set(GREEK) | set(FUNCS) | {"ROWBREAK", "frac", "sqrt",
     "binom", "sum", "lim", "partial", "dd", "cdot", "times", "pm", "mp", "neq", "ne", "leq", "le", "geq",
-    "ge", "in", "notin", "sim", "nsim", "equiv", "rightarrow", "to", "forall", "ldots", "lfloor", "rfloor",
+    "ge", "in", "notin", "sim", "nsim", "equiv", "rightarrow", "to", "forall", "exists", "ldots", "lfloor", "rfloor",
     "prime", "pi", "infty", "LDOT", "RDOT", "RVERT", "AND", "OR", "pmod", "cup", "setminus", "subset",
     "subseteq", "approx", "{", "}"}
 
@@ -443,9 +443,10 @@ class Relation:
 
     ``lead`` is the operator a continuation row starts with (``= & x`` has ``lead='='`` and ``parts=[x]``).
     ``conditions`` are the trailing clauses (``,~\\forall x\\in[0,\\alpha]``, ``,~i=0,1,\\ldots,2n``) as
-    Relations; ``quantifier`` is ``'forall'`` on a clause that carries ``\\forall``.  The op ``'equiv'`` has as
-    right part ``Tuple(b, m)`` for ``a \\equiv b \\pmod{m}``; ``'in'`` with a ``Tuple`` right part is a listed range
-    ``i=0,1,\\ldots,2n`` (``ldots`` is the Symbol ``ldots``).
+    Relations; ``quantifier`` is ``'forall'`` (``'exists'``) on a clause that carries ``\\forall``
+    (``\\exists``).  The op ``'equiv'`` has as right part ``Tuple(b, m)`` for ``a \\equiv b \\pmod{m}``; ``'in'``
+    with a ``Tuple`` right part is a listed range ``i=0,1,\\ldots,2n`` (``ldots`` is the Symbol ``ldots``).
+    ``continues`` is the operator (``'+'``, ``'-'``, ``'*'``) a row ends with when the next row continues it.
     """
 
     parts: list[Any]
@@ -959,19 +960,20 @@ def _conditions(chunks: list[str], arrays: list) -> list[Relation]:
         t = chunks[k].strip()
         if not t:
             raise LatexMathError("an empty clause between commas")
-        forall = t.startswith("\\forall")
-        body = t[len("\\forall"):].strip() if forall else t
+        quant = next((q for q in ("forall", "exists") if t.startswith("\\" + q)), None)
+        body = t[len(quant) + 1:].strip() if quant else t
         if "\\AND" in body or "\\OR" in body:
             r = Relation([_condition(body)], [])
         else:
             r = _run("start_relation", body, arrays)
         if not isinstance(r, Relation):
             raise LatexMathError(f"a clause without a relation: {t!r}")
-        if forall:
-            r.quantifier = "forall"
+        if quant:
+            r.quantifier = quant
         k += 1
         rest = []
-        while k < len(chunks) and not _RELOP_RE.search(chunks[k]) and not chunks[k].strip().startswith("\\forall"):
+        while (k < len(chunks) and not _RELOP_RE.search(chunks[k])
+               and not chunks[k].strip().startswith(("\\forall", "\\exists"))):
             rest.append(chunks[k])
             k += 1
         if rest:
@@ -1172,4 +1174,44 @@ def _expand_sum(body, limits: list):
         if t is None:
             return None
         out += t
+    return out
+
+
+@dataclass
+class Term:
+    """One printed term of a (sum of) products: the sums around it (outermost first, ``(var, lo, hi)``), the
+    applied names in it (``rho(2n, 2n-i, j)``, ``R(2n, 2n-i, j, (u, v, w))``, ...) and the rest (the coefficient)."""
+
+    limits: list[tuple[Any, Any, Any]]
+    names: list[Any]
+    coefficient: Any
+
+
+def terms(expr) -> list[Term]:
+    r"""The terms of a parsed linear combination (sympy's order of an ``Add``, not the printed order).
+
+    >>> [(t.limits, t.names) for t in terms(parse(r"\sum_{j=1}^{n-1}\sum_{i=j}^{2n-1-j}\gamma_{2n,2n-i,j}"
+    ...                                          r"G_{2n,2n-i,j}^{\alpha}\left(u,v,w\right)"))]
+    [([(j, 1, n - 1), (i, j, -j + 2*n - 1)], [G(2*n, -i + 2*n, j, (u, v, w)), gamma(2*n, -i + 2*n, j)])]
+    """
+    out: list[Term] = []
+    for t in sympy.Add.make_args(expr):
+        limits: list = []
+        coeff = sympy.Integer(1)
+        while True:
+            if isinstance(t, sympy.Sum):
+                limits += [tuple(lim) for lim in reversed(t.limits)]
+                t = t.function
+                continue
+            if isinstance(t, sympy.Mul):
+                inner = [a for a in t.args if isinstance(a, sympy.Sum)]
+                if len(inner) == 1:
+                    coeff *= sympy.Mul(*[a for a in t.args if a is not inner[0]])
+                    t = inner[0]
+                    continue
+            break
+        names = sorted((a for a in sympy.Mul.make_args(t) if isinstance(a, sympy.core.function.AppliedUndef)),
+                       key=sympy.default_sort_key)
+        rest = sympy.Mul(*[a for a in sympy.Mul.make_args(t) if a not in names])
+        out.append(Term(limits, names, coeff * rest))
     return out
