@@ -66,7 +66,7 @@ from typing import Any
 
 import sympy
 from lark import Lark, Token, Transformer
-from lark.exceptions import LarkError, UnexpectedCharacters, UnexpectedEOF, UnexpectedInput, VisitError
+from lark.exceptions import LarkError, UnexpectedCharacters, UnexpectedEOF, UnexpectedInput
 
 __all__ = ["LatexMathError", "Relation", "parse", "parse_relation", "parse_cases", "parse_vector", "index_set",
            "inline_math", "evaluate_sums", "Term", "terms", "clean", "D", "Family", "Cases", "PM"]
@@ -87,7 +87,8 @@ GREEK = ("alpha", "beta", "gamma", "delta", "epsilon", "varepsilon", "zeta", "et
          "psi", "omega", "Gamma", "Delta", "Theta", "Lambda", "Xi", "Sigma", "Phi", "Psi", "Omega", "ell")
 FUNCS = {"sin": sympy.sin, "cos": sympy.cos, "tan": sympy.tan, "cot": sympy.cot, "exp": sympy.exp,
          "ln": sympy.log, "log": sympy.log, "sign": sympy.sign, "dim": sympy.Function("dim"),
-         "span": sympy.Function("span"), "det": sympy.Function("det")}
+         "span": sympy.Function("span"), "det": sympy.Function("det"), "min": sympy.Function("min"),
+         "max": sympy.Function("max")}
 COLOURS = ("Red", "Green", "Blue", "Orange", "Cyan", "Magenta", "Purple", "Brown")
 DECOR = {"overline": "bar", "mathbf": "_vec", "mathcal": "cal", "widetilde": "tilde", "widehat": "hat",
          "mathbb": "_bb", "bar": "bar", "tilde": "tilde", "hat": "hat", "boldsymbol": "_vec"}
@@ -315,6 +316,7 @@ dbase: NAMEVAR | GREEKV | NAMEVAR "_" sarg -> dbase
        | atom
 
 func: FUNC atom                       -> func
+    | FUNC func                       -> func
     | FUNC "^" sarg atom              -> func_pow
     | FUNC NUMBER atom                -> func_num
     | FUNC "^" sarg NUMBER atom       -> func_pow_num
@@ -381,7 +383,7 @@ BINOM: /\\binom(?![A-Za-z])/
 SUM: /\\sum(?![A-Za-z])/
 LIM: /\\lim(?![A-Za-z])/
 DIFF: /\\(partial|dd)(?![A-Za-z])/
-FUNC: /\\(sin|cos|tan|cot|exp|ln|log|sign|dim|span|det)(?![A-Za-z])/
+FUNC: /\\(sin|cos|tan|cot|exp|ln|log|sign|dim|span|det|min|max)(?![A-Za-z])/
 GREEKV: /\\(GREEKNAMES)(?![A-Za-z])/
 PI: /\\pi(?![A-Za-z])/
 INFTY: /\\infty(?![A-Za-z])/
@@ -430,10 +432,11 @@ CAPVAR: /[A-Z]/
 
 @functools.cache
 def _parser() -> Lark:
-    """The LALR parser (built once: about 0.2 s)."""
+    """The LALR parser (built once: about 0.2 s), with the sympy builder run during the parse (no tree is kept:
+    the builder's ``arrays`` is set before each parse, so one parse at a time per process)."""
     return Lark(GRAMMAR.replace("GREEKNAMES", "|".join(GREEK)), parser="lalr",
                 start=["start_relation", "start_expr", "start_conditions"],
-                maybe_placeholders=False)
+                maybe_placeholders=False, transformer=_BUILDER)
 
 
 # --------------------------------------------------------------------------------------------------- values
@@ -855,6 +858,9 @@ class _Build(Transformer):
 
 
 
+_BUILDER = _Build([])
+
+
 def _as_basic(x):
     if isinstance(x, Relation):
         if len(x.parts) == 2 and x.ops == ["in"]:
@@ -871,8 +877,13 @@ def _as_basic(x):
 
 # --------------------------------------------------------------------------------------------------- top level
 def _run(start: str, s: str, arrays: list):
+    parser = _parser()
+    saved = _BUILDER.arrays
+    _BUILDER.arrays = arrays
     try:
-        tree = _parser().parse(s, start=start)
+        return parser.parse(s, start=start)
+    except LatexMathError:
+        raise
     except UnexpectedCharacters as e:
         raise LatexMathError(f"cannot read {s[e.pos_in_stream:e.pos_in_stream + 40]!r} (in {s[:80]!r})") from None
     except UnexpectedEOF:
@@ -882,12 +893,10 @@ def _run(start: str, s: str, arrays: list):
         raise LatexMathError(f"cannot read {s[p:p + 40]!r} (in {s[:80]!r})") from None
     except LarkError as e:  # pragma: no cover
         raise LatexMathError(str(e)) from None
-    try:
-        return _Build(arrays).transform(tree)
-    except VisitError as e:
-        if isinstance(e.orig_exc, LatexMathError):
-            raise e.orig_exc from None
-        raise LatexMathError(f"cannot build {s[:80]!r}: {e.orig_exc}") from None
+    except (TypeError, ValueError, AttributeError, IndexError, sympy.SympifyError) as e:
+        raise LatexMathError(f"cannot build {s[:80]!r}: {e}") from None
+    finally:
+        _BUILDER.arrays = saved
 
 
 def _split_top(s: str, sep: str = ",") -> list[str]:
@@ -945,6 +954,8 @@ def parse_vector(tex: str) -> sympy.Matrix:
 
 def _listing(first: Relation, rest: list[str], arrays: list) -> Relation:
     """``i=0`` followed by ``1``, ``\\ldots``, ``2n`` -> ``i in (0, 1, ldots, 2n)``."""
+    if any(not t.strip() for t in rest):
+        raise LatexMathError(f"an empty item between commas (',,') in the list after {first.parts[-1]}")
     items = [first.parts[-1]] + [_run("start_expr", t.strip(), arrays) for t in rest]
     return Relation(first.parts[:-1] + [sympy.Tuple(*items)], first.ops[:-1] + ["in"], first.lead,
                     quantifier=first.quantifier)
@@ -1024,10 +1035,12 @@ _DISPLAY = re.compile(r"\\\[(.*?)(\\\]|$)|\\begin\{(equation|align)\*?\}(.*?)(\\
 
 
 def _display_math(tex: str) -> str:
-    """The displayed mathematics of a line that also carries prose (``... \\[ math \\] ...``), else ``tex``."""
+    """The displayed mathematics of a line that also carries prose (``... \\[ math \\] ...``, or its one ``$..$``
+    segment), else ``tex``."""
     m = _DISPLAY.search(tex)
     if not m:
-        return tex
+        segs = inline_math(tex)
+        return segs[0] if len(segs) == 1 else tex
     return m.group(1) if m.group(1) is not None else m.group(4)
 
 
