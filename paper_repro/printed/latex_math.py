@@ -1045,17 +1045,37 @@ def _display_math(tex: str) -> str:
 
 
 def _case_rows(rows: list[list[str]]) -> list[tuple[Any, Any]]:
+    """A row whose condition cell is empty continues into the next row's value (a value printed over several rows,
+    its parenthesis opened with ``\\left(..\\right.`` and closed with ``\\left...\\right)``)."""
     out = []
+    pending = ""
     for row in rows:
         if not any(c.strip() for c in row):
             continue
         if len(row) != 2:
             raise LatexMathError(f"a case row with {len(row)} cells: {row!r}")
         v, cnd = row
-        v = v.strip().rstrip(",").strip()
+        if not cnd.strip():
+            pending = _join_rows(pending, v)
+            continue
+        v = _join_rows(pending, v).strip().rstrip(",").strip()
+        pending = ""
         value = _run("start_expr", v, [])
         out.append((value, parse_condition_clean(cnd)))
+    if pending:
+        raise LatexMathError(f"a case value without its condition: {pending[:60]!r}")
     return out
+
+
+def _join_rows(head: str, tail: str) -> str:
+    """``head`` continued by ``tail``: a ``\\right.`` ending head and a ``\\left.`` starting tail are the
+    invisible halves of one parenthesis split over rows, and go."""
+    head, tail = head.strip(), tail.strip()
+    if not head:
+        return tail
+    head = re.sub(r"\\RDOT\s*$", "", head)
+    tail = re.sub(r"^\\LDOT\s*", "", tail)
+    return head + " " + tail
 
 
 def parse_condition_clean(cnd: str):
