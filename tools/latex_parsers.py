@@ -345,7 +345,7 @@ def report(res: dict) -> str:
            + ", ".join(f"{k} {res['kinds'][k]}" for k in kinds) + ".", "",
            f"A candidate has {TIMEOUT} s per segment (30 s on the correctness sample); on a loaded machine the general "
            "parsers' counts move by a few lines between runs (display lines, fair text: sympy-lark 14-15, "
-           "latex2sympy2_extended 123-130 in three runs).", "",
+           "latex2sympy2_extended 123-130 in four runs).", "",
            "## Lines read (every mathematical segment parses)", "",
            "| candidate | " + " | ".join(kinds) + " | all with math | time (s) |",
            "|---|" + "---|" * (len(kinds) + 2)]
