@@ -215,7 +215,8 @@ def mutants(tex: str, line_id: str = "", most: int = 2) -> list[Mutant]:
         for m in _pick(_sites(pat, tex), line_id, "quantifier", 1):
             add("quantifier", f"{m.group()} -> {rep}", tex[: m.start()] + rep + tex[m.end():])
     for word, rep in _WORDS:
-        k = tex.find(word)
+        m = re.search(r"(?<![\d\w])" + re.escape(word) if word[0] in "\\" else re.escape(word), tex)
+        k = m.start() if m else -1  # (a macro such as \pi not after a digit: 2\pi -> 22\pi is no mutant)
         if k >= 0:
             add("word", f"{word} -> {rep}", tex[:k] + rep + tex[k + len(word):])
     return out
