@@ -1,0 +1,635 @@
+"""Checks of the lines of Section sec:partition_of_unity (source lines 1907-2167), moved out of
+:mod:`paper_repro.claims.lines.sec4_5` (which registers this module by importing it).
+
+Independent machinery: exact normalizing coefficients by collocation without symmetry
+(:func:`paper_repro.core.normalization.solve_full_exact`) or with it (:func:`paper_repro.core.normalization.
+coefficients`), univariate constants from the expansion of ``(X^2 + 2 c X Y + Y^2)^n``
+(:func:`paper_repro.core.univariate.c_numerator_by_expansion`), the closed forms proven for every alpha
+(:mod:`paper_repro.theory.closed_forms`), exact trigonometric polynomials
+(:class:`~paper_repro.claims.lines.sec4_5.EP`).
+"""
+
+from __future__ import annotations
+
+import re
+from functools import cache
+from itertools import product
+from math import comb
+
+from flint import fmpq, fmpq_mat
+
+from paper_repro.claims.lines import LineResult, line_check
+from paper_repro.claims.lines.sec4_5 import EP, TS, Q, _texts, half_monomial
+from paper_repro.core.basis import evaluate
+from paper_repro.core.context import ExactContext
+from paper_repro.core.domain import rational_alpha, sample_rational_points
+from paper_repro.core.labels import BasisLabel, exponents, index_of, r_exponents, united_system
+from paper_repro.core.normalization import coefficients, solve_full_exact
+from paper_repro.core.univariate import c_numerator_by_expansion
+from paper_repro.printed import normalization as pn
+from paper_repro.printed.lines import sec4_5 as pl
+
+
+# ---------------------------------------------------------------------------------------------------------------
+# Section partition_of_unity
+# ---------------------------------------------------------------------------------------------------------------
+def read_weight_labels(tex: str, n: int) -> list[str]:
+    """The normalizing weights named by the printed list ``r_{2n,n,n}^{\\alpha},\\left\\{ r_{2n,2n-i,j}^{\\alpha}
+    \\right\\} _{j=0,i=j}^{n-1,2n-1-j},..`` at order n, read from the transcription."""
+    from paper_repro.printed.lines.read import bound
+
+    text = tex.replace("%", " ")
+    sets = re.compile(r"\\left\\\{\s*([rgb])_\{2n,2n-i,j\}\^\{\\alpha\}\s*\\right\\\}\s*_\{j=([^,{}]+),i=([^{}]+)\}"
+                      r"\s*\^\{([^,{}]+),([^{}]+)\}")
+    out = [f"{c}_{{{2 * n},{2 * n - i},{j}}}" for c, jlo, ilo, jhi, ihi in sets.findall(text)
+           for j in range(bound(jlo, n=n), bound(jhi, n=n) + 1)
+           for i in range(bound(ilo, n=n, j=j), bound(ihi, n=n, j=j) + 1)]
+    for c, a, b in re.findall(r"(?<![\\\w{])([rgb])_\{2n,([^{}]+?),([^{}]+?)\}", sets.sub(" ", text)):
+        out.append(f"{c}_{{{2 * n},{bound(a, n=n)},{bound(b, n=n)}}}")
+    return out
+
+
+@line_check("sec4_5-weights-index")
+def check_weights_index(verbatim: str | None = None) -> LineResult:
+    tex = verbatim if verbatim is not None else _texts({"sec4_5-weights"})["sec4_5-weights"]
+    ok = True
+    for n in range(1, 13):
+        printed = read_weight_labels(tex, n)
+        ok &= len(printed) == len(set(printed)) == 3 * n * (n + 1) + 1
+        ok &= set(printed) == {lab.coefficient for lab in united_system(n)}
+    return LineResult(ok, how="the printed index sets (read from the transcription) against the labels of T_{2n} "
+                      "(united_system), n <= 12; count 3n(n+1)+1", kind="exhaustive", detail={"n_max": 12})
+
+
+@cache
+def _full(n: int, t: fmpq) -> dict[str, fmpq]:
+    sol = solve_full_exact(n, rational_alpha(t))
+    return {lab.coefficient: x for lab, x in zip(united_system(n), sol)}
+
+
+def _coef(n: int, t: fmpq, name: str) -> fmpq:
+    return _full(n, t)[united_system(n)[index_of(n)[name]].coefficient]
+
+
+@line_check("sec4_5-partition-sum")
+def check_partition_sum(verbatim: str | None = None) -> LineResult:
+    """The printed sum L (its terms read from the transcription, names without aliases) with the coefficients of the
+    exact collocation solve is 1 at fresh rational points."""
+    from paper_repro.printed.lines.read import sum_terms, term_indices
+
+    tex = verbatim if verbatim is not None else _texts({"sec4_5-L-sum"})["sec4_5-L-sum"]
+    try:
+        terms = sum_terms(tex, normalizing=True)
+    except ValueError as exc:
+        return LineResult(False, how="the printed sum read from the transcription", detail={"unread": str(exc)})
+    ok, rows = bool(terms), {}
+    for n in (1, 2, 3):
+        strict = {lb.paper: k for k, lb in enumerate(united_system(n))}
+        named = [f"{c}_{{{2 * n},{2 * n - i},{j}}}" for c, i, j in term_indices(terms, n=n)]
+        if any(x not in strict for x in named) or len(set(named)) != len(strict):
+            rows[f"n={n}"] = False
+            ok = False
+            continue
+        for t in TS[:2]:
+            alpha = rational_alpha(t)
+            pts = sample_rational_points(alpha, 6, seed=23)
+            vals = evaluate(n, alpha, pts, ExactContext())
+            idx = index_of(n)
+            labels = named
+            sums = [sum((_coef(n, t, lab.lower()) * vals[p, idx[lab]] for lab in labels), fmpq(0))
+                    for p in range(len(pts))]
+            rows[f"n={n},t={t}"] = all(s == 1 for s in sums)
+            ok &= rows[f"n={n},t={t}"]
+    return LineResult(ok, how="coefficients by exact collocation without symmetry (delta_n unknowns, full rank: "
+                      "unique), the printed sum (read from the transcription) evaluated at 6 fresh rational points of "
+                      "Omega^alpha",
+                      kind="exact-evidence", detail=rows)
+
+
+def symmetry_holds(n: int, t: fmpq, which: int) -> bool:
+    ok = True
+    for j in range(n):
+        if which == 1:
+            for i in range(j + 1, n):
+                ok &= _coef(n, t, f"r_{{{2 * n},{2 * n - i},{j}}}") == _coef(n, t, f"r_{{{2 * n},{i},{j}}}")
+        else:
+            col = "g" if which == 2 else "b"
+            for i in range(j, 2 * n - j):
+                ok &= _coef(n, t, f"{col}_{{{2 * n},{2 * n - i},{j}}}") == _coef(n, t, f"r_{{{2 * n},{2 * n - i},{j}}}")
+    return ok
+
+
+for _w in (1, 2, 3):
+    line_check(f"sec4_5-symmetry-{_w}")(lambda _w=_w: LineResult(
+        all(symmetry_holds(n, t, _w) for n in (1, 2, 3) for t in TS[:2]),
+        how="coefficients by exact collocation assuming no symmetry, n <= 3, two alpha", kind="exact-evidence",
+        detail={"n_max": 3, "ts": [str(t) for t in TS[:2]]}))
+
+
+def symmetry_partition(n: int) -> list[list[int]]:
+    """Classes of the delta_n functions of T_{2n} (internal indices) merged by the printed symmetry conditions
+    symmetry_condition_1..3 (union-find on the coefficient names)."""
+    labels = united_system(n)
+    idx = index_of(n)
+    parent = list(range(len(labels)))
+
+    def find(x: int) -> int:
+        while parent[x] != x:
+            x = parent[x]
+        return x
+
+    def union(a: str, b: str) -> None:
+        parent[find(idx[a])] = find(idx[b])
+
+    for j in range(n):
+        for i in range(j + 1, n):
+            union(f"r_{{{2 * n},{2 * n - i},{j}}}", f"r_{{{2 * n},{i},{j}}}")
+        for i in range(j, 2 * n - j):
+            union(f"g_{{{2 * n},{2 * n - i},{j}}}", f"r_{{{2 * n},{2 * n - i},{j}}}")
+            union(f"b_{{{2 * n},{2 * n - i},{j}}}", f"r_{{{2 * n},{2 * n - i},{j}}}")
+    groups: dict[int, list[int]] = {}
+    for k in range(len(labels)):
+        groups.setdefault(find(k), []).append(k)
+    return sorted(groups.values())
+
+
+def permutation_orbits(n: int) -> list[list[int]]:
+    """Orbits of the functions of T_{2n} under the six permutations of (u, v, w) (exponent vectors)."""
+    perms = [p for p in product(range(3), repeat=3) if len(set(p)) == 3]
+    groups: dict[tuple, list[int]] = {}
+    for k, lab in enumerate(united_system(n)):
+        e = exponents(lab)
+        pairs = ((e[0], e[1]), (e[2], e[3]), (e[4], e[5]))
+        groups.setdefault(min(tuple(pairs[p[m]] for m in range(3)) for p in perms), []).append(k)
+    return sorted(groups.values())
+
+
+def unknown_classes(n: int, pairs: list[tuple[int, int]] | None = None) -> tuple[int, bool, bool]:
+    """Number of classes of the printed symmetry conditions, whether each holds exactly one of the printed unknowns
+    ``pairs`` ((i, j) of r_{2n,2n-i,j}; default {j=0..n, i=j..n}), and whether the classes are the permutation
+    orbits."""
+    part = symmetry_partition(n)
+    idx = index_of(n)
+    pairs = pairs if pairs is not None else [(i, j) for j in range(n + 1) for i in range(j, n + 1)]
+    names = [f"r_{{{2 * n},{2 * n - i},{j}}}" for i, j in pairs]
+    if any(x not in idx for x in names):
+        return len(part), False, part == permutation_orbits(n)
+    reps = sorted(idx[x] for x in names)
+    one_each = all(len(set(g) & set(reps)) == 1 for g in part) and \
+        sorted(min(set(g) & set(reps)) for g in part) == reps
+    return len(part), one_each, part == permutation_orbits(n)
+
+
+@line_check("sec4_5-unknowns")
+def check_unknowns(override: dict[str, str] | None = None) -> LineResult:
+    """The unknowns {r_{2n,2n-i,j}}_{j=0,i=j}^{n,n} of both lines that print them (read from the transcriptions)."""
+    from paper_repro.printed.lines.read import bound, index_set
+
+    rows = {}
+    for n in range(1, 11):
+        sets = []
+        for tex in _texts({"sec4_5-unknowns", "sec4_5-closed-forms-index"}, override).values():
+            try:
+                (jv, jlo, jhi), (iv, ilo, ihi) = index_set(tex)
+            except ValueError as exc:
+                return LineResult(False, how="the unknowns read from the transcriptions, n <= 10", kind="exhaustive",
+                                  detail={"unread": str(exc)})
+            sets.append(sorted((i, j) for j in range(bound(jlo, n=n), bound(jhi, n=n) + 1)
+                               for i in range(bound(ilo, n=n, j=j), bound(ihi, n=n, j=j) + 1)))
+        c, one, orb = unknown_classes(n, sets[0])
+        rows[n] = (c, one and all(x == sets[0] for x in sets), orb)
+    ok = all(c == (n + 1) * (n + 2) // 2 and one and orb for n, (c, one, orb) in rows.items())
+    return LineResult(ok, how="union-find of the delta_n coefficients by symmetry_condition_1..3: (n+1)(n+2)/2 "
+                      "classes, one per member of {r_{2n,2n-i,j}}_{j=0,i=j}^{n,n}, equal to the orbits of the six "
+                      "permutations of (u, v, w) (n <= 10)", kind="exhaustive",
+                      detail={str(n): c for n, (c, _, _) in rows.items()})
+
+
+@line_check("sec4_5-matrix-sizes")
+def check_matrix_sizes() -> LineResult:
+    ok = True
+    for n in range(1, 13):
+        perms = list(product(range(3), repeat=3))
+        perms = [p for p in perms if len(set(p)) == 3]
+        orbits = set()
+        for lab in united_system(n):
+            e = exponents(lab)
+            pairs = [(e[0], e[1]), (e[2], e[3]), (e[4], e[5])]
+            orbits.add(min(tuple(pairs[p[k]] for k in range(3)) for p in perms))
+        # the orbits of level 0: those containing an R_{2n,2n-i,0}
+        lev0 = {min(tuple(((e[0], e[1]), (e[2], e[3]), (e[4], e[5]))[p[k]] for k in range(3)) for p in perms)
+                for e in (r_exponents(n, i, 0) for i in range(2 * n + 1))}
+        ok &= len(united_system(n)) == 3 * n * (n + 1) + 1
+        ok &= len(orbits) == (n + 1) * (n + 2) // 2
+        ok &= len(orbits) - len(lev0) == n * (n + 1) // 2
+    return LineResult(ok, how="orbits of T_{2n} under the six permutations of (u, v, w) (exponent vectors) and the "
+                      "orbits of level 0, n <= 12", kind="exhaustive", detail={"n_max": 12})
+
+
+# -- system of equations and derivatives ----------------------------------------------------------------------------
+def _d(poly: dict, k: int) -> dict:
+    """k-th derivative of sum q S^s C^c (S = sin(t/2), C = cos(t/2))."""
+    for _ in range(k):
+        out: dict = {}
+        for (s, c), q in poly.items():
+            if s:
+                out[(s - 1, c + 1)] = out.get((s - 1, c + 1), Q(0)) + q * Q(s, 2)
+            if c:
+                out[(s + 1, c - 1)] = out.get((s + 1, c - 1), Q(0)) - q * Q(c, 2)
+        poly = {m: q for m, q in out.items() if q}
+    return poly
+
+
+def y_derivative_at_0(e, r: int, su, cu, sx, cx) -> Q:
+    """d^r/dy^r of the monomial ``e`` under u = alpha - x, v = y, w = x - y at y = 0, by the printed chain rule."""
+    tot = Q(0)
+    base = su ** e[0] * cu ** e[1]
+    for k in range(r + 1):
+        dv = _d({(e[2], e[3]): Q(1)}, r - k)
+        dw = _d({(e[4], e[5]): Q(1)}, k)
+        v0 = sum((q for (s, c), q in dv.items() if s == 0), Q(0))
+        wx = sum((q * sx ** s * cx ** c for (s, c), q in dw.items()), Q(0))
+        tot += comb(r, k) * (-1) ** k * v0 * wx
+    return base * tot
+
+
+def _angle(q: Q) -> tuple[Q, Q]:
+    return Q(2 * q, 1 + q * q), Q(1 - q * q, 1 + q * q)
+
+
+@line_check("sec4_5-system")
+def check_system(override: dict[str, str] | None = None) -> LineResult:
+    """The system holds with the exact coefficients, and determines them given the symmetry conditions; the orders
+    r (``r=0,1,\\ldots,n``) and the right-hand side ``\\delta_{r,0}`` are read from the transcriptions."""
+    from paper_repro.printed.lines.read import bound, listed_range
+
+    t = _texts({"sec4_5-system", "sec4_5-system-r-range"}, override)
+    try:
+        r_lo, r_hi = listed_range(t["sec4_5-system-r-range"], "r")
+    except ValueError as exc:
+        return LineResult(False, how="the orders read from the transcription", detail={"unread": str(exc)})
+    if not re.search(r"=\\delta_\{r,0\}", t["sec4_5-system"].replace("%", "").replace(" ", "")):
+        return LineResult(False, how="the right-hand side read from the transcription",
+                          detail={"unread": "no =\\delta_{r,0}"})
+    ok, info = True, {}
+    for n in (1, 2, 3):
+        t = TS[0]
+        al = rational_alpha(t)
+        sa, ca = Q(int(al.sin_half.p), int(al.sin_half.q)), Q(int(al.cos_half.p), int(al.cos_half.q))
+        coef = {lab.coefficient: _full(n, t)[lab.coefficient] for lab in united_system(n)}
+        xs = [Q(m, 7 * int(t.q)) for m in range(1, 3 * n + 4)]  # tan(x/4), x in (0, alpha)
+        rows_full, rows_orbit = [], []
+        part = symmetry_partition(n)
+        for q in xs:
+            sx, cx = _angle(q)
+            su, cu = sa * cx - ca * sx, ca * cx + sa * sx  # (alpha - x)/2
+            for r in range(bound(r_lo, n=n), bound(r_hi, n=n) + 1):
+                vals = [y_derivative_at_0(exponents(lab), r, su, cu, sx, cx) for lab in united_system(n)]
+                lhs = sum((Q(int(coef[lab.coefficient].p), int(coef[lab.coefficient].q)) * v
+                           for lab, v in zip(united_system(n), vals)), Q(0))
+                ok &= lhs == (1 if r == 0 else 0)
+                rows_full.append(vals)
+                rows_orbit.append([sum((vals[k] for k in mem), Q(0)) for mem in part])
+
+        def rank(rows):
+            return fmpq_mat([[fmpq(x.numerator, x.denominator) for x in row] for row in rows]).rank()
+
+        info[str(n)] = {"rank_without_symmetry": rank(rows_full), "delta_n": len(united_system(n)),
+                        "rank_with_symmetry": rank(rows_orbit), "unknowns_with_symmetry": len(part)}
+        ok &= info[str(n)]["rank_with_symmetry"] == info[str(n)]["unknowns_with_symmetry"]
+    return LineResult(ok, how="exact y-derivatives at y = 0 (orders 0..n) of L with the exact coefficients at "
+                      f"tan(alpha/4) = {TS[0]} and 3n+3 rational x: delta_{{r,0}}; the system's rank in the orbit "
+                      "unknowns (symmetry_condition_1..3 imposed) is full, without them it is not",
+                      kind="exact-evidence", detail=info)
+
+
+@line_check("sec4_5-chain-rule")
+def check_chain_rule() -> LineResult:
+    """d^r/dy^r f(alpha - x, y, x - y) = sum_k C(r,k) (-1)^k d^r f / dv^(r-k) dw^k, as identities in (x, y)."""
+    ok = True
+    to_xy = ((-1, 0), (0, 1), (1, -1))  # (u, v, w) = (-x, y, x - y) up to the constant alpha (a phase)
+    for n in (1, 2):
+        for lab in united_system(n):
+            f = half_monomial(exponents(lab))
+            for r in range(n + 1):
+                direct = f.linear(to_xy)
+                for _ in range(r):
+                    direct = direct.diff(1)
+                formula = EP(2)
+                for k in range(r + 1):
+                    g = f
+                    for _ in range(r - k):
+                        g = g.diff(1)
+                    for _ in range(k):
+                        g = g.diff(2)
+                    formula = formula + g.linear(to_xy) * (comb(r, k) * (-1) ** k)
+                ok &= direct == formula
+    return LineResult(ok, how="exact exponential expansion of every function of T_{2n} (n <= 2), orders r <= n, "
+                      "compared as identities in (x, y) (u = alpha - x: the constant alpha only multiplies each "
+                      "exponential by a phase, the same on both sides)", kind="exhaustive", detail={"n_max": 2})
+
+
+@line_check("sec4_5-tan-polynomial")
+def check_tan_polynomial() -> LineResult:
+    """Surviving terms of the derivatives at y = 0 are forms of degree 2n in sin, cos of (alpha - x)/2 and x/2."""
+    ok = True
+    for n in range(1, 7):
+        for lab in united_system(n):
+            e = exponents(lab)
+            for r in range(n + 1):
+                for k in range(r + 1):
+                    dv = {m: q for m, q in _d({(e[2], e[3]): Q(1)}, r - k).items() if m[0] == 0}
+                    if not dv:
+                        continue
+                    for (s, c), _q in _d({(e[4], e[5]): Q(1)}, k).items():
+                        ok &= e[0] + e[1] + s + c == 2 * n
+    # cos(x/2) > 0 for x in [0, alpha], alpha < pi: x/2 < pi/2 (bound, no computation needed beyond that)
+    return LineResult(ok, how="exponent bookkeeping of the derivatives of the monomials (n <= 6, r <= n): every term "
+                      "not vanishing at v = 0 has total degree 2n in the four half-angle functions; each is linear in "
+                      "sin(x/2), cos(x/2), so dividing by cos^{2n}(x/2) gives a polynomial in tan(x/2)",
+                      kind="exhaustive",
+                      detail={"n_max": 6})
+
+
+def y_range_maps_into_omega(upper) -> tuple[bool, bool]:
+    """Parameter triangle x in [0, a], y in [0, upper(a, x)] under u = a - x, v = y, w = x - y: inside, onto."""
+    a = Q(3, 2)
+    inside = all(min(a - x, y, x - y) >= 0
+                 for x in (Q(k, 8) * a for k in range(9)) for y in (Q(m, 8) * upper(a, x) for m in range(9)))
+    corners = {(a - x, y, x - y) for x, y in ((Q(0), Q(0)), (a, Q(0)), (a, upper(a, a)))}
+    onto = corners == {(a, 0, 0), (0, 0, a), (0, a, 0)}
+    return inside, onto
+
+
+@line_check("sec4_5-y-range-1980")
+def check_y_range() -> LineResult:
+    printed, corrected = y_range_maps_into_omega(lambda a, x: a - x), y_range_maps_into_omega(lambda a, x: x)
+    return LineResult(all(printed), all(corrected), how="exact images of a grid of the parameter triangle "
+                      "(alpha = 3/2) under parametrization_for_partition_of_unity", kind="proof",
+                      detail={"printed_inside_onto": list(printed), "corrected_inside_onto": list(corrected),
+                              "witness": "x = alpha/4, y = alpha/2 gives w = -alpha/4"})
+
+
+# -- normalizing coefficients of level 0, 1 and the Examples ---------------------------------------------------------
+def _sc(t: fmpq) -> tuple[fmpq, fmpq]:
+    al = rational_alpha(t)
+    return al.sin_half, al.cos_half
+
+
+def c_indep(n: int, t: fmpq):
+    s, c = _sc(t)
+    polys = c_numerator_by_expansion(n)
+    return lambda i: polys[i](c) / s ** (2 * n)
+
+
+@cache
+def _orbit_coefs(n: int, t: fmpq) -> dict:
+    return coefficients(n, rational_alpha(t), "exact")
+
+
+@line_check("sec4_5-level-0")
+def check_level_0() -> LineResult:
+    ok1 = ok2 = True
+    for n in range(1, 6):
+        for t in TS:
+            C = c_indep(n, t)
+            co = _orbit_coefs(n, t)
+            for i in range(n + 1):
+                ok1 &= co[f"r_{{{2 * n},{2 * n - i},0}}"] == C(2 * n - i)
+            polys = c_numerator_by_expansion(n)
+            ok2 &= all(polys[2 * n - i] == polys[i] for i in range(n + 1))
+    return LineResult(ok1 and ok2, how="exact collocation coefficients vs univariate constants from the "
+                      "expansion of (X^2 + 2cXY + Y^2)^n, n <= 5, three alpha (c_{2n,2n-i} = c_{2n,i}: equal "
+                      "polynomials, a proof)", kind="exact-evidence",
+                      detail={"r_equals_c_2n_2n-i": ok1, "c_symmetric": ok2})
+
+
+@line_check("sec4_5-level-1")
+def check_level_1() -> LineResult:
+    ok, bad = True, []
+    for n in range(2, 7):
+        for t in TS:
+            s, c = _sc(t)
+            C = c_indep(n, t)
+            co = _orbit_coefs(n, t)
+            for i in range(1, n + 1):
+                good = co[f"r_{{{2 * n},{2 * n - i},1}}"] == pn.prop_level_1(n, i, s, c, C)
+                ok &= good
+                if not good:
+                    bad.append([n, str(t), i])
+    s, c = _sc(TS[0])
+    fails_at_n_1 = _orbit_coefs(1, TS[0])["r_{2,1,1}"] != pn.prop_level_1(1, 1, s, c, c_indep(1, TS[0]))
+    return LineResult(ok, how="printed formula (univariate constants by expansion) vs exact collocation, "
+                      "n = 2..6, i = 1..n, three alpha (and the bound n >= 2 is needed: n = 1 fails)",
+                      kind="exact-evidence", detail={"failing": bad, "formula_fails_at_n_1": fails_at_n_1})
+
+
+@cache
+def _closed_forms(n: int) -> dict:
+    from paper_repro.theory.closed_forms import closed_forms_cached
+
+    return closed_forms_cached(n)
+
+
+@cache
+def _closed_forms_proven(n: int) -> bool:
+    from paper_repro.theory.closed_forms import proof_cached
+
+    return bool(proof_cached(n)["proved"])
+
+
+#: tan(alpha/4) = k/81, k = 1..80: the identity points of :func:`example_check`.
+IDENTITY_TS = tuple(fmpq(k, 81) for k in range(1, 81))
+
+
+def _printed_example(label: str, part: str, n: int, s, c, C):
+    if part == "mid":
+        return pn.INTERMEDIATE[label][1](s, c, C)
+    if part == "final":
+        return pn.final_value(label, s, c) if label != "r_{2,1,1}" else 2 * s / s**2  # printed 2 sin / sin^2
+    return pn.final_value(label, s, c)  # part "c": the printed closed form of c_{2n,k}
+
+
+def example_check(label: str, part: str) -> LineResult:
+    """One '=' step of Examples normalizing_coefficients_n_1..3.
+
+    ``mid``: r = (printed combination of the c_{2n,i}); ``final``: (combination) = (closed form), i.e. the closed
+    form equals r; ``c``: c_{2n,k} = (printed closed form).  Compared (1) with the exact collocation coefficient at
+    three alpha (for ``c``: the expansion of (X^2 + 2cXY + Y^2)^n) and (2) as an identity in alpha with the closed
+    form proven for every alpha (:func:`paper_repro.theory.closed_forms.proof_cached`; for ``c``: the expansion).
+    Both sides times s^9 are polynomials of degree <= 24 in (s, c) (n <= 3), hence of degree <= 48 in t = tan(alpha/4)
+    after multiplying by (1 + t^2)^24: agreement at the 80 points t = k/81 proves the identity.
+    """
+    n = int(label.split("{")[1].split(",")[0]) // 2
+    k_of = int(label.split(",")[1])
+    ok_sample, vals = True, {}
+    for t in TS:
+        s, c = _sc(t)
+        C = c_indep(n, t)
+        got = _printed_example(label, part, n, s, c, C)
+        truth = C(k_of) if part == "c" else _orbit_coefs(n, t)[label]
+        ok_sample &= got == truth
+        vals[str(t)] = str(truth)
+    form = _closed_forms(n)[label]
+    proved = _closed_forms_proven(n)
+    ok_identity = True
+    for t in IDENTITY_TS:
+        s, c = _sc(t)
+        C = c_indep(n, t)
+        got = _printed_example(label, part, n, s, c, C)
+        truth = C(k_of) if part == "c" else form.numerator(c) / s**form.sin_power
+        ok_identity &= got == truth
+    kind = "proof" if ok_identity and (proved or part == "c") else "exact-evidence"
+    return LineResult(ok_sample and ok_identity, how="exact collocation coefficient (for c_{2n,i}: the expansion of "
+                      "(X^2 + 2cXY + Y^2)^n) at three rational alpha, and an identity in alpha against the closed form "
+                      "proven for every alpha (80 rational t = tan(alpha/4), degree bound 48)", kind=kind,
+                      detail={"values_at_t": vals, "identity_80_points": ok_identity,
+                              "closed_forms_proven": proved})
+
+
+for _lab in pn.INTERMEDIATE:
+    _slug = _lab.replace("_{", "").replace(",", "").replace("}", "")
+    line_check(f"sec4_5-ex-{_slug}-mid")(lambda _l=_lab: example_check(_l, "mid"))
+    if not _lab.endswith(",0}"):
+        line_check(f"sec4_5-ex-{_slug}-final")(lambda _l=_lab: example_check(_l, "final"))
+    else:
+        line_check(f"sec4_5-ex-{_slug}-c")(lambda _l=_lab: example_check(_l, "c"))
+
+
+@line_check("sec4_5-blending-def")
+def check_blending_def(override: dict[str, str] | None = None) -> LineResult:
+    """The index set of the normalized system (read from the transcription of its first row) names the non-central
+    functions of T_{2n}; the centre row names R-bar, G-bar, B-bar_{2n,n,n} (read), one function."""
+    from paper_repro.printed.lines.read import bound, index_set
+
+    texts = _texts({"sec4_5-blending-set", "sec4_5-blending-centre-set"}, override)
+    try:
+        (jv, jlo, jhi), (iv, ilo, ihi) = index_set(texts["sec4_5-blending-set"])
+    except ValueError as exc:
+        return LineResult(False, how="the index set read from the transcription, n <= 8", kind="exhaustive",
+                          detail={"unread": str(exc)})
+    colours = re.findall(r"\\overline\{([RGB])\}_\{2n,2n-i,j\}", texts["sec4_5-blending-set"])
+    centre_names = re.findall(r"\\overline\{([RGB])\}%?\s*_\{2n,n,n\}", texts["sec4_5-blending-centre-set"])
+    ok = (jv, iv) == ("j", "i") and sorted(colours) == ["B", "G", "R"] and sorted(centre_names) == ["B", "G", "R"]
+    for n in range(1, 9):
+        named = sorted(f"{x.lower()}_{{{2 * n},{2 * n - i},{j}}}" for x in colours
+                       for j in range(bound(jlo, n=n), bound(jhi, n=n) + 1)
+                       for i in range(bound(ilo, n=n, j=j), bound(ihi, n=n, j=j) + 1))
+        ok &= named == sorted(lab.coefficient for lab in united_system(n) if not lab.is_centre)
+        centre = [exponents(BasisLabel(X, n, n, n)) for X in centre_names]
+        ok &= len(set(centre)) == 1
+    return LineResult(ok, how="index set and centre read from the transcriptions vs the labels of T_{2n} (n <= 8); "
+                      "R_{2n,n,n}, G_{2n,n,n}, B_{2n,n,n} have the same exponent vector", kind="exhaustive",
+                      detail={"n_max": 8})
+
+
+
+
+# -- the printed chain sum and its value 0 (read from the transcription) ---------------------------------------------
+_CHAIN_SUM = re.compile(
+    r"\\sum_\{k=(?P<klo>[^{}]+)\}\^\{(?P<khi>[^{}]+)\}\s*\\dbinom\{(?P<btop>[^{}]+)\}\{(?P<bbot>[^{}]+)\}\s*"
+    r"\\left\(\s*(?P<base>-?\d+)\s*\\right\)\s*\^\{(?P<sexp>[^{}]+)\}.*?"
+    r"\\partial v\^\{(?P<pv>[^{}]+)\}\s*\\partial w\^\{(?P<pw>[^{}]+)\}\}.*?"
+    r"\\right\\vert\s*_\{y=(?P<y0>[^{}]+)\}", re.S)
+
+
+def read_chain_sum(tex: str) -> dict[str, str]:
+    """The parts of the printed chain sum (bounds, binomial, sign, orders in v and w, the point y, the right-hand
+    side and the range of x), as printed."""
+    from paper_repro.printed.lines.read import interval, right_hand_side
+
+    m = _CHAIN_SUM.search(tex)
+    if not m:
+        raise ValueError(f"not a chain sum: {tex[:60]!r}")
+    return {**m.groupdict(), "rhs": right_hand_side(tex), "x_range": interval(tex, "x")}
+
+
+def chain_sum_value(parts: dict, n: int, t: fmpq, r: int, hx: tuple[Q, Q]) -> Q:
+    """The printed left-hand side, evaluated exactly: L = sum of the normalized functions of T_{2n} (coefficients by
+    the exact collocation solve at tan(alpha/4) = t, no symmetry used) at u = alpha - x, v = y0 = 0, w = x."""
+    from paper_repro.printed.lines.read import bound
+
+    if parts["y0"].strip() != "0":
+        raise ValueError(f"evaluation point y = {parts['y0']!r} not read as 0")
+    al = rational_alpha(t)
+    sa, ca = Q(int(al.sin_half.p), int(al.sin_half.q)), Q(int(al.cos_half.p), int(al.cos_half.q))
+    sx, cx = hx
+    su, cu = sa * cx - ca * sx, ca * cx + sa * sx  # half angles of u = alpha - x
+    coef = _full(n, t)
+    total = Q(0)
+    for k in range(bound(parts["klo"], r=r), bound(parts["khi"], r=r) + 1):
+        weight = comb(bound(parts["btop"], r=r, k=k), bound(parts["bbot"], r=r, k=k)) * \
+            int(parts["base"]) ** bound(parts["sexp"], r=r, k=k)
+        pv, pw = bound(parts["pv"], r=r, k=k), bound(parts["pw"], r=r, k=k)
+        for lab in united_system(n):
+            e = exponents(lab)
+            v0 = sum((q for (s, _c), q in _d({(e[2], e[3]): Q(1)}, pv).items() if s == 0), Q(0))
+            if v0 == 0:
+                continue
+            wx = sum((q * sx ** s * cx ** c for (s, c), q in _d({(e[4], e[5]): Q(1)}, pw).items()), Q(0))
+            c = coef[lab.coefficient]
+            total += weight * Q(int(c.p), int(c.q)) * su ** e[0] * cu ** e[1] * v0 * wx
+    return total
+
+
+@line_check("sec4_5-chain-sum")
+def check_chain_sum(verbatim: str | None = None, orders: str | None = None) -> LineResult:
+    """The printed sum_k C(r,k) (-1)^k d^r L / dv^(r-k) dw^k at y = 0 equals the printed right-hand side 0 for every
+    order r of the printed range (r = 1..n, line sec4_5-parametrization-restated) at x = 0, alpha (the printed
+    ends) and three interior x: everything read from the transcriptions (``verbatim``/``orders`` replace them)."""
+    from paper_repro.printed.lines.read import bound, listed_range
+
+    lines = {x.id: x.verbatim for x in pl.LINES}
+    how = "the printed chain sum read from the transcription"
+    try:
+        parts = read_chain_sum(verbatim if verbatim is not None else lines["sec4_5-chain-sum"])
+        r_lo, r_hi = listed_range(orders if orders is not None else lines["sec4_5-parametrization-restated"], "r")
+        if parts["y0"].strip() != "0":
+            raise ValueError(f"evaluation point y = {parts['y0']!r}, the check evaluates at y = 0 only")
+    except ValueError as exc:  # an unread or unexpected transcription fails the line, saying why
+        return LineResult(False, how=how, kind="exact-evidence", detail={"unread": str(exc)})
+    rhs = Q(parts["rhs"]) if parts["rhs"].lstrip("-").isdigit() else None
+    bad, cases = [], 0
+    for n in (1, 2, 3):
+        for t in TS[:2]:
+            al = rational_alpha(t)
+            ends = {"0": (Q(0), Q(1)), "\\alpha": (Q(int(al.sin_half.p), int(al.sin_half.q)),
+                                                   Q(int(al.cos_half.p), int(al.cos_half.q)))}
+            xs = [ends.get(parts["x_range"][0]), ends.get(parts["x_range"][1])]
+            xs += [_angle(Q(int(t.p), int(t.q)) * Q(m, 4)) for m in (1, 2, 3)]  # tan(x/4) = t m/4: 0 < x < alpha
+            for r in range(bound(r_lo, n=n), bound(r_hi, n=n) + 1):
+                for hx in xs:
+                    cases += 1
+                    value = None if hx is None else chain_sum_value(parts, n, t, r, hx)
+                    if rhs is None or value != rhs:
+                        bad.append({"n": n, "t": str(t), "r": r, "value": str(value)})
+    return LineResult(not bad, how="the printed sum (bounds, binomial, sign, orders, point y = 0, right-hand side, x "
+                      "range, and r from the restated parametrization, all read from the transcriptions) evaluated "
+                      "exactly with the collocation coefficients at tan(alpha/4) in {1/3, 2/5}, n = 1..3, at the "
+                      "ends and three interior x", kind="exact-evidence",
+                      detail={"cases": cases, "mismatches": len(bad), "first_mismatches": bad[:2]})
+
+
+@line_check("sec4_5-cos-nonzero")
+def check_cos_nonzero(verbatim: str | None = None) -> LineResult:
+    """cos^{2n}(x/2) != 0 for x in the printed interval (read from the transcription): with x in [0, alpha] and
+    alpha in (0, pi), x/2 lies in [0, pi/2), where cos is positive (decreasing, so cos(x/2) >= cos(alpha/2) > 0);
+    the bound is the end alpha, checked exactly to be positive at rational alpha up to 4 atan(999/1000)."""
+    from paper_repro.printed.lines.read import interval
+
+    tex = verbatim if verbatim is not None else {x.id: x.verbatim for x in pl.LINES}["sec4_5-cos-nonzero"]
+    try:
+        lo, hi = interval(tex, "x")
+    except ValueError as exc:
+        return LineResult(False, how="the interval read from the transcription", kind="proof",
+                          detail={"unread": str(exc)})
+    if "\\neq0" not in tex.replace(" ", "") or (lo, hi) != ("0", "\\alpha"):
+        return LineResult(False, how="the interval read from the transcription", kind="proof",
+                          detail={"interval": [lo, hi]})
+    ends_positive = all(rational_alpha(t).cos_half > 0 for t in (fmpq(1, 1000), fmpq(1, 2), fmpq(999, 1000)))
+    return LineResult(ends_positive, how="the interval [0, alpha] read from the transcription: x/2 in "
+                      "[0, alpha/2] with alpha < pi, where cos is positive (decreasing: its minimum is cos(alpha/2) > "
+                      "0, exact at rational alpha near 0 and pi)", kind="proof",
+                      detail={"interval": [lo, hi], "cos_half_alpha_positive": ends_positive})
+
+__all__ = ["y_range_maps_into_omega"]
