@@ -16,9 +16,10 @@ from functools import cache
 from itertools import product
 from math import comb
 
+import sympy
 from flint import fmpq, fmpq_mat
 
-from paper_repro.claims.lines import LineResult, line_check
+from paper_repro.claims.lines import CHECKS, LineResult, line_check
 from paper_repro.claims.lines.sec4_5 import EP, TS, Q, _texts, half_monomial
 from paper_repro.core.basis import evaluate
 from paper_repro.core.context import ExactContext
@@ -26,8 +27,16 @@ from paper_repro.core.domain import rational_alpha, sample_rational_points
 from paper_repro.core.labels import BasisLabel, exponents, index_of, r_exponents, united_system
 from paper_repro.core.normalization import coefficients, solve_full_exact
 from paper_repro.core.univariate import c_numerator_by_expansion
-from paper_repro.printed import normalization as pn
+from paper_repro.printed.lines import lines_of, verbatim
 from paper_repro.printed.lines import sec4_5 as pl
+from paper_repro.printed.lines.sec5_latex import (
+    LatexMathError,
+    Relation,
+    listed_range,
+    parse,
+    parse_relation,
+    unlabelled,
+)
 
 
 # ---------------------------------------------------------------------------------------------------------------
@@ -370,7 +379,11 @@ def check_y_range() -> LineResult:
                               "witness": "x = alpha/4, y = alpha/2 gives w = -alpha/4"})
 
 
-# -- normalizing coefficients of level 0, 1 and the Examples ---------------------------------------------------------
+# -- normalizing coefficients of level 0, 1 and the Examples: the printed formulas parsed ----------------------------
+S_, C_ = sympy.symbols("S C")  # sin(alpha/2), cos(alpha/2)
+_ALPHA = sympy.Symbol("alpha")
+
+
 def _sc(t: fmpq) -> tuple[fmpq, fmpq]:
     al = rational_alpha(t)
     return al.sin_half, al.cos_half
@@ -387,43 +400,6 @@ def _orbit_coefs(n: int, t: fmpq) -> dict:
     return coefficients(n, rational_alpha(t), "exact")
 
 
-@line_check("sec4_5-level-0")
-def check_level_0() -> LineResult:
-    ok1 = ok2 = True
-    for n in range(1, 6):
-        for t in TS:
-            C = c_indep(n, t)
-            co = _orbit_coefs(n, t)
-            for i in range(n + 1):
-                ok1 &= co[f"r_{{{2 * n},{2 * n - i},0}}"] == C(2 * n - i)
-            polys = c_numerator_by_expansion(n)
-            ok2 &= all(polys[2 * n - i] == polys[i] for i in range(n + 1))
-    return LineResult(ok1 and ok2, how="exact collocation coefficients vs univariate constants from the "
-                      "expansion of (X^2 + 2cXY + Y^2)^n, n <= 5, three alpha (c_{2n,2n-i} = c_{2n,i}: equal "
-                      "polynomials, a proof)", kind="exact-evidence",
-                      detail={"r_equals_c_2n_2n-i": ok1, "c_symmetric": ok2})
-
-
-@line_check("sec4_5-level-1")
-def check_level_1() -> LineResult:
-    ok, bad = True, []
-    for n in range(2, 7):
-        for t in TS:
-            s, c = _sc(t)
-            C = c_indep(n, t)
-            co = _orbit_coefs(n, t)
-            for i in range(1, n + 1):
-                good = co[f"r_{{{2 * n},{2 * n - i},1}}"] == pn.prop_level_1(n, i, s, c, C)
-                ok &= good
-                if not good:
-                    bad.append([n, str(t), i])
-    s, c = _sc(TS[0])
-    fails_at_n_1 = _orbit_coefs(1, TS[0])["r_{2,1,1}"] != pn.prop_level_1(1, 1, s, c, c_indep(1, TS[0]))
-    return LineResult(ok, how="printed formula (univariate constants by expansion) vs exact collocation, "
-                      "n = 2..6, i = 1..n, three alpha (and the bound n >= 2 is needed: n = 1 fails)",
-                      kind="exact-evidence", detail={"failing": bad, "formula_fails_at_n_1": fails_at_n_1})
-
-
 @cache
 def _closed_forms(n: int) -> dict:
     from paper_repro.theory.closed_forms import closed_forms_cached
@@ -438,62 +414,260 @@ def _closed_forms_proven(n: int) -> bool:
     return bool(proof_cached(n)["proved"])
 
 
-#: tan(alpha/4) = k/81, k = 1..80: the identity points of :func:`example_check`.
-IDENTITY_TS = tuple(fmpq(k, 81) for k in range(1, 81))
+def _poly(p, var) -> sympy.Expr:
+    return sum((sympy.Rational(int(a.p), int(a.q)) * var**k for k, a in enumerate(p.coeffs())), sympy.Integer(0))
 
 
-def _printed_example(label: str, part: str, n: int, s, c, C):
-    if part == "mid":
-        return pn.INTERMEDIATE[label][1](s, c, C)
-    if part == "final":
-        return pn.final_value(label, s, c) if label != "r_{2,1,1}" else 2 * s / s**2  # printed 2 sin / sin^2
-    return pn.final_value(label, s, c)  # part "c": the printed closed form of c_{2n,k}
+def _ints(args) -> tuple[int, ...]:
+    out = []
+    for a in args:
+        if not (isinstance(a, sympy.Integer) or (a.is_number and a.is_integer)):
+            raise LatexMathError(f"index {a} is not an integer")
+        out.append(int(a))
+    return tuple(out)
 
 
-def example_check(label: str, part: str) -> LineResult:
-    """One '=' step of Examples normalizing_coefficients_n_1..3.
+def c_truth(n2: int, i: int) -> sympy.Expr:
+    """c_{2n,i}^alpha = P_i(cos(alpha/2)) / sin^{2n}(alpha/2), P_i from the expansion of (X^2 + 2cXY + Y^2)^n
+    (:func:`paper_repro.core.univariate.c_numerator_by_expansion`), in the symbols S, C."""
+    if n2 < 2 or n2 % 2 or not 0 <= i <= n2:
+        raise LatexMathError(f"no univariate constant c_{{{n2},{i}}}")
+    return _poly(c_numerator_by_expansion(n2 // 2)[i], C_) / S_**n2
 
-    ``mid``: r = (printed combination of the c_{2n,i}); ``final``: (combination) = (closed form), i.e. the closed
-    form equals r; ``c``: c_{2n,k} = (printed closed form).  Compared (1) with the exact collocation coefficient at
-    three alpha (for ``c``: the expansion of (X^2 + 2cXY + Y^2)^n) and (2) as an identity in alpha with the closed
-    form proven for every alpha (:func:`paper_repro.theory.closed_forms.proof_cached`; for ``c``: the expansion).
-    Both sides times s^9 are polynomials of degree <= 24 in (s, c) (n <= 3), hence of degree <= 48 in t = tan(alpha/4)
-    after multiplying by (1 + t^2)^24: agreement at the 80 points t = k/81 proves the identity.
-    """
-    n = int(label.split("{")[1].split(",")[0]) // 2
-    k_of = int(label.split(",")[1])
-    ok_sample, vals = True, {}
+
+def r_truth(n2: int, k: int, j: int) -> sympy.Expr:
+    """r_{2n,k,j}^alpha in closed form P(C)/S^m, proven for every alpha (:mod:`paper_repro.theory.closed_forms`);
+    a name that is not a coefficient of T_{2n} is refused."""
+    if n2 < 2 or n2 % 2:
+        raise LatexMathError(f"r_{{{n2},{k},{j}}}: no order")
+    forms = _closed_forms(n2 // 2)
+    label = f"r_{{{n2},{k},{j}}}"
+    if label not in forms:  # r_{2n,i,j} with i < n: the same orbit as r_{2n,2n-i,j} (symmetry_condition_1)
+        mirror = f"r_{{{n2},{n2 - k},{j}}}"
+        if label not in {lab.coefficient for lab in united_system(n2 // 2)} or mirror not in forms:
+            raise LatexMathError(f"{label} is not a normalizing coefficient")
+        label = mirror
+    f = forms[label]
+    return _poly(f.numerator, C_) / S_**f.sin_power
+
+
+def in_s_c(expr: sympy.Expr, r_values=None, c_values=None) -> sympy.Expr:
+    """A parsed expression with sin(alpha/2) -> S, cos(alpha/2) -> C, the named objects c_{2n,i}, r_{2n,k,j} replaced
+    by their independent values (:func:`c_truth`, :func:`r_truth`, or the given functions); anything else (alpha
+    left over, an unknown name, a free letter such as a blank ``XXX``) is refused."""
+    e = expr.subs({sympy.sin(_ALPHA / 2): S_, sympy.cos(_ALPHA / 2): C_})
+    rv, cv = r_values or r_truth, c_values or c_truth
+    rep = {}
+    for a in e.atoms(sympy.core.function.AppliedUndef):
+        name = a.func.__name__
+        if name == "c" and len(a.args) == 2:
+            rep[a] = cv(*_ints(a.args))
+        elif name == "r" and len(a.args) == 3:
+            rep[a] = rv(*_ints(a.args))
+        else:
+            raise LatexMathError(f"unknown object {a}")
+    e = e.xreplace(rep)
+    if e.free_symbols - {S_, C_}:
+        raise LatexMathError(f"unread symbols {sorted(map(str, e.free_symbols - {S_, C_}))}")
+    return e
+
+
+def identically_zero(e: sympy.Expr) -> bool:
+    """e (a rational function of S = sin(alpha/2), C = cos(alpha/2)) vanishes for every alpha: its numerator reduced
+    modulo S^2 + C^2 - 1 is the zero polynomial."""
+    num, _den = sympy.fraction(sympy.together(e))
+    rem = sympy.reduced(sympy.expand(num), [S_**2 + C_**2 - 1], S_, C_, order="lex")[1]
+    return sympy.expand(rem) == 0
+
+
+def at_alpha(e: sympy.Expr, t: fmpq) -> sympy.Rational:
+    s, c = _sc(t)
+    return e.subs({S_: sympy.Rational(int(s.p), int(s.q)), C_: sympy.Rational(int(c.p), int(c.q))})
+
+
+def _collocation_r(t: fmpq):
+    def value(n2: int, k: int, j: int) -> sympy.Expr:
+        co = _orbit_coefs(n2 // 2, t)
+        label = f"r_{{{n2},{k},{j}}}"
+        if label not in co:
+            raise LatexMathError(f"{label} is not a normalizing coefficient")
+        x = co[label]
+        return sympy.Rational(int(x.p), int(x.q))
+    return value
+
+
+def _collocation_c(t: fmpq):
+    def value(n2: int, i: int) -> sympy.Expr:
+        x = c_indep(n2 // 2, t)(i)
+        return sympy.Rational(int(x.p), int(x.q))
+    return value
+
+
+def chain_holds(parts: list, head=None) -> tuple[bool, bool, dict]:
+    """Every part of a printed chain ``a = b = ...`` (and the head ``head``, the coefficient the chain is about) is
+    the same function of alpha: (1) an identity in alpha with c_{2n,i} by expansion and r_{2n,k,j} in the closed
+    form proven for every alpha, (2) at three rational-tangent alpha with r_{2n,k,j} by exact collocation."""
+    every = list(parts) + ([head] if head is not None else [])
+    if len(every) < 2:
+        raise LatexMathError("no chain of equalities")
+    if not any(e.atoms(sympy.core.function.AppliedUndef) for e in every):
+        raise LatexMathError("the chain names no normalizing coefficient or univariate constant")
+    vals = [in_s_c(e) for e in every]
+    identity = all(identically_zero(vals[0] - v) for v in vals[1:])
+    samples = {}
     for t in TS:
-        s, c = _sc(t)
-        C = c_indep(n, t)
-        got = _printed_example(label, part, n, s, c, C)
-        truth = C(k_of) if part == "c" else _orbit_coefs(n, t)[label]
-        ok_sample &= got == truth
-        vals[str(t)] = str(truth)
-    form = _closed_forms(n)[label]
-    proved = _closed_forms_proven(n)
-    ok_identity = True
-    for t in IDENTITY_TS:
-        s, c = _sc(t)
-        C = c_indep(n, t)
-        got = _printed_example(label, part, n, s, c, C)
-        truth = C(k_of) if part == "c" else form.numerator(c) / s**form.sin_power
-        ok_identity &= got == truth
-    kind = "proof" if ok_identity and (proved or part == "c") else "exact-evidence"
-    return LineResult(ok_sample and ok_identity, how="exact collocation coefficient (for c_{2n,i}: the expansion of "
-                      "(X^2 + 2cXY + Y^2)^n) at three rational alpha, and an identity in alpha against the closed form "
-                      "proven for every alpha (80 rational t = tan(alpha/4), degree bound 48)", kind=kind,
-                      detail={"values_at_t": vals, "identity_80_points": ok_identity,
-                              "closed_forms_proven": proved})
+        got = [in_s_c(e, _collocation_r(t), _collocation_c(t)) for e in every]
+        got = [at_alpha(g, t) for g in got]
+        samples[str(t)] = all(g == got[0] for g in got[1:])
+    return identity, all(samples.values()), samples
 
 
-for _lab in pn.INTERMEDIATE:
-    _slug = _lab.replace("_{", "").replace(",", "").replace("}", "")
-    line_check(f"sec4_5-ex-{_slug}-mid")(lambda _l=_lab: example_check(_l, "mid"))
-    if not _lab.endswith(",0}"):
-        line_check(f"sec4_5-ex-{_slug}-final")(lambda _l=_lab: example_check(_l, "final"))
-    else:
-        line_check(f"sec4_5-ex-{_slug}-c")(lambda _l=_lab: example_check(_l, "c"))
+def _rel(tex: str) -> Relation:
+    return parse_relation(tex)
+
+
+def example_check(check_id: str) -> LineResult:
+    """One line of Examples normalizing_coefficients_n_1..3, parsed from its transcription: every part of the printed
+    chain equals the others and, for a closed form continuing a chain (``-final``), the coefficient named at the
+    head of that chain (read from the line ``-mid``).  Univariate constants by expansion, coefficients in the
+    closed form proven for every alpha (an identity in alpha: a proof) and by exact collocation at three alpha."""
+    how = ("the printed chain parsed (sec5_latex) and compared part by part: an identity in alpha (numerators modulo "
+           "S^2 + C^2 - 1) with c_{2n,i} from (X^2 + 2cXY + Y^2)^n and r_{2n,k,j} in the closed form proven for every "
+           "alpha, and exact collocation at tan(alpha/4) in {1/3, 2/5, 1/7}")
+    (ln,) = lines_of(check_id)
+    try:
+        rel = _rel(ln.verbatim)
+        if set(rel.ops) != {"="}:
+            raise LatexMathError(f"relations {rel.ops}, the Example prints equalities")
+        head = None
+        if check_id.endswith("-final"):
+            head_rel = _rel(verbatim(ln.id.replace("-final", "-mid")))
+            head = head_rel.parts[0]
+            if not (isinstance(head, sympy.core.function.AppliedUndef) and head.func.__name__ == "r"):
+                raise LatexMathError(f"the chain's head {head} is not a coefficient r")
+        identity, sampled, samples = chain_holds(rel.parts, head)
+    except (LatexMathError, ValueError, TypeError, ZeroDivisionError) as exc:
+        return LineResult(False, how=how, kind="proof", detail={"unread": str(exc)[:200]})
+    n2 = max(int(a.args[0]) for p in rel.parts + ([head] if head is not None else [])
+             for a in p.atoms(sympy.core.function.AppliedUndef))
+    proven = _closed_forms_proven(n2 // 2)
+    ok = identity and sampled
+    correct = None
+    if ln.status == "erratum":  # the corrected line (erratum["corrected_tex"]) read and checked the same way
+        try:
+            c_rel = _rel(ln.erratum["corrected_tex"])
+            c_id, c_s, _ = chain_holds(c_rel.parts, head)
+            correct = c_id and c_s and not unlabelled(ln.erratum["corrected_tex"])
+        except (LatexMathError, KeyError):
+            correct = False
+        ok = ok and not unlabelled(ln.verbatim)
+    return LineResult(ok, correct, how=how, kind="proof" if (identity and proven) else "exact-evidence",
+                      detail={"identity_in_alpha": identity, "collocation_at_3_alpha": samples,
+                              "closed_forms_proven": proven, "without_superscript_alpha": unlabelled(ln.verbatim)})
+
+
+for _line in pl.LINES:
+    if _line.check and _line.check.startswith("sec4_5-ex-") and _line.check not in CHECKS:
+        line_check(_line.check)(lambda _c=_line.check: example_check(_c))
+
+
+def _cases(tex: str) -> tuple[sympy.Expr, str]:
+    """A row ``expression, & condition`` of the cases of eq. level_1_coefficients."""
+    k = tex.find(", &")
+    if k < 0:
+        raise LatexMathError("no ', &' between the formula and its condition")
+    return parse(tex[:k]), tex[k + 3:].replace("\\\\", "").strip()
+
+
+def _condition_values(cond: str, n: int) -> list[int]:
+    i, n_ = sympy.Symbol("i"), sympy.Symbol("n")
+    if "\\ldots" in cond:
+        _v, lo, hi = listed_range(cond, "i")
+        return list(range(int(lo.subs(n_, n)), int(hi.subs(n_, n)) + 1))
+    rel = parse_relation(cond.rstrip(".,").strip())
+    if rel.ops != ["="] or rel.parts[0] != i or not rel.parts[1].is_number:
+        raise LatexMathError(f"condition {cond!r} not read")
+    return [int(rel.parts[1])]
+
+
+@line_check("sec4_5-level-0")
+def check_level_0() -> LineResult:
+    """Remark normalizing_coeff_of_level_0, both lines parsed: r_{2n,2n-i,0} = c_{2n,2n-i} = c_{2n,i} for the printed
+    range of i, every n = 1..8: identities in alpha (closed forms proven for every alpha, expansion of c)."""
+    how = "both lines parsed; each part an identity in alpha for every i of the printed range, n = 1..8"
+    n_, i_ = sympy.Symbol("n"), sympy.Symbol("i")
+    try:
+        t1 = verbatim("sec4_5-level0-r-c").replace("\\[", " ")
+        t2 = verbatim("sec4_5-level0-c-c")
+        k = t2.find(",~\\forall")
+        if k < 0:
+            raise LatexMathError("no quantifier ',~\\forall' read")
+        _v, lo, hi = listed_range(t2[k:], "i")
+        r1, r2 = parse_relation(t1), parse_relation(t2[:k])
+        if r1.ops != ["="] or r2.ops != ["="] or r1.parts[1] != r2.parts[0]:
+            raise LatexMathError("the two lines do not continue one chain")
+        rows, ok = {}, True
+        for n in range(1, 9):
+            good = True
+            for i in range(int(lo.subs(n_, n)), int(hi.subs(n_, n)) + 1):
+                parts = [p.subs({n_: n, i_: i}) for p in r1.parts + r2.parts[1:]]
+                vals = [in_s_c(p) for p in parts]
+                good &= all(identically_zero(vals[0] - v) for v in vals[1:])
+            rows[str(n)] = good
+            ok &= good
+    except (LatexMathError, ValueError, TypeError) as exc:
+        return LineResult(False, how=how, kind="exhaustive", detail={"unread": str(exc)[:200]})
+    return LineResult(ok, how=how, kind="exhaustive", detail={"per_n": rows, "i_range": [str(lo), str(hi)]})
+
+
+@line_check("sec4_5-level-1")
+def check_level_1() -> LineResult:
+    """Proposition prop:level_1_coefficients parsed (the order bound n >= 2, the set {r_{2n,2n-i,1}}_{i=1}^{n}, the
+    two cases of eq. level_1_coefficients with their conditions): for n = bound..7 and every i of the set the case
+    whose condition holds is the coefficient (identity in alpha against the closed form proven for every alpha,
+    and exact collocation at three alpha for n <= 5); the bound is sharp (the formula fails at n = bound - 1)."""
+    how = ("the proposition parsed; n = lower bound..7, every i, identity in alpha with the proven closed forms and "
+           "exact collocation at 3 alpha (n <= 5); the formula fails one order below the printed bound")
+    n_, i_ = sympy.Symbol("n"), sympy.Symbol("i")
+    try:
+        rng = verbatim("sec4_5-level1-range")
+        dollar = [s for s in rng.split("$")[1::2]]
+        bound_rel = parse_relation(dollar[0])
+        if bound_rel.ops != [">="] or bound_rel.parts[0] != n_ or not bound_rel.parts[1].is_number:
+            raise LatexMathError(f"order bound {dollar[0]!r} not read")
+        n_lo = int(bound_rel.parts[1])
+        m = re.search(r"r_\{2n,2n-i,1\}%?\s*\^\{\\alpha\}\s*\\right\\\}\s*_\{i=([^{}]+)\}\s*\^\{([^{}]+)\}", rng)
+        if not m:
+            raise LatexMathError("the set {r_{2n,2n-i,1}}_{i=..}^{..} not read")
+        i_lo, i_hi = parse(m.group(1)), parse(m.group(2))
+        rows = [_cases(verbatim("sec4_5-level1-i1")), _cases(verbatim("sec4_5-level1-i"))]
+
+        def formula(n: int, i: int) -> sympy.Expr:
+            hit = [e for e, cond in rows if i in _condition_values(cond, n)]
+            if len(hit) != 1:
+                raise LatexMathError(f"n = {n}, i = {i}: {len(hit)} cases apply")
+            return hit[0].subs({n_: n, i_: i})
+
+        ok, bad = True, []
+        for n in range(n_lo, 8):
+            for i in range(int(i_lo.subs(n_, n)), int(i_hi.subs(n_, n)) + 1):
+                label = sympy.Function("r")(2 * n, 2 * n - i, 1)
+                printed = formula(n, i)
+                good = identically_zero(in_s_c(printed) - in_s_c(label))
+                if n <= 5:
+                    good &= chain_holds([printed], label)[1]
+                ok &= good
+                if not good:
+                    bad.append([n, i])
+        below = n_lo - 1
+        sharp = below < 1 or not all(identically_zero(in_s_c(formula(below, i)) -
+                                                      in_s_c(sympy.Function("r")(2 * below, 2 * below - i, 1)))
+                                     for i in range(int(i_lo.subs(n_, below)), int(i_hi.subs(n_, below)) + 1))
+    except (LatexMathError, ValueError, TypeError, IndexError) as exc:
+        return LineResult(False, how=how, kind="exhaustive", detail={"unread": str(exc)[:200]})
+    how = how.replace("n = lower bound..7", f"n = {n_lo}..7")
+    return LineResult(ok and sharp, how=how, kind="exhaustive",
+                      detail={"n_range": [n_lo, 7], "failing": bad, "fails_one_order_below_the_bound": sharp})
 
 
 @line_check("sec4_5-blending-def")

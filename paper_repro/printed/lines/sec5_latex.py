@@ -1,0 +1,250 @@
+"""A reader of the formulas of Section sec:partition_of_unity (source lines 1907-2167) into sympy objects.
+
+Written to the contract of the shared reader ``paper_repro.printed.latex_math`` (common brief; not on main when this
+was written), restricted to the notation of Section 5, so that the checks of
+:mod:`paper_repro.claims.lines.sec5` parse each printed formula instead of retyping it:
+
+* :func:`parse` -- one expression: integers, ``+``/``-``, juxtaposition (a product), ``\\frac``/``\\dfrac``,
+  ``^{..}`` powers, groups ``{..}`` and ``\\left( .. \\right)``, ``\\sin``/``\\cos``/``\\tan`` with an optional power
+  ``\\sin^{k}`` and the next atom as argument (``\\sin^{2}\\frac{\\alpha}{2}`` is ``sin(alpha/2)**2``), greek
+  letters (Symbols ``alpha``, ...), single latin letters (Symbols), and indexed names ``c_{2n,i}^{\\alpha}`` ->
+  ``Function("c")(2*n, i)`` (names ``r``, ``g``, ``b``, ``c``, ``R``, ``G``, ``B``; the superscript ``\\alpha`` is the
+  notation's label, not a power).  ``%``, ``&``, ``\\\\``, ``~``, ``\\left``/``\\right``, ``\\displaystyle`` are
+  ignored.  Anything else raises :class:`LatexMathError` naming the unread part (a blank ``XXX`` is three symbols
+  multiplied: the checks refuse an expression without the objects they compare).
+* :func:`parse_relation` -- a chain ``a = b = c`` (also ``\\neq``, ``\\leq``, ``\\geq``, ``<``, ``>``): every part.
+* :func:`listed_range` -- a listed range ``i=j+1,j+2,\\ldots,n-1`` -> ``(var, first, last)`` (sympy), refusing an
+  empty item (a doubled comma), a step other than one, or a missing ``\\ldots``.
+* :func:`unlabelled` -- the indexed names printed without the superscript ``\\alpha`` of the notation.
+
+>>> parse(r"\\frac{2\\cos\\frac{\\alpha}{2}}{\\sin ^{2}\\frac{\\alpha}{2}}")
+2*cos(alpha/2)/sin(alpha/2)**2
+>>> parse_relation(r"r_{2,1,0}^{\\alpha} & =c_{2,1}^{\\alpha}").parts
+[r(2, 1, 0), c(2, 1)]
+>>> listed_range(r"~i=j+1,j+2,\\ldots,n-1,", "i")
+(i, j + 1, n - 1)
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+
+import sympy
+
+GREEK = ("alpha", "beta", "gamma", "delta", "varrho", "mu", "lambda", "tau")
+NAMES = ("r", "g", "b", "c", "R", "G", "B")
+TRIG = {"sin": sympy.sin, "cos": sympy.cos, "tan": sympy.tan}
+RELATIONS = {"=": "=", "\\neq": "!=", "\\leq": "<=", "\\geq": ">=", "<": "<", ">": ">"}
+_TOKEN = re.compile(r"\\[A-Za-z]+|\d+|[A-Za-z]|[{}()\[\]^_+\-=,<>]|\S")
+_IGNORED = ("\\left", "\\right", "\\displaystyle", "\\limits", "\\,", "\\;", "\\!", "\\ ")
+
+
+class LatexMathError(ValueError):
+    """A part of the LaTeX that the reader does not read (named in the message)."""
+
+
+def _tokens(tex: str) -> list[str]:
+    text = tex.replace("\\[", " ").replace("\\]", " ").replace("%", " ").replace("\\\\", " ")
+    text = text.replace("&", " ").replace("~", " ")
+    for w in ("\\,", "\\;", "\\!", "\\ "):
+        text = text.replace(w, " ")
+    out = [t for t in _TOKEN.findall(text) if t not in _IGNORED and not t.isspace()]
+    return [t for t in out if t not in ("\\left", "\\right")]
+
+
+@dataclass
+class _Parser:
+    toks: list[str]
+    pos: int = 0
+    unlabelled: list[str] = field(default_factory=list)
+
+    def peek(self) -> str | None:
+        return self.toks[self.pos] if self.pos < len(self.toks) else None
+
+    def take(self, want: str | None = None) -> str:
+        t = self.peek()
+        if t is None or (want is not None and t != want):
+            raise LatexMathError(f"expected {want or 'more'} at {' '.join(self.toks[self.pos:self.pos + 6])!r}")
+        self.pos += 1
+        return t
+
+    # expr := [+-] term ([+-] term)*
+    def expr(self) -> sympy.Expr:
+        sign = 1
+        if self.peek() in ("+", "-"):
+            sign = -1 if self.take() == "-" else 1
+        out = sign * self.term()
+        while self.peek() in ("+", "-"):
+            op = self.take()
+            t = self.term()
+            out = out + t if op == "+" else out - t
+        return out
+
+    def term(self) -> sympy.Expr:
+        factors = [self.postfix()]
+        while self.peek() is not None and self.peek() not in ("+", "-", "}", ")", "]", ",", *RELATIONS):
+            factors.append(self.postfix())
+        return sympy.Mul(*factors)
+
+    def postfix(self) -> sympy.Expr:
+        base = self.atom()
+        while self.peek() == "^":
+            self.take()
+            base = base ** self.group_or_atom()
+        return base
+
+    def group(self) -> sympy.Expr:
+        self.take("{")
+        e = self.expr()
+        self.take("}")
+        return e
+
+    def group_or_atom(self) -> sympy.Expr:
+        return self.group() if self.peek() == "{" else self.atom()
+
+    def index_list(self) -> list[sympy.Expr]:
+        if self.peek() != "{":
+            return [self.atom()]
+        self.take("{")
+        out = [self.expr()]
+        while self.peek() == ",":
+            self.take()
+            out.append(self.expr())
+        self.take("}")
+        return out
+
+    def atom(self) -> sympy.Expr:
+        t = self.peek()
+        if t is None:
+            raise LatexMathError("expression ends early")
+        if t.isdigit():
+            self.take()
+            return sympy.Integer(t)
+        if t == "{":
+            return self.group()
+        if t in ("(", "["):
+            self.take()
+            e = self.expr()
+            self.take(")" if t == "(" else "]")
+            return e
+        if t in ("\\frac", "\\dfrac", "\\tfrac"):
+            self.take()
+            num = self.group()
+            return num / self.group()
+        if t.startswith("\\") and t[1:] in TRIG:
+            self.take()
+            power = None
+            if self.peek() == "^":
+                self.take()
+                power = self.group_or_atom()
+            arg = self.postfix_arg()
+            val = TRIG[t[1:]](arg)
+            return val ** power if power is not None else val
+        if t.startswith("\\") and t[1:] in GREEK:
+            self.take()
+            return sympy.Symbol(t[1:])
+        if t == "\\pi":
+            self.take()
+            return sympy.pi
+        if len(t) == 1 and t.isalpha():
+            self.take()
+            if self.peek() == "_" and t in NAMES:
+                self.take()
+                idx = self.index_list()
+                if self.peek() == "^" and self.toks[self.pos + 1:self.pos + 4] == ["{", "\\alpha", "}"]:
+                    self.pos += 4
+                elif self.peek() == "^" and self.toks[self.pos + 1:self.pos + 2] == ["\\alpha"]:
+                    self.pos += 2
+                else:
+                    self.unlabelled.append(f"{t}_{{{','.join(str(x) for x in idx)}}}")
+                return sympy.Function(t)(*idx)
+            return sympy.Symbol(t)
+        raise LatexMathError(f"unread {t!r} at {' '.join(self.toks[self.pos:self.pos + 6])!r}")
+
+    def postfix_arg(self) -> sympy.Expr:
+        """The argument of a function: the next atom (a symbol with its numeric coefficient, as ``\\sin 2\\alpha``)."""
+        if self.peek() is not None and self.peek().isdigit():
+            k = sympy.Integer(self.take())
+            return k * self.atom()
+        return self.atom()
+
+
+@dataclass
+class Relation:
+    parts: list
+    ops: list[str]
+
+
+def _run(tex: str) -> tuple[_Parser, Relation]:
+    p = _Parser(_tokens(tex))
+    parts, ops = [p.expr()], []
+    while p.peek() in RELATIONS:
+        ops.append(RELATIONS[p.take()])
+        parts.append(p.expr())
+    if p.peek() is not None:
+        raise LatexMathError(f"unread {' '.join(p.toks[p.pos:p.pos + 8])!r}")
+    return p, Relation(parts, ops)
+
+
+def parse(tex: str) -> sympy.Expr:
+    """One expression (see the module docstring)."""
+    p, rel = _run(tex)
+    if rel.ops:
+        raise LatexMathError(f"a relation, not an expression: {tex[:60]!r}")
+    return rel.parts[0]
+
+
+def parse_relation(tex: str) -> Relation:
+    """A chain of relations with every part (``a = b = c`` -> parts [a, b, c], ops ["=", "="])."""
+    return _run(tex)[1]
+
+
+def unlabelled(tex: str) -> list[str]:
+    """The indexed names of ``tex`` printed without the superscript ``\\alpha`` of the paper's notation."""
+    return _run(tex)[0].unlabelled
+
+
+def listed_range(tex: str, var: str) -> tuple[sympy.Symbol, sympy.Expr, sympy.Expr]:
+    """``var=a,a+1,\\ldots,b`` in ``tex`` -> (Symbol(var), a, b): the listed items are read, the step between the
+    first two must be one, ``\\ldots`` must come before the last; an empty item (``,,``) is refused."""
+    m = re.search(rf"(?<![A-Za-z\\]){re.escape(var)}\s*=", tex)
+    if not m:
+        raise LatexMathError(f"no listed range of {var!r}")
+    rest = tex[m.end():]
+    items: list[str] = []
+    depth, cur = 0, ""
+    for ch in rest:
+        if ch == "{":
+            depth += 1
+        elif ch == "}":
+            depth -= 1
+        if depth == 0 and ch == ",":
+            items.append(cur)
+            cur = ""
+            if items and "\\ldots" in items[-1]:
+                pass
+            continue
+        if depth < 0 or ch in "$":
+            break
+        cur += ch
+    items.append(cur)
+    items = [x.replace("%", "").strip() for x in items]
+    if items and items[-1].endswith("."):
+        items[-1] = items[-1][:-1].strip()
+    while items and items[-1] in ("", ".", ")"):
+        items.pop()
+    k = next((n for n, x in enumerate(items) if x == "\\ldots"), None)
+    if k is None or k + 1 >= len(items) or k < 1:
+        raise LatexMathError(f"no '\\ldots' between listed items of {var!r}: {items}")
+    items = items[:k + 2]
+    if any(x == "" for x in items):
+        raise LatexMathError(f"an empty item in the listed range of {var!r}: {items}")
+    vals = [parse(x) for x in items[:k]] + [parse(items[k + 1])]
+    for a, b in zip(vals[:k - 1], vals[1:k]):
+        if sympy.simplify(b - a) != 1:
+            raise LatexMathError(f"the listed range of {var!r} does not step by one: {items}")
+    return sympy.Symbol(var), vals[0], vals[-1]
+
+
+__all__ = ["LatexMathError", "Relation", "parse", "parse_relation", "listed_range", "unlabelled"]
