@@ -24,10 +24,10 @@ from paper_repro.claims.lines.sec4_5 import EP, TS, Q, _texts, half_monomial
 from paper_repro.core.basis import evaluate
 from paper_repro.core.context import ExactContext
 from paper_repro.core.domain import rational_alpha, sample_rational_points
-from paper_repro.core.labels import BasisLabel, exponents, index_of, r_exponents, united_system
+from paper_repro.core.labels import BasisLabel, exponents, index_of, united_system
 from paper_repro.core.normalization import coefficients, solve_full_exact
 from paper_repro.core.univariate import c_numerator_by_expansion
-from paper_repro.printed.lines import lines_of, verbatim
+from paper_repro.printed.lines import line, lines_of, verbatim
 from paper_repro.printed.lines import sec4_5 as pl
 from paper_repro.printed.lines.sec5_latex import (
     LatexMathError,
@@ -115,29 +115,67 @@ def check_partition_sum(verbatim: str | None = None) -> LineResult:
                       kind="exact-evidence", detail=rows)
 
 
-def symmetry_holds(n: int, t: fmpq, which: int) -> bool:
-    ok = True
-    for j in range(n):
-        if which == 1:
-            for i in range(j + 1, n):
-                ok &= _coef(n, t, f"r_{{{2 * n},{2 * n - i},{j}}}") == _coef(n, t, f"r_{{{2 * n},{i},{j}}}")
-        else:
-            col = "g" if which == 2 else "b"
-            for i in range(j, 2 * n - j):
-                ok &= _coef(n, t, f"{col}_{{{2 * n},{2 * n - i},{j}}}") == _coef(n, t, f"r_{{{2 * n},{2 * n - i},{j}}}")
-    return ok
+# -- symmetry conditions symmetry_condition_1..3, parsed -------------------------------------------------------------
+SYMMETRY_LINES = ("sec4_5-symmetry-1", "sec4_5-symmetry-2", "sec4_5-symmetry-3")
 
 
-for _w in (1, 2, 3):
-    line_check(f"sec4_5-symmetry-{_w}")(lambda _w=_w: LineResult(
-        all(symmetry_holds(n, t, _w) for n in (1, 2, 3) for t in TS[:2]),
-        how="coefficients by exact collocation assuming no symmetry, n <= 3, two alpha", kind="exact-evidence",
-        detail={"n_max": 3, "ts": [str(t) for t in TS[:2]]}))
+def corrected_symmetry_text(tex: str) -> str:
+    """The correction of erratum sec4_5-symmetry-3: the doubled comma of ``i=j,j+1,,\\ldots`` removed."""
+    return tex.replace(",,", ",")
 
 
-def symmetry_partition(n: int) -> list[list[int]]:
+def read_symmetry(tex: str) -> tuple[sympy.Expr, sympy.Expr, tuple, tuple]:
+    """One symmetry condition ``X_{..} & =Y_{..},~j=..,~i=..`` parsed: the two coefficients and the listed ranges of
+    j and i (sympy, i's bounds may contain j)."""
+    k = tex.find(",~")
+    if k < 0:
+        raise LatexMathError("no ',~' between the equation and its ranges")
+    rel = parse_relation(tex[:k])
+    if rel.ops != ["="] or len(rel.parts) != 2:
+        raise LatexMathError(f"not one equation: {rel.ops}")
+    _j, jlo, jhi = listed_range(tex[k:], "j")
+    _i, ilo, ihi = listed_range(tex[k:], "i")
+    return rel.parts[0], rel.parts[1], (jlo, jhi), (ilo, ihi)
+
+
+def _name(e: sympy.Expr) -> str:
+    if not isinstance(e, sympy.core.function.AppliedUndef) or e.func.__name__ not in ("r", "g", "b"):
+        raise LatexMathError(f"{e} is not a normalizing coefficient")
+    return f"{e.func.__name__}_{{{','.join(str(x) for x in _ints(e.args))}}}"
+
+
+def symmetry_pairs(tex: str, n: int) -> list[tuple[str, str]]:
+    """The pairs of coefficient names a printed symmetry condition equates at order n (names checked to be
+    coefficients of T_{2n})."""
+    lhs, rhs, (jlo, jhi), (ilo, ihi) = read_symmetry(tex)
+    n_, i_, j_ = sympy.symbols("n i j")
+    members = {lab.coefficient for lab in united_system(n)}
+    out = []
+    for j in range(int(jlo.subs(n_, n)), int(jhi.subs(n_, n)) + 1):
+        for i in range(int(ilo.subs({n_: n, j_: j})), int(ihi.subs({n_: n, j_: j})) + 1):
+            a, b = (_name(e.subs({n_: n, i_: i, j_: j})) for e in (lhs, rhs))
+            if a not in members or b not in members:
+                raise LatexMathError(f"{a} = {b}: not coefficients of T_{2 * n}")
+            out.append((a, b))
+    return out
+
+
+def _symmetry_texts(which: str | None = None, corrected: bool = False) -> dict[str, str]:
+    """The three conditions as read; the erratum line symmetry-3 corrected unless it is the line checked."""
+    out = {}
+    for lid in SYMMETRY_LINES:
+        tex = verbatim(lid)
+        if lid != which or corrected:
+            tex = corrected_symmetry_text(tex) if line(lid).status == "erratum" else tex
+        out[lid] = tex
+    return out
+
+
+def symmetry_partition(n: int, texts: dict[str, str] | None = None) -> list[list[int]]:
     """Classes of the delta_n functions of T_{2n} (internal indices) merged by the printed symmetry conditions
-    symmetry_condition_1..3 (union-find on the coefficient names)."""
+    symmetry_condition_1..3 (parsed from ``texts``, default: the transcriptions, symmetry-3 corrected; union-find on
+    the coefficient names)."""
+    texts = texts if texts is not None else _symmetry_texts()
     labels = united_system(n)
     idx = index_of(n)
     parent = list(range(len(labels)))
@@ -147,19 +185,49 @@ def symmetry_partition(n: int) -> list[list[int]]:
             x = parent[x]
         return x
 
-    def union(a: str, b: str) -> None:
-        parent[find(idx[a])] = find(idx[b])
-
-    for j in range(n):
-        for i in range(j + 1, n):
-            union(f"r_{{{2 * n},{2 * n - i},{j}}}", f"r_{{{2 * n},{i},{j}}}")
-        for i in range(j, 2 * n - j):
-            union(f"g_{{{2 * n},{2 * n - i},{j}}}", f"r_{{{2 * n},{2 * n - i},{j}}}")
-            union(f"b_{{{2 * n},{2 * n - i},{j}}}", f"r_{{{2 * n},{2 * n - i},{j}}}")
+    for tex in texts.values():
+        for a, b in symmetry_pairs(tex, n):
+            parent[find(idx[a])] = find(idx[b])
     groups: dict[int, list[int]] = {}
     for k in range(len(labels)):
         groups.setdefault(find(k), []).append(k)
     return sorted(groups.values())
+
+
+def symmetry_check(lid: str) -> LineResult:
+    """A printed symmetry condition (parsed: both coefficients, the ranges of j and i) holds for the coefficients of
+    the exact collocation solve without symmetry (n = 1..3, two alpha), and the three conditions together are
+    complete: their classes are the orbits of the six permutations of (u, v, w) ((n+1)(n+2)/2 of them, n = 1..6)."""
+    how = ("the condition parsed; exact collocation coefficients without symmetry (n = 1..3, tan(alpha/4) in "
+           "{1/3, 2/5}); with the other two conditions its classes are the permutation orbits (n = 1..6)")
+
+    def holds(tex_of: dict[str, str]) -> tuple[bool, dict]:
+        rows = {}
+        for n in (1, 2, 3):
+            rows[f"n={n}"] = all(_coef(n, t, a) == _coef(n, t, b) for t in TS[:2]
+                                 for a, b in symmetry_pairs(tex_of[lid], n))
+        for n in range(1, 7):
+            rows[f"complete n={n}"] = symmetry_partition(n, tex_of) == permutation_orbits(n)
+        return all(rows.values()), rows
+
+    printed_ok, corrected_ok, rows = False, None, {}
+    try:
+        printed_ok, rows = holds(_symmetry_texts(lid))
+    except (LatexMathError, ValueError, TypeError) as exc:
+        rows = {"unread": str(exc)[:200]}
+    if line(lid).status == "erratum":
+        tex = verbatim(lid)
+        corrected_ok = False
+        if ",," in tex:  # the slip the erratum records is in the transcription
+            try:
+                corrected_ok, rows["corrected"] = holds(_symmetry_texts(lid, corrected=True))
+            except (LatexMathError, ValueError, TypeError) as exc:
+                rows["corrected_unread"] = str(exc)[:200]
+    return LineResult(printed_ok, corrected_ok, how=how, kind="exact-evidence", detail=rows)
+
+
+for _w in SYMMETRY_LINES:
+    line_check(_w)(lambda _w=_w: symmetry_check(_w))
 
 
 def permutation_orbits(n: int) -> list[list[int]]:
@@ -216,23 +284,33 @@ def check_unknowns(override: dict[str, str] | None = None) -> LineResult:
 
 @line_check("sec4_5-matrix-sizes")
 def check_matrix_sizes() -> LineResult:
-    ok = True
-    for n in range(1, 13):
-        perms = list(product(range(3), repeat=3))
-        perms = [p for p in perms if len(set(p)) == 3]
-        orbits = set()
-        for lab in united_system(n):
-            e = exponents(lab)
-            pairs = [(e[0], e[1]), (e[2], e[3]), (e[4], e[5])]
-            orbits.add(min(tuple(pairs[p[k]] for k in range(3)) for p in perms))
-        # the orbits of level 0: those containing an R_{2n,2n-i,0}
-        lev0 = {min(tuple(((e[0], e[1]), (e[2], e[3]), (e[4], e[5]))[p[k]] for k in range(3)) for p in perms)
-                for e in (r_exponents(n, i, 0) for i in range(2 * n + 1))}
-        ok &= len(united_system(n)) == 3 * n * (n + 1) + 1
-        ok &= len(orbits) == (n + 1) * (n + 2) // 2
-        ok &= len(orbits) - len(lev0) == n * (n + 1) // 2
-    return LineResult(ok, how="orbits of T_{2n} under the six permutations of (u, v, w) (exponent vectors) and the "
-                      "orbits of level 0, n <= 12", kind="exhaustive", detail={"n_max": 12})
+    """The three sizes of the remark, parsed from the transcription (``\\delta_{n}=3n(n+1)+1``, then the size after
+    symmetry_condition_1..3, then after Remark normalizing_coeff_of_level_0), against: the number of functions of
+    T_{2n}; the number of classes of the printed symmetry conditions (parsed, = permutation orbits); those classes
+    less the ones holding a coefficient of level 0 (r_{2n,2n-i,0} = c_{2n,i} known), n = 1..10."""
+    how = ("the three sizes parsed from the transcription vs |T_{2n}|, the classes of the parsed symmetry conditions "
+           "and those without a coefficient of level 0, n = 1..10")
+    n_ = sympy.Symbol("n")
+    try:
+        segs = verbatim("sec4_5-matrix-sizes").split("$")[1::2]
+        if len(segs) != 3:
+            raise LatexMathError(f"{len(segs)} formulas, three sizes expected")
+        first = parse_relation(segs[0])
+        if first.ops != ["="] or first.parts[0] != sympy.Function("delta")(n_):
+            raise LatexMathError(f"not delta_n = ..: {segs[0]!r}")
+        sizes = [first.parts[1], parse(segs[1]), parse(segs[2])]
+        rows, ok = {}, True
+        for n in range(1, 11):
+            part = symmetry_partition(n)
+            idx = index_of(n)
+            level0 = {idx[f"r_{{{2 * n},{2 * n - i},0}}"] for i in range(2 * n + 1)}
+            truth = [len(united_system(n)), len(part), sum(1 for g in part if not set(g) & level0)]
+            got = [s.subs(n_, n) for s in sizes]
+            rows[str(n)] = [int(x) for x in truth]
+            ok &= got == truth and part == permutation_orbits(n)
+    except (LatexMathError, ValueError, TypeError) as exc:
+        return LineResult(False, how=how, kind="exhaustive", detail={"unread": str(exc)[:200]})
+    return LineResult(ok, how=how, kind="exhaustive", detail={"sizes_per_n": rows})
 
 
 # -- system of equations and derivatives ----------------------------------------------------------------------------
@@ -551,19 +629,15 @@ def example_check(check_id: str) -> LineResult:
     n2 = max(int(a.args[0]) for p in rel.parts + ([head] if head is not None else [])
              for a in p.atoms(sympy.core.function.AppliedUndef))
     proven = _closed_forms_proven(n2 // 2)
-    ok = identity and sampled
-    correct = None
-    if ln.status == "erratum":  # the corrected line (erratum["corrected_tex"]) read and checked the same way
-        try:
-            c_rel = _rel(ln.erratum["corrected_tex"])
-            c_id, c_s, _ = chain_holds(c_rel.parts, head)
-            correct = c_id and c_s and not unlabelled(ln.erratum["corrected_tex"])
-        except (LatexMathError, KeyError):
-            correct = False
-        ok = ok and not unlabelled(ln.verbatim)
+    math_ok = identity and sampled
+    # the notation: every named object carries the superscript alpha (a "-final" line repeats the combination of
+    # its "-mid" line, where a slip is recorded once)
+    bare = [] if check_id.endswith("-final") else unlabelled(ln.verbatim)
+    ok = math_ok and not bare
+    correct = (math_ok and bool(bare)) if ln.status == "erratum" else None  # the slip present, the value right
     return LineResult(ok, correct, how=how, kind="proof" if (identity and proven) else "exact-evidence",
                       detail={"identity_in_alpha": identity, "collocation_at_3_alpha": samples,
-                              "closed_forms_proven": proven, "without_superscript_alpha": unlabelled(ln.verbatim)})
+                              "closed_forms_proven": proven, "without_superscript_alpha": bare})
 
 
 for _line in pl.LINES:

@@ -1068,8 +1068,15 @@ LINES: list[Line] = [
          verbatim=('b_{2n,2n-i,j}^{\\alpha} & =r_{2n,2n-i,j}^{\\alpha},~j=0,1,\\ldots ,n-1,~i=j,j+1,,\\ldots'
                    ',2n-1-j,'),
          says='b_{2n,2n-i,j} = r_{2n,2n-i,j}, j = 0..n-1, i = j..2n-1-j (printed with a doubled comma).',
-         status='checked',
-         check='sec4_5-symmetry-3'),
+         status='erratum',
+         check='sec4_5-symmetry-3',
+         erratum={'printed': 'i=j,j+1,,\\ldots,2n-1-j (a doubled comma: an empty item in the listed range)',
+                  'corrected': 'i=j,j+1,\\ldots,2n-1-j',
+                  'evidence': ('the listed range does not read (an empty item between j+1 and \\ldots); with the '
+                               'comma removed the condition b_{2n,2n-i,j} = r_{2n,2n-i,j} holds for the exact '
+                               'collocation coefficients without symmetry (n = 1..3, two alpha) and the three '
+                               'conditions together give exactly the permutation orbits (n = 1..6)'),
+                  'severity': 'typo'}),
     Line(id='sec4_5-unknowns',
          tex=(1940, 1941),
          near='symmetry_condition_3',
@@ -1581,8 +1588,18 @@ LINES: list[Line] = [
          verbatim=('r_{6,4,2}^{\\alpha} & =c_{6,4}\\left( 2+\\dfrac{6}{\\sin^{2}\\frac{\\alpha}{2}% }\\right'
                    ') +c_{6,3}^{\\alpha}\\frac{6}{\\sin^{2}\\frac{\\alpha}{2}}\\cos\\frac{\\alpha }{2}'),
          says='r_{6,4,2} as a combination of the constants c_{2n,i}.',
-         status='checked',
-         check='sec4_5-ex-r642-mid'),
+         status='erratum',
+         check='sec4_5-ex-r642-mid',
+         erratum={'printed': ('r_{6,4,2}^{\\alpha} = c_{6,4}\\left( 2+\\dfrac{6}{\\sin^{2}\\frac{\\alpha}{2}}'
+                              '\\right) + ...'),
+                  'corrected': ('r_{6,4,2}^{\\alpha} = c_{6,4}^{\\alpha}\\left( 2+\\dfrac{6}{\\sin^{2}\\frac{'
+                                '\\alpha}{2}}\\right) + ...'),
+                  'evidence': ('the univariate constant c_{6,4} is printed without the superscript alpha that every '
+                               'other c_{2n,i}^{alpha} of Section 5 carries (the parsed line names exactly one '
+                               'unlabelled object, c_{6,4}); the value of the combination is right: it equals '
+                               'r_{6,4,2} as an identity in alpha (closed form proven for every alpha) and at three '
+                               'rational-tangent alpha (exact collocation)'),
+                  'severity': 'typo'}),
     Line(id='sec4_5-ex-r642-final',
          tex=(2086, 2089),
          near='normalizing_coefficients_n_3',

@@ -143,6 +143,9 @@ class _Parser:
             return val ** power if power is not None else val
         if t.startswith("\\") and t[1:] in GREEK:
             self.take()
+            if self.peek() == "_":  # an indexed greek name, as \\delta_{n}
+                self.take()
+                return sympy.Function(t[1:])(*self.index_list())
             return sympy.Symbol(t[1:])
         if t == "\\pi":
             self.take()
