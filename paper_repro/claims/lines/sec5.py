@@ -390,52 +390,125 @@ def check_system(override: dict[str, str] | None = None) -> LineResult:
                       kind="exact-evidence", detail=info)
 
 
+def read_parametrization(tex: str) -> dict:
+    """The line ``For each order $r=1,2,\\ldots,n$, after evaluating ... with respect to $v\\left( x,y\\right) =y$
+    and $w\\left( x,y\\right) =x-y$ at $y=0$`` parsed: the orders (r, lo, hi), v and w as sympy expressions in x, y,
+    and the point y."""
+    segs = tex.split("$")[1::2]
+    out: dict = {}
+    for seg in segs:
+        m = re.fullmatch(r"\s*([uvw])\\left\(\s*x\s*,\s*y\s*\\right\)\s*=(.*)", seg, re.S)
+        if m:
+            out[m.group(1)] = parse(m.group(2))
+        elif "\\ldots" in seg:
+            out["orders"] = listed_range(seg, "r")
+        elif seg.strip().startswith("y"):
+            rel = parse_relation(seg)
+            if rel.ops != ["="] or rel.parts[0] != sympy.Symbol("y"):
+                raise LatexMathError(f"point {seg!r} not read")
+            out["y0"] = rel.parts[1]
+    if set(out) != {"orders", "v", "w", "y0"}:
+        raise LatexMathError(f"read {sorted(out)}, expected the orders, v, w and the point y")
+    return out
+
+
 @line_check("sec4_5-chain-rule")
 def check_chain_rule() -> LineResult:
-    """d^r/dy^r f(alpha - x, y, x - y) = sum_k C(r,k) (-1)^k d^r f / dv^(r-k) dw^k, as identities in (x, y)."""
-    ok = True
-    to_xy = ((-1, 0), (0, 1), (1, -1))  # (u, v, w) = (-x, y, x - y) up to the constant alpha (a phase)
-    for n in (1, 2):
-        for lab in united_system(n):
-            f = half_monomial(exponents(lab))
-            for r in range(n + 1):
-                direct = f.linear(to_xy)
-                for _ in range(r):
-                    direct = direct.diff(1)
-                formula = EP(2)
-                for k in range(r + 1):
-                    g = f
-                    for _ in range(r - k):
-                        g = g.diff(1)
-                    for _ in range(k):
-                        g = g.diff(2)
-                    formula = formula + g.linear(to_xy) * (comb(r, k) * (-1) ** k)
-                ok &= direct == formula
-    return LineResult(ok, how="exact exponential expansion of every function of T_{2n} (n <= 2), orders r <= n, "
-                      "compared as identities in (x, y) (u = alpha - x: the constant alpha only multiplies each "
-                      "exponential by a phase, the same on both sides)", kind="exhaustive", detail={"n_max": 2})
+    """The parametrization of the line parsed (v(x,y), w(x,y), u = alpha - v - w; the orders r; the point y): for
+    every function f of T_{2n} (n <= 2) and every printed order r <= n, d^r/dy^r f(u, v, w) equals the printed chain
+    sum (binomial, sign, orders in v and w read from line sec4_5-chain-sum) as an identity in (x, y) (exact
+    exponential expansion); the point y is the chain sum's; and at the printed orders the chain sum of L vanishes
+    (check sec4_5-chain-sum, which reads the orders from this line)."""
+    from paper_repro.printed.lines.read import bound
+
+    how = ("the parametrization and orders parsed; chain rule as identities in (x, y) by exact exponential expansion, "
+           "n = 1..2; the printed chain sum vanishes at the printed orders (n = 1..3, exact)")
+    x_, y_ = sympy.symbols("x y")
+    try:
+        par = read_parametrization(verbatim("sec4_5-parametrization-restated"))
+        chain = read_chain_sum(verbatim("sec4_5-chain-sum"))
+        if sympy.sympify(chain["y0"].strip()) != par["y0"]:
+            raise LatexMathError(f"the point y = {par['y0']} is not the chain sum's y = {chain['y0']}")
+        lin = {}
+        for var in ("v", "w"):
+            p = sympy.Poly(par[var], x_, y_)
+            if p.total_degree() > 1 or p.coeff_monomial(1) != 0:
+                raise LatexMathError(f"{var}(x,y) = {par[var]} is not linear homogeneous")
+            lin[var] = (int(p.coeff_monomial(x_)), int(p.coeff_monomial(y_)))
+        # u = alpha - v - w (u + v + w = alpha): the constant alpha is a phase, the same on both sides
+        to_xy = ((-(lin["v"][0] + lin["w"][0]), -(lin["v"][1] + lin["w"][1])), lin["v"], lin["w"])
+        _r, r_lo, r_hi = par["orders"]
+        n_ = sympy.Symbol("n")
+        ok = True
+        for n in (1, 2):
+            orders = range(int(r_lo.subs(n_, n)), int(r_hi.subs(n_, n)) + 1)
+            for lab in united_system(n):
+                f = half_monomial(exponents(lab))
+                for r in orders:
+                    direct = f.linear(to_xy)
+                    for _ in range(r):
+                        direct = direct.diff(1)
+                    formula = EP(2)
+                    for k in range(bound(chain["klo"], r=r), bound(chain["khi"], r=r) + 1):
+                        g = f
+                        for _ in range(bound(chain["pv"], r=r, k=k)):
+                            g = g.diff(1)
+                        for _ in range(bound(chain["pw"], r=r, k=k)):
+                            g = g.diff(2)
+                        weight = comb(bound(chain["btop"], r=r, k=k), bound(chain["bbot"], r=r, k=k)) * \
+                            int(chain["base"]) ** bound(chain["sexp"], r=r, k=k)
+                        formula = formula + g.linear(to_xy) * weight
+                    ok &= direct == formula
+        vanishes = check_chain_sum().holds_as_printed
+    except (LatexMathError, ValueError, TypeError) as exc:
+        return LineResult(False, how=how, kind="exhaustive", detail={"unread": str(exc)[:200]})
+    return LineResult(ok and vanishes, how=how, kind="exhaustive",
+                      detail={"chain_rule_identities": ok, "chain_sum_vanishes": vanishes,
+                              "v": str(par["v"]), "w": str(par["w"])})
+
+
+def surviving_degrees(n: int, par: dict | None = None) -> set[int]:
+    """Total degrees, in the four half-angle functions of (alpha - x)/2 and x/2, of the terms of the y-derivatives
+    (orders 0..n) at y = 0 of the functions of T_{2n} that do not vanish at v = 0 (exponent bookkeeping)."""
+    out = set()
+    for lab in united_system(n):
+        e = exponents(lab)
+        for r in range(n + 1):
+            for k in range(r + 1):
+                dv = {m: q for m, q in _d({(e[2], e[3]): Q(1)}, r - k).items() if m[0] == 0}
+                if not dv:
+                    continue
+                for (s, c), _q in _d({(e[4], e[5]): Q(1)}, k).items():
+                    out.add(e[0] + e[1] + s + c)
+    return out
 
 
 @line_check("sec4_5-tan-polynomial")
 def check_tan_polynomial() -> LineResult:
-    """Surviving terms of the derivatives at y = 0 are forms of degree 2n in sin, cos of (alpha - x)/2 and x/2."""
-    ok = True
-    for n in range(1, 7):
-        for lab in united_system(n):
-            e = exponents(lab)
-            for r in range(n + 1):
-                for k in range(r + 1):
-                    dv = {m: q for m, q in _d({(e[2], e[3]): Q(1)}, r - k).items() if m[0] == 0}
-                    if not dv:
-                        continue
-                    for (s, c), _q in _d({(e[4], e[5]): Q(1)}, k).items():
-                        ok &= e[0] + e[1] + s + c == 2 * n
-    # cos(x/2) > 0 for x in [0, alpha], alpha < pi: x/2 < pi/2 (bound, no computation needed beyond that)
-    return LineResult(ok, how="exponent bookkeeping of the derivatives of the monomials (n <= 6, r <= n): every term "
-                      "not vanishing at v = 0 has total degree 2n in the four half-angle functions; each is linear in "
-                      "sin(x/2), cos(x/2), so dividing by cos^{2n}(x/2) gives a polynomial in tan(x/2)",
-                      kind="exhaustive",
-                      detail={"n_max": 6})
+    """The line parsed: the variable of the polynomial (tan(x/2)), the four functions whose powers are summed, and
+    the sum (2n).  The four functions are the half-angle functions of u = alpha - x and w = x at y = 0 (from the
+    parametrization line, parsed), and every term not vanishing at v = 0 has exactly the printed total degree
+    (n = 1..6): a form of that degree, linear in sin(x/2), cos(x/2) after expanding (alpha - x)/2, divided by
+    cos^{2n}(x/2) is a polynomial in tan(x/2)."""
+    how = ("the line parsed (tan(x/2), the four functions, the degree 2n); exponent bookkeeping of the derivatives "
+           "of the monomials, n = 1..6")
+    n_, x_, a_ = sympy.symbols("n x alpha")
+    try:
+        segs = [parse(s) for s in verbatim("sec4_5-tan-polynomial").split("$")[1::2]]
+        if len(segs) != 6:
+            raise LatexMathError(f"{len(segs)} formulas read, six expected")
+        par = read_parametrization(verbatim("sec4_5-parametrization-restated"))
+        u0 = (a_ - par["v"] - par["w"]).subs(sympy.Symbol("y"), par["y0"])
+        w0 = par["w"].subs(sympy.Symbol("y"), par["y0"])
+        funcs = {f(sympy.expand(z / 2)) for f in (sympy.sin, sympy.cos) for z in (u0, w0)}
+        variable_ok = segs[0] == sympy.tan(sympy.expand(w0 / 2))
+        funcs_ok = set(segs[1:5]) == funcs and len(set(segs[1:5])) == 4
+        degree = segs[5]
+        per_n = {str(n): surviving_degrees(n) == {int(degree.subs(n_, n))} for n in range(1, 7)}
+    except (LatexMathError, ValueError, TypeError) as exc:
+        return LineResult(False, how=how, kind="exhaustive", detail={"unread": str(exc)[:200]})
+    return LineResult(variable_ok and funcs_ok and all(per_n.values()), how=how, kind="exhaustive",
+                      detail={"variable": variable_ok, "four_functions": funcs_ok, "degree_per_n": per_n})
 
 
 def y_range_maps_into_omega(upper) -> tuple[bool, bool]:
@@ -450,11 +523,34 @@ def y_range_maps_into_omega(upper) -> tuple[bool, bool]:
 
 @line_check("sec4_5-y-range-1980")
 def check_y_range() -> LineResult:
-    printed, corrected = y_range_maps_into_omega(lambda a, x: a - x), y_range_maps_into_omega(lambda a, x: x)
-    return LineResult(all(printed), all(corrected), how="exact images of a grid of the parameter triangle "
-                      "(alpha = 3/2) under parametrization_for_partition_of_unity", kind="proof",
+    """The interval of y parsed from the line (lower and upper end): with the parametrization u = alpha - x,
+    v = y, w = x - y the printed triangle leaves Omega^alpha; the correction recorded in the erratum (the upper end
+    alpha - x, as printed, replaced by x) maps it onto Omega^alpha."""
+    from paper_repro.printed.lines.read import interval
+
+    how = "exact images of a grid of the parameter triangle (alpha = 3/2) under parametrization_for_partition_of_unity"
+    x_, a_ = sympy.symbols("x alpha")
+    try:
+        lo, hi = (parse(s) for s in interval(verbatim("sec4_5-chain-y-range"), "y"))
+        if lo.free_symbols - {x_, a_} or hi.free_symbols - {x_, a_}:
+            raise LatexMathError("the interval names other variables")
+    except (LatexMathError, ValueError) as exc:
+        return LineResult(False, False, how=how, kind="proof", detail={"unread": str(exc)[:200]})
+
+    def maps(lo_e, hi_e) -> tuple[bool, bool]:
+        def upper(a, x):
+            return Q(str(hi_e.subs({a_: sympy.Rational(a.numerator, a.denominator),
+                                    x_: sympy.Rational(x.numerator, x.denominator)})))
+        low_zero = lo_e == 0
+        inside, onto = y_range_maps_into_omega(upper)
+        return inside and low_zero, onto and low_zero
+
+    printed = maps(lo, hi)
+    recorded = sympy.expand(hi - (a_ - x_)) == 0  # the slip the erratum records is the one printed
+    corrected = maps(lo, x_) if recorded else (False, False)
+    return LineResult(all(printed), all(corrected), how=how, kind="proof",
                       detail={"printed_inside_onto": list(printed), "corrected_inside_onto": list(corrected),
-                              "witness": "x = alpha/4, y = alpha/2 gives w = -alpha/4"})
+                              "printed_upper_end": str(hi), "witness": "x = alpha/4, y = alpha/2 gives w = -alpha/4"})
 
 
 # -- normalizing coefficients of level 0, 1 and the Examples: the printed formulas parsed ----------------------------
@@ -859,25 +955,36 @@ def check_chain_sum(verbatim: str | None = None, orders: str | None = None) -> L
 
 
 @line_check("sec4_5-cos-nonzero")
-def check_cos_nonzero(verbatim: str | None = None) -> LineResult:
-    """cos^{2n}(x/2) != 0 for x in the printed interval (read from the transcription): with x in [0, alpha] and
-    alpha in (0, pi), x/2 lies in [0, pi/2), where cos is positive (decreasing, so cos(x/2) >= cos(alpha/2) > 0);
-    the bound is the end alpha, checked exactly to be positive at rational alpha up to 4 atan(999/1000)."""
+def check_cos_nonzero(text: str | None = None) -> LineResult:
+    """The line ``$\\cos^{2n}\\frac{x}{2}\\neq0$ ($x\\in\\left[ 0,\\alpha\\right] $)`` parsed: the function, the
+    relation and the interval.  Proof: with x in [0, alpha] and alpha in (0, pi), x/2 lies in [0, pi/2), where cos
+    is positive; so a power cos^m(x/2) never vanishes there (and sin^m(x/2) would, at x = 0).  The power is the
+    one that makes the rewritten equality a polynomial in tan(x/2): the total degree of its terms (2n, by exponent
+    bookkeeping, n = 1..6)."""
     from paper_repro.printed.lines.read import interval
 
-    tex = verbatim if verbatim is not None else {x.id: x.verbatim for x in pl.LINES}["sec4_5-cos-nonzero"]
+    how = ("the function, relation and interval parsed; cos(x/2) > 0 on x/2 in [0, alpha/2], alpha < pi; the "
+           "exponent equals the total degree of the terms (bookkeeping n = 1..6)")
+    n_, x_, a_ = sympy.symbols("n x alpha")
+    tex = text if text is not None else verbatim("sec4_5-cos-nonzero")
     try:
-        lo, hi = interval(tex, "x")
-    except ValueError as exc:
-        return LineResult(False, how="the interval read from the transcription", kind="proof",
-                          detail={"unread": str(exc)})
-    if "\\neq0" not in tex.replace(" ", "") or (lo, hi) != ("0", "\\alpha"):
-        return LineResult(False, how="the interval read from the transcription", kind="proof",
-                          detail={"interval": [lo, hi]})
+        rel = parse_relation(tex.split("$")[1])
+        lo, hi = (parse(s) for s in interval(tex, "x"))
+        if rel.ops != ["!="] or rel.parts[1] != 0:
+            raise LatexMathError(f"relation {rel.ops} with {rel.parts[1:]}, not '!= 0'")
+        f = rel.parts[0]
+        base, power = f.as_base_exp()
+        if base != sympy.cos(x_ / 2):
+            raise LatexMathError(f"{base} is not cos(x/2): it vanishes in [0, alpha] or is not read")
+        if lo != 0 or hi != a_:
+            raise LatexMathError(f"interval [{lo}, {hi}] is not [0, alpha]: x/2 may reach pi/2")
+        degree_ok = all(surviving_degrees(n) == {int(power.subs(n_, n))} for n in range(1, 7))
+    except (LatexMathError, ValueError, TypeError, IndexError) as exc:
+        return LineResult(False, how=how, kind="proof", detail={"unread": str(exc)[:200]})
     ends_positive = all(rational_alpha(t).cos_half > 0 for t in (fmpq(1, 1000), fmpq(1, 2), fmpq(999, 1000)))
-    return LineResult(ends_positive, how="the interval [0, alpha] read from the transcription: x/2 in "
-                      "[0, alpha/2] with alpha < pi, where cos is positive (decreasing: its minimum is cos(alpha/2) > "
-                      "0, exact at rational alpha near 0 and pi)", kind="proof",
-                      detail={"interval": [lo, hi], "cos_half_alpha_positive": ends_positive})
+    return LineResult(ends_positive and degree_ok, how=how, kind="proof",
+                      detail={"function": str(f), "interval": [str(lo), str(hi)], "power_is_the_degree": degree_ok,
+                              "cos_half_alpha_positive": ends_positive})
+
 
 __all__ = ["y_range_maps_into_omega"]
