@@ -32,6 +32,7 @@ from paper_repro.printed.lines import sec4_5 as pl
 from paper_repro.printed.lines.sec5_latex import (
     LatexMathError,
     Relation,
+    expand_sums,
     listed_range,
     parse,
     parse_relation,
@@ -80,22 +81,86 @@ def _coef(n: int, t: fmpq, name: str) -> fmpq:
     return _full(n, t)[united_system(n)[index_of(n)[name]].coefficient]
 
 
-@line_check("sec4_5-partition-sum")
-def check_partition_sum(verbatim: str | None = None) -> LineResult:
-    """The printed sum L (its terms read from the transcription, names without aliases) with the coefficients of the
-    exact collocation solve is 1 at fresh rational points."""
-    from paper_repro.printed.lines.read import sum_terms, term_indices
+_POINT_ARGS = re.compile(r"\\left\(\s*(\w)\s*,\s*(\w)\s*,\s*(\w)\s*\\right\)\s*(\\in|\\notin)\s*\\Omega\^\{([^{}]*)\}")
 
-    tex = verbatim if verbatim is not None else _texts({"sec4_5-L-sum"})["sec4_5-L-sum"]
+
+def alpha_labels(tex: str) -> list[str]:
+    """The superscripts of the named objects (``X_{..}^{..}``, ``\\overline{X}_{..}^{..}``) and of ``\\Omega`` in
+    ``tex``: the notation labels each with the angle alpha."""
+    named = re.findall(r"(?<![\\A-Za-z])(?:[A-Za-z]|\\overline\{[A-Z]\})_\{[^{}]*\}%?\s*\^\{([^{}]*)\}", tex)
+    return [x.strip() for x in named + re.findall(r"\\Omega\s*\^\{([^{}]*)\}", tex)]
+
+
+def read_domain(tex: str) -> tuple[str, tuple[str, str, str]]:
+    """``for all $\\left( u,v,w\\right) \\in\\Omega^{\\alpha}$``: the quantifier words and the variables."""
+    m = _POINT_ARGS.search(tex)
+    if not m or m.group(4) != "\\in" or m.group(5).strip() != "\\alpha":
+        raise LatexMathError("no '(u,v,w) \\in \\Omega^{\\alpha}' read")
+    words = tex[: m.start()].replace("$", " ").split()
+    return " ".join(words[-2:]), (m.group(1), m.group(2), m.group(3))
+
+
+def partition_terms(expr: sympy.Expr, n: int, args: sympy.Tuple) -> list[str]:
+    """The terms of the printed sum L at order n (sums written out): each must be +1 times a coefficient and the
+    function of the same colour and indices applied to ``args``; returns the labels (``R_{2,1,0}`` ...)."""
+    e = expand_sums(expr.subs(sympy.Symbol("n"), n))
+    out = []
+    for term in sympy.Add.make_args(sympy.expand(e)):
+        coef, factors = term.as_coeff_mul()
+        if coef != 1 or len(factors) != 2:
+            raise LatexMathError(f"term {term} is not +1 * coefficient * function")
+        by_kind = {f.func.__name__: f for f in factors if isinstance(f, sympy.core.function.AppliedUndef)}
+        low = [k for k in by_kind if k in ("r", "g", "b")]
+        if len(low) != 1 or low[0].upper() not in by_kind:
+            raise LatexMathError(f"term {term} does not pair a coefficient with its function")
+        c, f = by_kind[low[0]], by_kind[low[0].upper()]
+        if tuple(f.args[:-1]) != tuple(c.args) or f.args[-1] != args:
+            raise LatexMathError(f"term {term}: indices or arguments differ")
+        out.append(f"{low[0].upper()}_{{{','.join(str(x) for x in _ints(c.args))}}}")
+    return out
+
+
+@line_check("sec4_5-partition-sum")
+def check_partition_sum(text: str | None = None) -> LineResult:
+    """The partition of unity parsed from its four lines: the constant and the point of ``1 & =L(u,v,w)``, the
+    printed sum L (signs, bounds, coefficients and functions, written out), the domain ``for all (u,v,w) in
+    Omega^alpha`` and, in the sentence before, the constant function and the word 'unique'.  With the coefficients
+    of the exact collocation solve without symmetry (a square nonsingular system: unique), the printed sum
+    evaluated at 6 fresh rational points of Omega^alpha equals the printed constant (n = 1..3, two alpha)."""
+    how = ("the four lines parsed (sec5_latex); coefficients by exact collocation without symmetry (delta_n "
+           "unknowns, nonsingular: unique), the printed sum at 6 fresh rational points of Omega^alpha, n = 1..3")
     try:
-        terms = sum_terms(tex, normalizing=True)
-    except ValueError as exc:
-        return LineResult(False, how="the printed sum read from the transcription", detail={"unread": str(exc)})
-    ok, rows = bool(terms), {}
+        one = parse_relation(verbatim("sec4_5-L-one"))
+        lsum = parse_relation(text if text is not None else verbatim("sec4_5-L-sum"))
+        quant, dom_vars = read_domain(verbatim("sec4_5-L-domain"))
+        prose = verbatim("sec4_5-unique-coefs")
+        if one.ops != ["="] or not one.parts[0].is_number or len(one.parts) != 2:
+            raise LatexMathError("'K & =L(u,v,w)' not read")
+        const = one.parts[0]
+        lcall = one.parts[1]
+        if not (isinstance(lcall, sympy.core.function.AppliedUndef) and lcall.func.__name__ == "L"):
+            raise LatexMathError(f"{lcall} is not L(u,v,w)")
+        args = lcall.args[-1]
+        if lsum.ops != ["="] or lsum.parts[0] is not None or len(lsum.parts) != 2:
+            raise LatexMathError("the row '& =sum' not read")
+        if quant != "for all" or tuple(str(x) for x in args) != dom_vars:
+            raise LatexMathError(f"domain read as {quant!r} {dom_vars}")
+        said = re.search(r"contains the constant function \$(\d+)\$.*?there exist (\w+) coefficients", prose, re.S)
+        if not said or sympy.Integer(said.group(1)) != const or said.group(2) != "unique":
+            raise LatexMathError("the constant function or 'unique' of the sentence not read")
+        labels_text = " ".join(verbatim(x) for x in ("sec4_5-L-sum", "sec4_5-L-domain")) if text is None else text
+        if any(x != "\\alpha" for x in alpha_labels(labels_text)):
+            raise LatexMathError(f"superscripts {alpha_labels(labels_text)}, the notation labels each with alpha")
+    except (LatexMathError, ValueError, TypeError) as exc:
+        return LineResult(False, how=how, kind="exact-evidence", detail={"unread": str(exc)[:200]})
+    ok, rows = True, {}
     for n in (1, 2, 3):
-        strict = {lb.paper: k for k, lb in enumerate(united_system(n))}
-        named = [f"{c}_{{{2 * n},{2 * n - i},{j}}}" for c, i, j in term_indices(terms, n=n)]
-        if any(x not in strict for x in named) or len(set(named)) != len(strict):
+        try:
+            named = partition_terms(lsum.parts[1], n, args)
+        except LatexMathError as exc:
+            return LineResult(False, how=how, kind="exact-evidence", detail={"unread": str(exc)[:200]})
+        idx = index_of(n)
+        if sorted(named) != sorted(lab.paper for lab in united_system(n)) or len(set(named)) != len(named):
             rows[f"n={n}"] = False
             ok = False
             continue
@@ -103,16 +168,11 @@ def check_partition_sum(verbatim: str | None = None) -> LineResult:
             alpha = rational_alpha(t)
             pts = sample_rational_points(alpha, 6, seed=23)
             vals = evaluate(n, alpha, pts, ExactContext())
-            idx = index_of(n)
-            labels = named
-            sums = [sum((_coef(n, t, lab.lower()) * vals[p, idx[lab]] for lab in labels), fmpq(0))
+            sums = [sum((_coef(n, t, lab.lower()) * vals[p, idx[lab]] for lab in named), fmpq(0))
                     for p in range(len(pts))]
-            rows[f"n={n},t={t}"] = all(s == 1 for s in sums)
+            rows[f"n={n},t={t}"] = all(s == fmpq(int(const)) for s in sums)
             ok &= rows[f"n={n},t={t}"]
-    return LineResult(ok, how="coefficients by exact collocation without symmetry (delta_n unknowns, full rank: "
-                      "unique), the printed sum (read from the transcription) evaluated at 6 fresh rational points of "
-                      "Omega^alpha",
-                      kind="exact-evidence", detail=rows)
+    return LineResult(ok, how=how, kind="exact-evidence", detail=rows)
 
 
 # -- symmetry conditions symmetry_condition_1..3, parsed -------------------------------------------------------------
@@ -344,20 +404,53 @@ def _angle(q: Q) -> tuple[Q, Q]:
     return Q(2 * q, 1 + q * q), Q(1 - q * q, 1 + q * q)
 
 
+_SYSTEM = re.compile(
+    r"\\left\.\s*\\frac\{\\partial\^\{(?P<top>[^{}]+)\}\}\{\\partial\s*(?P<var>\w)\^\{(?P<bot>[^{}]+)\}\}\s*"
+    r"L\\left\(\s*u\\left\(\s*x,y\\right\)\s*,v\\left\(\s*x,y\\right\)\s*,w\\left\(\s*x,y\\right\)\s*\\right\)\s*"
+    r"\\right\\vert\s*_\{(?P<pv>\w)=(?P<at>[^{}]+)\}%?\s*=\\delta_\{(?P<d1>\w),(?P<d2>[^{}]+)\},~\\forall\s*x\s*\\in")
+
+
+def read_system(tex: str, orders: str) -> dict:
+    """system_partition_of_unity parsed: the orders of the derivative (numerator, denominator), the variable and the
+    point of evaluation, the Kronecker delta, the quantified interval of x, and the orders ``\\forall r=..``."""
+    from paper_repro.printed.lines.read import interval
+
+    m = _SYSTEM.search(tex)
+    if not m:
+        raise LatexMathError("d^r/dy^r L(u(x,y), v(x,y), w(x,y)) at y = .. = delta_{r,0}, forall x in .. not read")
+    r_ = sympy.Symbol("r")
+    if parse(m.group("top")) != r_ or parse(m.group("bot")) != r_ or m.group("var") != "y" or m.group("pv") != "y":
+        raise LatexMathError("the derivative is not d^r/dy^r")
+    if parse(m.group("at")) != 0 or m.group("d1") != "r" or parse(m.group("d2")) != 0:
+        raise LatexMathError("not at y = 0, or not delta_{r,0}")
+    lo, hi = (parse(x) for x in interval(tex, "x"))
+    if (lo, hi) != (0, sympy.Symbol("alpha")):
+        raise LatexMathError(f"x in [{lo}, {hi}], not [0, alpha]")
+    if "\\forall r" not in orders.replace("~", " ").replace("  ", " "):
+        raise LatexMathError("no quantifier 'for all r'")
+    return {"orders": listed_range(orders, "r")}
+
+
 @line_check("sec4_5-system")
 def check_system(override: dict[str, str] | None = None) -> LineResult:
-    """The system holds with the exact coefficients, and determines them given the symmetry conditions; the orders
-    r (``r=0,1,\\ldots,n``) and the right-hand side ``\\delta_{r,0}`` are read from the transcriptions."""
-    from paper_repro.printed.lines.read import bound, listed_range
-
-    t = _texts({"sec4_5-system", "sec4_5-system-r-range"}, override)
+    """system_partition_of_unity parsed (:func:`read_system`), with the words 'the unique solution' of the three
+    Examples: the system holds with the exact coefficients at the printed orders, and with the symmetry conditions
+    (parsed) it determines them (full rank: the unique solution)."""
+    t = _texts({"sec4_5-system", "sec4_5-system-r-range", "sec4_5-unique-solution-n1", "sec4_5-unique-solution-n2",
+                "sec4_5-unique-solution-n3"}, override)
     try:
-        r_lo, r_hi = listed_range(t["sec4_5-system-r-range"], "r")
-    except ValueError as exc:
-        return LineResult(False, how="the orders read from the transcription", detail={"unread": str(exc)})
-    if not re.search(r"=\\delta_\{r,0\}", t["sec4_5-system"].replace("%", "").replace(" ", "")):
-        return LineResult(False, how="the right-hand side read from the transcription",
-                          detail={"unread": "no =\\delta_{r,0}"})
+        _r, r_lo_e, r_hi_e = read_system(t["sec4_5-system"], t["sec4_5-system-r-range"])["orders"]
+        for k in (1, 2, 3):
+            if not re.search(r"the unique solution", t[f"sec4_5-unique-solution-n{k}"]):
+                raise LatexMathError(f"'the unique solution' not read in Example n = {k}")
+    except (LatexMathError, ValueError, TypeError) as exc:
+        return LineResult(False, how="the system read from the transcription", detail={"unread": str(exc)[:200]})
+    n_sym = sympy.Symbol("n")
+
+    def bound(e, n):
+        return int(e.subs(n_sym, n))
+
+    r_lo, r_hi = r_lo_e, r_hi_e
     ok, info = True, {}
     for n in (1, 2, 3):
         t = TS[0]

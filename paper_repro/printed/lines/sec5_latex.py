@@ -33,7 +33,7 @@ from dataclasses import dataclass, field
 import sympy
 
 GREEK = ("alpha", "beta", "gamma", "delta", "varrho", "mu", "lambda", "tau")
-NAMES = ("r", "g", "b", "c", "R", "G", "B")
+NAMES = ("r", "g", "b", "c", "R", "G", "B", "L")
 TRIG = {"sin": sympy.sin, "cos": sympy.cos, "tan": sympy.tan}
 RELATIONS = {"=": "=", "\\neq": "!=", "\\leq": "<=", "\\geq": ">=", "<": "<", ">": ">"}
 _TOKEN = re.compile(r"\\[A-Za-z]+|\d+|[A-Za-z]|[{}()\[\]^_+\-=,<>]|\S")
@@ -161,9 +161,52 @@ class _Parser:
                     self.pos += 2
                 else:
                     self.unlabelled.append(f"{t}_{{{','.join(str(x) for x in idx)}}}")
-                return sympy.Function(t)(*idx)
-            return sympy.Symbol(t)
+                return sympy.Function(t)(*idx, *self.applied())
+            args = self.applied()  # f\\left( x,y\\right): a function of a letter applied to its arguments
+            return sympy.Function(t)(*args) if args else sympy.Symbol(t)
+        if t == "\\overline":  # \overline{R}_{..}^{\alpha}: the normalized function, named Rbar
+            self.take()
+            self.take("{")
+            letter = self.take()
+            self.take("}")
+            if letter not in ("R", "G", "B", "T") or self.peek() != "_":
+                raise LatexMathError(f"unread \\overline{{{letter}}}")
+            self.take()
+            idx = self.index_list()
+            if self.toks[self.pos:self.pos + 4] == ["^", "{", "\\alpha", "}"]:
+                self.pos += 4
+            else:
+                self.unlabelled.append(f"{letter}bar_{{{','.join(str(x) for x in idx)}}}")
+            return sympy.Function(letter + "bar")(*idx, *self.applied())
+        if t == "\\sum":  # \sum_{v=lo}^{hi} body: the body is the rest of the product
+            self.take()
+            self.take("_")
+            self.take("{")
+            var = sympy.Symbol(self.take())
+            self.take("=")
+            lo = self.expr()
+            self.take("}")
+            self.take("^")
+            hi = self.group_or_atom()
+            return sympy.Sum(self.term(), (var, lo, hi))
         raise LatexMathError(f"unread {t!r} at {' '.join(self.toks[self.pos:self.pos + 6])!r}")
+
+    def applied(self) -> tuple:
+        """An argument list ``\\left( u,v,w\\right)`` right after an indexed name, as one final Tuple (a
+        parenthesis without a top-level comma is a factor, not arguments)."""
+        if self.peek() != "(":
+            return ()
+        save = self.pos
+        self.take()
+        items = [self.expr()]
+        while self.peek() == ",":
+            self.take()
+            items.append(self.expr())
+        if len(items) < 2 or self.peek() != ")":
+            self.pos = save
+            return ()
+        self.take()
+        return (sympy.Tuple(*items),)
 
     def postfix_arg(self) -> sympy.Expr:
         """The argument of a function: the next atom (a symbol with its numeric coefficient, as ``\\sin 2\\alpha``)."""
@@ -180,8 +223,12 @@ class Relation:
 
 
 def _run(tex: str) -> tuple[_Parser, Relation]:
-    p = _Parser(_tokens(tex))
-    parts, ops = [p.expr()], []
+    toks = _tokens(tex)
+    while toks and toks[-1] in (".", ","):  # the punctuation of the sentence
+        toks.pop()
+    p = _Parser(toks)
+    # a row of an align that continues a chain (``& =..``) has no left part: None
+    parts, ops = [None if p.peek() in RELATIONS else p.expr()], []
     while p.peek() in RELATIONS:
         ops.append(RELATIONS[p.take()])
         parts.append(p.expr())
@@ -193,7 +240,7 @@ def _run(tex: str) -> tuple[_Parser, Relation]:
 def parse(tex: str) -> sympy.Expr:
     """One expression (see the module docstring)."""
     p, rel = _run(tex)
-    if rel.ops:
+    if rel.ops or rel.parts[0] is None:
         raise LatexMathError(f"a relation, not an expression: {tex[:60]!r}")
     return rel.parts[0]
 
@@ -201,6 +248,19 @@ def parse(tex: str) -> sympy.Expr:
 def parse_relation(tex: str) -> Relation:
     """A chain of relations with every part (``a = b = c`` -> parts [a, b, c], ops ["=", "="])."""
     return _run(tex)[1]
+
+
+def expand_sums(e: sympy.Expr) -> sympy.Expr:
+    """Every ``Sum`` with integer bounds written out term by term (inner bounds may name outer variables)."""
+    def one(s: sympy.Sum) -> sympy.Expr:
+        body, limits = s.function, list(s.limits)
+        var, lo, hi = limits[-1]
+        if not (lo.is_Integer and hi.is_Integer):
+            raise LatexMathError(f"bounds {lo}, {hi} of {var} are not numbers")
+        rest = sympy.Sum(body, *limits[:-1]) if limits[:-1] else body
+        return sympy.Add(*[expand_sums(rest.subs(var, k)) for k in range(int(lo), int(hi) + 1)])
+
+    return e.replace(lambda x: isinstance(x, sympy.Sum), one)
 
 
 def unlabelled(tex: str) -> list[str]:
@@ -250,4 +310,4 @@ def listed_range(tex: str, var: str) -> tuple[sympy.Symbol, sympy.Expr, sympy.Ex
     return sympy.Symbol(var), vals[0], vals[-1]
 
 
-__all__ = ["LatexMathError", "Relation", "parse", "parse_relation", "listed_range", "unlabelled"]
+__all__ = ["LatexMathError", "Relation", "parse", "parse_relation", "listed_range", "unlabelled", "expand_sums"]
