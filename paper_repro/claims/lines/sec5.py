@@ -301,20 +301,75 @@ def permutation_orbits(n: int) -> list[list[int]]:
     return sorted(groups.values())
 
 
-def unknown_classes(n: int, pairs: list[tuple[int, int]] | None = None) -> tuple[int, bool, bool]:
+def unknown_classes(n: int, pairs: list[tuple[int, int]] | None = None,
+                    element: sympy.Expr | None = None) -> tuple[int, bool, bool]:
     """Number of classes of the printed symmetry conditions, whether each holds exactly one of the printed unknowns
     ``pairs`` ((i, j) of r_{2n,2n-i,j}; default {j=0..n, i=j..n}), and whether the classes are the permutation
     orbits."""
     part = symmetry_partition(n)
     idx = index_of(n)
     pairs = pairs if pairs is not None else [(i, j) for j in range(n + 1) for i in range(j, n + 1)]
-    names = [f"r_{{{2 * n},{2 * n - i},{j}}}" for i, j in pairs]
+    if element is None:
+        names = [f"r_{{{2 * n},{2 * n - i},{j}}}" for i, j in pairs]
+    else:
+        i_, j_, n_ = sympy.symbols("i j n")
+        names = [_name(element.subs({n_: n, i_: i, j_: j})) for i, j in pairs]
     if any(x not in idx for x in names):
         return len(part), False, part == permutation_orbits(n)
     reps = sorted(idx[x] for x in names)
     one_each = all(len(set(g) & set(reps)) == 1 for g in part) and \
         sorted(min(set(g) & set(reps)) for g in part) == reps
     return len(part), one_each, part == permutation_orbits(n)
+
+
+@cache
+def triangular_levels(n: int) -> dict[int, bool]:
+    """For each order r = 0..n of system_partition_of_unity (in the class unknowns of the printed symmetry
+    conditions, exact, tan(alpha/4) = 1/3, 3n+3 rational x): the order-r equations do not involve the classes of
+    level > r, and they determine the classes of level r (full column rank on them) -- the lower triangular
+    structure by which the order r gives the level r."""
+    t = TS[0]
+    al = rational_alpha(t)
+    sa, ca = Q(int(al.sin_half.p), int(al.sin_half.q)), Q(int(al.cos_half.p), int(al.cos_half.q))
+    part = symmetry_partition(n)
+    idx = index_of(n)
+    level = []
+    for g in part:
+        js = [j for j in range(n + 1) for i in range(j, n + 1) if idx.get(f"r_{{{2 * n},{2 * n - i},{j}}}") in g]
+        level.append(js[0] if len(js) == 1 else -1)
+    xs = [Q(m, 7 * int(t.q)) for m in range(1, 3 * n + 4)]
+    out = {}
+    for r in range(n + 1):
+        rows = []
+        for q in xs:
+            sx, cx = _angle(q)
+            su, cu = sa * cx - ca * sx, ca * cx + sa * sx
+            vals = [y_derivative_at_0(exponents(lab), r, su, cu, sx, cx) for lab in united_system(n)]
+            rows.append([sum((vals[k] for k in mem), Q(0)) for mem in part])
+        above = all(row[c] == 0 for row in rows for c in range(len(part)) if level[c] > r)
+        cols = [c for c in range(len(part)) if level[c] == r]
+        sub = fmpq_mat([[fmpq(row[c].numerator, row[c].denominator) for c in cols] for row in rows])
+        out[r] = above and -1 not in level and sub.rank() == len(cols)
+    return out
+
+
+def check_orders(tex: str, n_max: int = 3) -> tuple[bool, dict]:
+    """The orders ``$2\\leq r\\leq n$`` of the line parsed: they are exactly the orders left after Remark
+    normalizing_coeff_of_level_0 (level 0) and Proposition prop:level_1_coefficients (level 1), and each order r
+    determines the level r (:func:`triangular_levels`, n = 1..n_max)."""
+    seg = next((x for x in tex.split("$")[1::2] if "\\leq" in x or "\\geq" in x), None)
+    if seg is None:
+        raise LatexMathError("no orders 'a \\leq r \\leq b' read")
+    rel = parse_relation(seg)
+    r_, n_ = sympy.symbols("r n")
+    if rel.ops != ["<=", "<="] or rel.parts[1] != r_:
+        raise LatexMathError(f"orders read as {rel.ops} {rel.parts}")
+    rows = {}
+    for n in range(2, n_max + 1):
+        printed = set(range(int(rel.parts[0].subs(n_, n)), int(rel.parts[2].subs(n_, n)) + 1))
+        levels = triangular_levels(n)
+        rows[str(n)] = printed == set(range(2, n + 1)) and all(levels.values())
+    return all(rows.values()), rows
 
 
 @line_check("sec4_5-unknowns")
@@ -333,9 +388,26 @@ def check_unknowns(override: dict[str, str] | None = None) -> LineResult:
                                   detail={"unread": str(exc)})
             sets.append(sorted((i, j) for j in range(bound(jlo, n=n), bound(jhi, n=n) + 1)
                                for i in range(bound(ilo, n=n, j=j), bound(ihi, n=n, j=j) + 1)))
-        c, one, orb = unknown_classes(n, sets[0])
+        elements = []
+        for tex in _texts({"sec4_5-unknowns", "sec4_5-closed-forms-index"}, override).values():
+            m = re.search(r"\\left\\\{\s*(.*?)\\right\\\}", tex)
+            elements.append(parse(m.group(1)) if m else None)
+        if None in elements or elements[0] != elements[1]:
+            return LineResult(False, how="the unknowns read from the transcriptions, n <= 10", kind="exhaustive",
+                              detail={"unread": f"the members {elements}"})
+        c, one, orb = unknown_classes(n, sets[0], elements[0])
         rows[n] = (c, one and all(x == sets[0] for x in sets), orb)
     ok = all(c == (n + 1) * (n + 2) // 2 and one and orb for n, (c, one, orb) in rows.items())
+    texts = _texts({"sec4_5-unknowns", "sec4_5-closed-forms-index"}, override)
+    try:
+        orders_ok, orders = check_orders(texts["sec4_5-closed-forms-index"])
+        labels = [x for tex in texts.values() for x in alpha_labels(tex)]
+        if any(x != "\\alpha" for x in labels):
+            raise LatexMathError(f"superscripts {labels}")
+    except (LatexMathError, ValueError, TypeError) as exc:
+        return LineResult(False, how="the unknowns and orders read from the transcriptions, n <= 10",
+                          kind="exhaustive", detail={"unread": str(exc)[:200]})
+    ok &= orders_ok
     return LineResult(ok, how="union-find of the delta_n coefficients by symmetry_condition_1..3: (n+1)(n+2)/2 "
                       "classes, one per member of {r_{2n,2n-i,j}}_{j=0,i=j}^{n,n}, equal to the orbits of the six "
                       "permutations of (u, v, w) (n <= 10)", kind="exhaustive",
@@ -933,6 +1005,43 @@ def check_level_1() -> LineResult:
                       detail={"n_range": [n_lo, 7], "failing": bad, "fails_one_order_below_the_bound": sharp})
 
 
+def blending_centre_holds(tex: str, n: int) -> bool:
+    """The chain ``\\overline{R}_{2n,n,n}(u,v,w) = \\overline{G}_{..} = \\overline{B}_{..} (= r_{2n,n,n} R_{2n,n,n})``
+    parsed (the part before ``:`` of a set row): every relation '=', every part the same function at 4 rational
+    points of Omega^alpha, X-bar = x X by Definition normalized_united_system (coefficients by exact collocation)."""
+    body = tex.split(":")[0].replace("\\cup", " ").replace("\\left\\{", " ")
+    rel = parse_relation(body)
+    if set(rel.ops) != {"="} or len(rel.parts) < 3:
+        raise LatexMathError(f"the centre's chain not read: {rel.ops}")
+    t = TS[0]
+    alpha = rational_alpha(t)
+    pts = sample_rational_points(alpha, 4, seed=5)
+    vals = evaluate(n, alpha, pts, ExactContext())
+    idx = index_of(n)
+    n_ = sympy.Symbol("n")
+
+    def value(e: sympy.Expr, p: int):
+        out = fmpq(1)
+        for f in sympy.Mul.make_args(e.subs(n_, n)):
+            if not isinstance(f, sympy.core.function.AppliedUndef):
+                raise LatexMathError(f"{f} not read")
+            name = f.func.__name__
+            if name.endswith("bar"):  # X-bar = x X (the definition rows of normalized_united_system)
+                lab = f"{name[0]}_{{{','.join(str(x) for x in _ints(f.args[:-1]))}}}"
+                out *= _coef(n, t, lab.lower()) * vals[p, idx[lab]]
+            elif name in ("R", "G", "B"):
+                out *= vals[p, idx[f"{name}_{{{','.join(str(x) for x in _ints(f.args[:-1]))}}}"]]
+            elif name in ("r", "g", "b"):
+                out *= _coef(n, t, f"{name}_{{{','.join(str(x) for x in _ints(f.args))}}}")
+            else:
+                raise LatexMathError(f"{f} not read")
+            if name not in ("r", "g", "b") and f.args[-1] != sympy.Tuple(*sympy.symbols("u v w")):
+                raise LatexMathError(f"{f}: arguments are not (u, v, w)")
+        return out
+
+    return all(len({value(e, p) for e in rel.parts}) == 1 for p in range(len(pts)))
+
+
 @line_check("sec4_5-blending-def")
 def check_blending_def(override: dict[str, str] | None = None) -> LineResult:
     """The index set of the normalized system (read from the transcription of its first row) names the non-central
@@ -945,9 +1054,24 @@ def check_blending_def(override: dict[str, str] | None = None) -> LineResult:
     except ValueError as exc:
         return LineResult(False, how="the index set read from the transcription, n <= 8", kind="exhaustive",
                           detail={"unread": str(exc)})
+    texts["sec4_5-blending-centre"] = verbatim("sec4_5-blending-centre")
+    try:  # the notation (superscripts alpha), the domain of each set, and the centre's chain of equalities
+        for key in ("sec4_5-blending-set", "sec4_5-blending-centre-set", "sec4_5-blending-centre"):
+            if any(x != "\\alpha" for x in alpha_labels(texts[key])):
+                raise LatexMathError(f"{key}: superscripts {alpha_labels(texts[key])}")
+        for key in ("sec4_5-blending-set", "sec4_5-blending-centre-set"):
+            m = _POINT_ARGS.search(texts[key])
+            if not m or m.group(4) != "\\in" or (m.group(1), m.group(2), m.group(3)) != ("u", "v", "w"):
+                raise LatexMathError(f"{key}: no ': (u,v,w) \\in \\Omega^{{\\alpha}}' read")
+        centre_ok = all(blending_centre_holds(texts[key], n) for n in (1, 2, 3)
+                        for key in ("sec4_5-blending-centre", "sec4_5-blending-centre-set"))
+    except (LatexMathError, ValueError, TypeError) as exc:
+        return LineResult(False, how="the normalized system read from the transcriptions", kind="exhaustive",
+                          detail={"unread": str(exc)[:200]})
     colours = re.findall(r"\\overline\{([RGB])\}_\{2n,2n-i,j\}", texts["sec4_5-blending-set"])
     centre_names = re.findall(r"\\overline\{([RGB])\}%?\s*_\{2n,n,n\}", texts["sec4_5-blending-centre-set"])
     ok = (jv, iv) == ("j", "i") and sorted(colours) == ["B", "G", "R"] and sorted(centre_names) == ["B", "G", "R"]
+    ok &= centre_ok
     for n in range(1, 9):
         named = sorted(f"{x.lower()}_{{{2 * n},{2 * n - i},{j}}}" for x in colours
                        for j in range(bound(jlo, n=n), bound(jhi, n=n) + 1)
@@ -1023,6 +1147,10 @@ def check_chain_sum(verbatim: str | None = None, orders: str | None = None) -> L
         r_lo, r_hi = listed_range(orders if orders is not None else lines["sec4_5-parametrization-restated"], "r")
         if parts["y0"].strip() != "0":
             raise ValueError(f"evaluation point y = {parts['y0']!r}, the check evaluates at y = 0 only")
+        top = re.search(r"\\frac\{\\partial\^\{([^{}]+)\}%?\s*\}\{\\partial v",
+                        verbatim if verbatim is not None else lines["sec4_5-chain-sum"])
+        if not top or sympy.expand(parse(top.group(1)) - parse(parts["pv"]) - parse(parts["pw"])) != 0:
+            raise ValueError("the order of the mixed derivative is not the sum of its orders in v and w")
     except ValueError as exc:  # an unread or unexpected transcription fails the line, saying why
         return LineResult(False, how=how, kind="exact-evidence", detail={"unread": str(exc)})
     rhs = Q(parts["rhs"]) if parts["rhs"].lstrip("-").isdigit() else None
