@@ -768,6 +768,3 @@ def check_inclusion() -> LineResult:
 __all__ = ["EP", "class_key", "phase_equivalent", "printed_relation", "relation_matches", "power_reduction_ok",
            "k_sets_agree", "prop_sets_agree", "b2_classes", "max_values", "inclusion_proof"]
 
-
-# Section sec:partition_of_unity (source lines 1907-2167): paper_repro.claims.lines.sec5, registered here.
-from paper_repro.claims.lines import sec5 as _sec5  # noqa: E402,F401

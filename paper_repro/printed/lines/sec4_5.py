@@ -2,10 +2,10 @@
 
 ``LINES``: every displayed line and inline statement of the part (see :mod:`paper_repro.printed.lines`).  The
 constants and functions below are the machine-readable transcriptions of the same printed text that the checks
-(:mod:`paper_repro.claims.lines.sec4_5`) compare with independent computations.  The printed example formulas of
-Examples normalizing_coefficients_n_1..3 and Proposition prop:level_1_coefficients are transcribed in
-:mod:`paper_repro.printed.normalization` (``INTERMEDIATE``, ``FINAL``, ``prop_level_1``; compared with the source
-lines 2024-2107 and 1997-2006 for this part).
+(:mod:`paper_repro.claims.lines.sec4_5`; Section 5: :mod:`paper_repro.claims.lines.sec5`) compare with independent
+computations.  The formulas of Section 5 (Examples normalizing_coefficients_n_1..3, Remark
+normalizing_coeff_of_level_0, Proposition prop:level_1_coefficients) are parsed from ``LINES`` by
+:mod:`paper_repro.printed.lines.sec5_latex`; :mod:`paper_repro.printed.normalization` derives its tables from them.
 """
 
 from __future__ import annotations
