@@ -1105,7 +1105,11 @@ LINES: list[Line] = [
                    'x\\in\\left[ 0,\\alpha\\right]'),
          says='d^r/dy^r L(u(x,y), v(x,y), w(x,y)) at y = 0 equals delta_{r,0} for x in [0, alpha], r = 0..n.',
          status='checked',
-         check='sec4_5-system'),
+         check='sec4_5-system',
+         reason=('second reading: the system alone does not determine the delta_n coefficients (exact rank 6 < 7, '
+                 '15 < 19, 28 < 37 for n = 1, 2, 3); with symmetry_condition_1..3 imposed it does (rank 3, 6, 10 = '
+                 'the unknowns {r_{2n,2n-i,j}}_{j=0,i=j}^{n,n}), as the text calls those the unknowns; read so, it '
+                 'holds')),
     Line(id='sec4_5-system-y-range',
          tex=(1952, 1953),
          near='system_partition_of_unity',
@@ -1229,7 +1233,10 @@ LINES: list[Line] = [
                    'ight\\} _{i=1}^{n}$'),
          says='For n >= 2 the constants {r_{2n,2n-i,1}}_{i=1}^n.',
          status='checked',
-         check='sec4_5-level-1'),
+         check='sec4_5-level-1',
+         reason=('second reading: the bound n >= 2 is needed (at n = 1 the formula gives 2/sin^3(alpha/2), the '
+                 'coefficient r_{2,1,1} is 2/sin(alpha/2)); the check shows the formula for n = 2..7 and its '
+                 'failure one order below the printed bound')),
     Line(id='sec4_5-level1-i1',
          tex=(2000, 2000),
          near='level_1_coefficients',
@@ -1275,7 +1282,9 @@ LINES: list[Line] = [
          says=('n = 1: the system (system_partition_of_unity) has a unique solution (in the unknowns left by'
                ' the symmetry conditions).'),
          status='checked',
-         check='sec4_5-system'),
+         check='sec4_5-system',
+         reason=('unique in the unknowns left by symmetry_condition_1..3 (see line sec4_5-system): full rank with '
+                 'them, not without')),
     Line(id='sec4_5-ex-r220-r-c',
          tex=(2025, 2025),
          near='normalizing_coefficients_n_1',
@@ -1326,7 +1335,8 @@ LINES: list[Line] = [
                    'rac{\\alpha}{2}}'),
          says='r_{2,1,1} in closed form.',
          status='checked',
-         check='sec4_5-ex-r211-final'),
+         check='sec4_5-ex-r211-final',
+         reason=('holds; printed unreduced: 2 sin(alpha/2) / sin^2(alpha/2) = 2 / sin(alpha/2)')),
     Line(id='sec4_5-unique-solution-n2',
          tex=(2036, 2036),
          near='normalizing_coefficients_n_2',
@@ -1335,7 +1345,9 @@ LINES: list[Line] = [
          says=('n = 2: the system (system_partition_of_unity) has a unique solution (in the unknowns left by'
                ' the symmetry conditions).'),
          status='checked',
-         check='sec4_5-system'),
+         check='sec4_5-system',
+         reason=('unique in the unknowns left by symmetry_condition_1..3 (see line sec4_5-system): full rank with '
+                 'them, not without')),
     Line(id='sec4_5-ex-r440-r-c',
          tex=(2038, 2038),
          near='normalizing_coefficients_n_2',
@@ -1441,7 +1453,9 @@ LINES: list[Line] = [
                    '_{4,2}^{\\alpha}=\\frac{10+20\\cos ^{2}\\frac{\\alpha}{2}}{\\sin^{4}\\frac{\\alpha}{2}}'),
          says='r_{4,2,2} in closed form.',
          status='checked',
-         check='sec4_5-ex-r422-final'),
+         check='sec4_5-ex-r422-final',
+         reason=('holds: the combination is (10 + 10c^2 - 20c^4)/s^6 = 10 s^2 (1 + 2c^2)/s^6 = (10 + 20c^2)/s^4 '
+                 '(c = cos, s = sin of alpha/2); printed in lowest terms, so its power of sin is 4, not 2n + j = 6')),
     Line(id='sec4_5-wang-remark',
          tex=(2059, 2062),
          near='normalizing_coefficients_n_2',
@@ -1460,7 +1474,9 @@ LINES: list[Line] = [
          says=('n = 3: the system (system_partition_of_unity) has a unique solution (in the unknowns left by'
                ' the symmetry conditions).'),
          status='checked',
-         check='sec4_5-system'),
+         check='sec4_5-system',
+         reason=('unique in the unknowns left by symmetry_condition_1..3 (see line sec4_5-system): full rank with '
+                 'them, not without')),
     Line(id='sec4_5-ex-r660-r-c',
          tex=(2069, 2069),
          near='normalizing_coefficients_n_3',
@@ -1678,7 +1694,10 @@ LINES: list[Line] = [
          says=('Matrix size delta_n = 3n(n+1)+1, reduced to (n+1)(n+2)/2 by symmetry and to n(n+1)/2 by Rema'
                'rk level 0.'),
          status='checked',
-         check='sec4_5-matrix-sizes'),
+         check='sec4_5-matrix-sizes',
+         reason=('second reading: (n+1)(n+2)/2 is the number of classes of symmetry_condition_1..3 (= orbits of the '
+                 'six permutations of (u, v, w)); removing the n+1 classes of level 0 (Remark '
+                 'normalizing_coeff_of_level_0) leaves n(n+1)/2; both counted for n = 1..10')),
     Line(id='sec4_5-blending-set',
          tex=(2128, 2131),
          near='normalized_united_system',
