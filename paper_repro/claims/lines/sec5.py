@@ -1184,8 +1184,8 @@ def check_cos_nonzero(text: str | None = None) -> LineResult:
     bookkeeping, n = 1..6)."""
     from paper_repro.printed.lines.read import interval
 
-    how = ("the function, relation and interval parsed; cos(x/2) > 0 on x/2 in [0, alpha/2], alpha < pi; the "
-           "exponent equals the total degree of the terms (bookkeeping n = 1..6)")
+    how = ("the function, relation and interval parsed; cos(x/2) > 0 on x/2 in [0, alpha/2], alpha < pi (a proof for "
+           "every n); the exponent equals the total degree of the terms (bookkeeping n = 1..6)")
     n_, x_, a_ = sympy.symbols("n x alpha")
     tex = text if text is not None else verbatim("sec4_5-cos-nonzero")
     try:
@@ -1201,9 +1201,9 @@ def check_cos_nonzero(text: str | None = None) -> LineResult:
             raise LatexMathError(f"interval [{lo}, {hi}] is not [0, alpha]: x/2 may reach pi/2")
         degree_ok = all(surviving_degrees(n) == {int(power.subs(n_, n))} for n in range(1, 7))
     except (LatexMathError, ValueError, TypeError, IndexError) as exc:
-        return LineResult(False, how=how, kind="proof", detail={"unread": str(exc)[:200]})
+        return LineResult(False, how=how, kind="exhaustive", detail={"unread": str(exc)[:200]})
     ends_positive = all(rational_alpha(t).cos_half > 0 for t in (fmpq(1, 1000), fmpq(1, 2), fmpq(999, 1000)))
-    return LineResult(ends_positive and degree_ok, how=how, kind="proof",
+    return LineResult(ends_positive and degree_ok, how=how, kind="exhaustive",
                       detail={"function": str(f), "interval": [str(lo), str(hi)], "power_is_the_degree": degree_ok,
                               "cos_half_alpha_positive": ends_positive})
 
