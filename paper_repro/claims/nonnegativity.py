@@ -92,7 +92,8 @@ _ORDINALS = {"first": 1, "second": 2, "third": 3, "fourth": 4, "fifth": 5, "sixt
 
 def printed_orders() -> tuple[list[int], str]:
     """The line sec4_5-nonnegative (Remark after Definition normalized_united_system) read: the orders of its
-    ``the first, the second and the third order cases`` and the property its ``are also ...`` states."""
+    ``the first, the second and the third order cases`` (which must be those of the Examples it cites) and the
+    property its ``are also ...`` states."""
     from paper_repro.printed.lines import verbatim
 
     tex = verbatim("sec4_5-nonnegative")
@@ -103,6 +104,11 @@ def printed_orders() -> tuple[list[int], str]:
     words = re.findall(r"\w+", m.group(1).replace(" and ", " "))
     orders = [_ORDINALS[w] for w in words if w != "the" and w in _ORDINALS]
     if len(orders) != len([w for w in words if w != "the"]):
+        return [], m.group(2)
+    # "Based on Examples \ref{..n_1}--\ref{..n_3}": the Examples cited are those of the orders stated
+    cited = re.search(r"Examples \\ref\{normalizing_coefficients_n_(\d+)\}--\\ref\{normalizing_coefficients_n_(\d+)\}",
+                      tex)
+    if not cited or list(range(int(cited.group(1)), int(cited.group(2)) + 1)) != sorted(orders):
         return [], m.group(2)
     return sorted(orders), m.group(2)
 
