@@ -1,21 +1,18 @@
-"""A reader of the formulas of Section sec:partition_of_unity (source lines 1907-2167) into sympy objects.
+"""The reading of the formulas of Section sec:partition_of_unity (source lines 1907-2167) into sympy objects.
 
-Written to the contract of the shared reader ``paper_repro.printed.latex_math`` (common brief; not on main when this
-was written), restricted to the notation of Section 5, so that the checks of
-:mod:`paper_repro.claims.lines.sec5` parse each printed formula instead of retyping it:
+:func:`parse` and :func:`parse_relation` read with the project's one reader of the paper's mathematics,
+:mod:`paper_repro.printed.latex_math`, adding two rules of Section 5's notation: a parenthesis right after a
+constant ``c``, ``r``, ``g``, ``b`` is a factor (``c_{6,4}\\left( 2+..\\right)``: the shared reader appends it as
+an argument list), and a row ``& =..`` that continues a chain gets the part None first.  Own readers, where the
+shared one does not say what the checks need:
 
-* :func:`parse` -- one expression: integers, ``+``/``-``, juxtaposition (a product), ``\\frac``/``\\dfrac``,
-  ``^{..}`` powers, groups ``{..}`` and ``\\left( .. \\right)``, ``\\sin``/``\\cos``/``\\tan`` with an optional power
-  ``\\sin^{k}`` and the next atom as argument (``\\sin^{2}\\frac{\\alpha}{2}`` is ``sin(alpha/2)**2``), greek
-  letters (Symbols ``alpha``, ...), single latin letters (Symbols), and indexed names ``c_{2n,i}^{\\alpha}`` ->
-  ``Function("c")(2*n, i)`` (names ``r``, ``g``, ``b``, ``c``, ``R``, ``G``, ``B``; the superscript ``\\alpha`` is the
-  notation's label, not a power).  ``%``, ``&``, ``\\\\``, ``~``, ``\\left``/``\\right``, ``\\displaystyle`` are
-  ignored.  Anything else raises :class:`LatexMathError` naming the unread part (a blank ``XXX`` is three symbols
-  multiplied: the checks refuse an expression without the objects they compare).
-* :func:`parse_relation` -- a chain ``a = b = c`` (also ``\\neq``, ``\\leq``, ``\\geq``, ``<``, ``>``): every part.
 * :func:`listed_range` -- a listed range ``i=j+1,j+2,\\ldots,n-1`` -> ``(var, first, last)`` (sympy), refusing an
-  empty item (a doubled comma), a step other than one, or a missing ``\\ldots``.
-* :func:`unlabelled` -- the indexed names printed without the superscript ``\\alpha`` of the notation.
+  empty item (a doubled comma), a step other than one, or a missing ``\\ldots``;
+* :func:`unlabelled` -- the indexed names printed without the superscript ``\\alpha`` of the notation (the shared
+  reader drops the tag without a trace), by the small recursive-descent reader of this module (``_Parser``:
+  integers, ``+``/``-``, juxtaposition, ``\\frac``, powers, groups, ``\\sin``/``\\cos``/``\\tan``, greek letters,
+  indexed names, ``\\overline``, ``\\sum``; anything else raises :class:`LatexMathError`);
+* :func:`expand_sums` -- every ``Sum`` written out term by term.
 
 >>> parse(r"\\frac{2\\cos\\frac{\\alpha}{2}}{\\sin ^{2}\\frac{\\alpha}{2}}")
 2*cos(alpha/2)/sin(alpha/2)**2
@@ -237,17 +234,64 @@ def _run(tex: str) -> tuple[_Parser, Relation]:
     return p, Relation(parts, ops)
 
 
+_CONSTANTS = ("c", "r", "g", "b")  # constants of the notation: a parenthesis after one is a factor, not arguments
+
+
+def _factor_not_arguments(e):
+    """``c(6, 4, Tuple(x))`` (the shared reader appends a parenthesis after an indexed name as arguments) ->
+    ``c(6, 4) * x``: the univariate constants and normalizing coefficients are numbers, not functions."""
+    def fix(f):
+        if f.func.__name__ in _CONSTANTS and f.args and isinstance(f.args[-1], sympy.Tuple) and len(f.args[-1]) == 1:
+            return sympy.Function(f.func.__name__)(*f.args[:-1]) * f.args[-1][0]
+        return f
+
+    return e.replace(lambda x: isinstance(x, sympy.core.function.AppliedUndef), fix) if e is not None else None
+
+
+def _shared():
+    from paper_repro.printed import latex_math
+
+    return latex_math
+
+
+def _lead(tex: str) -> tuple[str | None, str]:
+    """A row of an align that continues a chain (``& =..``): its leading relation and the rest."""
+    body = tex.replace("%", " ").replace("&", " ").strip()
+    for token, op in sorted(RELATIONS.items(), key=lambda kv: -len(kv[0])):
+        if body.startswith(token):
+            return op, body[len(token):]
+    return None, tex
+
+
 def parse(tex: str) -> sympy.Expr:
-    """One expression (see the module docstring)."""
-    p, rel = _run(tex)
-    if rel.ops or rel.parts[0] is None:
+    """One expression, read by the shared reader :func:`paper_repro.printed.latex_math.parse` (a parenthesis after
+    a constant c, r, g, b is a factor)."""
+    lm = _shared()
+    try:
+        rel = lm.parse_relation(tex)
+    except lm.LatexMathError as exc:
+        raise LatexMathError(str(exc)) from exc
+    if rel.ops or len(rel.parts) != 1 or getattr(rel, "conditions", None):
         raise LatexMathError(f"a relation, not an expression: {tex[:60]!r}")
-    return rel.parts[0]
+    return _factor_not_arguments(rel.parts[0])
 
 
 def parse_relation(tex: str) -> Relation:
-    """A chain of relations with every part (``a = b = c`` -> parts [a, b, c], ops ["=", "="])."""
-    return _run(tex)[1]
+    """A chain of relations with every part (``a = b = c`` -> parts [a, b, c], ops ["=", "="]), read by the shared
+    reader :func:`paper_repro.printed.latex_math.parse_relation`; a row ``& =b`` continuing a chain has the part
+    None first; trailing conditions are refused (the checks split them off and read them themselves)."""
+    lm = _shared()
+    op, rest = _lead(tex)
+    try:
+        rel = lm.parse_relation(rest)
+    except lm.LatexMathError as exc:
+        raise LatexMathError(str(exc)) from exc
+    if getattr(rel, "conditions", None):
+        raise LatexMathError(f"conditions {rel.conditions} after the relation")
+    parts = [_factor_not_arguments(p) for p in rel.parts]
+    if op is not None:
+        return Relation([None, *parts], [op, *rel.ops])
+    return Relation(parts, list(rel.ops))
 
 
 def expand_sums(e: sympy.Expr) -> sympy.Expr:
@@ -265,7 +309,7 @@ def expand_sums(e: sympy.Expr) -> sympy.Expr:
 
 def unlabelled(tex: str) -> list[str]:
     """The indexed names of ``tex`` printed without the superscript ``\\alpha`` of the paper's notation."""
-    return _run(tex)[0].unlabelled
+    return _run(tex)[0].unlabelled  # the own reader: the shared one drops the tag ^{\\alpha} without a trace
 
 
 def listed_range(tex: str, var: str) -> tuple[sympy.Symbol, sympy.Expr, sympy.Expr]:
