@@ -1046,11 +1046,18 @@ def blending_centre_holds(tex: str, n: int) -> bool:
 def check_blending_def(override: dict[str, str] | None = None) -> LineResult:
     """The index set of the normalized system (read from the transcription of its first row) names the non-central
     functions of T_{2n}; the centre row names R-bar, G-bar, B-bar_{2n,n,n} (read), one function."""
-    from paper_repro.printed.lines.read import bound, index_set
+    from paper_repro.printed.latex_math import index_set
 
     texts = _texts({"sec4_5-blending-set", "sec4_5-blending-centre-set"}, override)
-    try:
-        (jv, jlo, jhi), (iv, ilo, ihi) = index_set(texts["sec4_5-blending-set"])
+    try:  # the index set, read by the shared reader
+        (jv, jlo_e, jhi_e), (iv, ilo_e, ihi_e) = index_set(texts["sec4_5-blending-set"])
+        jv, iv = str(jv), str(iv)
+        n_s, j_s = sympy.symbols("n j")
+
+        def bound(e, **env):
+            return int(e.subs({n_s: env["n"], j_s: env.get("j", 0)}))
+
+        jlo, jhi, ilo, ihi = jlo_e, jhi_e, ilo_e, ihi_e
     except ValueError as exc:
         return LineResult(False, how="the index set read from the transcription, n <= 8", kind="exhaustive",
                           detail={"unread": str(exc)})
