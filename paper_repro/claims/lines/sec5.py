@@ -476,6 +476,17 @@ def _angle(q: Q) -> tuple[Q, Q]:
     return Q(2 * q, 1 + q * q), Q(1 - q * q, 1 + q * q)
 
 
+def example_heads() -> dict[int, list[str]]:
+    """The coefficient at the head of each chain of Examples normalizing_coefficients_n_1..3 (the first part of the
+    lines ``-r-c`` and ``-mid``, parsed), by order."""
+    out: dict[int, list[str]] = {}
+    for ln in pl.LINES:
+        if ln.near.startswith("normalizing_coefficients_n_") and ln.id.endswith(("-r-c", "-mid")):
+            head = parse_relation(verbatim(ln.id)).parts[0]
+            out.setdefault(int(ln.near.rsplit("_", 1)[1]), []).append(_name(head))
+    return out
+
+
 _SYSTEM = re.compile(
     r"\\left\.\s*\\frac\{\\partial\^\{(?P<top>[^{}]+)\}\}\{\\partial\s*(?P<var>\w)\^\{(?P<bot>[^{}]+)\}\}\s*"
     r"L\\left\(\s*u\\left\(\s*x,y\\right\)\s*,v\\left\(\s*x,y\\right\)\s*,w\\left\(\s*x,y\\right\)\s*\\right\)\s*"
@@ -507,7 +518,8 @@ def read_system(tex: str, orders: str) -> dict:
 def check_system(override: dict[str, str] | None = None) -> LineResult:
     """system_partition_of_unity parsed (:func:`read_system`), with the words 'the unique solution' of the three
     Examples: the system holds with the exact coefficients at the printed orders, and with the symmetry conditions
-    (parsed) it determines them (full rank: the unique solution)."""
+    (parsed) it determines them (full rank: the unique solution); each Example lists every unknown
+    {r_{2n,2n-i,j}}_{j=0,i=j}^{n,n} once (the heads of its chains, parsed)."""
     t = _texts({"sec4_5-system", "sec4_5-system-r-range", "sec4_5-unique-solution-n1", "sec4_5-unique-solution-n2",
                 "sec4_5-unique-solution-n3"}, override)
     try:
@@ -515,6 +527,11 @@ def check_system(override: dict[str, str] | None = None) -> LineResult:
         for k in (1, 2, 3):
             if not re.search(r"the unique solution", t[f"sec4_5-unique-solution-n{k}"]):
                 raise LatexMathError(f"'the unique solution' not read in Example n = {k}")
+        listed = example_heads()
+        for k in (1, 2, 3):  # "the unique solution ... is": each Example lists every unknown once
+            want = sorted(f"r_{{{2 * k},{2 * k - i},{j}}}" for j in range(k + 1) for i in range(j, k + 1))
+            if sorted(listed.get(k, [])) != want:
+                raise LatexMathError(f"Example n = {k} lists {sorted(listed.get(k, []))}, the unknowns are {want}")
     except (LatexMathError, ValueError, TypeError) as exc:
         return LineResult(False, how="the system read from the transcription", detail={"unread": str(exc)[:200]})
     n_sym = sympy.Symbol("n")
