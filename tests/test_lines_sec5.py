@@ -175,6 +175,7 @@ def test_symmetry_conditions_are_parsed(line_id, right, wrong):
                                                                                        "\\sum_{i=j}^{2n-1-j}g"),
     ("sec4_5-partition-sum", "sec4_5-L-one", "1 & =L", "2 & =L"),
     ("sec4_5-system", "sec4_5-system", "_{y=0}", "_{y=1}"),
+    ("sec4_5-system", "sec4_5-ex-r631-mid", "r_{6,3,1}^{\\alpha} &", "r_{6,3,2}^{\\alpha} &"),  # listed twice
     ("sec4_5-blending-def", "sec4_5-blending-centre", "=r_{2n,n,n}", "=g_{2n,n,n-1}"),
 ])
 def test_section5_lines_are_read(check, line_id, right, wrong):
