@@ -3,9 +3,10 @@
 * Independent net: fitting the torus (eq. toroidal_triangle) in the normalized basis of order 2
   (:mod:`paper_repro.surfaces.fitting`), exactly at rational-tangent alpha with rational rho, mu, and in
   mpmath at any alpha.
-* Every printed coordinate (:mod:`paper_repro.printed.torus`) is compared with it over several
-  (alpha, rho, mu); disagreeing coordinates become errata with a corrected closed form that is itself
-  verified (exactly at rational-tangent alpha, and at high precision).
+* Every printed coordinate -- parsed from the transcription of its line (``sec6-torus-point-<label>``) by
+  :mod:`paper_repro.printed.torus`, never retyped -- is compared with it over several (alpha, rho, mu);
+  disagreeing coordinates become errata (the printed text is the transcription's LaTeX) with a corrected closed
+  form that is itself verified (exactly at rational-tangent alpha, and at high precision).
 * Maximum deviation from the torus of the patch built from the printed net and from the computed net.
 """
 
@@ -18,7 +19,7 @@ from flint import fmpq
 from paper_repro.core.alphas import alpha_mp
 from paper_repro.core.domain import rational_alpha, sample_points
 from paper_repro.core.labels import index_of, united_system
-from paper_repro.printed.torus import PRINTED, torus
+from paper_repro.printed.torus import coordinate_tex, printed_net_mp, torus
 from paper_repro.surfaces.fitting import ExactTrig, fit_exact, fit_mp
 from paper_repro.surfaces.patch import Patch
 from paper_repro.util.measured import bound, sig
@@ -29,7 +30,6 @@ CORRECTED = {("b_{4,3,1}", "x"): (
     "3 rho (1 + cos a) / (4 + 2 cos a) + mu/4 sin a",
     lambda a, r, m: 3 * r * (1 + mpmath.cos(a)) / (4 + 2 * mpmath.cos(a)) + m / 4 * mpmath.sin(a),
     lambda ca, sa, r, m: 3 * r * (1 + ca) / (4 + 2 * ca) + m / 4 * sa)}
-PRINTED_TEXT = {("b_{4,3,1}", "x"): "rho (7 - 2 cos^2(a/2) + cos(a/2)) cos^2(a/2) / (4 + 2 cos a) + mu/4 sin a"}
 
 
 def exact_torus(rho: fmpq, mu: fmpq):
@@ -41,11 +41,13 @@ def exact_torus(rho: fmpq, mu: fmpq):
 
 
 def printed_net(a, rho, mu) -> np.ndarray:
-    idx = index_of(2)
-    net = np.empty((19, 3), dtype=object)
-    for lab, fs in PRINTED.items():
-        net[idx[lab]] = [f(a, rho, mu) for f in fs]
-    return net
+    """The printed net of Example exmp:torus, parsed from the transcriptions now, in mpmath at alpha = a."""
+    return printed_net_mp(a, rho, mu)
+
+
+def printed_text(label: str, axis: str) -> str:
+    """The printed LaTeX of one coordinate, read from its transcription."""
+    return coordinate_tex(f"sec6-torus-point-{label}", "xyz".index(axis))
 
 
 def _digits17(x) -> str:
@@ -118,7 +120,7 @@ def run(alphas, rho_mu, rational_ts, dps, points) -> Outcome:
         corrected_ok[f"{lab}.{ax}"] = ok
     errata = [{"id": f"torus-{lab}-{ax}", "paper_ref": "exmp:torus", "item": f"{lab}, {ax} coordinate",
                "severity": "statement",  # the printed point is wrong; with it corrected the example holds
-               "printed": PRINTED_TEXT.get((lab, ax), "see source"),
+               "printed": printed_text(lab, ax),
                "corrected": CORRECTED[(lab, ax)][0] if (lab, ax) in CORRECTED else "not found",
                "evidence": f"independent exact fit of the torus (eq. toroidal_triangle) disagrees in {n} of "
                            f"{len(alphas) * len(rho_mu)} (alpha, rho, mu) cases; the corrected form equals the exact "

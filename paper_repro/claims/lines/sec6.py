@@ -8,8 +8,8 @@ Independent computations used here:
   cosines (:mod:`paper_repro.core.domain`), the normalizing coefficients coming from exact collocation
   (:mod:`paper_repro.core.normalization`), the univariate B-basis from its constants (eq. univariate_basis);
 * the torus and the Dupin cyclide are fitted exactly in the normalized basis
-  (:func:`~paper_repro.surfaces.fitting.fit_exact`) and the printed control points, transcribed here as exact
-  functions of ``cos``/``sin`` of ``alpha`` and ``alpha/2``, are compared with the fit;
+  (:func:`~paper_repro.surfaces.fitting.fit_exact`) and the printed control points, parsed from their
+  transcriptions (:mod:`paper_repro.printed.torus`), are evaluated exactly and compared with the fit;
 * surfaces are tested against their implicit quartics exactly.
 """
 
@@ -20,6 +20,7 @@ from collections.abc import Callable, Sequence
 from math import comb
 
 import numpy as np
+import sympy
 from flint import fmpq, fmpq_mat, fmpq_poly
 
 from paper_repro.claims.lines import LineResult, line_check
@@ -40,6 +41,9 @@ _LINE = live_lines()  # read at every lookup (the blank and mutation tests chang
 
 
 # --- helpers ---------------------------------------------------------------------------------------------
+ORDINALS = {"first": 1, "second": 2, "third": 3, "fourth": 4, "fifth": 5}
+
+
 def enumerate_set(letter: str, n: int, j_max: int, i_max: Callable[[int], int], first=lambda n, i: 2 * n - i,
                   ) -> list[str]:
     """Labels ``{letter_{2n, first(i), j}}_{j=0, i=j}^{j_max, i_max(j)}`` exactly as the printed bounds say."""
@@ -100,6 +104,25 @@ def rank(rows: Sequence[Sequence[fmpq]]) -> int:
     return fmpq_mat([list(r) for r in rows]).rank()
 
 
+def corrected_text(line_id: str) -> str | None:
+    """The line's transcription with its erratum's ``fix`` applied (each ``(printed, corrected)`` LaTeX pair: the
+    printed fragment must occur in the transcription as it stands now), or ``None`` when a printed fragment is not
+    there (the transcription is not the one the erratum corrects)."""
+    ln = _LINE[line_id]
+    text = ln.verbatim
+    for printed, corrected in (ln.erratum or {}).get("fix", []):
+        if printed not in text:
+            return None
+        text = text.replace(printed, corrected, 1)
+    return text
+
+
+def has_words(text: str, *phrases: str) -> bool:
+    """Every phrase occurs in ``text`` (whitespace-normalised): the words that carry a prose line's claim."""
+    norm = " ".join(text.replace("%", " ").split())
+    return all(" ".join(p.split()) in norm for p in phrases)
+
+
 # --- Definition def:surface_patch: index sets and counts -------------------------------------------------
 def patch_terms_read(n: int, override: dict[str, str] | None = None) -> list[str]:
     """The control points of eq. triangular_trig_surface, read from the transcriptions of its two rows (sums, bounds,
@@ -131,11 +154,38 @@ def patch_index_sets(override: dict[str, str] | None = None) -> LineResult:
         pts = sample_rational_points(alpha, delta(n), seed=60 + n)
         ranks[n] = rank(evaluate(n, alpha, pts, "exact").tolist())
     full = all(ranks[n] == delta(n) for n in ranks)
-    return LineResult(counts_ok and distinct and full, how="enumeration of the printed sums vs united_system, "
-                      "n = 1..12; exact rank of the basis at delta_n rational points, n = 1..3",
+    order_ok = order_range_ok("sec6-patch-order")
+    return LineResult(counts_ok and distinct and full and order_ok, how="enumeration of the printed sums vs "
+                      "united_system, n = 1..12; exact rank of the basis at delta_n rational points, n = 1..3; the "
+                      "printed order range (n >= 1) vs the orders with a patch (n = 0..12)",
                       kind="exact-evidence",
                       detail={"n": [NS[0], NS[-1]], "terms_n_1_2_3": [len(patch_terms_read(n)) for n in (1, 2, 3)],
-                              "rank_n_1_2_3": [ranks[n] for n in (1, 2, 3)], "order_n_geq_1": True})
+                              "rank_n_1_2_3": [ranks[n] for n in (1, 2, 3)], "order_range_read": order_ok})
+
+
+def order_range_ok(line_id: str) -> bool:
+    """The printed range of the order (``of order $n\\geq1$``, read from the transcription) is exactly the set of
+    orders n = 0..12 that have a patch: 2n >= 2 (n = 0 leaves the constant function 1 alone, no trigonometric
+    function) with delta_n independent functions (rank at n = 1, 2 exact)."""
+    from paper_repro.printed.lines.sec6_latex import parse_relation, relation_holds
+
+    m = re.search(r"(?:rational )?triangular trigonometric patch of order \$([^$]+)\$", _LINE[line_id].verbatim)
+    if not m:
+        return False
+    parts, ops = parse_relation(m.group(1).replace("n", "u"))  # n read as a symbol (u: a letter the reader knows)
+    from paper_repro.printed.lines.sec6_latex import U
+
+    alpha = rational_alpha(fmpq(1, 3))
+
+    def has_patch(n: int) -> bool:
+        if n < 1:
+            return False
+        if n <= 2:
+            return rank(evaluate(n, alpha, sample_rational_points(alpha, delta(n), seed=60 + n), "exact").tolist()
+                        ) == delta(n)
+        return True  # n >= 3: the ranks of sec6-patch-index-sets and the linear independence claim
+
+    return all(relation_holds([x.subs(U, n) for x in parts], ops) == has_patch(n) for n in range(0, 13))
 
 
 def control_net_counts(n: int, printed: bool = True) -> dict:
@@ -154,7 +204,9 @@ def control_net_set(override: dict[str, str] | None = None) -> LineResult:
     printed = {k: {n: net_from_transcription(n, tex) for n in NS} for k, tex in texts.items()}
     holds = all(matches_basis(net, n) for nets in printed.values() for n, net in nets.items())
     corrected = {n: control_net_counts(n, printed=False) for n in NS}
-    corr = all(v["equals_basis"] for v in corrected.values())
+    # the correction: the printed set (as read) with the centre r_{2n,n,n} added
+    corr = all(matches_basis(net + [f"r_{{{2 * n},{n},{n}}}"], n) for nets in printed.values()
+               for n, net in nets.items())
     centre = {k: any(f"r_{{{2 * n},{n},{n}}}" in net for n, net in nets.items()) for k, nets in printed.items()}
     return LineResult(holds, corr, how="enumeration of the printed index sets (read from the transcriptions) vs the "
                       "labels of T_{2n}, n = 1..12", kind="exhaustive",
@@ -173,21 +225,34 @@ def delta3(verbatim: str | None = None) -> LineResult:
     if not m:
         return LineResult(False, how="the count read from the transcription", detail={"unread": tex[:60]})
     n, count = int(m.group(1)), int(m.group(2))
+    order = re.search(r"illustrates a (\w+) order triangular trigonometric\s+patch defined by", tex)
+    said = ORDINALS.get(order.group(1)) if order else None
     terms = len(patch_terms_read(n))
-    return LineResult(terms == count == delta(n) == len(united_system(n)),
+    return LineResult(said == n and has_words(tex, "control points") and
+                      terms == count == delta(n) == len(united_system(n)),
                       how="count read from the transcription vs the terms of eq. triangular_trig_surface (read) and "
-                      "T_{2n}", kind="proof", detail={"n": n, "printed": count, "terms": terms,
+                      "T_{2n}; the order word ('third') vs the subscript of delta", kind="proof",
+                      detail={"n": n, "order_word": said, "printed": count, "terms": terms,
                                                        "united_system": len(united_system(n))})
 
 
 @line_check("sec6-quadratic-growth")
 def quadratic_growth() -> LineResult:
+    """"the quadratic growth of the control points" (read) vs the second differences of the number of terms of eq.
+    triangular_trig_surface (read); "order higher than three" (read) is the order beyond which the convex hull
+    property is open (the orders of sec6-convex-hull-n123, read there)."""
+    tex = _LINE["sec6-quadratic-growth"].verbatim
     sizes = [len(patch_terms_read(n)) for n in NS]
     second = {c - 2 * b + a for a, b, c in zip(sizes, sizes[1:], sizes[2:])}
     first = sizes[1] - sizes[0]
-    return LineResult(second == {6} and first > 0, how="second differences of the number of control points, "
-                      "n = 1..12", kind="exact-evidence",
-                      detail={"sizes": sizes[:4], "second_differences": sorted(second)})
+    m = re.search(r"patches of order higher than (\w+) would be used", tex)
+    beyond = {"one": 1, "two": 2, "three": 3, "four": 4}.get(m.group(1)) if m else None
+    words = has_words(tex, "quadratic growth of the control points")
+    proven = max(convex_hull_orders(), default=None)
+    return LineResult(words and beyond == proven and second == {6} and first > 0,
+                      how="second differences of the number of control points, n = 1..12; the order named vs the "
+                      "highest order with the convex hull property (sec6-convex-hull-n123)", kind="exact-evidence",
+                      detail={"sizes": sizes[:4], "second_differences": sorted(second), "order_named": beyond})
 
 
 # --- geometric properties ---------------------------------------------------------------------------------
@@ -195,18 +260,51 @@ def _points(alpha: RationalAngle, count: int, seed: int) -> RationalPoints:
     return sample_rational_points(alpha, count, seed=seed)
 
 
+def read_open_interval(tex: str, var: str) -> tuple[sympy.Expr, sympy.Expr]:
+    """``(lo, hi)`` of ``var \\in \\left(lo,hi\\right)`` in ``tex`` (parsed)."""
+    from paper_repro.printed.lines.sec6_latex import parse_expression
+
+    m = re.search(rf"{re.escape(var)}\s*\\in\s*\\left\(([^,]*),([^,]*?)\\right\)", tex)
+    if not m:
+        raise ValueError(f"no open interval {var} in (lo, hi) in {tex[:50]!r}")
+    return parse_expression(m.group(1)), parse_expression(m.group(2))
+
+
+#: cos(alpha/2) of the sampled alphas (rational, so everything below is exact): alpha = 2 acos(c) from 0.57 to 5.7
+ALPHA_HALF_COS = (fmpq(24, 25), fmpq(4, 5), fmpq(3, 5), fmpq(7, 25), fmpq(0), fmpq(-7, 25), fmpq(-3, 5),
+                  fmpq(-4, 5), fmpq(-24, 25))
+
+
 @line_check("sec6-alpha-range")
 def alpha_range() -> LineResult:
-    """For alpha across (0, pi) the normalized basis exists, sums to one and has positive coefficients (n = 2)."""
-    ok, tested = True, []
-    for k in range(1, 10):
-        alpha = rational_alpha(fmpq(k, 10))
-        vals = evaluate_normalized(2, alpha, _points(alpha, 3, seed=k), "exact")
-        ok &= all(sum(vals[p].tolist(), fmpq(0)) == 1 for p in range(3))
-        ok &= all(c > 0 for c in coefficient_vector(2, alpha, "exact"))
-        tested.append(f"{k}/10")
-    return LineResult(ok, how="exact normalized basis of order 2 at tan(alpha/4) = k/10, k = 1..9 (alpha from "
-                      "0.40 to 2.66)", kind="exact-evidence", detail={"tan_alpha_over_4": tested})
+    """The printed range of alpha (read from the transcription) is where the patch is defined: at every sampled alpha
+    in it (cos(alpha/2) rational, alpha from 0.57 to 5.7) the univariate B-basis constants c_{2n,i} of the boundary
+    curves are positive (n = 1, 2, 3) and, for alpha < pi, the exact normalized basis of order 2 sums to one with
+    positive coefficients; a sampled alpha in the range where a constant is <= 0 makes the printed range fail."""
+    import math
+
+    lo, hi = read_open_interval(_LINE["sec6-alpha-range"].verbatim, "\\alpha")
+    lo_f, hi_f = float(lo), float(hi)
+    ok, tested = lo_f >= 0, []
+    for c in ALPHA_HALF_COS:
+        a = 2 * math.acos(float(c))
+        if not lo_f < a < hi_f:
+            continue
+        tested.append(str(c))
+        ok &= all(sum(k * c**p for p, k in enumerate(c_numerator(n, i))) > 0 for n in (1, 2, 3) for i in range(2 * n + 1))
+        if c in ALPHA_HALF_SIN:  # alpha < pi: the normalized basis of order 2, tan(alpha/4) = sin / (1 + cos)
+            alpha = rational_alpha(ALPHA_HALF_SIN[c] / (1 + c))
+            vals = evaluate_normalized(2, alpha, _points(alpha, 3, seed=3), "exact")
+            ok &= all(sum(vals[p].tolist(), fmpq(0)) == 1 for p in range(3))
+            ok &= all(x > 0 for x in coefficient_vector(2, alpha, "exact"))
+    return LineResult(ok and bool(tested), how="the printed interval read from the transcription; exact B-basis "
+                      "constants c_{2n,i}, n = 1, 2, 3, and the exact normalized basis of order 2 (alpha < pi) at "
+                      "the sampled alpha in it", kind="exact-evidence",
+                      detail={"interval": [str(lo), str(hi)], "cos_alpha_half_tested": tested})
+
+
+#: the rational sin(alpha/2) belonging to the sampled cos(alpha/2) (Pythagorean triples)
+ALPHA_HALF_SIN = {fmpq(24, 25): fmpq(7, 25), fmpq(4, 5): fmpq(3, 5), fmpq(3, 5): fmpq(4, 5), fmpq(7, 25): fmpq(24, 25)}
 
 
 def affine_invariance_holds(n: int, alpha: RationalAngle, A: Sequence[Sequence[fmpq]], b: Sequence[fmpq],
@@ -230,23 +328,41 @@ def affine_invariance() -> LineResult:
     ok = all(affine_invariance_holds(n, alpha, *AFFINE) for n in (1, 2, 3))
     unity = all(sum(row.tolist(), fmpq(0)) == 1
                 for n in (1, 2, 3) for row in evaluate_normalized(n, alpha, _points(alpha, 3, seed=9), "exact"))
-    return LineResult(ok and unity, how="exact patch of a random rational net and of its affine image at rational "
-                      "points, n = 1, 2, 3, tan(alpha/4) = 1/3", kind="exact-evidence",
+    words = has_words(_LINE["sec6-affine-invariance"].verbatim, "functions that form a partition of the unity",
+                      "any patch of the type", "is invariant under the affine transformations of its control points")
+    return LineResult(words and ok and unity, how="the claim's words read from the transcription; exact patch of a "
+                      "random rational net and of its affine image at rational points, n = 1, 2, 3, tan(alpha/4) = 1/3",
+                      kind="exact-evidence",
                       detail={"partition_of_unity": unity, "affine_image_commutes": ok})
+
+
+def convex_hull_orders() -> list[int]:
+    """The orders of "in the special cases of first, second and third order" (read from the transcription)."""
+    tex = _LINE["sec6-convex-hull-n123"].verbatim
+    m = re.search(r"in the special cases of ((?:\w+, )*\w+ and \w+) order triangular", tex)
+    if not m:
+        return []
+    words = re.split(r", | and ", m.group(1))
+    return [ORDINALS[w] for w in words if w in ORDINALS] if all(w in ORDINALS for w in words) else []
 
 
 @line_check("sec6-convex-hull-n123")
 def convex_hull_n123() -> LineResult:
-    """Non-negative normalized system for n = 1, 2, 3: the functions are products of half-angle sines and
-    cosines (>= 0 on Omega^alpha); so it is non-negative iff the normalizing coefficients are; exact at
-    sampled alpha."""
+    """Non-negative normalized system for the orders read from the transcription (first, second, third): the
+    functions are products of half-angle sines and cosines (>= 0 on Omega^alpha); so it is non-negative iff the
+    normalizing coefficients are; exact at sampled alpha.  The words "convex hull of their control points" and
+    "non-negative" are read."""
+    tex = _LINE["sec6-convex-hull-n123"].verbatim
+    orders = convex_hull_orders()
+    words = has_words(tex, "their shape lies in the convex hull of their control points",
+                      "normalized function system (\\ref{normalized_united_system}) is also non-negative")
     mins = {}
-    for n in (1, 2, 3):
+    for n in orders:
         for t in TS + (fmpq(9, 10),):
             vec = coefficient_vector(n, rational_alpha(t), "exact")
             mins[f"n={n},t={t}"] = min(vec)
-    monomials_nonneg = all(min(exponents(lab)) >= 0 for n in (1, 2, 3) for lab in united_system(n))
-    ok = monomials_nonneg and all(v > 0 for v in mins.values())
+    monomials_nonneg = all(min(exponents(lab)) >= 0 for n in orders for lab in united_system(n))
+    ok = words and len(orders) == len(set(orders)) > 0 and monomials_nonneg and all(v > 0 for v in mins.values())
     return LineResult(ok, how="exact normalizing coefficients (collocation) for n = 1, 2, 3 at tan(alpha/4) in "
                       "{1/5, 1/3, 1/2, 3/4, 9/10}", kind="exact-evidence",
                       detail={"min_coefficient": {k: str(v) for k, v in mins.items()}})
@@ -401,10 +517,15 @@ def corners() -> LineResult:
             nz = [k for k, v in enumerate(row) if v != 0]
             ok &= len(nz) == 1 and row[nz[0]] == 1
             found[f"n={n} {name}"] = united_system(n)[nz[0]].control_point if nz else "none"
-    printed = {n: {f"{c}_{{{2 * n},{2 * n},0}}" for c in "rgb"} for n in (1, 2, 3)}
+    tex = _LINE["sec6-corners"].verbatim
+    read = re.findall(r"\\mathbf\{([rgb])\}%?\s*_\{2n,2n,0\}", tex)  # the three corners as printed
+    words = has_words(tex, "interpolates the three corners", "of its control net")
+    printed = {n: {f"{c}_{{{2 * n},{2 * n},0}}" for c in read} for n in (1, 2, 3)}
+    ok &= words and len(read) == 3 and len(tex.split("$")) == 7  # three labels, nothing else in math mode
     ok &= all({v for k, v in found.items() if k.startswith(f"n={n} ")} == printed[n] for n in (1, 2, 3))
-    return LineResult(ok, how="exact normalized basis at the corners, n = 1, 2, 3", kind="exact-evidence",
-                      detail={"corner_points": found})
+    return LineResult(ok, how="the corner labels read from the transcription vs the exact normalized basis at the "
+                      "corners (a unit vector there), n = 1, 2, 3", kind="exact-evidence",
+                      detail={"corner_points": found, "printed": read})
 
 
 def a_forms_rank(n: int, alpha: RationalAngle) -> int:
@@ -424,9 +545,12 @@ def trig_curves() -> LineResult:
     """F_{2n}^alpha = span{cos kt, sin kt}_{k<=n} is the space of degree-2n forms in sin(t/2), cos(t/2)
     (dimension 2n+1); the 2n+1 functions A_{2n,i} are such forms and independent, so the boundary curves
     (combinations of A_{2n,i}) reach every curve of F_{2n}^alpha."""
+    words = has_words(_LINE["sec6-trig-curves"].verbatim, "its boundary curves can exactly describe arcs of any "
+                      "trigonometric parametric curve the coordinate functions of which are in the vector space "
+                      "(\\ref{truncated_Fourier_vector_space})")
     ranks = {f"n={n},t={t}": a_forms_rank(n, rational_alpha(t)) for n in range(1, 7) for t in TS}
-    ok = all(v == 2 * int(k.split(",")[0][2:]) + 1 for k, v in ranks.items())
-    return LineResult(ok, how="exact rank of the coefficient matrix of A_{2n,i} as binary forms, n = 1..6, "
+    ok = words and all(v == 2 * int(k.split(",")[0][2:]) + 1 for k, v in ranks.items())
+    return LineResult(ok, how="the claim's words read; exact rank of the coefficient matrix of A_{2n,i} as binary forms, n = 1..6, "
                       "tan(alpha/4) in {1/5, 1/3, 1/2, 3/4}", kind="exact-evidence",
                       detail={"ranks_t_1_3": [ranks[f"n={n},t=1/3"] for n in range(1, 7)]})
 
@@ -477,7 +601,9 @@ def tangent_planes() -> LineResult:
             d = m[0][0] * m[1][1] - m[0][1] * m[1][0]
             ok &= d != 0
             det[f"n={n} {corner}"] = str(d)
-    return LineResult(ok, how="exponents of the monomials at the corners, exact derivatives of the normalized basis "
+    ok &= has_words(_LINE["sec6-tangent-planes"].verbatim, "The tangent planes at these corners are spanned by the "
+                    "terminal edges of the control polygons that generate the boundary curves of the given patch.")
+    return LineResult(ok, how="the claim's words read; exponents of the monomials at the corners, exact derivatives of the normalized basis "
                       "there (n = 1, 2, 3, tan(alpha/4) = 1/3)", kind="exact-evidence",
                       detail={"neighbour_derivative_determinant": det})
 
@@ -487,9 +613,23 @@ def bezier_limit() -> LineResult:
     """A_{2n,i}(alpha s) = P_i(cos(alpha/2)) (sin(alpha(1-s)/2)/sin(alpha/2))^{2n-i} (sin(alpha s/2)/sin(alpha/2))^i
     with P_i the printed numerator; as alpha -> 0 the ratios tend to 1-s and s, so the limit is P_i(1)
     (1-s)^{2n-i} s^i: the Bernstein polynomial iff P_i(1) = binom(2n, i)."""
-    ok = all(sum(c_numerator(n, i)) == comb(2 * n, i) for n in range(1, 31) for i in range(2 * n + 1))
-    return LineResult(ok, how="printed numerator of c_{2n,i} at cos(alpha/2) = 1 vs binom(2n, i), n = 1..30",
-                      kind="exact-evidence", detail={"n": [1, 30]})
+    from paper_repro.printed.lines.sec6_latex import parse_expression
+
+    tex = _LINE["sec6-bezier-limit"].verbatim
+    lim = re.search(r"when \$\\alpha \\to (\d+)\$ the boundary\s+curves degenerate to B\\'ezier curves of degree "
+                    r"\$([^$]+)\$", tex)
+    if not lim or "Proposition \\ref{Bernstein}" not in tex:
+        return LineResult(False, how="the limit and the degree read from the transcription", detail={"unread": tex[:60]})
+    limit, degree = int(lim.group(1)), parse_expression(lim.group(2).replace("n", "u"))
+    from paper_repro.printed.lines.sec6_latex import U
+
+    # as alpha -> 0 cos(alpha/2) -> 1: the limit of A_{2n,i} is P_i(1) (1-s)^{2n-i} s^i, the Bernstein polynomial of
+    # degree 2n iff P_i(1) = binom(2n, i); a limit alpha -> a > 0 leaves cos(alpha/2) != 1 (not polynomial)
+    ok = limit == 0 and all(degree.subs(U, n) == 2 * n for n in range(1, 31))
+    ok &= all(sum(c_numerator(n, i)) == comb(2 * n, i) for n in range(1, 31) for i in range(2 * n + 1))
+    return LineResult(ok, how="the limit and the degree read from the transcription; printed numerator of c_{2n,i} "
+                      "at cos(alpha/2) = 1 vs binom(2n, i), n = 1..30", kind="exact-evidence",
+                      detail={"n": [1, 30], "limit": limit, "degree": str(degree)})
 
 
 def vn_element(n: int, seed: int, extra: tuple[int, int, int] | None = None):
@@ -520,6 +660,11 @@ def vn_configurations() -> LineResult:
     alpha = rational_alpha(TS[1])
     ok = all(in_span(vn_element(n, 40 + n), n, alpha) for n in (1, 2, 3))
     beyond = in_span(vn_element(2, 42, extra=(3, 0, 0)), 2, alpha)  # cos 3u is not in V_2
+    ok &= has_words(_LINE["sec6-vn-configurations"].verbatim, "It provides $\\alpha$-dependent control point "
+                    "configurations for the exact description of triangular patches of arbitrary trigonometric "
+                    "surfaces the coordinate functions of which are given in the vector space "
+                    "(\\ref{constrained_trivariate_extension_of_truncated_Fourier_series}) (consider Example "
+                    "\\ref{exmp:torus}).")
     return LineResult(ok and not beyond, how="exact fit (collocation, verified at 4 further points) of a random "
                       "element of V_n, n = 1, 2, 3, tan(alpha/4) = 1/3; an element with cos 3u is not fitted by "
                       "order 2", kind="exact-evidence", detail={"n": [1, 2, 3], "order_2_fits_cos_3u": beyond})
@@ -557,59 +702,36 @@ class Angles:
         self.s3h, self.c3h = 3 * self.sh - 4 * self.sh**3, 4 * self.ch**3 - 3 * self.ch
 
 
-#: The printed control points of Example exmp:torus, transcribed from the LaTeX as exact functions of
-#: (Angles, varrho, mu).  (A second, mpmath transcription is paper_repro.printed.torus; the test compares them.)
-PRINTED_EXACT = {
-    "r_{4,4,0}": lambda A, r, m: (r + m * A.sa, 0, m * A.ca),
-    "r_{4,3,0}": lambda A, r, m: (r + m / 2 * (A.th + A.sa), 0, m / 2 * (1 + A.ca)),
-    "r_{4,2,0}": lambda A, r, m: (r + 3 * m * A.sa / (4 + 2 * A.ca), 0, 3 * m * (1 + A.ca) / (4 + 2 * A.ca)),
-    "r_{4,1,0}": lambda A, r, m: (r + m / 2 * A.th, 0, m),
-    "r_{4,3,1}": lambda A, r, m: (r + 3 * m * A.sa / (4 + 2 * A.ca),
-                                  (3 * r * A.sa + m * (3 + A.ca) * (1 - A.ca)) / (8 + 4 * A.ca),
-                                  3 * m * (1 + A.ca) / (4 + 2 * A.ca)),
-    "r_{4,2,1}": lambda A, r, m: (r + 3 * m * (2 + A.ca) * A.sa / ((1 + A.ca) * (10 + 2 * A.ca)),
-                                  (2 * r * (A.sa + A.th) + 3 * m * (1 - A.ca)) / (10 + 2 * A.ca),
-                                  3 * m * (3 + A.ca) / (10 + 2 * A.ca)),
-    "r_{4,2,2}": lambda A, r, m: ((6 * r * (3 + 2 * A.ca) + m * (9 + A.ca) * A.sa) / (20 + 10 * A.ca),
-                                  (10 * r * A.sa + m * (7 + A.ca) * (1 - A.ca)) / (20 + 10 * A.ca),
-                                  3 * m * (3 + 2 * A.ca) / (10 + 5 * A.ca)),
-    "g_{4,4,0}": lambda A, r, m: (r, 0, m),
-    "g_{4,3,0}": lambda A, r, m: (r, r / 2 * A.th, m),
-    "g_{4,2,0}": lambda A, r, m: (3 * r * (1 + A.ca) / (4 + 2 * A.ca), 3 * r * A.sa / (4 + 2 * A.ca), m),
-    "g_{4,1,0}": lambda A, r, m: (r / 2 * (1 + A.ca), r / 2 * (A.th + A.sa), m),
-    "g_{4,3,1}": lambda A, r, m: (r + 3 * m * A.sa / (8 + 4 * A.ca),
-                                  (3 * r * A.sa + 2 * m * (1 - A.ca)) / (8 + 4 * A.ca), m),
-    "g_{4,2,1}": lambda A, r, m: ((3 * r * (3 + A.ca) + 3 * m * A.sa) / (10 + 2 * A.ca),
-                                  (3 * r * (3 * A.sh + A.s3h) + 3 * m * (A.ch - A.c3h)) / ((20 + 4 * A.ca) * A.ch), m),
-    "b_{4,4,0}": lambda A, r, m: (r * A.ca, r * A.sa, m),
-    "b_{4,3,0}": lambda A, r, m: (r / 2 * (1 + A.ca) + m / 2 * A.th * A.ca, r / 2 * (A.th + A.sa) + m / 2 * (1 - A.ca),
-                                  m),
-    "b_{4,2,0}": lambda A, r, m: (3 * r * (1 + A.ca) / (4 + 2 * A.ca) + m / 2 * A.sa,
-                                  (3 * r * A.sa + m * (3 + A.ca) * (1 - A.ca)) / (4 + 2 * A.ca),
-                                  3 * m * (1 + A.ca) / (4 + 2 * A.ca)),
-    "b_{4,1,0}": lambda A, r, m: (r + m / 2 * (A.th + A.sa), r / 2 * A.th + m / 2 * (1 - A.ca), m / 2 * (1 + A.ca)),
-    "b_{4,3,1}": lambda A, r, m: (r * (7 - 2 * A.ch**2 + A.ch) * A.ch**2 / (4 + 2 * A.ca) + m / 4 * A.sa,
-                                  (6 * r * A.sa + m * (1 - A.ca) * (3 + A.ca)) / (8 + 4 * A.ca), m),
-    "b_{4,2,1}": lambda A, r, m: ((3 * r * (3 + A.ca) * A.ch + m * (3 * A.sh + 2 * A.s3h)) / ((10 + 2 * A.ca) * A.ch),
-                                  (3 * r * (3 * A.sh + A.s3h) + 4 * m * (A.ch - A.c3h)) / ((20 + 4 * A.ca) * A.ch),
-                                  3 * m * (3 + A.ca) / (10 + 2 * A.ca)),
-}
-#: Corrected coordinates (data/errata.json, torus-b_{4,3,1}-x), label -> axis -> f(Angles, varrho, mu).
-CORRECTED_EXACT = {"b_{4,3,1}": {0: lambda A, r, m: 3 * r * (1 + A.ca) / (4 + 2 * A.ca) + m / 4 * A.sa}}
-
 _FITS: dict[tuple, list[list[fmpq]]] = {}
 
 
 def torus_net(t: fmpq, rho: fmpq, mu: fmpq) -> list[list[fmpq]]:
+    """The exact control net of eq. toroidal_triangle (order 2) at tan(alpha/4) = t: interpolation in the normalized
+    basis (:func:`~paper_repro.surfaces.fitting.fit_exact`), independent of the printed points."""
     key = (t, rho, mu)
     if key not in _FITS:
         _FITS[key] = fit_exact(exact_torus(rho, mu), 2, rational_alpha(t))
     return _FITS[key]
 
 
-def compare_point(label: str, formula=None, corrected: dict | None = None) -> dict[str, int]:
-    """Number of (alpha, varrho, mu) cases where each coordinate of the printed point differs from the fit."""
-    formula = formula or PRINTED_EXACT[label]
+def printed_formula(xyz) -> Callable:
+    """``f(Angles, varrho, mu) -> (x, y, z)`` of a printed point parsed from its transcription
+    (:func:`paper_repro.printed.torus.read_point`), evaluated exactly."""
+    from paper_repro.printed.torus import point_value
+
+    return lambda A, r, m: tuple(point_value(e, A.ch, A.sh, r, m) for e in xyz)
+
+
+def compare_point(label: str, formula=None) -> dict[str, int]:
+    """Number of (alpha, varrho, mu) cases where each coordinate of ``formula`` (default: the printed point
+    ``label`` parsed from its transcription) differs from the exact fit."""
+    if formula is None:
+        from paper_repro.printed.torus import printed_point
+
+        read_label, xyz = printed_point(f"sec6-torus-point-{label}")
+        if read_label != label:
+            raise ValueError(f"line sec6-torus-point-{label} prints {read_label}")
+        formula = printed_formula(xyz)
     k = index_of(2)[label]
     bad = {"x": 0, "y": 0, "z": 0}
     for t in TS_TORUS:
@@ -617,28 +739,46 @@ def compare_point(label: str, formula=None, corrected: dict | None = None) -> di
         for rho, mu in RHO_MU:
             fitted = torus_net(t, rho, mu)[k]
             printed = [fmpq(x) if isinstance(x, int) else x for x in formula(A, rho, mu)]
-            if corrected:
-                printed = [corrected[d](A, rho, mu) if d in corrected else printed[d] for d in range(3)]
             for d, ax in enumerate("xyz"):
                 bad[ax] += printed[d] != fitted[d]
     return bad
 
 
-def _point_check(label: str) -> LineResult:
-    bad = compare_point(label)
+def point_check(line_id: str) -> LineResult:
+    """The printed control point of line ``line_id`` (label and three coordinates parsed from its transcription)
+    against the exact fit of eq. toroidal_triangle at that label."""
+    from paper_repro.printed.torus import printed_point
+
+    label, xyz = printed_point(line_id)  # raises on anything unread (a blank line)
+    if label not in code_labels(2):
+        raise ValueError(f"{line_id}: {label} is no control point of order 2")
+    bad = compare_point(label, formula=printed_formula(xyz))
     holds = not any(bad.values())
     corrected_ok = None
-    if label in CORRECTED_EXACT:
-        corrected_ok = not any(compare_point(label, corrected=CORRECTED_EXACT[label]).values())
-    return LineResult(holds, corrected_ok, how="exact fit of eq. toroidal_triangle in the order-2 normalized basis vs "
-                      "the printed coordinates, exact at tan(alpha/4) in {1/9, 1/5, 1/3, 2/5, 1/2, 3/5, 3/4, 7/8} "
-                      "and (varrho, mu) in {(1, 0), (0, 1), (7/2, 5/3)} (the coordinates are linear in varrho, mu)",
-                      kind="exact-evidence",
-                      detail={"disagreeing_cases": bad, "cases": len(TS_TORUS) * len(RHO_MU)})
+    if not holds and _LINE[line_id].status == "erratum":  # the erratum's fix applied to the transcription
+        from paper_repro.printed.torus import read_point
+
+        fixed = corrected_text(line_id)
+        if fixed is None:
+            corrected_ok = False
+        else:
+            fixed_label, fixed_xyz = read_point(fixed)
+            corrected_ok = fixed_label == label and not any(compare_point(label, printed_formula(fixed_xyz)).values())
+    return LineResult(holds, corrected_ok, how="the printed point parsed from its transcription (paper_repro.printed."
+                      "torus) vs the exact fit of eq. toroidal_triangle in the order-2 normalized basis, exact at "
+                      "tan(alpha/4) in {1/9, 1/5, 1/3, 2/5, 1/2, 3/5, 3/4, 7/8} and (varrho, mu) in {(1, 0), (0, 1), "
+                      "(7/2, 5/3)} (the coordinates are linear in varrho, mu)", kind="exact-evidence",
+                      detail={"label": label, "disagreeing_cases": bad, "cases": len(TS_TORUS) * len(RHO_MU)})
 
 
-for _lab in PRINTED_EXACT:
-    line_check(f"sec6-torus-point-{_lab}")(lambda _lab=_lab: _point_check(_lab))
+def _register_point_checks() -> None:
+    from paper_repro.printed.torus import point_line_ids
+
+    for lid in point_line_ids():
+        line_check(lid)(lambda lid=lid: point_check(lid))
+
+
+_register_point_checks()
 
 
 def torus_quartic(x, y, z, rho, mu):
@@ -651,46 +791,113 @@ def torus_quartic_gradient(x, y, z, rho, mu):
     return (4 * p * x - 8 * rho * rho * x, 4 * p * y - 8 * rho * rho * y, 4 * p * z)
 
 
-def torus_xyz(cu, su, cv, sv, rho, mu):
-    return ((rho + mu * su) * cv, (rho + mu * su) * sv, mu * cu)
+_TORUS_LINE = re.compile(r"^\\mathbf\{t\}_\{(.*?)\}\\left\(\s*u,v\\right\)\s*=\\left\[\s*\\begin\{array\}\s*\[c\]"
+                         r"\{ccc\}%?\s*(.*?)\\end\{array\}\s*\\right\]\s*\^\{T\},~u\\in\\left\[(.*?),(.*?)\\right\]\s*,"
+                         r"~v\\in\\left\[(.*?),(.*?)\\right\]\s*$", re.S)
+
+
+def read_torus_parametrization() -> dict:
+    """eq. toroidal_triangle read from its transcription: ``{"params": subscript symbols, "xyz": (x, y, z) in u, v,
+    varrho, mu, "u": (lo, hi), "v": (lo, hi)}`` (sympy; ``ValueError`` if unread)."""
+    from paper_repro.printed.lines.sec6_latex import parse_expression, strip_comments
+
+    m = _TORUS_LINE.match(_LINE["sec6-torus-parametrization"].verbatim)
+    if not m:
+        raise ValueError("eq. toroidal_triangle: the transcription is not t_{..}(u,v) = [x y z]^T, u in [..], v in [..]")
+    params = tuple(parse_expression(x) for x in m.group(1).split(","))
+    cells = strip_comments(m.group(2)).split("&")
+    if len(cells) != 3:
+        raise ValueError(f"{len(cells)} coordinates in eq. toroidal_triangle")
+    return {"params": params, "xyz": tuple(parse_expression(c) for c in cells),
+            "u": (parse_expression(m.group(3)), parse_expression(m.group(4))),
+            "v": (parse_expression(m.group(5)), parse_expression(m.group(6)))}
+
+
+def torus_parameters() -> set[str]:
+    """The parameters of eq. toroidal_triangle (the subscript of t), read from its printed line, as LaTeX names."""
+    try:
+        return {"\\" + str(p) for p in read_torus_parametrization()["params"]}
+    except ValueError:
+        return set()
+
+
+def parsed_torus_point(tu: fmpq, tv: fmpq, rho: fmpq, mu: fmpq) -> list[fmpq]:
+    """The printed parametrization (read) at u = 4 atan(tu), v = 4 atan(tv), exactly."""
+    from paper_repro.printed.lines.sec6_latex import MU, U, V, VARRHO, exact_value
+
+    return parsed_torus_at(*trig_of(tu), *trig_of(tv), rho, mu)
+
+
+def parsed_torus_at(cu: fmpq, su: fmpq, cv: fmpq, sv: fmpq, rho: fmpq, mu: fmpq) -> list[fmpq]:
+    """The printed parametrization (read) at (cos u, sin u) = (cu, su), (cos v, sin v) = (cv, sv), exactly."""
+    from paper_repro.printed.lines.sec6_latex import MU, U, V, VARRHO, exact_value
+
+    xyz = read_torus_parametrization()["xyz"]
+    return [exact_value(e, {VARRHO: rho, MU: mu}, {U: (1, cu, su), V: (1, cv, sv)}, fmpq(0)) for e in xyz]
+
+
+def _in_read_domain(dom: dict, u: fmpq, v: fmpq, alpha: fmpq) -> bool:
+    from paper_repro.printed.lines.sec6_latex import ALPHA, U
+
+    def val(e):
+        e = sympy.sympify(e).subs({ALPHA: sympy.Rational(int(alpha.p), int(alpha.q)),
+                                   U: sympy.Rational(int(u.p), int(u.q))})
+        if not e.is_Rational:
+            raise ValueError(f"domain bound {e} names an unknown symbol")
+        return fmpq(int(e.p), int(e.q))
+
+    return val(dom["u"][0]) <= u <= val(dom["u"][1]) and val(dom["v"][0]) <= v <= val(dom["v"][1])
 
 
 @line_check("sec6-torus-parametrization")
 def torus_parametrization() -> LineResult:
-    """(u, v), u in [0, alpha], v in [0, alpha - u], maps into Omega^alpha by w = alpha - u - v and onto it;
-    the points lie on the torus (implicit quartic, exact)."""
-    alpha = rational_alpha(TS[1])
-    a = alpha.t
-    grid = [(a * fmpq(i, 6), None) for i in range(7)]
-    into = True
-    on_torus = True
-    for tu, _ in grid:
-        u_max_v = tq(a, tu)  # tan((alpha - u)/4): the printed upper bound of v
-        for j in range(5):
-            tv = u_max_v * fmpq(j, 4)
-            RationalPoints(alpha, (tu,), (tv,))  # raises if w < 0
-            cu, su = trig_of(tu)
-            cv, sv = trig_of(tv)
-            on_torus &= torus_quartic(*torus_xyz(cu, su, cv, sv, fmpq(7, 2), fmpq(5, 3)), fmpq(7, 2), fmpq(5, 3)) == 0
-    onto = True
-    pts = sample_rational_points(alpha, 10, seed=4)
-    for tu, tv in zip(pts.tu, pts.tv):  # every domain point: u in [0, alpha], v in [0, alpha - u]
-        onto &= 0 <= tu <= a and 0 <= tv <= tq(a, tu)
-    # a wider printed range (v in [0, alpha]) would leave Omega^alpha:
+    """eq. toroidal_triangle read from its transcription: (1) its points are those of the package's torus model
+    (:func:`paper_repro.surfaces.models.torus_xyz`, 40 digits) and lie on the implicit torus (exact); (2) the
+    printed parameter set {u in [lo, hi], v in [lo(u), hi(u)]} is Omega^alpha with w = alpha - u - v: equal on a
+    grid of (u, v) with alpha = 1 (the bounds are linear in alpha) inside Omega and just outside it."""
+    import mpmath
+
+    from paper_repro.surfaces.models import torus_xyz as model
+
     try:
-        RationalPoints(alpha, (a / 2,), (a * fmpq(9, 10),))
-        wider_leaves = False
-    except ValueError:
-        wider_leaves = True
-    return LineResult(into and onto and on_torus and wider_leaves, how="exact rational points of the parameter "
-                      "triangle (7 x 5 grid) and of Omega^alpha (10 random), tan(alpha/4) = 1/3; implicit torus",
-                      kind="exact-evidence", detail={"into": into, "onto": onto, "on_torus": on_torus})
+        dom = read_torus_parametrization()
+    except ValueError as exc:
+        return LineResult(False, how="eq. toroidal_triangle read from the transcription", detail={"unread": str(exc)})
+    rho, mu = fmpq(7, 2), fmpq(5, 3)
+    on_torus, same = True, True
+    with mpmath.workdps(40):
+        for tu in (fmpq(0), fmpq(1, 4), fmpq(2, 3), fmpq(-3, 2)):
+            for tv in (fmpq(1, 5), fmpq(3, 4), fmpq(-2, 7)):
+                p = parsed_torus_point(tu, tv, rho, mu)
+                on_torus &= torus_quartic(*p, rho, mu) == 0
+                want = model(4 * mpmath.atan(mpmath.mpf(int(tu.p)) / int(tu.q)),
+                             4 * mpmath.atan(mpmath.mpf(int(tv.p)) / int(tv.q)), mpmath.mpf(7) / 2, mpmath.mpf(5) / 3)
+                same &= all(abs(mpmath.mpf(int(x.p)) / int(x.q) - w) < mpmath.mpf(10) ** -30 for x, w in zip(p, want))
+    one = fmpq(1)
+    grid = [(fmpq(i, 8), fmpq(j, 8)) for i in range(-1, 10) for j in range(-1, 10)]
+    domain = all(_in_read_domain(dom, u, v, one) == (u >= 0 and v >= 0 and one - u - v >= 0) for u, v in grid)
+    return LineResult(on_torus and same and domain, how="the parametrization and its parameter set read from the "
+                      "transcription; exact points (rational quarter tangents) on the implicit torus and equal to the "
+                      "package's torus model (40 digits); the parameter set vs Omega^alpha on a 11 x 11 grid",
+                      kind="exact-evidence", detail={"on_torus": on_torus, "equals_model": same,
+                                                     "parameter_set_is_omega": domain})
 
 
 @line_check("sec6-torus-rho")
 def torus_rho() -> LineResult:
-    """The meridian v = const is the circle of radius mu about (varrho cos v, varrho sin v, 0), at distance
-    varrho from the origin, in the plane through the z axis."""
+    """"where $\\varrho>0$ is the distance from the origin to the center of the meridian circle" (read): on the
+    printed parametrization (read) the meridian v = const is the circle of radius mu about (varrho cos v, varrho sin v,
+    0), at distance varrho from the origin, in the plane through the z axis; and varrho > 0 is what the relation
+    read says."""
+    from paper_repro.printed.lines.sec6_latex import VARRHO, parse_relation, relation_holds
+
+    tex = _LINE["sec6-torus-rho"].verbatim
+    m = re.match(r"where \$([^$]*)\$ is the distance\s+from the origin to the center of the meridian circle$", tex)
+    if not m:
+        return LineResult(False, how="the line read from the transcription", detail={"unread": tex[:60]})
+    parts, ops = parse_relation(m.group(1))
+    positive = (all(relation_holds([x.subs(VARRHO, r) for x in parts], ops) for r in (fmpq(1, 3), 1, 7))
+                and not any(relation_holds([x.subs(VARRHO, r) for x in parts], ops) for r in (0, -1)))
     rho, mu = fmpq(7, 2), fmpq(5, 3)
     ok = True
     for tv in (fmpq(1, 5), fmpq(2, 3), fmpq(-3, 7)):
@@ -698,27 +905,17 @@ def torus_rho() -> LineResult:
         centre = (rho * cv, rho * sv, fmpq(0))
         ok &= sum((c * c for c in centre), fmpq(0)) == rho * rho
         for tu in (fmpq(0), fmpq(1, 4), fmpq(3, 2), fmpq(-5, 2)):
-            cu, su = trig_of(tu)
-            p = torus_xyz(cu, su, cv, sv, rho, mu)
+            p = parsed_torus_point(tu, tv, rho, mu)
             ok &= sum(((p[k] - centre[k]) ** 2 for k in range(3)), fmpq(0)) == mu * mu
             ok &= p[0] * sv - p[1] * cv == 0  # in the meridian plane
-    return LineResult(ok, how="exact points of three meridians", kind="exact-evidence", detail={"meridians": 3})
-
-
-def greek(tex: str) -> set[str]:
-    """Greek-letter commands of a LaTeX fragment (``\\rho`` and ``\\varrho`` are distinct)."""
-    return {m.group(0) for m in re.finditer(r"\\(?:var)?(?:rho|mu|alpha|phi|psi)(?![a-zA-Z])", tex)}
-
-
-def torus_parameters() -> set[str]:
-    """The parameters of eq. toroidal_triangle, read from its printed line."""
-    return greek(_LINE["sec6-torus-parametrization"].verbatim) - {"\\alpha"}
+    return LineResult(ok and positive, how="the relation read from the transcription; exact points of three meridians "
+                      "of the printed parametrization", kind="exact-evidence", detail={"meridians": 3,
+                                                                                        "varrho_positive": positive})
 
 
 def horn_torus_singular(rho: fmpq) -> bool:
     """At mu = varrho the meridian u = 3pi/2 hits the axis: t = 0 for every v and the quartic is singular there."""
-    cu, su = fmpq(0), fmpq(-1)
-    pts = {torus_xyz(cu, su, *trig_of(tv), rho, rho) for tv in (fmpq(1, 3), fmpq(2), fmpq(-1, 5))}
+    pts = {tuple(parsed_torus_at(fmpq(0), fmpq(-1), *trig_of(tv), rho, rho)) for tv in (fmpq(1, 3), fmpq(2), fmpq(-1, 5))}
     return pts == {(0, 0, 0)} and torus_quartic(0, 0, 0, rho, rho) == 0 and \
         set(torus_quartic_gradient(fmpq(0), fmpq(0), fmpq(0), rho, rho)) == {0}
 
@@ -728,32 +925,72 @@ def ring_torus_regular(rho: fmpq, mu: fmpq) -> bool:
     return 0 < mu < rho and torus_quartic(0, 0, 0, rho, mu) > 0 and rho - mu > 0
 
 
+_MU_RANGE = re.compile(r"^of radius \$\\mu\\in\\left([(\[])(.*?),(.*?)\\right([)\]])\$$", re.S)
+
+
+def mu_range_is_ring(tex: str | None) -> bool:
+    """The range of mu in ``tex`` (parsed: brackets and end points; each symbol must be a parameter of eq.
+    toroidal_triangle) is exactly the set of mu giving a ring torus, tested at mu = k/10 varrho, k = 0..14."""
+    from paper_repro.printed.lines.sec6_latex import VARRHO, parse_expression
+
+    m = _MU_RANGE.match(tex or "")
+    if not m:
+        return False
+    lo, hi = parse_expression(m.group(2)), parse_expression(m.group(3))
+    params = {str(p) for p in read_torus_parametrization()["params"]}
+    if not {str(s) for s in lo.free_symbols | hi.free_symbols} <= params:
+        return False
+    rho = fmpq(7, 2)
+
+    def num(e):
+        e = e.subs(VARRHO, sympy.Rational(7, 2))
+        if not e.is_Rational:
+            raise ValueError(f"range end {e} is not a number")
+        return fmpq(int(e.p), int(e.q))
+
+    a, b = num(lo), num(hi)
+    for k in range(15):
+        mu = rho * fmpq(k, 10)
+        inside = (a < mu if m.group(1) == "(" else a <= mu) and (mu < b if m.group(4) == ")" else mu <= b)
+        if inside != ring_torus_regular(rho, mu):
+            return False
+    return True
+
+
 @line_check("sec6-torus-mu-range")
 def torus_mu_range() -> LineResult:
+    """"of radius $\\mu\\in\\left(0,\\rho\\right]$" (read) against the ring tori of eq. toroidal_triangle (read):
+    \\rho is no parameter of it, and the closed end mu = varrho is the horn torus (singular point, exact); the
+    erratum's fix (\\varrho, open) applied to the transcription gives exactly the ring tori."""
     line = _LINE["sec6-torus-mu-range"].verbatim
-    params = torus_parameters()
-    symbol_ok = greek(line) <= params
-    closed = line.rstrip("$").endswith("\\right]")
-    rho = fmpq(7, 2)
-    endpoint_horn = horn_torus_singular(rho)
-    printed_holds = symbol_ok and not (closed and endpoint_horn)
-    corrected = ({"\\mu", "\\varrho"} <= params
-                 and all(ring_torus_regular(rho, rho * fmpq(k, 10)) for k in range(1, 10))
-                 and not ring_torus_regular(rho, rho))
-    return LineResult(printed_holds, corrected, how="symbols of the range vs the parameters of eq. toroidal_triangle; "
-                      "exact horn-torus singularity at mu = varrho; ring condition at mu = k/10 varrho",
-                      kind="exact-evidence",
-                      detail={"range_symbols": sorted(greek(line)), "parametrization_symbols": sorted(params),
-                              "closed_at_varrho": closed, "mu_equal_varrho_singular": endpoint_horn})
+    printed_holds = mu_range_is_ring(line)
+    corrected = mu_range_is_ring(corrected_text("sec6-torus-mu-range"))
+    return LineResult(printed_holds, corrected, how="the range read from the transcription (and with the erratum's fix)"
+                      " vs ring tori of the printed parametrization at mu = k/10 varrho, k = 0..14; exact horn-torus "
+                      "singularity at mu = varrho", kind="exact-evidence",
+                      detail={"parametrization_symbols": sorted(torus_parameters()),
+                              "mu_equal_varrho_singular": horn_torus_singular(fmpq(7, 2))})
+
+
+def torus_order_word() -> int | None:
+    m = re.search(r"can exactly be described by a (\w+) order triangular\s+trigonometric patch defined by control "
+                  r"points$", _LINE["sec6-torus-order2"].verbatim)
+    return ORDINALS.get(m.group(1)) if m and "(\\ref{toroidal_triangle})" in _LINE["sec6-torus-order2"].verbatim \
+        else None
 
 
 @line_check("sec6-torus-order2")
 def torus_order2() -> LineResult:
-    ok = all(in_span(exact_torus(rho, mu), 2, rational_alpha(t)) for t in TS for rho, mu in RHO_MU[2:])
-    not_order1 = not in_span(exact_torus(fmpq(7, 2), fmpq(5, 3)), 1, rational_alpha(TS[1]))
-    return LineResult(ok and not_order1, how="exact fit of the torus in the order-2 basis (verified at further "
-                      "points); the order-1 basis does not contain it", kind="exact-evidence",
-                      detail={"order_2_fits": ok, "order_1_fits": not not_order1})
+    """The order read from the transcription ("second") describes the torus exactly: exact fits in that order (verified
+    at further points) at four alpha; the order below it does not contain the torus."""
+    n = torus_order_word()
+    if n is None:
+        return LineResult(False, how="the order read from the transcription", detail={"unread": True})
+    ok = all(in_span(exact_torus(rho, mu), n, rational_alpha(t)) for t in TS for rho, mu in RHO_MU[2:])
+    lower = n > 1 and in_span(exact_torus(fmpq(7, 2), fmpq(5, 3)), n - 1, rational_alpha(TS[1]))
+    return LineResult(ok, how="the order read from the transcription; exact fit of the torus in that order's basis "
+                      "(verified at further points), tan(alpha/4) in {1/5, 1/3, 1/2, 3/4}", kind="exact-evidence",
+                      detail={"order": n, "fits": ok, "order_below_fits": lower})
 
 
 def reversed_edge_net(net, n: int, color: str) -> list:
@@ -767,34 +1004,70 @@ def edge_net(net, n: int, color: str) -> list:
 
 @line_check("sec6-torus-joined")
 def torus_joined() -> LineResult:
-    """Neighbouring toroidal triangles (each fitted exactly, so each reproduces the smooth torus) share their
-    boundary control polygons: the diagonal of a square (w = 0 edges, reversed) and the edge U = alpha between
-    the upper triangle of one square and the lower triangle of the next (u = 0 edges, reversed)."""
+    """"several triangular trigonometric patches of order $2$ that are smoothly joined in order to form a part of a
+    ring torus" (order read from the transcription): neighbouring toroidal triangles, each fitted exactly in that
+    order (so each reproduces the smooth torus), share their boundary control polygons: the diagonal of a square
+    (w = 0 edges, reversed) and the edge U = alpha between the upper triangle of one square and the lower triangle of
+    the next (u = 0 edges, reversed)."""
+    tex = _LINE["sec6-torus-joined"].verbatim
+    m = re.search(r"illustrates several triangular trigonometric\s+patches of order \$(\d+)\$ that are smoothly "
+                  r"joined in order to form a part of a ring torus\.$", tex)
+    if not m or "Fig.\\ \\ref{fig:torus}" not in tex:
+        return LineResult(False, how="the line read from the transcription", detail={"unread": tex[:60]})
+    n = int(m.group(1))
     t = TS[1]
     alpha = rational_alpha(t)
     rho, mu = fmpq(7, 2), fmpq(5, 3)
     ph = trig_of(t)  # phase alpha
-    lower = fit_exact(exact_torus(rho, mu), 2, alpha)
-    upper = fit_exact(exact_torus(rho, mu, upper=True, alpha=alpha), 2, alpha)
-    nxt = fit_exact(exact_torus(rho, mu, phi=ph), 2, alpha)
-    diag = edge_net(lower, 2, "b") == reversed_edge_net(upper, 2, "b")
-    side = edge_net(upper, 2, "g") == reversed_edge_net(nxt, 2, "g")
-    return LineResult(diag and side, how="exact fits of three neighbouring triangles, tan(alpha/4) = 1/3",
-                      kind="exact-evidence", detail={"diagonal_join": diag, "square_edge_join": side})
+    try:
+        lower = fit_exact(exact_torus(rho, mu), n, alpha)
+        upper = fit_exact(exact_torus(rho, mu, upper=True, alpha=alpha), n, alpha)
+        nxt = fit_exact(exact_torus(rho, mu, phi=ph), n, alpha)
+    except ValueError:
+        return LineResult(False, how=f"exact fits of order {n}", detail={"order": n, "fits": False})
+    diag = edge_net(lower, n, "b") == reversed_edge_net(upper, n, "b")
+    side = edge_net(upper, n, "g") == reversed_edge_net(nxt, n, "g")
+    ring = ring_torus_regular(rho, mu)
+    return LineResult(diag and side and ring, how="the order read from the transcription; exact fits of three "
+                      "neighbouring triangles in that order, tan(alpha/4) = 1/3, varrho = 7/2 > mu = 5/3 (ring)",
+                      kind="exact-evidence", detail={"order": n, "diagonal_join": diag, "square_edge_join": side})
+
+
+_SETTINGS = re.compile(r"^with settings \$([^$]*)\$, \$([^$]*)\$ and \$([^$]*)\$\.$")
+
+
+def torus_settings_ring(tex: str | None) -> bool:
+    """The caption's settings (parsed, in order) name parameters of eq. toroidal_triangle (read) or alpha, and give a
+    ring torus (mu > 0, varrho > mu: exact for the algebraic number) with alpha in the range of sec6-alpha-range
+    (read)."""
+    from paper_repro.printed.lines.sec6_latex import ALPHA, MU, VARRHO, parse_relation
+
+    m = _SETTINGS.match(tex or "")
+    if not m:
+        return False
+    params = set(read_torus_parametrization()["params"]) | {ALPHA}
+    values: dict = {}
+    for part in m.groups():
+        (lhs, rhs), ops = parse_relation(part)
+        if ops != ["="] or lhs not in params or lhs in values:
+            return False
+        values[lhs] = sympy.nsimplify(rhs.subs(values))
+    if set(values) != {MU, VARRHO, ALPHA} or any(v.free_symbols for v in values.values()):
+        return False
+    lo, hi = read_open_interval(_LINE["sec6-alpha-range"].verbatim, "\\alpha")
+    return bool(values[MU] > 0 and values[VARRHO] > values[MU] and lo < values[ALPHA] < hi)
 
 
 @line_check("sec6-fig-torus-settings")
 def fig_torus_settings() -> LineResult:
-    line = _LINE["sec6-fig-torus-settings"].verbatim
-    params = torus_parameters()
-    symbols_ok = greek(line) - {"\\alpha"} <= params
-    # golden ratio g = (1 + sqrt 5)/2 > 1 (g^2 = g + 1, g > 0): varrho = g mu > mu -- a ring torus if read as varrho
-    ring = 5 > 1  # (1 + sqrt 5)/2 > 1  <=>  sqrt 5 > 1  <=>  5 > 1
-    alpha_ok = True  # pi/2 in (0, pi)
-    return LineResult(symbols_ok, ring and alpha_ok and {"\\varrho", "\\mu"} <= params,
-                      how="symbols of the caption vs the parameters of eq. toroidal_triangle; ring condition",
-                      kind="exact-evidence", detail={"caption_symbols": sorted(greek(line)),
-                                                     "parametrization_symbols": sorted(params)})
+    """Caption of Fig. torus: "settings $\\mu=3$, $\\rho = \\frac{1+\\sqrt{5}}{2}\\mu$ and
+    $\\alpha=\\frac{\\pi}{2}$" (parsed): \\rho is no parameter of eq. toroidal_triangle; with the erratum's fix
+    (\\varrho) the settings give a ring torus (varrho/mu = golden ratio > 1) and alpha in (0, pi)."""
+    printed = torus_settings_ring(_LINE["sec6-fig-torus-settings"].verbatim)
+    corrected = torus_settings_ring(corrected_text("sec6-fig-torus-settings"))
+    return LineResult(printed, corrected, how="the settings parsed from the transcription (and with the erratum's "
+                      "fix) vs the parameters of eq. toroidal_triangle (read), ring condition exact",
+                      kind="exact-evidence", detail={"parametrization_symbols": sorted(torus_parameters())})
 
 
 # --- Section 6.2: rational patches ---------------------------------------------------------------------------

@@ -290,6 +290,7 @@ LINES = [
                            'rho^2 (x^2+y^2) has zero gradient there (exact); for 0 < mu < varrho the distance to t'
                            'he axis is >= varrho - mu > 0 (no singular point)'),
              'severity': 'statement',
+             'fix': [('\\rho\\right]', '\\varrho\\right)')],
          }),
     Line(id='sec6-torus-order2', tex=(2300, 2302),
          near='toroidal_triangle', kind='inline',
@@ -481,6 +482,9 @@ LINES = [
                            'dal_triangle at every sampled rational-tangent alpha and rational (varrho, mu), y and '
                            'z agree, the corrected x agrees'),
              'severity': 'statement',
+             'fix': [('\\frac{\\varrho\\left(  7-2\\cos^{2}\\frac{\\alpha}{2}+\\cos\\frac{\\alpha}{2}\\right)\n'
+                      '\\cos^{2}\\frac{\\alpha}{2}}{4+2\\cos\\alpha}',
+                      '\\frac{3\\varrho\\left(1+\\cos\\alpha\\right)}{4+2\\cos\\alpha}')],
          }),
     Line(id='sec6-torus-point-b_{4,2,1}', tex=(2499, 2511),
          near='exmp:torus', kind='display',
@@ -518,6 +522,7 @@ LINES = [
                            'he settings give a ring torus (varrho/mu = (1+sqrt 5)/2 > 1: (varrho/mu)^2 = varrho/mu'
                            ' + 1 with varrho/mu > 1) and alpha = pi/2 in (0, pi)'),
              'severity': 'typo',
+             'fix': [('$\\rho =', '$\\varrho =')],
          }),
     Line(id='sec6-fig-torus-prose', tex=(2531, 2531),
          near='fig:torus', kind='prose',
