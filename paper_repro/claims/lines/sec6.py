@@ -1111,15 +1111,38 @@ def rank1_counterexample(n: int = 2) -> dict:
     return {"sum": sum(w, fmpq(0)), "min_weight": min(w), "tau_on_edge_u0": tau_values(n, alpha, w, edge)}
 
 
+_RANK1_REL = re.compile(r"(\\neq|\\geq|\\leq|=|<|>)\s*(\d+),$")
+
+
+def rank1_relation(tex: str):
+    """The relation that closes the printed sum of weights (``\\neq0``): a test ``f(sum) -> bool`` (``None`` if
+    unread)."""
+    from paper_repro.printed.lines.sec6_latex import parse_relation, relation_holds
+
+    m = _RANK1_REL.search(tex.strip())
+    if not m:
+        return None
+    parts, ops = parse_relation("u" + m.group(1) + m.group(2))  # the sum stands in for u
+    from paper_repro.printed.lines.sec6_latex import U
+
+    return lambda total: relation_holds([x.subs(U, sympy.Rational(int(total.p), int(total.q))) for x in parts], ops)
+
+
 @line_check("sec6-weights-rank1")
 def weights_rank1(override: dict[str, str] | None = None) -> LineResult:
-    """The sum's index sets (read from the transcription) are right, but a non-zero sum of non-negative weights lets
-    tau vanish on Omega^alpha."""
+    """The sum's index sets and its relation (``\\neq0``) are read from the transcription.  Printed: non-negative
+    weights whose sum satisfies the relation define q on Omega^alpha -- false: rho_{2n,n,n} = rho_{2n,2n,0} = 1
+    (sum 2) lets tau vanish on the edge u = 0.  Corrected: positive weights (then tau >= min weight > 0, exact at
+    sampled points) -- and every sum of positive weights (2, 1, 1/2) satisfies the relation read."""
+    tex = (override or {}).get("sec6-weights-rank1", _LINE["sec6-weights-rank1"].verbatim)
+    relation = rank1_relation(tex)
+    if relation is None:
+        return LineResult(False, how="the relation read from the transcription", detail={"unread": tex[-30:]})
     sets_ok = all(matches_basis(_rows_read(("sec6-weights-rank1",), n, override, bare=True), n) for n in NS)
     ce = rank1_counterexample()
-    vanishes = ce["sum"] != 0 and ce["min_weight"] >= 0 and any(v == 0 for v in ce["tau_on_edge_u0"])
+    vanishes = relation(ce["sum"]) and ce["min_weight"] >= 0 and any(v == 0 for v in ce["tau_on_edge_u0"])
     printed_holds = sets_ok and not vanishes
-    positive = True
+    positive = all(relation(total) for total in (fmpq(2), fmpq(1), fmpq(1, 2)))
     for n in (1, 2, 3):
         alpha = rational_alpha(TS[1])
         rng = _rng(70 + n)
@@ -1129,10 +1152,10 @@ def weights_rank1(override: dict[str, str] | None = None) -> LineResult:
         vals = tau_values(n, alpha, w, pts) + [tau_values(n, alpha, w, c)[0] for c in corner]
         positive &= all(v >= min(w) for v in vals)
     return LineResult(printed_holds, sets_ok and positive,
-                      how="exact tau for weights rho_{4,2,2} = rho_{4,4,0} = 1 (others 0) on the edge u = 0; "
-                      "random positive weights, n = 1, 2, 3 (tau >= min weight at interior points and corners)",
-                      kind="exact-evidence", detail={"weight_sum": str(ce["sum"]),
-                                                     "tau_on_edge_u0": [str(v) for v in ce["tau_on_edge_u0"]]})
+                      how="the sum and its relation read; exact tau for weights rho_{4,2,2} = rho_{4,4,0} = 1 (others "
+                      "0) on the edge u = 0; random positive weights, n = 1, 2, 3 (tau >= min weight at interior "
+                      "points and corners)", kind="exact-evidence",
+                      detail={"weight_sum": str(ce["sum"]), "tau_on_edge_u0": [str(v) for v in ce["tau_on_edge_u0"]]})
 
 
 def rational_eval(n: int, alpha: RationalAngle, net, weights, pts: RationalPoints) -> list[list[fmpq]]:
@@ -1146,16 +1169,42 @@ def rational_eval(n: int, alpha: RationalAngle, net, weights, pts: RationalPoint
     return out
 
 
+_TAU_DEN = re.compile(r"\\dfrac\{\\overline\{([RGB])\}_\{2n,[^{}]*\}\^\{\\alpha\}\\left\(u,v,w\\right\)\}"
+                      r"\{\\overline\{\\tau\}_\{([^{}]*)\}\^\{\\alpha\}\\left\(u,v,w\\right\)\}")
+
+
+def rational_quotients_ok(rows: Sequence[str]) -> bool:
+    """Every term of eq. rational_patch (rows read) is a quotient X-bar_{2n,..}^alpha(u,v,w) / tau-bar_n^alpha(u,v,w):
+    one quotient per weight, tau's subscript the order n of q_n (read from row 1), both with the arguments (u,v,w)."""
+    flat = ["".join(r.replace("%", "").split()) for r in rows]
+    m = re.match(r"\\mathbf\{q\}_\{(\w+)\}\^\{\\alpha\}\\left\(u,v,w\\right\)&=&", flat[0])
+    if not m:
+        return False
+    order = m.group(1)
+    for text in flat:
+        weights = len(re.findall(r"\\(?:rho|gamma|beta)_\{2n,", text))
+        quotients = _TAU_DEN.findall(text)
+        if weights == 0 or len(quotients) != weights or len(re.findall(r"\\dfrac", text)) != weights:
+            return False
+        if any(sub != order for _, sub in quotients):
+            return False
+    return order == "n"
+
+
 @line_check("sec6-rational-patch")
 def rational_patch(override: dict[str, str] | None = None) -> LineResult:
     """The terms of eq. rational_patch (weight, control point and function of each, read from the transcriptions of
-    its three rows) are the delta_n functions of T_{2n}; with equal weights the rational patch is the polynomial
-    patch (exact)."""
+    its three rows) are the delta_n functions of T_{2n}, each divided by tau-bar_n^alpha(u,v,w) (subscript and
+    arguments read); with equal weights the rational patch is the polynomial patch (exact); the order range read
+    from "of order $n\\geq1$" is the orders with a patch."""
     rows = ("sec6-rational-row-1", "sec6-rational-row-2", "sec6-rational-row-3")
+    texts = {k: (override or {}).get(k, _LINE[k].verbatim) for k in rows}
     try:
         sets_ok = all(matches_basis(_rows_read(rows, n, override, rational=True), n) for n in NS)
     except ValueError as exc:
         return LineResult(False, how="the rows read from the transcriptions", detail={"unread": str(exc)})
+    quotients = rational_quotients_ok([texts[k] for k in rows])
+    order_ok = order_range_ok("sec6-rational-order")
     alpha = rational_alpha(TS[2])
     same = True
     for n in (1, 2):
@@ -1163,23 +1212,71 @@ def rational_patch(override: dict[str, str] | None = None) -> LineResult:
         pts = sample_rational_points(alpha, 3, seed=n)
         poly = combine(evaluate_normalized(n, alpha, pts, "exact"), net)
         same &= rational_eval(n, alpha, net, [fmpq(5, 2)] * delta(n), pts) == poly
-    return LineResult(sets_ok and same, how="enumeration n = 1..12; exact evaluation with equal weights, n = 1, 2",
-                      kind="exact-evidence", detail={"equal_weights_give_polynomial_patch": same})
+    return LineResult(sets_ok and quotients and order_ok and same, how="enumeration n = 1..12; the denominators "
+                      "tau-bar_n^alpha(u,v,w) read; exact evaluation with equal weights, n = 1, 2", kind="exact-evidence",
+                      detail={"equal_weights_give_polynomial_patch": same, "quotients_read": quotients,
+                              "order_range_read": order_ok})
+
+
+_TAU_ROWS = ("sec6-tau-row-1", "sec6-tau-row-2")
+
+
+def tau_functions_have_arguments(text: str) -> bool:
+    """Every normalized function X-bar_{2n,..}^alpha of a row of tau-bar (read) is followed by its arguments
+    (u,v,w)."""
+    flat = "".join(text.replace("%", "").split())
+    funcs = re.findall(r"\\overline\{[RGB]\}_\{2n,[^{}]*\}\^\{\\alpha\}(\\left\(u,v,w\\right\))?", flat)
+    return bool(funcs) and all(funcs)
+
+
+def _tau_sets(texts: dict[str, str]) -> bool:
+    with_text = {k: v for k, v in texts.items()}
+    return all(matches_basis(_rows_read(_TAU_ROWS, n, with_text), n) for n in NS)
+
+
+def _tau_unit() -> bool:
+    alpha = rational_alpha(TS[0])
+    return all(v == 1 for n in (1, 2, 3)
+               for v in tau_values(n, alpha, [fmpq(1)] * delta(n), sample_rational_points(alpha, 3, seed=n)))
 
 
 @line_check("sec6-tau-index-sets")
 def tau_index_sets(override: dict[str, str] | None = None) -> LineResult:
-    """tau's sums over l = 0..n-1, k = l..2n-1-l (read from the transcriptions of its rows) name T_{2n}; with unit
-    weights tau = 1 (exact)."""
+    """tau's sums over l = 0..n-1, k = l..2n-1-l (read from the transcriptions of its rows) name T_{2n}; row 1 writes
+    tau-bar_n^alpha(u,v,w) and each of its functions with the arguments (u,v,w); with unit weights tau = 1 (exact)."""
+    texts = {k: (override or {}).get(k, _LINE[k].verbatim) for k in _TAU_ROWS}
     try:
-        sets = all(matches_basis(_rows_read(("sec6-tau-row-1", "sec6-tau-row-2"), n, override), n) for n in NS)
+        sets = _tau_sets(texts)
     except ValueError as exc:
         return LineResult(False, how="the rows read from the transcriptions", detail={"unread": str(exc)})
-    alpha = rational_alpha(TS[0])
-    one = all(v == 1 for n in (1, 2, 3)
-              for v in tau_values(n, alpha, [fmpq(1)] * delta(n), sample_rational_points(alpha, 3, seed=n)))
-    return LineResult(sets and one, how="enumeration n = 1..12; exact tau with unit weights, n = 1, 2, 3",
-                      kind="exact-evidence", detail={"unit_weights_tau_is_1": one})
+    head = "".join(texts["sec6-tau-row-1"].replace("%", "").split()).startswith(
+        "\\overline{\\tau}_{n}^{\\alpha}\\left(u,v,w\\right)&=&")
+    args = tau_functions_have_arguments(texts["sec6-tau-row-1"])
+    one = _tau_unit()
+    return LineResult(sets and head and args and one, how="enumeration n = 1..12; arguments read; exact tau with unit "
+                      "weights, n = 1, 2, 3", kind="exact-evidence",
+                      detail={"unit_weights_tau_is_1": one, "row_1_arguments": args})
+
+
+@line_check("sec6-tau-row-2")
+def tau_row_2() -> LineResult:
+    """Row 2 of tau-bar (read): its index sets with row 1 name T_{2n} (n = 1..12), but its G-bar term has no
+    arguments (u,v,w) while every other function of tau-bar and of eq. rational_patch has them; the erratum's fix
+    (the arguments added) applied to the transcription gives a row whose every function has them."""
+    texts = {k: _LINE[k].verbatim for k in _TAU_ROWS}
+    try:
+        sets = _tau_sets(texts)
+    except ValueError as exc:
+        return LineResult(False, how="the rows read from the transcriptions", detail={"unread": str(exc)})
+    printed = sets and tau_functions_have_arguments(texts["sec6-tau-row-2"])
+    fixed = corrected_text("sec6-tau-row-2")
+    corrected = None
+    if not printed:
+        corrected = fixed is not None and tau_functions_have_arguments(fixed) and \
+            _tau_sets({**texts, "sec6-tau-row-2": fixed}) and _tau_unit()
+    return LineResult(printed, corrected, how="index sets of the two rows (read) vs T_{2n}, n = 1..12; the arguments "
+                      "of each function read from the transcription (and with the erratum's fix)",
+                      kind="exact-evidence", detail={"index_sets": sets})
 
 
 def quotient_matrix(n: int, alpha: RationalAngle, weights, pts: RationalPoints) -> list[list[fmpq]]:
@@ -1191,20 +1288,40 @@ def quotient_matrix(n: int, alpha: RationalAngle, weights, pts: RationalPoints) 
     return rows
 
 
+def quotient_properties(n: int, weights: Sequence[fmpq], seed: int) -> tuple[bool, bool]:
+    """(normalized, linearly independent) of the quotients w_k X_k / tau at delta_n rational points (exact)."""
+    alpha = rational_alpha(TS[1])
+    rows = quotient_matrix(n, alpha, weights, sample_rational_points(alpha, delta(n), seed=seed))
+    return all(sum(r, fmpq(0)) == 1 for r in rows), rank(rows) == delta(n)
+
+
 @line_check("sec6-q-normalized-independent")
 def q_normalized_independent() -> LineResult:
-    alpha = rational_alpha(TS[1])
-    ok, ranks = True, {}
+    """"Q-bar_{2n}^alpha is also normalized and linearly independent" (the properties read from the transcription) for
+    the weights of Section 6.2 (non-negative, non-zero sum): a zero weight makes its quotient the zero function, so
+    the system is dependent (exact rank); with positive weights (the correction) it is normalized and independent
+    (exact, n = 1, 2, 3)."""
+    tex = _LINE["sec6-q-normalized-independent"].verbatim
+    m = re.search(r"i\.e\., \$\\overline\{Q\}_\{2n\}\^\{\\alpha\}\$ is also\s+((?:not )?normalized) and "
+                  r"linearly ((?:in)?dependent)\.$", tex)
+    if not m or "inherits advantageous properties of $\\overline{T}%\n_{2n}^{\\alpha}$" not in tex:
+        return LineResult(False, how="the properties read from the transcription", detail={"unread": tex[-60:]})
+    want = (m.group(1) == "normalized", m.group(2) == "independent")
+    printed, corrected, ranks = True, True, {}
     for n in (1, 2, 3):
         rng = _rng(80 + n)
         w = [fmpq(int(rng.integers(1, 9)), int(rng.integers(1, 4))) for _ in range(delta(n))]
-        rows = quotient_matrix(n, alpha, w, sample_rational_points(alpha, delta(n), seed=90 + n))
-        ok &= all(sum(r, fmpq(0)) == 1 for r in rows)
-        ranks[n] = rank(rows)
-        ok &= ranks[n] == delta(n)
-    return LineResult(ok, how="exact quotient functions with random positive weights at delta_n rational points: "
-                      "row sums and rank, n = 1, 2, 3", kind="exact-evidence",
-                      detail={"rank_n_1_2_3": [ranks[n] for n in (1, 2, 3)]})
+        zero = list(w)
+        zero[index_of(n)[f"r_{{{2 * n},{2 * n},0}}"]] = fmpq(0)  # non-negative, non-zero sum
+        printed &= quotient_properties(n, zero, 90 + n) == want and quotient_properties(n, w, 90 + n) == want
+        corrected &= quotient_properties(n, w, 90 + n) == want
+        ranks[n] = rank(quotient_matrix(n, rational_alpha(TS[1]), zero,
+                                        sample_rational_points(rational_alpha(TS[1]), delta(n), seed=90 + n)))
+    return LineResult(printed, None if printed else corrected,
+                      how="exact quotient functions at delta_n rational points, tan(alpha/4) = 1/3: random positive "
+                      "weights, and the same with rho_{2n,2n,0} = 0; row sums and rank, n = 1, 2, 3",
+                      kind="exact-evidence", detail={"rank_with_a_zero_weight_n_1_2_3": [ranks[n] for n in (1, 2, 3)],
+                                                     "delta_n": [delta(n) for n in (1, 2, 3)]})
 
 
 PROJECTIVE = [[fmpq(2), fmpq(1, 3), fmpq(0), fmpq(1)], [fmpq(-1), fmpq(1), fmpq(1, 2), fmpq(0)],
@@ -1234,57 +1351,102 @@ def projective_holds(M, n: int = 2, seed: int = 12) -> bool:
 
 @line_check("sec6-projective")
 def projective() -> LineResult:
+    """"closed for the projective transformation of its control points, i.e., the patch determined by the
+    projectively transformed control points coincides with the pointwisely transformed patch" (read) vs exact
+    patches (the weights multiplied by the homogeneous coordinate of each image point, positive here)."""
+    words = has_words(_LINE["sec6-projective"].verbatim, "Patch (\\ref{rational_patch}) is closed for the projective "
+                      "transformation of its control points, i.e., the patch determined by the projectively "
+                      "transformed control points coincides with the pointwisely transformed patch.")
     ok = projective_holds(PROJECTIVE, 1) and projective_holds(PROJECTIVE, 2)
-    return LineResult(ok, how="exact rational patch of a random net and positive weights and of its projective image "
-                      "(4x4 rational matrix, weights multiplied by the homogeneous coordinate), n = 1, 2",
-                      kind="exact-evidence", detail={"n": [1, 2]})
+    return LineResult(words and ok, how="the claim's words read; exact rational patch of a random net and positive "
+                      "weights and of its projective image (4x4 rational matrix, weights multiplied by the homogeneous "
+                      "coordinate), n = 1, 2", kind="exact-evidence", detail={"n": [1, 2]})
 
 
 # --- the ring Dupin cyclide --------------------------------------------------------------------------------
-def dupin_parts(cu, su, cv, sv, a, b2, c, mu):
-    """eq. Dupin_in_3d as printed, with y and z divided by b (b enters them as a factor): (x, y/b, z/b)."""
-    W = a - c * cu * cv
-    return ((mu * (c - a * cu * cv) + b2 * cu) / W, (a - mu * cv) * su / W, (c * cu - mu) * sv / W)
+def dupin_quartic(x, y, z, a, b, c, mu):
+    """The ring Dupin cyclide's implicit equation (x^2 + y^2 + z^2 - mu^2 + b^2)^2 - 4 (a x - c mu)^2 - 4 b^2 y^2
+    (the standard form, with a^2 = b^2 + c^2)."""
+    return (x * x + y * y + z * z - mu * mu + b * b) ** 2 - 4 * (a * x - c * mu) ** 2 - 4 * b * b * y * y
 
 
-def dupin_quartic(x, yb, zb, a, b2, c, mu):
-    """(x^2 + y^2 + z^2 - mu^2 + b^2)^2 - 4 (a x - c mu)^2 - 4 b^2 y^2 with y = b yb, z = b zb."""
-    y2, z2 = b2 * yb * yb, b2 * zb * zb
-    return (x * x + y2 + z2 - mu * mu + b2) ** 2 - 4 * (a * x - c * mu) ** 2 - 4 * b2 * y2
+def dupin_quartic_gradient(x, y, z, a, b, c, mu):
+    p = x * x + y * y + z * z - mu * mu + b * b
+    return (4 * p * x - 8 * a * (a * x - c * mu), 4 * p * y - 8 * b * b * y, 4 * p * z)
 
 
-def dupin_quartic_gradient(x, yb, zb, a, b2, c, mu):
-    p = x * x + b2 * yb * yb + b2 * zb * zb - mu * mu + b2
-    return (4 * p * x - 8 * a * (a * x - c * mu), 4 * p * yb - 8 * b2 * yb, 4 * p * zb)  # y, z components / b
+_DUPIN_X = re.compile(r"^(.*?)\\left\[\s*\\begin\{array\}\s*\[c\]\{l\}%?\s*(.*?)\\\\\s*$", re.S)
+_DUPIN_Y = re.compile(r"^(.*?)\\\\\s*$", re.S)
+_DUPIN_Z = re.compile(r"^(.*?)\\end\{array\}\s*\\right\]\s*,~u\\in\\left\[(.*?),(.*?)\\right\]\s*,~v\\in\\left\["
+                      r"(.*?),(.*?)\\right\]\s*,$", re.S)
 
 
-DUPIN_CASES = {"caption": (fmpq(6), fmpq(32), fmpq(2), fmpq(3)), "5,4,3,4": (fmpq(5), fmpq(16), fmpq(3), fmpq(4))}
+def read_dupin() -> dict:
+    """eq. Dupin_in_3d read from its three transcribed lines: ``{"xyz": (x, y, z) with the printed factor applied,
+    "u": (lo, hi), "v": (lo, hi)}`` (sympy in a, b, c, mu, u, v, varphi, psi; ``ValueError`` if unread)."""
+    from paper_repro.printed.lines.sec6_latex import parse_expression
+
+    mx = _DUPIN_X.match(_LINE["sec6-dupin-x"].verbatim)
+    my = _DUPIN_Y.match(_LINE["sec6-dupin-y"].verbatim)
+    mz = _DUPIN_Z.match(_LINE["sec6-dupin-z"].verbatim)
+    if not (mx and my and mz):
+        raise ValueError("eq. Dupin_in_3d: the transcription is not f [x \\\\ y \\\\ z], u in [..], v in [..]")
+    factor = parse_expression(mx.group(1))
+    rows = [parse_expression(mx.group(2)), parse_expression(my.group(1)), parse_expression(mz.group(1))]
+    return {"xyz": tuple(factor * r for r in rows), "u": (parse_expression(mz.group(2)), parse_expression(mz.group(3))),
+            "v": (parse_expression(mz.group(4)), parse_expression(mz.group(5)))}
 
 
-def dupin_on_quartic(a, b2, c, mu) -> bool:
+def dupin_point(xyz, params, tu: fmpq, tv: fmpq, phases=((fmpq(1), fmpq(0)), (fmpq(1), fmpq(0)))) -> list[fmpq]:
+    """The printed cyclide (read) at u = 4 atan(tu), v = 4 atan(tv), exactly; ``params`` = (a, b, c, mu) rational,
+    ``phases`` the (cos, sin) of varphi and psi."""
+    from paper_repro.printed.lines.sec6_latex import MU, PSI, U, V, VARPHI, A as SA, B as SB, C as SC, exact_value
+
+    a, b, c, mu = params
+    bases = {U: (1, *trig_of(tu)), V: (1, *trig_of(tv)), VARPHI: (1, *phases[0]), PSI: (1, *phases[1])}
+    return [exact_value(e, {SA: a, SB: b, SC: c, MU: mu}, bases, fmpq(0)) for e in xyz]
+
+
+#: (a, b, c, mu) with rational b (a^2 = b^2 + c^2, c < mu < a): exact points
+DUPIN_RATIONAL = ((fmpq(5), fmpq(4), fmpq(3), fmpq(4)), (fmpq(13), fmpq(12), fmpq(5), fmpq(7)),
+                  (fmpq(10), fmpq(8), fmpq(6), fmpq(15, 2)))
+
+
+def dupin_on_quartic(xyz, params, phases=((fmpq(1), fmpq(0)), (fmpq(1), fmpq(0)))) -> bool:
     ok = True
     for tu in (fmpq(1, 3), fmpq(2), fmpq(-1, 4)):
         for tv in (fmpq(1, 5), fmpq(3, 2), fmpq(-2, 7)):
-            cu, su = trig_of(tu)
-            cv, sv = trig_of(tv)
-            ok &= dupin_quartic(*dupin_parts(cu, su, cv, sv, a, b2, c, mu), a, b2, c, mu) == 0
+            ok &= dupin_quartic(*dupin_point(xyz, params, tu, tv, phases), *params) == 0
     return ok
+
+
+def _in_domain(dom: dict, u: fmpq, v: fmpq) -> bool:
+    return _in_read_domain(dom, u, v, fmpq(1))
 
 
 @line_check("sec6-dupin-surface")
 def dupin_surface() -> LineResult:
-    """The printed parametrization satisfies the Dupin cyclide quartic exactly when a^2 = b^2 + c^2."""
-    ok = all(dupin_on_quartic(*p) for p in DUPIN_CASES.values())
-    off = dupin_on_quartic(fmpq(6), fmpq(16), fmpq(3), fmpq(4))  # a^2 != b^2 + c^2
-    return LineResult(ok and not off, how="exact points (rational cos, sin) of eq. Dupin_in_3d in the quartic, "
-                      "(a, b^2, c, mu) = (6, 32, 2, 3), (5, 16, 3, 4); fails for a^2 != b^2 + c^2",
-                      kind="exact-evidence",
-                      detail={"on_quartic": ok, "on_quartic_when_a2_ne_b2_plus_c2": off})
+    """eq. Dupin_in_3d read from its three lines: its points satisfy the ring Dupin cyclide's implicit quartic exactly
+    (three rational (a, b, c, mu) with a^2 = b^2 + c^2, c < mu < a; phases 0 and (3/5, 4/5), (-5/13, 12/13)); its
+    parameter set {u in [lo, hi], v in [lo(u), hi(u)]} is Omega^alpha (grid, alpha = 1)."""
+    try:
+        dom = read_dupin()
+    except ValueError as exc:
+        return LineResult(False, how="eq. Dupin_in_3d read from the transcriptions", detail={"unread": str(exc)})
+    phases = ((fmpq(3, 5), fmpq(4, 5)), (fmpq(-5, 13), fmpq(12, 13)))
+    ok = all(dupin_on_quartic(dom["xyz"], p) for p in DUPIN_RATIONAL)
+    ok &= dupin_on_quartic(dom["xyz"], DUPIN_RATIONAL[0], phases)
+    grid = [(fmpq(i, 8), fmpq(j, 8)) for i in range(-1, 10) for j in range(-1, 10)]
+    domain = all(_in_domain(dom, u, v) == (u >= 0 and v >= 0 and 1 - u - v >= 0) for u, v in grid)
+    return LineResult(ok and domain, how="exact points (rational cos, sin) of eq. Dupin_in_3d (read) in the implicit "
+                      "quartic, (a, b, c, mu) = (5, 4, 3, 4), (13, 12, 5, 7), (10, 8, 6, 15/2); the parameter set vs "
+                      "Omega^alpha on a 11 x 11 grid", kind="exact-evidence",
+                      detail={"on_quartic": ok, "parameter_set_is_omega": domain})
 
 
 def dupin_homogeneous(a, b2, c, mu, phi, psi, upper: bool = False, alpha: RationalAngle | None = None):
-    """(X, Y/b, Z/b, W) of eq. Dupin_in_3d at U = phi + u, V = psi + v (upper: U = phi + alpha - u,
-    V = psi + alpha - v); phi, psi as (cos, sin)."""
+    """(X, Y/b, Z/b, W) of the cyclide (the package's model, as :func:`paper_repro.surfaces.models.cyclide_parts`) at
+    U = phi + u, V = psi + v (upper: U = phi + alpha - u, V = psi + alpha - v); phi, psi as (cos, sin)."""
     def cs(t: ExactTrig, var: int, ph):
         c0 = t.cos(*[1 if k == var else 0 for k in range(3)])
         s0 = t.sin(*[1 if k == var else 0 for k in range(3)])
@@ -1302,68 +1464,214 @@ def dupin_homogeneous(a, b2, c, mu, phi, psi, upper: bool = False, alpha: Ration
     return surface
 
 
+NUMBER_WORDS = {"eight": 8, "twelve": 12, "sixteen": 16, "twenty-four": 24, "thirty-two": 32, "sixty-four": 64}
+
+
+def dupin_count_holds(tex: str | None) -> tuple[bool, dict]:
+    """The count and order of "by means of sixteen smoothly joined second order rational ... patches" (read from
+    ``tex``) against the count of triangles needed to triangulate the cyclide: the phase torus (the square of the
+    phase intervals read from sec6-dupin-phases) over the area of one triangle (the parameter set of eq. Dupin_in_3d,
+    read, at the alpha of the caption of Fig. dupin_03, read); and exact order-n fits of both triangles of phase
+    squares."""
+    from paper_repro.printed.lines.sec6_latex import ALPHA, U, V, parse_relation
+
+    m = re.match(r"^by means of ([\w-]+) smoothly joined (\w+) order rational triangular trigonometric patches,$",
+                 tex or "")
+    if not m or m.group(1) not in NUMBER_WORDS or m.group(2) not in ORDINALS:
+        return False, {"unread": (tex or "")[:60]}
+    count, n = NUMBER_WORDS[m.group(1)], ORDINALS[m.group(2)]
+    settings = dict(re.findall(r"\$\\?(\w+)\s*=\s*([^$]*)\$", _LINE["sec6-fig-dupin-settings"].verbatim))
+    (_, alpha_value), _ = parse_relation("u=" + settings["alpha"]) if "alpha" in settings else ((None, None), None)
+    dom = read_dupin()
+    (lo_u, hi_u), (lo_v, hi_v) = dom["u"], dom["v"]
+    area = sympy.integrate(sympy.integrate(1, (V, lo_v, hi_v)), (U, lo_u, hi_u)).subs(ALPHA, alpha_value)
+    phase = phase_intervals()
+    torus_area = (phase[0][1] - phase[0][0]) * (phase[1][1] - phase[1][0])
+    needed = sympy.nsimplify(torus_area / area)
+    a, b2, c, mu = fmpq(6), fmpq(32), fmpq(2), fmpq(3)
+    alpha = rational_alpha(TS[1])
+    fits, joins = 0, True
+    for phi in [(fmpq(1), fmpq(0)), trig_of(fmpq(1, 2))]:
+        psi = (fmpq(1), fmpq(0))
+        try:
+            net = fit_exact(dupin_homogeneous(a, b2, c, mu, phi, psi), n, alpha)
+            up = fit_exact(dupin_homogeneous(a, b2, c, mu, phi, psi, upper=True, alpha=alpha), n, alpha)
+        except ValueError:
+            return False, {"order": n, "fits": False}
+        joins &= edge_net(net, n, "b") == reversed_edge_net(up, n, "b")
+        fits += 2
+    ok = needed.is_Integer and count == int(needed) and joins and fits == 4
+    return ok, {"count": count, "order": n, "triangle_area": str(area), "phase_area": str(torus_area),
+                "triangles_needed": str(needed), "diagonal_joins": joins}
+
+
 @line_check("sec6-dupin-rational-patches")
 def dupin_rational_patches() -> LineResult:
-    """Numerator and denominator of eq. Dupin_in_3d lie in V_2 for every phase: exact order-2 fits give rational
-    patches (weights = the fitted denominator net, non-negative for the caption's values at the sampled phases);
-    the two triangles of a phase square share their diagonal control polygon and weights (C0 join; each patch is
-    the smooth cyclide itself).  Count: sixteen triangles of side alpha = pi/2 cover (pi/2)^2/2 * 16 = 2 pi^2,
-    a part (half) of the [0, 2pi]^2 parameter torus -- a whole cover needs 32."""
-    a, b2, c, mu = DUPIN_CASES["caption"]
-    alpha = rational_alpha(TS[1])
-    phases = [(fmpq(1), fmpq(0)), trig_of(fmpq(1, 2)), trig_of(fmpq(3)), (fmpq(-1), fmpq(0))]
-    fits, min_w, joins = 0, None, True
-    for phi in phases:
-        for psi in phases[:2]:
-            net = fit_exact(dupin_homogeneous(a, b2, c, mu, phi, psi), 2, alpha)
-            up = fit_exact(dupin_homogeneous(a, b2, c, mu, phi, psi, upper=True, alpha=alpha), 2, alpha)
-            joins &= edge_net(net, 2, "b") == reversed_edge_net(up, 2, "b")
-            fits += 2
-            w = min(row[3] for row in net + up)
-            min_w = w if min_w is None else min(min_w, w)
-    # parameter-area count (in units of pi^2): one triangle (pi/2)^2 / 2 = 1/8, the torus 4
-    tri, whole = fmpq(1, 8), fmpq(4)
-    sixteen = 16 * tri
-    ok = fits == 16 and min_w >= 0 and joins and sixteen <= whole
-    return LineResult(ok, how="exact order-2 fits of (X, Y/b, Z/b, W) on both triangles of 8 phase squares, "
-                      "tan(alpha/4) = 1/3; parameter-area count", kind="exact-evidence",
-                      detail={"fits": fits, "min_fitted_weight": str(min_w), "diagonal_joins": joins,
-                              "area_16_patches_over_pi2": str(sixteen), "area_parameter_torus_over_pi2": str(whole),
-                              "patches_for_whole_cyclide": int(whole / tri)})
+    """"sixteen smoothly joined second order rational ... patches" (read): a triangle u in [0, alpha], v in [0, alpha
+    - u] (read) at alpha = pi/2 (caption, read) has area pi^2/8, the phase torus [0, 2pi]^2 (read) 4 pi^2, so the
+    ring cyclide needs 32 triangles (16 cover half); exact order-2 fits of (X, Y/b, Z/b, W) on both triangles of a
+    phase square share their diagonal control polygon and weights (each patch is the smooth cyclide itself).  The
+    erratum's fix (thirty-two) applied to the transcription holds."""
+    printed, detail = dupin_count_holds(_LINE["sec6-dupin-rational-patches"].verbatim)
+    corrected = None if printed else dupin_count_holds(corrected_text("sec6-dupin-rational-patches"))[0]
+    return LineResult(printed, corrected, how="count and order read; parameter areas from the intervals read "
+                      "(sympy integration); exact order-n fits on both triangles of 2 phase squares, tan(alpha/4) = "
+                      "1/3", kind="exact-evidence", detail=detail)
 
 
-def dupin_collapsed_circle(a, b2, c, mu) -> bool:
-    """The circle V = 0 maps to one point where the quartic's gradient vanishes (a singular point)."""
-    pts = {dupin_parts(*trig_of(tu), fmpq(1), fmpq(0), a, b2, c, mu) for tu in (fmpq(1, 3), fmpq(2), fmpq(-1, 4))}
-    if len(pts) != 1:
-        return False
-    p = next(iter(pts))
-    return dupin_quartic(*p, a, b2, c, mu) == 0 and set(dupin_quartic_gradient(*p, a, b2, c, mu)) == {0}
+def phase_intervals() -> list[tuple[sympy.Expr, sympy.Expr]]:
+    """``[(lo, hi) of varphi, (lo, hi) of psi]`` read from "$\\left(\\varphi,\\psi\\right) \\in [..]\\times[..]$"."""
+    from paper_repro.printed.lines.sec6_latex import parse_expression
+
+    tex = _LINE["sec6-dupin-phases"].verbatim
+    m = re.match(r"^while phase changes \$\\left\(\s*\\varphi,\\psi\\right\)\s*\\in\\left\[(.*?),(.*?)\\right\]"
+                 r"\\times\\left\[(.*?),(.*?)\\right\]\s*\$ are free design parameters that can be used to\s+slide "
+                 r"the patch on the cyclide\.$", tex)
+    if not m:
+        raise ValueError(f"phases not read: {tex[:60]!r}")
+    lo1, hi1, lo2, hi2 = (parse_expression(x) for x in m.groups())
+    return [(lo1, hi1), (lo2, hi2)]
 
 
-def dupin_ring(a, b2, c, mu) -> bool:
-    """c < mu < a: a - mu cos V >= a - mu > 0 and mu - c cos U >= mu - c > 0, no circle collapses."""
-    return a * a == b2 + c * c and c < mu < a
+@line_check("sec6-dupin-phases")
+def dupin_phases() -> LineResult:
+    """"phase changes (varphi, psi) in [0, 2pi] x [0, 2pi] are free design parameters that can be used to slide the
+    patch on the cyclide" (read): each interval covers a full period 2pi of eq. Dupin_in_3d (read: its points are
+    2pi-periodic in varphi and psi, exact at rational cos, sin), so every patch position is reached; at several
+    phases the patch stays on the cyclide's quartic (exact)."""
+    try:
+        (lo1, hi1), (lo2, hi2) = phase_intervals()
+        dom = read_dupin()
+    except ValueError as exc:
+        return LineResult(False, how="the phase intervals read", detail={"unread": str(exc)})
+    full = all((hi - lo) >= 2 * sympy.pi and lo.is_number and hi.is_number for lo, hi in ((lo1, hi1), (lo2, hi2)))
+    on = all(dupin_on_quartic(dom["xyz"], DUPIN_RATIONAL[0], ph)
+             for ph in (((fmpq(3, 5), fmpq(4, 5)), (fmpq(1), fmpq(0))), ((fmpq(-1), fmpq(0)), (fmpq(0), fmpq(-1)))))
+    return LineResult(bool(full) and on, how="the phase intervals read vs the period 2pi; exact points of eq. "
+                      "Dupin_in_3d (read) at phases (3/5, 4/5), (-1, 0), (0, -1) on the quartic", kind="exact-evidence",
+                      detail={"phase_intervals": [[str(lo1), str(hi1)], [str(lo2), str(hi2)]]})
+
+
+def collapsed_circle(xyz, a, b, c, mu) -> bool:
+    """Whether a parameter circle of the printed cyclide (read) collapses to a point (40-digit values): U0 with
+    c cos U0 = mu, or V0 with mu cos V0 = a, when such an angle exists."""
+    import mpmath
+
+    from paper_repro.printed.lines.sec6_latex import MU, PSI, U, V, VARPHI, A as SA, B as SB, C as SC
+
+    def sym(x):
+        return sympy.Rational(int(x.p), int(x.q)) if isinstance(x, fmpq) else sympy.nsimplify(x)
+
+    a, b, c, mu = (sym(x) for x in (a, b, c, mu))
+    f = sympy.lambdify((U, V), [e.subs({VARPHI: 0, PSI: 0, SA: a, SB: b, SC: c, MU: mu}) for e in xyz],
+                       modules="mpmath")
+    with mpmath.workdps(40):
+        circles = []
+        if abs(mu) <= abs(c) and c != 0:
+            u0 = mpmath.acos(mpmath.mpf(sympy.N(mu / c, 50)))
+            circles.append([f(u0, v) for v in (mpmath.mpf("0.3"), mpmath.mpf("1.9"), mpmath.mpf("4.1"))])
+        if abs(a) <= abs(mu):
+            v0 = mpmath.acos(mpmath.mpf(sympy.N(a / mu, 50)))
+            circles.append([f(u, v0) for u in (mpmath.mpf("0.3"), mpmath.mpf("1.9"), mpmath.mpf("4.1"))])
+        return any(max(abs(p[k] - q[k]) for p, q in zip(pts, pts[1:]) for k in range(3)) < mpmath.mpf(10) ** -25
+                   for pts in circles)
+
+
+_DUPIN_CONDITIONS = re.compile(r"^where parameters \$a\$, \$b\$, \$c\$ and \$\\mu\$ have to fulfill the conditions "
+                               r"\$([^$]*)\$ and \$([^$]*)\$$")
+
+
+def dupin_conditions_hold(tex: str | None) -> tuple[bool, dict]:
+    """The two conditions read from ``tex``: the equation holds exactly for the (a, b, c) whose cyclide (eq.
+    Dupin_in_3d, read) lies on the quartic (tested on 5 triples); the chain holds exactly for the mu that give a
+    ring cyclide -- no parameter circle collapses (tested at 13 mu for two triples)."""
+    from paper_repro.printed.lines.sec6_latex import MU, A as SA, B as SB, C as SC, parse_relation, relation_holds
+
+    m = _DUPIN_CONDITIONS.match(tex or "")
+    if not m:
+        return False, {"unread": (tex or "")[:60]}
+    eq, chain = parse_relation(m.group(1)), parse_relation(m.group(2))
+    xyz = read_dupin()["xyz"]
+
+    def sub(rel, a, b, c, mu):
+        vals = {SA: sympy.Rational(int(a.p), int(a.q)), SB: sympy.Rational(int(b.p), int(b.q)),
+                SC: sympy.Rational(int(c.p), int(c.q)), MU: sympy.Rational(int(mu.p), int(mu.q))}
+        return relation_holds([x.subs(vals) for x in rel[0]], rel[1])
+
+    triples = [(fmpq(5), fmpq(4), fmpq(3)), (fmpq(13), fmpq(12), fmpq(5)), (fmpq(6), fmpq(4), fmpq(3)),
+               (fmpq(5), fmpq(3), fmpq(3)), (fmpq(7), fmpq(5), fmpq(2))]
+    eq_ok = all(sub(eq, a, b, c, fmpq(4)) == dupin_on_quartic(xyz, (a, b, c, (a + c) / 2)) for a, b, c in triples)
+    chain_ok, bad = True, []
+    for a, b, c in triples[:2]:
+        for k in range(13):
+            mu = (a + 1) * fmpq(k, 12) + fmpq(1, 7)
+            ring = not collapsed_circle(xyz, a, b, c, mu)
+            if sub(chain, a, b, c, mu) != ring:
+                chain_ok = False
+                bad.append(str(mu))
+        for mu in (a, c):  # the end points, exactly
+            if sub(chain, a, b, c, mu) != (not collapsed_circle(xyz, a, b, c, mu)):
+                chain_ok = False
+                bad.append(f"{mu} (end point)")
+    return eq_ok and chain_ok, {"equation_matches_quartic": eq_ok, "chain_fails_at_mu": bad}
 
 
 @line_check("sec6-dupin-conditions")
 def dupin_conditions() -> LineResult:
-    a, b2, c, _ = DUPIN_CASES["caption"]
-    endpoint_singular = dupin_collapsed_circle(a, b2, c, a)  # mu = a, allowed by the printed c < mu <= a
-    printed_holds = not endpoint_singular
-    inner = [c + (a - c) * fmpq(k, 10) for k in range(1, 10)]
-    corrected = (all(dupin_ring(a, b2, c, m) and not dupin_collapsed_circle(a, b2, c, m) for m in inner)
-                 and all(dupin_on_quartic(a, b2, c, m) for m in inner[::4]))
-    return LineResult(printed_holds, corrected, how="exact: at mu = a (a = 6, b^2 = 32, c = 2) the circle V = 0 "
-                      "collapses to a singular point of the quartic; for c < mu < a no circle collapses",
-                      kind="exact-evidence", detail={"mu_equal_a_singular_point": endpoint_singular,
-                                                     "inner_mu": [str(m) for m in inner[:3]]})
+    """"the conditions $a^{2}=b^{2}+c^{2}$ and $c<\\mu\\leq a$" (read): the equation is the condition for eq.
+    Dupin_in_3d to lie on the cyclide quartic; but at mu = a the parameter circle v + psi = 0 collapses to a point (a
+    singular point of the quartic: a horn cyclide), so the ring condition is c < mu < a -- the erratum's fix applied
+    to the transcription holds."""
+    printed, detail = dupin_conditions_hold(_LINE["sec6-dupin-conditions"].verbatim)
+    corrected = None if printed else dupin_conditions_hold(corrected_text("sec6-dupin-conditions"))[0]
+    xyz = read_dupin()["xyz"]
+    a, b, c = DUPIN_RATIONAL[0][:3]
+    p = dupin_point(xyz, (a, b, c, a), fmpq(1, 3), fmpq(0))
+    singular = dupin_quartic(*p, a, b, c, a) == 0 and set(dupin_quartic_gradient(*p, a, b, c, a)) == {0}
+    return LineResult(printed, corrected, how="the conditions read from the transcription (and with the erratum's "
+                      "fix) vs the quartic (exact) and collapsed parameter circles (40 digits), (a, b, c) = (5, 4, 3), "
+                      "(13, 12, 5)", kind="exact-evidence",
+                      detail={**detail, "mu_equal_a_singular_point": singular})
 
 
 @line_check("sec6-fig-dupin-settings")
 def fig_dupin_settings() -> LineResult:
-    a, b2, c, mu = DUPIN_CASES["caption"]  # b = 4 sqrt 2, b^2 = 32
-    ok = a * a == b2 + c * c and c < mu <= a and c < mu < a and dupin_on_quartic(a, b2, c, mu)
-    return LineResult(ok, how="a^2 = b^2 + c^2 (36 = 32 + 4) and c < mu < a (2 < 3 < 6), exact; "
-                      "alpha = pi/2 in (0, pi)",
-                      kind="exact-evidence", detail={"a2": str(a * a), "b2_plus_c2": str(b2 + c * c)})
+    """Caption of Fig. dupin_03: "settings $a = 6$, $b=4\\sqrt{2}$, $c=2$ and $\\mu=3$ ... $\\alpha=\\frac{\\pi}{2}$"
+    (parsed): eq. Dupin_in_3d (read) with them lies on the cyclide quartic (40 digits), no parameter circle collapses
+    (a ring cyclide), and alpha is in the range of sec6-alpha-range (read)."""
+    import mpmath
+
+    from paper_repro.printed.lines.sec6_latex import (MU, PSI, U, V, VARPHI, A as SA, B as SB, C as SC,
+                                                      parse_relation)
+
+    tex = _LINE["sec6-fig-dupin-settings"].verbatim
+    m = re.match(r"^cyclide \(with settings \$([^$]*)\$, \$([^$]*)\$, \$([^$]*)\$ and \$([^$]*)\$\) which is rendered "
+                 r"as a\s+transparent surface except the lower right figure\. The shape parameter of each\s+second "
+                 r"order rational triangular trigonometric patch is \$([^$]*)\$\.$", tex)
+    if not m:
+        return LineResult(False, how="the settings read from the transcription", detail={"unread": tex[:60]})
+    values = {}
+    for part in m.groups():
+        (lhs, rhs), ops = parse_relation(part)
+        if ops != ["="] or not lhs.is_Symbol or lhs in values:
+            return LineResult(False, how="the settings read", detail={"unread": part})
+        values[str(lhs)] = rhs
+    if set(values) != {"a", "b", "c", "mu", "alpha"}:
+        return LineResult(False, how="the settings read", detail={"names": sorted(values)})
+    xyz = read_dupin()["xyz"]
+    sub = {SA: values["a"], SB: values["b"], SC: values["c"], MU: values["mu"], VARPHI: 0, PSI: 0}
+    f = sympy.lambdify((U, V), [e.subs(sub) for e in xyz], modules="mpmath")
+    num = {k: sympy.N(v, 50) for k, v in values.items()}
+    on = True
+    with mpmath.workdps(40):
+        for u, v in ((0.3, 1.1), (2.0, -0.7), (4.4, 2.9)):
+            p = f(mpmath.mpf(u), mpmath.mpf(v))
+            q = dupin_quartic(*p, *(mpmath.mpf(str(num[k])) for k in ("a", "b", "c", "mu")))
+            on &= abs(q) < mpmath.mpf(10) ** -25
+    ring = not collapsed_circle(xyz, values["a"], values["b"], values["c"], values["mu"])
+    ring &= bool(values["mu"] > 0)
+    lo, hi = read_open_interval(_LINE["sec6-alpha-range"].verbatim, "\\alpha")
+    alpha_ok = bool(lo < values["alpha"] < hi)
+    return LineResult(on and ring and alpha_ok, how="settings parsed; eq. Dupin_in_3d (read) in the quartic (40 "
+                      "digits), collapsed circles, alpha range read", kind="exact-evidence",
+                      detail={"on_quartic": on, "ring": ring, "alpha_in_range": alpha_ok})
