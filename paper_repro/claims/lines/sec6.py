@@ -138,6 +138,24 @@ def patch_terms_read(n: int, override: dict[str, str] | None = None) -> list[str
     return out
 
 
+def rows_well_formed(texts: Sequence[str]) -> bool:
+    """Every normalized function ``\\overline{X}_{2n,..}^{..}(..)`` of the rows (read) has the superscript alpha and
+    the arguments (u,v,w) (a function printed without arguments is refused here and recorded where it occurs: tau
+    row 2), and the terms are added: no ``-`` outside braces (the rows are sums of non-negative terms)."""
+    for text in texts:
+        flat = "".join(text.replace("%", "").split())
+        funcs = re.findall(r"\\overline\{[RGB]\}_\{2n,[^{}]*\}\^\{([^{}]*)\}(\\left\(([^()]*)\\right\))?", flat)
+        if not funcs or any(sup != "\\alpha" or args != "u,v,w" for sup, _, args in funcs):
+            return False
+        depth = 0
+        for ch in flat:
+            depth += ch == "{"
+            depth -= ch == "}"
+            if ch == "-" and depth == 0:
+                return False
+    return True
+
+
 @line_check("sec6-patch-index-sets")
 def patch_index_sets(override: dict[str, str] | None = None) -> LineResult:
     """The terms of eq. triangular_trig_surface (read from the transcriptions of its rows) are the delta_n functions
@@ -155,12 +173,16 @@ def patch_index_sets(override: dict[str, str] | None = None) -> LineResult:
         ranks[n] = rank(evaluate(n, alpha, pts, "exact").tolist())
     full = all(ranks[n] == delta(n) for n in ranks)
     order_ok = order_range_ok("sec6-patch-order")
-    return LineResult(counts_ok and distinct and full and order_ok, how="enumeration of the printed sums vs "
+    rows = [(override or {}).get(k, _LINE[k].verbatim) for k in ("sec6-patch-row-1", "sec6-patch-row-2")]
+    head = "".join(rows[0].replace("%", "").split()).startswith("\\mathbf{s}_{n}^{\\alpha}\\left(u,v,w\\right)&=&")
+    formed = head and rows_well_formed(rows)
+    return LineResult(counts_ok and distinct and full and order_ok and formed, how="enumeration of the printed sums vs "
                       "united_system, n = 1..12; exact rank of the basis at delta_n rational points, n = 1..3; the "
                       "printed order range (n >= 1) vs the orders with a patch (n = 0..12)",
                       kind="exact-evidence",
                       detail={"n": [NS[0], NS[-1]], "terms_n_1_2_3": [len(patch_terms_read(n)) for n in (1, 2, 3)],
-                              "rank_n_1_2_3": [ranks[n] for n in (1, 2, 3)], "order_range_read": order_ok})
+                              "rank_n_1_2_3": [ranks[n] for n in (1, 2, 3)], "order_range_read": order_ok,
+                              "functions_alpha_uvw_and_added": formed})
 
 
 def order_range_ok(line_id: str) -> bool:
@@ -228,7 +250,7 @@ def delta3(verbatim: str | None = None) -> LineResult:
     order = re.search(r"illustrates a (\w+) order triangular trigonometric\s+patch defined by", tex)
     said = ORDINALS.get(order.group(1)) if order else None
     terms = len(patch_terms_read(n))
-    return LineResult(said == n and has_words(tex, "control points") and
+    return LineResult(said == n and has_words(tex, "Fig.\\ \\ref{fig:third_order_patch} illustrates", "control points") and
                       terms == count == delta(n) == len(united_system(n)),
                       how="count read from the transcription vs the terms of eq. triangular_trig_surface (read) and "
                       "T_{2n}; the order word ('third') vs the subscript of delta", kind="proof",
@@ -371,8 +393,9 @@ def convex_hull_n123() -> LineResult:
 # boundary curves ------------------------------------------------------------------------------------------
 _NET_SET = re.compile(r"\\mathbf\{([rgb])\}_\{2n,2n-i,j\}\\right\\\}\s*_\{j=([^,{}]+),i=([^{}]+)\}\s*%?\s*"
                       r"\^\{([^,{}]+),([^{}]+)\}")
-_BOUNDARY = re.compile(r"\\left\(\s*([^()]*?)\\right\)\s*&?\s*=\s*\\sum_\{i=([^{}]+)\}%?\s*\^\{([^{}]+)\}\s*"
-                       r"\\mathbf\{([rgb])\}_\{2n,2n-i,0\}A_\{2n,2n-i\}\^\{\\alpha\}\\left\(\s*([uvw])\s*\\right\)")
+_BOUNDARY = re.compile(r"^\\mathbf\{s\}_\{n\}\^\{\\alpha\}\\left\(\s*([^()]*?)\\right\)\s*&?\s*=\s*\\sum_\{i=([^{}]+)\}%?\s*"
+                       r"\^\{([^{}]+)\}\s*\\mathbf\{([rgb])\}_\{2n,2n-i,0\}A_\{2n,2n-i\}\^\{\\alpha\}\\left\(\s*([uvw])\s*"
+                       r"\\right\)\s*,~([uvw])\\in\\left\[\s*([^,]*),([^,]*)\\right\]\s*,?(?:\\\\)?$")
 VARS = ("u", "v", "w")
 
 
@@ -394,12 +417,22 @@ def read_boundary(tex: str) -> tuple[int, int, str, str, str]:
     m = _BOUNDARY.search(tex)
     if not m:
         raise ValueError(f"not a boundary curve: {tex[:60]!r}")
-    args = [a.strip() for a in m.group(1).split(",")]
-    if args.count("0") != 1 or len(args) != 3:
+    from paper_repro.printed.lines.sec6_latex import ALPHA, parse_expression
+
+    args = [parse_expression(a) for a in m.group(1).split(",")]
+    if args.count(0) != 1 or len(args) != 3:
         raise ValueError(f"no single zero argument in s({m.group(1)})")
-    zero, arg = args.index("0"), VARS.index(m.group(5))
+    zero, arg = args.index(0), VARS.index(m.group(5))
     if zero == arg:
         raise ValueError(f"A_{{2n,2n-i}}({m.group(5)}) of the variable that is 0 on the edge")
+    t = sympy.Symbol(VARS[arg])
+    other = 3 - zero - arg
+    # the edge of Omega^alpha: the argument t of A runs over [0, alpha], the third variable is alpha - t
+    if args[arg] != t or sympy.expand(args[other] - (ALPHA - t)) != 0:
+        raise ValueError(f"s({m.group(1)}) is not the edge x_{zero} = 0 parametrized by {t}")
+    if m.group(6) != VARS[arg] or (parse_expression(m.group(7)), parse_expression(m.group(8))) != (0, ALPHA):
+        raise ValueError(f"the curve's parameter range is {m.group(6)} in [{m.group(7)}, {m.group(8)}], not "
+                         f"{t} in [0, alpha]")
     return zero, arg, m.group(4), m.group(2), m.group(3)
 
 
@@ -1139,6 +1172,12 @@ def weights_rank1(override: dict[str, str] | None = None) -> LineResult:
     if relation is None:
         return LineResult(False, how="the relation read from the transcription", detail={"unread": tex[-30:]})
     sets_ok = all(matches_basis(_rows_read(("sec6-weights-rank1",), n, override, bare=True), n) for n in NS)
+    depth, added = 0, True
+    for ch in "".join(tex.replace("%", "").split()):
+        depth += ch == "{"
+        depth -= ch == "}"
+        added &= not (ch == "-" and depth == 0)
+    sets_ok &= added
     ce = rank1_counterexample()
     vanishes = relation(ce["sum"]) and ce["min_weight"] >= 0 and any(v == 0 for v in ce["tau_on_edge_u0"])
     printed_holds = sets_ok and not vanishes
@@ -1203,7 +1242,7 @@ def rational_patch(override: dict[str, str] | None = None) -> LineResult:
         sets_ok = all(matches_basis(_rows_read(rows, n, override, rational=True), n) for n in NS)
     except ValueError as exc:
         return LineResult(False, how="the rows read from the transcriptions", detail={"unread": str(exc)})
-    quotients = rational_quotients_ok([texts[k] for k in rows])
+    quotients = rational_quotients_ok([texts[k] for k in rows]) and rows_well_formed([texts[k] for k in rows])
     order_ok = order_range_ok("sec6-rational-order")
     alpha = rational_alpha(TS[2])
     same = True
@@ -1251,7 +1290,7 @@ def tau_index_sets(override: dict[str, str] | None = None) -> LineResult:
         return LineResult(False, how="the rows read from the transcriptions", detail={"unread": str(exc)})
     head = "".join(texts["sec6-tau-row-1"].replace("%", "").split()).startswith(
         "\\overline{\\tau}_{n}^{\\alpha}\\left(u,v,w\\right)&=&")
-    args = tau_functions_have_arguments(texts["sec6-tau-row-1"])
+    args = tau_functions_have_arguments(texts["sec6-tau-row-1"]) and rows_well_formed([texts["sec6-tau-row-1"]])
     one = _tau_unit()
     return LineResult(sets and head and args and one, how="enumeration n = 1..12; arguments read; exact tau with unit "
                       "weights, n = 1, 2, 3", kind="exact-evidence",
@@ -1268,11 +1307,11 @@ def tau_row_2() -> LineResult:
         sets = _tau_sets(texts)
     except ValueError as exc:
         return LineResult(False, how="the rows read from the transcriptions", detail={"unread": str(exc)})
-    printed = sets and tau_functions_have_arguments(texts["sec6-tau-row-2"])
+    printed = sets and tau_functions_have_arguments(texts["sec6-tau-row-2"]) and rows_well_formed([texts["sec6-tau-row-2"]])
     fixed = corrected_text("sec6-tau-row-2")
     corrected = None
     if not printed:
-        corrected = fixed is not None and tau_functions_have_arguments(fixed) and \
+        corrected = fixed is not None and rows_well_formed([fixed]) and \
             _tau_sets({**texts, "sec6-tau-row-2": fixed}) and _tau_unit()
     return LineResult(printed, corrected, how="index sets of the two rows (read) vs T_{2n}, n = 1..12; the arguments "
                       "of each function read from the transcription (and with the erratum's fix)",
@@ -1304,7 +1343,9 @@ def q_normalized_independent() -> LineResult:
     tex = _LINE["sec6-q-normalized-independent"].verbatim
     m = re.search(r"i\.e\., \$\\overline\{Q\}_\{2n\}\^\{\\alpha\}\$ is also\s+((?:not )?normalized) and "
                   r"linearly ((?:in)?dependent)\.$", tex)
-    if not m or "inherits advantageous properties of $\\overline{T}%\n_{2n}^{\\alpha}$" not in tex:
+    if not m or "inherits advantageous properties of $\\overline{T}%\n_{2n}^{\\alpha}$" not in tex or not has_words(
+            tex, "Quotient functions in (\\ref{rational_patch}) determine the constrained trivariate rational "
+            "trigonometric function system $\\overline{Q}_{2n}^{\\alpha}$ of order $n$ that"):
         return LineResult(False, how="the properties read from the transcription", detail={"unread": tex[-60:]})
     want = (m.group(1) == "normalized", m.group(2) == "independent")
     printed, corrected, ranks = True, True, {}
