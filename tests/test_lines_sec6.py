@@ -9,8 +9,8 @@ from flint import fmpq
 import paper_repro.claims.lines.sec6 as c6
 from paper_repro.claims.lines import CHECKS
 from paper_repro.core.domain import rational_alpha
-from paper_repro.printed.lines.sec6 import LINES
 from paper_repro.printed.lines import substituted, verbatim
+from paper_repro.printed.lines.sec6 import LINES
 from paper_repro.printed.torus import printed_points, read_point
 
 CHECKED = [x for x in LINES if x.status != "excused"]
@@ -268,3 +268,32 @@ def test_weights_rank1_reads_its_sum():
     assert res.holds_as_printed is False and res.corrected_holds is True  # the recorded erratum
     wrong = c6.weights_rank1({"sec6-weights-rank1": text.replace("\\rho_{2n,n,n}+", "")})
     assert wrong.corrected_holds is False  # the sum read without the centre no longer names T_{2n}
+
+
+def test_continuity_check_detects_a_kink():
+    """c1_across: the exact torus pieces are C1 across the diagonal; moving one interior control point of the upper
+    patch keeps the shared polygon (C0) and breaks C1."""
+    alpha = rational_alpha(fmpq(1, 3))
+    rho, mu = fmpq(7, 2), fmpq(5, 3)
+    lower = c6.fit_exact(c6.exact_torus(rho, mu), 2, alpha)
+    upper = c6.fit_exact(c6.exact_torus(rho, mu, upper=True, alpha=alpha), 2, alpha)
+    nxt = c6.fit_exact(c6.exact_torus(rho, mu, phi=c6.trig_of(alpha.t)), 2, alpha)
+    assert c6.torus_continuity(2, alpha, lower, upper, nxt) == {"diagonal_C1": True, "square_edge_C1": True}
+    kinked = [list(p) for p in upper]
+    # a point whose function vanishes to first order on the diagonal w = 0 (one factor sin(w/2)): off the edge, but
+    # it enters the derivative across it
+    k = next(i for i, lab in enumerate(c6.united_system(2)) if c6.exponents(lab)[4] == 1)
+    kinked[k][2] += 1
+    assert c6.edge_net(lower, 2, "b") == c6.reversed_edge_net(kinked, 2, "b")  # still C0
+    assert c6.torus_continuity(2, alpha, lower, kinked, nxt)["diagonal_C1"] is False
+
+
+def test_printed_claim_reads_the_erratum_fix():
+    from paper_repro.printed.torus import corrected_points
+
+    fixes = corrected_points()
+    assert list(fixes) == ["b_{4,3,1}.x"]
+    lid = "sec6-torus-point-b_{4,3,1}"
+    with substituted({lid: verbatim(lid).replace("7-2\\cos^{2}", "8-2\\cos^{2}")}):
+        with pytest.raises(ValueError):
+            corrected_points()  # the fix no longer applies: the erratum does not describe this transcription

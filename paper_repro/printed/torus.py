@@ -26,8 +26,15 @@ from collections.abc import Callable
 
 import sympy
 
-from paper_repro.printed.lines.sec6_latex import ALPHA, MU, VARRHO, LatexReadError, exact_value, parse_expression, \
-    strip_comments
+from paper_repro.printed.lines.sec6_latex import (
+    ALPHA,
+    MU,
+    VARRHO,
+    LatexReadError,
+    exact_value,
+    parse_expression,
+    strip_comments,
+)
 
 POINT_LINE_PREFIX = "sec6-torus-point-"
 TorusReadError = LatexReadError
@@ -72,6 +79,42 @@ def printed_points() -> dict[str, tuple[sympy.Expr, sympy.Expr, sympy.Expr]]:
         if lab in out:
             raise TorusReadError(f"control point {lab} printed twice")
         out[lab] = xyz
+    return out
+
+
+def corrected_point(line_id: str) -> tuple[str, tuple[sympy.Expr, sympy.Expr, sympy.Expr]] | None:
+    """The point of ``line_id`` with its erratum's ``fix`` (``(printed, corrected)`` LaTeX pairs) applied to the
+    transcription as it stands now; ``None`` if the line has no fix or a printed fragment is not in it."""
+    from paper_repro.printed.lines import line
+
+    ln = line(line_id)
+    fixes = (ln.erratum or {}).get("fix", [])
+    text = ln.verbatim
+    for printed, corrected in fixes:
+        if printed not in text:
+            return None
+        text = text.replace(printed, corrected, 1)
+    return read_point(text) if fixes else None
+
+
+def corrected_points() -> dict[str, tuple[str, int, sympy.Expr]]:
+    """``"label.axis" -> (line id, axis, corrected expression)`` for every coordinate that an erratum's fix changes
+    (``TorusReadError`` if a fix no longer applies to its transcription)."""
+    from paper_repro.printed.lines import line
+
+    out = {}
+    for lid in point_line_ids():
+        if not (line(lid).erratum or {}).get("fix"):
+            continue
+        fixed = corrected_point(lid)
+        if fixed is None:
+            raise TorusReadError(f"{lid}: the erratum's fix does not apply to the transcription")
+        lab, xyz = printed_point(lid)
+        if fixed[0] != lab:
+            raise TorusReadError(f"{lid}: the fix changes the label")
+        for k, ax in enumerate("xyz"):
+            if sympy.simplify(fixed[1][k] - xyz[k]) != 0:
+                out[f"{lab}.{ax}"] = (lid, k, fixed[1][k])
     return out
 
 
@@ -124,5 +167,6 @@ def torus(u, v, w, rho, mu):
 
 
 __all__ = ["ALPHA", "VARRHO", "MU", "TorusReadError", "parse_expression", "read_point", "point_line_ids",
-           "printed_point", "printed_points", "coordinate_tex", "point_value", "mp_function", "printed_net_mp",
+           "printed_point", "printed_points", "corrected_point", "corrected_points", "coordinate_tex", "point_value",
+           "mp_function", "printed_net_mp",
            "torus"]

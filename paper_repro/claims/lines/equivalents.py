@@ -18,7 +18,8 @@ _SEC6_ORDER_3 = ("order elevation: V_2 is contained in V_3 (every order-2 patch 
 EQUIVALENT.update({
     "sec6-alpha-range:constant:750c673ac6": "alpha in (1, pi) is a sub-interval of (0, pi): the patch has a free shape "
                                             "parameter there too (a narrower range keeps the statement true)",
-    "sec6-control-net-set:swap:579ab4efeb": "r <-> g: the r set has j = 0..n and the g set j = 0..n-1; the row j = n is "
+    "sec6-control-net-set:swap:579ab4efeb": "r <-> g: the r set has j = 0..n and the g set j = 0..n-1; the row "
+                                            "j = n is "
                                             "empty (i = n..n-1), so the swapped union names the same points "
                                             "(equally lacking the centre r_{2n,n,n})",
     "sec6-rational-control-net-set:swap:579ab4efeb": "r <-> g: as in def:surface_patch, the row j = n is empty, so the "
@@ -28,8 +29,10 @@ EQUIVALENT.update({
     "sec6-tau-row-1:sign:50db01fe54": _SEC6_EMPTY_ROWS,
     "sec6-weights-rank1:swap:9d2cba391c": "i <-> j renames both bound summation variables consistently (bounds, "
                                           "indices): the same sum",
-    "sec6-corners:swap:5029a23cda": "r <-> g reorders the listed corners r, g, b_{2n,2n,0}: the same set of three corners",
-    "sec6-convex-hull-n123:word:cfc23724ab": "first, second and fourth order: the normalizing coefficients of order 4 are "
+    "sec6-corners:swap:5029a23cda": "r <-> g reorders the listed corners r, g, b_{2n,2n,0}: the same set of three "
+                                    "corners",
+    "sec6-convex-hull-n123:word:cfc23724ab": "first, second and fourth order: the normalizing coefficients of order "
+                                             "4 are "
                                              "positive for every alpha in (0, pi) (claim nonnegativity_extended proves "
                                              "n <= 12), so the convex hull property holds for order 4 too",
     "sec6-dupin-phases:constant:f77489e7bb": "[0, 3pi] contains a full period [0, 2pi] of eq. Dupin_in_3d in varphi: "

@@ -250,7 +250,8 @@ def delta3(verbatim: str | None = None) -> LineResult:
     order = re.search(r"illustrates a (\w+) order triangular trigonometric\s+patch defined by", tex)
     said = ORDINALS.get(order.group(1)) if order else None
     terms = len(patch_terms_read(n))
-    return LineResult(said == n and has_words(tex, "Fig.\\ \\ref{fig:third_order_patch} illustrates", "control points") and
+    words = has_words(tex, "Fig.\\ \\ref{fig:third_order_patch} illustrates", "control points")
+    return LineResult(said == n and words and
                       terms == count == delta(n) == len(united_system(n)),
                       how="count read from the transcription vs the terms of eq. triangular_trig_surface (read) and "
                       "T_{2n}; the order word ('third') vs the subscript of delta", kind="proof",
@@ -313,7 +314,8 @@ def alpha_range() -> LineResult:
         if not lo_f < a < hi_f:
             continue
         tested.append(str(c))
-        ok &= all(sum(k * c**p for p, k in enumerate(c_numerator(n, i))) > 0 for n in (1, 2, 3) for i in range(2 * n + 1))
+        ok &= all(sum(k * c**p for p, k in enumerate(c_numerator(n, i))) > 0
+                  for n in (1, 2, 3) for i in range(2 * n + 1))
         if c in ALPHA_HALF_SIN:  # alpha < pi: the normalized basis of order 2, tan(alpha/4) = sin / (1 + cos)
             alpha = rational_alpha(ALPHA_HALF_SIN[c] / (1 + c))
             vals = evaluate_normalized(2, alpha, _points(alpha, 3, seed=3), "exact")
@@ -393,7 +395,8 @@ def convex_hull_n123() -> LineResult:
 # boundary curves ------------------------------------------------------------------------------------------
 _NET_SET = re.compile(r"\\mathbf\{([rgb])\}_\{2n,2n-i,j\}\\right\\\}\s*_\{j=([^,{}]+),i=([^{}]+)\}\s*%?\s*"
                       r"\^\{([^,{}]+),([^{}]+)\}")
-_BOUNDARY = re.compile(r"^\\mathbf\{s\}_\{n\}\^\{\\alpha\}\\left\(\s*([^()]*?)\\right\)\s*&?\s*=\s*\\sum_\{i=([^{}]+)\}%?\s*"
+_BOUNDARY = re.compile(r"^\\mathbf\{s\}_\{n\}\^\{\\alpha\}\\left\(\s*([^()]*?)\\right\)\s*&?\s*=\s*"
+                       r"\\sum_\{i=([^{}]+)\}%?\s*"
                        r"\^\{([^{}]+)\}\s*\\mathbf\{([rgb])\}_\{2n,2n-i,0\}A_\{2n,2n-i\}\^\{\\alpha\}\\left\(\s*([uvw])\s*"
                        r"\\right\)\s*,~([uvw])\\in\\left\[\s*([^,]*),([^,]*)\\right\]\s*,?(?:\\\\)?$")
 VARS = ("u", "v", "w")
@@ -583,7 +586,8 @@ def trig_curves() -> LineResult:
                       "(\\ref{truncated_Fourier_vector_space})")
     ranks = {f"n={n},t={t}": a_forms_rank(n, rational_alpha(t)) for n in range(1, 7) for t in TS}
     ok = words and all(v == 2 * int(k.split(",")[0][2:]) + 1 for k, v in ranks.items())
-    return LineResult(ok, how="the claim's words read; exact rank of the coefficient matrix of A_{2n,i} as binary forms, n = 1..6, "
+    return LineResult(ok, how="the claim's words read; exact rank of the coefficient matrix of A_{2n,i} as binary "
+                      "forms, n = 1..6, "
                       "tan(alpha/4) in {1/5, 1/3, 1/2, 3/4}", kind="exact-evidence",
                       detail={"ranks_t_1_3": [ranks[f"n={n},t=1/3"] for n in range(1, 7)]})
 
@@ -636,7 +640,8 @@ def tangent_planes() -> LineResult:
             det[f"n={n} {corner}"] = str(d)
     ok &= has_words(_LINE["sec6-tangent-planes"].verbatim, "The tangent planes at these corners are spanned by the "
                     "terminal edges of the control polygons that generate the boundary curves of the given patch.")
-    return LineResult(ok, how="the claim's words read; exponents of the monomials at the corners, exact derivatives of the normalized basis "
+    return LineResult(ok, how="the claim's words read; exponents of the monomials at the corners, exact "
+                      "derivatives of the normalized basis "
                       "there (n = 1, 2, 3, tan(alpha/4) = 1/3)", kind="exact-evidence",
                       detail={"neighbour_derivative_determinant": det})
 
@@ -652,7 +657,8 @@ def bezier_limit() -> LineResult:
     lim = re.search(r"when \$\\alpha \\to (\d+)\$ the boundary\s+curves degenerate to B\\'ezier curves of degree "
                     r"\$([^$]+)\$", tex)
     if not lim or "Proposition \\ref{Bernstein}" not in tex:
-        return LineResult(False, how="the limit and the degree read from the transcription", detail={"unread": tex[:60]})
+        return LineResult(False, how="the limit and the degree read from the transcription",
+                          detail={"unread": tex[:60]})
     limit, degree = int(lim.group(1)), parse_expression(lim.group(2).replace("n", "u"))
     from paper_repro.printed.lines.sec6_latex import U
 
@@ -836,7 +842,8 @@ def read_torus_parametrization() -> dict:
 
     m = _TORUS_LINE.match(_LINE["sec6-torus-parametrization"].verbatim)
     if not m:
-        raise ValueError("eq. toroidal_triangle: the transcription is not t_{..}(u,v) = [x y z]^T, u in [..], v in [..]")
+        raise ValueError("eq. toroidal_triangle: the transcription is not t_{..}(u,v) = [x y z]^T, u in [..], "
+                         "v in [..]")
     params = tuple(parse_expression(x) for x in m.group(1).split(","))
     cells = strip_comments(m.group(2)).split("&")
     if len(cells) != 3:
@@ -856,14 +863,13 @@ def torus_parameters() -> set[str]:
 
 def parsed_torus_point(tu: fmpq, tv: fmpq, rho: fmpq, mu: fmpq) -> list[fmpq]:
     """The printed parametrization (read) at u = 4 atan(tu), v = 4 atan(tv), exactly."""
-    from paper_repro.printed.lines.sec6_latex import MU, U, V, VARRHO, exact_value
 
     return parsed_torus_at(*trig_of(tu), *trig_of(tv), rho, mu)
 
 
 def parsed_torus_at(cu: fmpq, su: fmpq, cv: fmpq, sv: fmpq, rho: fmpq, mu: fmpq) -> list[fmpq]:
     """The printed parametrization (read) at (cos u, sin u) = (cu, su), (cos v, sin v) = (cv, sv), exactly."""
-    from paper_repro.printed.lines.sec6_latex import MU, U, V, VARRHO, exact_value
+    from paper_repro.printed.lines.sec6_latex import MU, VARRHO, U, V, exact_value
 
     xyz = read_torus_parametrization()["xyz"]
     return [exact_value(e, {VARRHO: rho, MU: mu}, {U: (1, cu, su), V: (1, cv, sv)}, fmpq(0)) for e in xyz]
@@ -948,7 +954,8 @@ def torus_rho() -> LineResult:
 
 def horn_torus_singular(rho: fmpq) -> bool:
     """At mu = varrho the meridian u = 3pi/2 hits the axis: t = 0 for every v and the quartic is singular there."""
-    pts = {tuple(parsed_torus_at(fmpq(0), fmpq(-1), *trig_of(tv), rho, rho)) for tv in (fmpq(1, 3), fmpq(2), fmpq(-1, 5))}
+    pts = {tuple(parsed_torus_at(fmpq(0), fmpq(-1), *trig_of(tv), rho, rho))
+           for tv in (fmpq(1, 3), fmpq(2), fmpq(-1, 5))}
     return pts == {(0, 0, 0)} and torus_quartic(0, 0, 0, rho, rho) == 0 and \
         set(torus_quartic_gradient(fmpq(0), fmpq(0), fmpq(0), rho, rho)) == {0}
 
@@ -1035,6 +1042,45 @@ def edge_net(net, n: int, color: str) -> list:
     return list(reversed(reversed_edge_net(net, n, color)))
 
 
+def _values_and_derivatives(net, n: int, alpha: RationalAngle, pts: RationalPoints, dirs, rational: bool):
+    """Exact point and directional derivatives (one per direction) of a patch at each point; ``rational``: the net
+    is homogeneous (last coordinate the weight) and the point is X/W."""
+    vals = evaluate_normalized(n, alpha, pts, "exact")
+    ders = [basis_derivative(n, alpha, pts, d, "exact") for d in dirs]
+    out = []
+    for p in range(len(pts)):
+        h = combine(vals[p:p + 1], net)[0]
+        dh = [combine(der[p:p + 1], net)[0] for der in ders]
+        if rational:
+            w, x = h[-1], h[:-1]
+            out.append(([c / w for c in x], [[(dd[k] * w - x[k] * dd[-1]) / (w * w) for k in range(len(x))]
+                                             for dd in dh]))
+        else:
+            out.append((h, dh))
+    return out
+
+
+def c1_across(a: tuple, b: tuple, n: int, alpha: RationalAngle, rational: bool = False) -> bool:
+    """Two patches ``(net, points, directions)`` agree at the points of their shared edge together with their first
+    derivatives along the directions (the same global directions d/dU, d/dV written in each patch's (u, v, w)):
+    C0 and C1 in the common parametrization (U, V), hence G1 (exact)."""
+    return _values_and_derivatives(a[0], n, alpha, a[1], a[2], rational) == \
+        _values_and_derivatives(b[0], n, alpha, b[1], b[2], rational)
+
+
+def torus_continuity(n: int, alpha: RationalAngle, lower, upper, nxt) -> dict[str, bool]:
+    """C1 (in the phase parametrization (U, V)) across the diagonal of a square (lower w = 0 edge = upper w = 0 edge)
+    and across the edge U = alpha (upper u = 0 edge = the next square's lower u = 0 edge), at 3 points each."""
+    a = alpha.t
+    ss = (a / 5, a / 2, a * fmpq(4, 5))
+    down, up = ((1, 0, -1), (0, 1, -1)), ((-1, 0, 1), (0, -1, 1))
+    diag = c1_across((lower, RationalPoints(alpha, ss, tuple(tq(a, s) for s in ss)), down),
+                     (upper, RationalPoints(alpha, tuple(tq(a, s) for s in ss), ss), up), n, alpha)
+    side = c1_across((upper, RationalPoints(alpha, (fmpq(0),) * 3, ss), up),
+                     (nxt, RationalPoints(alpha, (fmpq(0),) * 3, tuple(tq(a, s) for s in ss)), down), n, alpha)
+    return {"diagonal_C1": diag, "square_edge_C1": side}
+
+
 @line_check("sec6-torus-joined")
 def torus_joined() -> LineResult:
     """"several triangular trigonometric patches of order $2$ that are smoothly joined in order to form a part of a
@@ -1061,9 +1107,13 @@ def torus_joined() -> LineResult:
     diag = edge_net(lower, n, "b") == reversed_edge_net(upper, n, "b")
     side = edge_net(upper, n, "g") == reversed_edge_net(nxt, n, "g")
     ring = ring_torus_regular(rho, mu)
-    return LineResult(diag and side and ring, how="the order read from the transcription; exact fits of three "
-                      "neighbouring triangles in that order, tan(alpha/4) = 1/3, varrho = 7/2 > mu = 5/3 (ring)",
-                      kind="exact-evidence", detail={"order": n, "diagonal_join": diag, "square_edge_join": side})
+    smooth = torus_continuity(n, alpha, lower, upper, nxt)
+    return LineResult(diag and side and ring and all(smooth.values()), how="the order read from the transcription; "
+                      "exact fits of three neighbouring triangles in that order, tan(alpha/4) = 1/3, varrho = 7/2 > mu "
+                      "= 5/3 (ring): shared boundary control polygons (C0) and equal first derivatives in the phase "
+                      "parametrization (U, V) at 3 points of each shared edge (C1, hence G1)", kind="exact-evidence",
+                      detail={"order": n, "diagonal_join": diag, "square_edge_join": side, **smooth,
+                              "continuity": "C1 in (U, V), G1" if all(smooth.values()) else "not C1"})
 
 
 _SETTINGS = re.compile(r"^with settings \$([^$]*)\$, \$([^$]*)\$ and \$([^$]*)\$\.$")
@@ -1252,7 +1302,8 @@ def rational_patch(override: dict[str, str] | None = None) -> LineResult:
         poly = combine(evaluate_normalized(n, alpha, pts, "exact"), net)
         same &= rational_eval(n, alpha, net, [fmpq(5, 2)] * delta(n), pts) == poly
     return LineResult(sets_ok and quotients and order_ok and same, how="enumeration n = 1..12; the denominators "
-                      "tau-bar_n^alpha(u,v,w) read; exact evaluation with equal weights, n = 1, 2", kind="exact-evidence",
+                      "tau-bar_n^alpha(u,v,w) read; exact evaluation with equal weights, n = 1, 2",
+                      kind="exact-evidence",
                       detail={"equal_weights_give_polynomial_patch": same, "quotients_read": quotients,
                               "order_range_read": order_ok})
 
@@ -1307,7 +1358,8 @@ def tau_row_2() -> LineResult:
         sets = _tau_sets(texts)
     except ValueError as exc:
         return LineResult(False, how="the rows read from the transcriptions", detail={"unread": str(exc)})
-    printed = sets and tau_functions_have_arguments(texts["sec6-tau-row-2"]) and rows_well_formed([texts["sec6-tau-row-2"]])
+    row2 = texts["sec6-tau-row-2"]
+    printed = sets and tau_functions_have_arguments(row2) and rows_well_formed([row2])
     fixed = corrected_text("sec6-tau-row-2")
     corrected = None
     if not printed:
@@ -1438,10 +1490,16 @@ def read_dupin() -> dict:
             "v": (parse_expression(mz.group(4)), parse_expression(mz.group(5)))}
 
 
-def dupin_point(xyz, params, tu: fmpq, tv: fmpq, phases=((fmpq(1), fmpq(0)), (fmpq(1), fmpq(0)))) -> list[fmpq]:
+NO_PHASES = ((fmpq(1), fmpq(0)), (fmpq(1), fmpq(0)))  # (cos, sin) of varphi = psi = 0
+
+
+def dupin_point(xyz, params, tu: fmpq, tv: fmpq, phases=NO_PHASES) -> list[fmpq]:
     """The printed cyclide (read) at u = 4 atan(tu), v = 4 atan(tv), exactly; ``params`` = (a, b, c, mu) rational,
     ``phases`` the (cos, sin) of varphi and psi."""
-    from paper_repro.printed.lines.sec6_latex import MU, PSI, U, V, VARPHI, A as SA, B as SB, C as SC, exact_value
+    from paper_repro.printed.lines.sec6_latex import MU, PSI, VARPHI, U, V, exact_value
+    from paper_repro.printed.lines.sec6_latex import A as SA
+    from paper_repro.printed.lines.sec6_latex import B as SB
+    from paper_repro.printed.lines.sec6_latex import C as SC
 
     a, b, c, mu = params
     bases = {U: (1, *trig_of(tu)), V: (1, *trig_of(tv)), VARPHI: (1, *phases[0]), PSI: (1, *phases[1])}
@@ -1453,7 +1511,7 @@ DUPIN_RATIONAL = ((fmpq(5), fmpq(4), fmpq(3), fmpq(4)), (fmpq(13), fmpq(12), fmp
                   (fmpq(10), fmpq(8), fmpq(6), fmpq(15, 2)))
 
 
-def dupin_on_quartic(xyz, params, phases=((fmpq(1), fmpq(0)), (fmpq(1), fmpq(0)))) -> bool:
+def dupin_on_quartic(xyz, params, phases=NO_PHASES) -> bool:
     ok = True
     for tu in (fmpq(1, 3), fmpq(2), fmpq(-1, 4)):
         for tv in (fmpq(1, 5), fmpq(3, 2), fmpq(-2, 7)):
@@ -1540,10 +1598,16 @@ def dupin_count_holds(tex: str | None) -> tuple[bool, dict]:
         except ValueError:
             return False, {"order": n, "fits": False}
         joins &= edge_net(net, n, "b") == reversed_edge_net(up, n, "b")
+        a_t = alpha.t
+        ss = (a_t / 5, a_t / 2)
+        joins &= c1_across((net, RationalPoints(alpha, ss, tuple(tq(a_t, x) for x in ss)), ((1, 0, -1), (0, 1, -1))),
+                           (up, RationalPoints(alpha, tuple(tq(a_t, x) for x in ss), ss), ((-1, 0, 1), (0, -1, 1))),
+                           n, alpha, rational=True)
         fits += 2
     ok = needed.is_Integer and count == int(needed) and joins and fits == 4
     return ok, {"count": count, "order": n, "triangle_area": str(area), "phase_area": str(torus_area),
-                "triangles_needed": str(needed), "diagonal_joins": joins}
+                "triangles_needed": str(needed), "diagonal_joins_C1": joins,
+                "continuity": "C0 (shared control polygon and weights) and C1 in (U, V), hence G1" if joins else "no"}
 
 
 @line_check("sec6-dupin-rational-patches")
@@ -1598,7 +1662,10 @@ def collapsed_circle(xyz, a, b, c, mu) -> bool:
     c cos U0 = mu, or V0 with mu cos V0 = a, when such an angle exists."""
     import mpmath
 
-    from paper_repro.printed.lines.sec6_latex import MU, PSI, U, V, VARPHI, A as SA, B as SB, C as SC
+    from paper_repro.printed.lines.sec6_latex import MU, PSI, VARPHI, U, V
+    from paper_repro.printed.lines.sec6_latex import A as SA
+    from paper_repro.printed.lines.sec6_latex import B as SB
+    from paper_repro.printed.lines.sec6_latex import C as SC
 
     def sym(x):
         return sympy.Rational(int(x.p), int(x.q)) if isinstance(x, fmpq) else sympy.nsimplify(x)
@@ -1626,7 +1693,10 @@ def dupin_conditions_hold(tex: str | None) -> tuple[bool, dict]:
     """The two conditions read from ``tex``: the equation holds exactly for the (a, b, c) whose cyclide (eq.
     Dupin_in_3d, read) lies on the quartic (tested on 5 triples); the chain holds exactly for the mu that give a
     ring cyclide -- no parameter circle collapses (tested at 13 mu for two triples)."""
-    from paper_repro.printed.lines.sec6_latex import MU, A as SA, B as SB, C as SC, parse_relation, relation_holds
+    from paper_repro.printed.lines.sec6_latex import MU, parse_relation, relation_holds
+    from paper_repro.printed.lines.sec6_latex import A as SA
+    from paper_repro.printed.lines.sec6_latex import B as SB
+    from paper_repro.printed.lines.sec6_latex import C as SC
 
     m = _DUPIN_CONDITIONS.match(tex or "")
     if not m:
@@ -1682,8 +1752,10 @@ def fig_dupin_settings() -> LineResult:
     (a ring cyclide), and alpha is in the range of sec6-alpha-range (read)."""
     import mpmath
 
-    from paper_repro.printed.lines.sec6_latex import (MU, PSI, U, V, VARPHI, A as SA, B as SB, C as SC,
-                                                      parse_relation)
+    from paper_repro.printed.lines.sec6_latex import MU, PSI, VARPHI, U, V, parse_relation
+    from paper_repro.printed.lines.sec6_latex import A as SA
+    from paper_repro.printed.lines.sec6_latex import B as SB
+    from paper_repro.printed.lines.sec6_latex import C as SC
 
     tex = _LINE["sec6-fig-dupin-settings"].verbatim
     m = re.match(r"^cyclide \(with settings \$([^$]*)\$, \$([^$]*)\$, \$([^$]*)\$ and \$([^$]*)\$\) which is rendered "

@@ -506,7 +506,11 @@ LINES = [
                    ' $2$ that are smoothly joined in order to form a part of a ring torus.'),
          says='Several order-2 patches join smoothly into a part of a ring torus.',
          status='checked',
-         check='sec6-torus-joined'),
+         check='sec6-torus-joined',
+         reason=('continuity computed by the check (issue 38): neighbouring pieces share their boundary control '
+                 'polygons (C0) and have equal first derivatives in the phase parametrization (U, V) at the points '
+                 'of the shared edges (exact): C1 in (U, V), hence G1 -- each piece is the exact restriction of the '
+                 'one analytic parametrization')),
     Line(id='sec6-fig-torus-settings', tex=(2531, 2531),
          near='fig:torus', kind='caption',
          verbatim=('with settings $\\mu=3$, $\\rho = \\frac{1+\\sqrt{5}}{2}\\mu$ and $\\alpha=\\frac{\\pi}'
@@ -658,7 +662,8 @@ LINES = [
              'corrected': ('... + sum_{l=0}^{n-1} sum_{k=l}^{2n-1-l} gamma_{2n,2n-k,l} G-bar_{2n,2n-k,l}^alpha(u,v,w) '
                            '+ ...'),
              'evidence': ('in the definition of tau-bar_n^alpha(u,v,w) (def:rational_patch) every other term -- '
-                          'R-bar_{2n,n,n}, R-bar_{2n,2n-k,l}, B-bar_{2n,2n-k,l} -- and every term of eq. rational_patch '
+                          'R-bar_{2n,n,n}, R-bar_{2n,2n-k,l}, B-bar_{2n,2n-k,l} -- and every term of eq. '
+                          'rational_patch '
                           'is written as a function of (u,v,w); the G-bar term alone is printed without its argument, '
                           'so the right-hand side mixes functions and function symbols. The index sets of the row hold '
                           '(with row 1 they name T_{2n} once each, n = 1..12)'),
@@ -697,7 +702,12 @@ LINES = [
          says=('Projectively transforming the control points (weights adjusted) transforms the patch p'
                'ointwise.'),
          status='checked',
-         check='sec6-projective'),
+         check='sec6-projective',
+         reason=('read as in rational Bezier theory: the control points are transformed as homogeneous points, so '
+                 'each weight is multiplied by the homogeneous coordinate of its image (with the weights kept the '
+                 'patch of the mapped points is not the mapped patch: exact counterexample in the tests); debatable '
+                 'that the sentence leaves this implicit, and that a map sending a control point across the plane at '
+                 'infinity makes a weight negative, outside the non-negative weights of Section 6.2')),
     Line(id='sec6-dupin-x', tex=(2629, 2633),
          near='Dupin_in_3d', kind='parametrization',
          verbatim=('\\frac{1}{a-c\\cos\\left(  u+\\varphi\\right)  \\cos\\left(  v+\\psi\\right)  }\\left['
@@ -732,7 +742,10 @@ LINES = [
          status='erratum',
          check='sec6-dupin-rational-patches',
          reason=('debatable: if Fig. dupin_03 shows only a part of the cyclide, "the ring Dupin cyclide" is loose '
-                 'wording rather than a wrong count; the caption calls it a triangulization of a ring Dupin cyclide'),
+                 'wording rather than a wrong count; the caption calls it a triangulization of a ring Dupin cyclide. '
+                 'Continuity computed by the check (issue 38): the two rational patches of a phase square share '
+                 'their diagonal control polygon and weights (C0) and have equal first derivatives in (U, V) there '
+                 '(exact): C1 in (U, V), hence G1 ("smoothly joined" holds)'),
          erratum={
              'id': 'dupin-sixteen-patches',
              'printed': ('Fig. dupin_03 shows the exact description of the ring Dupin cyclide by sixteen second order '
@@ -741,7 +754,8 @@ LINES = [
                            'half of it'),
              'evidence': ('each patch is eq. Dupin_in_3d on a triangle u in [0, alpha], v in [0, alpha - u] of the '
                           'phase plane, of area alpha^2/2 = pi^2/8 at alpha = pi/2 (caption of Fig. dupin_03); the '
-                          'cyclide is the image of the phase torus [0, 2pi] x [0, 2pi] of area 4 pi^2, one-to-one for a '
+                          'cyclide is the image of the phase torus [0, 2pi] x [0, 2pi] of area 4 pi^2, one-to-one '
+                          'for a '
                           'ring cyclide, so its triangulation by such patches needs 4 pi^2 / (pi^2/8) = 32 of them '
                           '(16 cover a part of area 2 pi^2); each of the 32 is an exact order-2 rational fit (exact, '
                           'tan(alpha/4) = 1/3 for the fits)'),
