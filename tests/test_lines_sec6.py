@@ -297,3 +297,27 @@ def test_printed_claim_reads_the_erratum_fix():
     with substituted({lid: verbatim(lid).replace("7-2\\cos^{2}", "8-2\\cos^{2}")}):
         with pytest.raises(ValueError):
             corrected_points()  # the fix no longer applies: the erratum does not describe this transcription
+
+
+def test_named_weak_checks_now_read_their_words():
+    """Issue 37: sec6-rational-patch reads tau-bar's subscript and arguments; sec6-delta3 reads "third order"."""
+    lid = "sec6-rational-row-2"
+    tex = verbatim(lid)
+    assert "\\overline{\\tau}_{n}^{\\alpha}" in tex
+    with substituted({lid: tex.replace("\\overline{\\tau}_{n}^{\\alpha}", "\\overline{\\tau}_{2n}^{\\alpha}")}):
+        assert not CHECKS["sec6-rational-patch"]().holds_as_printed
+    with substituted({lid: tex.replace("\\left(\nu,v,w", "\\left(\nv,u,w")}):
+        assert not CHECKS["sec6-rational-patch"]().holds_as_printed
+    tex = verbatim("sec6-delta3")
+    for wrong in ("fourth order", "second order"):
+        with substituted({"sec6-delta3": tex.replace("third order", wrong)}):
+            assert not CHECKS["sec6-delta3"]().holds_as_printed, wrong
+
+
+@pytest.mark.parametrize("line_id", [x.id for x in CHECKED if not x.check.startswith("claim:")])
+def test_blank_line_fails(line_id):
+    """Each line blanked alone changes its check's verdict (or the check refuses it)."""
+    from paper_repro.claims.lines.mutation import verdict, verdict_with
+
+    cid = next(x.check for x in LINES if x.id == line_id)
+    assert verdict_with(cid, {line_id: "XXX"}) != verdict(cid)
