@@ -26,6 +26,7 @@ from collections.abc import Callable
 
 import sympy
 
+from paper_repro.printed.latex_math import parse_vector
 from paper_repro.printed.lines.sec6_latex import (
     ALPHA,
     MU,
@@ -53,7 +54,10 @@ def read_point(tex: str) -> tuple[str, tuple[sympy.Expr, sympy.Expr, sympy.Expr]
     cells = strip_comments(body).split("&")
     if len(cells) != 3:
         raise TorusReadError(f"{len(cells)} coordinates instead of 3 in {body[:50]!r}")
-    return f"{colour}_{{{a},{b},{c}}}", tuple(parse_expression(cell) for cell in cells)  # type: ignore[return-value]
+    vector = parse_vector(tex[tex.index("\\left["):])  # the paper-wide reader (printed.latex_math)
+    if vector.shape != (3, 1) or any(not isinstance(x, sympy.Expr) for x in vector):
+        raise TorusReadError(f"not a column of 3 expressions: {vector}")
+    return f"{colour}_{{{a},{b},{c}}}", tuple(vector)  # type: ignore[return-value]
 
 
 def point_line_ids() -> list[str]:

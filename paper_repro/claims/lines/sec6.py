@@ -393,8 +393,6 @@ def convex_hull_n123() -> LineResult:
 
 
 # boundary curves ------------------------------------------------------------------------------------------
-_NET_SET = re.compile(r"\\mathbf\{([rgb])\}_\{2n,2n-i,j\}\\right\\\}\s*_\{j=([^,{}]+),i=([^{}]+)\}\s*%?\s*"
-                      r"\^\{([^,{}]+),([^{}]+)\}")
 _BOUNDARY = re.compile(r"^\\mathbf\{s\}_\{n\}\^\{\\alpha\}\\left\(\s*([^()]*?)\\right\)\s*&?\s*=\s*"
                        r"\\sum_\{i=([^{}]+)\}%?\s*"
                        r"\^\{([^{}]+)\}\s*\\mathbf\{([rgb])\}_\{2n,2n-i,0\}A_\{2n,2n-i\}\^\{\\alpha\}\\left\(\s*([uvw])\s*"
@@ -404,14 +402,30 @@ VARS = ("u", "v", "w")
 
 def net_from_transcription(n: int, tex: str | None = None) -> list[str]:
     """The control points of def:surface_patch read from the transcription of its net (line sec6-control-net-set;
-    that printed set lacks the centre, erratum sec6-control-net-set, which no boundary curve uses)."""
-    from paper_repro.printed.lines.read import bound
+    that printed set lacks the centre, erratum sec6-control-net-set, which no boundary curve uses): each set
+    ``\\left\\{ \\mathbf{x}_{2n,2n-i,j}\\right\\}_{j=..,i=..}^{..,..}`` between the ``\\cup`` with its bounds read by
+    :func:`paper_repro.printed.latex_math.index_set`."""
+    from paper_repro.printed.latex_math import index_set
 
     tex = _LINE["sec6-control-net-set"].verbatim if tex is None else tex
+    N = sympy.Symbol("n")
     out = []
-    for letter, jlo, ilo, jhi, ihi in _NET_SET.findall(tex):
-        out += [f"{letter}_{{{2 * n},{2 * n - i},{j}}}" for j in range(bound(jlo, n=n), bound(jhi, n=n) + 1)
-                for i in range(bound(ilo, n=n, j=j), bound(ihi, n=n, j=j) + 1)]
+    for part in tex.split("\\cup"):
+        m = re.search(r"\\left\\\{\s*\\mathbf\{([rgb])\}_\{2n,2n-i,j\}\\right\\\}", part)
+        if not m:
+            continue
+        (jv, jlo, jhi), (iv, ilo, ihi) = index_set(part)
+        if (str(jv), str(iv)) != ("j", "i"):
+            continue
+
+        def val(e, **env):
+            x = sympy.sympify(e).subs({N: n, **{sympy.Symbol(k): v for k, v in env.items()}})
+            if not x.is_Integer:
+                raise ValueError(f"bound {e} is not an integer at n = {n}")
+            return int(x)
+
+        out += [f"{m.group(1)}_{{{2 * n},{2 * n - i},{j}}}" for j in range(val(jlo), val(jhi) + 1)
+                for i in range(val(ilo, j=j), val(ihi, j=j) + 1)]
     return out
 
 
