@@ -15,6 +15,7 @@ Independent computations used here:
 
 from __future__ import annotations
 
+import functools
 import re
 from collections.abc import Callable, Sequence
 from math import comb
@@ -124,45 +125,120 @@ def has_words(text: str, *phrases: str) -> bool:
 
 
 # --- Definition def:surface_patch: index sets and counts -------------------------------------------------
-def patch_terms_read(n: int, override: dict[str, str] | None = None) -> list[str]:
-    """The control points of eq. triangular_trig_surface, read from the transcriptions of its two rows (sums, bounds,
-    control points and functions; :func:`paper_repro.printed.lines.read.sum_terms`)."""
-    from paper_repro.printed.lines.read import sum_terms, term_indices
+# --- the rows of eq. triangular_trig_surface, eq. rational_patch, tau-bar and the weight sum, read by latex_math ------
+N_SYM = sympy.Symbol("n")
+UVW = sympy.Tuple(*sympy.symbols("u v w"))
+_POINT_OF = {"r_vec": "R", "g_vec": "G", "b_vec": "B"}
+_WEIGHT_OF = {"rho": "R", "gamma": "G", "beta": "B"}
+_FUNC_OF = {"Rbar": "R", "Gbar": "G", "Bbar": "B"}
+#: what one term of each kind of row is made of (besides its coefficient 1)
+ROW_KINDS = {"patch": ("point", "function"), "rational": ("weight", "point", "function", "tau"),
+             "tau": ("weight", "function"), "weights": ("weight",)}
 
-    rows = {k: _LINE[k].verbatim for k in ("sec6-patch-row-1", "sec6-patch-row-2")}
-    rows.update(override or {})
+
+def parse_rows(ids: Sequence[str], override: dict[str, str] | None = None) -> list[tuple]:
+    """``(left-hand side or None, right-hand side)`` of each row, read by
+    :func:`paper_repro.printed.latex_math.parse_relation` (a continuation row has no left-hand side)."""
+    from paper_repro.printed.latex_math import parse_relation
+
     out = []
-    for key in sorted(rows):
-        out += [f"{c.lower()}_{{{2 * n},{2 * n - i},{j}}}" for c, i, j in
-                term_indices(sum_terms(rows[key], points=True), n=n)]
+    for k in ids:
+        tex = (override or {}).get(k, _LINE[k].verbatim)
+        rel = parse_relation(tex.strip().rstrip(",."))
+        if rel.conditions or rel.ops not in ([], ["="]):
+            raise ValueError(f"{k}: not a row of a sum ({rel.ops})")
+        out.append((rel.parts[0] if rel.ops else None, rel.parts[-1]))
     return out
 
 
-def rows_well_formed(texts: Sequence[str]) -> bool:
-    """Every normalized function ``\\overline{X}_{2n,..}^{..}(..)`` of the rows (read) has the superscript alpha and
-    the arguments (u,v,w) (a function printed without arguments is refused here and recorded where it occurs: tau
-    row 2), and the terms are added: no ``-`` outside braces (the rows are sums of non-negative terms)."""
-    for text in texts:
-        flat = "".join(text.replace("%", "").split())
-        funcs = re.findall(r"\\overline\{[RGB]\}_\{2n,[^{}]*\}\^\{([^{}]*)\}(\\left\(([^()]*)\\right\))?", flat)
-        if not funcs or any(sup != "\\alpha" or args != "u,v,w" for sup, _, args in funcs):
-            return False
-        depth = 0
-        for ch in flat:
-            depth += ch == "{"
-            depth -= ch == "}"
-            if ch == "-" and depth == 0:
-                return False
-    return True
+def row_labels(expr, n: int, kind: str, strict_arguments: bool = True) -> list[str]:
+    """See :func:`_row_labels` (cached by the parsed expression: the same row is written out once per order)."""
+    return list(_row_labels(expr, n, kind, strict_arguments))
+
+
+@functools.lru_cache(maxsize=512)
+def _row_labels(expr, n: int, kind: str, strict_arguments: bool = True) -> tuple[str, ...]:
+    """The control-point labels of the terms of a parsed row at order n (sums written out the paper's way,
+    :func:`paper_repro.printed.latex_math.evaluate_sums`).  Each term must have coefficient 1 and be made of the
+    factors of ``kind`` (:data:`ROW_KINDS`) with one colour and one index triple: weight rho/gamma/beta, point
+    r/g/b, normalized function R/G/B-bar with the arguments (u,v,w) (unless ``strict_arguments`` is False) and the
+    superscript alpha, and the denominator tau-bar_n(u,v,w); ``ValueError`` otherwise."""
+    from paper_repro.printed.latex_math import evaluate_sums
+
+    e = sympy.expand(evaluate_sums(expr.subs(N_SYM, n)))
+    out = []
+    for mono, coeff in e.as_coefficients_dict().items():
+        if coeff != 1:
+            raise ValueError(f"term {mono} has the coefficient {coeff}")
+        parts: dict[str, tuple] = {}
+        for f in sympy.Mul.make_args(mono):
+            base, exp = f.as_base_exp()
+            name = type(base).__name__
+            if name in _WEIGHT_OF and exp == 1:
+                slot = "weight"
+            elif name in _POINT_OF and exp == 1:
+                slot = "point"
+            elif name in _FUNC_OF and exp == 1:
+                slot = "function"
+            elif name == "taubar" and exp == -1:
+                slot = "tau"
+            else:
+                raise ValueError(f"factor {f} of term {mono}")
+            if slot in parts:
+                raise ValueError(f"two factors {slot} in {mono}")
+            parts[slot] = (name, tuple(base.args))
+        if set(parts) != set(ROW_KINDS[kind]):
+            raise ValueError(f"term {mono}: {sorted(parts)} instead of {ROW_KINDS[kind]}")
+        colours = {({**_WEIGHT_OF, **_POINT_OF, **_FUNC_OF}).get(nm) for s, (nm, _) in parts.items() if s != "tau"}
+        triples = {args[:3] for s, (_, args) in parts.items() if s != "tau"}
+        if len(colours) != 1 or len(triples) != 1:
+            raise ValueError(f"term {mono}: colours {colours}, indices {triples}")
+        if "tau" in parts and parts["tau"][1] != (n, UVW):
+            raise ValueError(f"term {mono}: the denominator is not tau-bar_n(u,v,w)")
+        if "function" in parts:
+            fargs = parts["function"][1]
+            if (fargs[3:] != (UVW,)) if strict_arguments else (fargs[3:] not in ((UVW,), ())):
+                raise ValueError(f"term {mono}: the function's arguments are {fargs[3:]}, not (u,v,w)")
+        for s, (_, args) in parts.items():
+            if s in ("weight", "point") and len(args) != 3:
+                raise ValueError(f"term {mono}: {s} with arguments {args}")
+        (a, b, c), colour = next(iter(triples)), next(iter(colours))
+        if a != 2 * n:
+            raise ValueError(f"term {mono}: first index {a}, not 2n")
+        out.append(f"{colour.lower()}_{{{a},{b},{c}}}")
+    return tuple(out)
+
+
+def rows_labels(ids: Sequence[str], n: int, kind: str, override: dict[str, str] | None = None, lhs=None,
+                strict_arguments: bool = True) -> list[str]:
+    """Labels of every term of the rows ``ids`` (read) at order n; ``lhs`` (a sympy object) is the left-hand side
+    the first row must have."""
+    rows = parse_rows(ids, override)
+    if lhs is not None and rows[0][0] != lhs:
+        raise ValueError(f"left-hand side {rows[0][0]} instead of {lhs}")
+    if any(row[0] is not None for row in rows[1:]):
+        raise ValueError("a continuation row has a left-hand side")
+    return [lab for _, rhs in rows for lab in row_labels(rhs, n, kind, strict_arguments)]
+
+
+NS_ROWS = tuple(range(1, 9))  # orders at which the parsed rows are written out (sympy; n = 1..8)
+PATCH_ROWS = ("sec6-patch-row-1", "sec6-patch-row-2")
+
+
+def patch_terms_read(n: int, override: dict[str, str] | None = None) -> list[str]:
+    """The control points of eq. triangular_trig_surface at order n, read from the transcriptions of its two rows
+    (:func:`rows_labels`: every term a point times its normalized function of (u,v,w), coefficient 1)."""
+    return rows_labels(PATCH_ROWS, n, "patch", override, lhs=sympy.Function("s_vec")(N_SYM, UVW))
 
 
 @line_check("sec6-patch-index-sets")
 def patch_index_sets(override: dict[str, str] | None = None) -> LineResult:
-    """The terms of eq. triangular_trig_surface (read from the transcriptions of its rows) are the delta_n functions
-    of T_{2n}, each once: compared with the code's labels, distinct functions (exponent vectors), and of full rank
-    (exact collocation at delta_n points, n = 1, 2, 3)."""
+    """The terms of eq. triangular_trig_surface (its two rows read by printed.latex_math, sums written out) are the
+    delta_n functions of T_{2n}, each once, each a point times its normalized function of (u,v,w) with coefficient 1:
+    compared with the code's labels (n = 1..8), distinct functions (exponent vectors), full rank (exact collocation
+    at delta_n points, n = 1, 2, 3); the printed order range (n >= 1) vs the orders with a patch."""
     try:
-        counts_ok = all(matches_basis(patch_terms_read(n, override), n) for n in NS)
+        counts_ok = all(matches_basis(patch_terms_read(n, override), n) for n in NS_ROWS)
     except ValueError as exc:
         return LineResult(False, how="the printed sums read from the transcriptions", detail={"unread": str(exc)})
     distinct = all(len({exponents(lab) for lab in united_system(n)}) == delta(n) for n in NS)
@@ -173,16 +249,13 @@ def patch_index_sets(override: dict[str, str] | None = None) -> LineResult:
         ranks[n] = rank(evaluate(n, alpha, pts, "exact").tolist())
     full = all(ranks[n] == delta(n) for n in ranks)
     order_ok = order_range_ok("sec6-patch-order")
-    rows = [(override or {}).get(k, _LINE[k].verbatim) for k in ("sec6-patch-row-1", "sec6-patch-row-2")]
-    head = "".join(rows[0].replace("%", "").split()).startswith("\\mathbf{s}_{n}^{\\alpha}\\left(u,v,w\\right)&=&")
-    formed = head and rows_well_formed(rows)
-    return LineResult(counts_ok and distinct and full and order_ok and formed, how="enumeration of the printed sums vs "
-                      "united_system, n = 1..12; exact rank of the basis at delta_n rational points, n = 1..3; the "
-                      "printed order range (n >= 1) vs the orders with a patch (n = 0..12)",
+    return LineResult(counts_ok and distinct and full and order_ok, how="the rows read by printed.latex_math, their "
+                      "sums written out vs united_system, n = 1..8; exact rank of the basis at delta_n rational "
+                      "points, n = 1..3; the printed order range (n >= 1) vs the orders with a patch (n = 0..12)",
                       kind="exact-evidence",
-                      detail={"n": [NS[0], NS[-1]], "terms_n_1_2_3": [len(patch_terms_read(n)) for n in (1, 2, 3)],
-                              "rank_n_1_2_3": [ranks[n] for n in (1, 2, 3)], "order_range_read": order_ok,
-                              "functions_alpha_uvw_and_added": formed})
+                      detail={"n": [NS_ROWS[0], NS_ROWS[-1]],
+                              "terms_n_1_2_3": [len(patch_terms_read(n, override)) for n in (1, 2, 3)],
+                              "rank_n_1_2_3": [ranks[n] for n in (1, 2, 3)], "order_range_read": order_ok})
 
 
 def order_range_ok(line_id: str) -> bool:
@@ -265,7 +338,7 @@ def quadratic_growth() -> LineResult:
     triangular_trig_surface (read); "order higher than three" (read) is the order beyond which the convex hull
     property is open (the orders of sec6-convex-hull-n123, read there)."""
     tex = _LINE["sec6-quadratic-growth"].verbatim
-    sizes = [len(patch_terms_read(n)) for n in NS]
+    sizes = [len(patch_terms_read(n)) for n in NS_ROWS]
     second = {c - 2 * b + a for a, b, c in zip(sizes, sizes[1:], sizes[2:])}
     first = sizes[1] - sizes[0]
     m = re.search(r"patches of order higher than (\w+) would be used", tex)
@@ -273,7 +346,7 @@ def quadratic_growth() -> LineResult:
     words = has_words(tex, "quadratic growth of the control points")
     proven = max(convex_hull_orders(), default=None)
     return LineResult(words and beyond == proven and second == {6} and first > 0,
-                      how="second differences of the number of control points, n = 1..12; the order named vs the "
+                      how="second differences of the number of control points, n = 1..8; the order named vs the "
                       "highest order with the convex hull property (sec6-convex-hull-n123)", kind="exact-evidence",
                       detail={"sizes": sizes[:4], "second_differences": sorted(second), "order_named": beyond})
 
@@ -1168,17 +1241,6 @@ def fig_torus_settings() -> LineResult:
 
 
 # --- Section 6.2: rational patches ---------------------------------------------------------------------------
-def _rows_read(ids: Sequence[str], n: int, override: dict[str, str] | None = None, **mode: bool) -> list[str]:
-    """Control point names (lower case) of the functions named by the sums of the lines ``ids``, read from their
-    transcriptions (:func:`paper_repro.printed.lines.read.sum_terms`)."""
-    from paper_repro.printed.lines.read import sum_terms, term_indices
-
-    texts = {k: _LINE[k].verbatim for k in ids}
-    texts.update({k: v for k, v in (override or {}).items() if k in texts})
-    return [f"{c.lower()}_{{{2 * n},{2 * n - i},{j}}}" for k in ids
-            for c, i, j in term_indices(sum_terms(texts[k], **mode), n=n)]
-
-
 @line_check("sec6-weights-set")
 def weights_set(verbatim: str | None = None) -> LineResult:
     """The weights rho_{2n,n,n} and the three printed sets of weights (read from the transcription; it used the
@@ -1208,21 +1270,32 @@ def rank1_counterexample(n: int = 2) -> dict:
     return {"sum": sum(w, fmpq(0)), "min_weight": min(w), "tau_on_edge_u0": tau_values(n, alpha, w, edge)}
 
 
-_RANK1_REL = re.compile(r"(\\neq|\\geq|\\leq|=|<|>)\s*(\d+),$")
+def _rank1_relation(tex: str):
+    from paper_repro.printed.latex_math import parse_relation
+
+    rel = parse_relation(tex.strip().rstrip(",."))
+    if rel.conditions or len(rel.ops) != 1:
+        raise ValueError(f"not one relation: {rel.ops}")
+    return rel
+
+
+def rank1_sum(tex: str):
+    """The printed sum of the weights (left-hand side of the relation, read by printed.latex_math)."""
+    return _rank1_relation(tex).parts[0]
 
 
 def rank1_relation(tex: str):
-    """The relation that closes the printed sum of weights (``\\neq0``): a test ``f(sum) -> bool`` (``None`` if
-    unread)."""
-    from paper_repro.printed.lines.sec6_latex import parse_relation, relation_holds
+    """The relation that closes the printed sum of weights (``\\neq0``, read by printed.latex_math): a test
+    ``f(sum) -> bool`` (``None`` if unread)."""
+    from paper_repro.printed.lines.sec6_latex import relation_holds
 
-    m = _RANK1_REL.search(tex.strip())
-    if not m:
+    try:
+        rel = _rank1_relation(tex)
+    except ValueError:
         return None
-    parts, ops = parse_relation("u" + m.group(1) + m.group(2))  # the sum stands in for u
-    from paper_repro.printed.lines.sec6_latex import U
-
-    return lambda total: relation_holds([x.subs(U, sympy.Rational(int(total.p), int(total.q))) for x in parts], ops)
+    if rel.parts[1].free_symbols:
+        return None
+    return lambda total: relation_holds([sympy.Rational(int(total.p), int(total.q)), rel.parts[1]], rel.ops)
 
 
 @line_check("sec6-weights-rank1")
@@ -1235,13 +1308,11 @@ def weights_rank1(override: dict[str, str] | None = None) -> LineResult:
     relation = rank1_relation(tex)
     if relation is None:
         return LineResult(False, how="the relation read from the transcription", detail={"unread": tex[-30:]})
-    sets_ok = all(matches_basis(_rows_read(("sec6-weights-rank1",), n, override, bare=True), n) for n in NS)
-    depth, added = 0, True
-    for ch in "".join(tex.replace("%", "").split()):
-        depth += ch == "{"
-        depth -= ch == "}"
-        added &= not (ch == "-" and depth == 0)
-    sets_ok &= added
+    try:
+        total = rank1_sum(tex)
+        sets_ok = all(matches_basis(row_labels(total, n, "weights"), n) for n in NS_ROWS)
+    except ValueError:
+        sets_ok = False
     ce = rank1_counterexample()
     vanishes = relation(ce["sum"]) and ce["min_weight"] >= 0 and any(v == 0 for v in ce["tau_on_edge_u0"])
     printed_holds = sets_ok and not vanishes
@@ -1272,41 +1343,19 @@ def rational_eval(n: int, alpha: RationalAngle, net, weights, pts: RationalPoint
     return out
 
 
-_TAU_DEN = re.compile(r"\\dfrac\{\\overline\{([RGB])\}_\{2n,[^{}]*\}\^\{\\alpha\}\\left\(u,v,w\\right\)\}"
-                      r"\{\\overline\{\\tau\}_\{([^{}]*)\}\^\{\\alpha\}\\left\(u,v,w\\right\)\}")
-
-
-def rational_quotients_ok(rows: Sequence[str]) -> bool:
-    """Every term of eq. rational_patch (rows read) is a quotient X-bar_{2n,..}^alpha(u,v,w) / tau-bar_n^alpha(u,v,w):
-    one quotient per weight, tau's subscript the order n of q_n (read from row 1), both with the arguments (u,v,w)."""
-    flat = ["".join(r.replace("%", "").split()) for r in rows]
-    m = re.match(r"\\mathbf\{q\}_\{(\w+)\}\^\{\\alpha\}\\left\(u,v,w\\right\)&=&", flat[0])
-    if not m:
-        return False
-    order = m.group(1)
-    for text in flat:
-        weights = len(re.findall(r"\\(?:rho|gamma|beta)_\{2n,", text))
-        quotients = _TAU_DEN.findall(text)
-        if weights == 0 or len(quotients) != weights or len(re.findall(r"\\dfrac", text)) != weights:
-            return False
-        if any(sub != order for _, sub in quotients):
-            return False
-    return order == "n"
-
-
 @line_check("sec6-rational-patch")
 def rational_patch(override: dict[str, str] | None = None) -> LineResult:
-    """The terms of eq. rational_patch (weight, control point and function of each, read from the transcriptions of
-    its three rows) are the delta_n functions of T_{2n}, each divided by tau-bar_n^alpha(u,v,w) (subscript and
-    arguments read); with equal weights the rational patch is the polynomial patch (exact); the order range read
-    from "of order $n\\geq1$" is the orders with a patch."""
+    """The terms of eq. rational_patch (weight, control point and function of each, its three rows read by
+    printed.latex_math, sums written out, n = 1..8) are the delta_n functions of T_{2n}, each divided by
+    tau-bar_n^alpha(u,v,w) (subscript and arguments read); with equal weights the rational patch is the polynomial
+    patch (exact); the order range read from "of order $n\\geq1$" is the orders with a patch."""
     rows = ("sec6-rational-row-1", "sec6-rational-row-2", "sec6-rational-row-3")
-    texts = {k: (override or {}).get(k, _LINE[k].verbatim) for k in rows}
     try:
-        sets_ok = all(matches_basis(_rows_read(rows, n, override, rational=True), n) for n in NS)
+        sets_ok = all(matches_basis(rows_labels(rows, n, "rational", override,
+                                                lhs=sympy.Function("q_vec")(N_SYM, UVW)), n) for n in NS_ROWS)
     except ValueError as exc:
         return LineResult(False, how="the rows read from the transcriptions", detail={"unread": str(exc)})
-    quotients = rational_quotients_ok([texts[k] for k in rows]) and rows_well_formed([texts[k] for k in rows])
+    quotients = sets_ok
     order_ok = order_range_ok("sec6-rational-order")
     alpha = rational_alpha(TS[2])
     same = True
@@ -1315,7 +1364,7 @@ def rational_patch(override: dict[str, str] | None = None) -> LineResult:
         pts = sample_rational_points(alpha, 3, seed=n)
         poly = combine(evaluate_normalized(n, alpha, pts, "exact"), net)
         same &= rational_eval(n, alpha, net, [fmpq(5, 2)] * delta(n), pts) == poly
-    return LineResult(sets_ok and quotients and order_ok and same, how="enumeration n = 1..12; the denominators "
+    return LineResult(sets_ok and quotients and order_ok and same, how="the rows read, n = 1..8; the denominators "
                       "tau-bar_n^alpha(u,v,w) read; exact evaluation with equal weights, n = 1, 2",
                       kind="exact-evidence",
                       detail={"equal_weights_give_polynomial_patch": same, "quotients_read": quotients,
@@ -1325,17 +1374,15 @@ def rational_patch(override: dict[str, str] | None = None) -> LineResult:
 _TAU_ROWS = ("sec6-tau-row-1", "sec6-tau-row-2")
 
 
-def tau_functions_have_arguments(text: str) -> bool:
-    """Every normalized function X-bar_{2n,..}^alpha of a row of tau-bar (read) is followed by its arguments
-    (u,v,w)."""
-    flat = "".join(text.replace("%", "").split())
-    funcs = re.findall(r"\\overline\{[RGB]\}_\{2n,[^{}]*\}\^\{\\alpha\}(\\left\(u,v,w\\right\))?", flat)
-    return bool(funcs) and all(funcs)
-
-
-def _tau_sets(texts: dict[str, str]) -> bool:
-    with_text = {k: v for k, v in texts.items()}
-    return all(matches_basis(_rows_read(_TAU_ROWS, n, with_text), n) for n in NS)
+def _tau_sets(texts: dict[str, str], strict_row_2: bool) -> bool:
+    """The two rows of tau-bar (read by printed.latex_math) name T_{2n} once each, n = 1..8 (row 1 always with the
+    arguments (u,v,w); row 2 with them only if ``strict_row_2``)."""
+    lhs = sympy.Function("taubar")(N_SYM, UVW)
+    rows = parse_rows(_TAU_ROWS, texts)
+    if rows[0][0] != lhs or rows[1][0] is not None:
+        raise ValueError(f"left-hand sides {rows[0][0]}, {rows[1][0]}")
+    return all(matches_basis(row_labels(rows[0][1], n, "tau") +
+                             row_labels(rows[1][1], n, "tau", strict_arguments=strict_row_2), n) for n in NS_ROWS)
 
 
 def _tau_unit() -> bool:
@@ -1350,16 +1397,13 @@ def tau_index_sets(override: dict[str, str] | None = None) -> LineResult:
     tau-bar_n^alpha(u,v,w) and each of its functions with the arguments (u,v,w); with unit weights tau = 1 (exact)."""
     texts = {k: (override or {}).get(k, _LINE[k].verbatim) for k in _TAU_ROWS}
     try:
-        sets = _tau_sets(texts)
+        sets = _tau_sets(texts, strict_row_2=False)
     except ValueError as exc:
         return LineResult(False, how="the rows read from the transcriptions", detail={"unread": str(exc)})
-    head = "".join(texts["sec6-tau-row-1"].replace("%", "").split()).startswith(
-        "\\overline{\\tau}_{n}^{\\alpha}\\left(u,v,w\\right)&=&")
-    args = tau_functions_have_arguments(texts["sec6-tau-row-1"]) and rows_well_formed([texts["sec6-tau-row-1"]])
     one = _tau_unit()
-    return LineResult(sets and head and args and one, how="enumeration n = 1..12; arguments read; exact tau with unit "
-                      "weights, n = 1, 2, 3", kind="exact-evidence",
-                      detail={"unit_weights_tau_is_1": one, "row_1_arguments": args})
+    return LineResult(sets and one, how="the rows read by printed.latex_math, sums written out vs T_{2n}, n = 1..8 "
+                      "(row 1: every function of (u,v,w)); exact tau with unit weights, n = 1, 2, 3",
+                      kind="exact-evidence", detail={"unit_weights_tau_is_1": one})
 
 
 @line_check("sec6-tau-row-2")
@@ -1369,18 +1413,23 @@ def tau_row_2() -> LineResult:
     (the arguments added) applied to the transcription gives a row whose every function has them."""
     texts = {k: _LINE[k].verbatim for k in _TAU_ROWS}
     try:
-        sets = _tau_sets(texts)
+        sets = _tau_sets(texts, strict_row_2=False)
     except ValueError as exc:
         return LineResult(False, how="the rows read from the transcriptions", detail={"unread": str(exc)})
-    row2 = texts["sec6-tau-row-2"]
-    printed = sets and tau_functions_have_arguments(row2) and rows_well_formed([row2])
-    fixed = corrected_text("sec6-tau-row-2")
+    try:
+        printed = _tau_sets(texts, strict_row_2=True)
+    except ValueError:
+        printed = False
     corrected = None
     if not printed:
-        corrected = fixed is not None and rows_well_formed([fixed]) and \
-            _tau_sets({**texts, "sec6-tau-row-2": fixed}) and _tau_unit()
-    return LineResult(printed, corrected, how="index sets of the two rows (read) vs T_{2n}, n = 1..12; the arguments "
-                      "of each function read from the transcription (and with the erratum's fix)",
+        fixed = corrected_text("sec6-tau-row-2")
+        try:
+            corrected = fixed is not None and sets and _tau_sets({**texts, "sec6-tau-row-2": fixed}, True) and \
+                _tau_unit()
+        except ValueError:
+            corrected = False
+    return LineResult(sets and printed, corrected, how="the rows read by printed.latex_math (and row 2 with the "
+                      "erratum's fix): index sets vs T_{2n}, n = 1..8, and the arguments (u,v,w) of every function",
                       kind="exact-evidence", detail={"index_sets": sets})
 
 
