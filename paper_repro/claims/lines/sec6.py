@@ -466,10 +466,6 @@ def convex_hull_n123() -> LineResult:
 
 
 # boundary curves ------------------------------------------------------------------------------------------
-_BOUNDARY = re.compile(r"^\\mathbf\{s\}_\{n\}\^\{\\alpha\}\\left\(\s*([^()]*?)\\right\)\s*&?\s*=\s*"
-                       r"\\sum_\{i=([^{}]+)\}%?\s*"
-                       r"\^\{([^{}]+)\}\s*\\mathbf\{([rgb])\}_\{2n,2n-i,0\}A_\{2n,2n-i\}\^\{\\alpha\}\\left\(\s*([uvw])\s*"
-                       r"\\right\)\s*,~([uvw])\\in\\left\[\s*([^,]*),([^,]*)\\right\]\s*,?(?:\\\\)?$")
 VARS = ("u", "v", "w")
 
 
@@ -502,28 +498,43 @@ def net_from_transcription(n: int, tex: str | None = None) -> list[str]:
     return out
 
 
-def read_boundary(tex: str) -> tuple[int, int, str, str, str]:
-    """(zero variable, argument variable of A, colour, lower and upper bound of i) of a printed boundary curve."""
-    m = _BOUNDARY.search(tex)
-    if not m:
-        raise ValueError(f"not a boundary curve: {tex[:60]!r}")
-    from paper_repro.printed.lines.sec6_latex import ALPHA, parse_expression
+def read_boundary(tex: str) -> tuple[int, int, str, sympy.Expr, sympy.Expr]:
+    """(zero variable, argument variable of A, colour, lower and upper bound of i) of a printed boundary curve, read
+    by :func:`paper_repro.printed.latex_math.parse_relation`: ``s_n(args) = sum_{i=lo}^{hi} x_{2n,2n-i,0}
+    A_{2n,2n-i}(t), t in [0, alpha]`` with ``args`` the edge x_zero = 0 parametrized by t (``ValueError`` otherwise)."""
+    from paper_repro.printed.latex_math import parse_relation
+    from paper_repro.printed.lines.sec6_latex import ALPHA
 
-    args = [parse_expression(a) for a in m.group(1).split(",")]
-    if args.count(0) != 1 or len(args) != 3:
-        raise ValueError(f"no single zero argument in s({m.group(1)})")
-    zero, arg = args.index(0), VARS.index(m.group(5))
-    if zero == arg:
-        raise ValueError(f"A_{{2n,2n-i}}({m.group(5)}) of the variable that is 0 on the edge")
-    t = sympy.Symbol(VARS[arg])
+    rel = parse_relation(tex.strip().rstrip(",").rstrip("\\").strip().rstrip(","))
+    if rel.ops != ["="] or len(rel.conditions) != 1:
+        raise ValueError(f"not a boundary curve: {tex[:60]!r}")
+    lhs, rhs = rel.parts
+    if type(lhs).__name__ != "s_vec" or len(lhs.args) != 2 or lhs.args[0] != N_SYM:
+        raise ValueError(f"left-hand side {lhs} is not s_n(u, v, w)")
+    args = list(lhs.args[1])
+    if not isinstance(rhs, sympy.Sum) or len(rhs.limits) != 1:
+        raise ValueError(f"right-hand side {rhs} is not one sum")
+    i, lo, hi = rhs.limits[0]
+    factors = {type(f).__name__: f for f in sympy.Mul.make_args(rhs.function)}
+    points = [k for k in factors if k in _POINT_OF]
+    if len(factors) != 2 or len(points) != 1 or "A" not in factors:
+        raise ValueError(f"term {rhs.function} is not x_{{2n,2n-i,0}} A_{{2n,2n-i}}(t)")
+    point, basis = factors[points[0]], factors["A"]
+    if tuple(point.args) != (2 * N_SYM, 2 * N_SYM - i, 0) or tuple(basis.args[:2]) != (2 * N_SYM, 2 * N_SYM - i) \
+            or len(basis.args) != 3 or len(basis.args[2]) != 1:
+        raise ValueError(f"term {rhs.function}: indices are not (2n, 2n-i, 0) and (2n, 2n-i), one argument")
+    t = basis.args[2][0]
+    if len(args) != 3 or args.count(0) != 1 or str(t) not in VARS:
+        raise ValueError(f"no single zero argument in s({args})")
+    zero, arg = args.index(0), VARS.index(str(t))
     other = 3 - zero - arg
     # the edge of Omega^alpha: the argument t of A runs over [0, alpha], the third variable is alpha - t
-    if args[arg] != t or sympy.expand(args[other] - (ALPHA - t)) != 0:
-        raise ValueError(f"s({m.group(1)}) is not the edge x_{zero} = 0 parametrized by {t}")
-    if m.group(6) != VARS[arg] or (parse_expression(m.group(7)), parse_expression(m.group(8))) != (0, ALPHA):
-        raise ValueError(f"the curve's parameter range is {m.group(6)} in [{m.group(7)}, {m.group(8)}], not "
-                         f"{t} in [0, alpha]")
-    return zero, arg, m.group(4), m.group(2), m.group(3)
+    if zero == arg or args[arg] != t or sympy.expand(args[other] - (ALPHA - t)) != 0:
+        raise ValueError(f"s({args}) is not the edge x_{zero} = 0 parametrized by {t}")
+    cond = rel.conditions[0]
+    if cond.ops != ["in"] or cond.parts != [t, sympy.Interval(0, ALPHA)]:
+        raise ValueError(f"the curve's parameter range is {cond.parts}, not {t} in [0, alpha]")
+    return zero, arg, _POINT_OF[points[0]].lower(), lo, hi
 
 
 def edge_points(alpha: RationalAngle, zero: int, ts: Sequence[fmpq]) -> RationalPoints:
@@ -577,8 +588,6 @@ def boundary_curve(line_id: str, verbatim: str | None = None) -> LineResult:
     it holds as printed iff every control point it names is one of the net of def:surface_patch (read from its
     transcription) and the identity holds exactly; the corrected curve names, for a term whose point is not in the
     net, the net's point of the same function (the corner of the next colour)."""
-    from paper_repro.printed.lines.read import bound
-
     tex = _LINE[line_id].verbatim if verbatim is None else verbatim
     try:
         zero, arg, color, lo, hi = read_boundary(tex)
@@ -588,7 +597,10 @@ def boundary_curve(line_id: str, verbatim: str | None = None) -> LineResult:
     printed_ok, corrected_ok, renamed = True, True, {}
     for n in (1, 2, 3):
         net = net_from_transcription(n)
-        names = [f"{color}_{{{2 * n},{2 * n - i},0}}" for i in range(bound(lo, n=n), bound(hi, n=n) + 1)]
+        lo_n, hi_n = sympy.sympify(lo).subs(N_SYM, n), sympy.sympify(hi).subs(N_SYM, n)
+        if not (lo_n.is_Integer and hi_n.is_Integer):
+            return LineResult(False, how="the sum's bounds read", detail={"unread": f"{lo}, {hi}"})
+        names = [f"{color}_{{{2 * n},{2 * n - i},0}}" for i in range(int(lo_n), int(hi_n) + 1)]
         fixed = [x if x in net else corner_name(n, color, 2 * n - int(x.split(",")[1]), net) for x in names]
         renamed.update({x: y for x, y in zip(names, fixed) if x != y})
         in_net = all(x in net for x in names)
@@ -1243,15 +1255,48 @@ def fig_torus_settings() -> LineResult:
 # --- Section 6.2: rational patches ---------------------------------------------------------------------------
 @line_check("sec6-weights-set")
 def weights_set(verbatim: str | None = None) -> LineResult:
-    """The weights rho_{2n,n,n} and the three printed sets of weights (read from the transcription; it used the
-    patch's terms instead) name each function of T_{2n} once, n = 1..12."""
-    from paper_repro.printed.lines.read import constant_sets
+    """The weights rho_{2n,n,n} and the three printed sets of weights (each set's bounds read by
+    :func:`paper_repro.printed.latex_math.index_set`, the lone weight by :func:`~paper_repro.printed.latex_math.parse`)
+    name each function of T_{2n} once, n = 1..12."""
+    from paper_repro.printed.latex_math import index_set, parse
 
     tex = _LINE["sec6-weights-set"].verbatim if verbatim is None else verbatim
-    names = {n: [f"{c.lower()}_{{{2 * n},{2 * n - i},{j}}}" for c, i, j in constant_sets(tex, n)] for n in NS}
-    ok = all(matches_basis(v, n) for n, v in names.items())
-    return LineResult(ok, how="the printed weights read from the transcription vs T_{2n}, n = 1..12",
-                      kind="exhaustive", detail={"sizes_n_1_2_3": [len(names[n]) for n in (1, 2, 3)]})
+    parts = [p for p in re.split(r",(?=\\left\\\{)|%\n,", tex.replace("%\n,", ",")) if p.strip(" %\n")]
+    sets: list[tuple] = []
+    try:
+        for part in parts:
+            m = re.match(r"\s*\\left\\\{\s*\\(rho|gamma|beta)_\{2n,2n-i,j\}\\right\\\}", part)
+            if m:
+                (jv, jlo, jhi), (iv, ilo, ihi) = index_set(part)
+                if (str(jv), str(iv)) != ("j", "i"):
+                    raise ValueError(f"index set over {jv}, {iv}")
+                sets.append((_WEIGHT_OF[m.group(1)], jlo, jhi, ilo, ihi))
+            else:
+                w = parse(part.strip(" ,%\n"))
+                if type(w).__name__ not in _WEIGHT_OF or len(w.args) != 3:
+                    raise ValueError(f"not a weight: {part!r}")
+                sets.append((_WEIGHT_OF[type(w).__name__], w.args))
+    except ValueError as exc:
+        return LineResult(False, how="the weights read from the transcription", detail={"unread": str(exc)[:80]})
+
+    def names(n: int) -> list[str]:
+        out = []
+        for item in sets:
+            if len(item) == 2:
+                a, b, c = (sympy.sympify(x).subs(N_SYM, n) for x in item[1])
+                out.append(f"{item[0].lower()}_{{{a},{b},{c}}}")
+                continue
+            colour, jlo, jhi, ilo, ihi = item
+            J = sympy.Symbol("j")
+            for j in range(int(jlo.subs(N_SYM, n)), int(jhi.subs(N_SYM, n)) + 1):
+                for i in range(int(ilo.subs({N_SYM: n, J: j})), int(ihi.subs({N_SYM: n, J: j})) + 1):
+                    out.append(f"{colour.lower()}_{{{2 * n},{2 * n - i},{j}}}")
+        return out
+
+    got = {n: names(n) for n in NS}
+    ok = all(matches_basis(v, n) for n, v in got.items())
+    return LineResult(ok, how="the printed weights read from the transcription (printed.latex_math) vs T_{2n}, "
+                      "n = 1..12", kind="exhaustive", detail={"sizes_n_1_2_3": [len(got[n]) for n in (1, 2, 3)]})
 
 
 def tau_values(n: int, alpha: RationalAngle, weights: Sequence[fmpq], pts: RationalPoints) -> list[fmpq]:
