@@ -66,10 +66,10 @@ from typing import Any
 
 import sympy
 from lark import Lark, Token, Transformer
-from lark.exceptions import LarkError, UnexpectedCharacters, UnexpectedEOF, UnexpectedInput, VisitError
+from lark.exceptions import LarkError, UnexpectedCharacters, UnexpectedEOF, UnexpectedInput
 
 __all__ = ["LatexMathError", "Relation", "parse", "parse_relation", "parse_cases", "parse_vector", "index_set",
-           "inline_math", "evaluate_sums", "clean", "D", "Family", "Cases", "PM"]
+           "inline_math", "evaluate_sums", "Term", "terms", "clean", "D", "Family", "Cases", "PM"]
 
 
 class LatexMathError(ValueError):
@@ -87,14 +87,15 @@ GREEK = ("alpha", "beta", "gamma", "delta", "epsilon", "varepsilon", "zeta", "et
          "psi", "omega", "Gamma", "Delta", "Theta", "Lambda", "Xi", "Sigma", "Phi", "Psi", "Omega", "ell")
 FUNCS = {"sin": sympy.sin, "cos": sympy.cos, "tan": sympy.tan, "cot": sympy.cot, "exp": sympy.exp,
          "ln": sympy.log, "log": sympy.log, "sign": sympy.sign, "dim": sympy.Function("dim"),
-         "span": sympy.Function("span"), "det": sympy.Function("det")}
+         "span": sympy.Function("span"), "det": sympy.Function("det"), "min": sympy.Function("min"),
+         "max": sympy.Function("max")}
 COLOURS = ("Red", "Green", "Blue", "Orange", "Cyan", "Magenta", "Purple", "Brown")
 DECOR = {"overline": "bar", "mathbf": "_vec", "mathcal": "cal", "widetilde": "tilde", "widehat": "hat",
          "mathbb": "_bb", "bar": "bar", "tilde": "tilde", "hat": "hat", "boldsymbol": "_vec"}
 # macros the tokenizer reads after clean() (anything else is an unknown macro)
 KNOWN = set(GREEK) | set(FUNCS) | {"ROWBREAK", "frac", "sqrt",
     "binom", "sum", "lim", "partial", "dd", "cdot", "times", "pm", "mp", "neq", "ne", "leq", "le", "geq",
-    "ge", "in", "notin", "sim", "nsim", "equiv", "rightarrow", "to", "forall", "ldots", "lfloor", "rfloor",
+    "ge", "in", "notin", "sim", "nsim", "equiv", "rightarrow", "to", "forall", "exists", "ldots", "lfloor", "rfloor",
     "prime", "pi", "infty", "LDOT", "RDOT", "RVERT", "AND", "OR", "pmod", "cup", "setminus", "subset",
     "subseteq", "approx", "{", "}"}
 
@@ -315,6 +316,7 @@ dbase: NAMEVAR | GREEKV | NAMEVAR "_" sarg -> dbase
        | atom
 
 func: FUNC atom                       -> func
+    | FUNC func                       -> func
     | FUNC "^" sarg atom              -> func_pow
     | FUNC NUMBER atom                -> func_num
     | FUNC "^" sarg NUMBER atom       -> func_pow_num
@@ -381,7 +383,7 @@ BINOM: /\\binom(?![A-Za-z])/
 SUM: /\\sum(?![A-Za-z])/
 LIM: /\\lim(?![A-Za-z])/
 DIFF: /\\(partial|dd)(?![A-Za-z])/
-FUNC: /\\(sin|cos|tan|cot|exp|ln|log|sign|dim|span|det)(?![A-Za-z])/
+FUNC: /\\(sin|cos|tan|cot|exp|ln|log|sign|dim|span|det|min|max)(?![A-Za-z])/
 GREEKV: /\\(GREEKNAMES)(?![A-Za-z])/
 PI: /\\pi(?![A-Za-z])/
 INFTY: /\\infty(?![A-Za-z])/
@@ -430,10 +432,11 @@ CAPVAR: /[A-Z]/
 
 @functools.cache
 def _parser() -> Lark:
-    """The LALR parser (built once: about 0.2 s)."""
+    """The LALR parser (built once: about 0.2 s), with the sympy builder run during the parse (no tree is kept:
+    the builder's ``arrays`` is set before each parse, so one parse at a time per process)."""
     return Lark(GRAMMAR.replace("GREEKNAMES", "|".join(GREEK)), parser="lalr",
                 start=["start_relation", "start_expr", "start_conditions"],
-                maybe_placeholders=False)
+                maybe_placeholders=False, transformer=_BUILDER)
 
 
 # --------------------------------------------------------------------------------------------------- values
@@ -443,9 +446,10 @@ class Relation:
 
     ``lead`` is the operator a continuation row starts with (``= & x`` has ``lead='='`` and ``parts=[x]``).
     ``conditions`` are the trailing clauses (``,~\\forall x\\in[0,\\alpha]``, ``,~i=0,1,\\ldots,2n``) as
-    Relations; ``quantifier`` is ``'forall'`` on a clause that carries ``\\forall``.  The op ``'equiv'`` has as
-    right part ``Tuple(b, m)`` for ``a \\equiv b \\pmod{m}``; ``'in'`` with a ``Tuple`` right part is a listed range
-    ``i=0,1,\\ldots,2n`` (``ldots`` is the Symbol ``ldots``).
+    Relations; ``quantifier`` is ``'forall'`` (``'exists'``) on a clause that carries ``\\forall``
+    (``\\exists``).  The op ``'equiv'`` has as right part ``Tuple(b, m)`` for ``a \\equiv b \\pmod{m}``; ``'in'``
+    with a ``Tuple`` right part is a listed range ``i=0,1,\\ldots,2n`` (``ldots`` is the Symbol ``ldots``).
+    ``continues`` is the operator (``'+'``, ``'-'``, ``'*'``) a row ends with when the next row continues it.
     """
 
     parts: list[Any]
@@ -854,6 +858,9 @@ class _Build(Transformer):
 
 
 
+_BUILDER = _Build([])
+
+
 def _as_basic(x):
     if isinstance(x, Relation):
         if len(x.parts) == 2 and x.ops == ["in"]:
@@ -870,8 +877,13 @@ def _as_basic(x):
 
 # --------------------------------------------------------------------------------------------------- top level
 def _run(start: str, s: str, arrays: list):
+    parser = _parser()
+    saved = _BUILDER.arrays
+    _BUILDER.arrays = arrays
     try:
-        tree = _parser().parse(s, start=start)
+        return parser.parse(s, start=start)
+    except LatexMathError:
+        raise
     except UnexpectedCharacters as e:
         raise LatexMathError(f"cannot read {s[e.pos_in_stream:e.pos_in_stream + 40]!r} (in {s[:80]!r})") from None
     except UnexpectedEOF:
@@ -881,12 +893,10 @@ def _run(start: str, s: str, arrays: list):
         raise LatexMathError(f"cannot read {s[p:p + 40]!r} (in {s[:80]!r})") from None
     except LarkError as e:  # pragma: no cover
         raise LatexMathError(str(e)) from None
-    try:
-        return _Build(arrays).transform(tree)
-    except VisitError as e:
-        if isinstance(e.orig_exc, LatexMathError):
-            raise e.orig_exc from None
-        raise LatexMathError(f"cannot build {s[:80]!r}: {e.orig_exc}") from None
+    except (TypeError, ValueError, AttributeError, IndexError, sympy.SympifyError) as e:
+        raise LatexMathError(f"cannot build {s[:80]!r}: {e}") from None
+    finally:
+        _BUILDER.arrays = saved
 
 
 def _split_top(s: str, sep: str = ",") -> list[str]:
@@ -944,6 +954,8 @@ def parse_vector(tex: str) -> sympy.Matrix:
 
 def _listing(first: Relation, rest: list[str], arrays: list) -> Relation:
     """``i=0`` followed by ``1``, ``\\ldots``, ``2n`` -> ``i in (0, 1, ldots, 2n)``."""
+    if any(not t.strip() for t in rest):
+        raise LatexMathError(f"an empty item between commas (',,') in the list after {first.parts[-1]}")
     items = [first.parts[-1]] + [_run("start_expr", t.strip(), arrays) for t in rest]
     return Relation(first.parts[:-1] + [sympy.Tuple(*items)], first.ops[:-1] + ["in"], first.lead,
                     quantifier=first.quantifier)
@@ -959,19 +971,20 @@ def _conditions(chunks: list[str], arrays: list) -> list[Relation]:
         t = chunks[k].strip()
         if not t:
             raise LatexMathError("an empty clause between commas")
-        forall = t.startswith("\\forall")
-        body = t[len("\\forall"):].strip() if forall else t
+        quant = next((q for q in ("forall", "exists") if t.startswith("\\" + q)), None)
+        body = t[len(quant) + 1:].strip() if quant else t
         if "\\AND" in body or "\\OR" in body:
             r = Relation([_condition(body)], [])
         else:
             r = _run("start_relation", body, arrays)
         if not isinstance(r, Relation):
             raise LatexMathError(f"a clause without a relation: {t!r}")
-        if forall:
-            r.quantifier = "forall"
+        if quant:
+            r.quantifier = quant
         k += 1
         rest = []
-        while k < len(chunks) and not _RELOP_RE.search(chunks[k]) and not chunks[k].strip().startswith("\\forall"):
+        while (k < len(chunks) and not _RELOP_RE.search(chunks[k])
+               and not chunks[k].strip().startswith(("\\forall", "\\exists"))):
             rest.append(chunks[k])
             k += 1
         if rest:
@@ -1022,25 +1035,47 @@ _DISPLAY = re.compile(r"\\\[(.*?)(\\\]|$)|\\begin\{(equation|align)\*?\}(.*?)(\\
 
 
 def _display_math(tex: str) -> str:
-    """The displayed mathematics of a line that also carries prose (``... \\[ math \\] ...``), else ``tex``."""
+    """The displayed mathematics of a line that also carries prose (``... \\[ math \\] ...``, or its one ``$..$``
+    segment), else ``tex``."""
     m = _DISPLAY.search(tex)
     if not m:
-        return tex
+        segs = inline_math(tex)
+        return segs[0] if len(segs) == 1 else tex
     return m.group(1) if m.group(1) is not None else m.group(4)
 
 
 def _case_rows(rows: list[list[str]]) -> list[tuple[Any, Any]]:
+    """A row whose condition cell is empty continues into the next row's value (a value printed over several rows,
+    its parenthesis opened with ``\\left(..\\right.`` and closed with ``\\left...\\right)``)."""
     out = []
+    pending = ""
     for row in rows:
         if not any(c.strip() for c in row):
             continue
         if len(row) != 2:
             raise LatexMathError(f"a case row with {len(row)} cells: {row!r}")
         v, cnd = row
-        v = v.strip().rstrip(",").strip()
+        if not cnd.strip():
+            pending = _join_rows(pending, v)
+            continue
+        v = _join_rows(pending, v).strip().rstrip(",").strip()
+        pending = ""
         value = _run("start_expr", v, [])
         out.append((value, parse_condition_clean(cnd)))
+    if pending:
+        raise LatexMathError(f"a case value without its condition: {pending[:60]!r}")
     return out
+
+
+def _join_rows(head: str, tail: str) -> str:
+    """``head`` continued by ``tail``: a ``\\right.`` ending head and a ``\\left.`` starting tail are the
+    invisible halves of one parenthesis split over rows, and go."""
+    head, tail = head.strip(), tail.strip()
+    if not head:
+        return tail
+    head = re.sub(r"\\RDOT\s*$", "", head)
+    tail = re.sub(r"^\\LDOT\s*", "", tail)
+    return head + " " + tail
 
 
 def parse_condition_clean(cnd: str):
@@ -1172,4 +1207,44 @@ def _expand_sum(body, limits: list):
         if t is None:
             return None
         out += t
+    return out
+
+
+@dataclass
+class Term:
+    """One printed term of a (sum of) products: the sums around it (outermost first, ``(var, lo, hi)``), the
+    applied names in it (``rho(2n, 2n-i, j)``, ``R(2n, 2n-i, j, (u, v, w))``, ...) and the rest (the coefficient)."""
+
+    limits: list[tuple[Any, Any, Any]]
+    names: list[Any]
+    coefficient: Any
+
+
+def terms(expr) -> list[Term]:
+    r"""The terms of a parsed linear combination (sympy's order of an ``Add``, not the printed order).
+
+    >>> [(t.limits, t.names) for t in terms(parse(r"\sum_{j=1}^{n-1}\sum_{i=j}^{2n-1-j}\gamma_{2n,2n-i,j}"
+    ...                                          r"G_{2n,2n-i,j}^{\alpha}\left(u,v,w\right)"))]
+    [([(j, 1, n - 1), (i, j, -j + 2*n - 1)], [G(2*n, -i + 2*n, j, (u, v, w)), gamma(2*n, -i + 2*n, j)])]
+    """
+    out: list[Term] = []
+    for t in sympy.Add.make_args(expr):
+        limits: list = []
+        coeff = sympy.Integer(1)
+        while True:
+            if isinstance(t, sympy.Sum):
+                limits += [tuple(lim) for lim in reversed(t.limits)]
+                t = t.function
+                continue
+            if isinstance(t, sympy.Mul):
+                inner = [a for a in t.args if isinstance(a, sympy.Sum)]
+                if len(inner) == 1:
+                    coeff *= sympy.Mul(*[a for a in t.args if a is not inner[0]])
+                    t = inner[0]
+                    continue
+            break
+        names = sorted((a for a in sympy.Mul.make_args(t) if isinstance(a, sympy.core.function.AppliedUndef)),
+                       key=sympy.default_sort_key)
+        rest = sympy.Mul(*[a for a in sympy.Mul.make_args(t) if a not in names])
+        out.append(Term(limits, names, coeff * rest))
     return out
