@@ -187,8 +187,12 @@ def mutants(tex: str, line_id: str = "", most: int = 2) -> list[Mutant]:
     """The mutants of one transcription: each operator at up to ``most`` sites (chosen deterministically), texts
     that differ from ``tex`` only, each once."""
     out: list[Mutant] = []
+    names = [m.span(1) for m in re.finditer(r"\\(?:label|ref|eqref|cite)\{([^{}]*)\}", tex)]
 
     def add(op: str, where: str, text: str) -> None:
+        first = next((k for k, (a, b) in enumerate(zip(tex, text)) if a != b), min(len(tex), len(text)))
+        if any(a <= first < b for a, b in names):
+            return  # a change inside \label{..} or \ref{..} renames a reference: no statement changes
         if text != tex and all(text != m.text for m in out):
             out.append(Mutant(line_id, op, where, text))
 
