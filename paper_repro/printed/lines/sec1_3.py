@@ -360,7 +360,9 @@ LINES = [
          'caption',
          'Functions associated with the red, green and blue shaded domains are symmetric in va'
          'riables $\\left( w,u\\right) $, $\\left( v,w\\right) $ and $\\left( u,v\\right) $, respect'
-         'ively.',
+         'ively. Functions which correspond to the adjacent domains red--green, green--blue and blue--red are '
+         'symmetric in variables $\\left( v,u\\right) $, $\\left( u,w\\right) $ and $\\left( w,v\\right) $, '
+         'respectively.',
          'red, green, blue functions are symmetric in (w,u), (v,w), (u,v); adjacent red-green,'
          ' green-blue, blue-red in (v,u), (u,w), (w,v)',
          'checked',
