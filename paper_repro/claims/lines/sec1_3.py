@@ -836,6 +836,16 @@ def fourier_dimension() -> LineResult:
         members = [parse(t.group()) for t in re.finditer(r"\\(?:cos|sin)\\left\((.*?)\\right\)", members_tex)]
         if not members or len(members) != members_tex.count(",") + 1:
             raise TexError(f"members of {members_tex!r} not read")
+        # the trivariate extension of the canonical basis {cos(it), sin(it)}: a cosine and a sine of one argument
+        # r u + g v + b w, each index with its own variable
+        args = {f.args[0] for f in members}
+        kinds = sorted(type(f).__name__ for f in members)
+        uvw = sympy.symbols("u v w")
+        if len(args) != 1 or kinds != ["cos", "sin"]:
+            raise TexError("the members are not the cosine and the sine of one argument")
+        coeffs = [sympy.Poly(next(iter(args)), *uvw).coeff_monomial(x) for x in uvw]
+        if sorted(str(c) for c in coeffs) != sorted(m.group(1, 3, 5)):
+            raise TexError(f"the argument {args} does not give each index its own variable")
         dim = re.search(r"common dimension \$\\delta_\{n\}=(.+?)\$", verbatim("sec1_3-span-coincide-dim"))
         same = re.search(r"spans the same vector space of functions as the constrained trivariate extension of the "
                          r"canonical basis of truncated Fourier series of order \$([^$]+)\$",
