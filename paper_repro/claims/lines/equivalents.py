@@ -7,3 +7,49 @@ value says why the mutated line still holds.  ``make mutate-lines`` lists every 
 from __future__ import annotations
 
 EQUIVALENT: dict[str, str] = {}
+
+# -- Sections 1-2 (worktree sec1_3, lines before tex line 462) -- equivalent mutants with their reasons ---------
+EQUIVALENT['sec1_3-fourier-system:bound:b2b54a22da'] = (  # r=0,g=0,b=0 -> r=0,g=0,b=0+1
+    'on Omega^alpha w = alpha-u-v, so (r,g,b) gives cos/sin((r-b)u+(g-b)v+b alpha); the frequencies of '
+    '(r,g,0) are the negatives of those of (n-r,n-g,n), and the cosine and sine of opposite frequencies '
+    '(any phase) span the same plane, so dropping one extreme value of one index (by the symmetry of the '
+    'roles, any one) keeps the span and its dimension delta_n (exact ranks, n = 1..3)')
+EQUIVALENT['sec1_3-fourier-system:bound:89e699c24a'] = (  # n,n,n -> n,n,n-1
+    'on Omega^alpha w = alpha-u-v, so (r,g,b) gives cos/sin((r-b)u+(g-b)v+b alpha); the frequencies of '
+    '(r,g,0) are the negatives of those of (n-r,n-g,n), and the cosine and sine of opposite frequencies '
+    '(any phase) span the same plane, so dropping one extreme value of one index (by the symmetry of the '
+    'roles, any one) keeps the span and its dimension delta_n (exact ranks, n = 1..3)')
+EQUIVALENT['sec1_3-fourier-system:constant:8eea47d186'] = (  # 0 -> 1
+    'on Omega^alpha w = alpha-u-v, so (r,g,b) gives cos/sin((r-b)u+(g-b)v+b alpha); the frequencies of '
+    '(r,g,0) are the negatives of those of (n-r,n-g,n), and the cosine and sine of opposite frequencies '
+    '(any phase) span the same plane, so dropping one extreme value of one index (by the symmetry of the '
+    'roles, any one) keeps the span and its dimension delta_n (exact ranks, n = 1..3)')
+EQUIVALENT['sec1_3-fourier-system:constant:7de7dbb143'] = (  # 0 -> 1
+    'on Omega^alpha w = alpha-u-v, so (r,g,b) gives cos/sin((r-b)u+(g-b)v+b alpha); the frequencies of '
+    '(r,g,0) are the negatives of those of (n-r,n-g,n), and the cosine and sine of opposite frequencies '
+    '(any phase) span the same plane, so dropping one extreme value of one index (by the symmetry of the '
+    'roles, any one) keeps the span and its dimension delta_n (exact ranks, n = 1..3)')
+EQUIVALENT['sec1_3-c-symmetry:bound:722b40fcf7'] = (  # n -> n-1
+    'i = n adds only c_{2n,n} = c_{2n,n}: the range i = 0..n-1 states the same symmetry')
+EQUIVALENT['sec1_3-united-centre:swap:d21cc01296'] = (  # u <-> v
+    'all three labels get the same permuted arguments, and R_{2n,n,n} = sin^n(u/2)sin^n(v/2)sin^n(w/2) is'
+    ' symmetric in u, v, w: R = G = B at (v,u,w) is the same statement')
+EQUIVALENT['sec1_3-united-centre:swap:2d6fbf3fc2'] = (  # v <-> w
+    'all three labels get the same permuted arguments, and R_{2n,n,n} = sin^n(u/2)sin^n(v/2)sin^n(w/2) is'
+    ' symmetric in u, v, w: R = G = B at (v,u,w) is the same statement')
+EQUIVALENT['sec1_3-boundary-property-1:swap:79b2e10d9b'] = (  # u <-> v
+    '{A_{2n,2n-i}(x)/c_{2n,2n-i}}_{i=0}^{2n} = {sin^i((alpha-x)/2) sin^{2n-i}(x/2)} is symmetric under x '
+    '<-> alpha-x over the full range, so the restriction to u = 0 with argument v is as true (it is eq. '
+    'boundary_property_2 up to that symmetry)')
+EQUIVALENT['sec1_3-boundary-property-1:word:57a72cff4d'] = (  # boundary -> interior
+    'the word operator changed only the name in \\label{boundary_property_k} (not a statement of the line)')
+EQUIVALENT['sec1_3-boundary-property-2:swap:ba7ad9be0a'] = (  # u <-> w
+    '{A_{2n,2n-i}(x)/c_{2n,2n-i}}_{i=0}^{2n} = {sin^i((alpha-x)/2) sin^{2n-i}(x/2)} is symmetric under x '
+    '<-> alpha-x over the full range, so the restriction to w = 0 with argument u is as true')
+EQUIVALENT['sec1_3-boundary-property-2:word:fbdae059fa'] = (  # boundary -> interior
+    'the word operator changed only the name in \\label{boundary_property_k} (not a statement of the line)')
+EQUIVALENT['sec1_3-boundary-property-3:swap:9676fd14f1'] = (  # v <-> w
+    '{A_{2n,2n-i}(x)/c_{2n,2n-i}}_{i=0}^{2n} = {sin^i((alpha-x)/2) sin^{2n-i}(x/2)} is symmetric under x '
+    '<-> alpha-x over the full range, so the restriction to v = 0 with argument w is as true')
+EQUIVALENT['sec1_3-boundary-property-3:word:53aff2ed45'] = (  # boundary -> interior
+    'the word operator changed only the name in \\label{boundary_property_k} (not a statement of the line)')

@@ -60,13 +60,15 @@ def c_exact(n: int, i: int, sin_half: fmpq, cos_half: fmpq) -> fmpq:
     return sum((fmpq(x) * cos_half**k for k, x in enumerate(poly.coeffs())), fmpq(0)) / sin_half ** (2 * n)
 
 
-def a_value(order, k, t, alpha) -> mpmath.mpf:
-    """A_{order,k}^alpha(t) (order = 2m) by the definition of eq. univariate_basis with :func:`c_indep`."""
+def a_value(order, k, t, alpha, scale=1) -> mpmath.mpf:
+    """A_{order,k}^alpha(t) (order = 2m) by the definition of eq. univariate_basis with :func:`c_indep`; with
+    ``scale`` both sines are multiplied by it (A of order 2m becomes scale^{2m} A: identities between A's of one
+    total order then hold as homogeneous polynomials in the two sines, not only as values)."""
     m2, k = _int(order), _int(k)
     if m2 % 2:
         raise ValueError(f"A_{{{m2},{k}}}: the order index must be even")
     m = m2 // 2
-    return c_indep(m, k, alpha) * mpmath.sin((alpha - t) / 2) ** (m2 - k) * mpmath.sin(t / 2) ** k
+    return c_indep(m, k, alpha) * (scale * mpmath.sin((alpha - t) / 2)) ** (m2 - k) * (scale * mpmath.sin(t / 2)) ** k
 
 
 def bernstein(k, d, s) -> mpmath.mpf:
@@ -88,7 +90,7 @@ def _int(x) -> int:
 
 #: Functions of the paper that :func:`num` knows (by name of the parsed applied function).
 FUNCS: dict[str, Callable] = {
-    "A": lambda env, order, k, args: a_value(order, k, args[0], env["alpha"]),
+    "A": lambda env, order, k, args: a_value(order, k, args[0], env["alpha"], env.get("_scale", 1)),
     "B": lambda env, k, d, args: bernstein(k, d, args[0]),
     "c": lambda env, order, k: c_indep(_half_order(order), _int(k), env["alpha"]),
 }

@@ -227,8 +227,22 @@ def read_interval(tex: str, var: str) -> tuple[bool, sympy.Expr, sympy.Expr, boo
     return m.group(1) == "[", parse(m.group(2)), parse(m.group(3)), m.group(4) == "]"
 
 
+def listed(tex: str, var: str) -> tuple[sympy.Expr, sympy.Expr]:
+    """(first, last) of the printed ``var=a,b,\\ldots,c`` whose step b - a must be 1 (every index between)."""
+    text = clean(tex)
+    m = re.search(rf"(?<![\w\\]){var}\s*=\s*([^,=]+?)\s*,\s*([^,=]+?)\s*,\s*\\ldots\s*,\s*([^,\s$]+?)\s*(?:[.,$]|$)",
+                  text)
+    if not m:
+        raise TexError(f"no listed range {var}=a,b,...,c")
+    a, b, c = (parse(x) for x in m.groups())
+    if sympy.simplify(b - a - 1) != 0:
+        raise TexError(f"the listed range {var}={m.group(1)},{m.group(2)},... does not step by 1")
+    return a, c
+
+
 def _unread(how: str, exc: Exception, kind: str = "exact-evidence") -> LineResult:
-    return LineResult(False, how=how, kind=kind, detail={"unread": str(exc)[:200]})
+    kind = "exact-evidence" if kind == "exhaustive" else kind  # nothing was computed over a range
+    return LineResult(False, how=how + " (the line was not read)", kind=kind, detail={"unread": str(exc)[:200]})
 
 
 def _env_int(expr: sympy.Expr, **env: int) -> int:
@@ -293,12 +307,22 @@ def _member_labels(tex: str) -> list[tuple[str, str, str, tuple[int, ...]]]:
     found = printed_sym.set_builders(tex)
     if not found:
         raise TexError(f"no set-builder in {tex[:60]!r}")
-    members = found[-1][0].split(":")[0]
+    members, _, domain = found[-1][0].partition(":")
+    _require_omega(domain)
     out = [printed_sym.label(m.group()) for m in re.finditer(r"[RGB]_\{[^{}]*\}\^\{\\alpha\}\s*%?\s*\\left\(\s*"
                                                              r"[uvw]\s*,\s*[uvw]\s*,\s*[uvw]\s*\\right\)", members)]
     if not out:
         raise TexError(f"no member label in {members[:60]!r}")
     return out
+
+
+_OMEGA = re.compile(r"\s*\(\s*u\s*,\s*v\s*,\s*w\s*\)\s*\\in\s*\\Omega\^\{\\alpha\}\s*$")
+
+
+def _require_omega(domain: str) -> None:
+    """The domain of a system must read ``(u,v,w) \\in \\Omega^{\\alpha}`` (membership in the printed triangle)."""
+    if not _OMEGA.match(clean(domain)):
+        raise TexError(f"the domain {domain.strip()[:40]!r} is not (u,v,w) in Omega^alpha")
 
 
 def _index_value(first: str, level: str, n: int, i: int, j: int) -> tuple[int, int]:
@@ -322,8 +346,9 @@ def _centre_members(n: int) -> list[tuple[int, ...] | None]:
     """Exponent vectors of the labels of the printed centre (``R_{2n,n,n} = G_{2n,n,n} = B_{2n,n,n}``, line
     sec1_3-united-centre), ``None`` for a label that is no member of its system."""
     tex = verbatim("sec1_3-united-centre")
-    body = tex.split("\\cup", 1)[1].split(":")[0].replace("\\left\\{", " ")
-    parts = relation(body)
+    body, _, domain = tex.split("\\cup", 1)[1].partition(":")
+    _require_omega(domain.split("\\right\\}")[0])
+    parts = relation(body.replace("\\left\\{", " "))
     out = []
     for p in parts:
         color, first, level, perm = printed_sym.label_of(p)
@@ -419,8 +444,8 @@ def corners_centre() -> LineResult:
         if not count or count.group(1) not in _NUMBER_WORDS or len(maths) < 2:
             raise TexError("the corner count or the functions are not read")
         corners_tex, centre_tex = maths[:-1], maths[-1]
-        if "innermost" not in tex or "outermost" not in tex:
-            raise TexError("no outermost/innermost nodes")
+        if not all(w in tex for w in ("innermost", "outermost", "stored in an inner node", "vertices of the outermost")):
+            raise TexError("the nodes (outermost vertices, inner nodes, innermost centroid) are not read")
         corner_f = [printed_sym.monomial(t) for t in corners_tex]
         centre_f = printed_sym.monomial(centre_tex)
     except (TexError, ValueError) as exc:
@@ -508,11 +533,18 @@ def rgb_index_sets(override: dict[str, str] | None = None, n_max: int = 30) -> L
             raise TexError("sec1_3-R-leq-n: the left side is not R_{2n,2n-i,j}(u,v,w)")
     except (TexError, ValueError) as exc:
         return _unread(how, exc, "exhaustive")
+    for color, key in zip("RGB", INDEX_SET_LINES[:3]):
+        head = clean(text[key].split("\\left\\{", 1)[0]).replace(" ", "")
+        if head != f"{color}_{{2n}}^{{\\alpha}}=":
+            return _unread(how, TexError(f"{key}: not '{color}_{{2n}}^alpha = ..' but {head!r}"), "exhaustive")
     for n in range(1, n_max + 1):
         try:
             sets = {k: _read_pairs(text[k], n) for k in INDEX_SET_LINES}
         except ValueError as exc:
             return _unread(how, exc, "exhaustive")
+        for color, key in zip("RGB", INDEX_SET_LINES[:3]):
+            if sorted(sets[key]) != sorted((lb.i, lb.j) for lb in full_system(n, color)):
+                bad.append(f"n={n}: the printed {color}_{{2n}} is not the graph's (package full system)")
         funcs = set()
         for color, key in zip("RGB", INDEX_SET_LINES[:3]):
             for i, j in sets[key]:
@@ -582,6 +614,9 @@ def _boundary(line_id: str) -> LineResult:
             raise TexError("no restriction T|_{x=a} = {..}_{i=..}^{..}")
         t_order, var, value = parse(m.group(1)), m.group(2), parse(m.group(3))
         body, (iv, ilo, ihi) = found
+        between = tex[m.end():tex.index(body)]
+        if clean(between).replace("\\{", "").strip() != "=":
+            raise TexError(f"the restriction and the set are not equated: {between!r}")
         member_tex, domain = body.split(":", 1)
         member = parse(member_tex)
         arg = read_interval(domain, "")  # [0, alpha]
@@ -712,8 +747,7 @@ def c_formula() -> LineResult:
         display = tex.split("\\[", 1)[1].split("\\]", 1)[0]
         formula, tail = re.split(r",\s*~?\s*(?=i\s*=)", display, maxsplit=1)
         lhs, rhs = relation(formula)
-        lo, hi = listed_range(tail, "i")
-        lo, hi = parse(lo), parse(hi)
+        lo, hi = listed(tail, "i")
         if not (isinstance(lhs, AppliedUndef) and lhs.func.__name__ == "c" and len(lhs.args) == 2):
             raise TexError(f"left side {lhs} is not c_{{2n,i}}")
         if sympy.simplify(lhs.args[0] - 2 * sympy.Symbol("n")) != 0 or lhs.args[1] != sympy.Symbol("i"):
@@ -760,7 +794,7 @@ def c_symmetry() -> LineResult:
         body = tex.split("\\begin{equation}", 1)[-1].split("\\label", 1)[0]
         formula, tail = re.split(r",\s*~?\s*(?=i\s*=)", body, maxsplit=1)
         lhs, rhs = relation(formula)
-        lo, hi = (parse(x) for x in listed_range(tail, "i"))
+        lo, hi = listed(tail, "i")
         for side in (lhs, rhs):
             if not (isinstance(side, AppliedUndef) and side.func.__name__ == "c" and len(side.args) == 2):
                 raise TexError(f"{side} is not a c_{{..,..}}")
@@ -978,12 +1012,23 @@ def _s_samples(lo, hi) -> list:
 
 
 def _quantified(tex: str) -> tuple[str, list]:
-    """(quantifier, sample values of s) of the printed ``,~\\forall s\\in\\left[ a,b\\right]``."""
+    """(quantifier, sample values of s) of the printed ``,~\\forall s\\in\\left[ a,b\\right]``; the interval must
+    be the one that the reparametrization t = alpha s of Proposition Bernstein maps onto the domain [0, alpha] of
+    t (eq. univariate_basis): closed, alpha a = 0 and alpha b = alpha."""
     m = re.search(r"\\(forall|exists)\s*s\s*\\in", tex)
     if not m:
         raise TexError("no quantifier over s")
-    _, lo, hi, _ = read_interval(tex[m.start():], r"\\(?:forall|exists)\s*s")
-    return m.group(1), _s_samples(num(lo, {}), num(hi, {}))
+    s_interval(tex[m.start():], r"\\(?:forall|exists)\s*s")
+    return m.group(1), _s_samples(0, 1)
+
+
+def s_interval(tex: str, var: str) -> None:
+    """Refuse an interval of s that t = alpha s does not map onto [0, alpha]."""
+    lo_c, lo, hi, hi_c = read_interval(tex, var)
+    alpha = sympy.Symbol("alpha")
+    if not (lo_c and hi_c) or sympy.simplify(alpha * lo) != 0 or sympy.simplify(alpha * hi - alpha) != 0:
+        raise TexError(f"s in {'[' if lo_c else '('}{lo}, {hi}{']' if hi_c else ')'}: t = alpha s does not cover "
+                       f"[0, alpha]")
 
 
 @line_check("sec1_3-bernstein-limit")
@@ -998,6 +1043,8 @@ def bernstein_limit() -> LineResult:
     how = "60-digit values at alpha = 1e-15 of the parsed limit, n = 1..5; exact coefficient limit n <= 15"
     try:
         rep = re.search(r"reparametrization \$t\\left\(\s*s\s*\\right\)\s*=(.+?),~?s\\in", tex)
+        if rep:
+            s_interval(tex[rep.end() - 3:], "s")
         deg = re.search(r"Bernstein polynomials of degree \$([^$]+)\$ when \$\\alpha\\rightarrow\s*([^$]+)\$", tex)
         order = re.search(r"basis functions \(\\ref\{univariate_basis\}\) of order \$([^$]+)\$", tex)
         if not rep or not deg or not order:
@@ -1010,7 +1057,7 @@ def bernstein_limit() -> LineResult:
         _, s_vals = _quantified(display)
         if not re.search(r"\\forall\s*s", display):
             raise TexError("the limit is not claimed for all s")
-        lo, hi = (parse(x) for x in listed_range(clean(display), "i"))
+        lo, hi = listed(display, "i")
         if not isinstance(lhs, sympy.Limit):
             raise TexError("the left side is not a limit")
         body, var, point = lhs.args[0], lhs.args[1], lhs.args[2]
@@ -1044,15 +1091,16 @@ def bernstein_limit() -> LineResult:
                       detail={"coefficient_limit_exact": exact, "below_1e-20": ok})
 
 
-def _a_identity(parts: list[sympy.Expr], quant: str, s_vals: list, orders=None) -> bool:
+def _a_identity(parts: list[sympy.Expr], quant: str, s_vals: list, scale=1) -> bool:
     """Whether the chain ``parts`` (all equal) holds at the sampled s (``forall``: every; ``exists``: some), for
-    n = 1..4 at alpha in {0.4, 1.3, 2.9}, 40 digits; ``orders`` rewrites the A's of a part (the correction)."""
+    n = 1..4 at alpha in {0.4, 1.3, 2.9}, 40 digits; with ``scale`` the sines in every A are scaled (the identity
+    as homogeneous polynomials in the sines, :func:`~paper_repro.claims.lines.sec12_eval.a_value`)."""
     results = []
     with mpmath.workdps(40):
         for n in range(1, 5):
             for alpha in (mpmath.mpf("0.4"), mpmath.mpf("1.3"), mpmath.mpf("2.9")):
                 for s in s_vals:
-                    env = {"n": n, "s": s, "alpha": alpha}
+                    env = {"n": n, "s": s, "alpha": alpha, "_scale": scale}
                     vals = [num(p, env) for p in parts]
                     results.append(all(abs(v - vals[0]) < mpmath.mpf("1e-30") for v in vals))
     return all(results) if quant == "forall" else any(results)
@@ -1112,7 +1160,10 @@ def bernstein_power() -> LineResult:
         if len(parts) != 3:
             raise TexError("not a chain of three parts")
         printed = _a_identity(parts, quant, s_vals)
-        corrected = _a_identity([parts[0], _order_one(parts[1], True), parts[2]], quant, s_vals)
+        fixed = [parts[0], _order_one(parts[1], True), parts[2]]
+        # the values are all 1; the proof's content is the expansion: the first two parts must agree as homogeneous
+        # polynomials in sin((alpha-t)/2), sin(t/2) (a power n-1 would still give the value 1)
+        corrected = _a_identity(fixed, quant, s_vals) and _a_identity(fixed[:2], quant, s_vals, scale=mpmath.mpf(1.3))
     except (TexError, ValueError, ZeroDivisionError) as exc:
         return _unread(how, exc, "numeric-evidence")
     a = rational_alpha(ALPHA_TS[0])
@@ -1135,6 +1186,27 @@ def _limit_parts(tex: str) -> list[sympy.Expr]:
     return relation(body)
 
 
+def _termwise(lhs: sympy.Limit, rhs: sympy.Expr) -> bool:
+    """The proof's step is a termwise limit: lim (t1 + t2 + t3)^n = (r1 + r2 + r3)^n with each t_k -> some r_k (the
+    sums themselves are 1 for every alpha, so the values alone cannot tell a wrong limit point): same exponent, and
+    the limits of the terms (60 digits at alpha = point + 1e-15, s in {0.1, 0.5, 0.9}) are the right side's terms."""
+    body, point = lhs.args[0], lhs.args[2]
+    if not (isinstance(body, sympy.Pow) and isinstance(rhs, sympy.Pow)) or body.exp != rhs.exp:
+        return False
+    left, right = sympy.Add.make_args(body.base), sympy.Add.make_args(rhs.base)
+    if len(left) != len(right):
+        return False
+    with mpmath.workdps(60):
+        alpha = num(point, {}) + mpmath.mpf("1e-15")
+        ss = (mpmath.mpf("0.1"), mpmath.mpf("0.5"), mpmath.mpf("0.9"))
+        try:
+            lv = sorted(tuple(mpmath.nstr(num(t, {"s": s, "alpha": alpha}), 15) for s in ss) for t in left)
+            rv = sorted(tuple(mpmath.nstr(num(t, {"s": s}), 15) for s in ss) for t in right)
+        except (TexError, ValueError, ZeroDivisionError):
+            return False
+    return lv == rv
+
+
 @line_check("sec1_3-bernstein-proof-limit")
 def bernstein_proof_limit() -> LineResult:
     """The proof's limit (parsed: the lim over alpha of the n-th power of the three terms equals
@@ -1155,6 +1227,7 @@ def bernstein_proof_limit() -> LineResult:
     except (TexError, ValueError) as exc:
         return _unread(how, exc, "numeric-evidence")
     worst = mpmath.mpf(0)
+    termwise = _termwise(parts[0], parts[1])
     with mpmath.workdps(60):
         for lhs, rhs in checks:
             alpha = num(lhs.args[2], {}) + mpmath.mpf("1e-15")
@@ -1165,8 +1238,10 @@ def bernstein_proof_limit() -> LineResult:
                         worst = max(worst, abs(num(lhs.args[0], env) - num(rhs, env)))
                     except (TexError, ValueError, ZeroDivisionError) as exc:
                         return _unread(how, exc, "numeric-evidence")
-    ok = bool(worst < mpmath.mpf("1e-20"))
-    return LineResult(ok, how=how, kind="numeric-evidence", detail={"below_1e-20": ok})
+    ok = bool(worst < mpmath.mpf("1e-20")) and termwise
+    return LineResult(ok, how=how + "; the limit of each term of the power's base against the right side's terms",
+                      kind="numeric-evidence", detail={"below_1e-20": bool(worst < mpmath.mpf("1e-20")),
+                                                       "termwise": termwise})
 
 
 def _one_minus_s(tex: str) -> str:
