@@ -53,3 +53,9 @@ EQUIVALENT['sec1_3-boundary-property-3:swap:9676fd14f1'] = (  # v <-> w
     '<-> alpha-x over the full range, so the restriction to v = 0 with argument w is as true')
 EQUIVALENT['sec1_3-boundary-property-3:word:53aff2ed45'] = (  # boundary -> interior
     'the word operator changed only the name in \\label{boundary_property_k} (not a statement of the line)')
+_CORNERS_SYMMETRIC = (
+    "the three corner functions sin^{2n}(u/2), sin^{2n}(v/2), sin^{2n}(w/2) form a set invariant under every "
+    "permutation of u, v, w, and the centre sin^n(u/2)sin^n(v/2)sin^n(w/2) is symmetric (which corner is drawn where "
+    "is the figure's, an image not in the source)")
+EQUIVALENT["sec1_3-corners-centre:swap:9300f4bd97"] = _CORNERS_SYMMETRIC  # u <-> v
+EQUIVALENT["sec1_3-corners-centre:swap:6ce019135e"] = _CORNERS_SYMMETRIC  # v <-> w

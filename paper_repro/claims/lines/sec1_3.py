@@ -34,7 +34,6 @@ from paper_repro.core.labels import BasisLabel, compose, delta, exponents, full_
 from paper_repro.core.univariate import c_const, c_numerator, c_numerator_by_expansion
 from paper_repro.printed import symmetry as printed_sym
 from paper_repro.printed.lines import lines_of, verbatim
-from paper_repro.printed.lines.read import listed_range
 from paper_repro.printed.lines.tex_expr import TexError, clean, parse, relation
 from paper_repro.theory.derivatives import mixed_derivative, sin_power_derivative
 
@@ -444,7 +443,8 @@ def corners_centre() -> LineResult:
         if not count or count.group(1) not in _NUMBER_WORDS or len(maths) < 2:
             raise TexError("the corner count or the functions are not read")
         corners_tex, centre_tex = maths[:-1], maths[-1]
-        if not all(w in tex for w in ("innermost", "outermost", "stored in an inner node", "vertices of the outermost")):
+        nodes = ("innermost", "outermost", "stored in an inner node", "vertices of the outermost")
+        if not all(w in tex for w in nodes):
             raise TexError("the nodes (outermost vertices, inner nodes, innermost centroid) are not read")
         corner_f = [printed_sym.monomial(t) for t in corners_tex]
         centre_f = printed_sym.monomial(centre_tex)
