@@ -211,7 +211,7 @@ def six_properties() -> list[tuple[str, tuple[int, int, int], str, str]]:
         if not m or len(kinds) != 1:
             raise TexError(f"unread caption sentence {sentence[:60]!r}")
         (families, pairs_tex), kind = m.groups(), kinds[0]
-        names = re.findall(r"red--green|green--blue|blue--red|red|green|blue", families)
+        names = re.findall(r"(?:red|green|blue)(?:--(?:red|green|blue))?", families)
         swaps = re.findall(r"\\left\(\s*([uvw])\s*,\s*([uvw])\s*\\right\)", pairs_tex)
         if len(names) != len(swaps) or not names:
             raise TexError(f"{len(names)} domains but {len(swaps)} pairs of variables in {sentence[:60]!r}")
