@@ -1,8 +1,10 @@
-"""A small reader of the paper's formula notation (Sections 1-2): LaTeX -> sympy, for the line checks of
-:mod:`paper_repro.claims.lines.sec1_3` (issue 37: a check parses the transcription, it never retypes the formula).
+"""The reader of formulas for the line checks of Sections 1-2 (:mod:`paper_repro.claims.lines.sec1_3`; issue 37: a
+check parses the transcription, it never retypes the formula).
 
-This is an interim reader until :mod:`paper_repro.printed.latex_math` (the grammar of the whole paper) lands; it
-follows that module's contract for what it reads:
+:func:`parse` and :func:`relation` call :mod:`paper_repro.printed.latex_math` (the project's grammar of the paper's
+notation) and map its names to the ones the checks use (``B_sup`` -> ``B``); :func:`half_angle_powers` reads a
+product of half-angle powers.  :func:`own_parse` is the interim recursive-descent reader written before latex_math
+landed, kept for the tests that compare the two; it follows the same contract:
 
 * ``\\sin^{k}\\frac{u}{2}`` is ``sin(u/2)**k``; a function's argument is the next atom (``\\frac{..}{..}``,
   ``\\left(..\\right)``, a group, a symbol);
@@ -16,8 +18,8 @@ follows that module's contract for what it reads:
 * ``%`` continuations, ``\\left``/``\\right``, spacing, ``&``, ``\\\\``, ``\\label``, ``\\nonumber``, ``\\text{.}``
   are ignored.
 
-Anything else raises :class:`TexError` naming the unread part (so a blank line ``XXX`` parses to the product
-``X*X*X`` of symbols, which a check must refuse: see :func:`names`).
+Anything else raises :class:`TexError` naming the unread part (latex_math refuses a blank line ``XXX``; the own
+reader would parse it to the product ``X*X*X`` of symbols, which a check must refuse: see :func:`names`).
 
 >>> parse(r"\\sin^{2n-i}\\frac{u}{2}\\cos^{j}\\frac{v}{2}")
 sin(u/2)**(-i + 2*n)*cos(v/2)**j
@@ -239,27 +241,50 @@ class _Parser:
         raise TexError(f"unread {tok!r} at {self.rest()!r} in {self.src[:80]!r}")
 
 
+def _paper_names(e):
+    """latex_math's names mapped to this module's: ``B_sup(i, 2n, (s,))`` (B_i^{2n}, the Bernstein polynomial: the
+    superscript is an index) is ``B(i, 2n, (s,))``."""
+    if not isinstance(e, sympy.Basic):
+        raise TexError(f"not an expression: {e!r}")
+    return e.replace(lambda x: isinstance(x, sympy.core.function.AppliedUndef) and x.func.__name__ == "B_sup",
+                     lambda x: sympy.Function("B")(*x.args))
+
+
 @cache
 def parse(tex: str) -> sympy.Expr:
-    """One expression (all of ``tex`` must be read)."""
+    """One expression (all of ``tex`` must be read), by :func:`paper_repro.printed.latex_math.parse` (the project's
+    reader of the paper's notation); :class:`TexError` on anything it refuses."""
+    from paper_repro.printed import latex_math
+
+    try:
+        return _paper_names(latex_math.parse(tex))
+    except latex_math.LatexMathError as exc:
+        raise TexError(str(exc)) from exc
+
+
+@cache
+def relation(tex: str) -> list[sympy.Expr]:
+    """The parts of an equality chain ``a = b = c`` (every relation ``=``, no trailing condition), by
+    :func:`paper_repro.printed.latex_math.parse_relation`; :class:`TexError` on anything else."""
+    from paper_repro.printed import latex_math
+
+    try:
+        rel = latex_math.parse_relation(tex)
+    except latex_math.LatexMathError as exc:
+        raise TexError(str(exc)) from exc
+    if any(op != "=" for op in rel.ops) or getattr(rel, "conditions", None):
+        raise TexError(f"not an equality chain: {rel.ops} {getattr(rel, 'conditions', '')}")
+    return [_paper_names(p) for p in rel.parts]
+
+
+@cache
+def own_parse(tex: str) -> sympy.Expr:
+    """This module's own reader (the interim one, kept for comparison with latex_math in the tests)."""
     p = _Parser(tex)
     e = p.expr()
     if p.peek() is not None:
         raise TexError(f"unread tail {p.rest()!r} of {tex[:80]!r}")
     return e
-
-
-@cache
-def relation(tex: str) -> list[sympy.Expr]:
-    """The parts of a chain ``a = b = c`` (top-level ``=`` only); ``TexError`` on anything unread."""
-    p = _Parser(tex)
-    parts = [p.expr()]
-    while p.peek() == "=":
-        p.take("=")
-        parts.append(p.expr())
-    if p.peek() is not None:
-        raise TexError(f"unread tail {p.rest()!r} of {tex[:80]!r}")
-    return parts
 
 
 def names(expr: sympy.Basic) -> set[str]:
