@@ -381,3 +381,40 @@ def test_level_zeroed_reads_the_constants(right, wrong):
     text = {x.id: x.verbatim for x in P.LINES}["sec1_3-step-zeroed"]
     assert right in text and C.level_zeroed().holds_as_printed
     assert not C.level_zeroed(text.replace(right, wrong)).holds_as_printed
+
+
+# -- the readers of Sections 1-2 (issue 37) ------------------------------------------------------------------------
+@pytest.mark.parametrize("line_id", ["sec1_3-R-leq-n", "sec1_3-G-geq-explicit", "sec1_3-B-leq-explicit",
+                                     "sec1_3-univariate-basis", "sec1_3-bernstein-identity"])
+def test_interim_reader_agrees_with_latex_math(line_id):
+    """tex_expr.parse delegates to printed/latex_math; the interim reader written before it gives the same objects."""
+    import re
+
+    import sympy
+
+    from paper_repro.printed.lines import verbatim
+    from paper_repro.printed.lines.tex_expr import own_parse, parse
+
+    text = verbatim(line_id)
+    bodies = re.findall(r"\\left\\\{(.*?)(?::|\\right\\\})", text) or re.findall(r"\\\[(.*?)=1", text)
+    assert bodies
+    for body in bodies:
+        a, b = own_parse(body), parse(body)
+        assert a == b or sympy.simplify(a - b) == 0, (a, b)
+
+
+def test_printed_symmetry_objects_come_from_the_transcriptions():
+    from paper_repro.printed import symmetry as S
+    from paper_repro.printed.lines import substituted, verbatim
+    from paper_repro.printed.lines.tex_expr import TexError
+
+    assert S.printed_half() == {"R": (2, 1, 0), "G": (0, 2, 1), "B": (1, 0, 2)}
+    assert len(S.six_properties()) == S.six_count() == 6
+    rel = verbatim("sec1_3-B-geq-relation")
+    with substituted({"sec1_3-B-geq-relation": rel.replace("\\left( v,u,w\\right) \\right\\}",
+                                                           "\\left( w,u,v\\right) \\right\\}")}):
+        assert S.printed_half()["B"] == (2, 0, 1)
+    with substituted({"sec1_3-G-leq-explicit": "XXX"}):
+        with pytest.raises(TexError):
+            S.printed_g(2, 1, 0)
+    assert S.printed_g(2, 1, 0) == (0, 1, 1, 0, 3, 0)
