@@ -59,3 +59,12 @@ _CORNERS_SYMMETRIC = (
     "is the figure's, an image not in the source)")
 EQUIVALENT["sec1_3-corners-centre:swap:9300f4bd97"] = _CORNERS_SYMMETRIC  # u <-> v
 EQUIVALENT["sec1_3-corners-centre:swap:6ce019135e"] = _CORNERS_SYMMETRIC  # v <-> w
+_SAME_RENAMING = (
+    "the same exchange of two variables on both sides of an identity over Omega^alpha (a set invariant under every "
+    "permutation of u, v, w): X(pi x) = X'(sigma pi x) for all x is the printed X(x) = X'(sigma x) for all x")
+for _key in ("sec1_3-R-geq-n-relation:swap:55ddd9a10c", "sec1_3-R-geq-n-relation:swap:232399d0ba",
+             "sec1_3-G-geq-relation:swap:84e9e97303", "sec1_3-G-geq-relation:swap:b50a147834",
+             "sec1_3-B-geq-relation:swap:bccbd9a055", "sec1_3-B-geq-relation:swap:cc85cea8c4"):
+    EQUIVALENT[_key] = _SAME_RENAMING
+EQUIVALENT["sec1_3-R-geq-n-explicit:sign:9ad822b6f9"] = (  # j up to n-1 -> n+1
+    "j = n and j = n+1 add no index: i runs from n+1 to 2n-j, empty for j >= n, so the index set is the printed one")
