@@ -127,9 +127,11 @@ def numeric_check(n: int, alpha_text: str, count: int, dps: int, seed: int) -> m
 
 @claim("symmetry", paper_ref=["fig:oriented_graph", "R_system", "R_system_leq_n", "R_system_geq_n", "G_system",
                               "B_system"],
-       statement="For n = 1..{n_max}: the printed G and B formulas equal R(w,u,v) and R(v,w,u), and the printed "
-                 "half relations and the six symmetry properties of Fig. oriented_graph(b) hold (exact identities "
-                 "of exponent vectors, a proof for each n in that range; not for larger n).",
+       statement="For n = 1..{n_max}: the printed R, G and B formulas (read from the transcriptions) equal those "
+                 "of the graph construction (G = R(w,u,v), B = R(v,w,u)) on their printed index sets, which split "
+                 "the full systems, and the printed half relations and the six symmetry properties of "
+                 "Fig. oriented_graph(b) hold (exact identities of exponent vectors, a proof for each n in that "
+                 "range; not for larger n).",
        kind="proof", n_max=10, alphas=["pi/6", "pi/2", "5pi/6"], points=8, dps=40, seed=7)
 def run(n_max: int, alphas: list[str], points: int, dps: int, seed: int) -> Outcome:
     fails = {n: structural_checks(n) for n in range(1, n_max + 1)}
