@@ -45,17 +45,28 @@ def test_symmetry_structural_all_hold():
         assert symmetry.structural_checks(n) == []
 
 
-def test_symmetry_detects_wrong_printed_formula(monkeypatch):
-    real = symmetry.printed_g
-    monkeypatch.setattr(symmetry, "printed_g", lambda n, i, j: (lambda e: (e[1], e[0]) + e[2:])(real(n, i, j)))
-    assert symmetry.structural_checks(2)
+def test_symmetry_detects_wrong_printed_formula():
+    """The claim reads the printed G formula from its transcription: cos and sin of u/2 exchanged fail."""
+    from paper_repro.printed.lines import substituted, verbatim
+
+    text = verbatim("sec1_3-G-leq-explicit")
+    wrong = text.replace("\\cos^{i-j}\\frac{u}", "\\sin^{i-j}\\frac{u}").replace("\\sin^{j}\\frac{u}",
+                                                                                  "\\cos^{j}\\frac{u}")
+    assert wrong != text
+    with substituted({"sec1_3-G-leq-explicit": wrong}):
+        assert any("printed G" in f for f in symmetry.structural_checks(2))
+    assert symmetry.structural_checks(2) == []
 
 
-def test_symmetry_detects_wrong_six_property(monkeypatch):
-    props = list(symmetry.SIX_PROPERTIES)
-    props[3] = ("(v,u)", symmetry.SWAP_UV, "R", "B")  # wrong target family
-    monkeypatch.setattr(symmetry, "SIX_PROPERTIES", props)
-    assert any("does not map" in f for f in symmetry.structural_checks(2))
+def test_symmetry_detects_wrong_six_property():
+    """The caption's properties are parsed: red--green exchanged by (v,u) becomes red--blue, which fails."""
+    from paper_repro.printed.lines import substituted, verbatim
+
+    text = verbatim("sec1_3-fig-oriented-graph-caption")
+    with substituted({"sec1_3-fig-oriented-graph-caption": text.replace("red--green", "red--blue")}):
+        assert any("does not map" in f for f in symmetry.structural_checks(2))
+    with substituted({"sec1_3-six-symmetries": verbatim("sec1_3-six-symmetries").replace("six", "five")}):
+        assert any("announces 5" in f for f in symmetry.structural_checks(2))
 
 
 def test_univariate_constants_and_detection(monkeypatch):

@@ -1,33 +1,240 @@
-"""Section sec:RGB, verbatim: the printed G and B formulas (as exponent vectors), the printed
-second-half relations and the six symmetry properties of Fig. oriented_graph(b)."""
+"""Section sec:RGB as printed, read from the transcriptions (issue 37: no hand copy): the explicit R, G and B
+formulas (eqs. R_system_leq_n, R_system_geq_n and the G, B displays after them) as exponent vectors, the printed
+second-half relations ``X_{2n,2n-i,j}(u,v,w) = X_{2n,i,j}(sigma)`` and the six symmetry properties of
+Fig. oriented_graph(b) (its caption).
+
+Everything is parsed at call time from :func:`paper_repro.printed.lines.verbatim` (so the blank and mutation tests
+of the lines reach it) with :mod:`paper_repro.printed.lines.tex_expr` and :mod:`paper_repro.printed.lines.read`;
+exponent vectors are in the order of :data:`paper_repro.core.labels.SLOTS` (sin u/2, cos u/2, sin v/2, ...).
+
+>>> printed_g(2, 1, 0)  # G_{4,3,0} = sin^3(w/2) sin(v/2) cos(u/2)
+(0, 1, 1, 0, 3, 0)
+>>> printed_half()["B"]
+(1, 0, 2)
+>>> [p[0] for p in six_properties()]
+['(w,u)', '(v,w)', '(u,v)', '(v,u)', '(u,w)', '(w,v)']
+"""
 
 from __future__ import annotations
 
+import re
+from collections.abc import Callable
+from functools import cache
 
-def printed_g(n: int, i: int, j: int) -> tuple[int, ...]:
-    """Printed G_{2n,2n-i,j}: i<=n: sin^{2n-i}(w/2) sin^i(v/2) cos^{i-j}(u/2) sin^j(u/2);
-    i>n: sin^i(v/2) sin^{2n-i}(w/2) cos^{2n-i-j}(u/2) sin^j(u/2)."""
-    if i <= n:
-        return (j, i - j, i, 0, 2 * n - i, 0)
-    return (j, 2 * n - i - j, i, 0, 2 * n - i, 0)
+import sympy
+
+from paper_repro.printed.lines import verbatim
+from paper_repro.printed.lines.read import bound
+from paper_repro.printed.lines.tex_expr import TexError, clean, half_angle_powers, parse
+
+VARS = ("u", "v", "w")
+#: The lines of the explicit formulas: (colour, half) -> line id; "low" is i = j..n, "high" i = n+1..2n-j.
+EXPLICIT_LINES = {("R", "low"): "sec1_3-R-leq-n", ("R", "high"): "sec1_3-R-geq-n-explicit",
+                  ("G", "low"): "sec1_3-G-leq-explicit", ("G", "high"): "sec1_3-G-geq-explicit",
+                  ("B", "low"): "sec1_3-B-leq-explicit", ("B", "high"): "sec1_3-B-geq-explicit"}
+#: The lines of the printed second-half relations.
+RELATION_LINES = {"R": "sec1_3-R-geq-n-relation", "G": "sec1_3-G-geq-relation", "B": "sec1_3-B-geq-relation"}
+CAPTION_LINE = "sec1_3-fig-oriented-graph-caption"
+COUNT_LINE = "sec1_3-six-symmetries"
+
+_SET = re.compile(r"\\left\\\{(?P<body>.*?)\\right\\\}\s*_\{(?P<sub>[^{}]*)\}\s*%?\s*\^\{(?P<sup>[^{}]*)\}", re.S)
+IndexSet = tuple[tuple[str, str, str], tuple[str, str, str]]
 
 
-def printed_b(n: int, i: int, j: int) -> tuple[int, ...]:
-    """Printed B_{2n,2n-i,j}: i<=n: sin^{2n-i}(v/2) sin^i(u/2) cos^{i-j}(w/2) sin^j(w/2);
-    i>n: sin^i(u/2) sin^{2n-i}(v/2) cos^{2n-i-j}(w/2) sin^j(w/2)."""
-    if i <= n:
-        return (i, 0, 2 * n - i, 0, j, i - j)
-    return (i, 0, 2 * n - i, 0, j, 2 * n - i - j)
+def set_builders(tex: str) -> list[tuple[str, IndexSet, tuple[int, int]]]:
+    """The set-builders ``\\left\\{ body \\right\\} _{j=a,i=b}^{c,d}`` of ``tex``: (body, ((j, a, c), (i, b, d)),
+    span in ``tex``); ``TexError`` if the index set is not a double one over j, i."""
+    out = []
+    for m in _SET.finditer(tex):
+        sub, sup = m.group("sub").split(","), m.group("sup").split(",")
+        if len(sub) != 2 or len(sup) != 2 or any("=" not in s for s in sub):
+            raise TexError(f"not a double index set: _{{{m.group('sub')}}}^{{{m.group('sup')}}}")
+        (ov, olo), (iv, ilo) = (s.split("=", 1) for s in sub)
+        out.append((m.group("body"), ((ov.strip(), olo.strip(), sup[0].strip()),
+                                      (iv.strip(), ilo.strip(), sup[1].strip())), m.span()))
+    return out
 
 
-# Variable substitutions as the argument tuples fed to a function of (u, v, w).
-SWAP_UW, SWAP_VW, SWAP_UV = (2, 1, 0), (0, 2, 1), (1, 0, 2)
+_SET1 = re.compile(r"\\left\\\{(?P<body>.*?)\\right\\\}\s*_\{\s*(?P<var>\w)\s*=(?P<lo>[^{},]*)\}\s*%?\s*"
+                   r"\^\{(?P<hi>[^{},]*)\}", re.S)
 
-#: Printed second-half relations X_{2n,2n-i,j}(u,v,w) = X_{2n,i,j}(sigma) for i > n.
-PRINTED_HALF = {"R": SWAP_UW, "G": SWAP_VW, "B": SWAP_UV}
 
-#: Fig. oriented_graph(b): (substitution, family, image family).
-SIX_PROPERTIES = [
-    ("(w,u)", SWAP_UW, "R", "R"), ("(v,w)", SWAP_VW, "G", "G"), ("(u,v)", SWAP_UV, "B", "B"),
-    ("(v,u)", SWAP_UV, "R", "G"), ("(u,w)", SWAP_UW, "G", "B"), ("(w,v)", SWAP_VW, "B", "R"),
-]
+def set_builders_1_all(tex: str) -> list[tuple[str, tuple[str, str, str]]]:
+    """The set-builders ``\\left\\{ body \\right\\} _{i=lo}^{hi}`` (one index) of ``tex``: (body, (i, lo, hi))."""
+    return [(m.group("body"), (m.group("var"), m.group("lo").strip(), m.group("hi").strip()))
+            for m in _SET1.finditer(tex)]
+
+
+def set_builders_1(tex: str) -> tuple[str, tuple[str, str, str]] | None:
+    """The last of :func:`set_builders_1_all`, or ``None``."""
+    found = set_builders_1_all(tex)
+    return found[-1] if found else None
+
+
+def pairs(iset: IndexSet, n: int) -> list[tuple[int, int]]:
+    """The (i, j) of a printed index set at order n (outer j, inner i), each once, in printed order."""
+    (ov, olo, ohi), (iv, ilo, ihi) = iset
+    if (ov, iv) != ("j", "i"):
+        raise TexError(f"index set over {(ov, iv)}, not (j, i)")
+    return [(i, j) for j in range(bound(olo, n=n), bound(ohi, n=n) + 1)
+            for i in range(bound(ilo, n=n, j=j), bound(ihi, n=n, j=j) + 1)]
+
+
+@cache
+def monomial(body: str) -> Callable[[int, int, int], tuple[int, ...]]:
+    powers = half_angle_powers(parse(body), VARS)
+    n, i, j = sympy.symbols("n i j")
+    extra = set().union(*(sympy.sympify(e).free_symbols for e in powers.values())) - {n, i, j}
+    if extra:
+        raise TexError(f"exponents name {sorted(map(str, extra))}")
+    slots = [sympy.sympify(powers.get((f, x), 0)) for x in VARS for f in ("sin", "cos")]
+    fn = sympy.lambdify((n, i, j), slots, "math")
+    return lambda nn, ii, jj: tuple(int(q) for q in fn(nn, ii, jj))
+
+
+def explicit(color: str, half: str) -> tuple[Callable[[int, int, int], tuple[int, ...]], IndexSet]:
+    """The printed explicit formula of ``color`` for ``half`` ("low"/"high") as (exponents(n, i, j), index set);
+    the display must be ``... = \\left\\{ monomial \\right\\} _{..}^{..}`` (its last set-builder after an ``=``)."""
+    tex = verbatim(EXPLICIT_LINES[color, half])
+    found = set_builders(tex)
+    if not found:
+        raise TexError(f"no set-builder in {EXPLICIT_LINES[color, half]}")
+    body, iset, (a, _) = found[-1]
+    if not clean(tex[:a]).rstrip().endswith("="):
+        raise TexError(f"{EXPLICIT_LINES[color, half]}: the explicit set does not follow an '='")
+    if len(found) == 2:  # the display names its left side: it must be color_{2n,2n-i,j}(u,v,w) on the same set
+        lhs, lset, _ = found[0]
+        if lset != iset or label(lhs) != (color, "2*n - i", "j", (0, 1, 2)):
+            raise TexError(f"{EXPLICIT_LINES[color, half]}: left side {lhs!r} on {lset} is not "
+                           f"{color}_{{2n,2n-i,j}}(u,v,w) on {iset}")
+    return monomial(body), iset
+
+
+def label(tex: str) -> tuple[str, str, str, tuple[int, ...]]:
+    """(colour, first index, level, argument permutation) of ``X_{2n,a,b}^{\\alpha}\\left( x,y,z\\right)``."""
+    return label_of(parse(tex))
+
+
+def label_of(e: sympy.Expr) -> tuple[str, str, str, tuple[int, ...]]:
+    """:func:`label` of a parsed label."""
+    if not isinstance(e, sympy.core.function.AppliedUndef) or len(e.args) != 4:
+        raise TexError(f"not a label with arguments: {e}")
+    order, first, level, args = e.args
+    n = sympy.Symbol("n")
+    if sympy.simplify(order - 2 * n) != 0:
+        raise TexError(f"order {order} is not 2n")
+    names = [str(a) for a in args]
+    if sorted(names) != list(VARS):
+        raise TexError(f"arguments {names} are not a permutation of (u, v, w)")
+    return e.func.__name__, _canon(first), _canon(level), tuple(VARS.index(x) for x in names)
+
+
+def _canon(e: sympy.Expr) -> str:
+    """A printed index in one spelling: ``2n-i`` and ``-i+2n`` both read ``2*n - i``."""
+    return {"-i + 2*n": "2*n - i"}.get(str(sympy.expand(e)), str(sympy.expand(e)))
+
+
+def printed_exponents(color: str, n: int, i: int, j: int) -> tuple[int, ...] | None:
+    """Exponent vector of ``color_{2n,2n-i,j}`` from the printed explicit formula whose printed index set holds
+    (i, j), or ``None`` if none does (or two do, or a power is negative)."""
+    texts = tuple(verbatim(EXPLICIT_LINES[color, half]) for half in ("low", "high"))
+    return _table(color, n, texts).get((i, j))
+
+
+@cache
+def _table(color: str, n: int, texts: tuple[str, ...]) -> dict[tuple[int, int], tuple[int, ...] | None]:
+    """(i, j) -> exponents of the printed formulas at order n (keyed by the transcriptions read)."""
+    out: dict[tuple[int, int], tuple[int, ...] | None] = {}
+    seen: dict[tuple[int, int], int] = {}
+    for half in ("low", "high"):
+        formula, iset = explicit(color, half)
+        for i, j in pairs(iset, n):
+            seen[i, j] = seen.get((i, j), 0) + 1
+            e = formula(n, i, j)
+            out[i, j] = None if min(e) < 0 or seen[i, j] > 1 else e
+    return out
+
+
+def printed_g(n: int, i: int, j: int) -> tuple[int, ...] | None:
+    """Printed G_{2n,2n-i,j} (read from the G displays)."""
+    return printed_exponents("G", n, i, j)
+
+
+def printed_b(n: int, i: int, j: int) -> tuple[int, ...] | None:
+    """Printed B_{2n,2n-i,j} (read from the B displays)."""
+    return printed_exponents("B", n, i, j)
+
+
+def half_relation(color: str) -> tuple[tuple[str, str, str, tuple[int, ...]], tuple[str, str, str, tuple[int, ...]],
+                                       IndexSet]:
+    """The printed relation ``{X_{2n,a,b}(x,y,z)}_{set} = {X_{2n,c,d}(p,q,r)}_{set}``: the two labels as
+    (colour, first index, level, argument permutation) and the index set (both sides must print the same)."""
+    lid = RELATION_LINES[color]
+    tex = verbatim(lid)
+    found = set_builders(tex)
+    if len(found) != 2:
+        raise TexError(f"{lid}: {len(found)} set-builders, not 2")
+    (lb, lset, (_, a_end)), (rb, rset, (b_start, _)) = found
+    if clean(tex[a_end:b_start]).strip() != "=" or lset != rset:
+        raise TexError(f"{lid}: not an equality of two sets on one index set")
+    return label(lb), label(rb), lset
+
+
+def printed_half() -> dict[str, tuple[int, int, int]]:
+    """The substitution of each printed relation (e.g. R: (w, v, u) -> (2, 1, 0)), for the relations of the form
+    X_{2n,2n-i,j}(u,v,w) = X_{2n,i,j}(sigma) (``TexError`` for any other form)."""
+    out = {}
+    for color in "RGB":
+        left, right, _ = half_relation(color)
+        if left != (color, "2*n - i", "j", (0, 1, 2)) or right[:3] != (color, "i", "j"):
+            raise TexError(f"{RELATION_LINES[color]}: not {color}_{{2n,2n-i,j}}(u,v,w) = {color}_{{2n,i,j}}(..)")
+        out[color] = right[3]
+    return out
+
+
+_COLOURS = {"red": "R", "green": "G", "blue": "B"}
+_NUMBERS = {"two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7, "eight": 8}
+
+
+def six_properties() -> list[tuple[str, tuple[int, int, int], str, str]]:
+    """The symmetry properties of the caption of Fig. oriented_graph(b): (name, substitution, family, image family).
+    "Functions associated with the red, green and blue shaded domains are symmetric in (w,u), (v,w), (u,v),
+    respectively" maps each family onto itself; "adjacent domains red--green, ..." maps the first onto the second.
+    """
+    tex = verbatim(CAPTION_LINE)
+    out = []
+    for sentence in re.split(r"(?<=respectively)\.", tex):
+        if not sentence.strip():
+            continue
+        m = re.search(r"(.*?) are symmetric in variables (.*?), respectively", sentence)
+        kinds = re.findall(r"\b(shaded|adjacent) domains", sentence)
+        if not m or len(kinds) != 1:
+            raise TexError(f"unread caption sentence {sentence[:60]!r}")
+        (families, pairs_tex), kind = m.groups(), kinds[0]
+        names = re.findall(r"(?:red|green|blue)(?:--(?:red|green|blue))?", families)
+        swaps = re.findall(r"\\left\(\s*([uvw])\s*,\s*([uvw])\s*\\right\)", pairs_tex)
+        if len(names) != len(swaps) or not names:
+            raise TexError(f"{len(names)} domains but {len(swaps)} pairs of variables in {sentence[:60]!r}")
+        for name, (a, b) in zip(names, swaps):
+            if a == b:
+                raise TexError(f"({a},{b}) is not a swap")
+            sub = [0, 1, 2]
+            sub[VARS.index(a)], sub[VARS.index(b)] = VARS.index(b), VARS.index(a)
+            fam = [_COLOURS[c] for c in name.split("--")]
+            if (kind == "shaded") != (len(fam) == 1):
+                raise TexError(f"{kind} domains with {name}")
+            out.append((f"({a},{b})", tuple(sub), fam[0], fam[-1]))
+    return out
+
+
+def six_count() -> int:
+    """The number of symmetry properties the text announces ("six cyclic symmetry properties")."""
+    m = re.search(r"\b(\w+) cyclic symmetry properties", verbatim(COUNT_LINE))
+    if not m or m.group(1) not in _NUMBERS:
+        raise TexError(f"no count of symmetry properties in {verbatim(COUNT_LINE)!r}")
+    return _NUMBERS[m.group(1)]
+
+
+__all__ = ["EXPLICIT_LINES", "RELATION_LINES", "set_builders", "set_builders_1", "set_builders_1_all", "pairs", "label",
+           "label_of", "monomial", "explicit", "printed_exponents", "printed_g",
+           "printed_b", "half_relation", "printed_half", "six_properties", "six_count"]

@@ -23,12 +23,18 @@ from functools import cache
 from math import comb, factorial
 
 import mpmath
-from flint import fmpq, fmpq_poly, fmpz_mpoly_ctx, nmod_mat
+import sympy
+from flint import fmpq, fmpz_mpoly_ctx, nmod_mat
+from sympy.core.function import AppliedUndef
 
 from paper_repro.claims.lines import LineResult, line_check
+from paper_repro.claims.lines.sec12_eval import c_exact, c_indep, num, sign_word
 from paper_repro.core.domain import rational_alpha
-from paper_repro.core.labels import BasisLabel, delta, exponents, full_system, index_of, united_system
+from paper_repro.core.labels import BasisLabel, compose, delta, exponents, full_system, index_of, united_system
 from paper_repro.core.univariate import c_const, c_numerator, c_numerator_by_expansion
+from paper_repro.printed import symmetry as printed_sym
+from paper_repro.printed.lines import lines_of, verbatim
+from paper_repro.printed.lines.tex_expr import TexError, clean, parse, relation
 from paper_repro.theory.derivatives import mixed_derivative, sin_power_derivative
 
 HALF = fmpq(1, 2)
@@ -208,21 +214,1082 @@ def _set_result(printed, computed, how: str, kind: str = "exact-evidence", corre
 # ==============================================================================================================
 # Sections 1-2
 # ==============================================================================================================
+# -- Sections 1-2: readers of the transcriptions (issue 37) ------------------------------------------------------
+_INTERVAL = r"\s*\\in\s*\\left\s*([(\[])\s*([^,]+?)\s*,\s*([^,]+?)\s*\\right\s*([)\]])"
+
+
+def read_interval(tex: str, var: str) -> tuple[bool, sympy.Expr, sympy.Expr, bool]:
+    """``(lo closed, lo, hi, hi closed)`` of the printed ``var \\in \\left( lo,hi \\right)`` (``var`` a regex)."""
+    m = re.search(var + _INTERVAL, tex)
+    if not m:
+        raise TexError(f"no interval for {var} in {tex[:60]!r}")
+    return m.group(1) == "[", parse(m.group(2)), parse(m.group(3)), m.group(4) == "]"
+
+
+def listed(tex: str, var: str) -> tuple[sympy.Expr, sympy.Expr]:
+    """(first, last) of the printed ``var=a,b,\\ldots,c`` whose step b - a must be 1 (every index between)."""
+    text = clean(tex)
+    m = re.search(rf"(?<![\w\\]){var}\s*=\s*([^,=]+?)\s*,\s*([^,=]+?)\s*,\s*\\ldots\s*,\s*([^,\s$]+?)\s*(?:[.,$]|$)",
+                  text)
+    if not m:
+        raise TexError(f"no listed range {var}=a,b,...,c")
+    a, b, c = (parse(x) for x in m.groups())
+    if sympy.simplify(b - a - 1) != 0:
+        raise TexError(f"the listed range {var}={m.group(1)},{m.group(2)},... does not step by 1")
+    return a, c
+
+
+def _unread(how: str, exc: Exception, kind: str = "exact-evidence") -> LineResult:
+    kind = "exact-evidence" if kind == "exhaustive" else kind  # nothing was computed over a range
+    return LineResult(False, how=how + " (the line was not read)", kind=kind, detail={"unread": str(exc)[:200]})
+
+
+def _env_int(expr: sympy.Expr, **env: int) -> int:
+    """Integer value of a parsed index or bound (every name bound by ``env``)."""
+    v = num(expr, env, {})
+    if v != int(v):
+        raise TexError(f"{expr} is not an integer at {env}")
+    return int(v)
+
+
+_TINY = mpmath.mpf(10) ** -25  # below: zero at the working precision of 40 digits (cos(pi/2) is 6e-41 there)
+
+
+def _basis_alpha_ok(alpha) -> bool:
+    """c_{2n,i}^alpha (from the expansion) finite and positive for n <= 4, and alpha > 0 (so [0, alpha] is an
+    interval): where the normalized system (eq. univariate_basis) exists with positive coefficients."""
+    if alpha <= 0:
+        return False
+    try:
+        return all(c_indep(n, i, alpha) > _TINY for n in range(1, 5) for i in range(2 * n + 1))
+    except ZeroDivisionError:
+        return False
+
+
 @line_check("sec1_3-alpha-range")
 def alpha_range() -> LineResult:
-    """alpha in (0, pi): the printed c_{2n,i} are polynomials in cos(alpha/2) with non-negative integer coefficients
-    over sin^{2n}(alpha/2), so positive for alpha in (0, pi); at alpha = pi the odd ones vanish (A_{2n,i} = 0 for odd
-    i: no basis), so the range cannot be extended to pi."""
+    """alpha in (0, pi), read from both lines: the printed interval must be where the coefficients c_{2n,i}^alpha
+    (from the expansion of (X^2 + 2cos(alpha/2)XY + Y^2)^n) exist and are positive, and maximal so: every sampled
+    interior alpha works (n <= 4, 40 digits), an open end does not (alpha = 0: no interval and sin(alpha/2) = 0;
+    alpha = pi: the odd c_{2n,i} vanish), a closed end does and its outside does not.  The polynomial facts behind
+    it: the numerators have non-negative coefficients in cos(alpha/2) (n = 1..15) and vanish at cos = 0 exactly
+    for odd i."""
     ok_pos = all(min(c_numerator(n, i)) >= 0 and sum(c_numerator(n, i)) > 0
                  for n in range(1, 16) for i in range(2 * n + 1))
-    # at alpha = pi: cos(alpha/2) = 0, so the numerator is its constant term, zero exactly for odd i
     zero_at_pi = all((c_numerator(n, i)[0] == 0) == (i % 2 == 1) for n in range(1, 16) for i in range(2 * n + 1))
-    exact_pos = all(c_const(n, i, rational_alpha(t), "exact") > 0 for n in range(1, 6) for i in range(2 * n + 1)
-                    for t in (fmpq(1, 100), fmpq(1, 2), fmpq(99, 100)))
-    return LineResult(ok_pos and zero_at_pi and exact_pos, how="coefficients of the printed c_{2n,i} as polynomials "
-                      "in cos(alpha/2) (n <= 15); exact values at tan(alpha/4) in 1/100, 1/2, 99/100 (n <= 5)",
-                      kind="exhaustive", detail={"nonnegative_polynomials": ok_pos, "odd_vanish_at_pi": zero_at_pi,
-                                            "positive_at_samples": exact_pos})
+    how = ("the printed interval of alpha (read from each line) against where c_{2n,i}^alpha > 0 (n = 1..4, 40 "
+           "digits; numerator polynomials n = 1..15)")
+    bad = []
+    eps = mpmath.mpf("1e-20")
+    with mpmath.workdps(40):
+        for ln in lines_of("sec1_3-alpha-range"):
+            try:
+                lo_c, lo, hi, hi_c = read_interval(ln.verbatim, r"\\alpha")
+                lo_v, hi_v = num(lo, {}), num(hi, {})
+            except (TexError, ValueError) as exc:
+                return _unread(how, exc, "exhaustive")
+            inside = all(_basis_alpha_ok(lo_v + (hi_v - lo_v) * k / 9) for k in range(1, 9)) and lo_v < hi_v
+            ends = all(_basis_alpha_ok(e) if closed else not _basis_alpha_ok(e)
+                       for e, closed in ((lo_v, lo_c), (hi_v, hi_c)))
+            outside = all(not _basis_alpha_ok(e) for e, closed in ((lo_v - eps, lo_c), (hi_v + eps, hi_c)) if closed)
+            near = _basis_alpha_ok(lo_v + eps) and _basis_alpha_ok(hi_v - eps)
+            if not (inside and ends and outside and near):
+                bad.append(ln.id)
+    ok = ok_pos and zero_at_pi and not bad
+    return LineResult(ok, how=how, kind="exhaustive",
+                      detail={"nonnegative_polynomials": ok_pos, "odd_vanish_at_pi": zero_at_pi, "failing_lines": bad})
+
+
+def _member_labels(tex: str) -> list[tuple[str, str, str, tuple[int, ...]]]:
+    """The labels ``X_{2n,a,b}^{\\alpha}\\left( u,v,w\\right)`` listed before the ``:`` of the last set-builder of a
+    system display, as (colour, first index, level, argument permutation)."""
+    found = printed_sym.set_builders(tex)
+    if not found:
+        raise TexError(f"no set-builder in {tex[:60]!r}")
+    members, _, domain = found[-1][0].partition(":")
+    _require_omega(domain)
+    out = [printed_sym.label(m.group()) for m in re.finditer(r"[RGB]_\{[^{}]*\}\^\{\\alpha\}\s*%?\s*\\left\(\s*"
+                                                             r"[uvw]\s*,\s*[uvw]\s*,\s*[uvw]\s*\\right\)", members)]
+    if not out:
+        raise TexError(f"no member label in {members[:60]!r}")
+    return out
+
+
+_OMEGA = re.compile(r"\s*\(\s*u\s*,\s*v\s*,\s*w\s*\)\s*\\in\s*\\Omega\^\{\\alpha\}\s*$")
+
+
+def _require_omega(domain: str) -> None:
+    """The domain of a system must read ``(u,v,w) \\in \\Omega^{\\alpha}`` (membership in the printed triangle)."""
+    if not _OMEGA.match(clean(domain)):
+        raise TexError(f"the domain {domain.strip()[:40]!r} is not (u,v,w) in Omega^alpha")
+
+
+def _index_value(first: str, level: str, n: int, i: int, j: int) -> tuple[int, int]:
+    """(i, j) of the label X_{2n,first,level} at (n, i, j): first = 2n - i'."""
+    f, lv = _index_fn(first, level)(n, i, j)
+    if f != int(f) or lv != int(lv):
+        raise TexError(f"index ({first}, {level}) is not an integer at n={n}, i={i}, j={j}")
+    return 2 * n - int(f), int(lv)
+
+
+@cache
+def _index_fn(first: str, level: str):
+    n, i, j = sympy.symbols("n i j")
+    exprs = [sympy.sympify(first), sympy.sympify(level)]
+    if set().union(*(e.free_symbols for e in exprs)) - {n, i, j}:
+        raise TexError(f"index ({first}, {level}) names unknown symbols")
+    return sympy.lambdify((n, i, j), exprs, "math")
+
+
+def _centre_members(n: int) -> list[tuple[int, ...] | None]:
+    """Exponent vectors of the labels of the printed centre (``R_{2n,n,n} = G_{2n,n,n} = B_{2n,n,n}``, line
+    sec1_3-united-centre), ``None`` for a label that is no member of its system."""
+    tex = verbatim("sec1_3-united-centre")
+    body, _, domain = tex.split("\\cup", 1)[1].partition(":")
+    _require_omega(domain.split("\\right\\}")[0])
+    parts = relation(body.replace("\\left\\{", " "))
+    out = []
+    for p in parts:
+        color, first, level, perm = printed_sym.label_of(p)
+        i, j = _index_value(first, level, n, 0, 0)
+        out.append(compose(exponents(BasisLabel(color, n, i, j)), perm)
+                   if 0 <= j <= n and j <= i <= 2 * n - j else None)
+    return out
+
+
+@line_check("sec1_3-united-dedupe")
+def united_dedupe(verbatim_text: str | None = None) -> LineResult:
+    """The members and the index set read from the transcription of eq. united_system (with the centre read from
+    the line after it) list each distinct function of R u G u B exactly once (n = 1..20); the functions from the
+    printed explicit formulas (:func:`printed_exponents`, parsed), the distinct functions from the package."""
+    tex = verbatim_text if verbatim_text is not None else verbatim("sec1_3-united-system")
+    how = "the index set and members read from the transcription against the distinct functions of the full " \
+          "systems, n = 1..20"
+    ok, bad = True, []
+    try:
+        members = _member_labels(tex)
+        if [m[0] for m in members] != list("RGB") or any(m[3] != (0, 1, 2) for m in members):
+            raise TexError(f"members {members} are not R, G, B at (u, v, w)")
+        for n in range(1, 21):
+            pairs = _read_pairs(tex, n)
+            centre = _centre_members(n)
+            listed = centre[:1] + [printed_exponents(c, n, *_index_value(f, lv, n, i, j))
+                                   for c, f, lv, _ in members for i, j in pairs]
+            good = None not in listed and len(listed) == len(set(listed)) and set(listed) == distinct_union(n)
+            ok &= good
+            if not good:
+                bad.append(n)
+    except (TexError, ValueError) as exc:
+        return _unread(how, exc, "exhaustive")
+    return LineResult(ok, how=how, kind="exhaustive", detail={"n_max": 20, "failing_n": bad[:3]})
+
+
+_LEVELS = re.compile(r"\$n\\geq\s*(\d+)\$\s*levels\s*\(numbered from \$([^$]+)\$ to \$([^$]+)\$\)")
+
+
+@line_check("sec1_3-levels")
+def levels() -> LineResult:
+    """"n >= 1 levels (numbered from 0 to n-1)" and "the index j ... as levels ... nested triangles shrinking from
+    the boundary to their common centroid", read from the two lines: for n = 1..12 the levels of the non-centre
+    functions of T_{2n} (package labels) are exactly the printed numbers; the named index of each function equals
+    the order to which it vanishes on the boundary of Omega (its least sine exponent: nested triangles), 0 on the
+    boundary and n at the centroid; and the printed least order is the least n with a level."""
+    how = "levels and boundary vanishing orders of the labels of T_{2n}, n = 1..12, against the printed numbering"
+    try:
+        m = _LEVELS.search(verbatim("sec1_3-graph-levels"))
+        if not m:
+            raise TexError("no '$n\\geq k$ levels (numbered from $a$ to $b$)'")
+        least, lo, hi = int(m.group(1)), parse(m.group(2)), parse(m.group(3))
+        named = re.search(r"We refer to the index \$(\w)\$ of these functions as levels", verbatim("sec1_3-levels-j"))
+        ends = re.search(r"shrinking from the (\w+) to their common (\w+)", verbatim("sec1_3-levels-j"))
+        if not named or not ends:
+            raise TexError("the named index or the nesting words are not read")
+    except (TexError, ValueError) as exc:
+        return _unread(how, exc, "exhaustive")
+    first_n = min(n for n in range(0, 4) if _has_levels(n))
+    ok = least == first_n
+    for n in range(1, 13):
+        labs = united_system(n)
+        lv = {lb.j for lb in labs if not lb.is_centre}
+        ok &= lv == set(range(_env_int(lo, n=n), _env_int(hi, n=n) + 1)) and len(lv) == n
+        for lb in labs:
+            e = exponents(lb)
+            ok &= getattr(lb, named.group(1)) == min(e[0], e[2], e[4])
+        ok &= ends.groups() == ("boundary", "centroid") and min(lv) == 0
+    return LineResult(ok, how=how, kind="exhaustive", detail={"least_n": least, "index": named.group(1)})
+
+
+def _has_levels(n: int) -> bool:
+    try:
+        return any(not lb.is_centre for lb in united_system(n))
+    except ValueError:
+        return False
+
+
+_NUMBER_WORDS = {"one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6}
+
+
+@line_check("sec1_3-corners-centre")
+def corners_centre() -> LineResult:
+    """The outermost nodes and the centre, read from the two lines: the printed corner functions (as many as the
+    number word says) are the functions of T_{2n} that depend on one variable only (the vertices), and the printed
+    centre function, and each label of R_{2n,n,n} = G_{2n,n,n} = B_{2n,n,n}, is the function of T_{2n} of the
+    highest level (the centroid), n = 1..20 (package labels)."""
+    how = "exponent vectors of T_{2n} (package labels) against the functions read from the lines, n = 1..20"
+    try:
+        tex = verbatim("sec1_3-corners-centre")
+        count = re.search(r"The (\w+) outermost nodes", tex)
+        maths = re.findall(r"\$([^$]*)\$", tex)
+        if not count or count.group(1) not in _NUMBER_WORDS or len(maths) < 2:
+            raise TexError("the corner count or the functions are not read")
+        corners_tex, centre_tex = maths[:-1], maths[-1]
+        nodes = ("innermost", "outermost", "stored in an inner node", "vertices of the outermost")
+        if not all(w in tex for w in nodes):
+            raise TexError("the nodes (outermost vertices, inner nodes, innermost centroid) are not read")
+        corner_f = [printed_sym.monomial(t) for t in corners_tex]
+        centre_f = printed_sym.monomial(centre_tex)
+    except (TexError, ValueError) as exc:
+        return _unread(how, exc, "exhaustive")
+    ok = len(corners_tex) == _NUMBER_WORDS[count.group(1)]
+    for n in range(1, 21):
+        labs = united_system(n)
+        ex = {exponents(lb) for lb in labs}
+        vertices = {e for e in ex if sum(1 for x in e if x) == 1}
+        top = max(lb.j for lb in labs)
+        centre = {exponents(lb) for lb in labs if lb.j == top}
+        try:
+            printed_corners = [f(n, 0, 0) for f in corner_f]
+            members = _centre_members(n)
+        except (TexError, ValueError) as exc:
+            return _unread(how, exc, "exhaustive")
+        ok &= sorted(printed_corners) == sorted(vertices) and len(set(printed_corners)) == len(printed_corners)
+        ok &= {centre_f(n, 0, 0)} == centre and set(members) == centre and len(members) == 3
+    return LineResult(ok, how=how, kind="exhaustive", detail={"corners": len(corners_tex)})
+
+
+def _omega_points(alpha_t: fmpq) -> list[tuple[tuple[fmpq, fmpq], ...]]:
+    """Half angles (sin, cos) of (u, v, w) at interior points of Omega^alpha and at the three vertices (exact)."""
+    pts = _domain_points(alpha_t, 6)
+    ha, zero = _half(alpha_t), (fmpq(0), fmpq(1))
+    return pts + [(ha, zero, zero), (zero, ha, zero), (zero, zero, ha)]
+
+
+@line_check("sec1_3-nonnegative")
+def nonnegative() -> LineResult:
+    """"consist of non-negative functions": the sign word read from the line is tested on every function of
+    R_{2n}, G_{2n}, B_{2n} as printed (explicit formulas and index sets parsed from their lines), by exact values
+    at interior points and the vertices of Omega^alpha, tan(alpha/4) in {1/2, 99/100} (alpha up to 3.12), n = 1..6.
+    A word that claims more (positive) or the opposite (negative) fails: the functions vanish at the vertices."""
+    how = "exact values of the parsed R, G, B functions at points of Omega^alpha, n = 1..6"
+    try:
+        word, pred = sign_word(verbatim("sec1_3-nonnegative"))
+        if not re.search(r"consist of \S+ functions", verbatim("sec1_3-nonnegative")):
+            raise TexError("not a statement about the functions")
+        funcs = {(c, h): printed_sym.explicit(c, h) for c in "RGB" for h in ("low", "high")}
+    except (TexError, ValueError) as exc:
+        return _unread(how, exc, "exhaustive")
+    ok, count = True, 0
+    for at in (fmpq(1, 2), fmpq(99, 100)):
+        pts = _omega_points(at)
+        for n in range(1, 7):
+            for (_c, _h), (f, iset) in funcs.items():
+                for i, j in printed_sym.pairs(iset, n):
+                    e = f(n, i, j)
+                    if min(e) < 0:
+                        ok = False
+                        continue
+                    for hu, hv, hw in pts:
+                        value = (hu[0] ** e[0] * hu[1] ** e[1] * hv[0] ** e[2] * hv[1] ** e[3] * hw[0] ** e[4]
+                                 * hw[1] ** e[5])
+                        ok &= bool(pred(value))
+                        count += 1
+    return LineResult(ok, how=how + f" (the word read: {word!r})", kind="exhaustive",
+                      detail={"word": word, "values": count})
+
+
+def printed_exponents(color: str, n: int, i: int, j: int) -> tuple[int, ...] | None:
+    """Exponent vector of color_{2n,2n-i,j} from the printed explicit formulas, parsed from their transcriptions
+    (:func:`paper_repro.printed.symmetry.printed_exponents`), or ``None`` (no printed formula holds (i, j), or a
+    negative power)."""
+    return printed_sym.printed_exponents(color, n, i, j)
+
+
+@line_check("sec1_3-rgb-index-sets")
+def rgb_index_sets(override: dict[str, str] | None = None, n_max: int = 30) -> LineResult:
+    """The index sets and member labels read from the transcriptions of eqs. R_system, G_system, B_system,
+    R_system_leq_n and R_system_geq_n: for n = 1..n_max, every (i, j) of the three full systems gives non-negative
+    powers in the printed explicit formulas (parsed), the full R set is the disjoint union of the two printed
+    halves, and R u G u B (equal functions merged) has exactly delta_n = 3n(n+1)+1 members, the exponent vectors of
+    T_{2n} (:func:`~paper_repro.core.labels.united_system`).  ``override`` replaces transcriptions (tests)."""
+    text = {k: (override or {}).get(k, verbatim(k)) for k in INDEX_SET_LINES}
+    how = "index sets read from the transcriptions"
+    bad: list[str] = []
+    try:
+        for color, key in zip("RGB", INDEX_SET_LINES[:3]):
+            if _member_labels(text[key]) != [(color, "2*n - i", "j", (0, 1, 2))]:
+                raise TexError(f"{key}: the member is not {color}_{{2n,2n-i,j}}(u,v,w)")
+        leq = printed_sym.set_builders(text["sec1_3-R-leq-n"])
+        if not leq or printed_sym.label(leq[0][0]) != ("R", "2*n - i", "j", (0, 1, 2)):
+            raise TexError("sec1_3-R-leq-n: the left side is not R_{2n,2n-i,j}(u,v,w)")
+    except (TexError, ValueError) as exc:
+        return _unread(how, exc, "exhaustive")
+    for color, key in zip("RGB", INDEX_SET_LINES[:3]):
+        head = clean(text[key].split("\\left\\{", 1)[0]).replace(" ", "")
+        if head != f"{color}_{{2n}}^{{\\alpha}}=":
+            return _unread(how, TexError(f"{key}: not '{color}_{{2n}}^alpha = ..' but {head!r}"), "exhaustive")
+    for n in range(1, n_max + 1):
+        try:
+            sets = {k: _read_pairs(text[k], n) for k in INDEX_SET_LINES}
+        except ValueError as exc:
+            return _unread(how, exc, "exhaustive")
+        for color, key in zip("RGB", INDEX_SET_LINES[:3]):
+            if sorted(sets[key]) != sorted((lb.i, lb.j) for lb in full_system(n, color)):
+                bad.append(f"n={n}: the printed {color}_{{2n}} is not the graph's (package full system)")
+        funcs = set()
+        for color, key in zip("RGB", INDEX_SET_LINES[:3]):
+            for i, j in sets[key]:
+                e = printed_exponents(color, n, i, j)
+                if e is None:
+                    bad.append(f"n={n}: {color}_{{{2 * n},{2 * n - i},{j}}} has no printed formula or a negative power")
+                else:
+                    funcs.add(e)
+        full, low, high = (set(sets[k]) for k in ("sec1_3-R-system", "sec1_3-R-leq-n", "sec1_3-R-geq-n-relation"))
+        if low & high or low | high != full or len(full) != len(sets["sec1_3-R-system"]):
+            bad.append(f"n={n}: the R set is not the disjoint union of its printed halves")
+        if len(funcs) != 3 * n * (n + 1) + 1 or funcs != {exponents(lb) for lb in united_system(n)}:
+            bad.append(f"n={n}: R u G u B has {len(funcs)} distinct functions, not those of T_{{2n}}")
+    return LineResult(not bad, how=f"index sets read from the transcriptions, powers of the printed explicit formulas "
+                      f"(parsed) and the distinct functions of R u G u B against delta_n and T_{{2n}}, n = 1..{n_max}",
+                      kind="exhaustive", detail={"n_max": n_max, "problems": bad[:3]})
+
+
+@line_check("sec1_3-order-n3")
+def order_n3() -> LineResult:
+    """"T_{6}^alpha of order 3" and the caption's "of order n=3", read from the lines: the subscript of T must be
+    the 2n of eq. united_system (its T_{2n} read from that line) at the printed order, and the caption's n the same
+    order; the system of that order has delta_n = 3n(n+1)+1 = 37 distinct functions in n levels and a centre
+    (package labels).  The figure itself (an image, empty in the source) cannot be read."""
+    how = "the printed subscript and orders against eq. united_system's T_{2n} and the labels of T_{2n}"
+    try:
+        m = re.fullmatch(r"\$T_\{(\d+)\}\^\{\\alpha\}\$ of order \$(\d+)\$", verbatim("sec1_3-T6-order-3").strip())
+        cap = re.search(r"joint function system \(\\ref\{united_system\}\) of order \$n=(\d+)\$",
+                        verbatim("sec1_3-fig-united-n3-caption"))
+        t2n = re.match(r"\s*T_\{([^{}]+)\}\^\{\\alpha\}", verbatim("sec1_3-united-system"))
+        if not m or not cap or not t2n:
+            raise TexError("the subscript or the orders are not read")
+        sub, order, cap_n = int(m.group(1)), int(m.group(2)), int(cap.group(1))
+        ok = sub == _env_int(parse(t2n.group(1)), n=order) and cap_n == order
+    except (TexError, ValueError) as exc:
+        return _unread(how, exc)
+    labs = united_system(order)
+    levels_ = {lb.j for lb in labs if not lb.is_centre}
+    ok &= len({exponents(lb) for lb in labs}) == len(labs) == 3 * order * (order + 1) + 1 and levels_ == set(
+        range(order))
+    return LineResult(ok, how=how, detail={"order": order, "functions": len(labs)})
+
+
+_RESTRICT = re.compile(r"\\left\.\s*T_\{([^{}]+)\}\^\{\\alpha\}\s*\\right\\vert\s*_\{([uvw])=([^{}]+)\}")
+
+
+def _edge_points() -> list[tuple[fmpq, tuple[fmpq, fmpq], tuple[fmpq, fmpq]]]:
+    """(tan(alpha/4), half angles of alpha, half angles of x) for exact points x in [0, alpha] (ends included)."""
+    out = []
+    for at in ALPHA_TS:
+        for xf in (fmpq(0), fmpq(1, 3), fmpq(5, 7), fmpq(1)):
+            out.append((at, _half(at), _half(at * xf)))
+    return out
+
+
+def _boundary(line_id: str) -> LineResult:
+    """T_{2n} restricted to {x = 0} (read from the line: the variable, its value, the member A_{2n,a}(y)/c_{2n,b}
+    and the index range): the non-vanishing restrictions of the functions of T_{2n} (package labels) are, as a
+    multiset of exact functions on the edge (values at 4 points each for two alpha), the printed members with A
+    from the definition of eq. univariate_basis and c from the expansion (n = 1..6)."""
+    how = "exact values on the edge of the restricted T_{2n} (package labels) and of the printed members, n = 1..6"
+    tex = verbatim(line_id)
+    try:
+        m = _RESTRICT.search(tex)
+        found = printed_sym.set_builders_1(tex)
+        if not m or not found:
+            raise TexError("no restriction T|_{x=a} = {..}_{i=..}^{..}")
+        t_order, var, value = parse(m.group(1)), m.group(2), parse(m.group(3))
+        body, (iv, ilo, ihi) = found
+        between = tex[m.end():tex.index(body)]
+        if clean(between).replace("\\{", "").strip() != "=":
+            raise TexError(f"the restriction and the set are not equated: {between!r}")
+        member_tex, domain = body.split(":", 1)
+        member = parse(member_tex)
+        arg = read_interval(domain, "")  # [0, alpha]
+        dom_var = re.match(r"\s*([uvw])\s*\\in", domain)
+        a_terms = [f for f in member.atoms(AppliedUndef) if f.func.__name__ == "A"]
+        if len(a_terms) != 1 or not dom_var or len(a_terms[0].args[2]) != 1:
+            raise TexError("the member is not one A_{2n,..}(x)/c")
+        x = str(a_terms[0].args[2][0])
+        if x != dom_var.group(1) or x == var or arg != (True, sympy.Integer(0), sympy.Symbol("alpha"), True):
+            raise TexError(f"argument {x} on {arg} is not a remaining variable on [0, alpha]")
+    except (TexError, ValueError) as exc:
+        return _unread(how, exc, "exhaustive")
+    rest = [k for k in range(3) if k != printed_sym.VARS.index(var)]
+    y = [printed_sym.VARS[k] for k in rest if printed_sym.VARS[k] != x][0]
+    ok = True
+    for n in range(1, 7):
+        if _env_int(t_order, n=n) != 2 * n:
+            return LineResult(False, how=how, kind="exhaustive", detail={"order": str(t_order)})
+        try:
+            zero = _env_int(value, n=n) == 0
+            idx = range(_env_int(parse(ilo), n=n), _env_int(parse(ihi), n=n) + 1)
+        except (TexError, ValueError) as exc:
+            return _unread(how, exc, "exhaustive")
+        for _at, ha, hx in _edge_points():
+            hy = _diff_half(ha, hx)
+            half = {x: hx, y: hy, var: (fmpq(0), fmpq(1))}
+            computed = []
+            for lb in united_system(n):
+                e = exponents(lb)
+                if zero and e[2 * printed_sym.VARS.index(var)] > 0:
+                    continue  # vanishes on the edge
+                computed.append(_mono_value(e, half))
+            printed = []
+            for i in idx:
+                try:
+                    printed.append(_edge_value(member, n, i, ha, hx, hy))
+                except (TexError, ValueError):
+                    printed.append(None)
+            ok &= sorted(computed) == sorted(printed) if None not in printed else False
+    return LineResult(ok, how=how, kind="exhaustive", detail={"variable": var, "argument": x})
+
+
+def _mono_value(e: tuple[int, ...], half: dict[str, tuple[fmpq, fmpq]]) -> fmpq:
+    out = fmpq(1)
+    for k, v in enumerate(printed_sym.VARS):
+        out *= half[v][0] ** e[2 * k] * half[v][1] ** e[2 * k + 1]
+    return out
+
+
+def _edge_value(member: sympy.Expr, n: int, i: int, ha, hx, hy) -> fmpq:
+    """Exact value of the printed member at order n, index i, where A_{2m,k}(x) = c_{2m,k} sin^{2m-k}((alpha-x)/2)
+    sin^k(x/2) (the definition) with the expansion's c, at the point with half angles hx of x, hy of alpha - x."""
+
+    def a_fn(order, k, _args):
+        m2, kk = _env_int(order, n=n, i=i), _env_int(k, n=n, i=i)
+        if m2 != 2 * n:
+            raise TexError("A of another order")
+        return c_exact(n, kk, *ha) * hy[0] ** (m2 - kk) * hx[0] ** kk
+
+    def c_fn(order, k):
+        m2, kk = _env_int(order, n=n, i=i), _env_int(k, n=n, i=i)
+        if m2 % 2:
+            raise TexError("c of odd order")
+        return c_exact(m2 // 2, kk, *ha)
+
+    out = fmpq(1)
+    for factor in sympy.Mul.make_args(member):
+        base, ex = factor.as_base_exp()
+        if isinstance(base, AppliedUndef) and base.func.__name__ in ("A", "c"):
+            v = a_fn(*base.args) if base.func.__name__ == "A" else c_fn(*base.args)
+        elif base.is_Integer:
+            v = fmpq(int(base))
+        else:
+            raise TexError(f"factor {base} of the member is not read")
+        out *= v ** int(ex)
+    return out
+
+
+@line_check("sec1_3-boundary-v0")
+def boundary_v0() -> LineResult:
+    return _boundary("sec1_3-boundary-property-1")
+
+
+@line_check("sec1_3-boundary-u0")
+def boundary_u0() -> LineResult:
+    return _boundary("sec1_3-boundary-property-2")
+
+
+@line_check("sec1_3-boundary-w0")
+def boundary_w0() -> LineResult:
+    return _boundary("sec1_3-boundary-property-3")
+
+
+def _angle_points() -> list[tuple[fmpq, fmpq, fmpq]]:
+    """(tan(alpha/4), sin(alpha/2), cos(alpha/2)) for the sampled alpha."""
+    return [(at, *_half(at)) for at in (fmpq(1, 5), *ALPHA_TS, fmpq(19, 20))]
+
+
+def _trig_exact(expr: sympy.Expr, sin_half: fmpq, cos_half: fmpq) -> fmpq:
+    """Exact value of an expression in sin(alpha/2), cos(alpha/2) and numbers (``TexError`` otherwise)."""
+    a = sympy.Symbol("alpha")
+    s_, c_ = sympy.Symbol("S_"), sympy.Symbol("C_")
+    e = expr.xreplace({sympy.sin(a / 2, evaluate=False): s_, sympy.cos(a / 2, evaluate=False): c_})
+    e = e.xreplace({sympy.sin(a / 2): s_, sympy.cos(a / 2): c_})
+    if e.free_symbols - {s_, c_} or e.atoms(sympy.Function):
+        raise TexError(f"{expr} is not a function of the half angle of alpha")
+    v = e.subs({s_: sympy.Rational(int(sin_half.p), int(sin_half.q)),
+                c_: sympy.Rational(int(cos_half.p), int(cos_half.q))})
+    if not v.is_Rational:
+        raise TexError(f"{expr} is not rational at a rational half angle")
+    return fmpq(int(v.p), int(v.q))
+
+
+@line_check("sec1_3-c-formula")
+def c_formula() -> LineResult:
+    """The printed c_{2n,i}^alpha (parsed: the 1/sin^{2n}(alpha/2), the sum over r with its floor bound, the
+    binomials and the power of 2cos(alpha/2); its range i = 0, 1, ..., 2n) equal, exactly at four rational-tangent
+    alpha for n = 1..6, the coefficients of X^{2n-i} Y^i in (X^2 + 2cos(alpha/2) X Y + Y^2)^n over
+    sin^{2n}(alpha/2) (the expansion); the range is all 2n+1 indices of eq. univariate_basis; the printed sign word
+    holds of the values and the printed c normalize: sum_i c_{2n,i} sin^{2n-i}((alpha-t)/2) sin^i(t/2) = 1 exactly
+    at two points t per alpha."""
+    tex = verbatim("sec1_3-c-formula")
+    how = "exact values of the parsed formula against the expansion, n = 1..5 at 4 alpha (tan(alpha/4) rational)"
+    try:
+        word, pred = sign_word(tex.split("\\[", 1)[0])
+        if not re.search(r"\bnormalizing\b", tex):
+            raise TexError("the coefficients are not said to normalize")
+        display = tex.split("\\[", 1)[1].split("\\]", 1)[0]
+        formula, tail = re.split(r",\s*~?\s*(?=i\s*=)", display, maxsplit=1)
+        lhs, rhs = relation(formula)
+        lo, hi = listed(tail, "i")
+        if not (isinstance(lhs, AppliedUndef) and lhs.func.__name__ == "c" and len(lhs.args) == 2):
+            raise TexError(f"left side {lhs} is not c_{{2n,i}}")
+        if sympy.simplify(lhs.args[0] - 2 * sympy.Symbol("n")) != 0 or lhs.args[1] != sympy.Symbol("i"):
+            raise TexError(f"left side {lhs} is not c_{{2n,i}}")
+    except (TexError, ValueError) as exc:
+        return _unread(how, exc, "exhaustive")
+    ok, bad = True, []
+    n_, i_ = sympy.symbols("n i")
+    for n in range(1, 6):
+        rng = list(range(_env_int(lo, n=n), _env_int(hi, n=n) + 1))
+        ok &= rng == list(range(2 * n + 1))
+        values: dict[tuple, fmpq] = {}
+        for i in rng:
+            e = rhs.subs({n_: n, i_: i}).doit()
+            for at, sh, ch in _angle_points():
+                try:
+                    v = values[at, i] = _trig_exact(e, sh, ch)
+                except (TexError, ValueError, ZeroDivisionError) as exc:
+                    return _unread(how, exc, "exhaustive")
+                good = 0 <= i <= 2 * n and v == c_exact(n, i, sh, ch) and pred(v)
+                ok &= good
+                if not good and len(bad) < 3:
+                    bad.append(f"n={n}, i={i}")
+        for at, sh, ch in _angle_points():
+            for xf in X_FRACTIONS:
+                hx = _half(at * xf)
+                hy = _diff_half((sh, ch), hx)
+                total = sum((values[at, i] * hy[0] ** (2 * n - i) * hx[0] ** i for i in rng if 0 <= i <= 2 * n),
+                            fmpq(0))
+                ok &= total == 1
+    return LineResult(ok, how=how + f"; the word read: {word!r}", kind="exhaustive",
+                      detail={"n_max": 5, "mismatches": bad})
+
+
+@line_check("sec1_3-c-symmetry")
+def c_symmetry() -> LineResult:
+    """c_{2n,a}^alpha = c_{2n,b}^alpha for i in the printed range (a, b and the range parsed): holds exactly for
+    the coefficients from the expansion at four alpha, n = 1..30 (polynomials in cos(alpha/2), n = 1..30, so for
+    every alpha); and the printed range with its mirror images i -> 2n-i covers all i = 0..2n (the symmetry of the
+    whole sequence)."""
+    tex = verbatim("sec1_3-c-symmetry")
+    how = "the parsed relation and range against the expansion's coefficients, n = 1..30"
+    try:
+        body = tex.split("\\begin{equation}", 1)[-1].split("\\label", 1)[0]
+        formula, tail = re.split(r",\s*~?\s*(?=i\s*=)", body, maxsplit=1)
+        lhs, rhs = relation(formula)
+        lo, hi = listed(tail, "i")
+        for side in (lhs, rhs):
+            if not (isinstance(side, AppliedUndef) and side.func.__name__ == "c" and len(side.args) == 2):
+                raise TexError(f"{side} is not a c_{{..,..}}")
+    except (TexError, ValueError) as exc:
+        return _unread(how, exc, "exhaustive")
+    ok = True
+    for n in range(1, 31):
+        polys = c_numerator_by_expansion(n)
+        rng = range(_env_int(lo, n=n), _env_int(hi, n=n) + 1)
+        covered = set()
+        for i in rng:
+            (oa, a), (ob, b) = ([_env_int(x, n=n, i=i) for x in side.args] for side in (lhs, rhs))
+            if not (oa == ob == 2 * n and 0 <= a <= 2 * n and 0 <= b <= 2 * n and polys[a] == polys[b]):
+                ok = False
+                break
+            covered |= {i, 2 * n - i}
+        ok &= covered | {n} == set(range(2 * n + 1))  # i = n is its own mirror: c_{2n,n} = c_{2n,n} says nothing
+    return LineResult(ok, how=how, kind="exhaustive", detail={"n_max": 30})
+
+
+_TRIPLE = re.compile(r"\\right\\\}\s*_\{\s*(\w)=([^,{}]+),\s*(\w)=([^,{}]+),\s*(\w)=([^,{}]+)\}\s*\^\{([^,{}]+),"
+                     r"([^,{}]+),([^,{}]+)\}")
+
+
+def _fourier_rows(members: list[sympy.Expr], names_: tuple[str, ...], ranges, pts) -> list[list[fmpq]]:
+    """Exact collocation rows of the printed Fourier system: each member cos/sin of a linear combination of u, v, w
+    with integer coefficients, for every index triple of the printed ranges."""
+    out = []
+    u, v, w = sympy.symbols("u v w")
+    triples = [(a, b, c) for a in range(*ranges[0]) for b in range(*ranges[1]) for c in range(*ranges[2])]
+    forms = []
+    for (r, g, b) in triples:
+        env = dict(zip(names_, (r, g, b)))
+        for f in members:
+            if not isinstance(f, (sympy.sin, sympy.cos)):
+                raise TexError(f"member {f} is not a cosine or sine")
+            arg = sympy.expand(f.args[0].subs({sympy.Symbol(k): x for k, x in env.items()}))
+            poly = sympy.Poly(arg, u, v, w)
+            if poly.total_degree() > 1 or poly.coeff_monomial(1) != 0 or arg.free_symbols - {u, v, w}:
+                raise TexError(f"argument {arg} is not a linear form in u, v, w")
+            forms.append((isinstance(f, sympy.sin), [int(poly.coeff_monomial(x)) for x in (u, v, w)]))
+    for hu, hv, hw in pts:
+        e = [_angle(h) for h in (hu, hv, hw)]
+        row = []
+        for is_sin, coeffs in forms:
+            z = (fmpq(1), fmpq(0))
+            for base, k in zip(e, coeffs):
+                z = _cmul(z, _cpow(base if k >= 0 else (base[0], -base[1]), abs(k)))
+            row.append(z[1] if is_sin else z[0])
+        out.append(row)
+    return out
+
+
+@line_check("sec1_3-fourier-dimension")
+def fourier_dimension() -> LineResult:
+    """The system {cos(ru+gv+bw), sin(ru+gv+bw)}_{r,g,b=0}^{n} (members and index ranges parsed from the line) on
+    Omega^alpha spans a space of dimension delta_n (the printed 3n(n+1)+1, parsed) equal to span T_{2n}; and the
+    abstract's truncated Fourier series of the printed order give the same span (exact collocation ranks modulo a
+    61-bit prime at delta_n + 12 points, n = 1..3)."""
+    how = "exact collocation ranks modulo 2^61-1 at delta_n + 12 points, tan(alpha/4) = 1/2, n = 1..3"
+    try:
+        sys_tex = verbatim("sec1_3-fourier-system")
+        if "largest linearly independent subset" not in sys_tex:
+            raise TexError("V_n is not the largest linearly independent subset")
+        m = _TRIPLE.search(sys_tex)
+        body = re.search(r"\\left\\\{(.*)\\right\\\}", sys_tex, re.S)
+        if not m or not body:
+            raise TexError("no set {..}_{r=..,g=..,b=..}^{..,..,..}")
+        names_, los, his = m.group(1, 3, 5), m.group(2, 4, 6), m.group(7, 8, 9)
+        members_tex, domain = body.group(1).split(":", 1)
+        if "\\Omega^{\\alpha}" not in domain or not re.search(r"\\left\(\s*u,v,w\s*\\right\)\s*\\in", domain):
+            raise TexError("the domain is not (u,v,w) in Omega^alpha")
+        members = [parse(t.group()) for t in re.finditer(r"\\(?:cos|sin)\\left\((.*?)\\right\)", members_tex)]
+        if not members or len(members) != members_tex.count(",") + 1:
+            raise TexError(f"members of {members_tex!r} not read")
+        # the trivariate extension of the canonical basis {cos(it), sin(it)}: a cosine and a sine of one argument
+        # r u + g v + b w, each index with its own variable
+        args = {f.args[0] for f in members}
+        kinds = sorted(type(f).__name__ for f in members)
+        uvw = sympy.symbols("u v w")
+        if len(args) != 1 or kinds != ["cos", "sin"]:
+            raise TexError("the members are not the cosine and the sine of one argument")
+        coeffs = [sympy.Poly(next(iter(args)), *uvw).coeff_monomial(x) for x in uvw]
+        if sorted(str(c) for c in coeffs) != sorted(m.group(1, 3, 5)):
+            raise TexError(f"the argument {args} does not give each index its own variable")
+        dim = re.search(r"common dimension \$\\delta_\{n\}=(.+?)\$", verbatim("sec1_3-span-coincide-dim"))
+        same = re.search(r"spans the same vector space of functions as the constrained trivariate extension of the "
+                         r"canonical basis of truncated Fourier series of order \$([^$]+)\$",
+                         verbatim("sec1_3-abstract-same-span"))
+        if not dim or not same:
+            raise TexError("the common dimension or the abstract's order is not read")
+        delta_printed, order = parse(dim.group(1)), parse(same.group(1))
+    except (TexError, ValueError) as exc:
+        return _unread(how, exc)
+    detail, ok = {}, True
+    for n in (1, 2, 3):
+        pts = _domain_points(ALPHA_TS[0], delta(n) + 12)
+        try:
+            ranges = [(_env_int(parse(a), n=n), _env_int(parse(b), n=n) + 1) for a, b in zip(los, his)]
+            rows_f = _fourier_rows(members, names_, ranges, pts)
+            k = _env_int(order, n=n)
+            rows_a = _fourier_rows(members, names_, [(0, k + 1)] * 3, pts)
+            d_printed = _env_int(delta_printed, n=n)
+        except (TexError, ValueError) as exc:
+            return _unread(how, exc)
+        rows_t = [[hu[0] ** e[0] * hu[1] ** e[1] * hv[0] ** e[2] * hv[1] ** e[3] * hw[0] ** e[4] * hw[1] ** e[5]
+                   for e in (exponents(lb) for lb in united_system(n))] for hu, hv, hw in pts]
+        rf, rt, rj = _rank(rows_f), _rank(rows_t), _rank([a + b for a, b in zip(rows_f, rows_t)])
+        ra, raj = _rank(rows_a), _rank([a + b for a, b in zip(rows_a, rows_t)])
+        detail[str(n)] = {"rank_fourier": rf, "rank_T": rt, "rank_joint": rj, "rank_abstract": ra,
+                          "printed_delta": d_printed}
+        ok &= rf == rt == rj == ra == raj == d_printed
+    return LineResult(ok, how=how, detail=detail)
+
+
+@line_check("sec1_3-univariate-span")
+def univariate_span() -> LineResult:
+    """{A_{2n,i}(t)}_{i=0}^{2n} = {c_{2n,i} sin^{2n-i}((alpha-t)/2) sin^i(t/2)}_{i=0}^{2n} (members, argument, domain
+    and both index ranges parsed from the line): the printed members, with c from the expansion, are 2n+1 linearly
+    independent functions spanning F_{2n}^alpha = span{cos(it), sin(it)}_{i=0}^{n} and sum to 1 (a normalized
+    basis), exactly at 2n+6 rational points of [0, alpha], n = 1..5."""
+    tex = verbatim("sec1_3-univariate-basis")
+    how = "exact collocation ranks (printed members | Fourier) and partition of unity at 2n+6 points, n = 1..5"
+    try:
+        left, right = _single_sets(tex)
+        (lb, (lv, llo, lhi), ldom), (rb, (rv, rlo, rhi), rdom) = left, right
+        lhs, member = parse(lb), parse(rb)
+        if (lv, llo, lhi) != (rv, rlo, rhi) or ldom != rdom or ldom[:2] != ("t", (True, 0, sympy.Symbol("alpha"),
+                                                                                   True)):
+            raise TexError("the two sides are not on one index set and one domain t in [0, alpha]")
+        if not (isinstance(lhs, AppliedUndef) and lhs.func.__name__ == "A" and lhs.args[1] == sympy.Symbol(lv)
+                and tuple(lhs.args[2]) == (sympy.Symbol("t"),)):
+            raise TexError(f"left member {lhs} is not A_{{2n,{lv}}}(t)")
+    except (TexError, ValueError) as exc:
+        return _unread(how, exc)
+    detail, ok = {}, True
+    n_, t_ = sympy.Symbol("n"), sympy.Symbol("t")
+    for n in range(1, 6):
+        at = ALPHA_TS[0]
+        ha = _half(at)
+        try:
+            idx = range(_env_int(parse(rlo), n=n), _env_int(parse(rhi), n=n) + 1)
+            if _env_int(lhs.args[0], n=n) != 2 * n:
+                raise TexError("A of another order")
+        except (TexError, ValueError) as exc:
+            return _unread(how, exc)
+        rows_a, rows_f = [], []
+        for k in range(2 * n + 6):
+            hx = _half(at * fmpq(k, 2 * n + 5))
+            hy = _diff_half(ha, hx)
+            row = []
+            for i in idx:
+                try:
+                    row.append(_member_value(member.subs({n_: n, sympy.Symbol(lv): i}), n, ha, hx, hy, t_))
+                except (TexError, ValueError):
+                    return LineResult(False, how=how, detail={"member": str(member), "i": i})
+            rows_a.append(row)
+            rows_f.append([q for m in range(n + 1) for q in _cpow(_angle(hx), m)])
+        ra, rf, rj = _rank(rows_a), _rank(rows_f), _rank([x + y for x, y in zip(rows_a, rows_f)])
+        unity = all(sum(r, fmpq(0)) == 1 for r in rows_a)
+        detail[str(n)] = [ra, rf, rj, unity]
+        ok &= ra == rj == rf == 2 * n + 1 == len(idx) and unity
+    return LineResult(ok, how=how, detail=detail)
+
+
+def _single_sets(tex: str):
+    """The two set-builders ``\\left\\{ body : x\\in\\left[ a,b\\right] \\right\\} _{i=lo}^{hi}`` of an equality:
+    [(body, (i, lo, hi), (x, interval)), ...]."""
+    out = []
+    for body, iset in printed_sym.set_builders_1_all(tex):
+        member, domain = body.split(":", 1)
+        dv = re.match(r"\s*(\w)\s*\\in", domain)
+        if not dv:
+            raise TexError(f"no domain in {domain!r}")
+        out.append((member, iset, (dv.group(1), read_interval(domain, ""))))
+    if len(out) != 2:
+        raise TexError(f"{len(out)} sets, not 2")
+    return out
+
+
+def _member_value(e: sympy.Expr, n: int, ha, hx, hy, t: sympy.Symbol) -> fmpq:
+    """Exact value of c_{2n,i} sin^a((alpha-t)/2) sin^b(t/2) (c from the expansion) at half angles hx of t."""
+    alpha = sympy.Symbol("alpha")
+    out = fmpq(1)
+    for factor in sympy.Mul.make_args(e):
+        base, ex = factor.as_base_exp()
+        if isinstance(base, AppliedUndef) and base.func.__name__ == "c":
+            o, k = (int(x) for x in base.args)
+            if o != 2 * n:
+                raise TexError("c of another order")
+            v = c_exact(n, k, *ha)
+        elif isinstance(base, sympy.sin) and sympy.simplify(base.args[0] - (alpha - t) / 2) == 0:
+            v = hy[0]
+        elif isinstance(base, sympy.sin) and sympy.simplify(base.args[0] - t / 2) == 0:
+            v = hx[0]
+        elif base.is_Integer:
+            v = fmpq(int(base))
+        else:
+            raise TexError(f"factor {base} not read")
+        if not ex.is_Integer or ex < 0:
+            raise TexError(f"power {ex} is not a non-negative integer")
+        out *= v ** int(ex)
+    return out
+
+
+# -- Proposition Bernstein and its proof ------------------------------------------------------------------------
+def _display(tex: str, start: str, stop: str) -> str:
+    body = tex.split(start, 1)[1] if start in tex else tex
+    return body.split(stop, 1)[0] if stop and stop in body else body
+
+
+def _s_samples(lo, hi) -> list:
+    lo, hi = mpmath.mpf(lo), mpmath.mpf(hi)
+    return [lo, hi, lo + (hi - lo) / 3, lo + 5 * (hi - lo) / 7]
+
+
+def _quantified(tex: str) -> tuple[str, list]:
+    """(quantifier, sample values of s) of the printed ``,~\\forall s\\in\\left[ a,b\\right]``; the interval must
+    be the one that the reparametrization t = alpha s of Proposition Bernstein maps onto the domain [0, alpha] of
+    t (eq. univariate_basis): closed, alpha a = 0 and alpha b = alpha."""
+    m = re.search(r"\\(forall|exists)\s*s\s*\\in", tex)
+    if not m:
+        raise TexError("no quantifier over s")
+    s_interval(tex[m.start():], r"\\(?:forall|exists)\s*s")
+    return m.group(1), _s_samples(0, 1)
+
+
+def s_interval(tex: str, var: str) -> None:
+    """Refuse an interval of s that t = alpha s does not map onto [0, alpha]."""
+    lo_c, lo, hi, hi_c = read_interval(tex, var)
+    alpha = sympy.Symbol("alpha")
+    if not (lo_c and hi_c) or sympy.simplify(alpha * lo) != 0 or sympy.simplify(alpha * hi - alpha) != 0:
+        raise TexError(f"s in {'[' if lo_c else '('}{lo}, {hi}{']' if hi_c else ')'}: t = alpha s does not cover "
+                       f"[0, alpha]")
+
+
+@line_check("sec1_3-bernstein-limit")
+def bernstein_limit() -> LineResult:
+    """lim_{alpha->0} A_{2n,i}^alpha(alpha s) = B_i^{2n}(s), s in [0,1], i = 0..2n, read from the line (the limit
+    point, the argument, which must be the printed reparametrization t(s) = alpha s, the Bernstein indices, the range,
+    the interval, the "degree $2n$" and "order $n$" of the prose): A from the definition of eq. univariate_basis
+    with the expansion's c, evaluated at alpha = limit point + 1e-15 with 60 digits, is within 1e-20 of B_k^d(s)
+    (the error is O(alpha^2)), n = 1..5, four s per interval; the coefficient limit is exact: sin^{2n}(alpha/2)
+    c_{2n,i} -> its numerator at cos = 1 = binom(2n, i) (n <= 15)."""
+    tex = verbatim("sec1_3-bernstein-limit")
+    how = "60-digit values at alpha = 1e-15 of the parsed limit, n = 1..5; exact coefficient limit n <= 15"
+    try:
+        rep = re.search(r"reparametrization \$t\\left\(\s*s\s*\\right\)\s*=(.+?),~?s\\in", tex)
+        if rep:
+            s_interval(tex[rep.end() - 3:], "s")
+        deg = re.search(r"Bernstein polynomials of degree \$([^$]+)\$ when \$\\alpha\\rightarrow\s*([^$]+)\$", tex)
+        order = re.search(r"basis functions \(\\ref\{univariate_basis\}\) of order \$([^$]+)\$", tex)
+        if not rep or not deg or not order:
+            raise TexError("the reparametrization, degree or order is not read")
+        t_of_s, degree, prose_point, order_n = parse(rep.group(1)), parse(deg.group(1)), parse(deg.group(2)), \
+            parse(order.group(1))
+        display = _display(tex, "\\begin{equation}", "\\label")
+        formula = re.split(r",\s*\\,", display, maxsplit=1)[0]
+        lhs, rhs = relation(formula)
+        _, s_vals = _quantified(display)
+        if not re.search(r"\\forall\s*s", display):
+            raise TexError("the limit is not claimed for all s")
+        lo, hi = listed(display, "i")
+        if not isinstance(lhs, sympy.Limit):
+            raise TexError("the left side is not a limit")
+        body, var, point = lhs.args[0], lhs.args[1], lhs.args[2]
+        if var != sympy.Symbol("alpha") or point != prose_point:
+            raise TexError("the limit is not alpha -> the prose's point")
+        a_term = body
+        if not (isinstance(a_term, AppliedUndef) and a_term.func.__name__ == "A"):
+            raise TexError("the limit is not of one A")
+        if sympy.simplify(a_term.args[2][0] - t_of_s) != 0:
+            raise TexError("the argument is not the printed reparametrization")
+    except (TexError, ValueError) as exc:
+        return _unread(how, exc, "numeric-evidence")
+    exact = all(sum(c_numerator(n, i)) == comb(2 * n, i) for n in range(1, 16) for i in range(2 * n + 1))
+    worst, ok = mpmath.mpf(0), exact
+    with mpmath.workdps(60):
+        alpha = num(point, {}) + mpmath.mpf("1e-15")
+        for n in range(1, 6):
+            try:
+                rng = range(_env_int(lo, n=n), _env_int(hi, n=n) + 1)
+                ok &= list(rng) == list(range(2 * n + 1)) and _env_int(order_n, n=n) == n
+                ok &= _env_int(degree, n=n) == _env_int(rhs.args[1], n=n, i=0) and _env_int(a_term.args[0], n=n) \
+                    == 2 * _env_int(order_n, n=n)
+                for i in rng:
+                    for s in s_vals:
+                        env = {"n": n, "i": i, "s": s, "alpha": alpha}
+                        worst = max(worst, abs(num(body, env) - num(rhs, env)))
+            except (TexError, ValueError, ZeroDivisionError) as exc:
+                return _unread(how, exc, "numeric-evidence")
+    ok = bool(ok and worst < mpmath.mpf("1e-20"))
+    return LineResult(ok, how=how, kind="numeric-evidence",
+                      detail={"coefficient_limit_exact": exact, "below_1e-20": ok})
+
+
+def _a_identity(parts: list[sympy.Expr], quant: str, s_vals: list, scale=1) -> bool:
+    """Whether the chain ``parts`` (all equal) holds at the sampled s (``forall``: every; ``exists``: some), for
+    n = 1..4 at alpha in {0.4, 1.3, 2.9}, 40 digits; with ``scale`` the sines in every A are scaled (the identity
+    as homogeneous polynomials in the sines, :func:`~paper_repro.claims.lines.sec12_eval.a_value`)."""
+    results = []
+    with mpmath.workdps(40):
+        for n in range(1, 5):
+            for alpha in (mpmath.mpf("0.4"), mpmath.mpf("1.3"), mpmath.mpf("2.9")):
+                for s in s_vals:
+                    env = {"n": n, "s": s, "alpha": alpha, "_scale": scale}
+                    vals = [num(p, env) for p in parts]
+                    results.append(all(abs(v - vals[0]) < mpmath.mpf("1e-30") for v in vals))
+    return all(results) if quant == "forall" else any(results)
+
+
+def _read_chain(line_id: str) -> tuple[list[sympy.Expr], str, list]:
+    tex = verbatim(line_id)
+    display = _display(tex, "\\[", "\\]")
+    formula = re.split(r",\s*~?\s*\\(?:forall|exists)", display, maxsplit=1)[0]
+    parts = relation(formula)
+    quant, s_vals = _quantified(display)
+    if len(parts) < 2:
+        raise TexError("not an equality")
+    return parts, quant, s_vals
+
+
+def _order_one(e: sympy.Expr, also_argument: bool = False) -> sympy.Expr:
+    """The correction of the proof: every A_{2n,k}(x) of ``e`` becomes A_{2,k}(x) (order 1), and with
+    ``also_argument`` an argument s becomes alpha s."""
+    s, alpha = sympy.Symbol("s"), sympy.Symbol("alpha")
+
+    def fix(f):
+        arg = f.args[2]
+        if also_argument and tuple(arg) == (s,):
+            arg = sympy.Tuple(alpha * s)
+        return sympy.Function("A")(2, f.args[1], arg)
+
+    return e.replace(lambda x: isinstance(x, AppliedUndef) and x.func.__name__ == "A", fix)
+
+
+@line_check("sec1_3-bernstein-identity")
+def bernstein_identity() -> LineResult:
+    """The printed identity (parsed: its terms, their orders, indices and arguments, the right side, the quantifier
+    and the interval of s), evaluated with A from the definition of eq. univariate_basis: false for n >= 2; the
+    corrected identity (the same line with every A_{2n,k} of order 1: A_{2,k}) holds (n = 1..4, three alpha, four s,
+    40 digits)."""
+    how = "40-digit values of the parsed identity and of its order-1 correction, n = 1..4"
+    try:
+        parts, quant, s_vals = _read_chain("sec1_3-bernstein-identity")
+        printed = _a_identity(parts, quant, s_vals)
+        corrected = _a_identity([_order_one(p) for p in parts], quant, s_vals)
+    except (TexError, ValueError, ZeroDivisionError) as exc:
+        return _unread(how, exc, "numeric-evidence")
+    return LineResult(printed, corrected, how=how, kind="numeric-evidence", detail={"quantifier": quant})
+
+
+@line_check("sec1_3-bernstein-power")
+def bernstein_power() -> LineResult:
+    """The printed chain sum_{i=0}^{2n} A_{2n,i}(alpha s) = (A_{2n,0}(s) + A_{2n,1}(s) + A_{2n,2}(s))^n = 1 (parsed),
+    evaluated with A from the definition: the middle part is not the sum for n >= 2; corrected (the power's terms
+    A_{2,k}(alpha s): order 1 at the argument alpha s) every part is equal (n = 1..4, three alpha, four s, 40
+    digits); and the expansion of (sum_k c_{2,k} X^{2-k} Y^k)^n has the coefficients c_{2n,i} exactly (n <= 5), so
+    the terms of the power are the A_{2n,i} at the same argument."""
+    how = "40-digit values of the parsed chain and of its correction, n = 1..4; exact expansion n <= 5"
+    try:
+        parts, quant, s_vals = _read_chain("sec1_3-bernstein-power")
+        if len(parts) != 3:
+            raise TexError("not a chain of three parts")
+        printed = _a_identity(parts, quant, s_vals)
+        fixed = [parts[0], _order_one(parts[1], True), parts[2]]
+        # the values are all 1; the proof's content is the expansion: the first two parts must agree as homogeneous
+        # polynomials in sin((alpha-t)/2), sin(t/2) (a power n-1 would still give the value 1)
+        corrected = _a_identity(fixed, quant, s_vals) and _a_identity(fixed[:2], quant, s_vals, scale=mpmath.mpf(1.3))
+    except (TexError, ValueError, ZeroDivisionError) as exc:
+        return _unread(how, exc, "numeric-evidence")
+    a = rational_alpha(ALPHA_TS[0])
+    for n in range(1, 6):
+        base = [c_const(1, k, a, "exact") for k in range(3)]
+        acc = [fmpq(1)]
+        for _ in range(n):
+            new = [fmpq(0)] * (len(acc) + 2)
+            for p, q in enumerate(acc):
+                for k, bk in enumerate(base):
+                    new[p + k] += q * bk
+            acc = new
+        corrected &= acc == [c_const(n, i, a, "exact") for i in range(2 * n + 1)]
+    return LineResult(printed, corrected, how=how, kind="numeric-evidence", detail={"quantifier": quant})
+
+
+def _limit_parts(tex: str) -> list[sympy.Expr]:
+    """The parts of an aligned chain ``\\lim ... \\\\ = & ... \\\\ = & ...`` (the ``&`` and line breaks dropped)."""
+    body = tex.replace("\\begin{align*}", " ").replace("\\end{align*}", " ")
+    return relation(body)
+
+
+def _termwise(lhs: sympy.Limit, rhs: sympy.Expr) -> bool:
+    """The proof's step is a termwise limit: lim (t1 + t2 + t3)^n = (r1 + r2 + r3)^n with each t_k -> some r_k (the
+    sums themselves are 1 for every alpha, so the values alone cannot tell a wrong limit point): same exponent, and
+    the limits of the terms (60 digits at alpha = point + 1e-15, s in {0.1, 0.5, 0.9}) are the right side's terms."""
+    body, point = lhs.args[0], lhs.args[2]
+    if not (isinstance(body, sympy.Pow) and isinstance(rhs, sympy.Pow)) or body.exp != rhs.exp:
+        return False
+    left, right = sympy.Add.make_args(body.base), sympy.Add.make_args(rhs.base)
+    if len(left) != len(right):
+        return False
+    with mpmath.workdps(60):
+        alpha = num(point, {}) + mpmath.mpf("1e-15")
+        ss = (mpmath.mpf("0.1"), mpmath.mpf("0.5"), mpmath.mpf("0.9"))
+        try:
+            lv = sorted(tuple(mpmath.nstr(num(t, {"s": s, "alpha": alpha}), 15) for s in ss) for t in left)
+            rv = sorted(tuple(mpmath.nstr(num(t, {"s": s}), 15) for s in ss) for t in right)
+        except (TexError, ValueError, ZeroDivisionError):
+            return False
+    return lv == rv
+
+
+@line_check("sec1_3-bernstein-proof-limit")
+def bernstein_proof_limit() -> LineResult:
+    """The proof's limit (parsed: the lim over alpha of the n-th power of the three terms equals
+    ((1-s)^2 + 2(1-s)s + s^2)^n) and the two limits it uses (lim sin(alpha s/2)/sin(alpha/2) = s,
+    lim cos(alpha s/2) = 1), evaluated at alpha = the printed limit point + 1e-15 with 60 digits against the right
+    sides: within 1e-20 (errors O(alpha^2)), n = 1..4, s in {0, 0.1, 0.5, 0.9, 1}."""
+    how = "60-digit values at alpha = 1e-15 of the parsed limits, n = 1..4"
+    try:
+        parts = _limit_parts(verbatim("sec1_3-bernstein-limit-step1"))
+        used = re.findall(r"\$(.*?)\$", verbatim("sec1_3-bernstein-limits-used"))
+        used_parts = [relation(u.rstrip(". ")) for u in used]
+        if len(parts) != 2 or len(used_parts) != 2 or any(len(p) != 2 for p in used_parts):
+            raise TexError("the limits are not read")
+        checks = [parts] + used_parts
+        for lhs, _ in checks:
+            if not isinstance(lhs, sympy.Limit) or lhs.args[1] != sympy.Symbol("alpha"):
+                raise TexError(f"{lhs} is not a limit over alpha")
+    except (TexError, ValueError) as exc:
+        return _unread(how, exc, "numeric-evidence")
+    worst = mpmath.mpf(0)
+    termwise = _termwise(parts[0], parts[1])
+    with mpmath.workdps(60):
+        for lhs, rhs in checks:
+            alpha = num(lhs.args[2], {}) + mpmath.mpf("1e-15")
+            for n in range(1, 5):
+                for s in (0, mpmath.mpf("0.1"), mpmath.mpf("0.5"), mpmath.mpf("0.9"), 1):
+                    try:
+                        env = {"n": n, "s": mpmath.mpf(s), "alpha": alpha}
+                        worst = max(worst, abs(num(lhs.args[0], env) - num(rhs, env)))
+                    except (TexError, ValueError, ZeroDivisionError) as exc:
+                        return _unread(how, exc, "numeric-evidence")
+    ok = bool(worst < mpmath.mpf("1e-20")) and termwise
+    return LineResult(ok, how=how + "; the limit of each term of the power's base against the right side's terms",
+                      kind="numeric-evidence", detail={"below_1e-20": bool(worst < mpmath.mpf("1e-20")),
+                                                       "termwise": termwise})
+
+
+def _one_minus_s(tex: str) -> str:
+    """The transcription with each parenthesized ``1-s`` read as the variable x (the change of variable of
+    :func:`bernstein_polynomials`, so that ``(1-s)+s`` is not simplified to 1 before the comparison)."""
+    return re.sub(r"\\left\(\s*1-s\s*\\right\)", " x ", tex)
+
+
+def _bernstein_xs(f: sympy.Expr, x: sympy.Symbol, s: sympy.Symbol) -> sympy.Expr:
+    """B_k^d(s) = binom(d, k) x^{d-k} s^k with x = 1 - s (homogeneous form)."""
+    k, d, args = f.args
+    if tuple(args) != (s,):
+        raise TexError(f"{f} is not a Bernstein polynomial in s")
+    return sympy.binomial(d, k) * x ** (d - k) * s**k
+
+
+@line_check("sec1_3-bernstein-polynomials")
+def bernstein_polynomials() -> LineResult:
+    """= ((1-s)+s)^{2n} = sum_{i=0}^{2n} B_i^{2n}(s) (parsed from the two lines), as identities of homogeneous
+    polynomials in (1-s) =: x and s (so that ((1-s)+s)^k = 1 for every k does not make a wrong exponent true):
+    every part equals ((1-s)^2 + 2(1-s)s + s^2)^n, the right side of the step before (read from that line), for
+    n = 1..12, with B_k^d(s) = binom(d,k) x^{d-k} s^k."""
+    how = "homogeneous polynomial identities in (x, s), x = 1-s, of the parsed parts, n = 1..12"
+    s, x = sympy.symbols("s x")
+    try:
+        parts = [p for lid in ("sec1_3-bernstein-limit-step2", "sec1_3-bernstein-limit-step3")
+                 for p in relation("0" + _one_minus_s(verbatim(lid)).replace("\\end{align*}", ""))[1:]]
+        start = _limit_parts(_one_minus_s(verbatim("sec1_3-bernstein-limit-step1")))[-1]
+        if len(parts) != 3:
+            raise TexError(f"{len(parts)} parts, not 3")
+    except (TexError, ValueError) as exc:
+        return _unread(how, exc, "exhaustive")
+
+    def homog(e, n):
+        e = e.subs(sympy.Symbol("n"), n)
+        e = e.replace(lambda f: isinstance(f, AppliedUndef) and f.func.__name__ == "B",
+                      lambda f: _bernstein_xs(f, x, s))
+        return sympy.expand(e.doit())
+
+    ok = True
+    for n in range(1, 13):
+        try:
+            want = homog(start, n)
+            got = [homog(p, n) for p in parts]
+        except (TexError, ValueError, TypeError) as exc:
+            return _unread(how, exc, "exhaustive")
+        ok &= all(g == want for g in got) and want.free_symbols <= {x, s}
+    return LineResult(ok, how=how, kind="exhaustive", detail={"n_max": 12})
 
 
 @cache
@@ -274,64 +1341,6 @@ def delta_count(override: dict[str, str] | None = None) -> LineResult:
                               "mismatches": bad[:3]})
 
 
-def united_printed(n: int) -> set[tuple[int, ...]]:
-    """eq. united_system as printed: centre and, per colour, j = 0..n-1, i = j..2n-1-j."""
-    out = {exponents(BasisLabel("R", n, n, n))}
-    for color in "RGB":
-        out |= {exponents(BasisLabel(color, n, i, j)) for j in range(n) for i in range(j, 2 * n - j)}
-    return out
-
-
-@line_check("sec1_3-united-dedupe")
-def united_dedupe(verbatim: str | None = None) -> LineResult:
-    """The printed index set of T_{2n} (read from the transcription of eq. united_system, with the centre of the line
-    after it) lists each distinct function of R u G u B exactly once (n = 1..20); the functions from the printed
-    explicit formulas (:func:`printed_exponents`)."""
-    tex = verbatim if verbatim is not None else _transcribed(["sec1_3-united-system"])["sec1_3-united-system"]
-    ok, bad = True, []
-    for n in range(1, 21):
-        try:
-            pairs = _read_pairs(tex, n)
-        except ValueError as exc:
-            return LineResult(False, how="the index set read from the transcription, n = 1..20", kind="exhaustive",
-                              detail={"unread": str(exc)})
-        listed = [printed_exponents("R", n, n, n)] + [printed_exponents(c, n, i, j) for c in "RGB" for i, j in pairs]
-        good = None not in listed and len(listed) == len(set(listed)) and set(listed) == distinct_union(n)
-        ok &= good
-        if not good:
-            bad.append(n)
-    return LineResult(ok, how="the index set read from the transcription against the distinct functions of the full "
-                      "systems, n = 1..20", kind="exhaustive", detail={"n_max": 20, "failing_n": bad[:3]})
-
-
-@line_check("sec1_3-levels")
-def levels() -> LineResult:
-    """n levels numbered 0..n-1 (the centre is the common centroid): the levels j of the non-centre functions."""
-    ok = all({lb.j for lb in united_system(n) if not lb.is_centre} == set(range(n)) for n in range(1, 21))
-    return LineResult(ok, how="levels of T_{2n} from its labels, n = 1..20", kind="exhaustive", detail={"ok": ok})
-
-
-@line_check("sec1_3-corners-centre")
-def corners_centre() -> LineResult:
-    """The outermost nodes store sin^{2n}(u/2), sin^{2n}(v/2), sin^{2n}(w/2); every path ends at the centre
-    sin^n(u/2) sin^n(v/2) sin^n(w/2) = R_{2n,n,n} = G_{2n,n,n} = B_{2n,n,n} (the three labels are one function)."""
-    ok = True
-    for n in range(1, 21):
-        ex = {exponents(lb) for lb in united_system(n)}
-        corners = {(2 * n, 0, 0, 0, 0, 0), (0, 0, 2 * n, 0, 0, 0), (0, 0, 0, 0, 2 * n, 0)}
-        centre_all = {exponents(BasisLabel(c, n, n, n)) for c in "RGB"}  # R_{2n,n,n} = G_{2n,n,n} = B_{2n,n,n}
-        ok &= corners <= ex and centre_all == {(n, 0, n, 0, n, 0)}
-    return LineResult(ok, how="exponent vectors of T_{2n}, n = 1..20", kind="exhaustive", detail={"ok": ok})
-
-
-@line_check("sec1_3-nonnegative")
-def nonnegative() -> LineResult:
-    """The functions of R, G, B are non-negative on Omega^alpha: products of non-negative powers of sines and cosines
-    of half angles in [0, alpha/2] subset [0, pi/2) (exponents checked for the full systems, n = 1..30)."""
-    ok = all(min(exponents(lb)) >= 0 for n in range(1, 31) for c in "RGB" for lb in full_system(n, c))
-    return LineResult(ok, how="exponent vectors of the full systems, n = 1..30", kind="exhaustive", detail={"ok": ok})
-
-
 #: The lines whose index sets :func:`rgb_index_sets` reads (the full systems and the two halves of R).
 INDEX_SET_LINES = ("sec1_3-R-system", "sec1_3-G-system", "sec1_3-B-system", "sec1_3-R-leq-n", "sec1_3-R-geq-n-relation")
 
@@ -354,133 +1363,6 @@ def _read_pairs(tex: str, n: int) -> list[tuple[int, int]]:
         raise ValueError(f"index set over {(ov, iv)}, not (j, i)")
     return [(i, j) for j in range(bound(olo, n=n), bound(ohi, n=n) + 1)
             for i in range(bound(ilo, n=n, j=j), bound(ihi, n=n, j=j) + 1)]
-
-
-def printed_exponents(color: str, n: int, i: int, j: int) -> tuple[int, ...] | None:
-    """Exponent vector (sin, cos of u/2, v/2, w/2) of color_{2n,2n-i,j} from the printed explicit formulas
-    (eqs. R_system_leq_n, R_system_geq_n: sin^{2n-i}(u/2) sin^i(w/2) cos^{i-j}(v/2) sin^j(v/2) for i <= n,
-    sin^i(w/2) sin^{2n-i}(u/2) cos^{2n-i-j}(v/2) sin^j(v/2) for i > n; G = R(w, u, v), B = R(v, w, u)), or ``None``
-    if a power is negative (not a function of the system).  Independent of :mod:`paper_repro.core.labels`."""
-    cos_v = i - j if i <= n else 2 * n - i - j
-    r = {"u": (2 * n - i, 0), "v": (j, cos_v), "w": (i, 0)}
-    if min(min(p) for p in r.values()) < 0:
-        return None
-    # G(u, v, w) = R(w, u, v): the R-roles (u, v, w) are played by (w, u, v); B: by (v, w, u)
-    roles = {"R": ("u", "v", "w"), "G": ("w", "u", "v"), "B": ("v", "w", "u")}[color]
-    var = {roles[0]: r["u"], roles[1]: r["v"], roles[2]: r["w"]}
-    return (*var["u"], *var["v"], *var["w"])
-
-
-@line_check("sec1_3-rgb-index-sets")
-def rgb_index_sets(override: dict[str, str] | None = None, n_max: int = 30) -> LineResult:
-    """The index sets read from the transcriptions of eqs. R_system, G_system, B_system, R_system_leq_n and
-    R_system_geq_n: for n = 1..n_max, every (i, j) of the three full systems gives non-negative powers in the printed
-    explicit formulas, the full R set is the disjoint union of the two printed halves, and R u G u B (equal
-    functions merged) has exactly delta_n = 3n(n+1)+1 members, the exponent vectors of T_{2n}
-    (:func:`~paper_repro.core.labels.united_system`).  ``override`` replaces transcriptions (tests)."""
-    text = _transcribed(INDEX_SET_LINES, override)
-    bad: list[str] = []
-    for n in range(1, n_max + 1):
-        try:
-            sets = {k: _read_pairs(text[k], n) for k in INDEX_SET_LINES}
-        except ValueError as exc:
-            return LineResult(False, how="index sets read from the transcriptions", kind="exhaustive",
-                              detail={"unread": str(exc)})
-        funcs = set()
-        for color, key in zip("RGB", INDEX_SET_LINES[:3]):
-            for i, j in sets[key]:
-                e = printed_exponents(color, n, i, j)
-                if e is None:
-                    bad.append(f"n={n}: {color}_{{{2 * n},{2 * n - i},{j}}} has a negative power")
-                else:
-                    funcs.add(e)
-        full, low, high = (set(sets[k]) for k in ("sec1_3-R-system", "sec1_3-R-leq-n", "sec1_3-R-geq-n-relation"))
-        if low & high or low | high != full or len(full) != len(sets["sec1_3-R-system"]):
-            bad.append(f"n={n}: the R set is not the disjoint union of its printed halves")
-        if len(funcs) != 3 * n * (n + 1) + 1 or funcs != {exponents(lb) for lb in united_system(n)}:
-            bad.append(f"n={n}: R u G u B has {len(funcs)} distinct functions, not those of T_{{2n}}")
-    return LineResult(not bad, how=f"index sets read from the transcriptions, powers of the printed explicit formulas "
-                      f"and the distinct functions of R u G u B against delta_n and T_{{2n}}, n = 1..{n_max}",
-                      kind="exhaustive", detail={"n_max": n_max, "problems": bad[:3]})
-
-
-@line_check("sec1_3-order-n3")
-def order_n3() -> LineResult:
-    """T_6^alpha is the system of order n = 3 (2n = 6), with delta_3 = 37 functions."""
-    labs = united_system(3)
-    ok = all(lb.paper.split(",")[0].endswith("6") for lb in labs) and len(labs) == 37
-    return LineResult(ok, how="labels of T_{2n} for n = 3", kind="proof", detail={"functions": len(labs)})
-
-
-def _boundary(var: int) -> LineResult:
-    """T_{2n} restricted to {var = 0}: the non-vanishing functions are exactly sin^{i}((alpha-t)/2) sin^{2n-i}(t/2),
-    i = 0..2n, each once, i.e. A_{2n,2n-i}(t)/c_{2n,2n-i}, checked on exponents and by exact values of the
-    package's A_{2n,k} at rational points."""
-    ok = True
-    for n in range(1, 13):
-        rest = [k for k in range(3) if k != var]
-        restricted = []
-        for lb in united_system(n):
-            e = exponents(lb)
-            if e[2 * var] > 0:
-                continue  # contains sin(var/2): vanishes on the edge
-            restricted.append((e[2 * rest[0]], e[2 * rest[0] + 1], e[2 * rest[1]], e[2 * rest[1] + 1]))
-        # cos powers must be 0 on the surviving ones (no cos factor in A), and the sin powers sum to 2n
-        target = sorted((2 * n - i, 0, i, 0) for i in range(2 * n + 1))
-        ok &= sorted(restricted) == target
-    # values: A_{2n,k}(t)/c_{2n,k} = sin^{2n-k}((alpha-t)/2) sin^k(t/2), exactly at rational points
-    for n in range(1, 5):
-        for pt in _points()[:2]:
-            a = rational_alpha(ALPHA_TS[0])
-            for k in range(2 * n + 1):
-                ck = c_const(n, k, a, "exact")
-                value = ck * pt["alpha-t"][0] ** (2 * n - k) * pt["t"][0] ** k
-                ok &= value / ck == _factor_derivative(2 * n - k, 0, 0, pt["alpha-t"]) * pt["t"][0] ** k
-    return LineResult(ok, how="exponent vectors of T_{2n} restricted to the edge, n = 1..12", kind="exhaustive",
-                      detail={"ok": ok})
-
-
-@line_check("sec1_3-boundary-v0")
-def boundary_v0() -> LineResult:
-    return _boundary(1)
-
-
-@line_check("sec1_3-boundary-u0")
-def boundary_u0() -> LineResult:
-    return _boundary(0)
-
-
-@line_check("sec1_3-boundary-w0")
-def boundary_w0() -> LineResult:
-    return _boundary(2)
-
-
-@line_check("sec1_3-c-formula")
-def c_formula() -> LineResult:
-    """The printed c_{2n,i} make sum_i A_{2n,i} = 1: the numerators equal the coefficients of
-    (X^2 + 2 cos(alpha/2) X Y + Y^2)^n (polynomial identity, n = 1..15), and the partition of unity holds exactly at
-    rational points (n = 1..5)."""
-    poly_ok = all(fmpq_poly(c_numerator(n, i)) == c_numerator_by_expansion(n)[i]
-                  for n in range(1, 16) for i in range(2 * n + 1))
-    pu_ok = True
-    for n in range(1, 6):
-        for at in ALPHA_TS:
-            a = rational_alpha(at)
-            for pt in (boundary_point(at, x) for x in X_FRACTIONS):
-                total = sum((c_const(n, i, a, "exact") * pt["alpha-t"][0] ** (2 * n - i) * pt["t"][0] ** i
-                             for i in range(2 * n + 1)), fmpq(0))
-                pu_ok &= total == 1
-    return LineResult(poly_ok and pu_ok, how="polynomial identity in cos(alpha/2) with the expansion of "
-                      "(X^2+2cXY+Y^2)^n (n <= 15); exact partition of unity at 4 rational points (n <= 5)",
-                      kind="exhaustive", detail={"polynomial_identity": poly_ok, "partition_of_unity": pu_ok})
-
-
-@line_check("sec1_3-c-symmetry")
-def c_symmetry() -> LineResult:
-    ok = all(c_numerator(n, i) == c_numerator(n, 2 * n - i)[: i + 1] and not any(c_numerator(n, 2 * n - i)[i + 1:])
-             for n in range(1, 31) for i in range(n + 1))
-    return LineResult(ok, how="the printed c_{2n,i} and c_{2n,2n-i} as polynomials in cos(alpha/2), n = 1..30",
-                      kind="exhaustive", detail={"ok": ok})
 
 
 P = 2**61 - 1
@@ -526,33 +1408,6 @@ def _domain_points(alpha_t: fmpq, count: int) -> list[tuple[tuple[fmpq, fmpq], .
     return out
 
 
-@line_check("sec1_3-fourier-dimension")
-def fourier_dimension() -> LineResult:
-    """The system {cos(ru+gv+bw), sin(ru+gv+bw)}_{r,g,b=0}^{n} on Omega^alpha spans a space of dimension delta_n
-    equal to span T_{2n} (ranks of exact collocation matrices modulo a 61-bit prime, n = 1..3)."""
-    detail = {}
-    ok = True
-    for n in (1, 2, 3):
-        pts = _domain_points(ALPHA_TS[0], delta(n) + 12)
-        rows_f, rows_t = [], []
-        for hu, hv, hw in pts:
-            eu, ev, ew = _angle(hu), _angle(hv), _angle(hw)
-            row = []
-            for r in range(n + 1):
-                for g in range(n + 1):
-                    for b in range(n + 1):
-                        z = _cmul(_cmul(_cpow(eu, r), _cpow(ev, g)), _cpow(ew, b))
-                        row += [z[0], z[1]]
-            rows_f.append(row)
-            rows_t.append([hu[0] ** e[0] * hu[1] ** e[1] * hv[0] ** e[2] * hv[1] ** e[3] * hw[0] ** e[4]
-                           * hw[1] ** e[5] for e in (exponents(lb) for lb in united_system(n))])
-        rf, rt, rj = _rank(rows_f), _rank(rows_t), _rank([a + b for a, b in zip(rows_f, rows_t)])
-        detail[str(n)] = {"rank_fourier": rf, "rank_T": rt, "rank_joint": rj, "delta": delta(n)}
-        ok &= rf == rt == rj == delta(n)
-    return LineResult(ok, how="exact collocation ranks modulo 2^61-1 at delta_n + 12 points, tan(alpha/4) = 1/2",
-                      detail=detail)
-
-
 @line_check("sec1_3-independence-rank")
 def independence_rank() -> LineResult:
     """T_{2n} is linearly independent (so dim span T_{2n} = delta_n): its exact collocation matrix at delta_n + 5
@@ -569,128 +1424,6 @@ def independence_rank() -> LineResult:
             ok &= rank == delta(n)
     return LineResult(ok, how="exact collocation ranks modulo 2^61-1 (full rank mod p proves independence at that "
                       "alpha), n = 1..5 at tan(alpha/4) = 1/2, n = 1..4 at 3/4", detail=detail)
-
-
-@line_check("sec1_3-univariate-span")
-def univariate_span() -> LineResult:
-    """{A_{2n,i}}_{i=0}^{2n} and {cos(it), sin(it)}_{i=0}^{n} span the same (2n+1)-dimensional space."""
-    detail, ok = {}, True
-    for n in range(1, 6):
-        a = rational_alpha(ALPHA_TS[0])
-        rows_a, rows_f = [], []
-        for k in range(2 * n + 6):
-            pt = boundary_point(ALPHA_TS[0], fmpq(k + 1, 2 * n + 8))
-            rows_a.append([c_const(n, i, a, "exact") * pt["alpha-t"][0] ** (2 * n - i) * pt["t"][0] ** i
-                           for i in range(2 * n + 1)])
-            e = _angle(pt["t"])
-            rows_f.append([q for m in range(n + 1) for q in _cpow(e, m)])
-        ra, rf, rj = _rank(rows_a), _rank(rows_f), _rank([x + y for x, y in zip(rows_a, rows_f)])
-        detail[str(n)] = [ra, rf, rj]
-        ok &= ra == rj == 2 * n + 1 and rf == 2 * n + 1
-    return LineResult(ok, how="exact collocation ranks (A | Fourier) at 2n+6 rational points, n = 1..5",
-                      detail=detail)
-
-
-@line_check("sec1_3-bernstein-limit")
-def bernstein_limit() -> LineResult:
-    """lim_{alpha->0} A_{2n,i}(alpha s) = binom(2n,i) (1-s)^{2n-i} s^i: sin^{2n}(alpha/2) c_{2n,i} -> the numerator at
-    cos = 1, which equals binom(2n, i) (exact, n <= 15); and the value at alpha = 1e-12 (50 digits) is within 1e-20."""
-    exact = all(sum(c_numerator(n, i)) == comb(2 * n, i) for n in range(1, 16) for i in range(2 * n + 1))
-    worst = mpmath.mpf(0)
-    with mpmath.workdps(50):
-        alpha = mpmath.mpf("1e-12")
-        for n in (1, 2, 3, 5):
-            for i in range(2 * n + 1):
-                for s in (mpmath.mpf("0.2"), mpmath.mpf("0.7")):
-                    a_val = (c_const(n, i, alpha, "mp") * mpmath.sin((alpha - alpha * s) / 2) ** (2 * n - i)
-                             * mpmath.sin(alpha * s / 2) ** i)
-                    worst = max(worst, abs(a_val - comb(2 * n, i) * (1 - s) ** (2 * n - i) * s**i))
-    ok = exact and worst < mpmath.mpf("1e-20")
-    return LineResult(ok, how="exact limit of the coefficient polynomial; 50-digit values at alpha = 1e-12",
-                      kind="numeric-evidence", detail={"coefficient_limit_exact": exact, "below_1e-20": bool(ok)})
-
-
-def _a_sum(order: int, n_sub: int, t_alpha: fmpq, pt, first: int, last: int) -> fmpq:
-    """sum_{i=first}^{last} A^alpha_{2 order, i}(t) (A as in eq. univariate_basis, c from the package)."""
-    a = rational_alpha(t_alpha)
-    return sum((c_const(order, i, a, "exact") * pt["alpha-t"][0] ** (2 * order - i) * pt["t"][0] ** i
-                for i in range(first, last + 1)), fmpq(0))
-
-
-@line_check("sec1_3-bernstein-identity")
-def bernstein_identity(sub=lambda n: n) -> LineResult:
-    """Printed A_{2n,0} + A_{2n,1} + A_{2n,2} = 1: false for n >= 2 (exact values); A_{2,0} + A_{2,1} + A_{2,2} = 1
-    holds (order 1), which is what the proof raises to the power n."""
-    printed = all(_a_sum(sub(n), n, at, boundary_point(at, x), 0, 2) == 1 for n in range(1, 5)
-                  for at in ALPHA_TS for x in X_FRACTIONS)
-    corrected = all(_a_sum(1, n, at, boundary_point(at, x), 0, 2) == 1 for n in range(1, 5)
-                    for at in ALPHA_TS for x in X_FRACTIONS)
-    example = _a_sum(2, 2, ALPHA_TS[0], boundary_point(ALPHA_TS[0], X_FRACTIONS[0]), 0, 2)
-    return LineResult(printed, corrected, how="exact values at tan(alpha/4) in {1/2, 3/4}, two points each, n <= 4",
-                      detail={"n2_value_of_printed_sum": str(example)})
-
-
-@line_check("sec1_3-bernstein-power")
-def bernstein_power(sub=lambda n: n) -> LineResult:
-    """Printed sum_{i=0}^{2n} A_{2n,i}(alpha s) = (A_{2n,0}(s) + A_{2n,1}(s) + A_{2n,2}(s))^n = 1: the middle term is
-    not 1 for n >= 2; with order-1 functions (A_{2,k}) both equalities hold, and the expansion of (sum_k A_{2,k}(t))^n
-    groups into A_{2n,i}(t) at the same argument t (the printed argument s of the middle term must be alpha s)."""
-    printed, corrected = True, True
-    for n in range(1, 5):
-        for at in ALPHA_TS:
-            for x in X_FRACTIONS:
-                pt = boundary_point(at, x)
-                left = _a_sum(n, n, at, pt, 0, 2 * n)
-                printed &= left == _a_sum(sub(n), n, at, pt, 0, 2) ** n == 1
-                corrected &= left == _a_sum(1, n, at, pt, 0, 2) ** n == 1
-    # grouping: the X^{2n-i} Y^i coefficient of (c0 X^2 + c1 X Y + c2 Y^2)^n equals c_{2n,i} when c_k = c_{2,k}
-    a = rational_alpha(ALPHA_TS[0])
-    for n in range(1, 6):
-        base = [c_const(1, k, a, "exact") for k in range(3)]
-        acc = [fmpq(1)]
-        for _ in range(n):
-            new = [fmpq(0)] * (len(acc) + 2)
-            for p, q in enumerate(acc):
-                for k, bk in enumerate(base):
-                    new[p + k] += q * bk
-            acc = new
-        corrected &= acc == [c_const(n, i, a, "exact") for i in range(2 * n + 1)]
-    return LineResult(printed, corrected, how="exact values at rational points (n <= 4) and the exact expansion of "
-                      "(sum_k c_{2,k} X^{2-k} Y^k)^n against c_{2n,i} (n <= 5)")
-
-
-@line_check("sec1_3-bernstein-proof-limit")
-def bernstein_proof_limit() -> LineResult:
-    """The three terms inside the limit tend to (1-s)^2, 2(1-s)s, s^2 (50 digits at alpha = 1e-12), using
-    sin(alpha s/2)/sin(alpha/2) -> s and cos(alpha s/2) -> 1."""
-    worst = mpmath.mpf(0)
-    with mpmath.workdps(50):
-        a = mpmath.mpf("1e-12")
-        for s in (mpmath.mpf("0.1"), mpmath.mpf("0.5"), mpmath.mpf("0.9")):
-            sa = mpmath.sin(a / 2)
-            terms = (mpmath.sin((a - a * s) / 2) ** 2 / sa**2,
-                     2 * mpmath.cos(a / 2) / sa**2 * mpmath.sin((a - a * s) / 2) * mpmath.sin(a * s / 2),
-                     mpmath.sin(a * s / 2) ** 2 / sa**2)
-            limits = ((1 - s) ** 2, 2 * (1 - s) * s, s**2)
-            worst = max([worst] + [abs(t - m) for t, m in zip(terms, limits)]
-                        + [abs(mpmath.sin(a * s / 2) / sa - s), abs(mpmath.cos(a * s / 2) - 1)])
-    ok = worst < mpmath.mpf("1e-20")
-    return LineResult(ok, how="50-digit values at alpha = 1e-12, s in {0.1, 0.5, 0.9}", kind="numeric-evidence",
-                      detail={"below_1e-20": bool(ok)})
-
-
-@line_check("sec1_3-bernstein-polynomials")
-def bernstein_polynomials() -> LineResult:
-    """((1-s)^2 + 2(1-s)s + s^2)^n = ((1-s)+s)^{2n} = sum_i B_i^{2n}(s) as polynomials (n = 1..20)."""
-    s = fmpq_poly([0, 1])
-    one_m = 1 - s
-    ok = True
-    for n in range(1, 21):
-        left = (one_m**2 + 2 * one_m * s + s**2) ** n
-        mid = (one_m + s) ** (2 * n)
-        right = sum((comb(2 * n, i) * one_m ** (2 * n - i) * s**i for i in range(2 * n + 1)), fmpq_poly([0]))
-        ok &= left == mid == right
-    return LineResult(ok, how="fmpq_poly identities, n = 1..20", kind="exhaustive", detail={"ok": ok})
 
 
 @line_check("sec1_3-sin-power-leading")

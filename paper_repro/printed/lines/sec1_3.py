@@ -175,7 +175,11 @@ LINES = [
          'etry_of_Sanchez_Reyes_constants}%',
          'c_{2n,i} = c_{2n,2n-i}, i = 0..n',
          'checked',
-         check='sec1_3-c-symmetry'),
+         check='sec1_3-c-symmetry',
+         reason=(
+                'read skeptically: the range i = 0..n is enough (i = n+1..2n are the same equations read backwards) '
+                'and i = n is trivial (c_{2n,n} = c_{2n,n}), so i = 0..n-1 would say the same; the check requires the'
+                ' printed range with its mirror images to cover 0..2n')),
     Line('sec1_3-omega',
          (177, 180),
          'symmetry_of_Sanchez_Reyes_constants',
@@ -204,7 +208,11 @@ LINES = [
          'V_n is the largest linearly independent subset of {cos, sin}(ru+gv+bw), r, g, b = 0.'
          '.n',
          'checked',
-         check='sec1_3-fourier-dimension'),
+         check='sec1_3-fourier-dimension',
+         reason=(
+                'read skeptically: on Omega^alpha (w = alpha-u-v) the index range is not minimal -- dropping b = n '
+                '(or b = 0, or the same for r or g) keeps the span, since those frequencies are the negatives of '
+                'others; the line claims only the span and it holds (ranks n = 1..3)')),
     Line('sec1_3-remark-not-b-basis',
          (197, 199),
          'constrained_trivariate_extension_of_truncated_Fourier_series',
@@ -268,7 +276,11 @@ LINES = [
          'that fulfill six cyclic symmetry properties in their variables',
          'R, G, B fulfil six cyclic symmetry properties',
          'checked',
-         check='claim:symmetry'),
+         check='claim:symmetry',
+         reason=(
+                'debatable wording: the six properties are transpositions of two variables (three keep a family, '
+                "three exchange adjacent families, caption of Fig. oriented_graph); 'cyclic' describes their "
+                'arrangement around the triangle, not the symmetries')),
     Line('sec1_3-outline-sec3',
          (223, 229),
          'constrained_trivariate_extension_of_truncated_Fourier_series',
@@ -360,7 +372,9 @@ LINES = [
          'caption',
          'Functions associated with the red, green and blue shaded domains are symmetric in va'
          'riables $\\left( w,u\\right) $, $\\left( v,w\\right) $ and $\\left( u,v\\right) $, respect'
-         'ively.',
+         'ively. Functions which correspond to the adjacent domains red--green, green--blue and blue--red are '
+         'symmetric in variables $\\left( v,u\\right) $, $\\left( u,w\\right) $ and $\\left( w,v\\right) $, '
+         'respectively.',
          'red, green, blue functions are symmetric in (w,u), (v,w), (u,v); adjacent red-green,'
          ' green-blue, blue-red in (v,u), (u,w), (w,v)',
          'checked',
@@ -551,7 +565,12 @@ LINES = [
          'nested triangles shrinking from the boundary to their common centroid',
          'the index j is the level (nested triangles shrinking to the centroid)',
          'checked',
-         check='sec1_3-levels'),
+         check='sec1_3-levels',
+         reason=(
+                'debatable: the centre R_{2n,n,n} = G_{2n,n,n} = B_{2n,n,n} of T_{2n} has j = n, yet the graph has n '
+                'levels numbered 0..n-1 (line sec1_3-graph-levels): the levels are the nested triangles, the centroid'
+                " is not one of them; the check reads 'levels' so (non-centre functions) and checks that j is the "
+                'order of vanishing on the boundary for every function, the centre included')),
     Line('sec1_3-T6-order-3',
          (387, 388),
          'united_system',
@@ -578,7 +597,12 @@ LINES = [
          ',\\label{boundary_property_1}\\\\',
          'T_{2n} restricted to v = 0 is {A_{2n,2n-i}(u)/c_{2n,2n-i}}, i = 0..2n',
          'checked',
-         check='sec1_3-boundary-v0'),
+         check='sec1_3-boundary-v0',
+         reason=(
+                'debatable wording: the functions of T_{2n} with a factor sin(v/2) restrict to 0 on v = 0; the '
+                'display lists only the non-zero restrictions (the check drops the vanishing ones); as sets the order'
+                ' of the index i does not matter, and with the labels it matches: R_{2n,2n-i,0}(u,0,w) = '
+                'A_{2n,2n-i}(u)/c_{2n,2n-i}')),
     Line('sec1_3-boundary-property-2',
          (411, 413),
          'boundary_property_2',
@@ -665,7 +689,14 @@ LINES = [
          '\\\\ = & \\left( \\left( 1-s\\right) ^{2}+2\\left( 1-s\\right) s+s^{2}\\right) ^{n}\\\\',
          'the limit of the order-1 sum to the power n is ((1-s)^2 + 2(1-s)s + s^2)^n',
          'checked',
-         check='sec1_3-bernstein-proof-limit'),
+         check='sec1_3-bernstein-proof-limit',
+         reason=(
+                'debatable (proof gap): the chain shows that the n-th power of the sum of the three terms tends to '
+                "((1-s)+s)^{2n}; both ends equal 1 for every alpha, so as values it says nothing -- the Proposition's"
+                ' termwise limit needs that the expansion of the power groups into the A_{2n,i}(alpha s) (the erratum'
+                ' of sec1_3-bernstein-power) and that each group tends to the matching group of the expansion of '
+                '((1-s)+s)^{2n}; the check reads the step as a termwise limit (each of the three terms against the '
+                "right side's)")),
     Line('sec1_3-bernstein-limit-step2',
          (453, 454),
          'sec:linear_independence',
@@ -692,7 +723,11 @@ LINES = [
          's\\left( \\frac{\\alpha s}{2}\\right) =1.$',
          'lim sin(alpha s/2)/sin(alpha/2) = s, lim cos(alpha s/2) = 1',
          'checked',
-         check='sec1_3-bernstein-proof-limit'),
+         check='sec1_3-bernstein-proof-limit',
+         reason=(
+                'debatable: the limit expression of the proof contains cos(alpha/2) and sin((alpha-alpha '
+                's)/2)/sin(alpha/2), not cos(alpha s/2); the limits needed are the printed ones at s = 1 and with s '
+                'replaced by 1-s, which they imply')),
     Line('sec1_3-CS-definitions',
          (467, 475),
          'sec:linear_independence',
