@@ -34,6 +34,7 @@ from paper_repro.core.normalization import coefficients, solve_full_exact
 from paper_repro.core.univariate import c_numerator_by_expansion
 from paper_repro.printed import normalization as pn
 from paper_repro.printed.lines import sec4_5 as pl
+from paper_repro.printed.lines import live_texts, verbatim
 
 Q = Fraction
 TS = (fmpq(1, 3), fmpq(2, 5), fmpq(1, 7))  # tan(alpha/4) of the sampled alpha
@@ -139,6 +140,113 @@ def half_monomial(e: tuple[int, ...]) -> EP:
 
 
 # ---------------------------------------------------------------------------------------------------------------
+# printed formulas (read by paper_repro.claims.lines.sec4_tex) as exact trigonometric polynomials
+# ---------------------------------------------------------------------------------------------------------------
+def to_ep(expr, variables) -> EP:
+    """The sympy expression ``expr`` (sums and products of rationals, integer powers, sin/cos of rational linear
+    forms in ``variables``) as an :class:`EP` over ``variables``; ``TexError`` for anything else (an unknown symbol
+    left in a printed formula, a non-linear argument)."""
+    import sympy as sp
+
+    from paper_repro.claims.lines.sec4_tex import TexError
+
+    nv = len(variables)
+    if expr.is_Rational:
+        return EP.const(nv, Q(int(expr.p), int(expr.q)))
+    if expr.is_Add:
+        out = EP(nv)
+        for a in expr.args:
+            out = out + to_ep(a, variables)
+        return out
+    if expr.is_Mul:
+        out = EP.const(nv, 1)
+        for a in expr.args:
+            out = out * to_ep(a, variables)
+        return out
+    if expr.is_Pow and expr.exp.is_Integer and expr.exp >= 0:
+        return to_ep(expr.base, variables) ** int(expr.exp)
+    if isinstance(expr, (sp.sin, sp.cos)):
+        arg = sp.expand(expr.args[0])
+        poly = sp.Poly(arg, *variables) if arg.free_symbols <= set(variables) else None
+        if poly is None or poly.total_degree() > 1 or poly.coeff_monomial(1) != 0:
+            raise TexError(f"argument {arg} is not a linear form in {variables}")
+        freq = []
+        for v in variables:
+            c = poly.coeff_monomial(v)
+            if not c.is_Rational:
+                raise TexError(f"coefficient {c} of {v} is not rational")
+            freq.append(Q(int(c.p), int(c.q)))
+        return EP.sin(freq) if isinstance(expr, sp.sin) else EP.cos(freq)
+    raise TexError(f"cannot expand {expr}")
+
+
+def compile_ep(expr, variables, params):
+    """``expr`` (read from a transcription; sin/cos of forms linear in ``variables`` whose coefficients, like the
+    other factors, may depend on ``params``) compiled to a function ``values of params -> EP`` (fast exact
+    evaluation at many parameter values); ``TexError`` for a symbol that is neither a variable nor a parameter, or
+    an argument that is not linear in the variables."""
+    import sympy as sp
+
+    from paper_repro.claims.lines.sec4_tex import TexError
+
+    nv = len(variables)
+    extra = expr.free_symbols - set(variables) - set(params)
+    if extra:
+        raise TexError(f"unknown symbols {sorted(map(str, extra))}")
+
+    def scalar(e):
+        f = sp.lambdify(params, e, modules=[{"binomial": comb}, "math"])
+        return lambda vals: EP.const(nv, Q(f(*vals)))
+
+    def comp(e):
+        if not (e.free_symbols & set(variables)) and not e.has(sp.sin, sp.cos):
+            return scalar(sp.nsimplify(e) if e.is_Float else e)
+        if e.is_Add or e.is_Mul:
+            fs = [comp(a) for a in e.args]
+
+            def run(vals, fs=fs, add=e.is_Add):
+                out = EP(nv) if add else EP.const(nv, 1)
+                for f in fs:
+                    out = out + f(vals) if add else out * f(vals)
+                return out
+            return run
+        if e.is_Pow and e.exp.is_Integer and e.exp >= 0:
+            f, k = comp(e.base), int(e.exp)
+            return lambda vals: f(vals) ** k
+        if isinstance(e, (sp.sin, sp.cos)):
+            arg = sp.expand(e.args[0])
+            poly = sp.Poly(arg, *variables)
+            if poly.total_degree() > 1 or poly.coeff_monomial(1) != 0:
+                raise TexError(f"argument {arg} is not a linear form in {variables}")
+            cf = [sp.lambdify(params, poly.coeff_monomial(v)) for v in variables]
+            mk = EP.sin if isinstance(e, sp.sin) else EP.cos
+            return lambda vals: mk([Q(c(*vals)) for c in cf])
+        raise TexError(f"cannot expand {e}")
+
+    return comp(expr)
+
+
+def linear_triple(expr, env: dict | None = None) -> tuple[int, int, int]:
+    """``(r, g, b)`` of a printed combination ``ru+gv+bw`` (a sympy expression; letters of ``env`` substituted):
+    integer coefficients of u, v, w and nothing else."""
+    import sympy as sp
+
+    from paper_repro.claims.lines.sec4_tex import TexError
+
+    u, v, w = sp.symbols("u v w")
+    e = sp.expand(sp.sympify(expr).subs({sp.Symbol(k): x for k, x in (env or {}).items()}))
+    if not e.free_symbols <= {u, v, w}:
+        raise TexError(f"{e} is not a combination of u, v, w")
+    poly = sp.Poly(e, u, v, w)
+    if poly.total_degree() > 1 or poly.coeff_monomial(1) != 0:
+        raise TexError(f"{e} is not a linear combination of u, v, w")
+    out = tuple(poly.coeff_monomial(x) for x in (u, v, w))
+    if not all(c.is_Integer for c in out):
+        raise TexError(f"{e}: coefficients not integers")
+    return tuple(int(c) for c in out)  # type: ignore[return-value]
+
+
+# ---------------------------------------------------------------------------------------------------------------
 # phase equivalence (meaning of Definition equivalence_relation_definition)
 # ---------------------------------------------------------------------------------------------------------------
 def class_key(t) -> tuple[int, ...]:
@@ -166,135 +274,278 @@ def new_class_keys(n: int, lowest: int = 0) -> set[tuple[int, ...]]:
     return classes_of(n) - old
 
 
-def printed_relation(a, b, n: int, zmin=None, zmax=None) -> bool:
-    """The printed conditions equivalence_conditions_1/2 with z in {zmin..zmax} (printed: -n..2n)."""
-    zmin = -n if zmin is None else zmin
-    zmax = 2 * n if zmax is None else zmax
-    s = {a[k] + b[k] for k in range(3)}
-    d = {b[k] - a[k] for k in range(3)}
-    return any(len(x) == 1 and zmin <= next(iter(x)) <= zmax for x in (s, d))
+COND_LINES = (("sec4_5-cond1-row1", "sec4_5-cond1-row2", "sec4_5-cond1-row3"),
+              ("sec4_5-cond2-row1", "sec4_5-cond2-row2", "sec4_5-cond2-row3"))
 
 
-def relation_matches(n_max: int = 6, zrange=None) -> tuple[bool, dict]:
-    ok, extremes = True, set()
+def read_conditions() -> list[list]:
+    """The two printed systems equivalence_conditions_1/2, each three rows ``lhs = z`` read from the transcriptions,
+    as functions ``(r1, g1, b1, r2, g2, b2, z) -> lhs - rhs`` (a row holds when it is 0)."""
+    import sympy as sp
+
+    from paper_repro.claims.lines.sec4_tex import TexError, chain
+
+    names = sp.symbols("r1 g1 b1 r2 g2 b2 z")
+    out = []
+    for rows in COND_LINES:
+        system = []
+        for lid in rows:
+            parts = chain(verbatim(lid))
+            if len(parts) != 2:
+                raise TexError(f"{lid}: not one equation")
+            e = sp.expand(parts[0] - parts[1])
+            if not e.free_symbols <= set(names):
+                raise TexError(f"{lid}: unknown symbols in {e}")
+            system.append(sp.lambdify(names, e))
+        out.append(system)
+    return out
+
+
+def printed_relation(a, b, zs, conditions) -> bool:
+    """The printed definition: some z of ``zs`` fulfils every row of one of the two systems."""
+    return any(all(row(*a, *b, z) == 0 for row in system) for system in conditions for z in zs)
+
+
+def relation_matches(n_max: int, zrange, conditions) -> tuple[bool, dict]:
+    """The printed relation (conditions and z range as read) against phase equivalence on all pairs of E_n, and the
+    least and greatest z that relate two elements of E_n (the range must be exactly what is needed)."""
+    ok, used = True, {}
     for n in range(1, n_max + 1):
-        lo, hi = zrange(n) if zrange else (-n, 2 * n)
+        zs = zrange(n)
         for a in E(n):
             for b in E(n):
-                if printed_relation(a, b, n, lo, hi) != phase_equivalent(a, b):
+                if printed_relation(a, b, zs, conditions) != phase_equivalent(a, b):
                     ok = False
-                s = {a[k] + b[k] for k in range(3)}
-                d = {b[k] - a[k] for k in range(3)}
-                for x in (s, d):
-                    if len(x) == 1:
-                        extremes.add((n, next(iter(x))))
-    used = {n: [min(z for m, z in extremes if m == n), max(z for m, z in extremes if m == n)]
-            for n in range(1, n_max + 1)}
-    return ok, {"z_used_min_max": {str(k): v for k, v in used.items()}}
+        needed = {z for a in E(n) for b in E(n) for z in range(-3 * n, 3 * n + 1)
+                  if (all(a[k] + b[k] == z for k in range(3)) or all(b[k] - a[k] == z for k in range(3)))}
+        used[str(n)] = [min(needed), max(needed)]
+    return ok, {"z_needed_min_max": used}
 
 
-def read_z_range(override: dict[str, str] | None = None):
-    """The printed range of z, ``z\\in\\left\\{ -n,-\\left( n-1\\right) ,\\ldots,0,1,\\ldots,2n\\right\\}``, read from
-    both lines that print it (they must agree): a function n -> (first, last)."""
-    from paper_repro.printed.lines.read import bound
+def read_z_range():
+    """The printed set of z, ``\\left\\{ -n,-\\left( n-1\\right) ,\\ldots,0,1,\\ldots,2n\\right\\}``, read from
+    both lines that print it (they must agree): a function n -> the list of its integers.  Every listed element is
+    read; two listed neighbours differ by 1, elements around ``\\ldots`` increase."""
+    from paper_repro.claims.lines.sec4_tex import TexError, parse
 
-    texts = _texts({"sec4_5-z-range", "sec4_5-z-range-2"}, override)
     ends = set()
-    for tex in texts.values():
-        m = re.search(r"z\\in\\left\\\{\s*([^,]+?)\s*,.*\\ldots,\s*([^\\]+?)\s*\\right\\\}", tex)
+    for lid in ("sec4_5-z-range", "sec4_5-z-range-2"):
+        tex = verbatim(lid)
+        m = re.search(r"exists an integer \$z\\in\\left\\\{(.*)\\right\\\}\s*\$", tex)
         if not m:
-            raise ValueError(f"no range of z in {tex[:50]!r}")
-        ends.add(m.groups())
+            raise TexError(f"{lid}: no 'exists an integer z in {{..}}'")
+        ends.add(m.group(1).replace(" ", ""))
     if len(ends) != 1:
-        raise ValueError(f"the two lines print different ranges: {sorted(ends)}")
-    lo, hi = ends.pop()
-    return lambda n: (bound(lo, n=n), bound(hi, n=n))
+        raise TexError(f"the two lines print different ranges: {sorted(ends)}")
+    items = [x.strip() for x in re.split(r",(?![^()]*\\right\))", ends.pop().replace("\\left(", "(")
+                                                                     .replace("\\right)", ")"))]
+    exprs = [None if x == "\\ldots" else parse(x) for x in items]
+    if exprs[0] is None or exprs[-1] is None:
+        raise TexError("the set starts or ends with an ellipsis")
+
+    def listed(n: int) -> list[int]:
+        vals = [None if e is None else e.subs("n", n) for e in exprs]
+        for x in vals:
+            if x is not None and not x.is_Integer:
+                raise TexError(f"element {x} is not an integer")
+        for k in range(len(vals) - 1):
+            x, y = vals[k], vals[k + 1]
+            if x is not None and y is not None and y - x != 1:
+                raise TexError(f"listed neighbours {x}, {y} do not step by 1")
+            if x is None and (vals[k - 1] is None or y is None or not y >= vals[k - 1]):
+                raise TexError("elements around an ellipsis decrease")
+        return list(range(int(vals[0]), int(vals[-1]) + 1))
+
+    return listed
 
 
 @line_check("sec4_5-relation")
-def check_relation(override: dict[str, str] | None = None) -> LineResult:
-    """The printed conditions with z in the printed range (read from the transcriptions) against phase equivalence;
-    both ends of the range are used."""
+def check_relation() -> LineResult:
+    """The printed conditions (each row read) with z in the printed set (every element read, from both lines that
+    print it) against phase equivalence; the set is exactly the z that relate two elements of E_n."""
+    from paper_repro.claims.lines.sec4_tex import TexError
+
+    how = ("the two systems of conditions (each row read from the transcriptions) with z in the printed set (read "
+           "from both lines) compared with phase equivalence (a - b or a + b in Z(1,1,1)) on all pairs of E_n, "
+           "n = 1..3; the printed set equals the set of z that relate two elements of E_n")
     try:
-        zrange = read_z_range(override)
-    except ValueError as exc:
-        return LineResult(False, how="the range of z read from the transcriptions, n = 1..4", kind="exhaustive",
-                          detail={"unread": str(exc)})
-    ok, det = relation_matches(4, zrange)
-    ext = all(tuple(v) == zrange(int(k)) for k, v in det["z_used_min_max"].items())
-    return LineResult(ok and ext, how="the printed conditions (sums or differences equal to a common z in "
-                      "{-n..2n}, the range read from the transcriptions) compared with phase equivalence (a - b or "
-                      "a + b in Z(1,1,1)) on all pairs of E_n, n = 1..4; both ends of the z range are used",
-                      kind="exhaustive", detail={**det, "n_max": 4})
+        zrange, conds = read_z_range(), read_conditions()
+        ok, det = relation_matches(3, zrange, conds)
+    except (TexError, TypeError) as exc:
+        return LineResult(False, how=how, kind="exhaustive", detail={"unread": str(exc)})
+    ext = all(zrange(int(k)) == list(range(v[0], v[1] + 1)) for k, v in det["z_needed_min_max"].items())
+    return LineResult(ok and ext, how=how, kind="exhaustive", detail={**det, "n_max": 3, "range_exact": ext})
 
 
 # -- phase identities (display after the Definition) --------------------------------------------------------------
-UVA_FROM_UVW = ((1, 0, 0), (0, 1, 0), (-1, -1, 1))  # w = alpha - u - v: (a,b,c) over (u,v,w) -> (a-c, b-c, c)
+#: the lines of each phase chain, in order (each line is one or more '=' parts of the chain)
+PHASE_LINES = {"cos": ("sec4_5-cos-step1", "sec4_5-cos-step2", "sec4_5-cos-step3"), "sin": ("sec4_5-sin-step1",)}
+#: the last step of each chain (printed with 'za': an erratum each)
+PHASE_LAST = {"cos": "sec4_5-cos-step4-za", "sin": "sec4_5-sin-step2-za"}
 
 
 def _related_pairs(n: int):
+    """``(a, b, z, S)`` for every pair of E_n related by a common z: b = z(1,1,1) - a (sums, the upper sign S = 1 of
+    the printed -+) or b = z(1,1,1) + a (differences, S = -1); z over every integer that occurs."""
     for a in E(n):
         for b in E(n):
-            for z in range(-n, 2 * n + 1):
-                if all(a[k] + b[k] == z for k in range(3)):
-                    yield a, b, z, -1  # b = z - a  (upper sign)
-                if all(b[k] - a[k] == z for k in range(3)):
-                    yield a, b, z, +1  # b = z + a  (lower sign)
+            s = {a[k] + b[k] for k in range(3)}
+            d = {b[k] - a[k] for k in range(3)}
+            if len(s) == 1:
+                yield a, b, s.pop(), 1
+            if len(d) == 1:
+                yield a, b, d.pop(), -1
 
 
-@cache
-def _phase_steps(kind: str, n_max: int = 2) -> dict[str, bool]:
-    """Each '=' step of the cos (kind 'cos') or sin chain, over (u, v, alpha, a) after w = alpha - u - v.
+def _pair_subs(a, b, z, sg) -> dict:
+    import sympy as sp
 
-    ``last``: the last step with z alpha; ``last_za``: read with the printed ``za`` (a a fourth variable)."""
-    steps: dict[str, bool] = {}
-    f, g = (EP.cos, EP.sin) if kind == "cos" else (EP.sin, EP.cos)
-    emb = ((1, 0, 0, 0), (0, 1, 0, 0), (0, 0, 1, 0))  # (u, v, alpha) -> (u, v, alpha, a)
+    from paper_repro.claims.lines.sec4_tex import ALPHA, PM
+
+    names = sp.symbols("r1 g1 b1 r2 g2 b2 z")
+    u, v, w = sp.symbols("u v w")
+    return {**dict(zip(names, (*a, *b, z))), PM: sg, w: ALPHA - u - v}
+
+
+def _on_omega(expr, subs, extra=()) -> EP:
+    """``expr`` at one related pair, w = alpha - u - v, as an exact polynomial over (u, v, alpha, *extra)."""
+    import sympy as sp
+
+    from paper_repro.claims.lines.sec4_tex import ALPHA
+
+    u, v = sp.symbols("u v")
+    return to_ep(expr.subs(subs, simultaneous=True), (u, v, ALPHA, *extra))
+
+
+def phase_chain(kind: str) -> list:
+    """The '=' parts of the printed chain of ``kind`` (read from the transcriptions, in order)."""
+    from paper_repro.claims.lines.sec4_tex import chain
+
+    return [part for lid in PHASE_LINES[kind] for part in chain(verbatim(lid))]
+
+
+def _pair_params():
+    import sympy as sp
+
+    from paper_repro.claims.lines.sec4_tex import PM
+
+    return (*sp.symbols("r1 g1 b1 r2 g2 b2 z"), PM)
+
+
+def _compile_on_omega(expr, extra=()):
+    """``expr`` with w = alpha - u - v compiled over (u, v, alpha, *extra) with the pair parameters."""
+    import sympy as sp
+
+    from paper_repro.claims.lines.sec4_tex import ALPHA
+
+    u, v, w = sp.symbols("u v w")
+    return compile_ep(expr.subs(w, ALPHA - u - v), (u, v, ALPHA, *extra), _pair_params())
+
+
+def phase_steps(kind: str, n_max: int = 2) -> list[bool]:
+    """Each '=' step of the printed chain, exactly at every related pair of E_n, n <= n_max (both signs)."""
+    from paper_repro.claims.lines.sec4_tex import TexError
+
+    parts = phase_chain(kind)
+    if len(parts) < 2:
+        raise TexError(f"a chain of {len(parts)} parts")
+    fs = [_compile_on_omega(x) for x in parts]
+    ok = [True] * (len(parts) - 1)
     for n in range(1, n_max + 1):
         for a, b, z, sg in _related_pairs(n):
-            lhs = f(b).linear(UVA_FROM_UVW)
-            s1 = f(tuple(z + sg * x for x in a)).linear(UVA_FROM_UVW)  # (z -+ r1) u + (z -+ g1) v + (z -+ b1) w
-            # z(u+v+w) -+ X with u + v + w = alpha, X = r1 u + g1 v + b1 (alpha - u - v):
-            s3 = f(tuple(Q(sg * (a[k] - a[2])) for k in range(2)) + (Q(z + sg * a[2]),))
-            cosX, sinX = EP.cos(a).linear(UVA_FROM_UVW), EP.sin(a).linear(UVA_FROM_UVW)
-            cosX4, sinX4 = cosX.linear(emb), sinX.linear(emb)
-            lasts = {}
-            for key, za in (("last", (0, 0, 1, 0)), ("last_za", (0, 0, 0, 1))):
-                zfreq = tuple(z * x for x in za)
-                if kind == "cos":  # cos(za) cos X +- sin(za) sin X, upper sign + for b = z - a
-                    last = EP.cos(zfreq) * cosX4 + (EP.sin(zfreq) * sinX4) * (-sg)
-                else:  # sin(za) cos X -+ cos(z alpha) sin X
-                    last = EP.sin(zfreq) * cosX4 + (EP.cos((0, 0, z, 0)) * sinX4) * sg
-                lasts[key] = s3.linear(emb) == last
-            for key, ok in (("step1", lhs == s1), ("step2_3", s1 == s3), *lasts.items()):
-                steps[key] = steps.get(key, True) and ok
-    return steps
+            eps = [f((*a, *b, z, sg)) for f in fs]
+            ok = [o and eps[k] == eps[k + 1] for k, o in enumerate(ok)]
+    return ok
+
+
+def phase_last(kind: str, n_max: int = 2) -> tuple[bool, bool]:
+    """The last step (printed, with the symbol a of 'za' a free variable; and with a = alpha) against the previous
+    part of the chain, at every related pair of E_n, n <= n_max."""
+    import sympy as sp
+
+    from paper_repro.claims.lines.sec4_tex import ALPHA, TexError, chain
+
+    prev = phase_chain(kind)[-1]
+    last = chain(verbatim(PHASE_LAST[kind]))
+    if len(last) != 1:
+        raise TexError(f"the last step has {len(last)} parts")
+    a = sp.Symbol("a")
+    f_prev, f_last = _compile_on_omega(prev, (a,)), _compile_on_omega(last[0], (a,))
+    f_corr = _compile_on_omega(last[0].subs(a, ALPHA), (a,))
+    printed = corrected = True
+    for n in range(1, n_max + 1):
+        for a_, b, z, sg in _related_pairs(n):
+            vals = (*a_, *b, z, sg)
+            lhs = f_prev(vals)
+            printed &= lhs == f_last(vals)
+            corrected &= lhs == f_corr(vals)
+    return printed, corrected
+
+
+def phase_meaning() -> dict[str, bool]:
+    """The prose after the cos chain: cos(r2u+g2v+b2w) differs from cos(r1u+g1v+b1w) by a phase change and is a
+    linear combination of cos and sin of r1u+g1v+b1w.  The four functions are read from the transcription; the
+    combination cos(z alpha) cos X + S sin(z alpha) sin X is computed here (not read), exactly at every related pair
+    of E_n, n <= 2."""
+    import sympy as sp
+
+    from paper_repro.claims.lines.sec4_tex import ALPHA, TexError, parse
+
+    tex = verbatim("sec4_5-phase-meaning")
+    pieces = [parse(x) for x in re.findall(r"\$([^$]*)\$", tex)]
+    if len(pieces) != 4 or not all(isinstance(x, (sp.sin, sp.cos)) for x in pieces):
+        raise TexError(f"{len(pieces)} functions, not 4")
+    f0, f1, f2, f3 = pieces
+    words = {"phase": "phase change" in tex, "combination": "linear combination" in tex and "differs" in tex}
+    same_arg = f1.args[0] == f2.args[0] == f3.args[0] and {type(f2), type(f3)} == {sp.sin, sp.cos}
+    cos_x, sin_x = (f2, f3) if isinstance(f2, sp.cos) else (f3, f2)
+    same_function = type(f0) is type(f1)
+    z, sg = sp.Symbol("z"), _pair_params()[-1]
+    rhs = sp.cos(z * ALPHA) * cos_x + sg * sp.sin(z * ALPHA) * sin_x if isinstance(f0, sp.cos) else \
+        sp.sin(z * ALPHA) * cos_x - sg * sp.cos(z * ALPHA) * sin_x
+    f_lhs, f_rhs = _compile_on_omega(f0), _compile_on_omega(rhs)
+    combo = all(f_lhs((*a, *b, zz, s)) == f_rhs((*a, *b, zz, s)) for n in (1, 2) for a, b, zz, s in _related_pairs(n))
+    return {**words, "same_argument_X": same_arg, "same_function_phase": same_function,
+            "combination_of_cos_sin_X": combo}
 
 
 def _register_phase(kind: str, steps_how: str, za_how: str) -> None:
     """Register the two checks of the phase identity for ``kind`` ("cos" or "sin"): its steps, and its last step
     with the printed 'za' (sec4_5-phase-<kind> and sec4_5-phase-<kind>-za)."""
+    from paper_repro.claims.lines.sec4_tex import TexError
 
     @line_check(f"sec4_5-phase-{kind}")
     def check_steps() -> LineResult:
-        st = _phase_steps(kind)
-        return LineResult(st["step1"] and st["step2_3"], how=steps_how, kind="exhaustive",
-                          detail={k: v for k, v in st.items() if not k.startswith("last")})
+        try:
+            steps = phase_steps(kind)
+            meaning = phase_meaning() if kind == "cos" else {}
+        except TexError as exc:
+            return LineResult(False, how="the chain read from the transcriptions", kind="exhaustive",
+                              detail={"unread": str(exc)}) if False else LineResult(
+                False, how="the chain read from the transcriptions, n <= 2", kind="exhaustive",
+                detail={"unread": str(exc)})
+        return LineResult(all(steps) and all(meaning.values()), how=steps_how, kind="exhaustive",
+                          detail={"steps": steps, **meaning})
 
     @line_check(f"sec4_5-phase-{kind}-za")
     def check_za() -> LineResult:
-        st = _phase_steps(kind)
-        printed, corrected = st["last_za"], st["last"]
+        try:
+            printed, corrected = phase_last(kind)
+        except TexError as exc:
+            return LineResult(False, how="the last step read from the transcription, n <= 2", kind="exhaustive",
+                              detail={"unread": str(exc)})
         return LineResult(printed, corrected, how=za_how, kind="exhaustive",
                           detail={"printed_za": printed, "with_z_alpha": corrected})
 
 
-_register_phase("cos", "exponential expansion over (u, v, alpha) with w = alpha - u - v, every related pair of "
-                "E_n, n <= 2, both signs", "last step expanded with the printed 'za' read as z times a free a, "
-                "and with z alpha, every related pair of E_n, n <= 2")
-_register_phase("sin", "exponential expansion, every related pair of E_n, n <= 2, both signs: "
-                "sin(r2 u + g2 v + b2 w) = sin(z alpha -+ X)",
-                "as sec4_5-phase-cos-za for sin(za) cos X -+ cos(z alpha) sin X, n <= 2")
+_register_phase("cos", "each '=' step of the chain read from the transcriptions (z, the signs -+ / +- as S = +-1) "
+                "expanded exactly over (u, v, alpha) with w = alpha - u - v, at every related pair of E_n, n <= 2, "
+                "both signs; the prose after it (its four functions read) against cos(z alpha) cos X + S sin(z "
+                "alpha) sin X", "the last step read from the transcription: with the printed 'za' (a a free "
+                "variable) and with a = alpha, against the previous part, every related pair of E_n, n <= 2")
+_register_phase("sin", "each '=' step of the sin chain read from the transcription, expanded exactly with w = alpha "
+                "- u - v at every related pair of E_n, n <= 2, both signs",
+                "as sec4_5-phase-cos-za for the sin chain, n <= 2")
 
 
 # -- readers of the worked examples (triples ru+gv+bw as printed) -------------------------------------------------
@@ -362,42 +613,257 @@ def check_examples_n3(override: dict[str, str] | None = None) -> LineResult:
 
 
 # -- orders 1 and 2 -----------------------------------------------------------------------------------------------
-def _orders_1_2(override: dict[str, str] | None = None) -> dict[str, bool]:
-    """The worked text of orders 1 and 2; V_1, the six classes of order 2 and V_2 are read from the transcriptions
-    (the other items are the text's facts, written here)."""
+_REL = re.compile(r"(\\nsim|\\sim(?![a-z])|\\notin|\\in(?![a-z])|=)")
+
+
+def split_relations(math: str) -> list[str]:
+    """``[item, relation, item, ...]``: ``math`` split at the relations of brace depth 0."""
+    out, depth, last = [], 0, 0
+    for m in re.finditer(r"[{}]|" + _REL.pattern, math):
+        tok = m.group()
+        if tok == "{":
+            depth += 1
+        elif tok == "}":
+            depth -= 1
+        elif depth == 0:
+            out += [math[last:m.start()], tok]
+            last = m.end()
+    return out + [math[last:]]
+
+
+def read_set_of_classes(item: str, env: dict | None = None) -> set:
+    """``E_{a}^{\\alpha}/_{\\sim}`` or ``E_{a}/_{\\sim}\\setminus\\left( E_{b}/_{\\sim}\\cup ..\\right)``: the class keys
+    of E_a not in the removed E_b (indices evaluated with ``env``)."""
+    from paper_repro.claims.lines.sec4_tex import TexError, parse
+
+    text = item.replace("%", " ")
+    head, _, removed = text.partition("\\setminus")
+    idx = re.findall(r"E_\{([^{}]+)\}\^\{\\alpha\s*\}\s*/_\{\\sim,?\}", head)
+    if len(idx) != 1 or re.sub(r"E_\{[^{}]+\}\^\{\\alpha\s*\}\s*/_\{\\sim,?\}", "", head).strip():
+        raise TexError(f"not a quotient set: {item[:40]!r}")
+    gone = re.findall(r"E_\{([^{}]+)\}\^\{\\alpha\s*\}\s*/_\{\\sim,?\}", removed)
+    if removed.strip() and not gone:
+        raise TexError(f"unread removed sets {removed[:40]!r}")
+
+    def val(x: str) -> int:
+        e = parse(x).subs({k: v for k, v in (env or {}).items()})
+        if not e.is_Integer:
+            raise TexError(f"index {x!r} is not an integer")
+        return int(e)
+
+    out = classes_of(val(idx[0]))
+    for g in gone:
+        out -= classes_of(val(g))
+    return out
+
+
+def read_item(item: str, env: dict | None = None):
+    """One member of a printed relation chain: ``("class", key)``, ``("set", keys)`` or ``("triple", t)``."""
+    from paper_repro.claims.lines.sec4_tex import parse
+
+    text = item.strip().replace("%", " ").strip()
+    m = re.fullmatch(r"\\left\[\s*(.*?)\s*\\right\]", text)
+    if m:
+        return "class", class_key(linear_triple(parse(m.group(1)), env))
+    if "E_{" in text:
+        return "set", read_set_of_classes(text, env)
+    return "triple", linear_triple(parse(text), env)
+
+
+def relation_chain_holds(math: str, env: dict | None = None) -> bool:
+    """Every link of a printed chain such as ``1\\cdot u+1\\cdot v+1\\cdot w\\sim0\\cdot u+..\\in\\left[ 0\\right]
+    \\in E_{0}^{\\alpha}/_{\\sim}`` against the class keys (``~``: same class; ``\\in`` a class: same class; ``=``
+    of classes: same key; ``\\in`` a set: member); a link the reader does not know raises."""
+    from paper_repro.claims.lines.sec4_tex import TexError
+
+    parts = split_relations(math)
+    items = [read_item(x, env) for x in parts[0::2]]
+    rels = parts[1::2]
+    if not rels:
+        raise TexError(f"no relation in {math[:40]!r}")
+    ok = True
+    for (ka, a), rel, (kb, b) in zip(items, rels, items[1:]):
+        ka_key = class_key(a) if ka == "triple" else a
+        if kb == "set":
+            if ka == "set":
+                raise TexError("a set related to a set")
+            ok &= (ka_key in b) == (rel == "\\in")
+            if rel not in ("\\in", "\\notin"):
+                raise TexError(f"{rel} before a set")
+        elif rel in ("\\sim", "\\nsim", "=", "\\in"):
+            kb_key = class_key(b) if kb == "triple" else b
+            if rel == "\\in" and kb != "class":
+                raise TexError("\\in before a combination")
+            if rel == "=" and (ka, kb) != ("class", "class"):
+                raise TexError("= between combinations")
+            ok &= (ka_key == kb_key) == (rel != "\\nsim")
+        else:
+            raise TexError(f"unknown link {rel}")
+    return ok
+
+
+def _math(tex: str) -> list[str]:
+    return re.findall(r"\$([^$]*)\$", tex)
+
+
+def read_order_classes(tex: str) -> dict[str, bool]:
+    """``\\left[ ru+gv+bw\\right] \\in E_{a}/_{\\sim}\\setminus .., where at least one of the coefficients r,g,b is equal
+    to $c$``: every new class of the printed difference of quotient sets is met, in E_a, only by triples with a
+    coefficient c (the new classes of order a are those of the triples with a coefficient a)."""
+    from paper_repro.claims.lines.sec4_tex import TexError
+
+    m = re.search(r"\\left\[\s*ru\+gv\+bw\\right\]\s*\\in(.*?),\s*\\\]\s*where at least one of the coefficients "
+                  r"\$r,g,b\$ is equal to \$(\d+)\$\.", tex)
+    if not m:
+        raise TexError("no 'classes in E_a/~ \\ .. where at least one of r,g,b is equal to c'")
+    new = read_set_of_classes(m.group(1))
+    order = int(re.search(r"E_\{(\d+)\}", m.group(1)).group(1))
+    c = int(m.group(2))
+    members = [t for t in E(order) if class_key(t) in new]
+    return {"classes_new": bool(new) and new == new_class_keys(order),
+            "coefficient_c": all(c in t for t in members)}
+
+
+def read_if_then(tex: str) -> tuple[list[dict], list[str]]:
+    """``If $r=a$ and $g\\in\\left\\{ ..\\right\\} $, then $..$``: the environments the condition allows and the
+    math of the conclusion."""
+    from paper_repro.claims.lines.sec4_tex import TexError, chain, parse
+
+    m = re.match(r"\s*If (.*?), then (.*)$", tex)
+    if not m:
+        raise TexError("no 'If .., then ..'")
+    envs: list[dict] = [{}]
+    for cond in _math(m.group(1)):
+        for piece in [x for x in re.split(r",(?![^{}]*\\right\\\})", cond) if x.strip()]:
+            ms = re.fullmatch(r"\s*(\w)\s*\\in\s*\\left\\\{(.*)\\right\\\}\s*", piece)
+            if ms:
+                vals = [int(parse(x)) for x in ms.group(2).split(",")]
+                envs = [{**e, ms.group(1): x} for e in envs for x in vals]
+                continue
+            parts = chain(piece)
+            if len(parts) < 2 or not parts[-1].is_Integer or not all(p.is_Symbol for p in parts[:-1]):
+                raise TexError(f"unread condition {piece!r}")
+            envs = [{**e, **{str(p): int(parts[-1]) for p in parts[:-1]}} for e in envs]
+    return envs, _math(m.group(2))
+
+
+def _orders_1_2() -> dict[str, bool]:
+    """The worked text of orders 1 and 2, every statement read from its transcription and checked with the class keys
+    of phase equivalence."""
+    import sympy as sp
+
+    from paper_repro.claims.lines.sec4_tex import TexError, chain, parse
+
     k = class_key
-    t = _texts({"sec4_5-V1", "sec4_5-n2-classes-row1", "sec4_5-n2-classes-row2", "sec4_5-n2-classes-row3",
-                "sec4_5-V2-row1", "sec4_5-V2-row2", "sec4_5-V2-row3"}, override)
-    v1 = read_cos_args(t["sec4_5-V1"])
+    t = live_texts()
+    out: dict[str, bool] = {}
+    for lid in ("sec4_5-order1-classes", "sec4_5-order2-classes"):
+        out.update({f"{lid}:{x}": v for x, v in read_order_classes(t[lid]).items()})
+    rel = t["sec4_5-order1-relations"]
+    pieces = _math(rel)
+    out["order1_relations"] = rel.startswith("Since") and len(pieces) == 4 and all(
+        relation_chain_holds(x) for x in pieces)
+    # b = 2 (the case the text assumes), r = g = 2
+    envs, concl = read_if_then(t["sec4_5-n2-222"])
+    first = re.match(r"\s*\\left\[\s*(.*?)\s*\\right\]", concl[0]) if len(concl) == 1 else None
+    if not first:
+        raise TexError("sec4_5-n2-222: no class")
+    out["222"] = len(envs) == 1 and relation_chain_holds(concl[0]) and linear_triple(parse(first.group(1))) == (
+        envs[0].get("r"), envs[0].get("g"), 2)
+    # 0 < r <= g <= 2, i.e. r = 1, g in {1, 2}; z = min{r, g} = 1
+    pieces = _math(t["sec4_5-n2-r1"])
+    if len(pieces) != 3:
+        raise TexError("sec4_5-n2-r1: not three formulas")
+    ineq = re.split(r"(<|\\leq)", pieces[0].replace(" ", ""))
+    terms = [parse(x) for x in ineq[0::2]]
+    rs, gs = sp.symbols("r g")
+    grid = [(r, g) for r in range(3) for g in range(3)]
+    sat = {(r, g) for r, g in grid
+           if all((x.subs({rs: r, gs: g}) < y.subs({rs: r, gs: g})) if op == "<"
+                  else (x.subs({rs: r, gs: g}) <= y.subs({rs: r, gs: g}))
+                  for x, op, y in zip(terms, ineq[1::2], terms[1:]))}
+    envs_r1, _ = read_if_then(f"If ${pieces[1]}$, then $x$")
+    stated = {(e["r"], e["g"]) for e in envs_r1}
+    out["r1_is_the_rest_of_0<r<=g<=2"] = sat - {(2, 2)} == stated  # r = g = 2 was treated in the sentence before
+    zparts = chain(pieces[2])
+    zsym = zparts[0]
+    out["z_min_is_1"] = len(zparts) == 3 and zsym == sp.Symbol("z") and all(
+        zparts[1].subs({rs: r, gs: g}) == zparts[2] for r, g in stated)
+    zval = int(zparts[2])
+    # the chain ru+gv+2w = ... (u + v + w = alpha), for the stated (r, g) and z
+    ch = chain(t["sec4_5-n2-chain"])
+    u, v, w = sp.symbols("u v w")
+    from paper_repro.claims.lines.sec4_tex import ALPHA
+
+    ok_chain = len(ch) == 4
+    for r, g in stated:
+        vals = [sp.expand(x.subs({rs: r, gs: g, zsym: zval}).subs(ALPHA, u + v + w)) for x in ch]
+        ok_chain &= all(x == vals[0] for x in vals) and ch[0].subs({rs: r, gs: g}) == r * u + g * v + 2 * w
+        ok_chain &= not (ch[-1].free_symbols & {u, rs})  # the last form has no u: z = r
+    out["chain"] = ok_chain
+    # u+gv+2w in [(g-z)v+w] = {[w] (g = 1), [v+w] = [u] (g = 2)}
+    g12 = t["sec4_5-n2-g12"].replace("%", " ")
+    head, _, rows = g12.partition("\\begin{array} [c]{rc}")
+    rows = rows.split("\\end{array}")[0]
+    mh = re.fullmatch(r"\s*(.*?)\\in\s*\\left\[\s*(.*?)\s*\\right\]\s*=\s*\\left\\\{\s*", head)
+    if not mh:
+        raise TexError("sec4_5-n2-g12: unread head")
+    ok_g12, seen = True, set()
+    for row in [x for x in rows.split("\\\\") if x.strip()]:
+        stmt, _, cond = row.partition("&")
+        mc = re.fullmatch(r"\s*g=(\d+)[.,]?\s*", cond)
+        if not mc:
+            raise TexError(f"sec4_5-n2-g12: unread row condition {cond!r}")
+        env = {"g": int(mc.group(1)), "z": zval}
+        seen.add(env["g"])
+        lhs, cls = linear_triple(parse(mh.group(1)), env), linear_triple(parse(mh.group(2)), env)
+        first_cls = re.match(r"\s*\\left\[\s*(.*?)\s*\\right\]", stmt)
+        ok_g12 &= k(lhs) == k(cls) and bool(first_cls) and k(linear_triple(parse(first_cls.group(1)), env)) == k(cls)
+        ok_g12 &= relation_chain_holds(stmt, env)
+    out["g12"] = ok_g12 and seen == {g for _, g in stated}
+    # r = 0, g in {0, 1, 2}: [gv + 2w] new at order 2
+    envs, concl = read_if_then(t["sec4_5-n2-r0"])
+    ok_r0 = len(concl) == 1 and len(envs) >= 1
+    for env in envs:
+        cls = re.match(r"\s*\\left\[\s*(.*?)\s*\\right\]", concl[0])
+        ok_r0 &= bool(cls) and relation_chain_holds(concl[0], env) and linear_triple(
+            parse(cls.group(1)), env) == (env.get("r"), env.get("g"), 2)
+    out["r0"] = ok_r0
+    # [2v+2w] reappears as [2u], new at order 2
+    pieces = _math(t["sec4_5-n2-2v2w"])
+    if len(pieces) != 2:
+        raise TexError("sec4_5-n2-2v2w: not two formulas")
+    a_cls = read_item(pieces[0])
+    b_cls = read_item(split_relations(pieces[1])[0])
+    out["2v2w_is_2u"] = a_cls[0] == b_cls[0] == "class" and a_cls[1] == b_cls[1] and relation_chain_holds(
+        pieces[1]) and "must be ignored" in t["sec4_5-n2-2v2w"] and "reappear" in t["sec4_5-n2-2v2w"]
+    # the six classes of order 2, V_1 and V_2
     n2 = [c for r in (1, 2, 3) for c in read_class_family(t[f"sec4_5-n2-classes-row{r}"])]
-    v2 = [a for r in (1, 2, 3) for a in read_cos_args(t[f"sec4_5-V2-row{r}"])]
-    out = {
-        "new_order_1_are_u_v_w": new_class_keys(1) == {k((1, 0, 0)), k((0, 1, 0)), k((0, 0, 1))},
-        "new_order_1_contain_a_1": all(max(t) == 1 for t in E(1) if k(t) in new_class_keys(1)),
-        "order_1_relations": all(phase_equivalent(a, b) for a, b in (((1, 1, 1), (0, 0, 0)), ((1, 1, 0), (0, 0, 1)),
-                                                                     ((1, 0, 1), (0, 1, 0)), ((0, 1, 1), (1, 0, 0)))),
-        "V1_is_V0_plus_u_v_w": {k(t) for t in v1} == new_class_keys(1) and len(v1) == 3,
-        "222_is_0": k((2, 2, 2)) == k((0, 0, 0)),
-        "r1_g12_chain": all(
-            tuple(x - 1 for x in (1, g, 2)) == (0, g - 1, 1) and k((1, g, 2)) == k((0, g - 1, 1)) for g in (1, 2)),
-        "g1_is_w_g2_is_v_plus_w_is_u": k((1, 1, 2)) == k((0, 0, 1)) and k((1, 2, 2)) == k((0, 1, 1)) == k((1, 0, 0)),
-        "r0_classes_new": all(k((0, g, 2)) in new_class_keys(2) for g in range(3)),
-        "2v2w_is_2u": k((0, 2, 2)) == k((2, 0, 0)),
-        "six_classes_n2": {k(t) for t in n2} == new_class_keys(2) and len(n2) == 6,
-        "V2_printed": {k(t) for t in v2} == new_class_keys(2) and len(v2) == 6,
-    }
+    out["six_classes_n2"] = {k(x) for x in n2} == new_class_keys(2) and len(n2) == 6
+    v1 = read_cos_args(t["sec4_5-V1"])
+    m1 = re.match(r"\s*V_\{(\d+)\}\^\{\\alpha\}=V_\{(\d+)\}\^\{\\alpha\}\\cup", t["sec4_5-V1"])
+    out["V1"] = bool(m1) and {k(x) for x in v1} == new_class_keys(int(m1.group(1))) and len(v1) == 3 and int(
+        m1.group(2)) == int(m1.group(1)) - 1 == 0
+    v2 = [x for r in (1, 2, 3) for x in read_cos_args(t[f"sec4_5-V2-row{r}"])]
+    m2 = re.match(r"\s*V_\{(\d+)\}\^\{\\alpha\}=\s*&\s*V_\{(\d+)\}\^\{\\alpha\}\\cup", t["sec4_5-V2-row1"])
+    rows_cup = all(re.match(r"\s*&\s*\\cup\\left\\\{", t[f"sec4_5-V2-row{r}"]) for r in (2, 3))
+    out["V2"] = bool(m2) and rows_cup and {k(x) for x in v2} == new_class_keys(int(m2.group(1))) and len(v2) == 6 \
+        and int(m2.group(2)) == int(m2.group(1)) - 1 == 1
     return out
 
 
 @line_check("sec4_5-orders-1-2")
-def check_orders_1_2(override: dict[str, str] | None = None) -> LineResult:
+def check_orders_1_2() -> LineResult:
+    from paper_repro.claims.lines.sec4_tex import TexError
+
+    how = ("every statement of the worked text of orders 1 and 2 read from its transcription (relations, classes, "
+           "quotient sets, conditions, the chain, V_1, the six classes, V_2) against the class keys of phase "
+           "equivalence")
     try:
-        out = _orders_1_2(override)
-    except ValueError as exc:
-        return LineResult(False, how="the worked text read from the transcriptions", kind="proof",
-                          detail={"unread": str(exc)})
-    return LineResult(all(out.values()), how="class keys of phase equivalence (order 1 and order 2 worked text; V_1, "
-                      "the six classes and V_2 read from the transcriptions)", kind="proof", detail=out)
+        out = _orders_1_2()
+    except (TexError, TypeError, KeyError) as exc:
+        return LineResult(False, how=how, kind="proof", detail={"unread": str(exc)})
+    return LineResult(all(out.values()), how=how, kind="proof", detail=out)
 
 
 def b2_classes(restrict_r_le_g: bool) -> set:
