@@ -105,7 +105,7 @@ class _Parser:
         if tok in ("(", "[", "{") or tok.isdigit() or (len(tok) == 1 and tok.isalpha()):
             return True
         return tok in ("\\frac", "\\dfrac", "\\tfrac", "\\binom", "\\dbinom", "\\sin", "\\cos", "\\sum", "\\min",
-                       "\\max", "\\underset", "\\underbrace", "\\{") or tok[1:] in _GREEK
+                       "\\max", "\\underset", "\\underbrace", "\\{", "\\dim", "\\delta") or tok[1:] in _GREEK
 
     # term := factor { ['\cdot'|'*'|'/'] factor }
     def term(self) -> sp.Expr:
@@ -222,6 +222,22 @@ class _Parser:
             return self.group()
         if tok == "\\underbrace":
             return self.group()
+        if tok == "\\dim":  # \dim\mathcal{V}_{n}^{\alpha} -> dim_V(n)
+            self.take("\\mathcal")
+            self.take("{")
+            name = self.take()
+            self.take("}")
+            self.take("_")
+            sub = self.group()
+            if self.peek() == "^":
+                self.take("^")
+                self.take("{")
+                self.take("\\alpha")
+                self.take("}")
+            return sp.Function(f"dim_{name}")(sub)
+        if tok == "\\delta":  # \delta_{n} -> delta(n)
+            self.take("_")
+            return sp.Function("delta")(self.group())
         if tok[1:] in _GREEK:
             return _GREEK[tok[1:]]
         raise TexError(f"unread {tok!r} at token {self.k - 1}")
@@ -245,7 +261,12 @@ def _strip_end(toks: list[str]) -> list[str]:
 
 
 def chain(tex: str, rel: str = "=") -> list[sp.Expr]:
-    """The parts of a chain ``a = b = c`` (``rel`` the relation token; the ``&`` of an alignment ignored)."""
+    """The parts of a chain ``a = b = c`` (``rel`` the relation token; the ``&`` of an alignment ignored).
+    ``\\dim\\mathcal{V}_{n}^{\\alpha}`` reads as ``dim_V(n)``, ``\\delta_{n}`` as ``delta(n)``.
+
+    >>> chain(r"\\dim\\mathcal{V}_{n}^{\\alpha}=\\dim\\mathcal{V}_{n-1}^{\\alpha}+6n")
+    [dim_V(n), 6*n + dim_V(n - 1)]
+    """
     toks = _strip_end(tokens(tex))
     parts: list[list[str]] = [[]]
     depth = 0
