@@ -881,21 +881,38 @@ def check_orders_1_2() -> LineResult:
     return LineResult(all(out.values()), how=how, kind="proof", detail=out)
 
 
-def b2_classes(restrict_r_le_g: bool) -> set:
-    """New classes of order 2 met by the triples (r, g, 2) (with r <= g or r = 0 if ``restrict_r_le_g``)."""
+def b2_classes(b: int, restrict_r_le_g: bool) -> set:
+    """New classes of order 2 met by the triples (r, g, b) (only r <= g if ``restrict_r_le_g``: the cases the text
+    treats, r = g = 2, 0 < r <= g <= 2 and r = 0)."""
     new = new_class_keys(2)
-    return {class_key((r, g, 2)) for r in range(3) for g in range(3)
-            if class_key((r, g, 2)) in new and (not restrict_r_le_g or r <= g)}
+    return {class_key((r, g, b)) for r in range(3) for g in range(3)
+            if class_key((r, g, b)) in new and (not restrict_r_le_g or r <= g)}
+
+
+NUMBER_WORDS = {"one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7}
 
 
 @line_check("sec4_5-b2-three-classes")
 def check_b2() -> LineResult:
-    printed_set = {class_key((0, g, 2)) for g in range(3)}
-    all_b2, ordered = b2_classes(False), b2_classes(True)
-    return LineResult(all_b2 == printed_set, ordered == printed_set,
-                      how="new classes of E_2 met by the triples (r, g, 2): all of them, and those with r <= g "
-                          "(the cases the text treats)", kind="proof",
-                      detail={"classes_met_by_b_2": len(all_b2), "printed": 3, "with_r_le_g": len(ordered),
+    """The printed value of b, the count (a word) and the family {[gv+2w]}_{g=0}^{2} are read; printed: they are all
+    the new classes of E_2 met by (r, g, b); corrected: those met with r <= g (the cases the text treats)."""
+    how = ("new classes of E_2 met by the triples (r, g, b) with the printed b: all of them (printed), those with "
+           "r <= g (corrected), against the printed family and count (read from the transcription)")
+    tex = verbatim("sec4_5-n2-b2-three")
+    m = re.fullmatch(r"Thus, equality \$b=(\d+)\$ generates only (\w+) acceptable equivalence classes, namely "
+                     r"\$(.*)\$", tex)
+    try:
+        if not m or m.group(2) not in NUMBER_WORDS:
+            raise ValueError("unread line")
+        bb, count = int(m.group(1)), NUMBER_WORDS[m.group(2)]
+        fam = read_class_family(m.group(3))
+        keys = {class_key(t) for t in fam}
+    except (ValueError, TypeError) as exc:
+        return LineResult(False, how=how, kind="proof", detail={"unread": str(exc)})
+    shape = len(keys) == len(fam) == count and all(t[2] == bb for t in fam)
+    all_b2, ordered = b2_classes(bb, False), b2_classes(bb, True)
+    return LineResult(shape and all_b2 == keys, shape and ordered == keys, how=how, kind="proof",
+                      detail={"classes_met_by_b": len(all_b2), "printed": count, "with_r_le_g": len(ordered),
                               "missed_triples": ["(1,0,2) in [u+2v]", "(2,0,2) in [2v]"]})
 
 
@@ -903,47 +920,68 @@ def check_b2() -> LineResult:
 def read_prop_families(tex: str, n: int) -> list[tuple[int, int, int]]:
     """The representatives of the printed families ``\\left\\{ \\left[ .. \\right] \\right\\} _{g=0}^{n-1}`` of
     Proposition iterative_construction_of_trivariate_extension at order n, read from the transcription."""
+    from paper_repro.claims.lines.sec4_tex import parse
     from paper_repro.printed.lines.read import bound
 
-    fams = re.findall(r"\\left\[\s*(.*?)\s*\\right\]\s*\\right\\\}\s*_\{(\w)=([^{}]+)\}\^\{([^{}]+)\}", tex)
+    fams = re.findall(r"\\left\\\{\s*\\left\[\s*(.*?)\s*\\right\]\s*\\right\\\}\s*_\{(\w)=([^{}]+)\}\^\{([^{}]+)\}", tex)
     if len(fams) != 3:
         raise ValueError(f"{len(fams)} families of classes, not 3")
-    return [read_triple(expr, n=n, **{var: x}) for expr, var, lo, hi in fams
+    return [linear_triple(parse(expr), {"n": n, var: x}) for expr, var, lo, hi in fams
             for x in range(bound(lo, n=n), bound(hi, n=n) + 1)]
 
 
-def read_union_start(override: dict[str, str] | None = None) -> int:
-    """The lowest i of the printed union cup_{i=a}^{n-1} E_i/~ (the same in both lines of the Proposition)."""
-    texts = _texts({"sec4_5-prop-recurrence", "sec4_5-prop-new-classes"}, override)
-    starts = {m for t in texts.values() for m in re.findall(r"\\cup_\{i=(\d+)\}\^\{n-1\}", t)}
-    if len(starts) != 1:
-        raise ValueError(f"the union starts at {sorted(starts)}")
-    return int(starts.pop())
+_UNION = re.compile(r"E_\{n\}\^\{\\alpha\}/_\{\\sim\}\\setminus\\left\(\s*\\cup_\{i=(\d+)\}\^\{([^{}]+)\}E_\{i\}"
+                    r"\^\{\\alpha\}/_\{\\sim\s*\}\\right\)")
 
 
-def prop_sets_agree(n_max: int, lowest: int, override: dict[str, str] | None = None) -> dict[int, bool]:
-    """E_n/~ minus the union over i = lowest..n-1 against the printed 3n representatives (read)."""
-    tex = _texts({"sec4_5-prop-new-classes"}, override)["sec4_5-prop-new-classes"]
+def read_prop() -> tuple[int, str]:
+    """The union cup_{i=a}^{b} E_i/~ removed from E_n/~ in both lines of the Proposition (they must agree), and the
+    recurrence's other parts: V_n = V_{n-1} cup {cos, sin of one combination : (u,v,w) in Omega, [the same] in ..}."""
+    texts = [verbatim("sec4_5-prop-recurrence").replace("%", " "), verbatim("sec4_5-prop-new-classes")]
+    unions = {m for t in texts for m in _UNION.findall(t)}
+    if len(unions) != 1 or not all(_UNION.search(t) for t in texts):
+        raise ValueError(f"the unions differ or are unread: {sorted(unions)}")
+    rec = texts[0]
+    m = re.match(r"\s*V_\{n\}\^\{\\alpha\}=V_\{n-1\}\^\{\\alpha\}\\cup\\left\\\{\s*\\cos\\left\(\s*ru\+gv\+bw\\right\)\s*,"
+                 r"\\sin\\left\(\s*ru\+gv\+bw\\right\)\s*:\\left\(\s*u,v,w\\right\)\s*\\in\\Omega\^\{\\alpha\s*\},~"
+                 r"\\left\[\s*ru\+gv\+bw\\right\]\s*\\in\s*(.*?)\\right\\\}\s*\\\]\s*$", rec)
+    if not m or not _UNION.fullmatch(m.group(1).strip()):
+        raise ValueError("unread recurrence")
+    if not re.match(r"\s*E_\{n\}\^\{\\alpha\}/_\{\\sim\}\\setminus\\left\(\s*\\cup.*?\\right\)\s*=", texts[1]):
+        raise ValueError("unread left side of the new classes")
+    lo, hi = unions.pop()
+    return int(lo), hi
+
+
+def prop_sets_agree(n_max: int, lowest: int, top: str) -> dict[int, bool]:
+    """E_n/~ minus the union over i = lowest..top(n) against the printed representatives (read): distinct classes,
+    exactly the new ones."""
+    from paper_repro.printed.lines.read import bound
+
+    tex = verbatim("sec4_5-prop-new-classes")
     out = {}
     for n in range(1, n_max + 1):
         reps = read_prop_families(tex, n)
         keys = [class_key(t) for t in reps]
-        out[n] = len(set(keys)) == len(reps) == 3 * n and set(keys) == new_class_keys(n, lowest)
+        hi = bound(top, n=n)
+        removed = set().union(*(classes_of(i) for i in range(lowest, hi + 1))) if hi >= lowest else set()
+        out[n] = len(set(keys)) == len(reps) and set(keys) == classes_of(n) - removed and all(
+            0 <= min(t) <= max(t) <= n for t in reps)  # representatives in E_n
     return out
 
 
 @line_check("sec4_5-prop-union")
-def check_prop_union(override: dict[str, str] | None = None) -> LineResult:
-    """The printed union's start (read: i from 1) and the representatives (read) against the class keys; the
-    correction starts the union at i = 0."""
+def check_prop_union() -> LineResult:
+    """The printed union (start and end read: i = 1..n-1), the recurrence and the representatives (read) against the
+    class keys; the correction starts the union at i = 0."""
+    how = ("class keys: E_n/~ minus the printed union of E_i/~ (its bounds read; the correction starts it at i = 0) "
+           "against the printed representatives, n = 1..10")
     try:
-        start = read_union_start(override)
-        printed, corrected = prop_sets_agree(10, start, override), prop_sets_agree(10, 0, override)
-    except ValueError as exc:
-        return LineResult(False, how="the Proposition read from the transcriptions", detail={"unread": str(exc)})
-    return LineResult(all(printed.values()), all(corrected.values()),
-                      how="class keys: E_n/~ minus the union of E_i/~ for i from 1 (printed) and from 0 (corrected) "
-                          "against the printed representatives, n = 1..10", kind="exhaustive",
+        start, top = read_prop()
+        printed, corrected = prop_sets_agree(10, start, top), prop_sets_agree(10, 0, top)
+    except (ValueError, TypeError) as exc:
+        return LineResult(False, how=how, kind="exhaustive", detail={"unread": str(exc)})
+    return LineResult(all(printed.values()), all(corrected.values()), how=how, kind="exhaustive",
                       detail={"printed_fails_at_n": [n for n, v in printed.items() if not v],
                               "classes_left_at_n_1_printed": len(new_class_keys(1, 1)),
                               "corrected_holds_n_1_10": all(corrected.values())})
@@ -1089,7 +1127,8 @@ def _dimension_items() -> dict[str, bool]:
     out["V_n_rank_is_delta_n"] = all(span_rank((("V", n),)) == len(united_system(n)) for n in (1, 2, 3))
     # order 2: new linearly independent functions; V_2 = span V_2
     t = verbatim("sec4_5-n2-independent")
-    m = re.search(r"generate new linearly independent .*\$\\mathcal\{V\}_\{(\d+)\}\^\{\\alpha\}=~\$span~\$V_\{(\d+)\}"
+    m = re.search(r"generate new linearly independent constrained trivariate cosine and sine functions over "
+                  r"\$\\Omega\^\{\\alpha\}\$, i\.e\., \$\\mathcal\{V\}_\{(\d+)\}\^\{\\alpha\}=~\$span~\$V_\{(\d+)\}"
                   r"\^\{\\alpha\}\$", t)
     out["order_2_independent"] = bool(m) and m.group(1) == m.group(2) == "2" and \
         span_rank((("V", 2),)) == 1 + 2 * (len(classes_of(2)) - 1) and span_rank((("V", 2),)) > span_rank((("V", 1),))
