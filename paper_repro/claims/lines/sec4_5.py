@@ -1248,34 +1248,173 @@ def check_coincidence_rank() -> LineResult:
 
 
 # -- proof of the coincidence theorem -----------------------------------------------------------------------------
-@line_check("sec4_5-proof-reduction")
-def check_proof_reduction() -> LineResult:
-    ok_formula, ok_cover = True, True
-    for n in range(1, 9):
-        for j in range(n + 1):
-            for i in range(j, n + 1):
-                ok_formula &= pl.proof_r_exponents(n, i, j) == r_exponents(n, i, j)
+def half_angle_exponents(expr) -> tuple[int, ...]:
+    """The exponents (sin u/2, cos u/2, sin v/2, cos v/2, sin w/2, cos w/2) of a printed product of half-angle
+    powers (``TexError`` for anything else)."""
+    import sympy as sp
+
+    from paper_repro.claims.lines.sec4_tex import TexError
+
+    out = [sp.Integer(0)] * 6
+    for f in sp.Mul.make_args(expr):
+        base, p = (f.base, f.exp) if f.is_Pow else (f, sp.Integer(1))
+        if not isinstance(base, (sp.sin, sp.cos)) or p.has(sp.sin, sp.cos) or not p.free_symbols <= set(
+                sp.symbols("n i j")):
+            raise TexError(f"{f} is not a power of a half-angle function")
+        arg = base.args[0]
+        var = [k for k, x in enumerate(sp.symbols("u v w")) if arg == x / 2]
+        if len(var) != 1:
+            raise TexError(f"argument {arg} is not u/2, v/2 or w/2")
+        out[2 * var[0] + (1 if isinstance(base, sp.cos) else 0)] += p
+    return tuple(out)
+
+
+def read_proof_r() -> tuple:
+    """The ranges j = a..b, i = c..d (read from both lines that print them: they must agree), the printed indices of
+    R_{2n,2n-i,j} and its printed product of half-angle powers."""
+    from paper_repro.claims.lines.sec4_tex import TexError, chain, parse
+    from paper_repro.printed.lines.read import listed_range
+
+    rng = set()
+    for lid in ("sec4_5-proof-symmetry-reduction", "sec4_5-proof-R"):
+        tex = verbatim(lid)
+        m = re.search(r"indices \$j=(.*?)\$ and \$i=(.*?)\$", tex)
+        if not m:
+            raise TexError(f"{lid}: no ranges of j and i")
+        rng.add((listed_range("j=" + m.group(1), "j"), listed_range("i=" + m.group(2), "i"),
+                 re.sub(r"\s", "", m.group(1)), re.sub(r"\s", "", m.group(2))))
+    if len(rng) != 1:
+        raise TexError("the two lines print different ranges")
+    (jr, ir, jtxt, itxt) = rng.pop()
+    tex = verbatim("sec4_5-proof-R").replace("%", " ")
+    m = re.search(r"the function \$R_\{2n,([^{}]+),([^{}]+)\}\s*\^\{\\alpha\}\\left\(\s*u,v,w\\right\)\s*=(.*)$", tex)
+    if not m:
+        raise TexError("no R_{2n,..}(u,v,w) = ..")
+    parts = chain(m.group(3))
+    if len(parts) != 1:
+        raise TexError("the formula is not one product")
+    second = {"j": re.match(r"j=[^,]+,([^,]+),", jtxt), "i": re.match(r"i=[^,]+,([^,]+),", itxt)}
+    return jr, ir, second, parse(m.group(1)), parse(m.group(2)), parts[0]
+
+
+def _proof_reduction() -> dict[str, bool]:
+    import sympy as sp
+
+    from paper_repro.claims.lines.sec4_tex import parse
+    from paper_repro.printed.lines.read import bound
+
+    jr, ir, second, first_idx, level_idx, formula = read_proof_r()
+    ns, is_, js = sp.symbols("n i j")
+    ok_formula, ok_cover, ok_steps = True, True, True
+    expo = sp.lambdify((ns, is_, js), half_angle_exponents(formula))
+    idx = sp.lambdify((ns, is_, js), (first_idx, level_idx))
+    perms = [p for p in product(range(3), repeat=3) if len(set(p)) == 3]
+    for n in range(1, 7):
+        pairs = []
+        j_lo, j_hi = bound(jr[0], n=n), bound(jr[1], n=n)
+        for j in range(j_lo, j_hi + 1):
+            for i in range(bound(ir[0], n=n, j=j), bound(ir[1], n=n, j=j) + 1):
+                pairs.append((i, j))
+        for var, m in second.items():  # the second listed element is the first plus one
+            if m:
+                lo = bound((jr if var == "j" else ir)[0], n=n, j=j_lo)
+                ok_steps &= parse(m.group(1)).subs({ns: n, is_: lo, js: lo}) == lo + 1
+        for i, j in pairs:
+            a_, b_ = idx(n, i, j)
+            if Q(a_).denominator != 1 or Q(b_).denominator != 1:
+                ok_formula = False
+                continue
+            ii, jj = 2 * n - int(a_), int(b_)
+            try:
+                truth = r_exponents(n, ii, jj)
+            except ValueError:
+                ok_formula = False
+                continue
+            ok_formula &= tuple(expo(n, i, j)) == truth
         reps = {tuple(sorted(((e[0], e[1]), (e[2], e[3]), (e[4], e[5]))))
-                for e in (r_exponents(n, i, j) for j in range(n + 1) for i in range(j, n + 1))}
+                for e in (r_exponents(n, i, j) for i, j in pairs if 0 <= j <= n and j <= i <= 2 * n - j)}
         mem = {tuple(sorted(((e[0], e[1]), (e[2], e[3]), (e[4], e[5]))))
                for e in (exponents(lab) for lab in united_system(n))}
         ok_cover &= mem <= reps
-    return LineResult(ok_formula and ok_cover, how="exponent vectors: the restated R_{2n,2n-i,j} equals "
-                      "R_system_leq_n for j <= i <= n, and every function of T_{2n} is a permutation of variables "
-                      "of one of them (n <= 8)", kind="exhaustive", detail={"n_max": 8})
+        # the reduction is by the symmetries (permutations of u, v, w): each member is a permutation of one of them
+        ok_cover &= all(any(tuple(((e[0], e[1]), (e[2], e[3]), (e[4], e[5]))[p[k]] for k in range(3)) in {
+            ((x[0], x[1]), (x[2], x[3]), (x[4], x[5])) for x in (r_exponents(n, i, j) for i, j in pairs)}
+            for p in perms) for e in (exponents(lab) for lab in united_system(n)))
+    words = "symmetry properties" in verbatim("sec4_5-proof-symmetry-reduction") and "\\ref{R_system}" in verbatim(
+        "sec4_5-proof-symmetry-reduction")
+    return {"formula_is_R": ok_formula, "every_member_a_permutation_of_one": ok_cover, "listed_steps": ok_steps,
+            "by_symmetry": words}
 
 
-def power_reduction_ok(m: int, which: str, printed=None) -> bool:
-    lhs = (EP.cos((Q(1, 2),)) if which == "cos" else EP.sin((Q(1, 2),))) ** m
-    rhs = (printed or pl.power_reduction)(m, which, EP)
-    return lhs == rhs
+@line_check("sec4_5-proof-reduction")
+def check_proof_reduction() -> LineResult:
+    from paper_repro.claims.lines.sec4_tex import TexError
+
+    how = ("the ranges of j and i (read from both lines), the printed indices and product of R_{2n,2n-i,j} (read) "
+           "against the exponents of R_system (core.labels.r_exponents); every function of T_{2n} is a permutation "
+           "of the variables of one printed R (n <= 6)")
+    try:
+        out = _proof_reduction()
+    except (TexError, ValueError, TypeError) as exc:
+        return LineResult(False, how=how, kind="exhaustive", detail={"unread": str(exc)})
+    return LineResult(all(out.values()), how=how, kind="exhaustive", detail=out)
+
+
+#: the lines of the power-reduction identities: (odd line with the left side, even line)
+POWER_LINES = {"cos": ("sec4_5-cos-power-odd", "sec4_5-cos-power-even"),
+               "sin": ("sec4_5-sin-power-odd", "sec4_5-sin-power-even")}
+
+
+def read_power_reduction(which: str) -> tuple:
+    """The printed left side and the two cases ``(right side, parity)`` of the power reduction of ``which``."""
+    from paper_repro.claims.lines.sec4_tex import TexError, parse
+
+    odd, even = (verbatim(x).replace("%", " ") for x in POWER_LINES[which])
+    m = re.fullmatch(r"\s*(.*?)&\s*=\\left\\\{\s*\\begin\{array\}\s*\[c\]\{rl\}\s*(.*)$", odd)
+    if not m:
+        raise TexError(f"{which}: no left side")
+    lhs = parse(m.group(1))
+    cases = []
+    for body in (m.group(2), even):
+        mc = re.fullmatch(r"\s*(.*?),\s*&\s*m\\equiv(\d)\\left\(\s*\\operatorname\{mod\}\s*2\\right\)\s*,(?:\\\\)?\s*",
+                          body)
+        if not mc:
+            raise TexError(f"{which}: unread case {body[-40:]!r}")
+        cases.append((parse(mc.group(1)), int(mc.group(2))))
+    return lhs, cases
+
+
+def power_reduction_holds(which: str, m_max: int = 16) -> dict[str, bool]:
+    """Each printed case at every m of its parity (0..m_max), both sides expanded exactly in t."""
+    import sympy as sp
+
+    lhs, cases = read_power_reduction(which)
+    m_, t = sp.symbols("m t")
+    out = {}
+    if sorted(c[1] for c in cases) != [0, 1]:
+        return {"parities": False}
+    for rhs, parity in cases:
+        ok = True
+        for m in range(parity, m_max + 1, 2):
+            ok &= to_ep(lhs.subs(m_, m), (t,)) == to_ep(sp.expand(rhs.subs(m_, m).doit()), (t,))
+        out[f"{which}_{'odd' if parity else 'even'}"] = ok
+    return out
 
 
 @line_check("sec4_5-power-reduction")
 def check_power_reduction() -> LineResult:
-    res = {f"{w}^{m}": power_reduction_ok(m, w) for w in ("cos", "sin") for m in range(0, 21)}
-    return LineResult(all(res.values()), how="both sides expanded exactly, m = 0..20", kind="exhaustive",
-                      detail={"failing": [k for k, v in res.items() if not v], "m_max": 20})
+    from paper_repro.claims.lines.sec4_tex import TexError
+
+    how = ("both printed cases of each identity (left side, right side, sums with their bounds and parity, read from "
+           "the transcriptions) expanded exactly in t at every m = 0..16 of the case's parity; m in N, t in R read")
+    try:
+        out = {**power_reduction_holds("cos"), **power_reduction_holds("sin")}
+        rng = verbatim("sec4_5-power-ranges").replace("%", " ")
+        out["ranges_m_in_N_t_in_R"] = re.fullmatch(r"\s*\(\$m\\in\s*\\mathbb\{N\}\s*\$,\s*\$t\\in\s*\\mathbb\{R\}\s*\$\)"
+                                                   r"\s*", rng) is not None
+    except (TexError, TypeError, ValueError) as exc:
+        return LineResult(False, how=how, kind="exhaustive", detail={"unread": str(exc)})
+    return LineResult(all(out.values()), how=how, kind="exhaustive", detail=out)
 
 
 def factor_support(power: int, base: str) -> tuple[str, list[int]]:

@@ -59,7 +59,31 @@ def tokens(tex: str) -> list[str]:
         if tok == "&":
             continue
         out.append(tok)
-    return out
+    return _unwrap_sums(out)
+
+
+def _close(toks: list[str], k: int) -> int:
+    """Index of the brace closing the ``{`` at ``k``."""
+    depth = 0
+    for j in range(k, len(toks)):
+        depth += {"{": 1, "}": -1}.get(toks[j], 0)
+        if depth == 0:
+            return j
+    raise TexError("unbalanced braces")
+
+
+def _unwrap_sums(toks: list[str]) -> list[str]:
+    """``{\\sum_{k=a}^{b}} body`` (the paper's ``{\\displaystyle\\sum\\limits..}``) -> ``\\sum_{k=a}^{b} body``."""
+    k = 0
+    while k < len(toks) - 3:
+        if toks[k] == "{" and toks[k + 1] == "\\sum" and toks[k + 2] == "_" and toks[k + 3] == "{":
+            end = _close(toks, k)
+            lo_end = _close(toks, k + 3)
+            if lo_end + 2 < len(toks) and toks[lo_end + 1] == "^" and toks[lo_end + 2] == "{" and \
+                    _close(toks, lo_end + 2) == end - 1:
+                toks = toks[:k] + toks[k + 1:end] + toks[end + 1:]
+        k += 1
+    return toks
 
 
 class _Parser:
