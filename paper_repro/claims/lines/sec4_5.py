@@ -1278,7 +1278,9 @@ def read_proof_r() -> tuple:
     rng = set()
     for lid in ("sec4_5-proof-symmetry-reduction", "sec4_5-proof-R"):
         tex = verbatim(lid)
-        m = re.search(r"indices \$j=(.*?)\$ and \$i=(.*?)\$", tex)
+        m = re.search(r"(?:for all |^)indices \$j=(.*?)\$ and \$i=(.*?)\$", tex)
+        if lid == "sec4_5-proof-symmetry-reduction" and "it is sufficient to show that for all indices" not in tex:
+            raise TexError(f"{lid}: not 'sufficient to show that for all indices'")
         if not m:
             raise TexError(f"{lid}: no ranges of j and i")
         rng.add((listed_range("j=" + m.group(1), "j"), listed_range("i=" + m.group(2), "i"),
@@ -1428,94 +1430,202 @@ def factor_support(power: int, base: str) -> tuple[str, list[int]]:
 K_LINES = {"0,0": "sec4_5-K00", "1,1": "sec4_5-K11", "0,1": "sec4_5-K01", "1,0": "sec4_5-K10"}
 
 
-def read_k_upper(override: dict[str, str] | None = None) -> dict:
-    """The upper ends B of the four factors {0, 1, ..., B} of each printed K_{a,b}, read from the transcriptions
-    (``\\frac{2n-i-1}{2}`` ...), as functions (n, i, j) -> four Fractions."""
-    from paper_repro.printed.lines.read import bound
+def listed_values(items: list, env: dict) -> list[int]:
+    """The integers of a printed listed set ``{a, b, \\ldots, c}`` (items parsed, ``None`` for ``\\ldots``) at ``env``:
+    listed neighbours step by 1, the set is first..last (``{0,1,\\ldots,0}`` is {0}); ``ValueError`` otherwise (a
+    bound that is not an integer, such as (i-j)/2 with i - j odd, included)."""
+    vals = [None if e is None else e.subs(env) for e in items]
+    for x in vals:
+        if x is not None and not x.is_Integer:
+            raise ValueError(f"element {x} is not an integer")
+    if vals[0] is None or vals[-1] is None:
+        raise ValueError("an ellipsis at an end")
+    for k in range(len(vals) - 1):
+        x, y = vals[k], vals[k + 1]
+        if x is not None and y is not None and y - x != 1:
+            raise ValueError(f"listed neighbours {x}, {y} do not step by 1")
+    if vals[-1] < vals[0]:
+        raise ValueError("the last element is below the first")
+    return list(range(int(vals[0]), int(vals[-1]) + 1))
 
-    texts = _texts(set(K_LINES.values()), override)
-    out = {}
-    for case, line_id in K_LINES.items():
-        tex = texts[line_id]
-        m = re.match(r"\s*K_\{(\d),(\d)\}", tex)
-        ends = re.findall(r"\\ldots,\s*\\frac\{([^{}]+)\}%?\s*\{([^{}]+)\}", tex)
-        if not m or f"{m.group(1)},{m.group(2)}" != case or len(ends) != 4:
-            raise ValueError(f"{line_id}: not the four factors of K_{{{case}}}")
-        out[case] = (lambda n, i, j, ends=ends: tuple(Q(bound(a, n=n, i=i, j=j), bound(b, n=n, i=i, j=j))
-                                                      for a, b in ends))
-    return out
+
+def read_k_sets(line_id: str) -> tuple[str, list]:
+    """``(case, [four listed sets])`` of a printed ``K_{a,b} & =\\left\\{ 0,1,\\ldots,\\frac{..}{..}\\right\\}
+    \\times ..``: each set as its parsed items."""
+    from paper_repro.claims.lines.sec4_tex import TexError, parse
+
+    tex = verbatim(line_id).replace("%", " ")
+    m = re.fullmatch(r"\s*K_\{(\d),(\d)\}\s*&\s*=(.*?)[,.]?(?:\\\\)?\s*", tex)
+    if not m:
+        raise TexError(f"{line_id}: not K_{{a,b}} = ..")
+    factors = [x.strip() for x in m.group(3).split("\\times")]
+    sets = []
+    for f in factors:
+        mf = re.fullmatch(r"\\left\\\{(.*)\\right\\\}", f)
+        if not mf:
+            raise TexError(f"{line_id}: unread factor {f[:30]!r}")
+        sets.append([None if x.strip() == "\\ldots" else parse(x) for x in mf.group(1).split(",")])
+    return f"{m.group(1)},{m.group(2)}", sets
 
 
-def k_sets_agree(n_max: int, printed_upper=None) -> tuple[dict, dict]:
-    printed_upper = printed_upper or read_k_upper()
-    types_ok: dict[str, bool] = {}
-    sets_ok: dict[str, bool] = {}
+def true_k_ranges(n: int, i: int, j: int) -> list[list[int]]:
+    """The k's with a non-zero term in the exact expansion of sin^{2n-i}(u/2), sin^i(w/2), cos^{i-j}(v/2),
+    sin^j(v/2) (the powers of R_{2n,2n-i,j}, core.labels.r_exponents), in the order k1..k4 of
+    possible_products_inclusion."""
+    e = r_exponents(n, i, j)
+    return [factor_support(e[0], "sin")[1], factor_support(e[4], "sin")[1], factor_support(e[3], "cos")[1],
+            factor_support(e[2], "sin")[1]]
+
+
+def k_sets_agree(line_id: str, n_max: int = 6, fix_third: bool = False) -> bool:
+    """The printed K_{a,b} (read) equals the true ranges of k for every (i, j) of parity (a, b), n <= n_max;
+    ``fix_third``: the third factor's upper end lowered by 1/2 (the correction of K_{1,0})."""
+    import sympy as sp
+
+    case, sets = read_k_sets(line_id)
+    if len(sets) != 4:
+        return False
+    if fix_third:
+        sets = [*sets[:2], [*sets[2][:-1], sets[2][-1] - sp.Rational(1, 2)], sets[3]]
+    a, b = (int(x) for x in case.split(","))
+    ns, is_, js = sp.symbols("n i j")
     for n in range(1, n_max + 1):
         for j in range(n + 1):
             for i in range(j, n + 1):
-                case = f"{i % 2},{j % 2}"
-                facs = [factor_support(2 * n - i, "sin"), factor_support(i, "sin"), factor_support(i - j, "cos"),
-                        factor_support(j, "sin")]
-                types_ok[case] = types_ok.get(case, True) and tuple(f[0] for f in facs) == pl.PRODUCT_TYPES[case]
-                ub = printed_upper[case](n, i, j)
-                good = all(b.denominator == 1 and list(range(int(b) + 1)) == f[1] for b, f in zip(ub, facs))
-                sets_ok[case] = sets_ok.get(case, True) and good
-    return types_ok, sets_ok
+                if (i % 2, j % 2) != (a, b):
+                    continue
+                try:
+                    got = [listed_values(x, {ns: n, is_: i, js: j}) for x in sets]
+                except ValueError:
+                    return False
+                if got != true_k_ranges(n, i, j):
+                    return False
+    return True
 
 
-@line_check("sec4_5-product-types")
-def check_product_types() -> LineResult:
-    types_ok, _ = k_sets_agree(5)
-    return LineResult(all(types_ok.values()), how="exact expansion of each factor sin^{2n-i}(u/2), sin^i(w/2), "
-                      "cos^{i-j}(v/2), sin^j(v/2): cosine or sine series, n <= 5, j <= i <= n", kind="exhaustive",
-                      detail=types_ok)
+def k_case_check(case: str) -> LineResult:
+    from paper_repro.claims.lines.sec4_tex import TexError
 
-
-#: The corrected K_{1,0}: third factor {0, ..., (i-j-1)/2}.
-K10_CORRECTED = lambda n, i, j: (Q(2 * n - i - 1, 2), Q(i - 1, 2), Q(i - j - 1, 2), Q(j, 2))  # noqa: E731
-
-
-def _k_results(override: dict[str, str] | None = None) -> tuple[dict, dict]:
-    if not override:
-        return _k_results_printed()
-    printed = read_k_upper(override)
-    return k_sets_agree(6, printed)[1], k_sets_agree(6, {**printed, "1,0": K10_CORRECTED})[1]
-
-
-@cache
-def _k_results_printed() -> tuple[dict, dict]:
-    printed = read_k_upper()
-    return k_sets_agree(6, printed)[1], k_sets_agree(6, {**printed, "1,0": K10_CORRECTED})[1]
-
-
-def k_case_check(case: str, override: dict[str, str] | None = None) -> LineResult:
+    line_id = K_LINES[case]
+    how = ("the four listed sets of K_{a,b} (every element read from the transcription; each must be a run of "
+           "integers) against the k's with a non-zero term in the exact expansion of each factor of R_{2n,2n-i,j}, "
+           "every (i, j) of parity (a, b), n <= 6")
     try:
-        printed, corrected = _k_results(override)
-    except ValueError as exc:
-        return LineResult(False, how="the four factors read from the transcription", detail={"unread": str(exc)})
-    return LineResult(printed[case], corrected[case] if not printed[case] else None,
-                      how="the k's with a non-zero term in the exact expansion of each factor against the printed "
-                          "ranges {0..B} (read from the transcriptions; B must be a non-negative integer), n <= 6, "
-                          "j <= i <= n", kind="exhaustive",
-                      detail={"case_i_j_mod_2": case, "printed_holds": printed[case],
-                              "corrected_holds": corrected[case],
+        read_case = read_k_sets(line_id)[0]
+        printed = read_case == case and k_sets_agree(line_id)
+        corrected = read_case == case and k_sets_agree(line_id, fix_third=True) if case == "1,0" else None
+    except (TexError, ValueError, TypeError) as exc:
+        return LineResult(False, how=how, kind="exhaustive", detail={"unread": str(exc)})
+    return LineResult(printed, corrected if not printed else None, how=how, kind="exhaustive",
+                      detail={"case_i_j_mod_2": case, "printed_holds": printed, "corrected_holds": corrected,
                               "example": "n=2, i=1, j=0: third factor cos^1(v/2) has k in {0}; printed bound "
                                          f"(i-j)/2 = {Q(1, 2)}"})
 
 
 for _case in ("0,0", "1,1", "0,1", "1,0"):
-    line_check(f"sec4_5-K-{_case.replace(',', '')}")(lambda override=None, _c=_case: k_case_check(_c, override))
+    line_check(f"sec4_5-K-{_case.replace(',', '')}")(lambda _c=_case: k_case_check(_c))
+
+
+PRODUCT_LINES = ("sec4_5-product-type-1", "sec4_5-product-type-2", "sec4_5-product-type-3", "sec4_5-product-type-4")
+_KSYMS = "n i j k1 k2 k3 k4"
+
+
+def read_product_types() -> dict[tuple[int, int], object]:
+    """``{(i mod 2, j mod 2): product}`` of the printed cases of possible_products_inclusion (each read)."""
+    from paper_repro.claims.lines.sec4_tex import TexError, parse
+
+    out = {}
+    for lid in PRODUCT_LINES:
+        body, _, cond = verbatim(lid).replace("%", " ").partition("&")
+        m = re.fullmatch(r"\s*i\\equiv(\d)\\left\(\s*\\operatorname\{mod\}2\\right\)\s*\\text\{ and \}j\\equiv(\d)"
+                         r"\\left\(\s*\\operatorname\{mod\}2\\right\)\s*,?(?:\\\\)?\s*", cond)
+        if not m:
+            raise TexError(f"{lid}: unread condition")
+        key = (int(m.group(1)), int(m.group(2)))
+        if key in out or max(key) > 1:
+            raise TexError(f"{lid}: case {key} printed twice or not a parity")
+        out[key] = parse(body.strip().rstrip(","))
+    return out
+
+
+def r_in_span_of(expr, n_max: int = 3, parity=None) -> bool:
+    """R_{2n,2n-i,j} (exact expansion of core.labels.r_exponents) lies in the span of the printed product ``expr``
+    over the box k1..k4 in {0..n}, for every (i, j) of the given parity, n <= n_max."""
+    import sympy as sp
+
+    u, v, w = sp.symbols("u v w")
+    f = compile_ep(expr, (u, v, w), sp.symbols(_KSYMS))
+    for n in range(1, n_max + 1):
+        for j in range(n + 1):
+            for i in range(j, n + 1):
+                if parity is not None and (i % 2, j % 2) != parity:
+                    continue
+                target = half_monomial(r_exponents(n, i, j))
+                cols = [f((n, i, j, *k)) for k in product(range(n + 1), repeat=4)]
+                keys = sorted({x for c in [*cols, target] for x in c.terms})
+
+                def column(ep, keys=keys):
+                    return [q for x in keys for q in ep.terms.get(x, (Q(0), Q(0)))]
+
+                mat = [column(c) for c in cols]
+                tcol = column(target)
+                rows = range(len(keys) * 2)
+                a = fmpq_mat([[fmpq(c[r].numerator, c[r].denominator) for c in mat] for r in rows])
+                b = fmpq_mat([[fmpq(c[r].numerator, c[r].denominator) for c in [*mat, tcol]] for r in rows])
+                if a.rank() != b.rank():
+                    return False
+    return True
+
+
+@line_check("sec4_5-product-types")
+def check_product_types() -> LineResult:
+    """Each printed case (product and parity condition read) spans R_{2n,2n-i,j} of its parity; the parity line's
+    powers are read."""
+    import sympy as sp
+
+    from paper_repro.claims.lines.sec4_tex import TexError, parse
+
+    how = ("each printed product (read) over k1..k4 in {0..n} spans the exact expansion of R_{2n,2n-i,j} for every "
+           "(i, j) of the printed parity, n <= 2; the four cases are the four parities; the parity line names the "
+           "four powers of R (read, against core.labels.r_exponents, n <= 4)")
+    try:
+        types = read_product_types()
+        out = {f"{a},{b}": r_in_span_of(p, 2, (a, b)) for (a, b), p in types.items()}
+        out["four_parities"] = sorted(types) == [(0, 0), (0, 1), (1, 0), (1, 1)]
+        tex = verbatim("sec4_5-parity")
+        m = re.fullmatch(r"and by the parity of powers \$(.*?)\$, \$(.*?)\$, \$(.*?)\$ and \$(.*?)\$, one can easily see "
+                         r"that function \$R_\{2n,2n-i,j\}\^\{\\alpha\}\\left\( u,v,w\\right\) \$ can be written as "
+                         r"the sum of products of the type%", tex)
+        if not m:
+            raise TexError("unread parity line")
+        powers = [parse(x) for x in m.groups()]
+        ns, is_, js = sp.symbols("n i j")
+        out["powers_of_R"] = all(
+            sorted(int(p.subs({ns: n, is_: i, js: j})) for p in powers) == sorted(
+                x for k, x in enumerate(r_exponents(n, i, j)) if k in (0, 2, 3, 4))
+            for n in range(1, 5) for j in range(n + 1) for i in range(j, n + 1))
+    except (TexError, ValueError, TypeError) as exc:
+        return LineResult(False, how=how, kind="exhaustive", detail={"unread": str(exc)})
+    return LineResult(all(out.values()), how=how, kind="exhaustive", detail=out)
 
 
 @line_check("sec4_5-product-to-sum")
 def check_product_to_sum() -> LineResult:
-    x, y = (1, 0), (0, 1)
-    xm, xp = (1, -1), (1, 1)
-    res = [EP.cos(x) * EP.cos(y) == (EP.cos(xm) + EP.cos(xp)) * Q(1, 2),
-           EP.sin(x) * EP.sin(y) == (EP.cos(xm) - EP.cos(xp)) * Q(1, 2),
-           EP.sin(x) * EP.cos(y) == (EP.sin(xp) + EP.sin(xm)) * Q(1, 2)]
-    return LineResult(all(res), how="exponential expansion in two independent variables", kind="proof",
-                      detail={"rows": res})
+    """Each printed identity (both sides read) expanded exactly in the independent variables x, y."""
+    import sympy as sp
+
+    from paper_repro.claims.lines.sec4_tex import TexError, chain
+
+    how = "both sides of each identity read from the transcriptions, exponential expansion in x, y"
+    rows = []
+    try:
+        for k in (1, 2, 3):
+            parts = chain(verbatim(f"sec4_5-product-to-sum-{k}"))
+            xy = sp.symbols("x y")
+            rows.append(len(parts) == 2 and to_ep(parts[0], xy) == to_ep(parts[1], xy))
+    except (TexError, ValueError, TypeError) as exc:
+        return LineResult(False, how=how, kind="proof", detail={"unread": str(exc)})
+    return LineResult(all(rows), how=how, kind="proof", detail={"rows": rows})
 
 
 def _odd_cases(n_max: int):
