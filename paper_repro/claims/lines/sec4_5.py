@@ -889,7 +889,8 @@ def b2_classes(b: int, restrict_r_le_g: bool) -> set:
             if class_key((r, g, b)) in new and (not restrict_r_le_g or r <= g)}
 
 
-NUMBER_WORDS = {"one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7}
+NUMBER_WORDS = {"one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7, "eight": 8, "nine": 9,
+                "ten": 10, "sixteen": 16}
 
 
 @line_check("sec4_5-b2-three-classes")
@@ -1629,119 +1630,412 @@ def check_product_to_sum() -> LineResult:
 
 
 def _odd_cases(n_max: int):
+    """``(n, i, j, (k1, k2, k3, k4))`` for every odd i, j (j <= i <= n) and (k1..k4) in the true K_{1,1} (the k's of
+    the exact expansion of the factors, :func:`true_k_ranges`), n <= n_max."""
     for n in range(1, n_max + 1):
         for j in range(1, n + 1, 2):
             for i in range(j, n + 1, 2):
-                for k in product(range((2 * n - i - 1) // 2 + 1), range((i - 1) // 2 + 1), range((i - j) // 2 + 1),
-                                 range((j - 1) // 2 + 1)):
-                    yield n, i, j, k
+                yield from ((n, i, j, k) for k in product(*true_k_ranges(n, i, j)))
 
 
 def _abcd(n, i, j, k):
-    return Q(2 * n - i - 2 * k[0], 2), Q(i - 2 * k[1], 2), Q(i - j - 2 * k[2], 2), Q(j - 2 * k[3], 2)
+    """The frequencies A, B, C, D of the four factors (u, w, cos v, sin v) of the k-th terms, from the powers of
+    R_{2n,2n-i,j} (core.labels.r_exponents): (power - 2k)/2."""
+    e = r_exponents(n, i, j)
+    return Q(e[0] - 2 * k[0], 2), Q(e[4] - 2 * k[1], 2), Q(e[3] - 2 * k[2], 2), Q(e[2] - 2 * k[3], 2)
+
+
+def read_signs() -> dict:
+    """The sign values of ``where $s_{1}=1$ and $s_{2},s_{3},s_{4}\\in\\left\\{ -1,+1\\right\\} $, i.e., $s_{r}^{2}=1$,
+    $r=1,2,3,4$`` (each read; s_r^2 = 1 checked for the listed r)."""
+    import sympy as sp
+
+    from paper_repro.claims.lines.sec4_tex import TexError, parse
+
+    tex = verbatim("sec4_5-signs")
+    m = re.fullmatch(r"where \$s_\{(\d)\}=([-+]?\d+)\$ and \$((?:s_\{\d\},?)+)\\in\\left\\\{(.*?)\\right\\\} \$, i\.e\., "
+                     r"\$s_\{r\}\^\{2\}=(\d+)\$, \$(r=.*)\$", tex)
+    if not m:
+        raise TexError("unread signs")
+    vals = {f"s{m.group(1)}": [int(m.group(2))]}
+    options = [int(parse(x)) for x in m.group(4).split(",")]
+    for x in re.findall(r"s_\{(\d)\}", m.group(3)):
+        vals[f"s{x}"] = options
+    if not m.group(6).startswith("r=") or "\\ldots" in m.group(6):
+        raise TexError("the indices r are not listed")
+    rs = [int(parse(x)) for x in m.group(6)[2:].split(",")]
+    if sorted(vals) != [f"s{r}" for r in rs] or not all(
+            sp.Integer(x) ** 2 == int(m.group(5)) for r in rs for x in vals[f"s{r}"]):
+        raise TexError("s_r^2 = 1 fails for the listed r, or the listed r are not the signs")
+    return vals
+
+
+def _sign_assignments(vals: dict):
+    names = sorted(vals)
+    for combo in product(*(vals[x] for x in names)):
+        yield dict(zip(names, combo))
+
+
+def _freq(arg, variables) -> tuple:
+    import sympy as sp
+
+    poly = sp.Poly(sp.expand(arg), *variables)
+    return tuple(Q(int(c.p), int(c.q)) for c in (poly.coeff_monomial(x) for x in variables))
 
 
 @line_check("sec4_5-eight-terms")
 def check_eight_terms() -> LineResult:
-    ok, count = True, 0
-    for n, i, j, k in _odd_cases(4):
-        A, B, C, D = _abcd(n, i, j, k)
-        prod = EP.sin((A, 0, 0)) * EP.sin((0, 0, B)) * EP.cos((0, C, 0)) * EP.sin((0, D, 0))
-        allowed = {(A, s2 * C + s3 * D, s4 * B) for s2 in (-1, 1) for s3 in (-1, 1) for s4 in (-1, 1)}
-        allowed |= {tuple(-x for x in f) for f in allowed}
-        ok &= prod.is_sine_series() and set(prod.terms) <= allowed
-        count += 1
-    return LineResult(ok, how="exact expansion of the product: a sine series whose frequencies are "
-                      "+-(A, s2 C + s3 D, s4 B) (s1 = 1), every (i, j) odd and (k1..k4) in K_{1,1}, n <= 4",
-                      kind="exhaustive", detail={"products": count})
+    """The printed product and form (read) and the signs (read): the formal expansion of the product has the printed
+    number of terms, each +- the form at one choice of signs, and the product over K_{1,1} spans R_{2n,2n-i,j}."""
+    import sympy as sp
+
+    from paper_repro.claims.lines.sec4_tex import TexError, parse
+
+    how = ("the product and the form read from the transcription, the signs read: for every odd (i, j) and (k1..k4) "
+           "in K_{1,1}, n <= 3, the 2^(factors-1) formal terms of the product are, up to sign, exactly the form at "
+           "the printed signs (a sine for a sine series); the product spans R_{2n,2n-i,j} (n <= 2)")
+    try:
+        tex = verbatim("sec4_5-eight-terms").replace("%", " ")
+        m = re.fullmatch(r"each of the (\w+) terms of the expansion of the product\s*\\\[(.*?)\\\]\s*has the form\s*"
+                         r"\\\[(.*?),?\s*\\\]\s*", tex)
+        if not m or m.group(1) not in NUMBER_WORDS:
+            raise TexError("unread line")
+        count, prod_e, form = NUMBER_WORDS[m.group(1)], parse(m.group(2)), parse(m.group(3).strip().rstrip(","))
+        signs = read_signs()
+        factors = sp.Mul.make_args(prod_e)
+        if not all(isinstance(f, (sp.sin, sp.cos)) for f in factors) or not isinstance(form, (sp.sin, sp.cos)):
+            raise TexError("not a product of sines and cosines, or the form is not one function")
+        uvw = sp.symbols("u v w")
+        params = sp.symbols(_KSYMS)
+        ep_prod = compile_ep(prod_e, uvw, params)
+        ok_count = count == 2 ** (len(factors) - 1)
+        ok_terms, ok_type = True, True
+        for n, i, j, k in _odd_cases(3):
+            env = dict(zip(params, (n, i, j, *k)))
+            fr = [_freq(f.args[0].subs(env), uvw) for f in factors]
+            formal = {tuple(sum(e * x[c] for e, x in zip(eps, fr)) for c in range(3))
+                      for eps in product((-1, 1), repeat=len(fr))}
+            formal = {max(f, tuple(-x for x in f)) for f in formal}
+            printed = set()
+            for sv in _sign_assignments(signs):
+                f = _freq(form.args[0].subs(env).subs({sp.Symbol(a): b for a, b in sv.items()}), uvw)
+                printed.add(max(f, tuple(-x for x in f)))
+            ok_terms &= formal == printed
+            ep = ep_prod((n, i, j, *k))
+            ok_type &= (ep.is_sine_series() if isinstance(form, sp.sin) else ep.is_cosine_series())
+        spans = r_in_span_of(prod_e, 2, (1, 1))
+    except (TexError, ValueError, TypeError) as exc:
+        return LineResult(False, how=how, kind="exhaustive", detail={"unread": str(exc)})
+    out = {"count": ok_count, "terms_are_the_form": ok_terms, "function_type": ok_type, "spans_R_odd_odd": spans}
+    return LineResult(all(out.values()), how=how, kind="exhaustive", detail=out)
+
+
+SHIFT_LINES = ("sec4_5-shift-step1", "sec4_5-shift-step2", "sec4_5-shift-step3")
 
 
 @line_check("sec4_5-shift-chain")
 def check_shift_chain() -> LineResult:
-    """Steps of the chain: alpha a fourth variable (steps 1, 2), then alpha = u + v + w (step 3)."""
-    ok1 = ok2 = ok3 = ok_int = True
-    for n, i, j, k in _odd_cases(3):
-        A, B, C, D = _abcd(n, i, j, k)
-        for s2, s3, s4 in product((-1, 1), repeat=3):
-            X = (A, s2 * C + s3 * D, s4 * B, Q(0))
-            Y = (A, s2 * C + s3 * D, s4 * B, Q(-1, 2))  # X - alpha/2
-            lhs = EP.sin(X)
-            step1 = EP.sin((A, s2 * C + s3 * D, s4 * B, Q(0)))  # -alpha/2 + alpha/2
-            step2 = EP.cos((0, 0, 0, Q(1, 2))) * EP.sin(Y) + EP.sin((0, 0, 0, Q(1, 2))) * EP.cos(Y)
-            ok1 &= lhs == step1
-            ok2 &= step1 == step2
-            P = (Q(2 * n - i - 1 - 2 * k[0], 2), s2 * C + s3 * Q(j - 2 * k[3] - s3, 2), s4 * Q(i - 2 * k[1] - s4, 2))
-            step3 = EP.cos((0, 0, 0, Q(1, 2))) * EP.sin(P + (Q(0),)) + EP.sin((0, 0, 0, Q(1, 2))) * EP.cos(P + (Q(0),))
-            on_plane = ((1, 0, 0, 0), (0, 1, 0, 0), (0, 0, 1, 0), (1, 1, 1, 0))  # alpha -> u + v + w
-            ok3 &= step2.linear(on_plane) == step3.linear(on_plane)
-            ok_int &= all(x.denominator == 1 for x in P)
-    return LineResult(ok1 and ok2 and ok3, how="exact expansion over (u, v, w, alpha) (alpha free for the first two "
-                      "steps, alpha = u + v + w for the last), all (i, j) odd, K_{1,1}, signs, n <= 3",
-                      kind="exhaustive",
-                      detail={"step_add_subtract": ok1, "step_addition_formula": ok2, "step_constraint": ok3,
-                              "integer_coefficients": ok_int})
+    """Every '=' of the chain (each line read; a line's first part repeats the previous line's last part): the first
+    steps as identities in (u, v, w, alpha), the last one on u + v + w = alpha; every odd (i, j), K_{1,1}, the
+    printed signs, n <= 3."""
+    import sympy as sp
+
+    from paper_repro.claims.lines.sec4_tex import ALPHA, TexError, chain
+
+    how = ("each '=' of the three lines read from the transcriptions, expanded exactly over (u, v, w, alpha) (alpha "
+           "free where the step does not use the constraint, alpha = u + v + w for the step that does), every odd "
+           "(i, j), (k1..k4) in K_{1,1}, the printed signs, n <= 3")
+    try:
+        parts = [chain(verbatim(x)) for x in SHIFT_LINES]
+        signs = read_signs()
+        if [len(p) for p in parts] != [2, 2, 2]:
+            raise TexError(f"parts per line {[len(p) for p in parts]}")
+        uvwa = (*sp.symbols("u v w"), ALPHA)
+        params = (*sp.symbols(_KSYMS), *sp.symbols("s1 s2 s3 s4"))
+        free = [[compile_ep(x, uvwa, params) for x in p] for p in parts]
+        u, v, w = uvwa[:3]
+        plane = [[compile_ep(x.subs(ALPHA, u + v + w), (u, v, w), params) for x in p] for p in parts]
+        ok = {"step1_free": True, "step2_free": True, "step3_on_plane": True, "step3_not_free": False,
+              "repeats": True}
+        for n, i, j, k in _odd_cases(3):
+            for sv in _sign_assignments(signs):
+                vals = (n, i, j, *k, *(sv[f"s{r}"] for r in (1, 2, 3, 4)))
+                ep = [[f(vals) for f in p] for p in free]
+                ok["step1_free"] &= ep[0][0] == ep[0][1]
+                ok["step2_free"] &= ep[1][0] == ep[1][1]
+                ok["repeats"] &= ep[1][0] == ep[0][1] and ep[2][0] == ep[1][1]
+                pl_ = [f(vals) for f in plane[2]]
+                ok["step3_on_plane"] &= pl_[0] == pl_[1]
+                ok["step3_not_free"] |= ep[2][0] != ep[2][1]  # the last step uses the constraint
+    except (TexError, ValueError, TypeError, KeyError) as exc:
+        return LineResult(False, how=how, kind="exhaustive", detail={"unread": str(exc)})
+    return LineResult(all(ok.values()), how=how, kind="exhaustive", detail=ok)
+
+
+def read_class_entries():
+    """The three entries of the printed class ``\\left[ \\underset{\\in\\mathbb{N}}{\\underbrace{..}},..\\right]``
+    (each marked as a natural number) and the arguments of the printed ``z=\\min\\left\\{ ..\\right\\}``."""
+    import sympy as sp
+
+    from paper_repro.claims.lines.sec4_tex import TexError, chain, parse
+
+    tex = verbatim("sec4_5-class-N").replace("%", " ")
+    m = re.fullmatch(r"\s*\\left\[(.*)\\right\]\s*,?\s*", tex)
+    if not m:
+        raise TexError("no class [..]")
+    body, items, depth, last = m.group(1), [], 0, 0
+    for k, ch in enumerate(body):
+        depth += {"{": 1, "}": -1}.get(ch, 0)
+        if ch == "," and depth == 0:
+            items.append(body[last:k])
+            last = k + 1
+    items.append(body[last:])
+    if not all(re.match(r"\s*\\underset\{\\in\s*\\mathbb\{N\}\s*\}", x) for x in items):
+        raise TexError("an entry is not marked natural")
+    entries = [parse(x) for x in items]
+    zparts = chain(verbatim("sec4_5-z-min"))
+    if len(zparts) != 2 or zparts[0] != sp.Symbol("z") or not isinstance(zparts[1], sp.Min):
+        raise TexError("z-min is not z = min{..}")
+    return entries, zparts[1]
+
+
+def shifted_truth(n, i, j, k, sv) -> tuple:
+    """The coefficients of u, v, w in X - (u + v + w)/2 for the term of the odd-odd product with signs sv:
+    X = A u + (s2 C + s3 D) v + s4 B w (A, B, C, D from the powers of R, :func:`_abcd`)."""
+    A, B, C, D = _abcd(n, i, j, k)
+    return (A - Q(1, 2), sv["s2"] * C + sv["s3"] * D - Q(1, 2), sv["s4"] * B - Q(1, 2))
 
 
 @line_check("sec4_5-integer-class")
 def check_integer_class() -> LineResult:
-    ok_int = ok_nat = ok_same = ok_le_n = True
-    for n, i, j, k in _odd_cases(5):
-        for s2, s3, s4 in product((-1, 1), repeat=3):
-            P = (Q(2 * n - i - 1 - 2 * k[0], 2), s2 * Q(i - j - 2 * k[2], 2) + s3 * Q(j - 2 * k[3] - s3, 2),
-                 s4 * Q(i - 2 * k[1] - s4, 2))
-            ok_int &= all(x.denominator == 1 for x in P)
-            z = min(P)
-            shifted = tuple(int(x - z) for x in P)
-            ok_nat &= min(shifted) >= 0
-            ok_same &= phase_equivalent(tuple(int(x) for x in P), shifted)
-            ok_le_n &= max(shifted) <= n
-    return LineResult(ok_int and ok_nat and ok_same and ok_le_n, how="all (i, j) odd, K_{1,1}, signs, n <= 5: "
-                      "coefficients integer, minus z = their minimum non-negative, same class, and at most n (in E_n)",
-                      kind="exhaustive", detail={"integer": ok_int, "natural": ok_nat, "same_class": ok_same,
-                                            "in_E_n": ok_le_n})
+    """The printed claims after the chain (read): integer coefficients for every k of the printed K_{a,b} (the
+    printed number of k's), the printed minimum z and the printed class entries (natural, the same class, in E_n),
+    and "the remaining two cases": every case of the minimum."""
+    import sympy as sp
+
+    from paper_repro.claims.lines.sec4_tex import TexError
+
+    how = ("the printed K_{a,b}, tuple length, minimum and class entries read from the transcriptions against the "
+           "coefficients of X - (u+v+w)/2 (A, B, C, D from the powers of R, the signs read), every (i, j) of the "
+           "printed parity, n <= 4")
+    try:
+        tex = verbatim("sec4_5-integer")
+        m = re.fullmatch(r"where for all \$(\d+)\$-tuples \$\\left\( ((?:k_\{\d\},?)+)\\right\) \\in K_\{(\d),(\d)\}\$ "
+                         r"the coefficients of variables \$u\$, \$v\$ and \$w\$ are integer numbers and both of the "
+                         r"sine and cosine functions belong to the equivalence class%", tex)
+        if not m:
+            raise TexError("unread integer line")
+        ks = re.findall(r"k_\{(\d)\}", m.group(2))
+        parity = (int(m.group(3)), int(m.group(4)))
+        other = re.fullmatch(r"The remaining (\w+) cases of \$z\$ can be treated analogously\.",
+                             verbatim("sec4_5-other-z-cases"))
+        if not other or other.group(1) not in NUMBER_WORDS:
+            raise TexError("unread remaining cases")
+        entries, zmin = read_class_entries()
+        signs = read_signs()
+        ok = {"tuple": int(m.group(1)) == len(ks) == 4 and ks == ["1", "2", "3", "4"],
+              "remaining": NUMBER_WORDS[other.group(1)] == len(zmin.args) - 1}
+        ok_int = ok_min = ok_nat = True
+        params = (*sp.symbols(_KSYMS), *sp.symbols("s1 s2 s3 s4"))
+        fz = [sp.lambdify(params, a) for a in zmin.args]
+        fe = [sp.lambdify((*params, sp.Symbol("z")), e) for e in entries]
+        for n in range(1, 5):
+            for j in range(n + 1):
+                for i in range(j, n + 1):
+                    if (i % 2, j % 2) != parity:
+                        continue
+                    for k in product(*true_k_ranges(n, i, j)):
+                        for sv in _sign_assignments(signs):
+                            truth = shifted_truth(n, i, j, k, sv)
+                            ok_int &= all(x.denominator == 1 for x in truth)
+                            vals = (n, i, j, *k, *(sv.get(f"s{r}", 1) for r in (1, 2, 3, 4)))
+                            args = sorted(Q(f(*vals)) for f in fz)
+                            ok_min &= args == sorted(truth)
+                            z = min(truth)
+                            ent = tuple(Q(f(*vals, z)) for f in fe)
+                            nat = all(x.denominator == 1 and 0 <= x <= n for x in ent)
+                            ok_nat &= nat and tuple(x - z for x in truth) == ent
+        ok.update({"integer": ok_int, "min_of_the_coefficients": ok_min, "entries_natural_same_class_in_E_n": ok_nat})
+    except (TexError, ValueError, TypeError, KeyError) as exc:
+        return LineResult(False, how=how, kind="exhaustive", detail={"unread": str(exc)})
+    return LineResult(all(ok.values()), how=how, kind="exhaustive", detail=ok)
 
 
-def max_values(n_max: int, s4_values=(-1, 1)) -> dict[str, bool]:
-    ok_first, ok_second = True, True
+_MAX = re.compile(r"\s*&?\s*\\max\\left\\\{(.*?):\\left\(\s*k_\{1\},k_\{2\},k_\{3\},k_\{4\}\\right\)\s*\\in K_\{(\d),(\d)\},~"
+                  r"(.*?)\\right\\\}\s*\\\\\s*(?:=\s*&|&\s*=)(.*)$")
+
+
+def read_max(line_id: str) -> tuple:
+    """``(expression, {sign: values} quantified, parity of K, printed value)`` of a printed max{..} = value."""
+    from paper_repro.claims.lines.sec4_tex import TexError, parse
+
+    m = _MAX.fullmatch(verbatim(line_id).replace("%", " "))
+    if not m:
+        raise TexError(f"{line_id}: unread max")
+    quant: dict[str, list[int]] = {}
+    q = m.group(4)
+    for var, val in re.findall(r"s_\{(\d)\}=([-+]?\d+)", q):
+        quant[f"s{var}"] = [int(val)]
+    for names, opts in re.findall(r"((?:s_\{\d\},?)+)\\in\\left\\\{(.*?)\\right\\\}", q):
+        for x in re.findall(r"s_\{(\d)\}", names):
+            quant[f"s{x}"] = [int(parse(o)) for o in opts.split(",")]
+    rest = re.sub(r"s_\{(\d)\}=([-+]?\d+)|((?:s_\{\d\},?)+)\\in\\left\\\{(.*?)\\right\\\}|,|\s", "", q)
+    if rest:
+        raise TexError(f"{line_id}: unread quantifier {rest!r}")
+    return parse(m.group(1)), quant, (int(m.group(2)), int(m.group(3))), parse(m.group(5))
+
+
+def max_values(line_id: str, quantify_free: bool, n_max: int = 6) -> bool:
+    """The printed max over the printed K (true ranges of its parity) and the quantified signs equals the printed
+    value for every (i, j) of that parity; a sign in the expression that is not quantified must not change the max
+    (``quantify_free``: it is quantified over {-1, +1}, the correction)."""
+    import sympy as sp
+
+    expr, quant, parity, value = read_max(line_id)
+    signs = sorted(str(x) for x in expr.free_symbols if re.fullmatch(r"s\d", str(x)))
+    free = [x for x in signs if x not in quant]
+    if quantify_free:
+        quant = {**quant, **{x: [-1, 1] for x in free}}
+        free = []
+    params = (*sp.symbols(_KSYMS), *sp.symbols("s1 s2 s3 s4"))
+    f = sp.lambdify(params, expr)
+    fv = sp.lambdify(sp.symbols("n i j"), value)
     for n in range(1, n_max + 1):
-        for j in range(1, n + 1, 2):
-            for i in range(j, n + 1, 2):
-                ks = list(product(range((2 * n - i - 1) // 2 + 1), range((i - 1) // 2 + 1), range((i - j) // 2 + 1),
-                                  range((j - 1) // 2 + 1)))
-                first = max(Q(2 * n - i - 1 - 2 * k[0], 2) - s2 * Q(i - j - 2 * k[2], 2) - s3 * Q(j - 2 * k[3] - s3, 2)
-                            for k in ks for s2 in (-1, 1) for s3 in (-1, 1))
-                second = max(s4 * Q(i - 2 * k[1] - s4, 2) - s2 * Q(i - j - 2 * k[2], 2) - s3 * Q(j - 2 * k[3] - s3, 2)
-                             for k in ks for s2 in (-1, 1) for s3 in (-1, 1) for s4 in s4_values)
-                ok_first &= first == Q(2 * n - i - 1, 2) + Q(i - j, 2) + Q(j + 1, 2) == n
-                ok_second &= second == Q(i - 1, 2) + Q(i - j, 2) + Q(j + 1, 2) == i and i <= n
-    return {"first_max_is_n": ok_first, "second_max_is_i": ok_second}
+        for j in range(n + 1):
+            for i in range(j, n + 1):
+                if (i % 2, j % 2) != parity:
+                    continue
+                for fixed in _sign_assignments({x: [-1, 1] for x in free}):
+                    best = max(Q(f(n, i, j, *k, *({**{s: v[0] for s, v in quant.items()}, **sv, **fixed}.get(
+                        f"s{r}", 0) for r in (1, 2, 3, 4))))
+                               for k in product(*true_k_ranges(n, i, j)) for sv in _sign_assignments(quant))
+                    if best != Q(fv(n, i, j)):
+                        return False
+    return True
+
+
+def _chain_le(line_id: str) -> tuple[list, object]:
+    """The '=' parts of a printed chain and its final ``\\leq`` bound (None if there is none)."""
+    from paper_repro.claims.lines.sec4_tex import chain, parse
+
+    tex = verbatim(line_id)
+    head, _, bound_ = tex.partition("\\leq")
+    return chain(head), (parse(bound_) if bound_ else None)
 
 
 @line_check("sec4_5-max-bounds")
 def check_max_bounds() -> LineResult:
-    res = max_values(7)
-    return LineResult(all(res.values()), how="maxima by enumeration over K_{1,1} and the signs (s4 in {-1, +1} as "
-                      "defined after the eight-term form), every odd (i, j), n <= 7", kind="exhaustive", detail=res)
+    """The first max (set, quantifiers and value read) by enumeration; the arithmetic lines (read) equal n and i
+    with i <= n (the second max's value: with its sign s4 quantified, see sec4_5-max2-quantifier)."""
+    import sympy as sp
+
+    from paper_repro.claims.lines.sec4_tex import TexError
+
+    how = ("maxima by enumeration over the printed K (its true k ranges) and the printed signs, every (i, j) of its "
+           "parity, n <= 6; the printed values and the chains '= n', '= i <= n' read and evaluated")
+    try:
+        out = {"max1": max_values("sec4_5-max1-set", False)}
+        v1 = read_max("sec4_5-max1-set")[3]
+        v2 = read_max("sec4_5-max2-set")[3]
+        ns, is_, js = sp.symbols("n i j")
+        cases = [(n, i, j) for n in range(1, 7) for j in range(1, n + 1, 2) for i in range(j, n + 1, 2)]
+        p1, b1 = _chain_le("sec4_5-max1-n")
+        p2, b2 = _chain_le("sec4_5-max2-i")
+        out["max1_is_n"] = b1 is None and len(p1) == 2 and p1[0] == v1 and p1[1] == ns and all(
+            p1[0].subs({ns: n, is_: i, js: j}) == n for n, i, j in cases)
+        out["max2_is_i_le_n"] = b2 is not None and len(p2) == 2 and p2[0] == v2 and p2[1] == is_ and all(
+            p2[0].subs({ns: n, is_: i, js: j}) == i <= b2.subs({ns: n, is_: i, js: j}) for n, i, j in cases)
+        out["max2_value_with_s4_quantified"] = max_values("sec4_5-max2-set", True)
+    except (TexError, ValueError, TypeError) as exc:
+        return LineResult(False, how=how, kind="exhaustive", detail={"unread": str(exc)})
+    return LineResult(all(out.values()), how=how, kind="exhaustive", detail=out)
 
 
-@cache
-def inclusion_proof(n: int) -> bool:
-    """Every exponential of every function of T_{2n} has a frequency (a, b, c) with a - b, b - c integers and
-    max - min <= n: a phase (times alpha) times a combination in E_n, so T_{2n} lies in span cos/sin E_n."""
+@line_check("sec4_5-max2-quantifier")
+def check_max2_quantifier() -> LineResult:
+    """The second max as printed: its expression has s4, its quantifiers name s1 = 1, s2, s3 (s4 free): the max is
+    (i-1)/2 + (i-j)/2 + (j+1)/2 = i for s4 = +1 only; with s4 in {-1, +1} (the correction) it is i."""
+    from paper_repro.claims.lines.sec4_tex import TexError
+
+    how = ("the second max read (expression, quantifiers, K, value): by enumeration over K_{1,1} and the quantified "
+           "signs, each value of the unquantified s4 separately (printed) and s4 in {-1, +1} (corrected), n <= 6")
+    try:
+        printed, corrected = max_values("sec4_5-max2-set", False), max_values("sec4_5-max2-set", True)
+        expr, quant, _, _ = read_max("sec4_5-max2-set")
+    except (TexError, ValueError, TypeError) as exc:
+        return LineResult(False, how=how, kind="exhaustive", detail={"unread": str(exc)})
+    free = sorted(str(x) for x in expr.free_symbols if re.fullmatch(r"s\d", str(x)) and str(x) not in quant)
+    return LineResult(printed, corrected, how=how, kind="exhaustive",
+                      detail={"quantified": sorted(quant), "unquantified_in_expression": free,
+                              "example": "n = 1, i = j = 1, s4 = -1: max = 0, printed value i = 1"})
+
+
+def frequency_classes(n: int) -> set:
+    """Class keys of the frequencies of the exact expansion of every function of T_{2n}, each shifted by a multiple
+    of (1/2)(1,1,1) to integers (a phase: u + v + w = alpha); ValueError if some frequency cannot be."""
+    out = set()
     for lab in united_system(n):
         for f in half_monomial(exponents(lab)).terms:
-            if (f[0] - f[1]).denominator != 1 or (f[1] - f[2]).denominator != 1 or max(f) - min(f) > n:
-                return False
-    return True
+            shift = f[0] - int(f[0]) if f[0] >= 0 else f[0] - int(f[0])
+            g = tuple(x - shift for x in f)
+            if any(x.denominator != 1 for x in g):
+                raise ValueError(f"frequency {f} is not an integer triple plus a multiple of (1,1,1)")
+            out.add(class_key(tuple(int(x) for x in g)))
+    return out
+
+
+def read_union(tex: str) -> tuple:
+    """``\\cup_{i=a}^{b}E_{i}^{\\alpha}/_{\\sim}`` of a line: (a, b) parsed."""
+    from paper_repro.claims.lines.sec4_tex import TexError, parse
+
+    m = re.findall(r"\\cup_\{i=([^{}]+)\}\^\{([^{}]+)\}E_\{i\}\^\{\\alpha\}/_\{\\sim\}", tex)
+    if len(m) != 1:
+        raise TexError("no single union of E_i/~")
+    return parse(m[0][0]), parse(m[0][1])
 
 
 @line_check("sec4_5-inclusion")
 def check_inclusion() -> LineResult:
-    res = {n: inclusion_proof(n) for n in range(1, 4)}
-    return LineResult(all(res.values()), how="exact exponential expansion of every function of T_{2n}: each "
-                      "frequency is m(1,1,1) + an element of E_n, so each term is a phase m alpha times cos/sin of an "
-                      "E_n combination (n <= 3); with the class identities (sec4_5-phase-*) span T_{2n} is in "
-                      "span V_n", kind="exhaustive", detail={str(k): v for k, v in res.items()})
+    """The printed union of classes and the spaces (read): the classes of every frequency of T_{2n} (exact expansion,
+    shifted by a phase) lie in the printed union, which lies in the classes of V_n; span T_{2n} in span V_n by exact
+    ranks (n <= 3)."""
+    import sympy as sp
+
+    from paper_repro.claims.lines.sec4_tex import TexError
+
+    how = ("exact exponential expansion of every function of T_{2n}: each frequency is m(1,1,1)/2 + an integer triple "
+           "whose class lies in the printed union of E_i/~ (bounds read), n = 1..3; the printed inclusion of spans "
+           "(indices read) by exact ranks of T and V at rational points, n <= 3; cos and sin of the printed classes "
+           "belong to the printed V")
+    try:
+        ns = sp.Symbol("n")
+        t_in = verbatim("sec4_5-in-Vn")
+        t_inc = verbatim("sec4_5-inclusion").replace("%", " ")
+        mv = re.search(r"\\left\[\s*r_\{1\},g_\{1\},b_\{1\}\\right\]\s*,\\left\[\s*r_\{2\},g_\{2\},b_\{2\}\\right\]\s*"
+                       r"\\in\\cup.*i\.e\., \\\[\s*\\cos\\left\(\s*r_\{1\}u\+g_\{1\}v\+b_\{1\}w\\right\)\s*,\\sin\\left\(\s*"
+                       r"r_\{2\}u\+g_\{2\}%?\s*v\+b_\{2\}w\\right\)\s*\\in V_\{([^{}]+)\}\^\{\\alpha\}\.\s*$", t_in)
+        mi = re.search(r"linear combinations of sine and cosine functions that belong to some equivalence classes "
+                       r"\$\\left\[\s*r,g,b\\right\]\s*\\in\$ \$\\cup.*Consequently, \\\[\s*\\operatorname\{span\}\s*"
+                       r"T_\{([^{}]+)\}\^\{\\alpha\}\\subseteq\s*\\operatorname\{span\}\s*V_\{([^{}]+)\}\^\{\\alpha\}"
+                       r"\\text\{\.\}\s*\\\]\s*$", t_inc)
+        if not mv or not mi:
+            raise TexError("unread lines")
+        ok = {}
+        for key, tex, v_idx in (("in_Vn", t_in, mv.group(1)), ("inclusion", t_inc, mi.group(2))):
+            lo, hi = read_union(tex)
+            good = True
+            for n in (1, 2, 3):
+                a, b, v = int(lo.subs(ns, n)), int(hi.subs(ns, n)), int(sp.sympify(v_idx).subs(ns, n))
+                union = set().union(*(classes_of(x) for x in range(a, b + 1))) if b >= a else set()
+                good &= frequency_classes(n) <= union <= classes_of(v)
+            ok[key] = good
+        t_idx, v_idx = sp.sympify(mi.group(1).replace("2n", "2*n")), sp.sympify(mi.group(2))
+        ok["spans"] = all(span_rank((("T", int(t_idx.subs(ns, n))), ("V", int(v_idx.subs(ns, n))))) == span_rank(
+            (("V", int(v_idx.subs(ns, n))),)) for n in (1, 2, 3))
+    except (TexError, ValueError, TypeError, sp.SympifyError) as exc:
+        return LineResult(False, how=how, kind="exhaustive", detail={"unread": str(exc)})
+    return LineResult(all(ok.values()), how=how, kind="exhaustive", detail=ok)
+
 
 
 # ---------------------------------------------------------------------------------------------------------------

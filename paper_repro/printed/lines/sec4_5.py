@@ -926,10 +926,19 @@ LINES: list[Line] = [
                    '{j-2k_{4}-s_{3}}{2}:\\left( k_{1},k_{2},k_{3},k_{4}\\right) \\in K_{1,1},~s_{1}=1,s_{2},'
                    's_{3}\\in\\left\\{ -1,+1\\right\\} \\right\\} \\\\ & =\\frac{i-1}{2}+\\frac{i-j}{2}+\\fr'
                    'ac{j+1}{2}'),
-         says=('max{s4(i-2k2-s4)/2 - ...} = (i-1)/2 + (i-j)/2 + (j+1)/2 (s4 as defined after the eight-term '
-               'form).'),
-         status='checked',
-         check='sec4_5-max-bounds'),
+         says=('max{s4(i-2k2-s4)/2 - ...} = (i-1)/2 + (i-j)/2 + (j+1)/2, the max over K_{1,1}, s_1 = 1, '
+               's_2, s_3 in {-1,+1}.'),
+         status='erratum',
+         check='sec4_5-max2-quantifier',
+         erratum={'printed': ('max{ s4 (i-2k2-s4)/2 - s2 (i-j-2k3)/2 - s3 (j-2k4-s3)/2 : (k1..k4) in K_{1,1}, '
+                               's1 = 1, s2, s3 in {-1,+1} } = (i-1)/2 + (i-j)/2 + (j+1)/2'),
+                  'corrected': ('max{ ... : (k1..k4) in K_{1,1}, s2, s3, s4 in {-1,+1} } = (i-1)/2 + (i-j)/2 + '
+                                '(j+1)/2 (the quantifier list copied from the first max names s1, which does not '
+                                'occur, and leaves out s4, which does)'),
+                  'evidence': ('enumeration over K_{1,1}: with s4 = +1 or s4 in {-1,+1} the max is i for every odd '
+                                'j <= i <= n, n <= 6; with s4 = -1 fixed it is (i-1)/2 (n = 1, i = j = 1: 0, not '
+                                '1), so the printed value needs s4 quantified'),
+                  'severity': 'typo'}),
     Line(id='sec4_5-max2-i',
          tex=(1862, 1863),
          near='possible_products_inclusion',
