@@ -33,8 +33,8 @@ from paper_repro.core.labels import BasisLabel, exponents, index_of, r_exponents
 from paper_repro.core.normalization import coefficients, solve_full_exact
 from paper_repro.core.univariate import c_numerator_by_expansion
 from paper_repro.printed import normalization as pn
-from paper_repro.printed.lines import sec4_5 as pl
 from paper_repro.printed.lines import live_texts, verbatim
+from paper_repro.printed.lines import sec4_5 as pl
 
 Q = Fraction
 TS = (fmpq(1, 3), fmpq(2, 5), fmpq(1, 7))  # tan(alpha/4) of the sampled alpha
@@ -644,8 +644,8 @@ def split_relations(math: str) -> list[str]:
 
 
 def read_set_of_classes(item: str, env: dict | None = None) -> set:
-    """``E_{a}^{\\alpha}/_{\\sim}`` or ``E_{a}/_{\\sim}\\setminus\\left( E_{b}/_{\\sim}\\cup ..\\right)``: the class keys
-    of E_a not in the removed E_b (indices evaluated with ``env``)."""
+    """``E_{a}^{\\alpha}/_{\\sim}`` or ``E_{a}/_{\\sim}\\setminus\\left( E_{b}/_{\\sim}\\cup ..\\right)``: the class
+    keys of E_a not in the removed E_b (indices evaluated with ``env``)."""
     from paper_repro.claims.lines.sec4_tex import TexError, parse
 
     text = item.replace("%", " ")
@@ -722,8 +722,8 @@ def _math(tex: str) -> list[str]:
 
 
 def read_order_classes(tex: str) -> dict[str, bool]:
-    """``\\left[ ru+gv+bw\\right] \\in E_{a}/_{\\sim}\\setminus .., where at least one of the coefficients r,g,b is equal
-    to $c$``: every new class of the printed difference of quotient sets is met, in E_a, only by triples with a
+    """``\\left[ ru+gv+bw\\right] \\in E_{a}/_{\\sim}\\setminus .., where at least one of the coefficients r,g,b is
+    equal to $c$``: every new class of the printed difference of quotient sets is met, in E_a, only by triples with a
     coefficient c (the new classes of order a are those of the triples with a coefficient a)."""
     from paper_repro.claims.lines.sec4_tex import TexError
 
@@ -924,7 +924,8 @@ def read_prop_families(tex: str, n: int) -> list[tuple[int, int, int]]:
     from paper_repro.claims.lines.sec4_tex import parse
     from paper_repro.printed.lines.read import bound
 
-    fams = re.findall(r"\\left\\\{\s*\\left\[\s*(.*?)\s*\\right\]\s*\\right\\\}\s*_\{(\w)=([^{}]+)\}\^\{([^{}]+)\}", tex)
+    fams = re.findall(r"\\left\\\{\s*\\left\[\s*(.*?)\s*\\right\]\s*\\right\\\}"
+                      r"\s*_\{(\w)=([^{}]+)\}\^\{([^{}]+)\}", tex)
     if len(fams) != 3:
         raise ValueError(f"{len(fams)} families of classes, not 3")
     return [linear_triple(parse(expr), {"n": n, var: x}) for expr, var, lo, hi in fams
@@ -943,7 +944,8 @@ def read_prop() -> tuple[int, str]:
     if len(unions) != 1 or not all(_UNION.search(t) for t in texts):
         raise ValueError(f"the unions differ or are unread: {sorted(unions)}")
     rec = texts[0]
-    m = re.match(r"\s*V_\{n\}\^\{\\alpha\}=V_\{n-1\}\^\{\\alpha\}\\cup\\left\\\{\s*\\cos\\left\(\s*ru\+gv\+bw\\right\)\s*,"
+    m = re.match(r"\s*V_\{n\}\^\{\\alpha\}=V_\{n-1\}\^\{\\alpha\}\\cup\\left\\\{\s*"
+                 r"\\cos\\left\(\s*ru\+gv\+bw\\right\)\s*,"
                  r"\\sin\\left\(\s*ru\+gv\+bw\\right\)\s*:\\left\(\s*u,v,w\\right\)\s*\\in\\Omega\^\{\\alpha\s*\},~"
                  r"\\left\[\s*ru\+gv\+bw\\right\]\s*\\in\s*(.*?)\\right\\\}\s*\\\]\s*$", rec)
     if not m or not _UNION.fullmatch(m.group(1).strip()):
@@ -1216,7 +1218,8 @@ def _coincidence_items() -> dict[str, bool]:
     out["basis"] = ok
     # 1 + delta_n = dim span{sigma, span T_2n} <= dim span V_n = delta_n
     tex = verbatim("sec4_5-contradiction").replace("%", " ")
-    m = re.fullmatch(r"\s*\\\[\s*(.*?)=\\dim\s*\\operatorname\{span\}\s*\\left\\\{\s*\\sigma,\s*\\operatorname\{span\}\s*"
+    m = re.fullmatch(r"\s*\\\[\s*(.*?)=\\dim\s*\\operatorname\{span\}\s*\\left\\\{\s*\\sigma,\s*"
+                     r"\\operatorname\{span\}\s*"
                      r"T_\{([^{}]+)\}\^\{\\alpha\}\\right\\\}\s*\\leq\\dim\s*\\operatorname\{span\}\s*V_\{([^{}]+)\}"
                      r"\^\{\\alpha\}=(.*?),\s*\\\]\s*", tex)
     ok = bool(m)
@@ -1413,7 +1416,8 @@ def check_power_reduction() -> LineResult:
     try:
         out = {**power_reduction_holds("cos"), **power_reduction_holds("sin")}
         rng = verbatim("sec4_5-power-ranges").replace("%", " ")
-        out["ranges_m_in_N_t_in_R"] = re.fullmatch(r"\s*\(\$m\\in\s*\\mathbb\{N\}\s*\$,\s*\$t\\in\s*\\mathbb\{R\}\s*\$\)"
+        out["ranges_m_in_N_t_in_R"] = re.fullmatch(r"\s*\(\$m\\in\s*\\mathbb\{N\}\s*\$,\s*"
+                                                   r"\$t\\in\s*\\mathbb\{R\}\s*\$\)"
                                                    r"\s*", rng) is not None
     except (TexError, TypeError, ValueError) as exc:
         return LineResult(False, how=how, kind="exhaustive", detail={"unread": str(exc)})
@@ -1551,7 +1555,8 @@ def read_product_types() -> dict[tuple[int, int], object]:
 
 def r_in_span_of(expr, n_max: int = 3, parity=None) -> bool:
     """R_{2n,2n-i,j} (exact expansion of core.labels.r_exponents) lies in the span of the printed product ``expr``
-    over the box k1..k4 in {0..n}, for every (i, j) of the given parity, n <= n_max."""
+    over the k's of the exact expansions of its factors (:func:`true_k_ranges`), for every (i, j) of the given
+    parity, n <= n_max."""
     import sympy as sp
 
     u, v, w = sp.symbols("u v w")
@@ -1562,7 +1567,7 @@ def r_in_span_of(expr, n_max: int = 3, parity=None) -> bool:
                 if parity is not None and (i % 2, j % 2) != parity:
                     continue
                 target = half_monomial(r_exponents(n, i, j))
-                cols = [f((n, i, j, *k)) for k in product(range(n + 1), repeat=4)]
+                cols = [f((n, i, j, *k)) for k in product(*true_k_ranges(n, i, j))]
                 keys = sorted({x for c in [*cols, target] for x in c.terms})
 
                 def column(ep, keys=keys):
@@ -1586,15 +1591,17 @@ def check_product_types() -> LineResult:
 
     from paper_repro.claims.lines.sec4_tex import TexError, parse
 
-    how = ("each printed product (read) over k1..k4 in {0..n} spans the exact expansion of R_{2n,2n-i,j} for every "
-           "(i, j) of the printed parity, n <= 2; the four cases are the four parities; the parity line names the "
+    how = ("each printed product (read) over the k's of the factors' expansions spans the exact expansion of "
+           "R_{2n,2n-i,j} for every "
+           "(i, j) of the printed parity, n <= 3; the four cases are the four parities; the parity line names the "
            "four powers of R (read, against core.labels.r_exponents, n <= 4)")
     try:
         types = read_product_types()
-        out = {f"{a},{b}": r_in_span_of(p, 2, (a, b)) for (a, b), p in types.items()}
+        out = {f"{a},{b}": r_in_span_of(p, 3, (a, b)) for (a, b), p in types.items()}
         out["four_parities"] = sorted(types) == [(0, 0), (0, 1), (1, 0), (1, 1)]
         tex = verbatim("sec4_5-parity")
-        m = re.fullmatch(r"and by the parity of powers \$(.*?)\$, \$(.*?)\$, \$(.*?)\$ and \$(.*?)\$, one can easily see "
+        m = re.fullmatch(r"and by the parity of powers \$(.*?)\$, \$(.*?)\$, \$(.*?)\$ and \$(.*?)"
+                         r"\$, one can easily see "
                          r"that function \$R_\{2n,2n-i,j\}\^\{\\alpha\}\\left\( u,v,w\\right\) \$ can be written as "
                          r"the sum of products of the type%", tex)
         if not m:
@@ -1653,7 +1660,8 @@ def read_signs() -> dict:
     from paper_repro.claims.lines.sec4_tex import TexError, parse
 
     tex = verbatim("sec4_5-signs")
-    m = re.fullmatch(r"where \$s_\{(\d)\}=([-+]?\d+)\$ and \$((?:s_\{\d\},?)+)\\in\\left\\\{(.*?)\\right\\\} \$, i\.e\., "
+    m = re.fullmatch(r"where \$s_\{(\d)\}=([-+]?\d+)\$ and \$((?:s_\{\d\},?)+)\\in\\left\\\{(.*?)\\right\\\} "
+                     r"\$, i\.e\., "
                      r"\$s_\{r\}\^\{2\}=(\d+)\$, \$(r=.*)\$", tex)
     if not m:
         raise TexError("unread signs")
@@ -1861,7 +1869,8 @@ def check_integer_class() -> LineResult:
     return LineResult(all(ok.values()), how=how, kind="exhaustive", detail=ok)
 
 
-_MAX = re.compile(r"\s*&?\s*\\max\\left\\\{(.*?):\\left\(\s*k_\{1\},k_\{2\},k_\{3\},k_\{4\}\\right\)\s*\\in K_\{(\d),(\d)\},~"
+_MAX = re.compile(r"\s*&?\s*\\max\\left\\\{(.*?):\\left\(\s*k_\{1\},k_\{2\},k_\{3\},k_\{4\}\\right\)\s*"
+                  r"\\in K_\{(\d),(\d)\},~"
                   r"(.*?)\\right\\\}\s*\\\\\s*(?:=\s*&|&\s*=)(.*)$")
 
 
@@ -2012,8 +2021,9 @@ def check_inclusion() -> LineResult:
         t_in = verbatim("sec4_5-in-Vn")
         t_inc = verbatim("sec4_5-inclusion").replace("%", " ")
         mv = re.search(r"\\left\[\s*r_\{1\},g_\{1\},b_\{1\}\\right\]\s*,\\left\[\s*r_\{2\},g_\{2\},b_\{2\}\\right\]\s*"
-                       r"\\in\\cup.*i\.e\., \\\[\s*\\cos\\left\(\s*r_\{1\}u\+g_\{1\}v\+b_\{1\}w\\right\)\s*,\\sin\\left\(\s*"
-                       r"r_\{2\}u\+g_\{2\}%?\s*v\+b_\{2\}w\\right\)\s*\\in V_\{([^{}]+)\}\^\{\\alpha\}\.\s*$", t_in)
+                       r"\\in\\cup.*i\.e\., \\\[\s*\\cos\\left\(\s*r_\{1\}u\+g_\{1\}v\+b_\{1\}w\\right\)\s*,"
+                       r"\\sin\\left\(\s*r_\{2\}u\+g_\{2\}%?\s*v\+b_\{2\}w\\right\)\s*"
+                       r"\\in V_\{([^{}]+)\}\^\{\\alpha\}\.\s*$", t_in)
         mi = re.search(r"linear combinations of sine and cosine functions that belong to some equivalence classes "
                        r"\$\\left\[\s*r,g,b\\right\]\s*\\in\$ \$\\cup.*Consequently, \\\[\s*\\operatorname\{span\}\s*"
                        r"T_\{([^{}]+)\}\^\{\\alpha\}\\subseteq\s*\\operatorname\{span\}\s*V_\{([^{}]+)\}\^\{\\alpha\}"
@@ -2531,8 +2541,9 @@ def check_blending_def(override: dict[str, str] | None = None) -> LineResult:
                       detail={"n_max": 8})
 
 
-__all__ = ["EP", "class_key", "phase_equivalent", "printed_relation", "relation_matches", "power_reduction_ok",
-           "k_sets_agree", "prop_sets_agree", "b2_classes", "max_values", "y_range_maps_into_omega", "inclusion_proof"]
+__all__ = ["EP", "class_key", "phase_equivalent", "printed_relation", "relation_matches", "power_reduction_holds",
+           "k_sets_agree", "prop_sets_agree", "b2_classes", "max_values", "y_range_maps_into_omega",
+           "frequency_classes"]
 
 
 # -- the printed chain sum and its value 0 (read from the transcription) ---------------------------------------------
