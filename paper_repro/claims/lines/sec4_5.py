@@ -1701,7 +1701,7 @@ def check_eight_terms() -> LineResult:
 
     how = ("the product and the form read from the transcription, the signs read: for every odd (i, j) and (k1..k4) "
            "in K_{1,1}, n <= 3, the 2^(factors-1) formal terms of the product are, up to sign, exactly the form at "
-           "the printed signs (a sine for a sine series); the product spans R_{2n,2n-i,j} (n <= 2)")
+           "the printed signs (a sine for a sine series); the product spans R_{2n,2n-i,j} (n <= 3)")
     try:
         tex = verbatim("sec4_5-eight-terms").replace("%", " ")
         m = re.fullmatch(r"each of the (\w+) terms of the expansion of the product\s*\\\[(.*?)\\\]\s*has the form\s*"
@@ -1731,7 +1731,7 @@ def check_eight_terms() -> LineResult:
             ok_terms &= formal == printed
             ep = ep_prod((n, i, j, *k))
             ok_type &= (ep.is_sine_series() if isinstance(form, sp.sin) else ep.is_cosine_series())
-        spans = r_in_span_of(prod_e, 2, (1, 1))
+        spans = r_in_span_of(prod_e, 3, (1, 1))
     except (TexError, ValueError, TypeError) as exc:
         return LineResult(False, how=how, kind="exhaustive", detail={"unread": str(exc)})
     out = {"count": ok_count, "terms_are_the_form": ok_terms, "function_type": ok_type, "spans_R_odd_odd": spans}
@@ -1835,6 +1835,8 @@ def check_integer_class() -> LineResult:
             raise TexError("unread integer line")
         ks = re.findall(r"k_\{(\d)\}", m.group(2))
         parity = (int(m.group(3)), int(m.group(4)))
+        if max(parity) > 1:
+            raise TexError(f"K_{parity} is not a parity case")
         other = re.fullmatch(r"The remaining (\w+) cases of \$z\$ can be treated analogously\.",
                              verbatim("sec4_5-other-z-cases"))
         if not other or other.group(1) not in NUMBER_WORDS:
@@ -1891,6 +1893,8 @@ def read_max(line_id: str) -> tuple:
     rest = re.sub(r"s_\{(\d)\}=([-+]?\d+)|((?:s_\{\d\},?)+)\\in\\left\\\{(.*?)\\right\\\}|,|\s", "", q)
     if rest:
         raise TexError(f"{line_id}: unread quantifier {rest!r}")
+    if max(int(m.group(2)), int(m.group(3))) > 1:
+        raise TexError(f"{line_id}: K_{{{m.group(2)},{m.group(3)}}} is not a parity case")
     return parse(m.group(1)), quant, (int(m.group(2)), int(m.group(3))), parse(m.group(5))
 
 

@@ -1,50 +1,16 @@
 """Sections sec:coincidence and sec:partition_of_unity (source lines 1414-2167), line by line, verbatim.
 
-``LINES``: every displayed line and inline statement of the part (see :mod:`paper_repro.printed.lines`).  The
-constants and functions below are the machine-readable transcriptions of the same printed text that the checks
-(:mod:`paper_repro.claims.lines.sec4_5`) compare with independent computations.  The printed example formulas of
-Examples normalizing_coefficients_n_1..3 and Proposition prop:level_1_coefficients are transcribed in
-:mod:`paper_repro.printed.normalization` (``INTERMEDIATE``, ``FINAL``, ``prop_level_1``; compared with the source
-lines 2024-2107 and 1997-2006 for this part).
+``LINES``: every displayed line and inline statement of the part (see :mod:`paper_repro.printed.lines`).  The checks
+(:mod:`paper_repro.claims.lines.sec4_5`) read these transcriptions (Section 4 through
+:mod:`paper_repro.claims.lines.sec4_tex`); no retyped copy of a Section 4 formula is kept here.  The printed
+example formulas of Examples normalizing_coefficients_n_1..3 and Proposition prop:level_1_coefficients are
+transcribed in :mod:`paper_repro.printed.normalization` (``INTERMEDIATE``, ``FINAL``, ``prop_level_1``; compared
+with the source lines 2024-2107 and 1997-2006 for this part).
 """
 
 from __future__ import annotations
 
-from fractions import Fraction
-from math import comb
-
 from paper_repro.printed.lines import Line
-
-
-def proof_r_exponents(n: int, i: int, j: int) -> tuple[int, ...]:
-    """Lines 1683-1685: R_{2n,2n-i,j} = sin^{2n-i}(u/2) sin^i(w/2) cos^{i-j}(v/2) sin^j(v/2) (j <= i <= n), as
-    exponents of (sin u/2, cos u/2, sin v/2, cos v/2, sin w/2, cos w/2)."""
-    return (2 * n - i, 0, j, i - j, i, 0)
-
-
-def power_reduction(m: int, which: str, ep):
-    """Lines 1689-1720, the printed right-hand sides of cos^m(t/2) and sin^m(t/2), built with the trigonometric
-    polynomial class ``ep`` (``ep.cos(freq)``, ``ep.sin(freq)``, ``ep.const(1, x)``; frequency of t)."""
-    half = Fraction(1, 2)
-    if m % 2 == 1:
-        out = ep.const(1, 0)
-        for k in range((m - 1) // 2 + 1):
-            sign = 1 if which == "cos" else (-1) ** ((m - 1) // 2 - k)
-            term = ep.cos((half * (m - 2 * k),)) if which == "cos" else ep.sin((half * (m - 2 * k),))
-            out = out + term * Fraction(sign * comb(m, k), 2 ** (m - 1))
-        return out
-    out = ep.const(1, Fraction(comb(m, m // 2), 2**m))
-    for k in range(m // 2):
-        sign = 1 if which == "cos" else (-1) ** (m // 2 - k)
-        out = out + ep.cos((half * (m - 2 * k),)) * (Fraction(sign * comb(m, k) * 2, 2**m))
-    return out
-
-
-#: Eq. possible_products_inclusion: the type of each factor (u part, w part, first v part, second v part) in
-#: the four parity cases "i mod 2, j mod 2" (lines 1732-1750).
-PRODUCT_TYPES = {"0,0": ("cos", "cos", "cos", "cos"), "1,1": ("sin", "sin", "cos", "sin"),
-                 "0,1": ("cos", "cos", "cos", "sin"), "1,0": ("sin", "sin", "cos", "cos")}
-
 
 LINES: list[Line] = [
     Line(id='sec4_5-section-title',
