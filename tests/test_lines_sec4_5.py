@@ -218,7 +218,7 @@ def test_sec4_blank_line_fails_its_check(check_id):
     ("sec4_5-shift-chain", "sec4_5-shift-step3", "\\frac{j-2k_{4}-s_{3}}{2}\\right) v+s_{4}% \\frac{i-2k_{2}-s_{4}}",
      "\\frac{j-2k_{4}}{2}\\right) v+s_{4}% \\frac{i-2k_{2}-s_{4}}"),
     ("sec4_5-integer-class", "sec4_5-z-min", "\\min", "\\max"),
-    ("sec4_5-integer-class", "sec4_5-integer", "K_{1,1}", "K_{1,0}"),
+    ("sec4_5-integer-class", "sec4_5-integer", "K_{1,1}", "K_{0,0}"),
     ("sec4_5-max-bounds", "sec4_5-max2-i", "i\\leq n", "i\\leq n-1"),
     ("sec4_5-inclusion", "sec4_5-inclusion", "\\cup_{i=1}^{n}", "\\cup_{i=1}^{n-1}"),
 ])

@@ -304,7 +304,11 @@ LINES: list[Line] = [
                    'left\\{ r,g\\right\\} =1$'),
          says='0 < r <= g <= 2 means r = 1, g in {1,2}; z = min{r,g} = 1.',
          status='checked',
-         check='sec4_5-orders-1-2'),
+         check='sec4_5-orders-1-2',
+         reason=('debatable, read charitably: 0 < r <= g <= 2 also admits r = g = 2, so "i.e., r = 1, g in {1,2}" '
+                 'is the rest after the case r = g = 2 treated in the sentence before (the check reads it so: the '
+                 'integer solutions of the printed inequalities minus (2, 2) equal the printed (r, g)); the case '
+                 'analysis also leaves out 0 = g < r (erratum sec4_5-n2-b2-three)')),
     Line(id='sec4_5-n2-chain',
          tex=(1569, 1574),
          near='equivalence_conditions_2',
