@@ -267,8 +267,8 @@ class _Parser:
         raise TexError(f"unread {tok!r} at token {self.k - 1}")
 
 
-def parse(tex: str) -> sp.Expr:
-    """One expression (the whole ``tex`` must be read, apart from a trailing ``,``/``.``)."""
+def _own_parse(tex: str) -> sp.Expr:
+    """One expression (the whole ``tex`` must be read, apart from a trailing ``,``/``.``), by this module's reader."""
     p = _Parser(_strip_end(tokens(tex)))
     e = p.expr()
     if p.peek() is not None:
@@ -284,11 +284,11 @@ def _strip_end(toks: list[str]) -> list[str]:
     return toks
 
 
-def chain(tex: str, rel: str = "=") -> list[sp.Expr]:
+def _own_chain(tex: str, rel: str = "=") -> list[sp.Expr]:
     """The parts of a chain ``a = b = c`` (``rel`` the relation token; the ``&`` of an alignment ignored).
     ``\\dim\\mathcal{V}_{n}^{\\alpha}`` reads as ``dim_V(n)``, ``\\delta_{n}`` as ``delta(n)``.
 
-    >>> chain(r"\\dim\\mathcal{V}_{n}^{\\alpha}=\\dim\\mathcal{V}_{n-1}^{\\alpha}+6n")
+    >>> _own_chain(r"\\dim\\mathcal{V}_{n}^{\\alpha}=\\dim\\mathcal{V}_{n-1}^{\\alpha}+6n")
     [dim_V(n), 6*n + dim_V(n - 1)]
     """
     toks = _strip_end(tokens(tex))
@@ -314,4 +314,65 @@ def chain(tex: str, rel: str = "=") -> list[sp.Expr]:
     return out
 
 
-__all__ = ["PM", "ALPHA", "TexError", "tokens", "parse", "chain"]
+_INDEXED = {"r", "g", "b", "k", "s"}  # r_{1} -> r1, ..., s_{4} -> s4 (names of this section, plain symbols here)
+
+
+def from_latex_math(e):
+    """An expression of :mod:`paper_repro.printed.latex_math` in this module's conventions: ``r(1)`` -> ``r1`` (the
+    section's subscripted letters are plain symbols), ``dim(Vcal(n))`` -> ``dim_V(n)``, ``dim(Tcal(2n))`` ->
+    ``dim_T(2n)``, the sign ``pm`` -> :data:`PM`."""
+    from sympy.core.function import AppliedUndef
+
+    from paper_repro.printed import latex_math as lm
+
+    def conv(f):
+        name = f.func.__name__
+        if name == "dim" and len(f.args) == 1 and isinstance(f.args[0], AppliedUndef) and \
+                f.args[0].func.__name__ in ("Vcal", "Tcal") and len(f.args[0].args) == 1:
+            return sp.Function(f"dim_{f.args[0].func.__name__[0]}")(f.args[0].args[0])
+        if name in _INDEXED and len(f.args) == 1 and f.args[0].is_Integer:
+            return sp.Symbol(f"{name}{f.args[0]}")
+        return f
+
+    out = e.replace(lambda x: isinstance(x, AppliedUndef), conv)
+    return out.subs(lm.PM, PM)
+
+
+def parse(tex: str) -> sp.Expr:
+    """One expression: read by :func:`paper_repro.printed.latex_math.parse` (the project's reader of the paper's
+    notation) and put into this module's conventions (:func:`from_latex_math`); only what that reader refuses and
+    this one knows (``\\min``, ``\\underset``/``\\underbrace``, the ``\\dim`` of a prose line) is read by this
+    module's own grammar, which refuses the rest (``TexError``)."""
+    from paper_repro.printed import latex_math as lm
+
+    try:
+        return from_latex_math(lm.parse(tex.strip().rstrip(",.").strip()))
+    except lm.LatexMathError as exc:
+        if not re.search(r"\\(min|underset|underbrace|max)\b", tex):
+            raise TexError(str(exc)) from exc
+    return _own_parse(tex)
+
+
+def chain(tex: str, rel: str = "=") -> list[sp.Expr]:
+    """The parts of a chain ``a = b = c`` (the ``&`` of an alignment ignored), read by
+    :func:`paper_repro.printed.latex_math.parse_relation` (every relation must be ``=``, no trailing condition);
+    ``\\min``/``\\underbrace`` lines by this module's grammar (:func:`_own_chain`).  ``\\dim\\mathcal{V}_{n}^{\\alpha}``
+    reads as ``dim_V(n)``, ``\\delta_{n}`` as ``delta(n)``.
+
+    >>> chain(r"\\dim\\mathcal{V}_{n}^{\\alpha}=\\dim\\mathcal{V}_{n-1}^{\\alpha}+6n")
+    [dim_V(n), 6*n + dim_V(n - 1)]
+    """
+    from paper_repro.printed import latex_math as lm
+
+    if rel == "=" and not re.search(r"\\(min|underset|underbrace|max)\b", tex):
+        try:
+            r = lm.parse_relation(tex)
+        except lm.LatexMathError as exc:
+            raise TexError(str(exc)) from exc
+        if any(op != "=" for op in r.ops) or r.conditions:
+            raise TexError(f"not a chain of '=': {r.ops}")
+        return [from_latex_math(x) for x in r.parts]
+    return _own_chain(tex, rel)
+
+
+__all__ = ["PM", "ALPHA", "TexError", "tokens", "parse", "chain", "from_latex_math"]
