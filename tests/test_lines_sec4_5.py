@@ -221,6 +221,7 @@ def test_sec4_blank_line_fails_its_check(check_id):
     ("sec4_5-integer-class", "sec4_5-integer", "K_{1,1}", "K_{0,0}"),
     ("sec4_5-max-bounds", "sec4_5-max2-i", "i\\leq n", "i\\leq n-1"),
     ("sec4_5-inclusion", "sec4_5-inclusion", "\\cup_{i=1}^{n}", "\\cup_{i=1}^{n-1}"),
+    ("sec4_5-in-Vn", "sec4_5-in-Vn", "\\in V_{n}", "\\in V_{n-1}"),
 ])
 def test_sec4_checks_reject_a_wrong_transcription(check_id, line_id, right, wrong):
     text = pl.LINES[[x.id for x in pl.LINES].index(line_id)].verbatim
@@ -235,6 +236,7 @@ def test_sec4_checks_reject_a_wrong_transcription(check_id, line_id, right, wron
                            "sec4_5-prop-new-classes": ("\\cup_{i=1}", "\\cup_{i=0}")}),
     ("sec4_5-K-10", {"sec4_5-K10": ("\\frac{i-j}% {2}", "\\frac{i-j-1}% {2}")}),
     ("sec4_5-max2-quantifier", {"sec4_5-max2-set": ("s_{1}=1,s_{2},s_{3}\\in", "s_{2},s_{3},s_{4}\\in")}),
+    ("sec4_5-in-Vn", {"sec4_5-in-Vn": ("\\in V_{n}", "\\in\\operatorname{span}V_{n}")}),
 ])
 def test_sec4_errata_printed_fails_corrected_text_holds(check_id, fixes):
     """Each erratum: the printed line fails, the corrected line (the printed text with the correction applied) holds

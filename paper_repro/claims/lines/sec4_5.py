@@ -1025,9 +1025,9 @@ _SPAN_RANKS: dict = {}
 
 
 def span_rank(members: tuple[tuple[str, int], ...]) -> int:
-    """Exact rank of the union of the systems ``("T", 2m)`` (T_{2m}^alpha, from :mod:`paper_repro.core`) and
-    ``("V", k)`` (cos/sin of one triple per class of E_k, and 1) at delta_3 + 4 rational points of Omega^alpha
-    (tan(alpha/4) = 1/3), m, k <= 3."""
+    """Exact rank of the union of the systems ``("T", 2m)`` (T_{2m}^alpha, from :mod:`paper_repro.core`),
+    ``("V", k)`` (cos/sin of one triple per class of E_k, and 1) and ``("X", (r, g, b))`` (cos and sin of one
+    triple) at delta_3 + 4 rational points of Omega^alpha (tan(alpha/4) = 1/3), m, k <= 3."""
     key = tuple(sorted(set(members)))
     if key in _SPAN_RANKS:
         return _SPAN_RANKS[key]
@@ -1046,6 +1046,9 @@ def span_rank(members: tuple[tuple[str, int], ...]) -> int:
                 raise ValueError(f"T_{order} is not computed")
             tm = evaluate(order // 2, alpha, pts, ctx)
             cols += [[tm[p, q] for p in range(len(pts))] for q in range(tm.shape[1])]
+        elif kind == "X":  # cos and sin of one triple
+            cs = [cos_sin_combination(full[p], order, ctx, fmpq(1)) for p in range(len(pts))]
+            cols += [[c for c, _ in cs], [x for _, x in cs]]
         else:
             if not 0 <= order <= 3:
                 raise ValueError(f"V_{order} is not computed")
@@ -2007,6 +2010,69 @@ def read_union(tex: str) -> tuple:
     return parse(m[0][0]), parse(m[0][1])
 
 
+def union_holds(tex: str, v_idx: str) -> bool:
+    """The classes of every frequency of T_{2n} lie in the printed union cup_{i=a}^{b} E_i/~ (bounds read), which
+    lies in the classes of the printed V (n = 1..3)."""
+    import sympy as sp
+
+    ns = sp.Symbol("n")
+    lo, hi = read_union(tex)
+    good = True
+    for n in (1, 2, 3):
+        a, b, v = int(lo.subs(ns, n)), int(hi.subs(ns, n)), int(sp.sympify(v_idx).subs(ns, n))
+        union = set().union(*(classes_of(x) for x in range(a, b + 1))) if b >= a else set()
+        good &= frequency_classes(n) <= union <= classes_of(v)
+    return good
+
+
+@line_check("sec4_5-in-Vn")
+def check_in_vn() -> LineResult:
+    """``[r1,g1,b1], [r2,g2,b2] in cup_{i=1}^{n} E_i/~, i.e., cos(r1u+g1v+b1w), sin(r2u+g2v+b2w) in V_n``: the union
+    and V's index read.  As printed (elements of V_n): cos and sin of every triple of the union are functions of V_n
+    -- false, V_n holds one representative per class (cos(u+v) = cos(alpha - w) is not in V_1, sin 0 = 0 is in no
+    V_n); corrected (in span V_n): exact ranks of V_n with cos, sin of each triple added, n <= 2."""
+    import sympy as sp
+
+    from paper_repro.claims.lines.sec4_tex import TexError
+
+    how = ("the union's bounds and V's index read from the transcription; printed: cos/sin of every triple of the "
+           "union equal (exact expansion over (u, v, alpha), w = alpha - u - v) to a function of V_n (1 and cos/sin of "
+           "one triple per class); corrected: they lie in span V_n (exact ranks at rational points), and the "
+           "frequencies of T_{2n} lie in the union, n = 1..2")
+    try:
+        t_in = verbatim("sec4_5-in-Vn")
+        mv = re.search(r"\\left\[\s*r_\{1\},g_\{1\},b_\{1\}\\right\]\s*,\\left\[\s*r_\{2\},g_\{2\},b_\{2\}\\right\]\s*"
+                       r"\\in\\cup.*i\.e\., \\\[\s*\\cos\\left\(\s*r_\{1\}u\+g_\{1\}v\+b_\{1\}w\\right\)\s*,"
+                       r"\\sin\\left\(\s*r_\{2\}u\+g_\{2\}%?\s*v\+b_\{2\}w\\right\)\s*"
+                       r"\\in\s*(\\operatorname\{span\}\s*)?V_\{([^{}]+)\}\^\{\\alpha\}\.\s*$", t_in)
+        if not mv:
+            raise TexError("unread line")
+        says_span, v_text = bool(mv.group(1)), mv.group(2)
+        ns = sp.Symbol("n")
+        lo, hi = read_union(t_in)
+        literal, spans = True, union_holds(t_in, v_text)
+        for n in (1, 2):
+            a, b, vi = int(lo.subs(ns, n)), int(hi.subs(ns, n)), int(sp.sympify(v_text).subs(ns, n))
+            triples = sorted({t for x in range(a, b + 1) for t in E(x)})
+
+            def ep(f, t):  # f(r u + g v + b w) with w = alpha - u - v, over (u, v, alpha)
+                return f((t[0] - t[2], t[1] - t[2], t[2]))
+
+            members = [EP.const(3, 1)] + [ep(f, t) for t in own_v_args(vi) for f in (EP.cos, EP.sin)]
+            literal &= all(any(ep(f, t) == m for m in members) for t in triples for f in (EP.cos, EP.sin))
+            if vi > 3:
+                raise ValueError(f"V_{vi} is not computed")
+            base = span_rank((("V", vi),))
+            spans &= all(span_rank((("V", vi), ("X", t))) == base for t in triples)
+    except (TexError, ValueError, TypeError, sp.SympifyError) as exc:
+        return LineResult(False, how=how, kind="exhaustive", detail={"unread": str(exc)})
+    printed = spans if says_span else literal and spans
+    return LineResult(printed, spans if not printed else None, how=how, kind="exhaustive",
+                      detail={"printed_says_span": says_span, "elements_of_V_n": literal, "in_span_V_n": spans,
+                              "example": "n = 1: cos(u+v) = cos(alpha - w) is none of 1, cos u, sin u, cos v, "
+                                         "sin v, cos w, sin w"})
+
+
 @line_check("sec4_5-inclusion")
 def check_inclusion() -> LineResult:
     """The printed union of classes and the spaces (read): the classes of every frequency of T_{2n} (exact expansion,
@@ -2018,31 +2084,17 @@ def check_inclusion() -> LineResult:
 
     how = ("exact exponential expansion of every function of T_{2n}: each frequency is m(1,1,1)/2 + an integer triple "
            "whose class lies in the printed union of E_i/~ (bounds read), n = 1..3; the printed inclusion of spans "
-           "(indices read) by exact ranks of T and V at rational points, n <= 3; cos and sin of the printed classes "
-           "belong to the printed V")
+           "(indices read) by exact ranks of T and V at rational points, n <= 3")
     try:
         ns = sp.Symbol("n")
-        t_in = verbatim("sec4_5-in-Vn")
         t_inc = verbatim("sec4_5-inclusion").replace("%", " ")
-        mv = re.search(r"\\left\[\s*r_\{1\},g_\{1\},b_\{1\}\\right\]\s*,\\left\[\s*r_\{2\},g_\{2\},b_\{2\}\\right\]\s*"
-                       r"\\in\\cup.*i\.e\., \\\[\s*\\cos\\left\(\s*r_\{1\}u\+g_\{1\}v\+b_\{1\}w\\right\)\s*,"
-                       r"\\sin\\left\(\s*r_\{2\}u\+g_\{2\}%?\s*v\+b_\{2\}w\\right\)\s*"
-                       r"\\in V_\{([^{}]+)\}\^\{\\alpha\}\.\s*$", t_in)
         mi = re.search(r"linear combinations of sine and cosine functions that belong to some equivalence classes "
                        r"\$\\left\[\s*r,g,b\\right\]\s*\\in\$ \$\\cup.*Consequently, \\\[\s*\\operatorname\{span\}\s*"
                        r"T_\{([^{}]+)\}\^\{\\alpha\}\\subseteq\s*\\operatorname\{span\}\s*V_\{([^{}]+)\}\^\{\\alpha\}"
                        r"\\text\{\.\}\s*\\\]\s*$", t_inc)
-        if not mv or not mi:
-            raise TexError("unread lines")
-        ok = {}
-        for key, tex, v_idx in (("in_Vn", t_in, mv.group(1)), ("inclusion", t_inc, mi.group(2))):
-            lo, hi = read_union(tex)
-            good = True
-            for n in (1, 2, 3):
-                a, b, v = int(lo.subs(ns, n)), int(hi.subs(ns, n)), int(sp.sympify(v_idx).subs(ns, n))
-                union = set().union(*(classes_of(x) for x in range(a, b + 1))) if b >= a else set()
-                good &= frequency_classes(n) <= union <= classes_of(v)
-            ok[key] = good
+        if not mi:
+            raise TexError("unread line")
+        ok = {"inclusion": union_holds(t_inc, mi.group(2))}
         t_idx, v_idx = sp.sympify(mi.group(1).replace("2n", "2*n")), sp.sympify(mi.group(2))
         ok["spans"] = all(span_rank((("T", int(t_idx.subs(ns, n))), ("V", int(v_idx.subs(ns, n))))) == span_rank(
             (("V", int(v_idx.subs(ns, n))),)) for n in (1, 2, 3))

@@ -724,8 +724,17 @@ LINES: list[Line] = [
                    '\\sin\\left( r_{2}u+g_{2}% v+b_{2}w\\right) \\in V_{n}^{\\alpha}.'),
          says=('Each product is a combination of cos, sin of combinations whose classes lie in cup_{i=1}^n E'
                '_i/~, i.e. of functions of V_n.'),
-         status='checked',
-         check='sec4_5-inclusion'),
+         status='erratum',
+         check='sec4_5-in-Vn',
+         erratum={'printed': ('[r1,g1,b1], [r2,g2,b2] in cup_{i=1}^n E_i/~, i.e., cos(r1u+g1v+b1w), '
+                               'sin(r2u+g2v+b2w) in V_n^alpha'),
+                  'corrected': ('... i.e., cos(r1u+g1v+b1w), sin(r2u+g2v+b2w) in span V_n^alpha (V_n holds one '
+                                'representative per class; another member of the class differs by a phase)'),
+                  'evidence': ('exact expansion with w = alpha - u - v: cos(u+v) = cos(alpha - w) is none of the '
+                                'functions 1, cos u, sin u, cos v, sin v, cos w, sin w of V_1, and sin 0 = 0 is in no '
+                                'V_n; exact ranks at rational points of Omega^alpha: cos and sin of every triple of '
+                                'E_n lie in span V_n, n = 1..2'),
+                  'severity': 'typo'}),
     Line(id='sec4_5-product-to-sum-1',
          tex=(1785, 1786),
          near='possible_products_inclusion',
