@@ -364,6 +364,9 @@ def chain(tex: str, rel: str = "=") -> list[sp.Expr]:
     """
     from paper_repro.printed import latex_math as lm
 
+    lead = re.match(r"[\s&%]*(\\neq|\\leq|\\geq|\\ne\b|<|>|\\sim|\\nsim|\\in\b|\\notin)", tex)
+    if lead:  # a continued chain starts with its relation: it must be '='
+        raise TexError(f"the chain continues with {lead.group(1)}, not '='")
     if rel == "=" and not re.search(r"\\(min|underset|underbrace|max)\b", tex):
         try:
             r = lm.parse_relation(tex)
