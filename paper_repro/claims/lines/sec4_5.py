@@ -1,5 +1,12 @@
 """Checks of the lines of Sections sec:coincidence and sec:partition_of_unity (source lines 1414-2167).
 
+Section sec:coincidence (lines 1414-1906): every check reads its lines at call time through
+:func:`paper_repro.printed.lines.verbatim` and :mod:`paper_repro.claims.lines.sec4_tex` (formulas by
+:mod:`paper_repro.printed.latex_math`; prose by anchored regular expressions that must match the whole sentence, so
+that a changed word, index, count or quantifier is refused), and compares what it read with the computation below;
+no formula of the section is retyped.  The printed formulas become exact trigonometric polynomials
+(:func:`to_ep`, :func:`compile_ep`).
+
 Independent machinery used here:
 
 * :class:`EP` -- exact trigonometric polynomials written as sums of complex exponentials
