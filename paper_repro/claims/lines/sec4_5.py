@@ -404,26 +404,6 @@ def _related_pairs(n: int):
                 yield a, b, d.pop(), -1
 
 
-def _pair_subs(a, b, z, sg) -> dict:
-    import sympy as sp
-
-    from paper_repro.claims.lines.sec4_tex import ALPHA, PM
-
-    names = sp.symbols("r1 g1 b1 r2 g2 b2 z")
-    u, v, w = sp.symbols("u v w")
-    return {**dict(zip(names, (*a, *b, z))), PM: sg, w: ALPHA - u - v}
-
-
-def _on_omega(expr, subs, extra=()) -> EP:
-    """``expr`` at one related pair, w = alpha - u - v, as an exact polynomial over (u, v, alpha, *extra)."""
-    import sympy as sp
-
-    from paper_repro.claims.lines.sec4_tex import ALPHA
-
-    u, v = sp.symbols("u v")
-    return to_ep(expr.subs(subs, simultaneous=True), (u, v, ALPHA, *extra))
-
-
 def phase_chain(kind: str) -> list:
     """The '=' parts of the printed chain of ``kind`` (read from the transcriptions, in order)."""
     from paper_repro.claims.lines.sec4_tex import chain
@@ -569,16 +549,6 @@ def read_triple(expr: str, **env: int) -> tuple[int, int, int]:
         c = m.group(1)
         out[m.group(2)] += int(c) if c.isdigit() else (env[c] if c else 1)
     return out["u"], out["v"], out["w"]
-
-
-def read_relations(tex: str) -> list[tuple[tuple[int, int, int], tuple[int, int, int], bool]]:
-    """Every pair of a printed chain ``a \\sim b \\sim c`` (all pairs of a chain of equivalences) or
-    ``a \\nsim b``, with whether it is printed as equivalent."""
-    parts = re.split(r"(\\nsim|\\sim)", tex.strip().rstrip(".,"))
-    triples, rels = [read_triple(x) for x in parts[0::2]], parts[1::2]
-    if all(r == "\\sim" for r in rels):
-        return [(a, b, True) for k, a in enumerate(triples) for b in triples[k + 1:]]
-    return [(a, b, r == "\\sim") for a, b, r in zip(triples, triples[1:], rels)]
 
 
 _DOMAIN = re.compile(r":\\left\(\s*u,v,w\\right\)\s*\\in\s*\\Omega\^\{\\alpha\s*\}\s*\\right\\\}")
