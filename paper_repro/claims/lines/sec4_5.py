@@ -1,5 +1,12 @@
 """Checks of the lines of Sections sec:coincidence and sec:partition_of_unity (source lines 1414-2167).
 
+Section sec:coincidence (lines 1414-1906): every check reads its lines at call time through
+:func:`paper_repro.printed.lines.verbatim` and :mod:`paper_repro.claims.lines.sec4_tex` (formulas by
+:mod:`paper_repro.printed.latex_math`; prose by anchored regular expressions that must match the whole sentence, so
+that a changed word, index, count or quantifier is refused), and compares what it read with the computation below;
+no formula of the section is retyped.  The printed formulas become exact trigonometric polynomials
+(:func:`to_ep`, :func:`compile_ep`).
+
 Independent machinery used here:
 
 * :class:`EP` -- exact trigonometric polynomials written as sums of complex exponentials
@@ -20,6 +27,7 @@ import re
 from fractions import Fraction
 from functools import cache
 from itertools import product
+from math import comb
 
 from flint import fmpq, fmpq_mat
 
@@ -29,6 +37,7 @@ from paper_repro.core.context import ExactContext
 from paper_repro.core.domain import rational_alpha, sample_rational_points
 from paper_repro.core.fourier import cos_sin_combination, full_angles
 from paper_repro.core.labels import exponents, r_exponents, united_system
+from paper_repro.printed.lines import live_texts, verbatim
 from paper_repro.printed.lines import sec4_5 as pl
 
 Q = Fraction
@@ -135,6 +144,113 @@ def half_monomial(e: tuple[int, ...]) -> EP:
 
 
 # ---------------------------------------------------------------------------------------------------------------
+# printed formulas (read by paper_repro.claims.lines.sec4_tex) as exact trigonometric polynomials
+# ---------------------------------------------------------------------------------------------------------------
+def to_ep(expr, variables) -> EP:
+    """The sympy expression ``expr`` (sums and products of rationals, integer powers, sin/cos of rational linear
+    forms in ``variables``) as an :class:`EP` over ``variables``; ``TexError`` for anything else (an unknown symbol
+    left in a printed formula, a non-linear argument)."""
+    import sympy as sp
+
+    from paper_repro.claims.lines.sec4_tex import TexError
+
+    nv = len(variables)
+    if expr.is_Rational:
+        return EP.const(nv, Q(int(expr.p), int(expr.q)))
+    if expr.is_Add:
+        out = EP(nv)
+        for a in expr.args:
+            out = out + to_ep(a, variables)
+        return out
+    if expr.is_Mul:
+        out = EP.const(nv, 1)
+        for a in expr.args:
+            out = out * to_ep(a, variables)
+        return out
+    if expr.is_Pow and expr.exp.is_Integer and expr.exp >= 0:
+        return to_ep(expr.base, variables) ** int(expr.exp)
+    if isinstance(expr, (sp.sin, sp.cos)):
+        arg = sp.expand(expr.args[0])
+        poly = sp.Poly(arg, *variables) if arg.free_symbols <= set(variables) else None
+        if poly is None or poly.total_degree() > 1 or poly.coeff_monomial(1) != 0:
+            raise TexError(f"argument {arg} is not a linear form in {variables}")
+        freq = []
+        for v in variables:
+            c = poly.coeff_monomial(v)
+            if not c.is_Rational:
+                raise TexError(f"coefficient {c} of {v} is not rational")
+            freq.append(Q(int(c.p), int(c.q)))
+        return EP.sin(freq) if isinstance(expr, sp.sin) else EP.cos(freq)
+    raise TexError(f"cannot expand {expr}")
+
+
+def compile_ep(expr, variables, params):
+    """``expr`` (read from a transcription; sin/cos of forms linear in ``variables`` whose coefficients, like the
+    other factors, may depend on ``params``) compiled to a function ``values of params -> EP`` (fast exact
+    evaluation at many parameter values); ``TexError`` for a symbol that is neither a variable nor a parameter, or
+    an argument that is not linear in the variables."""
+    import sympy as sp
+
+    from paper_repro.claims.lines.sec4_tex import TexError
+
+    nv = len(variables)
+    extra = expr.free_symbols - set(variables) - set(params)
+    if extra:
+        raise TexError(f"unknown symbols {sorted(map(str, extra))}")
+
+    def scalar(e):
+        f = sp.lambdify(params, e, modules=[{"binomial": comb}, "math"])
+        return lambda vals: EP.const(nv, Q(f(*vals)))
+
+    def comp(e):
+        if not (e.free_symbols & set(variables)) and not e.has(sp.sin, sp.cos):
+            return scalar(sp.nsimplify(e) if e.is_Float else e)
+        if e.is_Add or e.is_Mul:
+            fs = [comp(a) for a in e.args]
+
+            def run(vals, fs=fs, add=e.is_Add):
+                out = EP(nv) if add else EP.const(nv, 1)
+                for f in fs:
+                    out = out + f(vals) if add else out * f(vals)
+                return out
+            return run
+        if e.is_Pow and e.exp.is_Integer and e.exp >= 0:
+            f, k = comp(e.base), int(e.exp)
+            return lambda vals: f(vals) ** k
+        if isinstance(e, (sp.sin, sp.cos)):
+            arg = sp.expand(e.args[0])
+            poly = sp.Poly(arg, *variables)
+            if poly.total_degree() > 1 or poly.coeff_monomial(1) != 0:
+                raise TexError(f"argument {arg} is not a linear form in {variables}")
+            cf = [sp.lambdify(params, poly.coeff_monomial(v)) for v in variables]
+            mk = EP.sin if isinstance(e, sp.sin) else EP.cos
+            return lambda vals: mk([Q(c(*vals)) for c in cf])
+        raise TexError(f"cannot expand {e}")
+
+    return comp(expr)
+
+
+def linear_triple(expr, env: dict | None = None) -> tuple[int, int, int]:
+    """``(r, g, b)`` of a printed combination ``ru+gv+bw`` (a sympy expression; letters of ``env`` substituted):
+    integer coefficients of u, v, w and nothing else."""
+    import sympy as sp
+
+    from paper_repro.claims.lines.sec4_tex import TexError
+
+    u, v, w = sp.symbols("u v w")
+    e = sp.expand(sp.sympify(expr).subs({sp.Symbol(k): x for k, x in (env or {}).items()}))
+    if not e.free_symbols <= {u, v, w}:
+        raise TexError(f"{e} is not a combination of u, v, w")
+    poly = sp.Poly(e, u, v, w)
+    if poly.total_degree() > 1 or poly.coeff_monomial(1) != 0:
+        raise TexError(f"{e} is not a linear combination of u, v, w")
+    out = tuple(poly.coeff_monomial(x) for x in (u, v, w))
+    if not all(c.is_Integer for c in out):
+        raise TexError(f"{e}: coefficients not integers")
+    return tuple(int(c) for c in out)  # type: ignore[return-value]
+
+
+# ---------------------------------------------------------------------------------------------------------------
 # phase equivalence (meaning of Definition equivalence_relation_definition)
 # ---------------------------------------------------------------------------------------------------------------
 def class_key(t) -> tuple[int, ...]:
@@ -162,135 +278,258 @@ def new_class_keys(n: int, lowest: int = 0) -> set[tuple[int, ...]]:
     return classes_of(n) - old
 
 
-def printed_relation(a, b, n: int, zmin=None, zmax=None) -> bool:
-    """The printed conditions equivalence_conditions_1/2 with z in {zmin..zmax} (printed: -n..2n)."""
-    zmin = -n if zmin is None else zmin
-    zmax = 2 * n if zmax is None else zmax
-    s = {a[k] + b[k] for k in range(3)}
-    d = {b[k] - a[k] for k in range(3)}
-    return any(len(x) == 1 and zmin <= next(iter(x)) <= zmax for x in (s, d))
+COND_LINES = (("sec4_5-cond1-row1", "sec4_5-cond1-row2", "sec4_5-cond1-row3"),
+              ("sec4_5-cond2-row1", "sec4_5-cond2-row2", "sec4_5-cond2-row3"))
 
 
-def relation_matches(n_max: int = 6, zrange=None) -> tuple[bool, dict]:
-    ok, extremes = True, set()
+def read_conditions() -> list[list]:
+    """The two printed systems equivalence_conditions_1/2, each three rows ``lhs = z`` read from the transcriptions,
+    as functions ``(r1, g1, b1, r2, g2, b2, z) -> lhs - rhs`` (a row holds when it is 0)."""
+    import sympy as sp
+
+    from paper_repro.claims.lines.sec4_tex import TexError, chain
+
+    names = sp.symbols("r1 g1 b1 r2 g2 b2 z")
+    out = []
+    for rows in COND_LINES:
+        system = []
+        for lid in rows:
+            parts = chain(verbatim(lid))
+            if len(parts) != 2:
+                raise TexError(f"{lid}: not one equation")
+            e = sp.expand(parts[0] - parts[1])
+            if not e.free_symbols <= set(names):
+                raise TexError(f"{lid}: unknown symbols in {e}")
+            system.append(sp.lambdify(names, e))
+        out.append(system)
+    return out
+
+
+def printed_relation(a, b, zs, conditions) -> bool:
+    """The printed definition: some z of ``zs`` fulfils every row of one of the two systems."""
+    return any(all(row(*a, *b, z) == 0 for row in system) for system in conditions for z in zs)
+
+
+def relation_matches(n_max: int, zrange, conditions) -> tuple[bool, dict]:
+    """The printed relation (conditions and z range as read) against phase equivalence on all pairs of E_n, and the
+    least and greatest z that relate two elements of E_n (the range must be exactly what is needed)."""
+    ok, used = True, {}
     for n in range(1, n_max + 1):
-        lo, hi = zrange(n) if zrange else (-n, 2 * n)
+        zs = zrange(n)
         for a in E(n):
             for b in E(n):
-                if printed_relation(a, b, n, lo, hi) != phase_equivalent(a, b):
+                if printed_relation(a, b, zs, conditions) != phase_equivalent(a, b):
                     ok = False
-                s = {a[k] + b[k] for k in range(3)}
-                d = {b[k] - a[k] for k in range(3)}
-                for x in (s, d):
-                    if len(x) == 1:
-                        extremes.add((n, next(iter(x))))
-    used = {n: [min(z for m, z in extremes if m == n), max(z for m, z in extremes if m == n)]
-            for n in range(1, n_max + 1)}
-    return ok, {"z_used_min_max": {str(k): v for k, v in used.items()}}
+        needed = {z for a in E(n) for b in E(n) for z in range(-3 * n, 3 * n + 1)
+                  if (all(a[k] + b[k] == z for k in range(3)) or all(b[k] - a[k] == z for k in range(3)))}
+        used[str(n)] = [min(needed), max(needed)]
+    return ok, {"z_needed_min_max": used}
 
 
-def read_z_range(override: dict[str, str] | None = None):
-    """The printed range of z, ``z\\in\\left\\{ -n,-\\left( n-1\\right) ,\\ldots,0,1,\\ldots,2n\\right\\}``, read from
-    both lines that print it (they must agree): a function n -> (first, last)."""
-    from paper_repro.printed.lines.read import bound
+def read_z_range():
+    """The printed set of z, ``\\left\\{ -n,-\\left( n-1\\right) ,\\ldots,0,1,\\ldots,2n\\right\\}``, read from
+    both lines that print it (they must agree): a function n -> the list of its integers.  Every listed element is
+    read; two listed neighbours differ by 1, elements around ``\\ldots`` increase."""
+    from paper_repro.claims.lines.sec4_tex import TexError, parse
 
-    texts = _texts({"sec4_5-z-range", "sec4_5-z-range-2"}, override)
     ends = set()
-    for tex in texts.values():
-        m = re.search(r"z\\in\\left\\\{\s*([^,]+?)\s*,.*\\ldots,\s*([^\\]+?)\s*\\right\\\}", tex)
+    for lid in ("sec4_5-z-range", "sec4_5-z-range-2"):
+        tex = verbatim(lid)
+        m = re.search(r"exists an integer \$z\\in\\left\\\{(.*)\\right\\\}\s*\$", tex)
         if not m:
-            raise ValueError(f"no range of z in {tex[:50]!r}")
-        ends.add(m.groups())
+            raise TexError(f"{lid}: no 'exists an integer z in {{..}}'")
+        ends.add(m.group(1).replace(" ", ""))
     if len(ends) != 1:
-        raise ValueError(f"the two lines print different ranges: {sorted(ends)}")
-    lo, hi = ends.pop()
-    return lambda n: (bound(lo, n=n), bound(hi, n=n))
+        raise TexError(f"the two lines print different ranges: {sorted(ends)}")
+    items = [x.strip() for x in re.split(r",(?![^()]*\\right\))", ends.pop().replace("\\left(", "(")
+                                                                     .replace("\\right)", ")"))]
+    exprs = [None if x == "\\ldots" else parse(x) for x in items]
+    if exprs[0] is None or exprs[-1] is None:
+        raise TexError("the set starts or ends with an ellipsis")
+
+    def listed(n: int) -> list[int]:
+        vals = [None if e is None else e.subs("n", n) for e in exprs]
+        for x in vals:
+            if x is not None and not x.is_Integer:
+                raise TexError(f"element {x} is not an integer")
+        for k in range(len(vals) - 1):
+            x, y = vals[k], vals[k + 1]
+            if x is not None and y is not None and y - x != 1:
+                raise TexError(f"listed neighbours {x}, {y} do not step by 1")
+            if x is None and (vals[k - 1] is None or y is None or not y >= vals[k - 1]):
+                raise TexError("elements around an ellipsis decrease")
+        return list(range(int(vals[0]), int(vals[-1]) + 1))
+
+    return listed
 
 
 @line_check("sec4_5-relation")
-def check_relation(override: dict[str, str] | None = None) -> LineResult:
-    """The printed conditions with z in the printed range (read from the transcriptions) against phase equivalence;
-    both ends of the range are used."""
+def check_relation() -> LineResult:
+    """The printed conditions (each row read) with z in the printed set (every element read, from both lines that
+    print it) against phase equivalence; the set is exactly the z that relate two elements of E_n."""
+    from paper_repro.claims.lines.sec4_tex import TexError
+
+    how = ("the two systems of conditions (each row read from the transcriptions) with z in the printed set (read "
+           "from both lines) compared with phase equivalence (a - b or a + b in Z(1,1,1)) on all pairs of E_n, "
+           "n = 1..3; the printed set equals the set of z that relate two elements of E_n")
     try:
-        zrange = read_z_range(override)
-    except ValueError as exc:
-        return LineResult(False, how="the range of z read from the transcriptions, n = 1..4", kind="exhaustive",
-                          detail={"unread": str(exc)})
-    ok, det = relation_matches(4, zrange)
-    ext = all(tuple(v) == zrange(int(k)) for k, v in det["z_used_min_max"].items())
-    return LineResult(ok and ext, how="the printed conditions (sums or differences equal to a common z in "
-                      "{-n..2n}, the range read from the transcriptions) compared with phase equivalence (a - b or "
-                      "a + b in Z(1,1,1)) on all pairs of E_n, n = 1..4; both ends of the z range are used",
-                      kind="exhaustive", detail={**det, "n_max": 4})
+        zrange, conds = read_z_range(), read_conditions()
+        ok, det = relation_matches(3, zrange, conds)
+    except (TexError, TypeError) as exc:
+        return LineResult(False, how=how, kind="exhaustive", detail={"unread": str(exc)})
+    ext = all(zrange(int(k)) == list(range(v[0], v[1] + 1)) for k, v in det["z_needed_min_max"].items())
+    return LineResult(ok and ext, how=how, kind="exhaustive", detail={**det, "n_max": 3, "range_exact": ext})
 
 
 # -- phase identities (display after the Definition) --------------------------------------------------------------
-UVA_FROM_UVW = ((1, 0, 0), (0, 1, 0), (-1, -1, 1))  # w = alpha - u - v: (a,b,c) over (u,v,w) -> (a-c, b-c, c)
+#: the lines of each phase chain, in order (each line is one or more '=' parts of the chain)
+PHASE_LINES = {"cos": ("sec4_5-cos-step1", "sec4_5-cos-step2", "sec4_5-cos-step3"), "sin": ("sec4_5-sin-step1",)}
+#: the last step of each chain (printed with 'za': an erratum each)
+PHASE_LAST = {"cos": "sec4_5-cos-step4-za", "sin": "sec4_5-sin-step2-za"}
 
 
 def _related_pairs(n: int):
+    """``(a, b, z, S)`` for every pair of E_n related by a common z: b = z(1,1,1) - a (sums, the upper sign S = 1 of
+    the printed -+) or b = z(1,1,1) + a (differences, S = -1); z over every integer that occurs."""
     for a in E(n):
         for b in E(n):
-            for z in range(-n, 2 * n + 1):
-                if all(a[k] + b[k] == z for k in range(3)):
-                    yield a, b, z, -1  # b = z - a  (upper sign)
-                if all(b[k] - a[k] == z for k in range(3)):
-                    yield a, b, z, +1  # b = z + a  (lower sign)
+            s = {a[k] + b[k] for k in range(3)}
+            d = {b[k] - a[k] for k in range(3)}
+            if len(s) == 1:
+                yield a, b, s.pop(), 1
+            if len(d) == 1:
+                yield a, b, d.pop(), -1
 
 
-@cache
-def _phase_steps(kind: str, n_max: int = 2) -> dict[str, bool]:
-    """Each '=' step of the cos (kind 'cos') or sin chain, over (u, v, alpha, a) after w = alpha - u - v.
+def phase_chain(kind: str) -> list:
+    """The '=' parts of the printed chain of ``kind`` (read from the transcriptions, in order)."""
+    from paper_repro.claims.lines.sec4_tex import chain
 
-    ``last``: the last step with z alpha; ``last_za``: read with the printed ``za`` (a a fourth variable)."""
-    steps: dict[str, bool] = {}
-    f, g = (EP.cos, EP.sin) if kind == "cos" else (EP.sin, EP.cos)
-    emb = ((1, 0, 0, 0), (0, 1, 0, 0), (0, 0, 1, 0))  # (u, v, alpha) -> (u, v, alpha, a)
+    return [part for lid in PHASE_LINES[kind] for part in chain(verbatim(lid))]
+
+
+def _pair_params():
+    import sympy as sp
+
+    from paper_repro.claims.lines.sec4_tex import PM
+
+    return (*sp.symbols("r1 g1 b1 r2 g2 b2 z"), PM)
+
+
+def _compile_on_omega(expr, extra=()):
+    """``expr`` with w = alpha - u - v compiled over (u, v, alpha, *extra) with the pair parameters."""
+    import sympy as sp
+
+    from paper_repro.claims.lines.sec4_tex import ALPHA
+
+    u, v, w = sp.symbols("u v w")
+    return compile_ep(expr.subs(w, ALPHA - u - v), (u, v, ALPHA, *extra), _pair_params())
+
+
+def phase_steps(kind: str, n_max: int = 2) -> list[bool]:
+    """Each '=' step of the printed chain, exactly at every related pair of E_n, n <= n_max (both signs)."""
+    from paper_repro.claims.lines.sec4_tex import TexError
+
+    parts = phase_chain(kind)
+    if len(parts) < 2:
+        raise TexError(f"a chain of {len(parts)} parts")
+    fs = [_compile_on_omega(x) for x in parts]
+    ok = [True] * (len(parts) - 1)
     for n in range(1, n_max + 1):
         for a, b, z, sg in _related_pairs(n):
-            lhs = f(b).linear(UVA_FROM_UVW)
-            s1 = f(tuple(z + sg * x for x in a)).linear(UVA_FROM_UVW)  # (z -+ r1) u + (z -+ g1) v + (z -+ b1) w
-            # z(u+v+w) -+ X with u + v + w = alpha, X = r1 u + g1 v + b1 (alpha - u - v):
-            s3 = f(tuple(Q(sg * (a[k] - a[2])) for k in range(2)) + (Q(z + sg * a[2]),))
-            cosX, sinX = EP.cos(a).linear(UVA_FROM_UVW), EP.sin(a).linear(UVA_FROM_UVW)
-            cosX4, sinX4 = cosX.linear(emb), sinX.linear(emb)
-            lasts = {}
-            for key, za in (("last", (0, 0, 1, 0)), ("last_za", (0, 0, 0, 1))):
-                zfreq = tuple(z * x for x in za)
-                if kind == "cos":  # cos(za) cos X +- sin(za) sin X, upper sign + for b = z - a
-                    last = EP.cos(zfreq) * cosX4 + (EP.sin(zfreq) * sinX4) * (-sg)
-                else:  # sin(za) cos X -+ cos(z alpha) sin X
-                    last = EP.sin(zfreq) * cosX4 + (EP.cos((0, 0, z, 0)) * sinX4) * sg
-                lasts[key] = s3.linear(emb) == last
-            for key, ok in (("step1", lhs == s1), ("step2_3", s1 == s3), *lasts.items()):
-                steps[key] = steps.get(key, True) and ok
-    return steps
+            eps = [f((*a, *b, z, sg)) for f in fs]
+            ok = [o and eps[k] == eps[k + 1] for k, o in enumerate(ok)]
+    return ok
+
+
+def phase_last(kind: str, n_max: int = 2) -> tuple[bool, bool]:
+    """The last step (printed, with the symbol a of 'za' a free variable; and with a = alpha) against the previous
+    part of the chain, at every related pair of E_n, n <= n_max."""
+    import sympy as sp
+
+    from paper_repro.claims.lines.sec4_tex import ALPHA, TexError, chain
+
+    prev = phase_chain(kind)[-1]
+    last = chain(verbatim(PHASE_LAST[kind]))
+    if len(last) != 1:
+        raise TexError(f"the last step has {len(last)} parts")
+    a = sp.Symbol("a")
+    f_prev, f_last = _compile_on_omega(prev, (a,)), _compile_on_omega(last[0], (a,))
+    f_corr = _compile_on_omega(last[0].subs(a, ALPHA), (a,))
+    printed = corrected = True
+    for n in range(1, n_max + 1):
+        for a_, b, z, sg in _related_pairs(n):
+            vals = (*a_, *b, z, sg)
+            lhs = f_prev(vals)
+            printed &= lhs == f_last(vals)
+            corrected &= lhs == f_corr(vals)
+    return printed, corrected
+
+
+def phase_meaning() -> dict[str, bool]:
+    """The prose after the cos chain: cos(r2u+g2v+b2w) differs from cos(r1u+g1v+b1w) by a phase change and is a
+    linear combination of cos and sin of r1u+g1v+b1w.  The four functions are read from the transcription; the
+    combination cos(z alpha) cos X + S sin(z alpha) sin X is computed here (not read), exactly at every related pair
+    of E_n, n <= 2."""
+    import sympy as sp
+
+    from paper_repro.claims.lines.sec4_tex import ALPHA, TexError, parse
+
+    tex = verbatim("sec4_5-phase-meaning")
+    pieces = [parse(x) for x in re.findall(r"\$([^$]*)\$", tex)]
+    if len(pieces) != 4 or not all(isinstance(x, (sp.sin, sp.cos)) for x in pieces):
+        raise TexError(f"{len(pieces)} functions, not 4")
+    f0, f1, f2, f3 = pieces
+    words = {"phase": "phase change" in tex, "combination": "linear combination" in tex and "differs" in tex}
+    same_arg = f1.args[0] == f2.args[0] == f3.args[0] and {type(f2), type(f3)} == {sp.sin, sp.cos}
+    cos_x, sin_x = (f2, f3) if isinstance(f2, sp.cos) else (f3, f2)
+    same_function = type(f0) is type(f1)
+    z, sg = sp.Symbol("z"), _pair_params()[-1]
+    rhs = sp.cos(z * ALPHA) * cos_x + sg * sp.sin(z * ALPHA) * sin_x if isinstance(f0, sp.cos) else \
+        sp.sin(z * ALPHA) * cos_x - sg * sp.cos(z * ALPHA) * sin_x
+    f_lhs, f_rhs = _compile_on_omega(f0), _compile_on_omega(rhs)
+    combo = all(f_lhs((*a, *b, zz, s)) == f_rhs((*a, *b, zz, s)) for n in (1, 2) for a, b, zz, s in _related_pairs(n))
+    return {**words, "same_argument_X": same_arg, "same_function_phase": same_function,
+            "combination_of_cos_sin_X": combo}
 
 
 def _register_phase(kind: str, steps_how: str, za_how: str) -> None:
     """Register the two checks of the phase identity for ``kind`` ("cos" or "sin"): its steps, and its last step
     with the printed 'za' (sec4_5-phase-<kind> and sec4_5-phase-<kind>-za)."""
+    from paper_repro.claims.lines.sec4_tex import TexError
 
     @line_check(f"sec4_5-phase-{kind}")
     def check_steps() -> LineResult:
-        st = _phase_steps(kind)
-        return LineResult(st["step1"] and st["step2_3"], how=steps_how, kind="exhaustive",
-                          detail={k: v for k, v in st.items() if not k.startswith("last")})
+        try:
+            steps = phase_steps(kind)
+            meaning = phase_meaning() if kind == "cos" else {}
+        except TexError as exc:
+            return LineResult(False, how="the chain read from the transcriptions", kind="exhaustive",
+                              detail={"unread": str(exc)}) if False else LineResult(
+                False, how="the chain read from the transcriptions, n <= 2", kind="exhaustive",
+                detail={"unread": str(exc)})
+        return LineResult(all(steps) and all(meaning.values()), how=steps_how, kind="exhaustive",
+                          detail={"steps": steps, **meaning})
 
     @line_check(f"sec4_5-phase-{kind}-za")
     def check_za() -> LineResult:
-        st = _phase_steps(kind)
-        printed, corrected = st["last_za"], st["last"]
+        try:
+            printed, corrected = phase_last(kind)
+        except TexError as exc:
+            return LineResult(False, how="the last step read from the transcription, n <= 2", kind="exhaustive",
+                              detail={"unread": str(exc)})
         return LineResult(printed, corrected, how=za_how, kind="exhaustive",
                           detail={"printed_za": printed, "with_z_alpha": corrected})
 
 
-_register_phase("cos", "exponential expansion over (u, v, alpha) with w = alpha - u - v, every related pair of "
-                "E_n, n <= 2, both signs", "last step expanded with the printed 'za' read as z times a free a, "
-                "and with z alpha, every related pair of E_n, n <= 2")
-_register_phase("sin", "exponential expansion, every related pair of E_n, n <= 2, both signs: "
-                "sin(r2 u + g2 v + b2 w) = sin(z alpha -+ X)",
-                "as sec4_5-phase-cos-za for sin(za) cos X -+ cos(z alpha) sin X, n <= 2")
+_register_phase("cos", "each '=' step of the chain read from the transcriptions (z, the signs -+ / +- as S = +-1) "
+                "expanded exactly over (u, v, alpha) with w = alpha - u - v, at every related pair of E_n, n <= 2, "
+                "both signs; the prose after it (its four functions read) against cos(z alpha) cos X + S sin(z "
+                "alpha) sin X", "the last step read from the transcription: with the printed 'za' (a a free "
+                "variable) and with a = alpha, against the previous part, every related pair of E_n, n <= 2")
+_register_phase("sin", "each '=' step of the sin chain read from the transcription, expanded exactly with w = alpha "
+                "- u - v at every related pair of E_n, n <= 2, both signs",
+                "as sec4_5-phase-cos-za for the sin chain, n <= 2")
 
 
 # -- readers of the worked examples (triples ru+gv+bw as printed) -------------------------------------------------
@@ -309,18 +548,14 @@ def read_triple(expr: str, **env: int) -> tuple[int, int, int]:
     return out["u"], out["v"], out["w"]
 
 
-def read_relations(tex: str) -> list[tuple[tuple[int, int, int], tuple[int, int, int], bool]]:
-    """Every pair of a printed chain ``a \\sim b \\sim c`` (all pairs of a chain of equivalences) or
-    ``a \\nsim b``, with whether it is printed as equivalent."""
-    parts = re.split(r"(\\nsim|\\sim)", tex.strip().rstrip(".,"))
-    triples, rels = [read_triple(x) for x in parts[0::2]], parts[1::2]
-    if all(r == "\\sim" for r in rels):
-        return [(a, b, True) for k, a in enumerate(triples) for b in triples[k + 1:]]
-    return [(a, b, r == "\\sim") for a, b, r in zip(triples, triples[1:], rels)]
+_DOMAIN = re.compile(r":\\left\(\s*u,v,w\\right\)\s*\\in\s*\\Omega\^\{\\alpha\s*\}\s*\\right\\\}")
 
 
 def read_cos_args(tex: str) -> list[tuple[int, int, int]]:
-    """Arguments of the printed ``\\cos\\left( .. \\right)`` of a set of functions, each with its ``\\sin``."""
+    """Arguments of the printed ``\\cos\\left( .. \\right)`` of a set of functions, each with its ``\\sin``; the set
+    must end with its domain ``:\\left( u,v,w\\right) \\in\\Omega^{\\alpha}\\right\\}``."""
+    if len(_DOMAIN.findall(tex)) != 1:
+        raise ValueError("the set does not end with its domain (u,v,w) in Omega^alpha")
     cos = re.findall(r"\\cos\\left\(\s*([^()]*?)\s*\\right\)", tex)
     sin = re.findall(r"\\sin\\left\(\s*([^()]*?)\s*\\right\)", tex)
     if sorted(cos) != sorted(sin):
@@ -344,73 +579,315 @@ def _texts(ids, override=None) -> dict[str, str]:
 
 
 @line_check("sec4_5-examples-n3")
-def check_examples_n3(override: dict[str, str] | None = None) -> LineResult:
-    """Every relation of the worked examples (read from their transcriptions) against phase equivalence."""
-    texts = _texts({"sec4_5-examples-n3-1", "sec4_5-examples-n3-2", "sec4_5-examples-n3-3"}, override)
+def check_examples_n3() -> LineResult:
+    """Every link of the worked examples (read from their transcriptions: combinations, ~ and the negated relation)
+    against phase equivalence; every combination in E_3 (the text's n = 3: coefficients 0..3)."""
+    from paper_repro.claims.lines.sec4_tex import TexError, parse
+
+    how = "phase equivalence of the printed pairs (read from the transcriptions), every combination in E_3 (n = 3)"
     try:
-        pairs = [p for k in sorted(texts) for p in read_relations(texts[k])]
-    except ValueError as exc:
-        return LineResult(False, how="the printed pairs read from the transcriptions", kind="proof",
-                          detail={"unread": str(exc)})
-    got = [phase_equivalent(a, b) == expect for a, b, expect in pairs]
-    return LineResult(bool(got) and all(got), how="phase equivalence of the printed pairs (read from the "
-                      "transcriptions, n = 3)", kind="proof", detail={"pairs": len(got), "agree": got})
+        got = []
+        for lid in ("sec4_5-examples-n3-1", "sec4_5-examples-n3-2", "sec4_5-examples-n3-3"):
+            tex = verbatim(lid).strip().rstrip(".,")
+            parts = split_relations(tex)
+            triples = [linear_triple(parse(x)) for x in parts[0::2]]
+            in_e3 = all(0 <= c <= 3 for t in triples for c in t)
+            got.append(in_e3 and len(parts) >= 3 and relation_chain_holds(tex))
+    except (TexError, TypeError) as exc:
+        return LineResult(False, how=how, kind="proof", detail={"unread": str(exc)})
+    return LineResult(all(got), how=how, kind="proof", detail={"lines_hold": got})
 
 
 # -- orders 1 and 2 -----------------------------------------------------------------------------------------------
-def _orders_1_2(override: dict[str, str] | None = None) -> dict[str, bool]:
-    """The worked text of orders 1 and 2; V_1, the six classes of order 2 and V_2 are read from the transcriptions
-    (the other items are the text's facts, written here)."""
+_REL = re.compile(r"(\\nsim|\\sim(?![a-z])|\\notin|\\in(?![a-z])|=)")
+
+
+def split_relations(math: str) -> list[str]:
+    """``[item, relation, item, ...]``: ``math`` split at the relations of brace depth 0."""
+    out, depth, last = [], 0, 0
+    for m in re.finditer(r"[{}]|" + _REL.pattern, math):
+        tok = m.group()
+        if tok == "{":
+            depth += 1
+        elif tok == "}":
+            depth -= 1
+        elif depth == 0:
+            out += [math[last:m.start()], tok]
+            last = m.end()
+    return out + [math[last:]]
+
+
+def read_set_of_classes(item: str, env: dict | None = None) -> set:
+    """``E_{a}^{\\alpha}/_{\\sim}`` or ``E_{a}/_{\\sim}\\setminus\\left( E_{b}/_{\\sim}\\cup ..\\right)``: the class
+    keys of E_a not in the removed E_b (indices evaluated with ``env``)."""
+    from paper_repro.claims.lines.sec4_tex import TexError, parse
+
+    text = item.replace("%", " ")
+    head, _, removed = text.partition("\\setminus")
+    idx = re.findall(r"E_\{([^{}]+)\}\^\{\\alpha\s*\}\s*/_\{\\sim,?\}", head)
+    if len(idx) != 1 or re.sub(r"E_\{[^{}]+\}\^\{\\alpha\s*\}\s*/_\{\\sim,?\}", "", head).strip():
+        raise TexError(f"not a quotient set: {item[:40]!r}")
+    pat = r"E_\{([^{}]+)\}\^\{\\alpha\s*\}\s*/_\{\\sim,?\}"
+    gone = re.findall(pat, removed)
+    rest = re.sub(pat, "", removed)
+    rest = re.sub(r"^\s*\\left\(|\\right\)\s*$", "", rest.strip()) if len(gone) > 1 else rest
+    if re.sub(r"\\cup|\s", "", rest) or (removed.strip() and not gone):
+        raise TexError(f"unread removed sets {removed[:40]!r}")
+
+    def val(x: str) -> int:
+        e = parse(x).subs({k: v for k, v in (env or {}).items()})
+        if not e.is_Integer:
+            raise TexError(f"index {x!r} is not an integer")
+        return int(e)
+
+    out = classes_of(val(idx[0]))
+    for g in gone:
+        out -= classes_of(val(g))
+    return out
+
+
+def read_item(item: str, env: dict | None = None):
+    """One member of a printed relation chain: ``("class", key)``, ``("set", keys)`` or ``("triple", t)``."""
+    from paper_repro.claims.lines.sec4_tex import parse
+
+    text = item.strip().replace("%", " ").strip()
+    m = re.fullmatch(r"\\left\[\s*(.*?)\s*\\right\]", text)
+    if m:
+        return "class", class_key(linear_triple(parse(m.group(1)), env))
+    if "E_{" in text:
+        return "set", read_set_of_classes(text, env)
+    return "triple", linear_triple(parse(text), env)
+
+
+def relation_chain_holds(math: str, env: dict | None = None) -> bool:
+    """Every link of a printed chain such as ``1\\cdot u+1\\cdot v+1\\cdot w\\sim0\\cdot u+..\\in\\left[ 0\\right]
+    \\in E_{0}^{\\alpha}/_{\\sim}`` against the class keys (``~``: same class; ``\\in`` a class: same class; ``=``
+    of classes: same key; ``\\in`` a set: member); a link the reader does not know raises."""
+    from paper_repro.claims.lines.sec4_tex import TexError
+
+    parts = split_relations(math)
+    items = [read_item(x, env) for x in parts[0::2]]
+    rels = parts[1::2]
+    if not rels:
+        raise TexError(f"no relation in {math[:40]!r}")
+    ok = True
+    for (ka, a), rel, (kb, b) in zip(items, rels, items[1:]):
+        ka_key = class_key(a) if ka == "triple" else a
+        if kb == "set":
+            if ka == "set":
+                raise TexError("a set related to a set")
+            ok &= (ka_key in b) == (rel == "\\in")
+            if rel not in ("\\in", "\\notin"):
+                raise TexError(f"{rel} before a set")
+        elif rel in ("\\sim", "\\nsim", "=", "\\in"):
+            kb_key = class_key(b) if kb == "triple" else b
+            if rel == "\\in" and kb != "class":
+                raise TexError("\\in before a combination")
+            if rel == "=" and (ka, kb) != ("class", "class"):
+                raise TexError("= between combinations")
+            ok &= (ka_key == kb_key) == (rel != "\\nsim")
+        else:
+            raise TexError(f"unknown link {rel}")
+    return ok
+
+
+def _math(tex: str) -> list[str]:
+    return re.findall(r"\$([^$]*)\$", tex)
+
+
+def read_order_classes(tex: str) -> dict[str, bool]:
+    """``\\left[ ru+gv+bw\\right] \\in E_{a}/_{\\sim}\\setminus .., where at least one of the coefficients r,g,b is
+    equal to $c$``: every new class of the printed difference of quotient sets is met, in E_a, only by triples with a
+    coefficient c (the new classes of order a are those of the triples with a coefficient a)."""
+    from paper_repro.claims.lines.sec4_tex import TexError
+
+    m = re.search(r"\\left\[\s*ru\+gv\+bw\\right\]\s*\\in(.*?),\s*\\\]\s*where at least one of the coefficients "
+                  r"\$r,g,b\$ is equal to \$(\d+)\$\.", tex)
+    if not m:
+        raise TexError("no 'classes in E_a/~ \\ .. where at least one of r,g,b is equal to c'")
+    new = read_set_of_classes(m.group(1))
+    order = int(re.search(r"E_\{(\d+)\}", m.group(1)).group(1))
+    c = int(m.group(2))
+    members = [t for t in E(order) if class_key(t) in new]
+    return {"classes_new": bool(new) and new == new_class_keys(order),
+            "coefficient_c": all(c in t for t in members)}
+
+
+def read_if_then(tex: str) -> tuple[list[dict], list[str]]:
+    """``If $r=a$ and $g\\in\\left\\{ ..\\right\\} $, then $..$``: the environments the condition allows and the
+    math of the conclusion."""
+    from paper_repro.claims.lines.sec4_tex import TexError, chain, parse
+
+    m = re.match(r"\s*If (.*?), then (.*)$", tex)
+    if not m:
+        raise TexError("no 'If .., then ..'")
+    envs: list[dict] = [{}]
+    for cond in _math(m.group(1)):
+        for piece in [x for x in re.split(r",(?![^{}]*\\right\\\})", cond) if x.strip()]:
+            ms = re.fullmatch(r"\s*(\w)\s*\\in\s*\\left\\\{(.*)\\right\\\}\s*", piece)
+            if ms:
+                vals = [int(parse(x)) for x in ms.group(2).split(",")]
+                envs = [{**e, ms.group(1): x} for e in envs for x in vals]
+                continue
+            parts = chain(piece)
+            if len(parts) < 2 or not parts[-1].is_Integer or not all(p.is_Symbol for p in parts[:-1]):
+                raise TexError(f"unread condition {piece!r}")
+            envs = [{**e, **{str(p): int(parts[-1]) for p in parts[:-1]}} for e in envs]
+    return envs, _math(m.group(2))
+
+
+def _orders_1_2() -> dict[str, bool]:
+    """The worked text of orders 1 and 2, every statement read from its transcription and checked with the class keys
+    of phase equivalence."""
+    import sympy as sp
+
+    from paper_repro.claims.lines.sec4_tex import TexError, chain, parse
+
     k = class_key
-    t = _texts({"sec4_5-V1", "sec4_5-n2-classes-row1", "sec4_5-n2-classes-row2", "sec4_5-n2-classes-row3",
-                "sec4_5-V2-row1", "sec4_5-V2-row2", "sec4_5-V2-row3"}, override)
-    v1 = read_cos_args(t["sec4_5-V1"])
+    t = live_texts()
+    out: dict[str, bool] = {}
+    for lid in ("sec4_5-order1-classes", "sec4_5-order2-classes"):
+        out.update({f"{lid}:{x}": v for x, v in read_order_classes(t[lid]).items()})
+    rel = t["sec4_5-order1-relations"]
+    pieces = _math(rel)
+    out["order1_relations"] = rel.startswith("Since") and len(pieces) == 4 and all(
+        relation_chain_holds(x) for x in pieces)
+    # b = 2 (the case the text assumes), r = g = 2
+    envs, concl = read_if_then(t["sec4_5-n2-222"])
+    first = re.match(r"\s*\\left\[\s*(.*?)\s*\\right\]", concl[0]) if len(concl) == 1 else None
+    if not first:
+        raise TexError("sec4_5-n2-222: no class")
+    out["222"] = len(envs) == 1 and relation_chain_holds(concl[0]) and linear_triple(parse(first.group(1))) == (
+        envs[0].get("r"), envs[0].get("g"), 2)
+    # 0 < r <= g <= 2, i.e. r = 1, g in {1, 2}; z = min{r, g} = 1
+    pieces = _math(t["sec4_5-n2-r1"])
+    if len(pieces) != 3:
+        raise TexError("sec4_5-n2-r1: not three formulas")
+    ineq = re.split(r"(<|\\leq)", pieces[0].replace(" ", ""))
+    terms = [parse(x) for x in ineq[0::2]]
+    rs, gs = sp.symbols("r g")
+    grid = [(r, g) for r in range(3) for g in range(3)]
+    sat = {(r, g) for r, g in grid
+           if all((x.subs({rs: r, gs: g}) < y.subs({rs: r, gs: g})) if op == "<"
+                  else (x.subs({rs: r, gs: g}) <= y.subs({rs: r, gs: g}))
+                  for x, op, y in zip(terms, ineq[1::2], terms[1:]))}
+    envs_r1, _ = read_if_then(f"If ${pieces[1]}$, then $x$")
+    stated = {(e["r"], e["g"]) for e in envs_r1}
+    out["r1_is_the_rest_of_0<r<=g<=2"] = sat - {(2, 2)} == stated  # r = g = 2 was treated in the sentence before
+    zparts = chain(pieces[2])
+    zsym = zparts[0]
+    out["z_min_is_1"] = len(zparts) == 3 and zsym == sp.Symbol("z") and all(
+        zparts[1].subs({rs: r, gs: g}) == zparts[2] for r, g in stated)
+    zval = int(zparts[2])
+    # the chain ru+gv+2w = ... (u + v + w = alpha), for the stated (r, g) and z
+    ch = chain(t["sec4_5-n2-chain"])
+    u, v, w = sp.symbols("u v w")
+    from paper_repro.claims.lines.sec4_tex import ALPHA
+
+    ok_chain = len(ch) == 4
+    for r, g in stated:
+        vals = [sp.expand(x.subs({rs: r, gs: g, zsym: zval}).subs(ALPHA, u + v + w)) for x in ch]
+        ok_chain &= all(x == vals[0] for x in vals) and ch[0].subs({rs: r, gs: g}) == r * u + g * v + 2 * w
+        ok_chain &= not (ch[-1].free_symbols & {u, rs})  # the last form has no u: z = r
+    out["chain"] = ok_chain
+    # u+gv+2w in [(g-z)v+w] = {[w] (g = 1), [v+w] = [u] (g = 2)}
+    g12 = t["sec4_5-n2-g12"].replace("%", " ")
+    head, _, rows = g12.partition("\\begin{array} [c]{rc}")
+    rows = rows.split("\\end{array}")[0]
+    mh = re.fullmatch(r"\s*(.*?)\\in\s*\\left\[\s*(.*?)\s*\\right\]\s*=\s*\\left\\\{\s*", head)
+    if not mh:
+        raise TexError("sec4_5-n2-g12: unread head")
+    ok_g12, seen = True, set()
+    for row in [x for x in rows.split("\\\\") if x.strip()]:
+        stmt, _, cond = row.partition("&")
+        mc = re.fullmatch(r"\s*g=(\d+)[.,]?\s*", cond)
+        if not mc:
+            raise TexError(f"sec4_5-n2-g12: unread row condition {cond!r}")
+        env = {"g": int(mc.group(1)), "z": zval}
+        seen.add(env["g"])
+        lhs, cls = linear_triple(parse(mh.group(1)), env), linear_triple(parse(mh.group(2)), env)
+        first_cls = re.match(r"\s*\\left\[\s*(.*?)\s*\\right\]", stmt)
+        ok_g12 &= k(lhs) == k(cls) and bool(first_cls) and k(linear_triple(parse(first_cls.group(1)), env)) == k(cls)
+        ok_g12 &= relation_chain_holds(stmt, env)
+    out["g12"] = ok_g12 and seen == {g for _, g in stated}
+    # r = 0, g in {0, 1, 2}: [gv + 2w] new at order 2
+    envs, concl = read_if_then(t["sec4_5-n2-r0"])
+    ok_r0 = len(concl) == 1 and len(envs) >= 1
+    for env in envs:
+        cls = re.match(r"\s*\\left\[\s*(.*?)\s*\\right\]", concl[0])
+        ok_r0 &= bool(cls) and relation_chain_holds(concl[0], env) and linear_triple(
+            parse(cls.group(1)), env) == (env.get("r"), env.get("g"), 2)
+    out["r0"] = ok_r0
+    # [2v+2w] reappears as [2u], new at order 2
+    pieces = _math(t["sec4_5-n2-2v2w"])
+    if len(pieces) != 2:
+        raise TexError("sec4_5-n2-2v2w: not two formulas")
+    a_cls = read_item(pieces[0])
+    b_cls = read_item(split_relations(pieces[1])[0])
+    out["2v2w_is_2u"] = a_cls[0] == b_cls[0] == "class" and a_cls[1] == b_cls[1] and relation_chain_holds(
+        pieces[1]) and "must be ignored" in t["sec4_5-n2-2v2w"] and "reappear" in t["sec4_5-n2-2v2w"]
+    # the six classes of order 2, V_1 and V_2
     n2 = [c for r in (1, 2, 3) for c in read_class_family(t[f"sec4_5-n2-classes-row{r}"])]
-    v2 = [a for r in (1, 2, 3) for a in read_cos_args(t[f"sec4_5-V2-row{r}"])]
-    out = {
-        "new_order_1_are_u_v_w": new_class_keys(1) == {k((1, 0, 0)), k((0, 1, 0)), k((0, 0, 1))},
-        "new_order_1_contain_a_1": all(max(t) == 1 for t in E(1) if k(t) in new_class_keys(1)),
-        "order_1_relations": all(phase_equivalent(a, b) for a, b in (((1, 1, 1), (0, 0, 0)), ((1, 1, 0), (0, 0, 1)),
-                                                                     ((1, 0, 1), (0, 1, 0)), ((0, 1, 1), (1, 0, 0)))),
-        "V1_is_V0_plus_u_v_w": {k(t) for t in v1} == new_class_keys(1) and len(v1) == 3,
-        "222_is_0": k((2, 2, 2)) == k((0, 0, 0)),
-        "r1_g12_chain": all(
-            tuple(x - 1 for x in (1, g, 2)) == (0, g - 1, 1) and k((1, g, 2)) == k((0, g - 1, 1)) for g in (1, 2)),
-        "g1_is_w_g2_is_v_plus_w_is_u": k((1, 1, 2)) == k((0, 0, 1)) and k((1, 2, 2)) == k((0, 1, 1)) == k((1, 0, 0)),
-        "r0_classes_new": all(k((0, g, 2)) in new_class_keys(2) for g in range(3)),
-        "2v2w_is_2u": k((0, 2, 2)) == k((2, 0, 0)),
-        "six_classes_n2": {k(t) for t in n2} == new_class_keys(2) and len(n2) == 6,
-        "V2_printed": {k(t) for t in v2} == new_class_keys(2) and len(v2) == 6,
-    }
+    out["six_classes_n2"] = {k(x) for x in n2} == new_class_keys(2) and len(n2) == 6
+    v1 = read_cos_args(t["sec4_5-V1"])
+    m1 = re.match(r"\s*V_\{(\d+)\}\^\{\\alpha\}=V_\{(\d+)\}\^\{\\alpha\}\\cup", t["sec4_5-V1"])
+    out["V1"] = bool(m1) and {k(x) for x in v1} == new_class_keys(int(m1.group(1))) and len(set(v1)) == 3 and int(
+        m1.group(2)) == int(m1.group(1)) - 1 == 0
+    v2 = [x for r in (1, 2, 3) for x in read_cos_args(t[f"sec4_5-V2-row{r}"])]
+    m2 = re.match(r"\s*V_\{(\d+)\}\^\{\\alpha\}=\s*&\s*V_\{(\d+)\}\^\{\\alpha\}\\cup", t["sec4_5-V2-row1"])
+    rows_cup = all(re.match(r"\s*&\s*\\cup\\left\\\{", t[f"sec4_5-V2-row{r}"]) for r in (2, 3))
+    out["V2"] = bool(m2) and rows_cup and {k(x) for x in v2} == new_class_keys(int(m2.group(1))) and len(set(v2)) == 6 \
+        and int(m2.group(2)) == int(m2.group(1)) - 1 == 1
     return out
 
 
 @line_check("sec4_5-orders-1-2")
-def check_orders_1_2(override: dict[str, str] | None = None) -> LineResult:
+def check_orders_1_2() -> LineResult:
+    from paper_repro.claims.lines.sec4_tex import TexError
+
+    how = ("every statement of the worked text of orders 1 and 2 read from its transcription (relations, classes, "
+           "quotient sets, conditions, the chain, V_1, the six classes, V_2) against the class keys of phase "
+           "equivalence")
     try:
-        out = _orders_1_2(override)
-    except ValueError as exc:
-        return LineResult(False, how="the worked text read from the transcriptions", kind="proof",
-                          detail={"unread": str(exc)})
-    return LineResult(all(out.values()), how="class keys of phase equivalence (order 1 and order 2 worked text; V_1, "
-                      "the six classes and V_2 read from the transcriptions)", kind="proof", detail=out)
+        out = _orders_1_2()
+    except (TexError, TypeError, KeyError) as exc:
+        return LineResult(False, how=how, kind="proof", detail={"unread": str(exc)})
+    return LineResult(all(out.values()), how=how, kind="proof", detail=out)
 
 
-def b2_classes(restrict_r_le_g: bool) -> set:
-    """New classes of order 2 met by the triples (r, g, 2) (with r <= g or r = 0 if ``restrict_r_le_g``)."""
+def b2_classes(b: int, restrict_r_le_g: bool) -> set:
+    """New classes of order 2 met by the triples (r, g, b) (only r <= g if ``restrict_r_le_g``: the cases the text
+    treats, r = g = 2, 0 < r <= g <= 2 and r = 0)."""
     new = new_class_keys(2)
-    return {class_key((r, g, 2)) for r in range(3) for g in range(3)
-            if class_key((r, g, 2)) in new and (not restrict_r_le_g or r <= g)}
+    return {class_key((r, g, b)) for r in range(3) for g in range(3)
+            if class_key((r, g, b)) in new and (not restrict_r_le_g or r <= g)}
+
+
+NUMBER_WORDS = {"one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7, "eight": 8, "nine": 9,
+                "ten": 10, "sixteen": 16}
 
 
 @line_check("sec4_5-b2-three-classes")
 def check_b2() -> LineResult:
-    printed_set = {class_key((0, g, 2)) for g in range(3)}
-    all_b2, ordered = b2_classes(False), b2_classes(True)
-    return LineResult(all_b2 == printed_set, ordered == printed_set,
-                      how="new classes of E_2 met by the triples (r, g, 2): all of them, and those with r <= g "
-                          "(the cases the text treats)", kind="proof",
-                      detail={"classes_met_by_b_2": len(all_b2), "printed": 3, "with_r_le_g": len(ordered),
+    """The printed value of b, the count (a word) and the family {[gv+2w]}_{g=0}^{2} are read; printed: they are all
+    the new classes of E_2 met by (r, g, b); corrected: those met with r <= g (the cases the text treats)."""
+    how = ("new classes of E_2 met by the triples (r, g, b) with the printed b: all of them (printed), those with "
+           "r <= g (corrected), against the printed family and count (read from the transcription)")
+    tex = verbatim("sec4_5-n2-b2-three")
+    m = re.fullmatch(r"Thus, equality \$b=(\d+)\$ generates only (\w+) acceptable equivalence classes, namely "
+                     r"\$(.*)\$", tex)
+    try:
+        if not m or m.group(2) not in NUMBER_WORDS:
+            raise ValueError("unread line")
+        bb, count = int(m.group(1)), NUMBER_WORDS[m.group(2)]
+        fam = read_class_family(m.group(3))
+        keys = {class_key(t) for t in fam}
+    except (ValueError, TypeError) as exc:
+        return LineResult(False, how=how, kind="proof", detail={"unread": str(exc)})
+    shape = len(keys) == len(fam) == count and all(t[2] == bb for t in fam)
+    all_b2, ordered = b2_classes(bb, False), b2_classes(bb, True)
+    return LineResult(shape and all_b2 == keys, shape and ordered == keys, how=how, kind="proof",
+                      detail={"classes_met_by_b": len(all_b2), "printed": count, "with_r_le_g": len(ordered),
                               "missed_triples": ["(1,0,2) in [u+2v]", "(2,0,2) in [2v]"]})
 
 
@@ -418,47 +895,70 @@ def check_b2() -> LineResult:
 def read_prop_families(tex: str, n: int) -> list[tuple[int, int, int]]:
     """The representatives of the printed families ``\\left\\{ \\left[ .. \\right] \\right\\} _{g=0}^{n-1}`` of
     Proposition iterative_construction_of_trivariate_extension at order n, read from the transcription."""
+    from paper_repro.claims.lines.sec4_tex import parse
     from paper_repro.printed.lines.read import bound
 
-    fams = re.findall(r"\\left\[\s*(.*?)\s*\\right\]\s*\\right\\\}\s*_\{(\w)=([^{}]+)\}\^\{([^{}]+)\}", tex)
+    fams = re.findall(r"\\left\\\{\s*\\left\[\s*(.*?)\s*\\right\]\s*\\right\\\}"
+                      r"\s*_\{(\w)=([^{}]+)\}\^\{([^{}]+)\}", tex)
     if len(fams) != 3:
         raise ValueError(f"{len(fams)} families of classes, not 3")
-    return [read_triple(expr, n=n, **{var: x}) for expr, var, lo, hi in fams
+    return [linear_triple(parse(expr), {"n": n, var: x}) for expr, var, lo, hi in fams
             for x in range(bound(lo, n=n), bound(hi, n=n) + 1)]
 
 
-def read_union_start(override: dict[str, str] | None = None) -> int:
-    """The lowest i of the printed union cup_{i=a}^{n-1} E_i/~ (the same in both lines of the Proposition)."""
-    texts = _texts({"sec4_5-prop-recurrence", "sec4_5-prop-new-classes"}, override)
-    starts = {m for t in texts.values() for m in re.findall(r"\\cup_\{i=(\d+)\}\^\{n-1\}", t)}
-    if len(starts) != 1:
-        raise ValueError(f"the union starts at {sorted(starts)}")
-    return int(starts.pop())
+_UNION = re.compile(r"E_\{n\}\^\{\\alpha\}/_\{\\sim\}\\setminus\\left\(\s*\\cup_\{i=(\d+)\}\^\{([^{}]+)\}E_\{i\}"
+                    r"\^\{\\alpha\}/_\{\\sim\s*\}\\right\)")
 
 
-def prop_sets_agree(n_max: int, lowest: int, override: dict[str, str] | None = None) -> dict[int, bool]:
-    """E_n/~ minus the union over i = lowest..n-1 against the printed 3n representatives (read)."""
-    tex = _texts({"sec4_5-prop-new-classes"}, override)["sec4_5-prop-new-classes"]
+def read_prop() -> tuple[int, str]:
+    """The union cup_{i=a}^{b} E_i/~ removed from E_n/~ in both lines of the Proposition (they must agree), and the
+    recurrence's other parts: V_n = V_{n-1} cup {cos, sin of one combination : (u,v,w) in Omega, [the same] in ..}."""
+    texts = [verbatim("sec4_5-prop-recurrence").replace("%", " "), verbatim("sec4_5-prop-new-classes")]
+    unions = {m for t in texts for m in _UNION.findall(t)}
+    if len(unions) != 1 or not all(_UNION.search(t) for t in texts):
+        raise ValueError(f"the unions differ or are unread: {sorted(unions)}")
+    rec = texts[0]
+    m = re.match(r"\s*V_\{n\}\^\{\\alpha\}=V_\{n-1\}\^\{\\alpha\}\\cup\\left\\\{\s*"
+                 r"\\cos\\left\(\s*ru\+gv\+bw\\right\)\s*,"
+                 r"\\sin\\left\(\s*ru\+gv\+bw\\right\)\s*:\\left\(\s*u,v,w\\right\)\s*\\in\\Omega\^\{\\alpha\s*\},~"
+                 r"\\left\[\s*ru\+gv\+bw\\right\]\s*\\in\s*(.*?)\\right\\\}\s*\\\]\s*$", rec)
+    if not m or not _UNION.fullmatch(m.group(1).strip()):
+        raise ValueError("unread recurrence")
+    if not re.match(r"\s*E_\{n\}\^\{\\alpha\}/_\{\\sim\}\\setminus\\left\(\s*\\cup.*?\\right\)\s*=", texts[1]):
+        raise ValueError("unread left side of the new classes")
+    lo, hi = unions.pop()
+    return int(lo), hi
+
+
+def prop_sets_agree(n_max: int, lowest: int, top: str) -> dict[int, bool]:
+    """E_n/~ minus the union over i = lowest..top(n) against the printed representatives (read): distinct classes,
+    exactly the new ones."""
+    from paper_repro.printed.lines.read import bound
+
+    tex = verbatim("sec4_5-prop-new-classes")
     out = {}
     for n in range(1, n_max + 1):
         reps = read_prop_families(tex, n)
         keys = [class_key(t) for t in reps]
-        out[n] = len(set(keys)) == len(reps) == 3 * n and set(keys) == new_class_keys(n, lowest)
+        hi = bound(top, n=n)
+        removed = set().union(*(classes_of(i) for i in range(lowest, hi + 1))) if hi >= lowest else set()
+        out[n] = len(set(keys)) == len(reps) and set(keys) == classes_of(n) - removed and all(
+            0 <= min(t) <= max(t) <= n for t in reps)  # representatives in E_n
     return out
 
 
 @line_check("sec4_5-prop-union")
-def check_prop_union(override: dict[str, str] | None = None) -> LineResult:
-    """The printed union's start (read: i from 1) and the representatives (read) against the class keys; the
-    correction starts the union at i = 0."""
+def check_prop_union() -> LineResult:
+    """The printed union (start and end read: i = 1..n-1), the recurrence and the representatives (read) against the
+    class keys; the correction starts the union at i = 0."""
+    how = ("class keys: E_n/~ minus the printed union of E_i/~ (its bounds read; the correction starts it at i = 0) "
+           "against the printed representatives, n = 1..10")
     try:
-        start = read_union_start(override)
-        printed, corrected = prop_sets_agree(10, start, override), prop_sets_agree(10, 0, override)
-    except ValueError as exc:
-        return LineResult(False, how="the Proposition read from the transcriptions", detail={"unread": str(exc)})
-    return LineResult(all(printed.values()), all(corrected.values()),
-                      how="class keys: E_n/~ minus the union of E_i/~ for i from 1 (printed) and from 0 (corrected) "
-                          "against the printed representatives, n = 1..10", kind="exhaustive",
+        start, top = read_prop()
+        printed, corrected = prop_sets_agree(10, start, top), prop_sets_agree(10, 0, top)
+    except (ValueError, TypeError) as exc:
+        return LineResult(False, how=how, kind="exhaustive", detail={"unread": str(exc)})
+    return LineResult(all(printed.values()), all(corrected.values()), how=how, kind="exhaustive",
                       detail={"printed_fails_at_n": [n for n, v in printed.items() if not v],
                               "classes_left_at_n_1_printed": len(new_class_keys(1, 1)),
                               "corrected_holds_n_1_10": all(corrected.values())})
@@ -493,59 +993,412 @@ def _rank_data(n: int, t: fmpq) -> dict:
     return {"delta": d, "columns_V": len(cols), "rank_T": T.rank(), "rank_V": V.rank(), "rank_TV": TV.rank()}
 
 
+#: ranks of spans at the rational points of one alpha (they do not depend on the transcriptions: a plain dict, kept
+#: when the caches of the line checks are cleared)
+_SPAN_RANKS: dict = {}
+
+
+def span_rank(members: tuple[tuple[str, int], ...]) -> int:
+    """Exact rank of the union of the systems ``("T", 2m)`` (T_{2m}^alpha, from :mod:`paper_repro.core`),
+    ``("V", k)`` (cos/sin of one triple per class of E_k, and 1) and ``("X", (r, g, b))`` (cos and sin of one
+    triple) at delta_3 + 4 rational points of Omega^alpha (tan(alpha/4) = 1/3), m, k <= 3."""
+    key = tuple(sorted(set(members)))
+    if key in _SPAN_RANKS:
+        return _SPAN_RANKS[key]
+    if "pts" not in _SPAN_RANKS:
+        alpha = rational_alpha(TS[0])
+        pts = sample_rational_points(alpha, 3 * 3 * 4 + 1 + 4, seed=11)
+        ctx = ExactContext()
+        half = [list(v) for v in pts.half_angle_values()]
+        full = [full_angles([h[p] for h in half], ctx) for p in range(len(pts))]
+        _SPAN_RANKS["pts"] = (alpha, pts, ctx, full)
+    alpha, pts, ctx, full = _SPAN_RANKS["pts"]
+    cols: list[list] = []
+    for kind, order in key:
+        if kind == "T":
+            if order % 2 or not 2 <= order <= 6:
+                raise ValueError(f"T_{order} is not computed")
+            tm = evaluate(order // 2, alpha, pts, ctx)
+            cols += [[tm[p, q] for p in range(len(pts))] for q in range(tm.shape[1])]
+        elif kind == "X":  # cos and sin of one triple
+            cs = [cos_sin_combination(full[p], order, ctx, fmpq(1)) for p in range(len(pts))]
+            cols += [[c for c, _ in cs], [x for _, x in cs]]
+        else:
+            if not 0 <= order <= 3:
+                raise ValueError(f"V_{order} is not computed")
+            cols.append([fmpq(1)] * len(pts))
+            for k in own_v_args(order):
+                cs = [cos_sin_combination(full[p], k, ctx, fmpq(1)) for p in range(len(pts))]
+                cols += [[c for c, _ in cs], [x for _, x in cs]]
+    r = fmpq_mat([[c[p] for c in cols] for p in range(len(pts))]).rank()
+    _SPAN_RANKS[key] = r
+    return r
+
+
+def dim_values(fn_name: str, arg: int) -> int:
+    """The value of a printed dimension: ``dim_V(k)`` the rank of V_k, ``dim_T(2m)`` that of T_{2m}, ``delta(n)`` the
+    number of functions of T_{2n} (:func:`paper_repro.core.labels.united_system`)."""
+    if fn_name == "dim_V":
+        return span_rank((("V", arg),))
+    if fn_name == "dim_T":
+        return span_rank((("T", arg),))
+    if fn_name == "delta":
+        return len(united_system(arg))
+    raise ValueError(f"unknown {fn_name}")
+
+
+def eval_dims(expr, n: int):
+    """A printed expression in n, dimensions and delta evaluated (sums done)."""
+    import sympy as sp
+
+    e = expr.subs(sp.Symbol("n"), n).doit()
+    for f in sorted(e.atoms(sp.Function), key=str):
+        if f.func.__name__ in ("dim_V", "dim_T", "delta"):
+            if not f.args[0].is_Integer:
+                raise ValueError(f"{f}: argument not an integer")
+            e = e.subs(f, dim_values(f.func.__name__, int(f.args[0])))
+    if not e.is_Integer:
+        raise ValueError(f"{e} is not a number")
+    return int(e)
+
+
+def read_E_n() -> tuple[list, callable]:
+    """The printed E_n: ``E_{n}^{\\alpha}=\\left\\{ ru+gv+bw:r,g,b\\in\\mathbb{N} ,~lo\\leq r,g,b\\leq hi\\right\\}``
+    -> (the coefficient letters in the order of u, v, w, n -> the set of triples)."""
+    import sympy as sp
+
+    from paper_repro.claims.lines.sec4_tex import TexError, parse
+
+    tex = verbatim("sec4_5-E-n").replace("%", " ")
+    m = re.fullmatch(r"\s*E_\{n\}\^\{\\alpha\}=\\left\\\{\s*(.*?):\s*(\w),(\w),(\w)\\in\s*\\mathbb\{N\}\s*,~(.*?)"
+                     r"\\leq\s*(\w),(\w),(\w)\\leq\s*(.*?)\\right\\\}\s*\.?\s*", tex)
+    if not m:
+        raise TexError("unread E_n")
+    combo, *rest = m.groups()
+    names, lo, names2, hi = rest[:3], rest[3], rest[4:7], rest[7]
+    if names != names2 or len(set(names)) != 3:
+        raise TexError("the letters of the set and of the bounds differ")
+    u, v, w = sp.symbols("u v w")
+    poly = sp.Poly(parse(combo), u, v, w)
+    letters = [poly.coeff_monomial(x) for x in (u, v, w)]
+    if [str(x) for x in letters] != [str(x) for x in sorted(letters, key=lambda s: names.index(str(s)))] or \
+            {str(x) for x in letters} != set(names) or poly.coeff_monomial(1) != 0:
+        raise TexError("the combination does not use the three letters once each")
+    lo_e, hi_e = parse(lo), parse(hi)
+
+    def members(n: int) -> list:
+        a, b = lo_e.subs("n", n), hi_e.subs("n", n)
+        return list(product(range(int(a), int(b) + 1), repeat=3))
+
+    return names, members
+
+
+def _dimension_items() -> dict[str, bool]:
+    import sympy as sp
+
+    from paper_repro.claims.lines.sec4_tex import chain, parse
+
+    out: dict[str, bool] = {}
+    # E_n and its classes: 1 + 2 (#classes - 1) = delta_n, the classes give independent cos/sin (rank)
+    _, members = read_E_n()
+    out["E_n_classes_give_delta_n"] = all(
+        set(members(n)) == set(E(n)) and 1 + 2 * (len({class_key(t) for t in members(n)}) - 1) == len(united_system(n))
+        for n in range(1, 9))
+    out["V_n_rank_is_delta_n"] = all(span_rank((("V", n),)) == len(united_system(n)) for n in (1, 2, 3))
+    # order 2: new linearly independent functions; V_2 = span V_2
+    t = verbatim("sec4_5-n2-independent")
+    m = re.search(r"generate new linearly independent constrained trivariate cosine and sine functions over "
+                  r"\$\\Omega\^\{\\alpha\}\$, i\.e\., \$\\mathcal\{V\}_\{(\d+)\}\^\{\\alpha\}=~\$span~\$V_\{(\d+)\}"
+                  r"\^\{\\alpha\}\$", t)
+    out["order_2_independent"] = bool(m) and m.group(1) == m.group(2) == "2" and \
+        span_rank((("V", 2),)) == 1 + 2 * (len(classes_of(2)) - 1) and span_rank((("V", 2),)) > span_rank((("V", 1),))
+    # V_n = V_{n-1} with 6n new linearly independent functions, n >= 1
+    t = verbatim("sec4_5-prop-6n")
+    m = re.fullmatch(r"if \$n\\geq(\d+)\$ the function system \$V_\{n\}\^\{\\alpha\}\$ can be obtained by completing "
+                     r"\$V_\{n-1\}\^\{\\alpha\}\$ with \$(.*?)\$ new linearly independent", t)
+    if not m:
+        raise ValueError("unread prop-6n")
+    count, n0 = parse(m.group(2)), int(m.group(1))
+    out["6n_new"] = n0 >= 1 and all(
+        span_rank((("V", n),)) - span_rank((("V", n - 1),)) == count.subs("n", n) for n in range(n0, 4))
+    # the recurrence, its start, the sum and the closed form
+    rec, cond = verbatim("sec4_5-dim-recurrence").split(",~")
+    mc = re.fullmatch(r"\s*n\\geq(\d+)\s*", cond)
+    parts = chain(rec)
+    out["recurrence"] = bool(mc) and int(mc.group(1)) >= 1 and len(parts) == 2 and all(
+        eval_dims(parts[0], n) == eval_dims(parts[1], n) for n in range(int(mc.group(1)), 4))
+    mi = re.fullmatch(r"\s*\$(.*)\$\s*", verbatim("sec4_5-dim-initial"))
+    ini = chain(mi.group(1)) if mi else []
+    out["initial"] = len(ini) == 2 and eval_dims(ini[0], 0) == eval_dims(ini[1], 0) and ini[0].has(
+        sp.Function("dim_V"))
+    for key, lid, ns in (("sum", "sec4_5-dim-sum", range(1, 4)), ("closed", "sec4_5-dim-closed", range(1, 13))):
+        parts = chain(verbatim(lid))
+        out[key] = len(parts) >= 2 and all(len({eval_dims(x, n) for x in parts}) == 1 for n in ns)
+    return out
+
+
 @line_check("sec4_5-dimension")
 def check_dimension() -> LineResult:
-    rows = {f"n={n},t={t}": _rank_data(n, t) for n, t in RANK_CASES}
-    counts = all(1 + 6 * sum(range(1, n + 1)) == 3 * n * (n + 1) + 1 == 1 + 2 * (len(classes_of(n)) - 1)
-                 for n in range(1, 13))
-    ok = counts and all(r["rank_V"] == r["columns_V"] == r["delta"] for r in rows.values())
-    steps = all(_rank_data(n, TS[0])["rank_V"] - (_rank_data(n - 1, TS[0])["rank_V"] if n > 1 else 1) == 6 * n
-                for n in range(1, 4))
-    return LineResult(ok and steps, how="classes of E_n counted (n <= 12): 1 + 2 (#classes - 1) = 1 + 6 sum i = "
-                      "3n(n+1)+1; exact rank of cos/sin of one triple per class at delta_n + 4 rational points "
-                      "(n <= 3 at one alpha, n <= 2 at another) equals delta_n, increments 6n", kind="exact-evidence",
-                      detail={"ranks": rows, "increments_6n": steps, "counts_n_le_12": counts})
+    how = ("every item read from the transcriptions (E_n, the counts 6n, the recurrence with n >= 1, dim V_0, the sum "
+           "and the closed form) against exact ranks of cos/sin of one triple per class of E_k at delta_3 + 4 "
+           "rational points (k <= 3) and the number of functions of T_{2n}; class counts of E_n, n = 1..8; the "
+           "closed form n = 1..12")
+    try:
+        out = _dimension_items()
+    except (ValueError, TypeError, AttributeError) as exc:
+        return LineResult(False, how=how, kind="exact-evidence", detail={"unread": str(exc)})
+    return LineResult(all(out.values()), how=how, kind="exact-evidence", detail=out)
+
+
+_SPAN = re.compile(r"\\operatorname\{span\}%?\s*([TV])_\{([^{}]+)\}\^\{\\alpha\}|\\mathcal\{([TV])\}%?\s*_\{([^{}]+)\}"
+                   r"\^\{\\alpha\}")
+
+
+def read_spans(tex: str, n: int) -> list[tuple[str, int]]:
+    """The spaces ``\\mathcal{T}_{2n}``, ``\\operatorname{span}T_{2n}``, ``\\operatorname{span}V_{n}``,
+    ``\\mathcal{V}_{n}`` of a printed chain, in order, their indices at order n."""
+    from paper_repro.claims.lines.sec4_tex import parse
+
+    out = []
+    for m in _SPAN.finditer(tex.replace("%", " ").replace("% ", " ")):
+        kind, idx = (m.group(1), m.group(2)) if m.group(1) else (m.group(3), m.group(4))
+        out.append((kind, int(parse(idx).subs("n", n))))
+    return out
+
+
+def _coincidence_items() -> dict[str, bool]:
+    import sympy as sp
+
+    from paper_repro.claims.lines.sec4_tex import chain
+
+    out: dict[str, bool] = {}
+    for lid in ("sec4_5-theorem", "sec4_5-conclusion"):
+        tex = verbatim(lid)
+        body = tex.split("$")[1] if "$" in tex else tex
+        links = re.sub(r"\\(?:operatorname\{span\}|mathcal\{[TV]\})%?\s*(?:_\{[^{}]+\})?\s*(?:[TV]_\{[^{}]+\})?"
+                       r"\^\{\\alpha\}|\\text\{\.\}|%|\s", "", body)
+        ok = set(links) <= {"="} and len(links) == 3
+        for n in (1, 2):
+            sp_ = read_spans(tex, n)
+            ok &= len(sp_) == 4 and span_rank(tuple(sp_)) == span_rank((sp_[0],)) == span_rank((sp_[-1],))
+            ok &= all(span_rank((x,)) == span_rank(tuple(sp_)) for x in sp_)
+        out[lid] = ok
+    tex = verbatim("sec4_5-theorem-statement")
+    m = re.fullmatch(r"The system \$T_\{([^{}]+)\}\^\{\\alpha\}\$ of constrained trivariate functions forms a basis "
+                     r"of the vector space \$\\mathcal\{V\}_\{([^{}]+)\}\^\{\\alpha\}\$", tex)
+    ok = bool(m)
+    if m:
+        for n in (1, 2):
+            t_, v_ = ("T", int(sp.sympify(m.group(1).replace("2n", "2*n")).subs("n", n))), \
+                ("V", int(sp.sympify(m.group(2)).subs("n", n)))
+            ok &= span_rank((t_,)) == span_rank((t_, v_)) == span_rank((v_,)) == len(united_system(t_[1] // 2))
+    out["basis"] = ok
+    # 1 + delta_n = dim span{sigma, span T_2n} <= dim span V_n = delta_n
+    tex = verbatim("sec4_5-contradiction").replace("%", " ")
+    m = re.fullmatch(r"\s*\\\[\s*(.*?)=\\dim\s*\\operatorname\{span\}\s*\\left\\\{\s*\\sigma,\s*"
+                     r"\\operatorname\{span\}\s*"
+                     r"T_\{([^{}]+)\}\^\{\\alpha\}\\right\\\}\s*\\leq\\dim\s*\\operatorname\{span\}\s*V_\{([^{}]+)\}"
+                     r"\^\{\\alpha\}=(.*?),\s*\\\]\s*", tex)
+    ok = bool(m)
+    if m:
+        left, right = chain(m.group(1)), chain(m.group(4))
+        for n in (1, 2, 3):
+            t_ = ("T", int(sp.sympify(m.group(2).replace("2n", "2*n")).subs("n", n)))
+            v_ = ("V", int(sp.sympify(m.group(3)).subs("n", n)))
+            # sigma outside span T: the dimension grows by one; sigma and T in span V: at most dim V
+            ok &= len(left) == len(right) == 1 and eval_dims(left[0], n) == span_rank((t_,)) + 1
+            ok &= span_rank((t_, v_)) == span_rank((v_,)) == eval_dims(right[0], n)
+            ok &= eval_dims(left[0], n) > eval_dims(right[0], n)  # the contradiction
+    out["contradiction"] = ok
+    parts = chain(verbatim("sec4_5-dim-T"))
+    out["delta_is_dim_T"] = len(parts) == 2 and all(
+        eval_dims(parts[0], n) == eval_dims(parts[1], n) == span_rank((("T", 2 * n),)) for n in (1, 2, 3))
+    return out
 
 
 @line_check("sec4_5-coincidence-rank")
 def check_coincidence_rank() -> LineResult:
-    rows = {f"n={n},t={t}": _rank_data(n, t) for n, t in RANK_CASES}
-    ok = all(r["rank_T"] == r["rank_V"] == r["rank_TV"] == r["delta"] for r in rows.values())
-    return LineResult(ok, how="exact ranks of T_{2n}, V_n and [T | V] at delta_n + 4 rational points of "
-                      "Omega^alpha (n <= 3 at one alpha, n <= 2 at another); the inclusion itself is proven by "
-                      "sec4_5-inclusion",
-                      kind="exact-evidence", detail=rows)
+    how = ("the spaces of each line read from the transcriptions (T_{2n}, V_n, their indices, the relations) and "
+           "compared by exact ranks of their unions at delta_3 + 4 rational points of Omega^alpha (tan(alpha/4) = "
+           "1/3, n <= 3); the inclusion itself is proven by sec4_5-inclusion")
+    try:
+        out = _coincidence_items()
+    except (ValueError, TypeError, AttributeError) as exc:
+        return LineResult(False, how=how, kind="exact-evidence", detail={"unread": str(exc)})
+    return LineResult(all(out.values()), how=how, kind="exact-evidence", detail=out)
 
 
 # -- proof of the coincidence theorem -----------------------------------------------------------------------------
-@line_check("sec4_5-proof-reduction")
-def check_proof_reduction() -> LineResult:
-    ok_formula, ok_cover = True, True
-    for n in range(1, 9):
-        for j in range(n + 1):
-            for i in range(j, n + 1):
-                ok_formula &= pl.proof_r_exponents(n, i, j) == r_exponents(n, i, j)
+def half_angle_exponents(expr) -> tuple[int, ...]:
+    """The exponents (sin u/2, cos u/2, sin v/2, cos v/2, sin w/2, cos w/2) of a printed product of half-angle
+    powers (``TexError`` for anything else)."""
+    import sympy as sp
+
+    from paper_repro.claims.lines.sec4_tex import TexError
+
+    out = [sp.Integer(0)] * 6
+    for f in sp.Mul.make_args(expr):
+        base, p = (f.base, f.exp) if f.is_Pow else (f, sp.Integer(1))
+        if not isinstance(base, (sp.sin, sp.cos)) or p.has(sp.sin, sp.cos) or not p.free_symbols <= set(
+                sp.symbols("n i j")):
+            raise TexError(f"{f} is not a power of a half-angle function")
+        arg = base.args[0]
+        var = [k for k, x in enumerate(sp.symbols("u v w")) if arg == x / 2]
+        if len(var) != 1:
+            raise TexError(f"argument {arg} is not u/2, v/2 or w/2")
+        out[2 * var[0] + (1 if isinstance(base, sp.cos) else 0)] += p
+    return tuple(out)
+
+
+def read_proof_r() -> tuple:
+    """The ranges j = a..b, i = c..d (read from both lines that print them: they must agree), the printed indices of
+    R_{2n,2n-i,j} and its printed product of half-angle powers."""
+    from paper_repro.claims.lines.sec4_tex import TexError, chain, parse
+    from paper_repro.printed.lines.read import listed_range
+
+    rng = set()
+    for lid in ("sec4_5-proof-symmetry-reduction", "sec4_5-proof-R"):
+        tex = verbatim(lid)
+        m = re.search(r"(?:for all |^)indices \$j=(.*?)\$ and \$i=(.*?)\$", tex)
+        if lid == "sec4_5-proof-symmetry-reduction" and "it is sufficient to show that for all indices" not in tex:
+            raise TexError(f"{lid}: not 'sufficient to show that for all indices'")
+        if not m:
+            raise TexError(f"{lid}: no ranges of j and i")
+        rng.add((listed_range("j=" + m.group(1), "j"), listed_range("i=" + m.group(2), "i"),
+                 re.sub(r"\s", "", m.group(1)), re.sub(r"\s", "", m.group(2))))
+    if len(rng) != 1:
+        raise TexError("the two lines print different ranges")
+    (jr, ir, jtxt, itxt) = rng.pop()
+    tex = verbatim("sec4_5-proof-R").replace("%", " ")
+    m = re.search(r"the function \$R_\{2n,([^{}]+),([^{}]+)\}\s*\^\{\\alpha\}\\left\(\s*u,v,w\\right\)\s*=(.*)$", tex)
+    if not m:
+        raise TexError("no R_{2n,..}(u,v,w) = ..")
+    parts = chain(m.group(3))
+    if len(parts) != 1:
+        raise TexError("the formula is not one product")
+    second = {"j": re.match(r"j=[^,]+,([^,]+),", jtxt), "i": re.match(r"i=[^,]+,([^,]+),", itxt)}
+    return jr, ir, second, parse(m.group(1)), parse(m.group(2)), parts[0]
+
+
+def _proof_reduction() -> dict[str, bool]:
+    import sympy as sp
+
+    from paper_repro.claims.lines.sec4_tex import parse
+    from paper_repro.printed.lines.read import bound
+
+    jr, ir, second, first_idx, level_idx, formula = read_proof_r()
+    ns, is_, js = sp.symbols("n i j")
+    ok_formula, ok_cover, ok_steps = True, True, True
+    expo = sp.lambdify((ns, is_, js), half_angle_exponents(formula))
+    idx = sp.lambdify((ns, is_, js), (first_idx, level_idx))
+    perms = [p for p in product(range(3), repeat=3) if len(set(p)) == 3]
+    for n in range(1, 7):
+        pairs = []
+        j_lo, j_hi = bound(jr[0], n=n), bound(jr[1], n=n)
+        for j in range(j_lo, j_hi + 1):
+            for i in range(bound(ir[0], n=n, j=j), bound(ir[1], n=n, j=j) + 1):
+                pairs.append((i, j))
+        for var, m in second.items():  # the second listed element is the first plus one
+            if m:
+                lo = bound((jr if var == "j" else ir)[0], n=n, j=j_lo)
+                ok_steps &= parse(m.group(1)).subs({ns: n, is_: lo, js: lo}) == lo + 1
+        for i, j in pairs:
+            a_, b_ = idx(n, i, j)
+            if Q(a_).denominator != 1 or Q(b_).denominator != 1:
+                ok_formula = False
+                continue
+            ii, jj = 2 * n - int(a_), int(b_)
+            try:
+                truth = r_exponents(n, ii, jj)
+            except ValueError:
+                ok_formula = False
+                continue
+            ok_formula &= tuple(expo(n, i, j)) == truth
         reps = {tuple(sorted(((e[0], e[1]), (e[2], e[3]), (e[4], e[5]))))
-                for e in (r_exponents(n, i, j) for j in range(n + 1) for i in range(j, n + 1))}
+                for e in (r_exponents(n, i, j) for i, j in pairs if 0 <= j <= n and j <= i <= 2 * n - j)}
         mem = {tuple(sorted(((e[0], e[1]), (e[2], e[3]), (e[4], e[5]))))
                for e in (exponents(lab) for lab in united_system(n))}
         ok_cover &= mem <= reps
-    return LineResult(ok_formula and ok_cover, how="exponent vectors: the restated R_{2n,2n-i,j} equals "
-                      "R_system_leq_n for j <= i <= n, and every function of T_{2n} is a permutation of variables "
-                      "of one of them (n <= 8)", kind="exhaustive", detail={"n_max": 8})
+        # the reduction is by the symmetries (permutations of u, v, w): each member is a permutation of one of them
+        ok_cover &= all(any(tuple(((e[0], e[1]), (e[2], e[3]), (e[4], e[5]))[p[k]] for k in range(3)) in {
+            ((x[0], x[1]), (x[2], x[3]), (x[4], x[5])) for x in (r_exponents(n, i, j) for i, j in pairs)}
+            for p in perms) for e in (exponents(lab) for lab in united_system(n)))
+    words = "symmetry properties" in verbatim("sec4_5-proof-symmetry-reduction") and "\\ref{R_system}" in verbatim(
+        "sec4_5-proof-symmetry-reduction")
+    return {"formula_is_R": ok_formula, "every_member_a_permutation_of_one": ok_cover, "listed_steps": ok_steps,
+            "by_symmetry": words}
 
 
-def power_reduction_ok(m: int, which: str, printed=None) -> bool:
-    lhs = (EP.cos((Q(1, 2),)) if which == "cos" else EP.sin((Q(1, 2),))) ** m
-    rhs = (printed or pl.power_reduction)(m, which, EP)
-    return lhs == rhs
+@line_check("sec4_5-proof-reduction")
+def check_proof_reduction() -> LineResult:
+    from paper_repro.claims.lines.sec4_tex import TexError
+
+    how = ("the ranges of j and i (read from both lines), the printed indices and product of R_{2n,2n-i,j} (read) "
+           "against the exponents of R_system (core.labels.r_exponents); every function of T_{2n} is a permutation "
+           "of the variables of one printed R (n <= 6)")
+    try:
+        out = _proof_reduction()
+    except (TexError, ValueError, TypeError) as exc:
+        return LineResult(False, how=how, kind="exhaustive", detail={"unread": str(exc)})
+    return LineResult(all(out.values()), how=how, kind="exhaustive", detail=out)
+
+
+#: the lines of the power-reduction identities: (odd line with the left side, even line)
+POWER_LINES = {"cos": ("sec4_5-cos-power-odd", "sec4_5-cos-power-even"),
+               "sin": ("sec4_5-sin-power-odd", "sec4_5-sin-power-even")}
+
+
+def read_power_reduction(which: str) -> tuple:
+    """The printed left side and the two cases ``(right side, parity)`` of the power reduction of ``which``."""
+    from paper_repro.claims.lines.sec4_tex import TexError, parse
+
+    odd, even = (verbatim(x).replace("%", " ") for x in POWER_LINES[which])
+    m = re.fullmatch(r"\s*(.*?)&\s*=\\left\\\{\s*\\begin\{array\}\s*\[c\]\{rl\}\s*(.*)$", odd)
+    if not m:
+        raise TexError(f"{which}: no left side")
+    lhs = parse(m.group(1))
+    cases = []
+    for body in (m.group(2), even):
+        mc = re.fullmatch(r"\s*(.*?),\s*&\s*m\\equiv(\d)\\left\(\s*\\operatorname\{mod\}\s*2\\right\)\s*,(?:\\\\)?\s*",
+                          body)
+        if not mc:
+            raise TexError(f"{which}: unread case {body[-40:]!r}")
+        cases.append((parse(mc.group(1)), int(mc.group(2))))
+    return lhs, cases
+
+
+def power_reduction_holds(which: str, m_max: int = 16) -> dict[str, bool]:
+    """Each printed case at every m of its parity (0..m_max), both sides expanded exactly in t."""
+    import sympy as sp
+
+    lhs, cases = read_power_reduction(which)
+    m_, t = sp.symbols("m t")
+    out = {}
+    if sorted(c[1] for c in cases) != [0, 1]:
+        return {"parities": False}
+    for rhs, parity in cases:
+        ok = True
+        for m in range(parity, m_max + 1, 2):
+            ok &= to_ep(lhs.subs(m_, m), (t,)) == to_ep(sp.expand(rhs.subs(m_, m).doit()), (t,))
+        out[f"{which}_{'odd' if parity else 'even'}"] = ok
+    return out
 
 
 @line_check("sec4_5-power-reduction")
 def check_power_reduction() -> LineResult:
-    res = {f"{w}^{m}": power_reduction_ok(m, w) for w in ("cos", "sin") for m in range(0, 21)}
-    return LineResult(all(res.values()), how="both sides expanded exactly, m = 0..20", kind="exhaustive",
-                      detail={"failing": [k for k, v in res.items() if not v], "m_max": 20})
+    from paper_repro.claims.lines.sec4_tex import TexError
+
+    how = ("both printed cases of each identity (left side, right side, sums with their bounds and parity, read from "
+           "the transcriptions) expanded exactly in t at every m = 0..16 of the case's parity; m in N, t in R read")
+    try:
+        out = {**power_reduction_holds("cos"), **power_reduction_holds("sin")}
+        rng = verbatim("sec4_5-power-ranges").replace("%", " ")
+        out["ranges_m_in_N_t_in_R"] = re.fullmatch(r"\s*\(\$m\\in\s*\\mathbb\{N\}\s*\$,\s*"
+                                                   r"\$t\\in\s*\\mathbb\{R\}\s*\$\)"
+                                                   r"\s*", rng) is not None
+    except (TexError, TypeError, ValueError) as exc:
+        return LineResult(False, how=how, kind="exhaustive", detail={"unread": str(exc)})
+    return LineResult(all(out.values()), how=how, kind="exhaustive", detail=out)
 
 
 def factor_support(power: int, base: str) -> tuple[str, list[int]]:
@@ -559,212 +1412,672 @@ def factor_support(power: int, base: str) -> tuple[str, list[int]]:
 K_LINES = {"0,0": "sec4_5-K00", "1,1": "sec4_5-K11", "0,1": "sec4_5-K01", "1,0": "sec4_5-K10"}
 
 
-def read_k_upper(override: dict[str, str] | None = None) -> dict:
-    """The upper ends B of the four factors {0, 1, ..., B} of each printed K_{a,b}, read from the transcriptions
-    (``\\frac{2n-i-1}{2}`` ...), as functions (n, i, j) -> four Fractions."""
-    from paper_repro.printed.lines.read import bound
+def listed_values(items: list, env: dict) -> list[int]:
+    """The integers of a printed listed set ``{a, b, \\ldots, c}`` (items parsed, ``None`` for ``\\ldots``) at ``env``:
+    listed neighbours step by 1, the set is first..last (``{0,1,\\ldots,0}`` is {0}); ``ValueError`` otherwise (a
+    bound that is not an integer, such as (i-j)/2 with i - j odd, included)."""
+    vals = [None if e is None else e.subs(env) for e in items]
+    for x in vals:
+        if x is not None and not x.is_Integer:
+            raise ValueError(f"element {x} is not an integer")
+    if vals[0] is None or vals[-1] is None:
+        raise ValueError("an ellipsis at an end")
+    for k in range(len(vals) - 1):
+        x, y = vals[k], vals[k + 1]
+        if x is not None and y is not None and y - x != 1:
+            raise ValueError(f"listed neighbours {x}, {y} do not step by 1")
+    if vals[-1] < vals[0]:
+        raise ValueError("the last element is below the first")
+    return list(range(int(vals[0]), int(vals[-1]) + 1))
 
-    texts = _texts(set(K_LINES.values()), override)
-    out = {}
-    for case, line_id in K_LINES.items():
-        tex = texts[line_id]
-        m = re.match(r"\s*K_\{(\d),(\d)\}", tex)
-        ends = re.findall(r"\\ldots,\s*\\frac\{([^{}]+)\}%?\s*\{([^{}]+)\}", tex)
-        if not m or f"{m.group(1)},{m.group(2)}" != case or len(ends) != 4:
-            raise ValueError(f"{line_id}: not the four factors of K_{{{case}}}")
-        out[case] = (lambda n, i, j, ends=ends: tuple(Q(bound(a, n=n, i=i, j=j), bound(b, n=n, i=i, j=j))
-                                                      for a, b in ends))
-    return out
+
+def read_k_sets(line_id: str) -> tuple[str, list]:
+    """``(case, [four listed sets])`` of a printed ``K_{a,b} & =\\left\\{ 0,1,\\ldots,\\frac{..}{..}\\right\\}
+    \\times ..``: each set as its parsed items."""
+    from paper_repro.claims.lines.sec4_tex import TexError, parse
+
+    tex = verbatim(line_id).replace("%", " ")
+    m = re.fullmatch(r"\s*K_\{(\d),(\d)\}\s*&\s*=(.*?)[,.]?(?:\\\\)?\s*", tex)
+    if not m:
+        raise TexError(f"{line_id}: not K_{{a,b}} = ..")
+    factors = [x.strip() for x in m.group(3).split("\\times")]
+    sets = []
+    for f in factors:
+        mf = re.fullmatch(r"\\left\\\{(.*)\\right\\\}", f)
+        if not mf:
+            raise TexError(f"{line_id}: unread factor {f[:30]!r}")
+        sets.append([None if x.strip() == "\\ldots" else parse(x) for x in mf.group(1).split(",")])
+    return f"{m.group(1)},{m.group(2)}", sets
 
 
-def k_sets_agree(n_max: int, printed_upper=None) -> tuple[dict, dict]:
-    printed_upper = printed_upper or read_k_upper()
-    types_ok: dict[str, bool] = {}
-    sets_ok: dict[str, bool] = {}
+def true_k_ranges(n: int, i: int, j: int) -> list[list[int]]:
+    """The k's with a non-zero term in the exact expansion of sin^{2n-i}(u/2), sin^i(w/2), cos^{i-j}(v/2),
+    sin^j(v/2) (the powers of R_{2n,2n-i,j}, core.labels.r_exponents), in the order k1..k4 of
+    possible_products_inclusion."""
+    e = r_exponents(n, i, j)
+    return [factor_support(e[0], "sin")[1], factor_support(e[4], "sin")[1], factor_support(e[3], "cos")[1],
+            factor_support(e[2], "sin")[1]]
+
+
+def k_sets_agree(line_id: str, n_max: int = 6, fix_third: bool = False) -> bool:
+    """The printed K_{a,b} (read) equals the true ranges of k for every (i, j) of parity (a, b), n <= n_max;
+    ``fix_third``: the third factor's upper end lowered by 1/2 (the correction of K_{1,0})."""
+    import sympy as sp
+
+    case, sets = read_k_sets(line_id)
+    if len(sets) != 4:
+        return False
+    if fix_third:
+        sets = [*sets[:2], [*sets[2][:-1], sets[2][-1] - sp.Rational(1, 2)], sets[3]]
+    a, b = (int(x) for x in case.split(","))
+    ns, is_, js = sp.symbols("n i j")
     for n in range(1, n_max + 1):
         for j in range(n + 1):
             for i in range(j, n + 1):
-                case = f"{i % 2},{j % 2}"
-                facs = [factor_support(2 * n - i, "sin"), factor_support(i, "sin"), factor_support(i - j, "cos"),
-                        factor_support(j, "sin")]
-                types_ok[case] = types_ok.get(case, True) and tuple(f[0] for f in facs) == pl.PRODUCT_TYPES[case]
-                ub = printed_upper[case](n, i, j)
-                good = all(b.denominator == 1 and list(range(int(b) + 1)) == f[1] for b, f in zip(ub, facs))
-                sets_ok[case] = sets_ok.get(case, True) and good
-    return types_ok, sets_ok
+                if (i % 2, j % 2) != (a, b):
+                    continue
+                try:
+                    got = [listed_values(x, {ns: n, is_: i, js: j}) for x in sets]
+                except ValueError:
+                    return False
+                if got != true_k_ranges(n, i, j):
+                    return False
+    return True
 
 
-@line_check("sec4_5-product-types")
-def check_product_types() -> LineResult:
-    types_ok, _ = k_sets_agree(5)
-    return LineResult(all(types_ok.values()), how="exact expansion of each factor sin^{2n-i}(u/2), sin^i(w/2), "
-                      "cos^{i-j}(v/2), sin^j(v/2): cosine or sine series, n <= 5, j <= i <= n", kind="exhaustive",
-                      detail=types_ok)
+def k_case_check(case: str) -> LineResult:
+    from paper_repro.claims.lines.sec4_tex import TexError
 
-
-#: The corrected K_{1,0}: third factor {0, ..., (i-j-1)/2}.
-K10_CORRECTED = lambda n, i, j: (Q(2 * n - i - 1, 2), Q(i - 1, 2), Q(i - j - 1, 2), Q(j, 2))  # noqa: E731
-
-
-def _k_results(override: dict[str, str] | None = None) -> tuple[dict, dict]:
-    if not override:
-        return _k_results_printed()
-    printed = read_k_upper(override)
-    return k_sets_agree(6, printed)[1], k_sets_agree(6, {**printed, "1,0": K10_CORRECTED})[1]
-
-
-@cache
-def _k_results_printed() -> tuple[dict, dict]:
-    printed = read_k_upper()
-    return k_sets_agree(6, printed)[1], k_sets_agree(6, {**printed, "1,0": K10_CORRECTED})[1]
-
-
-def k_case_check(case: str, override: dict[str, str] | None = None) -> LineResult:
+    line_id = K_LINES[case]
+    how = ("the four listed sets of K_{a,b} (every element read from the transcription; each must be a run of "
+           "integers) against the k's with a non-zero term in the exact expansion of each factor of R_{2n,2n-i,j}, "
+           "every (i, j) of parity (a, b), n <= 6")
     try:
-        printed, corrected = _k_results(override)
-    except ValueError as exc:
-        return LineResult(False, how="the four factors read from the transcription", detail={"unread": str(exc)})
-    return LineResult(printed[case], corrected[case] if not printed[case] else None,
-                      how="the k's with a non-zero term in the exact expansion of each factor against the printed "
-                          "ranges {0..B} (read from the transcriptions; B must be a non-negative integer), n <= 6, "
-                          "j <= i <= n", kind="exhaustive",
-                      detail={"case_i_j_mod_2": case, "printed_holds": printed[case],
-                              "corrected_holds": corrected[case],
+        read_case = read_k_sets(line_id)[0]
+        printed = read_case == case and k_sets_agree(line_id)
+        corrected = read_case == case and k_sets_agree(line_id, fix_third=True) if case == "1,0" else None
+    except (TexError, ValueError, TypeError) as exc:
+        return LineResult(False, how=how, kind="exhaustive", detail={"unread": str(exc)})
+    return LineResult(printed, corrected if not printed else None, how=how, kind="exhaustive",
+                      detail={"case_i_j_mod_2": case, "printed_holds": printed, "corrected_holds": corrected,
                               "example": "n=2, i=1, j=0: third factor cos^1(v/2) has k in {0}; printed bound "
                                          f"(i-j)/2 = {Q(1, 2)}"})
 
 
 for _case in ("0,0", "1,1", "0,1", "1,0"):
-    line_check(f"sec4_5-K-{_case.replace(',', '')}")(lambda override=None, _c=_case: k_case_check(_c, override))
+    line_check(f"sec4_5-K-{_case.replace(',', '')}")(lambda _c=_case: k_case_check(_c))
+
+
+PRODUCT_LINES = ("sec4_5-product-type-1", "sec4_5-product-type-2", "sec4_5-product-type-3", "sec4_5-product-type-4")
+_KSYMS = "n i j k1 k2 k3 k4"
+
+
+def read_product_types() -> dict[tuple[int, int], object]:
+    """``{(i mod 2, j mod 2): product}`` of the printed cases of possible_products_inclusion (each read)."""
+    from paper_repro.claims.lines.sec4_tex import TexError, parse
+
+    out = {}
+    for lid in PRODUCT_LINES:
+        body, _, cond = verbatim(lid).replace("%", " ").partition("&")
+        m = re.fullmatch(r"\s*i\\equiv(\d)\\left\(\s*\\operatorname\{mod\}2\\right\)\s*\\text\{ and \}j\\equiv(\d)"
+                         r"\\left\(\s*\\operatorname\{mod\}2\\right\)\s*,?(?:\\\\)?\s*", cond)
+        if not m:
+            raise TexError(f"{lid}: unread condition")
+        key = (int(m.group(1)), int(m.group(2)))
+        if key in out or max(key) > 1:
+            raise TexError(f"{lid}: case {key} printed twice or not a parity")
+        out[key] = parse(body.strip().rstrip(","))
+    return out
+
+
+def r_in_span_of(expr, n_max: int = 3, parity=None) -> bool:
+    """R_{2n,2n-i,j} (exact expansion of core.labels.r_exponents) lies in the span of the printed product ``expr``
+    over the k's of the exact expansions of its factors (:func:`true_k_ranges`), for every (i, j) of the given
+    parity, n <= n_max."""
+    import sympy as sp
+
+    u, v, w = sp.symbols("u v w")
+    f = compile_ep(expr, (u, v, w), sp.symbols(_KSYMS))
+    for n in range(1, n_max + 1):
+        for j in range(n + 1):
+            for i in range(j, n + 1):
+                if parity is not None and (i % 2, j % 2) != parity:
+                    continue
+                target = half_monomial(r_exponents(n, i, j))
+                cols = [f((n, i, j, *k)) for k in product(*true_k_ranges(n, i, j))]
+                keys = sorted({x for c in [*cols, target] for x in c.terms})
+
+                def column(ep, keys=keys):
+                    return [q for x in keys for q in ep.terms.get(x, (Q(0), Q(0)))]
+
+                mat = [column(c) for c in cols]
+                tcol = column(target)
+                rows = range(len(keys) * 2)
+                a = fmpq_mat([[fmpq(c[r].numerator, c[r].denominator) for c in mat] for r in rows])
+                b = fmpq_mat([[fmpq(c[r].numerator, c[r].denominator) for c in [*mat, tcol]] for r in rows])
+                if a.rank() != b.rank():
+                    return False
+    return True
+
+
+@line_check("sec4_5-product-types")
+def check_product_types() -> LineResult:
+    """Each printed case (product and parity condition read) spans R_{2n,2n-i,j} of its parity; the parity line's
+    powers are read."""
+    import sympy as sp
+
+    from paper_repro.claims.lines.sec4_tex import TexError, parse
+
+    how = ("each printed product (read) over the k's of the factors' expansions spans the exact expansion of "
+           "R_{2n,2n-i,j} for every "
+           "(i, j) of the printed parity, n <= 3; the four cases are the four parities; the parity line names the "
+           "four powers of R (read, against core.labels.r_exponents, n <= 4)")
+    try:
+        types = read_product_types()
+        out = {f"{a},{b}": r_in_span_of(p, 3, (a, b)) for (a, b), p in types.items()}
+        out["four_parities"] = sorted(types) == [(0, 0), (0, 1), (1, 0), (1, 1)]
+        tex = verbatim("sec4_5-parity")
+        m = re.fullmatch(r"and by the parity of powers \$(.*?)\$, \$(.*?)\$, \$(.*?)\$ and \$(.*?)"
+                         r"\$, one can easily see "
+                         r"that function \$R_\{2n,2n-i,j\}\^\{\\alpha\}\\left\( u,v,w\\right\) \$ can be written as "
+                         r"the sum of products of the type%", tex)
+        if not m:
+            raise TexError("unread parity line")
+        powers = [parse(x) for x in m.groups()]
+        ns, is_, js = sp.symbols("n i j")
+        out["powers_of_R"] = all(
+            sorted(int(p.subs({ns: n, is_: i, js: j})) for p in powers) == sorted(
+                x for k, x in enumerate(r_exponents(n, i, j)) if k in (0, 2, 3, 4))
+            for n in range(1, 5) for j in range(n + 1) for i in range(j, n + 1))
+    except (TexError, ValueError, TypeError) as exc:
+        return LineResult(False, how=how, kind="exhaustive", detail={"unread": str(exc)})
+    return LineResult(all(out.values()), how=how, kind="exhaustive", detail=out)
 
 
 @line_check("sec4_5-product-to-sum")
 def check_product_to_sum() -> LineResult:
-    x, y = (1, 0), (0, 1)
-    xm, xp = (1, -1), (1, 1)
-    res = [EP.cos(x) * EP.cos(y) == (EP.cos(xm) + EP.cos(xp)) * Q(1, 2),
-           EP.sin(x) * EP.sin(y) == (EP.cos(xm) - EP.cos(xp)) * Q(1, 2),
-           EP.sin(x) * EP.cos(y) == (EP.sin(xp) + EP.sin(xm)) * Q(1, 2)]
-    return LineResult(all(res), how="exponential expansion in two independent variables", kind="proof",
-                      detail={"rows": res})
+    """Each printed identity (both sides read) expanded exactly in the independent variables x, y."""
+    import sympy as sp
+
+    from paper_repro.claims.lines.sec4_tex import TexError, chain
+
+    how = "both sides of each identity read from the transcriptions, exponential expansion in x, y"
+    rows = []
+    try:
+        for k in (1, 2, 3):
+            parts = chain(verbatim(f"sec4_5-product-to-sum-{k}"))
+            xy = sp.symbols("x y")
+            rows.append(len(parts) == 2 and to_ep(parts[0], xy) == to_ep(parts[1], xy))
+    except (TexError, ValueError, TypeError) as exc:
+        return LineResult(False, how=how, kind="proof", detail={"unread": str(exc)})
+    return LineResult(all(rows), how=how, kind="proof", detail={"rows": rows})
 
 
 def _odd_cases(n_max: int):
+    """``(n, i, j, (k1, k2, k3, k4))`` for every odd i, j (j <= i <= n) and (k1..k4) in the true K_{1,1} (the k's of
+    the exact expansion of the factors, :func:`true_k_ranges`), n <= n_max."""
     for n in range(1, n_max + 1):
         for j in range(1, n + 1, 2):
             for i in range(j, n + 1, 2):
-                for k in product(range((2 * n - i - 1) // 2 + 1), range((i - 1) // 2 + 1), range((i - j) // 2 + 1),
-                                 range((j - 1) // 2 + 1)):
-                    yield n, i, j, k
+                yield from ((n, i, j, k) for k in product(*true_k_ranges(n, i, j)))
 
 
 def _abcd(n, i, j, k):
-    return Q(2 * n - i - 2 * k[0], 2), Q(i - 2 * k[1], 2), Q(i - j - 2 * k[2], 2), Q(j - 2 * k[3], 2)
+    """The frequencies A, B, C, D of the four factors (u, w, cos v, sin v) of the k-th terms, from the powers of
+    R_{2n,2n-i,j} (core.labels.r_exponents): (power - 2k)/2."""
+    e = r_exponents(n, i, j)
+    return Q(e[0] - 2 * k[0], 2), Q(e[4] - 2 * k[1], 2), Q(e[3] - 2 * k[2], 2), Q(e[2] - 2 * k[3], 2)
+
+
+def read_signs() -> dict:
+    """The sign values of ``where $s_{1}=1$ and $s_{2},s_{3},s_{4}\\in\\left\\{ -1,+1\\right\\} $, i.e., $s_{r}^{2}=1$,
+    $r=1,2,3,4$`` (each read; s_r^2 = 1 checked for the listed r)."""
+    import sympy as sp
+
+    from paper_repro.claims.lines.sec4_tex import TexError, parse
+
+    tex = verbatim("sec4_5-signs")
+    m = re.fullmatch(r"where \$s_\{(\d)\}=([-+]?\d+)\$ and \$((?:s_\{\d\},?)+)\\in\\left\\\{(.*?)\\right\\\} "
+                     r"\$, i\.e\., "
+                     r"\$s_\{r\}\^\{2\}=(\d+)\$, \$(r=.*)\$", tex)
+    if not m:
+        raise TexError("unread signs")
+    vals = {f"s{m.group(1)}": [int(m.group(2))]}
+    options = [int(parse(x)) for x in m.group(4).split(",")]
+    for x in re.findall(r"s_\{(\d)\}", m.group(3)):
+        vals[f"s{x}"] = options
+    if not m.group(6).startswith("r=") or "\\ldots" in m.group(6):
+        raise TexError("the indices r are not listed")
+    rs = [int(parse(x)) for x in m.group(6)[2:].split(",")]
+    if sorted(vals) != [f"s{r}" for r in rs] or not all(
+            sp.Integer(x) ** 2 == int(m.group(5)) for r in rs for x in vals[f"s{r}"]):
+        raise TexError("s_r^2 = 1 fails for the listed r, or the listed r are not the signs")
+    return vals
+
+
+def _sign_assignments(vals: dict):
+    names = sorted(vals)
+    for combo in product(*(vals[x] for x in names)):
+        yield dict(zip(names, combo))
+
+
+def _freq(arg, variables) -> tuple:
+    import sympy as sp
+
+    poly = sp.Poly(sp.expand(arg), *variables)
+    return tuple(Q(int(c.p), int(c.q)) for c in (poly.coeff_monomial(x) for x in variables))
 
 
 @line_check("sec4_5-eight-terms")
 def check_eight_terms() -> LineResult:
-    ok, count = True, 0
-    for n, i, j, k in _odd_cases(4):
-        A, B, C, D = _abcd(n, i, j, k)
-        prod = EP.sin((A, 0, 0)) * EP.sin((0, 0, B)) * EP.cos((0, C, 0)) * EP.sin((0, D, 0))
-        allowed = {(A, s2 * C + s3 * D, s4 * B) for s2 in (-1, 1) for s3 in (-1, 1) for s4 in (-1, 1)}
-        allowed |= {tuple(-x for x in f) for f in allowed}
-        ok &= prod.is_sine_series() and set(prod.terms) <= allowed
-        count += 1
-    return LineResult(ok, how="exact expansion of the product: a sine series whose frequencies are "
-                      "+-(A, s2 C + s3 D, s4 B) (s1 = 1), every (i, j) odd and (k1..k4) in K_{1,1}, n <= 4",
-                      kind="exhaustive", detail={"products": count})
+    """The printed product and form (read) and the signs (read): the formal expansion of the product has the printed
+    number of terms, each +- the form at one choice of signs, and the product over K_{1,1} spans R_{2n,2n-i,j}."""
+    import sympy as sp
+
+    from paper_repro.claims.lines.sec4_tex import TexError, parse
+
+    how = ("the product and the form read from the transcription, the signs read: for every odd (i, j) and (k1..k4) "
+           "in K_{1,1}, n <= 3, the 2^(factors-1) formal terms of the product are, up to sign, exactly the form at "
+           "the printed signs (a sine for a sine series); the product spans R_{2n,2n-i,j} (n <= 3)")
+    try:
+        tex = verbatim("sec4_5-eight-terms").replace("%", " ")
+        m = re.fullmatch(r"each of the (\w+) terms of the expansion of the product\s*\\\[(.*?)\\\]\s*has the form\s*"
+                         r"\\\[(.*?),?\s*\\\]\s*", tex)
+        if not m or m.group(1) not in NUMBER_WORDS:
+            raise TexError("unread line")
+        count, prod_e, form = NUMBER_WORDS[m.group(1)], parse(m.group(2)), parse(m.group(3).strip().rstrip(","))
+        signs = read_signs()
+        factors = sp.Mul.make_args(prod_e)
+        if not all(isinstance(f, (sp.sin, sp.cos)) for f in factors) or not isinstance(form, (sp.sin, sp.cos)):
+            raise TexError("not a product of sines and cosines, or the form is not one function")
+        uvw = sp.symbols("u v w")
+        params = sp.symbols(_KSYMS)
+        ep_prod = compile_ep(prod_e, uvw, params)
+        ok_count = count == 2 ** (len(factors) - 1)
+        ok_terms, ok_type = True, True
+        for n, i, j, k in _odd_cases(3):
+            env = dict(zip(params, (n, i, j, *k)))
+            fr = [_freq(f.args[0].subs(env), uvw) for f in factors]
+            formal = {tuple(sum(e * x[c] for e, x in zip(eps, fr)) for c in range(3))
+                      for eps in product((-1, 1), repeat=len(fr))}
+            formal = {max(f, tuple(-x for x in f)) for f in formal}
+            printed = set()
+            for sv in _sign_assignments(signs):
+                f = _freq(form.args[0].subs(env).subs({sp.Symbol(a): b for a, b in sv.items()}), uvw)
+                printed.add(max(f, tuple(-x for x in f)))
+            ok_terms &= formal == printed
+            ep = ep_prod((n, i, j, *k))
+            ok_type &= (ep.is_sine_series() if isinstance(form, sp.sin) else ep.is_cosine_series())
+        spans = r_in_span_of(prod_e, 3, (1, 1))
+    except (TexError, ValueError, TypeError) as exc:
+        return LineResult(False, how=how, kind="exhaustive", detail={"unread": str(exc)})
+    out = {"count": ok_count, "terms_are_the_form": ok_terms, "function_type": ok_type, "spans_R_odd_odd": spans}
+    return LineResult(all(out.values()), how=how, kind="exhaustive", detail=out)
+
+
+SHIFT_LINES = ("sec4_5-shift-step1", "sec4_5-shift-step2", "sec4_5-shift-step3")
 
 
 @line_check("sec4_5-shift-chain")
 def check_shift_chain() -> LineResult:
-    """Steps of the chain: alpha a fourth variable (steps 1, 2), then alpha = u + v + w (step 3)."""
-    ok1 = ok2 = ok3 = ok_int = True
-    for n, i, j, k in _odd_cases(3):
-        A, B, C, D = _abcd(n, i, j, k)
-        for s2, s3, s4 in product((-1, 1), repeat=3):
-            X = (A, s2 * C + s3 * D, s4 * B, Q(0))
-            Y = (A, s2 * C + s3 * D, s4 * B, Q(-1, 2))  # X - alpha/2
-            lhs = EP.sin(X)
-            step1 = EP.sin((A, s2 * C + s3 * D, s4 * B, Q(0)))  # -alpha/2 + alpha/2
-            step2 = EP.cos((0, 0, 0, Q(1, 2))) * EP.sin(Y) + EP.sin((0, 0, 0, Q(1, 2))) * EP.cos(Y)
-            ok1 &= lhs == step1
-            ok2 &= step1 == step2
-            P = (Q(2 * n - i - 1 - 2 * k[0], 2), s2 * C + s3 * Q(j - 2 * k[3] - s3, 2), s4 * Q(i - 2 * k[1] - s4, 2))
-            step3 = EP.cos((0, 0, 0, Q(1, 2))) * EP.sin(P + (Q(0),)) + EP.sin((0, 0, 0, Q(1, 2))) * EP.cos(P + (Q(0),))
-            on_plane = ((1, 0, 0, 0), (0, 1, 0, 0), (0, 0, 1, 0), (1, 1, 1, 0))  # alpha -> u + v + w
-            ok3 &= step2.linear(on_plane) == step3.linear(on_plane)
-            ok_int &= all(x.denominator == 1 for x in P)
-    return LineResult(ok1 and ok2 and ok3, how="exact expansion over (u, v, w, alpha) (alpha free for the first two "
-                      "steps, alpha = u + v + w for the last), all (i, j) odd, K_{1,1}, signs, n <= 3",
-                      kind="exhaustive",
-                      detail={"step_add_subtract": ok1, "step_addition_formula": ok2, "step_constraint": ok3,
-                              "integer_coefficients": ok_int})
+    """Every '=' of the chain (each line read; a line's first part repeats the previous line's last part): the first
+    steps as identities in (u, v, w, alpha), the last one on u + v + w = alpha; every odd (i, j), K_{1,1}, the
+    printed signs, n <= 3."""
+    import sympy as sp
+
+    from paper_repro.claims.lines.sec4_tex import ALPHA, TexError, chain
+
+    how = ("each '=' of the three lines read from the transcriptions, expanded exactly over (u, v, w, alpha) (alpha "
+           "free where the step does not use the constraint, alpha = u + v + w for the step that does), every odd "
+           "(i, j), (k1..k4) in K_{1,1}, the printed signs, n <= 3")
+    try:
+        parts = [chain(verbatim(x)) for x in SHIFT_LINES]
+        signs = read_signs()
+        if [len(p) for p in parts] != [2, 2, 2]:
+            raise TexError(f"parts per line {[len(p) for p in parts]}")
+        uvwa = (*sp.symbols("u v w"), ALPHA)
+        params = (*sp.symbols(_KSYMS), *sp.symbols("s1 s2 s3 s4"))
+        free = [[compile_ep(x, uvwa, params) for x in p] for p in parts]
+        u, v, w = uvwa[:3]
+        plane = [[compile_ep(x.subs(ALPHA, u + v + w), (u, v, w), params) for x in p] for p in parts]
+        ok = {"step1_free": True, "step2_free": True, "step3_on_plane": True, "step3_not_free": False,
+              "repeats": True}
+        for n, i, j, k in _odd_cases(3):
+            for sv in _sign_assignments(signs):
+                vals = (n, i, j, *k, *(sv[f"s{r}"] for r in (1, 2, 3, 4)))
+                ep = [[f(vals) for f in p] for p in free]
+                ok["step1_free"] &= ep[0][0] == ep[0][1]
+                ok["step2_free"] &= ep[1][0] == ep[1][1]
+                ok["repeats"] &= ep[1][0] == ep[0][1] and ep[2][0] == ep[1][1]
+                pl_ = [f(vals) for f in plane[2]]
+                ok["step3_on_plane"] &= pl_[0] == pl_[1]
+                ok["step3_not_free"] |= ep[2][0] != ep[2][1]  # the last step uses the constraint
+    except (TexError, ValueError, TypeError, KeyError) as exc:
+        return LineResult(False, how=how, kind="exhaustive", detail={"unread": str(exc)})
+    return LineResult(all(ok.values()), how=how, kind="exhaustive", detail=ok)
+
+
+def read_class_entries():
+    """The three entries of the printed class ``\\left[ \\underset{\\in\\mathbb{N}}{\\underbrace{..}},..\\right]``
+    (each marked as a natural number) and the arguments of the printed ``z=\\min\\left\\{ ..\\right\\}``."""
+    import sympy as sp
+
+    from paper_repro.claims.lines.sec4_tex import TexError, chain, parse
+
+    tex = verbatim("sec4_5-class-N").replace("%", " ")
+    m = re.fullmatch(r"\s*\\left\[(.*)\\right\]\s*,?\s*", tex)
+    if not m:
+        raise TexError("no class [..]")
+    body, items, depth, last = m.group(1), [], 0, 0
+    for k, ch in enumerate(body):
+        depth += {"{": 1, "}": -1}.get(ch, 0)
+        if ch == "," and depth == 0:
+            items.append(body[last:k])
+            last = k + 1
+    items.append(body[last:])
+    if not all(re.match(r"\s*\\underset\{\\in\s*\\mathbb\{N\}\s*\}", x) for x in items):
+        raise TexError("an entry is not marked natural")
+    entries = [parse(x) for x in items]
+    zparts = chain(verbatim("sec4_5-z-min"))
+    if len(zparts) != 2 or zparts[0] != sp.Symbol("z") or not isinstance(zparts[1], sp.Min):
+        raise TexError("z-min is not z = min{..}")
+    return entries, zparts[1]
+
+
+def shifted_truth(n, i, j, k, sv) -> tuple:
+    """The coefficients of u, v, w in X - (u + v + w)/2 for the term of the odd-odd product with signs sv:
+    X = A u + (s2 C + s3 D) v + s4 B w (A, B, C, D from the powers of R, :func:`_abcd`)."""
+    A, B, C, D = _abcd(n, i, j, k)
+    return (A - Q(1, 2), sv["s2"] * C + sv["s3"] * D - Q(1, 2), sv["s4"] * B - Q(1, 2))
 
 
 @line_check("sec4_5-integer-class")
 def check_integer_class() -> LineResult:
-    ok_int = ok_nat = ok_same = ok_le_n = True
-    for n, i, j, k in _odd_cases(5):
-        for s2, s3, s4 in product((-1, 1), repeat=3):
-            P = (Q(2 * n - i - 1 - 2 * k[0], 2), s2 * Q(i - j - 2 * k[2], 2) + s3 * Q(j - 2 * k[3] - s3, 2),
-                 s4 * Q(i - 2 * k[1] - s4, 2))
-            ok_int &= all(x.denominator == 1 for x in P)
-            z = min(P)
-            shifted = tuple(int(x - z) for x in P)
-            ok_nat &= min(shifted) >= 0
-            ok_same &= phase_equivalent(tuple(int(x) for x in P), shifted)
-            ok_le_n &= max(shifted) <= n
-    return LineResult(ok_int and ok_nat and ok_same and ok_le_n, how="all (i, j) odd, K_{1,1}, signs, n <= 5: "
-                      "coefficients integer, minus z = their minimum non-negative, same class, and at most n (in E_n)",
-                      kind="exhaustive", detail={"integer": ok_int, "natural": ok_nat, "same_class": ok_same,
-                                            "in_E_n": ok_le_n})
+    """The printed claims after the chain (read): integer coefficients for every k of the printed K_{a,b} (the
+    printed number of k's), the printed minimum z and the printed class entries (natural, the same class, in E_n),
+    and "the remaining two cases": every case of the minimum."""
+    import sympy as sp
+
+    from paper_repro.claims.lines.sec4_tex import TexError
+
+    how = ("the printed K_{a,b}, tuple length, minimum and class entries read from the transcriptions against the "
+           "coefficients of X - (u+v+w)/2 (A, B, C, D from the powers of R, the signs read), every (i, j) of the "
+           "printed parity, n <= 4")
+    try:
+        tex = verbatim("sec4_5-integer")
+        m = re.fullmatch(r"where for all \$(\d+)\$-tuples \$\\left\( ((?:k_\{\d\},?)+)\\right\) \\in K_\{(\d),(\d)\}\$ "
+                         r"the coefficients of variables \$u\$, \$v\$ and \$w\$ are integer numbers and both of the "
+                         r"sine and cosine functions belong to the equivalence class%", tex)
+        if not m:
+            raise TexError("unread integer line")
+        ks = re.findall(r"k_\{(\d)\}", m.group(2))
+        parity = (int(m.group(3)), int(m.group(4)))
+        if max(parity) > 1:
+            raise TexError(f"K_{parity} is not a parity case")
+        other = re.fullmatch(r"The remaining (\w+) cases of \$z\$ can be treated analogously\.",
+                             verbatim("sec4_5-other-z-cases"))
+        if not other or other.group(1) not in NUMBER_WORDS:
+            raise TexError("unread remaining cases")
+        entries, zmin = read_class_entries()
+        signs = read_signs()
+        ok = {"tuple": int(m.group(1)) == len(ks) == 4 and ks == ["1", "2", "3", "4"],
+              "remaining": NUMBER_WORDS[other.group(1)] == len(zmin.args) - 1}
+        ok_int = ok_min = ok_nat = True
+        params = (*sp.symbols(_KSYMS), *sp.symbols("s1 s2 s3 s4"))
+        fz = [sp.lambdify(params, a) for a in zmin.args]
+        fe = [sp.lambdify((*params, sp.Symbol("z")), e) for e in entries]
+        for n in range(1, 5):
+            for j in range(n + 1):
+                for i in range(j, n + 1):
+                    if (i % 2, j % 2) != parity:
+                        continue
+                    for k in product(*true_k_ranges(n, i, j)):
+                        for sv in _sign_assignments(signs):
+                            truth = shifted_truth(n, i, j, k, sv)
+                            ok_int &= all(x.denominator == 1 for x in truth)
+                            vals = (n, i, j, *k, *(sv.get(f"s{r}", 1) for r in (1, 2, 3, 4)))
+                            args = sorted(Q(f(*vals)) for f in fz)
+                            ok_min &= args == sorted(truth)
+                            z = min(truth)
+                            ent = tuple(Q(f(*vals, z)) for f in fe)
+                            nat = all(x.denominator == 1 and 0 <= x <= n for x in ent)
+                            ok_nat &= nat and tuple(x - z for x in truth) == ent
+        ok.update({"integer": ok_int, "min_of_the_coefficients": ok_min, "entries_natural_same_class_in_E_n": ok_nat})
+    except (TexError, ValueError, TypeError, KeyError) as exc:
+        return LineResult(False, how=how, kind="exhaustive", detail={"unread": str(exc)})
+    return LineResult(all(ok.values()), how=how, kind="exhaustive", detail=ok)
 
 
-def max_values(n_max: int, s4_values=(-1, 1)) -> dict[str, bool]:
-    ok_first, ok_second = True, True
+_MAX = re.compile(r"\s*&?\s*\\max\\left\\\{(.*?):\\left\(\s*k_\{1\},k_\{2\},k_\{3\},k_\{4\}\\right\)\s*"
+                  r"\\in K_\{(\d),(\d)\},~"
+                  r"(.*?)\\right\\\}\s*\\\\\s*(?:=\s*&|&\s*=)(.*)$")
+
+
+def read_max(line_id: str) -> tuple:
+    """``(expression, {sign: values} quantified, parity of K, printed value)`` of a printed max{..} = value."""
+    from paper_repro.claims.lines.sec4_tex import TexError, parse
+
+    m = _MAX.fullmatch(verbatim(line_id).replace("%", " "))
+    if not m:
+        raise TexError(f"{line_id}: unread max")
+    quant: dict[str, list[int]] = {}
+    q = m.group(4)
+    for var, val in re.findall(r"s_\{(\d)\}=([-+]?\d+)", q):
+        quant[f"s{var}"] = [int(val)]
+    for names, opts in re.findall(r"((?:s_\{\d\},?)+)\\in\\left\\\{(.*?)\\right\\\}", q):
+        for x in re.findall(r"s_\{(\d)\}", names):
+            quant[f"s{x}"] = [int(parse(o)) for o in opts.split(",")]
+    rest = re.sub(r"s_\{(\d)\}=([-+]?\d+)|((?:s_\{\d\},?)+)\\in\\left\\\{(.*?)\\right\\\}|,|\s", "", q)
+    if rest:
+        raise TexError(f"{line_id}: unread quantifier {rest!r}")
+    if max(int(m.group(2)), int(m.group(3))) > 1:
+        raise TexError(f"{line_id}: K_{{{m.group(2)},{m.group(3)}}} is not a parity case")
+    return parse(m.group(1)), quant, (int(m.group(2)), int(m.group(3))), parse(m.group(5))
+
+
+def max_values(line_id: str, quantify_free: bool, n_max: int = 6) -> bool:
+    """The printed max over the printed K (true ranges of its parity) and the quantified signs equals the printed
+    value for every (i, j) of that parity; a sign in the expression that is not quantified must not change the max
+    (``quantify_free``: it is quantified over {-1, +1}, the correction)."""
+    import sympy as sp
+
+    expr, quant, parity, value = read_max(line_id)
+    signs = sorted(str(x) for x in expr.free_symbols if re.fullmatch(r"s\d", str(x)))
+    free = [x for x in signs if x not in quant]
+    if quantify_free:
+        quant = {**quant, **{x: [-1, 1] for x in free}}
+        free = []
+    params = (*sp.symbols(_KSYMS), *sp.symbols("s1 s2 s3 s4"))
+    f = sp.lambdify(params, expr)
+    fv = sp.lambdify(sp.symbols("n i j"), value)
     for n in range(1, n_max + 1):
-        for j in range(1, n + 1, 2):
-            for i in range(j, n + 1, 2):
-                ks = list(product(range((2 * n - i - 1) // 2 + 1), range((i - 1) // 2 + 1), range((i - j) // 2 + 1),
-                                  range((j - 1) // 2 + 1)))
-                first = max(Q(2 * n - i - 1 - 2 * k[0], 2) - s2 * Q(i - j - 2 * k[2], 2) - s3 * Q(j - 2 * k[3] - s3, 2)
-                            for k in ks for s2 in (-1, 1) for s3 in (-1, 1))
-                second = max(s4 * Q(i - 2 * k[1] - s4, 2) - s2 * Q(i - j - 2 * k[2], 2) - s3 * Q(j - 2 * k[3] - s3, 2)
-                             for k in ks for s2 in (-1, 1) for s3 in (-1, 1) for s4 in s4_values)
-                ok_first &= first == Q(2 * n - i - 1, 2) + Q(i - j, 2) + Q(j + 1, 2) == n
-                ok_second &= second == Q(i - 1, 2) + Q(i - j, 2) + Q(j + 1, 2) == i and i <= n
-    return {"first_max_is_n": ok_first, "second_max_is_i": ok_second}
+        for j in range(n + 1):
+            for i in range(j, n + 1):
+                if (i % 2, j % 2) != parity:
+                    continue
+                for fixed in _sign_assignments({x: [-1, 1] for x in free}):
+                    best = max(Q(f(n, i, j, *k, *({**{s: v[0] for s, v in quant.items()}, **sv, **fixed}.get(
+                        f"s{r}", 0) for r in (1, 2, 3, 4))))
+                               for k in product(*true_k_ranges(n, i, j)) for sv in _sign_assignments(quant))
+                    if best != Q(fv(n, i, j)):
+                        return False
+    return True
+
+
+def _chain_le(line_id: str) -> tuple[list, object]:
+    """The '=' parts of a printed chain and its final ``\\leq`` bound (None if there is none)."""
+    from paper_repro.claims.lines.sec4_tex import chain, parse
+
+    tex = verbatim(line_id)
+    head, _, bound_ = tex.partition("\\leq")
+    return chain(head), (parse(bound_) if bound_ else None)
 
 
 @line_check("sec4_5-max-bounds")
 def check_max_bounds() -> LineResult:
-    res = max_values(7)
-    return LineResult(all(res.values()), how="maxima by enumeration over K_{1,1} and the signs (s4 in {-1, +1} as "
-                      "defined after the eight-term form), every odd (i, j), n <= 7", kind="exhaustive", detail=res)
+    """The first max (set, quantifiers and value read) by enumeration; the arithmetic lines (read) equal n and i
+    with i <= n (the second max's value: with its sign s4 quantified, see sec4_5-max2-quantifier)."""
+    import sympy as sp
+
+    from paper_repro.claims.lines.sec4_tex import TexError
+
+    how = ("maxima by enumeration over the printed K (its true k ranges) and the printed signs, every (i, j) of its "
+           "parity, n <= 6; the printed values and the chains '= n', '= i <= n' read and evaluated")
+    try:
+        out = {"max1": max_values("sec4_5-max1-set", False)}
+        v1 = read_max("sec4_5-max1-set")[3]
+        v2 = read_max("sec4_5-max2-set")[3]
+        ns, is_, js = sp.symbols("n i j")
+        cases = [(n, i, j) for n in range(1, 7) for j in range(1, n + 1, 2) for i in range(j, n + 1, 2)]
+        p1, b1 = _chain_le("sec4_5-max1-n")
+        p2, b2 = _chain_le("sec4_5-max2-i")
+        out["max1_is_n"] = b1 is None and len(p1) == 2 and p1[0] == v1 and p1[1] == ns and all(
+            p1[0].subs({ns: n, is_: i, js: j}) == n for n, i, j in cases)
+        out["max2_is_i_le_n"] = b2 is not None and len(p2) == 2 and p2[0] == v2 and p2[1] == is_ and all(
+            p2[0].subs({ns: n, is_: i, js: j}) == i <= b2.subs({ns: n, is_: i, js: j}) for n, i, j in cases)
+        out["max2_value_with_s4_quantified"] = max_values("sec4_5-max2-set", True)
+    except (TexError, ValueError, TypeError) as exc:
+        return LineResult(False, how=how, kind="exhaustive", detail={"unread": str(exc)})
+    return LineResult(all(out.values()), how=how, kind="exhaustive", detail=out)
 
 
-@cache
-def inclusion_proof(n: int) -> bool:
-    """Every exponential of every function of T_{2n} has a frequency (a, b, c) with a - b, b - c integers and
-    max - min <= n: a phase (times alpha) times a combination in E_n, so T_{2n} lies in span cos/sin E_n."""
+@line_check("sec4_5-max2-quantifier")
+def check_max2_quantifier() -> LineResult:
+    """The second max as printed: its expression has s4, its quantifiers name s1 = 1, s2, s3 (s4 free): the max is
+    (i-1)/2 + (i-j)/2 + (j+1)/2 = i for s4 = +1 only; with s4 in {-1, +1} (the correction) it is i."""
+    from paper_repro.claims.lines.sec4_tex import TexError
+
+    how = ("the second max read (expression, quantifiers, K, value): by enumeration over K_{1,1} and the quantified "
+           "signs, each value of the unquantified s4 separately (printed) and s4 in {-1, +1} (corrected), n <= 6")
+    try:
+        printed, corrected = max_values("sec4_5-max2-set", False), max_values("sec4_5-max2-set", True)
+        expr, quant, _, _ = read_max("sec4_5-max2-set")
+    except (TexError, ValueError, TypeError) as exc:
+        return LineResult(False, how=how, kind="exhaustive", detail={"unread": str(exc)})
+    free = sorted(str(x) for x in expr.free_symbols if re.fullmatch(r"s\d", str(x)) and str(x) not in quant)
+    return LineResult(printed, corrected, how=how, kind="exhaustive",
+                      detail={"quantified": sorted(quant), "unquantified_in_expression": free,
+                              "example": "n = 1, i = j = 1, s4 = -1: max = 0, printed value i = 1"})
+
+
+def frequency_classes(n: int) -> set:
+    """Class keys of the frequencies of the exact expansion of every function of T_{2n}, each shifted by a multiple
+    of (1/2)(1,1,1) to integers (a phase: u + v + w = alpha); ValueError if some frequency cannot be."""
+    out = set()
     for lab in united_system(n):
         for f in half_monomial(exponents(lab)).terms:
-            if (f[0] - f[1]).denominator != 1 or (f[1] - f[2]).denominator != 1 or max(f) - min(f) > n:
-                return False
-    return True
+            shift = f[0] - int(f[0]) if f[0] >= 0 else f[0] - int(f[0])
+            g = tuple(x - shift for x in f)
+            if any(x.denominator != 1 for x in g):
+                raise ValueError(f"frequency {f} is not an integer triple plus a multiple of (1,1,1)")
+            out.add(class_key(tuple(int(x) for x in g)))
+    return out
+
+
+def read_union(tex: str) -> tuple:
+    """``\\cup_{i=a}^{b}E_{i}^{\\alpha}/_{\\sim}`` of a line: (a, b) parsed."""
+    from paper_repro.claims.lines.sec4_tex import TexError, parse
+
+    m = re.findall(r"\\cup_\{i=([^{}]+)\}\^\{([^{}]+)\}E_\{i\}\^\{\\alpha\}/_\{\\sim\}", tex)
+    if len(m) != 1:
+        raise TexError("no single union of E_i/~")
+    return parse(m[0][0]), parse(m[0][1])
+
+
+def union_holds(tex: str, v_idx: str) -> bool:
+    """The classes of every frequency of T_{2n} lie in the printed union cup_{i=a}^{b} E_i/~ (bounds read), which
+    lies in the classes of the printed V (n = 1..3)."""
+    import sympy as sp
+
+    ns = sp.Symbol("n")
+    lo, hi = read_union(tex)
+    good = True
+    for n in (1, 2, 3):
+        a, b, v = int(lo.subs(ns, n)), int(hi.subs(ns, n)), int(sp.sympify(v_idx).subs(ns, n))
+        union = set().union(*(classes_of(x) for x in range(a, b + 1))) if b >= a else set()
+        good &= frequency_classes(n) <= union <= classes_of(v)
+    return good
+
+
+@line_check("sec4_5-in-Vn")
+def check_in_vn() -> LineResult:
+    """``[r1,g1,b1], [r2,g2,b2] in cup_{i=1}^{n} E_i/~, i.e., cos(r1u+g1v+b1w), sin(r2u+g2v+b2w) in V_n``: the union
+    and V's index read.  As printed (elements of V_n): cos and sin of every triple of the union are functions of V_n
+    -- false, V_n holds one representative per class (cos(u+v) = cos(alpha - w) is not in V_1, sin 0 = 0 is in no
+    V_n); corrected (in span V_n): exact ranks of V_n with cos, sin of each triple added, n <= 2."""
+    import sympy as sp
+
+    from paper_repro.claims.lines.sec4_tex import TexError
+
+    how = ("the union's bounds and V's index read from the transcription; printed: cos/sin of every triple of the "
+           "union equal (exact expansion over (u, v, alpha), w = alpha - u - v) to a function of V_n (1 and cos/sin of "
+           "one triple per class); corrected: they lie in span V_n (exact ranks at rational points), and the "
+           "frequencies of T_{2n} lie in the union, n = 1..2")
+    try:
+        t_in = verbatim("sec4_5-in-Vn")
+        mv = re.search(r"\\left\[\s*r_\{1\},g_\{1\},b_\{1\}\\right\]\s*,\\left\[\s*r_\{2\},g_\{2\},b_\{2\}\\right\]\s*"
+                       r"\\in\\cup.*i\.e\., \\\[\s*\\cos\\left\(\s*r_\{1\}u\+g_\{1\}v\+b_\{1\}w\\right\)\s*,"
+                       r"\\sin\\left\(\s*r_\{2\}u\+g_\{2\}%?\s*v\+b_\{2\}w\\right\)\s*"
+                       r"\\in\s*(\\operatorname\{span\}\s*)?V_\{([^{}]+)\}\^\{\\alpha\}\.\s*$", t_in)
+        if not mv:
+            raise TexError("unread line")
+        says_span, v_text = bool(mv.group(1)), mv.group(2)
+        ns = sp.Symbol("n")
+        lo, hi = read_union(t_in)
+        literal, spans = True, union_holds(t_in, v_text)
+        for n in (1, 2):
+            a, b, vi = int(lo.subs(ns, n)), int(hi.subs(ns, n)), int(sp.sympify(v_text).subs(ns, n))
+            triples = sorted({t for x in range(a, b + 1) for t in E(x)})
+
+            def ep(f, t):  # f(r u + g v + b w) with w = alpha - u - v, over (u, v, alpha)
+                return f((t[0] - t[2], t[1] - t[2], t[2]))
+
+            members = [EP.const(3, 1)] + [ep(f, t) for t in own_v_args(vi) for f in (EP.cos, EP.sin)]
+            literal &= all(any(ep(f, t) == m for m in members) for t in triples for f in (EP.cos, EP.sin))
+            if vi > 3:
+                raise ValueError(f"V_{vi} is not computed")
+            base = span_rank((("V", vi),))
+            spans &= all(span_rank((("V", vi), ("X", t))) == base for t in triples)
+    except (TexError, ValueError, TypeError, sp.SympifyError) as exc:
+        return LineResult(False, how=how, kind="exhaustive", detail={"unread": str(exc)})
+    printed = spans if says_span else literal and spans
+    return LineResult(printed, spans if not printed else None, how=how, kind="exhaustive",
+                      detail={"printed_says_span": says_span, "elements_of_V_n": literal, "in_span_V_n": spans,
+                              "example": "n = 1: cos(u+v) = cos(alpha - w) is none of 1, cos u, sin u, cos v, "
+                                         "sin v, cos w, sin w"})
 
 
 @line_check("sec4_5-inclusion")
 def check_inclusion() -> LineResult:
-    res = {n: inclusion_proof(n) for n in range(1, 4)}
-    return LineResult(all(res.values()), how="exact exponential expansion of every function of T_{2n}: each "
-                      "frequency is m(1,1,1) + an element of E_n, so each term is a phase m alpha times cos/sin of an "
-                      "E_n combination (n <= 3); with the class identities (sec4_5-phase-*) span T_{2n} is in "
-                      "span V_n", kind="exhaustive", detail={str(k): v for k, v in res.items()})
+    """The printed union of classes and the spaces (read): the classes of every frequency of T_{2n} (exact expansion,
+    shifted by a phase) lie in the printed union, which lies in the classes of V_n; span T_{2n} in span V_n by exact
+    ranks (n <= 3)."""
+    import sympy as sp
+
+    from paper_repro.claims.lines.sec4_tex import TexError
+
+    how = ("exact exponential expansion of every function of T_{2n}: each frequency is m(1,1,1)/2 + an integer triple "
+           "whose class lies in the printed union of E_i/~ (bounds read), n = 1..3; the printed inclusion of spans "
+           "(indices read) by exact ranks of T and V at rational points, n <= 3")
+    try:
+        ns = sp.Symbol("n")
+        t_inc = verbatim("sec4_5-inclusion").replace("%", " ")
+        mi = re.search(r"linear combinations of sine and cosine functions that belong to some equivalence classes "
+                       r"\$\\left\[\s*r,g,b\\right\]\s*\\in\$ \$\\cup.*Consequently, \\\[\s*\\operatorname\{span\}\s*"
+                       r"T_\{([^{}]+)\}\^\{\\alpha\}\\subseteq\s*\\operatorname\{span\}\s*V_\{([^{}]+)\}\^\{\\alpha\}"
+                       r"\\text\{\.\}\s*\\\]\s*$", t_inc)
+        if not mi:
+            raise TexError("unread line")
+        ok = {"inclusion": union_holds(t_inc, mi.group(2))}
+        t_idx, v_idx = sp.sympify(mi.group(1).replace("2n", "2*n")), sp.sympify(mi.group(2))
+        ok["spans"] = all(span_rank((("T", int(t_idx.subs(ns, n))), ("V", int(v_idx.subs(ns, n))))) == span_rank(
+            (("V", int(v_idx.subs(ns, n))),)) for n in (1, 2, 3))
+    except (TexError, ValueError, TypeError, sp.SympifyError) as exc:
+        return LineResult(False, how=how, kind="exhaustive", detail={"unread": str(exc)})
+    return LineResult(all(ok.values()), how=how, kind="exhaustive", detail=ok)
 
 
-__all__ = ["EP", "class_key", "phase_equivalent", "printed_relation", "relation_matches", "power_reduction_ok",
-           "k_sets_agree", "prop_sets_agree", "b2_classes", "max_values", "inclusion_proof"]
+
+__all__ = ["EP", "class_key", "phase_equivalent", "printed_relation", "relation_matches", "power_reduction_holds",
+           "k_sets_agree", "prop_sets_agree", "b2_classes", "max_values", "frequency_classes"]
 

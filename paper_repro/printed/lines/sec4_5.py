@@ -1,50 +1,17 @@
 """Sections sec:coincidence and sec:partition_of_unity (source lines 1414-2167), line by line, verbatim.
 
-``LINES``: every displayed line and inline statement of the part (see :mod:`paper_repro.printed.lines`).  The
-constants and functions below are the machine-readable transcriptions of the same printed text that the checks
-(:mod:`paper_repro.claims.lines.sec4_5`; Section 5: :mod:`paper_repro.claims.lines.sec5`) compare with independent
-computations.  The formulas of Section 5 (Examples normalizing_coefficients_n_1..3, Remark
-normalizing_coeff_of_level_0, Proposition prop:level_1_coefficients) are parsed from ``LINES`` by
-:mod:`paper_repro.printed.lines.sec5_latex`; :mod:`paper_repro.printed.normalization` derives its tables from them.
+``LINES``: every displayed line and inline statement of the part (see :mod:`paper_repro.printed.lines`).  The checks
+(:mod:`paper_repro.claims.lines.sec4_5` for Section 4, through :mod:`paper_repro.claims.lines.sec4_tex`;
+:mod:`paper_repro.claims.lines.sec5` for Section 5) read these transcriptions and compare them with independent
+computations; no retyped copy of a formula is kept.  The formulas of Section 5 (Examples
+normalizing_coefficients_n_1..3, Remark normalizing_coeff_of_level_0, Proposition prop:level_1_coefficients) are
+parsed from ``LINES`` by :mod:`paper_repro.printed.lines.sec5_latex`; :mod:`paper_repro.printed.normalization`
+derives its tables from them.
 """
 
 from __future__ import annotations
 
-from fractions import Fraction
-from math import comb
-
 from paper_repro.printed.lines import Line
-
-
-def proof_r_exponents(n: int, i: int, j: int) -> tuple[int, ...]:
-    """Lines 1683-1685: R_{2n,2n-i,j} = sin^{2n-i}(u/2) sin^i(w/2) cos^{i-j}(v/2) sin^j(v/2) (j <= i <= n), as
-    exponents of (sin u/2, cos u/2, sin v/2, cos v/2, sin w/2, cos w/2)."""
-    return (2 * n - i, 0, j, i - j, i, 0)
-
-
-def power_reduction(m: int, which: str, ep):
-    """Lines 1689-1720, the printed right-hand sides of cos^m(t/2) and sin^m(t/2), built with the trigonometric
-    polynomial class ``ep`` (``ep.cos(freq)``, ``ep.sin(freq)``, ``ep.const(1, x)``; frequency of t)."""
-    half = Fraction(1, 2)
-    if m % 2 == 1:
-        out = ep.const(1, 0)
-        for k in range((m - 1) // 2 + 1):
-            sign = 1 if which == "cos" else (-1) ** ((m - 1) // 2 - k)
-            term = ep.cos((half * (m - 2 * k),)) if which == "cos" else ep.sin((half * (m - 2 * k),))
-            out = out + term * Fraction(sign * comb(m, k), 2 ** (m - 1))
-        return out
-    out = ep.const(1, Fraction(comb(m, m // 2), 2**m))
-    for k in range(m // 2):
-        sign = 1 if which == "cos" else (-1) ** (m // 2 - k)
-        out = out + ep.cos((half * (m - 2 * k),)) * (Fraction(sign * comb(m, k) * 2, 2**m))
-    return out
-
-
-#: Eq. possible_products_inclusion: the type of each factor (u part, w part, first v part, second v part) in
-#: the four parity cases "i mod 2, j mod 2" (lines 1732-1750).
-PRODUCT_TYPES = {"0,0": ("cos", "cos", "cos", "cos"), "1,1": ("sin", "sin", "cos", "sin"),
-                 "0,1": ("cos", "cos", "cos", "sin"), "1,0": ("sin", "sin", "cos", "cos")}
-
 
 LINES: list[Line] = [
     Line(id='sec4_5-section-title',
@@ -338,7 +305,11 @@ LINES: list[Line] = [
                    'left\\{ r,g\\right\\} =1$'),
          says='0 < r <= g <= 2 means r = 1, g in {1,2}; z = min{r,g} = 1.',
          status='checked',
-         check='sec4_5-orders-1-2'),
+         check='sec4_5-orders-1-2',
+         reason=('debatable, read charitably: 0 < r <= g <= 2 also admits r = g = 2, so "i.e., r = 1, g in {1,2}" '
+                 'is the rest after the case r = g = 2 treated in the sentence before (the check reads it so: the '
+                 'integer solutions of the printed inequalities minus (2, 2) equal the printed (r, g)); the case '
+                 'analysis also leaves out 0 = g < r (erratum sec4_5-n2-b2-three)')),
     Line(id='sec4_5-n2-chain',
          tex=(1569, 1574),
          near='equivalence_conditions_2',
@@ -754,8 +725,17 @@ LINES: list[Line] = [
                    '\\sin\\left( r_{2}u+g_{2}% v+b_{2}w\\right) \\in V_{n}^{\\alpha}.'),
          says=('Each product is a combination of cos, sin of combinations whose classes lie in cup_{i=1}^n E'
                '_i/~, i.e. of functions of V_n.'),
-         status='checked',
-         check='sec4_5-inclusion'),
+         status='erratum',
+         check='sec4_5-in-Vn',
+         erratum={'printed': ('[r1,g1,b1], [r2,g2,b2] in cup_{i=1}^n E_i/~, i.e., cos(r1u+g1v+b1w), '
+                               'sin(r2u+g2v+b2w) in V_n^alpha'),
+                  'corrected': ('... i.e., cos(r1u+g1v+b1w), sin(r2u+g2v+b2w) in span V_n^alpha (V_n holds one '
+                                'representative per class; another member of the class differs by a phase)'),
+                  'evidence': ('exact expansion with w = alpha - u - v: cos(u+v) = cos(alpha - w) is none of the '
+                                'functions 1, cos u, sin u, cos v, sin v, cos w, sin w of V_1, and sin 0 = 0 is in no '
+                                'V_n; exact ranks at rational points of Omega^alpha: cos and sin of every triple of '
+                                'E_n lie in span V_n, n = 1..2'),
+                  'severity': 'typo'}),
     Line(id='sec4_5-product-to-sum-1',
          tex=(1785, 1786),
          near='possible_products_inclusion',
@@ -926,10 +906,19 @@ LINES: list[Line] = [
                    '{j-2k_{4}-s_{3}}{2}:\\left( k_{1},k_{2},k_{3},k_{4}\\right) \\in K_{1,1},~s_{1}=1,s_{2},'
                    's_{3}\\in\\left\\{ -1,+1\\right\\} \\right\\} \\\\ & =\\frac{i-1}{2}+\\frac{i-j}{2}+\\fr'
                    'ac{j+1}{2}'),
-         says=('max{s4(i-2k2-s4)/2 - ...} = (i-1)/2 + (i-j)/2 + (j+1)/2 (s4 as defined after the eight-term '
-               'form).'),
-         status='checked',
-         check='sec4_5-max-bounds'),
+         says=('max{s4(i-2k2-s4)/2 - ...} = (i-1)/2 + (i-j)/2 + (j+1)/2, the max over K_{1,1}, s_1 = 1, '
+               's_2, s_3 in {-1,+1}.'),
+         status='erratum',
+         check='sec4_5-max2-quantifier',
+         erratum={'printed': ('max{ s4 (i-2k2-s4)/2 - s2 (i-j-2k3)/2 - s3 (j-2k4-s3)/2 : (k1..k4) in K_{1,1}, '
+                               's1 = 1, s2, s3 in {-1,+1} } = (i-1)/2 + (i-j)/2 + (j+1)/2'),
+                  'corrected': ('max{ ... : (k1..k4) in K_{1,1}, s2, s3, s4 in {-1,+1} } = (i-1)/2 + (i-j)/2 + '
+                                '(j+1)/2 (the quantifier list copied from the first max names s1, which does not '
+                                'occur, and leaves out s4, which does)'),
+                  'evidence': ('enumeration over K_{1,1}: with s4 = +1 or s4 in {-1,+1} the max is i for every odd '
+                                'j <= i <= n, n <= 6; with s4 = -1 fixed it is (i-1)/2 (n = 1, i = j = 1: 0, not '
+                                '1), so the printed value needs s4 quantified'),
+                  'severity': 'typo'}),
     Line(id='sec4_5-max2-i',
          tex=(1862, 1863),
          near='possible_products_inclusion',
