@@ -199,7 +199,10 @@ def mutants(tex: str, line_id: str = "", most: int = 2) -> list[Mutant]:
     sites = _bound_sites(tex)
     for a, b, rep in (sites if len(sites) <= most else sorted(_seed(line_id, "bound").sample(sites, most))):
         add("bound", f"{tex[a:b]} -> {rep}", tex[:a] + rep + tex[b:])
-    for m in _pick(_sites(r"(?<=[^{(\s=,^_\-])\s*[+-]\s*(?=[^\s}\-])", tex), line_id, "sign", most):
+    signs = [m for m in _sites(r"(?<=[^{(\s=,^_\-])\s*[+-]\s*(?=[^\s}\-])", tex)
+             if not (m.group() == "-" and tex[max(m.start() - 2, 0):m.start()].isalpha()
+                     and tex[m.end():m.end() + 2].isalpha())]  # a hyphen inside a word (non-negative), no minus
+    for m in _pick(signs, line_id, "sign", most):
         flip = m.group().replace("+", "\0").replace("-", "+").replace("\0", "-")
         add("sign", f"{m.group().strip()} -> {flip.strip()}", tex[: m.start()] + flip + tex[m.end():])
     for m in _pick(_sites(r"(?<![\w\\{])\d+(?![\w])", tex), line_id, "constant", most):
