@@ -87,9 +87,13 @@ def test_conversion_rejects_perturbation():
 
 def test_index_sets_reject_perturbation():
     tex = BY_ID["sec7-unity-product"].verbatim
-    assert C.printed_first_factor(tex, 3) == C._system_exps(3)
-    assert C.printed_first_factor(tex.replace("^{2n-1-j}", "^{2n-j}", 1), 3) != C._system_exps(3)
-    assert C.printed_first_factor(tex.replace("_{j=0}^{n-1}", "_{j=1}^{n-1}", 1), 3) != C._system_exps(3)
+    assert C.printed_first_factor(tex, 3) == C._member_names(3)
+    assert C.printed_first_factor(tex.replace("^{2n-1-j}", "^{2n-j}", 1), 3) != C._member_names(3)
+    assert C.printed_first_factor(tex.replace("_{j=0}^{n-1}", "_{j=1}^{n-1}", 1), 3) != C._member_names(3)
+    # a sign is read, not skipped; a superscript other than alpha is refused
+    assert "-R_{6,6,0}" in C.printed_first_factor(tex.replace("}+%", "}-%", 1), 3)
+    with pytest.raises(ValueError):
+        X.unity_product(tex.replace("R}_{2n,n,n}^{\\alpha}", "R}_{2n,n,n}^{\\alpha-1}"))
 
 
 def test_parametrization_report_distinguishes_ranges():
@@ -97,7 +101,9 @@ def test_parametrization_report_distinguishes_ranges():
     bad = C.parametrization_report({"x": ("0", "1"), "y": ("0", "x")})
     assert good["images_outside_Omega"] == good["simplex_points_not_reached"] == 0
     assert bad["images_outside_Omega"] > 0 and bad["simplex_points_not_reached"] > 0
-    assert X.bracket_ranges(BY_ID["sec7-limit-param-v"].verbatim) == {"y": ("0", "x")}
+    assert C.parametrization_rows()["v"][2] == ("in", "y", "0", "x")
+    wide = C.parametrization_report({"x": ("0", "2"), "y": ("0", "1-x")})
+    assert wide["x_without_y"] > 0  # x in (1, 2] has no y: a printed x range wider than the domain is refused
 
 
 def test_readers_refuse_unread_latex():
@@ -118,3 +124,42 @@ def test_degree_and_dimension_are_read_from_the_transcriptions():
     assert c7.check_question_limiting_case().holds_as_printed and c7.check_dimension_and_span().holds_as_printed
     assert not c7.check_question_limiting_case(q.replace("$3n-1$", "$3n$")).holds_as_printed
     assert not c7.check_dimension_and_span(d.replace("\\right)+1$", "\\right)+2$")).holds_as_printed
+
+
+def test_strict_conversion_reads_signs_and_relation():
+    tex = BY_ID["sec7-conv2-p401"].verbatim
+    idx, terms = X.strict_conversion(tex)
+    assert idx == (4, 0, 1) and [w for w, _ in terms] == [X.Fraction(1, 5), X.Fraction(4, 5)]
+    assert not C.conversion_holds(2, tex.replace("}+\\frac", "}-\\frac"))
+    with pytest.raises(ValueError):
+        X.strict_conversion(tex.replace("=", "\\neq ", 1))
+
+
+@pytest.mark.parametrize("line_id,old,new", [
+    ("sec7-question-limiting-case", "$\\alpha \\to 0$", "$\\alpha \\to 1$"),
+    ("sec7-conversion-degrees", "$\\alpha \\to 0$", "$\\alpha \\to 1$"),
+    ("sec7-conversion-degrees", "quadratic, quintic", "quadratic, sextic"),
+    ("sec7-conversion-degrees", "first, second", "second, second"),
+    ("sec7-fig-conversion-caption", "quintic", "sextic"),
+    ("sec7-question-limiting-case", "order $n$", "order $n+1$"),
+])
+def test_named_weak_checks_read_limit_and_degrees(line_id, old, new):
+    """issue 37: sec7-question-limiting-case and sec7-conversion-degrees read 'alpha -> 0' and the degrees."""
+    from paper_repro.claims.lines.mutation import verdict, verdict_with
+
+    check = BY_ID[line_id].check
+    tex = BY_ID[line_id].verbatim
+    assert old in tex
+    assert verdict(check) == (True, None)
+    assert verdict_with(check, {line_id: tex.replace(old, new, 1)}) != (True, None)
+
+
+def test_sec7_blank_and_mutation_goal():
+    """Every check of part sec7 fails on a blank line; the mutants of a sample of lines are killed or equivalent."""
+    from paper_repro.claims.lines.mutation import blank_test, mutation_test, summary
+
+    own = sorted({ln.check for ln in LINES if ln.status != "excused" and not ln.check.startswith("claim:")})
+    assert [r["check"] for r in blank_test(own) if not r["killed"]] == []
+    recs = mutation_test(["sec7-conv3-p512", "sec7-bernstein-definition", "sec7-limit-param-map",
+                          "sec7-fig-limit-caption-centre", "sec7-s8-dimension-and-span"])
+    assert summary(recs)["rate"] == 1.0, [r["where"] for r in recs if not r["killed"] and not r["equivalent"]]

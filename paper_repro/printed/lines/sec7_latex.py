@@ -153,3 +153,261 @@ def bound_value(expr: str, **env: int | Fraction):
 def evaluate(expr: str, **names):
     """Evaluate an expression produced by the readers above with only ``names`` defined."""
     return eval(expr, {"__builtins__": {}}, names)  # noqa: S307 - expressions come from the readers above
+
+
+# ---------------------------------------------------------------- strict readers (issue 37: a changed line is refused)
+#
+# The readers below read a whole line and refuse (``ValueError``) anything they do not understand: a relation other
+# than the printed one, a superscript other than ``\alpha``, an unknown word.  Signs are read, never skipped.
+
+_COLOURS = ("Red", "Green", "Blue", "Orange")
+
+
+def _group(tex: str, k: int) -> int:
+    """Index just after the brace group that opens at ``tex[k] == '{'``."""
+    if k >= len(tex) or tex[k] != "{":
+        raise ValueError(f"expected '{{' at {tex[k:k + 20]!r}")
+    depth = 0
+    for m in range(k, len(tex)):
+        depth += {"{": 1, "}": -1}.get(tex[m], 0)
+        if depth == 0:
+            return m + 1
+    raise ValueError(f"unbalanced braces in {tex!r}")
+
+
+def unwrap(tex: str, names: tuple[str, ...] = _COLOURS) -> str:
+    """``tex`` with every ``\\Name{...}`` of ``names`` replaced by its content (colour macros print nothing)."""
+    out, k = [], 0
+    pat = re.compile(r"\\(" + "|".join(names) + r")(?![A-Za-z])\s*")
+    while True:
+        m = pat.search(tex, k)
+        if not m:
+            out.append(tex[k:])
+            return "".join(out)
+        out.append(tex[k:m.start()])
+        end = _group(tex, m.end())
+        out.append(unwrap(tex[m.end() + 1:end - 1], names))
+        k = end
+
+
+def clean(tex: str) -> str:
+    """Layout removed: ``%`` line continuations, colour macros, ``\\left``/``\\right``, ``\\displaystyle``,
+    ``\\limits``, alignment ``&``, ``~``, ``\\,`` and all white space.  What is left is what the line says."""
+    t = re.sub(r"%[^\n]*\n?", "", tex)
+    t = unwrap(t)
+    t = re.sub(r"\\(?:displaystyle|limits)(?![A-Za-z])", "", t)
+    t = re.sub(r"\\left(?![A-Za-z])|\\right(?![A-Za-z])", "", t)
+    t = t.replace("\\,", "").replace("~", "").replace("&", "")
+    t = re.sub(r"(\\[A-Za-z]+)\s+(?=[A-Za-z])", "\\1\0", t)  # a command keeps one space before a letter
+    return re.sub(r"\s+", "", t).replace("\0", " ")
+
+
+_IDX = r"\{(-?\d+),(-?\d+),(-?\d+)\}"
+_SYMBOLS = {"alpha": "alpha", "pi": "pi"}
+
+
+def to_sympy(tex: str, allowed: tuple[str, ...] = ("x", "y", "z", "n", "m", "d", "e", "f", "alpha", "i", "j")):
+    """A simple printed expression (``\\alpha x``, ``1-x-y``, ``\\frac{m!}{d!e!f!}x^d y^e\\left(1-x-y\\right)^f``,
+    ``3n-1``) as a sympy expression; juxtaposition multiplies.  ``ValueError`` on anything unread or on a name
+    outside ``allowed``."""
+    import sympy as sp
+    from sympy.parsing.sympy_parser import implicit_multiplication, parse_expr, standard_transformations
+
+    t = re.sub(r"%[^\n]*\n?", "", tex)
+    t = re.sub(r"\\left(?![A-Za-z])|\\right(?![A-Za-z])", "", t)
+    while "\\frac" in t:
+        k = t.index("\\frac")
+        a = _group(t, k + 5)
+        b = _group(t, a)
+        t = t[:k] + f"(({t[k + 6:a - 1]})/({t[a + 1:b - 1]}))" + t[b:]
+    t = re.sub(r"\\(alpha|pi)(?![A-Za-z])", lambda m: f" {_SYMBOLS[m.group(1)]} ", t)
+    t = re.sub(r"(\w)!", r" factorial(\1) ", t)
+    t = re.sub(r"\^\{([^{}]*)\}", r"**(\1)", t)
+    t = re.sub(r"\^(\w)", r"**\1", t)
+    if re.search(r"[\\{}$=<>,]", t) or not t.strip():
+        raise ValueError(f"unread LaTeX in expression {tex!r}")
+    names = {a: sp.Symbol(a) for a in allowed if a != "pi"}
+    try:
+        expr = parse_expr(t, local_dict={**names, "factorial": sp.factorial, "pi": sp.pi},
+                          global_dict={"Integer": sp.Integer, "Symbol": sp.Symbol, "Rational": sp.Rational,
+                                       "Float": sp.Float},
+                          transformations=standard_transformations + (implicit_multiplication,))
+    except Exception as exc:  # noqa: BLE001 - any parse failure is an unread line
+        raise ValueError(f"unread expression {tex!r}: {exc}") from exc
+    unknown = {str(s) for s in expr.free_symbols} - set(allowed)
+    if unknown:
+        raise ValueError(f"unknown names {sorted(unknown)} in {tex!r}")
+    return expr
+
+
+def strict_conversion(tex: str) -> tuple[tuple[int, int, int], list[tuple[Fraction, str]]]:
+    """``((d, e, f), [(signed weight, control point label), ...])`` of ``p_{d,e,f} = w_1 x_1 + w_2 x_2 + ...``: the
+    relation must be ``=``, each term an optional ``\\frac{a}{b}`` and a bold control point, joined by ``+`` or
+    ``-`` (a ``-`` gives a negative weight); anything else is refused."""
+    t = clean(tex).rstrip(",.")
+    m = re.fullmatch(r"\\mathbf\{p\}_" + _IDX + r"=(.+)", t)
+    if not m:
+        raise ValueError(f"not a Bezier point equation: {tex[:60]!r}")
+    idx = (int(m.group(1)), int(m.group(2)), int(m.group(3)))
+    body, terms, k = m.group(4), [], 0
+    term = re.compile(r"([+-]?)(?:\\frac\{(\d+)\}\{(\d+)\})?\\mathbf\{([rgb])\}_" + _IDX)
+    while k < len(body):
+        mt = term.match(body, k)
+        if not mt or (k > 0 and not mt.group(1)):
+            raise ValueError(f"unread term at {body[k:k + 30]!r}")
+        w = Fraction(int(mt.group(2) or 1), int(mt.group(3) or 1)) * (-1 if mt.group(1) == "-" else 1)
+        terms.append((w, f"{mt.group(4)}_{{{mt.group(5)},{mt.group(6)},{mt.group(7)}}}"))
+        k = mt.end()
+    return idx, terms
+
+
+def signed_overline_terms(body: str) -> list[tuple[int, str]]:
+    """``[(sign, label), ...]`` of a cleaned sum ``\\overline{X}_{a,b,c}^{\\alpha}+...`` with numeric indices; every
+    superscript must be ``\\alpha``."""
+    out, k = [], 0
+    term = re.compile(r"([+-]?)\\overline\{([RGB])\}_" + _IDX + r"\^\{\\alpha\}")
+    while k < len(body):
+        m = term.match(body, k)
+        if not m or (k > 0 and not m.group(1)):
+            raise ValueError(f"unread term at {body[k:k + 40]!r}")
+        out.append((-1 if m.group(1) == "-" else 1, f"{m.group(2)}_{{{m.group(3)},{m.group(4)},{m.group(5)}}}"))
+        k = m.end()
+    return out
+
+
+def square_of_unity(tex: str) -> tuple[tuple[str, str], list[tuple[int, str]], str]:
+    """``((base, exponent) of the left side, signed terms of the sum, exponent of the right side)`` of
+    ``1^{2}=\\left(sum\\right)^{2}``."""
+    m = re.fullmatch(r"(\d+)\^\{(\d+)\}=\((.*)\)\^\{(\d+)\}", clean(tex))
+    if not m:
+        raise ValueError(f"not 'c^k = (sum)^k': {tex[:60]!r}")
+    return (m.group(1), m.group(2)), signed_overline_terms(m.group(3)), m.group(4)
+
+
+_SUMS = re.compile(r"\\sum_\{(\w)=([^{}]+)\}\^\{([^{}]+)\}\\sum_\{(\w)=([^{}]+)\}\^\{([^{}]+)\}"
+                   r"\\overline\{([RGB])\}_\{([^{}]+)\}\^\{\\alpha\}")
+
+
+def unity_product(tex: str) -> dict:
+    """The printed ``1^{n+1} = (first factor) . (second factor)``: ``{"lhs": (base, exponent), "first": [terms],
+    "second": [(sign, label)]}``; a first-factor term is ``(sign, colour, subscript)`` for a single function or
+    ``(sign, colour, subscript, (outer var, lo, hi), (inner var, lo, hi))`` for a printed double sum."""
+    t = re.sub(r"\{(\\sum_\{[^{}]*\}\^\{[^{}]*\})\}", r"\1", clean(tex).replace("\\\\", ""))
+    m = re.fullmatch(r"(\d+)\^\{([^{}]+)\}=\((.*)\)\\cdot\((.*)\)", t)
+    if not m:
+        raise ValueError(f"not 'c^k = (..) . (..)': {tex[:60]!r}")
+    first, k, body = [], 0, m.group(3)
+    single = re.compile(r"([+-]?)\\overline\{([RGB])\}_\{([^{}]+)\}\^\{\\alpha\}")
+    while k < len(body):
+        sign = body[k] if body[k] in "+-" else ""
+        if k > 0 and not sign:
+            raise ValueError(f"unread term at {body[k:k + 40]!r}")
+        ms = _SUMS.match(body, k + len(sign))
+        if ms:
+            first.append((-1 if sign == "-" else 1, ms.group(7), ms.group(8), ms.group(1, 2, 3), ms.group(4, 5, 6)))
+            k = ms.end()
+            continue
+        mo = single.match(body, k)
+        if not mo:
+            raise ValueError(f"unread term at {body[k:k + 40]!r}")
+        first.append((-1 if mo.group(1) == "-" else 1, mo.group(2), mo.group(3)))
+        k = mo.end()
+    return {"lhs": (m.group(1), m.group(2)), "first": first, "second": signed_overline_terms(m.group(4))}
+
+
+def patch_product(tex: str) -> dict:
+    """The printed ``\\mathbf{s}_{1}^{\\alpha}\\cdot1 = (sum of points times functions) . (sum of functions)``:
+    ``{"patch": order, "one": "1", "pairs": [(sign, point, function)], "second": [(sign, label)]}``."""
+    t = clean(tex).replace("\\\\", "")
+    m = re.fullmatch(r"\\mathbf\{s\}_\{(\d+)\}\^\{\\alpha\}\\cdot(\d+)=\((.*)\)\\cdot\((.*)\)", t)
+    if not m:
+        raise ValueError(f"not 's^alpha . 1 = (..) . (..)': {tex[:60]!r}")
+    pairs, k, body = [], 0, m.group(3)
+    term = re.compile(r"([+-]?)\\mathbf\{([rgb])\}_" + _IDX + r"\\overline\{([RGB])\}_" + _IDX + r"\^\{\\alpha\}")
+    while k < len(body):
+        mt = term.match(body, k)
+        if not mt or (k > 0 and not mt.group(1)):
+            raise ValueError(f"unread term at {body[k:k + 40]!r}")
+        pairs.append((-1 if mt.group(1) == "-" else 1, f"{mt.group(2)}_{{{mt.group(3)},{mt.group(4)},{mt.group(5)}}}",
+                      f"{mt.group(6)}_{{{mt.group(7)},{mt.group(8)},{mt.group(9)}}}"))
+        k = mt.end()
+    return {"patch": int(m.group(1)), "one": m.group(2), "pairs": pairs, "second": signed_overline_terms(m.group(4))}
+
+
+def parametrization_row(tex: str) -> tuple[str, tuple[str, ...], object, tuple]:
+    """One row ``u\\left(x,y\\right) & = & \\alpha x, & x \\in \\left[0, 1\\right]`` (or ``..., & z = 1-x-y``):
+    ``(name, arguments, right-hand side (sympy), condition)``; the condition is ``("in", var, lo, hi)`` (bounds as
+    printed) or ``("=", var, sympy expression)``.  The relation must be ``=``."""
+    t = clean(tex)
+    m = re.fullmatch(r"([a-z])\(([a-z](?:,[a-z])*)\)=([^,]+),(.+)", t)
+    if not m:
+        raise ValueError(f"not a parametrization row 'f(x,y) = expr, condition': {tex!r}")
+    rhs = to_sympy(m.group(3))
+    cond = m.group(4)
+    mi = re.fullmatch(r"([a-z])\\in\[([^,\]]+),([^\]]+)\]", cond)
+    me = re.fullmatch(r"([a-z])=([^=]+)", cond)
+    if mi:
+        return m.group(1), tuple(m.group(2).split(",")), rhs, ("in", mi.group(1), mi.group(2), mi.group(3))
+    if me:
+        return m.group(1), tuple(m.group(2).split(",")), rhs, ("=", me.group(1), to_sympy(me.group(2)))
+    raise ValueError(f"unread condition {cond!r}")
+
+
+def strict_ranges(tex: str) -> dict[str, tuple[str, str]]:
+    """``{variable: (lower, upper)}`` of a text whose every math part is ``v\\in\\left[lo,hi\\right]`` (bounds as
+    printed); any other math part (``\\notin``, a relation) is refused."""
+    parts = re.findall(r"\$([^$]*)\$", tex)
+    if not parts:
+        raise ValueError(f"no range in {tex!r}")
+    out = {}
+    for p in parts:
+        m = re.fullmatch(r"([a-z])\\in\[([^,\]]+),([^\]]+)\]", clean(p))
+        if not m:
+            raise ValueError(f"not 'v in [lo, hi]': {p!r}")
+        out[m.group(1)] = (m.group(2), m.group(3))
+    return out
+
+
+def progression(items: list[str], **env) -> list[int]:
+    """The values of a printed list ``a, b, \\ldots, c`` (the step is b - a; ``a, \\ldots, c`` has step 1)."""
+    if len(items) < 2 or items[-2] != "\\ldots":
+        raise ValueError(f"not a list 'a, b, ..., c': {items!r}")
+    first, last = bound_value(items[0], **env), bound_value(items[-1], **env)
+    step = bound_value(items[1], **env) - first if len(items) == 4 else 1
+    if len(items) not in (3, 4) or step <= 0 or last < first:
+        raise ValueError(f"unread list {items!r} (an empty list a, ..., c with c < a is refused)")
+    return list(range(first, last + 1, step))
+
+
+def listed_values(tex: str, var: str, **env) -> list[int]:
+    """Values of ``$var=a,b,\\ldots,c$`` in ``tex`` (exactly one such part)."""
+    found = [clean(p) for p in re.findall(r"\$([^$]*)\$", tex) if clean(p).startswith(var + "=")]
+    if len(found) != 1:
+        raise ValueError(f"expected one '{var}=a,b,...,c' in {tex!r}")
+    return progression(found[0][len(var) + 1:].split(","), **env)
+
+
+ORDINALS = {"first": 1, "second": 2, "third": 3, "fourth": 4, "fifth": 5, "sixth": 6}
+DEGREE_WORDS = {"linear": 1, "quadratic": 2, "cubic": 3, "quartic": 4, "quintic": 5, "sextic": 6, "septic": 7,
+                "octic": 8, "nonic": 9}
+
+
+def word_list(text: str, vocabulary: dict[str, int], followed_by: str) -> list[int]:
+    """Values of the words of a list ``w1, w2 and w3`` (or ``w1 and w2``) right before ``followed_by``; every word
+    must be in ``vocabulary``, and a word listed twice is refused."""
+    text = re.sub(r"\s+", " ", text)
+    m = re.search(r"((?:[a-z]+, )*[a-z]+ and [a-z]+) " + re.escape(followed_by), text)
+    if not m:
+        raise ValueError(f"no list before {followed_by!r}")
+    words = re.split(r", | and ", m.group(1))
+    if any(w not in vocabulary for w in words) or len(set(words)) != len(words):
+        raise ValueError(f"unread list {words!r}")
+    return [vocabulary[w] for w in words]
+
+
+def alpha_limit(text: str):
+    """The value alpha tends to in ``$\\alpha \\to v$`` (exactly one such part; ``\\rightarrow`` too)."""
+    found = re.findall(r"\$\s*\\alpha\s*\\(?:to|rightarrow)\s*([^$]+)\$", text)
+    if len(found) != 1:
+        raise ValueError(f"expected one '$\\alpha \\to v$' in {text!r}")
+    return to_sympy(found[0], allowed=())
