@@ -163,3 +163,29 @@ def test_sec7_blank_and_mutation_goal():
     recs = mutation_test(["sec7-conv3-p512", "sec7-bernstein-definition", "sec7-limit-param-map",
                           "sec7-fig-limit-caption-centre", "sec7-s8-dimension-and-span"])
     assert summary(recs)["rate"] == 1.0, [r["where"] for r in recs if not r["killed"] and not r["equivalent"]]
+
+
+def test_claim_lines_are_read_by_their_claims():
+    """The lines resolved to claims give the claim the parsed printed object: pairwise_products_all_n reads the
+    products, index set, target basis and consequences (every mutant of its three lines is refused or fails);
+    bezier_conversion reads the printed conversions (blank: refused; each erratum line's correction holds)."""
+    from paper_repro.claims.half_angle_all_n import printed_products_agree
+    from paper_repro.claims.limits_claims import run_conversion
+    from paper_repro.claims.lines.mutation import blank_test, mutants
+    from paper_repro.printed.lines import lines_of, substituted, verbatim
+
+    assert printed_products_agree()["ok"]
+    for lid in [x.id for x in lines_of("claim:pairwise_products_all_n")]:
+        for m in mutants(verbatim(lid), lid) + [type("B", (), {"text": "XXX"})()]:
+            with substituted({lid: m.text}):
+                try:
+                    ok = printed_products_agree()["ok"]
+                except ValueError:
+                    ok = False
+            assert not ok, (lid, m.text)
+    out = run_conversion()
+    assert out.passed and sorted(out.measured["mismatches"]) == ["p_{2,1,5}", "p_{3,2,3}", "p_{8,8,0}"]
+    assert all(r["recorded_correction_holds"] and r["slips"] == 1 for r in out.measured["errata_lines"].values())
+    assert blank_test(["claim:bezier_conversion"])[0]["killed"]
+    with substituted({"sec7-conv3-p701": verbatim("sec7-conv3-p701").replace("{3}{4}", "{2}{4}")}):
+        assert not run_conversion().passed
