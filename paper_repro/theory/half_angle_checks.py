@@ -1,4 +1,5 @@
-"""Machine checks of the closed-form elevation matrix M and derivative matrix C (issue 30), independent of the rules.
+"""Machine checks of the explicitly constructed elevation matrix M and derivative matrix C (issue 30), independent of
+the rules.
 
 The rules (:mod:`paper_repro.core.half_angle_rules`) are proven for every n in
 docs/elevation_and_derivative_for_all_n.md.  These checks compare what the rules build with routes that know nothing
