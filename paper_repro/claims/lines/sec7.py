@@ -255,12 +255,39 @@ def _names(values: dict[str, object]) -> dict[str, object]:
                                                                                                 "b_{2,"))}
 
 
+def relation_rhs(tex: str):
+    """The printed right-hand side of a relation of Example exmp:from_1_to_2, read by the one reader
+    (:mod:`paper_repro.printed.latex_math`): a row of a vector equation is the expression itself; the line of
+    ``r_{4,2,2}`` is the relation ``r_{4,2,2} = ...`` (relation ``=`` required)."""
+    import sympy as sp
+
+    if "=" in tex or "\\neq" in tex:
+        lhs, rhs = X.math_relation(tex).parts
+        if lhs != sp.Function("r")(4, 2, 2):
+            raise ValueError(f"left side {lhs}")
+        return rhs
+    return X.math_expr(tex)
+
+
+def relation_value(tex: str, K, trig: dict, coeffs: dict):
+    """The printed right-hand side evaluated in the arithmetic of ``K``: ``trig`` gives s = sin(alpha/2), c =
+    cos(alpha/2), sinA = sin(alpha), tanH = tan(alpha/2); ``coeffs`` the order-1 coefficients by short name
+    (``r220``)."""
+    import sympy as sp
+
+    a = sp.Symbol("alpha")
+    values = {sp.sin(a / 2): trig["s"], sp.cos(a / 2): trig["c"], sp.sin(a): trig["sinA"],
+              sp.tan(a / 2): trig["tanH"]}
+    values.update({sp.Function(k[0])(int(k[1]), int(k[2]), int(k[3])): v for k, v in coeffs.items()})
+    return X.evaluate_sympy(relation_rhs(tex), K, values)
+
+
 def relation_holds(tex: str, label: str) -> bool:
     """The printed right-hand side equals the order-2 coefficient ``label`` as rational functions of tan(alpha/4)."""
     s, c = half_angle_functions()
     first = _coefficient_ratfuncs(1)
     ns = _names(first)
-    val = X.evaluate(X.relation_expression(tex), K=RatFunc.const, s=s, c=c, sinA=2 * s * c, tanH=s / c, **ns)
+    val = relation_value(tex, RatFunc.const, {"s": s, "c": c, "sinA": 2 * s * c, "tanH": s / c}, ns)
     return val == _coefficient_ratfuncs(2)[label]
 
 
@@ -269,7 +296,7 @@ def _relation_at(tex: str, label: str, t: str) -> bool:
     s, c = alpha.sin_half, alpha.cos_half
     c1, c2 = coefficients(1, alpha, "exact"), coefficients(2, alpha, "exact")
     ns = _names(c1)
-    val = X.evaluate(X.relation_expression(tex), K=fmpq, s=s, c=c, sinA=2 * s * c, tanH=s / c, **ns)
+    val = relation_value(tex, fmpq, {"s": s, "c": c, "sinA": 2 * s * c, "tanH": s / c}, ns)
     return val == c2[label] if label in c2 else val == c2["r_" + label[2:]]
 
 
@@ -328,8 +355,8 @@ def check_same_as_example() -> LineResult:
     for line_id in RELATION_IDS:
         slug = line_id[9:]
         label = f"{slug[0]}_{{{slug[1]},{slug[2]},{slug[3]}}}"
-        val = X.evaluate(X.relation_expression(VERBATIM[line_id]), K=RatFunc.const, s=s, c=c, sinA=2 * s * c,
-                         tanH=s / c, **ns)
+        val = relation_value(VERBATIM[line_id], RatFunc.const, {"s": s, "c": c, "sinA": 2 * s * c, "tanH": s / c},
+                             ns)
         if not val == final_value(rep[index_of(2)[label]], s, c):
             bad.append(slug)
     orders = X.ORDINALS[m.group(1)] == int(m.group(2)) == high == 2 and low == 1
@@ -351,13 +378,14 @@ def check_inheritance() -> LineResult:
     names = ("r220", "g220", "b220", "r210", "g210", "b210", "r211", "s", "c", "sinA", "tanH")
     ctx = fmpq_mpoly_ctx.get(names, "lex")
     gens = dict(zip(names, ctx.gens()))
-    polys = {lid[9:]: X.evaluate(X.relation_expression(VERBATIM[lid]), K=lambda v: ctx.from_dict({(0,) * 11: v}),
-                                 **gens) for lid in RELATION_IDS}
+    const = lambda v: ctx.from_dict({(0,) * 11: v})  # noqa: E731
+    trig = {k: gens[k] for k in ("s", "c", "sinA", "tanH")}
+    first = {k: gens[k] for k in names[:7]}
+    polys = {lid[9:]: relation_value(VERBATIM[lid], const, trig, first) for lid in RELATION_IDS}
     nonneg = all(coef > 0 for p in polys.values() for coef in p.coeffs())
     # symmetry: with g = b = r on order 1 the three rows of each vector equation coincide
     sym = {"g220": gens["r220"], "b220": gens["r220"], "g210": gens["r210"], "b210": gens["r210"]}
-    ident = {k: X.evaluate(X.relation_expression(VERBATIM[f"sec7-rel-{k}"]), K=lambda v: ctx.from_dict(
-        {(0,) * 11: v}), **{**gens, **sym}) for k in polys}
+    ident = {k: relation_value(VERBATIM[f"sec7-rel-{k}"], const, trig, {**first, **sym}) for k in polys}
     groups = sorted({k[1:] for k in polys if k[0] in "gb"})
     symmetric = all(ident["r" + g] == ident["g" + g] == ident["b" + g] for g in groups)
     return LineResult(nonneg and symmetric and orders, kind="proof",
@@ -372,16 +400,17 @@ def check_inheritance() -> LineResult:
 
 def printed_elevation(tex: str, colour: int, c2, s2, K) -> dict[str, object]:
     """``{order-1 label: weight}`` of one printed row (colour 0, 1, 2 = r, g, b; the centre has one)."""
-    lhs, terms = X.combination(tex)
+    import sympy as sp
+
+    rows = X.math_elevation(tex)
     names = set(_point_names(1)) | set(_point_names(2))
-    unknown = [lab for lab in list(lhs) + [x for _, labs in terms for x in labs] if lab not in names]
+    unknown = [lab for left, row in rows for lab in [left, *row] if lab not in names]
     if unknown:
         raise ValueError(f"not control points of order 1 or 2 (the paper names only members): {unknown}")
-    out: dict[str, object] = {}
-    for w, labs in terms:
-        lab = labs[colour]
-        out[lab] = out.get(lab, K(0)) + X.evaluate(w, K=K, c2=c2, s2=s2)
-    return lhs[colour], out
+    a = sp.Symbol("alpha")
+    squares = {sp.cos(a / 2): c2, sp.sin(a / 2): s2}
+    lhs, row = rows[colour]
+    return lhs, {lab: X.evaluate_sympy(w, K, {}, squares) for lab, w in row.items()}
 
 
 def elevation_row_holds(tex: str, colour: int, t: str) -> bool:
@@ -448,7 +477,7 @@ def _register_elevation(slug: str, colour: int) -> None:
     @line_check(f"sec7-elev-{slug}")
     def check() -> LineResult:
         tex = VERBATIM[f"sec7-elev-{slug}"]
-        rows = len(X.combination(tex)[0])  # the line is the whole vector equation: every row of it is checked
+        rows = len(X.math_elevation(tex))  # the line is the whole vector equation: every row of it is checked
         per_t = {t: all(elevation_row_holds(tex, k, t) for k in range(rows)) for t in TS}
         proof = _printed_elevation_proof()
         proven = all(proof_cached(n)["proved"] for n in (1, 2))
@@ -475,9 +504,9 @@ def elevation_orders() -> tuple[int, int]:
     point names of its rows (``r_{2,..}`` is order 1, ``r_{4,..}`` order 2)."""
     lhs, rhs = set(), set()
     for lid in ELEVATION_IDS:
-        left, terms = X.combination(VERBATIM[lid])
-        lhs |= {int(lab.split("{")[1].split(",")[0]) // 2 for lab in left}
-        rhs |= {int(lab.split("{")[1].split(",")[0]) // 2 for _, labs in terms for lab in labs}
+        for left, row in X.math_elevation(VERBATIM[lid]):
+            lhs.add(int(left.split("{")[1].split(",")[0]) // 2)
+            rhs |= {int(lab.split("{")[1].split(",")[0]) // 2 for lab in row}
     if len(lhs) != 1 or len(rhs) != 1:
         raise ValueError(f"elevation rows of mixed orders: {rhs} -> {lhs}")
     return rhs.pop(), lhs.pop()
@@ -971,9 +1000,10 @@ def conversion_order(terms: list[tuple[Fraction, str]]) -> int:
 
 
 def conversion_holds(n: int, tex: str) -> bool:
-    """The printed p_{d,e,f} (read strictly: relation, signs, weights, names of members) equals the row of the exact
-    conversion matrix (limit formula and closed forms agree)."""
-    idx, terms = X.strict_conversion(tex)
+    """The printed p_{d,e,f} (read by the one reader: relation ``=``, signs, weights; names of members) equals the
+    row of the exact conversion matrix (limit formula and closed forms agree)."""
+    idx, weights = X.math_conversion(tex)
+    terms = [(w, lab) for lab, w in weights.items()]
     if conversion_order(terms) != n or any(lab not in _point_names(n) for _, lab in terms):
         return False
     ix = index_of(n)
@@ -1007,7 +1037,8 @@ def printed_conversions() -> dict[int, list[tuple[tuple[int, int, int], list[tup
     """Every printed Bezier point of the conversions (read strictly), by the order of its control points."""
     out: dict[int, list] = {}
     for lid in CONVERSION_IDS:
-        idx, terms = X.strict_conversion(VERBATIM[lid])
+        idx, weights = X.math_conversion(VERBATIM[lid])
+        terms = [(w, lab) for lab, w in weights.items()]
         out.setdefault(conversion_order(terms), []).append((idx, terms))
     return out
 

@@ -203,39 +203,19 @@ def clean(tex: str) -> str:
 
 
 _IDX = r"\{(-?\d+),(-?\d+),(-?\d+)\}"
-_SYMBOLS = {"alpha": "alpha", "pi": "pi"}
 
 
 def to_sympy(tex: str, allowed: tuple[str, ...] = ("x", "y", "z", "n", "m", "d", "e", "f", "alpha", "i", "j")):
     """A simple printed expression (``\\alpha x``, ``1-x-y``, ``\\frac{m!}{d!e!f!}x^d y^e\\left(1-x-y\\right)^f``,
-    ``3n-1``) as a sympy expression; juxtaposition multiplies.  ``ValueError`` on anything unread or on a name
-    outside ``allowed``."""
-    import sympy as sp
-    from sympy.parsing.sympy_parser import implicit_multiplication, parse_expr, standard_transformations
+    ``3n-1``) read by the one reader (:func:`paper_repro.printed.latex_math.parse`); ``ValueError`` on anything
+    unread or on a name outside ``allowed``."""
+    from paper_repro.printed.latex_math import parse
 
-    t = re.sub(r"%[^\n]*\n?", "", tex)
-    t = re.sub(r"\\left(?![A-Za-z])|\\right(?![A-Za-z])", "", t)
-    while "\\frac" in t:
-        k = t.index("\\frac")
-        a = _group(t, k + 5)
-        b = _group(t, a)
-        t = t[:k] + f"(({t[k + 6:a - 1]})/({t[a + 1:b - 1]}))" + t[b:]
-    t = re.sub(r"\\(alpha|pi)(?![A-Za-z])", lambda m: f" {_SYMBOLS[m.group(1)]} ", t)
-    t = re.sub(r"(\w)!", r" factorial(\1) ", t)
-    t = re.sub(r"\^\{([^{}]*)\}", r"**(\1)", t)
-    t = re.sub(r"\^(\w)", r"**\1", t)
-    if re.search(r"[\\{}$=<>,]", t) or not t.strip():
-        raise ValueError(f"unread LaTeX in expression {tex!r}")
-    names = {a: sp.Symbol(a) for a in allowed if a != "pi"}
-    try:
-        expr = parse_expr(t, local_dict={**names, "factorial": sp.factorial, "pi": sp.pi},
-                          global_dict={"Integer": sp.Integer, "Symbol": sp.Symbol, "Rational": sp.Rational,
-                                       "Float": sp.Float},
-                          transformations=standard_transformations + (implicit_multiplication,))
-    except Exception as exc:  # noqa: BLE001 - any parse failure is an unread line
-        raise ValueError(f"unread expression {tex!r}: {exc}") from exc
+    if not tex.strip():
+        raise ValueError("empty expression")
+    expr = parse(tex)
     unknown = {str(s) for s in expr.free_symbols} - set(allowed)
-    if unknown:
+    if unknown or not hasattr(expr, "free_symbols"):
         raise ValueError(f"unknown names {sorted(unknown)} in {tex!r}")
     return expr
 
@@ -411,3 +391,117 @@ def alpha_limit(text: str):
     if len(found) != 1:
         raise ValueError(f"expected one '$\\alpha \\to v$' in {text!r}")
     return to_sympy(found[0], allowed=())
+
+
+# ------------------------------------------------------- through the one reader (paper_repro.printed.latex_math)
+
+def math_expr(tex: str):
+    """``tex`` read by :func:`paper_repro.printed.latex_math.parse` (a sympy expression)."""
+    from paper_repro.printed.latex_math import parse
+
+    return parse(tex)
+
+
+def math_relation(tex: str, ops: tuple[str, ...] = ("=",)):
+    """The parts of the relation ``tex`` (:func:`paper_repro.printed.latex_math.parse_relation`); its relation
+    operators must be ``ops`` (a changed relation, e.g. ``\\neq``, is refused)."""
+    from paper_repro.printed.latex_math import parse_relation
+
+    rel = parse_relation(tex)
+    if tuple(rel.ops) != tuple(ops):
+        raise ValueError(f"relation {rel.ops}, expected {list(ops)}")
+    return rel
+
+
+def evaluate_sympy(expr, K, values: dict, squares: dict | None = None):
+    """Value of a parsed expression in the arithmetic of ``K`` (a constructor of constants: ``fmpq``,
+    ``RatFunc.const``, an mpoly constant): ``values`` maps sympy atoms (``r(2, 2, 0)``, ``sin(alpha/2)``,
+    ``tan(alpha/2)``, ...) to values; ``squares`` maps an atom whose even powers only occur (``cos(alpha/2)``) to the
+    value of its square.  Sums, products and integer powers only; anything else raises ``ValueError``."""
+    import sympy as sp
+
+    squares = squares or {}
+
+    def ev(e):
+        if e in values:
+            return values[e]
+        if isinstance(e, sp.Integer):
+            return K(int(e))
+        if isinstance(e, sp.Rational):
+            return K(int(e.p)) / K(int(e.q))
+        if isinstance(e, sp.Add):
+            out = ev(e.args[0])
+            for a in e.args[1:]:
+                out = out + ev(a)
+            return out
+        if isinstance(e, sp.Mul):
+            out = ev(e.args[0])
+            for a in e.args[1:]:
+                out = out * ev(a)
+            return out
+        if isinstance(e, sp.Pow) and isinstance(e.exp, sp.Integer):
+            k = int(e.exp)
+            if e.base in squares and k % 2 == 0:
+                base, k = squares[e.base], k // 2
+            else:
+                base = ev(e.base)
+            if k >= 0:
+                out = K(1)
+                for _ in range(k):
+                    out = out * base
+                return out
+            out = K(1)
+            for _ in range(-k):
+                out = out / base
+            return out
+        raise ValueError(f"cannot evaluate {e!r}")
+
+    return ev(expr)
+
+
+def linear_terms(expr) -> dict:
+    """``{atom: coefficient}`` of an expression linear in applied names (``r_vec(6, 5, 0)``); ``ValueError`` if it is
+    not linear in them (a product of two points, a point in a denominator)."""
+    import sympy as sp
+    from sympy.core.function import AppliedUndef
+
+    e = sp.expand(expr)
+    atoms = sorted(e.atoms(AppliedUndef), key=str)
+    coefs = {a: sp.expand(e.diff(a)) for a in atoms}
+    if any(c.atoms(AppliedUndef) for c in coefs.values()) or sp.expand(e - sum(c * a for a, c in coefs.items())) != 0:
+        raise ValueError(f"not a linear combination of points: {expr}")
+    return coefs
+
+
+def point_label(atom) -> str:
+    """``r_{6,5,0}`` of the parsed ``r_vec(6, 5, 0)``."""
+    name = atom.func.__name__
+    if not name.endswith("_vec") or len(atom.args) != 3:
+        raise ValueError(f"not a control point: {atom}")
+    return f"{name[:-4]}_{{{','.join(str(int(a)) for a in atom.args)}}}"
+
+
+def math_conversion(tex: str) -> tuple[tuple[int, int, int], dict[str, Fraction]]:
+    """``((d, e, f), {control point: weight})`` of a printed Bezier point ``p_{d,e,f} = sum w x``, read by the one
+    reader (relation ``=``; weights rational; signs as printed)."""
+    import sympy as sp
+
+    lhs, rhs = math_relation(tex).parts
+    if getattr(lhs.func, "__name__", "") != "p_vec":
+        raise ValueError(f"not a Bezier point: {lhs}")
+    out = {}
+    for atom, c in linear_terms(rhs).items():
+        if not isinstance(c, sp.Rational):
+            raise ValueError(f"weight {c} is not a rational number")
+        out[point_label(atom)] = Fraction(int(c.p), int(c.q))
+    return tuple(int(a) for a in lhs.args), out
+
+
+def math_elevation(tex: str) -> list[tuple[str, dict]]:
+    """``[(order-2 point, {order-1 point: weight expression (sympy)}), ...]`` of a printed elevation equation (a
+    vector equation gives its three rows, the centre one), read by the one reader."""
+    import sympy as sp
+
+    lhs, rhs = math_relation(tex).parts
+    rows = list(zip(lhs, rhs)) if isinstance(lhs, sp.MatrixBase) else [(lhs, rhs)]
+    return [(point_label(left), {point_label(a): c for a, c in linear_terms(right).items()}) for left, right in rows]
