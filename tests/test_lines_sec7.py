@@ -189,3 +189,17 @@ def test_claim_lines_are_read_by_their_claims():
     assert blank_test(["claim:bezier_conversion"])[0]["killed"]
     with substituted({"sec7-conv3-p701": verbatim("sec7-conv3-p701").replace("{3}{4}", "{2}{4}")}):
         assert not run_conversion().passed
+
+
+def test_triavariate_is_a_typo_and_the_corrected_caption_holds():
+    """Second reading: 'triavariate' (once in the paper) is a typographical slip of 'trivariate'; the check fails the
+    printed caption and passes the corrected one, whose mathematics (the centre vanishes) holds."""
+    from paper_repro.claims.lines.mutation import verdict, verdict_with
+
+    tex = BY_ID["sec7-fig-limit-caption-centre"].verbatim
+    assert BY_ID["sec7-fig-limit-caption-centre"].status == "erratum" and "triavariate" in tex
+    assert verdict("sec7-fig-limit-caption-centre") == (False, True)
+    fixed = tex.replace("triavariate", "trivariate")
+    assert verdict_with("sec7-fig-limit-caption-centre", {"sec7-fig-limit-caption-centre": fixed}) == (True, True)
+    wrong = fixed.replace("innermost", "outermost")  # the mathematics is read too
+    assert verdict_with("sec7-fig-limit-caption-centre", {"sec7-fig-limit-caption-centre": wrong})[1] is False

@@ -929,6 +929,16 @@ def check_bernstein_definition() -> LineResult:
                       detail={"per_m": per_m})
 
 
+def _paper_spelling() -> str:
+    """The paper's spelling of 'trivariate': the most frequent word ``tri...variate`` over every transcribed line."""
+    from collections import Counter
+
+    from paper_repro.printed.lines import all_lines
+
+    words = Counter(w.lower() for ln in all_lines() for w in re.findall(r"\b[Tt]ri[a-z]*variate\b", ln.verbatim))
+    return words.most_common(1)[0][0]
+
+
 @line_check("sec7-fig-limit-caption-centre")
 def check_caption_centre() -> LineResult:
     """Which node the caption names (innermost = the centre, the node of the highest level j = n; outermost = level
@@ -936,12 +946,13 @@ def check_caption_centre() -> LineResult:
     (n = 1..3) and of the limit formula (n = 1..12), or, for a limit point other than 0, with the values there."""
     tex = VERBATIM["sec7-fig-limit-caption-centre"]
     t = re.sub(r"\s+", " ", tex)
-    m = re.fullmatch(r"Constrained triavariate normalized trigonometric basis functions associated with the "
+    m = re.fullmatch(r"Constrained ([a-z]+) normalized trigonometric basis functions associated with the "
                      r"(innermost|outermost) node of the graphs above vanish when (\$[^$]+\$)\.", t)
     if not m:
         raise ValueError("unread caption (node, 'vanish when')")
-    level = (lambda n: n) if m.group(1) == "innermost" else (lambda n: 0)
-    limit = X.alpha_limit(m.group(2))
+    spelled = m.group(1) == _paper_spelling()  # 'triavariate' is a typographical slip (erratum on the line)
+    level = (lambda n: n) if m.group(2) == "innermost" else (lambda n: 0)
+    limit = X.alpha_limit(m.group(3))
     named = {str(n): sorted(lab.paper for lab in united_system(n) if lab.j == level(n)) for n in range(1, 13)}
     if limit == 0:
         closed = {str(n): sorted(lab.paper for lab, (c, _) in zip(united_system(n), limit_terms(n)) if c == 0)
@@ -949,16 +960,18 @@ def check_caption_centre() -> LineResult:
         formula = {str(n): sorted(lab.paper for lab in united_system(n) if limit_factor(n, lab.i, lab.j) == 0)
                    for n in range(1, 13)}
         ok = all(v == named[n] for d in (closed, formula) for n, v in d.items())
-        return LineResult(ok, kind="exhaustive",
+        return LineResult(ok and spelled, ok, kind="exhaustive",
                           how="node read from the caption; limit coefficients P_f(1) of the proven closed forms "
                           "(n = 1..3) and the limit formula (n = 1..12): exactly the named node's functions tend to 0",
-                          detail={"named": {k: v for k, v in named.items() if int(k) <= 3},
+                          detail={"word": m.group(1), "paper_spelling": _paper_spelling(),
+                                  "named": {k: v for k, v in named.items() if int(k) <= 3},
                                   "vanishing_closed_forms": closed, "vanishing_formula_n_le_12": len(formula)})
     value = float(limit)
     pts = np.array([[value / 3, value / 3, value / 3]])
     vals = {str(n): float(max(abs(evaluate_normalized(n, value, pts)[0, k]) for k, lab in enumerate(united_system(n))
                               if lab.j == level(n))) for n in (1, 2, 3)}
-    return LineResult(all(v < 1e-12 for v in vals.values()), kind="numeric-evidence",
+    vanish = all(v < 1e-12 for v in vals.values())
+    return LineResult(vanish and spelled, vanish, kind="numeric-evidence",
                       how=f"the named node's functions at alpha = {value} at the simplex centre, n = 1, 2, 3",
                       detail={"values": vals})
 

@@ -707,7 +707,16 @@ LINES = [
                    'innermost node of the graphs above vanish when $\\alpha\\to 0$.'),
          says=('The normalized basis function of the innermost node (the centre R-bar_{2n,n,n}) vanishes as '
                'alpha -> 0.'),
-         status='checked', check='sec7-fig-limit-caption-centre'),
+         status='erratum', check='sec7-fig-limit-caption-centre',
+         erratum={
+             'printed': 'Constrained triavariate normalized trigonometric basis functions ...',
+             'corrected': 'Constrained trivariate normalized trigonometric basis functions ...',
+             'evidence': ("'triavariate' occurs once in the paper (this caption, tex line 3226); the word is "
+                          "'trivariate' in the 62 other occurrences (and in every other transcribed line). The "
+                          'mathematics of the line holds: exactly the centre R-bar_{2n,n,n} tends to 0 (limit '
+                          'coefficients of the proven closed forms, n = 1..3; limit formula, n = 1..12)'),
+             'severity': 'typo',
+         }),
     Line(id='sec7-conversion-degrees', tex=(3230, 3230), near='fig:limit_cases_n_1_2_3', kind='inline',
          verbatim=('Moreover, the control nets of the original first, second and third order triangular '
                    'trigonometric patches can be converted to control nets that describe classical polynomial '

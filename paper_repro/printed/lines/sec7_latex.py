@@ -16,6 +16,7 @@ Evaluate an expression with :func:`evaluate` (builtins disabled; only the given 
 
 from __future__ import annotations
 
+import functools
 import re
 from fractions import Fraction
 
@@ -205,6 +206,7 @@ def clean(tex: str) -> str:
 _IDX = r"\{(-?\d+),(-?\d+),(-?\d+)\}"
 
 
+@functools.lru_cache(maxsize=4096)  # keyed by the text itself: a changed line is a new key
 def to_sympy(tex: str, allowed: tuple[str, ...] = ("x", "y", "z", "n", "m", "d", "e", "f", "alpha", "i", "j")):
     """A simple printed expression (``\\alpha x``, ``1-x-y``, ``\\frac{m!}{d!e!f!}x^d y^e\\left(1-x-y\\right)^f``,
     ``3n-1``) read by the one reader (:func:`paper_repro.printed.latex_math.parse`); ``ValueError`` on anything
@@ -395,6 +397,7 @@ def alpha_limit(text: str):
 
 # ------------------------------------------------------- through the one reader (paper_repro.printed.latex_math)
 
+@functools.lru_cache(maxsize=4096)  # keyed by the text itself: a changed line is a new key
 def math_expr(tex: str):
     """``tex`` read by :func:`paper_repro.printed.latex_math.parse` (a sympy expression)."""
     from paper_repro.printed.latex_math import parse
@@ -402,6 +405,7 @@ def math_expr(tex: str):
     return parse(tex)
 
 
+@functools.lru_cache(maxsize=4096)  # keyed by the text itself: a changed line is a new key
 def math_relation(tex: str, ops: tuple[str, ...] = ("=",)):
     """The parts of the relation ``tex`` (:func:`paper_repro.printed.latex_math.parse_relation`); its relation
     operators must be ``ops`` (a changed relation, e.g. ``\\neq``, is refused)."""
@@ -481,6 +485,7 @@ def point_label(atom) -> str:
     return f"{name[:-4]}_{{{','.join(str(int(a)) for a in atom.args)}}}"
 
 
+@functools.lru_cache(maxsize=4096)  # keyed by the text itself: a changed line is a new key
 def math_conversion(tex: str) -> tuple[tuple[int, int, int], dict[str, Fraction]]:
     """``((d, e, f), {control point: weight})`` of a printed Bezier point ``p_{d,e,f} = sum w x``, read by the one
     reader (relation ``=``; weights rational; signs as printed)."""
@@ -497,6 +502,7 @@ def math_conversion(tex: str) -> tuple[tuple[int, int, int], dict[str, Fraction]
     return tuple(int(a) for a in lhs.args), out
 
 
+@functools.lru_cache(maxsize=4096)  # keyed by the text itself: a changed line is a new key
 def math_elevation(tex: str) -> list[tuple[str, dict]]:
     """``[(order-2 point, {order-1 point: weight expression (sympy)}), ...]`` of a printed elevation equation (a
     vector equation gives its three rows, the centre one), read by the one reader."""
