@@ -156,6 +156,22 @@ def evaluate(expr: str, **names):
     return eval(expr, {"__builtins__": {}}, names)  # noqa: S307 - expressions come from the readers above
 
 
+def _by_text(func):
+    """Memoize a reader on its arguments (the text itself: a changed line is a new key, so the memo never needs
+    clearing -- and it has no ``cache_clear``, so :func:`paper_repro.printed.lines.substituted` leaves it alone)."""
+    memo: dict = {}
+
+    @functools.wraps(func)
+    def wrapper(*args):
+        if args not in memo:
+            if len(memo) > 4096:
+                memo.clear()
+            memo[args] = func(*args)
+        return memo[args]
+
+    return wrapper
+
+
 # ---------------------------------------------------------------- strict readers (issue 37: a changed line is refused)
 #
 # The readers below read a whole line and refuse (``ValueError``) anything they do not understand: a relation other
@@ -206,7 +222,7 @@ def clean(tex: str) -> str:
 _IDX = r"\{(-?\d+),(-?\d+),(-?\d+)\}"
 
 
-@functools.lru_cache(maxsize=4096)  # keyed by the text itself: a changed line is a new key
+@_by_text
 def to_sympy(tex: str, allowed: tuple[str, ...] = ("x", "y", "z", "n", "m", "d", "e", "f", "alpha", "i", "j")):
     """A simple printed expression (``\\alpha x``, ``1-x-y``, ``\\frac{m!}{d!e!f!}x^d y^e\\left(1-x-y\\right)^f``,
     ``3n-1``) read by the one reader (:func:`paper_repro.printed.latex_math.parse`); ``ValueError`` on anything
@@ -397,7 +413,7 @@ def alpha_limit(text: str):
 
 # ------------------------------------------------------- through the one reader (paper_repro.printed.latex_math)
 
-@functools.lru_cache(maxsize=4096)  # keyed by the text itself: a changed line is a new key
+@_by_text
 def math_expr(tex: str):
     """``tex`` read by :func:`paper_repro.printed.latex_math.parse` (a sympy expression)."""
     from paper_repro.printed.latex_math import parse
@@ -405,7 +421,7 @@ def math_expr(tex: str):
     return parse(tex)
 
 
-@functools.lru_cache(maxsize=4096)  # keyed by the text itself: a changed line is a new key
+@_by_text
 def math_relation(tex: str, ops: tuple[str, ...] = ("=",)):
     """The parts of the relation ``tex`` (:func:`paper_repro.printed.latex_math.parse_relation`); its relation
     operators must be ``ops`` (a changed relation, e.g. ``\\neq``, is refused)."""
@@ -485,7 +501,7 @@ def point_label(atom) -> str:
     return f"{name[:-4]}_{{{','.join(str(int(a)) for a in atom.args)}}}"
 
 
-@functools.lru_cache(maxsize=4096)  # keyed by the text itself: a changed line is a new key
+@_by_text
 def math_conversion(tex: str) -> tuple[tuple[int, int, int], dict[str, Fraction]]:
     """``((d, e, f), {control point: weight})`` of a printed Bezier point ``p_{d,e,f} = sum w x``, read by the one
     reader (relation ``=``; weights rational; signs as printed)."""
@@ -502,7 +518,7 @@ def math_conversion(tex: str) -> tuple[tuple[int, int, int], dict[str, Fraction]
     return tuple(int(a) for a in lhs.args), out
 
 
-@functools.lru_cache(maxsize=4096)  # keyed by the text itself: a changed line is a new key
+@_by_text
 def math_elevation(tex: str) -> list[tuple[str, dict]]:
     """``[(order-2 point, {order-1 point: weight expression (sympy)}), ...]`` of a printed elevation equation (a
     vector equation gives its three rows, the centre one), read by the one reader."""
