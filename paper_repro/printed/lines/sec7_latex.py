@@ -162,12 +162,13 @@ def _by_text(func):
     memo: dict = {}
 
     @functools.wraps(func)
-    def wrapper(*args):
-        if args not in memo:
+    def wrapper(*args, **kwargs):
+        key = (args, tuple(sorted(kwargs.items())))
+        if key not in memo:
             if len(memo) > 4096:
                 memo.clear()
-            memo[args] = func(*args)
-        return memo[args]
+            memo[key] = func(*args, **kwargs)
+        return memo[key]
 
     return wrapper
 
