@@ -861,8 +861,9 @@ def check_degenerate_bernstein() -> LineResult:
             corrected &= (ratio == 0) == lab.is_centre and 0 <= ratio <= 1 and (lab.j > 0 or ratio == 1)
     numeric = _numeric_limit(2, "R_{4,3,1}")
     return LineResult(printed and figure and plane, corrected and figure and plane, kind="proof",
-                      how="orders read from the line (= the figure's cases), the simplex x + y + z = 1 read and "
-                          "compared with the parametrization (u + v + w = alpha); limits of the normalized functions "
+                      how=f"orders read from the line (= the figure's cases: n = {', '.join(map(str, ns))}), the "
+                          "simplex x + y + z = 1 read and compared with the parametrization (u + v + w = alpha); "
+                          "limits of the normalized functions "
                           "from the proven closed forms (P_f(1) x^a y^b z^c) compared with the Bernstein polynomials "
                           "P^{a+b+c}_{a,b,c}; numerically, R-bar_{4,3,1} at alpha = 1e-4 divided by x^3 y z is ~12, "
                           "not the 20 of P^5_{3,1,1}",
@@ -999,7 +1000,8 @@ def check_conversion_degrees() -> LineResult:
     ok2, d2 = _degrees_result(cap, [X.DEGREE_WORDS[w] for w in caption.groups()])
     return LineResult(ok1 and ok2, kind="proof", how="orders, degree words and alpha -> 0 read from the line and the "
                       "caption, paired in order; degree of the alpha -> 0 limit from the proven closed forms and from "
-                      "the limit formula", detail={"line": d1, "caption": d2})
+                      f"the limit formula, n = {', '.join(map(str, d1['orders']))} (the orders the line names)",
+                      detail={"line": d1, "caption": d2})
 
 
 # ---------------------------------------------------------------- conversions
