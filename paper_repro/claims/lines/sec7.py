@@ -1,7 +1,10 @@
 """Checks of the lines of Sections 7 and 8 (:mod:`paper_repro.printed.lines.sec7`).
 
-Every printed formula is read from its verbatim LaTeX (:mod:`paper_repro.printed.lines.sec7_latex`) and compared
-with an independent computation of the package:
+Every printed formula is read from its verbatim LaTeX -- relations, elevation rows, conversions and simple
+expressions by the one reader :mod:`paper_repro.printed.latex_math` (through ``sec7_latex``),
+sums with bounds, listed ranges, intervals and the key words (orders, degrees, 'alpha -> 0', 'convex', 'innermost',
+'linearly independent', ...) by the strict readers of ``sec7_latex``, which refuse a changed relation, sign,
+superscript or word -- and compared with an independent computation of the package:
 
 * normalizing coefficients: the closed forms recovered by :mod:`paper_repro.theory.closed_forms` (proven for every
   alpha, ``proof_cached``), as rational functions of t = tan(alpha/4) (:mod:`paper_repro.theory.ratfunc`), and the
