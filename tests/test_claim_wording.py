@@ -172,3 +172,128 @@ def test_derivative_docstrings_cite_the_proof():
     for doc in (Patch.derivative.__doc__, fast_jit.__doc__):
         text = " ".join(doc.split())
         assert "elevation_and_derivative_for_all_n" in text and "found pattern," not in text
+
+
+# -- issue 37, item 5: claims worded as their code -------------------------------------------------------------------
+def _statement(cid: str) -> str:
+    from paper_repro.util.registry import fill_statement
+
+    return " ".join(fill_statement(CLAIMS[cid].statement, CLAIMS[cid].defaults).split())
+
+
+def _doc(name: str) -> str:
+    from pathlib import Path
+
+    return " ".join((Path(__file__).resolve().parents[1] / "docs" / name).read_text(encoding="utf-8").split())
+
+
+def test_question1_all_n_says_the_hand_proof_carries_every_n():
+    st = _statement("question1_all_n")
+    assert "hand proof with machine-checked lemmas" not in st
+    assert "the hand proof (docs/question1_for_all_n.md; also Theorem 3.1) carries every n and alpha" in st
+    assert "lemmas only in the ranges below (for n <= 12 at 4 alpha" in st and "not a proof for every n" in st
+
+
+def test_general_formulas_says_which_n_confirm_independently():
+    from paper_repro.claims.general_formulas import N_FIT
+
+    st = _statement("general_formulas")
+    assert "a hand proof with machine-checked lemmas, for every n" not in st
+    assert all(f"{N_FIT[k]} (level {k})" in st for k in N_FIT)
+    assert "for those n the agreement holds by construction" in st and "are independent confirmation" in st
+    import inspect
+
+    from paper_repro.claims import general_formulas
+
+    assert '"independent_confirmation_for_n"' in inspect.getsource(general_formulas.run)
+
+
+def test_derivative_all_n_counts_three_rule_terms_per_column(monkeypatch):
+    from paper_repro.claims import half_angle_all_n as h
+    from paper_repro.theory import half_angle_checks as hc
+
+    st = _statement("derivative_all_n")
+    assert "at most 4 rule terms" not in st and "at most 3 rule terms per column" in st
+    assert [hc.derivative_rule_terms(n) for n in range(1, 7)] == [2, 3, 3, 3, 3, 3]
+    small = {"ts": ["1/7"], "n_tables": 3, "n_recovered": [], "n_exact": 1, "n_modp": 2}
+    out = h.run_derivative(**small)
+    assert out.passed and out.measured["max_rule_terms_per_column_by_n"] == {1: 2, 2: 3, 3: 3}
+    monkeypatch.setattr(hc, "derivative_rule_terms", lambda n: 4)  # a column with four rule terms fails the claim
+    assert not h.run_derivative(**small).passed
+    assert "at most four rule applications" not in _doc("elevation_and_derivative_for_all_n.md")
+
+
+def test_pairwise_products_counts_the_cotangent_applications(monkeypatch):
+    from paper_repro.claims import half_angle_all_n as h
+    from paper_repro.theory import half_angle_checks as hc
+
+    assert "the applications counted in the construction: at most n, and n attained, for n <= 15" in \
+        _statement("pairwise_products_all_n")
+    assert [hc.cotangent_applications(n) for n in range(1, 6)] == [1, 2, 3, 4, 5]
+    small = {"ts": ["1/7"], "n_exact": 1, "n_modp": 2, "n_lemma": 3, "n_signs": 4, "n_symmetry": 2, "n_sum": 1}
+    assert h.run_products(**small).passed
+    monkeypatch.setattr(hc, "cotangent_applications", lambda n: n + 1)  # more than n applications fails the claim
+    assert not h.run_products(**small).passed
+
+
+def test_linear_independence_says_singular_values_only_for_small_n():
+    st = _statement("linear_independence")
+    assert "high precision singular values for n = 1..8" not in st
+    assert "all singular values by mpmath SVD for n <= 4, beyond only a certified lower bound of sigma_min" in st
+
+
+def test_coincidence_says_what_is_shown():
+    from paper_repro.claims import coincidence
+
+    st = _statement("coincidence")
+    assert "numerically at alpha in pi/4, 3pi/4)" not in st
+    assert "50-digit singular values give numeric rank delta_n of [T-bar | V] for n = 1..4" in st
+    assert "for n = 5..8 (no rank computed)" in st and "A rank mod p is a lower bound of the rank over Q" in st
+    doc = " ".join(coincidence.__doc__.split())
+    assert "a proof of span T = span V" not in doc and "does not prove rank_Q [T | V] = delta_n" in doc
+
+
+def test_m_and_c_are_explicit_constructions_not_closed_forms():
+    from paper_repro.core import half_angle_matrices
+    from paper_repro.theory import half_angle_checks
+
+    for cid in ("elevation_all_n", "derivative_all_n"):
+        st = _statement(cid)
+        assert "in closed form" not in st and "explicit construction" in st
+    for mod in (half_angle_matrices, half_angle_checks):
+        first = " ".join(mod.__doc__.split("\n\n")[0].split())
+        assert "closed form" not in first.replace("only rule (A) is a closed form", "")
+        assert "explicit" in first
+
+
+def test_docs_say_the_library_E_uses_theorem_B():
+    text = _doc("elevation_and_derivative_for_all_n.md")
+    assert "The library's E does not:" in text and "Theorem B's formula, `scaled_coefficients`" in text
+
+
+def test_transformation_all_n_cites_question1_for_all_n():
+    from paper_repro.claims import transformation_all_n
+
+    assert "rests on docs/question1_for_all_n.md" in _statement("transformation_all_n")
+    assert "docs/question1_for_all_n.md" in transformation_all_n.__doc__.split("\n\n")[1]
+
+
+def test_level_and_ring_are_two_words_in_the_elevation_proof():
+    text = _doc("elevation_and_derivative_for_all_n.md")
+    assert "*Level and ring (two words, two indices).*" in text
+    for old in ("level-$n$ member", "level-$N$ member", "Rule (A$_n$): level $n$", "at level $m = n$",
+                "functions at each level $m < n$", "this member has level $n < N$"):
+        assert old not in text, old
+
+
+def test_m_inverse_growth_is_worded_as_measured():
+    """The doc's words: like s^{-3n} only as alpha -> 0; at alpha = 1, 44 to 136 times per order (n <= 7).  Measured
+    again here for n <= 5 (float, the library's M^{-1})."""
+    from paper_repro.core.transformation import transformation_matrix
+
+    text = _doc("transformation_for_all_n.md")
+    assert "$M^{-1}$ grows like $s^{-3n}$ only as $\\alpha \\to 0$" in text and "grows $44$ to $136$ times" in text
+    sizes = [float(np.abs(np.asarray(transformation_matrix(n, 1.0, "T_to_V"), dtype=float)).max()) for n in range(1, 6)]
+    ratios = [b / a for a, b in zip(sizes, sizes[1:])]
+    assert all(44 <= r <= 136 for r in ratios), ratios
+    assert all(r > 4 * (1 / np.sin(0.5)) ** 3 for r in ratios)  # far from the s^{-3} ~ 9 per order of alpha -> 0

@@ -13,7 +13,6 @@ from flint import fmpq
 
 from paper_repro.core.labels import index_of, united_system
 from paper_repro.core.normalization import evaluate_normalized
-from paper_repro.printed.limits import CONVERSION_N2, CONVERSION_N3
 from paper_repro.theory.closed_forms import proof_cached
 from paper_repro.theory.limit_formula import multinomial
 from paper_repro.theory.limits import bernstein_index, conversion_matrix, limit_degree, limit_terms
@@ -101,45 +100,103 @@ def _render(terms: dict[str, fmpq]) -> str:
     return " + ".join(f"{w} {lab}" for lab, w in terms.items() if w != 0)
 
 
+def printed_conversions() -> list[tuple[str, str, tuple[int, int, int], list[tuple[Fraction, str]]]]:
+    """Every printed Bezier point of the alpha -> 0 conversions (before Question que:limiting_case), read from the
+    transcribed lines (``sec7-conv2-*``, ``sec7-conv3-*`` of :mod:`paper_repro.printed.lines.sec7`) by the strict
+    reader :func:`paper_repro.printed.lines.sec7_latex.strict_conversion`: ``(line id, printed key p_{d,e,f},
+    index, [(weight, control point), ...])``.  No copy of the formulas: a changed transcription changes the claim."""
+    from paper_repro.printed.lines import sec7 as lines7
+    from paper_repro.printed.lines.sec7_latex import strict_conversion
+
+    out = []
+    for ln in lines7.LINES:
+        if ln.id.startswith(("sec7-conv2-", "sec7-conv3-")):
+            idx, terms = strict_conversion(ln.verbatim)
+            out.append((ln.id, f"p_{{{idx[0]},{idx[1]},{idx[2]}}}", idx, terms))
+    return out
+
+
+def _recorded_correction(text: str) -> tuple[tuple[int, int, int], list[tuple[Fraction, str]]]:
+    """The correction recorded on an erratum line, ``p_{d,e,f} = w lab + w lab ...`` (plain text), read."""
+    import re
+
+    m = re.fullmatch(r"p_\{(\d+),(\d+),(\d+)\} = (.+)", text.strip())
+    if not m:
+        raise ValueError(f"unread correction {text!r}")
+    terms = []
+    for part in m.group(4).split(" + "):
+        w, lab = part.split(" ")
+        terms.append((Fraction(w), lab))
+    return (int(m.group(1)), int(m.group(2)), int(m.group(3))), terms
+
+
+def _slips(printed: tuple, corrected: tuple) -> int:
+    """How many items (each index of p; each term's weight or point) differ between a printed and a corrected
+    point."""
+    (i1, t1), (i2, t2) = printed, corrected
+    index = sum(a != b for a, b in zip(i1, i2))
+    if len(t1) != len(t2):
+        return index + 1 + abs(len(t1) - len(t2)) + sum(a != b for a, b in zip(t1, t2))
+    return index + sum((w1 != w2) + (l1 != l2) for (w1, l1), (w2, l2) in zip(t1, t2))
+
+
 @claim("bezier_conversion", paper_ref=["que:limiting_case", "fig:conversion_of_limit_cases_n_1_2_3"],
-       statement="The printed conversions of order-2 and order-3 control nets to quintic and octic Bezier nets agree "
-                 "with the general conversion, except the index/label misprints recorded as errata "
-                 "(p_{8,8,0}, p_{2,1,5}, p_{3,2,3}).",
+       statement="The printed conversions of order-2 and order-3 control nets to quintic and octic Bezier nets (read "
+                 "from the transcribed lines) agree with the general conversion, except the index/label misprints "
+                 "recorded as errata on the lines (p_{8,8,0}, p_{2,1,5}, p_{3,2,3}).",
        kind="proof")
 def run_conversion() -> Outcome:
-    errata, checked, mismatches = [], 0, []
-    for n, table in ((2, CONVERSION_N2), (3, CONVERSION_N3)):
+    from paper_repro.printed.lines import line
+
+    errata, checked, mismatches, expected, records = [], 0, [], set(), {}
+    for line_id, key, t, terms in printed_conversions():
+        erratum = line(line_id).erratum if line(line_id).status == "erratum" else None
+        if erratum:  # the recorded correction must hold, and differ from the printed line in one slip
+            cidx, cterms = _recorded_correction(erratum["corrected"])
+            records[line_id] = {"recorded_correction": erratum["corrected"], "slips": _slips((t, terms),
+                                                                                              (cidx, cterms))}
+        orders = {int(lab.split("{")[1].split(",")[0]) for _, lab in terms}
+        if len(orders) != 1 or next(iter(orders)) % 2:
+            raise ValueError(f"{line_id}: control points of orders {orders}")
+        n = orders.pop() // 2
+        if line(line_id).status == "erratum":
+            expected.add(key)
         idx, w = conversion_matrix(n)
         ix = index_of(n)
         labs = [lab.control_point for lab in united_system(n)]
-        for key, terms in table.items():
-            checked += 1
-            t = tuple(int(x) for x in key[3:-1].split(","))
-            vec = [fmpq(0)] * len(labs)
-            for wt, lab in terms:
-                vec[ix[lab]] += _q(wt)
-            printed = " + ".join(f"{wt} {lab}" for wt, lab in terms)
-            if t not in idx:  # not an index of degree N: find the computed point with these weights
-                match = [s for s in idx if w[idx.index(s)] == vec]
-                corrected = f"p_{{{','.join(map(str, match[0]))}}}" if match else "no index has these weights"
-                errata.append({"id": f"conversion-{key}", "paper_ref": "que:limiting_case", "item": key,
-                               "severity": "typo",  # not an index at all: the intended point is clear
-                               "printed": f"{key} = {printed}", "corrected": f"{corrected} = {printed}",
-                               "evidence": f"{key} is not an index of the degree-{3 * n - 1} Bezier net "
-                                           f"(indices sum to {3 * n - 1}); the printed weights are those of "
-                                           f"{corrected} in the exact general conversion"})
-                mismatches.append(key)
-                continue
-            row = w[idx.index(t)]
-            if row != vec:
-                comp = {labs[f]: row[f] for f in range(len(labs))}
-                errata.append({"id": f"conversion-{key}", "paper_ref": "que:limiting_case", "item": key,
-                               "severity": "statement",  # a valid formula that gives a wrong point as written
-                               "printed": f"{key} = {printed}", "corrected": f"{key} = {_render(comp)}",
-                               "evidence": "exact general conversion (limit of the normalized basis written in "
-                                           f"the degree-{3 * n - 1} Bernstein basis)"})
-                mismatches.append(key)
-    expected = {"p_{8,8,0}", "p_{2,1,5}", "p_{3,2,3}"}
-    return Outcome(set(mismatches) == expected, {"printed_formulas_checked": checked, "mismatches": mismatches,
-                                                 "scope": "exact comparison; the conversion weights do not depend "
-                                                          "on alpha"}, errata=errata)
+        checked += 1
+        vec = [fmpq(0)] * len(labs)
+        for wt, lab in terms:
+            vec[ix[lab]] += _q(wt)
+        if erratum:
+            cvec = [fmpq(0)] * len(labs)
+            for wt, lab in cterms:
+                cvec[ix[lab]] += _q(wt)
+            records[line_id]["recorded_correction_holds"] = cidx in idx and w[idx.index(cidx)] == cvec \
+                and all(lab in labs for _, lab in cterms)
+        printed = " + ".join(f"{wt} {lab}" for wt, lab in terms)
+        if t not in idx:  # not an index of degree N: find the computed point with these weights
+            match = [s for s in idx if w[idx.index(s)] == vec]
+            corrected = f"p_{{{','.join(map(str, match[0]))}}}" if match else "no index has these weights"
+            errata.append({"id": f"conversion-{key}", "paper_ref": "que:limiting_case", "item": key,
+                           "severity": "typo",  # not an index at all: the intended point is clear
+                           "printed": f"{key} = {printed}", "corrected": f"{corrected} = {printed}",
+                           "evidence": f"{key} is not an index of the degree-{3 * n - 1} Bezier net "
+                                       f"(indices sum to {3 * n - 1}); the printed weights are those of "
+                                       f"{corrected} in the exact general conversion"})
+            mismatches.append(key)
+            continue
+        row = w[idx.index(t)]
+        if row != vec:
+            comp = {labs[f]: row[f] for f in range(len(labs))}
+            errata.append({"id": f"conversion-{key}", "paper_ref": "que:limiting_case", "item": key,
+                           "severity": "statement",  # a valid formula that gives a wrong point as written
+                           "printed": f"{key} = {printed}", "corrected": f"{key} = {_render(comp)}",
+                           "evidence": "exact general conversion (limit of the normalized basis written in "
+                                       f"the degree-{3 * n - 1} Bernstein basis)"})
+            mismatches.append(key)
+    corrections = all(r["recorded_correction_holds"] and r["slips"] == 1 for r in records.values())
+    return Outcome(set(mismatches) == expected and checked > 0 and corrections,
+                   {"printed_formulas_checked": checked, "mismatches": mismatches, "errata_lines": records,
+                    "scope": "exact comparison of the formulas read from the transcription; the conversion weights do "
+                             "not depend on alpha"}, errata=errata)

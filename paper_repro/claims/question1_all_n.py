@@ -127,8 +127,11 @@ def agrees_with_record(rec: dict) -> dict:
                                      "joint_systems_linear_independence"],
        statement="Open Question 1 for every n: the normalizing coefficients of T_{2n}^alpha are positive and "
                  "symmetric and s^{2n+j} r_{2n,2n-i,j} = [t^j X^i] (1+s^2t^2)^n (1+2(c+s^2t)X+(1+s^2t^2)X^2)^n "
-                 "(1-mct)/(1-ct)^{2n+1} for every n >= 1 and alpha in (0, pi) (hand proof with machine-checked "
-                 "lemmas, docs/question1_for_all_n.md; also Theorem 3.1 for every alpha). Machine checks: the "
+                 "(1-mct)/(1-ct)^{2n+1} for every n >= 1 and alpha in (0, pi): the hand proof "
+                 "(docs/question1_for_all_n.md; also Theorem 3.1) carries every n and alpha; the machine checks its "
+                 "lemmas only in the ranges "
+                 "below (for n <= {n_lemma} at 4 alpha, and alpha-free parts further), evidence for the proof, not a "
+                 "proof for every n. Machine checks: the "
                  "formula equals the closed forms proven for every alpha for n <= {n_closed} (polynomial identity); "
                  "the hexagon containment (n <= {n_hexagon}) and the non-negative weights (n <= {n_weights}) hold "
                  "independently of alpha; the order lemma, the triangular structure, the triangular solve "

@@ -1,8 +1,9 @@
 """Claim ``transformation_all_n``: Question 7.2 (que:open_problem_basis_transformation) answered for every n.
 
-The statement (docs/transformation_for_all_n.md proves it by hand; :mod:`paper_repro.core.transformation` computes
-it): for every n >= 1 and alpha in (0, pi), the coefficients of exp(i(au + bv + dw)) in the unnormalized T_{2n}
-are coefficients of the generating function Gamma_phi(t, W) (rules for the members R_{2n,2n-k,j}, their mirrors,
+The statement (docs/transformation_for_all_n.md proves it by hand, on docs/question1_for_all_n.md: its notation,
+Theorem B and Corollary C; :mod:`paper_repro.core.transformation` computes it): for every n >= 1 and alpha in
+(0, pi), the coefficients of exp(i(au + bv + dw)) in the unnormalized T_{2n} are coefficients of the generating
+function Gamma_phi(t, W) (rules for the members R_{2n,2n-k,j}, their mirrors,
 the diagonal, the centre, and G, B by permutations), so V_n = T-bar M with M explicit; T-bar = V_n M^{-1} by the
 binomial expansion of the half-angle sines and cosines.
 
@@ -40,7 +41,9 @@ def solves_at(t: str, n: int) -> list[dict]:
                  "coefficients [t^j W^k] of Gamma_phi(t, W) = zeta^{2b} A^{n+a-b} Abar^{n-a+b} (1+Abar W)^{n+a-d} "
                  "(1+A W)^{n-a+d} / (1-ct)^{2n} (mirror, diagonal and centre rules; G, B by permutations), so "
                  "V_n = T-bar M explicitly; T-bar = V_n M^-1 by the binomial expansion (hand proof, "
-                 "docs/transformation_for_all_n.md). Machine checks: both directions equal exact collocation solves "
+                 "docs/transformation_for_all_n.md, which rests on docs/question1_for_all_n.md: its notation, "
+                 "Theorem B for the normalizing coefficients and Corollary C for their positivity). Machine checks: "
+                 "both directions equal exact collocation solves "
                  "for n <= {n_solve} at tan(alpha/4) = {t} and n <= {n_solve_ends} at tan(alpha/4) in {t_ends}; "
                  "every entry equals the recovered closed forms proven for every alpha for n <= {n_closed} "
                  "(polynomial identity).",

@@ -1,4 +1,5 @@
-"""Order elevation and the derivative matrix C in closed form, for every n, in every arithmetic.
+"""Order elevation and the derivative matrix C as explicit constructions (finite compositions of the cotangent rules
+of docs/elevation_and_derivative_for_all_n.md; only rule (A) is a closed form), for every n, in every arithmetic.
 
 The integer forms of :mod:`paper_repro.core.half_angle_rules` (proven in docs/elevation_and_derivative_for_all_n.md)
 are evaluated here through a context (:mod:`paper_repro.core.context`): the same code gives exact matrices at a
@@ -216,7 +217,7 @@ def _dense(rows, cols, vals, shape, ctx: Context) -> np.ndarray:
 
 def elevation_matrix_ctx(n: int, alpha, arith: str | Context = "float") -> np.ndarray:
     """E, ``(delta_{n+1}, delta_n)``, with ``T-bar_n = T-bar_{n+1} E`` in the arithmetic ``arith`` (exact needs a
-    :class:`RationalAngle`); from the closed form, no linear solve."""
+    :class:`RationalAngle`); from the explicit construction, no linear solve."""
     n = check_n(n)
     ctx = get_context(arith)
     kappa, sigma = half_angle(alpha, ctx)
@@ -241,7 +242,7 @@ def elevation_from_form(form: tuple[np.ndarray, ...], n: int, kappa, sigma, ctx:
 
 def derivative_matrix(n: int, alpha, arith: str | Context = "float") -> np.ndarray:
     """C, ``(delta_n, delta_n)``, with ``2 s d/du m_f = sum_g C[g, f] m_g`` for the scaled monomials (direction
-    u = (1, 0, -1)) in the arithmetic ``arith``, from the closed form; the direction v is C conjugated by
+    u = (1, 0, -1)) in the arithmetic ``arith``, from the explicit construction; the direction v is C conjugated by
     :func:`~paper_repro.core.labels.variable_swap`."""
     n = check_n(n)
     ctx = get_context(arith)
@@ -252,8 +253,8 @@ def derivative_matrix(n: int, alpha, arith: str | Context = "float") -> np.ndarr
 
 def derivative_nets(n: int, alpha, net: np.ndarray, arith: str | Context = "float") -> tuple[np.ndarray, np.ndarray]:
     """``(q_u, q_v)``: the nets of ``2 s d/du`` and ``2 s d/dv`` of the patch ``sum_f net[f] m_f`` on the scaled
-    monomials (``net`` of shape ``(delta_n, d)``), from the closed-form C in the arithmetic ``arith``.  In float each
-    output row is summed in the order of the form's entries (``np.add.at``: the same bits on every CPU).
+    monomials (``net`` of shape ``(delta_n, d)``), from the explicitly constructed C in the arithmetic ``arith``.  In
+    float each output row is summed in the order of the form's entries (``np.add.at``: the same bits on every CPU).
 
     The direction v is u with the variables u, v exchanged (:func:`~paper_repro.core.labels.variable_swap`).
 

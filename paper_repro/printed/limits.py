@@ -1,47 +1,16 @@
-"""Verbatim transcriptions: the printed alpha -> 0 conversions (before Question que:limiting_case) and the
-printed order elevation 1 -> 2 (Example exmp:degree_elevation_from_1_to_2).
+"""Verbatim transcription: the printed order elevation 1 -> 2 (Example exmp:degree_elevation_from_1_to_2).
 
-Conversions: ``{printed Bezier index: [(weight, control point label), ...]}``, indices exactly as
-printed (including ``p_{8,8,0}``).  Elevation: for each order-2 control point triple
-``[r, g, b]_{4,...}``, a list of ``(weight(c2, s2), (R label, G label, B label))`` with
-``c2 = cos^2(alpha/2)``, ``s2 = sin^2(alpha/2)``; the three colours use the three labels in turn.
+(The printed alpha -> 0 conversions are no longer copied here: claim bezier_conversion reads them from the
+transcribed lines ``sec7-conv2-*``, ``sec7-conv3-*`` of :mod:`paper_repro.printed.lines.sec7`.)
+
+Elevation: for each order-2 control point triple ``[r, g, b]_{4,...}``, a list of ``(weight(c2, s2), (R label,
+G label, B label))`` with ``c2 = cos^2(alpha/2)``, ``s2 = sin^2(alpha/2)``; the three colours use the three
+labels in turn.
 """
 
 from __future__ import annotations
 
 from fractions import Fraction as F
-
-CONVERSION_N2 = {
-    "p_{5,0,0}": [(F(1), "r_{4,4,0}")],
-    "p_{4,0,1}": [(F(1, 5), "r_{4,4,0}"), (F(4, 5), "r_{4,3,0}")],
-    "p_{3,0,2}": [(F(2, 5), "r_{4,3,0}"), (F(3, 5), "r_{4,2,0}")],
-    "p_{2,0,3}": [(F(3, 5), "r_{4,2,0}"), (F(2, 5), "r_{4,1,0}")],
-    "p_{1,0,4}": [(F(4, 5), "r_{4,1,0}"), (F(1, 5), "g_{4,4,0}")],
-    "p_{3,1,1}": [(F(1, 5), "r_{4,3,0}"), (F(3, 5), "r_{4,3,1}"), (F(1, 5), "b_{4,1,0}")],
-    "p_{2,1,2}": [(F(1, 5), "r_{4,2,0}"), (F(4, 5), "r_{4,2,1}")],
-}
-
-CONVERSION_N3 = {
-    "p_{8,8,0}": [(F(1), "r_{6,6,0}")],
-    "p_{7,0,1}": [(F(1, 4), "r_{6,6,0}"), (F(3, 4), "r_{6,5,0}")],
-    "p_{6,0,2}": [(F(1, 28), "r_{6,6,0}"), (F(3, 7), "r_{6,5,0}"), (F(15, 28), "r_{6,4,0}")],
-    "p_{5,0,3}": [(F(3, 28), "r_{6,5,0}"), (F(15, 28), "r_{6,4,0}"), (F(5, 14), "r_{6,3,0}")],
-    "p_{4,0,4}": [(F(3, 14), "r_{6,4,0}"), (F(4, 7), "r_{6,3,0}"), (F(3, 14), "r_{6,2,0}")],
-    "p_{3,0,5}": [(F(5, 14), "r_{6,3,0}"), (F(15, 28), "r_{6,2,0}"), (F(3, 28), "r_{6,1,0}")],
-    "p_{2,0,6}": [(F(15, 28), "r_{6,2,0}"), (F(3, 7), "r_{6,1,0}"), (F(1, 28), "g_{6,6,0}")],
-    "p_{1,0,7}": [(F(3, 4), "r_{6,1,0}"), (F(1, 4), "g_{6,6,0}")],
-    "p_{6,1,1}": [(F(1, 28), "r_{6,6,0}"), (F(3, 14), "r_{6,5,0}"), (F(15, 28), "r_{6,5,1}"), (F(3, 14), "b_{6,1,0}")],
-    "p_{5,1,2}": [(F(1, 14), "r_{6,5,0}"), (F(5, 28), "r_{6,4,0}"), (F(5, 28), "r_{6,5,1}"), (F(15, 28), "r_{6,4,1}"),
-                  (F(1, 28), "b_{6,1,0}")],
-    "p_{4,1,3}": [(F(3, 28), "r_{6,4,0}"), (F(1, 7), "r_{6,3,0}"), (F(9, 28), "r_{6,4,1}"), (F(3, 7), "r_{6,3,1}")],
-    "p_{3,1,4}": [(F(1, 7), "r_{6,3,0}"), (F(3, 28), "r_{6,2,0}"), (F(3, 7), "r_{6,3,1}"), (F(9, 28), "r_{6,2,1}")],
-    "p_{2,1,5}": [(F(5, 28), "r_{6,2,0}"), (F(1, 14), "r_{6,1,0}"), (F(15, 28), "r_{6,1,1}"), (F(1, 28), "g_{6,5,0}"),
-                  (F(5, 28), "g_{6,5,1}")],
-    "p_{1,1,6}": [(F(3, 14), "r_{6,1,0}"), (F(1, 28), "g_{6,6,0}"), (F(3, 14), "g_{6,5,0}"), (F(15, 28), "g_{6,5,1}")],
-    "p_{4,2,2}": [(F(1, 28), "r_{6,4,0}"), (F(3, 14), "r_{6,4,1}"), (F(1, 28), "b_{6,2,0}"), (F(3, 14), "b_{6,2,1}"),
-                  (F(1, 2), "r_{6,4,2}")],
-    "p_{3,2,3}": [(F(1, 28), "r_{6,2,0}"), (F(3, 14), "r_{6,3,1}"), (F(3, 4), "r_{6,3,2}")],
-}
 
 _RGB = lambda a, b: ((f"r_{{2,{a},{b}}}", f"g_{{2,{a},{b}}}", f"b_{{2,{a},{b}}}"))  # noqa: E731
 _GBR = lambda a, b: ((f"g_{{2,{a},{b}}}", f"b_{{2,{a},{b}}}", f"r_{{2,{a},{b}}}"))  # noqa: E731

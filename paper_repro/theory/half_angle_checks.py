@@ -1,4 +1,5 @@
-"""Machine checks of the closed-form elevation matrix M and derivative matrix C (issue 30), independent of the rules.
+"""Machine checks of the explicitly constructed elevation matrix M and derivative matrix C (issue 30), independent of
+the rules.
 
 The rules (:mod:`paper_repro.core.half_angle_rules`) are proven for every n in
 docs/elevation_and_derivative_for_all_n.md.  These checks compare what the rules build with routes that know nothing
@@ -306,3 +307,48 @@ def lowering_lemma(n: int) -> dict:
     fails = [(g, x) for g in range(delta(n)) for x in range(3) if e[g, 2 * x]
              and any(int(e[int(t), 2 * x]) < int(e[g, 2 * x]) - 1 for t in cotangent(n, x, g)[:, 3])]
     return {"n": n, "fails": fails, "ok": not fails}
+
+
+def derivative_rule_terms(n: int) -> int:
+    """Most rule terms in one column of C: for the member f with exponents p_x of S_x and q_x of C_x, the column is
+    p_u L_u m_f - q_u sigma (S_u/C_u) m_f - p_w L_w m_f + q_w sigma (S_w/C_w) m_f, one rule term per non-zero
+    exponent (docs/elevation_and_derivative_for_all_n.md).  A member has a cosine factor in at most one variable,
+    so at most 3 of the 4 are present; this counts them from the exponent vectors of T_{2n}.
+
+    >>> [derivative_rule_terms(n) for n in (1, 2, 3)]
+    [2, 3, 3]
+    """
+    e = exponent_matrix(check_n(n))
+    return int(max(sum(1 for k in (0, 1, 4, 5) if row[k]) for row in e))
+
+
+def cotangent_applications(n: int) -> int:
+    """Most applications of a cotangent rule ``L_y`` (each applied term by term) that the construction of Theorem P
+    (:func:`paper_repro.core.half_angle_rules.product_column`) makes for one product m_f m_h, over the members f of
+    T_{2n} and h of T_2: counted by instrumenting the construction itself (the applications of the rule function
+    during each product; the edges take one, the corner S_Y^2 with j < m takes m - j <= n).
+
+    >>> [cotangent_applications(n) for n in (1, 2, 3)]
+    [1, 2, 3]
+    """
+    from paper_repro.core import half_angle_rules as rules
+
+    check_n(n)
+    original = rules._apply_cotangent
+    calls = [0]
+
+    def counting(*args, **kw):
+        calls[0] += 1
+        return original(*args, **kw)
+
+    most = 0
+    rules._apply_cotangent = counting
+    try:
+        for h in range(delta(1)):
+            for f in range(delta(n)):
+                calls[0] = 0
+                rules.product_column(n, h, f)
+                most = max(most, calls[0])
+    finally:
+        rules._apply_cotangent = original
+    return most

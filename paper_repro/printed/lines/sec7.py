@@ -56,7 +56,9 @@ LINES = [
                    '0}^{\\alpha}+\\overline{B}_{2,2,0}^{\\alpha}+\\overline{B}_{2,1,0}%\n^{\\alpha}\\right)'),
          says=('1^{n+1} = (R-bar_{2n,n,n} + sum_{j=0}^{n-1} sum_{i=j}^{2n-1-j} (R-bar + G-bar + B-bar)_{2n,2n-i,'
                'j}) * (R-bar_{2,1,1} + R-bar_{2,2,0} + R-bar_{2,1,0} + G-bar_{2,2,0} + G-bar_{2,1,0} + B-bar_{2,'
-               '2,0} + B-bar_{2,1,0}): the first factor sums T-bar_{2n}, the second T-bar_2, both equal 1.'),
+               '2,0} + B-bar_{2,1,0}): the first factor sums T-bar_{2n}, the second T-bar_2, both equal 1.  '
+               '(Second reading: the exponent n+1 is notation -- the first factor is the order-n partition of unity, '
+               'not a power of the second -- and 1^k = 1 for every k, so it is not a slip.)'),
          status='checked', check='sec7-unity-product'),
     Line(id='sec7-unity-product-basis', tex=(2705, 2705), near='sec:open_problems', kind='inline',
          verbatim=('into the basis $\\overline{T}_{2\\left(  n+1\\right)}^{\\alpha}$, then this transformation '
@@ -110,15 +112,18 @@ LINES = [
          reason=("a statement about the authors' progress, not about the functions; the products are now written "
                  'for every n by claim pairwise_products_all_n (G-bar_{2,1,0} and B-bar_{2,1,0}: one cotangent rule '
                  'applied to the product with the centre; B-bar_{2,2,0}: the cotangent of v applied m - j times, '
-                 'the hard case; proof docs/elevation_and_derivative_for_all_n.md), and check '
-                 'sec7-products-in-span expands them exactly for n = 1, 2, 3 and finds up to 10 terms for these '
-                 "three against at most 2 for the four 'easy' ones, which is consistent with the text")),
+                 'the hard case; proof docs/elevation_and_derivative_for_all_n.md).  The claim reads this line: '
+                 "its three products and the four 'easy' ones of sec7-mixed-products-easy name each member of T_2 "
+                 "once, and the 'easy' ones are exactly those Theorem P writes with at most 2 members of order n + 1 "
+                 '(n = 1..5); these three need up to 2n + 2 (G_{2,1,0}, B_{2,1,0}) and 3n + 1 (B_{2,2,0}) members, '
+                 'which is consistent with the text')),
     Line(id='sec7-first-order-products', tex=(2736, 2736), near='sec:open_problems', kind='inline',
          verbatim=('For the moment, we are only able (cf. \\cite[Lemma 5.1]{tech_report}) to transform the '
                    'pairwise products of first order blending functions into linear combinations of second '
                    'order blending functions.'),
          says=('Pairwise products of first order blending functions are linear combinations of second order '
-               'blending functions (tech_report Lemma 5.1).'),
+               'blending functions (tech_report Lemma 5.1; the tech report is not available here: the lemma number '
+               'is not checked, the statement is).'),
          status='checked', check='sec7-products-in-span'),
     Line(id='sec7-square-of-unity', tex=(2742, 2745), near='exmp:from_1_to_2', kind='display',
          verbatim=('1^{2}=\\left(  \\overline{R}_{2,1,1}^{\\alpha}+\\overline{R}_{2,2,0}^{\\alpha\n'
@@ -702,7 +707,16 @@ LINES = [
                    'innermost node of the graphs above vanish when $\\alpha\\to 0$.'),
          says=('The normalized basis function of the innermost node (the centre R-bar_{2n,n,n}) vanishes as '
                'alpha -> 0.'),
-         status='checked', check='sec7-fig-limit-caption-centre'),
+         status='erratum', check='sec7-fig-limit-caption-centre',
+         erratum={
+             'printed': 'Constrained triavariate normalized trigonometric basis functions ...',
+             'corrected': 'Constrained trivariate normalized trigonometric basis functions ...',
+             'evidence': ("'triavariate' occurs once in the paper (this caption, tex line 3226); the word is "
+                          "'trivariate' in the 62 other occurrences (and in every other transcribed line). The "
+                          'mathematics of the line holds: exactly the centre R-bar_{2n,n,n} tends to 0 (limit '
+                          'coefficients of the proven closed forms, n = 1..3; limit formula, n = 1..12)'),
+             'severity': 'typo',
+         }),
     Line(id='sec7-conversion-degrees', tex=(3230, 3230), near='fig:limit_cases_n_1_2_3', kind='inline',
          verbatim=('Moreover, the control nets of the original first, second and third order triangular '
                    'trigonometric patches can be converted to control nets that describe classical polynomial '
