@@ -126,7 +126,7 @@ def test_annotated_paper_in_headless_chromium():
     from paper_repro.app import check_gallery, check_paper
 
     if not (check_gallery.find(check_gallery.CHROMIUM) and check_gallery.find(check_gallery.DRIVER)):
-        pytest.skip("no chromium/chromedriver on this machine: run `make check-gallery` (installs Debian's chromium)")
+        pytest.skip(check_gallery.HOW_TO_GET)
     ap.write_paper()
     res = check_paper.check()
     assert check_paper.passed(res), res

@@ -1,10 +1,10 @@
-"""The control net's layout (Fig. 1, ``fig:oriented_graph``; Fig. 8, ``fig:associated_control_net``):
+"""The control net's layout (Fig. 1, ``fig:oriented_graph``; Fig. 6, ``fig:associated_control_net``):
 which points are connected, and where each sits over the domain.
 
 The expected edges are written by hand from the paper's description, not from ``core/layout.py``: the nodes
 sit on n nested triangles (levels j = 0..n-1) around the centre; the three outermost nodes store
 sin^{2n}(u/2), sin^{2n}(v/2), sin^{2n}(w/2); every path from an outermost node ends at the centre; and the
-net's "faces" are quadrangular (the Remark after Fig. 8).
+net's "faces" are quadrangular (the Remark after Fig. 6).
 """
 
 from __future__ import annotations

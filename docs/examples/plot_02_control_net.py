@@ -3,7 +3,7 @@ How a control net is laid out
 =============================
 
 The control points of an order-:math:`n` patch sit over the domain as the nodes of the
-paper's graph (Fig. 1, ``fig:oriented_graph``; Fig. 8, ``fig:associated_control_net``):
+paper's graph (Fig. 1, ``fig:oriented_graph``; Fig. 6, ``fig:associated_control_net``):
 
 * the function :math:`\\sin^a\\frac{u}{2} \\sin^b\\frac{v}{2} \\sin^c\\frac{w}{2}
   \\cdot(\\text{cosines})` sits at the barycentric point :math:`(a, b, c)/(a+b+c)`
@@ -42,10 +42,11 @@ for lab, p in zip(labels, xy):
     name = lab.control_point
     ax.plot(*p, "o", color="k" if lab.is_centre else colour[name[0]])
     ax.annotate(name, p, textcoords="offset points", xytext=(0, 7), ha="center",
-                fontsize=7)
-corners = (("u = alpha", (0, 0)), ("w = alpha", (1, 0)), ("v = alpha", (0.5, 0.87)))
-for text, p in corners:
-    ax.annotate(text, p, textcoords="offset points", xytext=(0, -18), ha="center")
+                fontsize=7, bbox=dict(fc="white", ec="none", pad=0.5, alpha=0.85))
+corners = (("u = α", (0, 0), (-12, -16)), ("w = α", (1, 0), (12, -16)),
+           ("v = α", (0.5, np.sqrt(3) / 2), (40, -4)))
+for text, p, off in corners:
+    ax.annotate(text, p, textcoords="offset points", xytext=off, ha="center")
 ax.set_aspect("equal")
 ax.axis("off")
 ax.set_title("order 3: labels over the domain, edges oriented towards the centre")

@@ -59,7 +59,7 @@ def edges(n: int) -> list[tuple[BasisLabel, BasisLabel]]:
 
 
 def net_edges(n: int) -> list[tuple[int, int]]:
-    """The edges of the control net of order n (Fig. 1, ``fig:oriented_graph``, and Fig. 8,
+    """The edges of the control net of order n (Fig. 1, ``fig:oriented_graph``, and Fig. 6,
     ``fig:associated_control_net``) as directed pairs ``(from, to)`` of row indices of the net (the order of
     :func:`~paper_repro.core.labels.united_system`; a corner or the centre named by two colours is one row).
 

@@ -473,7 +473,7 @@ class Patch:
 
 
     def plot(self, ax=None, net: bool = True, surface: bool = True, resolution: int = 24,
-             surface_color: str = "#c8c8c8", net_color: str = "#1f5fbf", labels: bool = False):
+             surface_color: str = "#d8d8d8", net_color: str = "#1f5fbf", labels: bool = False):
         """Draw the patch and its control net in 3-D with matplotlib, as Fig. 7 (``fig:third_order_patch``) does.
 
         Parameters
@@ -517,7 +517,7 @@ class Patch:
             verts, faces = self.mesh(resolution)
             ax.plot_trisurf(verts[:, 0], verts[:, 1], verts[:, 2], triangles=faces, color=surface_color,
                             shade=True, lightsource=LightSource(azdeg=315, altdeg=45), linewidth=0,
-                            antialiased=True, alpha=0.9)
+                            antialiased=True, edgecolor="none", alpha=0.9)
         if net:
             for a, b in net_edges(self.n):
                 ax.plot(*pts[[a, b]].T, color=net_color, lw=1.0)
