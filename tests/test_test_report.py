@@ -33,7 +33,7 @@ def test_reused_and_rerun_claims_are_told_apart():
     page = summary_html({"dimension": reused, "symmetry": rerun})
     assert "reused (make reproduce, same code)" in page and "code fingerprint abc123" in page
     assert "re-run in this report" in page
-    assert "<b>1 claims re-run</b> in this report (symmetry)" in page and "<b>1 reused</b> (dimension)" in page
+    assert "<b>1 claim re-run</b> in this report (symmetry)" in page and "<b>1 reused</b> (dimension)" in page
 
 
 def test_report_reuses_only_results_of_the_same_code(tmp_path, monkeypatch):
