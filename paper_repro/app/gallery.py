@@ -76,7 +76,7 @@ def math_html(text: str) -> str:
     out, last = [], 0
 
     def plain(t: str) -> str:
-        return re.sub(r"\bpi\b", "π", re.sub(r"\balpha\b", "α", html.escape(t)))
+        return re.sub(r"(?<![A-Za-z_])pi\b", "π", re.sub(r"\balpha\b", "α", html.escape(t)))  # 2pi/3 -> 2π/3
 
     for m in _MATH_TOKEN.finditer(text):
         tex = m.group(1) or m.group(2)
@@ -310,7 +310,7 @@ def figure_order(manifest: list[dict]) -> list[dict]:
 #: Captions of the interactive views (what they show and how they were made).
 VIEW_CAPTIONS = {
     "torus": "Fig. 8 of the paper, interactive: part of the ring torus (μ = 3, ρ = (1+√5)/2·μ, α = π/2) by 12 "
-             "second-order patches, with the control net of the toroidal triangle of Example exmp:torus (hide or show "
+             "second-order patches, with the control net of the toroidal triangle of Example 6.1 (hide or show "
              "it by clicking its entry in the legend, top left).",
     "dupin": "Fig. 9 of the paper, interactive: the ring Dupin cyclide (a = 6, b = 4√2, c = 2, μ = 3) by 32 rational "
              "second-order patches, α = π/2.",
