@@ -754,9 +754,9 @@ def badge_html(block: Block, linker: Linker, errata_ids: dict[str, list[str]] | 
                 meaning = KIND_MEANING.get(str(e[key]), "") if key == "proof_kind" else ""
                 rows.append(f"<div>{key.replace('_', ' ')}: {linker.words(str(e[key]))}"
                             f"{' (' + html.escape(meaning) + ')' if meaning else ''}</div>")
-        for key in ("holds_as_printed", "corrected_holds"):
+        for key, what in (("holds_as_printed", "as printed"), ("corrected_holds", "as corrected")):
             if e.get(key) is not None:
-                rows.append(f"<div>{key.replace('_', ' ')}: {html.escape(str(e[key]))}</div>")
+                rows.append(f"<div>{what}: {'holds' if e[key] else 'fails'}</div>")
         checks = [w for w in re.findall(r"[A-Za-z][\w-]*", str(e.get("check") or "")) if w in linker.claims]
         if checks:
             rows.append("<div>test: " + ", ".join(linker.test(c) for c in dict.fromkeys(checks)) + "</div>")
@@ -829,6 +829,28 @@ window.addEventListener('load',fitDisplays);window.addEventListener('resize',fit
 """
 
 
+def unique_ids(body: str) -> str:
+    """Every element id once: a ``\\label`` inside a statement or display whose element already carries that label
+    as its id left an empty ``<span id=...>`` behind -- dropped; any other repeated id gets ``-2``, ``-3``, ...
+
+    >>> unique_ids('<div id="a"><span id="a"></span><p id="b"></p><p id="b"></p></div>')
+    '<div id="a"><p id="b"></p><p id="b-2"></p></div>'
+    """
+    seen: dict[str, int] = {}
+
+    def one(m: re.Match) -> str:
+        ident = html.unescape(m.group(2))
+        if ident not in seen:
+            seen[ident] = 1
+            return m.group(0)
+        if m.group(3) is not None:  # an empty anchor span: the id is already on the page
+            return ""
+        seen[ident] += 1
+        return f'{m.group(1)}id="{html.escape(f"{ident}-{seen[ident]}")}"{m.group(4) or ""}'
+
+    return re.sub(r'(<\w+\b[^>]*?\s)id="([^"]*)"(?:(></span>)|([^>]*>))', one, body)
+
+
 def build(source: str, index: list[dict], manifest: list[dict], claims: list[dict], pmap: dict,
           lines: dict | None, errata: list[dict]) -> tuple[str, dict]:
     """(the page, a summary: badges by status, unplaced entries and errata, math conversion counts)."""
@@ -850,6 +872,7 @@ def build(source: str, index: list[dict], manifest: list[dict], claims: list[dic
         for st in re.findall(r'data-status="([^"]+)"', badges):  # one tally: the badges on the page
             counts[st] = counts.get(st, 0) + 1
         body = body.replace(placeholder, badges, 1)
+    body = unique_ids(body)
     displays = sum(1 for b in r.blocks if b.kind == "display")
     toc = "".join(f'<li><a href="#{html.escape(b.anchor)}">{b.title}</a></li>' for b in r.blocks
                   if b.kind == "heading")
