@@ -31,10 +31,12 @@ extensions = ["sphinx.ext.autodoc", "sphinx.ext.napoleon", "sphinx.ext.mathjax",
               "sphinx_gallery.gen_gallery", "api_check", "plain_math"]
 source_suffix = {".rst": "restructuredtext", ".md": "markdown"}
 myst_enable_extensions = ["dollarmath", "amsmath"]
-exclude_patterns = ["_build", "_vendor", "_ext", "README.md", "examples"]
+exclude_patterns = ["_build", "_vendor", "_ext", "_css", "README.md", "examples"]
 html_theme = "furo"
 html_title = f"paper_repro {release}"
-html_static_path = ["_vendor"]
+html_static_path = ["_vendor", "_css"]
+html_css_files = ["paper_repro.css"]   # no page wider than its window (long formulas, tables, code scroll in a box)
+html_js_files = ["wide_math.js"]
 mathjax_path = "mathjax/tex-chtml.js"  # relative to _static: the vendored copy, never a CDN
 html_show_sourcelink = False
 autodoc_member_order = "bysource"

@@ -298,3 +298,38 @@ def test_proof_pages_render_their_formulas_as_math(tmp_path):
         assert left == [], (md.name, left[:5])
         if "for_all_n" in md.name or md.name == "proof_of_closed_forms.md":  # the proof pages carry formulas
             assert parser.math >= 20, (md.name, parser.math)
+
+
+def _chromium_or_skip():
+    from paper_repro.app import check_gallery
+
+    if not (check_gallery.find(check_gallery.CHROMIUM) and check_gallery.find(check_gallery.DRIVER)):
+        pytest.skip(check_gallery.HOW_TO_GET)
+
+
+def test_width_check_finds_an_overflow_and_accepts_a_scroll_box(tmp_path):
+    """make check-docs: a formula wider than the window fails; the same inside its own scrolling box passes."""
+    _chromium_or_skip()
+    from paper_repro.app.check_docs import check
+
+    wide = tmp_path / "wide.html"
+    wide.write_text('<!DOCTYPE html><html><body><p><span style="white-space:nowrap">' + "x + " * 600
+                    + "</span></p></body></html>")
+    boxed = tmp_path / "boxed.html"
+    boxed.write_text('<!DOCTYPE html><html><body><div style="overflow-x:auto"><span style="white-space:nowrap">'
+                     + "x + " * 600 + "</span></div></body></html>")
+    records = check([wide, boxed], widths=(1024,))
+    assert [r["ok"] for r in records] == [False, True], records
+
+
+@pytest.mark.slow
+def test_no_page_wider_than_its_window(tmp_path):
+    """Every page that exists in this clone (the docs site once `make docs` has run, reports/tests.html once `make
+    report` has, the gallery, the annotated paper) at 1024, 1280 and 1920 px."""
+    _chromium_or_skip()
+    from paper_repro.app.check_docs import check, pages
+
+    found = pages()
+    assert any(p.name == "index.html" and p.parent.name == "figures" for p in found)
+    bad = [(r["page"], r["width"], r["document"], r["overflow"][:2]) for r in check(found) if not r["ok"]]
+    assert bad == []

@@ -807,7 +807,7 @@ figcaption{font-size:93%}.regen{margin-top:0.3em;color:#444}
 .badge summary{cursor:pointer}.badge>div{margin:2px 0 2px 1em}
 .badge.ok{background:#e6f4e6;border:1px solid #8c8}.badge.err{background:#fde8e8;border:1px solid #d88}
 .badge.exc{background:#eef0f8;border:1px solid #99b}.badge.none{background:#f4f4f4;border:1px solid #bbb;color:#555}
-table.pair{border-collapse:collapse;margin:3px 0 3px 1em;max-width:95%}
+table.pair{border-collapse:collapse;margin:3px 0 3px 1em;display:block;overflow-x:auto;max-width:calc(100% - 1em)}
 table.pair td,table.pair th{border:1px solid #caa;padding:2px 6px;vertical-align:top;overflow-x:auto}
 .pass{color:#060}.fail{color:#b00}.summary td,.summary th{border:1px solid #ccc;padding:2px 8px}
 .summary{border-collapse:collapse}.fn{font-size:90%;color:#555}.answers{font-family:sans-serif;font-size:90%}
