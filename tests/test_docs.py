@@ -59,6 +59,7 @@ def test_every_docs_page_is_in_the_site():
 def test_site_in_headless_chromium(tmp_path):
     pytest.importorskip("sphinx")
     pytest.importorskip("myst_parser")
+    pytest.importorskip("sphinx_gallery")  # runs the examples at every build (the docs extra; in the lock)
     from paper_repro.app import check_gallery
 
     if not (check_gallery.find(check_gallery.CHROMIUM) and check_gallery.find(check_gallery.DRIVER)):
@@ -283,6 +284,7 @@ def test_proof_pages_render_their_formulas_as_math(tmp_path):
     pages added later) is built; none may show an index `x_{..}`/`x_k` or a power `x^k` outside math."""
     pytest.importorskip("sphinx")
     pytest.importorskip("myst_parser")
+    pytest.importorskip("sphinx_gallery")  # runs the examples at every build (the docs extra; in the lock)
     out = tmp_path / "html"
     proc = subprocess.run([sys.executable, "-m", "sphinx", "-q", "-W", "--keep-going", "-b", "html", str(DOCS),
                            str(out)], capture_output=True, text=True)
