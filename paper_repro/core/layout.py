@@ -52,9 +52,8 @@ def edges(n: int) -> list[tuple[BasisLabel, BasisLabel]]:
             for i in range(j, 2 * n - j):  # side edge between i and i+1, oriented towards i = n
                 a, b = BasisLabel(color, n, i, j), BasisLabel(color, n, i + 1, j)
                 out.append((a, b) if i < n else (b, a))
-            for i in range(j + 1, 2 * n - j):  # inward edge to level j+1
-                if j + 1 <= i <= 2 * n - j - 1:
-                    out.append((BasisLabel(color, n, i, j), BasisLabel(color, n, i, j + 1)))
+            for i in range(j + 1, 2 * n - j):  # inward edge to level j+1: the inner nodes j+1 <= i <= 2n-j-1
+                out.append((BasisLabel(color, n, i, j), BasisLabel(color, n, i, j + 1)))
     return out
 
 
