@@ -46,6 +46,7 @@ sphinx_gallery_conf = {
     "examples_dirs": "examples",
     "gallery_dirs": "auto_examples",
     "filename_pattern": r"/plot_",          # run every example (all are named plot_*.py)
+    "run_stale_examples": True,             # at every build, not only when the script changed (the library may)
     "within_subsection_order": "FileNameSortKey",
     "abort_on_example_error": False,        # run them all, then fail the build naming every broken one
     "only_warn_on_example_error": False,

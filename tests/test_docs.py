@@ -48,6 +48,7 @@ def test_examples_fit_the_column_and_are_linked():
     assert "```python" not in tutorial
     conf = (DOCS / "conf.py").read_text(encoding="utf-8")
     assert "sphinx_gallery.gen_gallery" in conf and '"only_warn_on_example_error": False' in conf
+    assert '"run_stale_examples": True' in conf  # an unchanged script runs again: the library under it may change
 
 
 def test_every_docs_page_is_in_the_site():
