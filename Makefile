@@ -27,7 +27,7 @@ ifneq ($(filter-out 3.11,$(PYVER)),)
 export PAPER_REPRO_CACHE ?= $(CURDIR)/$(VENV)/cache
 endif
 
-.PHONY: mutate-lines mutate-code test-cpus test-bits-other-cpu venv lock report paper check-paper check-gallery test-min test-pythons test-wheel docs reproduce reproduce-extended test test-all bench bench-coefficients bench-question1 figures lint clean distclean
+.PHONY: check-docs mutate-lines mutate-code test-cpus test-bits-other-cpu venv lock report paper check-paper check-gallery test-min test-pythons test-wheel docs reproduce reproduce-extended test test-all bench bench-coefficients bench-question1 figures lint clean distclean
 
 # The environment: the exact versions of requirements.lock (what `make reproduce` was run with, so
 # figures stay byte-identical), then the package itself without resolving anything.  A failed install
@@ -144,6 +144,9 @@ paper: $(STAMP)                ## the annotated paper paper/index.html (needs ..
 
 check-paper: $(STAMP)          ## open paper/index.html in headless chromium: badges resolve, no errors/requests
 	$(PY) -m paper_repro.app.check_paper
+
+check-docs: $(STAMP)           ## every docs page, reports/tests.html, the gallery and the annotated paper at 1024/1280/1920 px in headless chromium: none wider than its window (screenshots: build/check-docs/)
+	$(PY) -m paper_repro.app.check_docs --shots
 
 check-gallery: $(STAMP)        ## open figures/index.html in headless chromium; installs nothing unless INSTALL=1
 	$(PY) -m paper_repro.app.check_gallery $(if $(INSTALL),--install)

@@ -43,6 +43,9 @@ _PUBLIC: dict[str, tuple[str, str, bool]] = {
     "delta": ("paper_repro.core.labels", "delta", False),
     "parse_label": ("paper_repro.core.labels", "parse_label", False),
     "united_system": ("paper_repro.core.labels", "united_system", False),
+    "barycentric": ("paper_repro.core.layout", "barycentric", False),
+    "net_edges": ("paper_repro.core.layout", "net_edges", False),
+    "position": ("paper_repro.core.layout", "position", False),
     "LabelledNet": ("paper_repro.core.nets", "LabelledNet", False),
     "coefficients": ("paper_repro.core.normalization", "coefficients", True),
     "evaluate_normalized": ("paper_repro.core.normalization", "evaluate_normalized", True),
@@ -54,6 +57,7 @@ _PUBLIC: dict[str, tuple[str, str, bool]] = {
     "export_mesh": ("paper_repro.surfaces.mesh", "export_mesh", False),
     "Patch": ("paper_repro.surfaces.patch", "Patch", False),
     "merge_meshes": ("paper_repro.surfaces.patch", "merge_meshes", False),
+    "triangle_grid": ("paper_repro.surfaces.patch", "triangle_grid", False),
     "bezier_limit": ("paper_repro.theory.limits", "bezier_limit", False),
     "accepts_alpha_text": ("paper_repro.util.validation", "accepts_alpha_text", False),
     "parse_alpha": ("paper_repro.util.validation", "parse_alpha", False),
@@ -77,8 +81,10 @@ def __dir__() -> list[str]:
     return sorted(set(globals()) | set(_PUBLIC))
 
 
-__all__ = ["LabelledNet", "Patch", "RationalAngle", "RationalPoints", "__version__", "basis_derivative",
-           "bezier_limit", "bezier_nodes", "bezier_triangle", "coefficients", "delta", "elevate", "elevation_matrix",
-           "evaluate", "evaluate_normalized", "export_mesh", "fit", "fit_least_squares", "get_context",
-           "merge_meshes", "parse_alpha", "parse_label", "product_matrix", "rational_alpha", "sample_points",
-           "sample_rational_points", "transformation_matrix", "united_system"]
+
+__all__ = ["LabelledNet", "Patch", "RationalAngle", "RationalPoints", "__version__", "barycentric", "basis_derivative",
+           "bezier_limit", "bezier_nodes", "bezier_triangle", "coefficients", "delta", "elevate",
+           "elevation_matrix", "evaluate", "evaluate_normalized", "export_mesh", "fit", "fit_least_squares",
+           "get_context", "merge_meshes", "net_edges", "parse_alpha", "parse_label", "position",
+           "product_matrix", "rational_alpha", "sample_points", "sample_rational_points",
+           "transformation_matrix", "triangle_grid", "united_system"]

@@ -9,8 +9,15 @@ settings.register_profile("repro", derandomize=True, deadline=None, max_examples
                           suppress_health_check=[HealthCheck.too_slow])
 settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "repro"))
 
+#: The absolute path of --html (make report), kept from the start of the session.
+HTML_PATH = pytest.StashKey[str | None]()
+
 
 def pytest_configure(config):
+    # the report's path, made absolute now: a test that changes the working directory must not move the status
+    # script of make report (written at the session's end) away from reports/
+    html = config.getoption("htmlpath", None)
+    config.stash[HTML_PATH] = os.path.abspath(html) if html else None
     config.addinivalue_line("markers", "other_env: builds another environment (a wheel's venv, other interpreters), "
                             "minutes each: run by make test-all, make test-wheel, make test-pythons; left out of "
                             "make report")
@@ -75,7 +82,7 @@ def pytest_sessionfinish(session, exitstatus):
         if proc.poll() is None:
             proc.terminate()
             proc.wait()
-    html_path = session.config.getoption("htmlpath", None)
+    html_path = session.config.stash.get(HTML_PATH, None)
     if not html_path:
         return
     from paper_repro.app.test_report import write_status

@@ -126,7 +126,7 @@ def test_annotated_paper_in_headless_chromium():
     from paper_repro.app import check_gallery, check_paper
 
     if not (check_gallery.find(check_gallery.CHROMIUM) and check_gallery.find(check_gallery.DRIVER)):
-        pytest.skip("no chromium/chromedriver on this machine: run `make check-gallery` (installs Debian's chromium)")
+        pytest.skip(check_gallery.HOW_TO_GET)
     ap.write_paper()
     res = check_paper.check()
     assert check_paper.passed(res), res
@@ -286,3 +286,21 @@ def test_badge_says_what_its_proof_kind_means():
     assert "proof kind: exhaustive (exact and complete for the range named in &#x27;how&#x27; only" in html_
     block.entries[0] = {**entry, "proof_kind": "proof"}
     assert "settles everything the line states" in ap.badge_html(block, ap.Linker({}, set(), {}))
+
+
+def test_every_element_id_once_and_verdicts_in_words():
+    """A \\label inside a statement whose box already carries it as its id (prop:x) gave two elements with one id;
+    the erratum boxes said True/False: now "as printed: fails", "as corrected: holds"."""
+    lines = _mini2_lines()
+    lines["lines"][3].update(holds_as_printed=False, corrected_holds=True)
+    page, _ = ap.build(MINI2, [], [], [], {}, lines, [])
+    ids = re.findall(r'\bid="([^"]*)"', page)
+    assert sorted(i for i in set(ids) if ids.count(i) > 1) == [] and "prop:x" in ids
+    assert "as printed: fails" in page and "as corrected: holds" in page
+    assert not re.search(r">[^<]*\b(True|False)\b[^<]*<", page)
+
+
+def test_or_keeps_its_space_after_a_parenthesis():
+    """Eq. (sign_sin_power_derivative): "(p<j)\\ \\text{or }(..." read "(p<j)or" -- a space on each side now."""
+    out = ap.mathml(r"\left(  p<j\right)  \ \text{or }\left(  p-j\right)", False)
+    assert "<mspace" in out and "or&#x000A0;" in out

@@ -18,15 +18,37 @@ ROOT = Path(__file__).resolve().parent.parent
 DOCS = ROOT / "docs"
 
 
-def test_tutorial_runs(tmp_path, monkeypatch):
-    blocks = re.findall(r"```python\n(.*?)```", (DOCS / "guide" / "tutorial.md").read_text(encoding="utf-8"), re.S)
-    assert len(blocks) >= 7
+EXAMPLES = sorted((DOCS / "examples").glob("plot_*.py"))
+
+
+@pytest.mark.parametrize("script", EXAMPLES, ids=[p.stem for p in EXAMPLES])
+def test_example_runs(script, tmp_path, monkeypatch):
+    """Every example of the tutorial runs as written (``make docs`` runs them too, and fails on a broken one)."""
+    pytest.importorskip("matplotlib")
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
     monkeypatch.chdir(tmp_path)
-    scope: dict = {"__name__": "tutorial"}
-    for k, code in enumerate(blocks):
-        exec(compile(code, f"tutorial.md block {k + 1}", "exec"), scope)
-    assert (tmp_path / "sphere_octant.obj").is_file()
-    assert (tmp_path / "sphere_octant.stl").stat().st_size > 0 and (tmp_path / "sphere_octant.vtu").is_file()
+    try:
+        exec(compile(script.read_text(encoding="utf-8"), str(script), "exec"), {"__name__": "__main__"})
+    finally:
+        plt.close("all")
+
+
+def test_examples_fit_the_column_and_are_linked():
+    """Code of at most 88 characters a line (the column of the site), every example linked from the tutorial,
+    and no code block left in the tutorial that the build would not run."""
+    assert len(EXAMPLES) >= 8
+    wide = [f"{p.name}:{k}" for p in EXAMPLES for k, line in enumerate(p.read_text().splitlines(), 1) if len(line) > 88]
+    assert wide == []
+    tutorial = (DOCS / "guide" / "tutorial.md").read_text(encoding="utf-8")
+    assert [p.stem for p in EXAMPLES if f"auto_examples/{p.stem}.rst" not in tutorial] == []
+    assert "```python" not in tutorial
+    conf = (DOCS / "conf.py").read_text(encoding="utf-8")
+    assert "sphinx_gallery.gen_gallery" in conf and '"only_warn_on_example_error": False' in conf
+    assert '"run_stale_examples": True' in conf  # an unchanged script runs again: the library under it may change
 
 
 def test_every_docs_page_is_in_the_site():
@@ -38,6 +60,7 @@ def test_every_docs_page_is_in_the_site():
 def test_site_in_headless_chromium(tmp_path):
     pytest.importorskip("sphinx")
     pytest.importorskip("myst_parser")
+    pytest.importorskip("sphinx_gallery")  # runs the examples at every build (the docs extra; in the lock)
     from paper_repro.app import check_gallery
 
     if not (check_gallery.find(check_gallery.CHROMIUM) and check_gallery.find(check_gallery.DRIVER)):
@@ -262,6 +285,7 @@ def test_proof_pages_render_their_formulas_as_math(tmp_path):
     pages added later) is built; none may show an index `x_{..}`/`x_k` or a power `x^k` outside math."""
     pytest.importorskip("sphinx")
     pytest.importorskip("myst_parser")
+    pytest.importorskip("sphinx_gallery")  # runs the examples at every build (the docs extra; in the lock)
     out = tmp_path / "html"
     proc = subprocess.run([sys.executable, "-m", "sphinx", "-q", "-W", "--keep-going", "-b", "html", str(DOCS),
                            str(out)], capture_output=True, text=True)
@@ -277,3 +301,38 @@ def test_proof_pages_render_their_formulas_as_math(tmp_path):
         assert left == [], (md.name, left[:5])
         if "for_all_n" in md.name or md.name == "proof_of_closed_forms.md":  # the proof pages carry formulas
             assert parser.math >= 20, (md.name, parser.math)
+
+
+def _chromium_or_skip():
+    from paper_repro.app import check_gallery
+
+    if not (check_gallery.find(check_gallery.CHROMIUM) and check_gallery.find(check_gallery.DRIVER)):
+        pytest.skip(check_gallery.HOW_TO_GET)
+
+
+def test_width_check_finds_an_overflow_and_accepts_a_scroll_box(tmp_path):
+    """make check-docs: a formula wider than the window fails; the same inside its own scrolling box passes."""
+    _chromium_or_skip()
+    from paper_repro.app.check_docs import check
+
+    wide = tmp_path / "wide.html"
+    wide.write_text('<!DOCTYPE html><html><body><p><span style="white-space:nowrap">' + "x + " * 600
+                    + "</span></p></body></html>")
+    boxed = tmp_path / "boxed.html"
+    boxed.write_text('<!DOCTYPE html><html><body><div style="overflow-x:auto"><span style="white-space:nowrap">'
+                     + "x + " * 600 + "</span></div></body></html>")
+    records = check([wide, boxed], widths=(1024,))
+    assert [r["ok"] for r in records] == [False, True], records
+
+
+@pytest.mark.slow
+def test_no_page_wider_than_its_window(tmp_path):
+    """Every page that exists in this clone (the docs site once `make docs` has run, reports/tests.html once `make
+    report` has, the gallery, the annotated paper) at 1024, 1280 and 1920 px."""
+    _chromium_or_skip()
+    from paper_repro.app.check_docs import check, pages
+
+    found = pages()
+    assert any(p.name == "index.html" and p.parent.name == "figures" for p in found)
+    bad = [(r["page"], r["width"], r["document"], r["overflow"][:2]) for r in check(found) if not r["ok"]]
+    assert bad == []

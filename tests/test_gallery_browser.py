@@ -1,5 +1,5 @@
 """The gallery in a real browser (headless Chromium): images load, 3D views draw, no console error, no
-network request.  Skipped, saying why, where no Chromium can be had (`make check-gallery` installs it)."""
+network request.  Skipped, saying why, where no Chromium can be had (`make check-gallery INSTALL=1` installs it)."""
 
 import pytest
 
@@ -9,7 +9,7 @@ from paper_repro.util.io import FIGURES
 
 def test_gallery_in_headless_chromium(tmp_path):
     if not (check_gallery.find(check_gallery.CHROMIUM) and check_gallery.find(check_gallery.DRIVER)):
-        pytest.skip("no chromium/chromedriver on this machine: run `make check-gallery` (installs Debian's chromium)")
+        pytest.skip(check_gallery.HOW_TO_GET)
     res = check_gallery.check(FIGURES / "index.html", tmp_path / "gallery.png")
     assert res["images"] >= 17 and not res["images_not_loaded"], res
     assert set(res["views"]) == {"view-torus", "view-dupin", "view-third", "view-slider"} and not res["views_blank"]
@@ -37,7 +37,7 @@ def test_clipped_view_and_missing_legend_are_caught(tmp_path):
     import json
 
     if not (check_gallery.find(check_gallery.CHROMIUM) and check_gallery.find(check_gallery.DRIVER)):
-        pytest.skip("no chromium/chromedriver on this machine: run `make check-gallery` (installs Debian's chromium)")
+        pytest.skip(check_gallery.HOW_TO_GET)
     mesh = {"type": "mesh3d", "x": [0, 1, 0, 0], "y": [0, 0, 1, 0], "z": [0, 0, 0, 1], "i": [0, 0, 0, 1],
             "j": [1, 1, 2, 2], "k": [2, 3, 3, 3], "color": "#4c78a8", "name": "net (toggle)"}
     near = {"margin": {"l": 0, "r": 0, "t": 30, "b": 0}, "height": 400, "title": "a plain-string title",

@@ -1,5 +1,7 @@
 """`make report`: the claim summary shows statements, kinds, ranges and measured values, linked to the paper."""
 
+import os
+from pathlib import Path
 from types import SimpleNamespace
 
 from paper_repro.app.test_report import properties_of, summary_html
@@ -33,7 +35,7 @@ def test_reused_and_rerun_claims_are_told_apart():
     page = summary_html({"dimension": reused, "symmetry": rerun})
     assert "reused (make reproduce, same code)" in page and "code fingerprint abc123" in page
     assert "re-run in this report" in page
-    assert "<b>1 claims re-run</b> in this report (symmetry)" in page and "<b>1 reused</b> (dimension)" in page
+    assert "<b>1 claim re-run</b> in this report (symmetry)" in page and "<b>1 reused</b> (dimension)" in page
 
 
 def test_report_reuses_only_results_of_the_same_code(tmp_path, monkeypatch):
@@ -109,3 +111,52 @@ def test_report_note_becomes_the_link_in_chromium(tmp_path):
         driver.quit()
     assert "make report writes it" in before[0] and before[1] == [] and console_before == []
     assert after[1] == ["../reports/tests.html"] and "3 passed" in after[0] and "1 reused" in after[0], after
+
+
+def test_a_report_run_writes_the_status_script(tmp_path):
+    """A pytest run with --html (what make report does) leaves reports/tests-status.js beside the report, with the
+    counts: the gallery's and the annotated paper's note becomes the link.  The path is given relative to the
+    working directory, as the Makefile gives it."""
+    import subprocess
+    import sys
+
+    import pytest
+
+    pytest.importorskip("pytest_html")
+    root = Path(__file__).resolve().parent.parent
+    out = tmp_path / "reports" / "tests.html"
+    rel = os.path.relpath(out, root)
+    proc = subprocess.run([sys.executable, "-m", "pytest", "-q", "-p", "no:cacheprovider", "-p", "no:randomly",
+                           "tests/test_net_layout.py::test_net_edges_by_hand", f"--html={rel}",
+                           "--self-contained-html"], cwd=root, capture_output=True, text=True, timeout=300)
+    assert proc.returncode == 0, proc.stdout[-2000:] + proc.stderr[-2000:]
+    status = (tmp_path / "reports" / "tests-status.js").read_text(encoding="utf-8")
+    assert "2 passed" in status and "reports/tests.html" in status
+
+
+def test_real_gallery_links_the_report_once_written(tmp_path):
+    """The committed gallery page itself (not a stand-in): after the status script is written, its note is the link."""
+    import shutil
+
+    import pytest
+
+    from paper_repro.app import check_gallery
+    from paper_repro.app.test_report import write_status
+
+    if not (check_gallery.find(check_gallery.CHROMIUM) and check_gallery.find(check_gallery.DRIVER)):
+        pytest.skip(check_gallery.HOW_TO_GET)
+    root = Path(__file__).resolve().parent.parent
+    if not (root / "figures" / "index.html").is_file():
+        pytest.skip("figures/index.html not generated (make reproduce)")
+    shutil.copytree(root / "figures", tmp_path / "figures")
+    write_status(tmp_path / "reports" / "tests.html", {"passed": 3}, {})
+    (tmp_path / "reports" / "tests.html").write_text("<html></html>")
+    driver = check_gallery.make_driver(1280, 900)
+    try:
+        driver.get((tmp_path / "figures" / "index.html").as_uri())
+        links = driver.execute_script("return [...document.querySelectorAll('span.test-report a')]"
+                                      ".map(a => a.getAttribute('href'))")
+        text = driver.execute_script("return document.body.textContent")
+    finally:
+        driver.quit()
+    assert links == ["../reports/tests.html"] and "not built" not in text

@@ -754,9 +754,9 @@ def badge_html(block: Block, linker: Linker, errata_ids: dict[str, list[str]] | 
                 meaning = KIND_MEANING.get(str(e[key]), "") if key == "proof_kind" else ""
                 rows.append(f"<div>{key.replace('_', ' ')}: {linker.words(str(e[key]))}"
                             f"{' (' + html.escape(meaning) + ')' if meaning else ''}</div>")
-        for key in ("holds_as_printed", "corrected_holds"):
+        for key, what in (("holds_as_printed", "as printed"), ("corrected_holds", "as corrected")):
             if e.get(key) is not None:
-                rows.append(f"<div>{key.replace('_', ' ')}: {html.escape(str(e[key]))}</div>")
+                rows.append(f"<div>{what}: {'holds' if e[key] else 'fails'}</div>")
         checks = [w for w in re.findall(r"[A-Za-z][\w-]*", str(e.get("check") or "")) if w in linker.claims]
         if checks:
             rows.append("<div>test: " + ", ".join(linker.test(c) for c in dict.fromkeys(checks)) + "</div>")
@@ -807,7 +807,7 @@ figcaption{font-size:93%}.regen{margin-top:0.3em;color:#444}
 .badge summary{cursor:pointer}.badge>div{margin:2px 0 2px 1em}
 .badge.ok{background:#e6f4e6;border:1px solid #8c8}.badge.err{background:#fde8e8;border:1px solid #d88}
 .badge.exc{background:#eef0f8;border:1px solid #99b}.badge.none{background:#f4f4f4;border:1px solid #bbb;color:#555}
-table.pair{border-collapse:collapse;margin:3px 0 3px 1em;max-width:95%}
+table.pair{border-collapse:collapse;margin:3px 0 3px 1em;display:block;overflow-x:auto;max-width:calc(100% - 1em)}
 table.pair td,table.pair th{border:1px solid #caa;padding:2px 6px;vertical-align:top;overflow-x:auto}
 .pass{color:#060}.fail{color:#b00}.summary td,.summary th{border:1px solid #ccc;padding:2px 8px}
 .summary{border-collapse:collapse}.fn{font-size:90%;color:#555}.answers{font-family:sans-serif;font-size:90%}
@@ -827,6 +827,28 @@ function fitDisplays(){document.querySelectorAll('.display .math').forEach(funct
   m.dataset.scale=(size/base).toFixed(2);});}
 window.addEventListener('load',fitDisplays);window.addEventListener('resize',fitDisplays);
 """
+
+
+def unique_ids(body: str) -> str:
+    """Every element id once: a ``\\label`` inside a statement or display whose element already carries that label
+    as its id left an empty ``<span id=...>`` behind -- dropped; any other repeated id gets ``-2``, ``-3``, ...
+
+    >>> unique_ids('<div id="a"><span id="a"></span><p id="b"></p><p id="b"></p></div>')
+    '<div id="a"><p id="b"></p><p id="b-2"></p></div>'
+    """
+    seen: dict[str, int] = {}
+
+    def one(m: re.Match) -> str:
+        ident = html.unescape(m.group(2))
+        if ident not in seen:
+            seen[ident] = 1
+            return m.group(0)
+        if m.group(3) is not None:  # an empty anchor span: the id is already on the page
+            return ""
+        seen[ident] += 1
+        return f'{m.group(1)}id="{html.escape(f"{ident}-{seen[ident]}")}"{m.group(4) or ""}'
+
+    return re.sub(r'(<\w+\b[^>]*?\s)id="([^"]*)"(?:(></span>)|([^>]*>))', one, body)
 
 
 def build(source: str, index: list[dict], manifest: list[dict], claims: list[dict], pmap: dict,
@@ -850,6 +872,7 @@ def build(source: str, index: list[dict], manifest: list[dict], claims: list[dic
         for st in re.findall(r'data-status="([^"]+)"', badges):  # one tally: the badges on the page
             counts[st] = counts.get(st, 0) + 1
         body = body.replace(placeholder, badges, 1)
+    body = unique_ids(body)
     displays = sum(1 for b in r.blocks if b.kind == "display")
     toc = "".join(f'<li><a href="#{html.escape(b.anchor)}">{b.title}</a></li>' for b in r.blocks
                   if b.kind == "heading")

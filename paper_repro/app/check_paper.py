@@ -134,7 +134,7 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--page", type=Path, default=PAGE)
     args = ap.parse_args(argv)
     if not (find(CHROMIUM) and find(DRIVER)):
-        print("check-paper: no chromium/chromedriver on this machine (make check-gallery installs them)",
+        print("check-paper: no chromium/chromedriver on this machine (`make check-gallery INSTALL=1` installs them)",
               file=sys.stderr)
         return NO_BROWSER
     if not args.page.exists():

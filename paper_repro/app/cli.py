@@ -156,7 +156,7 @@ COMPUTES = ("claims", "figures", "reproduce", "paper")
 
 
 def _check_environment(args: argparse.Namespace) -> None:
-    """Refuse, before any work, what would make the run fail late (issue 31): a bad ``PAPER_REPRO_KERNEL`` or
+    """Refuse, before any work, what would make the run fail late: a bad ``PAPER_REPRO_KERNEL`` or
     ``PAPER_REPRO_THREADS``, an ``--out`` that is empty, a file or not writable, the output root of a command that
     writes when it is not writable, and an unwritable cache folder.  ``ValueError`` with one line."""
     import os

@@ -76,7 +76,7 @@ def math_html(text: str) -> str:
     out, last = [], 0
 
     def plain(t: str) -> str:
-        return re.sub(r"\bpi\b", "π", re.sub(r"\balpha\b", "α", html.escape(t)))
+        return re.sub(r"(?<![A-Za-z_])pi\b", "π", re.sub(r"\balpha\b", "α", html.escape(t)))  # 2pi/3 -> 2π/3
 
     for m in _MATH_TOKEN.finditer(text):
         tex = m.group(1) or m.group(2)
@@ -196,7 +196,10 @@ def _mesh_trace(verts: np.ndarray, faces: np.ndarray, color: str, name: str, opa
     r = lambda a: [float(f"{x:.5g}") for x in a]  # noqa: E731 -- compact, deterministic numbers
     return {"type": "mesh3d", "x": r(verts[:, 0]), "y": r(verts[:, 1]), "z": r(verts[:, 2]),
             "i": faces[:, 0].tolist(), "j": faces[:, 1].tolist(), "k": faces[:, 2].tolist(), "color": color,
-            "opacity": opacity, "name": name, "showlegend": legend, "flatshading": False}
+            "opacity": opacity, "name": name, "showlegend": legend, "flatshading": False,
+            # soft light: mostly ambient and diffuse, little specular (the default's highlights and dark sides
+            # turned the cyclide's inner faces into a dark blob)
+            "lighting": {"ambient": 0.85, "diffuse": 0.45, "specular": 0.02, "roughness": 0.9, "fresnel": 0.02}}
 
 
 def _net_trace(net: np.ndarray, edges: list[tuple[int, int]], name: str) -> dict:
@@ -236,17 +239,19 @@ def views() -> dict[str, dict]:
     with mpmath.workdps(30):
         params = {"a": mpmath.mpf(6), "b": mpmath.sqrt(32), "c": mpmath.mpf(2), "mu": mpmath.mpf(3)}
     cyc = cyclide_pieces(al, params, phases, phases)
-    out["dupin"] = {"data": [_mesh_trace(*p.patch.mesh(8), palette[k % 8], f"patch {k + 1}", legend=False)
+    out["dupin"] = {"data": [_mesh_trace(*p.patch.mesh(16), palette[k % 8], f"patch {k + 1}", legend=False)
                              for k, p in enumerate(cyc)],
                     "layout": {**layout, "title": {"text": "Dupin cyclide: 32 rational second-order patches"}}}
     net = third_order_net()
     p3 = Patch(3, np.pi / 2, net)
     out["third"] = {"data": [_mesh_trace(*p3.mesh(24), "#9ecae1", "order-3 patch"),
                              _net_trace(net, net_edges(3), "control net (toggle)")],
-                    # the net's apex and the patch's front corner reach far: the eye of the other views cut the
-                    # patch off at the bottom; from further away (same direction) all of it is in the frame
-                    "layout": {**layout, "title": {"text": "Third-order patch (α = π/2) and its 37-point control net"},
-                               "scene": {**layout["scene"], "camera": {"eye": {"x": 1.3, "y": -1.3, "z": 0.95}}}}}
+                    # a taller view, orthographic and zoomed: the net's apex reaches far up, the
+                    # patch's front corner far forward (in perspective it was cut off), and from the other views'
+                    # distance the patch filled a third of the frame
+                    "layout": {**layout, "height": 640,
+                               "title": {"text": "Third-order patch (α = π/2) and its 37-point control net"},
+                               "scene": {**layout["scene"], **_ortho(np.vstack([p3.mesh(24)[0], net]), 1.8)}}}
     # alpha slider: one order-2 net, the patch for several alpha
     net2 = _order2_net()
     alphas = [0.2, 0.6, 1.0, 1.4, np.pi / 2, 2.0, 2.4, 2.8, 3.1]
@@ -262,19 +267,26 @@ def views() -> dict[str, dict]:
     allv = np.vstack([np.c_[fr["data"][0]["x"], fr["data"][0]["y"], fr["data"][0]["z"]] for fr in frames] + [net2])
     lo, hi = allv.min(axis=0), allv.max(axis=0)
     pad = 0.05 * (hi - lo).max()
-    span = hi - lo + 2 * pad
     axes = {f"{ax}axis": {"visible": False, "range": [float(f"{lo[k] - pad:.4g}"), float(f"{hi[k] + pad:.4g}")]}
             for k, ax in enumerate("xyz")}
-    scene = {**layout["scene"], **axes, "aspectmode": "manual",
-             "aspectratio": {ax: float(f"{span[k] / span.max():.4g}") for k, ax in enumerate("xyz")},
-             "domain": {"x": [0, 1], "y": [0.2, 1]}, "camera": {"eye": {"x": 1.35, "y": -1.35, "z": 1.0}}}
+    scene = {**layout["scene"], **axes, **_ortho(allv, 1.5), "domain": {"x": [0, 1], "y": [0.16, 1]}}
     out["slider"] = {"data": frames[4]["data"] + [_net_trace(net2, net_edges(2), "control net (toggle)")],
                      "frames": frames,
-                     "layout": {**layout, "height": 600, "scene": scene,
+                     "layout": {**layout, "height": 680, "scene": scene,
                                 "title": {"text": "One order-2 control net, the patch as α varies"},
                                 "sliders": [{"active": 4, "steps": steps, "currentvalue": {"prefix": "α = "},
                                              "y": 0.02, "yanchor": "bottom", "len": 0.95, "x": 0.025}]}}
     return out
+
+
+def _ortho(points: np.ndarray, zoom: float) -> dict:
+    """Scene settings: orthographic projection, the box of ``points`` in true proportions, ``zoom`` times plotly's
+    default size (in an orthographic projection plotly zooms by the aspect ratio, not by the camera's distance)."""
+    span = np.ptp(points, axis=0)
+    span = np.maximum(span, 1e-9 * span.max())
+    return {"aspectmode": "manual",
+            "aspectratio": {ax: float(f"{zoom * span[k] / span.max():.4g}") for k, ax in enumerate("xyz")},
+            "camera": {"eye": {"x": 0.95, "y": -0.95, "z": 0.7}, "projection": {"type": "orthographic"}}}
 
 
 def _order2_net() -> np.ndarray:
@@ -310,7 +322,7 @@ def figure_order(manifest: list[dict]) -> list[dict]:
 #: Captions of the interactive views (what they show and how they were made).
 VIEW_CAPTIONS = {
     "torus": "Fig. 8 of the paper, interactive: part of the ring torus (μ = 3, ρ = (1+√5)/2·μ, α = π/2) by 12 "
-             "second-order patches, with the control net of the toroidal triangle of Example exmp:torus (hide or show "
+             "second-order patches, with the control net of the toroidal triangle of Example 6.1 (hide or show "
              "it by clicking its entry in the legend, top left).",
     "dupin": "Fig. 9 of the paper, interactive: the ring Dupin cyclide (a = 6, b = 4√2, c = 2, μ = 3) by 32 rational "
              "second-order patches, α = π/2.",

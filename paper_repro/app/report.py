@@ -194,7 +194,7 @@ class TaskRunner:
         order = sorted(range(len(batch)), key=lambda k: -self.predict(batch[k]))
         t0 = time.perf_counter()
         out = sweep(timed, [batch[k] for k in order], executor=self.executor, initializer=load_all,
-                    desc=f"tasks, round {self.rounds}:", label=lambda task: task.label)
+                    desc=f"tasks, round {self.rounds}", label=lambda task: task.label)
         wall = time.perf_counter() - t0
         results: list[Any] = [None] * len(batch)
         for k, (res, task_wall, cpu) in zip(order, out):

@@ -114,7 +114,8 @@ def summary_html(ran: dict[str, dict]) -> str:
             rows.append(claim_row(by_id[cid], "data/claims.json (not re-run)", index))
     reused = sorted(cid for cid, r in ran.items() if r.get("reused"))
     rerun = sorted(cid for cid, r in ran.items() if not r.get("reused"))
-    how = (f"<p><b>{len(rerun)} claims re-run</b> in this report ({html.escape(', '.join(rerun)) or 'none'}); "
+    claims_word = "claim" if len(rerun) == 1 else "claims"
+    how = (f"<p><b>{len(rerun)} {claims_word} re-run</b> in this report ({html.escape(', '.join(rerun)) or 'none'}); "
            f"<b>{len(reused)} reused</b> ({html.escape(', '.join(reused)) or 'none'}): their results were in the claim "
            "cache under the same id, parameters and code fingerprint (the sha256 of every source file of the "
            f"package: {html.escape(', '.join(sorted({r['reused'] for r in ran.values() if r.get('reused')})))}), "

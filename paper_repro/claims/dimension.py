@@ -4,7 +4,7 @@ Three independent counts are compared for every n in the range:
 
 1. the printed closed form ``3n(n+1) + 1``;
 2. the printed index sum of the proof, ``1 + 3 sum_{j=0}^{n-1} sum_{i=j}^{2n-1-j} 1``;
-3. the number of *distinct* functions in R_{2n} u G_{2n} u B_{2n} built from the full systems
+3. the number of *distinct* functions in the union of R_{2n}, G_{2n} and B_{2n} built from the full systems
    (eqs. R_system..B_system, (n+1)^2 labels each), identified by their exponent vectors --
    i.e. the set the graph describes, without using the index ranges of eq. united_system.
 
@@ -25,7 +25,7 @@ def distinct_functions(n: int) -> int:
 
 @claim("dimension", paper_ref=["joint_systems_linear_independence", "united_system", "dimension"],
        statement="T_{2n} has delta_n = 3n(n+1)+1 functions: the printed closed form, the printed index "
-                 "sum and the number of distinct functions of R_{2n} u G_{2n} u B_{2n} agree, "
+                 "sum and the number of distinct functions of the union of R_{2n}, G_{2n} and B_{2n} agree, "
                  "for n = {n_min}..{n_max}.",
        kind="proof", n_min=1, n_max=50)
 def run(n_min: int, n_max: int) -> Outcome:

@@ -182,9 +182,21 @@ def elevation_matrix(n: int, alpha) -> np.ndarray:
     """E as a float64 array, ``(delta_{n+1}, delta_n)``, from the closed form (no solve): exact (then rounded) for a
     :class:`RationalAngle`, for a float alpha every entry a sum of non-negative terms in kappa = cos(alpha/2) and
     sin^2(alpha/2) (taken correctly rounded from flint), so E >= 0 and rows sum to 1 to rounding for every alpha in
-    (0, pi), with the same bits on every CPU.
+    (0, pi), with the same bits on every CPU (Theorem P of docs/elevation_and_derivative_for_all_n.md).
 
-    ``n`` from 1 to :data:`~paper_repro.util.limits.MAX_N_ELEVATION` (time and memory: see the README table).
+    Parameters
+    ----------
+    n : int
+        The order of the net to elevate, from 1 to :data:`~paper_repro.util.limits.MAX_N_ELEVATION` (time and
+        memory of each n: the table of docs/domain_of_validity.md).
+    alpha : float, str or RationalAngle
+        The shape parameter in (0, pi): a number, text such as ``"pi/2"``, or a
+        :class:`~paper_repro.core.domain.RationalAngle` (then the entries are exact before the one rounding).
+
+    Returns
+    -------
+    numpy.ndarray
+        ``E`` with ``delta_{n+1}`` rows and ``delta_n`` columns: ``E @ net`` is the net of order n + 1.
 
     >>> e = elevation_matrix(2, 1.0)
     >>> e.shape, bool(abs(e.sum(axis=1) - 1).max() < 1e-15), bool(e.min() >= 0)

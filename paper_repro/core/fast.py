@@ -18,7 +18,7 @@ Threads: the blocks are independent, so they run on a pool of threads (numpy rel
 with a single-threaded BLAS (``threadpoolctl``).  A block is computed by the same operations in the same
 order whichever thread runs it and however many threads there are, so the result is the same to the last
 bit with 1 or k threads (tested).  The thin ``(block, delta_n) x (delta_n, d)`` products are not worth
-splitting: with a multi-threaded BLAS the threads wait on each other as soon as a core is busy (issue 21).
+splitting: with a multi-threaded BLAS the threads wait on each other as soon as a core is busy.
 ``PAPER_REPRO_THREADS`` sets the number of threads (default: the CPUs this process may use).
 
 >>> import numpy as np

@@ -465,13 +465,15 @@ def v_to_t_float_alpha_min(n: int) -> float:
 
 def transformation_matrix(n: int, alpha, direction: str = "V_to_T", *, normalized: bool = True,
                           arith: str | Context | None = None, dps: int = 50) -> np.ndarray:
-    """The basis transformation between V_n^alpha and T-bar_{2n}^alpha (Question 7.2), for every n.
+    """The basis transformation between :math:`V_n^\\alpha` and :math:`\\bar T_{2n}^\\alpha` (Question 7.2), every n.
 
-    ``direction``: ``'V_to_T'`` gives M with V_n = T-bar M (column v: the v-th function of V_n in T-bar; ``M @ a``
-    turns Fourier coefficients into control coefficients); ``'T_to_V'`` gives M^{-1} with T-bar = V_n M^{-1}
-    (``M^{-1} @ net`` turns a control net into Fourier coefficients).  Rows/columns: T-bar in the order of
-    :func:`~paper_repro.core.labels.united_system`, V_n in the order of :func:`~paper_repro.core.fourier.v_labels`.
-    ``normalized=False``: the same for the unnormalized T_{2n} (V_n = T N^{-1}, T = V_n N).
+    ``direction``: ``'V_to_T'`` gives :math:`M` with :math:`V_n = \\bar T_{2n} M` (column v: the v-th function of
+    :math:`V_n` in :math:`\\bar T_{2n}`; ``M @ a`` turns Fourier coefficients into control coefficients);
+    ``'T_to_V'`` gives :math:`M^{-1}` with :math:`\\bar T_{2n} = V_n M^{-1}` (``M^{-1} @ net`` turns a control net
+    into Fourier coefficients).  Rows/columns: :math:`\\bar T_{2n}` in the order of
+    :func:`~paper_repro.core.labels.united_system`, :math:`V_n` in the order of
+    :func:`~paper_repro.core.fourier.v_labels`.  ``normalized=False``: the same for the unnormalized
+    :math:`T_{2n}` (:math:`V_n = T_{2n} N^{-1}`, :math:`T_{2n} = V_n N`).
 
     ``alpha``: a :class:`~paper_repro.core.domain.RationalAngle` (then exact: an object array of flint ``fmpq``) or a
     real number in (0, pi) (then float64, bit-stable); ``arith`` overrides the arithmetic (``'float'``, ``'exact'``,

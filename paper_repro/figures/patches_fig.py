@@ -76,7 +76,7 @@ def make_third_order(outdir: Path) -> list[Path]:
 @figure("torus", paper_label="fig:torus", outputs=["torus.png"],
         caption="Part of the ring torus (mu = 3, rho = (1+sqrt5)/2 mu, alpha = pi/2) by 12 smoothly joined second "
                 "order patches, opaque, one colour each (join gap measured in claim patch_properties); the control "
-                "net of the toroidal triangle of Example exmp:torus (computed; it differs from the printed one in "
+                "net of the toroidal triangle of Example 6.1 (computed; it differs from the printed one in "
                 "b_{4,3,1}.x) in black, its hidden parts dashed.")
 def make_torus(outdir: Path) -> list[Path]:
     al = np.pi / 2

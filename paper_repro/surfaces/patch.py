@@ -472,6 +472,67 @@ class Patch:
         return mesh_of(self, resolution, bool(normals))
 
 
+    def plot(self, ax=None, net: bool = True, surface: bool = True, resolution: int = 24,
+             surface_color: str = "#d8d8d8", net_color: str = "#1f5fbf", labels: bool = False):
+        """Draw the patch and its control net in 3-D with matplotlib, as Fig. 7 (``fig:third_order_patch``) does.
+
+        Parameters
+        ----------
+        ax : matplotlib 3-D axes, optional
+            Where to draw; a new figure with one 3-D axes when omitted.
+        net : bool
+            Draw the control points and the edges of the net (:func:`~paper_repro.core.layout.net_edges`).
+        surface : bool
+            Draw the surface, a :meth:`mesh` of ``resolution`` steps a side, shaded.
+        resolution : int
+            Steps a side of the surface's mesh.
+        surface_color, net_color : str
+            Matplotlib colours of the surface and of the net.
+        labels : bool
+            Write each control point's paper label (``r_{6,5,0}``, ...) next to it.
+
+        Returns
+        -------
+        The matplotlib axes (``mpl_toolkits.mplot3d.Axes3D``), its aspect ratio equal on the three axes.
+
+        >>> import numpy as np, matplotlib
+        >>> matplotlib.use("Agg")
+        >>> from paper_repro.core.labels import delta
+        >>> ax = Patch(1, "pi/2", np.random.default_rng(0).normal(size=(delta(1), 3))).plot()
+        >>> len(ax.lines), len(ax.collections)   # 9 edges; the surface and the points
+        (9, 2)
+        """
+        if self.dimension != 3:
+            raise ValueError(f"plot draws 3-D nets, this one is {self.dimension}-D")
+        import matplotlib.pyplot as plt
+        from matplotlib.colors import LightSource
+
+        from paper_repro.core.labels import united_system
+        from paper_repro.core.layout import net_edges
+
+        if ax is None:
+            ax = plt.figure(figsize=(6, 5)).add_subplot(projection="3d")
+        pts = np.asarray(self.net, dtype=np.float64)
+        if surface:
+            verts, faces = self.mesh(resolution)
+            ax.plot_trisurf(verts[:, 0], verts[:, 1], verts[:, 2], triangles=faces, color=surface_color,
+                            shade=True, lightsource=LightSource(azdeg=315, altdeg=45), linewidth=0,
+                            antialiased=True, edgecolor="none", alpha=0.9)
+        if net:
+            for a, b in net_edges(self.n):
+                ax.plot(*pts[[a, b]].T, color=net_color, lw=1.0)
+            ax.scatter(*pts.T, color=net_color, s=14, depthshade=False)
+            if labels:
+                for lab, p in zip(united_system(self.n), pts):
+                    ax.text(*p, f" {lab.control_point}", fontsize=7)
+        shown = [pts] + ([verts] if surface else [])
+        lo, hi = np.min([x.min(axis=0) for x in shown], axis=0), np.max([x.max(axis=0) for x in shown], axis=0)
+        ax.set_xlim(lo[0], hi[0]), ax.set_ylim(lo[1], hi[1]), ax.set_zlim(lo[2], hi[2])
+        ax.set_box_aspect(np.maximum(hi - lo, 1e-9 * max(float((hi - lo).max()), 1.0)))
+        ax.set_xlabel("x"), ax.set_ylabel("y"), ax.set_zlabel("z")
+        return ax
+
+
 def check_curve_parameter(t, alpha: float) -> np.ndarray:
     """``t`` as a float64 array of real, finite values in ``[0, alpha]`` (within the domain tolerance);
     ``TypeError``/``ValueError`` naming ``t`` otherwise (NaN gave NaN points, complex values raw errors).
@@ -498,9 +559,18 @@ def check_curve_parameter(t, alpha: float) -> np.ndarray:
 
 
 def triangle_grid(resolution: int) -> tuple[np.ndarray, np.ndarray]:
-    """Barycentric grid points ``(V, 3)`` and faces ``(F, 3)`` of a triangle with ``resolution`` steps a side."""
+    """Barycentric grid points ``(V, 3)`` and faces ``(F, 3)`` of a triangle with ``resolution`` steps a side:
+    ``(r + 1)(r + 2)/2`` points ``(i/r, j/r, 1 - (i + j)/r)`` and ``r^2`` faces (the grid of :meth:`Patch.mesh`;
+    map the rows to :math:`\\Omega^\\alpha` with ``alpha * bary`` or use :meth:`Patch.at_barycentric`).
+
+    >>> bary, faces = triangle_grid(2)
+    >>> bary.tolist()
+    [[0.0, 0.0, 1.0], [0.0, 0.5, 0.5], [0.0, 1.0, 0.0], [0.5, 0.0, 0.5], [0.5, 0.5, 0.0], [1.0, 0.0, 0.0]]
+    >>> faces.tolist()
+    [[0, 3, 1], [3, 4, 1], [1, 4, 2], [3, 5, 4]]
+    """
     r = check_int(resolution, "resolution", 1, MAX_MESH_RESOLUTION,
-                  why="(r+1)(r+2)/2 vertices and 2 r^2 faces; the budget is about 0.5 M vertices")
+                  why="(r+1)(r+2)/2 vertices and r^2 faces; the budget is about 0.5 M vertices")
     rows = np.arange(r + 1)
     length = r + 1 - rows                                   # points on row i: j = 0..r-i
     offset = np.concatenate([[0], np.cumsum(length)[:-1]])  # id(i, j) = offset[i] + j
