@@ -74,3 +74,23 @@ def test_bad_nets_and_weights():
         Patch(1, 1.0, np.zeros((7, 3)), weights=-np.ones(7))
     with pytest.raises(ValueError, match="weights"):
         Patch(1, 1.0, np.zeros((7, 3)), weights=np.zeros(7))
+
+
+def test_claim_order_elevation_reads_the_printed_rows_from_the_transcription():
+    """No retyped copy of Example exmp:degree_elevation_from_1_to_2: a changed transcribed weight changes the printed
+    matrix the claim compares with the exact elevation."""
+    from flint import fmpq
+
+    from paper_repro.claims.order_elevation import printed_matrix
+    from paper_repro.core.domain import rational_alpha
+    from paper_repro.core.elevation import elevation_matrix_exact
+    from paper_repro.printed.lines import substituted, verbatim
+
+    a = rational_alpha(fmpq(1, 3))
+    exact = elevation_matrix_exact(1, a)
+    assert printed_matrix(a) == [list(r) for r in exact]
+    lid = "sec7-elev-r430"
+    text = verbatim(lid)
+    assert "\\frac{1}{2}" in text
+    with substituted({lid: text.replace("\\frac{1}{2}", "\\frac{1}{3}", 1)}):
+        assert printed_matrix(a) != [list(r) for r in exact]

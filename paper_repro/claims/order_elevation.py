@@ -9,8 +9,7 @@ from flint import fmpq
 
 from paper_repro.core.domain import rational_alpha, sample_points
 from paper_repro.core.elevation import elevate, elevation_matrix_exact
-from paper_repro.core.labels import delta, index_of, united_system
-from paper_repro.printed.limits import printed_elevation_rows
+from paper_repro.core.labels import delta, united_system
 from paper_repro.surfaces.patch import Patch
 from paper_repro.util.measured import bound, sig
 from paper_repro.util.registry import Outcome, claim
@@ -22,13 +21,13 @@ def _q(x) -> fmpq:
 
 
 def printed_matrix(alpha) -> list[list[fmpq]]:
+    """The printed elevation 1 -> 2 of Example exmp:degree_elevation_from_1_to_2 at ``alpha``, parsed from the
+    transcribed lines ``sec7-elev-*`` (:func:`paper_repro.claims.lines.sec7.printed_elevation_matrix`; no retyped
+    copy)."""
+    from paper_repro.claims.lines.sec7 import printed_elevation_matrix
+
     c2, s2 = alpha.cos_half**2, alpha.sin_half**2
-    i1, i2 = index_of(1), index_of(2)
-    mat = [[fmpq(0)] * delta(1) for _ in range(delta(2))]
-    for lab, terms in printed_elevation_rows(c2, s2).items():
-        for wt, l1 in terms:
-            mat[i2[lab]][i1[l1]] += _q(wt)
-    return mat
+    return [[_q(x) for x in row] for row in printed_elevation_matrix(c2, s2, fmpq)]
 
 
 def node_distance(net: np.ndarray, n: int, alpha: float) -> float:
