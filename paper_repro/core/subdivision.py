@@ -50,6 +50,7 @@ from flint import arb, arb_mat, fmpq, fmpq_mat
 from paper_repro.core.context import BallContext, Context, ExactContext, MpContext, get_context, to_fmpq_mat
 from paper_repro.core.domain import RationalAngle
 from paper_repro.core.fourier import v_system
+from paper_repro.core.labels import delta
 from paper_repro.core.nets import check_net, check_net_exact
 from paper_repro.core.ordered import ordered_matmul
 from paper_repro.core.transformation import transformation_in_context
@@ -441,8 +442,14 @@ def subdivision_matrices(n: int, alpha, arith: str | Context | None = None, *, d
             return tuple(np.array([[mpmath.mpf(m[i, j].mid().str(int(bits / 3.3) + 5, radius=False))
                                     for j in range(m.ncols())] for i in range(m.nrows())], dtype=object)
                          for m in mats)
-    a = float(alpha)
-    return tuple(x.copy() for x in _float_matrices(n, a))
+    return tuple(x.copy() for x in _float_matrices(n, float(alpha)))
+
+
+def _shared(n: int, alpha, ctx: Context, dps: int) -> tuple[np.ndarray, ...]:
+    """:func:`subdivision_matrices` without the copy of the cached float matrices (read-only; internal use)."""
+    if not ctx.exact and type(ctx).__name__ == "FloatContext":
+        return _float_matrices(n, float(alpha))
+    return subdivision_matrices(n, alpha, ctx, dps=dps)
 
 
 def subdivision_matrix(n: int, alpha, part: str, arith: str | Context | None = None, *, dps: int = 50) -> np.ndarray:
@@ -502,8 +509,19 @@ def subdivide(net, n: int, alpha, arith: str | Context | None = None, *, dps: in
     alpha = _check_alpha(alpha)
     ctx = _context(arith, alpha, dps)
     arr = _checked_net(net, n, ctx.exact, arith)
-    mats = subdivision_matrices(n, alpha, ctx, dps=dps)
+    if type(ctx).__name__ == "FloatContext":  # one fixed-order product with the four matrices stacked
+        d = delta(n)
+        out = ordered_matmul(_stacked_float(n, float(alpha)), arr)
+        return SubNets(*(out[k * d:(k + 1) * d] for k in range(4)))
+    mats = _shared(n, alpha, ctx, dps)
     return SubNets(*(_apply(m, arr) for m in mats))
+
+
+@lru_cache(maxsize=32)
+def _stacked_float(n: int, alpha: float) -> np.ndarray:
+    out = np.vstack(_float_matrices(n, alpha))
+    out.setflags(write=False)
+    return out
 
 
 def subdivide_to_depth(net, n: int, alpha, k: int, arith: str | Context | None = None, *, dps: int = 50
@@ -525,7 +543,7 @@ def subdivide_to_depth(net, n: int, alpha, k: int, arith: str | Context | None =
     level: dict[tuple[str, ...], np.ndarray] = {(): _checked_net(net, n, ctx.exact, arith)}
     a = alpha
     for step in range(k):
-        mats = subdivision_matrices(n, a, ctx, dps=dps)
+        mats = _shared(n, a, ctx, dps)
         level = {path + (part,): _apply(m, arr) for path, arr in level.items() for part, m in zip(PARTS, mats)}
         if step + 1 < k:
             a = half_alpha(a)
