@@ -37,6 +37,9 @@ _PUBLIC: dict[str, tuple[str, str, bool]] = {
     "rational_alpha": ("paper_repro.core.domain", "rational_alpha", False),
     "sample_points": ("paper_repro.core.domain", "sample_points", False),
     "sample_rational_points": ("paper_repro.core.domain", "sample_rational_points", False),
+    "subdivide": ("paper_repro.core.subdivision", "subdivide", True),
+    "subdivide_to_depth": ("paper_repro.core.subdivision", "subdivide_to_depth", True),
+    "subdivision_matrix": ("paper_repro.core.subdivision", "subdivision_matrix", True),
     "elevate": ("paper_repro.core.elevation", "elevate", False),
     "elevation_matrix": ("paper_repro.core.elevation", "elevation_matrix", False),
     "product_matrix": ("paper_repro.core.half_angle_matrices", "product_matrix", True),
@@ -81,4 +84,5 @@ __all__ = ["LabelledNet", "Patch", "RationalAngle", "RationalPoints", "__version
            "bezier_limit", "bezier_nodes", "bezier_triangle", "coefficients", "delta", "elevate", "elevation_matrix",
            "evaluate", "evaluate_normalized", "export_mesh", "fit", "fit_least_squares", "get_context",
            "merge_meshes", "parse_alpha", "parse_label", "product_matrix", "rational_alpha", "sample_points",
-           "sample_rational_points", "transformation_matrix", "united_system"]
+           "sample_rational_points", "subdivide", "subdivide_to_depth", "subdivision_matrix", "transformation_matrix",
+           "united_system"]

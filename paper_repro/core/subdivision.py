@@ -47,7 +47,15 @@ import mpmath
 import numpy as np
 from flint import arb, arb_mat, fmpq, fmpq_mat
 
-from paper_repro.core.context import BallContext, Context, ExactContext, MpContext, get_context, to_fmpq_mat
+from paper_repro.core.context import (
+    BallContext,
+    Context,
+    ExactContext,
+    FloatContext,
+    MpContext,
+    get_context,
+    to_fmpq_mat,
+)
 from paper_repro.core.domain import RationalAngle
 from paper_repro.core.fourier import v_system
 from paper_repro.core.labels import delta
@@ -447,7 +455,7 @@ def subdivision_matrices(n: int, alpha, arith: str | Context | None = None, *, d
 
 def _shared(n: int, alpha, ctx: Context, dps: int) -> tuple[np.ndarray, ...]:
     """:func:`subdivision_matrices` without the copy of the cached float matrices (read-only; internal use)."""
-    if not ctx.exact and type(ctx).__name__ == "FloatContext":
+    if isinstance(ctx, FloatContext):
         return _float_matrices(n, float(alpha))
     return subdivision_matrices(n, alpha, ctx, dps=dps)
 
@@ -484,11 +492,12 @@ def _apply(mat: np.ndarray, net: np.ndarray) -> np.ndarray:
     return mat.dot(net)
 
 
-def _checked_net(net, n: int, ctx_exact: bool, arith) -> np.ndarray:
-    if ctx_exact:
+def _checked_net(net, n: int, ctx: Context) -> np.ndarray:
+    """The net validated (:func:`~paper_repro.core.nets.check_net`); exact entries as fmpq, mp/ball ones kept."""
+    if ctx.exact:
         arr = check_net_exact(net, n)
         return np.array([[ExactContext().convert(x) for x in row] for row in arr], dtype=object)
-    if arith is not None and get_context(arith).name in ("mp", "ball"):
+    if isinstance(ctx, (MpContext, BallContext)):
         return check_net_exact(net, n)
     return check_net(net, n)
 
@@ -508,8 +517,8 @@ def subdivide(net, n: int, alpha, arith: str | Context | None = None, *, dps: in
     n = _check_n(n)
     alpha = _check_alpha(alpha)
     ctx = _context(arith, alpha, dps)
-    arr = _checked_net(net, n, ctx.exact, arith)
-    if type(ctx).__name__ == "FloatContext":  # one fixed-order product with the four matrices stacked
+    arr = _checked_net(net, n, ctx)
+    if isinstance(ctx, FloatContext):  # one fixed-order product with the four matrices stacked
         d = delta(n)
         out = ordered_matmul(_stacked_float(n, float(alpha)), arr)
         return SubNets(*(out[k * d:(k + 1) * d] for k in range(4)))
@@ -540,7 +549,7 @@ def subdivide_to_depth(net, n: int, alpha, k: int, arith: str | Context | None =
     alpha = _check_alpha(alpha)
     k = check_int(k, "k", 0, MAX_DEPTH, why="4^k sub-nets")
     ctx = _context(arith, alpha, dps)
-    level: dict[tuple[str, ...], np.ndarray] = {(): _checked_net(net, n, ctx.exact, arith)}
+    level: dict[tuple[str, ...], np.ndarray] = {(): _checked_net(net, n, ctx)}
     a = alpha
     for step in range(k):
         mats = _shared(n, a, ctx, dps)
