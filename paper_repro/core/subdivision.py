@@ -471,8 +471,8 @@ def subdivision_matrix(n: int, alpha, part: str, arith: str | Context | None = N
     ``alpha``: a real number in (0, pi) or a :class:`~paper_repro.core.domain.RationalAngle`; ``arith``: ``'float'``
     (default for a real alpha; every entry within 2^-60 + half an ulp of the exact value, certified), ``'mp'``
     (``dps`` digits, certified), ``'ball'`` (balls at the context's precision) or ``'exact'`` (default for a
-    RationalAngle; flint ``fmpq``).  ``n`` from 1 to :data:`MAX_N_SUBDIVISION`.  Every row sums to 1 (partition of unity on both sides);
-    S has negative entries (not a corner-cutting scheme, docs/subdivision_for_all_n.md).
+    RationalAngle; flint ``fmpq``).  ``n`` from 1 to :data:`MAX_N_SUBDIVISION`.  Every row sums to 1 (partition
+    of unity on both sides); S has negative entries (not a corner-cutting scheme, docs/subdivision_for_all_n.md).
 
     >>> import numpy as np
     >>> s = subdivision_matrix(2, 1.0, "u")
