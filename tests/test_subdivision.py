@@ -226,3 +226,24 @@ def test_timings_measured(capsys):
     warm4 = (time.perf_counter() - t0) / 20
     with capsys.disabled():
         print(f"\nsubdivision n = 4: cold {cold4 * 1e3:.1f} ms, subdivide warm {warm4 * 1e3:.2f} ms")
+
+
+def test_ball_contains_exact_and_mp_subdivide():
+    from flint import arb
+
+    from paper_repro.core.context import BallContext
+
+    alpha = rational_alpha("1/2")
+    exact = subdivision_matrices(2, alpha, "exact")
+    ctx = BallContext(prec=300)
+    balls = subdivision_matrices(2, alpha, ctx)
+    with ctx.scope():  # the exact values as (exact or 300-bit) balls
+        for e, b in zip(exact, balls):
+            assert all(isinstance(y, arb) and y.overlaps(arb(int(x.p)) / int(x.q)) and y.rad() < 1e-60
+                       for x, y in zip(e.reshape(-1), b.reshape(-1)))
+    net = np.random.default_rng(1).normal(size=(delta(2), 2))
+    with mpmath.workdps(30):
+        parts = subdivide(net.tolist(), 2, mpmath.mpf(1), "mp", dps=30)
+    flo = subdivide(net, 2, 1.0)
+    for p, f in zip(parts, flo):
+        assert np.abs(np.array(p, dtype=float) - f).max() < 1e-14
