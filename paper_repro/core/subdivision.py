@@ -23,9 +23,10 @@ cancels: in float64 it loses every digit (measured: n = 4 at alpha = 0.1 has an 
 9e-5).  Hence no float64 route: ``'float'`` and ``'mp'`` compute S in ball arithmetic (python-flint ``arb``) at a
 precision raised until every entry is certified to ``2^-60`` (float) or ``2^-(prec + 10)`` (mp), then round the
 midpoints; the float64 result is within 2^-60 plus half an ulp of the exact S, entry by entry, for every n and
-alpha accepted (measured: at most 5.3e-17 from 30-digit mp for n <= 6 at alpha = 1e-3, 1, pi - 1e-3).
-Cost: the balls take seconds at n = 10 (measured cold, loaded machine: n = 6 0.8-2 s).  ``'ball'`` returns the
-balls at the context's own precision (their radii say what is known).
+alpha accepted (measured: at most 5.6e-17 from 30-digit mp for n <= 10 at alpha = 1e-3, 1, pi - 1e-3).
+Cost (cold, loaded machine, tools/subdivision_accuracy.py): n = 4 0.5 s, n = 6 1-2 s, n = 10 16-35 s (the issue's
+target of 50 ms at n = 10 needs a direct rule: open).  ``'ball'`` returns the balls at the context's own precision
+(their radii say what is known).
 ``'exact'`` needs a :class:`~paper_repro.core.domain.RationalAngle` (rational tan(alpha/4), so s = sin(alpha/2) and
 c = cos(alpha/2) are rational); cos(alpha/4) = sqrt((1 + c)/2) need not be rational, so the computation runs in the
 field Q(sqrt((1 + c)/2)) (:class:`QuadNumber`) and the result is checked to be rational (it always was: S has entries
