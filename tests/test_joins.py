@@ -132,3 +132,16 @@ def test_bad_input_refused(kwargs, exc, word):
     extra = {k: args.pop(k) for k in ("lam", "mu") if k in args}
     with pytest.raises(exc, match=word):
         c1_second_row(args["net"], args["n"], args["alpha"], args["edge"], args["neighbour"], **extra)
+
+
+@pytest.mark.parametrize("n, alpha", [(1, 0.7), (2, 1.3), (3, 2.9)])
+def test_subdivision_pieces_join_c1(n, alpha):
+    """Cross-check of subdivision and joins: the corner sub-patch 'u' and the middle one are point-reflected
+    neighbours across their edge u = 0 (u' = u - alpha/2 and u'' = alpha/2 - u), pieces of one patch: C1."""
+    from paper_repro.core.subdivision import subdivide
+
+    net = np.random.default_rng(n).normal(size=(delta(n), 3))
+    parts = subdivide(net, n, alpha)
+    for corner in ("u", "v", "w"):
+        err = edge_join_error(getattr(parts, corner), parts.middle, n, alpha / 2, corner)
+        assert err["C0"] < 1e-12 and err["C1"] < 1e-8 * (1 + 1 / alpha), (corner, err)
