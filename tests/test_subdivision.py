@@ -247,3 +247,24 @@ def test_ball_contains_exact_and_mp_subdivide():
     flo = subdivide(net, 2, 1.0)
     for p, f in zip(parts, flo):
         assert np.abs(np.array(p, dtype=float) - f).max() < 1e-14
+
+
+def test_corner_entry_closed_form_and_tool():
+    """tools/subdivision_signs.py for n = 2: the interpolated entry is the closed form of claims.subdivision
+    (c(c - 1)/(2^{n+1}(1 + c)^n((n - 1)c + n)), negative on (0, 1)), equal at all 22 alpha; a wrong form is seen."""
+    import importlib.util
+    from pathlib import Path
+
+    import sympy as sp
+
+    from paper_repro.claims.subdivision import corner_entry
+
+    path = Path(__file__).resolve().parents[1] / "tools" / "subdivision_signs.py"
+    spec = importlib.util.spec_from_file_location("subdivision_signs", path)
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    pts = mod.samples(2)
+    assert all(x == corner_entry(2, c) and x < 0 for c, x in pts)
+    c = mod.C
+    assert sp.simplify(mod.interpolate(pts) - c * (c - 1) / (8 * (1 + c) ** 2 * (c + 2))) == 0
+    assert not all(x == corner_entry(3, c) for c, x in pts)

@@ -27,7 +27,7 @@ from flint import fmpq
 
 from paper_repro.core.context import to_fmpq_mat
 from paper_repro.core.domain import RationalAngle, RationalPoints, rational_alpha, sample_rational_points
-from paper_repro.core.labels import delta, united_system
+from paper_repro.core.labels import delta, index_of, united_system
 from paper_repro.core.normalization import evaluate_normalized
 from paper_repro.core.subdivision import PARTS, subdivision_matrices
 from paper_repro.util.registry import Outcome, claim
@@ -64,8 +64,21 @@ def parent_points(sub: RationalPoints, alpha: RationalAngle, half: RationalAngle
     return RationalPoints(alpha, tuple(tu), tuple(tv))
 
 
+#: The colour whose edge is opposite each corner (u = 0 is G's edge, v = 0 R's, w = 0 B's).
+OPPOSITE = {"u": "G", "v": "R", "w": "B"}
+
+
+def corner_entry(n: int, c: fmpq) -> fmpq:
+    """The conjectured entry S_k[X_{2n,2n-1,1}, X_{2n,2n-1,0}] (X the colour of the edge opposite the corner k) for
+    n >= 2: c (c - 1) / (2^{n+1} (1 + c)^n ((n - 1) c + n)), c = cos(alpha/2) -- negative for every alpha.
+    Found by rational interpolation in c of the exact entries for n = 2, 3, 4 at 22 alpha
+    (``tools/subdivision_signs.py``); checked here exactly at the claim's alpha, not proven."""
+    return c * (c - 1) / (2 ** (n + 1) * (1 + c) ** n * ((n - 1) * c + n))
+
+
 def identity_check(n: int, t8: str, seed: int) -> dict:
-    """Check 1 and 2 at tan(alpha/8) = ``t8`` for order ``n``: exact, every part."""
+    """Check 1 and 2 at tan(alpha/8) = ``t8`` for order ``n``: exact, every part; for n >= 2 also the corner entry
+    of :func:`corner_entry`."""
     alpha, half = alphas_from_eighth(fmpq(*map(int, t8.split("/"))))
     mats = subdivision_matrices(n, alpha, "exact")
     d = delta(n)
@@ -81,6 +94,11 @@ def identity_check(n: int, t8: str, seed: int) -> dict:
         neg = int(sum(1 for x in s.reshape(-1) if x < 0))
         out["parts"][part] = {"identity": equal, "rows_sum_to_1": rows, "negative_entries": neg,
                               "most_negative": str(min(s.reshape(-1)))}
+        if part != "middle" and n >= 2:
+            idx = index_of(n)
+            x = OPPOSITE[part]
+            entry = s[idx[f"{x}_{{{2 * n},{2 * n - 1},1}}"], idx[f"{x}_{{{2 * n},{2 * n - 1},0}}"]]
+            out["parts"][part]["corner_entry_formula"] = entry == corner_entry(n, alpha.cos_half) and entry < 0
     return out
 
 
@@ -128,7 +146,10 @@ def rational_check(n: int, t: str) -> bool:
                  "docs/subdivision_for_all_n.md). Exact checks at tan(alpha/8) in {ts8}, n = 1..{n_max}: the "
                  "sub-patch equals the patch on its sub-triangle at delta_n + 3 rational points (full-rank "
                  "collocation), rows of S_k sum to 1, and the negative entries of S_k are counted (midpoint "
-                 "subdivision is not corner cutting); the n = 1 closed form of the centre rows holds at tan(alpha/4) "
+                 "subdivision is not corner cutting); for n >= 2 the corner entry S_k[X_(2n,2n-1,1), X_(2n,2n-1,0)] "
+                 "(X the colour of the opposite edge) equals c(c-1)/(2^(n+1)(1+c)^n((n-1)c+n)) < 0 (a "
+                 "conjecture for every n and alpha, checked exactly there); the n = 1 closed form of the centre rows "
+                 "holds at tan(alpha/4) "
                  "in {ts_n1}; S_k is rational at tan(alpha/4) = {t_irrational} (cos(alpha/4) irrational), n = "
                  "1..{n_rational}.",
        kind="exact-evidence", ts8=["1/20", "1/7", "1/3", "2/5"], n_max=4, ts_n1=["1/20", "1/3", "1/2", "9/10"],
@@ -138,15 +159,18 @@ def run(ts8: list[str], n_max: int, ts_n1: list[str], t_irrational: str, n_ratio
     ident_ok = all(v["rank_of_collocation"] and all(p["identity"] and p["rows_sum_to_1"] for p in v["parts"].values())
                    for v in identities.values())
     negatives = {key: {part: p["negative_entries"] for part, p in v["parts"].items()} for key, v in identities.items()}
+    entry_ok = all(p.get("corner_entry_formula", True) for v in identities.values() for p in v["parts"].values())
     corner_cutting_somewhere = any(c == 0 for v in negatives.values() for part, c in v.items() if part != "middle")
     n1 = {t: n1_closed_form(t) for t in ts_n1}
     n1_ok = all(v["corner_u_centre_row"] and v["middle_centre_row"] for v in n1.values())
     rational = {str(n): rational_check(n, t_irrational) for n in range(1, n_rational + 1)}
-    ok = ident_ok and n1_ok and all(rational.values()) and not corner_cutting_somewhere
+    ok = ident_ok and n1_ok and all(rational.values()) and not corner_cutting_somewhere and entry_ok
     measured = {
         "sub_patch_equals_patch_on_sub_triangle": ("every part, n = 1.." f"{n_max} at tan(alpha/8) in {ts8}, exact"
                                                    if ident_ok else identities),
         "negative_entries_per_part": negatives,
+        "corner_entry_c(c-1)/(2^(n+1)(1+c)^n((n-1)c+n))": (f"equal and negative in every corner, n = 2..{n_max}"
+                                                             if entry_ok else "fails"),
         "n1_closed_form_centre_rows": {t: {k: v[k] for k in ("corner_u_centre_row", "middle_centre_row")}
                                        for t, v in n1.items()},
         "n1_negative_entries": {t: v["negative_entries"] for t, v in n1.items()},
