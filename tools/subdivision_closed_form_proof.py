@@ -147,12 +147,36 @@ def negative_entries(forms: dict[str, sp.Matrix]) -> dict[str, list[str]]:
     return out
 
 
+def sign_summary(forms: dict[str, sp.Matrix]) -> dict[str, dict[str, int]]:
+    """Per part, how many entries are 0, > 0 for every c in (0, 1), < 0 for every c in (0, 1), or change sign there
+    (a root of odd multiplicity of the numerator or denominator in (0, 1); an even one keeps the sign)."""
+    out = {}
+    for part, m in forms.items():
+        counts = {"zero": 0, "positive": 0, "negative": 0, "sign_changing": 0}
+        for e in m:
+            if e == 0:
+                counts["zero"] += 1
+                continue
+            num, den = sp.fraction(sp.factor(e))
+            odd = [r for r, mult in sp.roots(sp.Poly(num * den, C), filter="R").items()
+                   if 0 < r < 1 and mult % 2] if sp.Poly(num * den, C).degree() > 0 else []
+            if odd:
+                counts["sign_changing"] += 1
+            elif e.subs(C, sp.Rational(1, 2)) > 0:
+                counts["positive"] += 1
+            else:
+                counts["negative"] += 1
+        out[part] = counts
+    return out
+
+
 if __name__ == "__main__":
     for n in [int(x) for x in sys.argv[1:]] or [1, 2]:
         forms = closed_forms(n)
         if forms is None:
             print(f"n = {n}: some entry is not a rational function of c of degree <= {MAX_DEGREE}")
             continue
+        print(f"n = {n}: signs for every alpha in (0, pi): {sign_summary(forms)}", flush=True)
         print(f"n = {n}: identity for every alpha: {prove(n, forms)}", flush=True)
         for part, entries in negative_entries(forms).items():
             print(f"  {part}: {len(entries)} entries negative for every alpha in (0, pi)")
