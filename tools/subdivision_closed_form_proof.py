@@ -158,8 +158,9 @@ def sign_summary(forms: dict[str, sp.Matrix]) -> dict[str, dict[str, int]]:
                 counts["zero"] += 1
                 continue
             num, den = sp.fraction(sp.factor(e))
-            odd = [r for r, mult in sp.roots(sp.Poly(num * den, C), filter="R").items()
-                   if 0 < r < 1 and mult % 2] if sp.Poly(num * den, C).degree() > 0 else []
+            poly = sp.Poly(num * den, C)
+            inside = [r for r in poly.real_roots() if 0 < r < 1] if poly.degree() > 0 else []  # with multiplicity
+            odd = [r for r in set(inside) if inside.count(r) % 2]
             if odd:
                 counts["sign_changing"] += 1
             elif e.subs(C, sp.Rational(1, 2)) > 0:
