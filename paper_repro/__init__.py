@@ -37,6 +37,9 @@ _PUBLIC: dict[str, tuple[str, str, bool]] = {
     "rational_alpha": ("paper_repro.core.domain", "rational_alpha", False),
     "sample_points": ("paper_repro.core.domain", "sample_points", False),
     "sample_rational_points": ("paper_repro.core.domain", "sample_rational_points", False),
+    "subdivide": ("paper_repro.core.subdivision", "subdivide", True),
+    "subdivide_to_depth": ("paper_repro.core.subdivision", "subdivide_to_depth", True),
+    "subdivision_matrix": ("paper_repro.core.subdivision", "subdivision_matrix", True),
     "elevate": ("paper_repro.core.elevation", "elevate", False),
     "elevation_matrix": ("paper_repro.core.elevation", "elevation_matrix", False),
     "product_matrix": ("paper_repro.core.half_angle_matrices", "product_matrix", True),
@@ -51,6 +54,9 @@ _PUBLIC: dict[str, tuple[str, str, bool]] = {
     "evaluate_normalized": ("paper_repro.core.normalization", "evaluate_normalized", True),
     "transformation_matrix": ("paper_repro.core.transformation", "transformation_matrix", False),
     "fit": ("paper_repro.surfaces.fitting", "fit", False),
+    "c1_second_row": ("paper_repro.surfaces.joins", "c1_second_row", True),
+    "edge_derivatives": ("paper_repro.surfaces.joins", "edge_derivatives", True),
+    "edge_join_error": ("paper_repro.surfaces.joins", "edge_join_error", True),
     "fit_least_squares": ("paper_repro.surfaces.fitting", "fit_least_squares", False),
     "bezier_nodes": ("paper_repro.surfaces.limit", "bezier_nodes", False),
     "bezier_triangle": ("paper_repro.surfaces.limit", "bezier_triangle", False),
@@ -83,8 +89,9 @@ def __dir__() -> list[str]:
 
 
 __all__ = ["LabelledNet", "Patch", "RationalAngle", "RationalPoints", "__version__", "barycentric", "basis_derivative",
-           "bezier_limit", "bezier_nodes", "bezier_triangle", "coefficients", "delta", "elevate",
-           "elevation_matrix", "evaluate", "evaluate_normalized", "export_mesh", "fit", "fit_least_squares",
-           "get_context", "merge_meshes", "net_edges", "parse_alpha", "parse_label", "position",
-           "product_matrix", "rational_alpha", "sample_points", "sample_rational_points",
-           "transformation_matrix", "triangle_grid", "united_system"]
+           "bezier_limit", "bezier_nodes", "bezier_triangle", "c1_second_row", "coefficients", "delta",
+           "edge_derivatives", "edge_join_error", "elevate", "elevation_matrix", "evaluate", "evaluate_normalized",
+           "export_mesh", "fit", "fit_least_squares", "get_context", "merge_meshes", "net_edges", "parse_alpha",
+           "parse_label", "position", "product_matrix", "rational_alpha", "sample_points", "sample_rational_points",
+           "subdivide", "subdivide_to_depth", "subdivision_matrix", "transformation_matrix", "triangle_grid",
+           "united_system"]

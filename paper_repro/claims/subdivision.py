@@ -1,0 +1,185 @@
+"""Claim ``subdivision_all_n``: midpoint subdivision of triangular trigonometric patches (issue 38, beyond the paper).
+
+The statement (proven for every n and alpha in docs/subdivision_for_all_n.md; computed by
+:mod:`paper_repro.core.subdivision`): the restriction of an order-n patch (eq. triangular_trig_surface) with parameter
+alpha to each of the four midpoint sub-triangles of Omega^alpha is an order-n patch with parameter alpha/2 and control
+net S_k P, S_k = M_{alpha/2} Rot_k M_alpha^{-1}.
+
+What the program checks, exactly, at alpha with tan(alpha/8) rational (so that both Omega^alpha and Omega^{alpha/2}
+have rational points, :func:`parent_points`):
+
+1. **the identity** T-bar^{alpha/2}(x') S_k = T-bar^alpha(x) (every column, i.e. every control net) at delta_n + 3
+   rational points x' of Omega^{alpha/2} and their images x in the sub-triangle k, with the collocation matrix
+   T-bar^{alpha/2}(x') of the first delta_n points of full rank (so the exact S_k is the unique solution of the
+   collocation system: the claim's S_k equals the collocation answer; the extra points are checks);
+2. **rows sum to 1** exactly;
+3. **signs**: the number of negative entries of each S_k and, for n = 1, which (as measured values), and the n = 1
+   closed form of issue 38 (centre rows: a = 1/(4 cos^2(alpha/4)), b = cos(alpha/2) a) against the exact S;
+4. **rationality** of S at a tan(alpha/4) where cos(alpha/4) is irrational (the route runs in Q(sqrt((1 + c)/2)) and
+   finds no irrational part).
+
+Kind: exact-evidence at the sampled alpha; the hand proof carries every n and alpha.
+"""
+
+from __future__ import annotations
+
+from flint import fmpq
+
+from paper_repro.core.context import to_fmpq_mat
+from paper_repro.core.domain import RationalAngle, RationalPoints, rational_alpha, sample_rational_points
+from paper_repro.core.labels import delta, index_of, united_system
+from paper_repro.core.normalization import evaluate_normalized
+from paper_repro.core.subdivision import PARTS, subdivision_matrices
+from paper_repro.util.registry import Outcome, claim
+
+
+def _add(a: fmpq, b: fmpq) -> fmpq:
+    """tan((x + y)/4) from tan(x/4) = a, tan(y/4) = b."""
+    return (a + b) / (1 - a * b)
+
+
+def _sub(a: fmpq, b: fmpq) -> fmpq:
+    """tan((x - y)/4) from tan(x/4) = a, tan(y/4) = b."""
+    return (a - b) / (1 + a * b)
+
+
+def alphas_from_eighth(t8: fmpq) -> tuple[RationalAngle, RationalAngle]:
+    """``(alpha, alpha/2)`` as RationalAngles from tan(alpha/8) = ``t8``: tan(alpha/4) = 2 t8 / (1 - t8^2)."""
+    return rational_alpha(2 * t8 / (1 - t8 * t8)), rational_alpha(t8)
+
+
+def parent_points(sub: RationalPoints, alpha: RationalAngle, half: RationalAngle, part: str) -> RationalPoints:
+    """The images in the sub-triangle ``part`` of Omega^alpha of rational points of Omega^{alpha/2} (``half``):
+    ``(u' + alpha/2, v', w')`` etc. or ``alpha/2 - (u', v', w')``, by the tangent addition formula of quarter angles
+    (w follows from u + v + w = alpha)."""
+    t8 = half.t
+    if part == "u":
+        tu, tv = [_add(x, t8) for x in sub.tu], list(sub.tv)
+    elif part == "v":
+        tu, tv = list(sub.tu), [_add(x, t8) for x in sub.tv]
+    elif part == "w":
+        tu, tv = list(sub.tu), list(sub.tv)
+    else:
+        tu, tv = [_sub(t8, x) for x in sub.tu], [_sub(t8, x) for x in sub.tv]
+    return RationalPoints(alpha, tuple(tu), tuple(tv))
+
+
+#: The colour whose edge is opposite each corner (u = 0 is G's edge, v = 0 R's, w = 0 B's).
+OPPOSITE = {"u": "G", "v": "R", "w": "B"}
+
+
+def corner_entry(n: int, c: fmpq) -> fmpq:
+    """The conjectured entry S_k[X_{2n,2n-1,1}, X_{2n,2n-1,0}] (X the colour of the edge opposite the corner k) for
+    n >= 2: c (c - 1) / (2^{n+1} (1 + c)^n ((n - 1) c + n)), c = cos(alpha/2) -- negative for every alpha.
+    Found by rational interpolation in c of the exact entries for n = 2, 3, 4 at 22 alpha
+    (``tools/subdivision_signs.py``); checked here exactly at the claim's alpha, not proven."""
+    return c * (c - 1) / (2 ** (n + 1) * (1 + c) ** n * ((n - 1) * c + n))
+
+
+def identity_check(n: int, t8: str, seed: int) -> dict:
+    """Check 1 and 2 at tan(alpha/8) = ``t8`` for order ``n``: exact, every part; for n >= 2 also the corner entry
+    of :func:`corner_entry`."""
+    alpha, half = alphas_from_eighth(fmpq(*map(int, t8.split("/"))))
+    mats = subdivision_matrices(n, alpha, "exact")
+    d = delta(n)
+    sub = sample_rational_points(half, d + 3, seed=seed)
+    lhs_basis = evaluate_normalized(n, half, sub, "exact")
+    rank = to_fmpq_mat(lhs_basis[:d]).rank()
+    out: dict = {"rank_of_collocation": rank == d, "parts": {}}
+    for part, s in zip(PARTS, mats):
+        rhs = evaluate_normalized(n, alpha, parent_points(sub, alpha, half, part), "exact")
+        lhs = to_fmpq_mat(lhs_basis) * to_fmpq_mat(s)
+        equal = all(lhs[i, j] == rhs[i, j] for i in range(d + 3) for j in range(d))
+        rows = all(sum(row, fmpq(0)) == 1 for row in s)
+        neg = int(sum(1 for x in s.reshape(-1) if x < 0))
+        out["parts"][part] = {"identity": equal, "rows_sum_to_1": rows, "negative_entries": neg,
+                              "most_negative": str(min(s.reshape(-1)))}
+        if part != "middle" and n >= 2:
+            idx = index_of(n)
+            x = OPPOSITE[part]
+            entry = s[idx[f"{x}_{{{2 * n},{2 * n - 1},1}}"], idx[f"{x}_{{{2 * n},{2 * n - 1},0}}"]]
+            out["parts"][part]["corner_entry_formula"] = entry == corner_entry(n, alpha.cos_half) and entry < 0
+    return out
+
+
+def n1_closed_form(t: str) -> dict:
+    """Check 3 for n = 1 at tan(alpha/4) = ``t``: the centre rows of the corner 'u' and of the middle against the
+    closed form of issue 38 (P_200 = r_{2,2,0}, P_101 = r_{2,1,0}, P_110 = b_{2,1,0}, P_011 = g_{2,1,0}, P_111 the
+    centre), and which entries of the four S are negative."""
+    alpha = rational_alpha(fmpq(*map(int, t.split("/"))))
+    mats = dict(zip(PARTS, subdivision_matrices(1, alpha, "exact")))
+    c = alpha.cos_half
+    a = 1 / (2 * (1 + c))  # 1 / (4 cos^2(alpha/4))
+    b = c * a
+    labels = [lab.paper for lab in united_system(1)]
+    col = {name: labels.index(name) for name in ("R_{2,1,1}", "R_{2,2,0}", "R_{2,1,0}", "B_{2,1,0}", "G_{2,1,0}",
+                                                  "G_{2,2,0}", "B_{2,2,0}")}
+    corner = [fmpq(0)] * 7
+    corner[col["R_{2,1,1}"]], corner[col["R_{2,2,0}"]] = fmpq(1, 2), a
+    corner[col["R_{2,1,0}"]], corner[col["B_{2,1,0}"]], corner[col["G_{2,1,0}"]] = b, b, -b
+    middle = [a] * 7
+    middle[col["R_{2,1,1}"]] = fmpq(-1, 2)
+    for name in ("R_{2,1,0}", "B_{2,1,0}", "G_{2,1,0}"):
+        middle[col[name]] = b
+    negatives = {part: [f"row {labels[i]}, column {labels[j]}: {m[i, j]}" for i in range(7) for j in range(7)
+                        if m[i, j] < 0] for part, m in mats.items()}
+    return {"corner_u_centre_row": list(mats["u"][0]) == corner, "middle_centre_row": list(mats["middle"][0]) == middle,
+            "negative_entries": negatives}
+
+
+def rational_check(n: int, t: str) -> bool:
+    """Check 4: the exact route at tan(alpha/4) = ``t`` (cos(alpha/4) irrational) returns rationals whose rows sum to
+    1 (the route itself raises if an irrational part is left)."""
+    alpha = rational_alpha(fmpq(*map(int, t.split("/"))))
+    d = (1 + alpha.cos_half) / 2
+    irrational = not (int(d.p) ** 0.5).is_integer() or not (int(d.q) ** 0.5).is_integer()
+    mats = subdivision_matrices(n, alpha, "exact")
+    return irrational and all(isinstance(x, fmpq) for m in mats for x in m.reshape(-1)) and \
+        all(sum(row, fmpq(0)) == 1 for m in mats for row in m)
+
+
+@claim("subdivision_all_n", paper_ref=["triangular_trig_surface", "united_system", "sec:coincidence",
+                                       "que:open_problem_basis_transformation"],
+       statement="Beyond the paper (issue 38): the restriction of an order-n patch with parameter alpha to each of "
+                 "the four midpoint sub-triangles of Omega^alpha is the order-n patch with parameter alpha/2 and "
+                 "control net S_k P, S_k = M_(alpha/2) Rot_k M_alpha^-1 (hand proof for every n and alpha, "
+                 "docs/subdivision_for_all_n.md). Exact checks at tan(alpha/8) in {ts8}, n = 1..{n_max}: the "
+                 "sub-patch equals the patch on its sub-triangle at delta_n + 3 rational points (full-rank "
+                 "collocation), rows of S_k sum to 1, and the negative entries of S_k are counted (midpoint "
+                 "subdivision is not corner cutting); for n >= 2 the corner entry S_k[X_(2n,2n-1,1), X_(2n,2n-1,0)] "
+                 "(X the colour of the opposite edge) equals c(c-1)/(2^(n+1)(1+c)^n((n-1)c+n)) < 0 (a "
+                 "conjecture for every n and alpha, checked exactly there); the n = 1 closed form of the centre rows "
+                 "holds at tan(alpha/4) "
+                 "in {ts_n1}; S_k is rational at tan(alpha/4) = {t_irrational} (cos(alpha/4) irrational), n = "
+                 "1..{n_rational}.",
+       kind="exact-evidence", ts8=["1/20", "1/7", "1/3", "2/5"], n_max=4, ts_n1=["1/20", "1/3", "1/2", "9/10"],
+       t_irrational="1/2", n_rational=4, seed=5, extended={"n_max": 8, "n_rational": 6})
+def run(ts8: list[str], n_max: int, ts_n1: list[str], t_irrational: str, n_rational: int, seed: int) -> Outcome:
+    identities = {f"n={n}, tan(alpha/8)={t8}": identity_check(n, t8, seed) for n in range(1, n_max + 1) for t8 in ts8}
+    ident_ok = all(v["rank_of_collocation"] and all(p["identity"] and p["rows_sum_to_1"] for p in v["parts"].values())
+                   for v in identities.values())
+    negatives = {key: {part: p["negative_entries"] for part, p in v["parts"].items()} for key, v in identities.items()}
+    entry_ok = all(p.get("corner_entry_formula", True) for v in identities.values() for p in v["parts"].values())
+    corner_cutting_somewhere = any(c == 0 for v in negatives.values() for part, c in v.items() if part != "middle")
+    n1 = {t: n1_closed_form(t) for t in ts_n1}
+    n1_ok = all(v["corner_u_centre_row"] and v["middle_centre_row"] for v in n1.values())
+    rational = {str(n): rational_check(n, t_irrational) for n in range(1, n_rational + 1)}
+    ok = ident_ok and n1_ok and all(rational.values()) and not corner_cutting_somewhere and entry_ok
+    measured = {
+        "sub_patch_equals_patch_on_sub_triangle": ("every part, n = 1.." f"{n_max} at tan(alpha/8) in {ts8}, exact"
+                                                   if ident_ok else identities),
+        "negative_entries_per_part": negatives,
+        "corner_entry_c(c-1)/(2^(n+1)(1+c)^n((n-1)c+n))": (f"equal and negative in every corner, n = 2..{n_max}"
+                                                             if entry_ok else "fails"),
+        "n1_closed_form_centre_rows": {t: {k: v[k] for k in ("corner_u_centre_row", "middle_centre_row")}
+                                       for t, v in n1.items()},
+        "n1_negative_entries": {t: v["negative_entries"] for t, v in n1.items()},
+        "rational_at_irrational_cos_quarter": rational,
+        "scope": "exact at the sampled alpha (evidence for other alpha); the closure and the formula for S are proven "
+                 "for every n and alpha in docs/subdivision_for_all_n.md, where also the n = 1 sign result is proven "
+                 "for every alpha; the sign counts for n >= 2 are measured here, not proven",
+    }
+    return Outcome(ok, measured)
+
+
+__all__ = ["run", "parent_points", "alphas_from_eighth", "identity_check", "n1_closed_form"]
