@@ -69,14 +69,48 @@ def _factor_derivative(s: int, c: int, k: int, half: tuple[fmpq, fmpq]) -> fmpq:
     return sum((q * half[0] ** a * half[1] ** b for (a, b), q in _tpoly_derivative(s, c, k)), fmpq(0))
 
 
-# -- the parametrizations of the proof, as printed maps (x, y) -> (u, v, w) -------------------------------------
-#: name -> (map, running variable, which parameter is set to 0)
-PARAMS = {
-    "parametrization_for_partition_of_unity": (lambda a, x, y: (a - x, y, x - y), "y"),
-    "parametrization_1_y_0": (lambda a, x, y: (x, y, a - x - y), "y"),
-    "parametrization_2_x_0": (lambda a, x, y: (x, a - x - y, y), "x"),
-    "parametrization_3_y_0": (lambda a, x, y: (a - x - y, x, y), "y"),
+# -- the parametrizations of the proof, read from their transcriptions ------------------------------------------
+#: parametrization label -> (its line, the line of its derivative formula, which names the running parameter)
+PARAM_LINES = {
+    "parametrization_for_partition_of_unity": ("sec1_3-param-partition-of-unity", "sec1_3-chain-rule"),
+    "parametrization_1_y_0": ("sec1_3-param-1", "sec1_3-chain-1"),
+    "parametrization_2_x_0": ("sec1_3-param-2", "sec1_3-chain-2"),
+    "parametrization_3_y_0": ("sec1_3-param-3", "sec1_3-chain-3"),
 }
+
+
+@cache
+def _params() -> dict[str, tuple]:
+    """label -> (map (alpha, x, y) -> (u, v, w), running parameter, the three printed linear forms, printed ranges):
+    the maps and ranges read from the parametrization's transcription, the running parameter from the derivative
+    formula that differentiates along it (``\\frac{\\partial^{r}}{\\partial y^{r}}``)."""
+    from paper_repro.printed.lines.sec3_read import read_parametrization
+
+    out = {}
+    for label, (lid, chain) in PARAM_LINES.items():
+        maps, ranges = read_parametrization(_transcribed([lid])[lid])
+        m = re.search(r"\\frac\{\\partial\^\{r\}\}\{\\partial\s*([xy])\^\{r\}\}", _transcribed([chain])[chain])
+        if not m:
+            raise ValueError(f"no running parameter d^r/dx^r or d^r/dy^r in {chain}")
+
+        def fmap(a, x, y, maps=maps):
+            return tuple(p * a + q * x + s * y for p, q, s in maps)
+        out[label] = (fmap, m.group(1), maps, ranges)
+    return out
+
+
+class _LiveParams(dict):
+    """``PARAMS[label]`` = (map, running parameter) read from the transcriptions at every lookup."""
+
+    def __getitem__(self, label: str):
+        return _params()[label][:2]
+
+    def __iter__(self):
+        return iter(PARAM_LINES)
+
+
+#: label -> (map (alpha, x, y) -> (u, v, w), running parameter), read live from the transcriptions
+PARAMS = _LiveParams()
 
 
 @cache
@@ -1084,23 +1118,192 @@ def _A(pt, k: int) -> fmpq:
     return _c(pt, k) * _sn(pt, "alpha-t", 2 * n - k) * _sn(pt, "t", k)
 
 
-# order-0 step, parametrization 1 (x = t, v = 0, w = alpha - t)
-def _r0p1_cform(n, r, pt):
-    """sum_{i=0}^{2n} rho'_{2n,2n-i,0} c_{2n,2n-i} sin^{2n-i}(x/2) sin^i((alpha-x)/2) with the printed rho'."""
+# -- Section 3 values read from the transcriptions (paper_repro.printed.lines.sec3_read) -------------------------
+def _unit(half: tuple[fmpq, fmpq]) -> tuple[fmpq, fmpq]:
+    """(cos, sin) of a half angle from (sin, cos): the unit complex number exp(i h)."""
+    return half[1], half[0]
+
+
+def _half_of(pt, p_alpha: int, q_t: int) -> tuple[fmpq, fmpq]:
+    """(sin, cos) of half the angle p_alpha * alpha + q_t * t at the boundary point (exact, by angle addition)."""
+    ea, et = _unit(pt["alpha"]), _unit(pt["t"])
+
+    def power(e, k):
+        e = e if k >= 0 else (e[0], -e[1])
+        return _cpow(e, abs(k))
+    c, s = _cmul(power(ea, p_alpha), power(et, q_t))
+    return s, c
+
+
+def _arg_half(arg: str, param_index: int, pt) -> tuple[fmpq, fmpq]:
+    """Half angles of a printed argument at the boundary of the step: a coordinate ``u_1`` of the printed
+    parametrization (its index must be the step's), or a linear form in alpha, x, y; (x, y) = (t, 0) when the
+    running parameter is y, (0, t) when it is x."""
+    from paper_repro.printed.lines.sec3_read import linear_form
+
+    _fmap, run, maps, _ranges = _params()[STEP_PARAMS[param_index]]
+    m = re.fullmatch(r"([uvw])_(\d)", arg)
+    if m:
+        if int(m.group(2)) != param_index + 1:
+            raise ValueError(f"{arg} in the step of parametrization {param_index + 1}")
+        a, x, y = maps["uvw".index(m.group(1))]
+    elif re.fullmatch(r"[uvw]", arg):
+        raise ValueError(f"an unindexed coordinate {arg} in a step of the proof")
+    else:
+        a, x, y = linear_form(arg)
+    return _half_of(pt, a, x if run == "y" else y)
+
+
+def _expr(expr: str, env: dict) -> int:
+    from paper_repro.printed.lines.read import bound
+
+    return int(bound(expr.replace("\\left(", "(").replace("\\right)", ")"), **env))
+
+
+def _factor_value(f, env: dict, param_index: int, pt, orders=None) -> fmpq:
+    """Value of one printed factor (:class:`paper_repro.printed.lines.sec3_read.Factor`) at the boundary point.
+    ``orders`` = (z, k) replaces the printed orders of S, M (z) and of a derivative (k) -- the factor structure
+    tested at other orders; the printed orders are compared with the step's apart."""
+    from paper_repro.printed.lines.sec3_read import rate
+
+    n = env["n"]
+    if f.kind == "bar":
+        run = _params()[STEP_PARAMS[param_index]][1]
+        if f.args[0] != run:
+            raise ValueError(f"evaluated at {f.args[0]} = 0 in a step at {run} = 0")
+        return fmpq(1)
+    if f.kind == "trig":
+        (s, c), arg = f.args
+        half = _arg_half(arg, param_index, pt)
+        k = 0
+        if f.deriv:
+            if f.deriv[1] != arg:
+                raise ValueError(f"d/d{f.deriv[1]} of a function of {arg}")
+            k = orders[1] if orders else _expr(f.deriv[0], env)
+        s_v, c_v = _expr(s, env), _expr(c, env)
+        if min(s_v, c_v, k) < 0:
+            raise ValueError("a negative power or order")
+        return _factor_derivative(s_v, c_v, k, half)
+    if f.kind in ("S", "M"):
+        sub, order = f.args
+        z = orders[0] if orders else _expr(order, env)
+        if f.kind == "S":
+            if len(sub) != 2:
+                raise ValueError(f"S with {len(sub)} indices")
+            j, mu = _expr(sub[0], env), rate(sub[1])
+            if j < 0 or z < 0:
+                raise ValueError("a negative power or order")
+            return sin_power_derivative(j, fmpq(mu.numerator, mu.denominator), z)
+        if len(sub) != 4:
+            raise ValueError(f"M with {len(sub)} indices")
+        i, lam, j, mu = _expr(sub[0], env), rate(sub[1]), _expr(sub[2], env), rate(sub[3])
+        if min(i, j, z) < 0:
+            raise ValueError("a negative power or order")
+        return mixed_derivative(i, fmpq(lam.numerator, lam.denominator), j, fmpq(mu.numerator, mu.denominator), z)
+    if f.kind == "c":
+        k = _expr(f.args[0], env)
+        if not 0 <= k <= 2 * n:
+            raise ValueError(f"c_{{2n,{k}}} does not exist")
+        return _c(pt, k)
+    if f.kind == "A":
+        k = _expr(f.args[0], env)
+        if not 0 <= k <= 2 * n:
+            raise ValueError(f"A_{{2n,{k}}} does not exist")
+        var = _arg_half(f.args[1], param_index, pt)
+        rest = _arg_half(f"\\alpha-{f.args[1]}", param_index, pt)
+        return _c(pt, k) * rest[0] ** (2 * n - k) * var[0] ** k
+    raise ValueError(f"unknown factor {f.kind}")
+
+
+def _prime_defs(line_ids) -> dict[str, tuple]:
+    """{colour of the primed constant: (level expression, cases)} read from the definition lines."""
+    from paper_repro.printed.lines.sec3_read import read_prime_definition
+
     out = {}
-    for i in range(0, 2 * n + 1):
-        key, div = (lab("R", n, i, 0), _c(pt, 2 * n - i)) if i <= 2 * n - 1 else (lab("G", n, 0, 0), _c(pt, 0))
-        out[key] = _c(pt, 2 * n - i) / div * _sn(pt, "t", 2 * n - i) * _sn(pt, "alpha-t", i)
+    for lid in line_ids:
+        (color, level), cases = read_prime_definition(_transcribed([lid])[lid])
+        out[color] = (level, cases)
     return out
 
 
-def _r0p1_aform(n, r, pt):
-    out = {}
-    for i in range(0, 2 * n + 1):
-        key, div = (lab("R", n, i, 0), _c(pt, 2 * n - i)) if i <= 2 * n - 1 else (lab("G", n, 0, 0), _c(pt, 0))
-        # A_{2n,2n-i}(x): the parameter of parametrization 1 at y = 0 is x = t
-        out[key] = _A_at(pt, 2 * n - i, "t") / div
+def _constant_key(const, env: dict, pt, primes: dict | None) -> tuple[object, fmpq]:
+    """(member of T_{2n} the printed constant multiplies -- a string if no member --, factor of its value): a primed
+    constant is resolved through its printed definition (the constant it stands for, divided by c)."""
+    color, first, level, primed = const
+    n = env["n"]
+    strict = {lb.paper: k for k, lb in enumerate(united_system(n))}
+    first_v, level_v = _expr(first, env), _expr(level, env)
+    if not primed:
+        name = f"{color}_{{{2 * n},{first_v},{level_v}}}"
+        return strict.get(name, name), fmpq(1)
+    if not primes or color not in primes:
+        raise ValueError(f"a primed {color} constant without its definition")
+    def_level, cases = primes[color]
+    if _expr(def_level, env) != level_v:
+        return f"{color}'_{{{2 * n},{first_v},{level_v}}} (undefined level)", fmpq(1)
+    i = 2 * n - first_v
+    for (c2, f2, l2), cidx, lo, hi in cases:
+        scope = {**env, "i": i}
+        if _expr(lo, scope) <= i <= _expr(hi, scope):
+            name = f"{c2}_{{{2 * n},{_expr(f2, scope)},{_expr(l2, scope)}}}"
+            ck = _expr(cidx, scope)
+            if not 0 <= ck <= 2 * n:
+                raise ValueError(f"c_{{2n,{ck}}} does not exist")
+            return strict.get(name, name), 1 / _c(pt, ck)
+    return f"{color}'_{{{2 * n},{first_v},{level_v}}} (undefined i)", fmpq(1)
+
+
+def evaluate_terms(terms, env: dict, param_index: int, pt, primes: dict | None = None, orders=None) -> dict:
+    """{member of T_{2n} (or a printed name that is none): the value its constant multiplies} of printed terms."""
+    out: dict = {}
+
+    def walk(term, sums, scope):
+        if not sums:
+            key, scale = _constant_key(term.constant, scope, pt, primes)
+            val = scale
+            for f in term.factors:
+                val *= _factor_value(f, scope, param_index, pt, orders)
+            out[key] = out.get(key, fmpq(0)) + val
+            return
+        (v, lo, hi), rest = sums[0], sums[1:]
+        for x in range(_expr(lo, scope), _expr(hi, scope) + 1):
+            walk(term, rest, {**scope, v: x})
+
+    for term in terms:
+        if term.constant is None:
+            raise ValueError("a term without a combining constant")
+        walk(term, term.sums, dict(env))
     return out
+
+
+def _pt(n: int, at: fmpq, x: fmpq):
+    pt = boundary_point(at, x)
+    pt["n"], pt["alpha_t"], pt["alpha"] = n, at, _half(at)
+    return pt
+
+
+def _quantified(tex: str, param_index: int) -> str:
+    """The value part of ``[0=] VALUE ,~\\forall V\\in\\left[ 0,\\alpha\\right]``: the quantifier must range over the
+    free variable of the step's edge and its printed range there, [0, alpha] (read)."""
+    from paper_repro.printed.lines.sec3_read import linear_form
+
+    m = re.search(r",\s*~?\s*\\forall\s*([xy])\s*\\in\s*\\left\[\s*([^,\]]+?)\s*,\s*([^\]]+?)\s*\\right\]", tex)
+    if not m:
+        raise ValueError(f"no quantifier forall x in [0, alpha] in {tex[:50]!r}")
+    run = _params()[STEP_PARAMS[param_index]][1]
+    free = "x" if run == "y" else "y"
+    if m.group(1) != free or linear_form(m.group(2)) != (0, 0, 0) or linear_form(m.group(3)) != (1, 0, 0):
+        raise ValueError(f"quantifier over {m.group(1)} in [{m.group(2)}, {m.group(3)}] on the edge {run} = 0")
+    return tex[:m.start()]
+
+
+def _value_part(tex: str, param_index: int) -> str:
+    """Strip ``\\[ 0=`` / ``& =`` before a value and the quantifier after it."""
+    body = _quantified(tex, param_index)
+    body = re.sub(r"^\s*(\\\[)?\s*0\s*=", " ", body) if re.match(r"^\s*(\\\[)?\s*0\s*=", body) else body
+    if re.match(r"^\s*(\\\[)", body):
+        raise ValueError("a display that does not start with 0 =")
+    return body
 
 
 def _A_at(pt, k: int, var: str) -> fmpq:
@@ -1171,16 +1374,6 @@ def r0p1_terms(verbatim: str | None = None) -> LineResult:
     return _terms_check("sec1_3-r0-p1-terms", 0, verbatim)
 
 
-@line_check("sec1_3-r0-p1-cform")
-def r0p1_cform() -> LineResult:
-    return _compare_forms(_r0p1_cform, _computed_step(0))
-
-
-@line_check("sec1_3-r0-p1-aform")
-def r0p1_aform() -> LineResult:
-    return _compare_forms(_r0p1_aform, _computed_step(0))
-
-
 def omitted_check(line_id: str, before: str, terms_line: str, param_index: int,
                   override: dict[str, str] | None = None) -> LineResult:
     """"The omitted functions contain sin(x_k/2), 0 at the edge, to a power >= 1": read from the transcriptions
@@ -1214,23 +1407,9 @@ def r0p1_omitted(override: dict[str, str] | None = None) -> LineResult:
     return omitted_check("sec1_3-r0-p1-omitted", "sec1_3-L-set", "sec1_3-r0-p1-terms", 0, override)
 
 
-# order-0 step, parametrization 2 (u = 0, v = alpha - y, w = y; t = y)
-def _r0p2_aform(n, r, pt):
-    out = {}
-    for i in range(1, 2 * n + 1):
-        key, div = (lab("G", n, i, 0), _c(pt, 2 * n - i)) if i <= 2 * n - 1 else (lab("B", n, 0, 0), _c(pt, 0))
-        out[key] = _A_at(pt, 2 * n - i, "t") / div
-    return out
-
-
 @line_check("sec1_3-r0-p2-terms")
 def r0p2_terms(verbatim: str | None = None) -> LineResult:
     return _terms_check("sec1_3-r0-p2-terms", 1, verbatim)
-
-
-@line_check("sec1_3-r0-p2-aform")
-def r0p2_aform() -> LineResult:
-    return _compare_forms(_r0p2_aform, _computed_step(1))
 
 
 @line_check("sec1_3-r0-p2-omitted")
@@ -1239,19 +1418,9 @@ def r0p2_omitted(override: dict[str, str] | None = None) -> LineResult:
     return omitted_check("sec1_3-r0-p2-omitted", "sec1_3-Ltilde-set", "sec1_3-r0-p2-terms", 1, override)
 
 
-# order-0 step, parametrization 3 (u = alpha - x, v = x, w = 0; t = x)
-def _r0p3_aform(n, r, pt):
-    return {lab("B", n, i, 0): _A_at(pt, 2 * n - i, "t") / _c(pt, 2 * n - i) for i in range(1, 2 * n)}
-
-
 @line_check("sec1_3-r0-p3-terms")
 def r0p3_terms(verbatim: str | None = None) -> LineResult:
     return _terms_check("sec1_3-r0-p3-terms", 2, verbatim)
-
-
-@line_check("sec1_3-r0-p3-aform")
-def r0p3_aform() -> LineResult:
-    return _compare_forms(_r0p3_aform, _computed_step(2))
 
 
 def _a_system_rank(n: int, first: int, last: int) -> bool:
@@ -1315,177 +1484,6 @@ def _M(i, j, z):
 
 def _S(j, z):
     return sin_power_derivative(j, HALF, z)
-
-
-# rows of the printed k-th term (parametrization 1: u_1 = x = t, v_1 = 0, w_1 = alpha - t), written for the lowest
-# level m (printed: m = r+1) and the orders z in v_1 (printed: z = r+1-k) and k in w_1, so that the printed factor
-# structure can be compared with the exact mixed partials at every order, not only where most of them vanish
-KTERM_ROWS = {
-    "centre": lambda n, m, z, k, pt: {lab("R", n, n, n): _sn(pt, "t", n) * _S(n, z) * _dk(pt, "alpha-t", n, 0, k)},
-    "R-low": lambda n, m, z, k, pt: {lab("R", n, i, j): _sn(pt, "t", 2 * n - i) * _dk(pt, "alpha-t", i, 0, k)
-                                     * _M(i - j, j, z) for j in range(m, n) for i in range(j, n + 1)},
-    "R-high": lambda n, m, z, k, pt: {lab("R", n, i, j): _dk(pt, "alpha-t", i, 0, k) * _sn(pt, "t", 2 * n - i)
-                                      * _M(2 * n - i - j, j, z) for j in range(m, n)
-                                      for i in range(n + 1, 2 * n - 1 - j + 1)},
-    "G-low": lambda n, m, z, k, pt: {lab("G", n, i, j): _dk(pt, "alpha-t", 2 * n - i, 0, k) * _S(i, z)
-                                     * pt["t"][1] ** (i - j) * pt["t"][0] ** j
-                                     for j in range(m, n) for i in range(j, n + 1)},
-    "G-high": lambda n, m, z, k, pt: {lab("G", n, i, j): _S(i, z) * _dk(pt, "alpha-t", 2 * n - i, 0, k)
-                                      * pt["t"][1] ** (2 * n - i - j) * pt["t"][0] ** j
-                                      for j in range(m, n) for i in range(n + 1, 2 * n - 1 - j + 1)},
-    "B-low": lambda n, m, z, k, pt: {lab("B", n, i, j): _S(2 * n - i, z) * _sn(pt, "t", i)
-                                     * _dk(pt, "alpha-t", j, i - j, k) for j in range(m, n) for i in range(j, n + 1)},
-    "B-high": lambda n, m, z, k, pt: {lab("B", n, i, j): _sn(pt, "t", i) * _S(2 * n - i, z)
-                                      * _dk(pt, "alpha-t", j, 2 * n - i - j, k) for j in range(m, n)
-                                      for i in range(n + 1, 2 * n - 1 - j + 1)},
-}
-
-
-def _row_members(n: int, r: int, row: str, rows=None) -> set[int]:
-    pt = boundary_point(ALPHA_TS[0], X_FRACTIONS[0])
-    pt["n"], pt["alpha_t"] = n, ALPHA_TS[0]
-    return set((rows or KTERM_ROWS)[row](n, r + 1, 0, 0, pt))
-
-
-def kterm_row_check(row: str, rows=None) -> LineResult:
-    """One row of the printed k-th term: for each of its functions the printed product of factors equals the exact
-    mixed partial d^z/dv_1^z d^k/dw_1^k of that function at y = 0, for the printed orders z = r+1-k (k = 0..r+1) and,
-    to test the factor structure where it does not vanish, for all z = 0..n+2, k = 0..2; the rows together list
-    exactly the functions of L_r."""
-    rows = rows or KTERM_ROWS
-    bad, cases, nonzero = [], 0, 0
-    for n in range(2, N_PROOF.stop):
-        labels = united_system(n)
-        for r in range(n - 1):
-            covered = set().union(*(_row_members(n, r, w, rows) for w in rows))
-            if covered != set(alive_before(n, r + 1, 0)):
-                bad.append({"n": n, "r": r, "rows_do_not_cover_L_r": True})
-            at = ALPHA_TS[r % 2]
-            pt = boundary_point(at, X_FRACTIONS[n % 2])
-            pt["n"], pt["alpha_t"] = n, at
-            orders = {(r + 1 - k, k) for k in range(r + 2)} | {(z, k) for z in range(n + 3) for k in range(3)}
-            for z, k in sorted(orders):
-                for q, val in rows[row](n, r + 1, z, k, pt).items():
-                    cases += 1
-                    exact = mixed_partial(exponents(labels[q]), PARAM1, z, k, pt)
-                    nonzero += exact != 0
-                    if val != exact:
-                        bad.append({"n": n, "r": r, "z": z, "k": k, "function": labels[q].paper})
-    return LineResult(not bad, how="each printed factor product against the exact mixed partial of its function, "
-                      f"n = 2..{N_PROOF.stop - 1}, r = 0..n-2, orders z = r+1-k and z = 0..n+2, k = 0..2",
-                      detail={"cases": cases, "nonzero_cases": nonzero, "mismatches": len(bad),
-                              "first_mismatches": bad[:3]})
-
-
-for _row in KTERM_ROWS:
-    line_check(f"sec1_3-kterm-p1-{_row}")(lambda _row=_row: kterm_row_check(_row))
-
-
-def _p1_k0(n, r, pt):
-    """The printed k = 0 value: S^{r+1}_{r+1}(0) (sum_{i=r+1}^{n} rho sin^{2n-i}(u/2) sin^i(w/2)
-    + sum_{i=n+1}^{2n-1-(r+1)} rho sin^i(w/2) sin^{2n-i}(u/2)
-    + gamma_{2n,2n-(r+1),r+1} sin^{2n-(r+1)}(w/2) sin^{r+1}(u/2))."""
-    s = _S(r + 1, r + 1)
-    out = {lab("R", n, i, r + 1): s * _sn(pt, "t", 2 * n - i) * _sn(pt, "alpha-t", i) for i in range(r + 1, n + 1)}
-    out |= {lab("R", n, i, r + 1): s * _sn(pt, "alpha-t", i) * _sn(pt, "t", 2 * n - i)
-            for i in range(n + 1, 2 * n - 1 - (r + 1) + 1)}
-    out[lab("G", n, r + 1, r + 1)] = s * _sn(pt, "alpha-t", 2 * n - (r + 1)) * _sn(pt, "t", r + 1)
-    return out
-
-
-@line_check("sec1_3-r-p1-k0")
-def rp1_k0() -> LineResult:
-    return _compare_forms(_p1_k0, lambda n, r, pt: _kterm_computed(n, r, pt, 0), ns=range(2, N_PROOF.stop),
-                          rs=lambda n: range(n - 1))
-
-
-def _kpos_check(param: str, alive_fn) -> LineResult:
-    bad, cases = [], 0
-    for n in range(2, N_PROOF.stop):
-        for r in range(n - 1):
-            for at in ALPHA_TS:
-                for x in X_FRACTIONS:
-                    pt = boundary_point(at, x)
-                    for k in range(1, r + 2):
-                        cases += 1
-                        if _kterm_computed(n, r, pt, k, param, alive_fn):
-                            bad.append({"n": n, "r": r, "k": k})
-    return LineResult(not bad, how="every mixed partial with k >= 1 of every function of the equality, exactly",
-                      detail={"cases": cases, "mismatches": len(bad), "first_mismatches": bad[:3]})
-
-
-@line_check("sec1_3-r-p1-kpos")
-def rp1_kpos() -> LineResult:
-    return _kpos_check(PARAM1, lambda n, r: alive_before(n, r + 1, 0))
-
-
-def _rho_prime(n, r, pt, i):
-    """The printed rho'_{2n,2n-i,r+1}: (constant's function index, divisor)."""
-    if r + 1 <= i <= 2 * n - 1 - (r + 1):
-        return lab("R", n, i, r + 1), _c(pt, 2 * n - i)
-    if i == 2 * n - (r + 1):
-        return lab("G", n, r + 1, r + 1), _c(pt, 2 * n - (r + 1))
-    raise ValueError(f"rho' undefined for i = {i}")
-
-
-def _p1_aform(upper):
-    def fn(n, r, pt):
-        s = _S(r + 1, r + 1)
-        out = {}
-        for i in range(r + 1, upper(n, r) + 1):
-            key, div = _rho_prime(n, r, pt, i)
-            out[key] = s * _A_at(pt, 2 * n - i, "t") / div
-        return out
-    return fn
-
-
-PRINTED_P1_UPPER = (lambda n, r: 2 * n - 1 - (r + 1))  # sum_{i=r+1}^{2n-1-(r+1)} as printed
-CORRECTED_P1_UPPER = (lambda n, r: 2 * n - (r + 1))
-
-
-@line_check("sec1_3-r-p1-aform")
-def rp1_aform(upper=PRINTED_P1_UPPER) -> LineResult:
-    """Printed S^{r+1}_{r+1}(0) sum_{i=r+1}^{2n-1-(r+1)} rho' A_{2n,2n-i}(x) misses the term i = 2n-(r+1) (the gamma
-    term that rho' defines); with the upper bound 2n-(r+1) it equals the computed derivative."""
-    return _compare_forms(_p1_aform(upper), lambda n, r, pt: _kterm_computed(n, r, pt, 0), ns=range(2, N_PROOF.stop),
-                          rs=lambda n: range(n - 1), corrected_fn=_p1_aform(CORRECTED_P1_UPPER))
-
-
-@line_check("sec1_3-r-p1-rho-prime")
-def rp1_rho_prime() -> LineResult:
-    """With the printed rho' (the i = 2n-(r+1) branch divides by c_{2n,2n-(r+1)}) the A-form reproduces the
-    substituted k = 0 value term by term (over the full range r+1..2n-(r+1) that rho' is defined on); the branch
-    is right because c_{2n,r+1} = c_{2n,2n-(r+1)} (eq. symmetry_of_Sanchez_Reyes_constants)."""
-    return _compare_forms(_p1_aform(CORRECTED_P1_UPPER), _p1_k0, ns=range(2, N_PROOF.stop), rs=lambda n: range(n - 1))
-
-
-def _computed_a_indices(n: int, r: int) -> set[int]:
-    """Indices i of the A_{2n,2n-i} in the computed k = 0 value of parametrization 1 (matched through A/c)."""
-    pt = boundary_point(ALPHA_TS[0], X_FRACTIONS[0])
-    pt["n"], pt["alpha_t"] = n, ALPHA_TS[0]
-    comp = _kterm_computed(n, r, pt, 0)
-    s = _S(r + 1, r + 1)
-    found = set()
-    for val in comp.values():
-        hits = [i for i in range(2 * n + 1) if val == s * _A_at(pt, 2 * n - i, "t") / _c(pt, 2 * n - i)]
-        found |= set(hits[:1])
-    return found
-
-
-@line_check("sec1_3-r-p1-asystem")
-def rp1_asystem(upper=PRINTED_P1_UPPER) -> LineResult:
-    """The functions A_{2n,2n-i} whose independence the step needs are i = r+1..2n-(r+1) (computed); printed:
-    i = r+1..2n-1-(r+1)."""
-    bad, bad_c = [], []
-    for n in range(2, N_PROOF.stop):
-        for r in range(n - 1):
-            comp = _computed_a_indices(n, r)
-            if set(range(r + 1, upper(n, r) + 1)) != comp:
-                bad.append({"n": n, "r": r, "computed": sorted(comp)})
-            if set(range(r + 1, CORRECTED_P1_UPPER(n, r) + 1)) != comp:
-                bad_c.append((n, r))
-    return LineResult(not bad, not bad_c, how="the A_{2n,2n-i} present in the exact k = 0 value",
-                      detail={"mismatches": len(bad), "first_mismatches": bad[:2], "corrected_mismatches": len(bad_c)})
 
 
 def _zeroed_check(computed_fn, printed_level, corrected_level, i_range, color, alias) -> LineResult:
@@ -1559,67 +1557,8 @@ def rp1_zeroed(level=None, verbatim=None) -> LineResult:
 PARAM2 = "parametrization_2_x_0"
 
 
-def _p2_k0(n, r, pt):
-    s = _S(r + 1, r + 1)
-    out = {lab("G", n, i, r + 1): s * _sn(pt, "t", 2 * n - i) * _sn(pt, "alpha-t", i) for i in range(r + 2, n + 1)}
-    out |= {lab("G", n, i, r + 1): s * _sn(pt, "alpha-t", i) * _sn(pt, "t", 2 * n - i)
-            for i in range(n + 1, 2 * n - 1 - (r + 1) + 1)}
-    out[lab("B", n, r + 1, r + 1)] = s * _sn(pt, "alpha-t", 2 * n - (r + 1)) * _sn(pt, "t", r + 1)
-    return out
-
-
 def _p2_alive(n, r):
     return alive_before(n, r + 1, 1)
-
-
-@line_check("sec1_3-r-p2-k0")
-def rp2_k0() -> LineResult:
-    return _compare_forms(_p2_k0, lambda n, r, pt: _kterm_computed(n, r, pt, 0, PARAM2, _p2_alive),
-                          ns=range(2, N_PROOF.stop), rs=lambda n: range(n - 1))
-
-
-@line_check("sec1_3-r-p2-kpos")
-def rp2_kpos() -> LineResult:
-    return _kpos_check(PARAM2, _p2_alive)
-
-
-def _gamma_prime(n, r, pt, i):
-    if r + 2 <= i <= 2 * n - 1 - (r + 1):
-        return lab("G", n, i, r + 1), _c(pt, 2 * n - i)
-    if i == 2 * n - (r + 1):
-        return lab("B", n, r + 1, r + 1), _c(pt, 2 * n - (r + 1))
-    raise ValueError(f"gamma' undefined for i = {i}")
-
-
-def _p2_aform(n, r, pt):
-    s = _S(r + 1, r + 1)
-    out = {}
-    for i in range(r + 2, 2 * n - (r + 1) + 1):
-        key, div = _gamma_prime(n, r, pt, i)
-        out[key] = s * _A_at(pt, 2 * n - i, "t") / div
-    return out
-
-
-@line_check("sec1_3-r-p2-aform")
-def rp2_aform() -> LineResult:
-    return _compare_forms(_p2_aform, lambda n, r, pt: _kterm_computed(n, r, pt, 0, PARAM2, _p2_alive),
-                          ns=range(2, N_PROOF.stop), rs=lambda n: range(n - 1))
-
-
-@line_check("sec1_3-r-p2-asystem")
-def rp2_asystem() -> LineResult:
-    """{A_{2n,2n-i}}_{i=r+2}^{2n-(r+1)} is exactly the system of the computed value, and it is independent."""
-    ok = True
-    for n in range(2, N_PROOF.stop):
-        for r in range(n - 1):
-            pt = boundary_point(ALPHA_TS[0], X_FRACTIONS[0])
-            pt["n"], pt["alpha_t"] = n, ALPHA_TS[0]
-            comp = _kterm_computed(n, r, pt, 0, PARAM2, _p2_alive)
-            s = _S(r + 1, r + 1)
-            found = {i for val in comp.values() for i in range(2 * n + 1)
-                     if val == s * _A_at(pt, 2 * n - i, "t") / _c(pt, 2 * n - i)}
-            ok &= found == set(range(r + 2, 2 * n - (r + 1) + 1)) and _a_system_rank(n, r + 2, 2 * n - (r + 1))
-    return LineResult(ok, how="A functions present in the exact value; exact collocation rank", detail={"ok": ok})
 
 
 @line_check("sec1_3-r-p2-zeroed")
@@ -1637,28 +1576,358 @@ def _p3_alive(n, r):
     return alive_before(n, r + 1, 2)
 
 
-def _p3_aform(n, r, pt):
-    s = _S(r + 1, r + 1)
-    return {lab("B", n, i, r + 1): s * _A_at(pt, 2 * n - i, "t") / _c(pt, 2 * n - i)
-            for i in range(r + 2, 2 * n - 1 - (r + 1) + 1)}
-
-
-@line_check("sec1_3-r-p3-aform")
-def rp3_aform() -> LineResult:
-    return _compare_forms(_p3_aform, lambda n, r, pt: _kterm_computed(n, r, pt, 0, PARAM3, _p3_alive),
-                          ns=range(2, N_PROOF.stop), rs=lambda n: range(n - 1))
-
-
-@line_check("sec1_3-r-p3-kpos")
-def rp3_kpos() -> LineResult:
-    return _kpos_check(PARAM3, _p3_alive)
-
-
 @line_check("sec1_3-r-p3-zeroed")
 def rp3_zeroed(verbatim=None) -> LineResult:
     """beta'_{2n,2n-i,r+1} = 0, i = r+2..2n-1-(r+1): exactly the constants the step removes."""
     return _zeroed_read("sec1_3-rp3-zeroed", lambda n, r: alive_before(n, r + 1, 2) - alive_after(n, r + 1, 2),
                         lambda n, r: r + 1, "B", None, verbatim=verbatim)
+
+
+# -- value lines of the proof, read from their transcriptions ----------------------------------------------------
+#: check -> (parametrization index 0/1/2, order: 0 for the order-0 steps, None for r + 1, the definition lines of
+#: the primed constants it uses)
+VALUE_CHECKS = {
+    "sec1_3-r0-p1-cform": (0, 0, ("sec1_3-r0-p1-rho-prime",)),
+    "sec1_3-r0-p1-aform": (0, 0, ("sec1_3-r0-p1-rho-prime",)),
+    "sec1_3-r0-p2-aform": (1, 0, ("sec1_3-r0-p2-gamma-prime",)),
+    "sec1_3-r0-p3-aform": (2, 0, ("sec1_3-r0-p3-beta-prime",)),
+    "sec1_3-r-p1-k0": (0, None, ()),
+    "sec1_3-r-p1-aform": (0, None, ("sec1_3-rp1-rho-prime",)),
+    "sec1_3-r-p1-rho-prime": (0, None, ("sec1_3-rp1-rho-prime",)),
+    "sec1_3-r-p2-k0": (1, None, ()),
+    "sec1_3-r-p2-aform": (1, None, ("sec1_3-rp2-gamma-prime",)),
+    "sec1_3-r-p3-aform": (2, None, ("sec1_3-rp3-beta-prime",)),
+}
+
+
+def _is_definition(tex: str) -> bool:
+    return bool(re.search(r"\^\{\\prime\}\s*=\s*(\\left\\\{|\\frac|\\dfrac)", tex))
+
+
+def read_value_line(tex: str, param_index: int):
+    """(terms, k) of a printed value: a case row ``VALUE , & k=K`` (k = K), ``[0=] VALUE ,~\\forall x\\in[0,\\alpha]``
+    or ``& = VALUE \\\\`` (k None: the whole derivative)."""
+    from paper_repro.printed.lines.sec3_read import case_range, read_products, split_case
+
+    k = None
+    if re.search(r",\s*&\s*[^&]*$", tex.replace("%", " ").rstrip().rstrip("\\").rstrip()):
+        body, cond = split_case(tex)
+        lo, hi = case_range(cond)
+        if lo != hi:
+            raise ValueError(f"a value for a range of k: {cond!r}")
+        k = _expr(lo, {})
+    elif "\\forall" in tex:
+        body = _value_part(tex, param_index)
+    else:
+        body = re.sub(r"\\\\\s*$", "", tex.strip())
+    return read_products(body), k
+
+
+def _alive_for(param_index: int, r: int, order0: bool, n: int):
+    return alive_before(n, r if order0 else r + 1, param_index)
+
+
+def value_lines_check(check_id: str, texts: dict[str, str] | None = None, defs_texts: dict[str, str] | None = None
+                      ) -> LineResult:
+    """Every value line of ``check_id`` (and the definitions of its primed constants) read from the transcription
+    and evaluated exactly at the boundary (constants resolved by the printed definitions, S, M by exact Taylor
+    series, sines by exact half angles): the {member of T_{2n}: coefficient} it prints must equal the one computed
+    from the exact derivatives of the step (the k-th term of its chain rule where the line is a case k = K, the
+    whole derivative of the step's order otherwise), n = 1..6 (order-0 steps) or n = 2..6, r = 0..n-2."""
+    from paper_repro.printed.lines.sec3_read import read_prime_definition
+
+    param_index, order, def_ids = VALUE_CHECKS[check_id]
+    param = STEP_PARAMS[param_index]
+    own = {x.id: x.verbatim for x in _lines_of(check_id)}
+    all_texts = {**own, **_transcribed([d for d in def_ids if d not in own])}
+    all_texts.update(texts or {})
+    all_texts.update(defs_texts or {})
+    detail: dict = {}
+    try:
+        primes = {}
+        for lid in def_ids:
+            (color, level), cases = read_prime_definition(all_texts[lid])
+            primes[color] = (level, cases)
+        values = {lid: read_value_line(t, param_index) for lid, t in sorted(all_texts.items())
+                  if lid in own and not _is_definition(t)}
+        if check_id == "sec1_3-r-p1-rho-prime":  # the definition checked through the A-form it defines
+            aform = _transcribed(["sec1_3-rp1-aform"])["sec1_3-rp1-aform"]
+            values = {"sec1_3-rp1-aform": read_value_line(_p1_corrected(aform), param_index)}
+        if not values:
+            raise ValueError("no value line")
+    except (ValueError, KeyError) as exc:
+        return LineResult(False, how="the values read from the transcriptions", detail={"unread": str(exc)})
+    ns = N_PROOF if order == 0 else range(2, N_PROOF.stop)
+    bad, cases = [], 0
+    for n in ns:
+        for r in ([0] if order == 0 else range(n - 1)):
+            for at in ALPHA_TS:
+                for xf in X_FRACTIONS:
+                    pt = _pt(n, at, xf)
+                    alive = _alive_for(param_index, r, order == 0, n)
+                    for lid, (terms, k) in values.items():
+                        cases += 1
+                        try:
+                            pr = evaluate_terms(terms, {"n": n, "r": r, "k": k or 0}, param_index, pt, primes)
+                        except ValueError as exc:
+                            bad.append({"line": lid, "n": n, "r": r, "unread": str(exc)})
+                            continue
+                        pr = {q: v for q, v in pr.items() if v != 0}
+                        if order == 0:
+                            comp = _computed_form(n, param, 0, alive, pt)
+                        elif k is None:
+                            comp = _computed_form(n, param, r + 1, alive, pt)
+                        else:
+                            comp = _kterm_computed(n, r, pt, k, param, lambda n_, r_, a=alive: a)
+                        if pr != comp:
+                            bad.append({"line": lid, "n": n, "r": r,
+                                        "printed_only": _names(n, set(pr) - set(comp)),
+                                        "computed_only": _names(n, set(comp) - set(pr)),
+                                        "values_differ": _names(n, {q for q in set(pr) & set(comp)
+                                                                    if pr[q] != comp[q]})})
+    detail.update({"cases": cases, "mismatches": len(bad), "first_mismatches": bad[:2]})
+    return LineResult(not bad, how="the printed values (terms, constants, primed definitions, factors) read from the "
+                      "transcriptions against the exact derivatives along the printed parametrization, "
+                      f"n = {ns.start}..{ns.stop - 1}, tan(alpha/4) in {{1/2, 3/4}}, two boundary points each",
+                      detail=detail)
+
+
+def _p1_corrected(tex: str) -> str:
+    """The erratum's correction of the A-form of parametrization 1: upper bound 2n-(r+1) instead of 2n-1-(r+1)."""
+    return re.sub(r"\^\{2n-1-\\left\(\s*r\+1\\right\)\s*\}", lambda _m: "^{2n-\\left( r+1\\right) }", tex, count=1)
+
+
+def _value_erratum(check_id: str, correct) -> LineResult:
+    """An erratum value line: as printed (must fail) and with ``correct`` applied to each line's text (must hold)."""
+    res = value_lines_check(check_id)
+    corrected = value_lines_check(check_id, texts={x.id: correct(x.verbatim) for x in _lines_of(check_id)})
+    res.corrected_holds = corrected.holds_as_printed
+    res.detail["corrected_mismatches"] = corrected.detail.get("mismatches", corrected.detail.get("unread"))
+    return res
+
+
+def kpos_check(check_id: str, param_index: int) -> LineResult:
+    """The rows ``0, & 1\\leq k\\leq r+1`` (read: the value 0 and the range of k): the range is the rest of the
+    chain rule's k = 0..r+1 after k = 0, and every mixed partial of the equality's functions with k in it vanishes
+    at the boundary (exact), n = 2..6, r = 0..n-2."""
+    from paper_repro.printed.lines.sec3_read import case_range, split_case
+
+    param = STEP_PARAMS[param_index]
+    try:
+        rows = {x.id: split_case(x.verbatim) for x in _lines_of(check_id)}
+        ranges = {lid: case_range(cond) for lid, (value, cond) in rows.items()}
+        if not rows or any(value.strip() != "0" for value, _ in rows.values()):
+            raise ValueError("a value other than 0")
+    except ValueError as exc:
+        return LineResult(False, how="the rows read from the transcriptions", detail={"unread": str(exc)})
+    bad, cases = [], 0
+    for n in range(2, N_PROOF.stop):
+        for r in range(n - 1):
+            alive = alive_before(n, r + 1, param_index)
+            for lid, (lo, hi) in ranges.items():
+                ks = range(_expr(lo, {"n": n, "r": r}), _expr(hi, {"n": n, "r": r}) + 1)
+                if list(ks) != list(range(1, r + 2)):
+                    bad.append({"line": lid, "n": n, "r": r, "k": [ks.start, ks.stop - 1]})
+                    continue
+                for at in ALPHA_TS:
+                    for xf in X_FRACTIONS:
+                        pt = _pt(n, at, xf)
+                        for k in ks:
+                            cases += 1
+                            if _kterm_computed(n, r, pt, k, param, lambda n_, r_, a=alive: a):
+                                bad.append({"line": lid, "n": n, "r": r, "k": k})
+    return LineResult(not bad, how="the printed value 0 and range of k read from the transcriptions; every mixed "
+                      "partial with k in it of every function of the equality, exactly, n = 2..6, r = 0..n-2",
+                      detail={"cases": cases, "mismatches": len(bad), "first_mismatches": bad[:3]})
+
+
+# rows of the printed k-th term of parametrization 1 (lines sec1_3-kterm-*)
+KTERM_LINES = ("sec1_3-kterm-centre", "sec1_3-kterm-R-low", "sec1_3-kterm-R-high", "sec1_3-kterm-G-low",
+               "sec1_3-kterm-G-high", "sec1_3-kterm-B-low", "sec1_3-kterm-B-high")
+
+
+def kterm_row_check(line_id: str, texts: dict[str, str] | None = None) -> LineResult:
+    """One row of the printed k-th term (read from its transcription): its sums name functions of L_r, and for each
+    the printed product of factors equals the exact mixed partial d^z/dv_1^z d^k/dw_1^k of that function at y = 0 --
+    at the printed orders (the orders of S, M must read r+1-k and that of the derivative k, the chain rule's k-th
+    term) and, to test the factor structure where it does not vanish, at z = 0..n+2, k = 0..2; the seven rows
+    together list exactly the functions of L_r, each once (n = 2..6, r = 0..n-2)."""
+    from paper_repro.printed.lines.sec3_read import read_products
+
+    t = _transcribed(list(KTERM_LINES), texts)
+    try:
+        rows = {lid: read_products(tx) for lid, tx in t.items()}
+    except ValueError as exc:
+        return LineResult(False, how="the rows read from the transcriptions", detail={"unread": str(exc)})
+    bad, cases, nonzero = [], 0, 0
+    own = rows[line_id]
+    orders_ok = all(_expr(f.args[1], {"r": r, "k": k}) == r + 1 - k for term in own for f in term.factors
+                    if f.kind in ("S", "M") for r in range(5) for k in range(r + 2)) and \
+        all(_expr(f.deriv[0], {"r": r, "k": k}) == k for term in own for f in term.factors if f.deriv
+            for r in range(5) for k in range(r + 2))
+    if not orders_ok:
+        bad.append("printed orders are not r+1-k (S, M) and k (d/dw_1)")
+    for n in range(2, N_PROOF.stop):
+        labels = united_system(n)
+        for r in range(n - 1):
+            at = ALPHA_TS[r % 2]
+            pt = _pt(n, at, X_FRACTIONS[n % 2])
+            try:
+                members = {lid: list(evaluate_terms(ts, {"n": n, "r": r, "k": 0}, 0, pt, orders=(0, 0)))
+                           for lid, ts in rows.items()}
+            except ValueError as exc:
+                bad.append({"n": n, "r": r, "unread": str(exc)})
+                continue
+            flat = [q for v in members.values() for q in v]
+            if len(flat) != len(set(flat)) or set(flat) != set(alive_before(n, r + 1, 0)):
+                bad.append({"n": n, "r": r, "rows_do_not_list_L_r_once": True})
+            for z in range(n + 3):
+                for k in range(3):
+                    try:
+                        vals = evaluate_terms(own, {"n": n, "r": r, "k": k}, 0, pt, orders=(z, k))
+                    except ValueError as exc:
+                        bad.append({"n": n, "r": r, "unread": str(exc)})
+                        continue
+                    for q, val in vals.items():
+                        cases += 1
+                        if not isinstance(q, int):
+                            bad.append({"n": n, "r": r, "not_a_member": q})
+                            continue
+                        exact = mixed_partial(exponents(labels[q]), PARAM1, z, k, pt)
+                        nonzero += exact != 0
+                        if val != exact:
+                            bad.append({"n": n, "r": r, "z": z, "k": k, "function": labels[q].paper})
+    return LineResult(not bad, how="the row read from its transcription; each printed factor product against the "
+                      "exact mixed partial of its function, n = 2..6, r = 0..n-2, orders z = 0..n+2, k = 0..2 (the "
+                      "printed orders r+1-k and k read)", detail={"cases": cases, "nonzero_cases": nonzero,
+                                                                  "mismatches": len(bad), "first_mismatches": bad[:3]})
+
+
+for _row in KTERM_LINES:
+    line_check(_row.replace("sec1_3-kterm-", "sec1_3-kterm-p1-"))(lambda _row=_row: kterm_row_check(_row))
+
+
+@line_check("sec1_3-r0-p1-cform")
+def r0p1_cform() -> LineResult:
+    return value_lines_check("sec1_3-r0-p1-cform")
+
+
+@line_check("sec1_3-r0-p1-aform")
+def r0p1_aform() -> LineResult:
+    return value_lines_check("sec1_3-r0-p1-aform")
+
+
+@line_check("sec1_3-r0-p2-aform")
+def r0p2_aform() -> LineResult:
+    return value_lines_check("sec1_3-r0-p2-aform")
+
+
+@line_check("sec1_3-r0-p3-aform")
+def r0p3_aform() -> LineResult:
+    return value_lines_check("sec1_3-r0-p3-aform")
+
+
+@line_check("sec1_3-r-p1-k0")
+def rp1_k0() -> LineResult:
+    return value_lines_check("sec1_3-r-p1-k0")
+
+
+@line_check("sec1_3-r-p1-kpos")
+def rp1_kpos() -> LineResult:
+    return kpos_check("sec1_3-r-p1-kpos", 0)
+
+
+@line_check("sec1_3-r-p1-aform")
+def rp1_aform() -> LineResult:
+    """Printed S^{r+1}_{r+1}(0) sum_{i=r+1}^{2n-1-(r+1)} rho' A_{2n,2n-i}(x) misses the term i = 2n-(r+1) (the gamma
+    term that rho' defines); with the upper bound 2n-(r+1) (the correction applied to the transcription) it equals the
+    computed derivative."""
+    return _value_erratum("sec1_3-r-p1-aform", _p1_corrected)
+
+
+@line_check("sec1_3-r-p1-rho-prime")
+def rp1_rho_prime() -> LineResult:
+    """With the printed rho' (read) the A-form over the range r+1..2n-(r+1) that rho' is defined on (the corrected
+    A-form line) equals the exact k = 0 term; the i = 2n-(r+1) branch divides by c_{2n,2n-(r+1)}."""
+    return value_lines_check("sec1_3-r-p1-rho-prime")
+
+
+def _a_indices(n: int, r: int, param_index: int) -> set[int]:
+    """Indices i of the A_{2n,2n-i} in the exact (r+1)-th derivative of the step (matched as S A / c)."""
+    pt = _pt(n, ALPHA_TS[0], X_FRACTIONS[0])
+    comp = _kterm_computed(n, r, pt, 0, STEP_PARAMS[param_index],
+                           lambda n_, r_: alive_before(n, r + 1, param_index))
+    s = _S(r + 1, r + 1)
+    return {i for val in comp.values() for i in range(2 * n + 1)
+            if val == s * _A_at(pt, 2 * n - i, "t") / _c(pt, 2 * n - i)}
+
+
+def asystem_check(check_id: str, param_index: int, correct=None) -> LineResult:
+    """The printed system {A_{2n,2n-i}}_{i=a}^{b} (range read from the transcription) is exactly the set of A's in the
+    exact derivative of the step, and linearly independent (exact rank), n = 2..6, r = 0..n-2."""
+    from paper_repro.printed.lines.read import bound
+
+    def run(tex: str) -> tuple[bool, list]:
+        m = re.search(r"A_\{2n,2n-i\}\^\{\\alpha\}\\left\(\s*([xy])\\right\)\s*:\s*([xy])\\in\\left\[\s*0\s*,"
+                      r"\s*\\alpha\s*\\right\]\s*\\right\\\}\s*_\{i=([^{}]+)\}\^\{([^{}]+)\}", tex)
+        run_var = _params()[STEP_PARAMS[param_index]][1]
+        if not m or m.group(1) != m.group(2) or m.group(1) == run_var:
+            raise ValueError(f"no system {{A_{{2n,2n-i}}(x) : x in [0, alpha]}}_{{i=a}}^{{b}} in {tex[:40]!r}")
+        bad = []
+        for n in range(2, N_PROOF.stop):
+            for r in range(n - 1):
+                lo = bound(m.group(3).replace("\\left(", "(").replace("\\right)", ")"), n=n, r=r)
+                hi = bound(m.group(4).replace("\\left(", "(").replace("\\right)", ")"), n=n, r=r)
+                comp = _a_indices(n, r, param_index)
+                if set(range(lo, hi + 1)) != comp or not _a_system_rank(n, lo, hi):
+                    bad.append({"n": n, "r": r, "printed": [lo, hi], "computed": sorted(comp)})
+        return not bad, bad
+
+    lines = _lines_of(check_id)
+    try:
+        ok, bad = run(lines[0].verbatim)
+        corr = run(correct(lines[0].verbatim))[0] if correct else None
+    except ValueError as exc:
+        return LineResult(False, how="the system read from the transcription", detail={"unread": str(exc)})
+    return LineResult(ok, corr, how="the printed range read from the transcription against the A functions present "
+                      "in the exact derivative; exact collocation rank, n = 2..6, r = 0..n-2",
+                      detail={"mismatches": len(bad), "first_mismatches": bad[:2]})
+
+
+@line_check("sec1_3-r-p1-asystem")
+def rp1_asystem() -> LineResult:
+    """Printed {A_{2n,2n-i}}_{i=r+1}^{2n-1-(r+1)}; the step needs i = r+1..2n-(r+1) (the erratum's correction)."""
+    return asystem_check("sec1_3-r-p1-asystem", 0, _p1_corrected)
+
+
+@line_check("sec1_3-r-p2-k0")
+def rp2_k0() -> LineResult:
+    return value_lines_check("sec1_3-r-p2-k0")
+
+
+@line_check("sec1_3-r-p2-kpos")
+def rp2_kpos() -> LineResult:
+    return kpos_check("sec1_3-r-p2-kpos", 1)
+
+
+@line_check("sec1_3-r-p2-aform")
+def rp2_aform() -> LineResult:
+    return value_lines_check("sec1_3-r-p2-aform")
+
+
+@line_check("sec1_3-r-p2-asystem")
+def rp2_asystem() -> LineResult:
+    return asystem_check("sec1_3-r-p2-asystem", 1)
+
+
+@line_check("sec1_3-r-p3-aform")
+def rp3_aform() -> LineResult:
+    return value_lines_check("sec1_3-r-p3-aform")
+
+
+@line_check("sec1_3-r-p3-kpos")
+def rp3_kpos() -> LineResult:
+    return kpos_check("sec1_3-r-p3-kpos", 2)
 
 
 @line_check("sec1_3-fig-n4-caption")
