@@ -29,7 +29,7 @@ from paper_repro.claims.lines import LineResult, line_check
 from paper_repro.core.domain import rational_alpha
 from paper_repro.core.labels import BasisLabel, delta, exponents, full_system, index_of, united_system
 from paper_repro.core.univariate import c_const, c_numerator, c_numerator_by_expansion
-from paper_repro.theory.derivatives import mixed_derivative, sin_power_derivative
+from paper_repro.theory.derivatives import mixed_derivative, sign, sin_power_derivative
 
 HALF = fmpq(1, 2)
 #: alpha = 4 atan(t) for these t, and interior parameters x = 4 atan(t_x) with t_x < t (exact half angles).
@@ -591,7 +591,15 @@ def fourier_dimension() -> LineResult:
 def independence_rank() -> LineResult:
     """T_{2n} is linearly independent (so dim span T_{2n} = delta_n): its exact collocation matrix at delta_n + 5
     rational points of Omega^alpha has rank delta_n (modulo a 61-bit prime: full rank there implies full rank over Q),
-    n = 1..5 at tan(alpha/4) = 1/2 and n = 1..4 at tan(alpha/4) = 3/4."""
+    n = 1..5 at tan(alpha/4) = 1/2 and n = 1..4 at tan(alpha/4) = 3/4.  Read from the transcription: the system
+    (\\ref{united_system}), the words "is linearly independent", and the space whose dimension is claimed, the span
+    of T_{2n}^alpha (its order 2n)."""
+    tex = re.sub(r"\s+", " ", _transcribed(["sec1_3-theorem"])["sec1_3-theorem"])
+    m = re.fullmatch(r"The function system \(\\ref\{united_system\}\) is linearly independent and the dimension of "
+                     r"the vector space \$\\mathcal\{T\}_\{(\w+)\}\^\{\\alpha\}=~\$\\emph\{span\}\$\\emph\{~\}"
+                     r"T_\{(\w+)\}\^\{\\alpha\}\$ is", tex.strip())
+    if not m or m.group(1) != m.group(2) or m.group(1) != "2n":
+        return LineResult(False, how="the statement read from the transcription", detail={"unread": tex[:60]})
     detail, ok = {}, True
     for at, n_max in zip(ALPHA_TS, (5, 4)):
         for n in range(1, n_max + 1):
@@ -729,10 +737,20 @@ def bernstein_polynomials() -> LineResult:
 
 @line_check("sec1_3-sin-power-leading")
 def sin_power_leading() -> LineResult:
-    """S^j_{j,mu}(0) = j! mu^j (exact Taylor series, j = 1..15, mu in {1/2, 1, 3, 7/5})."""
-    ok = all(sin_power_derivative(j, mu, j) == factorial(j) * mu**j for j in range(1, 16)
+    """"In particular, $S_{j,\\mu}^{j}\\left( 0\\right) =j!\\mu^{j}$" (read: the indices, the order, the point 0 and
+    the right-hand side factorial times power) against exact Taylor coefficients, j = 1..15, mu in {1/2, 1, 3, 7/5}."""
+    tex = re.sub(r"\s+", "", _transcribed(["sec1_3-sin-leading"])["sec1_3-sin-leading"])
+    m = re.search(r"\$S_\{([a-z]),\\mu\}\^\{([a-z])\}\\left\(0\\right\)=([a-z])!\\mu\^\{([a-z])\}\$", tex)
+    if not m or "Inparticular" not in tex:
+        return LineResult(False, how="the formula read from the transcription", detail={"unread": tex[:60]})
+    names = m.groups()
+    ok = all(sin_power_derivative(*(env[v] for v in names[:1]), mu, env[names[1]])
+             == factorial(env[names[2]]) * mu ** env[names[3]]
+             for j in range(1, 16) for env in [{"j": j}] if all(v in env for v in names)
              for mu in (fmpq(1, 2), fmpq(1), fmpq(3), fmpq(7, 5)))
-    return LineResult(ok, how="exact Taylor coefficients", detail={"ok": ok})
+    ok = ok and all(v == "j" for v in names)
+    return LineResult(ok, how="the printed formula read from the transcription against exact Taylor coefficients, "
+                      "j = 1..15", kind="exhaustive", detail={"ok": ok, "read": list(names)})
 
 
 # -- chain rules and parametrizations ----------------------------------------------------------------------------
@@ -805,23 +823,52 @@ def chain_3(override=None) -> LineResult:
     return _chain("parametrization_3_y_0", "sec1_3-chain-rule-3", override)
 
 
-def param_onto(param: str, y_to=lambda a, x: a - x) -> bool:
-    """The parameter triangle x in [0, alpha], y in [0, y_to(alpha, x)] is mapped into Omega^alpha (grid points,
-    exact) and its vertices onto the vertices of Omega^alpha (an affine bijection of triangles: onto)."""
+def _lin(expr: str, a, x=None):
+    """A printed bound (linear form in alpha, x; no y) at alpha = a and x."""
+    from paper_repro.printed.lines.sec3_read import linear_form
+
+    ca, cx, cy = linear_form(expr)
+    if cy or (cx and x is None):
+        raise ValueError(f"the bound {expr!r} depends on {'y' if cy else 'x'}")
+    return ca * a + (cx * x if cx else 0)
+
+
+def param_onto(param: str, y_to=None, ranges: dict[str, tuple[str, str]] | None = None) -> bool:
+    """The printed map of ``param`` on its printed parameter triangle x in [x_lo, x_hi], y in [y_lo(x), y_hi(x)]
+    (read from the transcription; ``ranges`` or ``y_to(alpha, x)`` replace them) is an affine bijection onto
+    Omega^alpha: grid points go into Omega^alpha (u + v + w = alpha, u, v, w >= 0, exact) and the parameter
+    triangle's vertices onto the three vertices of Omega^alpha."""
     fmap = PARAMS[param][0]
+    rng = ranges or _params()[param][3]
     a = fmpq(3, 2)
-    grid = all(sum(fmap(a, x, y)) == a and min(fmap(a, x, y)) >= 0
-               for x in (fmpq(k, 8) * a for k in range(9)) for y in (fmpq(m, 8) * y_to(a, x) for m in range(9)))
-    ends = ((fmpq(0), fmpq(0)), (a, fmpq(0)), (fmpq(0), y_to(a, fmpq(0))), (a, y_to(a, a)))
+    x_lo, x_hi = _lin(rng["x"][0], a), _lin(rng["x"][1], a)
+
+    def y_lo(x):
+        return fmpq(0) if y_to else _lin(rng["y"][0], a, x)
+
+    def y_hi(x):
+        return y_to(a, x) if y_to else _lin(rng["y"][1], a, x)
+    if x_hi <= x_lo:
+        return False
+    xs = [x_lo + fmpq(k, 8) * (x_hi - x_lo) for k in range(9)]
+    pts = [(x, y_lo(x) + fmpq(m, 8) * (y_hi(x) - y_lo(x))) for x in xs for m in range(9)]
+    grid = all(y_hi(x) >= y_lo(x) for x in xs) and all(sum(fmap(a, x, y)) == a and min(fmap(a, x, y)) >= 0
+                                                          for x, y in pts)
+    ends = ((x_lo, y_lo(x_lo)), (x_hi, y_lo(x_hi)), (x_lo, y_hi(x_lo)), (x_hi, y_hi(x_hi)))
     corners = {tuple(fmap(a, x, y)) for x, y in ends}  # the parameter triangle's vertices (one listed twice)
     return grid and corners == {(a, 0, 0), (0, a, 0), (0, 0, a)}
 
 
 def _param(param: str) -> LineResult:
-    ok = param_onto(param)
-    return LineResult(ok, how="exact images of a grid of the parameter triangle and of its vertices (alpha = 3/2; "
-                      "the maps are linear in (alpha, x, y), so one alpha > 0 stands for every alpha)",
-                      kind="proof", detail={"onto": ok})
+    try:
+        ok = param_onto(param)
+    except ValueError as exc:
+        return LineResult(False, how="the parametrization read from the transcription", kind="proof",
+                          detail={"unread": str(exc)})
+    return LineResult(ok, how="the printed map and ranges read from the transcription; exact images of a grid of the "
+                      "parameter triangle and of its vertices (alpha = 3/2; the maps are linear in (alpha, x, y), so "
+                      "one alpha > 0 stands for every alpha)", kind="proof",
+                      detail={"onto": ok, "map": [list(m) for m in _params()[param][2]]})
 
 
 @line_check("sec1_3-param-1")
@@ -841,9 +888,21 @@ def param_3() -> LineResult:
 
 @line_check("sec1_3-param-ranges")
 def param_ranges() -> LineResult:
-    ok = all(param_onto(p) for p in STEP_PARAMS)
-    return LineResult(ok, how="the three parametrizations on x in [0, alpha], y in [0, alpha - x]", kind="proof",
-                      detail={"onto": ok})
+    """"for all x in [0, alpha], y in [0, alpha - x] and order r in N" (read): on these ranges each of the three
+    printed parametrizations maps onto Omega^alpha."""
+    from paper_repro.printed.lines.read import interval
+
+    tex = _transcribed(["sec1_3-chain-ranges"])["sec1_3-chain-ranges"]
+    try:
+        rng = {"x": interval(tex, "x"), "y": interval(tex, "y")}
+        if not re.search(r"\\forall|for all", tex) or not re.search(r"r\\in%?\s*\\mathbb\{N\}", tex):
+            raise ValueError("no 'for all ... and order r in N'")
+        ok = all(param_onto(p, ranges=rng) for p in STEP_PARAMS)
+    except ValueError as exc:
+        return LineResult(False, how="the ranges read from the transcription", kind="proof",
+                          detail={"unread": str(exc)})
+    return LineResult(ok, how="the ranges read from the transcription; the three printed parametrizations on them "
+                      "(exact images of the parameter triangle)", kind="proof", detail={"onto": ok, "ranges": rng})
 
 
 def read_boundary_vars(tex: str) -> list[tuple[str, str]]:
@@ -1021,18 +1080,18 @@ def ln1_set(override=None) -> LineResult:
 
 @line_check("sec1_3-elimination-orders")
 def elimination_orders(override: dict[str, str] | None = None) -> LineResult:
-    """The derivative orders the proof uses, read from its six lines and compared with the elimination recomputed
-    from exact derivatives: level j is removed by the order-j steps (parametrizations 1, 2, 3) and the centre by an
-    order-n step, so the induction runs over r = 0..n (line induction-orders); L_r exists, non-empty, for
-    r = 0..n-1 (induction-range); the steps r -> r+1 are r = 0..n-2 (step-range, induction-conclusion); the figure
-    shows the first and last of them, r = 0 and r = n-2, with derivatives of orders r + 1 of L_r."""
+    """The derivative orders the proof uses, read from five of its lines and compared with the elimination
+    recomputed from exact derivatives: level j is removed by the order-j steps (parametrizations 1, 2, 3); L_r
+    exists, non-empty, for r = 0..n-1 (induction-range); the steps r -> r+1 are r = 0..n-2 (step-range,
+    induction-conclusion); the figure shows the first and last of them, r = 0 and r = n-2, with derivatives of
+    orders r + 1 of L_r."""
     from paper_repro.printed.lines.read import bound, listed_range
 
-    ids = ("sec1_3-induction-orders", "sec1_3-induction-range", "sec1_3-step-range", "sec1_3-induction-conclusion",
+    ids = ("sec1_3-induction-range", "sec1_3-step-range", "sec1_3-induction-conclusion",
            "sec1_3-fig-j1-caption-orders", "sec1_3-fig-j1-text")
     t = _transcribed(ids, override)
     try:
-        ranges = {k: listed_range(t[k], "r") for k in ids[:4]}
+        ranges = {k: listed_range(t[k], "r") for k in ids[:3]}
         caption_r = re.findall(r"\$r=([^$]+)\$", t["sec1_3-fig-j1-caption-orders"])
         head = t["sec1_3-fig-j1-text"].split("order partial derivatives")[0]
         text_orders = re.findall(r"\b(first)\b|\$\\left\(\s*([^$]+?)\s*\\right\)\s*\$th", head)
@@ -1045,9 +1104,7 @@ def elimination_orders(override: dict[str, str] | None = None) -> LineResult:
         removed_at = sorted({r for r, _p, _b, gone in elimination(n) if gone})
         levels_ok = all(labels[k].j == r and not labels[k].is_centre for r, _p, _b, gone in elimination(n)
                         for k in gone) and alive_after(n, n - 1, 2) == frozenset({0})
-        centre_order = n if survivors(n, STEP_PARAMS[0], n, frozenset({0})) == frozenset({0}) else None
-        want = {"sec1_3-induction-orders": removed_at + [centre_order],
-                "sec1_3-induction-range": removed_at,  # the orders whose steps remove a level
+        want = {"sec1_3-induction-range": removed_at,  # the orders whose steps remove a level
                 "sec1_3-step-range": [r for r in range(n) if r + 1 < n],
                 "sec1_3-induction-conclusion": [r for r in range(n) if r + 1 < n]}
         for k, (lo, hi) in ranges.items():
@@ -1062,9 +1119,45 @@ def elimination_orders(override: dict[str, str] | None = None) -> LineResult:
                 bad.append(f"n={n}: figure")
         if not levels_ok:
             bad.append(f"n={n}: levels")
-    return LineResult(not bad, how="orders read from the six transcriptions against the elimination recomputed from "
+    return LineResult(not bad, how="orders read from the five transcriptions against the elimination recomputed from "
                       f"exact derivatives, n = 1..{N_PROOF.stop - 1}", kind="exhaustive",
                       detail={"ranges": {k: list(v) for k, v in ranges.items()}, "mismatches": bad[:3]})
+
+
+@line_check("sec1_3-induction-orders")
+def induction_orders(verbatim_text: str | None = None) -> LineResult:
+    """"we argue by mathematical induction on the derivation order $r=0,1,\\ldots,n$" (range read): the orders of the
+    derivatives the proof takes are those of the recomputed elimination -- the order-0 steps and the steps of order
+    r + 1, r = 0..n-2 -- i.e. 0..n-1 (level j is removed by the order-j steps; after them only the centre is left,
+    which the proof removes by R_{2n,n,n} != 0, without a derivative), and the hypothesis it proves is stated for
+    r = 0..n-1 (line sec1_3-Lr-orders, read).  Printed: 0..n; corrected: 0..n-1."""
+    from paper_repro.printed.lines.read import bound, listed_range
+
+    tex = verbatim_text if verbatim_text is not None else _transcribed(["sec1_3-induction-orders"])[
+        "sec1_3-induction-orders"]
+
+    def run(text: str) -> tuple[bool, list]:
+        lo, hi = listed_range(text, "r")
+        if "induction on the derivation order" not in text:
+            raise ValueError("not the induction on the derivation order")
+        hyp_lo, hyp_hi = listed_range(_transcribed(["sec1_3-Lr-orders"])["sec1_3-Lr-orders"], "r")
+        bad = []
+        for n in N_PROOF:
+            used = sorted({r for r, _p, _b, gone in elimination(n) if gone})
+            printed = list(range(bound(lo, n=n), bound(hi, n=n) + 1))
+            hyp = list(range(bound(hyp_lo, n=n), bound(hyp_hi, n=n) + 1))
+            if printed != used or printed != hyp or alive_after(n, n - 1, 2) != frozenset({0}):
+                bad.append({"n": n, "printed": printed, "orders_used": used})
+        return not bad, bad
+    try:
+        ok, bad = run(tex)
+        fixed = re.sub(r"(r=0,1,\\ldots,)n\$", lambda m: m.group(1) + "n-1$", tex)
+        corr = run(fixed)[0] if fixed != tex else None
+    except ValueError as exc:
+        return LineResult(False, how="the range read from the transcription", detail={"unread": str(exc)})
+    return LineResult(ok, corr, how="the printed range of orders against the orders of the elimination recomputed from "
+                      f"exact derivatives and the range of the hypothesis (read), n = 1..{N_PROOF.stop - 1}",
+                      kind="exhaustive", detail={"mismatches": bad[:3]})
 
 
 # -- value lines: linear forms in the combining constants -----------------------------------------------------
@@ -1374,31 +1467,64 @@ def r0p1_terms(verbatim: str | None = None) -> LineResult:
     return _terms_check("sec1_3-r0-p1-terms", 0, verbatim)
 
 
+_POWER_WORDS = {"at least": lambda e, m: e >= m, "greater than or equal to": lambda e, m: e >= m,
+                "greater than": lambda e, m: e > m, "at most": lambda e, m: e <= m, "less than": lambda e, m: e < m,
+                "equal to": lambda e, m: e == m}
+_NUMBER_WORDS = {"zero": 0, "one": 1, "two": 2, "three": 3}
+
+
+def read_omitted(tex: str) -> dict:
+    """The sentence "the omitted functions include the factor $\\left. \\sin\\frac{v_{1}(x,y)}{2}\\right\\vert _{y=0}
+    =\\left. \\sin\\frac{y}{2}\\right\\vert _{y=0}=0$ raised to a power at least one", read: the coordinate and its
+    parametrization index, the argument it equals, the points, the printed value and the power relation."""
+    t = re.sub(r"\s+", " ", tex.replace("%", " "))
+    m = re.search(r"\$\\left\. \\sin ?\\frac\{([uvw])_\{(\d)\}\\left\( x,y\\right\) \}\{2\}\\right\\vert _\{([xy])=0\}"
+                  r" ?= ?\\left\. \\sin ?\\frac\{([^{}]+)\} ?\{2\}\\right\\vert _\{([xy])=0\} ?= ?(\d+)\$ "
+                  r"raised to a power "
+                  r"(at least|greater than or equal to|greater than|at most|less than|equal to) (zero|one|two|three)\b",
+                  t)
+    if not m:
+        raise ValueError(f"the omitted functions' factor not read in {tex[:50]!r}")
+    return {"coord": m.group(1), "index": int(m.group(2)), "points": {m.group(3), m.group(5)}, "arg": m.group(4),
+            "value": int(m.group(6)), "relation": m.group(7), "power": _NUMBER_WORDS[m.group(8)]}
+
+
 def omitted_check(line_id: str, before: str, terms_line: str, param_index: int,
                   override: dict[str, str] | None = None) -> LineResult:
-    """"The omitted functions contain sin(x_k/2), 0 at the edge, to a power >= 1": read from the transcriptions
-    -- the variable (``\\sin\\frac{v_{1}..``), the functions before the step (the rows of ``before``) and those
-    kept (the terms of ``terms_line``) -- every function before the step and not kept has that sine to a power
-    >= 1, every kept one has not, and the variable is the one that vanishes on the step's edge (n = 1..12)."""
+    """"The omitted functions include the factor sin(x_k/2)|_{edge} = sin(t/2)|_{edge} = 0 raised to a power at least
+    one", read from the transcriptions (:func:`read_omitted`) together with the functions before the step (the rows
+    of ``before``) and those kept (the terms of ``terms_line``): the coordinate is the printed parametrization's
+    coordinate of the step (its index), equal to the printed argument (both as linear forms), and its half-angle
+    sine at the printed point (the step's edge) is the printed value, 0 (exact); every function before the step and
+    not kept has that sine to a power in the printed relation ("at least one"), every kept one has not (n = 1..12)."""
     from paper_repro.printed.lines.read import sum_terms, term_indices
+    from paper_repro.printed.lines.sec3_read import linear_form
 
     t = _transcribed([line_id, terms_line], override)
-    m = re.search(r"\\sin\s*\\frac\{([uvw])_\{\d\}", t[line_id])
-    if not m:
-        return LineResult(False, how="the vanishing sine read from the transcription, n = 1..12", kind="exhaustive",
-                          detail={"unread": line_id})
-    var = "uvw".index(m.group(1))
-    ok = var == step_geometry(STEP_PARAMS[param_index])[1]
+    try:
+        o = read_omitted(t[line_id])
+        _fmap, run, maps, _r = _params()[STEP_PARAMS[param_index]]
+        var = "uvw".index(o["coord"])
+        same_arg = linear_form(o["arg"]) == maps[var]
+        pt = _pt(1, ALPHA_TS[0], X_FRACTIONS[0])
+        value = _arg_half(f"{o['coord']}_{o['index']}", param_index, pt)[0]
+    except ValueError as exc:
+        return LineResult(False, how="the omitted functions' factor read from the transcription, n = 1..12",
+                          kind="exhaustive", detail={"unread": str(exc)})
+    rel = _POWER_WORDS[o["relation"]]
+    ok = same_arg and o["points"] == {run} and value == o["value"] and var == step_geometry(STEP_PARAMS[param_index])[1]
     for n in range(1, 13):
         strict = {lb.paper: k for k, lb in enumerate(united_system(n))}
         kept = {strict.get(f"{c}_{{{2 * n},{2 * n - i},{j}}}", "?") for c, i, j in
                 term_indices(sum_terms(t[terms_line]), n=n)}
         alive = printed_rows(before, n, 0, override)
         ok &= "?" not in kept and kept <= alive
-        ok &= all((exponents(united_system(n)[k])[2 * var] >= 1) == (k not in kept)
+        ok &= all(rel(exponents(united_system(n)[k])[2 * var], o["power"]) == (k not in kept)
                   for k in alive if isinstance(k, int))
-    return LineResult(ok, how=f"exponent of sin({m.group(1)}/2) in the functions before the step (read) against those "
-                      "kept (read), n = 1..12", kind="exhaustive", detail={"variable": m.group(1), "ok": bool(ok)})
+    return LineResult(ok, how=f"exponent of sin({o['coord']}/2) in the functions before the step (read) against those "
+                      "kept (read), the printed relation and power, and the printed value of the sine at the edge "
+                      "(exact), n = 1..12", kind="exhaustive",
+                      detail={"variable": o["coord"], "relation": f"{o['relation']} {o['power']}", "ok": bool(ok)})
 
 
 @line_check("sec1_3-r0-p1-omitted")
@@ -1931,41 +2057,165 @@ def rp3_kpos() -> LineResult:
 
 
 @line_check("sec1_3-fig-n4-caption")
-def fig_n4_caption(order: int = 4) -> LineResult:
-    """Fig. derivative_scheme_n_4 (n = 4, 4th-order mixed partials under parametrization_for_partition_of_unity at
-    y = 0): a function with sin(v/2) to the power j (and a v-dependence) has a vanishing partial of order z in v
-    exactly when z < j (first zero condition) or z > j with z - j = +-1 mod 4 (second), z = 0..4.  The functions that
-    do not depend on v (sin^{2n}(u/2), sin^{2n}(w/2): outside the Proposition's hypothesis i + j != 0) vanish for
-    every z >= 1 trivially; they are counted apart."""
-    n = 4
-    param = "parametrization_for_partition_of_unity"
-    direction, zero, _fixed, _rest = step_geometry(param)
-    bad, v_free = 0, 0
+def fig_n4_caption(order: int | None = None, n: int | None = None) -> LineResult:
+    """Fig. derivative_scheme_n_4, read from the caption: the order of the mixed partials ("$4$th order", and the
+    orders k = 0..4 of its list), the parametrization and point (\\ref{parametrization_for_partition_of_unity} at
+    $y=0$, with v = y and w = x - y as printed there), the gray areas (sin(v/2) "raised to a power greater than" the
+    order in v: the first condition of the zero branch of the Proposition, read from its transcription) and the
+    other black dots (the second condition).  Computed: for every function of T_{2n} (n of the text, "In the case of
+    $n=4$") with sin(v/2) to the power j and cos(v/2) to the power i (i + j != 0) and every order z in v, its partial
+    vanishes at v = 0 exactly when gray or the second condition; the gray ones are exactly those with j > z."""
+    from paper_repro.printed.lines.sec3_read import _condition, linear_form, read_sign_function
+
+    tex = _transcribed(["sec1_3-fig-n4-caption"])["sec1_3-fig-n4-caption"].replace("%", " ")
+    try:
+        m = re.search(r"the \$(\d+)\$th order mixed partial derivatives of which with respect to "
+                      r"\$v\\left\( x,y\\right\) =([^$]+)\$ and \$w\\left\( x,y\\right\) =([^$]+)\$ are zero and "
+                      r"non-zero, respectively, under parametrization \(\\ref\{(\w+)\}\) at \$([xy])=0\$", tex)
+        ks = re.findall(r"order \$k=0,1,\\ldots,(\d+)\$ of the partial derivative with respect to \$v",
+                        tex)
+        gray = re.search(r"raised to a power (greater than|less than|at least|at most) the corresponding order", tex)
+        conds = re.findall(r"due to the (first|second) condition of the zero branch|fulfills the (first|second) "
+                           r"condition of the zero branch", tex)
+        text_n = re.search(r"In the case of \$n=(\d+)\$", _transcribed(["sec1_3-L-prose"])["sec1_3-L-prose"])
+        if not (m and gray and len(ks) == 2 and len(conds) == 2 and text_n):
+            raise ValueError("caption not read")
+        printed_order = int(m.group(1))
+        label, at = m.group(4), m.group(5)
+        fmap, run, maps, _r = _params()[label]
+        forms_ok = linear_form(m.group(2)) == maps[1] and linear_form(m.group(3)) == maps[2] and at == run
+        branches = read_sign_function(_transcribed(["sec1_3-proposition-M"])["sec1_3-proposition-M"])
+        zero = [c for v, c in branches if v == 0]
+        parts = [p.strip() for p in re.split(r"\)\s+or\s+\(", zero[0].strip()[1:-1])] if len(zero) == 1 else []
+        if len(parts) != 2:
+            raise ValueError("the zero branch of the Proposition is not two conditions joined by 'or'")
+        which = {"first": parts[0], "second": parts[1]}
+        gray_cond, black_cond = which[conds[0][0] or conds[0][1]], which[conds[1][0] or conds[1][1]]
+        rel = {"greater than": lambda j, z: j > z, "less than": lambda j, z: j < z,
+               "at least": lambda j, z: j >= z, "at most": lambda j, z: j <= z}[gray.group(1)]
+        _condition("z<j")  # the reader of conditions is the one the Proposition's branches went through
+    except (ValueError, KeyError) as exc:
+        return LineResult(False, how="the caption read from its transcription", detail={"unread": str(exc)})
+    order = printed_order if order is None else order
+    n = int(text_n.group(1)) if n is None else n
+    direction, zero_var, _fixed, _rest = step_geometry(label)
+    bad, v_free, gray_bad = 0, 0, 0
+    ok_orders = [int(k) for k in ks] == [printed_order, printed_order]
     for lb in united_system(n):
         e = exponents(lb)
-        j, i = e[2 * zero], e[2 * zero + 1]
+        j, i = e[2 * zero_var], e[2 * zero_var + 1]
         if i + j == 0:
             v_free += 1
             continue
         for k in range(order + 1):
             z = order - k
+            env = {"__builtins__": {}}
             vanish = mixed_derivative(i, HALF, j, HALF, z) == 0
-            predicted = z < j or (z > j and (z - j) % 4 in (1, 3))
-            bad += vanish != predicted
-    return LineResult(bad == 0 and direction == (0, 1, -1), how="exact derivatives at v = 0 of every function of T_8, "
-                      "orders 0..4 in v", detail={"mismatches": bad, "v_independent_functions": v_free})
+            is_gray = eval(gray_cond, env, {"z": z, "j": j})  # noqa: S307 - read above
+            is_black = eval(black_cond, env, {"z": z, "j": j})  # noqa: S307
+            bad += vanish != (is_gray or is_black)
+            gray_bad += bool(is_gray) != rel(j, z)
+    ok = bad == 0 and gray_bad == 0 and ok_orders and forms_ok and direction == (0, 1, -1)
+    return LineResult(ok, how=f"exact derivatives at v = 0 of every function of T_{{2n}}, n = {n}, orders "
+                      f"z = 0..{order} in v, against the caption and the zero branch of the Proposition (read)",
+                      kind="exhaustive", detail={"mismatches": bad, "gray_mismatches": gray_bad,
+                                                 "v_independent_functions": v_free, "order": printed_order})
 
 
 @line_check("sec1_3-interval-typo")
-def interval_typo(printed: str = r"\left[ 0\,\alpha\right]", corrected: str = r"\left[ 0,\alpha\right]") -> LineResult:
-    """An interval [a, b] is written with a comma between its endpoints; the printed [0\\,alpha] has none (a thin
-    space instead), so it does not parse as the interval [0, alpha]."""
-    def endpoints(text: str) -> list[str]:
-        inner = text.replace(r"\left[", "").replace(r"\right]", "").replace(r"\,", " ").strip()
-        return [p.strip() for p in inner.split(",")]
-    return LineResult(endpoints(printed) == ["0", r"\alpha"], endpoints(corrected) == ["0", r"\alpha"],
-                      how="the printed interval parsed into endpoints", kind="proof",
-                      detail={"printed_endpoints": endpoints(printed)})
+def interval_typo() -> LineResult:
+    """An interval [a, b] is written with a comma between its endpoints; the printed ``\\left[ 0\\,\\alpha\\right]``
+    (read from the transcription) has none (a thin space instead), so it does not parse as an interval; with the comma
+    it is [0, alpha], the range of x on the edge y = 0 of parametrization_3_y_0 (read from its transcription)."""
+    from paper_repro.printed.lines.sec3_read import linear_form
+
+    tex = _transcribed(["sec1_3-r0-p3-interval"])["sec1_3-r0-p3-interval"]
+    m = re.fullmatch(r"\s*x\s*\\in\s*\\left\[(.*)\\right\]\s*", tex)
+
+    def holds(inner: str) -> bool:
+        parts = [p.strip() for p in inner.split(",")]
+        try:
+            return len(parts) == 2 and [linear_form(p) for p in parts] == \
+                [linear_form(q) for q in _params()["parametrization_3_y_0"][3]["x"]]
+        except ValueError:
+            return False
+    if not m:
+        return LineResult(False, None, how="the interval read from the transcription", kind="proof",
+                          detail={"unread": tex[:40]})
+    inner = m.group(1)
+    return LineResult(holds(inner), holds(inner.replace("\\,", ",")) if "\\," in inner else None,
+                      how="the printed interval read into endpoints, against the printed range of x of "
+                      "parametrization_3_y_0", kind="proof", detail={"printed": inner.strip()})
+
+
+@line_check("sec1_3-lemma-hypotheses")
+def lemma_hypotheses(verbatim_text: str | None = None) -> LineResult:
+    """The Lemma's hypotheses (read): "Let $i$, $j$ and $p$ be natural numbers greater than or equal to $1$" while its
+    sets of signs run over $p\\geq0$.  The hypothesis on p contradicts the sets (p = 0 is both excluded and listed);
+    without it (i, j >= 1, p >= 0 as the sets say) the statement is consistent, and the sine rule (read from its
+    transcription) holds on the whole range, p = 0 included (exact Taylor coefficients, j = lower bound..8,
+    p = 0..16, mu in {1/2, 1, 3})."""
+    from paper_repro.printed.lines.sec3_read import read_sign_function, sign_of
+
+    tex = verbatim_text if verbatim_text is not None else _transcribed(["sec1_3-lemma-hypotheses"])[
+        "sec1_3-lemma-hypotheses"]
+
+    def run(text: str) -> tuple[bool, dict]:
+        m = re.search(r"Let ((?:\$[a-z]\$(?:, | and )?)+) be natural numbers greater than or equal to \$(\d+)\$", text)
+        sets = re.findall(r"\\right\\\}\s*_\{p\\geq(\d+)\}", text)
+        if not m or len(sets) != 2 or len(set(sets)) != 1 or "\\lambda,\\mu>0" not in text:
+            raise ValueError("hypotheses not read")
+        letters = re.findall(r"\$([a-z])\$", m.group(1))
+        lo = int(m.group(2))
+        p_lo = lo if "p" in letters else int(sets[0])
+        consistent = p_lo == int(sets[0])
+        rule = read_sign_function(_transcribed(["sec1_3-sign-sin"])["sec1_3-sign-sin"])
+        j_lo = lo if "j" in letters else 0
+        holds = all(sign_of(rule, j=j, p=p) == sign(sin_power_derivative(j, mu, p)) for j in range(j_lo, 9)
+                    for p in range(int(sets[0]), 17) for mu in (fmpq(1, 2), fmpq(1), fmpq(3)))
+        return consistent and holds, {"hypothesis_letters": letters, "lower_bound": lo, "sets_from_p": int(sets[0]),
+                                      "consistent": consistent, "sine_rule_holds": holds}
+    try:
+        ok, detail = run(tex)
+        corr = run(tex.replace("$i$, $j$ and $p$", "$i$ and $j$"))[0] if "$i$, $j$ and $p$" in tex else None
+    except ValueError as exc:
+        return LineResult(False, how="the hypotheses read from the transcription", detail={"unread": str(exc)})
+    return LineResult(ok, corr, how="the hypotheses and the index sets read from the transcription; the sine rule "
+                      "(read) against exact Taylor coefficients, j = 1..8, p = 0..16", kind="exhaustive",
+                      detail=detail)
+
+
+def r0p1_sines() -> LineResult:
+    """Line sec1_3-r0-p1-sines (resolved to claim independence_proof_steps), read: its terms evaluated at y = 0 of
+    parametrization_1_y_0 against the exact values of the functions there.  As printed the last term's constant
+    gamma_{2n,2n-i,0} stands outside the sum over i (i unbound: unread); with gamma_{2n,2n,0} (the line before, and
+    the definition of rho'_{2n,0,0}) it holds."""
+    from paper_repro.printed.lines.sec3_read import read_products
+
+    tex = _transcribed(["sec1_3-r0-p1-sines"])["sec1_3-r0-p1-sines"]
+
+    def run(text: str) -> tuple[bool, object]:
+        try:
+            terms = read_products(re.sub(r"\\\\\s*$", "", text.strip()))
+        except ValueError as exc:
+            return False, str(exc)
+        for n in N_PROOF:
+            for at in ALPHA_TS:
+                for xf in X_FRACTIONS:
+                    pt = _pt(n, at, xf)
+                    try:
+                        pr = evaluate_terms(terms, {"n": n}, 0, pt)
+                    except ValueError as exc:
+                        return False, str(exc)
+                    if {q: v for q, v in pr.items() if v != 0} != _computed_form(
+                            n, STEP_PARAMS[0], 0, alive_before(n, 0, 0), pt):
+                        return False, f"n={n}: values differ"
+        return True, None
+    ok, why = run(tex)
+    fixed = re.sub(r"\\gamma_\{2n,2n-i,0\}(?=\s*\\sin\^\{2n\})", lambda _m: "\\gamma_{2n,2n,0}", tex)
+    corr = run(fixed)[0] if fixed != tex else None
+    return LineResult(ok, corr, how="the terms read from the transcription against exact values at y = 0, n = 1..6",
+                      detail={"unread": why})
 
 
 # -- the conclusions of the order-0 steps: the primed constants vanish (read from the transcription) ---------------

@@ -407,4 +407,63 @@ def read_parametrization(tex: str) -> tuple[tuple[tuple[int, int, int], ...], di
 
 
 __all__ = ["Factor", "Term", "read_products", "linear_form", "rate", "split_case", "case_range",
-           "read_prime_definition", "read_parametrization"]
+           "read_prime_definition", "read_parametrization", "read_sign_function", "sign_of"]
+
+
+# -- sign functions (Lemma lem:sign_cos_power_derivative, Proposition derivative_cosine_sine) --------------------
+def _condition(cond: str) -> str:
+    """A printed case condition as a Python boolean expression in the index letters (see :func:`read_sign_function`).
+    ``A=2r`` binds r = A/2 (and requires A even) for the rest of the condition; ``X\\equiv Y(mod M)`` and
+    ``X\\equiv\\pm Y(mod M)`` are congruences; ``,~`` and ``\\text{ and }`` are conjunctions, ``\\text{or }``
+    a disjunction; ``<``, ``>``, ``\\geq``, ``\\leq``, ``\\neq`` relations."""
+    c = cond.replace("\\left(", "(").replace("\\right)", ")").replace("%", " ")
+    c = re.sub(r"\\operatorname\{mod\}", "mod", c)
+    c = re.sub(r"\\text\{\s*and\s*\}", " and ", c)
+    c = re.sub(r"(\\\s)?\\text\{\s*or\s*\}", " or ", c)
+    c = re.sub(r",\s*~", " and ", c)
+    c = re.sub(r"^\s*~", "", c).strip().rstrip(",.").strip()
+    c = c.replace("\\geq", ">=").replace("\\leq", "<=").replace("\\neq", "!=")
+    m = re.search(r"([a-z0-9+\-]+)\s*=\s*2r\b", c)
+    if m:  # p-i=2r: r is bound by it
+        half = f"(({_implicit(m.group(1))})//2)"
+        c = c[:m.start()] + f"(({_implicit(m.group(1))})%2==0)" + re.sub(r"\br\b", half, c[m.end():])
+    def congruence(mm):
+        x, pm, y, mod = mm.group(1), mm.group(2), mm.group(3), mm.group(4)
+        x = _implicit(x)
+        if pm:
+            return f"((({x})-({y}))%{mod}==0 or (({x})+({y}))%{mod}==0)"
+        return f"((({x})-({y}))%{mod}==0)"
+    c = re.sub(r"([a-z0-9+\-()/%]+?)\s*\\equiv\s*(\\pm)?\s*(\d+)\s*\(\s*mod\s*(\d+)\s*\)", congruence, c)
+    c = re.sub(r"(?<![<>!=])=(?!=)", "==", c)
+    if "\\" in c or re.search(r"[^\sa-z0-9+\-*/%()<>=!]", c):
+        raise ValueError(f"unread condition {cond!r}")
+    return c
+
+
+def _implicit(expr: str) -> str:
+    return re.sub(r"(\d)([a-z(])", r"\1*\2", expr)
+
+
+def read_sign_function(tex: str) -> list[tuple[int, str]]:
+    """The branches of a printed sign function ``\\operatorname{sign} X = \\left\\{ \\begin{array}[c]{rl} -1, &
+    COND,\\\\ 0, & COND,\\\\ +1, & COND \\end{array}\\right.``: [(value, Python condition), ...] in printed order."""
+    t = tex.replace("%", " ")
+    m = re.search(r"\\begin\{array\}\s*\[c\]\{rl\}(.*?)\\end\{array\}", t, flags=re.S)
+    if not m or "\\operatorname{sign}" not in t:
+        raise ValueError(f"no sign function in {tex[:50]!r}")
+    out = []
+    for row in re.split(r"\\\\", m.group(1)):
+        if not row.strip():
+            continue
+        mm = re.fullmatch(r"\s*([+-]?\d+)\s*,\s*&(.*)", row, flags=re.S)
+        if not mm:
+            raise ValueError(f"unread branch {row!r}")
+        out.append((int(mm.group(1)), _condition(mm.group(2))))
+    return out
+
+
+def sign_of(branches: list[tuple[int, str]], **env: int) -> int | None:
+    """The value the printed branches give at ``env``: the one value of the branches whose condition holds; None if
+    none holds or holding branches disagree (the printed case analysis gives no single value)."""
+    vals = {v for v, c in branches if eval(c, {"__builtins__": {}}, dict(env))}  # noqa: S307 - read above
+    return vals.pop() if len(vals) == 1 else None
