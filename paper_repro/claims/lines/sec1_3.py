@@ -781,12 +781,66 @@ def read_chain(tex: str) -> tuple[int, int]:
     return "uvw".index(m.group(2)), "uvw".index(m.group(3))
 
 
+_CHAIN_STRICT = re.compile(
+    r"^(?:\\frac\{\\partial\^\{(?P<o0>[^{}]+)\}\}\{\\partial(?P<run>[xy])\^\{(?P<o1>[^{}]+)\}\}"
+    r"(?P<f0>L|\\widetilde\{L\}_\{r\}|\\widehat\{L\}_\{r\}|L_\{r\})\((?P<args0>[^=]*)\))?="
+    r"\\sum_\{k=(?P<k0>[^{}]+)\}\^\{(?P<o2>[^{}]+)\}\\dbinom\{(?P<o3>[^{}]+)\}\{k\}\(-1\)\^\{k\}"
+    r"\\frac\{\\partial\^\{(?P<o4>[^{}]+)\}\}\{\\partial(?P<a>[uvw])(?:_\{(?P<ai>\d)\})?\^\{(?P<o5>[^{}]+)-k\}"
+    r"\\partial(?P<b>[uvw])(?:_\{(?P<bi>\d)\})?\^\{k\}\}"
+    r"(?P<f1>L|\\widetilde\{L\}_\{r\}|\\widehat\{L\}_\{r\}|L_\{r\})\((?P<args1>.*?)\)"
+    r"(?:\\rightvert_\{(?P<bar>[xy])=0\})?(?P<tail>[.,]?|,~\\forall(?P<qv>[xy])\\in\[(?P<lo>[^,\]]+),(?P<hi>[^\]]+)\][.,])$")
+
+
+def read_chain_strict(tex: str, param: str) -> dict:
+    """The whole printed chain rule ``\\frac{\\partial^{r}}{\\partial y^{r}}L(..) = \\sum_{k=0}^{r} \\dbinom{r}{k}
+    (-1)^k \\frac{\\partial^{r}}{\\partial a^{r-k}\\partial b^{k}} L(..) [|_{y=0}, \\forall x \\in [0,\\alpha]]``, read:
+    every order equal, the sum from k = 0, the arguments the coordinates of ``param`` (its index) at (x, y), the
+    point the running parameter at 0, the quantifier over the other parameter on its printed range
+    (``ValueError`` otherwise)."""
+    from paper_repro.printed.lines.sec3_read import linear_form
+
+    t = re.sub(r"\s+", "", tex.replace("%", ""))
+    for p in (r"\\begin\{equation\}", r"\\end\{equation\}", r"\\label\{[^{}]*\}", r"&", r"\\\\$",
+              r"\\left\.", r"\\right\.(?!\w)"):
+        t = re.sub(p, "", t)
+    t = t.replace("\\left(", "(").replace("\\right)", ")").replace("\\dfrac", "\\frac").replace("\\left[", "[")
+    t = t.replace("\\right]", "]").replace("\\right\\vert", "\\rightvert").replace("\\,", "")
+    t = re.sub(r"\{\\displaystyle\\sum\\limits(_\{[^{}]*\}\^\{[^{}]*\})\}", r"\\sum\1", t)
+    m = _CHAIN_STRICT.match(t)
+    if not m:
+        raise ValueError(f"chain rule not read: {t[:60]!r}")
+    orders = {m.group(g) for g in ("o0", "o1", "o2", "o3", "o4", "o5") if m.group(g) is not None}
+    if len(orders) != 1 or m.group("k0") != "0":
+        raise ValueError(f"orders {sorted(orders)} / sum from k={m.group('k0')}")
+    idx = STEP_PARAMS.index(param) + 1 if param in STEP_PARAMS else None
+    want_idx = str(idx) if idx else None
+    coords = ",".join(f"{c}{'_{' + want_idx + '}' if want_idx else ''}(x,y)" for c in "uvw")
+    if m.group("ai") != want_idx or m.group("bi") != want_idx or m.group("args1") != coords or \
+            (m.group("args0") is not None and m.group("args0") != coords) or m.group("f0") not in (None, m.group("f1")):
+        raise ValueError("the arguments are not the coordinates of the parametrization")
+    _fmap, run, _maps, ranges = _params()[param]
+    if m.group("run") not in (None, run) or m.group("bar") not in (None, run):
+        raise ValueError("not the running parameter of the parametrization")
+    if m.group("qv"):
+        free = "x" if run == "y" else "y"
+        lo, hi = _lin(m.group("lo"), 1), _lin(m.group("hi"), 1)
+        def at_edge(q: str) -> tuple[int, int, int]:  # the printed bound with the running parameter at 0
+            a, x, y = linear_form(q)
+            return (a, 0, y) if run == "x" else (a, x, 0)
+        if m.group("qv") != free or (lo, hi) != (0, 1) or m.group("bar") is None or \
+                [at_edge(q) for q in ranges[free]] != [at_edge(m.group("lo")), at_edge(m.group("hi"))]:
+            raise ValueError("the quantifier is not over the other parameter on [0, alpha]")
+    return m.groupdict()
+
+
 def _chain(param: str, check_id: str, override: dict[str, str] | None = None) -> LineResult:
     """Every line of ``check_id`` (the chain rule and its use at order r+1) read from its transcription: the pair of
     variables it differentiates must be the printed parametrization's direction e_a - e_b."""
     texts = {k: v for k, v in _transcribed([x.id for x in _lines_of(check_id)], override).items()}
     try:
         pairs = {k: read_chain(v) for k, v in sorted(texts.items())}
+        for v in texts.values():
+            read_chain_strict(v, param)
     except ValueError as exc:
         return LineResult(False, how="the chain rule read from the transcription", detail={"unread": str(exc)})
     ok = bool(pairs) and all(chain_ok(param, pr) for pr in pairs.values())
@@ -860,8 +914,12 @@ def param_onto(param: str, y_to=None, ranges: dict[str, tuple[str, str]] | None 
 
 
 def _param(param: str) -> LineResult:
+    """The printed parametrization maps its printed triangle onto Omega^alpha, and its direction along the running
+    parameter is the pair of variables its derivative formula differentiates (read: d/dy = d_{v_1} - d_{w_1} for
+    parametrization_1_y_0), so the map is the one the proof differentiates."""
     try:
-        ok = param_onto(param)
+        chain_line = PARAM_LINES[param][1]
+        ok = param_onto(param) and chain_ok(param, read_chain(_transcribed([chain_line])[chain_line]))
     except ValueError as exc:
         return LineResult(False, how="the parametrization read from the transcription", kind="proof",
                           detail={"unread": str(exc)})
@@ -946,9 +1004,14 @@ def printed_rows(check_id: str, n: int, r: int = 0, override: dict[str, str] | N
 
     rows = {x.id: x.verbatim for x in LINES if x.check == check_id and x.kind == "display"}
     rows.update({k: v for k, v in (override or {}).items() if k in rows})
+    from paper_repro.printed.lines.sec3_read import row_residue
+
     strict = {lb.paper: k for k, lb in enumerate(united_system(n))}
     out: set = set()
     for key in sorted(rows):
+        rest = row_residue(rows[key])
+        if rest:
+            raise ValueError(f"{key}: unread {rest[:40]!r}")
         for color, i, j in term_indices(sum_terms(rows[key]), n=n, r=r):
             name = f"{color}_{{{2 * n},{2 * n - i},{j}}}"
             out.add(strict.get(name, name))
@@ -967,10 +1030,30 @@ def _read_sets(check_id: str, computed_fn, rs=lambda n: [0], ns=N_PROOF, overrid
 
 @line_check("sec1_3-L-set")
 def l_set(override: dict[str, str] | None = None) -> LineResult:
+    """The rows of eq. linear_combination_union name every function of T_{2n} once; the constants listed after it
+    (line sec1_3-L-coefficients, read: rho_{2n,n,n} and the sets of rho and gamma -- the set of beta follows on the
+    next, untranscribed, line) are exactly the constants of the R and G terms of the rows (n = 1..12)."""
+    from paper_repro.printed.lines.read import constant_sets, sum_terms, term_indices
+
     res = _read_sets("sec1_3-L-set", lambda n, r: set(range(len(united_system(n)))), ns=range(1, 13),
                      override=override)
     res.how = res.how.replace("against the elimination recomputed from exact derivatives", "against T_{2n}")
     res.kind = "exhaustive"
+    t = _transcribed(["sec1_3-L-coefficients", "sec1_3-L-R-row", "sec1_3-L-G-row"], override)
+    bad = []
+    try:
+        if not re.match(r"\s*where \$\\rho_\{2n,n,n\}\$, \$\\left\\\{", t["sec1_3-L-coefficients"]):
+            raise ValueError("not 'where rho_{2n,n,n}, {..}'")
+        for n in range(1, 13):
+            listed = sorted(constant_sets(t["sec1_3-L-coefficients"], n))
+            rows = sorted(c for k in ("sec1_3-L-R-row", "sec1_3-L-G-row")
+                          for c in term_indices(sum_terms(t[k]), n=n))
+            if listed != rows:
+                bad.append(n)
+    except ValueError as exc:
+        bad.append(str(exc))
+    res.holds_as_printed &= not bad
+    res.detail["coefficients_mismatch"] = bad[:3]
     return res
 
 
@@ -1002,13 +1085,37 @@ def l0_set(override=None) -> LineResult:
     return _read_sets("sec1_3-L0-set", lambda n, r: alive_after(n, 0, 2), override=override)
 
 
-def _orders(line_id: str, n: int) -> range:
-    """The orders r of a listed range ``r=a,...,b`` read from the transcription of ``line_id``."""
-    from paper_repro.printed.lines.read import bound, listed_range
-    from paper_repro.printed.lines.sec1_3 import LINES
+def listed_orders(tex: str, var: str, **env: int) -> list[range]:
+    """Every listed range ``var=a,a+1,\\ldots,b`` of ``tex`` as a range (``ValueError`` if there is none, or if a
+    second listed value is not the first plus one)."""
+    from paper_repro.printed.lines.read import bound
+    from paper_repro.printed.lines.sec3_read import listing
 
-    lo, hi = listed_range({x.id: x.verbatim for x in LINES}[line_id], "r")
-    return range(bound(lo, n=n), bound(hi, n=n) + 1)
+    out = []
+    found = listing(tex, var)
+    if not found:
+        raise ValueError(f"no listed range {var}=a,...,b in {tex[:50]!r}")
+    for a, b, c in found:
+        lo = bound(a, **env)
+        if b is not None and bound(b, **env) != lo + 1:
+            raise ValueError(f"{var}={a},{b},... does not step by one")
+        out.append(range(lo, bound(c, **env) + 1))
+    return out
+
+
+def _orders(line_id: str, n: int) -> range:
+    """The orders r of the listed range ``r=a,a+1,...,b`` read from the transcription of ``line_id``; for the
+    hypothesis' orders (line sec1_3-Lr-orders) the line must say "for all orders" and "the coefficients of all
+    discarded functions are equal to $0$", and the range must be all orders of the recomputed elimination."""
+    tex = _transcribed([line_id])[line_id]
+    (rng,) = listed_orders(tex, "r", n=n)
+    if line_id == "sec1_3-Lr-orders":
+        if not re.fullmatch(r"for all orders \$r=.*\$, where the coefficients of all discarded functions are equal to "
+                            r"\$0\$\.", tex.strip()):
+            raise ValueError("not 'for all orders r=.., where the coefficients ... are equal to $0$.'")
+        if list(rng) != sorted({r for r, _p, _b, _g in elimination(n)}):
+            raise ValueError(f"the orders {list(rng)} are not those of the elimination")
+    return rng
 
 
 @line_check("sec1_3-Lr-set")
@@ -1067,14 +1174,33 @@ def ln2_set(override=None) -> LineResult:
                       override=override)
 
 
+def bound_n(expr: str, n: int) -> int:
+    from paper_repro.printed.lines.read import bound
+
+    return bound(expr, n=n)
+
+
+def _names_set(n: int, idx) -> set[str]:
+    return set(_names(n, idx))
+
+
 @line_check("sec1_3-Ln1-set")
 def ln1_set(override=None) -> LineResult:
     """L_{n-1} = rho_{2n,n,n} R_{2n,n,n}, and R_{2n,n,n} is not the zero function (so rho_{2n,n,n} = 0)."""
     res = _read_sets("sec1_3-Ln1-set", lambda n, r: alive_after(n, n - 1, 2), override=override)
     pt = _domain_points(ALPHA_TS[0], 1)[0]
     nonzero = all(pt[0][0] ** n * pt[1][0] ** n * pt[2][0] ** n != 0 for n in N_PROOF)
-    res.holds_as_printed &= nonzero
+    # "equality (..n_minus_1) holds if and only if \\[ \\rho_{2n,n,n}=0, \\]" (read): the one constant of L_{n-1},
+    # and the value 0 that R_{2n,n,n} != 0 forces
+    tex = re.sub(r"\s+", " ", _transcribed(["sec1_3-rho-centre-zero"], override)["sec1_3-rho-centre-zero"])
+    m = re.fullmatch(r"Moreover, equality \(\\ref\{induction_hypothesis_for_linear_independence_n_minus_1\}\) holds "
+                     r"if and only if% ?\\\[ \\rho_\{2n,(\w+),(\w+)\}=(\d+), \\\]", tex.strip())
+    names_ok = bool(m) and all(
+        {f"R_{{{2 * n},{bound_n(m.group(1), n)},{bound_n(m.group(2), n)}}}"} == _names_set(n, alive_after(n, n - 1, 2))
+        for n in N_PROOF)
+    res.holds_as_printed &= nonzero and names_ok and bool(m) and m.group(3) == "0"
     res.detail["centre_nonzero_at_a_point"] = nonzero
+    res.detail["rho_centre_zero_read"] = bool(m) and names_ok
     return res
 
 
@@ -1319,7 +1445,7 @@ def _prime_defs(line_ids) -> dict[str, tuple]:
     return out
 
 
-def _constant_key(const, env: dict, pt, primes: dict | None) -> tuple[object, fmpq]:
+def _constant_key(const, env: dict, pt, primes: dict | None, used: set | None = None) -> tuple[object, fmpq]:
     """(member of T_{2n} the printed constant multiplies -- a string if no member --, factor of its value): a primed
     constant is resolved through its printed definition (the constant it stands for, divided by c)."""
     color, first, level, primed = const
@@ -1335,6 +1461,8 @@ def _constant_key(const, env: dict, pt, primes: dict | None) -> tuple[object, fm
     if _expr(def_level, env) != level_v:
         return f"{color}'_{{{2 * n},{first_v},{level_v}}} (undefined level)", fmpq(1)
     i = 2 * n - first_v
+    if used is not None:
+        used.add((color, i))
     for (c2, f2, l2), cidx, lo, hi in cases:
         scope = {**env, "i": i}
         if _expr(lo, scope) <= i <= _expr(hi, scope):
@@ -1346,13 +1474,14 @@ def _constant_key(const, env: dict, pt, primes: dict | None) -> tuple[object, fm
     return f"{color}'_{{{2 * n},{first_v},{level_v}}} (undefined i)", fmpq(1)
 
 
-def evaluate_terms(terms, env: dict, param_index: int, pt, primes: dict | None = None, orders=None) -> dict:
+def evaluate_terms(terms, env: dict, param_index: int, pt, primes: dict | None = None, orders=None,
+                   used: set | None = None) -> dict:
     """{member of T_{2n} (or a printed name that is none): the value its constant multiplies} of printed terms."""
     out: dict = {}
 
     def walk(term, sums, scope):
         if not sums:
-            key, scale = _constant_key(term.constant, scope, pt, primes)
+            key, scale = _constant_key(term.constant, scope, pt, primes, used)
             val = scale
             for f in term.factors:
                 val *= _factor_value(f, scope, param_index, pt, orders)
@@ -1564,26 +1693,66 @@ A_SYSTEM_OF = {"sec1_3-r0-p1-A-system": "sec1_3-r0-p1-aform", "sec1_3-r0-p2-A-sy
                "sec1_3-r0-p3-A-system": "sec1_3-r0-p3-aform"}
 
 
+def read_a_system(tex: str, param_index: int) -> tuple[str, str, str]:
+    """(first, last, index expression k(i)) of a printed system ``\\left\\{ A_{2n,k(i)}^{\\alpha}\\left( x\\right)
+    :x\\in\\left[ 0,\\alpha\\right] \\right\\} _{i=a}^{b}``, read: the variable must be the free parameter of
+    the step's edge and the interval its printed range there; "is"/"are linearly independent" where the line
+    says it (the thin-space typo ``0\\,\\alpha`` of one line is erratum sec1_3-r0-p3-interval)."""
+    t = tex.replace("%", " ")
+    m = re.search(r"\\left\\\{\s*A_\{2n,([^{}]+)\}\^\{\\alpha\}\\left\(\s*([xy])\\right\)\s*:\s*([xy])\s*\\in\s*"
+                  r"\\left\[\s*([^,\]\\]+?)\s*(?:,|\\,)\s*([^\]]+?)\s*\\right\]\s*\\right\\\}\s*_\{i=([^{}]+)\}"
+                  r"\^\{([^{}]+)\}\$(.*)$", t)
+    _fmap, run, _maps, ranges = _params()[STEP_PARAMS[param_index]]
+    free = "x" if run == "y" else "y"
+    if not m or m.group(2) != free or m.group(3) != free:
+        raise ValueError(f"no system {{A_{{2n,k}}({free}) : {free} in [0, alpha]}}_{{i=a}}^{{b}} in {tex[:40]!r}")
+    if (_lin(m.group(4), 1), _lin(m.group(5), 1)) != (0, 1):
+        raise ValueError(f"the interval [{m.group(4)}, {m.group(5)}] is not [0, alpha]")
+    after = m.group(8).strip()
+    if after and not re.fullmatch(r"(is|are) linearly independent", after):
+        raise ValueError(f"not 'is linearly independent': {after!r}")
+    if re.search(r"\bdependent", t.replace("independent", "")):
+        raise ValueError("'dependent'")
+    return m.group(6), m.group(7), m.group(1)
+
+
+def _display_a_indices(tex: str, param_index: int, n: int, r: int = 0) -> list[int]:
+    """The indices k of the A_{2n,k} in a printed display (its sums evaluated), in order."""
+    terms, _k = read_value_line(tex, param_index)
+    out = []
+
+    def walk(term, sums, scope):
+        if not sums:
+            out.extend(_expr(f.args[0], scope) for f in term.factors if f.kind == "A")
+            return
+        (v, lo, hi), rest = sums[0], sums[1:]
+        for x in range(_expr(lo, scope), _expr(hi, scope) + 1):
+            walk(term, rest, {**scope, v: x})
+    for term in terms:
+        walk(term, term.sums, {"n": n, "r": r})
+    return out
+
+
 @line_check("sec1_3-A-independent")
 def a_independent(override: dict[str, str] | None = None) -> LineResult:
-    """The subsystems {A_{2n,2n-i}}_{i=a}^{b} of the order-0 steps (ranges read from the transcriptions) are the
-    A's of the sum in the display before each (its bounds read too) and linearly independent (exact ranks)."""
-    from paper_repro.printed.lines.read import bound
-
+    """The subsystems {A_{2n,2n-i}}_{i=a}^{b} of the order-0 steps (read from the transcriptions: index expression,
+    range, variable and interval) are the A's of the sum in the display before each (read too) and linearly
+    independent (exact ranks), n = 1..5."""
     texts = _transcribed(list(A_SYSTEM_OF) + list(A_SYSTEM_OF.values()), override)
     ranges, ok = {}, True
-    for line_id, display in A_SYSTEM_OF.items():
-        m = re.search(r"\\right\\\}\s*_\{i=([^{}]+)\}\^\{([^{}]+)\}", texts[line_id])
-        d = re.search(r"\\sum_\{i=([^{}]+)\}\^\{([^{}]+)\}", texts[display])
-        if not m or not d:
-            return LineResult(False, how="the ranges read from the transcriptions, n = 1..5",
-                              detail={"unread": line_id if not m else display})
-        ranges[line_id] = list(m.groups())
-        for n in range(1, 6):
-            first, last = bound(m.group(1), n=n), bound(m.group(2), n=n)
-            ok &= (first, last) == (bound(d.group(1), n=n), bound(d.group(2), n=n))
-            ok &= 0 <= first <= last <= 2 * n and _a_system_rank(n, first, last)
-    return LineResult(ok, how="ranges read from the transcriptions, equal to the bounds of the sums they are used "
+    try:
+        for k, (line_id, display) in enumerate(A_SYSTEM_OF.items()):
+            first_e, last_e, idx = read_a_system(texts[line_id], k)
+            ranges[line_id] = [first_e, last_e, idx]
+            for n in range(1, 6):
+                first, last = _expr(first_e, {"n": n}), _expr(last_e, {"n": n})
+                listed = [_expr(idx, {"n": n, "i": i}) for i in range(first, last + 1)]
+                ok &= sorted(listed) == sorted(_display_a_indices(texts[display], k, n))
+                ok &= 0 <= first <= last <= 2 * n and _a_system_rank(n, first, last) and listed == \
+                    [2 * n - i for i in range(first, last + 1)]
+    except ValueError as exc:
+        return LineResult(False, how="the systems read from the transcriptions, n = 1..5", detail={"unread": str(exc)})
+    return LineResult(ok, how="systems read from the transcriptions, equal to the A's of the sums they are used "
                       "for; exact collocation ranks, n = 1..5", detail={"ranges": ranges})
 
 
@@ -1641,12 +1810,23 @@ def _zeroed_check(computed_fn, printed_level, corrected_level, i_range, color, a
                                                            "corrected_mismatches": len(bad_c)})
 
 
-def read_zeroed(line_id: str, verbatim: str | None = None):
+def _zero_line_strict(tex: str, color: str | None) -> None:
+    """A printed conclusion ``\\rho_{2n,2n-i,L}^{\\prime}=0,~i=a,a+1,\\ldots,b`` must be exactly that: a primed
+    constant of the step's colour (the one its definition line defines), ``=``, a listed range stepping by one
+    (``ValueError`` otherwise; the value and the range are compared by the callers)."""
+    m = re.fullmatch(r"\s*\\(rho|gamma|beta)_\{2n,2n-i,[^{}]+\}\^\{\\prime\}=\d+,~i=.+?[.,]\s*", tex.replace("%", " "))
+    if not m or (color and {"rho": "R", "gamma": "G", "beta": "B"}[m.group(1)] != color):
+        raise ValueError(f"not a conclusion const'_{{2n,2n-i,L}}=0, i=a,..,b of colour {color}: {tex[:40]!r}")
+    listed_orders(tex, "i", n=5, r=1)
+
+
+def read_zeroed(line_id: str, verbatim: str | None = None, color: str | None = None):
     """(level, range of i, right-hand side) of a printed ``const'_{2n,2n-i,LEVEL} = 0, i = a, ..., b``, read from its
     transcription, as functions of (n, r)."""
     from paper_repro.printed.lines.read import bound, listed_range, right_hand_side
 
     tex = verbatim if verbatim is not None else _transcribed([line_id])[line_id]
+    _zero_line_strict(tex, color)
     m = re.search(r"_\{2n,2n-i,([^{}]+)\}\^\{\\prime\}", tex)
     if not m:
         raise ValueError(f"no primed constant in {tex[:50]!r}")
@@ -1661,7 +1841,7 @@ def _zeroed_read(line_id, computed_fn, corrected_level, color, alias, level=None
     """:func:`_zeroed_check` with the printed level, range and right-hand side read from the transcription
     (``level`` overrides the level read: the corrected form in tests)."""
     try:
-        read_level, i_range, rhs = read_zeroed(line_id, verbatim)
+        read_level, i_range, rhs = read_zeroed(line_id, verbatim, color)
     except ValueError as exc:
         return LineResult(False, how="the printed constants read from the transcription", detail={"unread": str(exc)})
     res = _zeroed_check(computed_fn, level or read_level, corrected_level, i_range, color, alias)
@@ -1791,10 +1971,12 @@ def value_lines_check(check_id: str, texts: dict[str, str] | None = None, defs_t
                 for xf in X_FRACTIONS:
                     pt = _pt(n, at, xf)
                     alive = _alive_for(param_index, r, order == 0, n)
+                    used: set = set()
                     for lid, (terms, k) in values.items():
                         cases += 1
                         try:
-                            pr = evaluate_terms(terms, {"n": n, "r": r, "k": k or 0}, param_index, pt, primes)
+                            pr = evaluate_terms(terms, {"n": n, "r": r, "k": k or 0}, param_index, pt, primes,
+                                                used=used)
                         except ValueError as exc:
                             bad.append({"line": lid, "n": n, "r": r, "unread": str(exc)})
                             continue
@@ -1811,6 +1993,14 @@ def value_lines_check(check_id: str, texts: dict[str, str] | None = None, defs_t
                                         "computed_only": _names(n, set(comp) - set(pr)),
                                         "values_differ": _names(n, {q for q in set(pr) & set(comp)
                                                                     if pr[q] != comp[q]})})
+                    # each definition of a primed constant covers exactly the i its values use, once
+                    for color, (_level, pcases) in primes.items():
+                        scope = {"n": n, "r": r}
+                        covered = [i for _c, _k, lo, hi in pcases
+                                   for i in range(_expr(lo, scope), _expr(hi, scope) + 1)]
+                        if sorted(covered) != sorted({i for c, i in used if c == color}):
+                            bad.append({"n": n, "r": r, "definition_of": color, "covers": covered,
+                                        "used": sorted({i for c, i in used if c == color})})
     detail.update({"cases": cases, "mismatches": len(bad), "first_mismatches": bad[:2]})
     return LineResult(not bad, how="the printed values (terms, constants, primed definitions, factors) read from the "
                       "transcriptions against the exact derivatives along the printed parametrization, "
@@ -1991,21 +2181,17 @@ def _a_indices(n: int, r: int, param_index: int) -> set[int]:
 def asystem_check(check_id: str, param_index: int, correct=None) -> LineResult:
     """The printed system {A_{2n,2n-i}}_{i=a}^{b} (range read from the transcription) is exactly the set of A's in the
     exact derivative of the step, and linearly independent (exact rank), n = 2..6, r = 0..n-2."""
-    from paper_repro.printed.lines.read import bound
 
     def run(tex: str) -> tuple[bool, list]:
-        m = re.search(r"A_\{2n,2n-i\}\^\{\\alpha\}\\left\(\s*([xy])\\right\)\s*:\s*([xy])\\in\\left\[\s*0\s*,"
-                      r"\s*\\alpha\s*\\right\]\s*\\right\\\}\s*_\{i=([^{}]+)\}\^\{([^{}]+)\}", tex)
-        run_var = _params()[STEP_PARAMS[param_index]][1]
-        if not m or m.group(1) != m.group(2) or m.group(1) == run_var:
-            raise ValueError(f"no system {{A_{{2n,2n-i}}(x) : x in [0, alpha]}}_{{i=a}}^{{b}} in {tex[:40]!r}")
+        first_e, last_e, idx = read_a_system(tex, param_index)
         bad = []
         for n in range(2, N_PROOF.stop):
             for r in range(n - 1):
-                lo = bound(m.group(3).replace("\\left(", "(").replace("\\right)", ")"), n=n, r=r)
-                hi = bound(m.group(4).replace("\\left(", "(").replace("\\right)", ")"), n=n, r=r)
+                lo, hi = _expr(first_e, {"n": n, "r": r}), _expr(last_e, {"n": n, "r": r})
                 comp = _a_indices(n, r, param_index)
-                if set(range(lo, hi + 1)) != comp or not _a_system_rank(n, lo, hi):
+                listed = [_expr(idx, {"n": n, "r": r, "i": i}) for i in range(lo, hi + 1)]
+                if set(range(lo, hi + 1)) != comp or not _a_system_rank(n, lo, hi) or \
+                        listed != [2 * n - i for i in range(lo, hi + 1)]:
                     bad.append({"n": n, "r": r, "printed": [lo, hi], "computed": sorted(comp)})
         return not bad, bad
 
@@ -2235,6 +2421,9 @@ def zero_conclusion(line_id: str, verbatim: str | None = None) -> LineResult:
 
     param_index, color, alias = ZERO_LINES[line_id]
     tex = verbatim if verbatim is not None else _transcribed([line_id])[line_id]
+    _zero_line_strict(tex, color)
+    if not re.match(r"\s*\\\w+_\{2n,2n-i,0\}", tex):
+        raise ValueError("not the level-0 constants")
     lo, hi = listed_range(tex, "i")
     rhs = right_hand_side(tex, r",~i\s*=")
     bad = []

@@ -369,8 +369,15 @@ def read_prime_definition(tex: str) -> tuple[tuple[str, str], list[tuple[tuple[s
         rng = [p.strip() for p in re.sub(r"\\ldots\s*", lambda _m: "\\ldots", c.group(4)).split(",")]
         if "\\ldots" in rng:
             first, last = rng[0], rng[-1]
-            if rng.index("\\ldots") != len(rng) - 2:
+            if rng.index("\\ldots") != len(rng) - 2 or len(rng) > 4:
                 raise ValueError(f"unread range {c.group(4)!r}")
+            if len(rng) == 4:  # a, b, ..., c: b must be a + 1
+                from paper_repro.printed.lines.read import bound
+
+                def val(e: str, n: int, r: int) -> int:
+                    return bound(e.replace("\\left(", "(").replace("\\right)", ")"), n=n, r=r)
+                if any(val(rng[1], n, r) != val(rng[0], n, r) + 1 for n in (3, 5) for r in (0, 1)):
+                    raise ValueError(f"the listed range {c.group(4)!r} does not step by one")
         elif len(rng) == 1:
             first = last = rng[0]
         else:
@@ -407,7 +414,7 @@ def read_parametrization(tex: str) -> tuple[tuple[tuple[int, int, int], ...], di
 
 
 __all__ = ["Factor", "Term", "read_products", "linear_form", "rate", "split_case", "case_range",
-           "read_prime_definition", "read_parametrization", "read_sign_function", "sign_of"]
+           "read_prime_definition", "read_parametrization", "read_sign_function", "sign_of", "row_residue", "listing"]
 
 
 # -- sign functions (Lemma lem:sign_cos_power_derivative, Proposition derivative_cosine_sine) --------------------
@@ -467,3 +474,37 @@ def sign_of(branches: list[tuple[int, str]], **env: int) -> int | None:
     none holds or holding branches disagree (the printed case analysis gives no single value)."""
     vals = {v for v, c in branches if eval(c, {"__builtins__": {}}, dict(env))}  # noqa: S307 - read above
     return vals.pop() if len(vals) == 1 else None
+
+
+# -- strict reading of the rows of the proof's equalities -------------------------------------------------------
+_ROW_PIECES = (
+    r"\\begin\{equation\}", r"\\end\{equation\}", r"\\label\{[^{}]*\}", r"\\nonumber", r"\\displaystyle", r"\\limits",
+    r"&", r"\\\\",
+)
+
+
+def row_residue(tex: str) -> str:
+    """What a row of a printed equality ``0 = L(u,v,w) = rho_{2n,n,n} R_{2n,n,n}^{\\alpha}(u,v,w) + sum ... ,
+    \\forall (u,v,w) in \\Omega^{\\alpha}`` holds besides its head, sums, terms (constant, function of order 2n with
+    superscript alpha applied to (u, v, w)), plus signs and the quantifier: '' for a row read completely."""
+    t = re.sub(r"\s+", "", tex.replace("%", ""))
+    for p in _ROW_PIECES:
+        t = re.sub(p, "", t)
+    t = re.sub(r"^(0=)?(L|\\widetilde\{L\}|\\widehat\{L\})(_\{[^{}]*\})?\\left\(u,v,w\\right\)=", "", t)
+    t = re.sub(r"^=", "", t)
+    t = re.sub(r",~?\\forall\\left\(u,v,w\\right\)\\in\\Omega\^\{\\alpha\}[.,]?$", "", t)
+    t = re.sub(r",~?\\forall\\left\($", "", t)  # a row the transcription ends inside the quantifier
+    t = re.sub(r"\\(rho|gamma|beta)_\{[^{}]*\}[RGB]_\{[^{}]*\}\^\{\\alpha\}\\left\(u,v,w\\right\)", "", t)
+    t = re.sub(r"\{?\\sum_\{[^{}]*\}\^\{[^{}]*\}\}?", "", t)
+    return t.replace("+", "")
+
+
+def listing(tex: str, var: str) -> list[tuple[str, str | None, str]]:
+    """Every listed range ``var=a,b,\\ldots,c`` (or ``var=a,\\ldots,c``) of ``tex``: [(a, b or None, c), ...] as
+    printed (``\\left( .. \\right)`` -> parentheses)."""
+    t = re.sub(r"\s*\\right\)", ")", re.sub(r"\\left\(\s*", "(", tex.replace("%", " ")))
+    out = []
+    pat = rf"(?<![\w\\]){var}\s*=\s*([^,=$]+?)\s*,(?:\s*([^,=$]+?)\s*,)?\s*\\ldots\s*,\s*([^,.\s$]+)"
+    for m in re.finditer(pat, t):
+        out.append((m.group(1).strip(), m.group(2).strip() if m.group(2) else None, m.group(3).strip()))
+    return out
