@@ -29,6 +29,7 @@ from paper_repro.claims.lines import LineResult, line_check
 from paper_repro.core.domain import rational_alpha
 from paper_repro.core.labels import BasisLabel, delta, exponents, full_system, index_of, united_system
 from paper_repro.core.univariate import c_const, c_numerator, c_numerator_by_expansion
+from paper_repro.printed.lines import line as transcribed_line
 from paper_repro.theory.derivatives import mixed_derivative, sign, sin_power_derivative
 
 HALF = fmpq(1, 2)
@@ -973,6 +974,47 @@ def read_boundary_vars(tex: str) -> list[tuple[str, str]]:
     return list(zip(params, points))
 
 
+_NUMBER = {"two": 2, "three": 3, "four": 4, "five": 5}
+
+
+def _resp_vars(tex: str) -> list[list[str]]:
+    """The variables of every "with respect to [the variable|variables] $y$[, $x$ and $y$]" of a line."""
+    out = []
+    pat = r"with respect to (?:the variable |variables )?\$([xy])\$(?:, \$([xy])\$ and \$([xy])\$)?"
+    for m in re.finditer(pat, tex):
+        out.append([g for g in m.groups() if g])
+    return out
+
+
+def _step_words_ok(line_id: str, tex: str, pairs: list[tuple[str, str]]) -> bool:
+    """The words of a line that names steps of the proof, read: the order of the derivative ("$r=0$", "zeroth
+    order": 0 in the order-0 steps, before the induction; "$\\left( r+1\\right) $th order": r + 1 in the step
+    r -> r+1), the variables "with respect to" (those of the points), the number of "consecutive steps" (the
+    parametrizations named), and what black and coloured dots mean (vanish / do not vanish, substitutions with 0)."""
+    t = re.sub(r"\s+", " ", tex.replace("%", " "))
+    orders = [("0" if m.group(1) or m.group(2) else m.group(3).replace(" ", ""))
+              for m in re.finditer(r"\$r=(0)\$|(?<![\w-])(zeroth) order|\$\\left\( ?(r\+1) ?\\right\) ?\$th order", t)]
+    if re.search(r"\$r(?:=|\\neq)[^$]*\$|order", t) and not orders and "partial derivative formula" not in t \
+            and "under parametrizations" not in t:
+        raise ValueError(f"{line_id}: an order not read")
+    before_induction = transcribed_line(line_id).tex[0] < 912
+    if any(o != ("0" if before_induction else "r+1") for o in orders):
+        return False
+    points = [var for _p, var in pairs]
+    for vs in _resp_vars(t):
+        if vs != points[:len(vs)] and vs != points[-len(vs):]:
+            return False
+    m = re.search(r"illustrate (\w+) consecutive steps", t)
+    if m and _NUMBER.get(m.group(1)) != len(pairs):
+        return False
+    if "black dots" in t:
+        if not re.search(r"black dots represent functions whose zeroth order partial derivatives vanish when", t) or \
+                not re.search(r"partial derivatives of which do not vanish under corresponding parametrizations and "
+                              r"substitutions with \$0\$", t):
+            return False
+    return True
+
+
 @line_check("sec1_3-boundary-vars")
 def boundary_vars(override: dict[str, str] | None = None) -> LineResult:
     """Each line names parametrizations and the points where they are evaluated (read from the transcription):
@@ -985,6 +1027,12 @@ def boundary_vars(override: dict[str, str] | None = None) -> LineResult:
         return LineResult(False, how="the parametrizations and points read from the transcriptions",
                           detail={"unread": str(exc)})
     bad = {k: v for k, v in pairs.items() if any(PARAMS[p][1] != var for p, var in v)}
+    for k, v in texts.items():  # the orders and the variables the line names
+        try:
+            if not _step_words_ok(k, v, pairs[k]):
+                bad[k] = "words"
+        except ValueError as exc:
+            bad[k] = str(exc)
     edges = {p: "uvw"[step_geometry(p)[1]] for p in STEP_PARAMS}  # asserts one coordinate vanishes
     return LineResult(not bad, how="the parametrizations and points read from each transcription against the running "
                       "parameter of the printed maps, evaluated at 0", kind="proof",
@@ -1204,6 +1252,48 @@ def ln1_set(override=None) -> LineResult:
     return res
 
 
+def _orders_prose(t: dict[str, str]) -> None:
+    """The words of the lines about the orders of the induction, read (``ValueError`` if one is not as the proof
+    does it): the hypothesis is on the "$r$th order" under the three parametrizations "with respect to variables"
+    equal to their points, each the running parameter of its printed map; the step goes "from $r$ to $r+1$ for all
+    orders"; the conclusion evaluates "the $\\left( r+1\\right) $th order" derivatives with the "zero constants"
+    obtained and holds "for all orders"; the figure's caption shows "three consecutive steps" (the three
+    parametrizations) whose "first (resp. (n-1)th) order partial derivatives vanish"; the text after it names the
+    equalities 0 = L_0 and 0 = L_{n-2} on Omega^alpha under the successive parametrizations."""
+    def norm(k):
+        return re.sub(r"\s+", " ", t[k].replace("%", " "))
+    rng = norm("sec1_3-induction-range")
+    pairs = read_boundary_vars(rng)
+    if not re.search(r"an induction hypothesis with respect to the \$r\$th order \(\$r=", rng) or \
+            _resp_vars(rng) != [[v for _p, v in pairs]] or any(PARAMS[p][1] != v for p, v in pairs):
+        raise ValueError("induction-range: words")
+    if not re.search(r"we prove our hypothesis from \$r\$ to \$r\+1\$ for all orders \$r=", norm("sec1_3-step-range")):
+        raise ValueError("step-range: words")
+    con = norm("sec1_3-induction-conclusion")
+    if not re.fullmatch(r"Summarizing all calculations and zero constants obtained above, by evaluating the "
+                        r"\$\\left\( r\+1\\right\) \$th order \(\$r=[^$]*\$\) partial derivatives under successive "
+                        r"parametrizations \(\\ref\{parametrization_1_y_0\} ?\)--\(\\ref\{parametrization_3_y_0\}\) "
+                        r"of "
+                        r"the initial equality \(\\ref\{induction_hypothesis_for_linear_independence\}\), we conclude "
+                        r"that equality \(\\ref\{induction_hypothesis_nex_step\}\) is also valid, i\.e\., the "
+                        r"induction hypothesis \(\\ref\{induction_hypothesis_for_linear_independence\}\) is correct "
+                        r"for all orders \$r=[^$]*\$\.", con.strip()):
+        raise ValueError("induction-conclusion: words")
+    cap = norm("sec1_3-fig-j1-caption-orders")
+    m = re.search(r"illustrate (\w+) consecutive steps", cap)
+    orders = re.findall(r"(?:whose|evaluates the) (first) \(resp\. \$\\left\( (n-1)\\right\) \$th\) order partial "
+                        r"derivatives (vanish when|of)", cap)
+    if not m or _NUMBER.get(m.group(1)) != len(STEP_PARAMS) or len(orders) != 2 or \
+            not re.search(r"Cases \(\\emph\{a\}\)--\(\\emph\{c\}\) and \(\\emph\{d\}\)--\(\\emph\{f\}\)", cap):
+        raise ValueError("fig-j1-caption-orders: words")
+    txt = norm("sec1_3-fig-j1-text")
+    eqs = re.findall(r"\\\[ 0=L_\{([^{}]+)\}\\left\( u,v,w\\right\) ,~\\forall\\left\( u,v,w\\right\) \\in ?"
+                     r"\\Omega\^\{\\alpha\} ?\\\]", txt)
+    if len(eqs) != 2 or not re.search(r"under successive parametrizations \(\\ref\{parametrization_1_y_0\} ?\)--"
+                                      r"\(\\ref\{parametrization_3_y_0\}\), respectively", txt):
+        raise ValueError("fig-j1-text: words")
+
+
 @line_check("sec1_3-elimination-orders")
 def elimination_orders(override: dict[str, str] | None = None) -> LineResult:
     """The derivative orders the proof uses, read from five of its lines and compared with the elimination
@@ -1218,6 +1308,10 @@ def elimination_orders(override: dict[str, str] | None = None) -> LineResult:
     t = _transcribed(ids, override)
     try:
         ranges = {k: listed_range(t[k], "r") for k in ids[:3]}
+        for k in ids[:3]:  # every listing of the line steps by one and they agree
+            if len({(x.start, x.stop) for x in listed_orders(t[k], "r", n=5)}) != 1:
+                raise ValueError(f"{k}: listings differ")
+        _orders_prose(t)
         caption_r = re.findall(r"\$r=([^$]+)\$", t["sec1_3-fig-j1-caption-orders"])
         head = t["sec1_3-fig-j1-text"].split("order partial derivatives")[0]
         text_orders = re.findall(r"\b(first)\b|\$\\left\(\s*([^$]+?)\s*\\right\)\s*\$th", head)
@@ -1551,6 +1645,12 @@ def read_terms_at_edge(line_id: str, param_index: int, verbatim: str | None = No
 
     tex = verbatim if verbatim is not None else _transcribed([line_id])[line_id]
     terms = sum_terms(tex)
+    rest = re.sub(r"\s+", "", tex.replace("%", ""))
+    rest = re.sub(r"^&=", "", re.sub(r"\\\\$", "", rest))
+    rest = re.sub(r"\\(rho|gamma|beta)_\{[^{}]*\}[RGB]_\{[^{}]*\}\^\{\\alpha\}\\left\([^()]*\\right\)", "", rest)
+    rest = re.sub(r"\\sum_\{[^{}]*\}\^\{[^{}]*\}", "", rest).replace("+", "")
+    if rest:
+        raise ValueError(f"unread {rest[:40]!r}")
     points = {re.sub(r"\s+", "", x) for x in re.findall(r"\\left\(\s*([^()]*?)\s*\\right\)", tex)}
     fmap, run = PARAMS[STEP_PARAMS[param_index]]
     a, q = fmpq(7, 5), fmpq(2, 5)  # the printed point and the map compared at exact values of alpha and the parameter
@@ -2266,6 +2366,11 @@ def fig_n4_caption(order: int | None = None, n: int | None = None) -> LineResult
         text_n = re.search(r"In the case of \$n=(\d+)\$", _transcribed(["sec1_3-L-prose"])["sec1_3-L-prose"])
         if not (m and gray and len(ks) == 2 and len(conds) == 2 and text_n):
             raise ValueError("caption not read")
+        if not re.search(r"\(\\emph\{a\}\)--\(\\emph\{e\}\) Using the sign function", tex) or \
+                not re.search(r"Thus, these partial derivatives vanish at \$y=0\$", tex) or \
+                not re.search(r"black and non-black dots represent those functions of system "
+                              r"\(\\ref\{united_system\}\)", tex):
+            raise ValueError("caption words not read")
         printed_order = int(m.group(1))
         label, at = m.group(4), m.group(5)
         fmap, run, maps, _r = _params()[label]
@@ -2349,7 +2454,9 @@ def lemma_hypotheses(verbatim_text: str | None = None) -> LineResult:
     def run(text: str) -> tuple[bool, dict]:
         m = re.search(r"Let ((?:\$[a-z]\$(?:, | and )?)+) be natural numbers greater than or equal to \$(\d+)\$", text)
         sets = re.findall(r"\\right\\\}\s*_\{p\\geq(\d+)\}", text)
-        if not m or len(sets) != 2 or len(set(sets)) != 1 or "\\lambda,\\mu>0" not in text:
+        if not m or len(sets) != 2 or len(set(sets)) != 1 or "\\lambda,\\mu>0" not in text or \
+                not re.search(r"\\left\\\{\s*C_\{i,\\lambda\}\^\{p\}\\left\(\s*0\\right\)", text) or \
+                not re.search(r"\\left\\\{\s*S_\{j,\\mu\}\^\{p\}\\left\(\s*0\\right\)", text):
             raise ValueError("hypotheses not read")
         letters = re.findall(r"\$([a-z])\$", m.group(1))
         lo = int(m.group(2))
