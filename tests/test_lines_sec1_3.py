@@ -350,7 +350,7 @@ def test_sec3_blank_lines_fail_their_checks():
 
 @pytest.mark.parametrize("check, line_id, right, wrong", [
     ("sec1_3-r0-p1-aform", "sec1_3-r0-p1-aform", "\\sum_{i=0}^{2n}", "\\sum_{i=0}^{2n-1}"),
-    ("sec1_3-r0-p1-cform", "sec1_3-r0-p1-rho-prime", "{c_{2n,2n-i}^{\\alpha}}", "{c_{2n,i}^{\\alpha}}"),
+    ("sec1_3-r0-p1-cform", "sec1_3-r0-p1-rho-prime", "{c_{2n,0}^{\\alpha}}", "{c_{2n,1}^{\\alpha}}"),
     ("sec1_3-r-p2-k0", "sec1_3-rp2-k0", "S_{r+1,\\frac{1}{2}}^{r+1}", "S_{r+2,\\frac{1}{2}}^{r+1}"),
     ("sec1_3-r-p1-kpos", "sec1_3-rp1-kpos", "1\\leq k", "0\\leq k"),
     ("sec1_3-r-p3-aform", "sec1_3-rp3-reduced", "\\forall x", "\\forall y"),

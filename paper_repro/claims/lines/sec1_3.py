@@ -1007,6 +1007,9 @@ def _step_words_ok(line_id: str, tex: str, pairs: list[tuple[str, str]]) -> bool
     m = re.search(r"illustrate (\w+) consecutive steps", t)
     if m and _NUMBER.get(m.group(1)) != len(pairs):
         return False
+    if "White dots" in t and not re.search(r"the combining constants of which proved to be \$0\$ in the previous "
+                                           r"steps", t):
+        return False
     if "black dots" in t:
         if not re.search(r"black dots represent functions whose zeroth order partial derivatives vanish when", t) or \
                 not re.search(r"partial derivatives of which do not vanish under corresponding parametrizations and "
@@ -1192,7 +1195,10 @@ def level_zeroed(verbatim: str | None = None) -> LineResult:
 
     tex = verbatim if verbatim is not None else _transcribed(["sec1_3-step-zeroed"])["sec1_3-step-zeroed"]
     m = _CONSTANT_SET.search(tex.replace("\\left(", "(").replace("\\right)", ")"))
-    if not m or m.group(6) != "0":
+    words = re.search(r"^by evaluating its \$\\left\( r\+1\\right\) \$th order partial derivatives under "
+                      r"parametrizations \(\\ref\{parametrization_1_y_0\}\)--\(\\ref\{parametrization_3_y_0\}\) with "
+                      r"proper substitutions of \$0\$, where the combining constants", re.sub(r"\s+", " ", tex).strip())
+    if not m or m.group(6) != "0" or not words:
         return LineResult(False, how="the constants read from the transcription", detail={"unread": tex[:60]})
     levels, lo, hi = m.group(1, 2, 3), m.group(4), m.group(5)
 
@@ -1236,6 +1242,10 @@ def _names_set(n: int, idx) -> set[str]:
 def ln1_set(override=None) -> LineResult:
     """L_{n-1} = rho_{2n,n,n} R_{2n,n,n}, and R_{2n,n,n} is not the zero function (so rho_{2n,n,n} = 0)."""
     res = _read_sets("sec1_3-Ln1-set", lambda n, r: alive_after(n, n - 1, 2), override=override)
+    head = re.search(r"0=L_\{([^{}]+)\}\\left\( u,v,w\\right\) =", _transcribed(["sec1_3-Ln1"], override)["sec1_3-Ln1"])
+    # the equality is L_r for the last order r of the recomputed elimination
+    res.holds_as_printed &= bool(head) and all(
+        bound_n(head.group(1), n) == max(r for r, _p, _b, _g in elimination(n)) for n in N_PROOF)
     pt = _domain_points(ALPHA_TS[0], 1)[0]
     nonzero = all(pt[0][0] ** n * pt[1][0] ** n * pt[2][0] ** n != 0 for n in N_PROOF)
     # "equality (..n_minus_1) holds if and only if \\[ \\rho_{2n,n,n}=0, \\]" (read): the one constant of L_{n-1},
@@ -1946,6 +1956,12 @@ def _zeroed_read(line_id, computed_fn, corrected_level, color, alias, level=None
         return LineResult(False, how="the printed constants read from the transcription", detail={"unread": str(exc)})
     res = _zeroed_check(computed_fn, level or read_level, corrected_level, i_range, color, alias)
     res.holds_as_printed &= rhs == "0"
+    ln = transcribed_line(line_id)
+    if ln.status == "erratum" and verbatim is None:  # the erratum describes what is printed: the level read
+        lev = re.search(r"_\{2n,2n-i,([^{}]+)\}\^\{\\prime\}", ln.verbatim).group(1)
+        if f"_{{2n,2n-i,{lev}}}" not in ln.erratum["printed"]:
+            res.corrected_holds = False
+            res.detail["erratum_describes_another_level"] = lev
     res.detail["right_hand_side"] = rhs
     res.how = "level, range and right-hand side read from the transcription; " + res.how
     return res
@@ -2528,9 +2544,13 @@ def zero_conclusion(line_id: str, verbatim: str | None = None) -> LineResult:
 
     param_index, color, alias = ZERO_LINES[line_id]
     tex = verbatim if verbatim is not None else _transcribed([line_id])[line_id]
-    _zero_line_strict(tex, color)
-    if not re.match(r"\s*\\\w+_\{2n,2n-i,0\}", tex):
-        raise ValueError("not the level-0 constants")
+    try:
+        _zero_line_strict(tex, color)
+        if not re.match(r"\s*\\\w+_\{2n,2n-i,0\}", tex):
+            raise ValueError("not the level-0 constants")
+    except ValueError as exc:
+        return LineResult(False, how="the conclusion read from the transcription, n = 1..6", kind="exhaustive",
+                          detail={"unread": str(exc)})
     lo, hi = listed_range(tex, "i")
     rhs = right_hand_side(tex, r",~i\s*=")
     bad = []
