@@ -12,8 +12,10 @@ The independent computations:
   trigonometric polynomials evaluated where the half-angle sines and cosines are rational (tan(x/4) rational);
 * the elimination of the proof, recomputed from these exact derivatives: the functions whose derivative of the
   step's order does not vanish at the boundary are removed, step by step;
-* the printed sums and primed coefficients, transcribed here as index ranges (functions of n and r), compared
-  with the computed sets and, as linear forms in the combining constants, with the computed values.
+* the printed sums, values and primed coefficients of Section 3 read from the transcriptions
+  (:mod:`paper_repro.printed.lines.sec3_read`: sums with their bounds, constants, half-angle sines and their
+  derivatives, S and M of the Lemma and the Proposition, c and A; the parametrizations and sign functions too),
+  compared with the computed sets and, as linear forms in the combining constants, with the computed values.
 """
 
 from __future__ import annotations

@@ -902,7 +902,10 @@ LINES = [
          'n = 4, 4th-order mixed partials in v, w at y = 0: gray = sin(v/2) power above the or'
          'der in v (first zero condition); other black dots: second zero condition',
          'checked',
-         check='sec1_3-fig-n4-caption'),
+         check='sec1_3-fig-n4-caption',
+         reason='second reading: the caption calls the order of the derivative in v "k = 0, 1, ..., 4", while in '
+                'eq. chain_rule k is the order in w and the order in v is r - k; both run over 0..4 here, so the '
+                'statement holds (checked), but the letter k means two things -- a notation slip, debatable'),
     Line('sec1_3-theorem',
          (626, 628),
          'joint_systems_linear_independence',
@@ -1641,7 +1644,11 @@ LINES = [
          'ty.}%',
          'the steps of the k-th term are detailed in the technical report',
          'excused',
-         reason='citation (technical report) and notation of the footnote'),
+         reason='citation (technical report) and notation of the footnote.  Second reading: the footnote says a '
+                'number above the equality sign names a trigonometric identity, but the numbers the proof puts '
+                'there (lines sec1_3-rp1-k0, sec1_3-rp2-k0: sign_sin_power_derivative over '
+                'derivative_cosine_sine_at_0) are the sign rules of the Lemma and the Proposition, not identities '
+                '-- a wording slip, debatable, not an erratum (nothing computed depends on it)'),
     Line('sec1_3-rp1-k0',
          (1037, 1056),
          'y_derivative_L_r',
