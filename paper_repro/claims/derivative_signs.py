@@ -42,6 +42,15 @@ def run(i_max, j_max, p_max, m_i_max, m_j_max, z_max, rates) -> Outcome:
     cos_rule = read_sign_function(verbatim("sec1_3-sign-cos"))
     sin_rule = read_sign_function(verbatim("sec1_3-sign-sin"))
     prop = verbatim("sec1_3-proposition-M")
+    # what each rule is the sign of, read: sign C_{i,lambda}^{p}(0) =, sign S_{j,mu}^{p}(0) =, sign M^{z}_{..}(0) =
+    for lid, head in (("sec1_3-sign-cos", r"C_\{i,\\lambda\}\^\{p\}"), ("sec1_3-sign-sin", r"S_\{j,\\mu\}\^\{p\}"),
+                      ("sec1_3-proposition-M", r"M_\{i,\\lambda,j,\\mu\}\^\{z\}")):
+        if not re.search(r"\\operatorname\{sign\}%?\s*" + head + r"\\left\(\s*0\\right\)\s*=\\left\\\{",
+                         verbatim(lid)):
+            raise ValueError(f"{lid}: the left-hand side sign X(0) = is not read")
+    if not re.match(r"Independently of \$i\\in%?\s*\\mathbb\{N\}\s*\$ and \$\\lambda,\\mu>0\$, for all values of "
+                    r"\$j,z\\in%?\s*\\mathbb\{N\}\s*\$ such that \$[^$]*\$ and \$[^$]*\$ we have the equality", prop):
+        raise ValueError("the Proposition's quantifiers are not read")
     m_rule = read_sign_function(prop)
     hyps = re.findall(r"\$([^$]*?(?:\\neq|\\geq)[^$]*?)\$", prop.split("\\begin{equation}")[0])
     if len(hyps) != 2:
@@ -94,9 +103,14 @@ def run(i_max, j_max, p_max, m_i_max, m_j_max, z_max, rates) -> Outcome:
                         f"the sign is wrong when i = 2 mod 4), e.g. {examples}; the corrected rule "
                         "matches all cases. The proof of the theorem uses Proposition derivative_cosine_sine, "
                         "which is correct."})
+    # the erratum recorded on the line describes this transcription: its evidence counts the same mismatches
+    from paper_repro.printed.lines import line
+
+    recorded = re.search(r"(\d+) of (\d+) cases", line("sec1_3-sign-cos").erratum["evidence"])
+    same_evidence = bool(recorded) and (int(recorded.group(1)), int(recorded.group(2))) == (len(cos_bad), n_cos)
     # pass: what the statement asserts holds -- sine rule and Proposition exact, every cosine-rule mismatch
     # recorded as an erratum whose corrected rule matches all cases
-    ok = not sin_bad and not m_bad and not cos_corr_bad and bool(cos_bad) and bool(errata) and n_m > 0
+    ok = not sin_bad and not m_bad and not cos_corr_bad and bool(cos_bad) and bool(errata) and n_m > 0 and same_evidence
     return Outcome(ok, {
         "cos_rule_mismatches": len(cos_bad), "cos_cases": n_cos, "corrected_cos_rule_mismatches": len(cos_corr_bad),
         "sin_rule_mismatches": len(sin_bad), "sin_cases": n_sin,

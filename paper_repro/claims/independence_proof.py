@@ -29,6 +29,7 @@ joint_systems_linear_independence and the partition-of-unity system, each checke
 
 from __future__ import annotations
 
+import re
 from math import comb
 
 import mpmath
@@ -302,8 +303,19 @@ def run(n_max: int, r_max: int, system_n_max: int) -> Outcome:
     params = {p: parametrization_ok(p) for p in PARAM_LABELS}
     # the y-range of system_partition_of_unity (read), with the printed x-range of the parametrization
     pu = "parametrization_for_partition_of_unity"
-    system_range = parametrization_ok(pu, ranges={"x": _params()[pu][3]["x"],
-                                                  "y": interval(verbatim("sec4_5-system-y-range"), "y")})
+    sys_line = verbatim("sec4_5-system-y-range")
+    if not re.fullmatch(r"\s*\\forall\s*y\\in\\left\[[^\]]*\\right\]\s*", sys_line):
+        raise ValueError(f"sec4_5-system-y-range not read: {sys_line!r}")
+    system_range = parametrization_ok(pu, ranges={"x": _params()[pu][3]["x"], "y": interval(sys_line, "y")})
+    # the errata recorded on the two lines describe these transcriptions: the y-range they call printed
+    from paper_repro.printed.lines import line
+    from paper_repro.printed.lines.sec3_read import linear_form
+
+    def recorded_y(line_id: str):
+        m = re.search(r"y in \[([^\]]+)\]", line(line_id).erratum["printed"])
+        return [linear_form(p.strip().replace("alpha", "\\alpha")) for p in m.group(1).split(",")] if m else None
+    described = (recorded_y("sec1_3-param-partition-of-unity") == [linear_form(q) for q in _params()[pu][3]["y"]]
+                 and recorded_y("sec4_5-system-y-range") == [linear_form(q) for q in interval(sys_line, "y")])
     sines = r0p1_sines()
     # the printed range of parametrization_for_partition_of_unity is wrong; the corrected one must work
     corrected = parametrization_ok("parametrization_for_partition_of_unity", y_range=lambda a, x: x)
@@ -314,7 +326,8 @@ def run(n_max: int, r_max: int, system_n_max: int) -> Outcome:
         ok, rank, orb = partition_system(m, fmpq(1, 2), [fmpq(k, 11) for k in range(1, 2 * m + 4)])
         system[str(m)] = {"derivatives_equal_delta": ok, "rank": rank, "orbits": orb}
     errata_found = (params["parametrization_for_partition_of_unity"] is False and system_range is False and corrected
-                    and g_only == ["G_{6,6,0}"] and sines.holds_as_printed is False and sines.corrected_holds is True)
+                    and g_only == ["G_{6,6,0}"] and sines.holds_as_printed is False and sines.corrected_holds is True
+                    and described)
     printed_lines = proof_lines()
     lines_ok = printed_lines["lines"] > 0 and not printed_lines["failures"]
     passed = (lines_ok and all(all(v.values()) for v in index_sets.values()) and all(e < 1e-25 for e in chain.values())
