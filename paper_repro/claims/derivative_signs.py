@@ -108,6 +108,22 @@ def run(i_max, j_max, p_max, m_i_max, m_j_max, z_max, rates) -> Outcome:
 
     recorded = re.search(r"(\d+) of (\d+) cases", line("sec1_3-sign-cos").erratum["evidence"])
     same_evidence = bool(recorded) and (int(recorded.group(1)), int(recorded.group(2))) == (len(cos_bad), n_cos)
+    # ... and its three kinds of failure: no branch (p even, i odd), two branches with different values (p, i odd),
+    # a wrong sign (p even, i = 2 mod 4) -- recomputed from the rule read and the exact derivatives
+    kinds = {"none": set(), "several": set(), "wrong": set()}
+    for i in range(1, i_max + 1):
+        for p in range(0, p_max + 1):
+            applies = {v for v, c in cos_rule if eval(c, {"__builtins__": {}}, {"i": i, "p": p})}  # noqa: S307
+            if not applies:
+                kinds["none"].add((i, p))
+            elif len(applies) > 1:
+                kinds["several"].add((i, p))
+            elif applies.pop() != sign(cos_power_derivative(i, lams[0], p)):
+                kinds["wrong"].add((i, p))
+    grid = [(i, p) for i in range(1, i_max + 1) for p in range(0, p_max + 1)]
+    same_evidence &= (kinds["none"] == {(i, p) for i, p in grid if p % 2 == 0 and i % 2 == 1}
+                      and kinds["several"] == {(i, p) for i, p in grid if p % 2 == 1 and i % 2 == 1}
+                      and kinds["wrong"] == {(i, p) for i, p in grid if p % 2 == 0 and i % 4 == 2})
     # pass: what the statement asserts holds -- sine rule and Proposition exact, every cosine-rule mismatch
     # recorded as an erratum whose corrected rule matches all cases
     ok = not sin_bad and not m_bad and not cos_corr_bad and bool(cos_bad) and bool(errata) and n_m > 0 and same_evidence
