@@ -3,12 +3,15 @@
 PYTHON ?= python3
 comma := ,
 # One environment per interpreter: .venv for the reference CPython 3.11 (byte-identical figures), .venv-3.12 etc.
-PYVER  := $(shell $(PYTHON) -c 'import sys; print("%d.%d" % sys.version_info[:2])' 2>/dev/null)
+PYVER  := $(if $(strip $(PYTHON)),$(shell $(PYTHON) -c 'import sys; print("%d.%d" % sys.version_info[:2])' 2>/dev/null))
 VENV   ?= $(if $(filter-out 3.11,$(PYVER)),.venv-$(PYVER),.venv)
 PY     := $(VENV)/bin/python
 # An interpreter that does not run, or is older than 3.11, stops every target that needs Python with one sentence
 # (before, an empty PYVER silently chose the 3.11 .venv: `make test PYTHON=python3.99` tested 3.11).
 ifneq ($(filter-out clean distclean,$(or $(MAKECMDGOALS),default)),)
+ifeq ($(strip $(PYTHON)),)
+$(error PYTHON is empty; give a Python >= 3.11$(comma) e.g. PYTHON=python3.11$(comma) or leave PYTHON unset for python3)
+endif
 ifeq ($(shell $(PYTHON) -c 'import sys; sys.exit(0 if sys.version_info >= (3, 11) else 1)' >/dev/null 2>&1 && echo ok),)
 _PYV := $(shell $(PYTHON) -V 2>&1 | head -n 1)
 $(error $(if $(filter Python 3.%,$(_PYV)),paper_repro needs Python >= 3.11$(comma) but '$(PYTHON)' is $(_PYV); run with PYTHON=python3.11 (or newer),PYTHON=$(PYTHON) does not run (no such interpreter); give a Python >= 3.11$(comma) e.g. PYTHON=python3.11))
@@ -24,7 +27,7 @@ ifneq ($(filter-out 3.11,$(PYVER)),)
 export PAPER_REPRO_CACHE ?= $(CURDIR)/$(VENV)/cache
 endif
 
-.PHONY: mutate-lines test-cpus test-bits-other-cpu venv lock report paper check-paper check-gallery test-min test-pythons test-wheel docs reproduce reproduce-extended test test-all bench bench-coefficients bench-question1 figures lint clean distclean
+.PHONY: mutate-lines mutate-code test-cpus test-bits-other-cpu venv lock report paper check-paper check-gallery test-min test-pythons test-wheel docs reproduce reproduce-extended test test-all bench bench-coefficients bench-question1 figures lint clean distclean
 
 # The environment: the exact versions of requirements.lock (what `make reproduce` was run with, so
 # figures stay byte-identical), then the package itself without resolving anything.  A failed install
@@ -87,6 +90,9 @@ test-bits-other-cpu: $(STAMP)  ## the byte-sensitive tests under an OpenBLAS ker
 
 mutate-lines: $(STAMP)         ## blank and mutate every checked line; each check must fail -> reports/mutate_lines.{md,json}
 	$(PY) tools/mutate_lines.py --out reports
+
+mutate-code: $(STAMP)          ## mutation test of the core and surfaces modules -> reports/mutate_code.{md,json} (about 1 h on 2 cores)
+	$(PY) tools/mutate_code.py --out reports
 
 test-all: $(STAMP)             ## every test, slow ones included
 	$(PY) -m pytest -q -m "not benchmark"

@@ -212,3 +212,12 @@ def test_cli_reader_going_away_is_a_quiet_exit(tmp_path):
     err = proc.stderr.read().decode()
     assert proc.wait(timeout=120) == 141
     assert "Traceback" not in err and "BrokenPipe" not in err, err
+
+
+@pytest.mark.parametrize("cmd", ["claims", "figures", "reproduce"])
+def test_out_with_a_too_long_name_is_one_line_and_exit_2(cmd, tmp_path, capsys):
+    from paper_repro.app import cli
+
+    assert cli.main([cmd, "--out", str(tmp_path / ("a" * 300))]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and err.startswith("error: --out: cannot write there: File name too long"), err

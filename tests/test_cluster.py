@@ -304,3 +304,76 @@ def test_fresh_workers_are_new_processes(client):
     assert fresh_workers(client, "local:2")
     after = set(client.run(os.getpid).values())
     assert len(after) == 2 and not before & after
+
+
+# -- the cluster door: a wrong address answers in one line, whatever listens there -----------------------------
+def _serve(kind: str):
+    """A local server on a free port: 'hold' accepts and says nothing, 'http' answers like a web server (after the
+    request), 'garbage' writes bytes that are no dask handshake, 'close' closes at once."""
+    import socket
+    import threading
+
+    srv = socket.socket()
+    srv.bind(("127.0.0.1", 0))
+    srv.listen(8)
+    held = []
+
+    def run():
+        while True:
+            try:
+                c, _ = srv.accept()
+            except OSError:
+                return
+            if kind == "garbage":
+                c.sendall(b"HTTP/1.0 200 OK\r\n\r\nhello")
+            if kind == "close":
+                c.close()
+            else:
+                held.append(c)
+
+    threading.Thread(target=run, daemon=True).start()
+    return srv, f"tcp://127.0.0.1:{srv.getsockname()[1]}"
+
+
+@pytest.mark.parametrize("kind, says", [("hold", "sent no dask handshake"), ("garbage", "does not speak dask"),
+                                        ("close", "closed the connection")])
+def test_a_peer_that_is_no_scheduler_is_refused_by_the_probe(kind, says):
+    srv, address = _serve(kind)
+    try:
+        with pytest.raises(ValueError, match=says):
+            cluster.probe_scheduler(address, 0.5)
+    finally:
+        srv.close()
+
+
+def test_refused_port_unknown_host_and_tls_without_settings_are_refused(monkeypatch):
+    import socket
+
+    s = socket.socket()
+    s.bind(("127.0.0.1", 0))
+    port = s.getsockname()[1]
+    s.close()  # nothing listens there now
+    with pytest.raises(ValueError, match="connection refused"):
+        cluster.probe_scheduler(f"tcp://127.0.0.1:{port}", 0.5)
+    with pytest.raises(ValueError, match="unknown host"):
+        cluster.probe_scheduler("tcp://no-such-host.invalid:8786", 0.5)
+    with pytest.raises(ValueError, match="tls:// address needs TLS settings"):
+        cluster.tls_security()
+
+
+def test_a_real_scheduler_passes_the_probe(client):
+    cluster.probe_scheduler(client.scheduler.address, 2.0)
+
+
+def test_the_cli_answers_a_silent_peer_in_one_line_and_exit_2():
+    srv, address = _serve("hold")
+    try:
+        env = dict(os.environ, PAPER_REPRO_NO_CACHE="1")
+        env.pop(cluster.SCHEDULER_ENV, None)
+        p = subprocess.run([sys.executable, "-m", "paper_repro", "claims", "--only", "dimension", "--scheduler",
+                            address], capture_output=True, text=True, env=env, timeout=120)
+    finally:
+        srv.close()
+    assert p.returncode == 2, p.stderr
+    assert p.stderr.count("\n") == 1 and "sent no dask handshake" in p.stderr, p.stderr
+    assert "Traceback" not in p.stderr + p.stdout and "Exception ignored" not in p.stderr + p.stdout

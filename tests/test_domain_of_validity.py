@@ -387,3 +387,18 @@ def test_elevation_sums_in_a_fixed_order_whatever_the_cpu():
             want[g][d] = acc
     for arr in (net, np.asfortranarray(net), net[::-1][::-1]):
         assert elevate(arr, n, 1.0).tolist() == want
+
+
+def test_elevate_takes_its_target_by_keyword_only():
+    """`elevate(net, 3, alpha, 15)` silently gave order 18 (the 4th positional argument was `times`)."""
+    from paper_repro.core.elevation import elevate
+
+    net = np.zeros((7, 3))
+    with pytest.raises(TypeError):
+        elevate(net, 1, 1.0, 2)
+    assert elevate(net, 1, 1.0, to=2).shape == elevate(net, 1, 1.0, times=1).shape == (19, 3)
+    assert np.array_equal(elevate(net + 1, 1, 1.0, to=1), net + 1)
+    with pytest.raises(ValueError, match="give to or times, not both"):
+        elevate(net, 1, 1.0, to=3, times=1)
+    with pytest.raises(ValueError, match="to"):
+        elevate(net, 2, 1.0, to=1)

@@ -140,3 +140,16 @@ def test_good_inputs_never_raise_and_partition_unity(n, alpha, seed):
     vals = evaluate_normalized(n, alpha, pts)
     assert vals.shape == (5, delta(n)) and np.all(np.isfinite(vals))
     assert np.max(np.abs(vals.sum(axis=1) - 1)) < 1e-9
+
+
+def test_the_hostile_suite_of_this_round_passes():
+    """tools/fuzz_api.py's class round5 (the float transformation at small alpha, its direction, elevate's target,
+    barycentric rows): every case a correct result or a clear ValueError/TypeError."""
+    import subprocess
+    import sys
+    from pathlib import Path
+
+    tool = Path(__file__).parents[1] / "tools" / "fuzz_api.py"
+    p = subprocess.run([sys.executable, str(tool), "--classes", "round5"], capture_output=True, text=True, timeout=600)
+    assert p.returncode == 0, p.stdout[-2000:] + p.stderr[-2000:]
+    assert "round5" in p.stdout and " 0               0               0" in p.stdout.splitlines()[-1], p.stdout

@@ -3,15 +3,15 @@ wrong inputs."""
 
 from __future__ import annotations
 
-import mpmath
 import pytest
 from flint import fmpq
 
 import paper_repro.claims.lines.sec6 as c6
 from paper_repro.claims.lines import CHECKS
 from paper_repro.core.domain import rational_alpha
+from paper_repro.printed.lines import substituted, verbatim
 from paper_repro.printed.lines.sec6 import LINES
-from paper_repro.printed.torus import PRINTED
+from paper_repro.printed.torus import printed_points, read_point
 
 CHECKED = [x for x in LINES if x.status != "excused"]
 
@@ -44,24 +44,24 @@ def test_every_named_check_is_registered_and_ids_unique():
     assert [x.id for x in LINES if x.check and x.check.startswith("claim:")] == ["sec6-torus-point-b_{4,3,1}"]
 
 
-def test_all_19_torus_points_transcribed():
+def test_all_19_torus_points_read_from_their_transcriptions():
     points = [x for x in LINES if x.id.startswith("sec6-torus-point-")]
-    assert len(points) == 19 == len(c6.PRINTED_EXACT)
+    read = printed_points()
+    assert len(points) == 19 == len(read)
+    assert sorted(read) == sorted(lab.control_point for lab in c6.united_system(2))
+    assert not hasattr(c6, "PRINTED_EXACT")
 
 
-def test_exact_transcription_agrees_with_printed_torus_module():
-    """Two independent transcriptions of the printed points (exact here, mpmath in printed/torus.py) agree."""
-    with mpmath.workdps(40):
-        for t in (fmpq(1, 5), fmpq(1, 2)):
-            alpha = rational_alpha(t)
-            A = c6.Angles(alpha)
-            a = alpha.mp()
-            for rho, mu in ((fmpq(7, 2), fmpq(5, 3)),):
-                for lab, f in c6.PRINTED_EXACT.items():
-                    exact = f(A, rho, mu)
-                    mp = [g(a, mpmath.mpf(7) / 2, mpmath.mpf(5) / 3) for g in PRINTED[lab]]
-                    for e, m in zip(exact, mp):
-                        assert abs(mpmath.mpf(int(fmpq(e).p)) / int(fmpq(e).q) - m) < mpmath.mpf(10) ** -30, lab
+def test_torus_reader_refuses_what_it_does_not_read():
+    from paper_repro.printed.torus import TorusReadError
+
+    with pytest.raises(TorusReadError):
+        read_point("XXX")
+    tex = verbatim("sec6-torus-point-r_{4,4,0}")
+    with pytest.raises(TorusReadError):
+        read_point(tex.replace("\\sin\\alpha", "\\sinh\\alpha"))
+    with pytest.raises(TorusReadError):
+        read_point(tex.replace("^{T}", "^{T-1}"))
 
 
 # --- the checks can fail -----------------------------------------------------------------------------------
@@ -117,12 +117,22 @@ def test_net_is_read_from_the_transcription():
 
 
 def test_torus_point_check_rejects_perturbed_point():
-    wrong = lambda A, r, m: (r + m * A.sa, 0, m * A.ca + fmpq(1, 10**6) * m)  # noqa: E731
-    bad = c6.compare_point("r_{4,4,0}", formula=wrong)
-    assert bad["z"] > 0 and bad["x"] == 0
-    # and the recorded erratum: the printed b_{4,3,1} x fails, the corrected x holds
-    assert c6.compare_point("b_{4,3,1}")["x"] > 0
-    assert not any(c6.compare_point("b_{4,3,1}", corrected=c6.CORRECTED_EXACT["b_{4,3,1}"]).values())
+    """A wrong transcription of a printed point fails its check: a changed constant, a sign, a wrong label."""
+    lid = "sec6-torus-point-r_{4,2,0}"
+    tex = verbatim(lid)
+    assert CHECKS[lid]().holds_as_printed
+    for right, wrong in (("{4+2\\cos\\alpha} & 0", "{4+3\\cos\\alpha} & 0"), ("\\varrho+", "\\varrho-"),
+                         ("\\mathbf{r}_{4,2,0}", "\\mathbf{r}_{4,3,0}")):
+        assert right in tex, right
+        with substituted({lid: tex.replace(right, wrong, 1)}):
+            assert not CHECKS[lid]().holds_as_printed, wrong
+    # the recorded erratum: the printed b_{4,3,1} x fails, the erratum's fix applied to the transcription holds
+    res = CHECKS["sec6-torus-point-b_{4,3,1}"]()
+    assert res.detail["disagreeing_cases"]["x"] > 0 and res.detail["disagreeing_cases"]["y"] == 0
+    assert res.holds_as_printed is False and res.corrected_holds is True
+    lid = "sec6-torus-point-b_{4,3,1}"
+    with substituted({lid: verbatim(lid).replace("\\mu\\left(  1-\\cos\\alpha", "\\mu\\left(  2-\\cos\\alpha")}):
+        assert CHECKS[lid]().corrected_holds is False  # y wrong too: the fix alone does not repair it
 
 
 def test_affine_and_projective_checks_reject_non_maps():
@@ -157,19 +167,55 @@ def test_affine_check_rejects_a_translation_on_one_side():
 
 
 def test_dupin_checks_reject_wrong_parameters():
-    assert not c6.dupin_on_quartic(fmpq(6), fmpq(16), fmpq(3), fmpq(4))  # a^2 != b^2 + c^2
-    a, b2, c, _ = c6.DUPIN_CASES["caption"]
-    assert c6.dupin_collapsed_circle(a, b2, c, a)  # mu = a: horn
-    assert not c6.dupin_collapsed_circle(a, b2, c, fmpq(3))  # caption mu: ring
-    assert not c6.dupin_ring(a, b2, c, a)
+    xyz = c6.read_dupin()["xyz"]
+    assert not c6.dupin_on_quartic(xyz, (fmpq(6), fmpq(4), fmpq(3), fmpq(4)))  # a^2 != b^2 + c^2
+    a, b, c, _ = c6.DUPIN_RATIONAL[0]
+    assert c6.collapsed_circle(xyz, a, b, c, a)  # mu = a: horn
+    assert c6.collapsed_circle(xyz, a, b, c, c)  # mu = c: horn
+    assert not c6.collapsed_circle(xyz, a, b, c, fmpq(4))  # c < mu < a: ring
+    tex = verbatim("sec6-dupin-conditions")
+    assert c6.dupin_conditions_hold(tex.replace("\\leq a", "<a"))[0]
+    assert not c6.dupin_conditions_hold(tex.replace("a^{2}=b^{2}+c^{2}", "a^{2}=b^{2}+c^{3}"))[0]
+    assert not c6.dupin_conditions_hold(tex.replace("c<\\mu", "c>\\mu"))[0]
+
+
+def test_dupin_parametrization_is_read():
+    assert CHECKS["sec6-dupin-surface"]().holds_as_printed
+    for lid, right, wrong in (("sec6-dupin-x", "+b^{2}", "-b^{2}"), ("sec6-dupin-y", "a-\\mu", "a+\\mu"),
+                              ("sec6-dupin-z", "v\\in\\left[  0,\\alpha-u", "v\\in\\left[  0,\\alpha")):
+        tex = verbatim(lid)
+        assert right in tex, right
+        with substituted({lid: tex.replace(right, wrong, 1)}):
+            assert not CHECKS["sec6-dupin-surface"]().holds_as_printed, wrong
+
+
+def test_sixteen_patches_erratum_and_its_fix():
+    res = CHECKS["sec6-dupin-rational-patches"]()
+    assert res.holds_as_printed is False and res.corrected_holds is True
+    assert res.detail["triangles_needed"] == "32"
+    lid = "sec6-dupin-rational-patches"
+    with substituted({lid: verbatim(lid).replace("sixteen", "thirty-two")}):
+        assert CHECKS[lid]().holds_as_printed is True
 
 
 def test_torus_range_checks():
     assert c6.horn_torus_singular(fmpq(7, 2))
     assert c6.ring_torus_regular(fmpq(7, 2), fmpq(3))
     assert not c6.ring_torus_regular(fmpq(7, 2), fmpq(7, 2))
-    assert c6.greek(r"$\mu\in\left(0,\varrho\right)$") <= c6.torus_parameters()
-    assert not c6.greek(r"$\mu\in\left(0,\rho\right]$") <= c6.torus_parameters()
+    assert c6.mu_range_is_ring(r"of radius $\mu\in\left(0,\varrho\right)$")
+    assert not c6.mu_range_is_ring(r"of radius $\mu\in\left(0,\varrho\right]$")
+    assert not c6.mu_range_is_ring(r"of radius $\mu\in\left(0,\rho\right)$")
+    assert c6.torus_parameters() == {"\\varrho", "\\mu"}
+
+
+def test_new_errata_fail_as_printed_and_hold_corrected():
+    for cid in ("sec6-tau-row-2", "sec6-q-normalized-independent", "sec6-dupin-rational-patches"):
+        res = CHECKS[cid]()
+        assert res.holds_as_printed is False and res.corrected_holds is True, cid
+    lid = "sec6-q-normalized-independent"
+    with substituted({lid: verbatim(lid).replace("linearly independent", "linearly dependent")}):
+        res = CHECKS[lid]()
+        assert res.holds_as_printed is False and res.corrected_holds is False
 
 
 def test_rank1_counterexample_and_tangent_labels():
@@ -222,3 +268,58 @@ def test_weights_rank1_reads_its_sum():
     assert res.holds_as_printed is False and res.corrected_holds is True  # the recorded erratum
     wrong = c6.weights_rank1({"sec6-weights-rank1": text.replace("\\rho_{2n,n,n}+", "")})
     assert wrong.corrected_holds is False  # the sum read without the centre no longer names T_{2n}
+
+
+def test_continuity_check_detects_a_kink():
+    """c1_across: the exact torus pieces are C1 across the diagonal; moving one interior control point of the upper
+    patch keeps the shared polygon (C0) and breaks C1."""
+    alpha = rational_alpha(fmpq(1, 3))
+    rho, mu = fmpq(7, 2), fmpq(5, 3)
+    lower = c6.fit_exact(c6.exact_torus(rho, mu), 2, alpha)
+    upper = c6.fit_exact(c6.exact_torus(rho, mu, upper=True, alpha=alpha), 2, alpha)
+    nxt = c6.fit_exact(c6.exact_torus(rho, mu, phi=c6.trig_of(alpha.t)), 2, alpha)
+    assert c6.torus_continuity(2, alpha, lower, upper, nxt) == {"diagonal_C1": True, "square_edge_C1": True}
+    kinked = [list(p) for p in upper]
+    # a point whose function vanishes to first order on the diagonal w = 0 (one factor sin(w/2)): off the edge, but
+    # it enters the derivative across it
+    k = next(i for i, lab in enumerate(c6.united_system(2)) if c6.exponents(lab)[4] == 1)
+    kinked[k][2] += 1
+    assert c6.edge_net(lower, 2, "b") == c6.reversed_edge_net(kinked, 2, "b")  # still C0
+    assert c6.torus_continuity(2, alpha, lower, kinked, nxt)["diagonal_C1"] is False
+
+
+def test_printed_claim_reads_the_erratum_fix():
+    from paper_repro.printed.torus import corrected_points
+
+    fixes = corrected_points()
+    assert list(fixes) == ["b_{4,3,1}.x"]
+    lid = "sec6-torus-point-b_{4,3,1}"
+    with substituted({lid: verbatim(lid).replace("7-2\\cos^{2}", "8-2\\cos^{2}")}):
+        with pytest.raises(ValueError):
+            corrected_points()  # the fix no longer applies: the erratum does not describe this transcription
+
+
+def test_named_weak_checks_now_read_their_words():
+    """Issue 37: sec6-rational-patch reads tau-bar's subscript and arguments; sec6-delta3 reads "third order"."""
+    lid = "sec6-rational-row-2"
+    tex = verbatim(lid)
+    assert "\\overline{\\tau}_{n}^{\\alpha}" in tex
+    with substituted({lid: tex.replace("\\overline{\\tau}_{n}^{\\alpha}", "\\overline{\\tau}_{2n}^{\\alpha}")}):
+        assert not CHECKS["sec6-rational-patch"]().holds_as_printed
+    with substituted({lid: tex.replace("\\left(\nu,v,w", "\\left(\nv,u,w")}):
+        assert not CHECKS["sec6-rational-patch"]().holds_as_printed
+    tex = verbatim("sec6-delta3")
+    for wrong in ("fourth order", "second order"):
+        with substituted({"sec6-delta3": tex.replace("third order", wrong)}):
+            assert not CHECKS["sec6-delta3"]().holds_as_printed, wrong
+
+
+@pytest.mark.parametrize("check", sorted({x.check for x in CHECKED if not x.check.startswith("claim:")}))
+def test_each_line_blanked_alone_fails_its_check(check):
+    """Each line of a check, blanked alone, changes the check's verdict (or the check refuses it)."""
+    from paper_repro.claims.lines.mutation import verdict, verdict_with
+
+    base = verdict(check)
+    for x in CHECKED:
+        if x.check == check:
+            assert verdict_with(check, {x.id: "XXX"}) != base, x.id

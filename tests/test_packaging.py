@@ -73,3 +73,13 @@ def test_makefile_stops_on_a_python_that_does_not_run(target, var):
     assert proc.returncode != 0, proc.stdout
     assert "python3.99 does not run" in proc.stderr, proc.stderr
     assert "pytest" not in proc.stdout and "paper_repro" not in proc.stdout, proc.stdout
+
+
+@pytest.mark.parametrize("value", ["", "  "])
+def test_makefile_says_one_sentence_for_an_empty_python(value):
+    """`make test PYTHON=` printed `/bin/sh: 0: Illegal option -` three times before the sentence."""
+    proc = subprocess.run(["make", "--no-print-directory", "-n", "-C", str(ROOT), "test", f"PYTHON={value}"],
+                          capture_output=True, text=True, timeout=60)
+    assert proc.returncode != 0, proc.stdout
+    assert proc.stderr.strip().count("\n") == 0 and "PYTHON is empty" in proc.stderr, proc.stderr
+    assert "Illegal option" not in proc.stderr

@@ -6,10 +6,10 @@ from flint import fmpq
 from hypothesis import given
 from hypothesis import strategies as st
 
-from paper_repro.claims.torus import CORRECTED, exact_torus, printed_net
+from paper_repro.claims.torus import exact_torus, printed_net
 from paper_repro.core.domain import rational_alpha, sample_points
 from paper_repro.core.labels import delta, index_of
-from paper_repro.printed.torus import torus
+from paper_repro.printed.torus import corrected_points, mp_function, torus
 from paper_repro.surfaces.fitting import fit_exact, fit_mp
 from paper_repro.surfaces.mesh import export_mesh
 from paper_repro.surfaces.models import cyclide_parts, cyclide_pieces, join_error
@@ -43,7 +43,8 @@ def test_printed_torus_net_is_exact_except_erratum(alpha):
         diff_wo = diff.copy()
         diff_wo[k, 0] = 0
         assert diff_wo.max() < 1e-15
-        assert abs(CORRECTED[("b_{4,3,1}", "x")][1](a, 4, 3) - comp[k, 0]) < 1e-20
+        fixed = corrected_points()["b_{4,3,1}.x"][2]  # the erratum's fix applied to the transcription
+        assert abs(mp_function(fixed)(a, 4, 3) - comp[k, 0]) < 1e-20
 
 
 def test_mesh_export_round_trip(tmp_path):
@@ -157,3 +158,51 @@ def test_ply_normals_round_trip_and_gzip_is_byte_stable(tmp_path):
     raw = export_mesh(tmp_path / "m.vol.gz", v, f).read_bytes()
     assert raw[:2] == b"\x1f\x8b" and raw[4:8] == b"\0\0\0\0" and not raw[3] & 0x08  # no time, no file name
     assert raw == export_mesh(tmp_path / "other.vol.gz", v, f).read_bytes()
+
+
+def test_at_barycentric_names_the_rows_the_user_gave():
+    """`at_barycentric([[0.5, 0.5, 0.5]])` spoke of the scaled point (0.6, 0.6, 0.6) not being on Omega^alpha."""
+    import numpy as np
+    import pytest
+
+    from paper_repro.surfaces.patch import Patch
+
+    p = Patch(1, 1.2, np.zeros((7, 3)))
+    with pytest.raises(ValueError, match=r"bary row 0 = \(0.5, 0.5, 0.5\) sums to 1.5: barycentric rows"):
+        p.at_barycentric([[0.5, 0.5, 0.5]])
+    with pytest.raises(ValueError, match=r"row 1 = \(1.5, -0.5, 0\) has a negative entry"):
+        p.at_barycentric([[1, 0, 0], [1.5, -0.5, 0]])
+    with pytest.raises(TypeError):
+        p.at_barycentric([[0.5 + 0j, 0.5, 0]])
+    one = np.asarray(p.at_barycentric([1 / 3, 1 / 3, 1 / 3]), dtype=float).reshape(-1)
+    assert np.array_equal(one, np.asarray(p.at_barycentric([[1 / 3, 1 / 3, 1 / 3]]), dtype=float)[0])
+
+
+def test_a_cold_derivative_validates_n_and_alpha_once():
+    """Inner code calls inner code: a first Patch and derivative at a new (n, alpha) ran check_n 15 times and
+    check_alpha 3 times (inner builders called public functions)."""
+    import collections
+    import sys
+
+    import numpy as np
+
+    import paper_repro.util.validation as val
+    from paper_repro.surfaces.patch import Patch
+
+    targets = {val.check_n.__code__: "check_n", val.check_alpha.__code__: "check_alpha"}
+    calls: collections.Counter = collections.Counter()
+
+    def prof(frame, event, arg):
+        if event == "call" and frame.f_code in targets:
+            calls[targets[frame.f_code]] += 1
+
+    n, alpha = 4, 1.2345678901  # an (n, alpha) no other test uses: cold caches for the alpha-dependent parts
+    old = sys.getprofile()
+    sys.setprofile(prof)
+    try:
+        p = Patch(n, alpha, np.random.default_rng(0).normal(size=(61, 3)))
+        p.derivative([[0.3, 0.4, alpha - 0.7]], "u")
+    finally:
+        sys.setprofile(old)
+    assert calls["check_alpha"] == 1, calls
+    assert calls["check_n"] <= 2, calls  # the patch's own check, and exponent_matrix's on a first n in the process

@@ -143,6 +143,8 @@ def test_formula_holds_at_float_alpha_on_points():
     ({"n": 10**6}, ValueError, "n must be an integer from 1"),
     ({"n": 2.0}, TypeError, "n must be an integer"),
     ({"direction": "V2T"}, ValueError, "direction must be one of"),
+    ({"direction": np.array(["V_to_T", "T_to_V"])}, TypeError, "direction must be one of"),
+    ({"direction": None}, TypeError, "direction must be one of"),
     ({"alpha": 4.0}, ValueError, "alpha"),
     ({"alpha": 0.0}, ValueError, "alpha"),
     ({"normalized": "yes"}, TypeError, "normalized must be True or False"),
@@ -195,3 +197,29 @@ def test_ball_encloses_the_exact_matrix():
         assert all(ball[i, j].contains(exact[i, j]) and ball[i, j].rad() < 1e-40
                    for i in range(delta(2)) for j in range(delta(2)))
         assert not ball[0, 1].contains(exact[0, 1] + fmpq(1, 10**30))
+
+
+def test_float_v_to_t_is_refused_where_its_measured_bound_fails_and_accurate_above():
+    """E1: the float 'V_to_T' matrix had no correct digit at alpha <= 1e-8 and said nothing."""
+    import mpmath
+
+    from paper_repro.core.transformation import FLOAT_REL_GOAL, v_to_t_float_alpha_min, v_to_t_float_bound
+
+    for n in (1, 3, 30):
+        with pytest.raises(ValueError, match=r"'V_to_T'\) in float64 loses its digits .* arith='mp' or alpha as a "
+                                             r"RationalAngle"):
+            transformation_matrix(n, 1e-30)
+        assert v_to_t_float_bound(n, v_to_t_float_alpha_min(n)) == pytest.approx(FLOAT_REL_GOAL, rel=1e-6)
+    for n, alpha in ((2, 1.01 * v_to_t_float_alpha_min(2)), (3, 0.05)):
+        f = transformation_matrix(n, alpha)
+        with mpmath.workdps(50):
+            m = transformation_matrix(n, mpmath.mpf(alpha), arith="mp", dps=50)
+        ref = np.array([[float(x) for x in row] for row in m])
+        err = np.abs(f - ref).max() / np.abs(ref).max()
+        assert err <= v_to_t_float_bound(n, alpha), (n, alpha, err)
+    # the other direction is accurate at tiny alpha
+    t = transformation_matrix(2, 1e-9, "T_to_V")
+    with mpmath.workdps(60):
+        m = transformation_matrix(2, mpmath.mpf(1e-9), "T_to_V", arith="mp", dps=60)
+    ref = np.array([[float(x) for x in row] for row in m])
+    assert np.abs(t - ref).max() / np.abs(ref).max() < 1e-14

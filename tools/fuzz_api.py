@@ -320,8 +320,28 @@ def cases(rng: random.Random, with_cli: bool):
             f"pts = sample_points({a!r}, 3, seed={rng.randrange(1000)}); "
             f"r = (Patch({n}, {a!r}, net)(pts), mp_patch({n}, {a!r}, net, pts))", "ok",
             "finite(r[0]) and rel(r[0], r[1], 1.0) < 1e-11")
+    # --- this round's surfaces (issue 39/40): the transformation in float at small alpha, its direction, the target
+    # order of elevate, barycentric rows, the cluster door and --out
+    for n in (1, 3, 10, 30):
+        for a in (1e-300, 1e-30, 1e-8, 1e-4):
+            add("round5", f"r = transformation_matrix({n}, {a!r})", "err", ("arith='mp'", "RationalAngle"))
+        add("round5", f"r = transformation_matrix({n}, 1e-30, 'T_to_V') if {n} <= 3 else np.ones(1)", "ok|err",
+            "finite(r)", ("OverflowError", "exceeds float64"))
+    for d in ("np.array(['V_to_T', 'T_to_V'])", "None", "1", "'v_to_t'", "b'V_to_T'"):
+        add("round5", f"r = transformation_matrix(2, 1.0, direction={d})", "err", ("direction",))
+    add("round5", "r = elevate(np.zeros((7, 3)), 1, 1.0, 2)", "err", ("positional", "argument"))
+    for to, times in (("0", "None"), ("1", "None"), ("3", "1"), ("10**9", "None"), ("2.5", "None"), ("True", "None")):
+        add("round5", f"r = elevate(np.zeros((7, 3)), 1, 1.0, to={to}, times={times})", "ok|err",
+            "r.shape[0] in (7, 19)", ("to", "times"))
+    for bary in ("[[0.5, 0.5, 0.5]]", "[[1.5, -0.5, 0]]", "[[float('nan'), 0.5, 0.5]]", "[[0.5 + 0j, 0.5, 0]]",
+                 "[[0.5, 0.5]]", "'xyz'"):
+        add("round5", f"r = Patch(1, 1.0, np.zeros((7, 3))).at_barycentric({bary})", "err", ("bary",))
     if with_cli:
         py = sys.executable
+        for sched in ("tcp://127.0.0.1:1", "tcp://no-such-host.invalid:8786", "tls://127.0.0.1:1"):
+            out.append(("cli", ("cli", [py, "-m", "paper_repro", "claims", "--only", "dimension", "--scheduler",
+                                        sched]), ()))
+        out.append(("cli", ("cli", [py, "-m", "paper_repro", "claims", "--out", "/tmp/" + "a" * 300]), ()))
         for alpha in ("3.1415926535897", "1e-17", "1e-300", "pi/0", "1/0", "0/0", "pi", "0", "-1", "nan", "inf",
                       "1j", "abc"):
             for claim in ("partition_of_unity", "coincidence", "torus_exact", "patch_properties"):

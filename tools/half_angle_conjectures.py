@@ -79,8 +79,7 @@ def check_rules(nmax: int) -> None:
                 z = 3 - x - y
                 for m in range(n + 1):
                     for j in range(m + 1):
-                        e = [0] * 6
-                        e[2 * x], e[2 * y], e[2 * y + 1], e[2 * z] = 2 * n - m, j, m - j, m
+                        e = exponent_matrix(n)[hr.member_table(n)[x, y, m, j]]  # the member M_X(m; Y, j)
                         for p in pts:
                             base = mono(p, e)
                             cot = p["C"][x] / p["S"][x] * base

@@ -32,7 +32,8 @@ from math import comb
 from flint import fmpq, fmpq_mat
 
 from paper_repro.core.basis import evaluate
-from paper_repro.core.context import ExactContext, to_fmpq_mat
+from paper_repro.core.collocation import collocate_fmpq
+from paper_repro.core.context import ExactContext
 from paper_repro.core.domain import RationalPoints, rational_alpha
 from paper_repro.core.fourier import evaluate_v, v_system
 from paper_repro.core.labels import delta, exponent_matrix, united_system
@@ -198,21 +199,17 @@ def expansion_t_to_v(n: int, alpha) -> fmpq_mat:
 
 def exact_solve(n: int, alpha, direction: str, seed: int = 31) -> fmpq_mat:
     """The independent computation: collocation at delta_n alpha-independent plane points (small heights), solved
-    exactly, verified at 3 more points.  'V_to_T': T X = V; 'T_to_V': V X = T."""
+    exactly, verified at 3 more points (:func:`paper_repro.core.collocation.collocate_fmpq`).  'V_to_T': T X = V;
+    'T_to_V': V X = T."""
     d, ctx = delta(n), ExactContext()
-    for sd in range(seed, seed + 10):
-        tu, tv = fixed_points(n, d + 3, sd)
+
+    def system(k: int):
+        tu, tv = fixed_points(n, d + 3, seed + k)
         pts = RationalPoints(None, tu, tv, check=False)
         t_vals, v_vals = evaluate(n, alpha, pts, ctx), evaluate_v(n, alpha, pts, ctx)
-        basis, target = (t_vals, v_vals) if direction == "V_to_T" else (v_vals, t_vals)
-        try:
-            x = to_fmpq_mat(basis[:d]).solve(to_fmpq_mat(target[:d]))
-        except ZeroDivisionError:
-            continue
-        if to_fmpq_mat(basis[d:]) * x != to_fmpq_mat(target[d:]):
-            raise ArithmeticError(f"n = {n}: the solve fails at the verification points")
-        return x
-    raise ArithmeticError(f"n = {n}: 10 singular point sets")
+        return (t_vals, v_vals) if direction == "V_to_T" else (v_vals, t_vals)
+
+    return collocate_fmpq(system, d, attempts=10, what=f"n = {n}", algorithm=None).solution
 
 
 def mismatches(a: fmpq_mat, b: fmpq_mat) -> int:

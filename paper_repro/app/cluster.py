@@ -52,6 +52,82 @@ def parse_scheduler(text: str, option: str = "--scheduler") -> tuple[str, Any]:
     raise ValueError(allowed)
 
 
+#: seconds a wrong ``--scheduler`` address may cost at most: the connect, then the peer's first bytes
+PROBE_SECONDS = 4.0
+#: a dask comm frame header: the count of frames, then one 8-byte length per frame (distributed.comm.utils)
+_MAX_FRAMES, _MAX_FRAME = 64, 1 << 30
+
+
+def _split_address(address: str) -> tuple[str, str, int]:
+    scheme, rest = address.split("://", 1)
+    host, port = rest.rsplit(":", 1)
+    return scheme, host.strip("[]"), int(port)
+
+
+def tls_security():
+    """The ``distributed.Security`` that dask's configuration supplies for ``tls://`` (a client certificate or CA
+    named under ``distributed.comm.tls``), else ``ValueError`` saying how to configure it (docs/cluster.md)."""
+    import dask
+    from distributed.security import Security
+
+    sec = Security()
+    if not (sec.tls_ca_file or sec.tls_client_cert or dask.config.get("distributed.comm.tls.client.cert", None)):
+        raise ValueError("--scheduler: a tls:// address needs TLS settings in dask's configuration "
+                         "(distributed.comm.tls.ca-file, .client.cert, .client.key; see docs/cluster.md); none are set")
+    return sec
+
+
+def probe_scheduler(address: str, seconds: float = PROBE_SECONDS) -> None:
+    """Refuse in one line, within about ``2 * seconds``, an address where no dask scheduler listens: nothing there,
+    a refused port, an unknown host, or a peer that does not open with dask's handshake (an HTTP server, the
+    dashboard port, a peer that holds the connection silently).  A dask listener writes its handshake as soon as it
+    accepts (``distributed.comm.core``): 8 bytes counting the frames, then 8 bytes per frame length.  ``tls://`` is
+    probed for the connection only (the handshake is encrypted) and needs :func:`tls_security`.
+
+    >>> probe_scheduler("tcp://127.0.0.1:1", 1.0)
+    Traceback (most recent call last):
+    ...
+    ValueError: --scheduler: no dask scheduler answers at tcp://127.0.0.1:1 (connection refused)
+    """
+    import socket
+    import struct
+
+    scheme, host, port = _split_address(address)
+    where = f"--scheduler: no dask scheduler answers at {address}"
+    try:
+        sock = socket.create_connection((host, port), timeout=seconds)
+    except ConnectionRefusedError:
+        raise ValueError(f"{where} (connection refused)") from None
+    except socket.gaierror:
+        raise ValueError(f"{where} (unknown host {host})") from None
+    except TimeoutError:
+        raise ValueError(f"{where} (no answer to the connection within {seconds:g} s)") from None
+    except OSError as exc:
+        raise ValueError(f"{where} ({exc.strerror or type(exc).__name__})") from None
+    with sock:
+        if scheme == "tls":
+            return
+        sock.settimeout(seconds)
+        head = b""
+        try:
+            while len(head) < 16:
+                chunk = sock.recv(16 - len(head))
+                if not chunk:
+                    break
+                head += chunk
+        except TimeoutError:
+            raise ValueError(f"{where} (the peer accepted the connection but sent no dask handshake within "
+                             f"{seconds:g} s: is this the dashboard or another service's port? a scheduler usually "
+                             f"listens on 8786)") from None
+        except OSError as exc:
+            raise ValueError(f"{where} ({exc.strerror or type(exc).__name__})") from None
+    if len(head) < 16:
+        raise ValueError(f"{where} (the peer closed the connection without a dask handshake)")
+    nframes, first = struct.unpack("<QQ", head)
+    if not (1 <= nframes <= _MAX_FRAMES and first <= _MAX_FRAME) or head.startswith((b"HTTP", b"SSH-", b"<")):
+        raise ValueError(f"{where} (the peer does not speak dask's protocol: it opened with {head[:8]!r})")
+
+
 def scheduler_from(option: str | None) -> tuple[str, Any] | None:
     """The parsed ``--scheduler`` value, else ``PAPER_REPRO_SCHEDULER``'s, else ``None`` (local processes)."""
     if option is not None:
@@ -175,7 +251,7 @@ def open_executor(spec: tuple[str, Any], *, expected: dict[str, str | None] | No
         raise ValueError("--scheduler needs dask.distributed: pip install 'paper_repro[dask]' (it is in "
                          "requirements.lock)") from exc
     kind, value = spec
-    cluster = None
+    cluster, security = None, None
     where = f"local:{value}" if kind == "local" else value
     if kind == "local":
         cluster = distributed.LocalCluster(n_workers=value, threads_per_worker=1, processes=True,
@@ -183,11 +259,17 @@ def open_executor(spec: tuple[str, Any], *, expected: dict[str, str | None] | No
         address = cluster.scheduler_address
     else:
         address = value
+        security = tls_security() if address.startswith("tls://") else None
+        probe_scheduler(address)
     try:
         try:
-            client = distributed.Client(address, timeout=f"{timeout}s", set_as_default=False)
-        except (OSError, TimeoutError) as exc:
-            raise ValueError(f"--scheduler: no dask scheduler answers at {address} ({type(exc).__name__})") from exc
+            import dask
+
+            with dask.config.set({"distributed.comm.timeouts.connect": f"{min(timeout, 8.0)}s"}):
+                client = distributed.Client(address, timeout=f"{min(timeout, 8.0)}s", set_as_default=False,
+                                            **({"security": security} if security else {}))
+        except (OSError, TimeoutError, ValueError) as exc:
+            raise ValueError(f"--scheduler: no dask scheduler answers at {address} ({type(exc).__name__})") from None
         try:
             if kind == "local":
                 client.wait_for_workers(value, timeout=f"{max(timeout, 60.0)}s")

@@ -107,10 +107,23 @@ def _git(*args: str) -> str:
 REPRODUCED = False
 
 
+def _recorded_fingerprint() -> str | None:
+    """The code fingerprint a standard run recorded in ``data/provenance.json`` (``None`` if there is none)."""
+    import json
+
+    from paper_repro.util.io import data_dir
+
+    try:
+        return json.loads((data_dir() / "provenance.json").read_text())["code_fingerprint"]
+    except (OSError, ValueError, KeyError, TypeError):
+        return None
+
+
 def provenance() -> dict:
     """The commit of the code that computed the data (the last commit touching the package, pyproject or
-    the lock), its date (not the clock), whether the code differs from it, whether ``data/`` was committed
-    after the code (so it was computed by it), and the locked versions (``name==version`` of each lock line,
+    the lock), its date (not the clock), whether the code differs from it, whether ``data/`` was computed by this
+    code (the code fingerprint recorded in ``data/provenance.json`` by the standard run equals this code's; without
+    that file, from the git history), and the locked versions (``name==version`` of each lock line,
     without its ``--hash=`` options)."""
     paths = ["paper_repro", "pyproject.toml", "requirements.lock"]
     commit = _git("log", "-1", "--format=%H", "--", *paths) or "unknown (no git)"
@@ -120,7 +133,17 @@ def provenance() -> dict:
     data_commit = _git("log", "-1", "--format=%H", "--", "data")
     data_time = _git("log", "-1", "--format=%ct", "--", "data")
     data_dirty = bool(_git("status", "--porcelain", "--", "data"))
-    if not (code_time and data_time):
+    recorded = _recorded_fingerprint()
+    if recorded is not None:
+        from paper_repro.util.cache import code_fingerprint
+
+        now = code_fingerprint()
+        data_state = (f"yes: data/ was computed by this code (code fingerprint {now})" if recorded == now else
+                      f"no: data/ was computed by other code (fingerprint {recorded}; this code is {now}); "
+                      "run make reproduce")
+        if data_dirty:
+            data_state += " (data/ has uncommitted changes)"
+    elif not (code_time and data_time):
         data_state = "unknown (no git history)"
     elif data_dirty:
         data_state = "data/ has uncommitted changes (a run of make reproduce not yet committed)"

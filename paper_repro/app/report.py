@@ -356,6 +356,13 @@ def run_claims(only: list[str] | None, overrides: dict[str, dict[str, Any]] | No
             if in_checkout() and output_root() == ROOT:  # the README of the clone, never elsewhere
                 update_readme(results, unique, (data_files.get("paper_lines.json") or {}).get("coverage"))
             write_paper_map()
+            from paper_repro.util.cache import code_fingerprint
+
+            write_json(data_dir() / "provenance.json",
+                       {"code_fingerprint": code_fingerprint(),
+                        "what": "sha256 (first 16 hex digits) of the package's source files that computed data/ "
+                                "(paper_repro.util.cache.code_fingerprint); the gallery compares it with the code "
+                                "it runs"})
         _record_timings(build_dir() / f"timings{suffix}.json", seconds, cached)
         write_json(build_dir() / f"measured_raw{suffix}.json", raw)
     return ClaimsRun(len(results) - len(failed), tuple(failed), len(unique_errata(errata)))

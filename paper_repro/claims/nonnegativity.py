@@ -13,6 +13,8 @@ Publishes ``data/normalization/closed_forms.json`` (shape fixed by issue 4) and 
 
 from __future__ import annotations
 
+import re
+
 from flint import fmpq_poly
 
 from paper_repro.core.labels import united_system
@@ -85,17 +87,46 @@ def markdown_table(n_max: int) -> str:
     return "\n".join(lines)
 
 
+_ORDINALS = {"first": 1, "second": 2, "third": 3, "fourth": 4, "fifth": 5, "sixth": 6}
+
+
+def printed_orders() -> tuple[list[int], str]:
+    """The line sec4_5-nonnegative (Remark after Definition normalized_united_system) read: the orders of its
+    ``the first, the second and the third order cases`` (which must be those of the Examples it cites) and the
+    property its ``are also ...`` states."""
+    from paper_repro.printed.lines import verbatim
+
+    tex = verbatim("sec4_5-nonnegative")
+    m = re.search(r"the ((?:\w+, )*(?:the )?\w+(?: and the \w+)?) order cases of the function system .*?"
+                  r"are also ([\w-]+)", tex, re.S)
+    if not m:
+        return [], ""
+    words = re.findall(r"\w+", m.group(1).replace(" and ", " "))
+    orders = [_ORDINALS[w] for w in words if w != "the" and w in _ORDINALS]
+    if len(orders) != len([w for w in words if w != "the"]):
+        return [], m.group(2)
+    # "Based on Examples \ref{..n_1}--\ref{..n_3}": the Examples cited are those of the orders stated
+    cited = re.search(r"Examples \\ref\{normalizing_coefficients_n_(\d+)\}--\\ref\{normalizing_coefficients_n_(\d+)\}",
+                      tex)
+    if not cited or list(range(int(cited.group(1)), int(cited.group(2)) + 1)) != sorted(orders):
+        return [], m.group(2)
+    return sorted(orders), m.group(2)
+
+
 @claim("nonnegativity", paper_ref=["normalizing_coefficients_n_1", "normalizing_coefficients_n_2",
                                    "normalizing_coefficients_n_3", "normalized_united_system", "def:surface_patch"],
        statement="For n = 1, 2, 3 every normalizing coefficient is positive for every alpha in (0, pi), so the "
                  "normalized basis is non-negative (convex hull property of patches of order <= 3).",
        kind="proof", ns=[1, 2, 3])
 def run_paper(ns) -> Outcome:
-    rows = [analyse(n, proof=True) for n in ns]
-    ok = all(r["all_P_positive_on_(0,1)"] and r["closed_form_proof"]["proved"] for r in rows)
-    return Outcome(ok, {"per_n": rows, "method": "closed forms proven for every alpha (identity proof, "
-                                                 "docs/proof_of_closed_forms.md); Sturm root count of P on (0,1) "
-                                                 "and sign at c = 1/2"})
+    orders, word = printed_orders()
+    rows = [analyse(n, proof=True) for n in orders]
+    ok = bool(orders) and word == "non-negative" and sorted(ns) == orders and \
+        all(r["all_P_positive_on_(0,1)"] and r["closed_form_proof"]["proved"] for r in rows)
+    return Outcome(ok, {"per_n": rows, "printed_orders": orders, "printed_property": word,
+                        "method": "the orders and the property read from line sec4_5-nonnegative; closed forms "
+                                  "proven for every alpha (identity proof, docs/proof_of_closed_forms.md); Sturm root "
+                                  "count of P on (0,1) and sign at c = 1/2"})
 
 
 @claim("nonnegativity_extended", paper_ref=["sec:open_problems"],

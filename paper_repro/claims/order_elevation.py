@@ -33,17 +33,12 @@ def printed_matrix(alpha) -> list[list[fmpq]]:
 
 def node_distance(net: np.ndarray, n: int, alpha: float) -> float:
     """max distance from each control point to the patch point at its node's barycentric position."""
-    from paper_repro.core.layout import CORNERS, position
+    from paper_repro.core.layout import barycentric
 
     patch = Patch(n, alpha, net)
     worst = 0.0
-    u, v, w = CORNERS["u"], CORNERS["v"], CORNERS["w"]
-    for k, lab in enumerate(united_system(n)):
-        p = position(lab)
-        mat = np.array([[u[0], v[0], w[0]], [u[1], v[1], w[1]], [1, 1, 1]])
-        bary = np.linalg.solve(mat, [p[0], p[1], 1])
-        bary = np.clip(bary, 0, 1) / np.clip(bary, 0, 1).sum()
-        worst = max(worst, float(np.linalg.norm(patch.at_barycentric([bary])[0] - net[k])))
+    for k, lab in enumerate(united_system(n)):  # the node's barycentric point: exact ratios (no LAPACK solve)
+        worst = max(worst, float(np.linalg.norm(patch.at_barycentric([barycentric(lab)])[0] - net[k])))
     return worst
 
 

@@ -3,8 +3,10 @@
 * Independent net: fitting the torus (eq. toroidal_triangle) in the normalized basis of order 2
   (:mod:`paper_repro.surfaces.fitting`), exactly at rational-tangent alpha with rational rho, mu, and in
   mpmath at any alpha.
-* Every printed coordinate (:mod:`paper_repro.printed.torus`) is compared with it over several
-  (alpha, rho, mu); disagreeing coordinates become errata with a corrected closed form that is itself
+* Every printed coordinate -- parsed from the transcription of its line (``sec6-torus-point-<label>``) by
+  :mod:`paper_repro.printed.torus`, never retyped -- is compared with it over several (alpha, rho, mu);
+  disagreeing coordinates become errata (the printed text is the transcription's LaTeX); the corrected closed form
+  is the erratum's ``fix`` applied to the transcription (:func:`paper_repro.printed.torus.corrected_points`), itself
   verified (exactly at rational-tangent alpha, and at high precision).
 * Maximum deviation from the torus of the patch built from the printed net and from the computed net.
 """
@@ -18,18 +20,11 @@ from flint import fmpq
 from paper_repro.core.alphas import alpha_mp
 from paper_repro.core.domain import rational_alpha, sample_points
 from paper_repro.core.labels import index_of, united_system
-from paper_repro.printed.torus import PRINTED, torus
+from paper_repro.printed.torus import coordinate_tex, corrected_points, mp_function, point_value, printed_net_mp, torus
 from paper_repro.surfaces.fitting import ExactTrig, fit_exact, fit_mp
 from paper_repro.surfaces.patch import Patch
 from paper_repro.util.measured import bound, sig
 from paper_repro.util.registry import ALPHA_RANGES, Outcome, claim
-
-#: Corrected closed forms (found by inspection of the computed net, verified below), label -> axis -> f.
-CORRECTED = {("b_{4,3,1}", "x"): (
-    "3 rho (1 + cos a) / (4 + 2 cos a) + mu/4 sin a",
-    lambda a, r, m: 3 * r * (1 + mpmath.cos(a)) / (4 + 2 * mpmath.cos(a)) + m / 4 * mpmath.sin(a),
-    lambda ca, sa, r, m: 3 * r * (1 + ca) / (4 + 2 * ca) + m / 4 * sa)}
-PRINTED_TEXT = {("b_{4,3,1}", "x"): "rho (7 - 2 cos^2(a/2) + cos(a/2)) cos^2(a/2) / (4 + 2 cos a) + mu/4 sin a"}
 
 
 def exact_torus(rho: fmpq, mu: fmpq):
@@ -41,11 +36,18 @@ def exact_torus(rho: fmpq, mu: fmpq):
 
 
 def printed_net(a, rho, mu) -> np.ndarray:
-    idx = index_of(2)
-    net = np.empty((19, 3), dtype=object)
-    for lab, fs in PRINTED.items():
-        net[idx[lab]] = [f(a, rho, mu) for f in fs]
-    return net
+    """The printed net of Example exmp:torus, parsed from the transcriptions now, in mpmath at alpha = a."""
+    return printed_net_mp(a, rho, mu)
+
+
+def corrected_text(fix) -> str:
+    """The corrected coordinate (from the erratum's fix applied to the transcription) as text."""
+    return "not found" if fix is None else str(fix[2]).replace("varrho", "rho").replace("alpha", "a")
+
+
+def printed_text(label: str, axis: str) -> str:
+    """The printed LaTeX of one coordinate, read from its transcription."""
+    return coordinate_tex(f"sec6-torus-point-{label}", "xyz".index(axis))
 
 
 def _digits17(x) -> str:
@@ -98,33 +100,34 @@ def run(alphas, rho_mu, rational_ts, dps, points) -> Outcome:
                         dev_printed = max(dev_printed, d)
                     else:
                         dev_computed = max(dev_computed, d)
-    # corrected forms: exact check at rational-tangent alpha and rational rho, mu; high precision elsewhere
+    # corrected forms: the erratum's fix applied to the transcription (printed.torus.corrected_points), checked
+    # exactly at rational-tangent alpha and rational rho, mu, and at high precision elsewhere
+    fixes = corrected_points()
     corrected_ok = {}
-    for key, (_, f_mp, f_exact) in CORRECTED.items():
-        lab, ax = key
+    for key, (_, k_ax, expr) in fixes.items():
+        lab = key.split(".")[0]
         ok = True
         for t in rational_ts:
             alpha = rational_alpha(fmpq(*map(int, t.split("/"))))
-            ca = alpha.cos_half**2 - alpha.sin_half**2
-            sa = 2 * alpha.sin_half * alpha.cos_half
             for rho, mu in ((fmpq(1), fmpq(0)), (fmpq(0), fmpq(1)), (fmpq(7, 2), fmpq(5, 3))):
                 net = fit_exact(exact_torus(rho, mu), 2, alpha)
-                ok &= net[index_of(2)[lab]]["xyz".index(ax)] == f_exact(ca, sa, rho, mu)
+                ok &= net[index_of(2)[lab]][k_ax] == point_value(expr, alpha.cos_half, alpha.sin_half, rho, mu)
+        f_mp = mp_function(expr)
         with mpmath.workdps(dps):
             for a_text in alphas:
                 a = alpha_mp(a_text)
                 comp = fit_mp(lambda u, v, w: torus(u, v, w, 4, 3), 2, a, dps=dps)
-                ok &= abs(comp[index_of(2)[lab], "xyz".index(ax)] - f_mp(a, 4, 3)) < mpmath.mpf(10) ** (-(dps - 10))
-        corrected_ok[f"{lab}.{ax}"] = ok
+                ok &= abs(comp[index_of(2)[lab], k_ax] - f_mp(a, 4, 3)) < mpmath.mpf(10) ** (-(dps - 10))
+        corrected_ok[key] = ok
     errata = [{"id": f"torus-{lab}-{ax}", "paper_ref": "exmp:torus", "item": f"{lab}, {ax} coordinate",
                "severity": "statement",  # the printed point is wrong; with it corrected the example holds
-               "printed": PRINTED_TEXT.get((lab, ax), "see source"),
-               "corrected": CORRECTED[(lab, ax)][0] if (lab, ax) in CORRECTED else "not found",
+               "printed": printed_text(lab, ax),
+               "corrected": corrected_text(fixes.get(f"{lab}.{ax}")),
                "evidence": f"independent exact fit of the torus (eq. toroidal_triangle) disagrees in {n} of "
                            f"{len(alphas) * len(rho_mu)} (alpha, rho, mu) cases; the corrected form equals the exact "
                            f"fit at tan(alpha/4) in {rational_ts} (exact) and at alpha in {alphas} (40 digits)"}
               for (lab, ax), n in sorted(bad.items())]
-    ok = set(bad) == set(CORRECTED) and all(corrected_ok.values()) and dev_computed < 1e-12
+    ok = {f"{lab}.{ax}" for lab, ax in bad} == set(fixes) and all(corrected_ok.values()) and dev_computed < 1e-12
     data = {"torus/control_points.json": control_points_table()}
     return Outcome(ok, {
         "disagreeing_coordinates": [f"{lab}.{ax}" for lab, ax in sorted(bad)], "coordinates_checked": 19 * 3,

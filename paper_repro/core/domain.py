@@ -170,13 +170,15 @@ class RationalPoints:
         return np.array(rows, dtype=object).reshape(-1, 3)
 
 
-def check_points(points, alpha, tol: float = DOMAIN_TOL, offset: int = 0) -> np.ndarray:
+def check_points(points, alpha, tol: float = DOMAIN_TOL, offset: int = 0, *, alpha_checked: bool = False
+                 ) -> np.ndarray:
     """Return ``points`` as an ``(P, 3)`` array after checking that they lie on Omega^alpha.
 
     A point is accepted if ``|u + v + w - alpha| <= tol * alpha`` and ``u, v, w >= -tol * alpha``.
     Raises ``ValueError``/``TypeError`` naming ``points`` (and the first offending point) otherwise.
+    ``alpha_checked``: inner callers whose ``alpha`` (a float) is already validated.
     """
-    a = check_alpha(parse_alpha(alpha))
+    a = float(alpha) if alpha_checked else check_alpha(parse_alpha(alpha))
     if isinstance(points, (str, bytes)):
         raise TypeError(f"points must be a (P, 3) array of (u, v, w), got a string {points!r}")
     if isinstance(points, (dict, set, numbers.Number, np.generic)) or points is None:
@@ -303,10 +305,40 @@ def mp_domain_points(alpha: mpmath.mpf, count: int, seed: int) -> np.ndarray:
     return pts
 
 
+#: how far a barycentric row may miss x + y + z = 1 (or dip below 0): rounding of rows computed in float64
+BARY_TOL = 1e-12
+
+
+def check_barycentric(bary, name: str = "bary") -> np.ndarray:
+    """Barycentric ``(x, y, z)`` rows as a float array of the given shape (``(3,)`` or ``(m, 3)``): real, finite,
+    each row summing to 1 and >= 0 (to :data:`BARY_TOL`); ``ValueError``/``TypeError`` naming the first offending row
+    as the user gave it.
+
+    >>> check_barycentric([[0.5, 0.5, 0.5]])
+    Traceback (most recent call last):
+    ...
+    ValueError: bary row 0 = (0.5, 0.5, 0.5) sums to 1.5: barycentric rows (x, y, z) must sum to 1, with x, y, z >= 0
+    """
+    raw = np.asarray(bary)
+    if raw.dtype == object or np.iscomplexobj(raw) or raw.dtype.kind not in "biuf":
+        raise TypeError(f"{name} must be real numbers (x, y, z), got an array of {raw.dtype}")
+    b = np.atleast_2d(raw.astype(np.float64))
+    if b.ndim != 2 or b.shape[1] != 3:
+        raise ValueError(f"{name} must be rows (x, y, z): shape (m, 3), got shape {raw.shape}")
+    bad = ~np.isfinite(b).all(axis=1) | (np.abs(b.sum(axis=1) - 1) > BARY_TOL) | (b.min(axis=1, initial=0) < -BARY_TOL)
+    if bad.any():
+        k = int(np.argmax(bad))
+        row = "(" + ", ".join(f"{x:g}" for x in b[k]) + ")"
+        why = ("is not finite" if not np.isfinite(b[k]).all() else
+               f"sums to {b[k].sum():g}" if abs(b[k].sum() - 1) > BARY_TOL else "has a negative entry")
+        raise ValueError(f"{name} row {k} = {row} {why}: barycentric rows (x, y, z) must sum to 1, with x, y, z >= 0")
+    return b.reshape(raw.shape)
+
+
 def barycentric_to_uvw(alpha, bary) -> np.ndarray:
-    """Points ``alpha * (x, y, z)`` for barycentric ``(x, y, z)`` rows (x + y + z = 1)."""
-    b = np.asarray(bary, dtype=np.float64)
-    return float(alpha) * b
+    """Points ``alpha * (x, y, z)`` for barycentric ``(x, y, z)`` rows (x + y + z = 1, x, y, z >= 0; checked by
+    :func:`check_barycentric`)."""
+    return float(alpha) * check_barycentric(bary)
 
 
 def check_count(count, name: str = "count", limit: int = 10**8, why: str = "") -> int:

@@ -207,15 +207,28 @@ def elevation_matrix(n: int, alpha) -> np.ndarray:
     return _elevation_matrix_float(n, a).copy()
 
 
-def elevate(net, n: int, alpha, times: int = 1) -> np.ndarray:
-    """Control net of the same patch written in order ``n + times`` (repeated order elevation).
+def elevate(net, n: int, alpha, *, to: int | None = None, times: int | None = None) -> np.ndarray:
+    """Control net of the same patch written in order ``to`` (or ``n + times``): repeated order elevation.
 
-    ``net`` is a ``(delta_n, d)`` array or ``{label: point}``; ``alpha`` a float in (0, pi) or a
-    :class:`RationalAngle` (then the matrices are exact before rounding).  ``times`` from 0 to
-    :data:`~paper_repro.util.limits.MAX_ELEVATION_STEPS`, with ``n + times - 1 <=``
-    :data:`~paper_repro.util.limits.MAX_N_ELEVATION`.
+    ``net`` is a ``(delta_n, d)`` array or ``{label: point}`` of order ``n``; ``alpha`` a float in (0, pi) or a
+    :class:`RationalAngle` (then the matrices are exact before rounding).  Give the target order ``to`` (at least
+    ``n``) or the number of steps ``times`` (from 0 to :data:`~paper_repro.util.limits.MAX_ELEVATION_STEPS`), both
+    keyword-only; neither means one step.  The target order is at most
+    :data:`~paper_repro.util.limits.MAX_N_ELEVATION` + 1.
+
+    >>> net = np.zeros((7, 3)); elevate(net, 1, 1.0, to=3).shape, elevate(net, 1, 1.0, times=2).shape
+    ((37, 3), (37, 3))
     """
     n = check_int(n, "n", 1, MAX_N_ELEVATION, why="the dense E has delta_{n+1} delta_n entries")
+    if to is not None:
+        to = check_int(to, "to", n, MAX_N_ELEVATION + 1,
+                       why=f"the target order: at least n = {n}, at most {MAX_N_ELEVATION + 1} (the largest "
+                           f"elevation matrix)")
+        if times is not None and times != to - n:
+            raise ValueError(f"give to or times, not both: to = {to} is {to - n} steps from n = {n}, "
+                             f"times = {times!r}")
+        times = to - n
+    times = 1 if times is None else times
     times = check_int(times, "times", 0, min(MAX_ELEVATION_STEPS, MAX_N_ELEVATION + 1 - n),
                       why=f"n + times - 1 must be at most {MAX_N_ELEVATION} (the largest elevation matrix)")
     alpha = parse_alpha(alpha)

@@ -35,8 +35,8 @@ from flint import ctx as flint_ctx
 
 from paper_repro.core.context import Context, FloatContext, get_context
 from paper_repro.core.domain import RationalAngle
-from paper_repro.core.half_angle_rules import derivative_terms, elevation_terms, merge, product_terms
-from paper_repro.core.labels import delta, variable_swap
+from paper_repro.core.half_angle_rules import _derivative_terms, elevation_terms, merge, product_terms
+from paper_repro.core.labels import delta, delta_unchecked, variable_swap
 from paper_repro.core.normalization import orbits
 from paper_repro.core.normalizing_formula import scaled_table
 from paper_repro.util.validation import check_alpha, check_n, parse_alpha
@@ -49,7 +49,11 @@ def float_half_angle(alpha: float) -> tuple[float, float]:
     >>> float_half_angle(1.0) == (0.8775825618903728, 0.22984884706593015)
     True
     """
-    a = check_alpha(alpha)
+    return _float_half_angle(check_alpha(alpha))
+
+
+def _float_half_angle(a: float) -> tuple[float, float]:
+    """:func:`float_half_angle` of an alpha already checked (inner code)."""
     old = flint_ctx.prec
     flint_ctx.prec = 128
     try:
@@ -96,10 +100,14 @@ def elevation_form(n: int) -> tuple[np.ndarray, ...]:
     return out
 
 
-@cache
 def derivative_form(n: int) -> tuple[np.ndarray, ...]:
     """The integer bivariate form of C (direction u), as :func:`elevation_form` (signed coefficients)."""
-    out = merge(derivative_terms(check_n(n)))
+    return _derivative_form(check_n(n))
+
+
+@cache
+def _derivative_form(n: int) -> tuple[np.ndarray, ...]:
+    out = merge(_derivative_terms(n))
     for arr in out:
         arr.setflags(write=False)
     return out
@@ -186,7 +194,7 @@ def evaluate_terms(form: tuple[np.ndarray, ...], kappa, sigma, ctx: Context
 def evaluate_form(form_id: tuple[str, int], kappa, sigma, ctx: Context) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """:func:`evaluate_terms` of ``('M', n)`` (:func:`elevation_form`) or ``('C', n)`` (:func:`derivative_form`)."""
     kind, n = form_id
-    return evaluate_terms((elevation_form if kind == "M" else derivative_form)(n), kappa, sigma, ctx)
+    return evaluate_terms((elevation_form if kind == "M" else _derivative_form)(n), kappa, sigma, ctx)
 
 
 def scaled_coefficients(n: int, kappa, sigma, ctx: Context) -> np.ndarray:
@@ -259,12 +267,21 @@ def derivative_nets(n: int, alpha, net: np.ndarray, arith: str | Context = "floa
     net = np.asarray(net, dtype=np.float64 if isinstance(ctx, FloatContext) else object)
     if net.ndim != 2 or net.shape[0] != delta(n):
         raise ValueError(f"net must be a (delta_n, d) = ({delta(n)}, d) array for n = {n}, got shape {net.shape}")
-    kappa, sigma = half_angle(alpha, ctx)
+    if not isinstance(alpha, RationalAngle):
+        alpha = check_alpha(parse_alpha(alpha))
+    return derivative_nets_checked(n, alpha, net, ctx)
+
+
+def derivative_nets_checked(n: int, alpha, net: np.ndarray, ctx: Context) -> tuple[np.ndarray, np.ndarray]:
+    """:func:`derivative_nets` for inner code: ``n``, ``alpha`` (a float in (0, pi) or a RationalAngle) and the
+    ``(delta_n, d)`` net of ``ctx``'s kind already checked."""
+    kappa, sigma = _float_half_angle(alpha) if isinstance(ctx, FloatContext) and not isinstance(
+        alpha, RationalAngle) else half_angle(alpha, ctx)
     rows, cols, vals = evaluate_form(("C", n), kappa, sigma, ctx)
     pi = variable_swap(n, 0, 1)  # m_{pi[f]}(u, v, w) = m_f(v, u, w)
 
     def apply(x: np.ndarray) -> np.ndarray:
-        out = ctx.zeros((delta(n), x.shape[1]))
+        out = ctx.zeros((delta_unchecked(n), x.shape[1]))
         with ctx.scope():
             if isinstance(ctx, FloatContext):
                 np.add.at(out, rows, vals[:, None] * x[cols])

@@ -38,11 +38,10 @@ from functools import cache
 
 import numpy as np
 
-from paper_repro.core.labels import delta, exponent_matrix
+from paper_repro.core.labels import delta, delta_unchecked, exponent_matrix
 from paper_repro.util.validation import check_n
 
 
-@cache
 def member_table(n: int) -> np.ndarray:
     """``K[X, Y, m, j]``: the internal index (:func:`~paper_repro.core.labels.united_system`) of the member
     ``M_X(m; Y, j)`` of T_{2n} (variables 0, 1, 2 = u, v, w), ``-1`` where X = Y or j > m.
@@ -51,7 +50,12 @@ def member_table(n: int) -> np.ndarray:
     >>> int(K[0, 1, 1, 1]), int(K[2, 1, 1, 1]), int(K[1, 0, 1, 1])   # the centre, whatever the parts
     (0, 0, 0)
     """
-    n = check_n(n)
+    return _member_table(check_n(n))
+
+
+@cache
+def _member_table(n: int) -> np.ndarray:
+    """:func:`member_table` for inner code (``n`` already checked)."""
     index = {tuple(int(x) for x in row): k for k, row in enumerate(exponent_matrix(n))}
     table = np.full((3, 3, n + 1, n + 1), -1, dtype=np.int64)
     for x in range(3):
@@ -68,12 +72,17 @@ def member_table(n: int) -> np.ndarray:
     return table
 
 
-@cache
 def member_parts(n: int) -> np.ndarray:
     """``(delta_n, 4)`` array ``(X, m, Y, j)`` of each member: Y the cosine variable (the smaller remaining one when
     there is none), X the variable of the sine exponent 2n - m (for m = n the smaller non-Y variable)."""
-    table = member_table(n)
-    out = np.full((delta(n), 4), -1, dtype=np.int64)
+    return _member_parts(check_n(n))
+
+
+@cache
+def _member_parts(n: int) -> np.ndarray:
+    """:func:`member_parts` for inner code (``n`` already checked)."""
+    table = _member_table(n)
+    out = np.full((delta_unchecked(n), 4), -1, dtype=np.int64)
     for m in range(n, -1, -1):  # a member with j = m has several names: keep the one found last (smallest X, Y)
         for j in range(m, -1, -1):
             for x in range(2, -1, -1):
@@ -111,7 +120,7 @@ def _rule_a(n: int, x: int, m: int, y: int, j: int) -> np.ndarray:
     """Rule (A): ``(C_X/S_X) M_X(m; Y, j)`` for 0 <= j <= m < n, as :func:`_terms`."""
     a, b, part, mm, ll = _rule_a_pattern(m, j)
     ys = np.array([y, 3 - x - y])
-    return _terms(a, b, member_table(n)[x][ys[part], mm, ll])
+    return _terms(a, b, _member_table(n)[x][ys[part], mm, ll])
 
 
 def _shift(terms: np.ndarray, a: int, b: int) -> np.ndarray:
@@ -123,7 +132,7 @@ def _shift(terms: np.ndarray, a: int, b: int) -> np.ndarray:
 
 def _rule_an(n: int, x: int, y: int, j: int) -> np.ndarray:
     """Rule (A_n): ``(C_X/S_X) M(n; Y, j)`` at level n (X not the cosine variable Y)."""
-    table = member_table(n)
+    table = _member_table(n)
     z = 3 - x - y
     if j == n:
         return _terms(0, 0, table[y, x, n, n - 1])
@@ -133,7 +142,7 @@ def _rule_an(n: int, x: int, y: int, j: int) -> np.ndarray:
 
 def _rule_b(n: int, x: int, m: int, y: int, j: int) -> np.ndarray:
     """Rule (B): ``(C_Z/S_Z) M_X(m; Y, j)`` for 1 <= m < n."""
-    table = member_table(n)
+    table = _member_table(n)
     z = 3 - x - y
     if j == m:
         return _terms(0, 0, table[x, z, m, m - 1])
@@ -145,12 +154,12 @@ def _rule_b(n: int, x: int, m: int, y: int, j: int) -> np.ndarray:
 def cotangent(n: int, var: int, g: int) -> np.ndarray:
     """``L_var m_g = (C_var / S_var) m_g`` as a read-only ``(k, 4)`` array of terms ``(a, b, coef, target)``
     (every coef +1), for a member with a factor S_var; ``ValueError`` otherwise."""
-    x, m, y, j = (int(v) for v in member_parts(n)[g])
+    x, m, y, j = (int(v) for v in _member_parts(n)[g])
     e = exponent_matrix(n)[g]
     if e[2 * var] == 0:
         raise ValueError(f"member {g} of order {n} has no factor sin({'uvw'[var]}/2)")
     if e[2 * var + 1] > 0:  # var is the cosine variable Y
-        out = _terms(0, 0, member_table(n)[x, y, m, j - 1])
+        out = _terms(0, 0, _member_table(n)[x, y, m, j - 1])
     elif m == n:  # level n: var is one of the two parts X, Z (or any variable at the centre)
         out = _rule_an(n, var, y if var != y else x, j)
     elif var == x:
@@ -168,16 +177,20 @@ def _as_arrays(terms: list[tuple[int, int, int, int, int]]) -> tuple[np.ndarray,
     return tuple(arr[:, k].copy() for k in range(5))
 
 
-@cache
 def derivative_terms(n: int) -> tuple[np.ndarray, ...]:
     """C (direction u = (1, 0, -1)) as terms ``(rows, cols, a, b, coef)``: ``C[g, f] = sum coef kappa^a sigma^b``
     over the terms with row g and column f (signed integer coefficients; not merged)."""
-    n = check_n(n)
+    return _derivative_terms(check_n(n))
+
+
+@cache
+def _derivative_terms(n: int) -> tuple[np.ndarray, ...]:
+    """:func:`derivative_terms` for inner code (``n`` already checked)."""
     e = exponent_matrix(n)
-    parts = member_parts(n)
-    table = member_table(n)
+    parts = _member_parts(n)
+    table = _member_table(n)
     out = []
-    for f in range(delta(n)):
+    for f in range(delta_unchecked(n)):
         x, m, y, j = (int(v) for v in parts[f])
         for var, sign in ((0, 1), (2, -1)):
             p, q = int(e[f, 2 * var]), int(e[f, 2 * var + 1])
@@ -190,7 +203,7 @@ def derivative_terms(n: int) -> tuple[np.ndarray, ...]:
 
 def elevation_part(n: int) -> np.ndarray:
     """For each column f, the variable x with ``S_x^2 m_f`` a member of order n + 1 (the part X of m_f)."""
-    return member_parts(n)[:, 0]
+    return _member_parts(n)[:, 0]
 
 
 @cache
@@ -199,8 +212,8 @@ def _cotangent_csc(n: int, var: int) -> tuple[np.ndarray, ...]:
     members without a factor S_var)."""
     e = exponent_matrix(n)
     empty = np.zeros((0, 4), dtype=np.int64)
-    cols = [cotangent(n, var, g) if e[g, 2 * var] else empty for g in range(delta(n))]
-    indptr = np.zeros(delta(n) + 1, dtype=np.int64)
+    cols = [cotangent(n, var, g) if e[g, 2 * var] else empty for g in range(delta_unchecked(n))]
+    indptr = np.zeros(delta_unchecked(n) + 1, dtype=np.int64)
     indptr[1:] = np.cumsum([len(c) for c in cols])
     flat = np.concatenate(cols)
     return indptr, flat[:, 3].copy(), flat[:, 0].copy(), flat[:, 1].copy(), flat[:, 2].copy()
@@ -223,7 +236,7 @@ def elevation_terms(n: int) -> tuple[np.ndarray, ...]:
     big = n + 1
     lifted = exponent_matrix(n).copy()
     part = elevation_part(n)
-    lifted[np.arange(delta(n)), 2 * part] += 2
+    lifted[np.arange(delta_unchecked(n)), 2 * part] += 2
     key = lambda e: ((((e[:, 0] * 64 + e[:, 1]) * 64 + e[:, 2]) * 64 + e[:, 3]) * 64 + e[:, 4]) * 64 + e[:, 5]
     big_keys = key(exponent_matrix(big))
     order = np.argsort(big_keys)
@@ -231,7 +244,7 @@ def elevation_terms(n: int) -> tuple[np.ndarray, ...]:
     g = order[loc]
     if not np.array_equal(exponent_matrix(big)[g], lifted):
         raise AssertionError(f"S_x^2 m_f is not a member of order {big}")
-    cols = np.arange(delta(n))
+    cols = np.arange(delta_unchecked(n))
     out = [(g, cols, np.zeros_like(g), np.ones_like(g), np.ones_like(g))]
     for var in range(3):
         sel = cols[part == var]
@@ -311,7 +324,7 @@ def product_column(n: int, h: int, f: int) -> dict:
     """
     big = n + 1
     table = member_table(big)
-    x, m, y, j = (int(v) for v in member_parts(n)[f])
+    x, m, y, j = (int(v) for v in _member_parts(n)[f])
     z = 3 - x - y
     kind, var = order_one_parts()[h]
     centre = {(int(table[x, y, m + 1, j + 1]), 0, 0): 1}
@@ -348,5 +361,5 @@ def product_terms(n: int, h: int) -> tuple[np.ndarray, ...]:
     n = check_n(n)
     if not isinstance(h, (int, np.integer)) or isinstance(h, bool) or not 0 <= h < delta(1):
         raise ValueError(f"h must be the index of a member of T_2, an integer in [0, {delta(1) - 1}], got {h!r}")
-    out = [(g, f, a, b, c) for f in range(delta(n)) for (g, a, b), c in product_column(n, int(h), f).items()]
+    out = [(g, f, a, b, c) for f in range(delta_unchecked(n)) for (g, a, b), c in product_column(n, int(h), f).items()]
     return _as_arrays(out)

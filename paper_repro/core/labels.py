@@ -130,8 +130,8 @@ def _full_system(n: int, color: str) -> tuple[BasisLabel, ...]:
 
 
 def united_system(n: int) -> tuple[BasisLabel, ...]:
-    """The labels of ``T_{2n}`` (eq. united_system) in the package's internal order (``n`` checked before the
-    memo's lookup: an unhashable ``n`` gets the message of :func:`check_n`)."""
+    """The labels of ``T_{2n}`` (eq. united_system) in the package's internal order (``n`` is checked first, so an
+    unhashable ``n`` gets the message of :func:`check_n`, not a TypeError of the cache)."""
     return _united_system(check_n(n))
 
 
@@ -146,7 +146,7 @@ def _united_system(n: int) -> tuple[BasisLabel, ...]:
 @cache
 def exponent_matrix(n: int) -> np.ndarray:
     """``(delta_n, 6)`` integer array: the exponent vectors of ``T_{2n}`` in internal order."""
-    arr = np.array([exponents(lab) for lab in united_system(n)], dtype=np.int64)
+    arr = np.array([exponents(lab) for lab in united_system(n)], dtype=np.int64)  # checks n (cold only)
     arr.setflags(write=False)
     return arr
 
@@ -216,4 +216,9 @@ def parse_label(text: str) -> BasisLabel:
 def delta(n: int) -> int:
     """The printed dimension formula delta_n = 3n(n+1) + 1 (Theorem joint_systems_linear_independence)."""
     check_n(n)
+    return delta_unchecked(n)
+
+
+def delta_unchecked(n: int) -> int:
+    """:func:`delta` for inner code whose ``n`` is already checked (a public function validates once)."""
     return 3 * n * (n + 1) + 1

@@ -16,10 +16,23 @@ from paper_repro.core.labels import COLORS, BasisLabel, exponents, index_of
 CORNERS = {"u": np.array([0.0, 0.0]), "w": np.array([1.0, 0.0]), "v": np.array([0.5, np.sqrt(3) / 2])}
 
 
-def position(lab: BasisLabel) -> np.ndarray:
+def barycentric(lab: BasisLabel) -> np.ndarray:
+    """The node of a function over the domain, as barycentric ``(x, y, z)`` (the point alpha (x, y, z) of
+    Omega^alpha): its half-angle sine exponents (a, b, c) of u, v, w over their sum -- exact ratios, no solve.
+
+    >>> from paper_repro.core.labels import BasisLabel
+    >>> barycentric(BasisLabel("R", 2, 1, 0)).tolist()   # R_{4,3,0} = sin^3(u/2) sin(w/2): 3/4 of the way to u
+    [0.75, 0.0, 0.25]
+    """
     e = exponents(lab)
-    a, b, c = e[0], e[2], e[4]
-    return (a * CORNERS["u"] + b * CORNERS["v"] + c * CORNERS["w"]) / (a + b + c)
+    a, b, c = int(e[0]), int(e[2]), int(e[4])
+    return np.array([a, b, c], dtype=np.float64) / (a + b + c)
+
+
+def position(lab: BasisLabel) -> np.ndarray:
+    """The node of a function in the drawing plane of Fig. oriented_graph (corners :data:`CORNERS`)."""
+    x, y, z = barycentric(lab)
+    return x * CORNERS["u"] + y * CORNERS["v"] + z * CORNERS["w"]
 
 
 def edges(n: int) -> list[tuple[BasisLabel, BasisLabel]]:

@@ -21,7 +21,7 @@ import numbers
 
 import numpy as np
 
-from paper_repro.core.labels import delta, index_of, united_system
+from paper_repro.core.labels import delta, delta_unchecked, index_of, united_system
 from paper_repro.util.validation import check_n
 
 
@@ -39,13 +39,14 @@ def _as_object_rows(net, name: str) -> np.ndarray:
     return arr
 
 
-def check_net_exact(net, n: int, name: str = "net") -> np.ndarray:
+def check_net_exact(net, n: int, name: str = "net", *, n_checked: bool = False) -> np.ndarray:
     """The control net as an object array of shape ``(delta_n, d)``, entries as given (for the exact
-    and mp arithmetics); validated as :func:`check_net`."""
-    n = check_n(n)
+    and mp arithmetics); validated as :func:`check_net` (``n_checked``: inner callers that checked ``n``)."""
+    n = n if n_checked else check_n(n)
     arr = net_from_labels(net, n) if isinstance(net, dict) else _as_object_rows(net, name)
-    if arr.ndim != 2 or arr.shape[0] != delta(n) or arr.shape[1] < 1:
-        raise ValueError(f"{name} must have shape (delta_n, d) = ({delta(n)}, d) for n = {n}, got {arr.shape}")
+    if arr.ndim != 2 or arr.shape[0] != delta_unchecked(n) or arr.shape[1] < 1:
+        raise ValueError(f"{name} must have shape (delta_n, d) = ({delta_unchecked(n)}, d) for n = {n}, got "
+                         f"{arr.shape}")
     try:
         fl = arr.astype(np.float64)
     except (TypeError, ValueError, OverflowError):
@@ -107,11 +108,12 @@ class LabelledNet(np.ndarray):
 
     n: int
 
-    def __new__(cls, array, n: int) -> LabelledNet:
+    def __new__(cls, array, n: int, *, n_checked: bool = False) -> LabelledNet:
         obj = np.asarray(array).view(cls)
-        obj.n = check_n(n)
-        if obj.ndim < 1 or obj.shape[0] != delta(obj.n):
-            raise ValueError(f"net: {delta(obj.n)} rows expected for order n = {obj.n}, got shape {obj.shape}")
+        obj.n = n if n_checked else check_n(n)
+        if obj.ndim < 1 or obj.shape[0] != delta_unchecked(obj.n):
+            raise ValueError(f"net: {delta_unchecked(obj.n)} rows expected for order n = {obj.n}, got shape "
+                             f"{obj.shape}")
         return obj
 
     def __array_finalize__(self, obj) -> None:

@@ -35,7 +35,15 @@ from paper_repro.core.basis import evaluate
 from paper_repro.core.collocation import Collocation, collocate
 from paper_repro.core.context import BallContext, Context, ExactContext, FloatContext, LogContext, get_context
 from paper_repro.core.domain import RationalAngle, RationalPoints, mp_domain_points
-from paper_repro.core.labels import BasisLabel, compose, delta, exponents, united_system
+from paper_repro.core.labels import (
+    BasisLabel,
+    _united_system,
+    compose,
+    delta,
+    delta_unchecked,
+    exponents,
+    united_system,
+)
 from paper_repro.core.normalizing_formula import scaled_table, sin_powers
 from paper_repro.util.cache import cached, rational_text
 from paper_repro.util.validation import check_alpha, check_n
@@ -58,14 +66,18 @@ _LOG_FLOAT_MAX = math.log(np.finfo(np.float64).max)
 PERMUTATIONS = ((0, 1, 2), (0, 2, 1), (1, 0, 2), (1, 2, 0), (2, 0, 1), (2, 1, 0))
 
 
-@cache
 def orbits(n: int) -> tuple[tuple[BasisLabel, tuple[int, ...]], ...]:
     """Orbits of T_{2n} under permutations of (u, v, w): ``(R representative, member indices)``.
 
     Representatives are ``R_{2n,2n-i,j}`` with ``j = 0..n``, ``i = j..n``, ordered by (j, i).
     """
-    n = check_n(n)
-    labels = united_system(n)
+    return _orbits(check_n(n))
+
+
+@cache
+def _orbits(n: int) -> tuple[tuple[BasisLabel, tuple[int, ...]], ...]:
+    """:func:`orbits` for inner code (``n`` already checked)."""
+    labels = _united_system(n)
     by_exps = {exponents(lab): k for k, lab in enumerate(labels)}
     out = []
     for j in range(n + 1):
@@ -221,8 +233,9 @@ def _half_angle(alpha, ctx: Context):
 
 def _float_half_angle(alpha) -> tuple[float, float, float]:
     """``(c, s, s^2)`` in float64, accurate for every alpha in (0, pi) (also below 1e-154, where s^2 underflows:
-    then it is 0 to within float64's range, which is what the formula needs)."""
-    a = float(alpha) if isinstance(alpha, RationalAngle) else check_alpha(alpha)
+    then it is 0 to within float64's range, which is what the formula needs).  Inner: ``alpha`` is checked by the
+    public callers."""
+    a = float(alpha)
     s = math.sin(a / 2)
     return math.cos(a / 2), s, s * s
 
@@ -446,8 +459,23 @@ def scaled_coefficient_vector(n: int, alpha, arith: str | Context = "float", *, 
     """``s^{2n+j} r`` of all delta_n functions in internal order (finite for every alpha in (0, pi))."""
     ctx = get_context(arith, dps=mpmath.mp.dps if dps is None else dps)
     orb = scaled_orbit_coefficients(n, alpha, ctx, dps=dps)
-    out = ctx.zeros((len(united_system(n)),))
-    for (_, members), x in zip(orbits(n), orb):
+    return _spread_orbits(n, orb, ctx)
+
+
+def scaled_float_vector(n: int, alpha: float) -> np.ndarray:
+    """:func:`scaled_coefficient_vector` in float64 for inner code whose ``n`` (at most ``MAX_N_FLOAT``) and
+    ``alpha`` (a float in (0, pi)) are already checked."""
+    vals = _scaled_float(n, float(alpha))
+    if vals is None:
+        raise ValueError(f"n = {n}, alpha = {float(alpha)!r}: s^(2n+j) r exceeds float64 for some coefficient; use "
+                         "log_scaled_orbit_coefficients(n, alpha) (natural logarithms) or arith='mp'")
+    return _spread_orbits(n, list(vals), FloatContext())
+
+
+def _spread_orbits(n: int, orb, ctx: Context) -> np.ndarray:
+    """The value of each orbit given to every member of it (internal order)."""
+    out = ctx.zeros((delta_unchecked(n),))
+    for (_, members), x in zip(_orbits(n), orb):
         for k in members:
             out[k] = x
     return out

@@ -439,6 +439,30 @@ def transformation_in_context(n: int, s, c, ctx: Context, direction: str, normal
         return ctx.mul(big_n, ctx.mul(scaled_normalizing(n, s, c, ctx), _inverse_sin_powers(n, s, ctx))[None, :])
 
 
+#: The float 'V_to_T' matrix loses digits to cancellation as alpha -> 0: measured against mp at 60 digits
+#: (``tools/transformation_accuracy.py`` -> ``reports/transformation_accuracy.md``, n = 1..10, alpha from 1e-6 to
+#: pi - 1e-12), its largest error relative to its largest entry stays below :func:`v_to_t_float_bound`.  Float
+#: results whose bound exceeds :data:`FLOAT_REL_GOAL` are refused.
+FLOAT_REL_GOAL = 1e-8
+_EPS = 2.0**-52
+
+
+def v_to_t_float_bound(n: int, alpha: float) -> float:
+    """Bound of the relative error (to the largest entry) of the float 'V_to_T' matrix: ``(12 n + 8) eps (1 +
+    1/alpha^2)``, 1.5-5 times the largest error measured for n <= 10 at alpha in [1e-6, pi - 1e-12] (a measured bound;
+    beyond n = 10 it extrapolates the measured growth, about 3 n eps / alpha^2).
+
+    >>> v_to_t_float_bound(3, 1.0) < 1e-13, v_to_t_float_bound(3, 1e-4) > 1e-8
+    (True, True)
+    """
+    return (12 * n + 8) * _EPS * (1 + 1 / (alpha * alpha))
+
+
+def v_to_t_float_alpha_min(n: int) -> float:
+    """The smallest alpha at which the float 'V_to_T' matrix keeps :data:`FLOAT_REL_GOAL` (its bound's threshold)."""
+    return float(np.sqrt((12 * n + 8) * _EPS / (FLOAT_REL_GOAL - (12 * n + 8) * _EPS)))
+
+
 def transformation_matrix(n: int, alpha, direction: str = "V_to_T", *, normalized: bool = True,
                           arith: str | Context | None = None, dps: int = 50) -> np.ndarray:
     """The basis transformation between V_n^alpha and T-bar_{2n}^alpha (Question 7.2), for every n.
@@ -457,6 +481,8 @@ def transformation_matrix(n: int, alpha, direction: str = "V_to_T", *, normalize
     ``OverflowError`` if an entry exceeds float64.
     """
     n = check_int(n, "n", 1, MAX_N_TRANSFORMATION, why="a dense delta_n x delta_n matrix built in O(n^5) operations")
+    if not isinstance(direction, str):
+        raise TypeError(f"direction must be one of {list(DIRECTIONS)} (a string), got {type(direction).__name__}")
     if direction not in DIRECTIONS:
         raise ValueError(f"direction must be one of {list(DIRECTIONS)}, got {direction!r}")
     if not isinstance(normalized, (bool, np.bool_)):
@@ -467,6 +493,12 @@ def transformation_matrix(n: int, alpha, direction: str = "V_to_T", *, normalize
     if arith is None:
         arith = "exact" if isinstance(alpha, RationalAngle) else "float"
     ctx = get_context(arith, dps=dps)
+    if (direction == "V_to_T" and isinstance(ctx, FloatContext) and not isinstance(alpha, RationalAngle)
+            and float(alpha) < v_to_t_float_alpha_min(n)):
+        raise ValueError(f"transformation_matrix(n={n}, alpha={float(alpha)!r}, 'V_to_T') in float64 loses its digits "
+                         f"to cancellation below alpha = {v_to_t_float_alpha_min(n):.2g} (measured bound "
+                         f"(12n+8) eps/alpha^2 > {FLOAT_REL_GOAL:g} relative): give arith='mp' or alpha as a "
+                         f"RationalAngle (exact); the 'T_to_V' direction is accurate at every alpha")
     if ctx.exact and not isinstance(alpha, RationalAngle):
         raise TypeError(f"arith {ctx.name!r} needs alpha as a RationalAngle (rational tan(alpha/4)), "
                         f"got {type(alpha).__name__}")
@@ -479,5 +511,6 @@ def transformation_matrix(n: int, alpha, direction: str = "V_to_T", *, normalize
     return out
 
 
-__all__ = ["DIRECTIONS", "transformation_matrix", "transformation_in_context", "gamma_coefficients", "scaled_theta",
+__all__ = ["DIRECTIONS", "FLOAT_REL_GOAL", "v_to_t_float_bound", "v_to_t_float_alpha_min",
+           "transformation_matrix", "transformation_in_context", "gamma_coefficients", "scaled_theta",
            "expansion_matrix", "scaled_normalizing", "half_angle", "v_columns"]

@@ -1,107 +1,185 @@
-"""Verbatim transcriptions of every printed normalizing-coefficient formula.
+"""The printed normalizing-coefficient formulas of Section sec:partition_of_unity, read from their transcriptions.
 
-Nothing here is computed from anything else in the package: each entry is the paper's text, with
-its LaTeX label.  ``s = sin(alpha/2)``, ``c = cos(alpha/2)``, ``C(i) = c_{2n,i}^alpha`` (the univariate
-constants).  Expressions are plain Python in ``s``, ``c`` and ``C`` so that they evaluate in exact
-rationals (``fmpq``) and in mpmath alike.
+Nothing here is typed in: every value is parsed (:mod:`paper_repro.printed.lines.sec5_latex`) from the verbatim
+LaTeX of the lines of :mod:`paper_repro.printed.lines.sec4_5` at the moment it is asked for (so the blank and
+mutation tests of :mod:`paper_repro.claims.lines.mutation` reach every user).  ``s = sin(alpha/2)``,
+``c = cos(alpha/2)``, ``C(i) = c_{2n,i}^alpha`` (the univariate constants); the values are computed with the
+arithmetic of the arguments (exact ``fmpq``, mpmath, rational functions alike).
 
-* ``FINAL`` -- right-hand closed forms of Examples normalizing_coefficients_n_1..3:
-  ``(numerator coefficients in c, ascending; power of s in the denominator)``.
-* ``INTERMEDIATE`` -- the middle expressions of the same Examples (in terms of c_{2n,i}).
-* :func:`remark_level_0` (Remark normalizing_coeff_of_level_0) and :func:`prop_level_1`
-  (Proposition prop:level_1_coefficients, eq. level_1_coefficients), for any n.
-* :func:`from_1_to_2` -- Example exmp:from_1_to_2: second order coefficients in terms of first order ones.
+* ``FINAL`` -- right-hand closed forms of Examples normalizing_coefficients_n_1..3 (lines ``sec4_5-ex-*-final`` and,
+  at level 0, ``sec4_5-ex-*-c-value``): ``(paper_ref, numerator coefficients in c ascending, power of s)``.
+* ``INTERMEDIATE`` -- the middle expressions of the same Examples (in terms of c_{2n,i}; at level 0 the constant
+  c_{2n,k} the line equates r with): ``(paper_ref, function of (s, c, C))``.
+* :func:`remark_level_0` (Remark normalizing_coeff_of_level_0) and :func:`prop_level_1` (Proposition
+  prop:level_1_coefficients, eq. level_1_coefficients), for any n, parsed from their lines.
+* :func:`from_1_to_2` -- Example exmp:from_1_to_2 (Section 7, not read here: a verbatim Python transcription kept
+  for its claim; the lines of Section 7 are checked by :mod:`paper_repro.claims.lines.sec7`).
 """
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Iterator, Mapping
 
-# label -> (paper_ref, numerator coefficients of c ascending, power of s)
-FINAL: dict[str, tuple[str, list[int], int]] = {
-    # Example normalizing_coefficients_n_1
-    "r_{2,2,0}": ("normalizing_coefficients_n_1", [1], 2),
-    "r_{2,1,0}": ("normalizing_coefficients_n_1", [0, 2], 2),
-    # printed 2 sin(a/2) / sin^2(a/2), which is identically 2 / sin(a/2):
-    "r_{2,1,1}": ("normalizing_coefficients_n_1", [2], 1),
-    # Example normalizing_coefficients_n_2
-    "r_{4,4,0}": ("normalizing_coefficients_n_2", [1], 4),
-    "r_{4,3,0}": ("normalizing_coefficients_n_2", [0, 4], 4),
-    "r_{4,2,0}": ("normalizing_coefficients_n_2", [2, 0, 4], 4),
-    "r_{4,3,1}": ("normalizing_coefficients_n_2", [4, 0, 8], 5),
-    "r_{4,2,1}": ("normalizing_coefficients_n_2", [0, 16, 0, 8], 5),
-    "r_{4,2,2}": ("normalizing_coefficients_n_2", [10, 0, 20], 4),
-    # Example normalizing_coefficients_n_3
-    "r_{6,6,0}": ("normalizing_coefficients_n_3", [1], 6),
-    "r_{6,5,0}": ("normalizing_coefficients_n_3", [0, 6], 6),
-    "r_{6,4,0}": ("normalizing_coefficients_n_3", [3, 0, 12], 6),
-    "r_{6,3,0}": ("normalizing_coefficients_n_3", [0, 12, 0, 8], 6),
-    "r_{6,5,1}": ("normalizing_coefficients_n_3", [6, 0, 24], 7),
-    "r_{6,4,1}": ("normalizing_coefficients_n_3", [0, 42, 0, 48], 7),
-    "r_{6,3,1}": ("normalizing_coefficients_n_3", [12, 0, 84, 0, 24], 7),
-    "r_{6,4,2}": ("normalizing_coefficients_n_3", [24, 0, 162, 0, 24], 8),
-    "r_{6,3,2}": ("normalizing_coefficients_n_3", [0, 144, 0, 252, 0, 24], 8),
-    "r_{6,3,3}": ("normalizing_coefficients_n_3", [56, 0, 324, 0, -276, 0, -104], 9),
-}
+import sympy
 
-PRINTED_LATEX: dict[str, str] = {
-    "r_{2,1,1}": r"\frac{2\sin\frac{\alpha}{2}}{\sin^{2}\frac{\alpha}{2}}",
-    "r_{4,2,2}": r"\frac{10+20\cos^{2}\frac{\alpha}{2}}{\sin^{4}\frac{\alpha}{2}}",
-    "r_{6,3,3}": r"\frac{-104\cos^{6}\frac{\alpha}{2}-276\cos^{4}\frac{\alpha}{2}+324\cos^{2}\frac{\alpha}{2}+56}"
-                 r"{\sin^{9}\frac{\alpha}{2}}",
-}
+from paper_repro.printed.lines import line, verbatim
+from paper_repro.printed.lines.sec5_latex import LatexMathError, parse, parse_relation
+
+#: The coefficients of the Examples, in the order printed (their lines are ``sec4_5-ex-<slug>-...``).
+LABELS = ("r_{2,2,0}", "r_{2,1,0}", "r_{2,1,1}", "r_{4,4,0}", "r_{4,3,0}", "r_{4,2,0}", "r_{4,3,1}", "r_{4,2,1}",
+          "r_{4,2,2}", "r_{6,6,0}", "r_{6,5,0}", "r_{6,4,0}", "r_{6,3,0}", "r_{6,5,1}", "r_{6,4,1}", "r_{6,3,1}",
+          "r_{6,4,2}", "r_{6,3,2}", "r_{6,3,3}")
+_S, _C = sympy.symbols("S C")
+_ALPHA = sympy.Symbol("alpha")
+
+
+def _slug(label: str) -> str:
+    return label.replace("_{", "").replace(",", "").replace("}", "")
+
+
+def _level0(label: str) -> bool:
+    return label.endswith(",0}")
+
+
+def _in_s_c(e: sympy.Expr) -> sympy.Expr:
+    return e.subs({sympy.sin(_ALPHA / 2): _S, sympy.cos(_ALPHA / 2): _C})
+
+
+def evaluate(e: sympy.Expr, s, c, C: Callable | None = None):
+    """The value of a parsed expression in S, C and c_{2n,i} with the arithmetic of ``s``, ``c``, ``C(i)``."""
+    if e == _S:
+        return s
+    if e == _C:
+        return c
+    if e.is_Integer:
+        return int(e)
+    if isinstance(e, sympy.Add):
+        out = None
+        for a in e.args:
+            v = evaluate(a, s, c, C)
+            out = v if out is None else out + v
+        return out
+    if isinstance(e, sympy.Mul):
+        out = None
+        for a in e.args:
+            v = evaluate(a, s, c, C)
+            out = v if out is None else out * v
+        return out
+    if isinstance(e, sympy.Pow) and e.exp.is_Integer:
+        base = evaluate(e.base, s, c, C)
+        k = int(e.exp)
+        return base**k if k >= 0 else 1 / base ** (-k)
+    if isinstance(e, sympy.core.function.AppliedUndef) and e.func.__name__ == "c" and C is not None:
+        return C(int(e.args[1]))
+    raise LatexMathError(f"cannot evaluate {e}")
+
+
+def _parts(line_id: str) -> list[sympy.Expr]:
+    rel = parse_relation(verbatim(line_id))
+    if set(rel.ops) != {"="}:
+        raise LatexMathError(f"{line_id}: relations {rel.ops}")
+    return [_in_s_c(p) for p in rel.parts]
+
+
+def intermediate_expr(label: str) -> sympy.Expr:
+    """The printed middle expression of ``label`` (level 0: the constant c_{2n,k} of ``r = c``)."""
+    return _parts(f"sec4_5-ex-{_slug(label)}-{'r-c' if _level0(label) else 'mid'}")[-1]
+
+
+def final_expr(label: str) -> sympy.Expr:
+    """The printed closed form of ``label``: the last part of its chain."""
+    return _parts(f"sec4_5-ex-{_slug(label)}-{'c-value' if _level0(label) else 'final'}")[-1]
+
+
+def final_parts(label: str) -> tuple[list[int], int]:
+    """The printed closed form as (numerator coefficients in c ascending, power of sin(alpha/2))."""
+    num, den = sympy.fraction(sympy.together(final_expr(label)))
+    k = sympy.Poly(den, _S, _C)
+    if len(k.terms()) != 1 or k.terms()[0][0][1] != 0:
+        raise LatexMathError(f"{label}: the denominator {den} is not a power of sin(alpha/2)")
+    (ks, _kc), lead = k.terms()[0]
+    p = sympy.Poly(num, _C)
+    coeffs = [sympy.Rational(x) / lead for x in reversed(p.all_coeffs())]
+    if any(not x.is_Integer for x in coeffs) or num.has(_S):
+        raise LatexMathError(f"{label}: the numerator {num} is not an integer polynomial in cos(alpha/2)")
+    return [int(x) for x in coeffs], int(ks)
+
+
+def _ref(label: str) -> str:
+    return line(f"sec4_5-ex-{_slug(label)}-{'c-value' if _level0(label) else 'final'}").near
+
+
+class _Final(Mapping):
+    """``label -> (paper_ref, numerator coefficients ascending, power of s)``, parsed at every lookup."""
+
+    def __getitem__(self, label: str) -> tuple[str, list[int], int]:
+        if label not in LABELS:
+            raise KeyError(label)
+        return (_ref(label), *final_parts(label))
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(LABELS)
+
+    def __len__(self) -> int:
+        return len(LABELS)
+
+
+class _Intermediate(Mapping):
+    """``label -> (paper_ref, function (s, c, C) -> value)``, parsed at every lookup."""
+
+    def __getitem__(self, label: str) -> tuple[str, Callable]:
+        if label not in LABELS:
+            raise KeyError(label)
+        e = intermediate_expr(label)
+        return (_ref(label), lambda s, c, C, e=e: evaluate(e, s, c, C))
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(LABELS)
+
+    def __len__(self) -> int:
+        return len(LABELS)
+
+
+FINAL: Mapping[str, tuple[str, list[int], int]] = _Final()
+INTERMEDIATE: Mapping[str, tuple[str, Callable]] = _Intermediate()
 
 
 def final_value(label: str, s, c):
     """Value of the printed final closed form of ``label`` at ``s = sin(a/2)``, ``c = cos(a/2)``."""
-    _, num, k = FINAL[label]
-    acc = 0 * c
-    for coef in reversed(num):
-        acc = acc * c + coef
-    return acc / s**k
-
-
-# label -> (paper_ref, expression in s, c, C)
-INTERMEDIATE: dict[str, tuple[str, Callable]] = {
-    "r_{2,2,0}": ("normalizing_coefficients_n_1", lambda s, c, C: C(2)),
-    "r_{2,1,0}": ("normalizing_coefficients_n_1", lambda s, c, C: C(1)),
-    "r_{2,1,1}": ("normalizing_coefficients_n_1", lambda s, c, C: 2 / s * C(2) - 1 / s * C(1) * c),
-    "r_{4,4,0}": ("normalizing_coefficients_n_2", lambda s, c, C: C(4)),
-    "r_{4,3,0}": ("normalizing_coefficients_n_2", lambda s, c, C: C(3)),
-    "r_{4,2,0}": ("normalizing_coefficients_n_2", lambda s, c, C: C(2)),
-    "r_{4,3,1}": ("normalizing_coefficients_n_2", lambda s, c, C: 2 / s * C(2)),
-    "r_{4,2,1}": ("normalizing_coefficients_n_2", lambda s, c, C: 2 / s * C(2) * c + 3 / s * C(3)),
-    "r_{4,2,2}": ("normalizing_coefficients_n_2",
-                  lambda s, c, C: -6 / s**2 * C(4) - 3 * c / s**2 * C(3) + (6 / s**2 - 3 * c**2 / s**2 + 2) * C(2)),
-    "r_{6,6,0}": ("normalizing_coefficients_n_3", lambda s, c, C: C(6)),
-    "r_{6,5,0}": ("normalizing_coefficients_n_3", lambda s, c, C: C(5)),
-    "r_{6,4,0}": ("normalizing_coefficients_n_3", lambda s, c, C: C(4)),
-    "r_{6,3,0}": ("normalizing_coefficients_n_3", lambda s, c, C: C(3)),
-    "r_{6,5,1}": ("normalizing_coefficients_n_3", lambda s, c, C: 2 / s * C(4)),
-    "r_{6,4,1}": ("normalizing_coefficients_n_3", lambda s, c, C: 3 / s * C(3) + 2 * c / s * C(4)),
-    "r_{6,3,1}": ("normalizing_coefficients_n_3", lambda s, c, C: 4 / s * C(4) + 3 * c / s * C(3)),
-    "r_{6,4,2}": ("normalizing_coefficients_n_3", lambda s, c, C: C(4) * (2 + 6 / s**2) + C(3) * 6 / s**2 * c),
-    "r_{6,3,2}": ("normalizing_coefficients_n_3",
-                  lambda s, c, C: -10 / s**2 * C(5) + (8 * c**3 / s**2 + 8 * c) * C(4)
-                  + (6 * c**2 / s**2 + 12 / s**2 + 3) * C(3)),
-    "r_{6,3,3}": ("normalizing_coefficients_n_3",
-                  lambda s, c, C: 20 / s**3 * C(6) + 50 / s**3 * c * C(5)
-                  - (56 / s**3 * c**4 - 60 / s**3 * c**2 - 8 / s + 56 / s * c**2 - 4 / s**3) * C(4)
-                  - (10 / s**3 * c**3 - 3 / s * c + 12 / s**3 * c) * C(3)),
-}
+    return evaluate(final_expr(label), s, c)
 
 
 def remark_level_0(n: int, i: int, C: Callable):
-    """Remark normalizing_coeff_of_level_0: r_{2n,2n-i,0} = c_{2n,2n-i} = c_{2n,i}, i = 0..n."""
-    return C(2 * n - i)
+    """Remark normalizing_coeff_of_level_0, parsed: the constant r_{2n,2n-i,0} is equated with, at (n, i)."""
+    rel = parse_relation(verbatim("sec4_5-level0-r-c"))
+    if rel.ops != ["="]:
+        raise LatexMathError(f"relations {rel.ops}")
+    e = rel.parts[1].subs({sympy.Symbol("n"): n, sympy.Symbol("i"): i})
+    return evaluate(e, None, None, C)
 
 
 def prop_level_1(n: int, i: int, s, c, C: Callable):
-    """Proposition prop:level_1_coefficients (n >= 2), eq. level_1_coefficients, i = 1..n:
-    r_{2n,2n-1,1} = 2/s c_{2n,2n-2};  r_{2n,2n-i,1} = i/s c_{2n,2n-i} c + (i+1)/s c_{2n,2n-(i+1)}."""
-    if i == 1:
-        return 2 / s * C(2 * n - 2)
-    return i / s * C(2 * n - i) * c + (i + 1) / s * C(2 * n - (i + 1))
+    """Proposition prop:level_1_coefficients (eq. level_1_coefficients), parsed: the case whose printed condition
+    holds at i (``i=1`` or ``i=2,3,\\ldots,n``), at order n."""
+    from paper_repro.printed.lines.sec5_latex import listed_range
+
+    for lid in ("sec4_5-level1-i1", "sec4_5-level1-i"):
+        tex = verbatim(lid)
+        k = tex.find(", &")
+        if k < 0:
+            raise LatexMathError(f"{lid}: no condition")
+        cond = tex[k + 3:].replace("\\\\", "").strip().rstrip(".,")
+        n_ = sympy.Symbol("n")
+        if "\\ldots" in cond:
+            _v, lo, hi = listed_range(cond, "i")
+            hit = int(lo.subs(n_, n)) <= i <= int(hi.subs(n_, n))
+        else:
+            rel = parse_relation(cond)
+            hit = rel.ops == ["="] and rel.parts[0] == sympy.Symbol("i") and rel.parts[1] == i
+        if hit:
+            e = _in_s_c(parse(tex[:k])).subs({n_: n, sympy.Symbol("i"): i})
+            return evaluate(e, s, c, C)
+    raise LatexMathError(f"no printed case of eq. level_1_coefficients for i = {i}")
 
 
 def from_1_to_2(s, c, r: dict) -> dict:

@@ -1,64 +1,176 @@
-"""Example exmp:torus, verbatim: the printed control points of the toroidal triangle (order 2).
+"""Example exmp:torus (Example 6.1): the printed control points of the toroidal triangle, *read* from their
+transcriptions (lines ``sec6-torus-point-<label>`` of :mod:`paper_repro.printed.lines.sec6`), never retyped.
 
-Each entry is ``label -> (x, y, z)`` with coordinates as functions of ``(a, rho, mu)`` in mpmath
-(``a`` = alpha).  Transcribed character by character from the LaTeX source.
+Each printed row ``\\mathbf{r}_{4,4,0} = \\left[\\begin{array}[c]{ccc} x & y & z \\end{array}\\right]^{T}`` is
+parsed by :func:`read_point` into its label and three sympy expressions in the symbols ``alpha``, ``varrho``,
+``mu`` with the reader of :mod:`paper_repro.printed.lines.sec6_latex` (anything unread raises
+:class:`TorusReadError`; a blank line ``XXX`` is refused).
+
+:func:`point_value` evaluates a parsed coordinate exactly (python-flint rationals) at an angle with rational
+``tan(alpha/4)`` (then ``cos``, ``sin`` and ``tan`` of every multiple of ``alpha/2`` are rational) and rational
+``varrho``, ``mu``; :func:`printed_net_mp` evaluates the whole printed net in mpmath.  The module also keeps the
+mpmath form of eq. toroidal_triangle (:func:`torus`), the surface the independent fits interpolate.
+
+>>> lab, xyz = read_point(r"\\mathbf{g}_{4,3,0}% \\normalcolor &  =\\left[ \\begin{array} [c]{ccc}% "
+...                       r"\\varrho & \\frac{\\varrho}{2}\\tan\\frac{\\alpha}{2} & \\mu \\end{array} \\right]  ^{T}")
+>>> lab, xyz
+('g_{4,3,0}', (varrho, varrho*tan(alpha/2)/2, mu))
+>>> parse_expression(r"\\cos^{2}\\frac{\\alpha}{2}")
+cos(alpha/2)**2
 """
 
 from __future__ import annotations
 
-from mpmath import cos, sin, tan
+import re
+from collections.abc import Callable
 
-PRINTED = {
-    "r_{4,4,0}": (lambda a, r, m: r + m * sin(a), lambda a, r, m: 0, lambda a, r, m: m * cos(a)),
-    "r_{4,3,0}": (lambda a, r, m: r + m / 2 * (tan(a / 2) + sin(a)), lambda a, r, m: 0,
-                  lambda a, r, m: m / 2 * (1 + cos(a))),
-    "r_{4,2,0}": (lambda a, r, m: r + 3 * m * sin(a) / (4 + 2 * cos(a)), lambda a, r, m: 0,
-                  lambda a, r, m: 3 * m * (1 + cos(a)) / (4 + 2 * cos(a))),
-    "r_{4,1,0}": (lambda a, r, m: r + m / 2 * tan(a / 2), lambda a, r, m: 0, lambda a, r, m: m),
-    "r_{4,3,1}": (lambda a, r, m: r + 3 * m * sin(a) / (4 + 2 * cos(a)),
-                  lambda a, r, m: (3 * r * sin(a) + m * (3 + cos(a)) * (1 - cos(a))) / (8 + 4 * cos(a)),
-                  lambda a, r, m: 3 * m * (1 + cos(a)) / (4 + 2 * cos(a))),
-    "r_{4,2,1}": (lambda a, r, m: r + 3 * m * (2 + cos(a)) * sin(a) / ((1 + cos(a)) * (10 + 2 * cos(a))),
-                  lambda a, r, m: (2 * r * (sin(a) + tan(a / 2)) + 3 * m * (1 - cos(a))) / (10 + 2 * cos(a)),
-                  lambda a, r, m: 3 * m * (3 + cos(a)) / (10 + 2 * cos(a))),
-    "r_{4,2,2}": (lambda a, r, m: (6 * r * (3 + 2 * cos(a)) + m * (9 + cos(a)) * sin(a)) / (20 + 10 * cos(a)),
-                  lambda a, r, m: (10 * r * sin(a) + m * (7 + cos(a)) * (1 - cos(a))) / (20 + 10 * cos(a)),
-                  lambda a, r, m: 3 * m * (3 + 2 * cos(a)) / (10 + 5 * cos(a))),
-    "g_{4,4,0}": (lambda a, r, m: r, lambda a, r, m: 0, lambda a, r, m: m),
-    "g_{4,3,0}": (lambda a, r, m: r, lambda a, r, m: r / 2 * tan(a / 2), lambda a, r, m: m),
-    "g_{4,2,0}": (lambda a, r, m: 3 * r * (1 + cos(a)) / (4 + 2 * cos(a)),
-                  lambda a, r, m: 3 * r * sin(a) / (4 + 2 * cos(a)), lambda a, r, m: m),
-    "g_{4,1,0}": (lambda a, r, m: r / 2 * (1 + cos(a)), lambda a, r, m: r / 2 * (tan(a / 2) + sin(a)),
-                  lambda a, r, m: m),
-    "g_{4,3,1}": (lambda a, r, m: r + 3 * m * sin(a) / (8 + 4 * cos(a)),
-                  lambda a, r, m: (3 * r * sin(a) + 2 * m * (1 - cos(a))) / (8 + 4 * cos(a)), lambda a, r, m: m),
-    "g_{4,2,1}": (lambda a, r, m: (3 * r * (3 + cos(a)) + 3 * m * sin(a)) / (10 + 2 * cos(a)),
-                  lambda a, r, m: (3 * r * (3 * sin(a / 2) + sin(3 * a / 2)) + 3 * m * (cos(a / 2) - cos(3 * a / 2)))
-                  / ((20 + 4 * cos(a)) * cos(a / 2)),
-                  lambda a, r, m: m),
-    "b_{4,4,0}": (lambda a, r, m: r * cos(a), lambda a, r, m: r * sin(a), lambda a, r, m: m),
-    "b_{4,3,0}": (lambda a, r, m: r / 2 * (1 + cos(a)) + m / 2 * tan(a / 2) * cos(a),
-                  lambda a, r, m: r / 2 * (tan(a / 2) + sin(a)) + m / 2 * (1 - cos(a)), lambda a, r, m: m),
-    "b_{4,2,0}": (lambda a, r, m: 3 * r * (1 + cos(a)) / (4 + 2 * cos(a)) + m / 2 * sin(a),
-                  lambda a, r, m: (3 * r * sin(a) + m * (3 + cos(a)) * (1 - cos(a))) / (4 + 2 * cos(a)),
-                  lambda a, r, m: 3 * m * (1 + cos(a)) / (4 + 2 * cos(a))),
-    "b_{4,1,0}": (lambda a, r, m: r + m / 2 * (tan(a / 2) + sin(a)),
-                  lambda a, r, m: r / 2 * tan(a / 2) + m / 2 * (1 - cos(a)), lambda a, r, m: m / 2 * (1 + cos(a))),
-    "b_{4,3,1}": (lambda a, r, m: r * (7 - 2 * cos(a / 2) ** 2 + cos(a / 2)) * cos(a / 2) ** 2 / (4 + 2 * cos(a))
-                  + m / 4 * sin(a),
-                  lambda a, r, m: (6 * r * sin(a) + m * (1 - cos(a)) * (3 + cos(a))) / (8 + 4 * cos(a)),
-                  lambda a, r, m: m),
-    "b_{4,2,1}": (lambda a, r, m: (3 * r * (3 + cos(a)) * cos(a / 2) + m * (3 * sin(a / 2) + 2 * sin(3 * a / 2)))
-                  / ((10 + 2 * cos(a)) * cos(a / 2)),
-                  lambda a, r, m: (3 * r * (3 * sin(a / 2) + sin(3 * a / 2)) + 4 * m * (cos(a / 2) - cos(3 * a / 2)))
-                  / ((20 + 4 * cos(a)) * cos(a / 2)),
-                  lambda a, r, m: 3 * m * (3 + cos(a)) / (10 + 2 * cos(a))),
-}
+import sympy
+
+from paper_repro.printed.latex_math import parse_vector
+from paper_repro.printed.lines.sec6_latex import (
+    ALPHA,
+    MU,
+    VARRHO,
+    LatexReadError,
+    exact_value,
+    parse_expression,
+    strip_comments,
+)
+
+POINT_LINE_PREFIX = "sec6-torus-point-"
+TorusReadError = LatexReadError
+
+
+_ROW = re.compile(r"^\s*\\mathbf\{([rgb])\}_\{(\d+),(\d+),(\d+)\}\s*%?\s*\\normalcolor\s*&\s*=\s*\\left\[\s*"
+                  r"\\begin\{array\}\s*\[c\]\{ccc\}%?\s*(.*?)\\end\{array\}\s*\\right\]\s*\^\{T\}\s*$", re.S)
+
+
+def read_point(tex: str) -> tuple[str, tuple[sympy.Expr, sympy.Expr, sympy.Expr]]:
+    """``(label, (x, y, z))`` of one printed control point row (``TorusReadError`` if it is not one)."""
+    m = _ROW.match(tex)
+    if not m:
+        raise TorusReadError(f"not a printed control point row: {tex[:50]!r}")
+    colour, a, b, c, body = m.groups()
+    cells = strip_comments(body).split("&")
+    if len(cells) != 3:
+        raise TorusReadError(f"{len(cells)} coordinates instead of 3 in {body[:50]!r}")
+    vector = parse_vector(tex[tex.index("\\left["):])  # the paper-wide reader (printed.latex_math)
+    if vector.shape != (3, 1) or any(not isinstance(x, sympy.Expr) for x in vector):
+        raise TorusReadError(f"not a column of 3 expressions: {vector}")
+    return f"{colour}_{{{a},{b},{c}}}", tuple(vector)  # type: ignore[return-value]
+
+
+def point_line_ids() -> list[str]:
+    """The ids of the transcribed lines of the printed torus control points (Example exmp:torus), source order."""
+    from paper_repro.printed.lines.sec6 import LINES
+
+    return [x.id for x in LINES if x.id.startswith(POINT_LINE_PREFIX)]
+
+
+def printed_point(line_id: str) -> tuple[str, tuple[sympy.Expr, sympy.Expr, sympy.Expr]]:
+    """The printed point of line ``line_id``, read from its transcription now (so the blank and mutation tests,
+    :func:`paper_repro.printed.lines.substituted`, are seen)."""
+    from paper_repro.printed.lines import verbatim
+
+    return read_point(verbatim(line_id))
+
+
+def printed_points() -> dict[str, tuple[sympy.Expr, sympy.Expr, sympy.Expr]]:
+    """``label -> (x, y, z)`` of every printed control point of Example exmp:torus (read now)."""
+    out: dict[str, tuple[sympy.Expr, sympy.Expr, sympy.Expr]] = {}
+    for lid in point_line_ids():
+        lab, xyz = printed_point(lid)
+        if lab in out:
+            raise TorusReadError(f"control point {lab} printed twice")
+        out[lab] = xyz
+    return out
+
+
+def corrected_point(line_id: str) -> tuple[str, tuple[sympy.Expr, sympy.Expr, sympy.Expr]] | None:
+    """The point of ``line_id`` with its erratum's ``fix`` (``(printed, corrected)`` LaTeX pairs) applied to the
+    transcription as it stands now; ``None`` if the line has no fix or a printed fragment is not in it."""
+    from paper_repro.printed.lines import line
+
+    ln = line(line_id)
+    fixes = (ln.erratum or {}).get("fix", [])
+    text = ln.verbatim
+    for printed, corrected in fixes:
+        if printed not in text:
+            return None
+        text = text.replace(printed, corrected, 1)
+    return read_point(text) if fixes else None
+
+
+def corrected_points() -> dict[str, tuple[str, int, sympy.Expr]]:
+    """``"label.axis" -> (line id, axis, corrected expression)`` for every coordinate that an erratum's fix changes
+    (``TorusReadError`` if a fix no longer applies to its transcription)."""
+    from paper_repro.printed.lines import line
+
+    out = {}
+    for lid in point_line_ids():
+        if not (line(lid).erratum or {}).get("fix"):
+            continue
+        fixed = corrected_point(lid)
+        if fixed is None:
+            raise TorusReadError(f"{lid}: the erratum's fix does not apply to the transcription")
+        lab, xyz = printed_point(lid)
+        if fixed[0] != lab:
+            raise TorusReadError(f"{lid}: the fix changes the label")
+        for k, ax in enumerate("xyz"):
+            if sympy.simplify(fixed[1][k] - xyz[k]) != 0:
+                out[f"{lab}.{ax}"] = (lid, k, fixed[1][k])
+    return out
+
+
+def coordinate_tex(line_id: str, axis: int) -> str:
+    """The LaTeX of coordinate ``axis`` (0, 1, 2) of the printed point of ``line_id`` (for errata texts)."""
+    from paper_repro.printed.lines import verbatim
+
+    m = _ROW.match(verbatim(line_id))
+    if not m:
+        raise TorusReadError(f"not a printed control point row: {line_id}")
+    return " ".join(strip_comments(m.group(5)).split("&")[axis].split())
+
+
+# -- evaluation ------------------------------------------------------------------------------------------------
+def point_value(expr: sympy.Expr, cos_half, sin_half, rho, mu):
+    """A parsed coordinate at ``cos(alpha/2) = cos_half``, ``sin(alpha/2) = sin_half`` (exact numbers, e.g. fmpq),
+    ``varrho = rho``, ``mu = mu`` (:func:`~paper_repro.printed.lines.sec6_latex.exact_value`)."""
+    return exact_value(expr, {VARRHO: rho, MU: mu}, {ALPHA: (2, cos_half, sin_half)}, cos_half * 0)
+
+
+def mp_function(expr: sympy.Expr) -> Callable:
+    """``f(alpha, varrho, mu)`` in mpmath of a parsed coordinate."""
+    return sympy.lambdify((ALPHA, VARRHO, MU), expr, modules="mpmath")
+
+
+def printed_net_mp(a, rho, mu):
+    """The printed net (read now) at ``alpha = a`` in mpmath, as an object array in the order of T_4
+    (:func:`paper_repro.core.labels.united_system`)."""
+    import numpy as np
+
+    from paper_repro.core.labels import united_system
+
+    idx = {lab.control_point: k for k, lab in enumerate(united_system(2))}
+    pts = printed_points()
+    if sorted(pts) != sorted(idx):
+        raise TorusReadError(f"the printed net names {sorted(pts)}, not the 19 points of T_4")
+    net = np.empty((len(idx), 3), dtype=object)
+    for lab, xyz in pts.items():
+        net[idx[lab]] = [mp_function(e)(a, rho, mu) for e in xyz]
+    return net
 
 
 def torus(u, v, w, rho, mu):
-    """eq. toroidal_triangle: t(u, v) = ((rho + mu sin u) cos v, (rho + mu sin u) sin v, mu cos u)."""
+    """eq. toroidal_triangle in mpmath, the surface that the independent fits interpolate: t(u, v) = ((rho + mu
+    sin u) cos v, (rho + mu sin u) sin v, mu cos u) (``w = alpha - u - v`` unused)."""
     from mpmath import cos as c
     from mpmath import sin as s
 
     return ((rho + mu * s(u)) * c(v), (rho + mu * s(u)) * s(v), mu * c(u))
+
+
+__all__ = ["ALPHA", "VARRHO", "MU", "TorusReadError", "parse_expression", "read_point", "point_line_ids",
+           "printed_point", "printed_points", "corrected_point", "corrected_points", "coordinate_tex", "point_value",
+           "mp_function", "printed_net_mp",
+           "torus"]

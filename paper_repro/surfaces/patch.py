@@ -18,13 +18,13 @@ from paper_repro.core.domain import RationalAngle, RationalPoints, barycentric_t
 from paper_repro.core.fast import FloatKernel, block_for, contract, run_blocks, trig_of_rows
 from paper_repro.core.fast_jit import JIT_BLOCK, JitKernel
 from paper_repro.core.fast_jit import available as jit_available
-from paper_repro.core.half_angle_matrices import derivative_nets
-from paper_repro.core.labels import delta, exponent_matrix, index_of
+from paper_repro.core.half_angle_matrices import derivative_nets_checked
+from paper_repro.core.labels import delta, delta_unchecked, exponent_matrix, index_of
 from paper_repro.core.nets import LabelledNet, check_net, check_net_exact, net_from_labels  # noqa: F401 (re-exported)
-from paper_repro.core.normalization import evaluate_normalized, scaled_coefficient_vector
+from paper_repro.core.normalization import evaluate_normalized, scaled_float_vector
 from paper_repro.core.ordered import ordered_matmul
 from paper_repro.util.limits import MAX_MESH_RESOLUTION, check_int, check_real_array, real_scalar
-from paper_repro.util.validation import DOMAIN_TOL, check_alpha, check_n, parse_alpha
+from paper_repro.util.validation import DOMAIN_TOL, check_n, parse_alpha
 
 
 def check_weights(weights, n: int) -> tuple[np.ndarray, np.ndarray]:
@@ -162,12 +162,11 @@ class Patch:
 
     def __init__(self, n: int, alpha, net, weights=None, arith: str | Context = "float"):
         self.n = check_n(n)
-        alpha = parse_alpha(alpha)  # "pi/2" accepted
-        check_alpha(alpha)
+        alpha = parse_alpha(alpha)  # "pi/2" accepted; checked there (once)
         self.alpha = alpha if isinstance(alpha, RationalAngle) else real_scalar(alpha, "alpha")
-        self.net_exact = check_net_exact(net, self.n)
+        self.net_exact = check_net_exact(net, self.n, n_checked=True)
         #: float64 control net; rows also by paper label: ``patch.net["r_{4,3,1}"]``
-        self.net = LabelledNet(self.net_exact.astype(np.float64), self.n)
+        self.net = LabelledNet(self.net_exact.astype(np.float64), self.n, n_checked=True)
         self.ctx = get_context(arith)
         self.weights_exact = None
         self.weights = None
@@ -192,7 +191,7 @@ class Patch:
         overflow, and the bits are those of the unscaled product (multiplying by a power of two is exact).
         """
         a = float(self.alpha)
-        coef = scaled_coefficient_vector(self.n, self.alpha, "float")  # s^{2n+j} r, finite for every alpha
+        coef = scaled_float_vector(self.n, a)  # s^{2n+j} r, finite for every alpha (n, alpha checked once, here)
         e = _pow2_exponent(self.net)
         unit = np.ldexp(self.net, -e)
         # derivatives: translation invariant (sum of the derivatives of a partition of unity is 0), so the net
@@ -220,9 +219,11 @@ class Patch:
         """Points as a float ``(P, 3)`` array (validated block by block in :meth:`_checked_rows`)."""
         if isinstance(points, RationalPoints):
             return points.uvw_float()
-        arr = np.asarray(points) if isinstance(points, np.ndarray) else check_points(points, self.alpha)
+        if not isinstance(points, np.ndarray):
+            return self._float_points(check_points(points, float(self.alpha), alpha_checked=True))
+        arr = np.asarray(points)
         if arr.ndim != 2 or arr.shape[1:] != (3,) or arr.shape[0] == 0 or arr.dtype.kind not in "fiu":
-            arr = check_points(points, self.alpha)  # raises the documented error
+            arr = check_points(points, float(self.alpha), alpha_checked=True)  # raises the documented error
         return arr
 
     def _checked_rows(self, arr: np.ndarray, lo: int, hi: int) -> np.ndarray:
@@ -265,7 +266,8 @@ class Patch:
             y = contract(aug_t, kernel.basis_rows(s, c, ws))  # (d, P), or (d + 1, P) with the weights' row last
             out[lo:hi] = (y[:-1] / y[-1]).T if rational else y.T
 
-        run_blocks(arr.shape[0], work, JIT_BLOCK if jit is not None else block_for(delta(self.n)), blas=jit is None)
+        block = JIT_BLOCK if jit is not None else block_for(delta_unchecked(self.n))
+        run_blocks(arr.shape[0], work, block, blas=jit is None)
         return np.ldexp(out, st["exp"], out=out) if st["exp"] else out
 
     @cached_property
@@ -275,7 +277,8 @@ class Patch:
         from the closed-form derivative matrix C (:func:`~paper_repro.core.half_angle_matrices.derivative_nets`,
         proven for every n in docs/elevation_and_derivative_for_all_n.md; cos(alpha/2) correctly rounded)."""
         st = self._setup
-        return derivative_nets(self.n, st["alpha"], st["daug_t"].T)
+        return derivative_nets_checked(self.n, st["alpha"], np.asarray(st["daug_t"].T, dtype=np.float64),
+                                       FloatContext())
 
     def _float_derivatives(self, points, directions, normals: bool = False) -> tuple[list[np.ndarray], int]:
         """``2 sin(alpha/2) 2^-E`` times the derivatives along ``directions`` (bounded), and E; with ``normals``
@@ -292,7 +295,7 @@ class Patch:
         kernel, rational = st["kernel"], st["cw"] is not None
         arr = self._float_points(points)
         outs = [np.empty((arr.shape[0], self.dimension)) for _ in range(1 if normals else len(directions))]
-        tol = NORMAL_TOL * delta(self.n)
+        tol = NORMAL_TOL * delta_unchecked(self.n)
 
         jit = st["jit"]
         dirs = np.array(directions, dtype=np.float64)
@@ -323,7 +326,8 @@ class Patch:
                 for o, r in zip(outs, res):
                     o[lo:hi] = r.T
 
-        run_blocks(arr.shape[0], work, JIT_BLOCK if jit is not None else block_for(delta(self.n)), blas=jit is None)
+        block = JIT_BLOCK if jit is not None else block_for(delta_unchecked(self.n))
+        run_blocks(arr.shape[0], work, block, blas=jit is None)
         return outs, st["dexp"]
 
     # --- evaluation -------------------------------------------------------------------------------

@@ -32,6 +32,7 @@ import numpy as np
 from flint import fmpq, fmpq_mat, fmpq_poly
 
 from paper_repro.core.basis import evaluate
+from paper_repro.core.collocation import collocate_fmpq
 from paper_repro.core.context import ExactContext, ModpContext, to_fmpq_mat
 from paper_repro.core.domain import RationalAngle, RationalPoints
 from paper_repro.core.fourier import evaluate_v
@@ -175,36 +176,39 @@ def _points(n: int, count: int, seed: int) -> RationalPoints:
 
 
 @lru_cache(maxsize=2)
-def _values(n: int, alpha: RationalAngle, sd: int) -> tuple[tuple[fmpq_mat, fmpq_mat], tuple[fmpq_mat, fmpq_mat]]:
-    """T_{2n} and V_n at the delta_n + 3 plane points of seed ``sd`` (exact), each split into the delta_n collocation
-    rows and the 3 verification rows; kept for the other direction of :func:`solve_check`."""
-    d, ctx = delta(n), ExactContext()
-    pts = _points(n, d + 3, sd)
-    t_vals, v_vals = evaluate(n, alpha, pts, ctx), evaluate_v(n, alpha, pts, ctx)
-    return ((to_fmpq_mat(t_vals[:d]), to_fmpq_mat(t_vals[d:])), (to_fmpq_mat(v_vals[:d]), to_fmpq_mat(v_vals[d:])))
+def _values(n: int, alpha: RationalAngle, sd: int) -> tuple[np.ndarray, np.ndarray]:
+    """T_{2n} and V_n at the delta_n + 3 plane points of seed ``sd`` (exact object arrays: delta_n collocation rows,
+    then 3 verification rows); kept for the other direction of :func:`solve_check`."""
+    ctx = ExactContext()
+    pts = _points(n, delta(n) + 3, sd)
+    return evaluate(n, alpha, pts, ctx), evaluate_v(n, alpha, pts, ctx)
 
 
 def solve_check(n: int, alpha: RationalAngle, direction: str, matrix=None, seed: int = 31) -> dict:
     """Exact collocation solve of ``direction`` ('V_to_T': T X = V, X = N^{-1}; 'T_to_V': V X = T, X = N) at
-    delta_n plane points, verified at 3 more, compared with ``matrix`` (default: the formula's unnormalized matrix,
-    :func:`~paper_repro.core.transformation.transformation_matrix` with ``normalized=False``)."""
+    delta_n plane points, verified at 3 more (:func:`~paper_repro.core.collocation.collocate_fmpq`), compared with
+    ``matrix`` (default: the formula's unnormalized matrix, :func:`~paper_repro.core.transformation.
+    transformation_matrix` with ``normalized=False``)."""
     d = delta(n)
     if matrix is None:
         matrix = transformation_matrix(n, alpha, direction, normalized=False)
     mine = to_fmpq_mat(np.asarray(matrix, dtype=object))
-    for sd in range(seed, seed + 10):
-        t_vals, v_vals = _values(n, alpha, sd)
-        basis, target = (t_vals, v_vals) if direction == "V_to_T" else (v_vals, t_vals)
-        try:  # fraction-free elimination: the same exact solution as the default, faster on these systems
-            x = basis[0].solve(target[0], algorithm="fflu")
-        except ZeroDivisionError:
-            continue
-        extra_ok = basis[1] * x == target[1]
-        equal = x == mine
-        mismatches = 0 if equal else sum(1 for i in range(d) for j in range(d) if x[i, j] != mine[i, j])
-        return {"ok": bool(equal and extra_ok), "formula_equals_solve": bool(equal), "verified_at_3_more": extra_ok,
-                "mismatches": mismatches, "seed": sd}
-    return {"ok": False, "error": "10 singular point sets"}
+
+    def system(k: int):
+        t_vals, v_vals = _values(n, alpha, seed + k)
+        return (t_vals, v_vals) if direction == "V_to_T" else (v_vals, t_vals)
+
+    try:
+        res = collocate_fmpq(system, d, attempts=10, what=f"transformation {direction}, n = {n}")
+    except ArithmeticError as exc:
+        singular = "singular" in str(exc)
+        return {"ok": False, "error": "10 singular point sets" if singular else str(exc),
+                "verified_at_3_more": False}
+    x = res.solution
+    equal = x == mine
+    mismatches = 0 if equal else sum(1 for i in range(d) for j in range(d) if x[i, j] != mine[i, j])
+    return {"ok": bool(equal), "formula_equals_solve": bool(equal), "verified_at_3_more": True,
+            "mismatches": mismatches, "seed": seed + res.point_set}
 
 
 def unisolvent_mod_p(n: int, seed: int = 31, prime: int = 2_147_483_629) -> bool:

@@ -47,9 +47,9 @@ def unwritable(folder: str | os.PathLike) -> str | None:
     True
     """
     path = Path(folder)
-    if path.exists() and not path.is_dir():
-        return f"{path} is a file, not a folder"
     try:
+        if path.exists() and not path.is_dir():
+            return f"{path} is a file, not a folder"
         path.mkdir(parents=True, exist_ok=True)
         fd, probe = tempfile.mkstemp(prefix=".probe-", dir=path)
         os.close(fd)

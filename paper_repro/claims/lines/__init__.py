@@ -60,10 +60,15 @@ def line_check(id: str) -> Callable[[Callable[[], LineResult]], Callable[[], Lin
     return deco
 
 
+#: Check modules beyond one per part: Section 5's checks (lines of part sec4_5 from source line 1907 on) live in
+#: ``sec5`` (it imports helpers of ``sec4_5``, so ``sec4_5`` cannot import it back without an import circle).
+EXTRA_MODULES = ("sec5",)
+
+
 def load_checks() -> dict[str, Callable[[], LineResult]]:
     from paper_repro.printed.lines import PARTS
 
-    for part in PARTS:
+    for part in (*PARTS, *EXTRA_MODULES):
         try:
             importlib.import_module(f"paper_repro.claims.lines.{part}")
         except ModuleNotFoundError:

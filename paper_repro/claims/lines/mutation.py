@@ -135,6 +135,10 @@ def _sites(pattern: str, tex: str) -> list[re.Match]:
     return list(re.finditer(pattern, tex))
 
 
+#: superscripts that name rather than bound: the paper's ^{\alpha} tags, a transpose, a prime
+_TAGS = {"\\alpha", "T", "\\prime"}
+
+
 def _bound_sites(tex: str) -> list[tuple[int, int, str]]:
     """Upper and lower bounds of index sets, sums and listed ranges: (start, end, replacement) with the bound moved
     by one."""
@@ -143,6 +147,8 @@ def _bound_sites(tex: str) -> list[tuple[int, int, str]]:
         body = m.group(2)
         if m.group(1) == "_" and "=" not in body:
             continue  # a plain subscript (an index, not a bound) -- the constant and sign operators reach it
+        if m.group(1) == "^" and body.strip() in _TAGS:
+            continue  # a tag such as ^{\alpha} or ^{T}: a name, not a bound
         last = body.split(",")[-1]
         head = body[: len(body) - len(last)]
         if "=" in last:
@@ -165,8 +171,8 @@ def _drop_sites(tex: str) -> list[tuple[int, int]]:
             depth += 1
         elif ch == "}":
             depth -= 1
-        elif ch in "+-" and depth == 0 and k > 0:
-            cuts.append(k)
+        elif ch in "+-" and depth == 0 and k > 0 and "-" not in (tex[k - 1], tex[k + 1:k + 2]):
+            cuts.append(k)  # (not the dash of a range "--")
     spans = []
     for a, b in zip(cuts, cuts[1:] + [len(tex)]):
         seg = tex[a:b]
@@ -189,7 +195,7 @@ def mutants(tex: str, line_id: str = "", most: int = 2) -> list[Mutant]:
     sites = _bound_sites(tex)
     for a, b, rep in (sites if len(sites) <= most else sorted(_seed(line_id, "bound").sample(sites, most))):
         add("bound", f"{tex[a:b]} -> {rep}", tex[:a] + rep + tex[b:])
-    for m in _pick(_sites(r"(?<=[^{(\s=,^_])\s*[+-]\s*(?=[^\s}])", tex), line_id, "sign", most):
+    for m in _pick(_sites(r"(?<=[^{(\s=,^_\-])\s*[+-]\s*(?=[^\s}\-])", tex), line_id, "sign", most):
         flip = m.group().replace("+", "\0").replace("-", "+").replace("\0", "-")
         add("sign", f"{m.group().strip()} -> {flip.strip()}", tex[: m.start()] + flip + tex[m.end():])
     for m in _pick(_sites(r"(?<![\w\\{])\d+(?![\w])", tex), line_id, "constant", most):
@@ -209,7 +215,8 @@ def mutants(tex: str, line_id: str = "", most: int = 2) -> list[Mutant]:
         for m in _pick(_sites(pat, tex), line_id, "quantifier", 1):
             add("quantifier", f"{m.group()} -> {rep}", tex[: m.start()] + rep + tex[m.end():])
     for word, rep in _WORDS:
-        k = tex.find(word)
+        m = re.search(r"(?<![\d\w])" + re.escape(word) if word[0] in "\\" else re.escape(word), tex)
+        k = m.start() if m else -1  # (a macro such as \pi not after a digit: 2\pi -> 22\pi is no mutant)
         if k >= 0:
             add("word", f"{word} -> {rep}", tex[:k] + rep + tex[k + len(word):])
     return out

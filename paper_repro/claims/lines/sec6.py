@@ -8,18 +8,20 @@ Independent computations used here:
   cosines (:mod:`paper_repro.core.domain`), the normalizing coefficients coming from exact collocation
   (:mod:`paper_repro.core.normalization`), the univariate B-basis from its constants (eq. univariate_basis);
 * the torus and the Dupin cyclide are fitted exactly in the normalized basis
-  (:func:`~paper_repro.surfaces.fitting.fit_exact`) and the printed control points, transcribed here as exact
-  functions of ``cos``/``sin`` of ``alpha`` and ``alpha/2``, are compared with the fit;
+  (:func:`~paper_repro.surfaces.fitting.fit_exact`) and the printed control points, parsed from their
+  transcriptions (:mod:`paper_repro.printed.torus`), are evaluated exactly and compared with the fit;
 * surfaces are tested against their implicit quartics exactly.
 """
 
 from __future__ import annotations
 
+import functools
 import re
 from collections.abc import Callable, Sequence
 from math import comb
 
 import numpy as np
+import sympy
 from flint import fmpq, fmpq_mat, fmpq_poly
 
 from paper_repro.claims.lines import LineResult, line_check
@@ -40,6 +42,9 @@ _LINE = live_lines()  # read at every lookup (the blank and mutation tests chang
 
 
 # --- helpers ---------------------------------------------------------------------------------------------
+ORDINALS = {"first": 1, "second": 2, "third": 3, "fourth": 4, "fifth": 5}
+
+
 def enumerate_set(letter: str, n: int, j_max: int, i_max: Callable[[int], int], first=lambda n, i: 2 * n - i,
                   ) -> list[str]:
     """Labels ``{letter_{2n, first(i), j}}_{j=0, i=j}^{j_max, i_max(j)}`` exactly as the printed bounds say."""
@@ -100,28 +105,140 @@ def rank(rows: Sequence[Sequence[fmpq]]) -> int:
     return fmpq_mat([list(r) for r in rows]).rank()
 
 
-# --- Definition def:surface_patch: index sets and counts -------------------------------------------------
-def patch_terms_read(n: int, override: dict[str, str] | None = None) -> list[str]:
-    """The control points of eq. triangular_trig_surface, read from the transcriptions of its two rows (sums, bounds,
-    control points and functions; :func:`paper_repro.printed.lines.read.sum_terms`)."""
-    from paper_repro.printed.lines.read import sum_terms, term_indices
+def corrected_text(line_id: str) -> str | None:
+    """The line's transcription with its erratum's ``fix`` applied (each ``(printed, corrected)`` LaTeX pair: the
+    printed fragment must occur in the transcription as it stands now), or ``None`` when a printed fragment is not
+    there (the transcription is not the one the erratum corrects)."""
+    ln = _LINE[line_id]
+    text = ln.verbatim
+    for printed, corrected in (ln.erratum or {}).get("fix", []):
+        if printed not in text:
+            return None
+        text = text.replace(printed, corrected, 1)
+    return text
 
-    rows = {k: _LINE[k].verbatim for k in ("sec6-patch-row-1", "sec6-patch-row-2")}
-    rows.update(override or {})
+
+def has_words(text: str, *phrases: str) -> bool:
+    """Every phrase occurs in ``text`` (whitespace-normalised): the words that carry a prose line's claim."""
+    norm = " ".join(text.replace("%", " ").split())
+    return all(" ".join(p.split()) in norm for p in phrases)
+
+
+# --- Definition def:surface_patch: index sets and counts -------------------------------------------------
+# --- the rows of eq. triangular_trig_surface, eq. rational_patch, tau-bar and the weight sum, read by latex_math ------
+N_SYM = sympy.Symbol("n")
+UVW = sympy.Tuple(*sympy.symbols("u v w"))
+_POINT_OF = {"r_vec": "R", "g_vec": "G", "b_vec": "B"}
+_WEIGHT_OF = {"rho": "R", "gamma": "G", "beta": "B"}
+_FUNC_OF = {"Rbar": "R", "Gbar": "G", "Bbar": "B"}
+#: what one term of each kind of row is made of (besides its coefficient 1)
+ROW_KINDS = {"patch": ("point", "function"), "rational": ("weight", "point", "function", "tau"),
+             "tau": ("weight", "function"), "weights": ("weight",)}
+
+
+def parse_rows(ids: Sequence[str], override: dict[str, str] | None = None) -> list[tuple]:
+    """``(left-hand side or None, right-hand side)`` of each row, read by
+    :func:`paper_repro.printed.latex_math.parse_relation` (a continuation row has no left-hand side)."""
+    from paper_repro.printed.latex_math import parse_relation
+
     out = []
-    for key in sorted(rows):
-        out += [f"{c.lower()}_{{{2 * n},{2 * n - i},{j}}}" for c, i, j in
-                term_indices(sum_terms(rows[key], points=True), n=n)]
+    for k in ids:
+        tex = (override or {}).get(k, _LINE[k].verbatim)
+        rel = parse_relation(tex.strip().rstrip(",."))
+        if rel.conditions or rel.ops not in ([], ["="]):
+            raise ValueError(f"{k}: not a row of a sum ({rel.ops})")
+        out.append((rel.parts[0] if rel.ops else None, rel.parts[-1]))
     return out
+
+
+def row_labels(expr, n: int, kind: str, strict_arguments: bool = True) -> list[str]:
+    """See :func:`_row_labels` (cached by the parsed expression: the same row is written out once per order)."""
+    return list(_row_labels(expr, n, kind, strict_arguments))
+
+
+@functools.lru_cache(maxsize=512)
+def _row_labels(expr, n: int, kind: str, strict_arguments: bool = True) -> tuple[str, ...]:
+    """The control-point labels of the terms of a parsed row at order n (sums written out the paper's way,
+    :func:`paper_repro.printed.latex_math.evaluate_sums`).  Each term must have coefficient 1 and be made of the
+    factors of ``kind`` (:data:`ROW_KINDS`) with one colour and one index triple: weight rho/gamma/beta, point
+    r/g/b, normalized function R/G/B-bar with the arguments (u,v,w) (unless ``strict_arguments`` is False) and the
+    superscript alpha, and the denominator tau-bar_n(u,v,w); ``ValueError`` otherwise."""
+    from paper_repro.printed.latex_math import evaluate_sums
+
+    e = sympy.expand(evaluate_sums(expr.subs(N_SYM, n)))
+    out = []
+    for mono, coeff in e.as_coefficients_dict().items():
+        if coeff != 1:
+            raise ValueError(f"term {mono} has the coefficient {coeff}")
+        parts: dict[str, tuple] = {}
+        for f in sympy.Mul.make_args(mono):
+            base, exp = f.as_base_exp()
+            name = type(base).__name__
+            if name in _WEIGHT_OF and exp == 1:
+                slot = "weight"
+            elif name in _POINT_OF and exp == 1:
+                slot = "point"
+            elif name in _FUNC_OF and exp == 1:
+                slot = "function"
+            elif name == "taubar" and exp == -1:
+                slot = "tau"
+            else:
+                raise ValueError(f"factor {f} of term {mono}")
+            if slot in parts:
+                raise ValueError(f"two factors {slot} in {mono}")
+            parts[slot] = (name, tuple(base.args))
+        if set(parts) != set(ROW_KINDS[kind]):
+            raise ValueError(f"term {mono}: {sorted(parts)} instead of {ROW_KINDS[kind]}")
+        colours = {({**_WEIGHT_OF, **_POINT_OF, **_FUNC_OF}).get(nm) for s, (nm, _) in parts.items() if s != "tau"}
+        triples = {args[:3] for s, (_, args) in parts.items() if s != "tau"}
+        if len(colours) != 1 or len(triples) != 1:
+            raise ValueError(f"term {mono}: colours {colours}, indices {triples}")
+        if "tau" in parts and parts["tau"][1] != (n, UVW):
+            raise ValueError(f"term {mono}: the denominator is not tau-bar_n(u,v,w)")
+        if "function" in parts:
+            fargs = parts["function"][1]
+            if (fargs[3:] != (UVW,)) if strict_arguments else (fargs[3:] not in ((UVW,), ())):
+                raise ValueError(f"term {mono}: the function's arguments are {fargs[3:]}, not (u,v,w)")
+        for s, (_, args) in parts.items():
+            if s in ("weight", "point") and len(args) != 3:
+                raise ValueError(f"term {mono}: {s} with arguments {args}")
+        (a, b, c), colour = next(iter(triples)), next(iter(colours))
+        if a != 2 * n:
+            raise ValueError(f"term {mono}: first index {a}, not 2n")
+        out.append(f"{colour.lower()}_{{{a},{b},{c}}}")
+    return tuple(out)
+
+
+def rows_labels(ids: Sequence[str], n: int, kind: str, override: dict[str, str] | None = None, lhs=None,
+                strict_arguments: bool = True) -> list[str]:
+    """Labels of every term of the rows ``ids`` (read) at order n; ``lhs`` (a sympy object) is the left-hand side
+    the first row must have."""
+    rows = parse_rows(ids, override)
+    if lhs is not None and rows[0][0] != lhs:
+        raise ValueError(f"left-hand side {rows[0][0]} instead of {lhs}")
+    if any(row[0] is not None for row in rows[1:]):
+        raise ValueError("a continuation row has a left-hand side")
+    return [lab for _, rhs in rows for lab in row_labels(rhs, n, kind, strict_arguments)]
+
+
+NS_ROWS = tuple(range(1, 9))  # orders at which the parsed rows are written out (sympy; n = 1..8)
+PATCH_ROWS = ("sec6-patch-row-1", "sec6-patch-row-2")
+
+
+def patch_terms_read(n: int, override: dict[str, str] | None = None) -> list[str]:
+    """The control points of eq. triangular_trig_surface at order n, read from the transcriptions of its two rows
+    (:func:`rows_labels`: every term a point times its normalized function of (u,v,w), coefficient 1)."""
+    return rows_labels(PATCH_ROWS, n, "patch", override, lhs=sympy.Function("s_vec")(N_SYM, UVW))
 
 
 @line_check("sec6-patch-index-sets")
 def patch_index_sets(override: dict[str, str] | None = None) -> LineResult:
-    """The terms of eq. triangular_trig_surface (read from the transcriptions of its rows) are the delta_n functions
-    of T_{2n}, each once: compared with the code's labels, distinct functions (exponent vectors), and of full rank
-    (exact collocation at delta_n points, n = 1, 2, 3)."""
+    """The terms of eq. triangular_trig_surface (its two rows read by printed.latex_math, sums written out) are the
+    delta_n functions of T_{2n}, each once, each a point times its normalized function of (u,v,w) with coefficient 1:
+    compared with the code's labels (n = 1..8), distinct functions (exponent vectors), full rank (exact collocation
+    at delta_n points, n = 1, 2, 3); the printed order range (n >= 1) vs the orders with a patch."""
     try:
-        counts_ok = all(matches_basis(patch_terms_read(n, override), n) for n in NS)
+        counts_ok = all(matches_basis(patch_terms_read(n, override), n) for n in NS_ROWS)
     except ValueError as exc:
         return LineResult(False, how="the printed sums read from the transcriptions", detail={"unread": str(exc)})
     distinct = all(len({exponents(lab) for lab in united_system(n)}) == delta(n) for n in NS)
@@ -131,11 +248,39 @@ def patch_index_sets(override: dict[str, str] | None = None) -> LineResult:
         pts = sample_rational_points(alpha, delta(n), seed=60 + n)
         ranks[n] = rank(evaluate(n, alpha, pts, "exact").tolist())
     full = all(ranks[n] == delta(n) for n in ranks)
-    return LineResult(counts_ok and distinct and full, how="enumeration of the printed sums vs united_system, "
-                      "n = 1..12; exact rank of the basis at delta_n rational points, n = 1..3",
+    order_ok = order_range_ok("sec6-patch-order")
+    return LineResult(counts_ok and distinct and full and order_ok, how="the rows read by printed.latex_math, their "
+                      "sums written out vs united_system, n = 1..8; exact rank of the basis at delta_n rational "
+                      "points, n = 1..3; the printed order range (n >= 1) vs the orders with a patch (n = 0..12)",
                       kind="exact-evidence",
-                      detail={"n": [NS[0], NS[-1]], "terms_n_1_2_3": [len(patch_terms_read(n)) for n in (1, 2, 3)],
-                              "rank_n_1_2_3": [ranks[n] for n in (1, 2, 3)], "order_n_geq_1": True})
+                      detail={"n": [NS_ROWS[0], NS_ROWS[-1]],
+                              "terms_n_1_2_3": [len(patch_terms_read(n, override)) for n in (1, 2, 3)],
+                              "rank_n_1_2_3": [ranks[n] for n in (1, 2, 3)], "order_range_read": order_ok})
+
+
+def order_range_ok(line_id: str) -> bool:
+    """The printed range of the order (``of order $n\\geq1$``, read from the transcription) is exactly the set of
+    orders n = 0..12 that have a patch: 2n >= 2 (n = 0 leaves the constant function 1 alone, no trigonometric
+    function) with delta_n independent functions (rank at n = 1, 2 exact)."""
+    from paper_repro.printed.lines.sec6_latex import parse_relation, relation_holds
+
+    m = re.search(r"(?:rational )?triangular trigonometric patch of order \$([^$]+)\$", _LINE[line_id].verbatim)
+    if not m:
+        return False
+    parts, ops = parse_relation(m.group(1).replace("n", "u"))  # n read as a symbol (u: a letter the reader knows)
+    from paper_repro.printed.lines.sec6_latex import U
+
+    alpha = rational_alpha(fmpq(1, 3))
+
+    def has_patch(n: int) -> bool:
+        if n < 1:
+            return False
+        if n <= 2:
+            return rank(evaluate(n, alpha, sample_rational_points(alpha, delta(n), seed=60 + n), "exact").tolist()
+                        ) == delta(n)
+        return True  # n >= 3: the ranks of sec6-patch-index-sets and the linear independence claim
+
+    return all(relation_holds([x.subs(U, n) for x in parts], ops) == has_patch(n) for n in range(0, 13))
 
 
 def control_net_counts(n: int, printed: bool = True) -> dict:
@@ -154,7 +299,9 @@ def control_net_set(override: dict[str, str] | None = None) -> LineResult:
     printed = {k: {n: net_from_transcription(n, tex) for n in NS} for k, tex in texts.items()}
     holds = all(matches_basis(net, n) for nets in printed.values() for n, net in nets.items())
     corrected = {n: control_net_counts(n, printed=False) for n in NS}
-    corr = all(v["equals_basis"] for v in corrected.values())
+    # the correction: the printed set (as read) with the centre r_{2n,n,n} added
+    corr = all(matches_basis(net + [f"r_{{{2 * n},{n},{n}}}"], n) for nets in printed.values()
+               for n, net in nets.items())
     centre = {k: any(f"r_{{{2 * n},{n},{n}}}" in net for n, net in nets.items()) for k, nets in printed.items()}
     return LineResult(holds, corr, how="enumeration of the printed index sets (read from the transcriptions) vs the "
                       "labels of T_{2n}, n = 1..12", kind="exhaustive",
@@ -173,21 +320,35 @@ def delta3(verbatim: str | None = None) -> LineResult:
     if not m:
         return LineResult(False, how="the count read from the transcription", detail={"unread": tex[:60]})
     n, count = int(m.group(1)), int(m.group(2))
+    order = re.search(r"illustrates a (\w+) order triangular trigonometric\s+patch defined by", tex)
+    said = ORDINALS.get(order.group(1)) if order else None
     terms = len(patch_terms_read(n))
-    return LineResult(terms == count == delta(n) == len(united_system(n)),
+    words = has_words(tex, "Fig.\\ \\ref{fig:third_order_patch} illustrates", "control points")
+    return LineResult(said == n and words and
+                      terms == count == delta(n) == len(united_system(n)),
                       how="count read from the transcription vs the terms of eq. triangular_trig_surface (read) and "
-                      "T_{2n}", kind="proof", detail={"n": n, "printed": count, "terms": terms,
+                      "T_{2n}; the order word ('third') vs the subscript of delta", kind="proof",
+                      detail={"n": n, "order_word": said, "printed": count, "terms": terms,
                                                        "united_system": len(united_system(n))})
 
 
 @line_check("sec6-quadratic-growth")
 def quadratic_growth() -> LineResult:
-    sizes = [len(patch_terms_read(n)) for n in NS]
+    """"the quadratic growth of the control points" (read) vs the second differences of the number of terms of eq.
+    triangular_trig_surface (read); "order higher than three" (read) is the order beyond which the convex hull
+    property is open (the orders of sec6-convex-hull-n123, read there)."""
+    tex = _LINE["sec6-quadratic-growth"].verbatim
+    sizes = [len(patch_terms_read(n)) for n in NS_ROWS]
     second = {c - 2 * b + a for a, b, c in zip(sizes, sizes[1:], sizes[2:])}
     first = sizes[1] - sizes[0]
-    return LineResult(second == {6} and first > 0, how="second differences of the number of control points, "
-                      "n = 1..12", kind="exact-evidence",
-                      detail={"sizes": sizes[:4], "second_differences": sorted(second)})
+    m = re.search(r"patches of order higher than (\w+) would be used", tex)
+    beyond = {"one": 1, "two": 2, "three": 3, "four": 4}.get(m.group(1)) if m else None
+    words = has_words(tex, "quadratic growth of the control points")
+    proven = max(convex_hull_orders(), default=None)
+    return LineResult(words and beyond == proven and second == {6} and first > 0,
+                      how="second differences of the number of control points, n = 1..8; the order named vs the "
+                      "highest order with the convex hull property (sec6-convex-hull-n123)", kind="exact-evidence",
+                      detail={"sizes": sizes[:4], "second_differences": sorted(second), "order_named": beyond})
 
 
 # --- geometric properties ---------------------------------------------------------------------------------
@@ -195,18 +356,52 @@ def _points(alpha: RationalAngle, count: int, seed: int) -> RationalPoints:
     return sample_rational_points(alpha, count, seed=seed)
 
 
+def read_open_interval(tex: str, var: str) -> tuple[sympy.Expr, sympy.Expr]:
+    """``(lo, hi)`` of ``var \\in \\left(lo,hi\\right)`` in ``tex`` (parsed)."""
+    from paper_repro.printed.lines.sec6_latex import parse_expression
+
+    m = re.search(rf"{re.escape(var)}\s*\\in\s*\\left\(([^,]*),([^,]*?)\\right\)", tex)
+    if not m:
+        raise ValueError(f"no open interval {var} in (lo, hi) in {tex[:50]!r}")
+    return parse_expression(m.group(1)), parse_expression(m.group(2))
+
+
+#: cos(alpha/2) of the sampled alphas (rational, so everything below is exact): alpha = 2 acos(c) from 0.57 to 5.7
+ALPHA_HALF_COS = (fmpq(24, 25), fmpq(4, 5), fmpq(3, 5), fmpq(7, 25), fmpq(0), fmpq(-7, 25), fmpq(-3, 5),
+                  fmpq(-4, 5), fmpq(-24, 25))
+
+
 @line_check("sec6-alpha-range")
 def alpha_range() -> LineResult:
-    """For alpha across (0, pi) the normalized basis exists, sums to one and has positive coefficients (n = 2)."""
-    ok, tested = True, []
-    for k in range(1, 10):
-        alpha = rational_alpha(fmpq(k, 10))
-        vals = evaluate_normalized(2, alpha, _points(alpha, 3, seed=k), "exact")
-        ok &= all(sum(vals[p].tolist(), fmpq(0)) == 1 for p in range(3))
-        ok &= all(c > 0 for c in coefficient_vector(2, alpha, "exact"))
-        tested.append(f"{k}/10")
-    return LineResult(ok, how="exact normalized basis of order 2 at tan(alpha/4) = k/10, k = 1..9 (alpha from "
-                      "0.40 to 2.66)", kind="exact-evidence", detail={"tan_alpha_over_4": tested})
+    """The printed range of alpha (read from the transcription) is where the patch is defined: at every sampled alpha
+    in it (cos(alpha/2) rational, alpha from 0.57 to 5.7) the univariate B-basis constants c_{2n,i} of the boundary
+    curves are positive (n = 1, 2, 3) and, for alpha < pi, the exact normalized basis of order 2 sums to one with
+    positive coefficients; a sampled alpha in the range where a constant is <= 0 makes the printed range fail."""
+    import math
+
+    lo, hi = read_open_interval(_LINE["sec6-alpha-range"].verbatim, "\\alpha")
+    lo_f, hi_f = float(lo), float(hi)
+    ok, tested = lo_f >= 0, []
+    for c in ALPHA_HALF_COS:
+        a = 2 * math.acos(float(c))
+        if not lo_f < a < hi_f:
+            continue
+        tested.append(str(c))
+        ok &= all(sum(k * c**p for p, k in enumerate(c_numerator(n, i))) > 0
+                  for n in (1, 2, 3) for i in range(2 * n + 1))
+        if c in ALPHA_HALF_SIN:  # alpha < pi: the normalized basis of order 2, tan(alpha/4) = sin / (1 + cos)
+            alpha = rational_alpha(ALPHA_HALF_SIN[c] / (1 + c))
+            vals = evaluate_normalized(2, alpha, _points(alpha, 3, seed=3), "exact")
+            ok &= all(sum(vals[p].tolist(), fmpq(0)) == 1 for p in range(3))
+            ok &= all(x > 0 for x in coefficient_vector(2, alpha, "exact"))
+    return LineResult(ok and bool(tested), how="the printed interval read from the transcription; exact B-basis "
+                      "constants c_{2n,i}, n = 1, 2, 3, and the exact normalized basis of order 2 (alpha < pi) at "
+                      "the sampled alpha in it", kind="exact-evidence",
+                      detail={"interval": [str(lo), str(hi)], "cos_alpha_half_tested": tested})
+
+
+#: the rational sin(alpha/2) belonging to the sampled cos(alpha/2) (Pythagorean triples)
+ALPHA_HALF_SIN = {fmpq(24, 25): fmpq(7, 25), fmpq(4, 5): fmpq(3, 5), fmpq(3, 5): fmpq(4, 5), fmpq(7, 25): fmpq(24, 25)}
 
 
 def affine_invariance_holds(n: int, alpha: RationalAngle, A: Sequence[Sequence[fmpq]], b: Sequence[fmpq],
@@ -230,61 +425,116 @@ def affine_invariance() -> LineResult:
     ok = all(affine_invariance_holds(n, alpha, *AFFINE) for n in (1, 2, 3))
     unity = all(sum(row.tolist(), fmpq(0)) == 1
                 for n in (1, 2, 3) for row in evaluate_normalized(n, alpha, _points(alpha, 3, seed=9), "exact"))
-    return LineResult(ok and unity, how="exact patch of a random rational net and of its affine image at rational "
-                      "points, n = 1, 2, 3, tan(alpha/4) = 1/3", kind="exact-evidence",
+    words = has_words(_LINE["sec6-affine-invariance"].verbatim, "functions that form a partition of the unity",
+                      "any patch of the type", "is invariant under the affine transformations of its control points")
+    return LineResult(words and ok and unity, how="the claim's words read from the transcription; exact patch of a "
+                      "random rational net and of its affine image at rational points, n = 1, 2, 3, tan(alpha/4) = 1/3",
+                      kind="exact-evidence",
                       detail={"partition_of_unity": unity, "affine_image_commutes": ok})
+
+
+def convex_hull_orders() -> list[int]:
+    """The orders of "in the special cases of first, second and third order" (read from the transcription)."""
+    tex = _LINE["sec6-convex-hull-n123"].verbatim
+    m = re.search(r"in the special cases of ((?:\w+, )*\w+ and \w+) order triangular", tex)
+    if not m:
+        return []
+    words = re.split(r", | and ", m.group(1))
+    return [ORDINALS[w] for w in words if w in ORDINALS] if all(w in ORDINALS for w in words) else []
 
 
 @line_check("sec6-convex-hull-n123")
 def convex_hull_n123() -> LineResult:
-    """Non-negative normalized system for n = 1, 2, 3: the functions are products of half-angle sines and
-    cosines (>= 0 on Omega^alpha); so it is non-negative iff the normalizing coefficients are; exact at
-    sampled alpha."""
+    """Non-negative normalized system for the orders read from the transcription (first, second, third): the
+    functions are products of half-angle sines and cosines (>= 0 on Omega^alpha); so it is non-negative iff the
+    normalizing coefficients are; exact at sampled alpha.  The words "convex hull of their control points" and
+    "non-negative" are read."""
+    tex = _LINE["sec6-convex-hull-n123"].verbatim
+    orders = convex_hull_orders()
+    words = has_words(tex, "their shape lies in the convex hull of their control points",
+                      "normalized function system (\\ref{normalized_united_system}) is also non-negative")
     mins = {}
-    for n in (1, 2, 3):
+    for n in orders:
         for t in TS + (fmpq(9, 10),):
             vec = coefficient_vector(n, rational_alpha(t), "exact")
             mins[f"n={n},t={t}"] = min(vec)
-    monomials_nonneg = all(min(exponents(lab)) >= 0 for n in (1, 2, 3) for lab in united_system(n))
-    ok = monomials_nonneg and all(v > 0 for v in mins.values())
+    monomials_nonneg = all(min(exponents(lab)) >= 0 for n in orders for lab in united_system(n))
+    ok = words and len(orders) == len(set(orders)) > 0 and monomials_nonneg and all(v > 0 for v in mins.values())
     return LineResult(ok, how="exact normalizing coefficients (collocation) for n = 1, 2, 3 at tan(alpha/4) in "
                       "{1/5, 1/3, 1/2, 3/4, 9/10}", kind="exact-evidence",
                       detail={"min_coefficient": {k: str(v) for k, v in mins.items()}})
 
 
 # boundary curves ------------------------------------------------------------------------------------------
-_NET_SET = re.compile(r"\\mathbf\{([rgb])\}_\{2n,2n-i,j\}\\right\\\}\s*_\{j=([^,{}]+),i=([^{}]+)\}\s*%?\s*"
-                      r"\^\{([^,{}]+),([^{}]+)\}")
-_BOUNDARY = re.compile(r"\\left\(\s*([^()]*?)\\right\)\s*&?\s*=\s*\\sum_\{i=([^{}]+)\}%?\s*\^\{([^{}]+)\}\s*"
-                       r"\\mathbf\{([rgb])\}_\{2n,2n-i,0\}A_\{2n,2n-i\}\^\{\\alpha\}\\left\(\s*([uvw])\s*\\right\)")
 VARS = ("u", "v", "w")
 
 
 def net_from_transcription(n: int, tex: str | None = None) -> list[str]:
     """The control points of def:surface_patch read from the transcription of its net (line sec6-control-net-set;
-    that printed set lacks the centre, erratum sec6-control-net-set, which no boundary curve uses)."""
-    from paper_repro.printed.lines.read import bound
+    that printed set lacks the centre, erratum sec6-control-net-set, which no boundary curve uses): each set
+    ``\\left\\{ \\mathbf{x}_{2n,2n-i,j}\\right\\}_{j=..,i=..}^{..,..}`` between the ``\\cup`` with its bounds read by
+    :func:`paper_repro.printed.latex_math.index_set`."""
+    from paper_repro.printed.latex_math import index_set
 
     tex = _LINE["sec6-control-net-set"].verbatim if tex is None else tex
+    N = sympy.Symbol("n")
     out = []
-    for letter, jlo, ilo, jhi, ihi in _NET_SET.findall(tex):
-        out += [f"{letter}_{{{2 * n},{2 * n - i},{j}}}" for j in range(bound(jlo, n=n), bound(jhi, n=n) + 1)
-                for i in range(bound(ilo, n=n, j=j), bound(ihi, n=n, j=j) + 1)]
+    for part in tex.split("\\cup"):
+        m = re.search(r"\\left\\\{\s*\\mathbf\{([rgb])\}_\{2n,2n-i,j\}\\right\\\}", part)
+        if not m:
+            continue
+        (jv, jlo, jhi), (iv, ilo, ihi) = index_set(part)
+        if (str(jv), str(iv)) != ("j", "i"):
+            continue
+
+        def val(e, **env):
+            x = sympy.sympify(e).subs({N: n, **{sympy.Symbol(k): v for k, v in env.items()}})
+            if not x.is_Integer:
+                raise ValueError(f"bound {e} is not an integer at n = {n}")
+            return int(x)
+
+        out += [f"{m.group(1)}_{{{2 * n},{2 * n - i},{j}}}" for j in range(val(jlo), val(jhi) + 1)
+                for i in range(val(ilo, j=j), val(ihi, j=j) + 1)]
     return out
 
 
-def read_boundary(tex: str) -> tuple[int, int, str, str, str]:
-    """(zero variable, argument variable of A, colour, lower and upper bound of i) of a printed boundary curve."""
-    m = _BOUNDARY.search(tex)
-    if not m:
+def read_boundary(tex: str) -> tuple[int, int, str, sympy.Expr, sympy.Expr]:
+    """(zero variable, argument variable of A, colour, lower and upper bound of i) of a printed boundary curve, read
+    by :func:`paper_repro.printed.latex_math.parse_relation`: ``s_n(args) = sum_{i=lo}^{hi} x_{2n,2n-i,0}
+    A_{2n,2n-i}(t), t in [0, alpha]`` with ``args`` the edge x_zero = 0 parametrized by t (``ValueError`` otherwise)."""
+    from paper_repro.printed.latex_math import parse_relation
+    from paper_repro.printed.lines.sec6_latex import ALPHA
+
+    rel = parse_relation(tex.strip().rstrip(",").rstrip("\\").strip().rstrip(","))
+    if rel.ops != ["="] or len(rel.conditions) != 1:
         raise ValueError(f"not a boundary curve: {tex[:60]!r}")
-    args = [a.strip() for a in m.group(1).split(",")]
-    if args.count("0") != 1 or len(args) != 3:
-        raise ValueError(f"no single zero argument in s({m.group(1)})")
-    zero, arg = args.index("0"), VARS.index(m.group(5))
-    if zero == arg:
-        raise ValueError(f"A_{{2n,2n-i}}({m.group(5)}) of the variable that is 0 on the edge")
-    return zero, arg, m.group(4), m.group(2), m.group(3)
+    lhs, rhs = rel.parts
+    if type(lhs).__name__ != "s_vec" or len(lhs.args) != 2 or lhs.args[0] != N_SYM:
+        raise ValueError(f"left-hand side {lhs} is not s_n(u, v, w)")
+    args = list(lhs.args[1])
+    if not isinstance(rhs, sympy.Sum) or len(rhs.limits) != 1:
+        raise ValueError(f"right-hand side {rhs} is not one sum")
+    i, lo, hi = rhs.limits[0]
+    factors = {type(f).__name__: f for f in sympy.Mul.make_args(rhs.function)}
+    points = [k for k in factors if k in _POINT_OF]
+    if len(factors) != 2 or len(points) != 1 or "A" not in factors:
+        raise ValueError(f"term {rhs.function} is not x_{{2n,2n-i,0}} A_{{2n,2n-i}}(t)")
+    point, basis = factors[points[0]], factors["A"]
+    if tuple(point.args) != (2 * N_SYM, 2 * N_SYM - i, 0) or tuple(basis.args[:2]) != (2 * N_SYM, 2 * N_SYM - i) \
+            or len(basis.args) != 3 or len(basis.args[2]) != 1:
+        raise ValueError(f"term {rhs.function}: indices are not (2n, 2n-i, 0) and (2n, 2n-i), one argument")
+    t = basis.args[2][0]
+    if len(args) != 3 or args.count(0) != 1 or str(t) not in VARS:
+        raise ValueError(f"no single zero argument in s({args})")
+    zero, arg = args.index(0), VARS.index(str(t))
+    other = 3 - zero - arg
+    # the edge of Omega^alpha: the argument t of A runs over [0, alpha], the third variable is alpha - t
+    if zero == arg or args[arg] != t or sympy.expand(args[other] - (ALPHA - t)) != 0:
+        raise ValueError(f"s({args}) is not the edge x_{zero} = 0 parametrized by {t}")
+    cond = rel.conditions[0]
+    if cond.ops != ["in"] or cond.parts != [t, sympy.Interval(0, ALPHA)]:
+        raise ValueError(f"the curve's parameter range is {cond.parts}, not {t} in [0, alpha]")
+    return zero, arg, _POINT_OF[points[0]].lower(), lo, hi
 
 
 def edge_points(alpha: RationalAngle, zero: int, ts: Sequence[fmpq]) -> RationalPoints:
@@ -338,8 +588,6 @@ def boundary_curve(line_id: str, verbatim: str | None = None) -> LineResult:
     it holds as printed iff every control point it names is one of the net of def:surface_patch (read from its
     transcription) and the identity holds exactly; the corrected curve names, for a term whose point is not in the
     net, the net's point of the same function (the corner of the next colour)."""
-    from paper_repro.printed.lines.read import bound
-
     tex = _LINE[line_id].verbatim if verbatim is None else verbatim
     try:
         zero, arg, color, lo, hi = read_boundary(tex)
@@ -349,7 +597,10 @@ def boundary_curve(line_id: str, verbatim: str | None = None) -> LineResult:
     printed_ok, corrected_ok, renamed = True, True, {}
     for n in (1, 2, 3):
         net = net_from_transcription(n)
-        names = [f"{color}_{{{2 * n},{2 * n - i},0}}" for i in range(bound(lo, n=n), bound(hi, n=n) + 1)]
+        lo_n, hi_n = sympy.sympify(lo).subs(N_SYM, n), sympy.sympify(hi).subs(N_SYM, n)
+        if not (lo_n.is_Integer and hi_n.is_Integer):
+            return LineResult(False, how="the sum's bounds read", detail={"unread": f"{lo}, {hi}"})
+        names = [f"{color}_{{{2 * n},{2 * n - i},0}}" for i in range(int(lo_n), int(hi_n) + 1)]
         fixed = [x if x in net else corner_name(n, color, 2 * n - int(x.split(",")[1]), net) for x in names]
         renamed.update({x: y for x, y in zip(names, fixed) if x != y})
         in_net = all(x in net for x in names)
@@ -401,10 +652,15 @@ def corners() -> LineResult:
             nz = [k for k, v in enumerate(row) if v != 0]
             ok &= len(nz) == 1 and row[nz[0]] == 1
             found[f"n={n} {name}"] = united_system(n)[nz[0]].control_point if nz else "none"
-    printed = {n: {f"{c}_{{{2 * n},{2 * n},0}}" for c in "rgb"} for n in (1, 2, 3)}
+    tex = _LINE["sec6-corners"].verbatim
+    read = re.findall(r"\\mathbf\{([rgb])\}%?\s*_\{2n,2n,0\}", tex)  # the three corners as printed
+    words = has_words(tex, "interpolates the three corners", "of its control net")
+    printed = {n: {f"{c}_{{{2 * n},{2 * n},0}}" for c in read} for n in (1, 2, 3)}
+    ok &= words and len(read) == 3 and len(tex.split("$")) == 7  # three labels, nothing else in math mode
     ok &= all({v for k, v in found.items() if k.startswith(f"n={n} ")} == printed[n] for n in (1, 2, 3))
-    return LineResult(ok, how="exact normalized basis at the corners, n = 1, 2, 3", kind="exact-evidence",
-                      detail={"corner_points": found})
+    return LineResult(ok, how="the corner labels read from the transcription vs the exact normalized basis at the "
+                      "corners (a unit vector there), n = 1, 2, 3", kind="exact-evidence",
+                      detail={"corner_points": found, "printed": read})
 
 
 def a_forms_rank(n: int, alpha: RationalAngle) -> int:
@@ -424,9 +680,13 @@ def trig_curves() -> LineResult:
     """F_{2n}^alpha = span{cos kt, sin kt}_{k<=n} is the space of degree-2n forms in sin(t/2), cos(t/2)
     (dimension 2n+1); the 2n+1 functions A_{2n,i} are such forms and independent, so the boundary curves
     (combinations of A_{2n,i}) reach every curve of F_{2n}^alpha."""
+    words = has_words(_LINE["sec6-trig-curves"].verbatim, "its boundary curves can exactly describe arcs of any "
+                      "trigonometric parametric curve the coordinate functions of which are in the vector space "
+                      "(\\ref{truncated_Fourier_vector_space})")
     ranks = {f"n={n},t={t}": a_forms_rank(n, rational_alpha(t)) for n in range(1, 7) for t in TS}
-    ok = all(v == 2 * int(k.split(",")[0][2:]) + 1 for k, v in ranks.items())
-    return LineResult(ok, how="exact rank of the coefficient matrix of A_{2n,i} as binary forms, n = 1..6, "
+    ok = words and all(v == 2 * int(k.split(",")[0][2:]) + 1 for k, v in ranks.items())
+    return LineResult(ok, how="the claim's words read; exact rank of the coefficient matrix of A_{2n,i} as binary "
+                      "forms, n = 1..6, "
                       "tan(alpha/4) in {1/5, 1/3, 1/2, 3/4}", kind="exact-evidence",
                       detail={"ranks_t_1_3": [ranks[f"n={n},t=1/3"] for n in range(1, 7)]})
 
@@ -477,7 +737,10 @@ def tangent_planes() -> LineResult:
             d = m[0][0] * m[1][1] - m[0][1] * m[1][0]
             ok &= d != 0
             det[f"n={n} {corner}"] = str(d)
-    return LineResult(ok, how="exponents of the monomials at the corners, exact derivatives of the normalized basis "
+    ok &= has_words(_LINE["sec6-tangent-planes"].verbatim, "The tangent planes at these corners are spanned by the "
+                    "terminal edges of the control polygons that generate the boundary curves of the given patch.")
+    return LineResult(ok, how="the claim's words read; exponents of the monomials at the corners, exact "
+                      "derivatives of the normalized basis "
                       "there (n = 1, 2, 3, tan(alpha/4) = 1/3)", kind="exact-evidence",
                       detail={"neighbour_derivative_determinant": det})
 
@@ -487,9 +750,24 @@ def bezier_limit() -> LineResult:
     """A_{2n,i}(alpha s) = P_i(cos(alpha/2)) (sin(alpha(1-s)/2)/sin(alpha/2))^{2n-i} (sin(alpha s/2)/sin(alpha/2))^i
     with P_i the printed numerator; as alpha -> 0 the ratios tend to 1-s and s, so the limit is P_i(1)
     (1-s)^{2n-i} s^i: the Bernstein polynomial iff P_i(1) = binom(2n, i)."""
-    ok = all(sum(c_numerator(n, i)) == comb(2 * n, i) for n in range(1, 31) for i in range(2 * n + 1))
-    return LineResult(ok, how="printed numerator of c_{2n,i} at cos(alpha/2) = 1 vs binom(2n, i), n = 1..30",
-                      kind="exact-evidence", detail={"n": [1, 30]})
+    from paper_repro.printed.lines.sec6_latex import parse_expression
+
+    tex = _LINE["sec6-bezier-limit"].verbatim
+    lim = re.search(r"when \$\\alpha \\to (\d+)\$ the boundary\s+curves degenerate to B\\'ezier curves of degree "
+                    r"\$([^$]+)\$", tex)
+    if not lim or "Proposition \\ref{Bernstein}" not in tex:
+        return LineResult(False, how="the limit and the degree read from the transcription",
+                          detail={"unread": tex[:60]})
+    limit, degree = int(lim.group(1)), parse_expression(lim.group(2).replace("n", "u"))
+    from paper_repro.printed.lines.sec6_latex import U
+
+    # as alpha -> 0 cos(alpha/2) -> 1: the limit of A_{2n,i} is P_i(1) (1-s)^{2n-i} s^i, the Bernstein polynomial of
+    # degree 2n iff P_i(1) = binom(2n, i); a limit alpha -> a > 0 leaves cos(alpha/2) != 1 (not polynomial)
+    ok = limit == 0 and all(degree.subs(U, n) == 2 * n for n in range(1, 31))
+    ok &= all(sum(c_numerator(n, i)) == comb(2 * n, i) for n in range(1, 31) for i in range(2 * n + 1))
+    return LineResult(ok, how="the limit and the degree read from the transcription; printed numerator of c_{2n,i} "
+                      "at cos(alpha/2) = 1 vs binom(2n, i), n = 1..30", kind="exact-evidence",
+                      detail={"n": [1, 30], "limit": limit, "degree": str(degree)})
 
 
 def vn_element(n: int, seed: int, extra: tuple[int, int, int] | None = None):
@@ -520,6 +798,11 @@ def vn_configurations() -> LineResult:
     alpha = rational_alpha(TS[1])
     ok = all(in_span(vn_element(n, 40 + n), n, alpha) for n in (1, 2, 3))
     beyond = in_span(vn_element(2, 42, extra=(3, 0, 0)), 2, alpha)  # cos 3u is not in V_2
+    ok &= has_words(_LINE["sec6-vn-configurations"].verbatim, "It provides $\\alpha$-dependent control point "
+                    "configurations for the exact description of triangular patches of arbitrary trigonometric "
+                    "surfaces the coordinate functions of which are given in the vector space "
+                    "(\\ref{constrained_trivariate_extension_of_truncated_Fourier_series}) (consider Example "
+                    "\\ref{exmp:torus}).")
     return LineResult(ok and not beyond, how="exact fit (collocation, verified at 4 further points) of a random "
                       "element of V_n, n = 1, 2, 3, tan(alpha/4) = 1/3; an element with cos 3u is not fitted by "
                       "order 2", kind="exact-evidence", detail={"n": [1, 2, 3], "order_2_fits_cos_3u": beyond})
@@ -557,59 +840,36 @@ class Angles:
         self.s3h, self.c3h = 3 * self.sh - 4 * self.sh**3, 4 * self.ch**3 - 3 * self.ch
 
 
-#: The printed control points of Example exmp:torus, transcribed from the LaTeX as exact functions of
-#: (Angles, varrho, mu).  (A second, mpmath transcription is paper_repro.printed.torus; the test compares them.)
-PRINTED_EXACT = {
-    "r_{4,4,0}": lambda A, r, m: (r + m * A.sa, 0, m * A.ca),
-    "r_{4,3,0}": lambda A, r, m: (r + m / 2 * (A.th + A.sa), 0, m / 2 * (1 + A.ca)),
-    "r_{4,2,0}": lambda A, r, m: (r + 3 * m * A.sa / (4 + 2 * A.ca), 0, 3 * m * (1 + A.ca) / (4 + 2 * A.ca)),
-    "r_{4,1,0}": lambda A, r, m: (r + m / 2 * A.th, 0, m),
-    "r_{4,3,1}": lambda A, r, m: (r + 3 * m * A.sa / (4 + 2 * A.ca),
-                                  (3 * r * A.sa + m * (3 + A.ca) * (1 - A.ca)) / (8 + 4 * A.ca),
-                                  3 * m * (1 + A.ca) / (4 + 2 * A.ca)),
-    "r_{4,2,1}": lambda A, r, m: (r + 3 * m * (2 + A.ca) * A.sa / ((1 + A.ca) * (10 + 2 * A.ca)),
-                                  (2 * r * (A.sa + A.th) + 3 * m * (1 - A.ca)) / (10 + 2 * A.ca),
-                                  3 * m * (3 + A.ca) / (10 + 2 * A.ca)),
-    "r_{4,2,2}": lambda A, r, m: ((6 * r * (3 + 2 * A.ca) + m * (9 + A.ca) * A.sa) / (20 + 10 * A.ca),
-                                  (10 * r * A.sa + m * (7 + A.ca) * (1 - A.ca)) / (20 + 10 * A.ca),
-                                  3 * m * (3 + 2 * A.ca) / (10 + 5 * A.ca)),
-    "g_{4,4,0}": lambda A, r, m: (r, 0, m),
-    "g_{4,3,0}": lambda A, r, m: (r, r / 2 * A.th, m),
-    "g_{4,2,0}": lambda A, r, m: (3 * r * (1 + A.ca) / (4 + 2 * A.ca), 3 * r * A.sa / (4 + 2 * A.ca), m),
-    "g_{4,1,0}": lambda A, r, m: (r / 2 * (1 + A.ca), r / 2 * (A.th + A.sa), m),
-    "g_{4,3,1}": lambda A, r, m: (r + 3 * m * A.sa / (8 + 4 * A.ca),
-                                  (3 * r * A.sa + 2 * m * (1 - A.ca)) / (8 + 4 * A.ca), m),
-    "g_{4,2,1}": lambda A, r, m: ((3 * r * (3 + A.ca) + 3 * m * A.sa) / (10 + 2 * A.ca),
-                                  (3 * r * (3 * A.sh + A.s3h) + 3 * m * (A.ch - A.c3h)) / ((20 + 4 * A.ca) * A.ch), m),
-    "b_{4,4,0}": lambda A, r, m: (r * A.ca, r * A.sa, m),
-    "b_{4,3,0}": lambda A, r, m: (r / 2 * (1 + A.ca) + m / 2 * A.th * A.ca, r / 2 * (A.th + A.sa) + m / 2 * (1 - A.ca),
-                                  m),
-    "b_{4,2,0}": lambda A, r, m: (3 * r * (1 + A.ca) / (4 + 2 * A.ca) + m / 2 * A.sa,
-                                  (3 * r * A.sa + m * (3 + A.ca) * (1 - A.ca)) / (4 + 2 * A.ca),
-                                  3 * m * (1 + A.ca) / (4 + 2 * A.ca)),
-    "b_{4,1,0}": lambda A, r, m: (r + m / 2 * (A.th + A.sa), r / 2 * A.th + m / 2 * (1 - A.ca), m / 2 * (1 + A.ca)),
-    "b_{4,3,1}": lambda A, r, m: (r * (7 - 2 * A.ch**2 + A.ch) * A.ch**2 / (4 + 2 * A.ca) + m / 4 * A.sa,
-                                  (6 * r * A.sa + m * (1 - A.ca) * (3 + A.ca)) / (8 + 4 * A.ca), m),
-    "b_{4,2,1}": lambda A, r, m: ((3 * r * (3 + A.ca) * A.ch + m * (3 * A.sh + 2 * A.s3h)) / ((10 + 2 * A.ca) * A.ch),
-                                  (3 * r * (3 * A.sh + A.s3h) + 4 * m * (A.ch - A.c3h)) / ((20 + 4 * A.ca) * A.ch),
-                                  3 * m * (3 + A.ca) / (10 + 2 * A.ca)),
-}
-#: Corrected coordinates (data/errata.json, torus-b_{4,3,1}-x), label -> axis -> f(Angles, varrho, mu).
-CORRECTED_EXACT = {"b_{4,3,1}": {0: lambda A, r, m: 3 * r * (1 + A.ca) / (4 + 2 * A.ca) + m / 4 * A.sa}}
-
 _FITS: dict[tuple, list[list[fmpq]]] = {}
 
 
 def torus_net(t: fmpq, rho: fmpq, mu: fmpq) -> list[list[fmpq]]:
+    """The exact control net of eq. toroidal_triangle (order 2) at tan(alpha/4) = t: interpolation in the normalized
+    basis (:func:`~paper_repro.surfaces.fitting.fit_exact`), independent of the printed points."""
     key = (t, rho, mu)
     if key not in _FITS:
         _FITS[key] = fit_exact(exact_torus(rho, mu), 2, rational_alpha(t))
     return _FITS[key]
 
 
-def compare_point(label: str, formula=None, corrected: dict | None = None) -> dict[str, int]:
-    """Number of (alpha, varrho, mu) cases where each coordinate of the printed point differs from the fit."""
-    formula = formula or PRINTED_EXACT[label]
+def printed_formula(xyz) -> Callable:
+    """``f(Angles, varrho, mu) -> (x, y, z)`` of a printed point parsed from its transcription
+    (:func:`paper_repro.printed.torus.read_point`), evaluated exactly."""
+    from paper_repro.printed.torus import point_value
+
+    return lambda A, r, m: tuple(point_value(e, A.ch, A.sh, r, m) for e in xyz)
+
+
+def compare_point(label: str, formula=None) -> dict[str, int]:
+    """Number of (alpha, varrho, mu) cases where each coordinate of ``formula`` (default: the printed point
+    ``label`` parsed from its transcription) differs from the exact fit."""
+    if formula is None:
+        from paper_repro.printed.torus import printed_point
+
+        read_label, xyz = printed_point(f"sec6-torus-point-{label}")
+        if read_label != label:
+            raise ValueError(f"line sec6-torus-point-{label} prints {read_label}")
+        formula = printed_formula(xyz)
     k = index_of(2)[label]
     bad = {"x": 0, "y": 0, "z": 0}
     for t in TS_TORUS:
@@ -617,28 +877,46 @@ def compare_point(label: str, formula=None, corrected: dict | None = None) -> di
         for rho, mu in RHO_MU:
             fitted = torus_net(t, rho, mu)[k]
             printed = [fmpq(x) if isinstance(x, int) else x for x in formula(A, rho, mu)]
-            if corrected:
-                printed = [corrected[d](A, rho, mu) if d in corrected else printed[d] for d in range(3)]
             for d, ax in enumerate("xyz"):
                 bad[ax] += printed[d] != fitted[d]
     return bad
 
 
-def _point_check(label: str) -> LineResult:
-    bad = compare_point(label)
+def point_check(line_id: str) -> LineResult:
+    """The printed control point of line ``line_id`` (label and three coordinates parsed from its transcription)
+    against the exact fit of eq. toroidal_triangle at that label."""
+    from paper_repro.printed.torus import printed_point
+
+    label, xyz = printed_point(line_id)  # raises on anything unread (a blank line)
+    if label not in code_labels(2):
+        raise ValueError(f"{line_id}: {label} is no control point of order 2")
+    bad = compare_point(label, formula=printed_formula(xyz))
     holds = not any(bad.values())
     corrected_ok = None
-    if label in CORRECTED_EXACT:
-        corrected_ok = not any(compare_point(label, corrected=CORRECTED_EXACT[label]).values())
-    return LineResult(holds, corrected_ok, how="exact fit of eq. toroidal_triangle in the order-2 normalized basis vs "
-                      "the printed coordinates, exact at tan(alpha/4) in {1/9, 1/5, 1/3, 2/5, 1/2, 3/5, 3/4, 7/8} "
-                      "and (varrho, mu) in {(1, 0), (0, 1), (7/2, 5/3)} (the coordinates are linear in varrho, mu)",
-                      kind="exact-evidence",
-                      detail={"disagreeing_cases": bad, "cases": len(TS_TORUS) * len(RHO_MU)})
+    if not holds and _LINE[line_id].status == "erratum":  # the erratum's fix applied to the transcription
+        from paper_repro.printed.torus import read_point
+
+        fixed = corrected_text(line_id)
+        if fixed is None:
+            corrected_ok = False
+        else:
+            fixed_label, fixed_xyz = read_point(fixed)
+            corrected_ok = fixed_label == label and not any(compare_point(label, printed_formula(fixed_xyz)).values())
+    return LineResult(holds, corrected_ok, how="the printed point parsed from its transcription (paper_repro.printed."
+                      "torus) vs the exact fit of eq. toroidal_triangle in the order-2 normalized basis, exact at "
+                      "tan(alpha/4) in {1/9, 1/5, 1/3, 2/5, 1/2, 3/5, 3/4, 7/8} and (varrho, mu) in {(1, 0), (0, 1), "
+                      "(7/2, 5/3)} (the coordinates are linear in varrho, mu)", kind="exact-evidence",
+                      detail={"label": label, "disagreeing_cases": bad, "cases": len(TS_TORUS) * len(RHO_MU)})
 
 
-for _lab in PRINTED_EXACT:
-    line_check(f"sec6-torus-point-{_lab}")(lambda _lab=_lab: _point_check(_lab))
+def _register_point_checks() -> None:
+    from paper_repro.printed.torus import point_line_ids
+
+    for lid in point_line_ids():
+        line_check(lid)(lambda lid=lid: point_check(lid))
+
+
+_register_point_checks()
 
 
 def torus_quartic(x, y, z, rho, mu):
@@ -651,46 +929,113 @@ def torus_quartic_gradient(x, y, z, rho, mu):
     return (4 * p * x - 8 * rho * rho * x, 4 * p * y - 8 * rho * rho * y, 4 * p * z)
 
 
-def torus_xyz(cu, su, cv, sv, rho, mu):
-    return ((rho + mu * su) * cv, (rho + mu * su) * sv, mu * cu)
+_TORUS_LINE = re.compile(r"^\\mathbf\{t\}_\{(.*?)\}\\left\(\s*u,v\\right\)\s*=\\left\[\s*\\begin\{array\}\s*\[c\]"
+                         r"\{ccc\}%?\s*(.*?)\\end\{array\}\s*\\right\]\s*\^\{T\},~u\\in\\left\[(.*?),(.*?)\\right\]\s*,"
+                         r"~v\\in\\left\[(.*?),(.*?)\\right\]\s*$", re.S)
+
+
+def read_torus_parametrization() -> dict:
+    """eq. toroidal_triangle read from its transcription: ``{"params": subscript symbols, "xyz": (x, y, z) in u, v,
+    varrho, mu, "u": (lo, hi), "v": (lo, hi)}`` (sympy; ``ValueError`` if unread)."""
+    from paper_repro.printed.lines.sec6_latex import parse_expression, strip_comments
+
+    m = _TORUS_LINE.match(_LINE["sec6-torus-parametrization"].verbatim)
+    if not m:
+        raise ValueError("eq. toroidal_triangle: the transcription is not t_{..}(u,v) = [x y z]^T, u in [..], "
+                         "v in [..]")
+    params = tuple(parse_expression(x) for x in m.group(1).split(","))
+    cells = strip_comments(m.group(2)).split("&")
+    if len(cells) != 3:
+        raise ValueError(f"{len(cells)} coordinates in eq. toroidal_triangle")
+    return {"params": params, "xyz": tuple(parse_expression(c) for c in cells),
+            "u": (parse_expression(m.group(3)), parse_expression(m.group(4))),
+            "v": (parse_expression(m.group(5)), parse_expression(m.group(6)))}
+
+
+def torus_parameters() -> set[str]:
+    """The parameters of eq. toroidal_triangle (the subscript of t), read from its printed line, as LaTeX names."""
+    try:
+        return {"\\" + str(p) for p in read_torus_parametrization()["params"]}
+    except ValueError:
+        return set()
+
+
+def parsed_torus_point(tu: fmpq, tv: fmpq, rho: fmpq, mu: fmpq) -> list[fmpq]:
+    """The printed parametrization (read) at u = 4 atan(tu), v = 4 atan(tv), exactly."""
+
+    return parsed_torus_at(*trig_of(tu), *trig_of(tv), rho, mu)
+
+
+def parsed_torus_at(cu: fmpq, su: fmpq, cv: fmpq, sv: fmpq, rho: fmpq, mu: fmpq) -> list[fmpq]:
+    """The printed parametrization (read) at (cos u, sin u) = (cu, su), (cos v, sin v) = (cv, sv), exactly."""
+    from paper_repro.printed.lines.sec6_latex import MU, VARRHO, U, V, exact_value
+
+    xyz = read_torus_parametrization()["xyz"]
+    return [exact_value(e, {VARRHO: rho, MU: mu}, {U: (1, cu, su), V: (1, cv, sv)}, fmpq(0)) for e in xyz]
+
+
+def _in_read_domain(dom: dict, u: fmpq, v: fmpq, alpha: fmpq) -> bool:
+    from paper_repro.printed.lines.sec6_latex import ALPHA, U
+
+    def val(e):
+        e = sympy.sympify(e).subs({ALPHA: sympy.Rational(int(alpha.p), int(alpha.q)),
+                                   U: sympy.Rational(int(u.p), int(u.q))})
+        if not e.is_Rational:
+            raise ValueError(f"domain bound {e} names an unknown symbol")
+        return fmpq(int(e.p), int(e.q))
+
+    return val(dom["u"][0]) <= u <= val(dom["u"][1]) and val(dom["v"][0]) <= v <= val(dom["v"][1])
 
 
 @line_check("sec6-torus-parametrization")
 def torus_parametrization() -> LineResult:
-    """(u, v), u in [0, alpha], v in [0, alpha - u], maps into Omega^alpha by w = alpha - u - v and onto it;
-    the points lie on the torus (implicit quartic, exact)."""
-    alpha = rational_alpha(TS[1])
-    a = alpha.t
-    grid = [(a * fmpq(i, 6), None) for i in range(7)]
-    into = True
-    on_torus = True
-    for tu, _ in grid:
-        u_max_v = tq(a, tu)  # tan((alpha - u)/4): the printed upper bound of v
-        for j in range(5):
-            tv = u_max_v * fmpq(j, 4)
-            RationalPoints(alpha, (tu,), (tv,))  # raises if w < 0
-            cu, su = trig_of(tu)
-            cv, sv = trig_of(tv)
-            on_torus &= torus_quartic(*torus_xyz(cu, su, cv, sv, fmpq(7, 2), fmpq(5, 3)), fmpq(7, 2), fmpq(5, 3)) == 0
-    onto = True
-    pts = sample_rational_points(alpha, 10, seed=4)
-    for tu, tv in zip(pts.tu, pts.tv):  # every domain point: u in [0, alpha], v in [0, alpha - u]
-        onto &= 0 <= tu <= a and 0 <= tv <= tq(a, tu)
-    # a wider printed range (v in [0, alpha]) would leave Omega^alpha:
+    """eq. toroidal_triangle read from its transcription: (1) its points are those of the package's torus model
+    (:func:`paper_repro.surfaces.models.torus_xyz`, 40 digits) and lie on the implicit torus (exact); (2) the
+    printed parameter set {u in [lo, hi], v in [lo(u), hi(u)]} is Omega^alpha with w = alpha - u - v: equal on a
+    grid of (u, v) with alpha = 1 (the bounds are linear in alpha) inside Omega and just outside it."""
+    import mpmath
+
+    from paper_repro.surfaces.models import torus_xyz as model
+
     try:
-        RationalPoints(alpha, (a / 2,), (a * fmpq(9, 10),))
-        wider_leaves = False
-    except ValueError:
-        wider_leaves = True
-    return LineResult(into and onto and on_torus and wider_leaves, how="exact rational points of the parameter "
-                      "triangle (7 x 5 grid) and of Omega^alpha (10 random), tan(alpha/4) = 1/3; implicit torus",
-                      kind="exact-evidence", detail={"into": into, "onto": onto, "on_torus": on_torus})
+        dom = read_torus_parametrization()
+    except ValueError as exc:
+        return LineResult(False, how="eq. toroidal_triangle read from the transcription", detail={"unread": str(exc)})
+    rho, mu = fmpq(7, 2), fmpq(5, 3)
+    on_torus, same = True, True
+    with mpmath.workdps(40):
+        for tu in (fmpq(0), fmpq(1, 4), fmpq(2, 3), fmpq(-3, 2)):
+            for tv in (fmpq(1, 5), fmpq(3, 4), fmpq(-2, 7)):
+                p = parsed_torus_point(tu, tv, rho, mu)
+                on_torus &= torus_quartic(*p, rho, mu) == 0
+                want = model(4 * mpmath.atan(mpmath.mpf(int(tu.p)) / int(tu.q)),
+                             4 * mpmath.atan(mpmath.mpf(int(tv.p)) / int(tv.q)), mpmath.mpf(7) / 2, mpmath.mpf(5) / 3)
+                same &= all(abs(mpmath.mpf(int(x.p)) / int(x.q) - w) < mpmath.mpf(10) ** -30 for x, w in zip(p, want))
+    one = fmpq(1)
+    grid = [(fmpq(i, 8), fmpq(j, 8)) for i in range(-1, 10) for j in range(-1, 10)]
+    domain = all(_in_read_domain(dom, u, v, one) == (u >= 0 and v >= 0 and one - u - v >= 0) for u, v in grid)
+    return LineResult(on_torus and same and domain, how="the parametrization and its parameter set read from the "
+                      "transcription; exact points (rational quarter tangents) on the implicit torus and equal to the "
+                      "package's torus model (40 digits); the parameter set vs Omega^alpha on a 11 x 11 grid",
+                      kind="exact-evidence", detail={"on_torus": on_torus, "equals_model": same,
+                                                     "parameter_set_is_omega": domain})
 
 
 @line_check("sec6-torus-rho")
 def torus_rho() -> LineResult:
-    """The meridian v = const is the circle of radius mu about (varrho cos v, varrho sin v, 0), at distance
-    varrho from the origin, in the plane through the z axis."""
+    """"where $\\varrho>0$ is the distance from the origin to the center of the meridian circle" (read): on the
+    printed parametrization (read) the meridian v = const is the circle of radius mu about (varrho cos v, varrho sin v,
+    0), at distance varrho from the origin, in the plane through the z axis; and varrho > 0 is what the relation
+    read says."""
+    from paper_repro.printed.lines.sec6_latex import VARRHO, parse_relation, relation_holds
+
+    tex = _LINE["sec6-torus-rho"].verbatim
+    m = re.match(r"where \$([^$]*)\$ is the distance\s+from the origin to the center of the meridian circle$", tex)
+    if not m:
+        return LineResult(False, how="the line read from the transcription", detail={"unread": tex[:60]})
+    parts, ops = parse_relation(m.group(1))
+    positive = (all(relation_holds([x.subs(VARRHO, r) for x in parts], ops) for r in (fmpq(1, 3), 1, 7))
+                and not any(relation_holds([x.subs(VARRHO, r) for x in parts], ops) for r in (0, -1)))
     rho, mu = fmpq(7, 2), fmpq(5, 3)
     ok = True
     for tv in (fmpq(1, 5), fmpq(2, 3), fmpq(-3, 7)):
@@ -698,27 +1043,18 @@ def torus_rho() -> LineResult:
         centre = (rho * cv, rho * sv, fmpq(0))
         ok &= sum((c * c for c in centre), fmpq(0)) == rho * rho
         for tu in (fmpq(0), fmpq(1, 4), fmpq(3, 2), fmpq(-5, 2)):
-            cu, su = trig_of(tu)
-            p = torus_xyz(cu, su, cv, sv, rho, mu)
+            p = parsed_torus_point(tu, tv, rho, mu)
             ok &= sum(((p[k] - centre[k]) ** 2 for k in range(3)), fmpq(0)) == mu * mu
             ok &= p[0] * sv - p[1] * cv == 0  # in the meridian plane
-    return LineResult(ok, how="exact points of three meridians", kind="exact-evidence", detail={"meridians": 3})
-
-
-def greek(tex: str) -> set[str]:
-    """Greek-letter commands of a LaTeX fragment (``\\rho`` and ``\\varrho`` are distinct)."""
-    return {m.group(0) for m in re.finditer(r"\\(?:var)?(?:rho|mu|alpha|phi|psi)(?![a-zA-Z])", tex)}
-
-
-def torus_parameters() -> set[str]:
-    """The parameters of eq. toroidal_triangle, read from its printed line."""
-    return greek(_LINE["sec6-torus-parametrization"].verbatim) - {"\\alpha"}
+    return LineResult(ok and positive, how="the relation read from the transcription; exact points of three meridians "
+                      "of the printed parametrization", kind="exact-evidence", detail={"meridians": 3,
+                                                                                        "varrho_positive": positive})
 
 
 def horn_torus_singular(rho: fmpq) -> bool:
     """At mu = varrho the meridian u = 3pi/2 hits the axis: t = 0 for every v and the quartic is singular there."""
-    cu, su = fmpq(0), fmpq(-1)
-    pts = {torus_xyz(cu, su, *trig_of(tv), rho, rho) for tv in (fmpq(1, 3), fmpq(2), fmpq(-1, 5))}
+    pts = {tuple(parsed_torus_at(fmpq(0), fmpq(-1), *trig_of(tv), rho, rho))
+           for tv in (fmpq(1, 3), fmpq(2), fmpq(-1, 5))}
     return pts == {(0, 0, 0)} and torus_quartic(0, 0, 0, rho, rho) == 0 and \
         set(torus_quartic_gradient(fmpq(0), fmpq(0), fmpq(0), rho, rho)) == {0}
 
@@ -728,32 +1064,72 @@ def ring_torus_regular(rho: fmpq, mu: fmpq) -> bool:
     return 0 < mu < rho and torus_quartic(0, 0, 0, rho, mu) > 0 and rho - mu > 0
 
 
+_MU_RANGE = re.compile(r"^of radius \$\\mu\\in\\left([(\[])(.*?),(.*?)\\right([)\]])\$$", re.S)
+
+
+def mu_range_is_ring(tex: str | None) -> bool:
+    """The range of mu in ``tex`` (parsed: brackets and end points; each symbol must be a parameter of eq.
+    toroidal_triangle) is exactly the set of mu giving a ring torus, tested at mu = k/10 varrho, k = 0..14."""
+    from paper_repro.printed.lines.sec6_latex import VARRHO, parse_expression
+
+    m = _MU_RANGE.match(tex or "")
+    if not m:
+        return False
+    lo, hi = parse_expression(m.group(2)), parse_expression(m.group(3))
+    params = {str(p) for p in read_torus_parametrization()["params"]}
+    if not {str(s) for s in lo.free_symbols | hi.free_symbols} <= params:
+        return False
+    rho = fmpq(7, 2)
+
+    def num(e):
+        e = e.subs(VARRHO, sympy.Rational(7, 2))
+        if not e.is_Rational:
+            raise ValueError(f"range end {e} is not a number")
+        return fmpq(int(e.p), int(e.q))
+
+    a, b = num(lo), num(hi)
+    for k in range(15):
+        mu = rho * fmpq(k, 10)
+        inside = (a < mu if m.group(1) == "(" else a <= mu) and (mu < b if m.group(4) == ")" else mu <= b)
+        if inside != ring_torus_regular(rho, mu):
+            return False
+    return True
+
+
 @line_check("sec6-torus-mu-range")
 def torus_mu_range() -> LineResult:
+    """"of radius $\\mu\\in\\left(0,\\rho\\right]$" (read) against the ring tori of eq. toroidal_triangle (read):
+    \\rho is no parameter of it, and the closed end mu = varrho is the horn torus (singular point, exact); the
+    erratum's fix (\\varrho, open) applied to the transcription gives exactly the ring tori."""
     line = _LINE["sec6-torus-mu-range"].verbatim
-    params = torus_parameters()
-    symbol_ok = greek(line) <= params
-    closed = line.rstrip("$").endswith("\\right]")
-    rho = fmpq(7, 2)
-    endpoint_horn = horn_torus_singular(rho)
-    printed_holds = symbol_ok and not (closed and endpoint_horn)
-    corrected = ({"\\mu", "\\varrho"} <= params
-                 and all(ring_torus_regular(rho, rho * fmpq(k, 10)) for k in range(1, 10))
-                 and not ring_torus_regular(rho, rho))
-    return LineResult(printed_holds, corrected, how="symbols of the range vs the parameters of eq. toroidal_triangle; "
-                      "exact horn-torus singularity at mu = varrho; ring condition at mu = k/10 varrho",
-                      kind="exact-evidence",
-                      detail={"range_symbols": sorted(greek(line)), "parametrization_symbols": sorted(params),
-                              "closed_at_varrho": closed, "mu_equal_varrho_singular": endpoint_horn})
+    printed_holds = mu_range_is_ring(line)
+    corrected = mu_range_is_ring(corrected_text("sec6-torus-mu-range"))
+    return LineResult(printed_holds, corrected, how="the range read from the transcription (and with the erratum's fix)"
+                      " vs ring tori of the printed parametrization at mu = k/10 varrho, k = 0..14; exact horn-torus "
+                      "singularity at mu = varrho", kind="exact-evidence",
+                      detail={"parametrization_symbols": sorted(torus_parameters()),
+                              "mu_equal_varrho_singular": horn_torus_singular(fmpq(7, 2))})
+
+
+def torus_order_word() -> int | None:
+    m = re.search(r"can exactly be described by a (\w+) order triangular\s+trigonometric patch defined by control "
+                  r"points$", _LINE["sec6-torus-order2"].verbatim)
+    return ORDINALS.get(m.group(1)) if m and "(\\ref{toroidal_triangle})" in _LINE["sec6-torus-order2"].verbatim \
+        else None
 
 
 @line_check("sec6-torus-order2")
 def torus_order2() -> LineResult:
-    ok = all(in_span(exact_torus(rho, mu), 2, rational_alpha(t)) for t in TS for rho, mu in RHO_MU[2:])
-    not_order1 = not in_span(exact_torus(fmpq(7, 2), fmpq(5, 3)), 1, rational_alpha(TS[1]))
-    return LineResult(ok and not_order1, how="exact fit of the torus in the order-2 basis (verified at further "
-                      "points); the order-1 basis does not contain it", kind="exact-evidence",
-                      detail={"order_2_fits": ok, "order_1_fits": not not_order1})
+    """The order read from the transcription ("second") describes the torus exactly: exact fits in that order (verified
+    at further points) at four alpha; the order below it does not contain the torus."""
+    n = torus_order_word()
+    if n is None:
+        return LineResult(False, how="the order read from the transcription", detail={"unread": True})
+    ok = all(in_span(exact_torus(rho, mu), n, rational_alpha(t)) for t in TS for rho, mu in RHO_MU[2:])
+    lower = n > 1 and in_span(exact_torus(fmpq(7, 2), fmpq(5, 3)), n - 1, rational_alpha(TS[1]))
+    return LineResult(ok, how="the order read from the transcription; exact fit of the torus in that order's basis "
+                      "(verified at further points), tan(alpha/4) in {1/5, 1/3, 1/2, 3/4}", kind="exact-evidence",
+                      detail={"order": n, "fits": ok, "order_below_fits": lower})
 
 
 def reversed_edge_net(net, n: int, color: str) -> list:
@@ -765,61 +1141,162 @@ def edge_net(net, n: int, color: str) -> list:
     return list(reversed(reversed_edge_net(net, n, color)))
 
 
+def _values_and_derivatives(net, n: int, alpha: RationalAngle, pts: RationalPoints, dirs, rational: bool):
+    """Exact point and directional derivatives (one per direction) of a patch at each point; ``rational``: the net
+    is homogeneous (last coordinate the weight) and the point is X/W."""
+    vals = evaluate_normalized(n, alpha, pts, "exact")
+    ders = [basis_derivative(n, alpha, pts, d, "exact") for d in dirs]
+    out = []
+    for p in range(len(pts)):
+        h = combine(vals[p:p + 1], net)[0]
+        dh = [combine(der[p:p + 1], net)[0] for der in ders]
+        if rational:
+            w, x = h[-1], h[:-1]
+            out.append(([c / w for c in x], [[(dd[k] * w - x[k] * dd[-1]) / (w * w) for k in range(len(x))]
+                                             for dd in dh]))
+        else:
+            out.append((h, dh))
+    return out
+
+
+def c1_across(a: tuple, b: tuple, n: int, alpha: RationalAngle, rational: bool = False) -> bool:
+    """Two patches ``(net, points, directions)`` agree at the points of their shared edge together with their first
+    derivatives along the directions (the same global directions d/dU, d/dV written in each patch's (u, v, w)):
+    C0 and C1 in the common parametrization (U, V), hence G1 (exact)."""
+    return _values_and_derivatives(a[0], n, alpha, a[1], a[2], rational) == \
+        _values_and_derivatives(b[0], n, alpha, b[1], b[2], rational)
+
+
+def torus_continuity(n: int, alpha: RationalAngle, lower, upper, nxt) -> dict[str, bool]:
+    """C1 (in the phase parametrization (U, V)) across the diagonal of a square (lower w = 0 edge = upper w = 0 edge)
+    and across the edge U = alpha (upper u = 0 edge = the next square's lower u = 0 edge), at 3 points each."""
+    a = alpha.t
+    ss = (a / 5, a / 2, a * fmpq(4, 5))
+    down, up = ((1, 0, -1), (0, 1, -1)), ((-1, 0, 1), (0, -1, 1))
+    diag = c1_across((lower, RationalPoints(alpha, ss, tuple(tq(a, s) for s in ss)), down),
+                     (upper, RationalPoints(alpha, tuple(tq(a, s) for s in ss), ss), up), n, alpha)
+    side = c1_across((upper, RationalPoints(alpha, (fmpq(0),) * 3, ss), up),
+                     (nxt, RationalPoints(alpha, (fmpq(0),) * 3, tuple(tq(a, s) for s in ss)), down), n, alpha)
+    return {"diagonal_C1": diag, "square_edge_C1": side}
+
+
 @line_check("sec6-torus-joined")
 def torus_joined() -> LineResult:
-    """Neighbouring toroidal triangles (each fitted exactly, so each reproduces the smooth torus) share their
-    boundary control polygons: the diagonal of a square (w = 0 edges, reversed) and the edge U = alpha between
-    the upper triangle of one square and the lower triangle of the next (u = 0 edges, reversed)."""
+    """"several triangular trigonometric patches of order $2$ that are smoothly joined in order to form a part of a
+    ring torus" (order read from the transcription): neighbouring toroidal triangles, each fitted exactly in that
+    order (so each reproduces the smooth torus), share their boundary control polygons: the diagonal of a square
+    (w = 0 edges, reversed) and the edge U = alpha between the upper triangle of one square and the lower triangle of
+    the next (u = 0 edges, reversed)."""
+    tex = _LINE["sec6-torus-joined"].verbatim
+    m = re.search(r"illustrates several triangular trigonometric\s+patches of order \$(\d+)\$ that are smoothly "
+                  r"joined in order to form a part of a ring torus\.$", tex)
+    if not m or "Fig.\\ \\ref{fig:torus}" not in tex:
+        return LineResult(False, how="the line read from the transcription", detail={"unread": tex[:60]})
+    n = int(m.group(1))
     t = TS[1]
     alpha = rational_alpha(t)
     rho, mu = fmpq(7, 2), fmpq(5, 3)
     ph = trig_of(t)  # phase alpha
-    lower = fit_exact(exact_torus(rho, mu), 2, alpha)
-    upper = fit_exact(exact_torus(rho, mu, upper=True, alpha=alpha), 2, alpha)
-    nxt = fit_exact(exact_torus(rho, mu, phi=ph), 2, alpha)
-    diag = edge_net(lower, 2, "b") == reversed_edge_net(upper, 2, "b")
-    side = edge_net(upper, 2, "g") == reversed_edge_net(nxt, 2, "g")
-    return LineResult(diag and side, how="exact fits of three neighbouring triangles, tan(alpha/4) = 1/3",
-                      kind="exact-evidence", detail={"diagonal_join": diag, "square_edge_join": side})
+    try:
+        lower = fit_exact(exact_torus(rho, mu), n, alpha)
+        upper = fit_exact(exact_torus(rho, mu, upper=True, alpha=alpha), n, alpha)
+        nxt = fit_exact(exact_torus(rho, mu, phi=ph), n, alpha)
+    except ValueError:
+        return LineResult(False, how=f"exact fits of order {n}", detail={"order": n, "fits": False})
+    diag = edge_net(lower, n, "b") == reversed_edge_net(upper, n, "b")
+    side = edge_net(upper, n, "g") == reversed_edge_net(nxt, n, "g")
+    ring = ring_torus_regular(rho, mu)
+    smooth = torus_continuity(n, alpha, lower, upper, nxt)
+    return LineResult(diag and side and ring and all(smooth.values()), how="the order read from the transcription; "
+                      "exact fits of three neighbouring triangles in that order, tan(alpha/4) = 1/3, varrho = 7/2 > mu "
+                      "= 5/3 (ring): shared boundary control polygons (C0) and equal first derivatives in the phase "
+                      "parametrization (U, V) at 3 points of each shared edge (C1, hence G1)", kind="exact-evidence",
+                      detail={"order": n, "diagonal_join": diag, "square_edge_join": side, **smooth,
+                              "continuity": "C1 in (U, V), G1" if all(smooth.values()) else "not C1"})
+
+
+_SETTINGS = re.compile(r"^with settings \$([^$]*)\$, \$([^$]*)\$ and \$([^$]*)\$\.$")
+
+
+def torus_settings_ring(tex: str | None) -> bool:
+    """The caption's settings (parsed, in order) name parameters of eq. toroidal_triangle (read) or alpha, and give a
+    ring torus (mu > 0, varrho > mu: exact for the algebraic number) with alpha in the range of sec6-alpha-range
+    (read)."""
+    from paper_repro.printed.lines.sec6_latex import ALPHA, MU, VARRHO, parse_relation
+
+    m = _SETTINGS.match(tex or "")
+    if not m:
+        return False
+    params = set(read_torus_parametrization()["params"]) | {ALPHA}
+    values: dict = {}
+    for part in m.groups():
+        (lhs, rhs), ops = parse_relation(part)
+        if ops != ["="] or lhs not in params or lhs in values:
+            return False
+        values[lhs] = sympy.nsimplify(rhs.subs(values))
+    if set(values) != {MU, VARRHO, ALPHA} or any(v.free_symbols for v in values.values()):
+        return False
+    lo, hi = read_open_interval(_LINE["sec6-alpha-range"].verbatim, "\\alpha")
+    return bool(values[MU] > 0 and values[VARRHO] > values[MU] and lo < values[ALPHA] < hi)
 
 
 @line_check("sec6-fig-torus-settings")
 def fig_torus_settings() -> LineResult:
-    line = _LINE["sec6-fig-torus-settings"].verbatim
-    params = torus_parameters()
-    symbols_ok = greek(line) - {"\\alpha"} <= params
-    # golden ratio g = (1 + sqrt 5)/2 > 1 (g^2 = g + 1, g > 0): varrho = g mu > mu -- a ring torus if read as varrho
-    ring = 5 > 1  # (1 + sqrt 5)/2 > 1  <=>  sqrt 5 > 1  <=>  5 > 1
-    alpha_ok = True  # pi/2 in (0, pi)
-    return LineResult(symbols_ok, ring and alpha_ok and {"\\varrho", "\\mu"} <= params,
-                      how="symbols of the caption vs the parameters of eq. toroidal_triangle; ring condition",
-                      kind="exact-evidence", detail={"caption_symbols": sorted(greek(line)),
-                                                     "parametrization_symbols": sorted(params)})
+    """Caption of Fig. torus: "settings $\\mu=3$, $\\rho = \\frac{1+\\sqrt{5}}{2}\\mu$ and
+    $\\alpha=\\frac{\\pi}{2}$" (parsed): \\rho is no parameter of eq. toroidal_triangle; with the erratum's fix
+    (\\varrho) the settings give a ring torus (varrho/mu = golden ratio > 1) and alpha in (0, pi)."""
+    printed = torus_settings_ring(_LINE["sec6-fig-torus-settings"].verbatim)
+    corrected = torus_settings_ring(corrected_text("sec6-fig-torus-settings"))
+    return LineResult(printed, corrected, how="the settings parsed from the transcription (and with the erratum's "
+                      "fix) vs the parameters of eq. toroidal_triangle (read), ring condition exact",
+                      kind="exact-evidence", detail={"parametrization_symbols": sorted(torus_parameters())})
 
 
 # --- Section 6.2: rational patches ---------------------------------------------------------------------------
-def _rows_read(ids: Sequence[str], n: int, override: dict[str, str] | None = None, **mode: bool) -> list[str]:
-    """Control point names (lower case) of the functions named by the sums of the lines ``ids``, read from their
-    transcriptions (:func:`paper_repro.printed.lines.read.sum_terms`)."""
-    from paper_repro.printed.lines.read import sum_terms, term_indices
-
-    texts = {k: _LINE[k].verbatim for k in ids}
-    texts.update({k: v for k, v in (override or {}).items() if k in texts})
-    return [f"{c.lower()}_{{{2 * n},{2 * n - i},{j}}}" for k in ids
-            for c, i, j in term_indices(sum_terms(texts[k], **mode), n=n)]
-
-
 @line_check("sec6-weights-set")
 def weights_set(verbatim: str | None = None) -> LineResult:
-    """The weights rho_{2n,n,n} and the three printed sets of weights (read from the transcription; it used the
-    patch's terms instead) name each function of T_{2n} once, n = 1..12."""
-    from paper_repro.printed.lines.read import constant_sets
+    """The weights rho_{2n,n,n} and the three printed sets of weights (each set's bounds read by
+    :func:`paper_repro.printed.latex_math.index_set`, the lone weight by :func:`~paper_repro.printed.latex_math.parse`)
+    name each function of T_{2n} once, n = 1..12."""
+    from paper_repro.printed.latex_math import index_set, parse
 
     tex = _LINE["sec6-weights-set"].verbatim if verbatim is None else verbatim
-    names = {n: [f"{c.lower()}_{{{2 * n},{2 * n - i},{j}}}" for c, i, j in constant_sets(tex, n)] for n in NS}
-    ok = all(matches_basis(v, n) for n, v in names.items())
-    return LineResult(ok, how="the printed weights read from the transcription vs T_{2n}, n = 1..12",
-                      kind="exhaustive", detail={"sizes_n_1_2_3": [len(names[n]) for n in (1, 2, 3)]})
+    parts = [p for p in re.split(r",(?=\\left\\\{)|%\n,", tex.replace("%\n,", ",")) if p.strip(" %\n")]
+    sets: list[tuple] = []
+    try:
+        for part in parts:
+            m = re.match(r"\s*\\left\\\{\s*\\(rho|gamma|beta)_\{2n,2n-i,j\}\\right\\\}", part)
+            if m:
+                (jv, jlo, jhi), (iv, ilo, ihi) = index_set(part)
+                if (str(jv), str(iv)) != ("j", "i"):
+                    raise ValueError(f"index set over {jv}, {iv}")
+                sets.append((_WEIGHT_OF[m.group(1)], jlo, jhi, ilo, ihi))
+            else:
+                w = parse(part.strip(" ,%\n"))
+                if type(w).__name__ not in _WEIGHT_OF or len(w.args) != 3:
+                    raise ValueError(f"not a weight: {part!r}")
+                sets.append((_WEIGHT_OF[type(w).__name__], w.args))
+    except ValueError as exc:
+        return LineResult(False, how="the weights read from the transcription", detail={"unread": str(exc)[:80]})
+
+    def names(n: int) -> list[str]:
+        out = []
+        for item in sets:
+            if len(item) == 2:
+                a, b, c = (sympy.sympify(x).subs(N_SYM, n) for x in item[1])
+                out.append(f"{item[0].lower()}_{{{a},{b},{c}}}")
+                continue
+            colour, jlo, jhi, ilo, ihi = item
+            J = sympy.Symbol("j")
+            for j in range(int(jlo.subs(N_SYM, n)), int(jhi.subs(N_SYM, n)) + 1):
+                for i in range(int(ilo.subs({N_SYM: n, J: j})), int(ihi.subs({N_SYM: n, J: j})) + 1):
+                    out.append(f"{colour.lower()}_{{{2 * n},{2 * n - i},{j}}}")
+        return out
+
+    got = {n: names(n) for n in NS}
+    ok = all(matches_basis(v, n) for n, v in got.items())
+    return LineResult(ok, how="the printed weights read from the transcription (printed.latex_math) vs T_{2n}, "
+                      "n = 1..12", kind="exhaustive", detail={"sizes_n_1_2_3": [len(got[n]) for n in (1, 2, 3)]})
 
 
 def tau_values(n: int, alpha: RationalAngle, weights: Sequence[fmpq], pts: RationalPoints) -> list[fmpq]:
@@ -838,15 +1315,53 @@ def rank1_counterexample(n: int = 2) -> dict:
     return {"sum": sum(w, fmpq(0)), "min_weight": min(w), "tau_on_edge_u0": tau_values(n, alpha, w, edge)}
 
 
+def _rank1_relation(tex: str):
+    from paper_repro.printed.latex_math import parse_relation
+
+    rel = parse_relation(tex.strip().rstrip(",."))
+    if rel.conditions or len(rel.ops) != 1:
+        raise ValueError(f"not one relation: {rel.ops}")
+    return rel
+
+
+def rank1_sum(tex: str):
+    """The printed sum of the weights (left-hand side of the relation, read by printed.latex_math)."""
+    return _rank1_relation(tex).parts[0]
+
+
+def rank1_relation(tex: str):
+    """The relation that closes the printed sum of weights (``\\neq0``, read by printed.latex_math): a test
+    ``f(sum) -> bool`` (``None`` if unread)."""
+    from paper_repro.printed.lines.sec6_latex import relation_holds
+
+    try:
+        rel = _rank1_relation(tex)
+    except ValueError:
+        return None
+    if rel.parts[1].free_symbols:
+        return None
+    return lambda total: relation_holds([sympy.Rational(int(total.p), int(total.q)), rel.parts[1]], rel.ops)
+
+
 @line_check("sec6-weights-rank1")
 def weights_rank1(override: dict[str, str] | None = None) -> LineResult:
-    """The sum's index sets (read from the transcription) are right, but a non-zero sum of non-negative weights lets
-    tau vanish on Omega^alpha."""
-    sets_ok = all(matches_basis(_rows_read(("sec6-weights-rank1",), n, override, bare=True), n) for n in NS)
+    """The sum's index sets and its relation (``\\neq0``) are read from the transcription.  Printed: non-negative
+    weights whose sum satisfies the relation define q on Omega^alpha -- false: rho_{2n,n,n} = rho_{2n,2n,0} = 1
+    (sum 2) lets tau vanish on the edge u = 0.  Corrected: positive weights (then tau >= min weight > 0, exact at
+    sampled points) -- and every sum of positive weights (2, 1, 1/2) satisfies the relation read."""
+    tex = (override or {}).get("sec6-weights-rank1", _LINE["sec6-weights-rank1"].verbatim)
+    relation = rank1_relation(tex)
+    if relation is None:
+        return LineResult(False, how="the relation read from the transcription", detail={"unread": tex[-30:]})
+    try:
+        total = rank1_sum(tex)
+        sets_ok = all(matches_basis(row_labels(total, n, "weights"), n) for n in NS_ROWS)
+    except ValueError:
+        sets_ok = False
     ce = rank1_counterexample()
-    vanishes = ce["sum"] != 0 and ce["min_weight"] >= 0 and any(v == 0 for v in ce["tau_on_edge_u0"])
+    vanishes = relation(ce["sum"]) and ce["min_weight"] >= 0 and any(v == 0 for v in ce["tau_on_edge_u0"])
     printed_holds = sets_ok and not vanishes
-    positive = True
+    positive = all(relation(total) for total in (fmpq(2), fmpq(1), fmpq(1, 2)))
     for n in (1, 2, 3):
         alpha = rational_alpha(TS[1])
         rng = _rng(70 + n)
@@ -856,10 +1371,10 @@ def weights_rank1(override: dict[str, str] | None = None) -> LineResult:
         vals = tau_values(n, alpha, w, pts) + [tau_values(n, alpha, w, c)[0] for c in corner]
         positive &= all(v >= min(w) for v in vals)
     return LineResult(printed_holds, sets_ok and positive,
-                      how="exact tau for weights rho_{4,2,2} = rho_{4,4,0} = 1 (others 0) on the edge u = 0; "
-                      "random positive weights, n = 1, 2, 3 (tau >= min weight at interior points and corners)",
-                      kind="exact-evidence", detail={"weight_sum": str(ce["sum"]),
-                                                     "tau_on_edge_u0": [str(v) for v in ce["tau_on_edge_u0"]]})
+                      how="the sum and its relation read; exact tau for weights rho_{4,2,2} = rho_{4,4,0} = 1 (others "
+                      "0) on the edge u = 0; random positive weights, n = 1, 2, 3 (tau >= min weight at interior "
+                      "points and corners)", kind="exact-evidence",
+                      detail={"weight_sum": str(ce["sum"]), "tau_on_edge_u0": [str(v) for v in ce["tau_on_edge_u0"]]})
 
 
 def rational_eval(n: int, alpha: RationalAngle, net, weights, pts: RationalPoints) -> list[list[fmpq]]:
@@ -875,14 +1390,18 @@ def rational_eval(n: int, alpha: RationalAngle, net, weights, pts: RationalPoint
 
 @line_check("sec6-rational-patch")
 def rational_patch(override: dict[str, str] | None = None) -> LineResult:
-    """The terms of eq. rational_patch (weight, control point and function of each, read from the transcriptions of
-    its three rows) are the delta_n functions of T_{2n}; with equal weights the rational patch is the polynomial
-    patch (exact)."""
+    """The terms of eq. rational_patch (weight, control point and function of each, its three rows read by
+    printed.latex_math, sums written out, n = 1..8) are the delta_n functions of T_{2n}, each divided by
+    tau-bar_n^alpha(u,v,w) (subscript and arguments read); with equal weights the rational patch is the polynomial
+    patch (exact); the order range read from "of order $n\\geq1$" is the orders with a patch."""
     rows = ("sec6-rational-row-1", "sec6-rational-row-2", "sec6-rational-row-3")
     try:
-        sets_ok = all(matches_basis(_rows_read(rows, n, override, rational=True), n) for n in NS)
+        sets_ok = all(matches_basis(rows_labels(rows, n, "rational", override,
+                                                lhs=sympy.Function("q_vec")(N_SYM, UVW)), n) for n in NS_ROWS)
     except ValueError as exc:
         return LineResult(False, how="the rows read from the transcriptions", detail={"unread": str(exc)})
+    quotients = sets_ok
+    order_ok = order_range_ok("sec6-rational-order")
     alpha = rational_alpha(TS[2])
     same = True
     for n in (1, 2):
@@ -890,23 +1409,73 @@ def rational_patch(override: dict[str, str] | None = None) -> LineResult:
         pts = sample_rational_points(alpha, 3, seed=n)
         poly = combine(evaluate_normalized(n, alpha, pts, "exact"), net)
         same &= rational_eval(n, alpha, net, [fmpq(5, 2)] * delta(n), pts) == poly
-    return LineResult(sets_ok and same, how="enumeration n = 1..12; exact evaluation with equal weights, n = 1, 2",
-                      kind="exact-evidence", detail={"equal_weights_give_polynomial_patch": same})
+    return LineResult(sets_ok and quotients and order_ok and same, how="the rows read, n = 1..8; the denominators "
+                      "tau-bar_n^alpha(u,v,w) read; exact evaluation with equal weights, n = 1, 2",
+                      kind="exact-evidence",
+                      detail={"equal_weights_give_polynomial_patch": same, "quotients_read": quotients,
+                              "order_range_read": order_ok})
+
+
+_TAU_ROWS = ("sec6-tau-row-1", "sec6-tau-row-2")
+
+
+def _tau_sets(texts: dict[str, str], strict_row_2: bool) -> bool:
+    """The two rows of tau-bar (read by printed.latex_math) name T_{2n} once each, n = 1..8 (row 1 always with the
+    arguments (u,v,w); row 2 with them only if ``strict_row_2``)."""
+    lhs = sympy.Function("taubar")(N_SYM, UVW)
+    rows = parse_rows(_TAU_ROWS, texts)
+    if rows[0][0] != lhs or rows[1][0] is not None:
+        raise ValueError(f"left-hand sides {rows[0][0]}, {rows[1][0]}")
+    return all(matches_basis(row_labels(rows[0][1], n, "tau") +
+                             row_labels(rows[1][1], n, "tau", strict_arguments=strict_row_2), n) for n in NS_ROWS)
+
+
+def _tau_unit() -> bool:
+    alpha = rational_alpha(TS[0])
+    return all(v == 1 for n in (1, 2, 3)
+               for v in tau_values(n, alpha, [fmpq(1)] * delta(n), sample_rational_points(alpha, 3, seed=n)))
 
 
 @line_check("sec6-tau-index-sets")
 def tau_index_sets(override: dict[str, str] | None = None) -> LineResult:
-    """tau's sums over l = 0..n-1, k = l..2n-1-l (read from the transcriptions of its rows) name T_{2n}; with unit
-    weights tau = 1 (exact)."""
+    """tau's sums over l = 0..n-1, k = l..2n-1-l (read from the transcriptions of its rows) name T_{2n}; row 1 writes
+    tau-bar_n^alpha(u,v,w) and each of its functions with the arguments (u,v,w); with unit weights tau = 1 (exact)."""
+    texts = {k: (override or {}).get(k, _LINE[k].verbatim) for k in _TAU_ROWS}
     try:
-        sets = all(matches_basis(_rows_read(("sec6-tau-row-1", "sec6-tau-row-2"), n, override), n) for n in NS)
+        sets = _tau_sets(texts, strict_row_2=False)
     except ValueError as exc:
         return LineResult(False, how="the rows read from the transcriptions", detail={"unread": str(exc)})
-    alpha = rational_alpha(TS[0])
-    one = all(v == 1 for n in (1, 2, 3)
-              for v in tau_values(n, alpha, [fmpq(1)] * delta(n), sample_rational_points(alpha, 3, seed=n)))
-    return LineResult(sets and one, how="enumeration n = 1..12; exact tau with unit weights, n = 1, 2, 3",
+    one = _tau_unit()
+    return LineResult(sets and one, how="the rows read by printed.latex_math, sums written out vs T_{2n}, n = 1..8 "
+                      "(row 1: every function of (u,v,w)); exact tau with unit weights, n = 1, 2, 3",
                       kind="exact-evidence", detail={"unit_weights_tau_is_1": one})
+
+
+@line_check("sec6-tau-row-2")
+def tau_row_2() -> LineResult:
+    """Row 2 of tau-bar (read): its index sets with row 1 name T_{2n} (n = 1..12), but its G-bar term has no
+    arguments (u,v,w) while every other function of tau-bar and of eq. rational_patch has them; the erratum's fix
+    (the arguments added) applied to the transcription gives a row whose every function has them."""
+    texts = {k: _LINE[k].verbatim for k in _TAU_ROWS}
+    try:
+        sets = _tau_sets(texts, strict_row_2=False)
+    except ValueError as exc:
+        return LineResult(False, how="the rows read from the transcriptions", detail={"unread": str(exc)})
+    try:
+        printed = _tau_sets(texts, strict_row_2=True)
+    except ValueError:
+        printed = False
+    corrected = None
+    if not printed:
+        fixed = corrected_text("sec6-tau-row-2")
+        try:
+            corrected = fixed is not None and sets and _tau_sets({**texts, "sec6-tau-row-2": fixed}, True) and \
+                _tau_unit()
+        except ValueError:
+            corrected = False
+    return LineResult(sets and printed, corrected, how="the rows read by printed.latex_math (and row 2 with the "
+                      "erratum's fix): index sets vs T_{2n}, n = 1..8, and the arguments (u,v,w) of every function",
+                      kind="exact-evidence", detail={"index_sets": sets})
 
 
 def quotient_matrix(n: int, alpha: RationalAngle, weights, pts: RationalPoints) -> list[list[fmpq]]:
@@ -918,20 +1487,42 @@ def quotient_matrix(n: int, alpha: RationalAngle, weights, pts: RationalPoints) 
     return rows
 
 
+def quotient_properties(n: int, weights: Sequence[fmpq], seed: int) -> tuple[bool, bool]:
+    """(normalized, linearly independent) of the quotients w_k X_k / tau at delta_n rational points (exact)."""
+    alpha = rational_alpha(TS[1])
+    rows = quotient_matrix(n, alpha, weights, sample_rational_points(alpha, delta(n), seed=seed))
+    return all(sum(r, fmpq(0)) == 1 for r in rows), rank(rows) == delta(n)
+
+
 @line_check("sec6-q-normalized-independent")
 def q_normalized_independent() -> LineResult:
-    alpha = rational_alpha(TS[1])
-    ok, ranks = True, {}
+    """"Q-bar_{2n}^alpha is also normalized and linearly independent" (the properties read from the transcription) for
+    the weights of Section 6.2 (non-negative, non-zero sum): a zero weight makes its quotient the zero function, so
+    the system is dependent (exact rank); with positive weights (the correction) it is normalized and independent
+    (exact, n = 1, 2, 3)."""
+    tex = _LINE["sec6-q-normalized-independent"].verbatim
+    m = re.search(r"i\.e\., \$\\overline\{Q\}_\{2n\}\^\{\\alpha\}\$ is also\s+((?:not )?normalized) and "
+                  r"linearly ((?:in)?dependent)\.$", tex)
+    if not m or "inherits advantageous properties of $\\overline{T}%\n_{2n}^{\\alpha}$" not in tex or not has_words(
+            tex, "Quotient functions in (\\ref{rational_patch}) determine the constrained trivariate rational "
+            "trigonometric function system $\\overline{Q}_{2n}^{\\alpha}$ of order $n$ that"):
+        return LineResult(False, how="the properties read from the transcription", detail={"unread": tex[-60:]})
+    want = (m.group(1) == "normalized", m.group(2) == "independent")
+    printed, corrected, ranks = True, True, {}
     for n in (1, 2, 3):
         rng = _rng(80 + n)
         w = [fmpq(int(rng.integers(1, 9)), int(rng.integers(1, 4))) for _ in range(delta(n))]
-        rows = quotient_matrix(n, alpha, w, sample_rational_points(alpha, delta(n), seed=90 + n))
-        ok &= all(sum(r, fmpq(0)) == 1 for r in rows)
-        ranks[n] = rank(rows)
-        ok &= ranks[n] == delta(n)
-    return LineResult(ok, how="exact quotient functions with random positive weights at delta_n rational points: "
-                      "row sums and rank, n = 1, 2, 3", kind="exact-evidence",
-                      detail={"rank_n_1_2_3": [ranks[n] for n in (1, 2, 3)]})
+        zero = list(w)
+        zero[index_of(n)[f"r_{{{2 * n},{2 * n},0}}"]] = fmpq(0)  # non-negative, non-zero sum
+        printed &= quotient_properties(n, zero, 90 + n) == want and quotient_properties(n, w, 90 + n) == want
+        corrected &= quotient_properties(n, w, 90 + n) == want
+        ranks[n] = rank(quotient_matrix(n, rational_alpha(TS[1]), zero,
+                                        sample_rational_points(rational_alpha(TS[1]), delta(n), seed=90 + n)))
+    return LineResult(printed, None if printed else corrected,
+                      how="exact quotient functions at delta_n rational points, tan(alpha/4) = 1/3: random positive "
+                      "weights, and the same with rho_{2n,2n,0} = 0; row sums and rank, n = 1, 2, 3",
+                      kind="exact-evidence", detail={"rank_with_a_zero_weight_n_1_2_3": [ranks[n] for n in (1, 2, 3)],
+                                                     "delta_n": [delta(n) for n in (1, 2, 3)]})
 
 
 PROJECTIVE = [[fmpq(2), fmpq(1, 3), fmpq(0), fmpq(1)], [fmpq(-1), fmpq(1), fmpq(1, 2), fmpq(0)],
@@ -961,57 +1552,108 @@ def projective_holds(M, n: int = 2, seed: int = 12) -> bool:
 
 @line_check("sec6-projective")
 def projective() -> LineResult:
+    """"closed for the projective transformation of its control points, i.e., the patch determined by the
+    projectively transformed control points coincides with the pointwisely transformed patch" (read) vs exact
+    patches (the weights multiplied by the homogeneous coordinate of each image point, positive here)."""
+    words = has_words(_LINE["sec6-projective"].verbatim, "Patch (\\ref{rational_patch}) is closed for the projective "
+                      "transformation of its control points, i.e., the patch determined by the projectively "
+                      "transformed control points coincides with the pointwisely transformed patch.")
     ok = projective_holds(PROJECTIVE, 1) and projective_holds(PROJECTIVE, 2)
-    return LineResult(ok, how="exact rational patch of a random net and positive weights and of its projective image "
-                      "(4x4 rational matrix, weights multiplied by the homogeneous coordinate), n = 1, 2",
-                      kind="exact-evidence", detail={"n": [1, 2]})
+    return LineResult(words and ok, how="the claim's words read; exact rational patch of a random net and positive "
+                      "weights and of its projective image (4x4 rational matrix, weights multiplied by the homogeneous "
+                      "coordinate), n = 1, 2", kind="exact-evidence", detail={"n": [1, 2]})
 
 
 # --- the ring Dupin cyclide --------------------------------------------------------------------------------
-def dupin_parts(cu, su, cv, sv, a, b2, c, mu):
-    """eq. Dupin_in_3d as printed, with y and z divided by b (b enters them as a factor): (x, y/b, z/b)."""
-    W = a - c * cu * cv
-    return ((mu * (c - a * cu * cv) + b2 * cu) / W, (a - mu * cv) * su / W, (c * cu - mu) * sv / W)
+def dupin_quartic(x, y, z, a, b, c, mu):
+    """The ring Dupin cyclide's implicit equation (x^2 + y^2 + z^2 - mu^2 + b^2)^2 - 4 (a x - c mu)^2 - 4 b^2 y^2
+    (the standard form, with a^2 = b^2 + c^2)."""
+    return (x * x + y * y + z * z - mu * mu + b * b) ** 2 - 4 * (a * x - c * mu) ** 2 - 4 * b * b * y * y
 
 
-def dupin_quartic(x, yb, zb, a, b2, c, mu):
-    """(x^2 + y^2 + z^2 - mu^2 + b^2)^2 - 4 (a x - c mu)^2 - 4 b^2 y^2 with y = b yb, z = b zb."""
-    y2, z2 = b2 * yb * yb, b2 * zb * zb
-    return (x * x + y2 + z2 - mu * mu + b2) ** 2 - 4 * (a * x - c * mu) ** 2 - 4 * b2 * y2
+def dupin_quartic_gradient(x, y, z, a, b, c, mu):
+    p = x * x + y * y + z * z - mu * mu + b * b
+    return (4 * p * x - 8 * a * (a * x - c * mu), 4 * p * y - 8 * b * b * y, 4 * p * z)
 
 
-def dupin_quartic_gradient(x, yb, zb, a, b2, c, mu):
-    p = x * x + b2 * yb * yb + b2 * zb * zb - mu * mu + b2
-    return (4 * p * x - 8 * a * (a * x - c * mu), 4 * p * yb - 8 * b2 * yb, 4 * p * zb)  # y, z components / b
+_DUPIN_X = re.compile(r"^(.*?)\\left\[\s*\\begin\{array\}\s*\[c\]\{l\}%?\s*(.*?)\\\\\s*$", re.S)
+_DUPIN_Y = re.compile(r"^(.*?)\\\\\s*$", re.S)
+_DUPIN_Z = re.compile(r"^(.*?)\\end\{array\}\s*\\right\]\s*,~u\\in\\left\[(.*?),(.*?)\\right\]\s*,~v\\in\\left\["
+                      r"(.*?),(.*?)\\right\]\s*,$", re.S)
 
 
-DUPIN_CASES = {"caption": (fmpq(6), fmpq(32), fmpq(2), fmpq(3)), "5,4,3,4": (fmpq(5), fmpq(16), fmpq(3), fmpq(4))}
+def read_dupin() -> dict:
+    """eq. Dupin_in_3d read from its three transcribed lines: ``{"xyz": (x, y, z) with the printed factor applied,
+    "u": (lo, hi), "v": (lo, hi)}`` (sympy in a, b, c, mu, u, v, varphi, psi; ``ValueError`` if unread)."""
+    from paper_repro.printed.lines.sec6_latex import parse_expression
+
+    mx = _DUPIN_X.match(_LINE["sec6-dupin-x"].verbatim)
+    my = _DUPIN_Y.match(_LINE["sec6-dupin-y"].verbatim)
+    mz = _DUPIN_Z.match(_LINE["sec6-dupin-z"].verbatim)
+    if not (mx and my and mz):
+        raise ValueError("eq. Dupin_in_3d: the transcription is not f [x \\\\ y \\\\ z], u in [..], v in [..]")
+    factor = parse_expression(mx.group(1))
+    rows = [parse_expression(mx.group(2)), parse_expression(my.group(1)), parse_expression(mz.group(1))]
+    return {"xyz": tuple(factor * r for r in rows), "u": (parse_expression(mz.group(2)), parse_expression(mz.group(3))),
+            "v": (parse_expression(mz.group(4)), parse_expression(mz.group(5)))}
 
 
-def dupin_on_quartic(a, b2, c, mu) -> bool:
+NO_PHASES = ((fmpq(1), fmpq(0)), (fmpq(1), fmpq(0)))  # (cos, sin) of varphi = psi = 0
+
+
+def dupin_point(xyz, params, tu: fmpq, tv: fmpq, phases=NO_PHASES) -> list[fmpq]:
+    """The printed cyclide (read) at u = 4 atan(tu), v = 4 atan(tv), exactly; ``params`` = (a, b, c, mu) rational,
+    ``phases`` the (cos, sin) of varphi and psi."""
+    from paper_repro.printed.lines.sec6_latex import MU, PSI, VARPHI, U, V, exact_value
+    from paper_repro.printed.lines.sec6_latex import A as SA
+    from paper_repro.printed.lines.sec6_latex import B as SB
+    from paper_repro.printed.lines.sec6_latex import C as SC
+
+    a, b, c, mu = params
+    bases = {U: (1, *trig_of(tu)), V: (1, *trig_of(tv)), VARPHI: (1, *phases[0]), PSI: (1, *phases[1])}
+    return [exact_value(e, {SA: a, SB: b, SC: c, MU: mu}, bases, fmpq(0)) for e in xyz]
+
+
+#: (a, b, c, mu) with rational b (a^2 = b^2 + c^2, c < mu < a): exact points
+DUPIN_RATIONAL = ((fmpq(5), fmpq(4), fmpq(3), fmpq(4)), (fmpq(13), fmpq(12), fmpq(5), fmpq(7)),
+                  (fmpq(10), fmpq(8), fmpq(6), fmpq(15, 2)))
+
+
+def dupin_on_quartic(xyz, params, phases=NO_PHASES) -> bool:
     ok = True
     for tu in (fmpq(1, 3), fmpq(2), fmpq(-1, 4)):
         for tv in (fmpq(1, 5), fmpq(3, 2), fmpq(-2, 7)):
-            cu, su = trig_of(tu)
-            cv, sv = trig_of(tv)
-            ok &= dupin_quartic(*dupin_parts(cu, su, cv, sv, a, b2, c, mu), a, b2, c, mu) == 0
+            ok &= dupin_quartic(*dupin_point(xyz, params, tu, tv, phases), *params) == 0
     return ok
+
+
+def _in_domain(dom: dict, u: fmpq, v: fmpq) -> bool:
+    return _in_read_domain(dom, u, v, fmpq(1))
 
 
 @line_check("sec6-dupin-surface")
 def dupin_surface() -> LineResult:
-    """The printed parametrization satisfies the Dupin cyclide quartic exactly when a^2 = b^2 + c^2."""
-    ok = all(dupin_on_quartic(*p) for p in DUPIN_CASES.values())
-    off = dupin_on_quartic(fmpq(6), fmpq(16), fmpq(3), fmpq(4))  # a^2 != b^2 + c^2
-    return LineResult(ok and not off, how="exact points (rational cos, sin) of eq. Dupin_in_3d in the quartic, "
-                      "(a, b^2, c, mu) = (6, 32, 2, 3), (5, 16, 3, 4); fails for a^2 != b^2 + c^2",
-                      kind="exact-evidence",
-                      detail={"on_quartic": ok, "on_quartic_when_a2_ne_b2_plus_c2": off})
+    """eq. Dupin_in_3d read from its three lines: its points satisfy the ring Dupin cyclide's implicit quartic exactly
+    (three rational (a, b, c, mu) with a^2 = b^2 + c^2, c < mu < a; phases 0 and (3/5, 4/5), (-5/13, 12/13)); its
+    parameter set {u in [lo, hi], v in [lo(u), hi(u)]} is Omega^alpha (grid, alpha = 1)."""
+    try:
+        dom = read_dupin()
+    except ValueError as exc:
+        return LineResult(False, how="eq. Dupin_in_3d read from the transcriptions", detail={"unread": str(exc)})
+    phases = ((fmpq(3, 5), fmpq(4, 5)), (fmpq(-5, 13), fmpq(12, 13)))
+    ok = all(dupin_on_quartic(dom["xyz"], p) for p in DUPIN_RATIONAL)
+    ok &= dupin_on_quartic(dom["xyz"], DUPIN_RATIONAL[0], phases)
+    grid = [(fmpq(i, 8), fmpq(j, 8)) for i in range(-1, 10) for j in range(-1, 10)]
+    domain = all(_in_domain(dom, u, v) == (u >= 0 and v >= 0 and 1 - u - v >= 0) for u, v in grid)
+    return LineResult(ok and domain, how="exact points (rational cos, sin) of eq. Dupin_in_3d (read) in the implicit "
+                      "quartic, (a, b, c, mu) = (5, 4, 3, 4), (13, 12, 5, 7), (10, 8, 6, 15/2); the parameter set vs "
+                      "Omega^alpha on a 11 x 11 grid", kind="exact-evidence",
+                      detail={"on_quartic": ok, "parameter_set_is_omega": domain})
 
 
 def dupin_homogeneous(a, b2, c, mu, phi, psi, upper: bool = False, alpha: RationalAngle | None = None):
-    """(X, Y/b, Z/b, W) of eq. Dupin_in_3d at U = phi + u, V = psi + v (upper: U = phi + alpha - u,
-    V = psi + alpha - v); phi, psi as (cos, sin)."""
+    """(X, Y/b, Z/b, W) of the cyclide (the package's model, as :func:`paper_repro.surfaces.models.cyclide_parts`) at
+    U = phi + u, V = psi + v (upper: U = phi + alpha - u, V = psi + alpha - v); phi, psi as (cos, sin)."""
     def cs(t: ExactTrig, var: int, ph):
         c0 = t.cos(*[1 if k == var else 0 for k in range(3)])
         s0 = t.sin(*[1 if k == var else 0 for k in range(3)])
@@ -1029,68 +1671,228 @@ def dupin_homogeneous(a, b2, c, mu, phi, psi, upper: bool = False, alpha: Ration
     return surface
 
 
+NUMBER_WORDS = {"eight": 8, "twelve": 12, "sixteen": 16, "twenty-four": 24, "thirty-two": 32, "sixty-four": 64}
+
+
+def dupin_count_holds(tex: str | None) -> tuple[bool, dict]:
+    """The count and order of "by means of sixteen smoothly joined second order rational ... patches" (read from
+    ``tex``) against the count of triangles needed to triangulate the cyclide: the phase torus (the square of the
+    phase intervals read from sec6-dupin-phases) over the area of one triangle (the parameter set of eq. Dupin_in_3d,
+    read, at the alpha of the caption of Fig. dupin_03, read); and exact order-n fits of both triangles of phase
+    squares."""
+    from paper_repro.printed.lines.sec6_latex import ALPHA, U, V, parse_relation
+
+    m = re.match(r"^by means of ([\w-]+) smoothly joined (\w+) order rational triangular trigonometric patches,$",
+                 tex or "")
+    if not m or m.group(1) not in NUMBER_WORDS or m.group(2) not in ORDINALS:
+        return False, {"unread": (tex or "")[:60]}
+    count, n = NUMBER_WORDS[m.group(1)], ORDINALS[m.group(2)]
+    settings = dict(re.findall(r"\$\\?(\w+)\s*=\s*([^$]*)\$", _LINE["sec6-fig-dupin-settings"].verbatim))
+    (_, alpha_value), _ = parse_relation("u=" + settings["alpha"]) if "alpha" in settings else ((None, None), None)
+    dom = read_dupin()
+    (lo_u, hi_u), (lo_v, hi_v) = dom["u"], dom["v"]
+    area = sympy.integrate(sympy.integrate(1, (V, lo_v, hi_v)), (U, lo_u, hi_u)).subs(ALPHA, alpha_value)
+    phase = phase_intervals()
+    torus_area = (phase[0][1] - phase[0][0]) * (phase[1][1] - phase[1][0])
+    needed = sympy.nsimplify(torus_area / area)
+    a, b2, c, mu = fmpq(6), fmpq(32), fmpq(2), fmpq(3)
+    alpha = rational_alpha(TS[1])
+    fits, joins = 0, True
+    for phi in [(fmpq(1), fmpq(0)), trig_of(fmpq(1, 2))]:
+        psi = (fmpq(1), fmpq(0))
+        try:
+            net = fit_exact(dupin_homogeneous(a, b2, c, mu, phi, psi), n, alpha)
+            up = fit_exact(dupin_homogeneous(a, b2, c, mu, phi, psi, upper=True, alpha=alpha), n, alpha)
+        except ValueError:
+            return False, {"order": n, "fits": False}
+        joins &= edge_net(net, n, "b") == reversed_edge_net(up, n, "b")
+        a_t = alpha.t
+        ss = (a_t / 5, a_t / 2)
+        joins &= c1_across((net, RationalPoints(alpha, ss, tuple(tq(a_t, x) for x in ss)), ((1, 0, -1), (0, 1, -1))),
+                           (up, RationalPoints(alpha, tuple(tq(a_t, x) for x in ss), ss), ((-1, 0, 1), (0, -1, 1))),
+                           n, alpha, rational=True)
+        fits += 2
+    ok = needed.is_Integer and count == int(needed) and joins and fits == 4
+    return ok, {"count": count, "order": n, "triangle_area": str(area), "phase_area": str(torus_area),
+                "triangles_needed": str(needed), "diagonal_joins_C1": joins,
+                "continuity": "C0 (shared control polygon and weights) and C1 in (U, V), hence G1" if joins else "no"}
+
+
 @line_check("sec6-dupin-rational-patches")
 def dupin_rational_patches() -> LineResult:
-    """Numerator and denominator of eq. Dupin_in_3d lie in V_2 for every phase: exact order-2 fits give rational
-    patches (weights = the fitted denominator net, non-negative for the caption's values at the sampled phases);
-    the two triangles of a phase square share their diagonal control polygon and weights (C0 join; each patch is
-    the smooth cyclide itself).  Count: sixteen triangles of side alpha = pi/2 cover (pi/2)^2/2 * 16 = 2 pi^2,
-    a part (half) of the [0, 2pi]^2 parameter torus -- a whole cover needs 32."""
-    a, b2, c, mu = DUPIN_CASES["caption"]
-    alpha = rational_alpha(TS[1])
-    phases = [(fmpq(1), fmpq(0)), trig_of(fmpq(1, 2)), trig_of(fmpq(3)), (fmpq(-1), fmpq(0))]
-    fits, min_w, joins = 0, None, True
-    for phi in phases:
-        for psi in phases[:2]:
-            net = fit_exact(dupin_homogeneous(a, b2, c, mu, phi, psi), 2, alpha)
-            up = fit_exact(dupin_homogeneous(a, b2, c, mu, phi, psi, upper=True, alpha=alpha), 2, alpha)
-            joins &= edge_net(net, 2, "b") == reversed_edge_net(up, 2, "b")
-            fits += 2
-            w = min(row[3] for row in net + up)
-            min_w = w if min_w is None else min(min_w, w)
-    # parameter-area count (in units of pi^2): one triangle (pi/2)^2 / 2 = 1/8, the torus 4
-    tri, whole = fmpq(1, 8), fmpq(4)
-    sixteen = 16 * tri
-    ok = fits == 16 and min_w >= 0 and joins and sixteen <= whole
-    return LineResult(ok, how="exact order-2 fits of (X, Y/b, Z/b, W) on both triangles of 8 phase squares, "
-                      "tan(alpha/4) = 1/3; parameter-area count", kind="exact-evidence",
-                      detail={"fits": fits, "min_fitted_weight": str(min_w), "diagonal_joins": joins,
-                              "area_16_patches_over_pi2": str(sixteen), "area_parameter_torus_over_pi2": str(whole),
-                              "patches_for_whole_cyclide": int(whole / tri)})
+    """"sixteen smoothly joined second order rational ... patches" (read): a triangle u in [0, alpha], v in [0, alpha
+    - u] (read) at alpha = pi/2 (caption, read) has area pi^2/8, the phase torus [0, 2pi]^2 (read) 4 pi^2, so the
+    ring cyclide needs 32 triangles (16 cover half); exact order-2 fits of (X, Y/b, Z/b, W) on both triangles of a
+    phase square share their diagonal control polygon and weights (each patch is the smooth cyclide itself).  The
+    erratum's fix (thirty-two) applied to the transcription holds."""
+    printed, detail = dupin_count_holds(_LINE["sec6-dupin-rational-patches"].verbatim)
+    corrected = None if printed else dupin_count_holds(corrected_text("sec6-dupin-rational-patches"))[0]
+    return LineResult(printed, corrected, how="count and order read; parameter areas from the intervals read "
+                      "(sympy integration); exact order-n fits on both triangles of 2 phase squares, tan(alpha/4) = "
+                      "1/3", kind="exact-evidence", detail=detail)
 
 
-def dupin_collapsed_circle(a, b2, c, mu) -> bool:
-    """The circle V = 0 maps to one point where the quartic's gradient vanishes (a singular point)."""
-    pts = {dupin_parts(*trig_of(tu), fmpq(1), fmpq(0), a, b2, c, mu) for tu in (fmpq(1, 3), fmpq(2), fmpq(-1, 4))}
-    if len(pts) != 1:
-        return False
-    p = next(iter(pts))
-    return dupin_quartic(*p, a, b2, c, mu) == 0 and set(dupin_quartic_gradient(*p, a, b2, c, mu)) == {0}
+def phase_intervals() -> list[tuple[sympy.Expr, sympy.Expr]]:
+    """``[(lo, hi) of varphi, (lo, hi) of psi]`` read from "$\\left(\\varphi,\\psi\\right) \\in [..]\\times[..]$"."""
+    from paper_repro.printed.lines.sec6_latex import parse_expression
+
+    tex = _LINE["sec6-dupin-phases"].verbatim
+    m = re.match(r"^while phase changes \$\\left\(\s*\\varphi,\\psi\\right\)\s*\\in\\left\[(.*?),(.*?)\\right\]"
+                 r"\\times\\left\[(.*?),(.*?)\\right\]\s*\$ are free design parameters that can be used to\s+slide "
+                 r"the patch on the cyclide\.$", tex)
+    if not m:
+        raise ValueError(f"phases not read: {tex[:60]!r}")
+    lo1, hi1, lo2, hi2 = (parse_expression(x) for x in m.groups())
+    return [(lo1, hi1), (lo2, hi2)]
 
 
-def dupin_ring(a, b2, c, mu) -> bool:
-    """c < mu < a: a - mu cos V >= a - mu > 0 and mu - c cos U >= mu - c > 0, no circle collapses."""
-    return a * a == b2 + c * c and c < mu < a
+@line_check("sec6-dupin-phases")
+def dupin_phases() -> LineResult:
+    """"phase changes (varphi, psi) in [0, 2pi] x [0, 2pi] are free design parameters that can be used to slide the
+    patch on the cyclide" (read): each interval covers a full period 2pi of eq. Dupin_in_3d (read: its points are
+    2pi-periodic in varphi and psi, exact at rational cos, sin), so every patch position is reached; at several
+    phases the patch stays on the cyclide's quartic (exact)."""
+    try:
+        (lo1, hi1), (lo2, hi2) = phase_intervals()
+        dom = read_dupin()
+    except ValueError as exc:
+        return LineResult(False, how="the phase intervals read", detail={"unread": str(exc)})
+    full = all((hi - lo) >= 2 * sympy.pi and lo.is_number and hi.is_number for lo, hi in ((lo1, hi1), (lo2, hi2)))
+    on = all(dupin_on_quartic(dom["xyz"], DUPIN_RATIONAL[0], ph)
+             for ph in (((fmpq(3, 5), fmpq(4, 5)), (fmpq(1), fmpq(0))), ((fmpq(-1), fmpq(0)), (fmpq(0), fmpq(-1)))))
+    return LineResult(bool(full) and on, how="the phase intervals read vs the period 2pi; exact points of eq. "
+                      "Dupin_in_3d (read) at phases (3/5, 4/5), (-1, 0), (0, -1) on the quartic", kind="exact-evidence",
+                      detail={"phase_intervals": [[str(lo1), str(hi1)], [str(lo2), str(hi2)]]})
+
+
+def collapsed_circle(xyz, a, b, c, mu) -> bool:
+    """Whether a parameter circle of the printed cyclide (read) collapses to a point (40-digit values): U0 with
+    c cos U0 = mu, or V0 with mu cos V0 = a, when such an angle exists."""
+    import mpmath
+
+    from paper_repro.printed.lines.sec6_latex import MU, PSI, VARPHI, U, V
+    from paper_repro.printed.lines.sec6_latex import A as SA
+    from paper_repro.printed.lines.sec6_latex import B as SB
+    from paper_repro.printed.lines.sec6_latex import C as SC
+
+    def sym(x):
+        return sympy.Rational(int(x.p), int(x.q)) if isinstance(x, fmpq) else sympy.nsimplify(x)
+
+    a, b, c, mu = (sym(x) for x in (a, b, c, mu))
+    f = sympy.lambdify((U, V), [e.subs({VARPHI: 0, PSI: 0, SA: a, SB: b, SC: c, MU: mu}) for e in xyz],
+                       modules="mpmath")
+    with mpmath.workdps(40):
+        circles = []
+        if abs(mu) <= abs(c) and c != 0:
+            u0 = mpmath.acos(mpmath.mpf(sympy.N(mu / c, 50)))
+            circles.append([f(u0, v) for v in (mpmath.mpf("0.3"), mpmath.mpf("1.9"), mpmath.mpf("4.1"))])
+        if abs(a) <= abs(mu):
+            v0 = mpmath.acos(mpmath.mpf(sympy.N(a / mu, 50)))
+            circles.append([f(u, v0) for u in (mpmath.mpf("0.3"), mpmath.mpf("1.9"), mpmath.mpf("4.1"))])
+        return any(max(abs(p[k] - q[k]) for p, q in zip(pts, pts[1:]) for k in range(3)) < mpmath.mpf(10) ** -25
+                   for pts in circles)
+
+
+_DUPIN_CONDITIONS = re.compile(r"^where parameters \$a\$, \$b\$, \$c\$ and \$\\mu\$ have to fulfill the conditions "
+                               r"\$([^$]*)\$ and \$([^$]*)\$$")
+
+
+def dupin_conditions_hold(tex: str | None) -> tuple[bool, dict]:
+    """The two conditions read from ``tex``: the equation holds exactly for the (a, b, c) whose cyclide (eq.
+    Dupin_in_3d, read) lies on the quartic (tested on 5 triples); the chain holds exactly for the mu that give a
+    ring cyclide -- no parameter circle collapses (tested at 13 mu for two triples)."""
+    from paper_repro.printed.lines.sec6_latex import MU, parse_relation, relation_holds
+    from paper_repro.printed.lines.sec6_latex import A as SA
+    from paper_repro.printed.lines.sec6_latex import B as SB
+    from paper_repro.printed.lines.sec6_latex import C as SC
+
+    m = _DUPIN_CONDITIONS.match(tex or "")
+    if not m:
+        return False, {"unread": (tex or "")[:60]}
+    eq, chain = parse_relation(m.group(1)), parse_relation(m.group(2))
+    xyz = read_dupin()["xyz"]
+
+    def sub(rel, a, b, c, mu):
+        vals = {SA: sympy.Rational(int(a.p), int(a.q)), SB: sympy.Rational(int(b.p), int(b.q)),
+                SC: sympy.Rational(int(c.p), int(c.q)), MU: sympy.Rational(int(mu.p), int(mu.q))}
+        return relation_holds([x.subs(vals) for x in rel[0]], rel[1])
+
+    triples = [(fmpq(5), fmpq(4), fmpq(3)), (fmpq(13), fmpq(12), fmpq(5)), (fmpq(6), fmpq(4), fmpq(3)),
+               (fmpq(5), fmpq(3), fmpq(3)), (fmpq(7), fmpq(5), fmpq(2))]
+    eq_ok = all(sub(eq, a, b, c, fmpq(4)) == dupin_on_quartic(xyz, (a, b, c, (a + c) / 2)) for a, b, c in triples)
+    chain_ok, bad = True, []
+    for a, b, c in triples[:2]:
+        for k in range(13):
+            mu = (a + 1) * fmpq(k, 12) + fmpq(1, 7)
+            ring = not collapsed_circle(xyz, a, b, c, mu)
+            if sub(chain, a, b, c, mu) != ring:
+                chain_ok = False
+                bad.append(str(mu))
+        for mu in (a, c):  # the end points, exactly
+            if sub(chain, a, b, c, mu) != (not collapsed_circle(xyz, a, b, c, mu)):
+                chain_ok = False
+                bad.append(f"{mu} (end point)")
+    return eq_ok and chain_ok, {"equation_matches_quartic": eq_ok, "chain_fails_at_mu": bad}
 
 
 @line_check("sec6-dupin-conditions")
 def dupin_conditions() -> LineResult:
-    a, b2, c, _ = DUPIN_CASES["caption"]
-    endpoint_singular = dupin_collapsed_circle(a, b2, c, a)  # mu = a, allowed by the printed c < mu <= a
-    printed_holds = not endpoint_singular
-    inner = [c + (a - c) * fmpq(k, 10) for k in range(1, 10)]
-    corrected = (all(dupin_ring(a, b2, c, m) and not dupin_collapsed_circle(a, b2, c, m) for m in inner)
-                 and all(dupin_on_quartic(a, b2, c, m) for m in inner[::4]))
-    return LineResult(printed_holds, corrected, how="exact: at mu = a (a = 6, b^2 = 32, c = 2) the circle V = 0 "
-                      "collapses to a singular point of the quartic; for c < mu < a no circle collapses",
-                      kind="exact-evidence", detail={"mu_equal_a_singular_point": endpoint_singular,
-                                                     "inner_mu": [str(m) for m in inner[:3]]})
+    """"the conditions $a^{2}=b^{2}+c^{2}$ and $c<\\mu\\leq a$" (read): the equation is the condition for eq.
+    Dupin_in_3d to lie on the cyclide quartic; but at mu = a the parameter circle v + psi = 0 collapses to a point (a
+    singular point of the quartic: a horn cyclide), so the ring condition is c < mu < a -- the erratum's fix applied
+    to the transcription holds."""
+    printed, detail = dupin_conditions_hold(_LINE["sec6-dupin-conditions"].verbatim)
+    corrected = None if printed else dupin_conditions_hold(corrected_text("sec6-dupin-conditions"))[0]
+    xyz = read_dupin()["xyz"]
+    a, b, c = DUPIN_RATIONAL[0][:3]
+    p = dupin_point(xyz, (a, b, c, a), fmpq(1, 3), fmpq(0))
+    singular = dupin_quartic(*p, a, b, c, a) == 0 and set(dupin_quartic_gradient(*p, a, b, c, a)) == {0}
+    return LineResult(printed, corrected, how="the conditions read from the transcription (and with the erratum's "
+                      "fix) vs the quartic (exact) and collapsed parameter circles (40 digits), (a, b, c) = (5, 4, 3), "
+                      "(13, 12, 5)", kind="exact-evidence",
+                      detail={**detail, "mu_equal_a_singular_point": singular})
 
 
 @line_check("sec6-fig-dupin-settings")
 def fig_dupin_settings() -> LineResult:
-    a, b2, c, mu = DUPIN_CASES["caption"]  # b = 4 sqrt 2, b^2 = 32
-    ok = a * a == b2 + c * c and c < mu <= a and c < mu < a and dupin_on_quartic(a, b2, c, mu)
-    return LineResult(ok, how="a^2 = b^2 + c^2 (36 = 32 + 4) and c < mu < a (2 < 3 < 6), exact; "
-                      "alpha = pi/2 in (0, pi)",
-                      kind="exact-evidence", detail={"a2": str(a * a), "b2_plus_c2": str(b2 + c * c)})
+    """Caption of Fig. dupin_03: "settings $a = 6$, $b=4\\sqrt{2}$, $c=2$ and $\\mu=3$ ... $\\alpha=\\frac{\\pi}{2}$"
+    (parsed): eq. Dupin_in_3d (read) with them lies on the cyclide quartic (40 digits), no parameter circle collapses
+    (a ring cyclide), and alpha is in the range of sec6-alpha-range (read)."""
+    import mpmath
+
+    from paper_repro.printed.lines.sec6_latex import MU, PSI, VARPHI, U, V, parse_relation
+    from paper_repro.printed.lines.sec6_latex import A as SA
+    from paper_repro.printed.lines.sec6_latex import B as SB
+    from paper_repro.printed.lines.sec6_latex import C as SC
+
+    tex = _LINE["sec6-fig-dupin-settings"].verbatim
+    m = re.match(r"^cyclide \(with settings \$([^$]*)\$, \$([^$]*)\$, \$([^$]*)\$ and \$([^$]*)\$\) which is rendered "
+                 r"as a\s+transparent surface except the lower right figure\. The shape parameter of each\s+second "
+                 r"order rational triangular trigonometric patch is \$([^$]*)\$\.$", tex)
+    if not m:
+        return LineResult(False, how="the settings read from the transcription", detail={"unread": tex[:60]})
+    values = {}
+    for part in m.groups():
+        (lhs, rhs), ops = parse_relation(part)
+        if ops != ["="] or not lhs.is_Symbol or lhs in values:
+            return LineResult(False, how="the settings read", detail={"unread": part})
+        values[str(lhs)] = rhs
+    if set(values) != {"a", "b", "c", "mu", "alpha"}:
+        return LineResult(False, how="the settings read", detail={"names": sorted(values)})
+    xyz = read_dupin()["xyz"]
+    sub = {SA: values["a"], SB: values["b"], SC: values["c"], MU: values["mu"], VARPHI: 0, PSI: 0}
+    f = sympy.lambdify((U, V), [e.subs(sub) for e in xyz], modules="mpmath")
+    num = {k: sympy.N(v, 50) for k, v in values.items()}
+    on = True
+    with mpmath.workdps(40):
+        for u, v in ((0.3, 1.1), (2.0, -0.7), (4.4, 2.9)):
+            p = f(mpmath.mpf(u), mpmath.mpf(v))
+            q = dupin_quartic(*p, *(mpmath.mpf(str(num[k])) for k in ("a", "b", "c", "mu")))
+            on &= abs(q) < mpmath.mpf(10) ** -25
+    ring = not collapsed_circle(xyz, values["a"], values["b"], values["c"], values["mu"])
+    ring &= bool(values["mu"] > 0)
+    lo, hi = read_open_interval(_LINE["sec6-alpha-range"].verbatim, "\\alpha")
+    alpha_ok = bool(lo < values["alpha"] < hi)
+    return LineResult(on and ring and alpha_ok, how="settings parsed; eq. Dupin_in_3d (read) in the quartic (40 "
+                      "digits), collapsed circles, alpha range read", kind="exact-evidence",
+                      detail={"on_quartic": on, "ring": ring, "alpha_in_range": alpha_ok})

@@ -2,10 +2,10 @@
 
 ``LINES``: every displayed line and inline statement of the part (see :mod:`paper_repro.printed.lines`).  The
 constants and functions below are the machine-readable transcriptions of the same printed text that the checks
-(:mod:`paper_repro.claims.lines.sec4_5`) compare with independent computations.  The printed example formulas of
-Examples normalizing_coefficients_n_1..3 and Proposition prop:level_1_coefficients are transcribed in
-:mod:`paper_repro.printed.normalization` (``INTERMEDIATE``, ``FINAL``, ``prop_level_1``; compared with the source
-lines 2024-2107 and 1997-2006 for this part).
+(:mod:`paper_repro.claims.lines.sec4_5`; Section 5: :mod:`paper_repro.claims.lines.sec5`) compare with independent
+computations.  The formulas of Section 5 (Examples normalizing_coefficients_n_1..3, Remark
+normalizing_coeff_of_level_0, Proposition prop:level_1_coefficients) are parsed from ``LINES`` by
+:mod:`paper_repro.printed.lines.sec5_latex`; :mod:`paper_repro.printed.normalization` derives its tables from them.
 """
 
 from __future__ import annotations
@@ -1068,8 +1068,15 @@ LINES: list[Line] = [
          verbatim=('b_{2n,2n-i,j}^{\\alpha} & =r_{2n,2n-i,j}^{\\alpha},~j=0,1,\\ldots ,n-1,~i=j,j+1,,\\ldots'
                    ',2n-1-j,'),
          says='b_{2n,2n-i,j} = r_{2n,2n-i,j}, j = 0..n-1, i = j..2n-1-j (printed with a doubled comma).',
-         status='checked',
-         check='sec4_5-symmetry-3'),
+         status='erratum',
+         check='sec4_5-symmetry-3',
+         erratum={'printed': 'i=j,j+1,,\\ldots,2n-1-j (a doubled comma: an empty item in the listed range)',
+                  'corrected': 'i=j,j+1,\\ldots,2n-1-j',
+                  'evidence': ('the listed range does not read (an empty item between j+1 and \\ldots); with the '
+                               'comma removed the condition b_{2n,2n-i,j} = r_{2n,2n-i,j} holds for the exact '
+                               'collocation coefficients without symmetry (n = 1..3, two alpha) and the three '
+                               'conditions together give exactly the permutation orbits (n = 1..6)'),
+                  'severity': 'typo'}),
     Line(id='sec4_5-unknowns',
          tex=(1940, 1941),
          near='symmetry_condition_3',
@@ -1098,7 +1105,11 @@ LINES: list[Line] = [
                    'x\\in\\left[ 0,\\alpha\\right]'),
          says='d^r/dy^r L(u(x,y), v(x,y), w(x,y)) at y = 0 equals delta_{r,0} for x in [0, alpha], r = 0..n.',
          status='checked',
-         check='sec4_5-system'),
+         check='sec4_5-system',
+         reason=('second reading: the system alone does not determine the delta_n coefficients (exact rank 6 < 7, '
+                 '15 < 19, 28 < 37 for n = 1, 2, 3); with symmetry_condition_1..3 imposed it does (rank 3, 6, 10 = '
+                 'the unknowns {r_{2n,2n-i,j}}_{j=0,i=j}^{n,n}), as the text calls those the unknowns; read so, it '
+                 'holds')),
     Line(id='sec4_5-system-y-range',
          tex=(1952, 1953),
          near='system_partition_of_unity',
@@ -1222,7 +1233,10 @@ LINES: list[Line] = [
                    'ight\\} _{i=1}^{n}$'),
          says='For n >= 2 the constants {r_{2n,2n-i,1}}_{i=1}^n.',
          status='checked',
-         check='sec4_5-level-1'),
+         check='sec4_5-level-1',
+         reason=('second reading: the bound n >= 2 is needed (at n = 1 the formula gives 2/sin^3(alpha/2), the '
+                 'coefficient r_{2,1,1} is 2/sin(alpha/2)); the check shows the formula for n = 2..7 and its '
+                 'failure one order below the printed bound')),
     Line(id='sec4_5-level1-i1',
          tex=(2000, 2000),
          near='level_1_coefficients',
@@ -1268,7 +1282,9 @@ LINES: list[Line] = [
          says=('n = 1: the system (system_partition_of_unity) has a unique solution (in the unknowns left by'
                ' the symmetry conditions).'),
          status='checked',
-         check='sec4_5-system'),
+         check='sec4_5-system',
+         reason=('unique in the unknowns left by symmetry_condition_1..3 (see line sec4_5-system): full rank with '
+                 'them, not without')),
     Line(id='sec4_5-ex-r220-r-c',
          tex=(2025, 2025),
          near='normalizing_coefficients_n_1',
@@ -1319,7 +1335,8 @@ LINES: list[Line] = [
                    'rac{\\alpha}{2}}'),
          says='r_{2,1,1} in closed form.',
          status='checked',
-         check='sec4_5-ex-r211-final'),
+         check='sec4_5-ex-r211-final',
+         reason=('holds; printed unreduced: 2 sin(alpha/2) / sin^2(alpha/2) = 2 / sin(alpha/2)')),
     Line(id='sec4_5-unique-solution-n2',
          tex=(2036, 2036),
          near='normalizing_coefficients_n_2',
@@ -1328,7 +1345,9 @@ LINES: list[Line] = [
          says=('n = 2: the system (system_partition_of_unity) has a unique solution (in the unknowns left by'
                ' the symmetry conditions).'),
          status='checked',
-         check='sec4_5-system'),
+         check='sec4_5-system',
+         reason=('unique in the unknowns left by symmetry_condition_1..3 (see line sec4_5-system): full rank with '
+                 'them, not without')),
     Line(id='sec4_5-ex-r440-r-c',
          tex=(2038, 2038),
          near='normalizing_coefficients_n_2',
@@ -1434,7 +1453,9 @@ LINES: list[Line] = [
                    '_{4,2}^{\\alpha}=\\frac{10+20\\cos ^{2}\\frac{\\alpha}{2}}{\\sin^{4}\\frac{\\alpha}{2}}'),
          says='r_{4,2,2} in closed form.',
          status='checked',
-         check='sec4_5-ex-r422-final'),
+         check='sec4_5-ex-r422-final',
+         reason=('holds: the combination is (10 + 10c^2 - 20c^4)/s^6 = 10 s^2 (1 + 2c^2)/s^6 = (10 + 20c^2)/s^4 '
+                 '(c = cos, s = sin of alpha/2); printed in lowest terms, so its power of sin is 4, not 2n + j = 6')),
     Line(id='sec4_5-wang-remark',
          tex=(2059, 2062),
          near='normalizing_coefficients_n_2',
@@ -1453,7 +1474,9 @@ LINES: list[Line] = [
          says=('n = 3: the system (system_partition_of_unity) has a unique solution (in the unknowns left by'
                ' the symmetry conditions).'),
          status='checked',
-         check='sec4_5-system'),
+         check='sec4_5-system',
+         reason=('unique in the unknowns left by symmetry_condition_1..3 (see line sec4_5-system): full rank with '
+                 'them, not without')),
     Line(id='sec4_5-ex-r660-r-c',
          tex=(2069, 2069),
          near='normalizing_coefficients_n_3',
@@ -1581,8 +1604,18 @@ LINES: list[Line] = [
          verbatim=('r_{6,4,2}^{\\alpha} & =c_{6,4}\\left( 2+\\dfrac{6}{\\sin^{2}\\frac{\\alpha}{2}% }\\right'
                    ') +c_{6,3}^{\\alpha}\\frac{6}{\\sin^{2}\\frac{\\alpha}{2}}\\cos\\frac{\\alpha }{2}'),
          says='r_{6,4,2} as a combination of the constants c_{2n,i}.',
-         status='checked',
-         check='sec4_5-ex-r642-mid'),
+         status='erratum',
+         check='sec4_5-ex-r642-mid',
+         erratum={'printed': ('r_{6,4,2}^{\\alpha} = c_{6,4}\\left( 2+\\dfrac{6}{\\sin^{2}\\frac{\\alpha}{2}}'
+                              '\\right) + ...'),
+                  'corrected': ('r_{6,4,2}^{\\alpha} = c_{6,4}^{\\alpha}\\left( 2+\\dfrac{6}{\\sin^{2}\\frac{'
+                                '\\alpha}{2}}\\right) + ...'),
+                  'evidence': ('the univariate constant c_{6,4} is printed without the superscript alpha that every '
+                               'other c_{2n,i}^{alpha} of Section 5 carries (the parsed line names exactly one '
+                               'unlabelled object, c_{6,4}); the value of the combination is right: it equals '
+                               'r_{6,4,2} as an identity in alpha (closed form proven for every alpha) and at three '
+                               'rational-tangent alpha (exact collocation)'),
+                  'severity': 'typo'}),
     Line(id='sec4_5-ex-r642-final',
          tex=(2086, 2089),
          near='normalizing_coefficients_n_3',
@@ -1661,7 +1694,10 @@ LINES: list[Line] = [
          says=('Matrix size delta_n = 3n(n+1)+1, reduced to (n+1)(n+2)/2 by symmetry and to n(n+1)/2 by Rema'
                'rk level 0.'),
          status='checked',
-         check='sec4_5-matrix-sizes'),
+         check='sec4_5-matrix-sizes',
+         reason=('second reading: (n+1)(n+2)/2 is the number of classes of symmetry_condition_1..3 (= orbits of the '
+                 'six permutations of (u, v, w)); removing the n+1 classes of level 0 (Remark '
+                 'normalizing_coeff_of_level_0) leaves n(n+1)/2; both counted for n = 1..10')),
     Line(id='sec4_5-blending-set',
          tex=(2128, 2131),
          near='normalized_united_system',

@@ -290,6 +290,7 @@ LINES = [
                            'rho^2 (x^2+y^2) has zero gradient there (exact); for 0 < mu < varrho the distance to t'
                            'he axis is >= varrho - mu > 0 (no singular point)'),
              'severity': 'statement',
+             'fix': [('\\rho\\right]', '\\varrho\\right)')],
          }),
     Line(id='sec6-torus-order2', tex=(2300, 2302),
          near='toroidal_triangle', kind='inline',
@@ -481,6 +482,9 @@ LINES = [
                            'dal_triangle at every sampled rational-tangent alpha and rational (varrho, mu), y and '
                            'z agree, the corrected x agrees'),
              'severity': 'statement',
+             'fix': [('\\frac{\\varrho\\left(  7-2\\cos^{2}\\frac{\\alpha}{2}+\\cos\\frac{\\alpha}{2}\\right)\n'
+                      '\\cos^{2}\\frac{\\alpha}{2}}{4+2\\cos\\alpha}',
+                      '\\frac{3\\varrho\\left(1+\\cos\\alpha\\right)}{4+2\\cos\\alpha}')],
          }),
     Line(id='sec6-torus-point-b_{4,2,1}', tex=(2499, 2511),
          near='exmp:torus', kind='display',
@@ -502,7 +506,11 @@ LINES = [
                    ' $2$ that are smoothly joined in order to form a part of a ring torus.'),
          says='Several order-2 patches join smoothly into a part of a ring torus.',
          status='checked',
-         check='sec6-torus-joined'),
+         check='sec6-torus-joined',
+         reason=('continuity computed by the check (issue 38): neighbouring pieces share their boundary control '
+                 'polygons (C0) and have equal first derivatives in the phase parametrization (U, V) at the points '
+                 'of the shared edges (exact): C1 in (U, V), hence G1 -- each piece is the exact restriction of the '
+                 'one analytic parametrization')),
     Line(id='sec6-fig-torus-settings', tex=(2531, 2531),
          near='fig:torus', kind='caption',
          verbatim=('with settings $\\mu=3$, $\\rho = \\frac{1+\\sqrt{5}}{2}\\mu$ and $\\alpha=\\frac{\\pi}'
@@ -518,6 +526,7 @@ LINES = [
                            'he settings give a ring torus (varrho/mu = (1+sqrt 5)/2 > 1: (varrho/mu)^2 = varrho/mu'
                            ' + 1 with varrho/mu > 1) and alpha = pi/2 in (0, pi)'),
              'severity': 'typo',
+             'fix': [('$\\rho =', '$\\varrho =')],
          }),
     Line(id='sec6-fig-torus-prose', tex=(2531, 2531),
          near='fig:torus', kind='prose',
@@ -644,8 +653,24 @@ LINES = [
                    '(  u,v,w\\right)\n.'),
          says=('+ sum gamma G-bar + sum beta B-bar over l = 0..n-1, k = l..2n-1-l (the G-bar term prin'
                'ts no arguments).'),
-         status='checked',
-         check='sec6-tau-index-sets'),
+         status='erratum',
+         check='sec6-tau-row-2',
+         erratum={
+             'id': 'tau-row-2-G-arguments',
+             'printed': ('... + sum_{l=0}^{n-1} sum_{k=l}^{2n-1-l} gamma_{2n,2n-k,l} G-bar_{2n,2n-k,l}^alpha + ...  '
+                         '(no argument)'),
+             'corrected': ('... + sum_{l=0}^{n-1} sum_{k=l}^{2n-1-l} gamma_{2n,2n-k,l} G-bar_{2n,2n-k,l}^alpha(u,v,w) '
+                           '+ ...'),
+             'evidence': ('in the definition of tau-bar_n^alpha(u,v,w) (def:rational_patch) every other term -- '
+                          'R-bar_{2n,n,n}, R-bar_{2n,2n-k,l}, B-bar_{2n,2n-k,l} -- and every term of eq. '
+                          'rational_patch '
+                          'is written as a function of (u,v,w); the G-bar term alone is printed without its argument, '
+                          'so the right-hand side mixes functions and function symbols. The index sets of the row hold '
+                          '(with row 1 they name T_{2n} once each, n = 1..12)'),
+             'severity': 'typo',
+             'fix': [('\\overline{G}_{2n,2n-k,\\ell}^{\\alpha}+', '\\overline{G}_{2n,2n-k,\\ell}^{\\alpha}'
+                      '\\left(u,v,w\\right)+')],
+         }),
     Line(id='sec6-q-normalized-independent', tex=(2615, 2619),
          near='def:rational_patch', kind='inline',
          verbatim=('Quotient functions in (\\ref{rational_patch}) determine the constrained\ntrivariate ra'
@@ -654,8 +679,21 @@ LINES = [
                    'ine{Q}_{2n}^{\\alpha}$ is also\nnormalized and linearly independent.'),
          says=('The quotients form a system Q-bar_{2n}^alpha that is normalized and linearly independe'
                'nt.'),
-         status='checked',
-         check='sec6-q-normalized-independent'),
+         status='erratum',
+         check='sec6-q-normalized-independent',
+         erratum={
+             'id': 'rational-system-zero-weight',
+             'printed': ('Q-bar_{2n}^alpha (quotients of eq. rational_patch, with the non-negative weights of rank 1 '
+                         'introduced above) is normalized and linearly independent'),
+             'corrected': ('Q-bar_{2n}^alpha is normalized and linearly independent for positive weights (a zero '
+                           'weight makes its quotient the zero function)'),
+             'evidence': ('the weights are only required to be non-negative with a non-zero sum; with one weight 0 '
+                          '(here rho_{2n,2n,0} = 0, the others positive) its quotient rho B-bar/tau is identically '
+                          'zero, so the delta_n quotients have rank delta_n - 1 at delta_n rational points (exact, '
+                          'n = 1, 2, 3): linearly dependent; with all weights positive they sum to 1 and have rank '
+                          'delta_n (exact, n = 1, 2, 3)'),
+             'severity': 'statement',
+         }),
     Line(id='sec6-projective', tex=(2622, 2625),
          near='def:rational_patch', kind='inline',
          verbatim=('Patch (\\ref{rational_patch}) is closed for the projective\ntransformation of its cont'
@@ -664,7 +702,12 @@ LINES = [
          says=('Projectively transforming the control points (weights adjusted) transforms the patch p'
                'ointwise.'),
          status='checked',
-         check='sec6-projective'),
+         check='sec6-projective',
+         reason=('read as in rational Bezier theory: the control points are transformed as homogeneous points, so '
+                 'each weight is multiplied by the homogeneous coordinate of its image (with the weights kept the '
+                 'patch of the mapped points is not the mapped patch: exact counterexample in the tests); debatable '
+                 'that the sentence leaves this implicit, and that a map sending a control point across the plane at '
+                 'infinity makes a weight negative, outside the non-negative weights of Section 6.2')),
     Line(id='sec6-dupin-x', tex=(2629, 2633),
          near='Dupin_in_3d', kind='parametrization',
          verbatim=('\\frac{1}{a-c\\cos\\left(  u+\\varphi\\right)  \\cos\\left(  v+\\psi\\right)  }\\left['
@@ -696,8 +739,29 @@ LINES = [
                    'ches,'),
          says=('The ring Dupin cyclide is described exactly by sixteen smoothly joined second order ra'
                'tional patches.'),
-         status='checked',
-         check='sec6-dupin-rational-patches'),
+         status='erratum',
+         check='sec6-dupin-rational-patches',
+         reason=('debatable: if Fig. dupin_03 shows only a part of the cyclide, "the ring Dupin cyclide" is loose '
+                 'wording rather than a wrong count; the caption calls it a triangulization of a ring Dupin cyclide. '
+                 'Continuity computed by the check (issue 38): the two rational patches of a phase square share '
+                 'their diagonal control polygon and weights (C0) and have equal first derivatives in (U, V) there '
+                 '(exact): C1 in (U, V), hence G1 ("smoothly joined" holds)'),
+         erratum={
+             'id': 'dupin-sixteen-patches',
+             'printed': ('Fig. dupin_03 shows the exact description of the ring Dupin cyclide by sixteen second order '
+                         'rational patches (alpha = pi/2, domain u in [0, alpha], v in [0, alpha - u])'),
+             'corrected': ('thirty-two patches describe the whole ring Dupin cyclide at alpha = pi/2; sixteen describe '
+                           'half of it'),
+             'evidence': ('each patch is eq. Dupin_in_3d on a triangle u in [0, alpha], v in [0, alpha - u] of the '
+                          'phase plane, of area alpha^2/2 = pi^2/8 at alpha = pi/2 (caption of Fig. dupin_03); the '
+                          'cyclide is the image of the phase torus [0, 2pi] x [0, 2pi] of area 4 pi^2, one-to-one '
+                          'for a '
+                          'ring cyclide, so its triangulation by such patches needs 4 pi^2 / (pi^2/8) = 32 of them '
+                          '(16 cover a part of area 2 pi^2); each of the 32 is an exact order-2 rational fit (exact, '
+                          'tan(alpha/4) = 1/3 for the fits)'),
+             'severity': 'statement',
+             'fix': [('sixteen', 'thirty-two')],
+         }),
     Line(id='sec6-dupin-conditions', tex=(2642, 2642),
          near='Dupin_in_3d', kind='range',
          verbatim=('where parameters $a$, $b$, $c$ and $\\mu$ have to fulfill the conditions $a^{2}=b^{2}+'
@@ -715,6 +779,7 @@ LINES = [
                            ' >= a - mu > 0 and mu - c cos U >= mu - c > 0 (no collapsed circle); the same non-stri'
                            'ct bound is common in the literature'),
              'severity': 'statement',
+             'fix': [('c<\\mu\\leq a', 'c<\\mu<a')],
          }),
     Line(id='sec6-dupin-phases', tex=(2642, 2643),
          near='Dupin_in_3d', kind='range',
@@ -723,7 +788,7 @@ LINES = [
                    'e patch on the cyclide.'),
          says='Phases (phi, psi) in [0, 2pi] x [0, 2pi] are free and slide the patch on the cyclide.',
          status='checked',
-         check='sec6-dupin-rational-patches'),
+         check='sec6-dupin-phases'),
     Line(id='sec6-fig-dupin-settings', tex=(2656, 2658),
          near='fig:dupin_03', kind='caption',
          verbatim=('cyclide (with settings $a = 6$, $b=4\\sqrt{2}$, $c=2$ and $\\mu=3$) which is rendered '
