@@ -66,23 +66,24 @@ def _skip(t: str, k: int) -> int:
 
 
 def linear_form(expr: str) -> tuple[int, int, int]:
-    """Integer coefficients (of alpha, x, y) of a printed linear form such as ``\\alpha-x-y``, ``x-y``, ``y``, ``0``
-    (``ValueError`` for anything else)."""
-    e = re.sub(r"\s+", "", expr.replace("\\alpha", "a").replace("(", "").replace(")", ""))
-    if not e:
-        raise ValueError("an empty linear form")
-    out = {"a": 0, "x": 0, "y": 0}
-    for tok in re.findall(r"[+-]?[^+-]+", e):
-        m = re.fullmatch(r"([+-]?)(\d*)([axy]?)", tok)
-        if not m:
-            raise ValueError(f"not a linear form in alpha, x, y: {expr!r}")
-        sign, coef, var = m.groups()
-        if not var:
-            if coef != "0":
-                raise ValueError(f"a constant term in {expr!r}")
-            continue
-        out[var] += (-1 if sign == "-" else 1) * (int(coef) if coef else 1)
-    return out["a"], out["x"], out["y"]
+    """Integer coefficients (of alpha, x, y) of a printed linear form such as ``\\alpha-x-y``, ``x-y``, ``y``, ``0``,
+    read by the paper's LaTeX reader (:func:`paper_repro.printed.latex_math.parse`); ``ValueError`` for anything
+    else (another symbol, a constant term, a non-integer or non-linear coefficient)."""
+    import sympy
+
+    from paper_repro.printed.latex_math import parse
+
+    e = sympy.expand(parse(expr))
+    alpha, x, y = sympy.symbols("alpha x y")
+    if not isinstance(e, sympy.Expr) or not e.free_symbols <= {alpha, x, y}:
+        raise ValueError(f"not a linear form in alpha, x, y: {expr!r}")
+    poly = sympy.Poly(e, alpha, x, y) if e != 0 else None
+    if poly is None:
+        return 0, 0, 0
+    coeffs = poly.as_dict()
+    if any(sum(m) != 1 for m in coeffs) or any(not c.is_integer for c in coeffs.values()):
+        raise ValueError(f"not a linear form in alpha, x, y: {expr!r}")
+    return tuple(int(coeffs.get(m, 0)) for m in ((1, 0, 0), (0, 1, 0), (0, 0, 1)))
 
 
 # -- factors ----------------------------------------------------------------------------------------------------
