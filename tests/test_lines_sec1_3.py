@@ -50,7 +50,7 @@ def test_every_registered_check_of_the_part_is_used_and_reports_plain_values(res
 
 def test_errata_lines_name_their_fields():
     errata = [x for x in P.LINES if x.status == "erratum"]
-    assert len(errata) == 11
+    assert len(errata) == 13  # 11 + sec1_3-lemma-hypotheses, sec1_3-induction-orders (Section 3 part)
     known = {x.erratum.get("id") for x in errata if x.check.startswith("claim:")}
     assert known == {"lemma-sign-cos-power", "parametrization-partition-of-unity-range",
                      "independence-proof-gamma-index"}
@@ -92,9 +92,10 @@ def test_boundary_vars_reads_the_transcriptions_and_rejects_a_wrong_variable():
 
 
 def test_sum_bound_and_levels_distinguish_printed_from_corrected():
-    assert not C.rp1_aform().holds_as_printed
-    assert C.rp1_aform(upper=C.CORRECTED_P1_UPPER).holds_as_printed
-    assert not C.rp1_asystem().holds_as_printed and C.rp1_asystem(upper=C.CORRECTED_P1_UPPER).holds_as_printed
+    r = C.rp1_aform()
+    assert not r.holds_as_printed and r.corrected_holds
+    r = C.rp1_asystem()
+    assert not r.holds_as_printed and r.corrected_holds
     assert C.rp1_zeroed(level=lambda n, r: r + 1).holds_as_printed
     assert C.rp2_zeroed(level=lambda n, r: r + 1).holds_as_printed
     # the correctly printed beta' line would fail with the level n-1 of the rho', gamma' lines
@@ -110,17 +111,15 @@ def test_index_set_comparison_rejects_a_shifted_level():
 
 
 def test_kth_term_rejects_a_wrong_exponent():
-    rows = dict(C.KTERM_ROWS)
-    rows["R-low"] = lambda n, m, z, k, pt: {C.lab("R", n, i, j): C._sn(pt, "t", 2 * n - i)
-                                            * C._dk(pt, "alpha-t", i, 0, k) * C._M(i - j + 1, j, z)
-                                            for j in range(m, n) for i in range(j, n + 1)}
-    assert C.kterm_row_check("R-low").holds_as_printed
-    assert not C.kterm_row_check("R-low", rows=rows).holds_as_printed
-    rows = dict(C.KTERM_ROWS)  # a row that forgets the last i of its range no longer covers L_r
-    rows["B-high"] = lambda n, m, z, k, pt: {C.lab("B", n, i, j): C._sn(pt, "t", i) * C._S(2 * n - i, z)
-                                             * C._dk(pt, "alpha-t", j, 2 * n - i - j, k) for j in range(m, n)
-                                             for i in range(n + 1, 2 * n - 1 - j)}
-    assert not C.kterm_row_check("B-high", rows=rows).holds_as_printed
+    from paper_repro.printed.lines import substituted, verbatim
+
+    assert C.kterm_row_check("sec1_3-kterm-R-low").holds_as_printed
+    text = verbatim("sec1_3-kterm-R-low")
+    with substituted({"sec1_3-kterm-R-low": text.replace("M_{i-j,", "M_{i-j+1,")}):
+        assert not C.kterm_row_check("sec1_3-kterm-R-low").holds_as_printed
+    text = verbatim("sec1_3-kterm-B-high")  # a row that forgets the last i of its range no longer covers L_r
+    with substituted({"sec1_3-kterm-B-high": text.replace("^{2n-1-j}", "^{2n-2-j}")}):
+        assert not C.kterm_row_check("sec1_3-kterm-B-high").holds_as_printed
 
 
 def test_bernstein_checks_accept_the_order_one_identity():
@@ -202,7 +201,10 @@ def test_bernstein_errata_checks_read_the_corrected_part(line_id, right, wrong):
 
 
 def test_interval_check_accepts_a_comma():
-    assert C.interval_typo(printed=r"\left[ 0,\alpha\right]").holds_as_printed
+    from paper_repro.printed.lines import substituted
+
+    with substituted({"sec1_3-r0-p3-interval": r"x\in\left[ 0,\alpha\right]"}):
+        assert C.interval_typo().holds_as_printed
 
 
 def test_fig_n4_rule_holds_at_every_order():
@@ -340,7 +342,6 @@ def test_a_systems_are_read_and_tied_to_their_sums(line_id, right, wrong):
 
 
 @pytest.mark.parametrize("line_id, right, wrong", [
-    ("sec1_3-induction-orders", "\\ldots,n$", "\\ldots,n-1$"),
     ("sec1_3-induction-range", "\\ldots,n-1$", "\\ldots,n$"),
     ("sec1_3-step-range", "\\ldots,n-2$", "\\ldots,n-1$"),
     ("sec1_3-induction-conclusion", "$r=0,1,", "$r=1,2,"),
@@ -418,3 +419,86 @@ def test_printed_symmetry_objects_come_from_the_transcriptions():
         with pytest.raises(TexError):
             S.printed_g(2, 1, 0)
     assert S.printed_g(2, 1, 0) == (0, 1, 1, 0, 3, 0)
+
+
+# ==============================================================================================================
+# Section 3 (sec:linear_independence, source lines >= 462): the checks read their lines (issue 37)
+# ==============================================================================================================
+def test_sec3_reader_reads_products_parametrizations_and_sign_functions():
+    from paper_repro.printed.lines import verbatim
+    from paper_repro.printed.lines.sec3_read import (
+        linear_form,
+        read_parametrization,
+        read_products,
+        read_sign_function,
+        sign_of,
+    )
+
+    assert linear_form(r"\alpha-x-y") == (1, -1, -1) and linear_form("x-y") == (0, 1, -1)
+    with pytest.raises(ValueError):
+        linear_form(r"\alpha-1")
+    maps, ranges = read_parametrization(verbatim("sec1_3-param-2"))
+    assert maps == ((0, 1, 0), (1, -1, -1), (0, 0, 1)) and ranges["y"] == ("0", "\\alpha-x")
+    (term,) = read_products(verbatim("sec1_3-kterm-R-low"))
+    assert term.sums == [("j", "r+1", "n-1"), ("i", "j", "n")] and term.constant == ("R", "2n-i", "j", False)
+    assert [f.kind for f in term.factors] == ["trig", "bar", "trig", "bar", "M"]
+    cos = read_sign_function(verbatim("sec1_3-sign-cos"))
+    assert sign_of(cos, i=2, p=2) == 1          # printed +1, the true sign is -1 (erratum lemma-sign-cos-power)
+    assert sign_of(cos, i=1, p=2) is None       # no printed branch applies
+    assert sign_of(cos, i=1, p=1) is None       # branches 0 (p odd) and +1 (p - i = 0 = 2r, r even) both apply
+    with pytest.raises(ValueError):
+        read_products("XXX")
+
+
+def test_sec3_blank_lines_fail_their_checks():
+    from paper_repro.claims.lines.mutation import blank_test
+
+    recs = blank_test(["sec1_3-kterm-p1-centre", "sec1_3-r-p2-kpos", "sec1_3-param-3", "sec1_3-fig-n4-caption",
+                       "sec1_3-interval-typo", "sec1_3-independence-rank", "sec1_3-r0-p3-aform"])
+    assert all(r["killed"] for r in recs), [r["check"] for r in recs if not r["killed"]]
+
+
+@pytest.mark.parametrize("check, line_id, right, wrong", [
+    ("sec1_3-r0-p1-aform", "sec1_3-r0-p1-aform", "\\sum_{i=0}^{2n}", "\\sum_{i=0}^{2n-1}"),
+    ("sec1_3-r0-p1-cform", "sec1_3-r0-p1-rho-prime", "{c_{2n,0}^{\\alpha}}", "{c_{2n,1}^{\\alpha}}"),
+    ("sec1_3-r-p2-k0", "sec1_3-rp2-k0", "S_{r+1,\\frac{1}{2}}^{r+1}", "S_{r+2,\\frac{1}{2}}^{r+1}"),
+    ("sec1_3-r-p1-kpos", "sec1_3-rp1-kpos", "1\\leq k", "0\\leq k"),
+    ("sec1_3-r-p3-aform", "sec1_3-rp3-reduced", "\\forall x", "\\forall y"),
+    ("sec1_3-param-1", "sec1_3-param-1", "& = & y,", "& = & \\alpha-x-y,"),
+    ("sec1_3-r0-p1-omitted", "sec1_3-r0-p1-omitted", "at least one", "at most one"),
+    ("sec1_3-r0-p2-omitted", "sec1_3-r0-p2-omitted", "=0$", "=1$"),
+    ("sec1_3-fig-n4-caption", "sec1_3-fig-n4-caption", "greater than the", "less than the"),
+    ("sec1_3-sin-power-leading", "sec1_3-sin-leading", "=j!\\mu^{j}", "=j!\\mu^{j+1}"),
+])
+def test_sec3_checks_reject_a_changed_line(check, line_id, right, wrong):
+    from paper_repro.printed.lines import substituted, verbatim
+
+    text = verbatim(line_id)
+    assert right in text and CHECKS[check]().holds_as_printed
+    with substituted({line_id: text.replace(right, wrong, 1)}):
+        assert not CHECKS[check]().holds_as_printed
+
+
+def test_sec3_new_errata_fail_as_printed_and_hold_corrected():
+    for res in (C.induction_orders(), C.lemma_hypotheses(), C.r0p1_sines(), C.rp1_aform(), C.rp1_asystem()):
+        assert res.holds_as_printed is False and res.corrected_holds is True, res.detail
+    # the induction range r = 0..n-1 (the hypothesis' own) is accepted
+    text = C._transcribed(["sec1_3-induction-orders"])["sec1_3-induction-orders"]
+    assert C.induction_orders(text.replace("\\ldots,n$", "\\ldots,n-1$")).holds_as_printed
+
+
+def test_sec3_printed_objects_are_read_not_retyped():
+    from paper_repro.printed import derivatives as D
+    from paper_repro.printed import independence as PI
+    from paper_repro.printed.lines import substituted, verbatim
+
+    assert D.printed_sign_m(1, 3) == -1 and D.printed_sign_sin(2, 1) == 0
+    with substituted({"sec1_3-sign-sin": verbatim("sec1_3-sign-sin").replace("r\\equiv1", "r\\equiv0", 1)}):
+        assert D.printed_sign_sin(1, 3) is None  # p - j = 2 = 2r, r = 1: no branch applies any more
+    assert PI.hypothesis_n_minus_2(3) == {"R_{6,3,3}", "R_{6,4,2}", "R_{6,3,2}", "G_{6,4,2}", "G_{6,3,2}",
+                                          "B_{6,4,2}", "B_{6,3,2}"}
+    with substituted({"sec1_3-L-R-row": verbatim("sec1_3-L-R-row").replace("j=0}^{n-1}", "j=1}^{n-1}")}):
+        assert "R_{6,6,0}" not in PI.linear_combination_union(3)
+    assert C.PARAMS["parametrization_3_y_0"][1] == "y"
+    with substituted({"sec1_3-chain-3": verbatim("sec1_3-chain-3").replace("\\partial y^{r}", "\\partial x^{r}")}):
+        assert C.PARAMS["parametrization_3_y_0"][1] == "x"

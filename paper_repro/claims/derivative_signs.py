@@ -1,15 +1,21 @@
 """Claim ``derivative_signs``: Lemma lem:sign_cos_power_derivative and Proposition derivative_cosine_sine.
 
-The printed sign rules (verbatim, :mod:`paper_repro.theory.derivatives`) against exact derivatives at 0
-computed from Taylor series with rational lambda, mu.  Disagreements become errata (with the
+The printed sign rules, read from the transcriptions of eqs. sign_cos_power_derivative, sign_sin_power_derivative
+and derivative_cosine_sine_at_0 (:func:`paper_repro.printed.lines.sec3_read.read_sign_function`: each branch's value
+and condition, the Proposition's hypotheses i + j != 0, z >= 1 read from its statement), against exact derivatives
+at 0 computed from Taylor series with rational lambda, mu.  Where no printed branch applies, or branches that apply
+give different values, the printed rule gives no sign (a mismatch).  Disagreements become errata (with the
 corrected rule, itself checked on the same range).
 """
 
 from __future__ import annotations
 
+import re
+
 from flint import fmpq
 
-from paper_repro.printed.derivatives import printed_sign_cos, printed_sign_m, printed_sign_sin
+from paper_repro.printed.lines import verbatim
+from paper_repro.printed.lines.sec3_read import _condition, read_sign_function, sign_of
 from paper_repro.theory.derivatives import (
     corrected_sign_cos,
     cos_power_derivative,
@@ -33,6 +39,29 @@ from paper_repro.util.registry import Outcome, claim
        rates=["1/2", "1", "3", "7/5"])
 def run(i_max, j_max, p_max, m_i_max, m_j_max, z_max, rates) -> Outcome:
     lams = [fmpq(*map(int, r.split("/"))) if "/" in r else fmpq(int(r)) for r in rates]
+    cos_rule = read_sign_function(verbatim("sec1_3-sign-cos"))
+    sin_rule = read_sign_function(verbatim("sec1_3-sign-sin"))
+    prop = verbatim("sec1_3-proposition-M")
+    # what each rule is the sign of, read: sign C_{i,lambda}^{p}(0) =, sign S_{j,mu}^{p}(0) =, sign M^{z}_{..}(0) =
+    for lid, head in (("sec1_3-sign-cos", r"C_\{i,\\lambda\}\^\{p\}"), ("sec1_3-sign-sin", r"S_\{j,\\mu\}\^\{p\}"),
+                      ("sec1_3-proposition-M", r"M_\{i,\\lambda,j,\\mu\}\^\{z\}")):
+        if not re.search(r"\\operatorname\{sign\}%?\s*" + head + r"\\left\(\s*0\\right\)\s*=\\left\\\{",
+                         verbatim(lid)):
+            raise ValueError(f"{lid}: the left-hand side sign X(0) = is not read")
+    if not re.match(r"Independently of \$i\\in%?\s*\\mathbb\{N\}\s*\$ and \$\\lambda,\\mu>0\$, for all values of "
+                    r"\$j,z\\in%?\s*\\mathbb\{N\}\s*\$ such that \$[^$]*\$ and \$[^$]*\$ we have the equality", prop):
+        raise ValueError("the Proposition's quantifiers are not read")
+    m_rule = read_sign_function(prop)
+    hyps = re.findall(r"\$([^$]*?(?:\\neq|\\geq)[^$]*?)\$", prop.split("\\begin{equation}")[0])
+    if len(hyps) != 2:
+        raise ValueError(f"the Proposition's hypotheses i+j != 0, z >= 1 not read: {hyps}")
+    m_domain = " and ".join(f"({_condition(h)})" for h in hyps)
+
+    def printed_sign_cos(i, p):
+        return sign_of(cos_rule, i=i, p=p)
+
+    def printed_sign_sin(j, p):
+        return sign_of(sin_rule, j=j, p=p)
     cos_bad, cos_corr_bad, sin_bad, m_bad = [], [], [], []
     n_cos = n_sin = n_m = 0
     for lam in lams:
@@ -54,11 +83,11 @@ def run(i_max, j_max, p_max, m_i_max, m_j_max, z_max, rates) -> Outcome:
         for mu in lams:
             for i in range(0, m_i_max + 1):
                 for j in range(0, m_j_max + 1):
-                    if i + j == 0:
-                        continue
-                    for z in range(1, z_max + 1):
+                    for z in range(0, z_max + 1):
+                        if not eval(m_domain, {"__builtins__": {}}, {"i": i, "j": j, "z": z}):  # noqa: S307
+                            continue
                         n_m += 1
-                        if printed_sign_m(j, z) != sign(mixed_derivative(i, lam, j, mu, z)):
+                        if sign_of(m_rule, j=j, z=z, i=i) != sign(mixed_derivative(i, lam, j, mu, z)):
                             m_bad.append({"i": i, "j": j, "z": z, "lambda": str(lam), "mu": str(mu)})
     errata = []
     if cos_bad and not cos_corr_bad:
@@ -70,12 +99,34 @@ def run(i_max, j_max, p_max, m_i_max, m_j_max, z_max, rates) -> Outcome:
             "corrected": "0 if p is odd; (-1)^(p/2) if p is even (for every i >= 1, lambda > 0)",
             "evidence": f"exact Taylor coefficients: {len(cos_bad)} of {n_cos} cases (i <= {i_max}, p <= {p_max}, "
                         f"lambda in {rates}) disagree with the printed rule (no printed case applies when p is even "
-                        f"and i odd; the sign is wrong when i = 2 mod 4), e.g. {examples}; the corrected rule "
+                        f"and i odd; when p and i are both odd the branches 0 (p odd) and +-1 (p-i = 2r) both apply; "
+                        f"the sign is wrong when i = 2 mod 4), e.g. {examples}; the corrected rule "
                         "matches all cases. The proof of the theorem uses Proposition derivative_cosine_sine, "
                         "which is correct."})
+    # the erratum recorded on the line describes this transcription: its evidence counts the same mismatches
+    from paper_repro.printed.lines import line
+
+    recorded = re.search(r"(\d+) of (\d+) cases", line("sec1_3-sign-cos").erratum["evidence"])
+    same_evidence = bool(recorded) and (int(recorded.group(1)), int(recorded.group(2))) == (len(cos_bad), n_cos)
+    # ... and its three kinds of failure: no branch (p even, i odd), two branches with different values (p, i odd),
+    # a wrong sign (p even, i = 2 mod 4) -- recomputed from the rule read and the exact derivatives
+    kinds = {"none": set(), "several": set(), "wrong": set()}
+    for i in range(1, i_max + 1):
+        for p in range(0, p_max + 1):
+            applies = {v for v, c in cos_rule if eval(c, {"__builtins__": {}}, {"i": i, "p": p})}  # noqa: S307
+            if not applies:
+                kinds["none"].add((i, p))
+            elif len(applies) > 1:
+                kinds["several"].add((i, p))
+            elif applies.pop() != sign(cos_power_derivative(i, lams[0], p)):
+                kinds["wrong"].add((i, p))
+    grid = [(i, p) for i in range(1, i_max + 1) for p in range(0, p_max + 1)]
+    same_evidence &= (kinds["none"] == {(i, p) for i, p in grid if p % 2 == 0 and i % 2 == 1}
+                      and kinds["several"] == {(i, p) for i, p in grid if p % 2 == 1 and i % 2 == 1}
+                      and kinds["wrong"] == {(i, p) for i, p in grid if p % 2 == 0 and i % 4 == 2})
     # pass: what the statement asserts holds -- sine rule and Proposition exact, every cosine-rule mismatch
     # recorded as an erratum whose corrected rule matches all cases
-    ok = not sin_bad and not m_bad and not cos_corr_bad and bool(cos_bad) and bool(errata)
+    ok = not sin_bad and not m_bad and not cos_corr_bad and bool(cos_bad) and bool(errata) and n_m > 0 and same_evidence
     return Outcome(ok, {
         "cos_rule_mismatches": len(cos_bad), "cos_cases": n_cos, "corrected_cos_rule_mismatches": len(cos_corr_bad),
         "sin_rule_mismatches": len(sin_bad), "sin_cases": n_sin,

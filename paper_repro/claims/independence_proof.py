@@ -29,6 +29,7 @@ joint_systems_linear_independence and the partition-of-unity system, each checke
 
 from __future__ import annotations
 
+import re
 from math import comb
 
 import mpmath
@@ -47,14 +48,25 @@ from paper_repro.util.registry import Outcome, claim
 #: Source lines of Theorem joint_systems_linear_independence and its proof (begin{theorem} .. end{proof}).
 PROOF_LINES = (624, 1405)
 
-#: (variables as functions of (x, y) given alpha; the running parameter; the two partial variables (a, b)
-#: with d/dparam = d_a - d_b)
-PARAMETRIZATIONS = {
-    "parametrization_for_partition_of_unity": (lambda a, x, y: (a - x, y, x - y), "y", (1, 2)),
-    "parametrization_1_y_0": (lambda a, x, y: (x, y, a - x - y), "y", (1, 2)),
-    "parametrization_2_x_0": (lambda a, x, y: (x, a - x - y, y), "x", (0, 1)),
-    "parametrization_3_y_0": (lambda a, x, y: (a - x - y, x, y), "y", (2, 0)),
-}
+#: the parametrizations the claim uses; their maps, ranges and running parameters are read from the transcriptions
+PARAM_LABELS = ("parametrization_for_partition_of_unity", "parametrization_1_y_0", "parametrization_2_x_0",
+                "parametrization_3_y_0")
+
+
+def parametrizations() -> dict[str, tuple]:
+    """label -> (map (alpha, x, y) -> (u, v, w), running parameter, (a, b) with d/d(param) = d_a - d_b): the printed
+    maps and running parameters read from the transcriptions (:func:`paper_repro.claims.lines.sec1_3._params`), the
+    pair (a, b) computed from the map's direction vector."""
+    from paper_repro.claims.lines.sec1_3 import _params, step_geometry
+
+    out = {}
+    for label in PARAM_LABELS:
+        fmap, run = _params()[label][:2]
+        direction = step_geometry(label)[0]
+        out[label] = (fmap, run, (direction.index(1), direction.index(-1)))
+    return out
+
+
 CHAIN_LABELS = {"parametrization_for_partition_of_unity": "chain_rule",
                 "parametrization_1_y_0": "derivative_formula_parametrization_1",
                 "parametrization_2_x_0": "derivative_formula_parametrization_2",
@@ -103,7 +115,7 @@ def _factor(e, var: int, z: int, t):
 
 def chain_rule_error(n: int, param: str, r: int, labels_in: set[str], seed: int) -> mpmath.mpf:
     """|d^r/dparam^r L(composite) - sum_k C(r,k)(-1)^k d^{r-k}_a d^k_b L| / scale, at two points, 40 digits."""
-    fmap, var, (ia, ib) = PARAMETRIZATIONS[param]
+    fmap, var, (ia, ib) = parametrizations()[param]
     labels = [lab for lab in united_system(n) if lab.name in labels_in]
     rng = np.random.default_rng(seed)
     coef = [int(c) for c in rng.integers(-5, 6, size=len(labels))]
@@ -132,16 +144,13 @@ def chain_rule_error(n: int, param: str, r: int, labels_in: set[str], seed: int)
     return worst
 
 
-def parametrization_ok(param: str, y_range=lambda a, x: a - x) -> bool:
-    """The parameter triangle x in [0, alpha], y in [0, y_range(alpha, x)] (as printed: [0, alpha - x]) is
-    mapped onto Omega^alpha: every sampled image has u + v + w = alpha and u, v, w >= 0, and the three
-    vertices of the parameter triangle go to the three vertices of Omega^alpha (exact, alpha = 3/2)."""
-    fmap = PARAMETRIZATIONS[param][0]
-    a = fmpq(3, 2)
-    corners = {tuple(fmap(a, x, y)) for x, y in ((0, 0), (a, 0), (0, y_range(a, 0)), (a, y_range(a, a)))}
-    inside = all(sum(fmap(a, x, y)) == a and min(fmap(a, x, y)) >= 0
-                 for x in (fmpq(k, 7) * a for k in range(8)) for y in (fmpq(m, 9) * y_range(a, x) for m in range(10)))
-    return inside and corners == {(a, 0, 0), (0, a, 0), (0, 0, a)}
+def parametrization_ok(param: str, y_range=None, ranges=None) -> bool:
+    """The printed parameter triangle (read from the transcription; ``y_range(alpha, x)`` replaces the printed
+    y-range, ``ranges`` both) is mapped onto Omega^alpha by the printed map: exact images of a grid and of the
+    vertices (:func:`paper_repro.claims.lines.sec1_3.param_onto`)."""
+    from paper_repro.claims.lines.sec1_3 import param_onto
+
+    return param_onto(param, y_to=y_range, ranges=ranges)
 
 
 ERRATA = [
@@ -287,7 +296,27 @@ def run(n_max: int, r_max: int, system_n_max: int) -> Outcome:
                                                              printed.reduced_y_derivative_tilde(n, 0), 6))
     chain["y_derivative_L_hat_n_minus_2"] = float(chain_rule_error(n, "parametrization_3_y_0", 1,
                                                                    printed.reduced_x_derivative_hat(n, 0), 7))
-    params = {p: parametrization_ok(p) for p in PARAMETRIZATIONS}
+    from paper_repro.claims.lines.sec1_3 import _params, r0p1_sines
+    from paper_repro.printed.lines import verbatim
+    from paper_repro.printed.lines.read import interval
+
+    params = {p: parametrization_ok(p) for p in PARAM_LABELS}
+    # the y-range of system_partition_of_unity (read), with the printed x-range of the parametrization
+    pu = "parametrization_for_partition_of_unity"
+    sys_line = verbatim("sec4_5-system-y-range")
+    if not re.fullmatch(r"\s*\\forall\s*y\\in\\left\[[^\]]*\\right\]\s*", sys_line):
+        raise ValueError(f"sec4_5-system-y-range not read: {sys_line!r}")
+    system_range = parametrization_ok(pu, ranges={"x": _params()[pu][3]["x"], "y": interval(sys_line, "y")})
+    # the errata recorded on the two lines describe these transcriptions: the y-range they call printed
+    from paper_repro.printed.lines import line
+    from paper_repro.printed.lines.sec3_read import linear_form
+
+    def recorded_y(line_id: str):
+        m = re.search(r"y in \[([^\]]+)\]", line(line_id).erratum["printed"])
+        return [linear_form(p.strip().replace("alpha", "\\alpha")) for p in m.group(1).split(",")] if m else None
+    described = (recorded_y("sec1_3-param-partition-of-unity") == [linear_form(q) for q in _params()[pu][3]["y"]]
+                 and recorded_y("sec4_5-system-y-range") == [linear_form(q) for q in interval(sys_line, "y")])
+    sines = r0p1_sines()
     # the printed range of parametrization_for_partition_of_unity is wrong; the corrected one must work
     corrected = parametrization_ok("parametrization_for_partition_of_unity", y_range=lambda a, x: x)
     g_only = [lab.name for lab in united_system(3) if lab.color == "G" and exponents(lab)[2] == 0 and
@@ -296,7 +325,9 @@ def run(n_max: int, r_max: int, system_n_max: int) -> Outcome:
     for m in range(1, system_n_max + 1):
         ok, rank, orb = partition_system(m, fmpq(1, 2), [fmpq(k, 11) for k in range(1, 2 * m + 4)])
         system[str(m)] = {"derivatives_equal_delta": ok, "rank": rank, "orbits": orb}
-    errata_found = params["parametrization_for_partition_of_unity"] is False and corrected and g_only == ["G_{6,6,0}"]
+    errata_found = (params["parametrization_for_partition_of_unity"] is False and system_range is False and corrected
+                    and g_only == ["G_{6,6,0}"] and sines.holds_as_printed is False and sines.corrected_holds is True
+                    and described)
     printed_lines = proof_lines()
     lines_ok = printed_lines["lines"] > 0 and not printed_lines["failures"]
     passed = (lines_ok and all(all(v.values()) for v in index_sets.values()) and all(e < 1e-25 for e in chain.values())
@@ -313,6 +344,10 @@ def run(n_max: int, r_max: int, system_n_max: int) -> Outcome:
                             "chain_rule_relative_errors": {k: bound(v, 1e-25) for k, v in chain.items()},
                             "parametrizations": params,
                             "parametrization_for_partition_of_unity_with_y_in_0_x": corrected,
+                            "system_partition_of_unity_printed_y_range_onto": system_range,
+                            "order0_sines_line": {"as_printed": sines.holds_as_printed,
+                                                  "corrected": sines.corrected_holds,
+                                                  "printed_unread": sines.detail.get("unread")},
                             "G_functions_not_vanishing_at_v_0_n_3": g_only,
                             "system_partition_of_unity": system,
                             "scope": f"exact set comparisons for n = 2..{n_max}; chain rules numerically (40 digits) "

@@ -12,8 +12,10 @@ The independent computations:
   trigonometric polynomials evaluated where the half-angle sines and cosines are rational (tan(x/4) rational);
 * the elimination of the proof, recomputed from these exact derivatives: the functions whose derivative of the
   step's order does not vanish at the boundary are removed, step by step;
-* the printed sums and primed coefficients, transcribed here as index ranges (functions of n and r), compared
-  with the computed sets and, as linear forms in the combining constants, with the computed values.
+* the printed sums, values and primed coefficients of Section 3 read from the transcriptions
+  (:mod:`paper_repro.printed.lines.sec3_read`: sums with their bounds, constants, half-angle sines and their
+  derivatives, S and M of the Lemma and the Proposition, c and A; the parametrizations and sign functions too),
+  compared with the computed sets and, as linear forms in the combining constants, with the computed values.
 """
 
 from __future__ import annotations
@@ -33,9 +35,10 @@ from paper_repro.core.domain import rational_alpha
 from paper_repro.core.labels import BasisLabel, compose, delta, exponents, full_system, index_of, united_system
 from paper_repro.core.univariate import c_const, c_numerator, c_numerator_by_expansion
 from paper_repro.printed import symmetry as printed_sym
+from paper_repro.printed.lines import line as transcribed_line
 from paper_repro.printed.lines import lines_of, verbatim
 from paper_repro.printed.lines.tex_expr import TexError, clean, parse, relation
-from paper_repro.theory.derivatives import mixed_derivative, sin_power_derivative
+from paper_repro.theory.derivatives import mixed_derivative, sign, sin_power_derivative
 
 HALF = fmpq(1, 2)
 #: alpha = 4 atan(t) for these t, and interior parameters x = 4 atan(t_x) with t_x < t (exact half angles).
@@ -75,14 +78,48 @@ def _factor_derivative(s: int, c: int, k: int, half: tuple[fmpq, fmpq]) -> fmpq:
     return sum((q * half[0] ** a * half[1] ** b for (a, b), q in _tpoly_derivative(s, c, k)), fmpq(0))
 
 
-# -- the parametrizations of the proof, as printed maps (x, y) -> (u, v, w) -------------------------------------
-#: name -> (map, running variable, which parameter is set to 0)
-PARAMS = {
-    "parametrization_for_partition_of_unity": (lambda a, x, y: (a - x, y, x - y), "y"),
-    "parametrization_1_y_0": (lambda a, x, y: (x, y, a - x - y), "y"),
-    "parametrization_2_x_0": (lambda a, x, y: (x, a - x - y, y), "x"),
-    "parametrization_3_y_0": (lambda a, x, y: (a - x - y, x, y), "y"),
+# -- the parametrizations of the proof, read from their transcriptions ------------------------------------------
+#: parametrization label -> (its line, the line of its derivative formula, which names the running parameter)
+PARAM_LINES = {
+    "parametrization_for_partition_of_unity": ("sec1_3-param-partition-of-unity", "sec1_3-chain-rule"),
+    "parametrization_1_y_0": ("sec1_3-param-1", "sec1_3-chain-1"),
+    "parametrization_2_x_0": ("sec1_3-param-2", "sec1_3-chain-2"),
+    "parametrization_3_y_0": ("sec1_3-param-3", "sec1_3-chain-3"),
 }
+
+
+@cache
+def _params() -> dict[str, tuple]:
+    """label -> (map (alpha, x, y) -> (u, v, w), running parameter, the three printed linear forms, printed ranges):
+    the maps and ranges read from the parametrization's transcription, the running parameter from the derivative
+    formula that differentiates along it (``\\frac{\\partial^{r}}{\\partial y^{r}}``)."""
+    from paper_repro.printed.lines.sec3_read import read_parametrization
+
+    out = {}
+    for label, (lid, chain) in PARAM_LINES.items():
+        maps, ranges = read_parametrization(_transcribed([lid])[lid])
+        m = re.search(r"\\frac\{\\partial\^\{r\}\}\{\\partial\s*([xy])\^\{r\}\}", _transcribed([chain])[chain])
+        if not m:
+            raise ValueError(f"no running parameter d^r/dx^r or d^r/dy^r in {chain}")
+
+        def fmap(a, x, y, maps=maps):
+            return tuple(p * a + q * x + s * y for p, q, s in maps)
+        out[label] = (fmap, m.group(1), maps, ranges)
+    return out
+
+
+class _LiveParams(dict):
+    """``PARAMS[label]`` = (map, running parameter) read from the transcriptions at every lookup."""
+
+    def __getitem__(self, label: str):
+        return _params()[label][:2]
+
+    def __iter__(self):
+        return iter(PARAM_LINES)
+
+
+#: label -> (map (alpha, x, y) -> (u, v, w), running parameter), read live from the transcriptions
+PARAMS = _LiveParams()
 
 
 @cache
@@ -1412,7 +1449,15 @@ def _domain_points(alpha_t: fmpq, count: int) -> list[tuple[tuple[fmpq, fmpq], .
 def independence_rank() -> LineResult:
     """T_{2n} is linearly independent (so dim span T_{2n} = delta_n): its exact collocation matrix at delta_n + 5
     rational points of Omega^alpha has rank delta_n (modulo a 61-bit prime: full rank there implies full rank over Q),
-    n = 1..5 at tan(alpha/4) = 1/2 and n = 1..4 at tan(alpha/4) = 3/4."""
+    n = 1..5 at tan(alpha/4) = 1/2 and n = 1..4 at tan(alpha/4) = 3/4.  Read from the transcription: the system
+    (\\ref{united_system}), the words "is linearly independent", and the space whose dimension is claimed, the span
+    of T_{2n}^alpha (its order 2n)."""
+    tex = re.sub(r"\s+", " ", _transcribed(["sec1_3-theorem"])["sec1_3-theorem"])
+    m = re.fullmatch(r"The function system \(\\ref\{united_system\}\) is linearly independent and the dimension of "
+                     r"the vector space \$\\mathcal\{T\}_\{(\w+)\}\^\{\\alpha\}=~\$\\emph\{span\}\$\\emph\{~\}"
+                     r"T_\{(\w+)\}\^\{\\alpha\}\$ is", tex.strip())
+    if not m or m.group(1) != m.group(2) or m.group(1) != "2n":
+        return LineResult(False, how="the statement read from the transcription", detail={"unread": tex[:60]})
     detail, ok = {}, True
     for at, n_max in zip(ALPHA_TS, (5, 4)):
         for n in range(1, n_max + 1):
@@ -1428,10 +1473,20 @@ def independence_rank() -> LineResult:
 
 @line_check("sec1_3-sin-power-leading")
 def sin_power_leading() -> LineResult:
-    """S^j_{j,mu}(0) = j! mu^j (exact Taylor series, j = 1..15, mu in {1/2, 1, 3, 7/5})."""
-    ok = all(sin_power_derivative(j, mu, j) == factorial(j) * mu**j for j in range(1, 16)
+    """"In particular, $S_{j,\\mu}^{j}\\left( 0\\right) =j!\\mu^{j}$" (read: the indices, the order, the point 0 and
+    the right-hand side factorial times power) against exact Taylor coefficients, j = 1..15, mu in {1/2, 1, 3, 7/5}."""
+    tex = re.sub(r"\s+", "", _transcribed(["sec1_3-sin-leading"])["sec1_3-sin-leading"])
+    m = re.search(r"\$S_\{([a-z]),\\mu\}\^\{([a-z])\}\\left\(0\\right\)=([a-z])!\\mu\^\{([a-z])\}\$", tex)
+    if not m or "Inparticular" not in tex:
+        return LineResult(False, how="the formula read from the transcription", detail={"unread": tex[:60]})
+    names = m.groups()
+    ok = all(sin_power_derivative(*(env[v] for v in names[:1]), mu, env[names[1]])
+             == factorial(env[names[2]]) * mu ** env[names[3]]
+             for j in range(1, 16) for env in [{"j": j}] if all(v in env for v in names)
              for mu in (fmpq(1, 2), fmpq(1), fmpq(3), fmpq(7, 5)))
-    return LineResult(ok, how="exact Taylor coefficients", detail={"ok": ok})
+    ok = ok and all(v == "j" for v in names)
+    return LineResult(ok, how="the printed formula read from the transcription against exact Taylor coefficients, "
+                      "j = 1..15", kind="exhaustive", detail={"ok": ok, "read": list(names)})
 
 
 # -- chain rules and parametrizations ----------------------------------------------------------------------------
@@ -1462,12 +1517,66 @@ def read_chain(tex: str) -> tuple[int, int]:
     return "uvw".index(m.group(2)), "uvw".index(m.group(3))
 
 
+_CHAIN_STRICT = re.compile(
+    r"^(?:\\frac\{\\partial\^\{(?P<o0>[^{}]+)\}\}\{\\partial(?P<run>[xy])\^\{(?P<o1>[^{}]+)\}\}"
+    r"(?P<f0>L|\\widetilde\{L\}_\{r\}|\\widehat\{L\}_\{r\}|L_\{r\})\((?P<args0>[^=]*)\))?="
+    r"\\sum_\{k=(?P<k0>[^{}]+)\}\^\{(?P<o2>[^{}]+)\}\\dbinom\{(?P<o3>[^{}]+)\}\{k\}\(-1\)\^\{k\}"
+    r"\\frac\{\\partial\^\{(?P<o4>[^{}]+)\}\}\{\\partial(?P<a>[uvw])(?:_\{(?P<ai>\d)\})?\^\{(?P<o5>[^{}]+)-k\}"
+    r"\\partial(?P<b>[uvw])(?:_\{(?P<bi>\d)\})?\^\{k\}\}"
+    r"(?P<f1>L|\\widetilde\{L\}_\{r\}|\\widehat\{L\}_\{r\}|L_\{r\})\((?P<args1>.*?)\)"
+    r"(?:\\rightvert_\{(?P<bar>[xy])=0\})?(?P<tail>[.,]?|,~\\forall(?P<qv>[xy])\\in\[(?P<lo>[^,\]]+),(?P<hi>[^\]]+)\][.,])$")
+
+
+def read_chain_strict(tex: str, param: str) -> dict:
+    """The whole printed chain rule ``\\frac{\\partial^{r}}{\\partial y^{r}}L(..) = \\sum_{k=0}^{r} \\dbinom{r}{k}
+    (-1)^k \\frac{\\partial^{r}}{\\partial a^{r-k}\\partial b^{k}} L(..) [|_{y=0}, \\forall x \\in [0,\\alpha]]``, read:
+    every order equal, the sum from k = 0, the arguments the coordinates of ``param`` (its index) at (x, y), the
+    point the running parameter at 0, the quantifier over the other parameter on its printed range
+    (``ValueError`` otherwise)."""
+    from paper_repro.printed.lines.sec3_read import linear_form
+
+    t = re.sub(r"\s+", "", tex.replace("%", ""))
+    for p in (r"\\begin\{equation\}", r"\\end\{equation\}", r"\\label\{[^{}]*\}", r"&", r"\\\\$",
+              r"\\left\.", r"\\right\.(?!\w)"):
+        t = re.sub(p, "", t)
+    t = t.replace("\\left(", "(").replace("\\right)", ")").replace("\\dfrac", "\\frac").replace("\\left[", "[")
+    t = t.replace("\\right]", "]").replace("\\right\\vert", "\\rightvert").replace("\\,", "")
+    t = re.sub(r"\{\\displaystyle\\sum\\limits(_\{[^{}]*\}\^\{[^{}]*\})\}", r"\\sum\1", t)
+    m = _CHAIN_STRICT.match(t)
+    if not m:
+        raise ValueError(f"chain rule not read: {t[:60]!r}")
+    orders = {m.group(g) for g in ("o0", "o1", "o2", "o3", "o4", "o5") if m.group(g) is not None}
+    if len(orders) != 1 or m.group("k0") != "0":
+        raise ValueError(f"orders {sorted(orders)} / sum from k={m.group('k0')}")
+    idx = STEP_PARAMS.index(param) + 1 if param in STEP_PARAMS else None
+    want_idx = str(idx) if idx else None
+    coords = ",".join(f"{c}{'_{' + want_idx + '}' if want_idx else ''}(x,y)" for c in "uvw")
+    if m.group("ai") != want_idx or m.group("bi") != want_idx or m.group("args1") != coords or \
+            (m.group("args0") is not None and m.group("args0") != coords) or m.group("f0") not in (None, m.group("f1")):
+        raise ValueError("the arguments are not the coordinates of the parametrization")
+    _fmap, run, _maps, ranges = _params()[param]
+    if m.group("run") not in (None, run) or m.group("bar") not in (None, run):
+        raise ValueError("not the running parameter of the parametrization")
+    if m.group("qv"):
+        free = "x" if run == "y" else "y"
+        lo, hi = _lin(m.group("lo"), 1), _lin(m.group("hi"), 1)
+        def at_edge(q: str) -> tuple[int, int, int]:  # the printed bound with the running parameter at 0
+            a, x, y = linear_form(q)
+            return (a, 0, y) if run == "x" else (a, x, 0)
+        if m.group("qv") != free or (lo, hi) != (0, 1) or m.group("bar") is None or \
+                [at_edge(q) for q in ranges[free]] != [at_edge(m.group("lo")), at_edge(m.group("hi"))]:
+            raise ValueError("the quantifier is not over the other parameter on [0, alpha]")
+    return m.groupdict()
+
+
 def _chain(param: str, check_id: str, override: dict[str, str] | None = None) -> LineResult:
     """Every line of ``check_id`` (the chain rule and its use at order r+1) read from its transcription: the pair of
     variables it differentiates must be the printed parametrization's direction e_a - e_b."""
     texts = {k: v for k, v in _transcribed([x.id for x in _lines_of(check_id)], override).items()}
     try:
         pairs = {k: read_chain(v) for k, v in sorted(texts.items())}
+        for v in texts.values():
+            read_chain_strict(v, param)
     except ValueError as exc:
         return LineResult(False, how="the chain rule read from the transcription", detail={"unread": str(exc)})
     ok = bool(pairs) and all(chain_ok(param, pr) for pr in pairs.values())
@@ -1504,23 +1613,56 @@ def chain_3(override=None) -> LineResult:
     return _chain("parametrization_3_y_0", "sec1_3-chain-rule-3", override)
 
 
-def param_onto(param: str, y_to=lambda a, x: a - x) -> bool:
-    """The parameter triangle x in [0, alpha], y in [0, y_to(alpha, x)] is mapped into Omega^alpha (grid points,
-    exact) and its vertices onto the vertices of Omega^alpha (an affine bijection of triangles: onto)."""
+def _lin(expr: str, a, x=None):
+    """A printed bound (linear form in alpha, x; no y) at alpha = a and x."""
+    from paper_repro.printed.lines.sec3_read import linear_form
+
+    ca, cx, cy = linear_form(expr)
+    if cy or (cx and x is None):
+        raise ValueError(f"the bound {expr!r} depends on {'y' if cy else 'x'}")
+    return ca * a + (cx * x if cx else 0)
+
+
+def param_onto(param: str, y_to=None, ranges: dict[str, tuple[str, str]] | None = None) -> bool:
+    """The printed map of ``param`` on its printed parameter triangle x in [x_lo, x_hi], y in [y_lo(x), y_hi(x)]
+    (read from the transcription; ``ranges`` or ``y_to(alpha, x)`` replace them) is an affine bijection onto
+    Omega^alpha: grid points go into Omega^alpha (u + v + w = alpha, u, v, w >= 0, exact) and the parameter
+    triangle's vertices onto the three vertices of Omega^alpha."""
     fmap = PARAMS[param][0]
+    rng = ranges or _params()[param][3]
     a = fmpq(3, 2)
-    grid = all(sum(fmap(a, x, y)) == a and min(fmap(a, x, y)) >= 0
-               for x in (fmpq(k, 8) * a for k in range(9)) for y in (fmpq(m, 8) * y_to(a, x) for m in range(9)))
-    ends = ((fmpq(0), fmpq(0)), (a, fmpq(0)), (fmpq(0), y_to(a, fmpq(0))), (a, y_to(a, a)))
+    x_lo, x_hi = _lin(rng["x"][0], a), _lin(rng["x"][1], a)
+
+    def y_lo(x):
+        return fmpq(0) if y_to else _lin(rng["y"][0], a, x)
+
+    def y_hi(x):
+        return y_to(a, x) if y_to else _lin(rng["y"][1], a, x)
+    if x_hi <= x_lo:
+        return False
+    xs = [x_lo + fmpq(k, 8) * (x_hi - x_lo) for k in range(9)]
+    pts = [(x, y_lo(x) + fmpq(m, 8) * (y_hi(x) - y_lo(x))) for x in xs for m in range(9)]
+    grid = all(y_hi(x) >= y_lo(x) for x in xs) and all(sum(fmap(a, x, y)) == a and min(fmap(a, x, y)) >= 0
+                                                          for x, y in pts)
+    ends = ((x_lo, y_lo(x_lo)), (x_hi, y_lo(x_hi)), (x_lo, y_hi(x_lo)), (x_hi, y_hi(x_hi)))
     corners = {tuple(fmap(a, x, y)) for x, y in ends}  # the parameter triangle's vertices (one listed twice)
     return grid and corners == {(a, 0, 0), (0, a, 0), (0, 0, a)}
 
 
 def _param(param: str) -> LineResult:
-    ok = param_onto(param)
-    return LineResult(ok, how="exact images of a grid of the parameter triangle and of its vertices (alpha = 3/2; "
-                      "the maps are linear in (alpha, x, y), so one alpha > 0 stands for every alpha)",
-                      kind="proof", detail={"onto": ok})
+    """The printed parametrization maps its printed triangle onto Omega^alpha, and its direction along the running
+    parameter is the pair of variables its derivative formula differentiates (read: d/dy = d_{v_1} - d_{w_1} for
+    parametrization_1_y_0), so the map is the one the proof differentiates."""
+    try:
+        chain_line = PARAM_LINES[param][1]
+        ok = param_onto(param) and chain_ok(param, read_chain(_transcribed([chain_line])[chain_line]))
+    except ValueError as exc:
+        return LineResult(False, how="the parametrization read from the transcription", kind="proof",
+                          detail={"unread": str(exc)})
+    return LineResult(ok, how="the printed map and ranges read from the transcription; exact images of a grid of the "
+                      "parameter triangle and of its vertices (alpha = 3/2; the maps are linear in (alpha, x, y), so "
+                      "one alpha > 0 stands for every alpha)", kind="proof",
+                      detail={"onto": ok, "map": [list(m) for m in _params()[param][2]]})
 
 
 @line_check("sec1_3-param-1")
@@ -1540,9 +1682,21 @@ def param_3() -> LineResult:
 
 @line_check("sec1_3-param-ranges")
 def param_ranges() -> LineResult:
-    ok = all(param_onto(p) for p in STEP_PARAMS)
-    return LineResult(ok, how="the three parametrizations on x in [0, alpha], y in [0, alpha - x]", kind="proof",
-                      detail={"onto": ok})
+    """"for all x in [0, alpha], y in [0, alpha - x] and order r in N" (read): on these ranges each of the three
+    printed parametrizations maps onto Omega^alpha."""
+    from paper_repro.printed.lines.read import interval
+
+    tex = _transcribed(["sec1_3-chain-ranges"])["sec1_3-chain-ranges"]
+    try:
+        rng = {"x": interval(tex, "x"), "y": interval(tex, "y")}
+        if not re.search(r"\\forall|for all", tex) or not re.search(r"r\\in%?\s*\\mathbb\{N\}", tex):
+            raise ValueError("no 'for all ... and order r in N'")
+        ok = all(param_onto(p, ranges=rng) for p in STEP_PARAMS)
+    except ValueError as exc:
+        return LineResult(False, how="the ranges read from the transcription", kind="proof",
+                          detail={"unread": str(exc)})
+    return LineResult(ok, how="the ranges read from the transcription; the three printed parametrizations on them "
+                      "(exact images of the parameter triangle)", kind="proof", detail={"onto": ok, "ranges": rng})
 
 
 def read_boundary_vars(tex: str) -> list[tuple[str, str]]:
@@ -1553,6 +1707,50 @@ def read_boundary_vars(tex: str) -> list[tuple[str, str]]:
     if not params or len(params) != len(points):
         raise ValueError(f"{len(params)} parametrizations but {len(points)} points in {tex[:50]!r}")
     return list(zip(params, points))
+
+
+_NUMBER = {"two": 2, "three": 3, "four": 4, "five": 5}
+
+
+def _resp_vars(tex: str) -> list[list[str]]:
+    """The variables of every "with respect to [the variable|variables] $y$[, $x$ and $y$]" of a line."""
+    out = []
+    pat = r"with respect to (?:the variable |variables )?\$([xy])\$(?:, \$([xy])\$ and \$([xy])\$)?"
+    for m in re.finditer(pat, tex):
+        out.append([g for g in m.groups() if g])
+    return out
+
+
+def _step_words_ok(line_id: str, tex: str, pairs: list[tuple[str, str]]) -> bool:
+    """The words of a line that names steps of the proof, read: the order of the derivative ("$r=0$", "zeroth
+    order": 0 in the order-0 steps, before the induction; "$\\left( r+1\\right) $th order": r + 1 in the step
+    r -> r+1), the variables "with respect to" (those of the points), the number of "consecutive steps" (the
+    parametrizations named), and what black and coloured dots mean (vanish / do not vanish, substitutions with 0)."""
+    t = re.sub(r"\s+", " ", tex.replace("%", " "))
+    orders = [("0" if m.group(1) or m.group(2) else m.group(3).replace(" ", ""))
+              for m in re.finditer(r"\$r=(0)\$|(?<![\w-])(zeroth) order|\$\\left\( ?(r\+1) ?\\right\) ?\$th order", t)]
+    if re.search(r"\$r(?:=|\\neq)[^$]*\$|order", t) and not orders and "partial derivative formula" not in t \
+            and "under parametrizations" not in t:
+        raise ValueError(f"{line_id}: an order not read")
+    before_induction = transcribed_line(line_id).tex[0] < 912
+    if any(o != ("0" if before_induction else "r+1") for o in orders):
+        return False
+    points = [var for _p, var in pairs]
+    for vs in _resp_vars(t):
+        if vs != points[:len(vs)] and vs != points[-len(vs):]:
+            return False
+    m = re.search(r"illustrate (\w+) consecutive steps", t)
+    if m and _NUMBER.get(m.group(1)) != len(pairs):
+        return False
+    if "White dots" in t and not re.search(r"the combining constants of which proved to be \$0\$ in the previous "
+                                           r"steps", t):
+        return False
+    if "black dots" in t:
+        if not re.search(r"black dots represent functions whose zeroth order partial derivatives vanish when", t) or \
+                not re.search(r"partial derivatives of which do not vanish under corresponding parametrizations and "
+                              r"substitutions with \$0\$", t):
+            return False
+    return True
 
 
 @line_check("sec1_3-boundary-vars")
@@ -1567,6 +1765,12 @@ def boundary_vars(override: dict[str, str] | None = None) -> LineResult:
         return LineResult(False, how="the parametrizations and points read from the transcriptions",
                           detail={"unread": str(exc)})
     bad = {k: v for k, v in pairs.items() if any(PARAMS[p][1] != var for p, var in v)}
+    for k, v in texts.items():  # the orders and the variables the line names
+        try:
+            if not _step_words_ok(k, v, pairs[k]):
+                bad[k] = "words"
+        except ValueError as exc:
+            bad[k] = str(exc)
     edges = {p: "uvw"[step_geometry(p)[1]] for p in STEP_PARAMS}  # asserts one coordinate vanishes
     return LineResult(not bad, how="the parametrizations and points read from each transcription against the running "
                       "parameter of the printed maps, evaluated at 0", kind="proof",
@@ -1586,9 +1790,14 @@ def printed_rows(check_id: str, n: int, r: int = 0, override: dict[str, str] | N
 
     rows = {x.id: x.verbatim for x in LINES if x.check == check_id and x.kind == "display"}
     rows.update({k: v for k, v in (override or {}).items() if k in rows})
+    from paper_repro.printed.lines.sec3_read import row_residue
+
     strict = {lb.paper: k for k, lb in enumerate(united_system(n))}
     out: set = set()
     for key in sorted(rows):
+        rest = row_residue(rows[key])
+        if rest:
+            raise ValueError(f"{key}: unread {rest[:40]!r}")
         for color, i, j in term_indices(sum_terms(rows[key]), n=n, r=r):
             name = f"{color}_{{{2 * n},{2 * n - i},{j}}}"
             out.add(strict.get(name, name))
@@ -1607,10 +1816,30 @@ def _read_sets(check_id: str, computed_fn, rs=lambda n: [0], ns=N_PROOF, overrid
 
 @line_check("sec1_3-L-set")
 def l_set(override: dict[str, str] | None = None) -> LineResult:
+    """The rows of eq. linear_combination_union name every function of T_{2n} once; the constants listed after it
+    (line sec1_3-L-coefficients, read: rho_{2n,n,n} and the sets of rho and gamma -- the set of beta follows on the
+    next, untranscribed, line) are exactly the constants of the R and G terms of the rows (n = 1..12)."""
+    from paper_repro.printed.lines.read import constant_sets, sum_terms, term_indices
+
     res = _read_sets("sec1_3-L-set", lambda n, r: set(range(len(united_system(n)))), ns=range(1, 13),
                      override=override)
     res.how = res.how.replace("against the elimination recomputed from exact derivatives", "against T_{2n}")
     res.kind = "exhaustive"
+    t = _transcribed(["sec1_3-L-coefficients", "sec1_3-L-R-row", "sec1_3-L-G-row"], override)
+    bad = []
+    try:
+        if not re.match(r"\s*where \$\\rho_\{2n,n,n\}\$, \$\\left\\\{", t["sec1_3-L-coefficients"]):
+            raise ValueError("not 'where rho_{2n,n,n}, {..}'")
+        for n in range(1, 13):
+            listed = sorted(constant_sets(t["sec1_3-L-coefficients"], n))
+            rows = sorted(c for k in ("sec1_3-L-R-row", "sec1_3-L-G-row")
+                          for c in term_indices(sum_terms(t[k]), n=n))
+            if listed != rows:
+                bad.append(n)
+    except ValueError as exc:
+        bad.append(str(exc))
+    res.holds_as_printed &= not bad
+    res.detail["coefficients_mismatch"] = bad[:3]
     return res
 
 
@@ -1642,13 +1871,37 @@ def l0_set(override=None) -> LineResult:
     return _read_sets("sec1_3-L0-set", lambda n, r: alive_after(n, 0, 2), override=override)
 
 
-def _orders(line_id: str, n: int) -> range:
-    """The orders r of a listed range ``r=a,...,b`` read from the transcription of ``line_id``."""
-    from paper_repro.printed.lines.read import bound, listed_range
-    from paper_repro.printed.lines.sec1_3 import LINES
+def listed_orders(tex: str, var: str, **env: int) -> list[range]:
+    """Every listed range ``var=a,a+1,\\ldots,b`` of ``tex`` as a range (``ValueError`` if there is none, or if a
+    second listed value is not the first plus one)."""
+    from paper_repro.printed.lines.read import bound
+    from paper_repro.printed.lines.sec3_read import listing
 
-    lo, hi = listed_range({x.id: x.verbatim for x in LINES}[line_id], "r")
-    return range(bound(lo, n=n), bound(hi, n=n) + 1)
+    out = []
+    found = listing(tex, var)
+    if not found:
+        raise ValueError(f"no listed range {var}=a,...,b in {tex[:50]!r}")
+    for a, b, c in found:
+        lo = bound(a, **env)
+        if b is not None and bound(b, **env) != lo + 1:
+            raise ValueError(f"{var}={a},{b},... does not step by one")
+        out.append(range(lo, bound(c, **env) + 1))
+    return out
+
+
+def _orders(line_id: str, n: int) -> range:
+    """The orders r of the listed range ``r=a,a+1,...,b`` read from the transcription of ``line_id``; for the
+    hypothesis' orders (line sec1_3-Lr-orders) the line must say "for all orders" and "the coefficients of all
+    discarded functions are equal to $0$", and the range must be all orders of the recomputed elimination."""
+    tex = _transcribed([line_id])[line_id]
+    (rng,) = listed_orders(tex, "r", n=n)
+    if line_id == "sec1_3-Lr-orders":
+        if not re.fullmatch(r"for all orders \$r=.*\$, where the coefficients of all discarded functions are equal to "
+                            r"\$0\$\.", tex.strip()):
+            raise ValueError("not 'for all orders r=.., where the coefficients ... are equal to $0$.'")
+        if list(rng) != sorted({r for r, _p, _b, _g in elimination(n)}):
+            raise ValueError(f"the orders {list(rng)} are not those of the elimination")
+    return rng
 
 
 @line_check("sec1_3-Lr-set")
@@ -1677,7 +1930,10 @@ def level_zeroed(verbatim: str | None = None) -> LineResult:
 
     tex = verbatim if verbatim is not None else _transcribed(["sec1_3-step-zeroed"])["sec1_3-step-zeroed"]
     m = _CONSTANT_SET.search(tex.replace("\\left(", "(").replace("\\right)", ")"))
-    if not m or m.group(6) != "0":
+    words = re.search(r"^by evaluating its \$\\left\( r\+1\\right\) \$th order partial derivatives under "
+                      r"parametrizations \(\\ref\{parametrization_1_y_0\}\)--\(\\ref\{parametrization_3_y_0\}\) with "
+                      r"proper substitutions of \$0\$, where the combining constants", re.sub(r"\s+", " ", tex).strip())
+    if not m or m.group(6) != "0" or not words:
         return LineResult(False, how="the constants read from the transcription", detail={"unread": tex[:60]})
     levels, lo, hi = m.group(1, 2, 3), m.group(4), m.group(5)
 
@@ -1707,31 +1963,100 @@ def ln2_set(override=None) -> LineResult:
                       override=override)
 
 
+def bound_n(expr: str, n: int) -> int:
+    from paper_repro.printed.lines.read import bound
+
+    return bound(expr, n=n)
+
+
+def _names_set(n: int, idx) -> set[str]:
+    return set(_names(n, idx))
+
+
 @line_check("sec1_3-Ln1-set")
 def ln1_set(override=None) -> LineResult:
     """L_{n-1} = rho_{2n,n,n} R_{2n,n,n}, and R_{2n,n,n} is not the zero function (so rho_{2n,n,n} = 0)."""
     res = _read_sets("sec1_3-Ln1-set", lambda n, r: alive_after(n, n - 1, 2), override=override)
+    head = re.search(r"0=L_\{([^{}]+)\}\\left\( u,v,w\\right\) =", _transcribed(["sec1_3-Ln1"], override)["sec1_3-Ln1"])
+    # the equality is L_r for the last order r of the recomputed elimination
+    res.holds_as_printed &= bool(head) and all(
+        bound_n(head.group(1), n) == max(r for r, _p, _b, _g in elimination(n)) for n in N_PROOF)
     pt = _domain_points(ALPHA_TS[0], 1)[0]
     nonzero = all(pt[0][0] ** n * pt[1][0] ** n * pt[2][0] ** n != 0 for n in N_PROOF)
-    res.holds_as_printed &= nonzero
+    # "equality (..n_minus_1) holds if and only if \\[ \\rho_{2n,n,n}=0, \\]" (read): the one constant of L_{n-1},
+    # and the value 0 that R_{2n,n,n} != 0 forces
+    tex = re.sub(r"\s+", " ", _transcribed(["sec1_3-rho-centre-zero"], override)["sec1_3-rho-centre-zero"])
+    m = re.fullmatch(r"Moreover, equality \(\\ref\{induction_hypothesis_for_linear_independence_n_minus_1\}\) holds "
+                     r"if and only if% ?\\\[ \\rho_\{2n,(\w+),(\w+)\}=(\d+), \\\]", tex.strip())
+    names_ok = bool(m) and all(
+        {f"R_{{{2 * n},{bound_n(m.group(1), n)},{bound_n(m.group(2), n)}}}"} == _names_set(n, alive_after(n, n - 1, 2))
+        for n in N_PROOF)
+    res.holds_as_printed &= nonzero and names_ok and bool(m) and m.group(3) == "0"
     res.detail["centre_nonzero_at_a_point"] = nonzero
+    res.detail["rho_centre_zero_read"] = bool(m) and names_ok
     return res
+
+
+def _orders_prose(t: dict[str, str]) -> None:
+    """The words of the lines about the orders of the induction, read (``ValueError`` if one is not as the proof
+    does it): the hypothesis is on the "$r$th order" under the three parametrizations "with respect to variables"
+    equal to their points, each the running parameter of its printed map; the step goes "from $r$ to $r+1$ for all
+    orders"; the conclusion evaluates "the $\\left( r+1\\right) $th order" derivatives with the "zero constants"
+    obtained and holds "for all orders"; the figure's caption shows "three consecutive steps" (the three
+    parametrizations) whose "first (resp. (n-1)th) order partial derivatives vanish"; the text after it names the
+    equalities 0 = L_0 and 0 = L_{n-2} on Omega^alpha under the successive parametrizations."""
+    def norm(k):
+        return re.sub(r"\s+", " ", t[k].replace("%", " "))
+    rng = norm("sec1_3-induction-range")
+    pairs = read_boundary_vars(rng)
+    if not re.search(r"an induction hypothesis with respect to the \$r\$th order \(\$r=", rng) or \
+            _resp_vars(rng) != [[v for _p, v in pairs]] or any(PARAMS[p][1] != v for p, v in pairs):
+        raise ValueError("induction-range: words")
+    if not re.search(r"we prove our hypothesis from \$r\$ to \$r\+1\$ for all orders \$r=", norm("sec1_3-step-range")):
+        raise ValueError("step-range: words")
+    con = norm("sec1_3-induction-conclusion")
+    if not re.fullmatch(r"Summarizing all calculations and zero constants obtained above, by evaluating the "
+                        r"\$\\left\( r\+1\\right\) \$th order \(\$r=[^$]*\$\) partial derivatives under successive "
+                        r"parametrizations \(\\ref\{parametrization_1_y_0\} ?\)--\(\\ref\{parametrization_3_y_0\}\) "
+                        r"of "
+                        r"the initial equality \(\\ref\{induction_hypothesis_for_linear_independence\}\), we conclude "
+                        r"that equality \(\\ref\{induction_hypothesis_nex_step\}\) is also valid, i\.e\., the "
+                        r"induction hypothesis \(\\ref\{induction_hypothesis_for_linear_independence\}\) is correct "
+                        r"for all orders \$r=[^$]*\$\.", con.strip()):
+        raise ValueError("induction-conclusion: words")
+    cap = norm("sec1_3-fig-j1-caption-orders")
+    m = re.search(r"illustrate (\w+) consecutive steps", cap)
+    orders = re.findall(r"(?:whose|evaluates the) (first) \(resp\. \$\\left\( (n-1)\\right\) \$th\) order partial "
+                        r"derivatives (vanish when|of)", cap)
+    if not m or _NUMBER.get(m.group(1)) != len(STEP_PARAMS) or len(orders) != 2 or \
+            not re.search(r"Cases \(\\emph\{a\}\)--\(\\emph\{c\}\) and \(\\emph\{d\}\)--\(\\emph\{f\}\)", cap):
+        raise ValueError("fig-j1-caption-orders: words")
+    txt = norm("sec1_3-fig-j1-text")
+    eqs = re.findall(r"\\\[ 0=L_\{([^{}]+)\}\\left\( u,v,w\\right\) ,~\\forall\\left\( u,v,w\\right\) \\in ?"
+                     r"\\Omega\^\{\\alpha\} ?\\\]", txt)
+    if len(eqs) != 2 or not re.search(r"under successive parametrizations \(\\ref\{parametrization_1_y_0\} ?\)--"
+                                      r"\(\\ref\{parametrization_3_y_0\}\), respectively", txt):
+        raise ValueError("fig-j1-text: words")
 
 
 @line_check("sec1_3-elimination-orders")
 def elimination_orders(override: dict[str, str] | None = None) -> LineResult:
-    """The derivative orders the proof uses, read from its six lines and compared with the elimination recomputed
-    from exact derivatives: level j is removed by the order-j steps (parametrizations 1, 2, 3) and the centre by an
-    order-n step, so the induction runs over r = 0..n (line induction-orders); L_r exists, non-empty, for
-    r = 0..n-1 (induction-range); the steps r -> r+1 are r = 0..n-2 (step-range, induction-conclusion); the figure
-    shows the first and last of them, r = 0 and r = n-2, with derivatives of orders r + 1 of L_r."""
+    """The derivative orders the proof uses, read from five of its lines and compared with the elimination
+    recomputed from exact derivatives: level j is removed by the order-j steps (parametrizations 1, 2, 3); L_r
+    exists, non-empty, for r = 0..n-1 (induction-range); the steps r -> r+1 are r = 0..n-2 (step-range,
+    induction-conclusion); the figure shows the first and last of them, r = 0 and r = n-2, with derivatives of
+    orders r + 1 of L_r."""
     from paper_repro.printed.lines.read import bound, listed_range
 
-    ids = ("sec1_3-induction-orders", "sec1_3-induction-range", "sec1_3-step-range", "sec1_3-induction-conclusion",
+    ids = ("sec1_3-induction-range", "sec1_3-step-range", "sec1_3-induction-conclusion",
            "sec1_3-fig-j1-caption-orders", "sec1_3-fig-j1-text")
     t = _transcribed(ids, override)
     try:
-        ranges = {k: listed_range(t[k], "r") for k in ids[:4]}
+        ranges = {k: listed_range(t[k], "r") for k in ids[:3]}
+        for k in ids[:3]:  # every listing of the line steps by one and they agree
+            if len({(x.start, x.stop) for x in listed_orders(t[k], "r", n=5)}) != 1:
+                raise ValueError(f"{k}: listings differ")
+        _orders_prose(t)
         caption_r = re.findall(r"\$r=([^$]+)\$", t["sec1_3-fig-j1-caption-orders"])
         head = t["sec1_3-fig-j1-text"].split("order partial derivatives")[0]
         text_orders = re.findall(r"\b(first)\b|\$\\left\(\s*([^$]+?)\s*\\right\)\s*\$th", head)
@@ -1744,9 +2069,7 @@ def elimination_orders(override: dict[str, str] | None = None) -> LineResult:
         removed_at = sorted({r for r, _p, _b, gone in elimination(n) if gone})
         levels_ok = all(labels[k].j == r and not labels[k].is_centre for r, _p, _b, gone in elimination(n)
                         for k in gone) and alive_after(n, n - 1, 2) == frozenset({0})
-        centre_order = n if survivors(n, STEP_PARAMS[0], n, frozenset({0})) == frozenset({0}) else None
-        want = {"sec1_3-induction-orders": removed_at + [centre_order],
-                "sec1_3-induction-range": removed_at,  # the orders whose steps remove a level
+        want = {"sec1_3-induction-range": removed_at,  # the orders whose steps remove a level
                 "sec1_3-step-range": [r for r in range(n) if r + 1 < n],
                 "sec1_3-induction-conclusion": [r for r in range(n) if r + 1 < n]}
         for k, (lo, hi) in ranges.items():
@@ -1761,9 +2084,45 @@ def elimination_orders(override: dict[str, str] | None = None) -> LineResult:
                 bad.append(f"n={n}: figure")
         if not levels_ok:
             bad.append(f"n={n}: levels")
-    return LineResult(not bad, how="orders read from the six transcriptions against the elimination recomputed from "
+    return LineResult(not bad, how="orders read from the five transcriptions against the elimination recomputed from "
                       f"exact derivatives, n = 1..{N_PROOF.stop - 1}", kind="exhaustive",
                       detail={"ranges": {k: list(v) for k, v in ranges.items()}, "mismatches": bad[:3]})
+
+
+@line_check("sec1_3-induction-orders")
+def induction_orders(verbatim_text: str | None = None) -> LineResult:
+    """"we argue by mathematical induction on the derivation order $r=0,1,\\ldots,n$" (range read): the orders of the
+    derivatives the proof takes are those of the recomputed elimination -- the order-0 steps and the steps of order
+    r + 1, r = 0..n-2 -- i.e. 0..n-1 (level j is removed by the order-j steps; after them only the centre is left,
+    which the proof removes by R_{2n,n,n} != 0, without a derivative), and the hypothesis it proves is stated for
+    r = 0..n-1 (line sec1_3-Lr-orders, read).  Printed: 0..n; corrected: 0..n-1."""
+    from paper_repro.printed.lines.read import bound, listed_range
+
+    tex = verbatim_text if verbatim_text is not None else _transcribed(["sec1_3-induction-orders"])[
+        "sec1_3-induction-orders"]
+
+    def run(text: str) -> tuple[bool, list]:
+        lo, hi = listed_range(text, "r")
+        if "induction on the derivation order" not in text:
+            raise ValueError("not the induction on the derivation order")
+        hyp_lo, hyp_hi = listed_range(_transcribed(["sec1_3-Lr-orders"])["sec1_3-Lr-orders"], "r")
+        bad = []
+        for n in N_PROOF:
+            used = sorted({r for r, _p, _b, gone in elimination(n) if gone})
+            printed = list(range(bound(lo, n=n), bound(hi, n=n) + 1))
+            hyp = list(range(bound(hyp_lo, n=n), bound(hyp_hi, n=n) + 1))
+            if printed != used or printed != hyp or alive_after(n, n - 1, 2) != frozenset({0}):
+                bad.append({"n": n, "printed": printed, "orders_used": used})
+        return not bad, bad
+    try:
+        ok, bad = run(tex)
+        fixed = re.sub(r"(r=0,1,\\ldots,)n\$", lambda m: m.group(1) + "n-1$", tex)
+        corr = run(fixed)[0] if fixed != tex else None
+    except ValueError as exc:
+        return LineResult(False, how="the range read from the transcription", detail={"unread": str(exc)})
+    return LineResult(ok, corr, how="the printed range of orders against the orders of the elimination recomputed from "
+                      f"exact derivatives and the range of the hypothesis (read), n = 1..{N_PROOF.stop - 1}",
+                      kind="exhaustive", detail={"mismatches": bad[:3]})
 
 
 # -- value lines: linear forms in the combining constants -----------------------------------------------------
@@ -1817,23 +2176,195 @@ def _A(pt, k: int) -> fmpq:
     return _c(pt, k) * _sn(pt, "alpha-t", 2 * n - k) * _sn(pt, "t", k)
 
 
-# order-0 step, parametrization 1 (x = t, v = 0, w = alpha - t)
-def _r0p1_cform(n, r, pt):
-    """sum_{i=0}^{2n} rho'_{2n,2n-i,0} c_{2n,2n-i} sin^{2n-i}(x/2) sin^i((alpha-x)/2) with the printed rho'."""
+# -- Section 3 values read from the transcriptions (paper_repro.printed.lines.sec3_read) -------------------------
+def _unit(half: tuple[fmpq, fmpq]) -> tuple[fmpq, fmpq]:
+    """(cos, sin) of a half angle from (sin, cos): the unit complex number exp(i h)."""
+    return half[1], half[0]
+
+
+def _half_of(pt, p_alpha: int, q_t: int) -> tuple[fmpq, fmpq]:
+    """(sin, cos) of half the angle p_alpha * alpha + q_t * t at the boundary point (exact, by angle addition)."""
+    ea, et = _unit(pt["alpha"]), _unit(pt["t"])
+
+    def power(e, k):
+        e = e if k >= 0 else (e[0], -e[1])
+        return _cpow(e, abs(k))
+    c, s = _cmul(power(ea, p_alpha), power(et, q_t))
+    return s, c
+
+
+def _arg_half(arg: str, param_index: int, pt) -> tuple[fmpq, fmpq]:
+    """Half angles of a printed argument at the boundary of the step: a coordinate ``u_1`` of the printed
+    parametrization (its index must be the step's), or a linear form in alpha, x, y; (x, y) = (t, 0) when the
+    running parameter is y, (0, t) when it is x."""
+    from paper_repro.printed.lines.sec3_read import linear_form
+
+    _fmap, run, maps, _ranges = _params()[STEP_PARAMS[param_index]]
+    m = re.fullmatch(r"([uvw])_(\d)", arg)
+    if m:
+        if int(m.group(2)) != param_index + 1:
+            raise ValueError(f"{arg} in the step of parametrization {param_index + 1}")
+        a, x, y = maps["uvw".index(m.group(1))]
+    elif re.fullmatch(r"[uvw]", arg):
+        raise ValueError(f"an unindexed coordinate {arg} in a step of the proof")
+    else:
+        a, x, y = linear_form(arg)
+    return _half_of(pt, a, x if run == "y" else y)
+
+
+def _expr(expr: str, env: dict) -> int:
+    from paper_repro.printed.lines.read import bound
+
+    return int(bound(expr.replace("\\left(", "(").replace("\\right)", ")"), **env))
+
+
+def _factor_value(f, env: dict, param_index: int, pt, orders=None) -> fmpq:
+    """Value of one printed factor (:class:`paper_repro.printed.lines.sec3_read.Factor`) at the boundary point.
+    ``orders`` = (z, k) replaces the printed orders of S, M (z) and of a derivative (k) -- the factor structure
+    tested at other orders; the printed orders are compared with the step's apart."""
+    from paper_repro.printed.lines.sec3_read import rate
+
+    n = env["n"]
+    if f.kind == "bar":
+        run = _params()[STEP_PARAMS[param_index]][1]
+        if f.args[0] != run:
+            raise ValueError(f"evaluated at {f.args[0]} = 0 in a step at {run} = 0")
+        return fmpq(1)
+    if f.kind == "trig":
+        (s, c), arg = f.args
+        half = _arg_half(arg, param_index, pt)
+        k = 0
+        if f.deriv:
+            if f.deriv[1] != arg:
+                raise ValueError(f"d/d{f.deriv[1]} of a function of {arg}")
+            k = orders[1] if orders else _expr(f.deriv[0], env)
+        s_v, c_v = _expr(s, env), _expr(c, env)
+        if min(s_v, c_v, k) < 0:
+            raise ValueError("a negative power or order")
+        return _factor_derivative(s_v, c_v, k, half)
+    if f.kind in ("S", "M"):
+        sub, order = f.args
+        z = orders[0] if orders else _expr(order, env)
+        if f.kind == "S":
+            if len(sub) != 2:
+                raise ValueError(f"S with {len(sub)} indices")
+            j, mu = _expr(sub[0], env), rate(sub[1])
+            if j < 0 or z < 0:
+                raise ValueError("a negative power or order")
+            return sin_power_derivative(j, fmpq(mu.numerator, mu.denominator), z)
+        if len(sub) != 4:
+            raise ValueError(f"M with {len(sub)} indices")
+        i, lam, j, mu = _expr(sub[0], env), rate(sub[1]), _expr(sub[2], env), rate(sub[3])
+        if min(i, j, z) < 0:
+            raise ValueError("a negative power or order")
+        return mixed_derivative(i, fmpq(lam.numerator, lam.denominator), j, fmpq(mu.numerator, mu.denominator), z)
+    if f.kind == "c":
+        k = _expr(f.args[0], env)
+        if not 0 <= k <= 2 * n:
+            raise ValueError(f"c_{{2n,{k}}} does not exist")
+        return _c(pt, k)
+    if f.kind == "A":
+        k = _expr(f.args[0], env)
+        if not 0 <= k <= 2 * n:
+            raise ValueError(f"A_{{2n,{k}}} does not exist")
+        var = _arg_half(f.args[1], param_index, pt)
+        rest = _arg_half(f"\\alpha-{f.args[1]}", param_index, pt)
+        return _c(pt, k) * rest[0] ** (2 * n - k) * var[0] ** k
+    raise ValueError(f"unknown factor {f.kind}")
+
+
+def _prime_defs(line_ids) -> dict[str, tuple]:
+    """{colour of the primed constant: (level expression, cases)} read from the definition lines."""
+    from paper_repro.printed.lines.sec3_read import read_prime_definition
+
     out = {}
-    for i in range(0, 2 * n + 1):
-        key, div = (lab("R", n, i, 0), _c(pt, 2 * n - i)) if i <= 2 * n - 1 else (lab("G", n, 0, 0), _c(pt, 0))
-        out[key] = _c(pt, 2 * n - i) / div * _sn(pt, "t", 2 * n - i) * _sn(pt, "alpha-t", i)
+    for lid in line_ids:
+        (color, level), cases = read_prime_definition(_transcribed([lid])[lid])
+        out[color] = (level, cases)
     return out
 
 
-def _r0p1_aform(n, r, pt):
-    out = {}
-    for i in range(0, 2 * n + 1):
-        key, div = (lab("R", n, i, 0), _c(pt, 2 * n - i)) if i <= 2 * n - 1 else (lab("G", n, 0, 0), _c(pt, 0))
-        # A_{2n,2n-i}(x): the parameter of parametrization 1 at y = 0 is x = t
-        out[key] = _A_at(pt, 2 * n - i, "t") / div
+def _constant_key(const, env: dict, pt, primes: dict | None, used: set | None = None) -> tuple[object, fmpq]:
+    """(member of T_{2n} the printed constant multiplies -- a string if no member --, factor of its value): a primed
+    constant is resolved through its printed definition (the constant it stands for, divided by c)."""
+    color, first, level, primed = const
+    n = env["n"]
+    strict = {lb.paper: k for k, lb in enumerate(united_system(n))}
+    first_v, level_v = _expr(first, env), _expr(level, env)
+    if not primed:
+        name = f"{color}_{{{2 * n},{first_v},{level_v}}}"
+        return strict.get(name, name), fmpq(1)
+    if not primes or color not in primes:
+        raise ValueError(f"a primed {color} constant without its definition")
+    def_level, cases = primes[color]
+    if _expr(def_level, env) != level_v:
+        return f"{color}'_{{{2 * n},{first_v},{level_v}}} (undefined level)", fmpq(1)
+    i = 2 * n - first_v
+    if used is not None:
+        used.add((color, i))
+    for (c2, f2, l2), cidx, lo, hi in cases:
+        scope = {**env, "i": i}
+        if _expr(lo, scope) <= i <= _expr(hi, scope):
+            name = f"{c2}_{{{2 * n},{_expr(f2, scope)},{_expr(l2, scope)}}}"
+            ck = _expr(cidx, scope)
+            if not 0 <= ck <= 2 * n:
+                raise ValueError(f"c_{{2n,{ck}}} does not exist")
+            return strict.get(name, name), 1 / _c(pt, ck)
+    return f"{color}'_{{{2 * n},{first_v},{level_v}}} (undefined i)", fmpq(1)
+
+
+def evaluate_terms(terms, env: dict, param_index: int, pt, primes: dict | None = None, orders=None,
+                   used: set | None = None) -> dict:
+    """{member of T_{2n} (or a printed name that is none): the value its constant multiplies} of printed terms."""
+    out: dict = {}
+
+    def walk(term, sums, scope):
+        if not sums:
+            key, scale = _constant_key(term.constant, scope, pt, primes, used)
+            val = scale
+            for f in term.factors:
+                val *= _factor_value(f, scope, param_index, pt, orders)
+            out[key] = out.get(key, fmpq(0)) + val
+            return
+        (v, lo, hi), rest = sums[0], sums[1:]
+        for x in range(_expr(lo, scope), _expr(hi, scope) + 1):
+            walk(term, rest, {**scope, v: x})
+
+    for term in terms:
+        if term.constant is None:
+            raise ValueError("a term without a combining constant")
+        walk(term, term.sums, dict(env))
     return out
+
+
+def _pt(n: int, at: fmpq, x: fmpq):
+    pt = boundary_point(at, x)
+    pt["n"], pt["alpha_t"], pt["alpha"] = n, at, _half(at)
+    return pt
+
+
+def _quantified(tex: str, param_index: int) -> str:
+    """The value part of ``[0=] VALUE ,~\\forall V\\in\\left[ 0,\\alpha\\right]``: the quantifier must range over the
+    free variable of the step's edge and its printed range there, [0, alpha] (read)."""
+    from paper_repro.printed.lines.sec3_read import linear_form
+
+    m = re.search(r",\s*~?\s*\\forall\s*([xy])\s*\\in\s*\\left\[\s*([^,\]]+?)\s*,\s*([^\]]+?)\s*\\right\]", tex)
+    if not m:
+        raise ValueError(f"no quantifier forall x in [0, alpha] in {tex[:50]!r}")
+    run = _params()[STEP_PARAMS[param_index]][1]
+    free = "x" if run == "y" else "y"
+    if m.group(1) != free or linear_form(m.group(2)) != (0, 0, 0) or linear_form(m.group(3)) != (1, 0, 0):
+        raise ValueError(f"quantifier over {m.group(1)} in [{m.group(2)}, {m.group(3)}] on the edge {run} = 0")
+    return tex[:m.start()]
+
+
+def _value_part(tex: str, param_index: int) -> str:
+    """Strip ``\\[ 0=`` / ``& =`` before a value and the quantifier after it."""
+    body = _quantified(tex, param_index)
+    body = re.sub(r"^\s*(\\\[)?\s*0\s*=", " ", body) if re.match(r"^\s*(\\\[)?\s*0\s*=", body) else body
+    if re.match(r"^\s*(\\\[)", body):
+        raise ValueError("a display that does not start with 0 =")
+    return body
 
 
 def _A_at(pt, k: int, var: str) -> fmpq:
@@ -1859,6 +2390,12 @@ def read_terms_at_edge(line_id: str, param_index: int, verbatim: str | None = No
 
     tex = verbatim if verbatim is not None else _transcribed([line_id])[line_id]
     terms = sum_terms(tex)
+    rest = re.sub(r"\s+", "", tex.replace("%", ""))
+    rest = re.sub(r"^&=", "", re.sub(r"\\\\$", "", rest))
+    rest = re.sub(r"\\(rho|gamma|beta)_\{[^{}]*\}[RGB]_\{[^{}]*\}\^\{\\alpha\}\\left\([^()]*\\right\)", "", rest)
+    rest = re.sub(r"\\sum_\{[^{}]*\}\^\{[^{}]*\}", "", rest).replace("+", "")
+    if rest:
+        raise ValueError(f"unread {rest[:40]!r}")
     points = {re.sub(r"\s+", "", x) for x in re.findall(r"\\left\(\s*([^()]*?)\s*\\right\)", tex)}
     fmap, run = PARAMS[STEP_PARAMS[param_index]]
     a, q = fmpq(7, 5), fmpq(2, 5)  # the printed point and the map compared at exact values of alpha and the parameter
@@ -1904,41 +2441,64 @@ def r0p1_terms(verbatim: str | None = None) -> LineResult:
     return _terms_check("sec1_3-r0-p1-terms", 0, verbatim)
 
 
-@line_check("sec1_3-r0-p1-cform")
-def r0p1_cform() -> LineResult:
-    return _compare_forms(_r0p1_cform, _computed_step(0))
+_POWER_WORDS = {"at least": lambda e, m: e >= m, "greater than or equal to": lambda e, m: e >= m,
+                "greater than": lambda e, m: e > m, "at most": lambda e, m: e <= m, "less than": lambda e, m: e < m,
+                "equal to": lambda e, m: e == m}
+_NUMBER_WORDS = {"zero": 0, "one": 1, "two": 2, "three": 3}
 
 
-@line_check("sec1_3-r0-p1-aform")
-def r0p1_aform() -> LineResult:
-    return _compare_forms(_r0p1_aform, _computed_step(0))
+def read_omitted(tex: str) -> dict:
+    """The sentence "the omitted functions include the factor $\\left. \\sin\\frac{v_{1}(x,y)}{2}\\right\\vert _{y=0}
+    =\\left. \\sin\\frac{y}{2}\\right\\vert _{y=0}=0$ raised to a power at least one", read: the coordinate and its
+    parametrization index, the argument it equals, the points, the printed value and the power relation."""
+    t = re.sub(r"\s+", " ", tex.replace("%", " "))
+    m = re.search(r"\$\\left\. \\sin ?\\frac\{([uvw])_\{(\d)\}\\left\( x,y\\right\) \}\{2\}\\right\\vert _\{([xy])=0\}"
+                  r" ?= ?\\left\. \\sin ?\\frac\{([^{}]+)\} ?\{2\}\\right\\vert _\{([xy])=0\} ?= ?(\d+)\$ "
+                  r"raised to a power "
+                  r"(at least|greater than or equal to|greater than|at most|less than|equal to) (zero|one|two|three)\b",
+                  t)
+    if not m:
+        raise ValueError(f"the omitted functions' factor not read in {tex[:50]!r}")
+    return {"coord": m.group(1), "index": int(m.group(2)), "points": {m.group(3), m.group(5)}, "arg": m.group(4),
+            "value": int(m.group(6)), "relation": m.group(7), "power": _NUMBER_WORDS[m.group(8)]}
 
 
 def omitted_check(line_id: str, before: str, terms_line: str, param_index: int,
                   override: dict[str, str] | None = None) -> LineResult:
-    """"The omitted functions contain sin(x_k/2), 0 at the edge, to a power >= 1": read from the transcriptions
-    -- the variable (``\\sin\\frac{v_{1}..``), the functions before the step (the rows of ``before``) and those
-    kept (the terms of ``terms_line``) -- every function before the step and not kept has that sine to a power
-    >= 1, every kept one has not, and the variable is the one that vanishes on the step's edge (n = 1..12)."""
+    """"The omitted functions include the factor sin(x_k/2)|_{edge} = sin(t/2)|_{edge} = 0 raised to a power at least
+    one", read from the transcriptions (:func:`read_omitted`) together with the functions before the step (the rows
+    of ``before``) and those kept (the terms of ``terms_line``): the coordinate is the printed parametrization's
+    coordinate of the step (its index), equal to the printed argument (both as linear forms), and its half-angle
+    sine at the printed point (the step's edge) is the printed value, 0 (exact); every function before the step and
+    not kept has that sine to a power in the printed relation ("at least one"), every kept one has not (n = 1..12)."""
     from paper_repro.printed.lines.read import sum_terms, term_indices
+    from paper_repro.printed.lines.sec3_read import linear_form
 
     t = _transcribed([line_id, terms_line], override)
-    m = re.search(r"\\sin\s*\\frac\{([uvw])_\{\d\}", t[line_id])
-    if not m:
-        return LineResult(False, how="the vanishing sine read from the transcription, n = 1..12", kind="exhaustive",
-                          detail={"unread": line_id})
-    var = "uvw".index(m.group(1))
-    ok = var == step_geometry(STEP_PARAMS[param_index])[1]
+    try:
+        o = read_omitted(t[line_id])
+        _fmap, run, maps, _r = _params()[STEP_PARAMS[param_index]]
+        var = "uvw".index(o["coord"])
+        same_arg = linear_form(o["arg"]) == maps[var]
+        pt = _pt(1, ALPHA_TS[0], X_FRACTIONS[0])
+        value = _arg_half(f"{o['coord']}_{o['index']}", param_index, pt)[0]
+    except ValueError as exc:
+        return LineResult(False, how="the omitted functions' factor read from the transcription, n = 1..12",
+                          kind="exhaustive", detail={"unread": str(exc)})
+    rel = _POWER_WORDS[o["relation"]]
+    ok = same_arg and o["points"] == {run} and value == o["value"] and var == step_geometry(STEP_PARAMS[param_index])[1]
     for n in range(1, 13):
         strict = {lb.paper: k for k, lb in enumerate(united_system(n))}
         kept = {strict.get(f"{c}_{{{2 * n},{2 * n - i},{j}}}", "?") for c, i, j in
                 term_indices(sum_terms(t[terms_line]), n=n)}
         alive = printed_rows(before, n, 0, override)
         ok &= "?" not in kept and kept <= alive
-        ok &= all((exponents(united_system(n)[k])[2 * var] >= 1) == (k not in kept)
+        ok &= all(rel(exponents(united_system(n)[k])[2 * var], o["power"]) == (k not in kept)
                   for k in alive if isinstance(k, int))
-    return LineResult(ok, how=f"exponent of sin({m.group(1)}/2) in the functions before the step (read) against those "
-                      "kept (read), n = 1..12", kind="exhaustive", detail={"variable": m.group(1), "ok": bool(ok)})
+    return LineResult(ok, how=f"exponent of sin({o['coord']}/2) in the functions before the step (read) against those "
+                      "kept (read), the printed relation and power, and the printed value of the sine at the edge "
+                      "(exact), n = 1..12", kind="exhaustive",
+                      detail={"variable": o["coord"], "relation": f"{o['relation']} {o['power']}", "ok": bool(ok)})
 
 
 @line_check("sec1_3-r0-p1-omitted")
@@ -1947,23 +2507,9 @@ def r0p1_omitted(override: dict[str, str] | None = None) -> LineResult:
     return omitted_check("sec1_3-r0-p1-omitted", "sec1_3-L-set", "sec1_3-r0-p1-terms", 0, override)
 
 
-# order-0 step, parametrization 2 (u = 0, v = alpha - y, w = y; t = y)
-def _r0p2_aform(n, r, pt):
-    out = {}
-    for i in range(1, 2 * n + 1):
-        key, div = (lab("G", n, i, 0), _c(pt, 2 * n - i)) if i <= 2 * n - 1 else (lab("B", n, 0, 0), _c(pt, 0))
-        out[key] = _A_at(pt, 2 * n - i, "t") / div
-    return out
-
-
 @line_check("sec1_3-r0-p2-terms")
 def r0p2_terms(verbatim: str | None = None) -> LineResult:
     return _terms_check("sec1_3-r0-p2-terms", 1, verbatim)
-
-
-@line_check("sec1_3-r0-p2-aform")
-def r0p2_aform() -> LineResult:
-    return _compare_forms(_r0p2_aform, _computed_step(1))
 
 
 @line_check("sec1_3-r0-p2-omitted")
@@ -1972,19 +2518,9 @@ def r0p2_omitted(override: dict[str, str] | None = None) -> LineResult:
     return omitted_check("sec1_3-r0-p2-omitted", "sec1_3-Ltilde-set", "sec1_3-r0-p2-terms", 1, override)
 
 
-# order-0 step, parametrization 3 (u = alpha - x, v = x, w = 0; t = x)
-def _r0p3_aform(n, r, pt):
-    return {lab("B", n, i, 0): _A_at(pt, 2 * n - i, "t") / _c(pt, 2 * n - i) for i in range(1, 2 * n)}
-
-
 @line_check("sec1_3-r0-p3-terms")
 def r0p3_terms(verbatim: str | None = None) -> LineResult:
     return _terms_check("sec1_3-r0-p3-terms", 2, verbatim)
-
-
-@line_check("sec1_3-r0-p3-aform")
-def r0p3_aform() -> LineResult:
-    return _compare_forms(_r0p3_aform, _computed_step(2))
 
 
 def _a_system_rank(n: int, first: int, last: int) -> bool:
@@ -2002,26 +2538,66 @@ A_SYSTEM_OF = {"sec1_3-r0-p1-A-system": "sec1_3-r0-p1-aform", "sec1_3-r0-p2-A-sy
                "sec1_3-r0-p3-A-system": "sec1_3-r0-p3-aform"}
 
 
+def read_a_system(tex: str, param_index: int) -> tuple[str, str, str]:
+    """(first, last, index expression k(i)) of a printed system ``\\left\\{ A_{2n,k(i)}^{\\alpha}\\left( x\\right)
+    :x\\in\\left[ 0,\\alpha\\right] \\right\\} _{i=a}^{b}``, read: the variable must be the free parameter of
+    the step's edge and the interval its printed range there; "is"/"are linearly independent" where the line
+    says it (the thin-space typo ``0\\,\\alpha`` of one line is erratum sec1_3-r0-p3-interval)."""
+    t = tex.replace("%", " ")
+    m = re.search(r"\\left\\\{\s*A_\{2n,([^{}]+)\}\^\{\\alpha\}\\left\(\s*([xy])\\right\)\s*:\s*([xy])\s*\\in\s*"
+                  r"\\left\[\s*([^,\]\\]+?)\s*(?:,|\\,)\s*([^\]]+?)\s*\\right\]\s*\\right\\\}\s*_\{i=([^{}]+)\}"
+                  r"\^\{([^{}]+)\}\$(.*)$", t)
+    _fmap, run, _maps, ranges = _params()[STEP_PARAMS[param_index]]
+    free = "x" if run == "y" else "y"
+    if not m or m.group(2) != free or m.group(3) != free:
+        raise ValueError(f"no system {{A_{{2n,k}}({free}) : {free} in [0, alpha]}}_{{i=a}}^{{b}} in {tex[:40]!r}")
+    if (_lin(m.group(4), 1), _lin(m.group(5), 1)) != (0, 1):
+        raise ValueError(f"the interval [{m.group(4)}, {m.group(5)}] is not [0, alpha]")
+    after = m.group(8).strip()
+    if after and not re.fullmatch(r"(is|are) linearly independent", after):
+        raise ValueError(f"not 'is linearly independent': {after!r}")
+    if re.search(r"\bdependent", t.replace("independent", "")):
+        raise ValueError("'dependent'")
+    return m.group(6), m.group(7), m.group(1)
+
+
+def _display_a_indices(tex: str, param_index: int, n: int, r: int = 0) -> list[int]:
+    """The indices k of the A_{2n,k} in a printed display (its sums evaluated), in order."""
+    terms, _k = read_value_line(tex, param_index)
+    out = []
+
+    def walk(term, sums, scope):
+        if not sums:
+            out.extend(_expr(f.args[0], scope) for f in term.factors if f.kind == "A")
+            return
+        (v, lo, hi), rest = sums[0], sums[1:]
+        for x in range(_expr(lo, scope), _expr(hi, scope) + 1):
+            walk(term, rest, {**scope, v: x})
+    for term in terms:
+        walk(term, term.sums, {"n": n, "r": r})
+    return out
+
+
 @line_check("sec1_3-A-independent")
 def a_independent(override: dict[str, str] | None = None) -> LineResult:
-    """The subsystems {A_{2n,2n-i}}_{i=a}^{b} of the order-0 steps (ranges read from the transcriptions) are the
-    A's of the sum in the display before each (its bounds read too) and linearly independent (exact ranks)."""
-    from paper_repro.printed.lines.read import bound
-
+    """The subsystems {A_{2n,2n-i}}_{i=a}^{b} of the order-0 steps (read from the transcriptions: index expression,
+    range, variable and interval) are the A's of the sum in the display before each (read too) and linearly
+    independent (exact ranks), n = 1..5."""
     texts = _transcribed(list(A_SYSTEM_OF) + list(A_SYSTEM_OF.values()), override)
     ranges, ok = {}, True
-    for line_id, display in A_SYSTEM_OF.items():
-        m = re.search(r"\\right\\\}\s*_\{i=([^{}]+)\}\^\{([^{}]+)\}", texts[line_id])
-        d = re.search(r"\\sum_\{i=([^{}]+)\}\^\{([^{}]+)\}", texts[display])
-        if not m or not d:
-            return LineResult(False, how="the ranges read from the transcriptions, n = 1..5",
-                              detail={"unread": line_id if not m else display})
-        ranges[line_id] = list(m.groups())
-        for n in range(1, 6):
-            first, last = bound(m.group(1), n=n), bound(m.group(2), n=n)
-            ok &= (first, last) == (bound(d.group(1), n=n), bound(d.group(2), n=n))
-            ok &= 0 <= first <= last <= 2 * n and _a_system_rank(n, first, last)
-    return LineResult(ok, how="ranges read from the transcriptions, equal to the bounds of the sums they are used "
+    try:
+        for k, (line_id, display) in enumerate(A_SYSTEM_OF.items()):
+            first_e, last_e, idx = read_a_system(texts[line_id], k)
+            ranges[line_id] = [first_e, last_e, idx]
+            for n in range(1, 6):
+                first, last = _expr(first_e, {"n": n}), _expr(last_e, {"n": n})
+                listed = [_expr(idx, {"n": n, "i": i}) for i in range(first, last + 1)]
+                ok &= sorted(listed) == sorted(_display_a_indices(texts[display], k, n))
+                ok &= 0 <= first <= last <= 2 * n and _a_system_rank(n, first, last) and listed == \
+                    [2 * n - i for i in range(first, last + 1)]
+    except ValueError as exc:
+        return LineResult(False, how="the systems read from the transcriptions, n = 1..5", detail={"unread": str(exc)})
+    return LineResult(ok, how="systems read from the transcriptions, equal to the A's of the sums they are used "
                       "for; exact collocation ranks, n = 1..5", detail={"ranges": ranges})
 
 
@@ -2048,177 +2624,6 @@ def _M(i, j, z):
 
 def _S(j, z):
     return sin_power_derivative(j, HALF, z)
-
-
-# rows of the printed k-th term (parametrization 1: u_1 = x = t, v_1 = 0, w_1 = alpha - t), written for the lowest
-# level m (printed: m = r+1) and the orders z in v_1 (printed: z = r+1-k) and k in w_1, so that the printed factor
-# structure can be compared with the exact mixed partials at every order, not only where most of them vanish
-KTERM_ROWS = {
-    "centre": lambda n, m, z, k, pt: {lab("R", n, n, n): _sn(pt, "t", n) * _S(n, z) * _dk(pt, "alpha-t", n, 0, k)},
-    "R-low": lambda n, m, z, k, pt: {lab("R", n, i, j): _sn(pt, "t", 2 * n - i) * _dk(pt, "alpha-t", i, 0, k)
-                                     * _M(i - j, j, z) for j in range(m, n) for i in range(j, n + 1)},
-    "R-high": lambda n, m, z, k, pt: {lab("R", n, i, j): _dk(pt, "alpha-t", i, 0, k) * _sn(pt, "t", 2 * n - i)
-                                      * _M(2 * n - i - j, j, z) for j in range(m, n)
-                                      for i in range(n + 1, 2 * n - 1 - j + 1)},
-    "G-low": lambda n, m, z, k, pt: {lab("G", n, i, j): _dk(pt, "alpha-t", 2 * n - i, 0, k) * _S(i, z)
-                                     * pt["t"][1] ** (i - j) * pt["t"][0] ** j
-                                     for j in range(m, n) for i in range(j, n + 1)},
-    "G-high": lambda n, m, z, k, pt: {lab("G", n, i, j): _S(i, z) * _dk(pt, "alpha-t", 2 * n - i, 0, k)
-                                      * pt["t"][1] ** (2 * n - i - j) * pt["t"][0] ** j
-                                      for j in range(m, n) for i in range(n + 1, 2 * n - 1 - j + 1)},
-    "B-low": lambda n, m, z, k, pt: {lab("B", n, i, j): _S(2 * n - i, z) * _sn(pt, "t", i)
-                                     * _dk(pt, "alpha-t", j, i - j, k) for j in range(m, n) for i in range(j, n + 1)},
-    "B-high": lambda n, m, z, k, pt: {lab("B", n, i, j): _sn(pt, "t", i) * _S(2 * n - i, z)
-                                      * _dk(pt, "alpha-t", j, 2 * n - i - j, k) for j in range(m, n)
-                                      for i in range(n + 1, 2 * n - 1 - j + 1)},
-}
-
-
-def _row_members(n: int, r: int, row: str, rows=None) -> set[int]:
-    pt = boundary_point(ALPHA_TS[0], X_FRACTIONS[0])
-    pt["n"], pt["alpha_t"] = n, ALPHA_TS[0]
-    return set((rows or KTERM_ROWS)[row](n, r + 1, 0, 0, pt))
-
-
-def kterm_row_check(row: str, rows=None) -> LineResult:
-    """One row of the printed k-th term: for each of its functions the printed product of factors equals the exact
-    mixed partial d^z/dv_1^z d^k/dw_1^k of that function at y = 0, for the printed orders z = r+1-k (k = 0..r+1) and,
-    to test the factor structure where it does not vanish, for all z = 0..n+2, k = 0..2; the rows together list
-    exactly the functions of L_r."""
-    rows = rows or KTERM_ROWS
-    bad, cases, nonzero = [], 0, 0
-    for n in range(2, N_PROOF.stop):
-        labels = united_system(n)
-        for r in range(n - 1):
-            covered = set().union(*(_row_members(n, r, w, rows) for w in rows))
-            if covered != set(alive_before(n, r + 1, 0)):
-                bad.append({"n": n, "r": r, "rows_do_not_cover_L_r": True})
-            at = ALPHA_TS[r % 2]
-            pt = boundary_point(at, X_FRACTIONS[n % 2])
-            pt["n"], pt["alpha_t"] = n, at
-            orders = {(r + 1 - k, k) for k in range(r + 2)} | {(z, k) for z in range(n + 3) for k in range(3)}
-            for z, k in sorted(orders):
-                for q, val in rows[row](n, r + 1, z, k, pt).items():
-                    cases += 1
-                    exact = mixed_partial(exponents(labels[q]), PARAM1, z, k, pt)
-                    nonzero += exact != 0
-                    if val != exact:
-                        bad.append({"n": n, "r": r, "z": z, "k": k, "function": labels[q].paper})
-    return LineResult(not bad, how="each printed factor product against the exact mixed partial of its function, "
-                      f"n = 2..{N_PROOF.stop - 1}, r = 0..n-2, orders z = r+1-k and z = 0..n+2, k = 0..2",
-                      detail={"cases": cases, "nonzero_cases": nonzero, "mismatches": len(bad),
-                              "first_mismatches": bad[:3]})
-
-
-for _row in KTERM_ROWS:
-    line_check(f"sec1_3-kterm-p1-{_row}")(lambda _row=_row: kterm_row_check(_row))
-
-
-def _p1_k0(n, r, pt):
-    """The printed k = 0 value: S^{r+1}_{r+1}(0) (sum_{i=r+1}^{n} rho sin^{2n-i}(u/2) sin^i(w/2)
-    + sum_{i=n+1}^{2n-1-(r+1)} rho sin^i(w/2) sin^{2n-i}(u/2)
-    + gamma_{2n,2n-(r+1),r+1} sin^{2n-(r+1)}(w/2) sin^{r+1}(u/2))."""
-    s = _S(r + 1, r + 1)
-    out = {lab("R", n, i, r + 1): s * _sn(pt, "t", 2 * n - i) * _sn(pt, "alpha-t", i) for i in range(r + 1, n + 1)}
-    out |= {lab("R", n, i, r + 1): s * _sn(pt, "alpha-t", i) * _sn(pt, "t", 2 * n - i)
-            for i in range(n + 1, 2 * n - 1 - (r + 1) + 1)}
-    out[lab("G", n, r + 1, r + 1)] = s * _sn(pt, "alpha-t", 2 * n - (r + 1)) * _sn(pt, "t", r + 1)
-    return out
-
-
-@line_check("sec1_3-r-p1-k0")
-def rp1_k0() -> LineResult:
-    return _compare_forms(_p1_k0, lambda n, r, pt: _kterm_computed(n, r, pt, 0), ns=range(2, N_PROOF.stop),
-                          rs=lambda n: range(n - 1))
-
-
-def _kpos_check(param: str, alive_fn) -> LineResult:
-    bad, cases = [], 0
-    for n in range(2, N_PROOF.stop):
-        for r in range(n - 1):
-            for at in ALPHA_TS:
-                for x in X_FRACTIONS:
-                    pt = boundary_point(at, x)
-                    for k in range(1, r + 2):
-                        cases += 1
-                        if _kterm_computed(n, r, pt, k, param, alive_fn):
-                            bad.append({"n": n, "r": r, "k": k})
-    return LineResult(not bad, how="every mixed partial with k >= 1 of every function of the equality, exactly",
-                      detail={"cases": cases, "mismatches": len(bad), "first_mismatches": bad[:3]})
-
-
-@line_check("sec1_3-r-p1-kpos")
-def rp1_kpos() -> LineResult:
-    return _kpos_check(PARAM1, lambda n, r: alive_before(n, r + 1, 0))
-
-
-def _rho_prime(n, r, pt, i):
-    """The printed rho'_{2n,2n-i,r+1}: (constant's function index, divisor)."""
-    if r + 1 <= i <= 2 * n - 1 - (r + 1):
-        return lab("R", n, i, r + 1), _c(pt, 2 * n - i)
-    if i == 2 * n - (r + 1):
-        return lab("G", n, r + 1, r + 1), _c(pt, 2 * n - (r + 1))
-    raise ValueError(f"rho' undefined for i = {i}")
-
-
-def _p1_aform(upper):
-    def fn(n, r, pt):
-        s = _S(r + 1, r + 1)
-        out = {}
-        for i in range(r + 1, upper(n, r) + 1):
-            key, div = _rho_prime(n, r, pt, i)
-            out[key] = s * _A_at(pt, 2 * n - i, "t") / div
-        return out
-    return fn
-
-
-PRINTED_P1_UPPER = (lambda n, r: 2 * n - 1 - (r + 1))  # sum_{i=r+1}^{2n-1-(r+1)} as printed
-CORRECTED_P1_UPPER = (lambda n, r: 2 * n - (r + 1))
-
-
-@line_check("sec1_3-r-p1-aform")
-def rp1_aform(upper=PRINTED_P1_UPPER) -> LineResult:
-    """Printed S^{r+1}_{r+1}(0) sum_{i=r+1}^{2n-1-(r+1)} rho' A_{2n,2n-i}(x) misses the term i = 2n-(r+1) (the gamma
-    term that rho' defines); with the upper bound 2n-(r+1) it equals the computed derivative."""
-    return _compare_forms(_p1_aform(upper), lambda n, r, pt: _kterm_computed(n, r, pt, 0), ns=range(2, N_PROOF.stop),
-                          rs=lambda n: range(n - 1), corrected_fn=_p1_aform(CORRECTED_P1_UPPER))
-
-
-@line_check("sec1_3-r-p1-rho-prime")
-def rp1_rho_prime() -> LineResult:
-    """With the printed rho' (the i = 2n-(r+1) branch divides by c_{2n,2n-(r+1)}) the A-form reproduces the
-    substituted k = 0 value term by term (over the full range r+1..2n-(r+1) that rho' is defined on); the branch
-    is right because c_{2n,r+1} = c_{2n,2n-(r+1)} (eq. symmetry_of_Sanchez_Reyes_constants)."""
-    return _compare_forms(_p1_aform(CORRECTED_P1_UPPER), _p1_k0, ns=range(2, N_PROOF.stop), rs=lambda n: range(n - 1))
-
-
-def _computed_a_indices(n: int, r: int) -> set[int]:
-    """Indices i of the A_{2n,2n-i} in the computed k = 0 value of parametrization 1 (matched through A/c)."""
-    pt = boundary_point(ALPHA_TS[0], X_FRACTIONS[0])
-    pt["n"], pt["alpha_t"] = n, ALPHA_TS[0]
-    comp = _kterm_computed(n, r, pt, 0)
-    s = _S(r + 1, r + 1)
-    found = set()
-    for val in comp.values():
-        hits = [i for i in range(2 * n + 1) if val == s * _A_at(pt, 2 * n - i, "t") / _c(pt, 2 * n - i)]
-        found |= set(hits[:1])
-    return found
-
-
-@line_check("sec1_3-r-p1-asystem")
-def rp1_asystem(upper=PRINTED_P1_UPPER) -> LineResult:
-    """The functions A_{2n,2n-i} whose independence the step needs are i = r+1..2n-(r+1) (computed); printed:
-    i = r+1..2n-1-(r+1)."""
-    bad, bad_c = [], []
-    for n in range(2, N_PROOF.stop):
-        for r in range(n - 1):
-            comp = _computed_a_indices(n, r)
-            if set(range(r + 1, upper(n, r) + 1)) != comp:
-                bad.append({"n": n, "r": r, "computed": sorted(comp)})
-            if set(range(r + 1, CORRECTED_P1_UPPER(n, r) + 1)) != comp:
-                bad_c.append((n, r))
-    return LineResult(not bad, not bad_c, how="the A_{2n,2n-i} present in the exact k = 0 value",
-                      detail={"mismatches": len(bad), "first_mismatches": bad[:2], "corrected_mismatches": len(bad_c)})
 
 
 def _zeroed_check(computed_fn, printed_level, corrected_level, i_range, color, alias) -> LineResult:
@@ -2250,12 +2655,23 @@ def _zeroed_check(computed_fn, printed_level, corrected_level, i_range, color, a
                                                            "corrected_mismatches": len(bad_c)})
 
 
-def read_zeroed(line_id: str, verbatim: str | None = None):
+def _zero_line_strict(tex: str, color: str | None) -> None:
+    """A printed conclusion ``\\rho_{2n,2n-i,L}^{\\prime}=0,~i=a,a+1,\\ldots,b`` must be exactly that: a primed
+    constant of the step's colour (the one its definition line defines), ``=``, a listed range stepping by one
+    (``ValueError`` otherwise; the value and the range are compared by the callers)."""
+    m = re.fullmatch(r"\s*\\(rho|gamma|beta)_\{2n,2n-i,[^{}]+\}\^\{\\prime\}=\d+,~i=.+?[.,]\s*", tex.replace("%", " "))
+    if not m or (color and {"rho": "R", "gamma": "G", "beta": "B"}[m.group(1)] != color):
+        raise ValueError(f"not a conclusion const'_{{2n,2n-i,L}}=0, i=a,..,b of colour {color}: {tex[:40]!r}")
+    listed_orders(tex, "i", n=5, r=1)
+
+
+def read_zeroed(line_id: str, verbatim: str | None = None, color: str | None = None):
     """(level, range of i, right-hand side) of a printed ``const'_{2n,2n-i,LEVEL} = 0, i = a, ..., b``, read from its
     transcription, as functions of (n, r)."""
     from paper_repro.printed.lines.read import bound, listed_range, right_hand_side
 
     tex = verbatim if verbatim is not None else _transcribed([line_id])[line_id]
+    _zero_line_strict(tex, color)
     m = re.search(r"_\{2n,2n-i,([^{}]+)\}\^\{\\prime\}", tex)
     if not m:
         raise ValueError(f"no primed constant in {tex[:50]!r}")
@@ -2270,11 +2686,17 @@ def _zeroed_read(line_id, computed_fn, corrected_level, color, alias, level=None
     """:func:`_zeroed_check` with the printed level, range and right-hand side read from the transcription
     (``level`` overrides the level read: the corrected form in tests)."""
     try:
-        read_level, i_range, rhs = read_zeroed(line_id, verbatim)
+        read_level, i_range, rhs = read_zeroed(line_id, verbatim, color)
     except ValueError as exc:
         return LineResult(False, how="the printed constants read from the transcription", detail={"unread": str(exc)})
     res = _zeroed_check(computed_fn, level or read_level, corrected_level, i_range, color, alias)
     res.holds_as_printed &= rhs == "0"
+    ln = transcribed_line(line_id)
+    if ln.status == "erratum" and verbatim is None:  # the erratum describes what is printed: the level read
+        lev = re.search(r"_\{2n,2n-i,([^{}]+)\}\^\{\\prime\}", ln.verbatim).group(1)
+        if f"_{{2n,2n-i,{lev}}}" not in ln.erratum["printed"]:
+            res.corrected_holds = False
+            res.detail["erratum_describes_another_level"] = lev
     res.detail["right_hand_side"] = rhs
     res.how = "level, range and right-hand side read from the transcription; " + res.how
     return res
@@ -2292,67 +2714,8 @@ def rp1_zeroed(level=None, verbatim=None) -> LineResult:
 PARAM2 = "parametrization_2_x_0"
 
 
-def _p2_k0(n, r, pt):
-    s = _S(r + 1, r + 1)
-    out = {lab("G", n, i, r + 1): s * _sn(pt, "t", 2 * n - i) * _sn(pt, "alpha-t", i) for i in range(r + 2, n + 1)}
-    out |= {lab("G", n, i, r + 1): s * _sn(pt, "alpha-t", i) * _sn(pt, "t", 2 * n - i)
-            for i in range(n + 1, 2 * n - 1 - (r + 1) + 1)}
-    out[lab("B", n, r + 1, r + 1)] = s * _sn(pt, "alpha-t", 2 * n - (r + 1)) * _sn(pt, "t", r + 1)
-    return out
-
-
 def _p2_alive(n, r):
     return alive_before(n, r + 1, 1)
-
-
-@line_check("sec1_3-r-p2-k0")
-def rp2_k0() -> LineResult:
-    return _compare_forms(_p2_k0, lambda n, r, pt: _kterm_computed(n, r, pt, 0, PARAM2, _p2_alive),
-                          ns=range(2, N_PROOF.stop), rs=lambda n: range(n - 1))
-
-
-@line_check("sec1_3-r-p2-kpos")
-def rp2_kpos() -> LineResult:
-    return _kpos_check(PARAM2, _p2_alive)
-
-
-def _gamma_prime(n, r, pt, i):
-    if r + 2 <= i <= 2 * n - 1 - (r + 1):
-        return lab("G", n, i, r + 1), _c(pt, 2 * n - i)
-    if i == 2 * n - (r + 1):
-        return lab("B", n, r + 1, r + 1), _c(pt, 2 * n - (r + 1))
-    raise ValueError(f"gamma' undefined for i = {i}")
-
-
-def _p2_aform(n, r, pt):
-    s = _S(r + 1, r + 1)
-    out = {}
-    for i in range(r + 2, 2 * n - (r + 1) + 1):
-        key, div = _gamma_prime(n, r, pt, i)
-        out[key] = s * _A_at(pt, 2 * n - i, "t") / div
-    return out
-
-
-@line_check("sec1_3-r-p2-aform")
-def rp2_aform() -> LineResult:
-    return _compare_forms(_p2_aform, lambda n, r, pt: _kterm_computed(n, r, pt, 0, PARAM2, _p2_alive),
-                          ns=range(2, N_PROOF.stop), rs=lambda n: range(n - 1))
-
-
-@line_check("sec1_3-r-p2-asystem")
-def rp2_asystem() -> LineResult:
-    """{A_{2n,2n-i}}_{i=r+2}^{2n-(r+1)} is exactly the system of the computed value, and it is independent."""
-    ok = True
-    for n in range(2, N_PROOF.stop):
-        for r in range(n - 1):
-            pt = boundary_point(ALPHA_TS[0], X_FRACTIONS[0])
-            pt["n"], pt["alpha_t"] = n, ALPHA_TS[0]
-            comp = _kterm_computed(n, r, pt, 0, PARAM2, _p2_alive)
-            s = _S(r + 1, r + 1)
-            found = {i for val in comp.values() for i in range(2 * n + 1)
-                     if val == s * _A_at(pt, 2 * n - i, "t") / _c(pt, 2 * n - i)}
-            ok &= found == set(range(r + 2, 2 * n - (r + 1) + 1)) and _a_system_rank(n, r + 2, 2 * n - (r + 1))
-    return LineResult(ok, how="A functions present in the exact value; exact collocation rank", detail={"ok": ok})
 
 
 @line_check("sec1_3-r-p2-zeroed")
@@ -2370,23 +2733,6 @@ def _p3_alive(n, r):
     return alive_before(n, r + 1, 2)
 
 
-def _p3_aform(n, r, pt):
-    s = _S(r + 1, r + 1)
-    return {lab("B", n, i, r + 1): s * _A_at(pt, 2 * n - i, "t") / _c(pt, 2 * n - i)
-            for i in range(r + 2, 2 * n - 1 - (r + 1) + 1)}
-
-
-@line_check("sec1_3-r-p3-aform")
-def rp3_aform() -> LineResult:
-    return _compare_forms(_p3_aform, lambda n, r, pt: _kterm_computed(n, r, pt, 0, PARAM3, _p3_alive),
-                          ns=range(2, N_PROOF.stop), rs=lambda n: range(n - 1))
-
-
-@line_check("sec1_3-r-p3-kpos")
-def rp3_kpos() -> LineResult:
-    return _kpos_check(PARAM3, _p3_alive)
-
-
 @line_check("sec1_3-r-p3-zeroed")
 def rp3_zeroed(verbatim=None) -> LineResult:
     """beta'_{2n,2n-i,r+1} = 0, i = r+2..2n-1-(r+1): exactly the constants the step removes."""
@@ -2394,42 +2740,526 @@ def rp3_zeroed(verbatim=None) -> LineResult:
                         lambda n, r: r + 1, "B", None, verbatim=verbatim)
 
 
+# -- value lines of the proof, read from their transcriptions ----------------------------------------------------
+#: check -> (parametrization index 0/1/2, order: 0 for the order-0 steps, None for r + 1, the definition lines of
+#: the primed constants it uses)
+VALUE_CHECKS = {
+    "sec1_3-r0-p1-cform": (0, 0, ("sec1_3-r0-p1-rho-prime",)),
+    "sec1_3-r0-p1-aform": (0, 0, ("sec1_3-r0-p1-rho-prime",)),
+    "sec1_3-r0-p2-aform": (1, 0, ("sec1_3-r0-p2-gamma-prime",)),
+    "sec1_3-r0-p3-aform": (2, 0, ("sec1_3-r0-p3-beta-prime",)),
+    "sec1_3-r-p1-k0": (0, None, ()),
+    "sec1_3-r-p1-aform": (0, None, ("sec1_3-rp1-rho-prime",)),
+    "sec1_3-r-p1-rho-prime": (0, None, ("sec1_3-rp1-rho-prime",)),
+    "sec1_3-r-p2-k0": (1, None, ()),
+    "sec1_3-r-p2-aform": (1, None, ("sec1_3-rp2-gamma-prime",)),
+    "sec1_3-r-p3-aform": (2, None, ("sec1_3-rp3-beta-prime",)),
+}
+
+
+def _is_definition(tex: str) -> bool:
+    return bool(re.search(r"\^\{\\prime\}\s*=\s*(\\left\\\{|\\frac|\\dfrac)", tex))
+
+
+def read_value_line(tex: str, param_index: int):
+    """(terms, k) of a printed value: a case row ``VALUE , & k=K`` (k = K), ``[0=] VALUE ,~\\forall x\\in[0,\\alpha]``
+    or ``& = VALUE \\\\`` (k None: the whole derivative)."""
+    from paper_repro.printed.lines.sec3_read import case_range, read_products, split_case
+
+    k = None
+    if re.search(r",\s*&\s*[^&]*$", tex.replace("%", " ").rstrip().rstrip("\\").rstrip()):
+        body, cond = split_case(tex)
+        lo, hi = case_range(cond)
+        if lo != hi:
+            raise ValueError(f"a value for a range of k: {cond!r}")
+        k = _expr(lo, {})
+    elif "\\forall" in tex:
+        body = _value_part(tex, param_index)
+    else:
+        body = re.sub(r"\\\\\s*$", "", tex.strip())
+    return read_products(body), k
+
+
+def _alive_for(param_index: int, r: int, order0: bool, n: int):
+    return alive_before(n, r if order0 else r + 1, param_index)
+
+
+def value_lines_check(check_id: str, texts: dict[str, str] | None = None, defs_texts: dict[str, str] | None = None
+                      ) -> LineResult:
+    """Every value line of ``check_id`` (and the definitions of its primed constants) read from the transcription
+    and evaluated exactly at the boundary (constants resolved by the printed definitions, S, M by exact Taylor
+    series, sines by exact half angles): the {member of T_{2n}: coefficient} it prints must equal the one computed
+    from the exact derivatives of the step (the k-th term of its chain rule where the line is a case k = K, the
+    whole derivative of the step's order otherwise), n = 1..6 (order-0 steps) or n = 2..6, r = 0..n-2."""
+    from paper_repro.printed.lines.sec3_read import read_prime_definition
+
+    param_index, order, def_ids = VALUE_CHECKS[check_id]
+    param = STEP_PARAMS[param_index]
+    own = {x.id: x.verbatim for x in _lines_of(check_id)}
+    all_texts = {**own, **_transcribed([d for d in def_ids if d not in own])}
+    all_texts.update(texts or {})
+    all_texts.update(defs_texts or {})
+    detail: dict = {}
+    try:
+        primes = {}
+        for lid in def_ids:
+            (color, level), cases = read_prime_definition(all_texts[lid])
+            primes[color] = (level, cases)
+        values = {lid: read_value_line(t, param_index) for lid, t in sorted(all_texts.items())
+                  if lid in own and not _is_definition(t)}
+        if check_id == "sec1_3-r-p1-rho-prime":  # the definition checked through the A-form it defines
+            aform = _transcribed(["sec1_3-rp1-aform"])["sec1_3-rp1-aform"]
+            values = {"sec1_3-rp1-aform": read_value_line(_p1_corrected(aform), param_index)}
+        if not values:
+            raise ValueError("no value line")
+    except (ValueError, KeyError) as exc:
+        return LineResult(False, how="the values read from the transcriptions", detail={"unread": str(exc)})
+    ns = N_PROOF if order == 0 else range(2, N_PROOF.stop)
+    bad, cases = [], 0
+    for n in ns:
+        for r in ([0] if order == 0 else range(n - 1)):
+            for at in ALPHA_TS:
+                for xf in X_FRACTIONS:
+                    pt = _pt(n, at, xf)
+                    alive = _alive_for(param_index, r, order == 0, n)
+                    used: set = set()
+                    for lid, (terms, k) in values.items():
+                        cases += 1
+                        try:
+                            pr = evaluate_terms(terms, {"n": n, "r": r, "k": k or 0}, param_index, pt, primes,
+                                                used=used)
+                        except ValueError as exc:
+                            bad.append({"line": lid, "n": n, "r": r, "unread": str(exc)})
+                            continue
+                        pr = {q: v for q, v in pr.items() if v != 0}
+                        if order == 0:
+                            comp = _computed_form(n, param, 0, alive, pt)
+                        elif k is None:
+                            comp = _computed_form(n, param, r + 1, alive, pt)
+                        else:
+                            comp = _kterm_computed(n, r, pt, k, param, lambda n_, r_, a=alive: a)
+                        if pr != comp:
+                            bad.append({"line": lid, "n": n, "r": r,
+                                        "printed_only": _names(n, set(pr) - set(comp)),
+                                        "computed_only": _names(n, set(comp) - set(pr)),
+                                        "values_differ": _names(n, {q for q in set(pr) & set(comp)
+                                                                    if pr[q] != comp[q]})})
+                    # each definition of a primed constant covers exactly the i its values use, once
+                    for color, (_level, pcases) in primes.items():
+                        scope = {"n": n, "r": r}
+                        covered = [i for _c, _k, lo, hi in pcases
+                                   for i in range(_expr(lo, scope), _expr(hi, scope) + 1)]
+                        if sorted(covered) != sorted({i for c, i in used if c == color}):
+                            bad.append({"n": n, "r": r, "definition_of": color, "covers": covered,
+                                        "used": sorted({i for c, i in used if c == color})})
+    detail.update({"cases": cases, "mismatches": len(bad), "first_mismatches": bad[:2]})
+    return LineResult(not bad, how="the printed values (terms, constants, primed definitions, factors) read from the "
+                      "transcriptions against the exact derivatives along the printed parametrization, "
+                      f"n = {ns.start}..{ns.stop - 1}, tan(alpha/4) in {{1/2, 3/4}}, two boundary points each",
+                      detail=detail)
+
+
+def _p1_corrected(tex: str) -> str:
+    """The erratum's correction of the A-form of parametrization 1: upper bound 2n-(r+1) instead of 2n-1-(r+1)."""
+    return re.sub(r"\^\{2n-1-\\left\(\s*r\+1\\right\)\s*\}", lambda _m: "^{2n-\\left( r+1\\right) }", tex, count=1)
+
+
+def _value_erratum(check_id: str, correct) -> LineResult:
+    """An erratum value line: as printed (must fail) and with ``correct`` applied to each line's text (must hold)."""
+    res = value_lines_check(check_id)
+    corrected = value_lines_check(check_id, texts={x.id: correct(x.verbatim) for x in _lines_of(check_id)})
+    res.corrected_holds = corrected.holds_as_printed
+    res.detail["corrected_mismatches"] = corrected.detail.get("mismatches", corrected.detail.get("unread"))
+    return res
+
+
+def kpos_check(check_id: str, param_index: int) -> LineResult:
+    """The rows ``0, & 1\\leq k\\leq r+1`` (read: the value 0 and the range of k): the range is the rest of the
+    chain rule's k = 0..r+1 after k = 0, and every mixed partial of the equality's functions with k in it vanishes
+    at the boundary (exact), n = 2..6, r = 0..n-2."""
+    from paper_repro.printed.lines.sec3_read import case_range, split_case
+
+    param = STEP_PARAMS[param_index]
+    try:
+        rows = {x.id: split_case(x.verbatim) for x in _lines_of(check_id)}
+        ranges = {lid: case_range(cond) for lid, (value, cond) in rows.items()}
+        if not rows or any(value.strip() != "0" for value, _ in rows.values()):
+            raise ValueError("a value other than 0")
+    except ValueError as exc:
+        return LineResult(False, how="the rows read from the transcriptions", detail={"unread": str(exc)})
+    bad, cases = [], 0
+    for n in range(2, N_PROOF.stop):
+        for r in range(n - 1):
+            alive = alive_before(n, r + 1, param_index)
+            for lid, (lo, hi) in ranges.items():
+                ks = range(_expr(lo, {"n": n, "r": r}), _expr(hi, {"n": n, "r": r}) + 1)
+                if list(ks) != list(range(1, r + 2)):
+                    bad.append({"line": lid, "n": n, "r": r, "k": [ks.start, ks.stop - 1]})
+                    continue
+                for at in ALPHA_TS:
+                    for xf in X_FRACTIONS:
+                        pt = _pt(n, at, xf)
+                        for k in ks:
+                            cases += 1
+                            if _kterm_computed(n, r, pt, k, param, lambda n_, r_, a=alive: a):
+                                bad.append({"line": lid, "n": n, "r": r, "k": k})
+    return LineResult(not bad, how="the printed value 0 and range of k read from the transcriptions; every mixed "
+                      "partial with k in it of every function of the equality, exactly, n = 2..6, r = 0..n-2",
+                      detail={"cases": cases, "mismatches": len(bad), "first_mismatches": bad[:3]})
+
+
+# rows of the printed k-th term of parametrization 1 (lines sec1_3-kterm-*)
+KTERM_LINES = ("sec1_3-kterm-centre", "sec1_3-kterm-R-low", "sec1_3-kterm-R-high", "sec1_3-kterm-G-low",
+               "sec1_3-kterm-G-high", "sec1_3-kterm-B-low", "sec1_3-kterm-B-high")
+
+
+def kterm_row_check(line_id: str, texts: dict[str, str] | None = None) -> LineResult:
+    """One row of the printed k-th term (read from its transcription): its sums name functions of L_r, and for each
+    the printed product of factors equals the exact mixed partial d^z/dv_1^z d^k/dw_1^k of that function at y = 0 --
+    at the printed orders (the orders of S, M must read r+1-k and that of the derivative k, the chain rule's k-th
+    term) and, to test the factor structure where it does not vanish, at z = 0..n+2, k = 0..2; the seven rows
+    together list exactly the functions of L_r, each once (n = 2..6, r = 0..n-2)."""
+    from paper_repro.printed.lines.sec3_read import read_products
+
+    t = _transcribed(list(KTERM_LINES), texts)
+    try:
+        rows = {lid: read_products(tx) for lid, tx in t.items()}
+    except ValueError as exc:
+        return LineResult(False, how="the rows read from the transcriptions", detail={"unread": str(exc)})
+    bad, cases, nonzero = [], 0, 0
+    own = rows[line_id]
+    orders_ok = all(_expr(f.args[1], {"r": r, "k": k}) == r + 1 - k for term in own for f in term.factors
+                    if f.kind in ("S", "M") for r in range(5) for k in range(r + 2)) and \
+        all(_expr(f.deriv[0], {"r": r, "k": k}) == k for term in own for f in term.factors if f.deriv
+            for r in range(5) for k in range(r + 2))
+    if not orders_ok:
+        bad.append("printed orders are not r+1-k (S, M) and k (d/dw_1)")
+    for n in range(2, N_PROOF.stop):
+        labels = united_system(n)
+        for r in range(n - 1):
+            at = ALPHA_TS[r % 2]
+            pt = _pt(n, at, X_FRACTIONS[n % 2])
+            try:
+                members = {lid: list(evaluate_terms(ts, {"n": n, "r": r, "k": 0}, 0, pt, orders=(0, 0)))
+                           for lid, ts in rows.items()}
+            except ValueError as exc:
+                bad.append({"n": n, "r": r, "unread": str(exc)})
+                continue
+            flat = [q for v in members.values() for q in v]
+            if len(flat) != len(set(flat)) or set(flat) != set(alive_before(n, r + 1, 0)):
+                bad.append({"n": n, "r": r, "rows_do_not_list_L_r_once": True})
+            for z in range(n + 3):
+                for k in range(3):
+                    try:
+                        vals = evaluate_terms(own, {"n": n, "r": r, "k": k}, 0, pt, orders=(z, k))
+                    except ValueError as exc:
+                        bad.append({"n": n, "r": r, "unread": str(exc)})
+                        continue
+                    for q, val in vals.items():
+                        cases += 1
+                        if not isinstance(q, int):
+                            bad.append({"n": n, "r": r, "not_a_member": q})
+                            continue
+                        exact = mixed_partial(exponents(labels[q]), PARAM1, z, k, pt)
+                        nonzero += exact != 0
+                        if val != exact:
+                            bad.append({"n": n, "r": r, "z": z, "k": k, "function": labels[q].paper})
+    return LineResult(not bad, how="the row read from its transcription; each printed factor product against the "
+                      "exact mixed partial of its function, n = 2..6, r = 0..n-2, orders z = 0..n+2, k = 0..2 (the "
+                      "printed orders r+1-k and k read)", detail={"cases": cases, "nonzero_cases": nonzero,
+                                                                  "mismatches": len(bad), "first_mismatches": bad[:3]})
+
+
+for _row in KTERM_LINES:
+    line_check(_row.replace("sec1_3-kterm-", "sec1_3-kterm-p1-"))(lambda _row=_row: kterm_row_check(_row))
+
+
+@line_check("sec1_3-r0-p1-cform")
+def r0p1_cform() -> LineResult:
+    return value_lines_check("sec1_3-r0-p1-cform")
+
+
+@line_check("sec1_3-r0-p1-aform")
+def r0p1_aform() -> LineResult:
+    return value_lines_check("sec1_3-r0-p1-aform")
+
+
+@line_check("sec1_3-r0-p2-aform")
+def r0p2_aform() -> LineResult:
+    return value_lines_check("sec1_3-r0-p2-aform")
+
+
+@line_check("sec1_3-r0-p3-aform")
+def r0p3_aform() -> LineResult:
+    return value_lines_check("sec1_3-r0-p3-aform")
+
+
+@line_check("sec1_3-r-p1-k0")
+def rp1_k0() -> LineResult:
+    return value_lines_check("sec1_3-r-p1-k0")
+
+
+@line_check("sec1_3-r-p1-kpos")
+def rp1_kpos() -> LineResult:
+    return kpos_check("sec1_3-r-p1-kpos", 0)
+
+
+@line_check("sec1_3-r-p1-aform")
+def rp1_aform() -> LineResult:
+    """Printed S^{r+1}_{r+1}(0) sum_{i=r+1}^{2n-1-(r+1)} rho' A_{2n,2n-i}(x) misses the term i = 2n-(r+1) (the gamma
+    term that rho' defines); with the upper bound 2n-(r+1) (the correction applied to the transcription) it equals the
+    computed derivative."""
+    return _value_erratum("sec1_3-r-p1-aform", _p1_corrected)
+
+
+@line_check("sec1_3-r-p1-rho-prime")
+def rp1_rho_prime() -> LineResult:
+    """With the printed rho' (read) the A-form over the range r+1..2n-(r+1) that rho' is defined on (the corrected
+    A-form line) equals the exact k = 0 term; the i = 2n-(r+1) branch divides by c_{2n,2n-(r+1)}."""
+    return value_lines_check("sec1_3-r-p1-rho-prime")
+
+
+def _a_indices(n: int, r: int, param_index: int) -> set[int]:
+    """Indices i of the A_{2n,2n-i} in the exact (r+1)-th derivative of the step (matched as S A / c)."""
+    pt = _pt(n, ALPHA_TS[0], X_FRACTIONS[0])
+    comp = _kterm_computed(n, r, pt, 0, STEP_PARAMS[param_index],
+                           lambda n_, r_: alive_before(n, r + 1, param_index))
+    s = _S(r + 1, r + 1)
+    return {i for val in comp.values() for i in range(2 * n + 1)
+            if val == s * _A_at(pt, 2 * n - i, "t") / _c(pt, 2 * n - i)}
+
+
+def asystem_check(check_id: str, param_index: int, correct=None) -> LineResult:
+    """The printed system {A_{2n,2n-i}}_{i=a}^{b} (range read from the transcription) is exactly the set of A's in the
+    exact derivative of the step, and linearly independent (exact rank), n = 2..6, r = 0..n-2."""
+
+    def run(tex: str) -> tuple[bool, list]:
+        first_e, last_e, idx = read_a_system(tex, param_index)
+        bad = []
+        for n in range(2, N_PROOF.stop):
+            for r in range(n - 1):
+                lo, hi = _expr(first_e, {"n": n, "r": r}), _expr(last_e, {"n": n, "r": r})
+                comp = _a_indices(n, r, param_index)
+                listed = [_expr(idx, {"n": n, "r": r, "i": i}) for i in range(lo, hi + 1)]
+                if set(range(lo, hi + 1)) != comp or not _a_system_rank(n, lo, hi) or \
+                        listed != [2 * n - i for i in range(lo, hi + 1)]:
+                    bad.append({"n": n, "r": r, "printed": [lo, hi], "computed": sorted(comp)})
+        return not bad, bad
+
+    lines = _lines_of(check_id)
+    try:
+        ok, bad = run(lines[0].verbatim)
+        corr = run(correct(lines[0].verbatim))[0] if correct else None
+    except ValueError as exc:
+        return LineResult(False, how="the system read from the transcription", detail={"unread": str(exc)})
+    return LineResult(ok, corr, how="the printed range read from the transcription against the A functions present "
+                      "in the exact derivative; exact collocation rank, n = 2..6, r = 0..n-2",
+                      detail={"mismatches": len(bad), "first_mismatches": bad[:2]})
+
+
+@line_check("sec1_3-r-p1-asystem")
+def rp1_asystem() -> LineResult:
+    """Printed {A_{2n,2n-i}}_{i=r+1}^{2n-1-(r+1)}; the step needs i = r+1..2n-(r+1) (the erratum's correction)."""
+    return asystem_check("sec1_3-r-p1-asystem", 0, _p1_corrected)
+
+
+@line_check("sec1_3-r-p2-k0")
+def rp2_k0() -> LineResult:
+    return value_lines_check("sec1_3-r-p2-k0")
+
+
+@line_check("sec1_3-r-p2-kpos")
+def rp2_kpos() -> LineResult:
+    return kpos_check("sec1_3-r-p2-kpos", 1)
+
+
+@line_check("sec1_3-r-p2-aform")
+def rp2_aform() -> LineResult:
+    return value_lines_check("sec1_3-r-p2-aform")
+
+
+@line_check("sec1_3-r-p2-asystem")
+def rp2_asystem() -> LineResult:
+    return asystem_check("sec1_3-r-p2-asystem", 1)
+
+
+@line_check("sec1_3-r-p3-aform")
+def rp3_aform() -> LineResult:
+    return value_lines_check("sec1_3-r-p3-aform")
+
+
+@line_check("sec1_3-r-p3-kpos")
+def rp3_kpos() -> LineResult:
+    return kpos_check("sec1_3-r-p3-kpos", 2)
+
+
 @line_check("sec1_3-fig-n4-caption")
-def fig_n4_caption(order: int = 4) -> LineResult:
-    """Fig. derivative_scheme_n_4 (n = 4, 4th-order mixed partials under parametrization_for_partition_of_unity at
-    y = 0): a function with sin(v/2) to the power j (and a v-dependence) has a vanishing partial of order z in v
-    exactly when z < j (first zero condition) or z > j with z - j = +-1 mod 4 (second), z = 0..4.  The functions that
-    do not depend on v (sin^{2n}(u/2), sin^{2n}(w/2): outside the Proposition's hypothesis i + j != 0) vanish for
-    every z >= 1 trivially; they are counted apart."""
-    n = 4
-    param = "parametrization_for_partition_of_unity"
-    direction, zero, _fixed, _rest = step_geometry(param)
-    bad, v_free = 0, 0
+def fig_n4_caption(order: int | None = None, n: int | None = None) -> LineResult:
+    """Fig. derivative_scheme_n_4, read from the caption: the order of the mixed partials ("$4$th order", and the
+    orders k = 0..4 of its list), the parametrization and point (\\ref{parametrization_for_partition_of_unity} at
+    $y=0$, with v = y and w = x - y as printed there), the gray areas (sin(v/2) "raised to a power greater than" the
+    order in v: the first condition of the zero branch of the Proposition, read from its transcription) and the
+    other black dots (the second condition).  Computed: for every function of T_{2n} (n of the text, "In the case of
+    $n=4$") with sin(v/2) to the power j and cos(v/2) to the power i (i + j != 0) and every order z in v, its partial
+    vanishes at v = 0 exactly when gray or the second condition; the gray ones are exactly those with j > z."""
+    from paper_repro.printed.lines.sec3_read import _condition, linear_form, read_sign_function
+
+    tex = _transcribed(["sec1_3-fig-n4-caption"])["sec1_3-fig-n4-caption"].replace("%", " ")
+    try:
+        m = re.search(r"the \$(\d+)\$th order mixed partial derivatives of which with respect to "
+                      r"\$v\\left\( x,y\\right\) =([^$]+)\$ and \$w\\left\( x,y\\right\) =([^$]+)\$ are zero and "
+                      r"non-zero, respectively, under parametrization \(\\ref\{(\w+)\}\) at \$([xy])=0\$", tex)
+        ks = re.findall(r"order \$k=0,1,\\ldots,(\d+)\$ of the partial derivative with respect to \$v",
+                        tex)
+        gray = re.search(r"raised to a power (greater than|less than|at least|at most) the corresponding order", tex)
+        conds = re.findall(r"due to the (first|second) condition of the zero branch|fulfills the (first|second) "
+                           r"condition of the zero branch", tex)
+        text_n = re.search(r"In the case of \$n=(\d+)\$", _transcribed(["sec1_3-L-prose"])["sec1_3-L-prose"])
+        if not (m and gray and len(ks) == 2 and len(conds) == 2 and text_n):
+            raise ValueError("caption not read")
+        if not re.search(r"\(\\emph\{a\}\)--\(\\emph\{e\}\) Using the sign function", tex) or \
+                not re.search(r"Thus, these partial derivatives vanish at \$y=0\$", tex) or \
+                not re.search(r"black and non-black dots represent those functions of system "
+                              r"\(\\ref\{united_system\}\)", tex):
+            raise ValueError("caption words not read")
+        printed_order = int(m.group(1))
+        label, at = m.group(4), m.group(5)
+        fmap, run, maps, _r = _params()[label]
+        forms_ok = linear_form(m.group(2)) == maps[1] and linear_form(m.group(3)) == maps[2] and at == run
+        branches = read_sign_function(_transcribed(["sec1_3-proposition-M"])["sec1_3-proposition-M"])
+        zero = [c for v, c in branches if v == 0]
+        parts = [p.strip() for p in re.split(r"\)\s+or\s+\(", zero[0].strip()[1:-1])] if len(zero) == 1 else []
+        if len(parts) != 2:
+            raise ValueError("the zero branch of the Proposition is not two conditions joined by 'or'")
+        which = {"first": parts[0], "second": parts[1]}
+        gray_cond, black_cond = which[conds[0][0] or conds[0][1]], which[conds[1][0] or conds[1][1]]
+        rel = {"greater than": lambda j, z: j > z, "less than": lambda j, z: j < z,
+               "at least": lambda j, z: j >= z, "at most": lambda j, z: j <= z}[gray.group(1)]
+        _condition("z<j")  # the reader of conditions is the one the Proposition's branches went through
+    except (ValueError, KeyError) as exc:
+        return LineResult(False, how="the caption read from its transcription", detail={"unread": str(exc)})
+    order = printed_order if order is None else order
+    n = int(text_n.group(1)) if n is None else n
+    direction, zero_var, _fixed, _rest = step_geometry(label)
+    bad, v_free, gray_bad = 0, 0, 0
+    ok_orders = [int(k) for k in ks] == [printed_order, printed_order]
     for lb in united_system(n):
         e = exponents(lb)
-        j, i = e[2 * zero], e[2 * zero + 1]
+        j, i = e[2 * zero_var], e[2 * zero_var + 1]
         if i + j == 0:
             v_free += 1
             continue
         for k in range(order + 1):
             z = order - k
+            env = {"__builtins__": {}}
             vanish = mixed_derivative(i, HALF, j, HALF, z) == 0
-            predicted = z < j or (z > j and (z - j) % 4 in (1, 3))
-            bad += vanish != predicted
-    return LineResult(bad == 0 and direction == (0, 1, -1), how="exact derivatives at v = 0 of every function of T_8, "
-                      "orders 0..4 in v", detail={"mismatches": bad, "v_independent_functions": v_free})
+            is_gray = eval(gray_cond, env, {"z": z, "j": j})  # noqa: S307 - read above
+            is_black = eval(black_cond, env, {"z": z, "j": j})  # noqa: S307
+            bad += vanish != (is_gray or is_black)
+            gray_bad += bool(is_gray) != rel(j, z)
+    ok = bad == 0 and gray_bad == 0 and ok_orders and forms_ok and direction == (0, 1, -1)
+    return LineResult(ok, how=f"exact derivatives at v = 0 of every function of T_{{2n}}, n = {n}, orders "
+                      f"z = 0..{order} in v, against the caption and the zero branch of the Proposition (read)",
+                      kind="exhaustive", detail={"mismatches": bad, "gray_mismatches": gray_bad,
+                                                 "v_independent_functions": v_free, "order": printed_order})
 
 
 @line_check("sec1_3-interval-typo")
-def interval_typo(printed: str = r"\left[ 0\,\alpha\right]", corrected: str = r"\left[ 0,\alpha\right]") -> LineResult:
-    """An interval [a, b] is written with a comma between its endpoints; the printed [0\\,alpha] has none (a thin
-    space instead), so it does not parse as the interval [0, alpha]."""
-    def endpoints(text: str) -> list[str]:
-        inner = text.replace(r"\left[", "").replace(r"\right]", "").replace(r"\,", " ").strip()
-        return [p.strip() for p in inner.split(",")]
-    return LineResult(endpoints(printed) == ["0", r"\alpha"], endpoints(corrected) == ["0", r"\alpha"],
-                      how="the printed interval parsed into endpoints", kind="proof",
-                      detail={"printed_endpoints": endpoints(printed)})
+def interval_typo() -> LineResult:
+    """An interval [a, b] is written with a comma between its endpoints; the printed ``\\left[ 0\\,\\alpha\\right]``
+    (read from the transcription) has none (a thin space instead), so it does not parse as an interval; with the comma
+    it is [0, alpha], the range of x on the edge y = 0 of parametrization_3_y_0 (read from its transcription)."""
+    from paper_repro.printed.lines.sec3_read import linear_form
+
+    tex = _transcribed(["sec1_3-r0-p3-interval"])["sec1_3-r0-p3-interval"]
+    m = re.fullmatch(r"\s*x\s*\\in\s*\\left\[(.*)\\right\]\s*", tex)
+
+    def holds(inner: str) -> bool:
+        parts = [p.strip() for p in inner.split(",")]
+        try:
+            return len(parts) == 2 and [linear_form(p) for p in parts] == \
+                [linear_form(q) for q in _params()["parametrization_3_y_0"][3]["x"]]
+        except ValueError:
+            return False
+    if not m:
+        return LineResult(False, None, how="the interval read from the transcription", kind="proof",
+                          detail={"unread": tex[:40]})
+    inner = m.group(1)
+    return LineResult(holds(inner), holds(inner.replace("\\,", ",")) if "\\," in inner else None,
+                      how="the printed interval read into endpoints, against the printed range of x of "
+                      "parametrization_3_y_0", kind="proof", detail={"printed": inner.strip()})
+
+
+@line_check("sec1_3-lemma-hypotheses")
+def lemma_hypotheses(verbatim_text: str | None = None) -> LineResult:
+    """The Lemma's hypotheses (read): "Let $i$, $j$ and $p$ be natural numbers greater than or equal to $1$" while its
+    sets of signs run over $p\\geq0$.  The hypothesis on p contradicts the sets (p = 0 is both excluded and listed);
+    without it (i, j >= 1, p >= 0 as the sets say) the statement is consistent, and the sine rule (read from its
+    transcription) holds on the whole range, p = 0 included (exact Taylor coefficients, j = lower bound..8,
+    p = 0..16, mu in {1/2, 1, 3})."""
+    from paper_repro.printed.lines.sec3_read import read_sign_function, sign_of
+
+    tex = verbatim_text if verbatim_text is not None else _transcribed(["sec1_3-lemma-hypotheses"])[
+        "sec1_3-lemma-hypotheses"]
+
+    def run(text: str) -> tuple[bool, dict]:
+        m = re.search(r"Let ((?:\$[a-z]\$(?:, | and )?)+) be natural numbers greater than or equal to \$(\d+)\$", text)
+        sets = re.findall(r"\\right\\\}\s*_\{p\\geq(\d+)\}", text)
+        if not m or len(sets) != 2 or len(set(sets)) != 1 or "\\lambda,\\mu>0" not in text or \
+                not re.search(r"\\left\\\{\s*C_\{i,\\lambda\}\^\{p\}\\left\(\s*0\\right\)", text) or \
+                not re.search(r"\\left\\\{\s*S_\{j,\\mu\}\^\{p\}\\left\(\s*0\\right\)", text):
+            raise ValueError("hypotheses not read")
+        letters = re.findall(r"\$([a-z])\$", m.group(1))
+        lo = int(m.group(2))
+        p_lo = lo if "p" in letters else int(sets[0])
+        consistent = p_lo == int(sets[0])
+        rule = read_sign_function(_transcribed(["sec1_3-sign-sin"])["sec1_3-sign-sin"])
+        j_lo = lo if "j" in letters else 0
+        holds = all(sign_of(rule, j=j, p=p) == sign(sin_power_derivative(j, mu, p)) for j in range(j_lo, 9)
+                    for p in range(int(sets[0]), 17) for mu in (fmpq(1, 2), fmpq(1), fmpq(3)))
+        return consistent and holds, {"hypothesis_letters": letters, "lower_bound": lo, "sets_from_p": int(sets[0]),
+                                      "consistent": consistent, "sine_rule_holds": holds}
+    try:
+        ok, detail = run(tex)
+        corr = run(tex.replace("$i$, $j$ and $p$", "$i$ and $j$"))[0] if "$i$, $j$ and $p$" in tex else None
+    except ValueError as exc:
+        return LineResult(False, how="the hypotheses read from the transcription", detail={"unread": str(exc)})
+    return LineResult(ok, corr, how="the hypotheses and the index sets read from the transcription; the sine rule "
+                      "(read) against exact Taylor coefficients, j = 1..8, p = 0..16", kind="exhaustive",
+                      detail=detail)
+
+
+def r0p1_sines() -> LineResult:
+    """Line sec1_3-r0-p1-sines (resolved to claim independence_proof_steps), read: its terms evaluated at y = 0 of
+    parametrization_1_y_0 against the exact values of the functions there.  As printed the last term's constant
+    gamma_{2n,2n-i,0} stands outside the sum over i (i unbound: unread); with gamma_{2n,2n,0} (the line before, and
+    the definition of rho'_{2n,0,0}) it holds."""
+    from paper_repro.printed.lines.sec3_read import read_products
+
+    tex = _transcribed(["sec1_3-r0-p1-sines"])["sec1_3-r0-p1-sines"]
+
+    def run(text: str) -> tuple[bool, object]:
+        try:
+            terms = read_products(re.sub(r"\\\\\s*$", "", text.strip()))
+        except ValueError as exc:
+            return False, str(exc)
+        for n in N_PROOF:
+            for at in ALPHA_TS:
+                for xf in X_FRACTIONS:
+                    pt = _pt(n, at, xf)
+                    try:
+                        pr = evaluate_terms(terms, {"n": n}, 0, pt)
+                    except ValueError as exc:
+                        return False, str(exc)
+                    if {q: v for q, v in pr.items() if v != 0} != _computed_form(
+                            n, STEP_PARAMS[0], 0, alive_before(n, 0, 0), pt):
+                        return False, f"n={n}: values differ"
+        return True, None
+    ok, why = run(tex)
+    fixed = re.sub(r"\\gamma_\{2n,2n-i,0\}(?=\s*\\sin\^\{2n\})", lambda _m: "\\gamma_{2n,2n,0}", tex)
+    corr = run(fixed)[0] if fixed != tex else None
+    return LineResult(ok, corr, how="the terms read from the transcription against exact values at y = 0, n = 1..6",
+                      detail={"unread": why})
 
 
 # -- the conclusions of the order-0 steps: the primed constants vanish (read from the transcription) ---------------
@@ -2449,6 +3279,13 @@ def zero_conclusion(line_id: str, verbatim: str | None = None) -> LineResult:
 
     param_index, color, alias = ZERO_LINES[line_id]
     tex = verbatim if verbatim is not None else _transcribed([line_id])[line_id]
+    try:
+        _zero_line_strict(tex, color)
+        if not re.match(r"\s*\\\w+_\{2n,2n-i,0\}", tex):
+            raise ValueError("not the level-0 constants")
+    except ValueError as exc:
+        return LineResult(False, how="the conclusion read from the transcription, n = 1..6", kind="exhaustive",
+                          detail={"unread": str(exc)})
     lo, hi = listed_range(tex, "i")
     rhs = right_hand_side(tex, r",~i\s*=")
     bad = []

@@ -756,9 +756,19 @@ LINES = [
          'u>0$, then signs of values $\\left\\{ C_{i,\\lambda}^{p}\\left( 0\\right) \\right\\} _{p\\ge'
          'q0}$ and $\\left\\{ S_{j,\\mu}^{p}\\left( 0\\right) \\right\\} _{p\\geq0}$ are%',
          'i, j, p >= 1, lambda, mu > 0; the signs of {C^p(0)}_{p>=0}, {S^p(0)}_{p>=0}',
-         'excused',
-         reason='hypotheses of the lemma; the rules they quantify are checked by claim derivative_sig'
-                'ns (i, j >= 1, p >= 0)'),
+         'erratum',
+         check='sec1_3-lemma-hypotheses',
+         erratum={'printed': 'Let i, j and p be natural numbers greater than or equal to 1 ... the signs of {C^p_{i,l'
+                             'ambda}(0)}_{p>=0} and {S^p_{j,mu}(0)}_{p>=0}',
+                  'corrected': 'Let i and j be natural numbers greater than or equal to 1 (p >= 0, as the sets of '
+                               'signs say)',
+                  'evidence': 'the hypothesis p >= 1 excludes p = 0, which the two sets of signs the Lemma states '
+                              '(indexed p >= 0) and its rules include (e.g. the sine rule gives sign S^0_{j,mu}(0) '
+                              '= 0 by its branch p < j, exact: sin^j(0) = 0); the sine rule read from the transcri'
+                              'ption holds exactly for j = 1..8, p = 0..16, mu in {1/2, 1, 3} (check sec1_3-lemma-h'
+                              'ypotheses); i, j >= 1 is needed (j = 0, p = 2: the rule gives -1, the derivative of '
+                              'sin^0 = 1 is 0)',
+                  'severity': 'typo'}),
     Line('sec1_3-sign-cos',
          (491, 501),
          'sign_cos_power_derivative',
@@ -774,16 +784,13 @@ LINES = [
          erratum={'id': 'lemma-sign-cos-power',
                   'printed': '-1 if p-i = 2r with r odd; 0 if p odd; +1 if p-i = 2r with r even',
                   'corrected': '0 if p is odd; (-1)^(p/2) if p is even (for every i >= 1, lambda > 0)',
-                  'evidence': 'exact Taylor coefficients: 576 of 1488 cases (i <= 12, p <= 30, lambda i'
-                              "n ['1/2', '1', '3', '7/5']) disagree with the printed rule (no printed c"
-                              'ase applies when p is even and i odd; the sign is wrong when i = 2 mod 4'
-                              "), e.g. [{'i': 1, 'p': 0, 'lambda': '1', 'printed': None, 'true': 1}, {'"
-                              "i': 1, 'p': 2, 'lambda': '1', 'printed': None, 'true': -1}, {'i': 1, 'p'"
-                              ": 4, 'lambda': '1', 'printed': None, 'true': 1}, {'i': 1, 'p': 6, 'lambd"
-                              "a': '1', 'printed': None, 'true': -1}, {'i': 1, 'p': 8, 'lambda': '1', '"
-                              "printed': None, 'true': 1}, {'i': 1, 'p': 10, 'lambda': '1', 'printed': "
-                              "None, 'true': -1}]; the corrected rule matches all cases. The proof of t"
-                              'he theorem uses Proposition derivative_cosine_sine, which is correct.',
+                  'evidence': ("exact Taylor coefficients: 936 of 1488 cases (i <= 12, p <= 30, lambda in ['1/2', '1"
+                              "', '3', '7/5']) disagree with the printed rule read from the transcription (no print"
+                              'ed case applies when p is even and i odd; when p and i are both odd the branches 0 ('
+                              'p odd) and +-1 (p-i = 2r) both apply, with different values; the sign is wrong when '
+                              'i = 2 mod 4), e.g. i = 1, p = 0: no branch, true +1; i = 1, p = 1: branches 0 and +1'
+                              ', true 0; i = 2, p = 2: printed +1, true -1; the corrected rule matches all cases. T'
+                              'he proof of the theorem uses Proposition derivative_cosine_sine, which is correct.'),
                   'severity': 'statement'}),
     Line('sec1_3-sign-sin',
          (503, 514),
@@ -930,7 +937,10 @@ LINES = [
          'n = 4, 4th-order mixed partials in v, w at y = 0: gray = sin(v/2) power above the or'
          'der in v (first zero condition); other black dots: second zero condition',
          'checked',
-         check='sec1_3-fig-n4-caption'),
+         check='sec1_3-fig-n4-caption',
+         reason='second reading: the caption calls the order of the derivative in v "k = 0, 1, ..., 4", while in '
+                'eq. chain_rule k is the order in w and the order in v is r - k; both run over 0..4 here, so the '
+                'statement holds (checked), but the letter k means two things -- a notation slip, debatable'),
     Line('sec1_3-theorem',
          (626, 628),
          'joint_systems_linear_independence',
@@ -1055,8 +1065,18 @@ LINES = [
          'In order to prove the statement, we argue by mathematical induction on the derivatio'
          'n order $r=0,1,\\ldots,n$.',
          'induction on the derivation order r = 0..n',
-         'checked',
-         check='sec1_3-elimination-orders'),
+         'erratum',
+         check='sec1_3-induction-orders',
+         erratum={'printed': 'we argue by mathematical induction on the derivation order r = 0, 1, ..., n',
+                  'corrected': 'we argue by mathematical induction on the derivation order r = 0, 1, ..., n-1',
+                  'evidence': 'the proof takes derivatives of the orders 0 (the three order-0 steps) and r+1 for '
+                              'r = 0..n-2, i.e. 0..n-1: recomputed from exact derivatives, level j of T_{2n} is '
+                              'removed by the order-j steps and after the order-(n-1) steps only the centre is '
+                              'left, which the proof removes without a derivative (L_{n-1} = rho_{2n,n,n} '
+                              'R_{2n,n,n} = 0 iff rho_{2n,n,n} = 0); the induction hypothesis is stated for '
+                              'r = 0..n-1 (eq. induction_hypothesis_for_linear_independence) and proved from r to '
+                              'r+1 for r = 0..n-2; no derivative of order n occurs (n = 1..6 checked)',
+                  'severity': 'typo'}),
     Line('sec1_3-r0-p1-where',
          (715, 716),
          'derivative_formula_parametrization_3',
@@ -1659,7 +1679,11 @@ LINES = [
          'ty.}%',
          'the steps of the k-th term are detailed in the technical report',
          'excused',
-         reason='citation (technical report) and notation of the footnote'),
+         reason='citation (technical report) and notation of the footnote.  Second reading: the footnote says a '
+                'number above the equality sign names a trigonometric identity, but the numbers the proof puts '
+                'there (lines sec1_3-rp1-k0, sec1_3-rp2-k0: sign_sin_power_derivative over '
+                'derivative_cosine_sine_at_0) are the sign rules of the Lemma and the Proposition, not identities '
+                '-- a wording slip, debatable, not an erratum (nothing computed depends on it)'),
     Line('sec1_3-rp1-k0',
          (1037, 1056),
          'y_derivative_L_r',
