@@ -2343,7 +2343,7 @@ def _pt(n: int, at: fmpq, x: fmpq):
     return pt
 
 
-def _quantified(tex: str, param_index: int) -> str:
+def _quantified_step(tex: str, param_index: int) -> str:
     """The value part of ``[0=] VALUE ,~\\forall V\\in\\left[ 0,\\alpha\\right]``: the quantifier must range over the
     free variable of the step's edge and its printed range there, [0, alpha] (read)."""
     from paper_repro.printed.lines.sec3_read import linear_form
@@ -2360,7 +2360,7 @@ def _quantified(tex: str, param_index: int) -> str:
 
 def _value_part(tex: str, param_index: int) -> str:
     """Strip ``\\[ 0=`` / ``& =`` before a value and the quantifier after it."""
-    body = _quantified(tex, param_index)
+    body = _quantified_step(tex, param_index)
     body = re.sub(r"^\s*(\\\[)?\s*0\s*=", " ", body) if re.match(r"^\s*(\\\[)?\s*0\s*=", body) else body
     if re.match(r"^\s*(\\\[)", body):
         raise ValueError("a display that does not start with 0 =")
