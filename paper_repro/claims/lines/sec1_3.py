@@ -463,7 +463,7 @@ def _has_levels(n: int) -> bool:
         return False
 
 
-_NUMBER_WORDS = {"one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6}
+_NUMBER_WORDS = {"zero": 0, "one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6}
 
 
 @line_check("sec1_3-corners-centre")
@@ -2444,7 +2444,6 @@ def r0p1_terms(verbatim: str | None = None) -> LineResult:
 _POWER_WORDS = {"at least": lambda e, m: e >= m, "greater than or equal to": lambda e, m: e >= m,
                 "greater than": lambda e, m: e > m, "at most": lambda e, m: e <= m, "less than": lambda e, m: e < m,
                 "equal to": lambda e, m: e == m}
-_NUMBER_WORDS = {"zero": 0, "one": 1, "two": 2, "three": 3}
 
 
 def read_omitted(tex: str) -> dict:
