@@ -14,7 +14,8 @@ over sympy:
    alpha, so (by uniqueness, docs/subdivision_for_all_n.md section 3) S_k(alpha) is the subdivision matrix for every
    alpha in (0, pi).
 
-Run: ``python tools/subdivision_closed_form_proof.py 2`` (prints the signs proven for every alpha).
+Run: ``python tools/subdivision_closed_form_proof.py 2`` (prints the degrees, the signs proven for every alpha and
+the identity; ``--signs-only`` skips the identity).
 """
 
 from __future__ import annotations
@@ -148,11 +149,17 @@ def negative_entries(forms: dict[str, sp.Matrix]) -> dict[str, list[str]]:
 
 
 def sign_summary(forms: dict[str, sp.Matrix]) -> dict[str, dict[str, int]]:
-    """Per part, how many entries are 0, > 0 for every c in (0, 1), < 0 for every c in (0, 1), or change sign there
-    (a root of odd multiplicity of the numerator or denominator in (0, 1); an even one keeps the sign)."""
+    """Per part, how many entries are 0 (identically), > 0 for every c in (0, 1), < 0 for every c in (0, 1), change
+    sign in (0, 1) (a root of odd multiplicity of the numerator or denominator there), or touch 0 or a pole in (0, 1)
+    without changing sign (``root_no_sign_change``: a root of even multiplicity only).
+
+    An entry is counted positive or negative only if the product numerator * denominator has no real root at all in
+    the open interval (0, 1), of any multiplicity; then its sign there is the sign at c = 1/2. Excluding sign changes
+    alone (roots of odd multiplicity) would not give exact counts: an entry with a double root would vanish at one
+    alpha."""
     out = {}
     for part, m in forms.items():
-        counts = {"zero": 0, "positive": 0, "negative": 0, "sign_changing": 0}
+        counts = {"zero": 0, "positive": 0, "negative": 0, "sign_changing": 0, "root_no_sign_change": 0}
         for e in m:
             if e == 0:
                 counts["zero"] += 1
@@ -163,6 +170,8 @@ def sign_summary(forms: dict[str, sp.Matrix]) -> dict[str, dict[str, int]]:
             odd = [r for r in set(inside) if inside.count(r) % 2]
             if odd:
                 counts["sign_changing"] += 1
+            elif inside:
+                counts["root_no_sign_change"] += 1
             elif e.subs(C, sp.Rational(1, 2)) > 0:
                 counts["positive"] += 1
             else:
@@ -171,14 +180,30 @@ def sign_summary(forms: dict[str, sp.Matrix]) -> dict[str, dict[str, int]]:
     return out
 
 
+def degrees(forms: dict[str, sp.Matrix]) -> tuple[int, int]:
+    """The largest numerator and denominator degrees in c over all entries of all parts."""
+    dn = dd = 0
+    for m in forms.values():
+        for e in m:
+            if e != 0:
+                num, den = sp.fraction(sp.cancel(sp.together(e)))
+                dn = max(dn, sp.Poly(num, C).degree())
+                dd = max(dd, sp.Poly(den, C).degree())
+    return dn, dd
+
+
 if __name__ == "__main__":
-    for n in [int(x) for x in sys.argv[1:]] or [1, 2]:
+    args = sys.argv[1:]
+    signs_only = "--signs-only" in args  # skip the symbolic identity (3 minutes at n = 2)
+    for n in [int(x) for x in args if not x.startswith("--")] or [1, 2]:
         forms = closed_forms(n)
         if forms is None:
             print(f"n = {n}: some entry is not a rational function of c of degree <= {MAX_DEGREE}")
             continue
+        print(f"n = {n}: (numerator, denominator) degrees in c at most {degrees(forms)}", flush=True)
         print(f"n = {n}: signs for every alpha in (0, pi): {sign_summary(forms)}", flush=True)
-        print(f"n = {n}: identity for every alpha: {prove(n, forms)}", flush=True)
+        if not signs_only:
+            print(f"n = {n}: identity for every alpha: {prove(n, forms)}", flush=True)
         for part, entries in negative_entries(forms).items():
             print(f"  {part}: {len(entries)} entries negative for every alpha in (0, pi)")
             for e in entries:
