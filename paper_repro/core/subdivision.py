@@ -1,4 +1,4 @@
-"""Midpoint subdivision of triangular trigonometric patches (eq. triangular_trig_surface), for every n (issue 38).
+"""Midpoint subdivision of triangular trigonometric patches (eq. triangular_trig_surface), for every n.
 
 The midpoints of the edges of Omega^alpha cut it into four triangles.  Each is the image of Omega^{alpha/2}:
 

@@ -1,4 +1,4 @@
-"""Joins of two triangular trigonometric patches along a shared edge (issue 38, item 4; beyond the paper).
+"""Joins of two triangular trigonometric patches along a shared edge (beyond the paper).
 
 Edges are named by the variable that vanishes on them: ``'v'`` is the edge v = 0 of Omega^alpha, parametrized by
 t = u from the corner w = alpha (t = 0) to the corner u = alpha (t = alpha); ``'u'`` (u = 0) by t = w and ``'w'``
@@ -181,7 +181,7 @@ def c1_second_row(net, n: int, alpha, edge: str = "v", neighbour=None, *, lam: f
     (``d'_{2n-k} = -lam d_k + mu t_k``, ``lam > 0``) to the patch of ``net``: a copy of ``neighbour`` (default:
     zeros) with its boundary row set to ours reversed (C0) and its second row solved from the condition (the
     second-row block of D is inverted; ``ArithmeticError`` if it is singular).  For n = 1 and C1 this is the
-    parallelogram rule P'_011 = P_200 + P_101 - P_110 of issue 38 (tested).
+    parallelogram rule P'_011 = P_200 + P_101 - P_110 (tested).
     """
     n, a, edge = _check(n, alpha, edge)
     arr = check_net(net, n)
