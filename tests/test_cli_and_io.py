@@ -165,7 +165,7 @@ def test_linear_independence_shows_one_bar_for_the_claim(monkeypatch, capsys):
              "rational_ts": ["1/3", "1/7"]}
     assert report.run_claims(["linear_independence"], {"linear_independence": small}, write=False)
     bars = [line for line in capsys.readouterr().err.splitlines() if " done in " in line]
-    assert len(bars) == 1 and bars[0].startswith("tasks, round 1:: 10 of 10 done in "), bars
+    assert len(bars) == 1 and bars[0].startswith("tasks, round 1: 10 of 10 done in "), bars
 
 
 def test_reproduce_ends_with_a_summary_line(tmp_path, monkeypatch, capsys):

@@ -2,10 +2,11 @@
 Subdivision and joins
 =====================
 
-Midpoint subdivision (beyond the paper; the proof is ``docs/subdivision_for_all_n.md``): a
-patch restricted to each of the four midpoint sub-triangles of its domain is again a patch of
-the same order, with parameter alpha/2.  The corner sub-patch ``u`` and the middle one are
-point-reflected neighbours across their common edge, and join C1, as pieces of one patch must.
+Midpoint subdivision (beyond the paper; the proof is ``docs/subdivision_for_all_n.md``):
+a patch restricted to each of the four midpoint sub-triangles of its domain is again a
+patch of the same order, with parameter alpha/2.  The corner sub-patch ``u`` and the
+middle one are point-reflected neighbours across their common edge, and join C1, as
+pieces of one patch must.
 """
 
 # %%
@@ -24,7 +25,7 @@ def torus(u, v, w):
     return r * mpmath.cos(v), r * mpmath.sin(v), mu * mpmath.cos(u)
 
 
-torus_net = pr.fit(torus, 2, alpha, "mp", dps=30).astype(float)  # a torus piece, exactly
+torus_net = pr.fit(torus, 2, alpha, "mp", dps=30).astype(float)  # a torus piece
 piece = pr.Patch(2, alpha, torus_net)
 parts = pr.subdivide(torus_net, 2, alpha)  # SubNets(u, v, w, middle), parameter alpha/2
 corner = pr.Patch(2, alpha / 2, parts.u)

@@ -81,8 +81,13 @@ def _nearest_float(num: str, den: str, times_pi: bool) -> float | None:
     """
     import mpmath
 
+    from decimal import Decimal, localcontext
+
     ctx = mpmath.MPContext()  # a private context: the caller's mpmath.mp.dps is left alone
     ctx.dps = 60
+    with localcontext() as dc:  # texts of any length, rounded to 80 digits first (mpmath < 1.4 reads a long text
+        dc.prec = 80            # through int(), which Python refuses beyond 4300 digits)
+        num, den = str(+Decimal(num)), str(+Decimal(den))
     d = ctx.mpf(den)
     if d == 0:
         return None
