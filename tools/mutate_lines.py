@@ -51,7 +51,11 @@ def main(argv: list[str] | None = None) -> int:
     md += ["", "## Survivors of the blank test", ""]
     md += [f"* `{b['check']}` ({', '.join(b['lines'])}): verdict {b['verdict']} unchanged" for b in survivors_blank]
     md += ["", "## Surviving mutants", "", "| line | check | operator | change |", "|---|---|---|---|"]
-    md += [f"| {r['line']} | {r['check']} | {r['op']} | `{r['where'].replace('|', '/')}` |" for r in survivors]
+    from paper_repro.claims.lines.equivalents import UNCHECKABLE
+
+    md[-2:] = ["| line | check | operator | change | why it survives |", "|---|---|---|---|---|"]
+    md += [f"| {r['line']} | {r['check']} | {r['op']} | `{r['where'].replace('|', '/')}` | "
+           f"{UNCHECKABLE.get(r['key'], 'a gap of the check')} |" for r in survivors]
     md += ["", "## Equivalent mutants", "", "| mutant | reason |", "|---|---|"]
     md += [f"| {r['key']} | {r['equivalent']} |" for r in recs if r["equivalent"]]
     suffix = "" if not (a.part or a.check) else "_" + "_".join(a.part or ["some"])
