@@ -264,10 +264,26 @@ def test_extended_run_in_a_fresh_folder_draws_no_figure_and_says_so(tmp_path, ca
         set_output_root(None)
 
 
-def test_an_extended_run_leaves_the_standard_line_table_alone(tmp_path):
+def test_an_extended_run_leaves_the_standard_line_table_alone(tmp_path, monkeypatch):
     """data/paper_lines.json quotes the statements of the checking claims, which name the run's ranges: an extended
     run used to rewrite the standard table with its own ranges (a dirty tree after `make reproduce-extended`)."""
+    import dataclasses
+
+    from paper_repro.util.registry import CLAIMS, Outcome
+
     load_all()
+    # the mechanism under test is the writing of the standard-run-only table, not the line checks: a stand-in body
+    # that publishes the same data file (the cache is off, so nothing computed here is stored under the real key)
+    monkeypatch.setenv("PAPER_REPRO_NO_CACHE", "1")
+    real = CLAIMS["every_line"]
+
+    def body(claim_results=None):
+        from paper_repro.claims.every_line import coverage
+
+        cov = coverage([])
+        return Outcome(True, {"coverage": cov}, data={"paper_lines.json": {"coverage": cov, "lines": []}})
+
+    monkeypatch.setitem(CLAIMS, "every_line", dataclasses.replace(real, func=body))
     set_output_root(tmp_path)
     try:
         report.run_claims(["every_line"], None, extended=True, write=True)
