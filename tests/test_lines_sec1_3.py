@@ -171,6 +171,7 @@ SEC12_WRONG = [
 ]
 
 
+@pytest.mark.slow  # every line gets this in make mutate-lines; the fast suite keeps the blank test
 @pytest.mark.parametrize("check, line_id, right, wrong", SEC12_WRONG)
 def test_sec12_checks_reject_a_wrong_transcription(check, line_id, right, wrong):
     from paper_repro.printed.lines import substituted, verbatim
@@ -458,6 +459,7 @@ def test_sec3_blank_lines_fail_their_checks():
     assert all(r["killed"] for r in recs), [r["check"] for r in recs if not r["killed"]]
 
 
+@pytest.mark.slow  # every line gets this in make mutate-lines; the fast suite keeps the blank test
 @pytest.mark.parametrize("check, line_id, right, wrong", [
     ("sec1_3-r0-p1-aform", "sec1_3-r0-p1-aform", "\\sum_{i=0}^{2n}", "\\sum_{i=0}^{2n-1}"),
     ("sec1_3-r0-p1-cform", "sec1_3-r0-p1-rho-prime", "{c_{2n,0}^{\\alpha}}", "{c_{2n,1}^{\\alpha}}"),

@@ -100,6 +100,7 @@ def test_sec4_reader_reads_the_notation_and_refuses_the_rest():
         ck.to_ep(parse(r"\sin\left( xy\right)"), sp.symbols("x y"))
 
 
+@pytest.mark.slow  # every line gets this in make mutate-lines; the fast suite keeps the blank test
 @pytest.mark.parametrize("check_id", SEC4_CHECKS)
 def test_sec4_blank_line_fails_its_check(check_id):
     from paper_repro.claims.lines.mutation import blank_test
@@ -108,6 +109,7 @@ def test_sec4_blank_line_fails_its_check(check_id):
     assert rec["killed"], rec
 
 
+@pytest.mark.slow  # every line gets this in make mutate-lines; the fast suite keeps the blank test
 @pytest.mark.parametrize("check_id, line_id, right, wrong", [
     ("sec4_5-relation", "sec4_5-cond2-row2", "g_{2}-g_{1}", "g_{2}+g_{1}"),
     ("sec4_5-relation", "sec4_5-z-range", ",0,1,\\ldots,2n", ",0,2,\\ldots,2n"),

@@ -93,6 +93,7 @@ def _run(check_id: str, texts: dict[str, str] | None = None):
         return load_checks()[check_id]()
 
 
+@pytest.mark.slow  # every line gets this in make mutate-lines; the fast suite keeps the blank test
 def test_every_section5_check_fails_on_a_blank_line():
     assert [r["check"] for r in blank_test(SEC5) if not r["killed"]] == []
 
@@ -160,6 +161,7 @@ def test_symmetry_conditions_are_parsed(line_id, right, wrong):
     assert not _run(line_id, {line_id: text.replace(right, wrong, 1)}).holds_as_printed
 
 
+@pytest.mark.slow  # every line gets this in make mutate-lines; the fast suite keeps the blank test
 @pytest.mark.parametrize("check, line_id, right, wrong", [
     ("sec4_5-level-1", "sec4_5-level1-range", "n\\geq2", "n\\geq1"),  # the formula fails at n = 1
     ("sec4_5-level-1", "sec4_5-level1-i", "\\dfrac{i+1}", "\\dfrac{i+2}"),

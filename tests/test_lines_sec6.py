@@ -314,6 +314,7 @@ def test_named_weak_checks_now_read_their_words():
             assert not CHECKS["sec6-delta3"]().holds_as_printed, wrong
 
 
+@pytest.mark.slow  # every line gets this in make mutate-lines; the fast suite keeps the blank test
 @pytest.mark.parametrize("check", sorted({x.check for x in CHECKED if not x.check.startswith("claim:")}))
 def test_each_line_blanked_alone_fails_its_check(check):
     """Each line of a check, blanked alone, changes the check's verdict (or the check refuses it)."""
