@@ -148,8 +148,8 @@ def provenance() -> dict:
         data_state = (f"yes: data/ was computed by this code (code fingerprint {now})" if recorded == now else
                       f"no: data/ was computed by other code (fingerprint {recorded}; this code is {now}); "
                       "run make reproduce")
-        if data_dirty:
-            data_state += " (data/ has uncommitted changes)"
+        # (whether data/ is committed yet is no property of the data: the page that a clean reproduce of the
+        # committed tree writes must be the committed page)
     elif not (code_time and data_time):
         data_state = "unknown (no git history)"
     elif data_dirty:
