@@ -44,7 +44,10 @@ assert err["C0"] < 1e-12 and err["C1"] < 1e-9
 # The four sub-nets, drawn with their sub-patches:
 fig = plt.figure(figsize=(7, 6))
 ax = fig.add_subplot(projection="3d")
-for name in ("u", "v", "w", "middle"):
-    pr.Patch(2, alpha / 2, getattr(parts, name)).plot(ax=ax, resolution=8)
-ax.set_title("a torus piece subdivided once")
+colours = {"u": "tab:red", "v": "tab:green", "w": "tab:blue", "middle": "tab:orange"}
+for name, colour in colours.items():
+    sub = pr.Patch(2, alpha / 2, getattr(parts, name))
+    sub.plot(ax=ax, resolution=8, net_color=colour)
+ax.locator_params(nbins=4)  # fewer ticks: the labels do not overlap
+ax.set_title("a torus piece subdivided once: the four sub-nets")
 plt.show()
