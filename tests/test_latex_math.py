@@ -289,3 +289,20 @@ def test_all_lines_read_count():
             total += 1
     assert total >= ALL_READ
     assert time.perf_counter() - t0 < 15
+
+
+def test_memo_hands_out_copies_a_caller_may_change():
+    """The parse memo (latex_math._run) must not leak one caller's change of a Relation or matrix to the next."""
+    from paper_repro.printed import latex_math as lm
+
+    tex = r"\sum_{i=0}^{2n}A_{2n,i}^{\alpha}\left( \alpha s\right) =1,~\forall s\in\left[ 0,1\right]"
+    first = lm.parse_relation(tex)
+    first.parts[0] = sympy.Integer(7)
+    first.conditions[0].quantifier = None
+    first.ops.append("<")
+    again = lm.parse_relation(tex)
+    assert again.parts[0] != 7 and again.conditions[0].quantifier == "forall" and again.ops == ["="]
+    m = lm.parse(r"\left[\begin{array}[c]{ccc} \varrho & 0 & \mu\end{array}\right]^{T}")
+    m[0, 0] = 5
+    again_m = lm.parse(r"\left[\begin{array}[c]{ccc} \varrho & 0 & \mu\end{array}\right]^{T}")
+    assert again_m[0, 0] == sympy.Symbol("varrho")

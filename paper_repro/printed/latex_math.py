@@ -876,7 +876,42 @@ def _as_basic(x):
 
 
 # --------------------------------------------------------------------------------------------------- top level
+def _fresh(x):
+    """A copy of a parsed object that a caller may change without changing the memo (:func:`_run`): sympy
+    expressions are immutable and shared; Relations, matrices, lists and dicts are copied."""
+    if isinstance(x, Relation):
+        return Relation([_fresh(p) for p in x.parts], list(x.ops), x.lead, [_fresh(c) for c in x.conditions],
+                        x.quantifier, x.continues)
+    if isinstance(x, sympy.MatrixBase) and not isinstance(x, sympy.ImmutableMatrix):
+        return x.copy()
+    if isinstance(x, list):
+        return [_fresh(y) for y in x]
+    if isinstance(x, tuple):
+        return tuple(_fresh(y) for y in x)
+    if isinstance(x, dict):
+        return {k: _fresh(v) for k, v in x.items()}
+    return x
+
+
+_MEMO: dict[tuple[str, str, str], Any] = {}
+_MEMO_SIZE = 20000
+
+
 def _run(start: str, s: str, arrays: list):
+    """Parse the cleaned text ``s`` from rule ``start``.  Memoised on (start, s, arrays): the blank and mutation
+    tests and the claims read the same transcriptions many times; a changed line is a new text (and a refused one
+    is never stored: it raises each time).  The caller gets a fresh copy (:func:`_fresh`)."""
+    key = (start, s, repr(arrays))
+    if key in _MEMO:
+        return _fresh(_MEMO[key])
+    out = _parse_uncached(start, s, arrays)
+    if len(_MEMO) >= _MEMO_SIZE:
+        _MEMO.clear()
+    _MEMO[key] = out
+    return _fresh(out)
+
+
+def _parse_uncached(start: str, s: str, arrays: list):
     parser = _parser()
     saved = _BUILDER.arrays
     _BUILDER.arrays = arrays
