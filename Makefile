@@ -58,8 +58,10 @@ reproduce: $(STAMP)            ## all claims, data/, figures/, gallery
 reproduce-extended: $(STAMP)   ## the same with the extended ranges (larger n)
 	$(PY) -m paper_repro reproduce --extended
 
-test: $(STAMP)                 ## fast test suite
-	$(PY) -m pytest -q -m "not slow and not benchmark"
+# the fast suite runs on every core up to 4 (pytest-xdist; TEST_JOBS=1 runs it in one process)
+TEST_JOBS ?= $(shell n=$$(nproc 2>/dev/null || echo 1); [ "$$n" -gt 4 ] && n=4; echo $$n)
+test: $(STAMP)                 ## fast test suite (on TEST_JOBS processes, default: the cores, at most 4)
+	$(PY) -m pytest -q -m "not slow and not benchmark" -n $(TEST_JOBS) --dist worksteal
 
 # (data/*_extended* come from reproduce-extended; the gallery index.html names the commit and the extended data.)
 # OpenBLAS kernels numpy's DYNAMIC_ARCH build can be forced to here (Zen runs the Haswell kernel in this build;

@@ -136,6 +136,45 @@ def test_runner_passes_the_results_of_the_other_claims(fake_part):
     assert res.status == "fail"  # the results are part of the cache key
 
 
+def test_prepared_checks_give_the_same_lines_and_are_not_rerun(fake_part):
+    """The checks run as tasks beside the other claims (Claim.prepare): the claim then only judges, with the same
+    records as when it runs them itself; a chunk in which a check crashed is reported, and not cached."""
+    inline = every_line.run(claim_results=RESULTS)
+    chunks = every_line.check_chunks()
+    assert chunks == [("ok", "bad")]  # one task per part (here the one part "fake"), in line order
+    prepared = [every_line.run_check_chunk(c) for c in chunks]
+    calls = []
+
+    def counted():
+        calls.append(1)
+        return LineResult(False)
+
+    fake_part["checks"] = fake_checks(ok=counted, bad=counted)
+    out = every_line.run(claim_results=RESULTS, prepared=prepared)
+    assert calls == [] and out.data == inline.data and out.errata == inline.errata and out.passed
+    # a cached chunk is the stored records (same code): the changed checks are not consulted
+    assert every_line.run_check_chunk(("ok", "bad")) == prepared[0] and calls == []
+
+    def boom():
+        raise RuntimeError("broken")
+
+    fake_part["checks"] = fake_checks(ok=boom)
+    crashed = every_line.run_check_chunk(("ok",))
+    assert crashed == {"ok": {"error": "RuntimeError: broken"}}
+    fake_part["checks"] = fake_checks()
+    assert every_line.run_check_chunk(("ok",))["ok"]["holds_as_printed"] is True  # the crash was not stored
+    out = every_line.run(claim_results=RESULTS, prepared=[crashed])
+    assert not out.passed and any("RuntimeError: broken" in p for p in out.measured["problems"])
+
+
+def test_the_runner_prepares_every_line_beside_the_other_claims():
+    from paper_repro.util.registry import claim
+
+    assert CLAIMS["every_line"].prepare is every_line.prepare_tasks
+    with pytest.raises(ValueError, match="prepare is for a claim that uses"):
+        claim("x_prepare_without_results", paper_ref=[], statement="s", kind="proof", prepare=list)
+
+
 def test_line_coverage_block_of_the_readme():
     from paper_repro.app.report import lines_markdown
 

@@ -301,11 +301,23 @@ def run_claims(only: list[str] | None, overrides: dict[str, dict[str, Any]] | No
              and not cache.is_cached("claims", claim_cache_key(CLAIMS[cid], params[cid]))]
     order = sorted((cid for cid in first if cid not in split), key=lambda cid: -_cost_estimate(cid, extended))
     jobs = [Task(_run_one, ((cid, (overrides or {}).get(cid), extended),)) for cid in order]
+    # the part of a last claim's work that needs no other claim's result runs beside the others (every_line's checks)
+    prep = {cid: list(CLAIMS[cid].prepare()) for cid in ids if CLAIMS[cid].uses_results and CLAIMS[cid].prepare}
+    prep_tasks = [t for tasks in prep.values() for t in tasks]
     runner = TaskRunner(extended, executor, write=write)
     asked: dict[str, list[Task]] = {}
-    driven = drive({cid: CLAIMS[cid].body(**params[cid]) for cid in split}, runner, extra=jobs, asked=asked)
+    driven = drive({cid: CLAIMS[cid].body(**params[cid]) for cid in split}, runner, extra=jobs + prep_tasks,
+                   asked=asked)
+    got_extra = driven.get(None, [])
+    prepared: dict[str, list[Any] | None] = {}
+    k = len(jobs)
+    for cid, tasks in prep.items():
+        got = got_extra[k:k + len(tasks)]
+        k += len(tasks)
+        # a prepared task that failed: the claim computes that work itself (and reports a crash as it would)
+        prepared[cid] = None if any(isinstance(g, TaskFailed) for g in got) else got
     done = {}
-    for cid, got in zip(order, driven.get(None, [])):
+    for cid, got in zip(order, got_extra[:len(jobs)]):
         if isinstance(got, TaskFailed):
             raise got.error
         done[cid] = got
@@ -320,7 +332,7 @@ def run_claims(only: list[str] | None, overrides: dict[str, dict[str, Any]] | No
     for cid in ids:
         if CLAIMS[cid].uses_results:
             done[cid] = run_claim(CLAIMS[cid], (overrides or {}).get(cid), extended=extended,
-                                  claim_results=so_far if so_far else None)
+                                  claim_results=so_far if so_far else None, prepared=prepared.get(cid))
     for cid in ids:
         res, out, sec = done[cid]
         results.append(res)

@@ -80,12 +80,90 @@ def _erratum_record(line) -> dict[str, Any]:
             "evidence": e["evidence"], "source_lines": list(line.tex)}
 
 
-def judge(lines, checks: dict, claim_results: dict[str, dict]) -> tuple[list[dict], list[dict], list[str]]:
-    """(one record per line, the errata to publish, the problems found) -- see the module docstring."""
+def check_chunks(lines=None) -> list[tuple[str, ...]]:
+    """The checks the lines name (not ``claim:``, not those of excused lines), grouped by the part of the paper of
+    the first line naming each (a part's checks share the part's memos), in line order."""
+    from paper_repro.printed.lines import all_lines
+
+    groups: dict[str, dict[str, None]] = {}
+    seen: set[str] = set()
+    for line in all_lines() if lines is None else lines:
+        if line.status != "excused" and line.check and not line.check.startswith("claim:") and line.check not in seen:
+            seen.add(line.check)
+            groups.setdefault(line.id.split("-", 1)[0], {})[line.check] = None
+    return [tuple(g) for g in groups.values()]
+
+
+def _outcome_record(run) -> dict[str, Any]:
+    """What :func:`judge` uses of a check's result (or its exception), as JSON."""
+    if isinstance(run, Exception):
+        return {"error": f"{type(run).__name__}: {run}"}
+    return {"holds_as_printed": run.holds_as_printed, "corrected_holds": run.corrected_holds, "how": run.how,
+            "kind": run.kind}
+
+
+def _transcriptions_digest() -> str:
+    """sha256 of every transcription as read now (a line substituted by the mutation tests is a new key)."""
+    import hashlib
+
+    from paper_repro.printed.lines import all_lines
+
+    h = hashlib.sha256()
+    for line in all_lines():
+        h.update(json.dumps([line.id, line.verbatim, line.status, line.check]).encode())
+    return h.hexdigest()[:16]
+
+
+class _Crashed(Exception):
+    """A chunk in which a check raised: its records are returned, not stored."""
+
+    def __init__(self, records: dict[str, dict[str, Any]]):
+        super().__init__("a line check raised")
+        self.records = records
+
+
+def run_check_chunk(check_ids: tuple[str, ...]) -> dict[str, dict[str, Any]]:
+    """Run the named line checks (a task of :func:`prepare_tasks`): ``{check: record}``, a record as
+    :func:`_outcome_record`.  Stored in the cache under the package source when no check raised (a cache never
+    stores a crash); the key names the package source and the transcriptions as read now."""
+    from paper_repro.claims.lines import load_checks
+    from paper_repro.util.cache import cached, code_fingerprint
+
+    def compute() -> dict[str, dict[str, Any]]:
+        checks = load_checks()
+        out: dict[str, dict[str, Any]] = {}
+        for cid in check_ids:
+            try:
+                out[cid] = _outcome_record(checks[cid]())
+            except Exception as exc:  # a crashing check is a failing line (judge reports it)
+                out[cid] = _outcome_record(exc)
+        if any("error" in r for r in out.values()):
+            raise _Crashed(out)
+        return out
+
+    try:
+        return cached("line_checks", {"checks": list(check_ids), "code": code_fingerprint(),
+                                      "lines": _transcriptions_digest()}, compute)
+    except _Crashed as crash:
+        return crash.records
+
+
+def prepare_tasks() -> list:
+    """Every line check, one task per part: run beside the other claims (``Claim.prepare``)."""
+    from paper_repro.util.tasks import Task
+
+    return [Task(run_check_chunk, (chunk,)) for chunk in check_chunks()]
+
+
+def judge(lines, checks: dict, claim_results: dict[str, dict],
+          prepared: dict[str, dict[str, Any]] | None = None) -> tuple[list[dict], list[dict], list[str]]:
+    """(one record per line, the errata to publish, the problems found) -- see the module docstring.
+
+    ``prepared``: the checks' records already computed (:func:`run_check_chunk`); the others run here."""
     from paper_repro.util.paper_labels import load_index
 
     index = {r["label"]: r for r in load_index()}
-    ran: dict[str, Any] = {}
+    ran: dict[str, Any] = dict(prepared or {})
     records, errata, problems = [], [], []
     for line in lines:
         holds, corrected, how, kind = None, None, "", None
@@ -114,14 +192,14 @@ def judge(lines, checks: dict, claim_results: dict[str, dict]) -> tuple[list[dic
             else:
                 if line.check not in ran:
                     try:
-                        ran[line.check] = checks[line.check]()
+                        ran[line.check] = _outcome_record(checks[line.check]())
                     except Exception as exc:  # a crashing check is a failing line, reported as such
-                        ran[line.check] = exc
+                        ran[line.check] = _outcome_record(exc)
                 r = ran[line.check]
-                if isinstance(r, Exception):
-                    problems.append(f"{line.id}: check {line.check} raised {type(r).__name__}: {r}")
+                if "error" in r:
+                    problems.append(f"{line.id}: check {line.check} raised {r['error']}")
                 else:
-                    holds, corrected, how, kind = r.holds_as_printed, r.corrected_holds, r.how, r.kind
+                    holds, corrected, how, kind = r["holds_as_printed"], r["corrected_holds"], r["how"], r["kind"]
         if line.status == "checked" and holds is not True:
             problems.append(f"{line.id}: does not hold as printed (check {line.check})")
         if line.status == "erratum" and not (holds is False and corrected is True):
@@ -161,15 +239,16 @@ def coverage(records: list[dict]) -> dict:
                  "bound, parametrization, count and caption value; data/paper_lines.json) holds as printed by an "
                  "independent computation, or is an erratum whose printed form fails and whose corrected form "
                  "holds, or is excused with a reason.",
-       kind="exact-evidence", uses_results=True)
-def run(claim_results: dict[str, dict] | None = None) -> Outcome:
+       kind="exact-evidence", uses_results=True, prepare=prepare_tasks)
+def run(claim_results: dict[str, dict] | None = None, prepared: list | None = None) -> Outcome:
     from paper_repro.claims.lines import load_checks
     from paper_repro.printed.lines import PARTS, all_lines
 
     results = dict(_committed_results())
     results.update(claim_results or {})
     lines = all_lines()
-    records, errata, problems = judge(lines, load_checks(), results)
+    ran = {k: v for chunk in (prepared or []) for k, v in chunk.items()}
+    records, errata, problems = judge(lines, load_checks(), results, prepared=ran)
     cov = coverage(records)
     kinds = {r["proof_kind"] for r in records if r["proof_kind"]}
     kind = next((k for k in _KIND_ORDER if k in kinds), "exact-evidence")

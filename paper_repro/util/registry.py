@@ -73,6 +73,10 @@ class Claim:
     #: a split claim's body (a generator yielding lists of tasks, :mod:`paper_repro.util.tasks`); ``func`` then
     #: runs it inline
     body: Callable[..., Any] | None = None
+    #: a ``uses_results`` claim's work that does not need the other claims' results: a function returning a list
+    #: of tasks (:mod:`paper_repro.util.tasks`) that the runner computes beside the other claims (the first
+    #: round); the claim then receives their results, in order, as ``prepared`` (``None`` when run alone)
+    prepare: Callable[[], list[Any]] | None = None
 
 
 @dataclass
@@ -130,6 +134,7 @@ FIGURE_MODULES = (
 
 def claim(id: str, *, paper_ref: list[str], statement: str, kind: str, extended: dict | None = None,
           uses_results: bool = False, alpha_range: tuple[float, float, str] | None = None, split: bool = False,
+          prepare: Callable[[], list[Any]] | None = None,
           **defaults: Any) -> Callable[[Callable[..., Outcome]], Callable[..., Outcome]]:
     """Register a claim function under ``id`` with default parameters ``defaults``.
 
@@ -138,7 +143,11 @@ def claim(id: str, *, paper_ref: list[str], statement: str, kind: str, extended:
     (:data:`ALPHA_RANGES`).
 
     With ``split`` the function is a generator that yields lists of tasks (:mod:`paper_repro.util.tasks`):
-    a sweep runs them on every worker; the decorator returns a function that runs them inline."""
+    a sweep runs them on every worker; the decorator returns a function that runs them inline.
+
+    ``prepare`` (only with ``uses_results``): see :attr:`Claim.prepare`."""
+    if prepare is not None and not uses_results:
+        raise ValueError(f"claim {id!r}: prepare is for a claim that uses the other claims' results")
     if kind not in KINDS:
         raise ValueError(f"kind must be one of {KINDS}, got {kind!r}")
     if alpha_range is not None:
@@ -162,7 +171,8 @@ def claim(id: str, *, paper_ref: list[str], statement: str, kind: str, extended:
             def func(**params: Any) -> Outcome:
                 return drive_inline(body(**params))
 
-        CLAIMS[id] = Claim(id, list(paper_ref), statement, kind, func, dict(defaults), extended, uses_results, body)
+        CLAIMS[id] = Claim(id, list(paper_ref), statement, kind, func, dict(defaults), extended, uses_results, body,
+                           prepare)
         return func
 
     return deco
@@ -285,7 +295,7 @@ def claim_cache_key(c: Claim, params: dict[str, Any], claim_results: dict[str, d
 
 def run_claim(c: Claim, overrides: dict[str, Any] | None = None, extended: bool = False,
               claim_results: dict[str, dict] | None = None, outcome: Outcome | BaseException | None = None,
-              seconds: float | None = None) -> tuple[ClaimResult, Outcome, float]:
+              seconds: float | None = None, prepared: list[Any] | None = None) -> tuple[ClaimResult, Outcome, float]:
     """Run one claim; returns its result, the raw outcome (errata, data files), and the seconds it took.
 
     ``overrides`` may only name parameters the claim takes (``ValueError`` listing them otherwise).  A
@@ -301,6 +311,8 @@ def run_claim(c: Claim, overrides: dict[str, Any] | None = None, extended: bool 
     params = check_overrides(c, overrides, extended)
     t0 = time.perf_counter()
     extra = {"claim_results": claim_results} if c.uses_results else {}
+    if prepared is not None:
+        extra["prepared"] = prepared
 
     def compute() -> dict:
         if isinstance(outcome, BaseException):
