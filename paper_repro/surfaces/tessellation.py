@@ -78,7 +78,8 @@ class Tessellation(NamedTuple):
     ``params`` ``(V, 3)`` the points' (u, v, w) on Omega^alpha, ``bound`` the proven bound (evaluated in float64)
     of the parametric deviation max |s(x) - mesh(x)| (mesh(x) the piecewise-linear map of the parameter
     triangulation; it bounds the distance of every mesh point from the surface and of every surface point from the
-    mesh), ``leaves`` the number of subdivision leaves and ``depth`` the deepest one."""
+    mesh), ``leaves`` the number of subdivision leaves, ``depth`` the deepest one and ``fans`` the number of grid
+    cells re-triangulated around their centroid to take a neighbour's edge points (no cracks)."""
 
     points: np.ndarray
     triangles: np.ndarray
@@ -86,6 +87,7 @@ class Tessellation(NamedTuple):
     bound: float
     leaves: int
     depth: int
+    fans: int
 
 
 # --- the bound --------------------------------------------------------------------------------------------------
@@ -386,7 +388,7 @@ def tessellate(net, n: int, alpha, tol, *, leaf_resolution: int = 64, max_depth:
     params = np.column_stack([uv, np.maximum(w, 0.0)])
     points = Patch(n, alpha, arr)(params)
     bound = float(leaves.bound.max()) + 1e-13 * extent
-    return Tessellation(points, tri, params, bound, int(len(leaves.steps)), int(leaves.level.max()))
+    return Tessellation(points, tri, params, bound, int(len(leaves.steps)), int(leaves.level.max()), len(centroids))
 
 
 __all__ = ["tessellate", "Tessellation", "second_derivative_bound", "second_derivative_nets", "derivative_nets_t",
