@@ -15,7 +15,8 @@ second-derivative bound of the whole patch
 over the depth-k leaves to the sampled maximum of the second derivative.
 
 Elevation: the net elevated from order n to m (:func:`paper_repro.core.elevation.elevate`), e_m = max_f |P_f -
-s(x_f)| over the positions of order m, and the fitted exponent p of e_m ~ C m^-p over the last half of the range.
+s(x_f)| over the positions of order m, and the fitted exponent p of e_m ~ C m^-p over the last half of the range
+(also for the component along the surface normal).
 """
 
 from __future__ import annotations
@@ -99,12 +100,15 @@ def elevation_rates(n: int, alpha: float, top: int, seed: int = 0) -> dict:
         if m > n:
             cur = elevate(cur, m - 1, alpha)
         pts = positions(m) * alpha
-        out.append((m, float(np.linalg.norm(patch(pts) - cur, axis=1).max())))
-    ms, es = np.array(out).T
+        diff = cur - patch(pts)
+        out.append((m, float(np.linalg.norm(diff, axis=1).max()),
+                    float(np.abs(np.einsum("fd,fd->f", diff, patch.normals(pts))).max())))
+    ms, es, ns = np.array(out).T
     half = ms >= (n + top) / 2
     slope = np.polyfit(np.log(ms[half]), np.log(es[half]), 1)[0]
-    return {"n": n, "alpha": alpha, "errors": out, "exponent": float(-slope),
-            "m_times_e": [float(m * e) for m, e in out]}
+    slope_n = np.polyfit(np.log(ms[half]), np.log(ns[half]), 1)[0]
+    return {"n": n, "alpha": alpha, "errors": out, "exponent": float(-slope), "exponent_normal": float(-slope_n),
+            "m_times_e": [float(m * e) for m, e, _ in out]}
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -144,14 +148,15 @@ def main(argv: list[str] | None = None) -> int:
     lines += [f"- n = {n}, alpha = {a:.4g}: {o:.3f}, {oe:.3f}, {oc:.3f}, {oi:.3f}, {on:.3f}; {c:.4f}; {br:.4f}"
               for n, a, o, oe, oc, oi, on, c, br in summary]
     lines += ["", "## Elevation: e_m = max |P_f - s(x_f)| after elevating from n to m", "",
-              "| n | alpha | fitted p (e ~ m^-p, last half) | m e_m at m = n+1, mid, top |", "|---|---|---|---|"]
+              "| n | alpha | fitted p (e ~ m^-p, last half) | m e_m at m = n+1, mid, top | p of the normal part |",
+              "|---|---|---|---|---|"]
     top = 24 if not args.quick else 12
     for n in orders[:3]:
         for alpha in alphas:
             r = elevation_rates(n, alpha, top)
             me = r["m_times_e"]
             lines.append(f"| {n} | {alpha:.4g} | {r['exponent']:.3f} | {me[1]:.4f}, {me[len(me) // 2]:.4f}, "
-                         f"{me[-1]:.4f} |")
+                         f"{me[-1]:.4f} | {r['exponent_normal']:.3f} |")
         print(f"elevation n = {n} done ({time.time() - t0:.0f} s)", file=sys.stderr)
     lines += ["", f"Wall time {time.time() - t0:.0f} s (loaded 2-core machine)."]
     Path(args.out).parent.mkdir(parents=True, exist_ok=True)
