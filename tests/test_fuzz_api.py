@@ -153,3 +153,18 @@ def test_the_hostile_suite_of_this_round_passes():
     p = subprocess.run([sys.executable, str(tool), "--classes", "round5"], capture_output=True, text=True, timeout=600)
     assert p.returncode == 0, p.stdout[-2000:] + p.stderr[-2000:]
     assert "round5" in p.stdout and " 0               0               0" in p.stdout.splitlines()[-1], p.stdout
+
+
+@pytest.mark.slow
+def test_the_hostile_suite_of_the_tessellator_passes():
+    """tools/fuzz_api.py's class tessellate: every bad input refused naming its parameter, every valid one a mesh
+    within its bound and tol (checked at the triangles' centroids), or a refusal naming max_vertices."""
+    import subprocess
+    import sys
+    from pathlib import Path
+
+    tool = Path(__file__).parents[1] / "tools" / "fuzz_api.py"
+    p = subprocess.run([sys.executable, str(tool), "--classes", "tessellate"], capture_output=True, text=True,
+                       timeout=1200)
+    assert p.returncode == 0, p.stdout[-2000:] + p.stderr[-2000:]
+    assert "tessellate" in p.stdout and " 0               0               0" in p.stdout.splitlines()[-1], p.stdout

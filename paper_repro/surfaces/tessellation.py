@@ -62,11 +62,14 @@ from paper_repro.util.validation import check_alpha, parse_alpha
 MAX_N_TESSELLATE = 6
 #: Largest depth of the subdivision tree.
 MAX_TESSELLATE_DEPTH = 14
-#: Default vertex budget: about 0.3 s per million vertices for the evaluation (n = 2) plus the grid and the
-#: welding (measured in docs/tessellation.md, tools/tessellation_bench.py); 4 M vertices stay below ~10 s and 1 GB.
+#: Default vertex budget: about 0.9 s CPU per million vertices at n = 2 (tree, grids, welding, evaluation; 1.5 s CPU
+#: for the 1.7 M vertices of the torus piece at tol 1e-6, tools/tessellation_bench.py, docs/tessellation.md §3), and
+#: about 250 bytes per vertex at the peak: 4 M vertices stay below ~5 s CPU and 1 GB.
 MAX_VERTICES = 4_000_000
 #: Largest tree level population (nodes times delta_n times d floats kept per level).
 MAX_TREE_FLOATS = 20_000_000
+#: Early refusal: the tree stops when its current level asks for more than this many times max_vertices.
+EARLY_REFUSAL = 16
 #: Relative allowance for float64 rounding in the bound (the sub-nets, their derivative nets; not proven).
 ROUNDING_ALLOWANCE = 1e-6
 #: Allowed leaf grid steps: 2^j and 3 * 2^(j-1), so all points lie on one lattice alpha / (3 * 2^K).
@@ -196,9 +199,13 @@ class _Leaves(NamedTuple):
     bound: np.ndarray   # M beta^2 / (3 r^2)
 
 
-def _tree(arr: np.ndarray, n: int, alpha: float, tol: float, leaf_resolution: int, max_depth: int) -> _Leaves:
+def _tree(arr: np.ndarray, n: int, alpha: float, tol: float, leaf_resolution: int, max_depth: int,
+          max_vertices: int) -> _Leaves:
     """Breadth-first subdivision: a node becomes a leaf when its grid needs at most ``leaf_resolution`` steps (or at
-    ``max_depth``, or when the next level would exceed :data:`MAX_TREE_FLOATS`)."""
+    ``max_depth``, or when the next level would exceed :data:`MAX_TREE_FLOATS`).  Refused early (``ValueError``
+    naming max_vertices) when the grids the current level asks for exceed :data:`EARLY_REFUSAL` times
+    ``max_vertices``: refining lowers the count only as far as the bound tightens (measured: the bound of the root
+    is at most 3.7 times the sampled maximum of the second derivative, docs/tessellation.md)."""
     dn, dim = arr.shape
     unit = 1 << (max_depth + 1)                       # root leg in lattice units
     nets = arr[None].copy()
@@ -210,6 +217,11 @@ def _tree(arr: np.ndarray, n: int, alpha: float, tol: float, leaf_resolution: in
         beta = alpha / (1 << k)
         m_bound = second_derivative_bound(nets, n, beta) * (1 + ROUNDING_ALLOWANCE)
         need = beta * np.sqrt(m_bound / (3.0 * tol))
+        estimate = float(((need + 2) * (need + 3) / 2).sum())
+        if estimate > EARLY_REFUSAL * max_vertices:
+            raise ValueError(f"tol = {tol:.3g} needs about {estimate:.3g} vertices at depth {k} (the bound of this "
+                             f"level), far above max_vertices = {max_vertices}; raise tol (the count grows like 1/tol) "
+                             "or max_vertices")
         last = k == max_depth or 4 * int((need > leaf_resolution).sum()) * dn * dim > MAX_TREE_FLOATS
         leaf = np.ones(len(nets), dtype=bool) if last else need <= leaf_resolution
         if leaf.any():
@@ -380,7 +392,7 @@ def tessellate(net, n: int, alpha, tol, *, leaf_resolution: int = 64, max_depth:
     # vertices are float64 patch values: an allowance of 1e-13 times the net's size for their rounding (measured
     # errors of Patch evaluation are below 1e-15 relative)
     tol_eff = tol - 1e-13 * extent
-    leaves = _tree(arr, n, alpha, tol_eff, leaf_resolution, max_depth)
+    leaves = _tree(arr, n, alpha, tol_eff, leaf_resolution, max_depth, max_vertices)
     xy, tri, centroids, root = _mesh(leaves, max_depth, max_vertices)
     unit = alpha / root
     uv = np.concatenate([xy.astype(np.float64), centroids]) * unit
