@@ -72,8 +72,12 @@ MAX_TREE_FLOATS = 20_000_000
 EARLY_REFUSAL = 16
 #: Relative allowance for float64 rounding in the bound (the sub-nets, their derivative nets; not proven).
 ROUNDING_ALLOWANCE = 1e-6
-#: Allowed leaf grid steps: 2^j and 3 * 2^(j-1), so all points lie on one lattice alpha / (3 * 2^K).
-_STEPS = sorted({1 << j for j in range(0, 12)} | {3 << j for j in range(0, 11)})
+#: Allowed leaf grid steps: m 2^j with m in {1, 3, 5, 7} (consecutive steps differ by at most a factor 1.25), so all
+#: points lie on one lattice alpha / (105 * 2^K).
+LATTICE = 105
+_STEPS = sorted({m << j for m in (1, 3, 5, 7) for j in range(0, 11)})
+#: Largest K of the lattice (the line keys, below about 5.5 * (4 * 105 * 2^K)^2, stay below 2^63).
+MAX_LATTICE_BITS = 21
 
 
 class Tessellation(NamedTuple):
@@ -150,8 +154,8 @@ def second_derivative_bound(nets, n: int, beta: float) -> np.ndarray:
 
 
 def steps_for(beta: float, m_bound: np.ndarray, tol: float) -> np.ndarray:
-    """The grid steps r per leaf (allowed values 2^j, 3 * 2^(j-1)) with ``M l^2 / 6 <= tol``, l = sqrt(2) beta / r the
-    longest edge of a grid cell (legs beta / r in the (u, v) plane): r >= beta sqrt(M / (3 tol))."""
+    """The grid steps r per leaf (allowed values m 2^j, m in {1, 3, 5, 7}) with ``M l^2 / 6 <= tol``, l = sqrt(2)
+    beta / r the longest edge of a grid cell (legs beta / r in the (u, v) plane): r >= beta sqrt(M / (3 tol))."""
     need = beta * np.sqrt(np.maximum(m_bound, 0.0) / (3.0 * tol))
     idx = np.searchsorted(np.array(_STEPS, dtype=np.float64), need, side="left")
     if idx.size and idx.max() >= len(_STEPS):
@@ -270,8 +274,11 @@ def _mesh(leaves: _Leaves, max_depth: int, max_vertices: int):
     steps = leaves.steps
     bits = np.array([int(r).bit_length() for r in steps])
     big = max(max_depth + 1, int((leaves.level + bits).max()) + 1)
-    scale = 3 * (1 << (big - max_depth - 1))          # lattice unit alpha / (3 * 2^big)
-    root = 3 * (1 << big)
+    if big > MAX_LATTICE_BITS:
+        raise ValueError(f"the leaf grids need a lattice of alpha / (105 * 2^{big}), finer than 2^{MAX_LATTICE_BITS}: "
+                         "raise tol or lower max_depth")
+    scale = LATTICE * (1 << (big - max_depth - 1))    # lattice unit alpha / (105 * 2^big)
+    root = LATTICE * (1 << big)
     a, b, s = leaves.a * scale, leaves.b * scale, leaves.sign
     side = root >> leaves.level
     groups = {int(r): np.nonzero(steps == r)[0] for r in np.unique(steps)}
