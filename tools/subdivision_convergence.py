@@ -1,5 +1,5 @@
 """Measure how fast control nets approach their patch under repeated midpoint subdivision and under repeated order
-elevation (issue 38, item 3; docs/tessellation.md §3-§4).
+elevation (docs/tessellation.md §4-§5).
 
     PYTHONPATH=$PWD python tools/subdivision_convergence.py [--out reports/subdivision_convergence.md] [--quick]
 

@@ -1,5 +1,5 @@
-"""Beyond the paper: control nets under repeated midpoint subdivision converging to their patch (issue 38, item 5;
-docs/tessellation.md §3)."""
+"""Beyond the paper: control nets under repeated midpoint subdivision converging to their patch
+(docs/tessellation.md §4)."""
 
 from __future__ import annotations
 

@@ -1,6 +1,6 @@
 """Adaptive tessellation of a patch (eq. triangular_trig_surface) by midpoint subdivision, within a tolerance.
 
-Beyond the paper (issue 38, item 5).  The proofs and the measurements: ``docs/tessellation.md``.
+Beyond the paper.  The proofs and the measurements: ``docs/tessellation.md``.
 
 The bound (proven, §2 of docs/tessellation.md).  Write a patch over the parameter plane (u, v) (w = beta - u - v).
 
