@@ -216,10 +216,11 @@ def _tree(arr: np.ndarray, n: int, alpha: float, tol: float, leaf_resolution: in
     a = np.zeros(1, dtype=np.int64)
     b = np.zeros(1, dtype=np.int64)
     sign = np.ones(1, dtype=np.int64)
+    cap = np.full(1, np.inf)                          # the ancestors' bounds hold on the node too: keep the least
     out: list[tuple] = []
     for k in range(max_depth + 1):
         beta = alpha / (1 << k)
-        m_bound = second_derivative_bound(nets, n, beta) * (1 + ROUNDING_ALLOWANCE)
+        m_bound = np.minimum(second_derivative_bound(nets, n, beta) * (1 + ROUNDING_ALLOWANCE), cap)
         need = beta * np.sqrt(m_bound / (3.0 * tol))
         estimate = float(((need + 2) * (need + 3) / 2).sum())
         if estimate > EARLY_REFUSAL * max_vertices:
@@ -238,6 +239,7 @@ def _tree(arr: np.ndarray, n: int, alpha: float, tol: float, leaf_resolution: in
         half = unit >> (k + 1)
         mats = subdivision_matrices(n, beta)
         parent, pa, pb, ps = nets[keep], a[keep], b[keep], sign[keep]
+        cap = np.tile(m_bound[keep], 4)
         kids = [np.einsum("ij,njd->nid", m, parent) for m in mats]
         nets = np.concatenate(kids)
         a = np.concatenate([pa + ps * half, pa, pa, pa + ps * half])
