@@ -91,6 +91,39 @@ def subdivision_rates(n: int, alpha: float, depth: int, seed: int = 0) -> list[d
     return rows
 
 
+def n2_inner_positions() -> np.ndarray:
+    """Positions for n = 2 at which every control point approaches like h^2 (found from the measured tangential
+    offsets): the six inner members, sine exponents (a, b, c) with a + b + c = 5, at (a + 1, b + 1, c + 1) / 8; the
+    others at their layout positions."""
+    out = []
+    for lab in united_system(2):
+        b = barycentric(lab)
+        out.append((np.rint(b * 5) + 1) / 8 if lab.j == 1 and not lab.is_centre else b)
+    return np.array(out)
+
+
+def rates_at(positions_: np.ndarray, n: int, alpha: float, depth: int, seed: int = 5) -> list[float]:
+    """max_f |Q_f - s(x_f)| per depth with the points placed at ``positions_`` (barycentric, one row per member)."""
+    net = np.random.default_rng(seed).normal(size=(delta(n), 3))
+    patch = Patch(n, alpha, net)
+    nets, a, b, sign = net[None], np.zeros(1), np.zeros(1), np.ones(1)
+    out = []
+    for k in range(depth + 1):
+        h = alpha / 2 ** k
+        u = a[:, None] + sign[:, None] * h * positions_[None, :, 0]
+        v = b[:, None] + sign[:, None] * h * positions_[None, :, 1]
+        pts = np.stack([u, v, np.maximum(alpha - u - v, 0.0)], axis=-1).reshape(-1, 3)
+        out.append(float(np.linalg.norm(patch(pts).reshape(nets.shape) - nets, axis=2).max()))
+        if k == depth:
+            break
+        mats = subdivision_matrices(n, h)
+        nets = np.concatenate([np.einsum("ij,njd->nid", m, nets) for m in mats])
+        a = np.concatenate([a + sign * h / 2, a, a, a + sign * h / 2])
+        b = np.concatenate([b, b + sign * h / 2, b, b + sign * h / 2])
+        sign = np.concatenate([sign, sign, sign, -sign])
+    return out
+
+
 def elevation_rates(n: int, alpha: float, top: int, seed: int = 0) -> dict:
     """e_m for m = n..top and the fitted exponent over the last half."""
     net = np.random.default_rng(seed).normal(size=(delta(n), 3))
@@ -147,6 +180,13 @@ def main(argv: list[str] | None = None) -> int:
               "and centre); max over k >= 1 of boundary d_k / (h^2 M); leaf bound / sampled", ""]
     lines += [f"- n = {n}, alpha = {a:.4g}: {o:.3f}, {oe:.3f}, {oc:.3f}, {oi:.3f}, {on:.3f}; {c:.4f}; {br:.4f}"
               for n, a, o, oe, oc, oi, on, c, br in summary]
+    lines += ["", "## n = 2 with the inner points at (a + 1, b + 1, c + 1) / 8", "",
+              "All points at these positions (the six inner members; sine exponents (a, b, c)), another seed (5):", ""]
+    for alpha in alphas:
+        d = rates_at(n2_inner_positions(), 2, alpha, 6 if not args.quick else 4)
+        ords = [math.log2(d[k - 1] / d[k]) for k in range(1, len(d))]
+        lines.append(f"- alpha = {alpha:.4g}: d_k = {', '.join(f'{x:.2e}' for x in d)}; orders of the last three "
+                     f"depths {', '.join(f'{o:.3f}' for o in ords[-3:])}")
     lines += ["", "## Elevation: e_m = max |P_f - s(x_f)| after elevating from n to m", "",
               "| n | alpha | fitted p (e ~ m^-p, last half) | m e_m at m = n+1, mid, top | p of the normal part |",
               "|---|---|---|---|---|"]
