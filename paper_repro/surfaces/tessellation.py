@@ -342,32 +342,43 @@ def _mesh(leaves: _Leaves, max_depth: int, max_vertices: int):
             t1 = t0 + si * side[idx]
             lo = np.searchsorted(line_keys, keys(kind, val, np.minimum(t0, t1)), "left")
             hi = np.searchsorted(line_keys, keys(kind, val, np.maximum(t0, t1)), "right")
-            for m in np.nonzero(hi - lo > r + 1)[0]:
+            for m in np.nonzero(hi - lo > r + 1)[0].tolist():
                 t = line_keys[lo[m]:hi[m]] - keys(kind, val[m], 0)
                 d = (t - t0[m]) * si[m]                     # distance from the edge's start, in the grid direction
-                for dist in d[d % g[m] != 0]:
-                    f, le = cells[(e, int(dist // g[m]))]
-                    pos = int(t0[m] + si[m] * dist)
-                    px, py = ((pos, int(val[m])), (int(val[m]), pos), (int(val[m]) - pos, pos))[kind]
-                    rings.setdefault(face_base[r] + m * len(gfaces) + f, {}).setdefault(le, []).append(px * wide + py)
-    new_faces, centroids = [], []
-    for gf, by_edge in rings.items():
-        corners = faces_all[gf]
-        cxy = xy[corners].astype(np.float64)
+                gm, t0m, sm, vm = int(g[m]), int(t0[m]), int(si[m]), int(val[m])
+                base_face = face_base[r] + m * len(gfaces)
+                for dist in d[d % gm != 0].tolist():
+                    f, le = cells[(e, dist // gm)]
+                    pos = t0m + sm * dist
+                    px, py = ((pos, vm), (vm, pos), (vm - pos, pos))[kind]
+                    rings.setdefault(base_face + f, {}).setdefault(le, []).append(px * wide + py)
+    # each cell with extra points: a fan around its centroid; ring entries are vertex ids (>= 0) or, for the extra
+    # points, -(lattice key + 1), looked up in ``ub`` at once below
+    new_faces: list[tuple[int, int, int]] = []
+    centroids: list[tuple[float, float]] = []
+    corner_rows = faces_all[list(rings)].tolist() if rings else []
+    for corners, by_edge in zip(corner_rows, rings.values()):
+        cxy = xy[corners].tolist()
         ring: list[int] = []
         for le in range(3):
-            ring.append(int(corners[le]))
-            pts = np.array(sorted(set(by_edge.get(le, []))), dtype=np.int64)
-            if pts.size:
-                along = (np.column_stack([pts // wide, pts % wide]) - cxy[le]) @ (cxy[(le + 1) % 3] - cxy[le])
-                ring.extend(np.searchsorted(ub, pts[np.argsort(along)]).tolist())
-        centroids.append(cxy.mean(axis=0))
-        c = len(xy) + len(centroids) - 1
+            ring.append(corners[le])
+            pts = by_edge.get(le)
+            if pts:
+                (x0, y0), (x1, y1) = cxy[le], cxy[(le + 1) % 3]
+                dx, dy = x1 - x0, y1 - y0
+                ordered = sorted(set(pts), key=lambda k: (k // wide - x0) * dx + (k % wide - y0) * dy)
+                ring.extend(-(k + 1) for k in ordered)
+        centroids.append(((cxy[0][0] + cxy[1][0] + cxy[2][0]) / 3.0, (cxy[0][1] + cxy[1][1] + cxy[2][1]) / 3.0))
+        c = len(centroids) - 1
         new_faces.extend((c, p, q) for p, q in zip(ring, ring[1:] + ring[:1]))
     if rings:
+        fan = np.array(new_faces, dtype=np.int64)
+        fan[:, 0] += len(xy)
+        extra = fan[:, 1:] < 0
+        fan[:, 1:][extra] = np.searchsorted(ub, -fan[:, 1:][extra] - 1)
         keep = np.ones(len(faces_all), dtype=bool)
         keep[list(rings)] = False
-        faces_all = np.concatenate([faces_all[keep], np.array(new_faces, dtype=np.int64)])
+        faces_all = np.concatenate([faces_all[keep], fan])
     return xy, faces_all, np.array(centroids, dtype=np.float64).reshape(-1, 2), root
 
 
