@@ -62,6 +62,7 @@ _PUBLIC: dict[str, tuple[str, str, bool]] = {
     "bezier_triangle": ("paper_repro.surfaces.limit", "bezier_triangle", False),
     "export_mesh": ("paper_repro.surfaces.mesh", "export_mesh", False),
     "Patch": ("paper_repro.surfaces.patch", "Patch", False),
+    "tessellate": ("paper_repro.surfaces.tessellation", "tessellate", False),
     "merge_meshes": ("paper_repro.surfaces.patch", "merge_meshes", False),
     "triangle_grid": ("paper_repro.surfaces.patch", "triangle_grid", False),
     "bezier_limit": ("paper_repro.theory.limits", "bezier_limit", False),
@@ -93,5 +94,5 @@ __all__ = ["LabelledNet", "Patch", "RationalAngle", "RationalPoints", "__version
            "edge_derivatives", "edge_join_error", "elevate", "elevation_matrix", "evaluate", "evaluate_normalized",
            "export_mesh", "fit", "fit_least_squares", "get_context", "merge_meshes", "net_edges", "parse_alpha",
            "parse_label", "position", "product_matrix", "rational_alpha", "sample_points", "sample_rational_points",
-           "subdivide", "subdivide_to_depth", "subdivision_matrix", "transformation_matrix", "triangle_grid",
-           "united_system"]
+           "subdivide", "subdivide_to_depth", "subdivision_matrix", "tessellate", "transformation_matrix",
+           "triangle_grid", "united_system"]

@@ -153,3 +153,20 @@ def test_the_hostile_suite_of_this_round_passes():
     p = subprocess.run([sys.executable, str(tool), "--classes", "round5"], capture_output=True, text=True, timeout=600)
     assert p.returncode == 0, p.stdout[-2000:] + p.stderr[-2000:]
     assert "round5" in p.stdout and " 0               0               0" in p.stdout.splitlines()[-1], p.stdout
+
+
+@pytest.mark.slow
+def test_the_hostile_suite_of_the_tessellator_passes():
+    """tools/fuzz_api.py's class tessellate: every bad input refused naming its parameter, every valid one a mesh
+    within its bound and tol (checked at the triangles' centroids), or a refusal naming max_vertices."""
+    import os
+    import subprocess
+    import sys
+    from pathlib import Path
+
+    root = Path(__file__).parents[1]  # this checkout's package, also in a worktree beside an installed one
+    env = {**os.environ, "PYTHONPATH": os.pathsep.join(filter(None, [str(root), os.environ.get("PYTHONPATH")]))}
+    p = subprocess.run([sys.executable, str(root / "tools" / "fuzz_api.py"), "--classes", "tessellate"],
+                       capture_output=True, text=True, timeout=1200, env=env)
+    assert p.returncode == 0, p.stdout[-2000:] + p.stderr[-2000:]
+    assert "tessellate" in p.stdout and " 0               0               0" in p.stdout.splitlines()[-1], p.stdout

@@ -336,6 +336,38 @@ def cases(rng: random.Random, with_cli: bool):
     for bary in ("[[0.5, 0.5, 0.5]]", "[[1.5, -0.5, 0]]", "[[float('nan'), 0.5, 0.5]]", "[[0.5 + 0j, 0.5, 0]]",
                  "[[0.5, 0.5]]", "'xyz'"):
         add("round5", f"r = Patch(1, 1.0, np.zeros((7, 3))).at_barycentric({bary})", "err", ("bary",))
+    # --- the tessellator (issue 38, item 5): bad input refused naming the parameter; valid input within tol
+    tes = "from paper_repro.surfaces.tessellation import tessellate; "
+    net19 = "np.random.default_rng(0).normal(size=(19, 3))"
+    for arg, words in (("n=0", ("n",)), ("n=7", ("n",)), ("n=2.0", ("n",)), ("n='2'", ("n",)), ("n=None", ("n",)),
+                       ("alpha=0.0", ("alpha",)), ("alpha=math.pi", ("alpha",)), ("alpha=-1", ("alpha",)),
+                       ("alpha=float('nan')", ("alpha",)), ("alpha=1j", ("alpha",)), ("alpha='abc'", ("alpha",)),
+                       ("alpha=None", ("alpha",)), ("tol=0", ("tol",)), ("tol=-1e-3", ("tol",)),
+                       ("tol=float('nan')", ("tol",)), ("tol=float('inf')", ("tol",)), ("tol='1e-3'", ("tol",)),
+                       ("tol=None", ("tol",)), ("tol=[1e-3]", ("tol",)), ("tol=1e-300", ("tol",)),
+                       ("tol=1j", ("tol",)), ("leaf_resolution=0", ("leaf_resolution",)),
+                       ("leaf_resolution=10**9", ("leaf_resolution",)), ("leaf_resolution=2.5", ("leaf_resolution",)),
+                       ("max_depth=-1", ("max_depth",)), ("max_depth=10**6", ("max_depth",)),
+                       ("max_vertices=0", ("max_vertices",)), ("max_vertices=10, tol=1e-6", ("max_vertices",))):
+        kw = dict(x.split("=", 1) for x in ("n=2", "alpha=1.0", "tol=1e-3"))
+        for part in arg.split(", "):
+            key, val = part.split("=", 1)
+            kw[key] = val
+        call = ", ".join(f"{k}={v}" for k, v in kw.items())
+        add("tessellate", tes + f"r = tessellate({net19}, {call})", "err", words)
+    for bad in ("np.zeros((7, 3))", "np.full((19, 3), np.nan)", "'net'", "None", "np.zeros((19, 0))",
+                "np.zeros((19, 3)) + 1j", "[[1, 2, 3]] * 19 + [['a', 'b', 'c']]", "np.zeros((19, 3, 2))"):
+        add("tessellate", tes + f"r = tessellate({bad}, 2, 1.0, 1e-3)", "err", ("net",))
+    check = ("finite(r[0].points) and r[0].triangles.min() >= 0 and r[0].triangles.max() < len(r[0].points) "
+             "and r[0].bound <= r[1] and r[2] <= r[0].bound")
+    for n in (1, 2, 3):
+        for a in (1e-8, 1e-3, 0.7, "'pi/2'", pi - 1e-3, 3.1415926535897):
+            for tol, scale in ((1e-2, 1.0), (1e-3, 1.0), (1e-1, 1e6), (1e-9, 1e-6)):
+                add("tessellate", tes + f"net = np.random.default_rng({n}).normal(size=(delta({n}), 3)) * {scale!r}; "
+                    f"t = {tol!r}; m = tessellate(net, {n}, {a}, t, max_vertices=400_000); "
+                    "c = m.params[m.triangles].mean(axis=1); "
+                    f"d = float(np.linalg.norm(Patch({n}, {a}, net)(c) - m.points[m.triangles].mean(axis=1), "
+                    "axis=1).max()); r = (m, t, d)", "ok|err", check, ("max_vertices",))
     if with_cli:
         py = sys.executable
         for sched in ("tcp://127.0.0.1:1", "tcp://no-such-host.invalid:8786", "tls://127.0.0.1:1"):

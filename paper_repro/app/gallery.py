@@ -60,8 +60,10 @@ OPEN_QUESTIONS = [
      "net S_k P (docs/subdivision_for_all_n.md, a hand proof, not yet refereed cold); n = 1, 2: S_k in closed form "
      "for every α, with negative entries (not corner cutting); C0/C1/G1 joins with the point-reflected neighbour as "
      "linear conditions. Evidence only: a negative corner entry for every n (closed form fitted for n ≤ 5, checked "
-     "to n = 8). Still open: signs for n ≥ 3 as a proof, the de Casteljau question, convergence rates, a fast "
-     "direct rule for S_k."),
+     "to n = 8). Adaptive tessellation within a tolerance, its bound proven (docs/tessellation.md). Measured only: "
+     "the rates at which sub-nets approach the patch (h² at the boundary, h inside at the layout positions). Still "
+     "open: signs for n ≥ 3 as a proof, the de Casteljau question, proofs of the convergence rates, a fast direct "
+     "rule for S_k."),
 ]
 
 _MATH_TOKEN = re.compile(r"\$([^$]+)\$|"

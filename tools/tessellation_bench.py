@@ -1,0 +1,65 @@
+"""Time :func:`paper_repro.surfaces.tessellation.tessellate` on the torus piece of Section 6 (Example exmp:torus,
+radii 2 and 1, alpha = pi/2; the lower triangle of the square [0, pi/2]^2) and check each mesh densely.
+
+    PYTHONPATH=$PWD python tools/tessellation_bench.py [--tols 1e-3,1e-4,1e-5,1e-6] [--repeat 3] [--no-check]
+
+Per tolerance: vertices, triangles, leaves, depth, fans, the bound, the measured deviation (barycentric grid of 4
+steps in every triangle, 3 above 1 M triangles; skipped with --no-check), the wall and CPU times (all threads) of
+``repeat`` warm calls (the first call of the process, which builds the subdivision matrices, is reported
+separately), and the wall time per million vertices.
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+import time
+
+import numpy as np
+
+from paper_repro.surfaces.models import torus_pieces
+from paper_repro.surfaces.tessellation import tessellate
+
+
+def deviation(mesh, patch, k: int = 4) -> float:
+    """max |s(x) - mesh(x)| over a barycentric grid of k steps in every triangle."""
+    bary = np.array([(i / k, j / k, 1 - (i + j) / k) for i in range(k + 1) for j in range(k + 1 - i)])
+    worst = 0.0
+    for lo in range(0, len(mesh.triangles), 200_000):
+        tri = mesh.triangles[lo:lo + 200_000]
+        par = np.einsum("sk,fkd->fsd", bary, mesh.params[tri]).reshape(-1, 3)
+        lin = np.einsum("sk,fkd->fsd", bary, mesh.points[tri]).reshape(-1, mesh.points.shape[1])
+        worst = max(worst, float(np.linalg.norm(patch(par) - lin, axis=1).max()))
+    return worst
+
+
+def main(argv: list[str] | None = None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--tols", default="1e-3,1e-4,1e-5,1e-6")
+    ap.add_argument("--repeat", type=int, default=3)
+    ap.add_argument("--no-check", action="store_true")
+    args = ap.parse_args(argv)
+    piece = torus_pieces(np.pi / 2, 2.0, 1.0, [0.0], [0.0])[0].patch
+    net = np.asarray(piece.net)
+    t0 = time.perf_counter()
+    tessellate(net, 2, np.pi / 2, 1e-3)
+    print(f"first call (subdivision matrices, kernels): {time.perf_counter() - t0:.2f} s")
+    for tol in (float(x) for x in args.tols.split(",")):
+        times, cpu = [], []
+        for _ in range(args.repeat):
+            t, c = time.perf_counter(), time.process_time()
+            mesh = tessellate(net, 2, np.pi / 2, tol)
+            times.append(time.perf_counter() - t)
+            cpu.append(time.process_time() - c)
+        big = len(mesh.triangles) > 1_000_000
+        dev = float("nan") if args.no_check else deviation(mesh, piece, k=3 if big else 4)
+        best = min(times)
+        print(f"tol {tol:.0e}: {len(mesh.points)} vertices, {len(mesh.triangles)} triangles, {mesh.leaves} leaves, "
+              f"depth {mesh.depth}, {mesh.fans} fans, bound {mesh.bound:.3e}, deviation {dev:.3e}; "
+              f"wall {', '.join(f'{x:.2f}' for x in times)} s, CPU {', '.join(f'{x:.2f}' for x in cpu)} s; "
+              f"{best / len(mesh.points) * 1e6:.2f} s wall per M vertices")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
