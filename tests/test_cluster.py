@@ -277,13 +277,13 @@ def test_an_extended_run_leaves_the_standard_line_table_alone(tmp_path, monkeypa
     monkeypatch.setenv("PAPER_REPRO_NO_CACHE", "1")
     real = CLAIMS["every_line"]
 
-    def body(claim_results=None):
+    def body(claim_results=None, prepared=None):
         from paper_repro.claims.every_line import coverage
 
         cov = coverage([])
         return Outcome(True, {"coverage": cov}, data={"paper_lines.json": {"coverage": cov, "lines": []}})
 
-    monkeypatch.setitem(CLAIMS, "every_line", dataclasses.replace(real, func=body))
+    monkeypatch.setitem(CLAIMS, "every_line", dataclasses.replace(real, func=body, prepare=None))
     set_output_root(tmp_path)
     try:
         report.run_claims(["every_line"], None, extended=True, write=True)
