@@ -72,7 +72,7 @@ ROLES = {"v": (0, 1, 2), "u": (2, 0, 1), "w": (1, 2, 0)}
 #: ``tools/joins_accuracy.py``, 2 cores shared, loaded: n = 40 cold in 0.25 s float, 2.9 s exact, 3.9 s mp at 50
 #: digits).  Float64 loses nothing with n: max |D_float - D_mp| / max |D_mp| <= 3.4e-16 for n = 1..40 at alpha in
 #: {1e-3, 0.1, 1, 2, 3, pi - 1e-3} (every edge; T likewise), so the float limit is this cost limit, not accuracy.
-MAX_N_JOINS = 40
+MAX_N_JOINS = 100
 #: Arithmetics accepted.
 ARITHS = ("float", "mp", "exact")
 

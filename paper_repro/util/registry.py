@@ -112,6 +112,7 @@ CLAIM_MODULES = (
     "paper_repro.claims.limits_claims",
     "paper_repro.claims.order_elevation",
     "paper_repro.claims.subdivision",
+    "paper_repro.claims.joins",
     "paper_repro.claims.half_angle_all_n",
     "paper_repro.claims.torus",
     "paper_repro.claims.surfaces_claims",
