@@ -126,6 +126,7 @@ FIGURE_MODULES = (
     "paper_repro.figures.limits_fig",
     "paper_repro.figures.patches_fig",
     "paper_repro.figures.accuracy",
+    "paper_repro.figures.joins_fig",
 )
 
 
