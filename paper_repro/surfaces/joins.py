@@ -184,7 +184,9 @@ def _conv(x: np.ndarray, y: np.ndarray, ctx: Context) -> np.ndarray:
 
 
 def _closed_form(n: int, alpha, edge: str, ctx: Context) -> tuple[np.ndarray, np.ndarray]:
-    """(D, T) in ``ctx`` (inside its scope), by the binomial expansions of the module docstring."""
+    """(sin(alpha/2) D, sin(alpha/2) T) in ``ctx`` (inside its scope), by the binomial expansions of the module
+    docstring.  Scaled so that the entries are bounded as alpha -> 0 (D and T are of size 1/alpha): the join
+    conditions are homogeneous in (D, T), so the builders and the G1 fit work with these."""
     m = 2 * n
     exps = exponent_matrix(n)
     b_idx, s_idx = edge_rows(n, edge)
@@ -200,7 +202,7 @@ def _closed_form(n: int, alpha, edge: str, ctx: Context) -> tuple[np.ndarray, np
     lC = [ctx.asarray([ctx.mul(ctx.convert(math.comb(k, r)), cpow[k - r]) for r in range(k + 1)]) for k in range(m + 1)]
     norm = ctx.asarray([sum((ctx.mul(ctx.convert(q), cpow[i]) for i, q in enumerate(c_numerator(n, k))),
                             ctx.convert(0)) for k in range(m + 1)])
-    sb_pow = {-1: ctx.div(one, sb), 0: one, 1: sb}
+    sb_pow = {-1: one, 0: sb, 1: ctx.mul(sb, sb)}  # sin(alpha/2)^(1 + k)
     products: dict[tuple[int, int], np.ndarray] = {}
     d_mat, t_mat = ctx.zeros((m + 1, delta(n))), ctx.zeros((m + 1, delta(n)))
     for f in np.r_[b_idx, s_idx]:
@@ -262,7 +264,13 @@ def _cached(n: int, alpha, edge: str, ctx: Context) -> tuple[np.ndarray, np.ndar
 
 
 def _matrices(n: int, alpha, edge: str, ctx: Context) -> tuple[np.ndarray, np.ndarray]:
+    """(sin(alpha/2) D, sin(alpha/2) T): bounded for every alpha (the join conditions are homogeneous in them)."""
     return _cached(n, alpha, edge, ctx)
+
+
+def _sin_half(alpha, ctx: Context):
+    with ctx.scope():
+        return ctx.alpha_half(alpha)[0]
 
 
 def _net(net, n: int, ctx: Context, name: str) -> np.ndarray:
@@ -293,7 +301,13 @@ def edge_derivatives(n: int, alpha, edge: str = "v", arith: str | Context | None
     """
     n, a, edge, ctx = _check(n, alpha, edge, arith, dps)
     d, t = _matrices(n, a, edge, ctx)
-    return d.copy(), t.copy()
+    sb = _sin_half(a, ctx)
+    with ctx.scope(), np.errstate(over="ignore"):
+        d, t = ctx.div(d, sb), ctx.div(t, sb)
+    if isinstance(ctx, FloatContext) and not (np.isfinite(d).all() and np.isfinite(t).all()):
+        raise OverflowError(f"alpha: the edge derivatives are of size 1/alpha and exceed float64's range at alpha = "
+                            f"{float(a):.3g}; use arith='mp'")
+    return np.array(d), np.array(t)
 
 
 def _reverse(rows: np.ndarray) -> np.ndarray:
@@ -304,10 +318,13 @@ def _multiplier(x, name: str, ctx: Context, positive: bool):
     """``lam``/``mu`` checked (a finite real; ``lam > 0``) and converted to ``ctx`` (exact: a float is its binary
     value; give fmpq or a Fraction for an exact rational)."""
     v = real_scalar(x, name)
-    f = float(v)
+    try:
+        f = float(v)
+    except OverflowError:  # an integer or rational beyond float64: finite
+        f = 0.0
     if not math.isfinite(f):
         raise ValueError(f"{name} must be finite, got {x!r}")
-    if positive and not f > 0:
+    if positive and not v > 0:
         raise ValueError(f"{name} must be a positive real number, got {x!r}")
     return ctx.convert(v)
 
@@ -319,14 +336,76 @@ def g1_neighbour_row(net, n: int, alpha, edge: str = "v", *, lam, mu, arith: str
     ``d'_{2n-k} = -lam d_k + mu t_k`` (``lam > 0``), given C0 (the neighbour's boundary row is ours reversed).
 
     The second-row block of D is invertible for every n (docs section 8, Lemma 4; after ordering it is triangular
-    with a nonzero diagonal), so the row is unique.  Solved in ``arith`` (exact: fmpq).
+    with a nonzero diagonal), so the row is unique.  Solved in ``arith`` (exact: fmpq).  In float and mp the solve
+    loses about log10(largest entry / smallest pivot) digits of the block -- for n = 1 that is 2 log10(2/alpha) + 0.7
+    (the centre's pivot is O(alpha^2)), for n >= 2 under 3 digits at every alpha measured -- so when more than
+    :data:`LOST_DIGITS_OK` would be lost the row is solved in mp with that many extra digits and rounded
+    (:func:`_work_context`).
     """
     n, a, edge, ctx = _check(n, alpha, edge, arith, dps)
     with ctx.scope():
         lam_c = _multiplier(lam, "lam", ctx, True)
         mu_c = _multiplier(mu, "mu", ctx, False)
     arr = _net(net, n, ctx, "net")
-    d_mat, t_mat = _matrices(n, a, edge, ctx)
+    work = _work_context(n, a, edge, ctx)
+    if work is not ctx:
+        with work.scope():
+            row = _second_row(work.asarray(arr), n, a, edge, work, work.convert(lam_c), work.convert(mu_c))
+        if isinstance(ctx, FloatContext):
+            return work.to_float(row)
+        with ctx.scope():
+            return ctx.asarray(row)
+    return _second_row(arr, n, a, edge, ctx, lam_c, mu_c)
+
+
+#: Digits the float/mp solve of the second row may lose before it is redone at higher precision.
+LOST_DIGITS_OK = 3
+
+
+def _pivot_rows(n: int, edge: str) -> list[int]:
+    """For each second-row member (edge_rows order), the row of D where its column is the pivot of the triangular
+    block (Lemma 4): the cross derivative is (1/2) s^a c^b S^e C^g with b + g <= 1, whose expansion has its
+    coefficient at sigma^(a + g) with no other column sharing that row but through the two cosine members."""
+    exps = exponent_matrix(n)
+    cross, _ = directions(edge)
+    rows = []
+    for f in edge_rows(n, edge)[1]:
+        (term,) = edge_terms(exps[f], edge, cross)
+        rows.append(term[1] + term[4])
+    return rows
+
+
+def _lost_digits(n: int, alpha, edge: str, ctx: Context) -> float:
+    """log10(largest |entry| / smallest |pivot|) of the second-row block in ``ctx`` (inf if a pivot underflowed)."""
+    d_mat, _ = _matrices(n, alpha, edge, ctx)
+    block = d_mat[:, edge_rows(n, edge)[1]]
+    with ctx.scope():
+        big = max(abs(x) for x in block.reshape(-1))
+        small = min(abs(block[r, j]) for j, r in enumerate(_pivot_rows(n, edge)))
+        if small == 0:
+            return math.inf
+        if isinstance(ctx, MpContext):
+            import mpmath
+
+            return float(mpmath.log10(big / small))
+        return math.log10(float(big) / float(small))
+
+
+def _work_context(n: int, alpha, edge: str, ctx: Context) -> Context:
+    """``ctx`` itself when the second-row solve loses at most :data:`LOST_DIGITS_OK` digits in it (and always for
+    exact); otherwise an mp context with the lost digits added (measured in mp, where nothing underflows)."""
+    if ctx.exact:
+        return ctx
+    lost = _lost_digits(n, alpha, edge, ctx)
+    if lost <= LOST_DIGITS_OK:
+        return ctx
+    if not math.isfinite(lost):
+        lost = _lost_digits(n, alpha, edge, MpContext(dps=30))
+    return MpContext(dps=min(10_000, ctx.digits + math.ceil(lost) + 10))
+
+
+def _second_row(arr: np.ndarray, n: int, alpha, edge: str, ctx: Context, lam_c, mu_c) -> np.ndarray:
+    d_mat, t_mat = _matrices(n, alpha, edge, ctx)
     b, s = edge_rows(n, edge)
     with ctx.scope():
         boundary = _reverse(arr[b])  # the neighbour's boundary row (C0)
@@ -401,7 +480,9 @@ def join_error(net, neighbour, n: int, alpha, edge: str = "v", *, arith: str | C
     * ``'C1'`` = max |d_k + d'_{2n-k}| (given C0: 0 iff C1);
     * ``'G1'`` = max |d'_{2n-k} + lam d_k - mu t_k| at the (``'lam'``, ``'mu'``) that minimize the sum of the squares
       of these residuals subject to lam >= 0.  0 iff some lam >= 0, mu fit exactly; with C0 and ``lam > 0`` that is
-      G1 with constant multipliers (sufficient for G1; docs section 8).  ``lam = 0`` flags a failed G1 fit.
+      G1 with constant multipliers (sufficient for G1; docs section 8).  ``lam = 0`` flags a failed G1 fit;
+    * ``'scale'`` = max |d_k|, the size of our cross-boundary coefficients (of order 1/alpha times the net's size):
+      in float, C1 and G1 defects of a smooth join are rounding errors of about 1e-16 times ``'scale'``.
     """
     n, a, edge, ctx = _check(n, alpha, edge, arith, dps)
     arr = _net(net, n, ctx, "net")
@@ -421,9 +502,13 @@ def join_error(net, neighbour, n: int, alpha, edge: str = "v", *, arith: str | C
         x, y, r = ctx.mul(d, -1).reshape(-1), t.reshape(-1), d_other.reshape(-1)
         lam, mu = _fit_multipliers(x, y, r, ctx)
         g1 = maxabs(ctx.sub(r, ctx.add(ctx.mul(x, lam), ctx.mul(y, mu))))
+        scale = maxabs(d)
+        sb = ctx.alpha_half(a)[0]  # d, t above are sin(alpha/2) times the coefficients
+        with np.errstate(over="ignore"):
+            c1, g1, scale = ctx.div(c1, sb), ctx.div(g1, sb), ctx.div(scale, sb)
     if isinstance(ctx, FloatContext):
-        c0, c1, g1, lam, mu = (float(v) for v in (c0, c1, g1, lam, mu))
-    return {"C0": c0, "C1": c1, "G1": g1, "lam": lam, "mu": mu}
+        c0, c1, g1, lam, mu, scale = (float(v) for v in (c0, c1, g1, lam, mu, scale))
+    return {"C0": c0, "C1": c1, "G1": g1, "lam": lam, "mu": mu, "scale": scale}
 
 
 __all__ = ["EDGES", "ROLES", "MAX_N_JOINS", "check_edge", "directions", "edge_rows", "edge_points", "edge_terms",
