@@ -4,8 +4,8 @@
 
 Accuracy: float64 against mp (``--dps`` digits) for every n up to ``--n-max`` on every edge, and at the orders
 ``--high`` on edge 'v' (the three edges' matrices are the same expansions with the columns relabelled), alpha in
-ALPHAS: max |D_float - D_mp| / max |D_mp| (T likewise).  Cost: one cold call (caches cleared) per arithmetic at n in SIZES
-(exact at tan(alpha/4) = 1/3).  The numbers behind :data:`paper_repro.surfaces.joins.MAX_N_JOINS`.
+ALPHAS: max |D_float - D_mp| / max |D_mp| (T likewise); the C1/G1 builders likewise.  Cost: one cold call (caches
+cleared) per arithmetic at n in SIZES (exact at tan(alpha/4) = 1/3): the numbers behind joins.MAX_N_JOINS.
 """
 
 from __future__ import annotations
@@ -40,6 +40,23 @@ def accuracy(ns, dps: int, edges=joins.EDGES) -> dict:
     return out
 
 
+def builder_accuracy(ns, dps: int) -> dict:
+    """The C1 and G1 (lam, mu) = (1.6, 0.4) neighbours' second rows in float64 against mp at the same float alpha,
+    relative to the largest control point, on a seeded random net (edge 'w')."""
+    out = {}
+    for n in ns:
+        net = np.random.default_rng(n).normal(size=(joins.delta(n), 3))
+        worst = 0.0
+        for alpha in ALPHAS:
+            for lam, mu in ((1, 0), (1.6, 0.4)):
+                fl = joins.g1_neighbour_row(net, n, alpha, "w", lam=lam, mu=mu)
+                mp = joins.g1_neighbour_row(net, n, alpha, "w", lam=lam, mu=mu, arith="mp", dps=dps).astype(float)
+                worst = max(worst, float(np.abs(fl - mp).max() / np.abs(mp).max()))
+        out[n] = worst
+        print(f"n = {n:2d}: builders, max relative deviation of float from mp {worst:.2e}", flush=True)
+    return out
+
+
 def cost(sizes) -> dict:
     out = {}
     for n in sizes:
@@ -62,8 +79,10 @@ def main(argv=None) -> int:
     ap.add_argument("--sizes", default=",".join(map(str, SIZES)))
     ap.add_argument("--json")
     args = ap.parse_args(argv)
-    res = {"cost": cost([int(x) for x in args.sizes.split(",")]), "accuracy": accuracy(range(1, args.n_max + 1), args.dps),
-           "accuracy_high_edge_v": accuracy([int(x) for x in args.high.split(",") if x], args.dps, ("v",))}
+    res = {"cost": cost([int(x) for x in args.sizes.split(",")]),
+           "accuracy": accuracy(range(1, args.n_max + 1), args.dps),
+           "accuracy_high_edge_v": accuracy([int(x) for x in args.high.split(",") if x], args.dps, ("v",)),
+           "builders": builder_accuracy([*range(1, 11), 20, 40], args.dps)}
     if args.json:
         with open(args.json, "w") as fh:
             json.dump(res, fh, indent=1)
