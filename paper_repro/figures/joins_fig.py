@@ -37,7 +37,7 @@ def join_nets() -> tuple[np.ndarray, np.ndarray]:
 @figure("join_g1", outputs=["join_g1.png"],
         caption="Beyond the paper (issue 38): two second order patches (alpha = pi/2) joined G1 along the edge v = 0 "
                 "with constant multipliers, d'_{2n-k} = -lam d_k + mu t_k, lam = 1.6, mu = 0.4 (docs/"
-                "subdivision_for_all_n.md section 8). (a) The patches with their nets (the shared boundary row; the "
+                "joins_for_all_n.md). (a) The patches with their nets (the shared boundary row; the "
                 "neighbour's second row computed by join_neighbour) and the cross-boundary derivatives at seven edge "
                 "points: ours into our patch (blue) and the neighbour's into its own (orange), coplanar with the "
                 "edge's tangent. (b) The neighbour's cross-boundary derivative along the edge, evaluated by "
