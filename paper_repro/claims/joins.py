@@ -1,6 +1,6 @@
 """Claim ``joins_all_n``: smooth joins of two patches along a shared edge (issue 38, item 4; beyond the paper).
 
-The statement (proven for every n in docs/subdivision_for_all_n.md, section 8; computed by
+The statement (proven for every n in docs/joins_for_all_n.md; computed by
 :mod:`paper_repro.surfaces.joins`): along an edge the cross-boundary derivative and the tangent of a patch are
 ``sum_k A_{2n,k}(t) d_k`` and ``sum_k A_{2n,k}(t) t_k`` with d = D P, t = T P in closed form; with the neighbour on
 the point-reflected triangle, C0 iff P'_{2n-k} = P_k, C1 iff moreover d'_{2n-k} = -d_k, and G1 (constant
@@ -25,7 +25,7 @@ What the program checks, exactly (rational arithmetic, alpha = 4 atan(t) with t 
    joins module), joined across the diagonal (edge w), V = const (edge v) and U = const (edge u): C0 and C1
    defects exactly 0.  For the torus that is C1 of the surface pieces; for the cyclide C1 of the homogeneous
    pieces, hence C1 (so G1) of the rational pieces wherever W != 0 (the quotient X/W and its first derivatives are
-   functions of the homogeneous values and first derivatives; docs section 8).
+   functions of the homogeneous values and first derivatives; docs/joins_for_all_n.md section 5).
 
 Kind: exact-evidence at the sampled alpha and n; the hand proof carries every n and alpha.
 """
@@ -208,14 +208,16 @@ def pieces_check(model, alpha: RationalAngle, phi, psi) -> dict:
        statement="Beyond the paper (issue 38): two order-n patches with parameter alpha on point-reflected triangles "
                  "sharing an edge join C0 iff P'_(2n-k) = P_k, C1 iff moreover d'_(2n-k) = -d_k, G1 (sufficient) if "
                  "d'_(2n-k) = -lam d_k + mu t_k, lam > 0, with d = D P, t = T P in closed form and the second-row "
-                 "block of D invertible (hand proof for every n, docs/subdivision_for_all_n.md section 8). Exact "
+                 "block of D invertible (hand proof for every n, docs/joins_for_all_n.md). Exact "
                  "checks at tan(alpha/4) in {ts}, n = 1..{n_max}, every edge: the closed form equals the exact "
                  "derivatives of the blending functions at 2n + 3 edge points, the block has full rank, the C1 and "
-                 "G1 (lam, mu) = (2/3, -1/5) builders give neighbours whose derivatives satisfy the conditions at "
-                 "edge points and join_error is 0. The torus (rho, mu) = {torus} and the Dupin cyclide (a, b^2, c, "
-                 "mu) = {cyclide} pieces of Section 6 (exact order-2 nets at tan(alpha/4) in {ts_pieces}, phases "
-                 "(cos, sin) in {phases}): C0 and C1 defects exactly 0 across the diagonal, V = const and U = const "
-                 "(the cyclide: of the homogeneous nets, hence C1 of the rational pieces where W != 0).",
+                 "G1 (lam, mu) = (2/3, -1/5) builders give neighbours whose values and derivatives satisfy the "
+                 "conditions at 2n + 3 edge points, and join_error gives C0 = C1 = G1 = 0 (C1 neighbour), C0 = G1 = 0 "
+                 "with (lam, mu) found back (G1 neighbour). The torus (rho, mu) = {torus} and the Dupin cyclide "
+                 "(a, b^2, c, mu) = {cyclide} pieces of Section 6 (exact order-2 nets at tan(alpha/4) in "
+                 "{ts_pieces}, phase squares (phi, psi) with both phases' (cos, sin) in {phases}): C0 and C1 "
+                 "defects exactly 0, and the first derivatives equal at 7 edge points, across the diagonal, V = const "
+                 "and U = const (the cyclide: of the homogeneous nets, hence C1 of the rational pieces where W != 0).",
        kind="exact-evidence", ts=["1/7", "1/3", "3/5"], n_max=4, seed=3, torus=["2", "1"],
        cyclide=["6", "32", "2", "3"], ts_pieces=["1/3", "1/2"], phases=[["1", "0"], ["3/5", "4/5"]],
        extended={"n_max": 8})
@@ -237,7 +239,8 @@ def run(ts: list[str], n_max: int, seed: int, torus: list[str], cyclide: list[st
         for t in ts_pieces:
             alpha = rational_alpha(fmpq(*map(int, t.split("/"))))
             for phi in ph:
-                pieces[f"{name}, tan(alpha/4)={t}, phi={phi}"] = pieces_check(model, alpha, phi, ph[-1])
+                for psi in ph:
+                    pieces[f"{name}, tan(alpha/4)={t}, phi={phi}, psi={psi}"] = pieces_check(model, alpha, phi, psi)
     pieces_ok = all(all(v.values()) for e in pieces.values() for v in e.values())
     measured = {
         "closed_form_equals_exact_derivatives": (f"every edge, n = 1..{n_max}, tan(alpha/4) in {ts}"
@@ -246,7 +249,7 @@ def run(ts: list[str], n_max: int, seed: int, torus: list[str], cyclide: list[st
         "section6_pieces": ("torus: C1 across the three kinds of shared edge; cyclide: C1 of the homogeneous nets "
                             "(so C1, hence G1, of the rational pieces where W != 0); exact" if pieces_ok else pieces),
         "scope": "exact at the sampled alpha and n (evidence for others); the conditions, the closed form and the "
-                 "invertibility are proven for every n and alpha in docs/subdivision_for_all_n.md section 8",
+                 "invertibility are proven for every n and alpha in docs/joins_for_all_n.md",
     }
     return Outcome(closed_ok and built_ok and pieces_ok, measured)
 

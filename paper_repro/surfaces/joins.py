@@ -17,7 +17,7 @@ t = u from the corner w = alpha (t = 0) to the corner u = alpha (t = alpha); ``'
   monomial in s = sin(t/2), c = cos(t/2), S = sin((alpha - t)/2), C = cos((alpha - t)/2) of degree 2n, and with
   sigma = s / sin(alpha/2), Sigma = S / sin(alpha/2) one has c = Sigma + cos(alpha/2) sigma,
   C = sigma + cos(alpha/2) Sigma and A_{2n,k} = N_k sigma^k Sigma^{2n-k} (N_k = sin^{2n}(alpha/2) c_{2n,k}, eq.
-  ``univariate_basis``), so the coefficients are binomial expansions (docs/subdivision_for_all_n.md, section 8).
+  ``univariate_basis``), so the coefficients are binomial expansions (docs/joins_for_all_n.md, Proposition 2).
 * **The neighbour on the point-reflected side**: a patch whose domain is the image of Omega^alpha under the point
   reflection through the edge's midpoint (for ``'v'``: (u, v, w) -> (alpha - u, -v, alpha - w); the lower and upper
   pieces of the torus and the cyclide of Section 6 are such neighbours).  Its edge parameter runs backwards, so
@@ -28,7 +28,7 @@ t = u from the corner w = alpha (t = 0) to the corner u = alpha (t = alpha); ``'
   - G1 with constant multipliers (sufficient): d'_{2n-k} = -lam d_k + mu t_k, lam > 0.
 
 :func:`c1_neighbour_row` and :func:`g1_neighbour_row` return the neighbour's second row for C1 or G1 (the second-row
-block of D is triangular with a nonzero diagonal for every n, docs section 8, Lemma 4); :func:`join_neighbour` the
+block of D is triangular with a nonzero diagonal for every n, docs Lemma 3); :func:`join_neighbour` the
 whole neighbour net; :func:`join_error` reports the C0, C1 and G1 defects.  (For whole models, the torus and the
 cyclide, :func:`paper_repro.surfaces.models.join_error` measures sampled C0 gaps of every shared edge.)
 
@@ -212,7 +212,7 @@ def _closed_form(n: int, alpha, edge: str, ctx: Context) -> tuple[np.ndarray, np
         for target, direction in ((d_mat, cross), (t_mat, tangent)):
             col = ctx.zeros((m + 1,))
             for coef, a, b, e, g in edge_terms(ex, edge, direction):
-                if a + b + e + g != m:  # pragma: no cover - proven (docs section 8, Lemma 2)
+                if a + b + e + g != m:  # pragma: no cover - proven (docs/joins_for_all_n.md, Lemma 1)
                     raise AssertionError(f"member {f}: edge monomial of degree {a + b + e + g}, not 2n = {m}")
                 if (b, g) not in products:
                     products[(b, g)] = _conv(lc[b], lC[g], ctx)
@@ -288,7 +288,7 @@ def edge_derivatives(n: int, alpha, edge: str = "v", arith: str | Context | None
     """``(D, T)``, each ``(2n + 1, delta_n)``: the cross-boundary derivative of a patch with net P along ``edge`` is
     ``sum_k A_{2n,k}(t) (D P)_k`` and its derivative along the edge ``sum_k A_{2n,k}(t) (T P)_k``.
 
-    Closed form (module docstring; docs/subdivision_for_all_n.md section 8), every n up to :data:`MAX_N_JOINS`.
+    Closed form (module docstring; docs/joins_for_all_n.md, Proposition 2), every n up to :data:`MAX_N_JOINS`.
     ``arith``: ``'float'`` (default for a real alpha), ``'mp'`` (``dps`` digits) or ``'exact'`` (default for a
     :class:`~paper_repro.core.domain.RationalAngle`; entries ``fmpq``).
 
@@ -336,7 +336,7 @@ def g1_neighbour_row(net, n: int, alpha, edge: str = "v", *, lam, mu, arith: str
     point-reflected side of ``edge`` that joins the patch of ``net`` G1 with constant multipliers,
     ``d'_{2n-k} = -lam d_k + mu t_k`` (``lam > 0``), given C0 (the neighbour's boundary row is ours reversed).
 
-    The second-row block of D is invertible for every n (docs section 8, Lemma 4; after ordering it is triangular
+    The second-row block of D is invertible for every n (docs Lemma 3; after ordering it is triangular
     with a nonzero diagonal), so the row is unique.  Solved in ``arith`` (exact: fmpq).  In float and mp the solve
     loses about log10(largest entry / smallest pivot) digits of the block -- for n = 1 about 2 log10(2/alpha) + 0.7
     (the centre's pivot is O(alpha^2)), for n >= 2 under 3 digits at every alpha measured -- so when more than
@@ -365,8 +365,9 @@ LOST_DIGITS_OK = 1
 
 def _pivot_rows(n: int, edge: str) -> list[int]:
     """For each second-row member (edge_rows order), the row of D where its column is the pivot of the triangular
-    block (Lemma 4): the cross derivative is (1/2) s^a c^b S^e C^g with b + g <= 1, whose expansion has its
-    coefficient at sigma^(a + g) with no other column sharing that row but through the two cosine members."""
+    block (docs/joins_for_all_n.md, Lemma 3): the cross derivative is (1/2) s^a c^b S^e C^g with b + g <= 1, whose
+    expansion has its coefficient at sigma^(a + g) with no other column sharing that row but through the two cosine
+    members."""
     exps = exponent_matrix(n)
     cross, _ = directions(edge)
     rows = []
@@ -488,7 +489,8 @@ def join_error(net, neighbour, n: int, alpha, edge: str = "v", *, arith: str | C
     * ``'C1'`` = max |d_k + d'_{2n-k}| (given C0: 0 iff C1);
     * ``'G1'`` = max |d'_{2n-k} + lam d_k - mu t_k| at the (``'lam'``, ``'mu'``) that minimize the sum of the squares
       of these residuals subject to lam >= 0.  0 iff some lam >= 0, mu fit exactly; with C0 and ``lam > 0`` that is
-      G1 with constant multipliers (sufficient for G1; docs section 8).  ``lam = 0`` flags a failed G1 fit;
+      G1 with constant multipliers (sufficient for G1; docs/joins_for_all_n.md, Theorem 4).  ``lam = 0`` flags a
+      failed G1 fit;
     * ``'scale'`` = max |d_k|, the size of our cross-boundary coefficients (of order 1/alpha times the net's size):
       in float, C1 and G1 defects of a smooth join are rounding errors of about 1e-16 times ``'scale'``.
     """
