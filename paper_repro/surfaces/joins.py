@@ -307,7 +307,7 @@ def edge_derivatives(n: int, alpha, edge: str = "v", arith: str | Context | None
         d, t = ctx.div(d, sb), ctx.div(t, sb)
     if isinstance(ctx, FloatContext) and not (np.isfinite(d).all() and np.isfinite(t).all()):
         raise OverflowError(f"alpha: the edge derivatives are of size 1/alpha and exceed float64's range at alpha = "
-                            f"{float(a):.3g}; use arith='mp'")
+                            f"{float(a):.3g}; use arith='mp'")  # type: ignore[arg-type]
     return np.array(d), np.array(t)
 
 
@@ -517,7 +517,7 @@ def join_error(net, neighbour, n: int, alpha, edge: str = "v", *, arith: str | C
         with np.errstate(over="ignore"):
             c1, g1, scale = ctx.div(c1, sb), ctx.div(g1, sb), ctx.div(scale, sb)
     if isinstance(ctx, FloatContext):
-        c0, c1, g1, lam, mu, scale = (float(v) for v in (c0, c1, g1, lam, mu, scale))
+        c0, c1, g1, lam, mu, scale = (float(v) for v in (c0, c1, g1, lam, mu, scale))  # type: ignore[arg-type]
     return {"C0": c0, "C1": c1, "G1": g1, "lam": lam, "mu": mu, "scale": scale}
 
 
