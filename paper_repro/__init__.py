@@ -54,9 +54,11 @@ _PUBLIC: dict[str, tuple[str, str, bool]] = {
     "evaluate_normalized": ("paper_repro.core.normalization", "evaluate_normalized", True),
     "transformation_matrix": ("paper_repro.core.transformation", "transformation_matrix", False),
     "fit": ("paper_repro.surfaces.fitting", "fit", False),
-    "c1_second_row": ("paper_repro.surfaces.joins", "c1_second_row", True),
+    "c1_neighbour_row": ("paper_repro.surfaces.joins", "c1_neighbour_row", True),
+    "g1_neighbour_row": ("paper_repro.surfaces.joins", "g1_neighbour_row", True),
+    "join_neighbour": ("paper_repro.surfaces.joins", "join_neighbour", True),
     "edge_derivatives": ("paper_repro.surfaces.joins", "edge_derivatives", True),
-    "edge_join_error": ("paper_repro.surfaces.joins", "edge_join_error", True),
+    "join_error": ("paper_repro.surfaces.joins", "join_error", True),
     "fit_least_squares": ("paper_repro.surfaces.fitting", "fit_least_squares", False),
     "bezier_nodes": ("paper_repro.surfaces.limit", "bezier_nodes", False),
     "bezier_triangle": ("paper_repro.surfaces.limit", "bezier_triangle", False),
@@ -90,9 +92,10 @@ def __dir__() -> list[str]:
 
 
 __all__ = ["LabelledNet", "Patch", "RationalAngle", "RationalPoints", "__version__", "barycentric", "basis_derivative",
-           "bezier_limit", "bezier_nodes", "bezier_triangle", "c1_second_row", "coefficients", "delta",
-           "edge_derivatives", "edge_join_error", "elevate", "elevation_matrix", "evaluate", "evaluate_normalized",
-           "export_mesh", "fit", "fit_least_squares", "get_context", "merge_meshes", "net_edges", "parse_alpha",
+           "bezier_limit", "bezier_nodes", "bezier_triangle", "c1_neighbour_row", "coefficients", "delta",
+           "edge_derivatives", "elevate", "elevation_matrix", "evaluate", "evaluate_normalized",
+           "export_mesh", "fit", "fit_least_squares", "g1_neighbour_row", "get_context", "join_error",
+           "join_neighbour", "merge_meshes", "net_edges", "parse_alpha",
            "parse_label", "position", "product_matrix", "rational_alpha", "sample_points", "sample_rational_points",
            "subdivide", "subdivide_to_depth", "subdivision_matrix", "tessellate", "transformation_matrix",
            "triangle_grid", "united_system"]

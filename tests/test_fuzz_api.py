@@ -159,6 +159,10 @@ def test_the_hostile_suite_of_this_round_passes():
 def test_the_hostile_suite_of_the_tessellator_passes():
     """tools/fuzz_api.py's class tessellate: every bad input refused naming its parameter, every valid one a mesh
     within its bound and tol (checked at the triangles' centroids), or a refusal naming max_vertices."""
+def test_the_hostile_joins_class_passes():
+    """tools/fuzz_api.py's class joins (issue 38, item 4): NaN/inf/complex/out-of-range alpha, bool and huge n, bad
+    edge names, wrong net shapes, bad lam/mu/arith/dps for every public function of paper_repro.surfaces.joins give a
+    ValueError/TypeError naming the parameter; valid calls at alpha from 1e-300 to pi- are finite and joined."""
     import os
     import subprocess
     import sys
@@ -170,3 +174,9 @@ def test_the_hostile_suite_of_the_tessellator_passes():
                        capture_output=True, text=True, timeout=1200, env=env)
     assert p.returncode == 0, p.stdout[-2000:] + p.stderr[-2000:]
     assert "tessellate" in p.stdout and " 0               0               0" in p.stdout.splitlines()[-1], p.stdout
+    root = Path(__file__).parents[1]
+    env = dict(os.environ, PYTHONPATH=os.pathsep.join([str(root), os.environ.get("PYTHONPATH", "")]).rstrip(os.pathsep))
+    p = subprocess.run([sys.executable, str(root / "tools" / "fuzz_api.py"), "--classes", "joins"], capture_output=True,
+                       text=True, timeout=600, env=env)
+    assert p.returncode == 0, p.stdout[-2000:] + p.stderr[-2000:]
+    assert "joins" in p.stdout and " 0               0               0" in p.stdout.splitlines()[-1], p.stdout

@@ -12,7 +12,7 @@ from paper_repro.core.labels import delta, index_of
 from paper_repro.printed.torus import corrected_points, mp_function, torus
 from paper_repro.surfaces.fitting import fit_exact, fit_mp
 from paper_repro.surfaces.mesh import export_mesh
-from paper_repro.surfaces.models import cyclide_parts, cyclide_pieces, join_error
+from paper_repro.surfaces.models import cyclide_parts, cyclide_pieces, model_gap
 from paper_repro.surfaces.patch import Patch
 
 from .strategies import alphas
@@ -69,7 +69,7 @@ def test_cyclide_one_square():
         parts = (cyclide_parts(U, V, 6, mpmath.sqrt(32), 2, 3) for U, V in p.uv(pts, al))
         ref = [[float(x / W) for x in X] for X, W in parts]
         assert np.abs(p.patch(pts) - np.array(ref)).max() < 1e-12
-    assert join_error(pieces, al) < 1e-12
+    assert model_gap(pieces, al) < 1e-12
 
 
 def test_rational_patch_with_equal_weights_is_polynomial():

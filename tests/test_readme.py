@@ -37,9 +37,9 @@ def test_quick_start_comes_first_and_its_example_runs(tmp_path, monkeypatch, cap
     exec(compile(code, "README.md quick start", "exec"), namespace)
     torus, dupin, a = namespace["torus"], namespace["dupin"], namespace["a"]
     assert len(torus) == 32 and dupin[0].patch.weights is not None
-    from paper_repro.surfaces.models import join_error, torus_xyz
+    from paper_repro.surfaces.models import model_gap, torus_xyz
 
-    assert join_error(torus, a) < 1e-13
+    assert model_gap(torus, a) < 1e-13
     p = torus[5]  # independent: the patch against the torus's own formula at the patch's (U, V)
     pts = np.array([[0.3, 0.5, a - 0.8], [1.0, 0.2, a - 1.2]])
     want = np.array([[float(c) for c in torus_xyz(U, V, 2.0, 1.0)] for U, V in p.uv(pts, a)])

@@ -542,7 +542,7 @@ def test_export_mesh_refuses_all_nan_or_infinite_normals(tmp_path):
     (lambda m: m.cyclide_pieces(1.0, dict(a=6, c=2, mu=3), [0.0], [0.0]), TypeError, "params must be a dict with"),
     (lambda m: m.cyclide_pieces(1.0, [6, 4, 2, 3], [0.0], [0.0]), TypeError, "params must be a dict with"),
     (lambda m: m.cyclide_pieces(1.0, dict(a=6, b="4", c=2, mu=3), [0.0], [0.0]), TypeError, r"params\['b'\]"),
-    (lambda m: m.join_error([], 1.0), ValueError, "pieces must be a non-empty list"),
+    (lambda m: m.model_gap([], 1.0), ValueError, "pieces must be a non-empty list"),
 ])
 def test_models_refuse_bad_parameters_naming_them(call, kind, words):
     from paper_repro.surfaces import models
@@ -552,14 +552,14 @@ def test_models_refuse_bad_parameters_naming_them(call, kind, words):
 
 
 def test_join_error_refuses_to_report_an_unmeasured_join_as_perfect():
-    from paper_repro.surfaces.models import join_error, torus_pieces
+    from paper_repro.surfaces.models import model_gap, torus_pieces
 
     pieces = torus_pieces(1.0, 3.0, 1.0, [0.0], [0.0])
-    assert 0 <= join_error(pieces, 1.0) < 1e-13  # the two triangles of one square meet on the diagonal
+    assert 0 <= model_gap(pieces, 1.0) < 1e-13  # the two triangles of one square meet on the diagonal
     with pytest.raises(ValueError, match="samples must be an integer from 2"):
-        join_error(pieces, 1.0, samples=0)
+        model_gap(pieces, 1.0, samples=0)
     with pytest.raises(ValueError, match="no join was measured"):
-        join_error(pieces[:1], 1.0)
+        model_gap(pieces[:1], 1.0)
 
 
 def test_labelled_net_survives_pickle_and_copy():

@@ -368,6 +368,58 @@ def cases(rng: random.Random, with_cli: bool):
                     "c = m.params[m.triangles].mean(axis=1); "
                     f"d = float(np.linalg.norm(Patch({n}, {a}, net)(c) - m.points[m.triangles].mean(axis=1), "
                     "axis=1).max()); r = (m, t, d)", "ok|err", check, ("max_vertices",))
+    # --- joins along an edge (issue 38, item 4): every public function of paper_repro.surfaces.joins refuses hostile
+    # input naming the parameter, before any work; valid calls at extreme alpha give finite, joined results
+    joins = {
+        "edge_derivatives": "edge_derivatives({n}, {a}, {e})",
+        "c1_neighbour_row": "c1_neighbour_row({net}, {n}, {a}, {e})",
+        "g1_neighbour_row": "g1_neighbour_row({net}, {n}, {a}, {e}, lam={lam}, mu={mu})",
+        "join_neighbour": "join_neighbour({net}, {n}, {a}, {e}, {nb}, lam={lam}, mu={mu})",
+        "join_error": "join_error({net}, {nb2}, {n}, {a}, {e})",
+    }
+    good = {"n": "2", "a": "1.0", "e": "'v'", "net": "np.ones((19, 3))", "nb": "None", "nb2": "np.ones((19, 3))",
+            "lam": "1.5", "mu": "0.25"}
+    hostile = [("a", bad, ("alpha",)) for bad in ("float('nan')", "float('inf')", "-1.0", "0.0", "4.0", "1j",
+                                                     "np.complex128(1)", "'x'", "None", "np.array([1.0, 2.0])",
+                                                     "mpmath.mpf('nan')", "5e-324")]
+    hostile += [("n", bad, ("n must",)) for bad in ("True", "False", "0", "-3", "2.5", "10**9", "101", "'2'", "None",
+                                                     "np.float64(2)")]
+    hostile += [("e", bad, ("edge",)) for bad in ("'x'", "'V'", "''", "1", "None", "b'v'", "('v',)", "['u']")]
+    hostile += [("net", bad, ("net",)) for bad in ("np.ones((18, 3))", "np.ones((19,))", "np.ones((19, 3, 1))",
+                                                    "np.full((19, 3), np.nan)", "np.full((19, 3), np.inf)",
+                                                    "'net'", "[[1j] * 3] * 19", "np.ones((19, 0))")]
+    hostile += [("nb", bad, ("neighbour",)) for bad in ("np.ones((19, 2))", "np.ones((7, 3))",
+                                                         "np.full((19, 3), np.nan)")]
+    hostile += [("nb2", bad, ("neighbour",)) for bad in ("np.ones((19, 2))", "np.ones((7, 3))", "None",
+                                                          "np.full((19, 3), np.inf)")]
+    hostile += [("lam", bad, ("lam",)) for bad in ("0", "-1.0", "float('nan')", "float('inf')", "1j", "True",
+                                                    "'1'", "None", "np.array([1.0, 2.0])", "-10**400")]
+    hostile += [("mu", bad, ("mu",)) for bad in ("float('nan')", "float('-inf')", "1j", "False", "'0'", "None",
+                                                  "mpmath.mpf('inf')")]
+    for template in joins.values():
+        for key, bad, words in hostile:
+            if "{" + key + "}" not in template:
+                continue
+            args = dict(good, **{key: bad})
+            add("joins", "r = " + template.format(**args), "err", words)
+    for arith, words in (("'modp'", ("arith",)), ("'ball'", ("arith",)), ("'fast'", ("arith",)), ("1", ("arith",)),
+                         ("'exact'", ("RationalAngle",))):
+        add("joins", f"r = edge_derivatives(2, 1.0, 'v', {arith})", "err", words)
+        add("joins", f"r = join_error(np.ones((19, 3)), np.ones((19, 3)), 2, 1.0, 'w', arith={arith})", "err", words)
+    add("joins", "r = edge_derivatives(2, 1.0, 'v', 'mp', dps=3)", "err", ("dps",))
+    # valid calls at extreme alpha and order: finite, and the builders' joins have zero defects
+    for a in (1e-300, 1e-30, 1e-3, 1.0, math.pi - 1e-8, math.nextafter(math.pi, 0)):
+        for n in (1, 3, 12):
+            add("joins", f"D, T = edge_derivatives({n}, {a!r}, 'u'); r = (D * {a!r}, T * {a!r})", "ok",
+                "finite(r[0]) and finite(r[1])")
+            add("joins", f"net = np.random.default_rng({n}).normal(size=(delta({n}), 3)); "
+                f"o = join_neighbour(net, {n}, {a!r}, 'w', lam=2.0, mu=-0.5); "
+                f"r = join_error(net, o, {n}, {a!r}, 'w')", "ok",
+                "r['C0'] == 0 and abs(r['lam'] - 2) < 1e-6 and abs(r['mu'] + 0.5) < 1e-6")
+    add("joins", "r = join_error(np.ones((19, 3)), np.ones((19, 3)), 2, RationalAngle(fmpq(1, 3)), 'u')", "ok",
+        "r['C0'] == 0 and r['C1'] == 0 and r['G1'] == 0")
+    add("joins", "r = c1_neighbour_row(np.ones((19, 3)), 2, '2*pi/3', 'v', arith='mp', dps=30)", "ok",
+        "abs(np.asarray(r, dtype=float) - 1).max() < 1e-25")
     if with_cli:
         py = sys.executable
         for sched in ("tcp://127.0.0.1:1", "tcp://no-such-host.invalid:8786", "tls://127.0.0.1:1"):

@@ -36,7 +36,7 @@ assert gap < 1e-12
 
 # %%
 # The corner and the middle sub-patch share the edge u = 0 and join C1:
-err = pr.edge_join_error(parts.u, parts.middle, 2, alpha / 2, "u")
+err = pr.join_error(parts.u, parts.middle, 2, alpha / 2, "u")
 print({k: f"{v:.1e}" for k, v in err.items()})
 assert err["C0"] < 1e-12 and err["C1"] < 1e-9
 

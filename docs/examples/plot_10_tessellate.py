@@ -33,12 +33,12 @@ assert gap < 1e-12
 
 # %%
 # Join: the lower and the upper triangle of the square share the diagonal, the edge
-# w = 0 of both, and join C1.  The C1 builder gives back the upper piece's second row
-# from the lower piece and the shared boundary.
-err = pr.edge_join_error(net, upper.net, 2, alpha, "w")
-print({k: f"{v:.1e}" for k, v in err.items()})
+# w = 0 of both, and join C1.  The C1 builder gives back the upper piece's net (its
+# boundary row and second row) from the lower piece.
+err = pr.join_error(net, upper.net, 2, alpha, "w")
+print({k: f"{float(v):.1e}" for k, v in err.items()})
 assert err["C0"] < 1e-12 and err["C1"] < 1e-9
-rebuilt = pr.c1_second_row(net, 2, alpha, "w", upper.net)
+rebuilt = pr.join_neighbour(net, 2, alpha, "w", upper.net)
 off = abs(rebuilt - upper.net).max()
 print(f"rebuilt neighbour against the upper piece: {off:.1e}")
 assert off < 1e-9

@@ -55,15 +55,16 @@ OPEN_QUESTIONS = [
      "giving the recurrence of the coefficients and their inherited symmetry and positivity "
      "(docs/elevation_and_derivative_for_all_n.md, hand proofs). Still open: whether E factors into corner-cutting "
      "steps; the observed 9n − 2 non-zeros per row of E (n ≤ 15)."),
-    ("Beyond the paper (issue 38): midpoint subdivision and joins", ["subdivision_all_n"],
+    ("Beyond the paper (issue 38): midpoint subdivision and joins", ["subdivision_all_n", "joins_all_n"],
      "Proven for every n and α: the restriction to each midpoint sub-triangle is an order-n patch with parameter α/2, "
      "net S_k P (docs/subdivision_for_all_n.md, a hand proof, not yet refereed cold); n = 1, 2: S_k in closed form "
      "for every α, with negative entries (not corner cutting); C0/C1/G1 joins with the point-reflected neighbour as "
-     "linear conditions. Evidence only: a negative corner entry for every n (closed form fitted for n ≤ 5, checked "
+     "linear conditions for every n, the edge coefficients in closed form (docs/joins_for_all_n.md); the "
+     "torus and the cyclide pieces of Section 6 join C1 (exactly, at sampled rational α; the cyclide through its "
+     "homogeneous nets). Evidence only: a negative corner entry for every n (closed form fitted for n ≤ 5, checked "
      "to n = 8). Adaptive tessellation within a tolerance, its bound proven (docs/tessellation.md). Measured only: "
      "the rates at which sub-nets approach the patch (h² at the boundary, h inside at the layout positions). Still "
-     "open: signs for n ≥ 3 as a proof, the de Casteljau question, proofs of the convergence rates, a fast direct "
-     "rule for S_k."),
+     "open: signs for n ≥ 3 as a proof, the de Casteljau question, proofs of the convergence rates."),
 ]
 
 _MATH_TOKEN = re.compile(r"\$([^$]+)\$|"

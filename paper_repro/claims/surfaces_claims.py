@@ -9,7 +9,7 @@ from scipy.spatial import Delaunay
 
 from paper_repro.core.domain import RationalPoints, rational_alpha, sample_points
 from paper_repro.core.labels import delta, index_of, united_system
-from paper_repro.surfaces.models import cyclide_parts, cyclide_pieces, join_error, torus_pieces
+from paper_repro.surfaces.models import cyclide_parts, cyclide_pieces, model_gap, torus_pieces
 from paper_repro.surfaces.patch import Patch, merge_meshes
 from paper_repro.util.measured import MESH_DECIMALS, bound, sig
 from paper_repro.util.registry import ALPHA_RANGES, Outcome, claim
@@ -61,7 +61,7 @@ def run_dupin(points, mesh_resolution) -> Outcome:
                                 "patches": nets},
             "meshes/dupin_cyclide.obj": _mesh_data(pieces, mesh_resolution),
             "meshes/dupin_cyclide.ply": _mesh_data(pieces, mesh_resolution)}
-    gap_all, gap_16 = join_error(pieces, al), join_error(lower, al)
+    gap_all, gap_16 = model_gap(pieces, al), model_gap(lower, al)
     ok = weights.min() >= 0 and dev < 1e-12 and gap_all < 1e-12
     return Outcome(ok, {"patches": len(pieces), "patches_paper_16": len(lower),
                         "min_weight": sig(float(weights.min()), 6),
@@ -194,7 +194,7 @@ def run_properties(ns, alphas, nets, points, seed, tangent_ts) -> Outcome:
     mu = 3.0
     rho = (1 + 5**0.5) / 2 * mu
     tor = torus_pieces(al, rho, mu, [0.0, al], [0.0, al, 2 * al])
-    res["torus_join_gap"] = join_error(tor, al)
+    res["torus_join_gap"] = model_gap(tor, al)
     data = {"meshes/torus.obj": _mesh_data(tor, 10), "meshes/torus.ply": _mesh_data(tor, 10)}
     tol = 1e-9  # float64 evaluation of O(1) nets (rounding level ~1e-15)
     ok = (res["affine"] < tol and res["convex_hull_outside"] == 0 and res["corners"] < tol and res["boundary"] < tol

@@ -146,7 +146,7 @@ def cyclide_pieces(alpha: float, params: dict, phis, psis, dps: int = 30) -> lis
     >>> pieces = cyclide_pieces(np.pi / 2, {"a": 6, "b": 32 ** 0.5, "c": 2, "mu": 3}, [0.0], [0.0])
     >>> pieces[0].patch, bool(pieces[0].patch.weights.min() > 0)
     (<rational Patch n=2 alpha=1.5708 dim=3>, True)
-    >>> join_error(pieces, np.pi / 2) < 1e-12                # the two triangles meet on the diagonal
+    >>> model_gap(pieces, np.pi / 2) < 1e-12                # the two triangles meet on the diagonal
     True
     """
     phis, psis = _check_model(alpha, phis, psis, dps)
@@ -176,7 +176,7 @@ def cyclide_pieces(alpha: float, params: dict, phis, psis, dps: int = 30) -> lis
     return out
 
 
-def join_error(pieces: list[Piece], alpha: float, samples: int = 9) -> float:
+def model_gap(pieces: list[Piece], alpha: float, samples: int = 9) -> float:
     """Largest distance between pieces at ``samples`` shared points per edge of their triangles (their C0 joins).
 
     ``ValueError`` if nothing is measured (no pieces, ``samples`` below 2, or no point shared by two pieces):

@@ -116,6 +116,7 @@ CLAIM_MODULES = (
     "paper_repro.claims.limits_claims",
     "paper_repro.claims.order_elevation",
     "paper_repro.claims.subdivision",
+    "paper_repro.claims.joins",
     "paper_repro.claims.half_angle_all_n",
     "paper_repro.claims.torus",
     "paper_repro.claims.surfaces_claims",
@@ -130,6 +131,7 @@ FIGURE_MODULES = (
     "paper_repro.figures.patches_fig",
     "paper_repro.figures.accuracy",
     "paper_repro.figures.subdivision_fig",
+    "paper_repro.figures.joins_fig",
 )
 
 

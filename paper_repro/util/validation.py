@@ -79,9 +79,9 @@ def _nearest_float(num: str, den: str, times_pi: bool) -> float | None:
     >>> _nearest_float("1", "3", True), _nearest_float("1.1", "3", False)
     (1.0471975511965979, 0.36666666666666664)
     """
-    import mpmath
-
     from decimal import Decimal, localcontext
+
+    import mpmath
 
     ctx = mpmath.MPContext()  # a private context: the caller's mpmath.mp.dps is left alone
     ctx.dps = 60
