@@ -162,7 +162,11 @@ def certificate(n: int, t8: fmpq, variant: str, den: int = 10**6) -> tuple[Certi
 # --- the strongest variant: order-1 weights of any sign, non-negative at the points of a grid -------------------------
 def grid_points(alpha: RationalAngle, size: int) -> RationalPoints:
     """Rational points of Omega^alpha: tan(u/4) = T i/size, tan(v/4) = T j/size (T = tan(alpha/4)), those with
-    w >= 0 (tan((u + v)/4) <= T)."""
+    w >= 0 (tan((u + v)/4) <= T).
+
+    >>> len(grid_points(alpha_from_eighth(fmpq(1, 5)), 8).tu)
+    38
+    """
     t = alpha.t
     tu, tv = [], []
     for i in range(size + 1):
