@@ -146,3 +146,22 @@ def test_grid_certificate_n2():
     kp, lag, _ = dc._lagrange_parts(2, fmpq(1, 5), 8)
     ent = dc.grid_dual_entries(kp, lag, cert.y, cert.u)
     assert min(ent[r, c] + cert.z[r] for r in range(ent.nrows()) for c in range(ent.ncols())) >= 0
+
+
+def test_theorem_g_for_the_corners_v_and_w():
+    """Theorem G for S_v (members with cos(v/2)) and S_w (cos(w/2)): the G columns moved by the cyclic relabelling
+    u -> v -> w -> u (compose with (1, 2, 0), resp. (2, 0, 1)), every row, n = 3 at one alpha."""
+    from paper_repro.core.labels import compose, exponent_matrix
+    from paper_repro.core.subdivision import subdivision_matrices
+
+    n = 3
+    alpha, half = alphas_from_eighth(fmpq(1, 3))
+    mats = subdivision_matrices(n, alpha, "exact")
+    exps = [tuple(int(x) for x in r) for r in exponent_matrix(n)]
+    rows = {e: k for k, e in enumerate(exps)}
+    cols = ss.explicit_g_columns_at(n, alpha, half)
+    for s, shift in ((mats[1], (1, 2, 0)), (mats[2], (2, 0, 1))):
+        for key, col in ss.g_index(n).items():
+            moved = rows[compose(exps[col], shift)]
+            want = {rows[compose(exps[r], shift)]: v for r, v in cols[key].items()}
+            assert [s[r, moved] for r in range(s.shape[0])] == [want.get(r, fmpq(0)) for r in range(s.shape[0])]
