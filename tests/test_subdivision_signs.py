@@ -135,6 +135,9 @@ def test_lp_certificate_n2():
     for variant in ("cone", "points"):
         cert2, opt2, _ = dc.certificate(2, t8, variant)
         assert cert2 is None and abs(opt2) < 1e-9
+    assert dc.equalities_consistent(k)  # so the certificate is about the signs
+    k_bad = fmpq_mat(k.nrows(), k.ncols(), [x * 2 for x in k.entries()])
+    assert not dc.equalities_consistent(k_bad)
 
 
 @pytest.mark.slow

@@ -88,6 +88,15 @@ def weight_matrix(n: int, t8: fmpq, variant: str) -> fmpq_mat:
     return k
 
 
+def equalities_consistent(k: fmpq_mat) -> bool:
+    """Whether (3) without sign conditions has a solution, proven exactly: K has full row rank delta_n and K 1 = 1
+    (then with a right inverse R of K, W_f = R e_f + (1 - R 1)/delta_n solves (3): K W_f = e_f + (K 1 - K R 1)/delta_n
+    = e_f and sum_f W_f = R 1 + 1 - R 1 = 1).  K 1 = 1 is the partition of unity of the order-1 and order-n
+    systems.  So an infeasibility certificate of a variant is due to its sign conditions, not to the identity."""
+    ones = all(sum((k[i, j] for j in range(k.ncols())), fmpq(0)) == 1 for i in range(k.nrows()))
+    return ones and k.rank() == k.nrows()
+
+
 @dataclass(frozen=True)
 class Certificate:
     """An exact Farkas certificate: ``y`` (delta_n x delta_n) and ``z`` (7 delta_{n-1}), with the value
@@ -258,5 +267,6 @@ def grid_certificate(n: int, t8: fmpq, size: int, den: int = 10**7) -> tuple[Gri
     return (GridCertificate(y, u, z, value, low, npts) if ok else None), float(res.fun)
 
 
-__all__ = ["VARIANTS", "alpha_from_eighth", "seven_points", "weight_matrix", "Certificate", "verify", "float_lp",
+__all__ = ["VARIANTS", "alpha_from_eighth", "seven_points", "weight_matrix", "equalities_consistent", "Certificate",
+           "verify", "float_lp",
            "certificate", "grid_points", "GridCertificate", "grid_dual_entries", "grid_certificate"]
