@@ -3,9 +3,10 @@
 For each n given, the exact entry S_u[G_{2n,2n-1,1}, G_{2n,2n-1,0}] of the corner matrix (the sub-net's level-1
 point next to the midline, weighted by the parent's point on the opposite edge) is computed at 22 rational-tangent
 alpha and interpolated as a rational function of c = cos(alpha/2) of the smallest degree that reproduces every
-remaining alpha; it is printed beside the conjectured closed form c (c - 1) / (2^{n+1} (1 + c)^n ((n - 1) c + n))
+remaining alpha; it is printed beside the closed form c (c - 1) / (2^{n+1} (1 + c)^n ((n - 1) c + n))
 (:func:`paper_repro.claims.subdivision.corner_entry`, negative for every alpha in (0, pi)) and compared exactly at
-all 22 alpha.  Evidence, not a proof: that the entry is a rational function of c of that degree is observed.
+all 22 alpha.  This is how the closed form was found (evidence); it is now proven for every n and alpha by hand
+(Corollary W of docs/subdivision_for_all_n.md, section 9).
 
 Run: ``python tools/subdivision_signs.py 2 3 4`` (n = 5 takes about a minute).
 """

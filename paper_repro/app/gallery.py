@@ -61,10 +61,10 @@ OPEN_QUESTIONS = [
      "for every α, with negative entries (not corner cutting); C0/C1/G1 joins with the point-reflected neighbour as "
      "linear conditions for every n, the edge coefficients in closed form (docs/joins_for_all_n.md); the "
      "torus and the cyclide pieces of Section 6 join C1 (exactly, at sampled rational α; the cyclide through its "
-     "homogeneous nets). Evidence only: a negative corner entry for every n (closed form fitted for n ≤ 5, checked "
-     "to n = 8). Adaptive tessellation within a tolerance, its bound proven (docs/tessellation.md). Measured only: "
+     "homogeneous nets). Proven for every n: a negative corner entry (Corollary W), so midpoint subdivision is "
+     "not corner cutting; no Bézier-type de Casteljau step at the sampled α (exact certificates, n ≤ 4). Adaptive tessellation within a tolerance, its bound proven (docs/tessellation.md). Measured only: "
      "the rates at which sub-nets approach the patch (h² at the boundary, h inside at the layout positions). Still "
-     "open: signs for n ≥ 3 as a proof, the de Casteljau question, proofs of the convergence rates."),
+     "open: the remaining signs for n ≥ 3, the de Casteljau question at other α, proofs of the convergence rates."),
 ]
 
 _MATH_TOKEN = re.compile(r"\$([^$]+)\$|"
