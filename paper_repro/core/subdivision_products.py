@@ -20,6 +20,9 @@ The route, for every n (proof: docs/subdivision_for_all_n.md, section 9):
    :func:`product_terms_fast`).  So R_n^k[:, f] = sum_h R_1^k[h, h(f)] P_h R_{n-1}^k[:, f'(f)], level by level.
 3. *Normalization.*  ``S_k[g, f] = R_n^k[g, f] x_f / x'_g``.
 
+Float results are the same bits on every CPU: kappa', sigma' from flint ``arb``, fixed-order sums (no BLAS:
+scipy's sparse products sum each row in the order of its entries).
+
 No step subtracts except inside the 7 x 7 matrix R_1 and the signed sums of the level recursion (R_1 has negative
 entries), so float64 keeps about 15 digits for every n and alpha measured (reports/subdivision_accuracy.md); the
 entrywise running-error bound of :func:`subdivision_matrices_float` (``bound=True``) is computed from the same
@@ -50,6 +53,7 @@ from paper_repro.core.half_angle_rules import (
     order_one_parts,
 )
 from paper_repro.core.labels import delta_unchecked, exponent_matrix
+from paper_repro.core.ordered import ordered_matmul
 
 #: The four sub-triangles (as :data:`paper_repro.core.subdivision.PARTS`).
 PARTS = ("u", "v", "w", "middle")
@@ -183,15 +187,13 @@ def _cotangent_dense(var: int, kp: float, sg: float) -> np.ndarray:
 def _binomial_factor(s: int, c: int, sin_image: tuple[float, float], cos_image: tuple[float, float]) -> np.ndarray:
     """Coefficients of C^t (t = 0..s + c) in ``(p S + q C)^s (r S + w C)^c`` with ``sin_image = (p, q)``,
     ``cos_image = (r, w)`` (then S^(s+c-t) C^t is L^t of S^(s+c))."""
-    out = np.array([1.0])
-    for _ in range(s):
-        out = np.convolve(out, [sin_image[0], sin_image[1]])
-    for _ in range(c):
-        out = np.convolve(out, [cos_image[0], cos_image[1]])
-    return out
+    out = [1.0]
+    for lo, hi in [sin_image] * s + [cos_image] * c:  # multiply by (lo + hi C), in a fixed order (no BLAS)
+        out = [lo * out[0]] + [lo * out[t] + hi * out[t - 1] for t in range(1, len(out))] + [hi * out[-1]]
+    return np.array(out)
 
 
-def order_one_restriction(part: str, kp: float, sg: float) -> np.ndarray:
+def order_one_restriction(part: str, kp: float, sg: float, *, absolute: bool = False) -> np.ndarray:
     """R_1 (7 x 7): ``m_h o x_part = sum_g R_1[g, h] m'_g`` for the scaled members of T_2 at alpha (left) and
     alpha/2 (right), ``kp, sg = cos(alpha/4), sin^2(alpha/4)``.  With s = sin(alpha/2) = 2 s' kappa':
 
@@ -201,6 +203,8 @@ def order_one_restriction(part: str, kp: float, sg: float) -> np.ndarray:
 
     and each monomial S'^(e - t) C'^t (times the rest) is L^t of the member with S'^e (the cotangent rules;
     a function divisible by S'_x has no member without S'_x in its expansion, so L applies term by term).
+    ``absolute``: the same computation with the images' coefficients replaced by their absolute values (every
+    other quantity is already non-negative), the majorant of the running-error bound.
     """
     e = exponent_matrix(1)
     index = {tuple(int(v) for v in row): k for k, row in enumerate(e)}
@@ -210,6 +214,8 @@ def order_one_restriction(part: str, kp: float, sg: float) -> np.ndarray:
         sin_image, cos_image = (-kp, 1.0), (sg, kp)
     else:
         sin_image, cos_image = (kp, 1.0), (-sg, kp)
+    if absolute:
+        sin_image, cos_image = (abs(sin_image[0]), 1.0), (abs(cos_image[0]), kp)
     out = np.zeros((7, 7))
     for h in range(7):
         base = e[h].copy()
@@ -222,7 +228,7 @@ def order_one_restriction(part: str, kp: float, sg: float) -> np.ndarray:
             poly = _binomial_factor(int(e[h, 2 * v]), int(e[h, 2 * v + 1]), sin_image, cos_image)
             acc = poly[-1] * vec  # Horner in L_v
             for t in range(len(poly) - 2, -1, -1):
-                acc = lops[v] @ acc + poly[t] * vec
+                acc = ordered_matmul(lops[v], acc[:, None])[:, 0] + poly[t] * vec
             vec = acc
         out[:, h] = vec * (2.0 * kp) ** -float(e[h, 0] + e[h, 2] + e[h, 4])
     return out
@@ -240,9 +246,7 @@ def restriction_matrices(n: int, alpha: float, *, absolute: bool = False) -> tup
     ``absolute``: the same recursion with every quantity replaced by its absolute value (the majorant of the
     running-error bound).  ``n >= 1`` and ``alpha`` in [ALPHA_TINY, pi) checked by the caller."""
     kp, sg = _float_half_angle(alpha / 2)
-    r1 = [order_one_restriction(p, kp, sg) for p in PARTS]
-    if absolute:
-        r1 = [abs(r) for r in r1]
+    r1 = [order_one_restriction(p, kp, sg, absolute=absolute) for p in PARTS]
     rs = [r.copy() for r in r1]
     for k in range(2, n + 1):
         fp, hh = factorization(k)
@@ -283,11 +287,17 @@ def subdivision_matrices_float(n: int, alpha: float, *, bound: bool = False):
 
 
 def rounding_count(n: int) -> int:
-    """K of the running-error bound: the roundings along any path of the recursion (docs/subdivision_for_all_n.md,
-    section 9): 2 + 12 for the 7 x 7 matrix R_1 (its Horner sums), then per level the evaluation of a product entry
-    (powers of kappa', sigma' up to the form's degree, one multiplication by the integer, the sum of the entry's
-    monomials), the sparse row sum, the weight, the sum over the seven h; 2 for the normalization."""
-    k_total = 14
+    """K of the running-error bound: an upper bound of the roundings along any path of the recursion
+    (docs/subdivision_for_all_n.md, section 9).  Order one: per variable at most 2 binomial products and 2 Horner
+    steps of (a 7-term sum, a product, a sum), times three variables, and the prefactor (2 kappa')^-3: 64.  Per level
+    k: the evaluation of a product entry (the powers of kappa', sigma' up to the form's degree, the integer factor,
+    the sum of the entry's monomials), the sparse row sum (its length), the weight, the sum over the seven h.  Then
+    2 for the normalization x_f / x'_g.
+
+    >>> rounding_count(1), rounding_count(2) > rounding_count(1)
+    (66, True)
+    """
+    k_total = 64
     for k in range(2, n + 1):
         worst = 0
         for h in range(7):
