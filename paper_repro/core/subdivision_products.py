@@ -42,17 +42,17 @@ import numpy as np
 import scipy.sparse as sp
 
 from paper_repro.core.context import FloatContext
-from paper_repro.core.half_angle_matrices import _float_half_angle, evaluate_terms, scaled_coefficients
+from paper_repro.core.half_angle_matrices import _float_half_angle, scaled_coefficients
 from paper_repro.core.half_angle_rules import (
-    _cotangent_csc,
     _gather,
     _member_parts,
     _member_table,
+    _rule_a_pattern,
     cotangent,
     merge,
     order_one_parts,
 )
-from paper_repro.core.labels import delta_unchecked, exponent_matrix
+from paper_repro.core.labels import delta_unchecked, exponent_matrix, variable_swap
 from paper_repro.core.ordered import ordered_matmul
 
 #: The four sub-triangles (as :data:`paper_repro.core.subdivision.PARTS`).
@@ -63,6 +63,82 @@ PARTS = ("u", "v", "w", "middle")
 #: rounding.  (The same threshold as :data:`paper_repro.core.half_angle_matrices.ALPHA_TINY`.)
 ALPHA_TINY = 1e-100
 _F = FloatContext()
+
+
+# --- the cotangent rules, vectorised over the members -----------------------------------------------------------
+@cache
+def cotangent_csc_fast(n: int, var: int) -> tuple[np.ndarray, ...]:
+    """``L_var`` on every member of T_{2n} as compressed columns ``(indptr, target, a, b, coef)``: the terms of
+    :func:`~paper_repro.core.half_angle_rules.cotangent` (rules (A), (A_n), (B) and the cosine variable of
+    docs/elevation_and_derivative_for_all_n.md), built for all members at once (one group per (ring, level) of
+    rule (A)) instead of one call per member; within a column the terms may come in another order (tested equal
+    as sets to ``_cotangent_csc``).  Empty columns for the members without a factor S_var.
+
+    >>> from paper_repro.core.half_angle_rules import _cotangent_csc
+    >>> fast, slow = cotangent_csc_fast(3, 1), _cotangent_csc(3, 1)
+    >>> bool(np.array_equal(fast[0], slow[0]))
+    True
+    """
+    table = _member_table(n)
+    parts = _member_parts(n)
+    e = exponent_matrix(n)
+    g = np.flatnonzero(e[:, 2 * var] > 0)
+    x, m, y, j = (parts[g, k] for k in range(4))
+    z = 3 - x - y
+    direct: list[tuple[np.ndarray, ...]] = []  # (col, target, a, b)
+    calls: list[tuple[np.ndarray, ...]] = []  # rule (A) calls (col, X, m, Y, j, a shift)
+
+    def add_direct(sel, target, a, b):
+        direct.append((g[sel], target, np.full(int(sel.sum()), a), np.full(int(sel.sum()), b)))
+
+    cosv = e[g, 2 * var + 1] > 0
+    add_direct(cosv, table[x[cosv], y[cosv], m[cosv], j[cosv] - 1], 0, 0)
+    rest = ~cosv
+    # rule (A_n): level n, X := var, Y := y (or x if var is y), Z the third
+    an = rest & (m == n)
+    ax = np.full_like(x, var)
+    ay = np.where(y != var, y, x)
+    az = 3 - ax - ay
+    sel = an & (j == n)
+    add_direct(sel, table[ay[sel], ax[sel], n, n - 1], 0, 0)
+    sel = an & (j < n)
+    add_direct(sel, table[ax[sel], ay[sel], n, j[sel] + 1], 0, 1)
+    add_direct(sel, table[az[sel], ay[sel], n - 1, j[sel]], 0, 1)
+    calls.append((g[sel], az[sel], np.full(int(sel.sum()), n - 1), ay[sel], j[sel], np.ones(int(sel.sum()), int)))
+    # rule (A): var is the part X, m < n
+    sel = rest & (m < n) & (var == x)
+    calls.append((g[sel], x[sel], m[sel], y[sel], j[sel], np.zeros(int(sel.sum()), int)))
+    # rule (B): var is Z (or Y with j = m, Y and Z exchanged), 1 <= m < n
+    sel = rest & (m < n) & (var != x)
+    bx, bm, bj = x[sel], m[sel], j[sel]
+    by = np.where(var == z[sel], y[sel], z[sel])
+    bz = 3 - bx - by
+    eq = bj == bm
+    direct.append((g[sel][eq], table[bx[eq], bz[eq], bm[eq], bm[eq] - 1], np.zeros(int(eq.sum()), int),
+                   np.zeros(int(eq.sum()), int)))
+    ne = ~eq
+    for target in (table[bx[ne], by[ne], bm[ne], bj[ne] + 1], table[bx[ne], by[ne], bm[ne] - 1, bj[ne]]):
+        direct.append((g[sel][ne], target, np.zeros(int(ne.sum()), int), np.ones(int(ne.sum()), int)))
+    calls.append((g[sel][ne], bx[ne], bm[ne] - 1, by[ne], bj[ne], np.ones(int(ne.sum()), int)))
+    # the rule (A) calls, grouped by (m, j): pattern (a, b, part, m', l), target M_X(m'; Y or Z, l)
+    col, cx, cm, cy, cj, shift = (np.concatenate([c[k] for c in calls]) for k in range(6))
+    out = [tuple(d) for d in direct]
+    for mm, jj in sorted(set(zip(cm.tolist(), cj.tolist()))):
+        sel = (cm == mm) & (cj == jj)
+        pa, pb, part, pm, pl = _rule_a_pattern(mm, jj)
+        ys = np.stack([cy[sel], 3 - cx[sel] - cy[sel]])  # (2, calls)
+        target = table[cx[sel][:, None], ys[part].T, pm[None, :], pl[None, :]]
+        k = len(pa)
+        out.append((np.repeat(col[sel], k), target.reshape(-1), (pa[None, :] + shift[sel][:, None]).reshape(-1),
+                    np.tile(pb, int(sel.sum()))))
+    cols, targets, a, b = (np.concatenate([o[k] for o in out]) for k in range(4))
+    order = np.argsort(cols, kind="stable")
+    indptr = np.zeros(delta_unchecked(n) + 1, dtype=np.int64)
+    np.add.at(indptr, cols + 1, 1)
+    res = (np.cumsum(indptr), targets[order], a[order], b[order], np.ones(len(order), dtype=np.int64))
+    for arr in res:
+        arr.setflags(write=False)
+    return res
 
 
 # --- step 2: the products with the members of T_2, vectorised ------------------------------------------------------
@@ -78,7 +154,7 @@ def _apply_cotangent_terms(big: int, var: np.ndarray, terms: tuple[np.ndarray, .
             sel = var == v
             if not sel.any():
                 continue
-            pos, t, aa, bb, cc = _gather(_cotangent_csc(big, v), target[sel])
+            pos, t, aa, bb, cc = _gather(cotangent_csc_fast(big, v), target[sel])
             idx = np.flatnonzero(sel)[pos]
             parts_out.append((col[idx], t, a[idx] + aa, b[idx] + bb, coef[idx] * cc, var[idx], steps[idx] - 1))
         col, target, a, b, coef, var, steps = (np.concatenate([p[k] for p in parts_out]) for k in range(7))
@@ -149,27 +225,28 @@ def _merged(terms: tuple[np.ndarray, ...]) -> tuple[np.ndarray, ...]:
 @cache
 def factorization(n: int) -> tuple[np.ndarray, np.ndarray]:
     """``(f', h)`` for every member f of T_{2n}, n >= 2: the scaled member m_f is the product of the member f' of
-    T_{2n-2} and the member h of T_2 (exponent vectors add: ``M_X(m; Y, j)`` is ``M_X(m - 1; Y, j - 1)`` times the
-    centre ``S_X S_Y S_Z`` if j >= 1, ``M_X(m - 1; Y, j)`` times the edge ``S_X C_Y S_Z`` if j < m, and
-    ``S_X^(2n - 2) S_X^2`` at m = 0; the first match in the order of T_2 is taken).
+    T_{2n-2} and the member h of T_2 (exponent vectors add).  With the parts ``M_X(m; Y, j)`` of m_f: the centre
+    ``S_X S_Y S_Z`` times ``M_X(m - 1; Y, j - 1)`` if j >= 1; the edge ``S_X C_Y S_Z`` times ``M_X(m - 1; Y, j)`` if
+    j = 0 < m; the corner ``S_X^2`` times ``M_X(0; Y, 0) = S_X^(2n - 2)`` if m = 0.
 
     >>> fp, h = factorization(2)
     >>> bool((exponent_matrix(2) == exponent_matrix(1)[fp] + exponent_matrix(1)[h]).all())
     True
     """
-    e, e1, ep = exponent_matrix(n), exponent_matrix(1), exponent_matrix(n - 1)
-    index = {tuple(int(v) for v in row): k for k, row in enumerate(ep)}
-    fp, hh = [], []
-    for row in e:
-        for h in range(len(e1)):
-            rest = tuple(int(v) for v in row - e1[h])
-            if min(rest) >= 0 and rest in index:
-                fp.append(index[rest])
-                hh.append(h)
-                break
-        else:  # pragma: no cover - every member factors (docstring)
-            raise AssertionError(f"member {row.tolist()} of order {n} does not factor")
-    return np.array(fp), np.array(hh)
+    x, m, y, j = (_member_parts(n)[:, k] for k in range(4))
+    small = _member_table(n - 1)
+    kinds = order_one_parts()
+    centre = kinds.index(("centre", -1))
+    edge = np.array([kinds.index(("edge", v)) for v in range(3)])
+    corner = np.array([kinds.index(("corner", v)) for v in range(3)])
+    fp = np.where(j >= 1, small[x, y, np.maximum(m - 1, 0), np.maximum(j - 1, 0)],
+                  np.where(m >= 1, small[x, y, np.maximum(m - 1, 0), 0], small[x, y, 0, 0]))
+    h = np.where(j >= 1, centre, np.where(m >= 1, edge[y], corner[x]))
+    if not (exponent_matrix(n) == exponent_matrix(n - 1)[fp] + exponent_matrix(1)[h]).all():  # pragma: no cover
+        raise AssertionError(f"the factorization of T_{2 * n} failed")
+    fp.setflags(write=False)
+    h.setflags(write=False)
+    return fp, h
 
 
 # --- step 1: order one by substitution and the cotangent rules ------------------------------------------------------
@@ -235,32 +312,94 @@ def order_one_restriction(part: str, kp: float, sg: float, *, absolute: bool = F
 
 
 # --- the recursion --------------------------------------------------------------------------------------------------
-def _product_csr(k: int, h: int, kp: float, sg: float, absolute: bool = False) -> sp.csr_matrix:
-    rows, cols, vals = evaluate_terms(product_terms_fast(k, h), kp, sg, _F)
-    return sp.csr_matrix((np.abs(vals) if absolute else vals, (rows, cols)),
-                         shape=(delta_unchecked(k + 1), delta_unchecked(k)))
+@cache
+def _level_terms(k: int) -> tuple[np.ndarray, ...]:
+    """The seven product forms of order k - 1 (:func:`product_terms_fast`) concatenated: ``(rows, cols, a, b, coef,
+    h)``, sorted by (rows, cols) (stable), with the start of each (row, col) run."""
+    forms = [product_terms_fast(k - 1, h) for h in range(7)]
+    cat = [np.concatenate([f[i] for f in forms]) for i in range(5)]
+    hidx = np.concatenate([np.full(len(f[0]), h) for h, f in enumerate(forms)])
+    order = np.lexsort((cat[1], cat[0]))  # by row, then column; stable within (h, the form's order)
+    out = tuple(arr[order] for arr in cat) + (hidx[order],)
+    for arr in out:
+        arr.setflags(write=False)
+    return out
+
+
+@cache
+def _pattern(k: int, used: tuple[int, ...]) -> tuple[np.ndarray, ...]:
+    """For the members h in ``used``: the positions of their terms in :func:`_level_terms`, the start of each
+    (row, col) run among them, and the CSR ``indptr``, ``indices`` of the distinct (row, col)."""
+    rows, cols, _, _, _, hidx = _level_terms(k)
+    keep = np.zeros(7, dtype=bool)
+    keep[list(used)] = True
+    pos = np.flatnonzero(keep[hidx])
+    r, c = rows[pos], cols[pos]
+    starts = np.flatnonzero(np.r_[True, (r[1:] != r[:-1]) | (c[1:] != c[:-1])])
+    indptr = np.searchsorted(r[starts], np.arange(delta_unchecked(k) + 1))
+    out = (pos, starts, indptr, c[starts].copy())
+    for arr in out:
+        arr.setflags(write=False)
+    return out
+
+
+def _level_values(k: int, kp: float, sg: float, absolute: bool) -> np.ndarray:
+    """The value of every term of :func:`_level_terms` at (kappa', sigma'): coef kappa'^a sigma'^b (coef >= 0)."""
+    _, _, a, b, coef, _ = _level_terms(k)
+    kpow = kp ** np.arange(int(a.max()) + 1)
+    spow = sg ** np.arange(int(b.max()) + 1)
+    vals = coef.astype(np.float64) * kpow[a] * spow[b]
+    return np.abs(vals) if absolute else vals
+
+
+def _combined(k: int, weights: np.ndarray, vals: np.ndarray) -> sp.csr_matrix:
+    """Q = sum_h weights[h] P_h (order k - 1 -> k) as CSR, each entry summed in a fixed order."""
+    used = tuple(int(h) for h in np.flatnonzero(weights))
+    pos, starts, indptr, indices = _pattern(k, used)
+    hidx = _level_terms(k)[5]
+    data = np.add.reduceat(vals[pos] * weights[hidx[pos]], starts) if len(pos) else np.zeros(0)
+    return sp.csr_matrix((data, indices, indptr), shape=(delta_unchecked(k), delta_unchecked(k - 1)))
 
 
 def restriction_matrices(n: int, alpha: float, *, absolute: bool = False) -> tuple[np.ndarray, ...]:
     """The four R_n^k (scaled members at alpha -> scaled members at alpha/2), in the order of :data:`PARTS`;
     ``absolute``: the same recursion with every quantity replaced by its absolute value (the majorant of the
-    running-error bound).  ``n >= 1`` and ``alpha`` in [ALPHA_TINY, pi) checked by the caller."""
+    running-error bound).  ``n >= 1`` and ``alpha`` in [ALPHA_TINY, pi) checked by the caller.
+
+    Corners 'v' and 'w' are corner 'u' with the variables exchanged (T_{2n} is invariant under the permutations of
+    (u, v, w), :func:`~paper_repro.core.labels.variable_swap`): ``R^v = Pi R^u Pi`` for the swap of u and v."""
     kp, sg = _float_half_angle(alpha / 2)
-    r1 = [order_one_restriction(p, kp, sg, absolute=absolute) for p in PARTS]
+    r1 = [order_one_restriction(p, kp, sg, absolute=absolute) for p in ("u", "middle")]
     rs = [r.copy() for r in r1]
     for k in range(2, n + 1):
         fp, hh = factorization(k)
+        vals = _level_values(k, kp, sg, absolute)
         d = delta_unchecked(k)
-        base = np.hstack([r[:, fp] for r in rs])  # (delta_{k-1}, 4 delta_k): the four parts side by side
-        weights = np.hstack([r[:, hh] for r in r1])  # (7, 4 delta_k)
-        out = np.zeros((d, 4 * d))
-        for h in range(7):
-            w = weights[h]
-            if not w.any():
-                continue
-            out += (_product_csr(k - 1, h, kp, sg, absolute) @ base) * w
-        rs = [out[:, i * d:(i + 1) * d] for i in range(4)]
-    return tuple(rs)
+        new = []
+        for r, w in zip(rs, r1):
+            out = np.empty((d, d))
+            for g in range(7):
+                cols = _columns(k, g)
+                if len(cols):
+                    out[:, cols] = _combined(k, w[:, g], vals) @ r[:, fp[cols]]
+            new.append(out)
+        rs = new
+    ru, rm = rs
+    return (ru, _swapped(ru, n, 1), _swapped(ru, n, 2), rm)
+
+
+@cache
+def _columns(k: int, g: int) -> np.ndarray:
+    """The members of T_{2k} whose factor in T_2 (:func:`factorization`) is g."""
+    out = np.flatnonzero(factorization(k)[1] == g)
+    out.setflags(write=False)
+    return out
+
+
+def _swapped(r: np.ndarray, n: int, var: int) -> np.ndarray:
+    """Corner ``var`` from corner u: exchange u and var in rows and columns (:func:`variable_swap`)."""
+    pi = variable_swap(n, 0, var)
+    return r[np.ix_(pi, pi)]
 
 
 @lru_cache(maxsize=32)
