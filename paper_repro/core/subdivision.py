@@ -25,7 +25,7 @@ alpha = 1 9e-5).  So ``'float'`` does not use it: it takes the *product route* o
 substitution and the cotangent rules, then the products of Theorem P level by level; proof in
 docs/subdivision_for_all_n.md, section 9), with an entrywise running-error bound and a measured error of at most
 a few units of 1e-15 against the certified route for n <= 20 (reports/subdivision_accuracy.md).  Below
-alpha = 1e-100 the float route computes at 1e-100 (S is even and analytic in alpha: the difference is O(1e-200)).
+alpha = 1e-100 the float route computes at 1e-100 (measured S(alpha) - S(1e-100) ~ alpha^2/32: about 1e-200 there).
 ``'mp'`` computes S = M_{alpha/2} Rot M_alpha^{-1} in ball arithmetic (python-flint ``arb``) at a precision raised
 until every entry is certified to ``2^-(prec + 10)``, then rounds the midpoints (the reference the float route is
 checked against; ``_certified_float_matrices`` does the same to 2^-60 and rounds to float64).  ``'ball'`` returns
