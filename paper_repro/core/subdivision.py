@@ -24,7 +24,8 @@ alpha = 1 9e-5).  So ``'float'`` does not use it: it takes the *product route* o
 :mod:`paper_repro.core.subdivision_products` (no solve, no M_alpha: the seven order-one restrictions by
 substitution and the cotangent rules, then the products of Theorem P level by level; proof in
 docs/subdivision_for_all_n.md, section 9), with an entrywise running-error bound and a measured error of at most
-a few units of 1e-15 against the certified route for n <= 20 (reports/subdivision_accuracy.md).  Below
+a few units of 1e-15 against the certified route (n <= 8; the patch in mp up to n = 20,
+reports/subdivision_accuracy.md).  Below
 alpha = 1e-100 the float route computes at 1e-100 (measured S(alpha) - S(1e-100) ~ alpha^2/32: about 1e-200 there).
 ``'mp'`` computes S = M_{alpha/2} Rot M_alpha^{-1} in ball arithmetic (python-flint ``arb``) at a precision raised
 until every entry is certified to ``2^-(prec + 10)``, then rounds the midpoints (the reference the float route is
