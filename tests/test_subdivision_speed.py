@@ -31,7 +31,6 @@ from paper_repro.core.subdivision_products import (
     ALPHA_TINY,
     factorization,
     product_terms_fast,
-    rounding_count,
     subdivision_matrices_float,
 )
 
@@ -53,12 +52,10 @@ def _eps_x(n: int, alpha: float) -> float:
 
 def stated_bound(n: int, alpha: float) -> tuple[tuple[np.ndarray, ...], list[np.ndarray]]:
     """The float matrices and the running-error bound of docs/subdivision_for_all_n.md, section 9:
-    |S_float - S| <= gamma_{2K} M + (2 eps_x + 3u)(|S_float| + gamma_{2K} M), M the majorant, K = rounding_count(n)."""
-    mats, maj = subdivision_matrices_float(n, alpha, bound=True)
-    k2 = 2 * rounding_count(n)
-    gamma = k2 * U / (1 - k2 * U)
+    |S_float - S| <= B + (2 eps_x + 3u)(|S_float| + B), B the rounding part computed by the route."""
+    mats, rounding = subdivision_matrices_float(n, alpha, bound=True)
     eps = 2 * _eps_x(n, alpha) + 3 * U
-    return mats, [gamma * m + eps * (abs(s) + gamma * m) for s, m in zip(mats, maj)]
+    return mats, [b + eps * (abs(s) + b) for s, b in zip(mats, rounding)]
 
 
 def test_product_terms_fast_equals_the_dictionary_route():

@@ -360,15 +360,17 @@ def _combined(k: int, weights: np.ndarray, vals: np.ndarray) -> sp.csr_matrix:
     return sp.csr_matrix((data, indices, indptr), shape=(delta_unchecked(k), delta_unchecked(k - 1)))
 
 
-def restriction_matrices(n: int, alpha: float, *, absolute: bool = False) -> tuple[np.ndarray, ...]:
+def restriction_matrices(n: int, alpha: float, *, absolute: bool = False, first: list | None = None
+                         ) -> tuple[np.ndarray, ...]:
     """The four R_n^k (scaled members at alpha -> scaled members at alpha/2), in the order of :data:`PARTS`;
-    ``absolute``: the same recursion with every quantity replaced by its absolute value (the majorant of the
-    running-error bound).  ``n >= 1`` and ``alpha`` in [ALPHA_TINY, pi) checked by the caller.
+    ``absolute``: the product matrices in absolute values (they are non-negative: only the sums' bits change);
+    ``first``: the two 7 x 7 matrices R_1 of parts 'u' and 'middle' to start from (default: computed).  ``n >= 1``
+    and ``alpha`` in [ALPHA_TINY, pi) checked by the caller.
 
     Corners 'v' and 'w' are corner 'u' with the variables exchanged (T_{2n} is invariant under the permutations of
     (u, v, w), :func:`~paper_repro.core.labels.variable_swap`): ``R^v = Pi R^u Pi`` for the swap of u and v."""
     kp, sg = _float_half_angle(alpha / 2)
-    r1 = [order_one_restriction(p, kp, sg, absolute=absolute) for p in ("u", "middle")]
+    r1 = first if first is not None else [order_one_restriction(p, kp, sg) for p in ("u", "middle")]
     rs = [r.copy() for r in r1]
     for k in range(2, n + 1):
         fp, hh = factorization(k)
@@ -408,20 +410,34 @@ def _normalizers(n: int, alpha: float) -> tuple[np.ndarray, np.ndarray]:
     return scaled_coefficients(n, k0, s0, _F), scaled_coefficients(n, k1, s1, _F)
 
 
+def _gamma(m: int) -> float:
+    u = 2.0 ** -53
+    return m * u / (1 - m * u)
+
+
 def subdivision_matrices_float(n: int, alpha: float, *, bound: bool = False):
     """The four S_k (:func:`paper_repro.core.subdivision.subdivision_matrices`) in float64 by the product route,
     ``n >= 1`` and ``alpha`` in (0, pi) checked by the caller (below :data:`ALPHA_TINY` computed at ALPHA_TINY).
-    ``bound=True`` returns ``(matrices, majorants)``: the same recursion in absolute values, normalized likewise,
-    for the running-error bound ``|S_float - S| <= gamma_K * majorant + |S| eps_x`` of
-    docs/subdivision_for_all_n.md, section 9 (K = :func:`rounding_count`, eps_x the relative error of the scaled
-    coefficients)."""
+
+    ``bound=True`` returns ``(matrices, bounds)`` with the rounding part B of the running-error bound of
+    docs/subdivision_for_all_n.md, section 9: ``|S_float - S| <= B + (2 eps_x + 3u)(|S_float| + B)``, eps_x the
+    relative error of the float scaled coefficients.  With F the level recursion (multilinear in R_1 with
+    non-negative coefficients), e_1 = gamma_128 times the majorant of R_1's own computation and K_L the roundings of
+    the levels (:func:`rounding_count` minus R_1's 64): ``B = D (F(|R_1| + 2 e_1) - F(|R_1|) + gamma_{2 K_L}
+    F(|R_1| + 2 e_1)) D`` with D the normalization.  First order in u; computed, not certified."""
     alpha = max(float(alpha), ALPHA_TINY)
     x0, x1 = _normalizers(n, alpha)
     scale = x0[None, :] / x1[:, None]
-    mats = tuple(r * scale for r in restriction_matrices(n, alpha))
+    kp, sg = _float_half_angle(alpha / 2)
+    r1 = [order_one_restriction(p, kp, sg) for p in ("u", "middle")]
+    mats = tuple(r * scale for r in restriction_matrices(n, alpha, first=r1))
     if not bound:
         return mats
-    return mats, tuple(r * scale for r in restriction_matrices(n, alpha, absolute=True))
+    e1 = [_gamma(128) * order_one_restriction(p, kp, sg, absolute=True) for p in ("u", "middle")]
+    low = restriction_matrices(n, alpha, absolute=True, first=[abs(r) for r in r1])
+    high = restriction_matrices(n, alpha, absolute=True, first=[abs(r) + 2 * e for r, e in zip(r1, e1)])
+    g = _gamma(2 * (rounding_count(n) - 64))
+    return mats, tuple(((h - lo) + g * h) * scale for h, lo in zip(high, low))
 
 
 def rounding_count(n: int) -> int:
