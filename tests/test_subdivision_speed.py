@@ -176,3 +176,16 @@ def test_cotangent_csc_fast_equals_the_rules():
                 a = sorted(zip(*(x[fast[0][c]:fast[0][c + 1]].tolist() for x in fast[1:])))
                 b = sorted(zip(*(x[slow[0][c]:slow[0][c + 1]].tolist() for x in slow[1:])))
                 assert a == b, (n, var, c)
+
+
+def test_vectorised_names_equal_the_rules():
+    """member_table_fast, member_parts_fast and swap_permutation are half_angle_rules.member_table, member_parts
+    and labels.variable_swap (n <= 8)."""
+    from paper_repro.core.half_angle_rules import member_parts, member_table
+    from paper_repro.core.labels import variable_swap
+    from paper_repro.core.subdivision_products import member_parts_fast, member_table_fast, swap_permutation
+
+    for n in range(1, 9):
+        assert np.array_equal(member_table(n), member_table_fast(n)), n
+        assert np.array_equal(member_parts(n), member_parts_fast(n)), n
+        assert all(np.array_equal(variable_swap(n, 0, v), swap_permutation(n, v)) for v in (1, 2)), n

@@ -45,14 +45,12 @@ from paper_repro.core.context import FloatContext
 from paper_repro.core.half_angle_matrices import _float_half_angle, scaled_coefficients
 from paper_repro.core.half_angle_rules import (
     _gather,
-    _member_parts,
-    _member_table,
     _rule_a_pattern,
     cotangent,
     merge,
     order_one_parts,
 )
-from paper_repro.core.labels import delta_unchecked, exponent_matrix, variable_swap
+from paper_repro.core.labels import delta_unchecked, exponent_matrix
 from paper_repro.core.ordered import ordered_matmul
 
 #: The four sub-triangles (as :data:`paper_repro.core.subdivision.PARTS`).
@@ -62,6 +60,48 @@ PARTS = ("u", "v", "w", "middle")
 #: for n <= 2, docs/subdivision_for_all_n.md section 9): the difference below ALPHA_TINY is about 1e-200.
 ALPHA_TINY = 1e-100
 _F = FloatContext()
+
+
+# --- the member names, vectorised ---------------------------------------------------------------------------------
+@cache
+def member_table_fast(n: int) -> np.ndarray:
+    """:func:`~paper_repro.core.half_angle_rules.member_table` (``K[X, Y, m, j]``, the index of ``M_X(m; Y, j)``,
+    -1 where X = Y or j > m) by a sorted-key lookup instead of a dictionary (tested equal)."""
+    e = exponent_matrix(n).astype(np.int64)
+    weights = 64 ** np.arange(6, dtype=np.int64)
+    keys = e @ weights
+    order = np.argsort(keys)
+    x, y, m, j = np.meshgrid(np.arange(3), np.arange(3), np.arange(n + 1), np.arange(n + 1), indexing="ij")
+    valid = (x != y) & (j <= m)
+    z = 3 - x - y
+    vec = np.zeros(x.shape + (6,), dtype=np.int64)
+    for v in range(3):
+        vec[..., 2 * v] = np.where(x == v, 2 * n - m, 0) + np.where(y == v, j, 0) + np.where(z == v, m, 0)
+        vec[..., 2 * v + 1] = np.where(y == v, m - j, 0)
+    want = vec @ weights
+    loc = np.clip(np.searchsorted(keys[order], want), 0, len(keys) - 1)
+    found = order[loc]
+    if not (keys[found] == want)[valid].all():  # pragma: no cover - every name is a member
+        raise AssertionError(f"a name M_X(m; Y, j) of order {n} is not a member")
+    table = np.where(valid, found, -1)
+    table.setflags(write=False)
+    return table
+
+
+@cache
+def member_parts_fast(n: int) -> np.ndarray:
+    """:func:`~paper_repro.core.half_angle_rules.member_parts` (``(X, m, Y, j)`` of each member: of its names, the
+    one with the smallest (m, j, X, Y)) without the Python loops (tested equal)."""
+    table = member_table_fast(n)
+    x, y, m, j = np.meshgrid(np.arange(3), np.arange(3), np.arange(n + 1), np.arange(n + 1), indexing="ij")
+    ok = table >= 0
+    member, x, y, m, j = table[ok], x[ok], y[ok], m[ok], j[ok]
+    order = np.lexsort((y, x, j, m, member))
+    first = order[np.r_[True, member[order][1:] != member[order][:-1]]]
+    out = np.empty((delta_unchecked(n), 4), dtype=np.int64)
+    out[member[first]] = np.stack([x[first], m[first], y[first], j[first]], axis=1)
+    out.setflags(write=False)
+    return out
 
 
 # --- the cotangent rules, vectorised over the members -----------------------------------------------------------
@@ -78,8 +118,8 @@ def cotangent_csc_fast(n: int, var: int) -> tuple[np.ndarray, ...]:
     >>> bool(np.array_equal(fast[0], slow[0]))
     True
     """
-    table = _member_table(n)
-    parts = _member_parts(n)
+    table = member_table_fast(n)
+    parts = member_parts_fast(n)
     e = exponent_matrix(n)
     g = np.flatnonzero(e[:, 2 * var] > 0)
     x, m, y, j = (parts[g, k] for k in range(4))
@@ -119,22 +159,42 @@ def cotangent_csc_fast(n: int, var: int) -> tuple[np.ndarray, ...]:
     for target in (table[bx[ne], by[ne], bm[ne], bj[ne] + 1], table[bx[ne], by[ne], bm[ne] - 1, bj[ne]]):
         direct.append((g[sel][ne], target, np.zeros(int(ne.sum()), int), np.ones(int(ne.sum()), int)))
     calls.append((g[sel][ne], bx[ne], bm[ne] - 1, by[ne], bj[ne], np.ones(int(ne.sum()), int)))
-    # the rule (A) calls, grouped by (m, j): pattern (a, b, part, m', l), target M_X(m'; Y or Z, l)
+    # the rule (A) calls, all at once: the patterns of rule (A) for every (m, j), padded to one length
     col, cx, cm, cy, cj, shift = (np.concatenate([c[k] for c in calls]) for k in range(6))
     out = [tuple(d) for d in direct]
-    for mm, jj in sorted(set(zip(cm.tolist(), cj.tolist()))):
-        sel = (cm == mm) & (cj == jj)
-        pa, pb, part, pm, pl = _rule_a_pattern(mm, jj)
-        ys = np.stack([cy[sel], 3 - cx[sel] - cy[sel]])  # (2, calls)
-        target = table[cx[sel][:, None], ys[part].T, pm[None, :], pl[None, :]]
-        k = len(pa)
-        out.append((np.repeat(col[sel], k), target.reshape(-1), (pa[None, :] + shift[sel][:, None]).reshape(-1),
-                    np.tile(pb, int(sel.sum()))))
+    pa, pb, part, pm, pl, ok = _padded_rule_a(n)
+    pid = cm * (n + 1) + cj
+    ys = np.stack([cy, 3 - cx - cy], axis=1)  # (calls, 2): Y, Z
+    sel_part = part[pid]  # (calls, L)
+    ysel = np.take_along_axis(ys, sel_part, axis=1)
+    target = table[cx[:, None], ysel, pm[pid], pl[pid]]
+    mask = ok[pid]
+    out.append((np.broadcast_to(col[:, None], mask.shape)[mask], target[mask],
+                (pa[pid] + shift[:, None])[mask], pb[pid][mask]))
     cols, targets, a, b = (np.concatenate([o[k] for o in out]) for k in range(4))
     order = np.argsort(cols, kind="stable")
     indptr = np.zeros(delta_unchecked(n) + 1, dtype=np.int64)
     np.add.at(indptr, cols + 1, 1)
     res = (np.cumsum(indptr), targets[order], a[order], b[order], np.ones(len(order), dtype=np.int64))
+    for arr in res:
+        arr.setflags(write=False)
+    return res
+
+
+@cache
+def _padded_rule_a(n: int) -> tuple[np.ndarray, ...]:
+    """The patterns of rule (A) (:func:`~paper_repro.core.half_angle_rules._rule_a_pattern`) for every
+    0 <= j <= m < n as ``((n + 1)^2, L)`` arrays ``(a, b, part, m', l, valid)`` indexed by m (n + 1) + j."""
+    pats = {(m, j): _rule_a_pattern(m, j) for m in range(n) for j in range(m + 1)}
+    width = max((len(p[0]) for p in pats.values()), default=1)
+    out = [np.zeros(((n + 1) ** 2, width), dtype=np.int64) for _ in range(5)]
+    ok = np.zeros(((n + 1) ** 2, width), dtype=bool)
+    for (m, j), p in pats.items():
+        row = m * (n + 1) + j
+        for k in range(5):
+            out[k][row, :len(p[k])] = p[k]
+        ok[row, :len(p[0])] = True
+    res = tuple(out) + (ok,)
     for arr in res:
         arr.setflags(write=False)
     return res
@@ -175,8 +235,8 @@ def product_terms_fast(n: int, h: int) -> tuple[np.ndarray, ...]:
     True
     """
     big = n + 1
-    table = _member_table(big)
-    x, m, y, j = (_member_parts(n)[:, k] for k in range(4))
+    table = member_table_fast(big)
+    x, m, y, j = (member_parts_fast(n)[:, k] for k in range(4))
     z = 3 - x - y
     f = np.arange(delta_unchecked(n))
     one = np.ones_like(f)
@@ -232,8 +292,8 @@ def factorization(n: int) -> tuple[np.ndarray, np.ndarray]:
     >>> bool((exponent_matrix(2) == exponent_matrix(1)[fp] + exponent_matrix(1)[h]).all())
     True
     """
-    x, m, y, j = (_member_parts(n)[:, k] for k in range(4))
-    small = _member_table(n - 1)
+    x, m, y, j = (member_parts_fast(n)[:, k] for k in range(4))
+    small = member_table_fast(n - 1)
     kinds = order_one_parts()
     centre = kinds.index(("centre", -1))
     edge = np.array([kinds.index(("edge", v)) for v in range(3)])
@@ -398,9 +458,27 @@ def _columns(k: int, g: int) -> np.ndarray:
 
 
 def _swapped(r: np.ndarray, n: int, var: int) -> np.ndarray:
-    """Corner ``var`` from corner u: exchange u and var in rows and columns (:func:`variable_swap`)."""
-    pi = variable_swap(n, 0, var)
+    """Corner ``var`` from corner u: exchange u and var in rows and columns (the permutation of
+    :func:`~paper_repro.core.labels.variable_swap`, here by a sorted-key lookup; tested equal)."""
+    pi = swap_permutation(n, var)
     return r[np.ix_(pi, pi)]
+
+
+@cache
+def swap_permutation(n: int, var: int) -> np.ndarray:
+    """``variable_swap(n, 0, var)``: the index of each member with the variables u and ``var`` exchanged."""
+    e = exponent_matrix(n).astype(np.int64)
+    weights = 64 ** np.arange(6, dtype=np.int64)
+    cols = list(range(6))
+    cols[0:2], cols[2 * var:2 * var + 2] = cols[2 * var:2 * var + 2], cols[0:2]
+    keys = e @ weights
+    order = np.argsort(keys)
+    want = e[:, cols] @ weights
+    pi = order[np.searchsorted(keys[order], want)]
+    if not np.array_equal(keys[pi], want):  # pragma: no cover - T_2n is invariant under the exchange
+        raise AssertionError(f"T_{2 * n} is not invariant under exchanging u and {'uvw'[var]}")
+    pi.setflags(write=False)
+    return pi
 
 
 @lru_cache(maxsize=32)
