@@ -189,3 +189,12 @@ def test_vectorised_names_equal_the_rules():
         assert np.array_equal(member_table(n), member_table_fast(n)), n
         assert np.array_equal(member_parts(n), member_parts_fast(n)), n
         assert all(np.array_equal(variable_swap(n, 0, v), swap_permutation(n, v)) for v in (1, 2)), n
+
+
+def test_cached_tables_are_read_only():
+    """The cached integer tables are shared by every later call: none may be modified in place."""
+    from paper_repro.core import subdivision_products as m
+
+    arrays = [*m.factorization(3), m.member_table_fast(3), m.member_parts_fast(3), m.swap_permutation(3, 1),
+              *m._padded_rule_a(3), *m.cotangent_csc_fast(3, 0), *m.product_terms_fast(2, 4), *m._level_terms(3)]
+    assert all(not a.flags.writeable for a in arrays)
