@@ -52,7 +52,8 @@ MODULES: dict[str, list[str]] = {
     "surfaces/patch.py": ["tests/test_patches_surfaces.py", "tests/test_patch_arithmetics.py", "tests/test_code_gaps.py",
                           "tests/test_library_api.py"],
     "surfaces/joins.py": ["tests/test_joins.py"],
-    "core/subdivision.py": ["tests/test_subdivision.py"],
+    "core/subdivision.py": ["tests/test_subdivision.py", "tests/test_subdivision_speed.py"],
+    "core/subdivision_products.py": ["tests/test_subdivision_speed.py"],
 }
 
 #: equivalent mutants: "module:line:operator:mutated line" -> why nothing observable changes

@@ -337,6 +337,63 @@ def closed_forms(ns: dict[str, list[int]]) -> list[dict]:
     return rows
 
 
+#: Goals of issue 38, item 6 (seconds): subdivision_matrix cold at n = 10 and 30; subdividing an order-10 net.
+SUBDIVISION_GOALS = {("cold", 10): 0.05, ("cold", 30): 1.0, ("apply", 10): 1e-3}
+_SUBDIVISION_CALL = """
+import time, numpy as np
+from paper_repro.core.subdivision import subdivision_matrix, subdivide
+from paper_repro.core.labels import delta
+n = {n}
+t = time.perf_counter(); subdivision_matrix(n, 1.0, "u"); cold = time.perf_counter() - t
+t = time.perf_counter(); subdivision_matrix(n, 0.7, "u"); warm = time.perf_counter() - t
+net = np.random.default_rng(0).normal(size=(delta(n), 3))
+subdivide(net, n, 1.0)
+best = min((lambda t0: (subdivide(net, n, 1.0), time.perf_counter() - t0)[1])(time.perf_counter())
+           for _ in range({reps}))
+print(cold, warm, best)
+"""
+
+
+def subdivision_timings(ns: list[int], reps: int = 200) -> list[dict]:
+    """Midpoint subdivision (issue 38, item 6), each n in a fresh process: ``subdivision_matrix(n, 1.0, 'u')`` cold
+    (the four matrices and every integer form they need built in that call), then at alpha = 0.7 (the forms cached,
+    the matrices new: *warm*), and ``subdivide`` of a random 3-coordinate net once the matrices are known (best of
+    ``reps`` calls, validation included).  Best of two processes."""
+    import subprocess
+    import sys
+
+    rows = []
+    for n in ns:
+        code = _SUBDIVISION_CALL.format(n=n, reps=reps)
+        runs = [tuple(map(float, subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                                                check=True).stdout.split())) for _ in range(2)]
+        cold, warm, apply = (min(r[k] for r in runs) for k in range(3))
+        row = {"n": n, "cold_s": round(cold, 4), "warm_s": round(warm, 4), "apply_s": round(apply, 6),
+               "goal_cold_s": SUBDIVISION_GOALS.get(("cold", n)), "goal_apply_s": SUBDIVISION_GOALS.get(("apply", n))}
+        rows.append(row)
+        print(f"  subdivision n={n}: cold {cold:.3f}s, warm {warm:.3f}s, subdivide {apply * 1e3:.3f} ms", flush=True)
+    return rows
+
+
+def subdivision_markdown(rows: list[dict], load: tuple[float, ...] | None = None) -> list[str]:
+    def met(x, goal):
+        return "" if goal is None else ("yes" if x <= goal else "**no**")
+
+    out = ["## Midpoint subdivision (issue 38, item 6), each n in a fresh process", "",
+           "`subdivision_matrix(n, 1.0, 'u')` *cold* (the four matrices and the integer forms of the product route "
+           "built in that call), *warm* (a new α = 0.7, the forms cached) and `subdivide` of a random 3-coordinate "
+           "net once the matrices are known (best of 200 calls, validation included); best of two processes. Goals: "
+           "cold n = 10 ≤ 0.05 s, n = 30 ≤ 1 s; subdivide n = 10 well under 1 ms."
+           + ("" if load is None else f" Load average at start {load[0]:.1f} (2 cores)."), "",
+           "| n | cold (s) | goal | met | warm (s) | subdivide (ms) | goal (ms) | met |",
+           "|---|---|---|---|---|---|---|---|"]
+    out += [f"| {r['n']} | {r['cold_s']} | {'' if r['goal_cold_s'] is None else r['goal_cold_s']} | "
+            f"{met(r['cold_s'], r['goal_cold_s'])} | {r['warm_s']} | {r['apply_s'] * 1e3:.3f} | "
+            f"{'' if r['goal_apply_s'] is None else r['goal_apply_s'] * 1e3} | {met(r['apply_s'], r['goal_apply_s'])} |"
+            for r in rows]
+    return out + [""]
+
+
 #: Block sizes of the floor's micro-benchmarks (each operation is taken at its best).
 FLOOR_BLOCKS = (256, 1024, 8192)
 
@@ -587,6 +644,8 @@ def markdown(rep: dict) -> str:
                 f"{'' if r['meets_goal'] is None else ('yes' if r['meets_goal'] else '**no**')} |"
                 for r in rep["closed_forms"]]
         out.append("")
+    if rep.get("subdivision"):
+        out += subdivision_markdown(rep["subdivision"])
     out += ["## The physical floor (one thread)", "",
             f"Micro-benchmarks on blocks of {rep.get('floor_block', 1024)} points (each operation at the size where "
             "it is fastest per point), scaled to the point count: three sin/cos pairs, "
@@ -660,7 +719,20 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--patch-only", action="store_true", help="only the patch sections (no exact/rank/recovery)")
     ap.add_argument("--ns", default=None, help="orders for the patch tables, comma-separated (default 1,3,6,10)")
     ap.add_argument("--ratios-only", metavar="JSON", help=argparse.SUPPRESS)  # one process of ratio_runs
+    ap.add_argument("--subdivision-only", action="store_true",
+                    help="only the subdivision timings -> reports/bench_subdivision.{json,md}")
     args = ap.parse_args(argv)
+    sub_ns = [2, 4] if args.quick else list(range(1, 11)) + [15, 20, 25, 30]
+    if args.subdivision_only:
+        load = os.getloadavg()
+        rows = subdivision_timings(sub_ns)
+        write_json(reports_dir() / "bench_subdivision.json", {"machine": machine(), "load_average_at_start": list(load),
+                                                              "load_average_at_end": list(os.getloadavg()),
+                                                              "subdivision": rows})
+        write_text(reports_dir() / "bench_subdivision.md", "\n".join(["# Subdivision timings", ""]
+                                                                      + subdivision_markdown(rows, load)))
+        print(f"wrote {reports_dir() / 'bench_subdivision.md'}")
+        return 0
     points = 20_000 if args.quick else args.points
     ns = [int(x) for x in args.ns.split(",")] if args.ns else ([1, 3] if args.quick else [1, 3, 6, 10])
     if args.ratios_only:
@@ -677,7 +749,8 @@ def main(argv: list[str] | None = None) -> int:
            "floor": floor_estimate([3, 6] if not args.quick else [3], points, args.repeat),
            "floor_block": ", ".join(map(str, FLOOR_BLOCKS)),
            "memory": memory_rows(3, [10**4, 10**5] if args.quick else [10**5, 10**7]),
-           "mp": mp_route(ns, points, mp_points=20 if args.quick else 100)}
+           "mp": mp_route(ns, points, mp_points=20 if args.quick else 100),
+           "subdivision": subdivision_timings(sub_ns)}
     if not args.patch_only:
         rep.update(exact=exact_comparison([2, 3] if args.quick else [2, 3, 4, 5, 6, 7, 8]),
                    rank=rank_table([2, 4] if args.quick else [5, 10, 15, 20, 25, 30, 35, 40],

@@ -19,14 +19,18 @@ with M_beta the V_n -> T-bar_{2n}^beta transformation of :func:`~paper_repro.cor
 ('V_to_T'; M_alpha^{-1} is its 'T_to_V') and Rot the block rotation.  The proof: docs/subdivision_for_all_n.md.
 
 Arithmetic.  M_{alpha/2} has entries of size about 1/sin(alpha/4)^{2n} while S is bounded (about 1), so the product
-cancels: in float64 it loses every digit (measured: n = 4 at alpha = 0.1 has an error of 3e3; n = 6 at alpha = 1
-9e-5).  Hence no float64 route: ``'float'`` and ``'mp'`` compute S in ball arithmetic (python-flint ``arb``) at a
-precision raised until every entry is certified to ``2^-60`` (float) or ``2^-(prec + 10)`` (mp), then round the
-midpoints; the float64 result is within 2^-60 plus half an ulp of the exact S, entry by entry, for every n and
-alpha accepted (measured: at most 5.6e-17 from 30-digit mp for n <= 10 at alpha = 1e-3, 1, pi - 1e-3).
-Cost (cold, loaded machine, tools/subdivision_accuracy.py): n = 4 0.5 s, n = 6 1-2 s, n = 10 16-35 s (the issue's
-target of 50 ms at n = 10 needs a direct rule: open).  ``'ball'`` returns the balls at the context's own precision
-(their radii say what is known).
+above cancels: in float64 it loses every digit (measured: n = 4 at alpha = 0.1 has an error of 3e3; n = 6 at
+alpha = 1 9e-5).  So ``'float'`` does not use it: it takes the *product route* of
+:mod:`paper_repro.core.subdivision_products` (no solve, no M_alpha: the seven order-one restrictions by
+substitution and the cotangent rules, then the products of Theorem P level by level; proof in
+docs/subdivision_for_all_n.md, section 9), with an entrywise running-error bound and a measured error of at most
+a few units of 1e-15 against the certified route (n <= 8; the patch in mp up to n = 20,
+reports/subdivision_accuracy.md).  Below
+alpha = 1e-100 the float route computes at 1e-100 (measured S(alpha) - S(1e-100) ~ alpha^2/32: about 1e-200 there).
+``'mp'`` computes S = M_{alpha/2} Rot M_alpha^{-1} in ball arithmetic (python-flint ``arb``) at a precision raised
+until every entry is certified to ``2^-(prec + 10)``, then rounds the midpoints (the reference the float route is
+checked against; ``_certified_float_matrices`` does the same to 2^-60 and rounds to float64).  ``'ball'`` returns
+the balls at the context's own precision (their radii say what is known).
 ``'exact'`` needs a :class:`~paper_repro.core.domain.RationalAngle` (rational tan(alpha/4), so s = sin(alpha/2) and
 c = cos(alpha/2) are rational); cos(alpha/4) = sqrt((1 + c)/2) need not be rational, so the computation runs in the
 field Q(sqrt((1 + c)/2)) (:class:`QuadNumber`) and the result is checked to be rational (it always was: S has entries
@@ -48,6 +52,7 @@ from typing import NamedTuple
 
 import mpmath
 import numpy as np
+import scipy.sparse as sp
 from flint import arb, arb_mat, fmpq, fmpq_mat
 
 from paper_repro.core.context import (
@@ -63,7 +68,7 @@ from paper_repro.core.domain import RationalAngle
 from paper_repro.core.fourier import v_system
 from paper_repro.core.labels import delta
 from paper_repro.core.nets import check_net, check_net_exact
-from paper_repro.core.ordered import ordered_matmul
+from paper_repro.core.subdivision_products import subdivision_matrices_float
 from paper_repro.core.transformation import transformation_in_context
 from paper_repro.util.limits import MAX_N_TRANSFORMATION, check_int
 from paper_repro.util.validation import check_alpha, parse_alpha
@@ -419,6 +424,18 @@ def _certified(n: int, alpha, bits: int) -> tuple[list[arb_mat], int]:
 
 @lru_cache(maxsize=32)
 def _float_matrices(n: int, alpha: float) -> tuple[np.ndarray, ...]:
+    """The four S in float64 by the product route (:mod:`paper_repro.core.subdivision_products`), read-only."""
+    out = subdivision_matrices_float(n, alpha)
+    for arr in out:
+        arr.setflags(write=False)
+    return out
+
+
+@lru_cache(maxsize=8)
+def _certified_float_matrices(n: int, alpha: float) -> tuple[np.ndarray, ...]:
+    """The four S from S = M_{alpha/2} Rot M_alpha^{-1} in ball arithmetic, every entry certified to 2^-60 before
+    rounding to float64 (the reference of the float route: within 2^-60 plus half an ulp of the exact S; costs
+    seconds from n = 8 on, ``tools/subdivision_accuracy.py``)."""
     mats, _ = _certified(n, alpha, FLOAT_BITS)
     out = []
     for mat in mats:
@@ -470,7 +487,8 @@ def subdivision_matrix(n: int, alpha, part: str, arith: str | Context | None = N
     :func:`~paper_repro.core.labels.united_system`.
 
     ``alpha``: a real number in (0, pi) or a :class:`~paper_repro.core.domain.RationalAngle`; ``arith``: ``'float'``
-    (default for a real alpha; every entry within 2^-60 + half an ulp of the exact value, certified), ``'mp'``
+    (default for a real alpha; the product route, no solve: every entry within its running-error bound, measured
+    within 5e-15 of the certified value for n <= 20, docs/subdivision_for_all_n.md section 9), ``'mp'``
     (``dps`` digits, certified), ``'ball'`` (balls at the context's precision) or ``'exact'`` (default for a
     RationalAngle; flint ``fmpq``).  ``n`` from 1 to :data:`MAX_N_SUBDIVISION`.  Every row sums to 1 (partition
     of unity on both sides); S has negative entries (not a corner-cutting scheme, docs/subdivision_for_all_n.md).
@@ -484,9 +502,20 @@ def subdivision_matrix(n: int, alpha, part: str, arith: str | Context | None = N
     return subdivision_matrices(n, alpha, arith, dps=dps)[PARTS.index(part)]
 
 
-def _apply(mat: np.ndarray, net: np.ndarray) -> np.ndarray:
-    if mat.dtype == np.float64:
-        return ordered_matmul(mat, net)
+def _csr_apply(mat: sp.csr_matrix, net: np.ndarray) -> np.ndarray:
+    """``mat @ net`` one coordinate at a time (scipy's ``csr_matvec``: each row summed in the order of its entries,
+    a plain C loop, the same bits on every CPU and for every layout of ``net``; faster than the multi-vector loop
+    for d = 3)."""
+    cols = np.ascontiguousarray(net.T)
+    out = np.empty((mat.shape[0], net.shape[1]))
+    for c in range(net.shape[1]):
+        out[:, c] = mat @ cols[c]
+    return out
+
+
+def _apply(mat, net: np.ndarray) -> np.ndarray:
+    if isinstance(mat, sp.csr_matrix):
+        return _csr_apply(mat, net)
     if net.dtype == object and all(isinstance(x, fmpq) for x in mat.reshape(-1)[:1]):
         try:
             return _fmpq_to_array(to_fmpq_mat(mat) * to_fmpq_mat(net))
@@ -502,6 +531,13 @@ def _checked_net(net, n: int, ctx: Context) -> np.ndarray:
         return np.array([[ExactContext().convert(x) for x in row] for row in arr], dtype=object)
     if isinstance(ctx, (MpContext, BallContext)):
         return check_net_exact(net, n)
+    if isinstance(net, np.ndarray) and net.dtype.kind in "fiu" and net.ndim == 2:  # the fast path of a numeric array
+        if net.shape[0] != delta(n) or net.shape[1] < 1:
+            raise ValueError(f"net must have shape (delta_n, d) = ({delta(n)}, d) for n = {n}, got {net.shape}")
+        arr = net.astype(np.float64)
+        if not np.isfinite(arr).all():
+            raise ValueError("net must be finite")
+        return arr
     return check_net(net, n)
 
 
@@ -521,19 +557,25 @@ def subdivide(net, n: int, alpha, arith: str | Context | None = None, *, dps: in
     alpha = _check_alpha(alpha)
     ctx = _context(arith, alpha, dps)
     arr = _checked_net(net, n, ctx)
-    if isinstance(ctx, FloatContext):  # one fixed-order product with the four matrices stacked
+    if isinstance(ctx, FloatContext):  # one sparse product with the four matrices stacked
         d = delta(n)
-        out = ordered_matmul(_stacked_float(n, float(alpha)), arr)
+        out = _csr_apply(_stacked_float(n, float(alpha)), arr)
         return SubNets(*(out[k * d:(k + 1) * d] for k in range(4)))
     mats = _shared(n, alpha, ctx, dps)
     return SubNets(*(_apply(m, arr) for m in mats))
 
 
 @lru_cache(maxsize=32)
-def _stacked_float(n: int, alpha: float) -> np.ndarray:
-    out = np.vstack(_float_matrices(n, alpha))
-    out.setflags(write=False)
-    return out
+def _stacked_float(n: int, alpha: float) -> sp.csr_matrix:
+    """The four float S stacked, ``(4 delta_n, delta_n)``, as a CSR matrix of the nonzero entries: its product with a
+    net sums each row in the order of the columns (scipy's ``csr_matvecs``, a plain C loop: no BLAS, the same bits
+    on every CPU) and skips S's zeros (about 80 % of a corner matrix, 40 % of the middle one at n = 10)."""
+    return sp.csr_matrix(np.vstack(_float_matrices(n, alpha)))
+
+
+@lru_cache(maxsize=32)
+def _float_csr(n: int, alpha: float) -> tuple[sp.csr_matrix, ...]:
+    return tuple(sp.csr_matrix(m) for m in _float_matrices(n, alpha))
 
 
 def subdivide_to_depth(net, n: int, alpha, k: int, arith: str | Context | None = None, *, dps: int = 50
@@ -555,7 +597,7 @@ def subdivide_to_depth(net, n: int, alpha, k: int, arith: str | Context | None =
     level: dict[tuple[str, ...], np.ndarray] = {(): _checked_net(net, n, ctx)}
     a = alpha
     for step in range(k):
-        mats = _shared(n, a, ctx, dps)
+        mats = _float_csr(n, float(a)) if isinstance(ctx, FloatContext) else _shared(n, a, ctx, dps)
         level = {path + (part,): _apply(m, arr) for path, arr in level.items() for part, m in zip(PARTS, mats)}
         if step + 1 < k:
             a = half_alpha(a)

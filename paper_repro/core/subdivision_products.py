@@ -1,0 +1,545 @@
+"""Midpoint subdivision in float64 without a solve: restriction is a ring homomorphism (docs/subdivision_for_all_n.md,
+section 9).
+
+Notation of docs/elevation_and_derivative_for_all_n.md: ``m_f = f / s^{2n+j(f)}`` the scaled members of T_{2n}^alpha
+(eq. united_system), ``x_f`` their scaled normalizing coefficients (T-bar_f = x_f m_f, eq. normalized_united_system),
+``kappa' = cos(alpha/4)``, ``sigma' = sin^2(alpha/4)`` the half-angle values of the parameter alpha/2 of the
+sub-patches, and ``x_k`` the map of Omega^{alpha/2} onto the sub-triangle ``k`` (:mod:`paper_repro.core.subdivision`).
+
+The route, for every n (proof: docs/subdivision_for_all_n.md, section 9):
+
+1. *Order one.*  ``m_h o x_k = sum_g R_1^k[g, h] m'_g`` for the seven members h of T_2, by substituting
+   ``sin(u/2) = s'(kappa' S'_u + C'_u)`` (translation) or ``s'(C'_u - kappa' S'_u)`` (point reflection) and the
+   cosines likewise, and re-expressing each monomial ``S'^a C'^b ...`` with the cotangent rules
+   (:func:`~paper_repro.core.half_angle_rules.cotangent`, proven for every n) -- a 7 x 7 matrix.
+2. *Products.*  Every member of T_{2n} is a member of T_{2n-2} times a member of T_2 (:func:`factorization`), and
+   restriction to a sub-triangle is multiplicative: ``(m_f' m_h) o x_k = (m_f' o x_k)(m_h o x_k)``.  The product of
+   a member of T_{2n-2} with a member of T_2 is written in T_{2n} by Theorem P of
+   docs/elevation_and_derivative_for_all_n.md (:func:`~paper_repro.core.half_angle_rules.product_column`, every
+   coefficient a polynomial in kappa', sigma' with non-negative integer coefficients; here vectorised,
+   :func:`product_terms_fast`).  So R_n^k[:, f] = sum_h R_1^k[h, h(f)] P_h R_{n-1}^k[:, f'(f)], level by level.
+3. *Normalization.*  ``S_k[g, f] = R_n^k[g, f] x_f / x'_g``.
+
+Float results are the same bits on every CPU: kappa', sigma' from flint ``arb``, fixed-order sums (no BLAS:
+scipy's sparse products sum each row in the order of its entries).
+
+No step subtracts except inside the 7 x 7 matrix R_1 and the signed sums of the level recursion (R_1 has negative
+entries), so float64 keeps about 15 digits for every n and alpha measured (reports/subdivision_accuracy.md); the
+entrywise running-error bound of :func:`subdivision_matrices_float` (``bound=True``) is computed from the same
+recursion in absolute values.
+
+>>> import numpy as np
+>>> s = subdivision_matrices_float(2, 1.0)
+>>> len(s), s[3].shape, bool(max(abs(m.sum(axis=1) - 1).max() for m in s) < 1e-14)
+(4, (19, 19), True)
+"""
+
+from __future__ import annotations
+
+from functools import cache, lru_cache
+
+import numpy as np
+import scipy.sparse as sp
+
+from paper_repro.core.context import FloatContext
+from paper_repro.core.half_angle_matrices import _float_half_angle, scaled_coefficients
+from paper_repro.core.half_angle_rules import (
+    _gather,
+    _rule_a_pattern,
+    cotangent,
+    merge,
+    order_one_parts,
+)
+from paper_repro.core.labels import delta_unchecked, exponent_matrix
+from paper_repro.core.ordered import ordered_matmul
+
+#: The four sub-triangles (as :data:`paper_repro.core.subdivision.PARTS`).
+PARTS = ("u", "v", "w", "middle")
+#: Below this alpha the float route computes at ALPHA_TINY: the scaled coefficients of size sigma would underflow
+#: (0/0 in x_f / x'_g).  Measured S(alpha) - S(ALPHA_TINY) ~ alpha^2/32 (n = 2, 6, 10), S even and smooth at 0 (proven
+#: for n <= 2, docs/subdivision_for_all_n.md section 9): the difference below ALPHA_TINY is about 1e-200.
+ALPHA_TINY = 1e-100
+_F = FloatContext()
+
+
+# --- the member names, vectorised ---------------------------------------------------------------------------------
+@cache
+def member_table_fast(n: int) -> np.ndarray:
+    """:func:`~paper_repro.core.half_angle_rules.member_table` (``K[X, Y, m, j]``, the index of ``M_X(m; Y, j)``,
+    -1 where X = Y or j > m) by a sorted-key lookup instead of a dictionary (tested equal)."""
+    e = exponent_matrix(n).astype(np.int64)
+    weights = 64 ** np.arange(6, dtype=np.int64)
+    keys = e @ weights
+    order = np.argsort(keys)
+    x, y, m, j = np.meshgrid(np.arange(3), np.arange(3), np.arange(n + 1), np.arange(n + 1), indexing="ij")
+    valid = (x != y) & (j <= m)
+    z = 3 - x - y
+    vec = np.zeros(x.shape + (6,), dtype=np.int64)
+    for v in range(3):
+        vec[..., 2 * v] = np.where(x == v, 2 * n - m, 0) + np.where(y == v, j, 0) + np.where(z == v, m, 0)
+        vec[..., 2 * v + 1] = np.where(y == v, m - j, 0)
+    want = vec @ weights
+    loc = np.clip(np.searchsorted(keys[order], want), 0, len(keys) - 1)
+    found = order[loc]
+    if not (keys[found] == want)[valid].all():  # pragma: no cover - every name is a member
+        raise AssertionError(f"a name M_X(m; Y, j) of order {n} is not a member")
+    table = np.where(valid, found, -1)
+    table.setflags(write=False)
+    return table
+
+
+@cache
+def member_parts_fast(n: int) -> np.ndarray:
+    """:func:`~paper_repro.core.half_angle_rules.member_parts` (``(X, m, Y, j)`` of each member: of its names, the
+    one with the smallest (m, j, X, Y)) without the Python loops (tested equal)."""
+    table = member_table_fast(n)
+    x, y, m, j = np.meshgrid(np.arange(3), np.arange(3), np.arange(n + 1), np.arange(n + 1), indexing="ij")
+    ok = table >= 0
+    member, x, y, m, j = table[ok], x[ok], y[ok], m[ok], j[ok]
+    order = np.lexsort((y, x, j, m, member))
+    first = order[np.r_[True, member[order][1:] != member[order][:-1]]]
+    out = np.empty((delta_unchecked(n), 4), dtype=np.int64)
+    out[member[first]] = np.stack([x[first], m[first], y[first], j[first]], axis=1)
+    out.setflags(write=False)
+    return out
+
+
+# --- the cotangent rules, vectorised over the members -----------------------------------------------------------
+@cache
+def cotangent_csc_fast(n: int, var: int) -> tuple[np.ndarray, ...]:
+    """``L_var`` on every member of T_{2n} as compressed columns ``(indptr, target, a, b, coef)``: the terms of
+    :func:`~paper_repro.core.half_angle_rules.cotangent` (rules (A), (A_n), (B) and the cosine variable of
+    docs/elevation_and_derivative_for_all_n.md), built for all members at once (one group per (ring, level) of
+    rule (A)) instead of one call per member; within a column the terms may come in another order (tested equal
+    as sets to ``_cotangent_csc``).  Empty columns for the members without a factor S_var.
+
+    >>> from paper_repro.core.half_angle_rules import _cotangent_csc
+    >>> fast, slow = cotangent_csc_fast(3, 1), _cotangent_csc(3, 1)
+    >>> bool(np.array_equal(fast[0], slow[0]))
+    True
+    """
+    table = member_table_fast(n)
+    parts = member_parts_fast(n)
+    e = exponent_matrix(n)
+    g = np.flatnonzero(e[:, 2 * var] > 0)
+    x, m, y, j = (parts[g, k] for k in range(4))
+    z = 3 - x - y
+    direct: list[tuple[np.ndarray, ...]] = []  # (col, target, a, b)
+    calls: list[tuple[np.ndarray, ...]] = []  # rule (A) calls (col, X, m, Y, j, a shift)
+
+    def add_direct(sel, target, a, b):
+        direct.append((g[sel], target, np.full(int(sel.sum()), a), np.full(int(sel.sum()), b)))
+
+    cosv = e[g, 2 * var + 1] > 0
+    add_direct(cosv, table[x[cosv], y[cosv], m[cosv], j[cosv] - 1], 0, 0)
+    rest = ~cosv
+    # rule (A_n): level n, X := var, Y := y (or x if var is y), Z the third
+    an = rest & (m == n)
+    ax = np.full_like(x, var)
+    ay = np.where(y != var, y, x)
+    az = 3 - ax - ay
+    sel = an & (j == n)
+    add_direct(sel, table[ay[sel], ax[sel], n, n - 1], 0, 0)
+    sel = an & (j < n)
+    add_direct(sel, table[ax[sel], ay[sel], n, j[sel] + 1], 0, 1)
+    add_direct(sel, table[az[sel], ay[sel], n - 1, j[sel]], 0, 1)
+    calls.append((g[sel], az[sel], np.full(int(sel.sum()), n - 1), ay[sel], j[sel], np.ones(int(sel.sum()), int)))
+    # rule (A): var is the part X, m < n
+    sel = rest & (m < n) & (var == x)
+    calls.append((g[sel], x[sel], m[sel], y[sel], j[sel], np.zeros(int(sel.sum()), int)))
+    # rule (B): var is Z (or Y with j = m, Y and Z exchanged), 1 <= m < n
+    sel = rest & (m < n) & (var != x)
+    bx, bm, bj = x[sel], m[sel], j[sel]
+    by = np.where(var == z[sel], y[sel], z[sel])
+    bz = 3 - bx - by
+    eq = bj == bm
+    direct.append((g[sel][eq], table[bx[eq], bz[eq], bm[eq], bm[eq] - 1], np.zeros(int(eq.sum()), int),
+                   np.zeros(int(eq.sum()), int)))
+    ne = ~eq
+    for target in (table[bx[ne], by[ne], bm[ne], bj[ne] + 1], table[bx[ne], by[ne], bm[ne] - 1, bj[ne]]):
+        direct.append((g[sel][ne], target, np.zeros(int(ne.sum()), int), np.ones(int(ne.sum()), int)))
+    calls.append((g[sel][ne], bx[ne], bm[ne] - 1, by[ne], bj[ne], np.ones(int(ne.sum()), int)))
+    # the rule (A) calls, all at once: the patterns of rule (A) for every (m, j), padded to one length
+    col, cx, cm, cy, cj, shift = (np.concatenate([c[k] for c in calls]) for k in range(6))
+    out = [tuple(d) for d in direct]
+    pa, pb, part, pm, pl, ok = _padded_rule_a(n)
+    pid = cm * (n + 1) + cj
+    ys = np.stack([cy, 3 - cx - cy], axis=1)  # (calls, 2): Y, Z
+    sel_part = part[pid]  # (calls, L)
+    ysel = np.take_along_axis(ys, sel_part, axis=1)
+    target = table[cx[:, None], ysel, pm[pid], pl[pid]]
+    mask = ok[pid]
+    out.append((np.broadcast_to(col[:, None], mask.shape)[mask], target[mask],
+                (pa[pid] + shift[:, None])[mask], pb[pid][mask]))
+    cols, targets, a, b = (np.concatenate([o[k] for o in out]) for k in range(4))
+    order = np.argsort(cols, kind="stable")
+    indptr = np.zeros(delta_unchecked(n) + 1, dtype=np.int64)
+    np.add.at(indptr, cols + 1, 1)
+    res = (np.cumsum(indptr), targets[order], a[order], b[order], np.ones(len(order), dtype=np.int64))
+    for arr in res:
+        arr.setflags(write=False)
+    return res
+
+
+@cache
+def _padded_rule_a(n: int) -> tuple[np.ndarray, ...]:
+    """The patterns of rule (A) (:func:`~paper_repro.core.half_angle_rules._rule_a_pattern`) for every
+    0 <= j <= m < n as ``((n + 1)^2, L)`` arrays ``(a, b, part, m', l, valid)`` indexed by m (n + 1) + j."""
+    pats = {(m, j): _rule_a_pattern(m, j) for m in range(n) for j in range(m + 1)}
+    width = max((len(p[0]) for p in pats.values()), default=1)
+    out = [np.zeros(((n + 1) ** 2, width), dtype=np.int64) for _ in range(5)]
+    ok = np.zeros(((n + 1) ** 2, width), dtype=bool)
+    for (m, j), p in pats.items():
+        row = m * (n + 1) + j
+        for k in range(5):
+            out[k][row, :len(p[k])] = p[k]
+        ok[row, :len(p[0])] = True
+    res = tuple(out) + (ok,)
+    for arr in res:
+        arr.setflags(write=False)
+    return res
+
+
+# --- step 2: the products with the members of T_2, vectorised ------------------------------------------------------
+def _apply_cotangent_terms(big: int, var: np.ndarray, terms: tuple[np.ndarray, ...], steps: np.ndarray
+                           ) -> tuple[np.ndarray, ...]:
+    """Apply ``L_var`` ``steps[t]`` times to each term ``(col, target, a, b, coef)`` (``var`` per term)."""
+    col, target, a, b, coef = terms
+    done = [tuple(arr[steps == 0] for arr in terms)]
+    col, target, a, b, coef, var, steps = (arr[steps > 0] for arr in (col, target, a, b, coef, var, steps))
+    while len(col):
+        parts_out = []
+        for v in range(3):
+            sel = var == v
+            if not sel.any():
+                continue
+            pos, t, aa, bb, cc = _gather(cotangent_csc_fast(big, v), target[sel])
+            idx = np.flatnonzero(sel)[pos]
+            parts_out.append((col[idx], t, a[idx] + aa, b[idx] + bb, coef[idx] * cc, var[idx], steps[idx] - 1))
+        col, target, a, b, coef, var, steps = (np.concatenate([p[k] for p in parts_out]) for k in range(7))
+        fin = steps == 0
+        done.append((col[fin], target[fin], a[fin], b[fin], coef[fin]))
+        col, target, a, b, coef, var, steps = (arr[~fin] for arr in (col, target, a, b, coef, var, steps))
+    return tuple(np.concatenate([d[k] for d in done]) for k in range(5))
+
+
+@cache
+def product_terms_fast(n: int, h: int) -> tuple[np.ndarray, ...]:
+    """The terms ``(rows, cols, a, b, coef)`` of :func:`~paper_repro.core.half_angle_rules.product_terms` (the
+    product of each member of T_{2n} with the member ``h`` of T_2, written in T_{2(n+1)}: Theorem P of
+    docs/elevation_and_derivative_for_all_n.md), built with numpy instead of one dictionary per column; merged
+    (:func:`~paper_repro.core.half_angle_rules.merge`).  ``n`` must be checked by the caller.
+
+    >>> from paper_repro.core.half_angle_rules import product_terms
+    >>> all(np.array_equal(x, y) for x, y in zip(product_terms_fast(3, 5), merge(product_terms(3, 5))))
+    True
+    """
+    big = n + 1
+    table = member_table_fast(big)
+    x, m, y, j = (member_parts_fast(n)[:, k] for k in range(4))
+    z = 3 - x - y
+    f = np.arange(delta_unchecked(n))
+    one = np.ones_like(f)
+    zero = np.zeros_like(f)
+    kind, var = order_one_parts()[h]
+    if kind in ("centre", "edge"):
+        centre = table[x, y, m + 1, j + 1]
+        terms = (f, centre, zero, zero, one)
+        if kind == "edge":
+            terms = _apply_cotangent_terms(big, np.full_like(f, var), terms, one)
+        return _merged(terms)
+    out = []
+    case1 = (var == x) | ((m == n) & (var == z))
+    sel = case1
+    out.append((f[sel], table[var, y[sel], m[sel], j[sel]], zero[sel], zero[sel], one[sel]))
+    case2 = ~case1 & ((var == z) | (j == m))
+    cos = np.where(var == z, y, z)
+    jj = np.where(var == z, j, m)
+    sel = case2 & (m == n)
+    out.append((f[sel], table[var, cos[sel], n, jj[sel]], zero[sel], zero[sel], one[sel]))
+    sel = case2 & (m < n)
+    out.append((f[sel], table[x[sel], cos[sel], m[sel] + 2, jj[sel] + 2], zero[sel], one[sel], one[sel]))
+    out.append((f[sel], table[x[sel], cos[sel], m[sel] + 2, jj[sel]], zero[sel], zero[sel], one[sel]))
+    case3 = ~case1 & ~case2  # S_Y^2 m_f with j < m: L_Y^(m - j) of p
+    sel = case3 & (m < n)
+    p = [(f[sel], table[x[sel], z[sel], m[sel] + 2, m[sel] + 2], zero[sel], one[sel], one[sel]),
+         (f[sel], table[x[sel], z[sel], m[sel] + 2, m[sel]], zero[sel], zero[sel], one[sel])]
+    sel = case3 & (m == n)
+    p.append((f[sel], table[y[sel], x[sel], n, n], zero[sel], zero[sel], one[sel]))
+    pt = tuple(np.concatenate([q[k] for q in p]) for k in range(5))
+    steps = (m - j)[pt[0]]
+    out.append(_apply_cotangent_terms(big, y[pt[0]], pt, steps))
+    return _merged(tuple(np.concatenate([o[k] for o in out]) for k in range(5)))
+
+
+def _merged(terms: tuple[np.ndarray, ...]) -> tuple[np.ndarray, ...]:
+    """Terms ``(col, target, a, b, coef)`` as the merged form ``(rows, cols, a, b, coef)``."""
+    col, target, a, b, coef = terms
+    out = merge((target, col, a, b, coef))
+    for arr in out:
+        arr.setflags(write=False)
+    return out
+
+
+@cache
+def factorization(n: int) -> tuple[np.ndarray, np.ndarray]:
+    """``(f', h)`` for every member f of T_{2n}, n >= 2: the scaled member m_f is the product of the member f' of
+    T_{2n-2} and the member h of T_2 (exponent vectors add).  With the parts ``M_X(m; Y, j)`` of m_f: the centre
+    ``S_X S_Y S_Z`` times ``M_X(m - 1; Y, j - 1)`` if j >= 1; the edge ``S_X C_Y S_Z`` times ``M_X(m - 1; Y, j)`` if
+    j = 0 < m; the corner ``S_X^2`` times ``M_X(0; Y, 0) = S_X^(2n - 2)`` if m = 0.
+
+    >>> fp, h = factorization(2)
+    >>> bool((exponent_matrix(2) == exponent_matrix(1)[fp] + exponent_matrix(1)[h]).all())
+    True
+    """
+    x, m, y, j = (member_parts_fast(n)[:, k] for k in range(4))
+    small = member_table_fast(n - 1)
+    kinds = order_one_parts()
+    centre = kinds.index(("centre", -1))
+    edge = np.array([kinds.index(("edge", v)) for v in range(3)])
+    corner = np.array([kinds.index(("corner", v)) for v in range(3)])
+    fp = np.where(j >= 1, small[x, y, np.maximum(m - 1, 0), np.maximum(j - 1, 0)],
+                  np.where(m >= 1, small[x, y, np.maximum(m - 1, 0), 0], small[x, y, 0, 0]))
+    h = np.where(j >= 1, centre, np.where(m >= 1, edge[y], corner[x]))
+    if not (exponent_matrix(n) == exponent_matrix(n - 1)[fp] + exponent_matrix(1)[h]).all():  # pragma: no cover
+        raise AssertionError(f"the factorization of T_{2 * n} failed")
+    fp.setflags(write=False)
+    h.setflags(write=False)
+    return fp, h
+
+
+# --- step 1: order one by substitution and the cotangent rules ------------------------------------------------------
+def _cotangent_dense(var: int, kp: float, sg: float) -> np.ndarray:
+    """L_var on T_2 as a dense 7 x 7 float matrix at (kappa', sigma') (zero columns where m_g has no S_var)."""
+    out = np.zeros((7, 7))
+    e = exponent_matrix(1)
+    for g in range(7):
+        if e[g, 2 * var]:
+            for a, b, c, t in cotangent(1, var, g).tolist():
+                out[t, g] += c * kp ** a * sg ** b
+    return out
+
+
+def _binomial_factor(s: int, c: int, sin_image: tuple[float, float], cos_image: tuple[float, float]) -> np.ndarray:
+    """Coefficients of C^t (t = 0..s + c) in ``(p S + q C)^s (r S + w C)^c`` with ``sin_image = (p, q)``,
+    ``cos_image = (r, w)`` (then S^(s+c-t) C^t is L^t of S^(s+c))."""
+    out = [1.0]
+    for lo, hi in [sin_image] * s + [cos_image] * c:  # multiply by (lo + hi C), in a fixed order (no BLAS)
+        out = [lo * out[0]] + [lo * out[t] + hi * out[t - 1] for t in range(1, len(out))] + [hi * out[-1]]
+    return np.array(out)
+
+
+def order_one_restriction(part: str, kp: float, sg: float, *, absolute: bool = False) -> np.ndarray:
+    """R_1 (7 x 7): ``m_h o x_part = sum_g R_1[g, h] m'_g`` for the scaled members of T_2 at alpha (left) and
+    alpha/2 (right), ``kp, sg = cos(alpha/4), sin^2(alpha/4)``.  With s = sin(alpha/2) = 2 s' kappa':
+
+    * translation in the variable x (part 'u', 'v', 'w'): S_x -> (kappa' S'_x + C'_x)/(2 kappa'),
+      C_x -> kappa' C'_x - sigma' S'_x, the other two S_y -> S'_y/(2 kappa'), C_y -> C'_y;
+    * point reflection ('middle'): every S_x -> (C'_x - kappa' S'_x)/(2 kappa'), C_x -> kappa' C'_x + sigma' S'_x;
+
+    and each monomial S'^(e - t) C'^t (times the rest) is L^t of the member with S'^e (the cotangent rules;
+    a function divisible by S'_x has no member without S'_x in its expansion, so L applies term by term).
+    ``absolute``: the same computation with the images' coefficients replaced by their absolute values (every
+    other quantity is already non-negative), the majorant of the running-error bound.
+    """
+    e = exponent_matrix(1)
+    index = {tuple(int(v) for v in row): k for k, row in enumerate(e)}
+    lops = [_cotangent_dense(v, kp, sg) for v in range(3)]
+    variables = (0, 1, 2) if part == "middle" else ("uvw".index(part),)
+    if part == "middle":
+        sin_image, cos_image = (-kp, 1.0), (sg, kp)
+    else:
+        sin_image, cos_image = (kp, 1.0), (-sg, kp)
+    if absolute:
+        sin_image, cos_image = (abs(sin_image[0]), 1.0), (abs(cos_image[0]), kp)
+    out = np.zeros((7, 7))
+    for h in range(7):
+        base = e[h].copy()
+        for v in variables:
+            base[2 * v] += base[2 * v + 1]
+            base[2 * v + 1] = 0
+        vec = np.zeros(7)
+        vec[index[tuple(int(t) for t in base)]] = 1.0
+        for v in variables:
+            poly = _binomial_factor(int(e[h, 2 * v]), int(e[h, 2 * v + 1]), sin_image, cos_image)
+            acc = poly[-1] * vec  # Horner in L_v
+            for t in range(len(poly) - 2, -1, -1):
+                acc = ordered_matmul(lops[v], acc[:, None])[:, 0] + poly[t] * vec
+            vec = acc
+        out[:, h] = vec * (2.0 * kp) ** -float(e[h, 0] + e[h, 2] + e[h, 4])
+    return out
+
+
+# --- the recursion --------------------------------------------------------------------------------------------------
+@cache
+def _level_terms(k: int) -> tuple[np.ndarray, ...]:
+    """The seven product forms of order k - 1 (:func:`product_terms_fast`) concatenated: ``(rows, cols, a, b, coef,
+    h)``, sorted by (rows, cols) (stable), with the start of each (row, col) run."""
+    forms = [product_terms_fast(k - 1, h) for h in range(7)]
+    cat = [np.concatenate([f[i] for f in forms]) for i in range(5)]
+    hidx = np.concatenate([np.full(len(f[0]), h) for h, f in enumerate(forms)])
+    order = np.lexsort((cat[1], cat[0]))  # by row, then column; stable within (h, the form's order)
+    out = tuple(arr[order] for arr in cat) + (hidx[order],)
+    for arr in out:
+        arr.setflags(write=False)
+    return out
+
+
+@cache
+def _pattern(k: int, used: tuple[int, ...]) -> tuple[np.ndarray, ...]:
+    """For the members h in ``used``: the positions of their terms in :func:`_level_terms`, the start of each
+    (row, col) run among them, and the CSR ``indptr``, ``indices`` of the distinct (row, col)."""
+    rows, cols, _, _, _, hidx = _level_terms(k)
+    keep = np.zeros(7, dtype=bool)
+    keep[list(used)] = True
+    pos = np.flatnonzero(keep[hidx])
+    r, c = rows[pos], cols[pos]
+    starts = np.flatnonzero(np.r_[True, (r[1:] != r[:-1]) | (c[1:] != c[:-1])])
+    indptr = np.searchsorted(r[starts], np.arange(delta_unchecked(k) + 1))
+    out = (pos, starts, indptr, c[starts].copy())
+    for arr in out:
+        arr.setflags(write=False)
+    return out
+
+
+def _level_values(k: int, kp: float, sg: float, absolute: bool) -> np.ndarray:
+    """The value of every term of :func:`_level_terms` at (kappa', sigma'): coef kappa'^a sigma'^b (coef >= 0)."""
+    _, _, a, b, coef, _ = _level_terms(k)
+    kpow = kp ** np.arange(int(a.max()) + 1)
+    spow = sg ** np.arange(int(b.max()) + 1)
+    vals = coef.astype(np.float64) * kpow[a] * spow[b]
+    return np.abs(vals) if absolute else vals
+
+
+def _combined(k: int, weights: np.ndarray, vals: np.ndarray) -> sp.csr_matrix:
+    """Q = sum_h weights[h] P_h (order k - 1 -> k) as CSR, each entry summed in a fixed order."""
+    used = tuple(int(h) for h in np.flatnonzero(weights))
+    pos, starts, indptr, indices = _pattern(k, used)
+    hidx = _level_terms(k)[5]
+    data = np.add.reduceat(vals[pos] * weights[hidx[pos]], starts) if len(pos) else np.zeros(0)
+    return sp.csr_matrix((data, indices, indptr), shape=(delta_unchecked(k), delta_unchecked(k - 1)))
+
+
+def restriction_matrices(n: int, alpha: float, *, absolute: bool = False, first: list | None = None
+                         ) -> tuple[np.ndarray, ...]:
+    """The four R_n^k (scaled members at alpha -> scaled members at alpha/2), in the order of :data:`PARTS`;
+    ``absolute``: the product matrices in absolute values (they are non-negative: only the sums' bits change);
+    ``first``: the two 7 x 7 matrices R_1 of parts 'u' and 'middle' to start from (default: computed).  ``n >= 1``
+    and ``alpha`` in [ALPHA_TINY, pi) checked by the caller.
+
+    Corners 'v' and 'w' are corner 'u' with the variables exchanged (T_{2n} is invariant under the permutations of
+    (u, v, w), :func:`~paper_repro.core.labels.variable_swap`): ``R^v = Pi R^u Pi`` for the swap of u and v."""
+    kp, sg = _float_half_angle(alpha / 2)
+    r1 = first if first is not None else [order_one_restriction(p, kp, sg) for p in ("u", "middle")]
+    rs = [r.copy() for r in r1]
+    for k in range(2, n + 1):
+        fp, hh = factorization(k)
+        vals = _level_values(k, kp, sg, absolute)
+        d = delta_unchecked(k)
+        new = []
+        for r, w in zip(rs, r1):
+            out = np.empty((d, d))
+            for g in range(7):
+                cols = _columns(k, g)
+                if len(cols):
+                    out[:, cols] = _combined(k, w[:, g], vals) @ r[:, fp[cols]]
+            new.append(out)
+        rs = new
+    ru, rm = rs
+    return (ru, _swapped(ru, n, 1), _swapped(ru, n, 2), rm)
+
+
+@cache
+def _columns(k: int, g: int) -> np.ndarray:
+    """The members of T_{2k} whose factor in T_2 (:func:`factorization`) is g."""
+    out = np.flatnonzero(factorization(k)[1] == g)
+    out.setflags(write=False)
+    return out
+
+
+def _swapped(r: np.ndarray, n: int, var: int) -> np.ndarray:
+    """Corner ``var`` from corner u: exchange u and var in rows and columns (the permutation of
+    :func:`~paper_repro.core.labels.variable_swap`, here by a sorted-key lookup; tested equal)."""
+    pi = swap_permutation(n, var)
+    return r[np.ix_(pi, pi)]
+
+
+@cache
+def swap_permutation(n: int, var: int) -> np.ndarray:
+    """``variable_swap(n, 0, var)``: the index of each member with the variables u and ``var`` exchanged."""
+    e = exponent_matrix(n).astype(np.int64)
+    weights = 64 ** np.arange(6, dtype=np.int64)
+    cols = list(range(6))
+    cols[0:2], cols[2 * var:2 * var + 2] = cols[2 * var:2 * var + 2], cols[0:2]
+    keys = e @ weights
+    order = np.argsort(keys)
+    want = e[:, cols] @ weights
+    pi = order[np.searchsorted(keys[order], want)]
+    if not np.array_equal(keys[pi], want):  # pragma: no cover - T_2n is invariant under the exchange
+        raise AssertionError(f"T_{2 * n} is not invariant under exchanging u and {'uvw'[var]}")
+    pi.setflags(write=False)
+    return pi
+
+
+@lru_cache(maxsize=32)
+def _normalizers(n: int, alpha: float) -> tuple[np.ndarray, np.ndarray]:
+    k0, s0 = _float_half_angle(alpha)
+    k1, s1 = _float_half_angle(alpha / 2)
+    return scaled_coefficients(n, k0, s0, _F), scaled_coefficients(n, k1, s1, _F)
+
+
+def _gamma(m: int) -> float:
+    u = 2.0 ** -53
+    return m * u / (1 - m * u)
+
+
+def subdivision_matrices_float(n: int, alpha: float, *, bound: bool = False):
+    """The four S_k (:func:`paper_repro.core.subdivision.subdivision_matrices`) in float64 by the product route,
+    ``n >= 1`` and ``alpha`` in (0, pi) checked by the caller (below :data:`ALPHA_TINY` computed at ALPHA_TINY).
+
+    ``bound=True`` returns ``(matrices, bounds)`` with the rounding part B of the running-error bound of
+    docs/subdivision_for_all_n.md, section 9: ``|S_float - S| <= B + (2 eps_x + 3u)(|S_float| + B)``, eps_x the
+    relative error of the float scaled coefficients.  With F the level recursion (multilinear in R_1 with
+    non-negative coefficients), e_1 = gamma_128 times the majorant of R_1's own computation and K_L the roundings of
+    the levels (:func:`rounding_count` minus R_1's 64): ``B = D (F(|R_1| + 2 e_1) - F(|R_1|) + gamma_{2 K_L}
+    F(|R_1| + 2 e_1)) D`` with D the normalization.  First order in u; computed, not certified."""
+    alpha = max(float(alpha), ALPHA_TINY)
+    x0, x1 = _normalizers(n, alpha)
+    scale = x0[None, :] / x1[:, None]
+    kp, sg = _float_half_angle(alpha / 2)
+    r1 = [order_one_restriction(p, kp, sg) for p in ("u", "middle")]
+    mats = tuple(r * scale for r in restriction_matrices(n, alpha, first=r1))
+    if not bound:
+        return mats
+    e1 = [_gamma(128) * order_one_restriction(p, kp, sg, absolute=True) for p in ("u", "middle")]
+    low = restriction_matrices(n, alpha, absolute=True, first=[abs(r) for r in r1])
+    high = restriction_matrices(n, alpha, absolute=True, first=[abs(r) + 2 * e for r, e in zip(r1, e1)])
+    g = _gamma(2 * (rounding_count(n) - 64))
+    return mats, tuple(((h - lo) + g * h) * scale for h, lo in zip(high, low))
+
+
+def rounding_count(n: int) -> int:
+    """K of the running-error bound: an upper bound of the roundings along any path of the recursion
+    (docs/subdivision_for_all_n.md, section 9).  Order one: per variable at most 2 binomial products and 2 Horner
+    steps of (a 7-term sum, a product, a sum), times three variables, and the prefactor (2 kappa')^-3: 64.  Per level
+    k: the evaluation of a product entry (the powers of kappa', sigma' up to the form's degree, the integer factor,
+    the sum of the entry's monomials), the sparse row sum (its length), the weight, the sum over the seven h.  Then
+    2 for the normalization x_f / x'_g.
+
+    >>> rounding_count(1), rounding_count(2) > rounding_count(1)
+    (66, True)
+    """
+    k_total = 64
+    for k in range(2, n + 1):
+        worst = 0
+        for h in range(7):
+            rows, cols, a, b, _ = product_terms_fast(k - 1, h)
+            per_entry = np.unique(rows * (delta_unchecked(k - 1) + 1) + cols, return_counts=True)[1].max()
+            per_row = np.unique(rows, return_counts=True)[1].max()
+            worst = max(worst, int(a.max() + b.max()) + 2 + int(per_entry) + int(per_row))
+        k_total += worst + 1 + 7
+    return k_total + 2
+
+
+__all__ = ["PARTS", "ALPHA_TINY", "product_terms_fast", "factorization", "order_one_restriction",
+           "restriction_matrices", "subdivision_matrices_float", "rounding_count"]
