@@ -62,7 +62,8 @@ OPEN_QUESTIONS = [
      "linear conditions for every n, the edge coefficients in closed form (docs/joins_for_all_n.md); the "
      "torus and the cyclide pieces of Section 6 join C1 (exactly, at sampled rational α; the cyclide through its "
      "homogeneous nets). Proven for every n: a negative corner entry (Corollary W), so midpoint subdivision is "
-     "not corner cutting; no Bézier-type de Casteljau step at the sampled α (exact certificates, n ≤ 4). Adaptive tessellation within a tolerance, its bound proven (docs/tessellation.md). Measured only: "
+     "not corner cutting; no Bézier-type de Casteljau step at the sampled α (exact certificates, n ≤ 4). "
+     "Adaptive tessellation within a tolerance, its bound proven (docs/tessellation.md). Measured only: "
      "the rates at which sub-nets approach the patch (h² at the boundary, h inside at the layout positions). Still "
      "open: the remaining signs for n ≥ 3, the de Casteljau question at other α, proofs of the convergence rates."),
 ]
