@@ -190,6 +190,7 @@ def clean(tex: str, arrays: list | None = None) -> str:
     s = re.sub(r"\\(" + "|".join(COLOURS) + r")\s*\{", "{", s)
     s = _replace_macro(s, "underset", 2, lambda a, b: b)
     s = _replace_macro(s, "overset", 2, lambda a, b: b)
+    s = _replace_macro(s, "underbrace", 1, lambda a: "{" + a + "}")  # after underset: \underset{..}{\underbrace{X}}
     s = _replace_macro(s, "operatorname", 1, lambda a: "\\" + a.strip() + " ")
     for kind in DECOR:
         s = _replace_macro(s, kind, 1, functools.partial(_decor, kind))
@@ -668,7 +669,12 @@ class _Build(Transformer):
 
     # functions
     def func(self, c):
-        return FUNCS[_name(c[0])](c[1])
+        name, arg = _name(c[0]), c[1]
+        if name in ("min", "max") and isinstance(arg, sympy.Function) and arg.func == Family \
+                and not arg.args[1] and not arg.args[2]:  # \min\left\{a,b,c\right\}: a listed set, no condition
+            members = arg.args[0].args if isinstance(arg.args[0], sympy.Tuple) else (arg.args[0],)
+            return (sympy.Min if name == "min" else sympy.Max)(*members)
+        return FUNCS[name](arg)
 
     def func_pow(self, c):
         return FUNCS[_name(c[0])](c[2]) ** self._scalar(c[1])
