@@ -386,29 +386,31 @@ def test_level_zeroed_reads_the_constants(right, wrong):
 
 
 # -- the readers of Sections 1-2 (issue 37) ------------------------------------------------------------------------
-@pytest.mark.parametrize("line_id", ["sec1_3-R-leq-n", "sec1_3-G-geq-explicit", "sec1_3-B-leq-explicit",
-                                     "sec1_3-univariate-basis", "sec1_3-bernstein-identity"])
-def test_interim_reader_agrees_with_latex_math(line_id):
-    """tex_expr.parse delegates to printed/latex_math; the interim reader written before it gives the same objects."""
-    import re
-
+@pytest.mark.parametrize("line_id", ["sec1_3-R-leq-n", "sec1_3-G-geq-explicit", "sec1_3-B-leq-explicit"])
+def test_explicit_formulas_are_read_by_latex_math(line_id):
+    """The explicit R, G, B displays are read by printed/latex_math (no reader of their own): the set-builder's
+    member is a product of half-angle powers whose exponents use n, i, j only, and a blank body is refused."""
     import sympy
 
+    from paper_repro.printed import symmetry as S
+    from paper_repro.printed.latex_math import LatexMathError
     from paper_repro.printed.lines import verbatim
-    from paper_repro.printed.lines.tex_expr import own_parse, parse
 
-    text = verbatim(line_id)
-    bodies = re.findall(r"\\left\\\{(.*?)(?::|\\right\\\})", text) or re.findall(r"\\\[(.*?)=1", text)
-    assert bodies
-    for body in bodies:
-        a, b = own_parse(body), parse(body)
-        assert a == b or sympy.simplify(a - b) == 0, (a, b)
+    body = S.set_builders(verbatim(line_id))[-1][0]
+    powers = S.half_angle_powers(S.parse(body))
+    assert {x for _, x in powers} <= set(S.VARS) and len(powers) >= 2
+    assert set().union(*(sympy.sympify(e).free_symbols for e in powers.values())) <= set(sympy.symbols("n i j"))
+    with pytest.raises(LatexMathError):
+        S.half_angle_powers(S.parse(r"\sin^{i}\frac{w}{3}"))  # not a half angle
+    with pytest.raises(LatexMathError):
+        S.parse("XXX")
+    assert S.bound("2n-1-j", n=3, j=1) == 4
 
 
 def test_printed_symmetry_objects_come_from_the_transcriptions():
     from paper_repro.printed import symmetry as S
+    from paper_repro.printed.latex_math import LatexMathError as TexError
     from paper_repro.printed.lines import substituted, verbatim
-    from paper_repro.printed.lines.tex_expr import TexError
 
     assert S.printed_half() == {"R": (2, 1, 0), "G": (0, 2, 1), "B": (1, 0, 2)}
     assert len(S.six_properties()) == S.six_count() == 6

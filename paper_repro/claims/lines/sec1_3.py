@@ -34,10 +34,11 @@ from paper_repro.claims.lines.sec12_eval import c_exact, c_indep, num, sign_word
 from paper_repro.core.domain import rational_alpha
 from paper_repro.core.labels import BasisLabel, compose, delta, exponents, full_system, index_of, united_system
 from paper_repro.core.univariate import c_const, c_numerator, c_numerator_by_expansion
+from paper_repro.printed import latex_math as lm
 from paper_repro.printed import symmetry as printed_sym
+from paper_repro.printed.latex_math import LatexMathError
 from paper_repro.printed.lines import line as transcribed_line
 from paper_repro.printed.lines import lines_of, verbatim
-from paper_repro.printed.lines.tex_expr import TexError, clean, parse, relation
 from paper_repro.theory.derivatives import mixed_derivative, sign, sin_power_derivative
 
 HALF = fmpq(1, 2)
@@ -45,6 +46,27 @@ HALF = fmpq(1, 2)
 ALPHA_TS = (fmpq(1, 2), fmpq(3, 4))
 X_FRACTIONS = (fmpq(1, 3), fmpq(5, 7))
 N_PROOF = range(1, 7)  # orders n for which the proof's steps are recomputed
+
+
+# -- reading (paper_repro.printed.latex_math) -------------------------------------------------------------------
+@cache
+def parse(tex: str) -> sympy.Expr:
+    """One expression, by :func:`paper_repro.printed.latex_math.parse` (cached by the text read)."""
+    return lm.parse(tex)
+
+
+@cache
+def relation(tex: str) -> list[sympy.Expr]:
+    """The parts of an equality chain ``a = b = c`` (every relation ``=``, no trailing clause), by
+    :func:`paper_repro.printed.latex_math.parse_relation`; :class:`LatexMathError` on anything else.
+
+    >>> relation(r"c_{2n,i}^{\\alpha}=c_{2n,2n-i}^{\\alpha}")
+    [c(2*n, i), c(2*n, -i + 2*n)]
+    """
+    rel = lm.parse_relation(tex)
+    if rel.lead not in (None, "=") or any(op != "=" for op in rel.ops) or rel.conditions:
+        raise LatexMathError(f"not an equality chain: {rel.lead} {rel.ops} {len(rel.conditions)} clauses")
+    return rel.parts
 
 
 # -- exact half-angle arithmetic ------------------------------------------------------------------------------
@@ -259,20 +281,30 @@ def read_interval(tex: str, var: str) -> tuple[bool, sympy.Expr, sympy.Expr, boo
     """``(lo closed, lo, hi, hi closed)`` of the printed ``var \\in \\left( lo,hi \\right)`` (``var`` a regex)."""
     m = re.search(var + _INTERVAL, tex)
     if not m:
-        raise TexError(f"no interval for {var} in {tex[:60]!r}")
+        raise LatexMathError(f"no interval for {var} in {tex[:60]!r}")
     return m.group(1) == "[", parse(m.group(2)), parse(m.group(3)), m.group(4) == "]"
 
 
 def listed(tex: str, var: str) -> tuple[sympy.Expr, sympy.Expr]:
-    """(first, last) of the printed ``var=a,b,\\ldots,c`` whose step b - a must be 1 (every index between)."""
-    text = clean(tex)
-    m = re.search(rf"(?<![\w\\]){var}\s*=\s*([^,=]+?)\s*,\s*([^,=]+?)\s*,\s*\\ldots\s*,\s*([^,\s$]+?)\s*(?:[.,$]|$)",
-                  text)
-    if not m:
-        raise TexError(f"no listed range {var}=a,b,...,c")
-    a, b, c = (parse(x) for x in m.groups())
+    """(first, last) of the printed ``var=a,b,\\ldots,c`` whose step b - a must be 1 (every index between): the
+    clause ``var in (a, b, ldots, c)`` of :func:`paper_repro.printed.latex_math.parse_relation` (the relation itself
+    or one of its trailing clauses).
+
+    >>> listed(r"i=0,1,\\ldots,2n", "i")
+    (0, 2*n)
+    """
+    rel = lm.parse_relation(tex)
+    v = sympy.Symbol(var)
+    found = [r for r in (rel, *rel.conditions) if r.ops == ["in"] and r.parts[0] == v
+             and isinstance(r.parts[1], sympy.Tuple)]
+    if len(found) != 1:
+        raise LatexMathError(f"no listed range {var}=a,b,...,c")
+    items = found[0].parts[1].args
+    if len(items) != 4 or items[2] != lm.LDOTS or lm.LDOTS in items[:2] + items[3:]:
+        raise LatexMathError(f"the listed range {var}={items} is not a,b,...,c")
+    a, b, _, c = items
     if sympy.simplify(b - a - 1) != 0:
-        raise TexError(f"the listed range {var}={m.group(1)},{m.group(2)},... does not step by 1")
+        raise LatexMathError(f"the listed range {var}={a},{b},... does not step by 1")
     return a, c
 
 
@@ -285,7 +317,7 @@ def _env_int(expr: sympy.Expr, **env: int) -> int:
     """Integer value of a parsed index or bound (every name bound by ``env``)."""
     v = num(expr, env, {})
     if v != int(v):
-        raise TexError(f"{expr} is not an integer at {env}")
+        raise LatexMathError(f"{expr} is not an integer at {env}")
     return int(v)
 
 
@@ -323,7 +355,7 @@ def alpha_range() -> LineResult:
             try:
                 lo_c, lo, hi, hi_c = read_interval(ln.verbatim, r"\\alpha")
                 lo_v, hi_v = num(lo, {}), num(hi, {})
-            except (TexError, ValueError) as exc:
+            except (LatexMathError, ValueError) as exc:
                 return _unread(how, exc, "exhaustive")
             inside = all(_basis_alpha_ok(lo_v + (hi_v - lo_v) * k / 9) for k in range(1, 9)) and lo_v < hi_v
             ends = all(_basis_alpha_ok(e) if closed else not _basis_alpha_ok(e)
@@ -342,30 +374,28 @@ def _member_labels(tex: str) -> list[tuple[str, str, str, tuple[int, ...]]]:
     system display, as (colour, first index, level, argument permutation)."""
     found = printed_sym.set_builders(tex)
     if not found:
-        raise TexError(f"no set-builder in {tex[:60]!r}")
+        raise LatexMathError(f"no set-builder in {tex[:60]!r}")
     members, _, domain = found[-1][0].partition(":")
     _require_omega(domain)
     out = [printed_sym.label(m.group()) for m in re.finditer(r"[RGB]_\{[^{}]*\}\^\{\\alpha\}\s*%?\s*\\left\(\s*"
                                                              r"[uvw]\s*,\s*[uvw]\s*,\s*[uvw]\s*\\right\)", members)]
     if not out:
-        raise TexError(f"no member label in {members[:60]!r}")
+        raise LatexMathError(f"no member label in {members[:60]!r}")
     return out
-
-
-_OMEGA = re.compile(r"\s*\(\s*u\s*,\s*v\s*,\s*w\s*\)\s*\\in\s*\\Omega\^\{\\alpha\}\s*$")
 
 
 def _require_omega(domain: str) -> None:
     """The domain of a system must read ``(u,v,w) \\in \\Omega^{\\alpha}`` (membership in the printed triangle)."""
-    if not _OMEGA.match(clean(domain)):
-        raise TexError(f"the domain {domain.strip()[:40]!r} is not (u,v,w) in Omega^alpha")
+    r = lm.parse_relation(domain)
+    if r.ops != ["in"] or r.conditions or r.parts != [sympy.Tuple(*sympy.symbols("u v w")), sympy.Symbol("Omega")]:
+        raise LatexMathError(f"the domain {domain.strip()[:40]!r} is not (u,v,w) in Omega^alpha")
 
 
 def _index_value(first: str, level: str, n: int, i: int, j: int) -> tuple[int, int]:
     """(i, j) of the label X_{2n,first,level} at (n, i, j): first = 2n - i'."""
     f, lv = _index_fn(first, level)(n, i, j)
     if f != int(f) or lv != int(lv):
-        raise TexError(f"index ({first}, {level}) is not an integer at n={n}, i={i}, j={j}")
+        raise LatexMathError(f"index ({first}, {level}) is not an integer at n={n}, i={i}, j={j}")
     return 2 * n - int(f), int(lv)
 
 
@@ -374,7 +404,7 @@ def _index_fn(first: str, level: str):
     n, i, j = sympy.symbols("n i j")
     exprs = [sympy.sympify(first), sympy.sympify(level)]
     if set().union(*(e.free_symbols for e in exprs)) - {n, i, j}:
-        raise TexError(f"index ({first}, {level}) names unknown symbols")
+        raise LatexMathError(f"index ({first}, {level}) names unknown symbols")
     return sympy.lambdify((n, i, j), exprs, "math")
 
 
@@ -406,7 +436,7 @@ def united_dedupe(verbatim_text: str | None = None) -> LineResult:
     try:
         members = _member_labels(tex)
         if [m[0] for m in members] != list("RGB") or any(m[3] != (0, 1, 2) for m in members):
-            raise TexError(f"members {members} are not R, G, B at (u, v, w)")
+            raise LatexMathError(f"members {members} are not R, G, B at (u, v, w)")
         for n in range(1, 21):
             pairs = _read_pairs(tex, n)
             centre = _centre_members(n)
@@ -416,7 +446,7 @@ def united_dedupe(verbatim_text: str | None = None) -> LineResult:
             ok &= good
             if not good:
                 bad.append(n)
-    except (TexError, ValueError) as exc:
+    except (LatexMathError, ValueError) as exc:
         return _unread(how, exc, "exhaustive")
     return LineResult(ok, how=how, kind="exhaustive", detail={"n_max": 20, "failing_n": bad[:3]})
 
@@ -435,13 +465,13 @@ def levels() -> LineResult:
     try:
         m = _LEVELS.search(verbatim("sec1_3-graph-levels"))
         if not m:
-            raise TexError("no '$n\\geq k$ levels (numbered from $a$ to $b$)'")
+            raise LatexMathError("no '$n\\geq k$ levels (numbered from $a$ to $b$)'")
         least, lo, hi = int(m.group(1)), parse(m.group(2)), parse(m.group(3))
         named = re.search(r"We refer to the index \$(\w)\$ of these functions as levels", verbatim("sec1_3-levels-j"))
         ends = re.search(r"shrinking from the (\w+) to their common (\w+)", verbatim("sec1_3-levels-j"))
         if not named or not ends:
-            raise TexError("the named index or the nesting words are not read")
-    except (TexError, ValueError) as exc:
+            raise LatexMathError("the named index or the nesting words are not read")
+    except (LatexMathError, ValueError) as exc:
         return _unread(how, exc, "exhaustive")
     first_n = min(n for n in range(0, 4) if _has_levels(n))
     ok = least == first_n
@@ -478,14 +508,14 @@ def corners_centre() -> LineResult:
         count = re.search(r"The (\w+) outermost nodes", tex)
         maths = re.findall(r"\$([^$]*)\$", tex)
         if not count or count.group(1) not in _NUMBER_WORDS or len(maths) < 2:
-            raise TexError("the corner count or the functions are not read")
+            raise LatexMathError("the corner count or the functions are not read")
         corners_tex, centre_tex = maths[:-1], maths[-1]
         nodes = ("innermost", "outermost", "stored in an inner node", "vertices of the outermost")
         if not all(w in tex for w in nodes):
-            raise TexError("the nodes (outermost vertices, inner nodes, innermost centroid) are not read")
+            raise LatexMathError("the nodes (outermost vertices, inner nodes, innermost centroid) are not read")
         corner_f = [printed_sym.monomial(t) for t in corners_tex]
         centre_f = printed_sym.monomial(centre_tex)
-    except (TexError, ValueError) as exc:
+    except (LatexMathError, ValueError) as exc:
         return _unread(how, exc, "exhaustive")
     ok = len(corners_tex) == _NUMBER_WORDS[count.group(1)]
     for n in range(1, 21):
@@ -497,7 +527,7 @@ def corners_centre() -> LineResult:
         try:
             printed_corners = [f(n, 0, 0) for f in corner_f]
             members = _centre_members(n)
-        except (TexError, ValueError) as exc:
+        except (LatexMathError, ValueError) as exc:
             return _unread(how, exc, "exhaustive")
         ok &= sorted(printed_corners) == sorted(vertices) and len(set(printed_corners)) == len(printed_corners)
         ok &= {centre_f(n, 0, 0)} == centre and set(members) == centre and len(members) == 3
@@ -521,9 +551,9 @@ def nonnegative() -> LineResult:
     try:
         word, pred = sign_word(verbatim("sec1_3-nonnegative"))
         if not re.search(r"consist of \S+ functions", verbatim("sec1_3-nonnegative")):
-            raise TexError("not a statement about the functions")
+            raise LatexMathError("not a statement about the functions")
         funcs = {(c, h): printed_sym.explicit(c, h) for c in "RGB" for h in ("low", "high")}
-    except (TexError, ValueError) as exc:
+    except (LatexMathError, ValueError) as exc:
         return _unread(how, exc, "exhaustive")
     ok, count = True, 0
     for at in (fmpq(1, 2), fmpq(99, 100)):
@@ -564,16 +594,19 @@ def rgb_index_sets(override: dict[str, str] | None = None, n_max: int = 30) -> L
     try:
         for color, key in zip("RGB", INDEX_SET_LINES[:3]):
             if _member_labels(text[key]) != [(color, "2*n - i", "j", (0, 1, 2))]:
-                raise TexError(f"{key}: the member is not {color}_{{2n,2n-i,j}}(u,v,w)")
+                raise LatexMathError(f"{key}: the member is not {color}_{{2n,2n-i,j}}(u,v,w)")
         leq = printed_sym.set_builders(text["sec1_3-R-leq-n"])
         if not leq or printed_sym.label(leq[0][0]) != ("R", "2*n - i", "j", (0, 1, 2)):
-            raise TexError("sec1_3-R-leq-n: the left side is not R_{2n,2n-i,j}(u,v,w)")
-    except (TexError, ValueError) as exc:
+            raise LatexMathError("sec1_3-R-leq-n: the left side is not R_{2n,2n-i,j}(u,v,w)")
+    except (LatexMathError, ValueError) as exc:
         return _unread(how, exc, "exhaustive")
     for color, key in zip("RGB", INDEX_SET_LINES[:3]):
-        head = clean(text[key].split("\\left\\{", 1)[0]).replace(" ", "")
+        try:
+            head = lm.clean(text[key].split("\\left\\{", 1)[0]).replace(" ", "")
+        except LatexMathError as exc:
+            return _unread(how, exc, "exhaustive")
         if head != f"{color}_{{2n}}^{{\\alpha}}=":
-            return _unread(how, TexError(f"{key}: not '{color}_{{2n}}^alpha = ..' but {head!r}"), "exhaustive")
+            return _unread(how, LatexMathError(f"{key}: not '{color}_{{2n}}^alpha = ..' but {head!r}"), "exhaustive")
     for n in range(1, n_max + 1):
         try:
             sets = {k: _read_pairs(text[k], n) for k in INDEX_SET_LINES}
@@ -613,10 +646,10 @@ def order_n3() -> LineResult:
                         verbatim("sec1_3-fig-united-n3-caption"))
         t2n = re.match(r"\s*T_\{([^{}]+)\}\^\{\\alpha\}", verbatim("sec1_3-united-system"))
         if not m or not cap or not t2n:
-            raise TexError("the subscript or the orders are not read")
+            raise LatexMathError("the subscript or the orders are not read")
         sub, order, cap_n = int(m.group(1)), int(m.group(2)), int(cap.group(1))
         ok = sub == _env_int(parse(t2n.group(1)), n=order) and cap_n == order
-    except (TexError, ValueError) as exc:
+    except (LatexMathError, ValueError) as exc:
         return _unread(how, exc)
     labs = united_system(order)
     levels_ = {lb.j for lb in labs if not lb.is_centre}
@@ -648,23 +681,23 @@ def _boundary(line_id: str) -> LineResult:
         m = _RESTRICT.search(tex)
         found = printed_sym.set_builders_1(tex)
         if not m or not found:
-            raise TexError("no restriction T|_{x=a} = {..}_{i=..}^{..}")
+            raise LatexMathError("no restriction T|_{x=a} = {..}_{i=..}^{..}")
         t_order, var, value = parse(m.group(1)), m.group(2), parse(m.group(3))
         body, (iv, ilo, ihi) = found
         between = tex[m.end():tex.index(body)]
-        if clean(between).replace("\\{", "").strip() != "=":
-            raise TexError(f"the restriction and the set are not equated: {between!r}")
+        if lm.clean(between).replace("\\{", "").strip() != "=":
+            raise LatexMathError(f"the restriction and the set are not equated: {between!r}")
         member_tex, domain = body.split(":", 1)
         member = parse(member_tex)
         arg = read_interval(domain, "")  # [0, alpha]
         dom_var = re.match(r"\s*([uvw])\s*\\in", domain)
         a_terms = [f for f in member.atoms(AppliedUndef) if f.func.__name__ == "A"]
         if len(a_terms) != 1 or not dom_var or len(a_terms[0].args[2]) != 1:
-            raise TexError("the member is not one A_{2n,..}(x)/c")
+            raise LatexMathError("the member is not one A_{2n,..}(x)/c")
         x = str(a_terms[0].args[2][0])
         if x != dom_var.group(1) or x == var or arg != (True, sympy.Integer(0), sympy.Symbol("alpha"), True):
-            raise TexError(f"argument {x} on {arg} is not a remaining variable on [0, alpha]")
-    except (TexError, ValueError) as exc:
+            raise LatexMathError(f"argument {x} on {arg} is not a remaining variable on [0, alpha]")
+    except (LatexMathError, ValueError) as exc:
         return _unread(how, exc, "exhaustive")
     rest = [k for k in range(3) if k != printed_sym.VARS.index(var)]
     y = [printed_sym.VARS[k] for k in rest if printed_sym.VARS[k] != x][0]
@@ -675,7 +708,7 @@ def _boundary(line_id: str) -> LineResult:
         try:
             zero = _env_int(value, n=n) == 0
             idx = range(_env_int(parse(ilo), n=n), _env_int(parse(ihi), n=n) + 1)
-        except (TexError, ValueError) as exc:
+        except (LatexMathError, ValueError) as exc:
             return _unread(how, exc, "exhaustive")
         for _at, ha, hx in _edge_points():
             hy = _diff_half(ha, hx)
@@ -690,7 +723,7 @@ def _boundary(line_id: str) -> LineResult:
             for i in idx:
                 try:
                     printed.append(_edge_value(member, n, i, ha, hx, hy))
-                except (TexError, ValueError):
+                except (LatexMathError, ValueError):
                     printed.append(None)
             ok &= sorted(computed) == sorted(printed) if None not in printed else False
     return LineResult(ok, how=how, kind="exhaustive", detail={"variable": var, "argument": x})
@@ -710,13 +743,13 @@ def _edge_value(member: sympy.Expr, n: int, i: int, ha, hx, hy) -> fmpq:
     def a_fn(order, k, _args):
         m2, kk = _env_int(order, n=n, i=i), _env_int(k, n=n, i=i)
         if m2 != 2 * n:
-            raise TexError("A of another order")
+            raise LatexMathError("A of another order")
         return c_exact(n, kk, *ha) * hy[0] ** (m2 - kk) * hx[0] ** kk
 
     def c_fn(order, k):
         m2, kk = _env_int(order, n=n, i=i), _env_int(k, n=n, i=i)
         if m2 % 2:
-            raise TexError("c of odd order")
+            raise LatexMathError("c of odd order")
         return c_exact(m2 // 2, kk, *ha)
 
     out = fmpq(1)
@@ -727,7 +760,7 @@ def _edge_value(member: sympy.Expr, n: int, i: int, ha, hx, hy) -> fmpq:
         elif base.is_Integer:
             v = fmpq(int(base))
         else:
-            raise TexError(f"factor {base} of the member is not read")
+            raise LatexMathError(f"factor {base} of the member is not read")
         out *= v ** int(ex)
     return out
 
@@ -753,17 +786,17 @@ def _angle_points() -> list[tuple[fmpq, fmpq, fmpq]]:
 
 
 def _trig_exact(expr: sympy.Expr, sin_half: fmpq, cos_half: fmpq) -> fmpq:
-    """Exact value of an expression in sin(alpha/2), cos(alpha/2) and numbers (``TexError`` otherwise)."""
+    """Exact value of an expression in sin(alpha/2), cos(alpha/2) and numbers (``LatexMathError`` otherwise)."""
     a = sympy.Symbol("alpha")
     s_, c_ = sympy.Symbol("S_"), sympy.Symbol("C_")
     e = expr.xreplace({sympy.sin(a / 2, evaluate=False): s_, sympy.cos(a / 2, evaluate=False): c_})
     e = e.xreplace({sympy.sin(a / 2): s_, sympy.cos(a / 2): c_})
     if e.free_symbols - {s_, c_} or e.atoms(sympy.Function):
-        raise TexError(f"{expr} is not a function of the half angle of alpha")
+        raise LatexMathError(f"{expr} is not a function of the half angle of alpha")
     v = e.subs({s_: sympy.Rational(int(sin_half.p), int(sin_half.q)),
                 c_: sympy.Rational(int(cos_half.p), int(cos_half.q))})
     if not v.is_Rational:
-        raise TexError(f"{expr} is not rational at a rational half angle")
+        raise LatexMathError(f"{expr} is not rational at a rational half angle")
     return fmpq(int(v.p), int(v.q))
 
 
@@ -780,16 +813,16 @@ def c_formula() -> LineResult:
     try:
         word, pred = sign_word(tex.split("\\[", 1)[0])
         if not re.search(r"\bnormalizing\b", tex):
-            raise TexError("the coefficients are not said to normalize")
+            raise LatexMathError("the coefficients are not said to normalize")
         display = tex.split("\\[", 1)[1].split("\\]", 1)[0]
         formula, tail = re.split(r",\s*~?\s*(?=i\s*=)", display, maxsplit=1)
         lhs, rhs = relation(formula)
         lo, hi = listed(tail, "i")
         if not (isinstance(lhs, AppliedUndef) and lhs.func.__name__ == "c" and len(lhs.args) == 2):
-            raise TexError(f"left side {lhs} is not c_{{2n,i}}")
+            raise LatexMathError(f"left side {lhs} is not c_{{2n,i}}")
         if sympy.simplify(lhs.args[0] - 2 * sympy.Symbol("n")) != 0 or lhs.args[1] != sympy.Symbol("i"):
-            raise TexError(f"left side {lhs} is not c_{{2n,i}}")
-    except (TexError, ValueError) as exc:
+            raise LatexMathError(f"left side {lhs} is not c_{{2n,i}}")
+    except (LatexMathError, ValueError) as exc:
         return _unread(how, exc, "exhaustive")
     ok, bad = True, []
     n_, i_ = sympy.symbols("n i")
@@ -802,7 +835,7 @@ def c_formula() -> LineResult:
             for at, sh, ch in _angle_points():
                 try:
                     v = values[at, i] = _trig_exact(e, sh, ch)
-                except (TexError, ValueError, ZeroDivisionError) as exc:
+                except (LatexMathError, ValueError, ZeroDivisionError) as exc:
                     return _unread(how, exc, "exhaustive")
                 good = 0 <= i <= 2 * n and v == c_exact(n, i, sh, ch) and pred(v)
                 ok &= good
@@ -834,8 +867,8 @@ def c_symmetry() -> LineResult:
         lo, hi = listed(tail, "i")
         for side in (lhs, rhs):
             if not (isinstance(side, AppliedUndef) and side.func.__name__ == "c" and len(side.args) == 2):
-                raise TexError(f"{side} is not a c_{{..,..}}")
-    except (TexError, ValueError) as exc:
+                raise LatexMathError(f"{side} is not a c_{{..,..}}")
+    except (LatexMathError, ValueError) as exc:
         return _unread(how, exc, "exhaustive")
     ok = True
     for n in range(1, 31):
@@ -867,11 +900,11 @@ def _fourier_rows(members: list[sympy.Expr], names_: tuple[str, ...], ranges, pt
         env = dict(zip(names_, (r, g, b)))
         for f in members:
             if not isinstance(f, (sympy.sin, sympy.cos)):
-                raise TexError(f"member {f} is not a cosine or sine")
+                raise LatexMathError(f"member {f} is not a cosine or sine")
             arg = sympy.expand(f.args[0].subs({sympy.Symbol(k): x for k, x in env.items()}))
             poly = sympy.Poly(arg, u, v, w)
             if poly.total_degree() > 1 or poly.coeff_monomial(1) != 0 or arg.free_symbols - {u, v, w}:
-                raise TexError(f"argument {arg} is not a linear form in u, v, w")
+                raise LatexMathError(f"argument {arg} is not a linear form in u, v, w")
             forms.append((isinstance(f, sympy.sin), [int(poly.coeff_monomial(x)) for x in (u, v, w)]))
     for hu, hv, hw in pts:
         e = [_angle(h) for h in (hu, hv, hw)]
@@ -895,36 +928,36 @@ def fourier_dimension() -> LineResult:
     try:
         sys_tex = verbatim("sec1_3-fourier-system")
         if "largest linearly independent subset" not in sys_tex:
-            raise TexError("V_n is not the largest linearly independent subset")
+            raise LatexMathError("V_n is not the largest linearly independent subset")
         m = _TRIPLE.search(sys_tex)
         body = re.search(r"\\left\\\{(.*)\\right\\\}", sys_tex, re.S)
         if not m or not body:
-            raise TexError("no set {..}_{r=..,g=..,b=..}^{..,..,..}")
+            raise LatexMathError("no set {..}_{r=..,g=..,b=..}^{..,..,..}")
         names_, los, his = m.group(1, 3, 5), m.group(2, 4, 6), m.group(7, 8, 9)
         members_tex, domain = body.group(1).split(":", 1)
         if "\\Omega^{\\alpha}" not in domain or not re.search(r"\\left\(\s*u,v,w\s*\\right\)\s*\\in", domain):
-            raise TexError("the domain is not (u,v,w) in Omega^alpha")
+            raise LatexMathError("the domain is not (u,v,w) in Omega^alpha")
         members = [parse(t.group()) for t in re.finditer(r"\\(?:cos|sin)\\left\((.*?)\\right\)", members_tex)]
         if not members or len(members) != members_tex.count(",") + 1:
-            raise TexError(f"members of {members_tex!r} not read")
+            raise LatexMathError(f"members of {members_tex!r} not read")
         # the trivariate extension of the canonical basis {cos(it), sin(it)}: a cosine and a sine of one argument
         # r u + g v + b w, each index with its own variable
         args = {f.args[0] for f in members}
         kinds = sorted(type(f).__name__ for f in members)
         uvw = sympy.symbols("u v w")
         if len(args) != 1 or kinds != ["cos", "sin"]:
-            raise TexError("the members are not the cosine and the sine of one argument")
+            raise LatexMathError("the members are not the cosine and the sine of one argument")
         coeffs = [sympy.Poly(next(iter(args)), *uvw).coeff_monomial(x) for x in uvw]
         if sorted(str(c) for c in coeffs) != sorted(m.group(1, 3, 5)):
-            raise TexError(f"the argument {args} does not give each index its own variable")
+            raise LatexMathError(f"the argument {args} does not give each index its own variable")
         dim = re.search(r"common dimension \$\\delta_\{n\}=(.+?)\$", verbatim("sec1_3-span-coincide-dim"))
         same = re.search(r"spans the same vector space of functions as the constrained trivariate extension of the "
                          r"canonical basis of truncated Fourier series of order \$([^$]+)\$",
                          verbatim("sec1_3-abstract-same-span"))
         if not dim or not same:
-            raise TexError("the common dimension or the abstract's order is not read")
+            raise LatexMathError("the common dimension or the abstract's order is not read")
         delta_printed, order = parse(dim.group(1)), parse(same.group(1))
-    except (TexError, ValueError) as exc:
+    except (LatexMathError, ValueError) as exc:
         return _unread(how, exc)
     detail, ok = {}, True
     for n in (1, 2, 3):
@@ -935,7 +968,7 @@ def fourier_dimension() -> LineResult:
             k = _env_int(order, n=n)
             rows_a = _fourier_rows(members, names_, [(0, k + 1)] * 3, pts)
             d_printed = _env_int(delta_printed, n=n)
-        except (TexError, ValueError) as exc:
+        except (LatexMathError, ValueError) as exc:
             return _unread(how, exc)
         rows_t = [[hu[0] ** e[0] * hu[1] ** e[1] * hv[0] ** e[2] * hv[1] ** e[3] * hw[0] ** e[4] * hw[1] ** e[5]
                    for e in (exponents(lb) for lb in united_system(n))] for hu, hv, hw in pts]
@@ -961,11 +994,11 @@ def univariate_span() -> LineResult:
         lhs, member = parse(lb), parse(rb)
         if (lv, llo, lhi) != (rv, rlo, rhi) or ldom != rdom or ldom[:2] != ("t", (True, 0, sympy.Symbol("alpha"),
                                                                                    True)):
-            raise TexError("the two sides are not on one index set and one domain t in [0, alpha]")
+            raise LatexMathError("the two sides are not on one index set and one domain t in [0, alpha]")
         if not (isinstance(lhs, AppliedUndef) and lhs.func.__name__ == "A" and lhs.args[1] == sympy.Symbol(lv)
                 and tuple(lhs.args[2]) == (sympy.Symbol("t"),)):
-            raise TexError(f"left member {lhs} is not A_{{2n,{lv}}}(t)")
-    except (TexError, ValueError) as exc:
+            raise LatexMathError(f"left member {lhs} is not A_{{2n,{lv}}}(t)")
+    except (LatexMathError, ValueError) as exc:
         return _unread(how, exc)
     detail, ok = {}, True
     n_, t_ = sympy.Symbol("n"), sympy.Symbol("t")
@@ -975,8 +1008,8 @@ def univariate_span() -> LineResult:
         try:
             idx = range(_env_int(parse(rlo), n=n), _env_int(parse(rhi), n=n) + 1)
             if _env_int(lhs.args[0], n=n) != 2 * n:
-                raise TexError("A of another order")
-        except (TexError, ValueError) as exc:
+                raise LatexMathError("A of another order")
+        except (LatexMathError, ValueError) as exc:
             return _unread(how, exc)
         rows_a, rows_f = [], []
         for k in range(2 * n + 6):
@@ -986,7 +1019,7 @@ def univariate_span() -> LineResult:
             for i in idx:
                 try:
                     row.append(_member_value(member.subs({n_: n, sympy.Symbol(lv): i}), n, ha, hx, hy, t_))
-                except (TexError, ValueError):
+                except (LatexMathError, ValueError):
                     return LineResult(False, how=how, detail={"member": str(member), "i": i})
             rows_a.append(row)
             rows_f.append([q for m in range(n + 1) for q in _cpow(_angle(hx), m)])
@@ -1005,10 +1038,10 @@ def _single_sets(tex: str):
         member, domain = body.split(":", 1)
         dv = re.match(r"\s*(\w)\s*\\in", domain)
         if not dv:
-            raise TexError(f"no domain in {domain!r}")
+            raise LatexMathError(f"no domain in {domain!r}")
         out.append((member, iset, (dv.group(1), read_interval(domain, ""))))
     if len(out) != 2:
-        raise TexError(f"{len(out)} sets, not 2")
+        raise LatexMathError(f"{len(out)} sets, not 2")
     return out
 
 
@@ -1021,7 +1054,7 @@ def _member_value(e: sympy.Expr, n: int, ha, hx, hy, t: sympy.Symbol) -> fmpq:
         if isinstance(base, AppliedUndef) and base.func.__name__ == "c":
             o, k = (int(x) for x in base.args)
             if o != 2 * n:
-                raise TexError("c of another order")
+                raise LatexMathError("c of another order")
             v = c_exact(n, k, *ha)
         elif isinstance(base, sympy.sin) and sympy.simplify(base.args[0] - (alpha - t) / 2) == 0:
             v = hy[0]
@@ -1030,9 +1063,9 @@ def _member_value(e: sympy.Expr, n: int, ha, hx, hy, t: sympy.Symbol) -> fmpq:
         elif base.is_Integer:
             v = fmpq(int(base))
         else:
-            raise TexError(f"factor {base} not read")
+            raise LatexMathError(f"factor {base} not read")
         if not ex.is_Integer or ex < 0:
-            raise TexError(f"power {ex} is not a non-negative integer")
+            raise LatexMathError(f"power {ex} is not a non-negative integer")
         out *= v ** int(ex)
     return out
 
@@ -1054,7 +1087,7 @@ def _quantified(tex: str) -> tuple[str, list]:
     t (eq. univariate_basis): closed, alpha a = 0 and alpha b = alpha."""
     m = re.search(r"\\(forall|exists)\s*s\s*\\in", tex)
     if not m:
-        raise TexError("no quantifier over s")
+        raise LatexMathError("no quantifier over s")
     s_interval(tex[m.start():], r"\\(?:forall|exists)\s*s")
     return m.group(1), _s_samples(0, 1)
 
@@ -1064,7 +1097,7 @@ def s_interval(tex: str, var: str) -> None:
     lo_c, lo, hi, hi_c = read_interval(tex, var)
     alpha = sympy.Symbol("alpha")
     if not (lo_c and hi_c) or sympy.simplify(alpha * lo) != 0 or sympy.simplify(alpha * hi - alpha) != 0:
-        raise TexError(f"s in {'[' if lo_c else '('}{lo}, {hi}{']' if hi_c else ')'}: t = alpha s does not cover "
+        raise LatexMathError(f"s in {'[' if lo_c else '('}{lo}, {hi}{']' if hi_c else ')'}: t = alpha s does not cover "
                        f"[0, alpha]")
 
 
@@ -1085,7 +1118,7 @@ def bernstein_limit() -> LineResult:
         deg = re.search(r"Bernstein polynomials of degree \$([^$]+)\$ when \$\\alpha\\rightarrow\s*([^$]+)\$", tex)
         order = re.search(r"basis functions \(\\ref\{univariate_basis\}\) of order \$([^$]+)\$", tex)
         if not rep or not deg or not order:
-            raise TexError("the reparametrization, degree or order is not read")
+            raise LatexMathError("the reparametrization, degree or order is not read")
         t_of_s, degree, prose_point, order_n = parse(rep.group(1)), parse(deg.group(1)), parse(deg.group(2)), \
             parse(order.group(1))
         display = _display(tex, "\\begin{equation}", "\\label")
@@ -1093,19 +1126,19 @@ def bernstein_limit() -> LineResult:
         lhs, rhs = relation(formula)
         _, s_vals = _quantified(display)
         if not re.search(r"\\forall\s*s", display):
-            raise TexError("the limit is not claimed for all s")
+            raise LatexMathError("the limit is not claimed for all s")
         lo, hi = listed(display, "i")
         if not isinstance(lhs, sympy.Limit):
-            raise TexError("the left side is not a limit")
+            raise LatexMathError("the left side is not a limit")
         body, var, point = lhs.args[0], lhs.args[1], lhs.args[2]
         if var != sympy.Symbol("alpha") or point != prose_point:
-            raise TexError("the limit is not alpha -> the prose's point")
+            raise LatexMathError("the limit is not alpha -> the prose's point")
         a_term = body
         if not (isinstance(a_term, AppliedUndef) and a_term.func.__name__ == "A"):
-            raise TexError("the limit is not of one A")
+            raise LatexMathError("the limit is not of one A")
         if sympy.simplify(a_term.args[2][0] - t_of_s) != 0:
-            raise TexError("the argument is not the printed reparametrization")
-    except (TexError, ValueError) as exc:
+            raise LatexMathError("the argument is not the printed reparametrization")
+    except (LatexMathError, ValueError) as exc:
         return _unread(how, exc, "numeric-evidence")
     exact = all(sum(c_numerator(n, i)) == comb(2 * n, i) for n in range(1, 16) for i in range(2 * n + 1))
     worst, ok = mpmath.mpf(0), exact
@@ -1121,7 +1154,7 @@ def bernstein_limit() -> LineResult:
                     for s in s_vals:
                         env = {"n": n, "i": i, "s": s, "alpha": alpha}
                         worst = max(worst, abs(num(body, env) - num(rhs, env)))
-            except (TexError, ValueError, ZeroDivisionError) as exc:
+            except (LatexMathError, ValueError, ZeroDivisionError) as exc:
                 return _unread(how, exc, "numeric-evidence")
     ok = bool(ok and worst < mpmath.mpf("1e-20"))
     return LineResult(ok, how=how, kind="numeric-evidence",
@@ -1150,7 +1183,7 @@ def _read_chain(line_id: str) -> tuple[list[sympy.Expr], str, list]:
     parts = relation(formula)
     quant, s_vals = _quantified(display)
     if len(parts) < 2:
-        raise TexError("not an equality")
+        raise LatexMathError("not an equality")
     return parts, quant, s_vals
 
 
@@ -1179,7 +1212,7 @@ def bernstein_identity() -> LineResult:
         parts, quant, s_vals = _read_chain("sec1_3-bernstein-identity")
         printed = _a_identity(parts, quant, s_vals)
         corrected = _a_identity([_order_one(p) for p in parts], quant, s_vals)
-    except (TexError, ValueError, ZeroDivisionError) as exc:
+    except (LatexMathError, ValueError, ZeroDivisionError) as exc:
         return _unread(how, exc, "numeric-evidence")
     return LineResult(printed, corrected, how=how, kind="numeric-evidence", detail={"quantifier": quant})
 
@@ -1195,13 +1228,13 @@ def bernstein_power() -> LineResult:
     try:
         parts, quant, s_vals = _read_chain("sec1_3-bernstein-power")
         if len(parts) != 3:
-            raise TexError("not a chain of three parts")
+            raise LatexMathError("not a chain of three parts")
         printed = _a_identity(parts, quant, s_vals)
         fixed = [parts[0], _order_one(parts[1], True), parts[2]]
         # the values are all 1; the proof's content is the expansion: the first two parts must agree as homogeneous
         # polynomials in sin((alpha-t)/2), sin(t/2) (a power n-1 would still give the value 1)
         corrected = _a_identity(fixed, quant, s_vals) and _a_identity(fixed[:2], quant, s_vals, scale=mpmath.mpf(1.3))
-    except (TexError, ValueError, ZeroDivisionError) as exc:
+    except (LatexMathError, ValueError, ZeroDivisionError) as exc:
         return _unread(how, exc, "numeric-evidence")
     a = rational_alpha(ALPHA_TS[0])
     for n in range(1, 6):
@@ -1239,7 +1272,7 @@ def _termwise(lhs: sympy.Limit, rhs: sympy.Expr) -> bool:
         try:
             lv = sorted(tuple(mpmath.nstr(num(t, {"s": s, "alpha": alpha}), 15) for s in ss) for t in left)
             rv = sorted(tuple(mpmath.nstr(num(t, {"s": s}), 15) for s in ss) for t in right)
-        except (TexError, ValueError, ZeroDivisionError):
+        except (LatexMathError, ValueError, ZeroDivisionError):
             return False
     return lv == rv
 
@@ -1256,12 +1289,12 @@ def bernstein_proof_limit() -> LineResult:
         used = re.findall(r"\$(.*?)\$", verbatim("sec1_3-bernstein-limits-used"))
         used_parts = [relation(u.rstrip(". ")) for u in used]
         if len(parts) != 2 or len(used_parts) != 2 or any(len(p) != 2 for p in used_parts):
-            raise TexError("the limits are not read")
+            raise LatexMathError("the limits are not read")
         checks = [parts] + used_parts
         for lhs, _ in checks:
             if not isinstance(lhs, sympy.Limit) or lhs.args[1] != sympy.Symbol("alpha"):
-                raise TexError(f"{lhs} is not a limit over alpha")
-    except (TexError, ValueError) as exc:
+                raise LatexMathError(f"{lhs} is not a limit over alpha")
+    except (LatexMathError, ValueError) as exc:
         return _unread(how, exc, "numeric-evidence")
     worst = mpmath.mpf(0)
     termwise = _termwise(parts[0], parts[1])
@@ -1273,7 +1306,7 @@ def bernstein_proof_limit() -> LineResult:
                     try:
                         env = {"n": n, "s": mpmath.mpf(s), "alpha": alpha}
                         worst = max(worst, abs(num(lhs.args[0], env) - num(rhs, env)))
-                    except (TexError, ValueError, ZeroDivisionError) as exc:
+                    except (LatexMathError, ValueError, ZeroDivisionError) as exc:
                         return _unread(how, exc, "numeric-evidence")
     ok = bool(worst < mpmath.mpf("1e-20")) and termwise
     return LineResult(ok, how=how + "; the limit of each term of the power's base against the right side's terms",
@@ -1291,7 +1324,7 @@ def _bernstein_xs(f: sympy.Expr, x: sympy.Symbol, s: sympy.Symbol) -> sympy.Expr
     """B_k^d(s) = binom(d, k) x^{d-k} s^k with x = 1 - s (homogeneous form)."""
     k, d, args = f.args
     if tuple(args) != (s,):
-        raise TexError(f"{f} is not a Bernstein polynomial in s")
+        raise LatexMathError(f"{f} is not a Bernstein polynomial in s")
     return sympy.binomial(d, k) * x ** (d - k) * s**k
 
 
@@ -1308,13 +1341,13 @@ def bernstein_polynomials() -> LineResult:
                  for p in relation("0" + _one_minus_s(verbatim(lid)).replace("\\end{align*}", ""))[1:]]
         start = _limit_parts(_one_minus_s(verbatim("sec1_3-bernstein-limit-step1")))[-1]
         if len(parts) != 3:
-            raise TexError(f"{len(parts)} parts, not 3")
-    except (TexError, ValueError) as exc:
+            raise LatexMathError(f"{len(parts)} parts, not 3")
+    except (LatexMathError, ValueError) as exc:
         return _unread(how, exc, "exhaustive")
 
     def homog(e, n):
         e = e.subs(sympy.Symbol("n"), n)
-        e = e.replace(lambda f: isinstance(f, AppliedUndef) and f.func.__name__ == "B",
+        e = e.replace(lambda f: isinstance(f, AppliedUndef) and f.func.__name__ == "B_sup",
                       lambda f: _bernstein_xs(f, x, s))
         return sympy.expand(e.doit())
 
@@ -1323,7 +1356,7 @@ def bernstein_polynomials() -> LineResult:
         try:
             want = homog(start, n)
             got = [homog(p, n) for p in parts]
-        except (TexError, ValueError, TypeError) as exc:
+        except (LatexMathError, ValueError, TypeError) as exc:
             return _unread(how, exc, "exhaustive")
         ok &= all(g == want for g in got) and want.free_symbols <= {x, s}
     return LineResult(ok, how=how, kind="exhaustive", detail={"n_max": 12})
