@@ -166,6 +166,24 @@ def test_sign_function_cases():
     assert bool(third.subs({p: 6, i: 2, r: 2}))
 
 
+def test_sign_function_cases_with_or_and_residue_sign():
+    """(sign_sin_power_derivative) row 0: ``\\left( p<j\\right) \\text{or }\\left( p-j\\equiv1 .. \\text{ and }p>j
+    \\right)`` (parenthesised conditions); (derivative_cosine_sine_at_0), in a line that opens with prose:
+    ``z-j\\equiv\\pm1 \\pmod 4`` (the sign is the Symbol pm, either sign)."""
+    p, z, pm = Symbol("p"), Symbol("z"), Symbol("pm")
+    zero = parse_cases(verbatim("sec1_3-sign-sin"))[1][1]
+    assert isinstance(zero, sympy.Or)
+    assert bool(zero.subs({p: 1, j: 2})) and bool(zero.subs({p: 4, j: 1})) and not bool(zero.subs({p: 5, j: 1}))
+    assert not bool(zero.subs({p: 2, j: 2}))
+    rows = parse_cases(verbatim("sec1_3-proposition-M"))
+    assert [v for v, _ in rows] == [-1, 0, 1]
+    zero = rows[1][1]
+    for zz, jj, want in ((5, 2, {True, False}), (3, 2, {True, False}), (4, 2, {False}), (6, 2, {False})):
+        got = {bool(zero.subs({z: zz, j: jj, pm: s})) for s in (1, -1)}
+        assert got == want, (zz, jj, got)  # z - j = 3 = -1 (mod 4) holds with the lower sign only
+    assert bool(rows[0][1].subs({z: 4, j: 2})) and not bool(rows[0][1].subs({z: 5, j: 2}))
+
+
 def test_case_value_over_several_rows():
     """The k = 0 case of the proof's (r+1)-th step: one value printed over three rows, its parenthesis opened with
     \\left(..\\right. and closed with \\left...\\right)."""

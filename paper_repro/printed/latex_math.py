@@ -578,9 +578,13 @@ class _Build(Transformer):
         return c[0] - PM * c[2]
 
     def pm_unary(self, c):
+        if isinstance(c[1], sympy.Tuple) and len(c[1]) == 2:  # \equiv\pm1 \pmod{4}: the sign of the residue
+            return sympy.Tuple(PM * c[1][0], c[1][1])
         return PM * c[1]
 
     def mp_unary(self, c):
+        if isinstance(c[1], sympy.Tuple) and len(c[1]) == 2:
+            return sympy.Tuple(-PM * c[1][0], c[1][1])
         return -PM * c[1]
 
     def cup(self, c):
@@ -1105,13 +1109,26 @@ def _condition(t: str):
     pieces = _split_top(t)
     if len(pieces) > 1:
         return sympy.And(*[_condition(x) for x in pieces])
-    if t.startswith("(") and _split_top(t[1:], ")")[0] == t[1:-1] and t.endswith(")"):
+    if t.startswith("(") and t.endswith(")") and _closing(t, 0) == len(t) - 1:
         return _condition(t[1:-1])
     forall = t.startswith("\\forall")
     r = _run("start_relation", t[len("\\forall"):] if forall else t, [])
     if not isinstance(r, Relation):
         raise LatexMathError(f"a condition without a relation: {t!r}")
     return _as_basic(r)
+
+
+def _closing(s: str, k: int) -> int:
+    """Index of the bracket that closes the one at ``s[k]`` (-1 if none)."""
+    depth = 0
+    for m in range(k, len(s)):
+        if s[m] in "([{":
+            depth += 1
+        elif s[m] in ")]}":
+            depth -= 1
+            if depth == 0:
+                return m
+    return -1
 
 
 def _split_top_word(s: str, word: str) -> list[str]:
@@ -1142,7 +1159,7 @@ def parse_cases(tex: str) -> list[tuple[Any, Any]]:
     [(-1, Eq(-i + p, 2*r)), (0, Eq(Mod(p + 1, 2), 0))]
     """
     arrays: list = []
-    clean(tex, arrays)
+    clean(_display_math(tex), arrays)
     if not arrays:
         raise LatexMathError(f"no array in {tex[:60]!r}")
     return _case_rows(arrays[0])
