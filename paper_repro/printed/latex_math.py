@@ -450,7 +450,8 @@ class Relation:
     Relations; ``quantifier`` is ``'forall'`` (``'exists'``) on a clause that carries ``\\forall``
     (``\\exists``).  The op ``'equiv'`` has as right part ``Tuple(b, m)`` for ``a \\equiv b \\pmod{m}``; ``'in'``
     with a ``Tuple`` right part is a listed range ``i=0,1,\\ldots,2n`` (``ldots`` is the Symbol ``ldots``).
-    ``continues`` is the operator (``'+'``, ``'-'``, ``'*'``) a row ends with when the next row continues it.
+    ``continues`` is the operator (``'+'``, ``'-'``, ``'*'``) a row ends with when the next row continues it, or
+    ``'forall'`` for a row that ends inside a clause (``,~\\forall\\left(``) the next row goes on with.
     """
 
     parts: list[Any]
@@ -1015,8 +1016,12 @@ def parse_relation(tex: str) -> Relation:
     if not s:
         raise LatexMathError("nothing to read")
     cont = None
-    m = re.search(r"(\+|-|\\cdot|\\times)\s*$", s)
+    m = re.search(r",?\s*\\forall\s*\(\s*$", s)  # the row ends inside a clause that the next row goes on with
     if m:
+        cont = "forall"
+        s = s[:m.start()].rstrip()
+    m = re.search(r"(\+|-|\\cdot|\\times)\s*$", s)
+    if m and not cont:
         cont = {"+": "+", "-": "-"}.get(m.group(1), "*")
         s = s[:m.start()].rstrip()
     chunks = _split_top(s)
