@@ -308,8 +308,8 @@ def run(n_max: int, r_max: int, system_n_max: int) -> Outcome:
         raise ValueError(f"sec4_5-system-y-range not read: {sys_line!r}")
     system_range = parametrization_ok(pu, ranges={"x": _params()[pu][3]["x"], "y": interval(sys_line, "y")})
     # the errata recorded on the two lines describe these transcriptions: the y-range they call printed
+    from paper_repro.claims.lines.sec1_3 import linear_form
     from paper_repro.printed.lines import line
-    from paper_repro.printed.lines.sec3_read import linear_form
 
     def recorded_y(line_id: str):
         m = re.search(r"y in \[([^\]]+)\]", line(line_id).erratum["printed"])

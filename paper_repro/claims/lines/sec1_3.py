@@ -69,6 +69,62 @@ def relation(tex: str) -> list[sympy.Expr]:
     return rel.parts
 
 
+def linear_form(expr: str | sympy.Expr) -> tuple[int, int, int]:
+    """Integer coefficients (of alpha, x, y) of a printed linear form such as ``\\alpha-x-y``, ``x-y``, ``y``, ``0``
+    (its LaTeX, read by :func:`parse`, or the parsed expression); ``ValueError`` for anything else (another symbol, a
+    constant term, a non-integer or non-linear coefficient).
+
+    >>> linear_form(r"\\alpha-x-y")
+    (1, -1, -1)
+    """
+    e = sympy.expand(parse(expr) if isinstance(expr, str) else sympy.sympify(expr))
+    alpha, x, y = sympy.symbols("alpha x y")
+    if not isinstance(e, sympy.Expr) or not e.free_symbols <= {alpha, x, y}:
+        raise LatexMathError(f"not a linear form in alpha, x, y: {expr!r}")
+    if e == 0:
+        return 0, 0, 0
+    coeffs = sympy.Poly(e, alpha, x, y).as_dict()
+    if any(sum(m) != 1 for m in coeffs) or any(not c.is_integer for c in coeffs.values()):
+        raise LatexMathError(f"not a linear form in alpha, x, y: {expr!r}")
+    return tuple(int(coeffs.get(m, 0)) for m in ((1, 0, 0), (0, 1, 0), (0, 0, 1)))
+
+
+def read_parametrization(tex: str) -> tuple[tuple[tuple[int, int, int], ...], dict[str, tuple]]:
+    """The printed parametrization ``\\left\\{ \\begin{array}{rcl} u_{1}\\left( x,y\\right) & = & x,~x\\in\\left[
+    0,\\alpha\\right] ,\\\\ ...``: each row read by :func:`paper_repro.printed.latex_math.parse_relation` (the
+    three cells of a row are one relation with its clause); the maps of u, v, w (in this order, one subscript, applied
+    to (x, y)) as integer linear forms in alpha, x, y, and the printed ranges ``{"x": (lo, hi), "y": (lo, hi)}``
+    (closed intervals; the endpoints parsed).
+
+    >>> maps, ranges = read_parametrization(verbatim("sec1_3-param-2"))
+    >>> maps, ranges["y"]
+    (((0, 1, 0), (1, -1, -1), (0, 0, 1)), (0, alpha - x))
+    """
+    arrays: list = []
+    lm.clean(tex, arrays)
+    rows = [r for r in (arrays[0] if len(arrays) == 1 else []) if any(c.strip() for c in r)]
+    if len(rows) != 3 or any(len(r) != 3 for r in rows):
+        raise LatexMathError(f"not a parametrization of three rows lhs & = & rhs: {tex[:60]!r}")
+    xy = sympy.Tuple(*sympy.symbols("x y"))
+    maps, ranges, subs = [], {}, set()
+    for name, row in zip("uvw", rows):
+        rel = lm.parse_relation(" ".join(row))
+        lhs = rel.parts[0]
+        if rel.ops != ["="] or not isinstance(lhs, AppliedUndef) or lhs.func.__name__ != name or lhs.args[-1] != xy:
+            raise LatexMathError(f"row {row[0]!r} is not {name}(x, y) = ..")
+        subs.add(lhs.args[:-1])
+        maps.append(linear_form(rel.parts[1]))
+        for c in rel.conditions:
+            var, rng = c.parts[0] if c.parts else None, c.parts[-1] if c.parts else None
+            if c.ops != ["in"] or var not in xy or not isinstance(rng, sympy.Interval) or rng.left_open or \
+                    rng.right_open or str(var) in ranges:
+                raise LatexMathError(f"unread range {c}")
+            ranges[str(var)] = (rng.start, rng.end)
+    if len(subs) != 1 or set(ranges) != {"x", "y"}:
+        raise LatexMathError(f"subscripts {subs} / ranges of {sorted(ranges)}: not one parametrization of x and y")
+    return tuple(maps), ranges
+
+
 # -- exact half-angle arithmetic ------------------------------------------------------------------------------
 def _half(t: fmpq) -> tuple[fmpq, fmpq]:
     """(sin(x/2), cos(x/2)) for x = 4 atan(t)."""
@@ -115,8 +171,6 @@ def _params() -> dict[str, tuple]:
     """label -> (map (alpha, x, y) -> (u, v, w), running parameter, the three printed linear forms, printed ranges):
     the maps and ranges read from the parametrization's transcription, the running parameter from the derivative
     formula that differentiates along it (``\\frac{\\partial^{r}}{\\partial y^{r}}``)."""
-    from paper_repro.printed.lines.sec3_read import read_parametrization
-
     out = {}
     for label, (lid, chain) in PARAM_LINES.items():
         maps, ranges = read_parametrization(_transcribed([lid])[lid])
@@ -1566,7 +1620,6 @@ def read_chain_strict(tex: str, param: str) -> dict:
     every order equal, the sum from k = 0, the arguments the coordinates of ``param`` (its index) at (x, y), the
     point the running parameter at 0, the quantifier over the other parameter on its printed range
     (``ValueError`` otherwise)."""
-    from paper_repro.printed.lines.sec3_read import linear_form
 
     t = re.sub(r"\s+", "", tex.replace("%", ""))
     for p in (r"\\begin\{equation\}", r"\\end\{equation\}", r"\\label\{[^{}]*\}", r"&", r"\\\\$",
@@ -1648,7 +1701,6 @@ def chain_3(override=None) -> LineResult:
 
 def _lin(expr: str, a, x=None):
     """A printed bound (linear form in alpha, x; no y) at alpha = a and x."""
-    from paper_repro.printed.lines.sec3_read import linear_form
 
     ca, cx, cy = linear_form(expr)
     if cy or (cx and x is None):
@@ -1813,25 +1865,139 @@ def boundary_vars(override: dict[str, str] | None = None) -> LineResult:
 # ==============================================================================================================
 # The proof of Theorem joint_systems_linear_independence
 # ==============================================================================================================
+#: the combining constant of each colour
+_CONST_COLOUR = {"rho": "R", "gamma": "G", "beta": "B"}
+_UVW = sympy.Tuple(*sympy.symbols("u v w"))
+
+
+def combination_terms(expr: sympy.Expr) -> list[tuple[list, str, sympy.Expr, sympy.Expr, sympy.Tuple]]:
+    """The terms ``constant_{2n,a,b} X_{2n,a,b}^{alpha}(args)`` of a parsed linear combination
+    (:func:`paper_repro.printed.latex_math.terms`): ``[(sums, colour, a, b, args), ...]``, the sums outermost first;
+    :class:`LatexMathError` for a term that is anything else (a coefficient, another factor, a constant whose colour
+    or indices disagree with its function's, an order other than 2n).
+
+    >>> combination_terms(parse(r"\\rho_{2n,n,n}R_{2n,n,n}^{\\alpha}\\left( u,v,w\\right) "
+    ...                         r"+\\sum_{i=1}^{n}\\gamma_{2n,2n-i,1}G_{2n,2n-i,1}^{\\alpha}\\left( x,0,y\\right)"))
+    [([], 'R', n, n, (u, v, w)), ([(i, 1, n)], 'G', -i + 2*n, 1, (x, 0, y))]
+    """
+    out = []
+    two_n = 2 * sympy.Symbol("n")
+    for t in lm.terms(expr):
+        consts = [f for f in t.names if f.func.__name__ in _CONST_COLOUR]
+        funcs = [f for f in t.names if f.func.__name__ in ("R", "G", "B")]
+        if t.coefficient != 1 or len(t.names) != 2 or len(consts) != 1 or len(funcs) != 1:
+            raise LatexMathError(f"the term {t.names} {t.coefficient} is not constant x function")
+        (c,), (f,) = consts, funcs
+        if _CONST_COLOUR[c.func.__name__] != f.func.__name__ or len(c.args) != 3 or len(f.args) != 4 or \
+                tuple(c.args) != tuple(f.args[:3]) or c.args[0] != two_n or not isinstance(f.args[3], sympy.Tuple):
+            raise LatexMathError(f"the constant {c} does not match the function {f}")
+        out.append((t.limits, f.func.__name__, f.args[1], f.args[2], f.args[3]))
+    return out
+
+
+@cache
+def _int_fn(expr: sympy.Expr):
+    names = tuple(sorted(s.name for s in expr.free_symbols))
+    return names, sympy.lambdify([sympy.Symbol(x) for x in names], expr, "math")
+
+
+def _int_at(expr: sympy.Expr, scope: dict[str, int]) -> int:
+    """Integer value of a parsed bound or index at ``scope`` (every name bound)."""
+    names, f = _int_fn(sympy.sympify(expr))
+    missing = [x for x in names if x not in scope]
+    if missing:
+        raise LatexMathError(f"{expr} names {missing}, unbound")
+    v = f(*(scope[x] for x in names))
+    if v != int(v):
+        raise LatexMathError(f"{expr} is not an integer at {scope}")
+    return int(v)
+
+
+def term_indices(terms, **env: int) -> list[tuple[str, int, int]]:
+    """``(colour, i, j)`` of every function of :func:`combination_terms` (i from the first index 2n - i), the sums
+    written out (an empty sum, upper bound below the lower, names nothing) with ``env`` (``n``, ``r``) bound."""
+    out: list[tuple[str, int, int]] = []
+
+    def walk(sums, colour, first, level, scope):
+        if not sums:
+            out.append((colour, 2 * scope["n"] - _int_at(first, scope), _int_at(level, scope)))
+            return
+        (v, lo, hi), rest = sums[0], sums[1:]
+        for x in range(_int_at(lo, scope), _int_at(hi, scope) + 1):
+            walk(rest, colour, first, level, {**scope, str(v): x})
+
+    for sums, colour, first, level, _args in terms:
+        walk(sums, colour, first, level, dict(env))
+    return out
+
+
+def row_terms(tex: str) -> list[tuple[list, str, sympy.Expr, sympy.Expr, sympy.Tuple]]:
+    """The terms (:func:`combination_terms`) of a displayed row of the proof's combinations, read by
+    :func:`paper_repro.printed.latex_math.parse_relation`: ``0 = L(u,v,w) = ..``, ``= ..`` or a continued sum; the
+    parts before the last are 0 or L, widetilde L, widehat L at (u, v, w); a clause must be ``\\forall (u,v,w) \\in
+    \\Omega^{\\alpha}``; every function is applied to (u, v, w)."""
+    rel = lm.parse_relation(tex)
+    for p in rel.parts[:-1]:
+        if p != 0 and not (isinstance(p, AppliedUndef) and p.func.__name__ in ("L", "Ltilde", "Lhat")
+                           and p.args[-1] == _UVW):
+            raise LatexMathError(f"the row equates {p}, not 0 or L(u,v,w)")
+    for c in rel.conditions:
+        if c.quantifier != "forall" or c.ops != ["in"] or c.parts != [_UVW, sympy.Symbol("Omega")]:
+            raise LatexMathError(f"the clause {c.parts} {c.ops} is not forall (u,v,w) in Omega^alpha")
+    terms = combination_terms(rel.parts[-1])
+    if any(args != _UVW for *_, args in terms):
+        raise LatexMathError("a function not at (u, v, w)")
+    return terms
+
+
+def constant_sets(tex: str, n: int) -> list[tuple[str, int, int]]:
+    """``(colour, i, j)`` of the constants named by a printed list such as ``$\\rho_{2n,n,n}$, $\\left\\{
+    \\rho_{2n,2n-i,j}\\right\\} _{j=0,i=j}^{n-1,2n-1-j}$, ..`` at order n: each ``$..$`` segment read by
+    :func:`paper_repro.printed.latex_math.parse` (a constant, or a family of constants with its index set; i from the
+    first index 2n - i)."""
+    out: list[tuple[str, int, int]] = []
+    two_n = 2 * sympy.Symbol("n")
+    for seg in lm.inline_math(tex):
+        e = parse(seg)
+        if isinstance(e, AppliedUndef) and e.func == lm.Family:
+            member, conds, bounds = e.args
+            if conds:
+                raise LatexMathError(f"a set of constants with conditions {conds}")
+            limits = list(bounds)
+        else:
+            member, limits = e, []
+        if not (isinstance(member, AppliedUndef) and member.func.__name__ in _CONST_COLOUR and len(member.args) == 3
+                and member.args[0] == two_n):
+            raise LatexMathError(f"{member} is not a constant rho, gamma, beta of order 2n")
+        out += term_indices([(limits, _CONST_COLOUR[member.func.__name__], member.args[1], member.args[2], None)],
+                            n=n)
+    return out
+
+
+def row_combination(tex: str) -> list[tuple[list, str, sympy.Expr, sympy.Expr, sympy.Tuple]]:
+    """:func:`combination_terms` of the last part of a printed row (read by
+    :func:`paper_repro.printed.latex_math.parse_relation`)."""
+    return combination_terms(lm.parse_relation(tex).parts[-1])
+
+
+@cache
+def _row_terms_cached(tex: str):
+    return row_terms(tex)
+
+
 def printed_rows(check_id: str, n: int, r: int = 0, override: dict[str, str] | None = None) -> set:
     """The functions named by the displayed rows of the lines checked by ``check_id``, read from their
-    transcriptions (sums, bounds, constants, functions: :func:`paper_repro.printed.lines.read.sum_terms`) at order
-    n and step r: indices into T_{2n} by the functions' own names (no alias); a name that is not a member of T_{2n}
-    stays in the set as a string (a mismatch).  ``override`` replaces transcriptions (tests)."""
-    from paper_repro.printed.lines.read import sum_terms, term_indices
+    transcriptions (sums, bounds, constants, functions: :func:`row_terms`) at order n and step r: indices into T_{2n}
+    by the functions' own names (no alias); a name that is not a member of T_{2n} stays in the set as a string (a
+    mismatch).  ``override`` replaces transcriptions (tests)."""
     from paper_repro.printed.lines.sec1_3 import LINES
 
     rows = {x.id: x.verbatim for x in LINES if x.check == check_id and x.kind == "display"}
     rows.update({k: v for k, v in (override or {}).items() if k in rows})
-    from paper_repro.printed.lines.sec3_read import row_residue
-
     strict = {lb.paper: k for k, lb in enumerate(united_system(n))}
     out: set = set()
     for key in sorted(rows):
-        rest = row_residue(rows[key])
-        if rest:
-            raise ValueError(f"{key}: unread {rest[:40]!r}")
-        for color, i, j in term_indices(sum_terms(rows[key]), n=n, r=r):
+        for color, i, j in term_indices(_row_terms_cached(rows[key]), n=n, r=r):
             name = f"{color}_{{{2 * n},{2 * n - i},{j}}}"
             out.add(strict.get(name, name))
     return out
@@ -1852,8 +2018,6 @@ def l_set(override: dict[str, str] | None = None) -> LineResult:
     """The rows of eq. linear_combination_union name every function of T_{2n} once; the constants listed after it
     (line sec1_3-L-coefficients, read: rho_{2n,n,n} and the sets of rho and gamma -- the set of beta follows on the
     next, untranscribed, line) are exactly the constants of the R and G terms of the rows (n = 1..12)."""
-    from paper_repro.printed.lines.read import constant_sets, sum_terms, term_indices
-
     res = _read_sets("sec1_3-L-set", lambda n, r: set(range(len(united_system(n)))), ns=range(1, 13),
                      override=override)
     res.how = res.how.replace("against the elimination recomputed from exact derivatives", "against T_{2n}")
@@ -1866,7 +2030,7 @@ def l_set(override: dict[str, str] | None = None) -> LineResult:
         for n in range(1, 13):
             listed = sorted(constant_sets(t["sec1_3-L-coefficients"], n))
             rows = sorted(c for k in ("sec1_3-L-R-row", "sec1_3-L-G-row")
-                          for c in term_indices(sum_terms(t[k]), n=n))
+                          for c in term_indices(row_terms(t[k]), n=n))
             if listed != rows:
                 bad.append(n)
     except ValueError as exc:
@@ -2230,7 +2394,6 @@ def _arg_half(arg: str, param_index: int, pt) -> tuple[fmpq, fmpq]:
     """Half angles of a printed argument at the boundary of the step: a coordinate ``u_1`` of the printed
     parametrization (its index must be the step's), or a linear form in alpha, x, y; (x, y) = (t, 0) when the
     running parameter is y, (0, t) when it is x."""
-    from paper_repro.printed.lines.sec3_read import linear_form
 
     _fmap, run, maps, _ranges = _params()[STEP_PARAMS[param_index]]
     m = re.fullmatch(r"([uvw])_(\d)", arg)
@@ -2379,7 +2542,6 @@ def _pt(n: int, at: fmpq, x: fmpq):
 def _quantified_step(tex: str, param_index: int) -> str:
     """The value part of ``[0=] VALUE ,~\\forall V\\in\\left[ 0,\\alpha\\right]``: the quantifier must range over the
     free variable of the step's edge and its printed range there, [0, alpha] (read)."""
-    from paper_repro.printed.lines.sec3_read import linear_form
 
     m = re.search(r",\s*~?\s*\\forall\s*([xy])\s*\\in\s*\\left\[\s*([^,\]]+?)\s*,\s*([^\]]+?)\s*\\right\]", tex)
     if not m:
@@ -2419,33 +2581,25 @@ def read_terms_at_edge(line_id: str, param_index: int, verbatim: str | None = No
     ``(n, r, pt) -> {member of T_{2n}: its value at the boundary point}`` of the functions it names (by their own
     names), after checking that the printed point is the step's parametrization at running parameter 0.  A name
     that is no member of T_{2n} is kept as a string (a mismatch)."""
-    from paper_repro.printed.lines.read import sum_terms, term_indices
-
     tex = verbatim if verbatim is not None else _transcribed([line_id])[line_id]
-    terms = sum_terms(tex)
-    rest = re.sub(r"\s+", "", tex.replace("%", ""))
-    rest = re.sub(r"^&=", "", re.sub(r"\\\\$", "", rest))
-    rest = re.sub(r"\\(rho|gamma|beta)_\{[^{}]*\}[RGB]_\{[^{}]*\}\^\{\\alpha\}\\left\([^()]*\\right\)", "", rest)
-    rest = re.sub(r"\\sum_\{[^{}]*\}\^\{[^{}]*\}", "", rest).replace("+", "")
-    if rest:
-        raise ValueError(f"unread {rest[:40]!r}")
-    points = {re.sub(r"\s+", "", x) for x in re.findall(r"\\left\(\s*([^()]*?)\s*\\right\)", tex)}
+    rel = lm.parse_relation(tex)
+    if rel.lead not in (None, "=") or rel.ops or rel.conditions:
+        raise LatexMathError(f"not a row '= sum of terms': {rel.lead} {rel.ops} {len(rel.conditions)} clauses")
+    terms = combination_terms(rel.parts[-1])
     fmap, run = PARAMS[STEP_PARAMS[param_index]]
     a, q = fmpq(7, 5), fmpq(2, 5)  # the printed point and the map compared at exact values of alpha and the parameter
     at0 = fmap(a, q, fmpq(0)) if run == "y" else fmap(a, fmpq(0), q)
     other = "x" if run == "y" else "y"
+    at = {sympy.Symbol("alpha"): sympy.Rational(7, 5), sympy.Symbol(other): sympy.Rational(2, 5)}
+    points = {args for *_, args in terms}
     readable = []
-    for pt_text in points:
-        parts = pt_text.split(",")
-        vals = []
-        for part in parts:
-            expr = part.replace("\\alpha", "A")
-            if not re.fullmatch(r"[0A-Za-z+\-]+", expr):
-                raise ValueError(f"unread point {pt_text!r}")
-            vals.append(eval(expr.replace(other, "Q"), {"__builtins__": {}}, {"A": a, "Q": q}))  # noqa: S307
-        readable.append(tuple(vals))
+    for pt in points:
+        vals = [sympy.sympify(c).subs(at) for c in pt]
+        if not all(v.is_Rational for v in vals):
+            raise LatexMathError(f"unread point {pt}")
+        readable.append(tuple(fmpq(int(v.p), int(v.q)) for v in vals))
     if readable != [tuple(at0)] * len(readable) or not readable:
-        raise ValueError(f"the printed points {sorted(points)} are not the parametrization at {run} = 0")
+        raise ValueError(f"the printed points {sorted(map(str, points))} are not the parametrization at {run} = 0")
 
     def fn(n, r, pt):
         strict = {lb.paper: k for k, lb in enumerate(united_system(n))}
@@ -2503,9 +2657,6 @@ def omitted_check(line_id: str, before: str, terms_line: str, param_index: int,
     coordinate of the step (its index), equal to the printed argument (both as linear forms), and its half-angle
     sine at the printed point (the step's edge) is the printed value, 0 (exact); every function before the step and
     not kept has that sine to a power in the printed relation ("at least one"), every kept one has not (n = 1..12)."""
-    from paper_repro.printed.lines.read import sum_terms, term_indices
-    from paper_repro.printed.lines.sec3_read import linear_form
-
     t = _transcribed([line_id, terms_line], override)
     try:
         o = read_omitted(t[line_id])
@@ -2522,7 +2673,7 @@ def omitted_check(line_id: str, before: str, terms_line: str, param_index: int,
     for n in range(1, 13):
         strict = {lb.paper: k for k, lb in enumerate(united_system(n))}
         kept = {strict.get(f"{c}_{{{2 * n},{2 * n - i},{j}}}", "?") for c, i, j in
-                term_indices(sum_terms(t[terms_line]), n=n)}
+                term_indices(row_combination(t[terms_line]), n=n)}
         alive = printed_rows(before, n, 0, override)
         ok &= "?" not in kept and kept <= alive
         ok &= all(rel(exponents(united_system(n)[k])[2 * var], o["power"]) == (k not in kept)
@@ -3134,7 +3285,7 @@ def fig_n4_caption(order: int | None = None, n: int | None = None) -> LineResult
     other black dots (the second condition).  Computed: for every function of T_{2n} (n of the text, "In the case of
     $n=4$") with sin(v/2) to the power j and cos(v/2) to the power i (i + j != 0) and every order z in v, its partial
     vanishes at v = 0 exactly when gray or the second condition; the gray ones are exactly those with j > z."""
-    from paper_repro.printed.lines.sec3_read import _condition, linear_form, read_sign_function
+    from paper_repro.printed.derivatives import branch_disjuncts
 
     tex = _transcribed(["sec1_3-fig-n4-caption"])["sec1_3-fig-n4-caption"].replace("%", " ")
     try:
@@ -3158,16 +3309,13 @@ def fig_n4_caption(order: int | None = None, n: int | None = None) -> LineResult
         label, at = m.group(4), m.group(5)
         fmap, run, maps, _r = _params()[label]
         forms_ok = linear_form(m.group(2)) == maps[1] and linear_form(m.group(3)) == maps[2] and at == run
-        branches = read_sign_function(_transcribed(["sec1_3-proposition-M"])["sec1_3-proposition-M"])
-        zero = [c for v, c in branches if v == 0]
-        parts = [p.strip() for p in re.split(r"\)\s+or\s+\(", zero[0].strip()[1:-1])] if len(zero) == 1 else []
+        parts = branch_disjuncts(_transcribed(["sec1_3-proposition-M"])["sec1_3-proposition-M"], 0, ("j", "z"))
         if len(parts) != 2:
             raise ValueError("the zero branch of the Proposition is not two conditions joined by 'or'")
         which = {"first": parts[0], "second": parts[1]}
         gray_cond, black_cond = which[conds[0][0] or conds[0][1]], which[conds[1][0] or conds[1][1]]
         rel = {"greater than": lambda j, z: j > z, "less than": lambda j, z: j < z,
                "at least": lambda j, z: j >= z, "at most": lambda j, z: j <= z}[gray.group(1)]
-        _condition("z<j")  # the reader of conditions is the one the Proposition's branches went through
     except (ValueError, KeyError) as exc:
         return LineResult(False, how="the caption read from its transcription", detail={"unread": str(exc)})
     order = printed_order if order is None else order
@@ -3183,10 +3331,9 @@ def fig_n4_caption(order: int | None = None, n: int | None = None) -> LineResult
             continue
         for k in range(order + 1):
             z = order - k
-            env = {"__builtins__": {}}
             vanish = mixed_derivative(i, HALF, j, HALF, z) == 0
-            is_gray = eval(gray_cond, env, {"z": z, "j": j})  # noqa: S307 - read above
-            is_black = eval(black_cond, env, {"z": z, "j": j})  # noqa: S307
+            is_gray = gray_cond(z=z, j=j)
+            is_black = black_cond(z=z, j=j)
             bad += vanish != (is_gray or is_black)
             gray_bad += bool(is_gray) != rel(j, z)
     ok = bad == 0 and gray_bad == 0 and ok_orders and forms_ok and direction == (0, 1, -1)
@@ -3201,7 +3348,6 @@ def interval_typo() -> LineResult:
     """An interval [a, b] is written with a comma between its endpoints; the printed ``\\left[ 0\\,\\alpha\\right]``
     (read from the transcription) has none (a thin space instead), so it does not parse as an interval; with the comma
     it is [0, alpha], the range of x on the edge y = 0 of parametrization_3_y_0 (read from its transcription)."""
-    from paper_repro.printed.lines.sec3_read import linear_form
 
     tex = _transcribed(["sec1_3-r0-p3-interval"])["sec1_3-r0-p3-interval"]
     m = re.fullmatch(r"\s*x\s*\\in\s*\\left\[(.*)\\right\]\s*", tex)
@@ -3229,7 +3375,7 @@ def lemma_hypotheses(verbatim_text: str | None = None) -> LineResult:
     without it (i, j >= 1, p >= 0 as the sets say) the statement is consistent, and the sine rule (read from its
     transcription) holds on the whole range, p = 0 included (exact Taylor coefficients, j = lower bound..8,
     p = 0..16, mu in {1/2, 1, 3})."""
-    from paper_repro.printed.lines.sec3_read import read_sign_function, sign_of
+    from paper_repro.printed.derivatives import read_sign_function, sign_of
 
     tex = verbatim_text if verbatim_text is not None else _transcribed(["sec1_3-lemma-hypotheses"])[
         "sec1_3-lemma-hypotheses"]
