@@ -3,8 +3,8 @@
 The printed sign rules, read from the transcriptions of eqs. sign_cos_power_derivative, sign_sin_power_derivative
 and derivative_cosine_sine_at_0 (:func:`paper_repro.printed.derivatives.read_sign_function`, by latex_math: each
 branch's value and condition, the Proposition's hypotheses i + j != 0, z >= 1 read from its statement), against exact
-derivatives at 0 computed from Taylor series with rational lambda, mu.  Where no printed branch applies, or branches that apply
-give different values, the printed rule gives no sign (a mismatch).  Disagreements become errata (with the
+derivatives at 0 computed from Taylor series with rational lambda, mu.  Where no printed branch applies, or branches
+that apply give different values, the printed rule gives no sign (a mismatch).  Disagreements become errata (with the
 corrected rule, itself checked on the same range).
 """
 
