@@ -4,6 +4,7 @@ reject wrong inputs (perturbed index sets, bounds, levels, chain rules, parametr
 import json
 
 import pytest
+import sympy
 
 from paper_repro.claims.lines import CHECKS, LINE_KINDS
 from paper_repro.claims.lines import sec1_3 as C
@@ -427,30 +428,33 @@ def test_printed_symmetry_objects_come_from_the_transcriptions():
 # ==============================================================================================================
 # Section 3 (sec:linear_independence, source lines >= 462): the checks read their lines (issue 37)
 # ==============================================================================================================
-def test_sec3_reader_reads_products_parametrizations_and_sign_functions():
-    from paper_repro.printed.lines import verbatim
-    from paper_repro.printed.lines.sec3_read import (
+def test_sec3_reads_products_parametrizations_and_sign_functions_through_latex_math():
+    from paper_repro.claims.lines.sec1_3 import (
+        LatexMathError,
+        _row_value,
         linear_form,
         read_parametrization,
         read_products,
-        read_sign_function,
-        sign_of,
     )
+    from paper_repro.printed.derivatives import read_sign_function, sign_of
+    from paper_repro.printed.lines import verbatim
 
     assert linear_form(r"\alpha-x-y") == (1, -1, -1) and linear_form("x-y") == (0, 1, -1)
     with pytest.raises(ValueError):
         linear_form(r"\alpha-1")
     maps, ranges = read_parametrization(verbatim("sec1_3-param-2"))
-    assert maps == ((0, 1, 0), (1, -1, -1), (0, 0, 1)) and ranges["y"] == ("0", "\\alpha-x")
-    (term,) = read_products(verbatim("sec1_3-kterm-R-low"))
-    assert term.sums == [("j", "r+1", "n-1"), ("i", "j", "n")] and term.constant == ("R", "2n-i", "j", False)
-    assert [f.kind for f in term.factors] == ["trig", "bar", "trig", "bar", "M"]
+    alpha, x = sympy.symbols("alpha x")
+    assert maps == ((0, 1, 0), (1, -1, -1), (0, 0, 1)) and ranges["y"] == (0, alpha - x)
+    (term,) = read_products(_row_value(verbatim("sec1_3-kterm-R-low")))
+    n, r, i, j = sympy.symbols("n r i j")
+    assert term.sums == [("j", r + 1, n - 1), ("i", j, n)] and term.constant == ("R", 2 * n - i, j, False)
+    assert sorted(f.kind for f in term.factors) == ["M", "bar", "bar", "trig", "trig"]
     cos = read_sign_function(verbatim("sec1_3-sign-cos"))
     assert sign_of(cos, i=2, p=2) == 1          # printed +1, the true sign is -1 (erratum lemma-sign-cos-power)
     assert sign_of(cos, i=1, p=2) is None       # no printed branch applies
     assert sign_of(cos, i=1, p=1) is None       # branches 0 (p odd) and +1 (p - i = 0 = 2r, r even) both apply
-    with pytest.raises(ValueError):
-        read_products("XXX")
+    with pytest.raises(LatexMathError):
+        read_products(_row_value("XXX"))
 
 
 def test_sec3_blank_lines_fail_their_checks():

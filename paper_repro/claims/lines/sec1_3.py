@@ -13,7 +13,7 @@ The independent computations:
 * the elimination of the proof, recomputed from these exact derivatives: the functions whose derivative of the
   step's order does not vanish at the boundary are removed, step by step;
 * the printed sums, values and primed coefficients of Section 3 read from the transcriptions
-  (:mod:`paper_repro.printed.lines.sec3_read`: sums with their bounds, constants, half-angle sines and their
+  (:mod:`paper_repro.printed.latex_math`: sums with their bounds, constants, half-angle sines and their
   derivatives, S and M of the Lemma and the Proposition, c and A; the parametrizations and sign functions too),
   compared with the computed sets and, as linear forms in the combining constants, with the computed values.
 """
@@ -21,6 +21,8 @@ The independent computations:
 from __future__ import annotations
 
 import re
+from dataclasses import dataclass, field
+from fractions import Fraction
 from functools import cache
 from math import comb, factorial
 
@@ -2068,21 +2070,40 @@ def l0_set(override=None) -> LineResult:
     return _read_sets("sec1_3-L0-set", lambda n, r: alive_after(n, 0, 2), override=override)
 
 
-def listed_orders(tex: str, var: str, **env: int) -> list[range]:
-    """Every listed range ``var=a,a+1,\\ldots,b`` of ``tex`` as a range (``ValueError`` if there is none, or if a
-    second listed value is not the first plus one)."""
-    from paper_repro.printed.lines.read import bound
-    from paper_repro.printed.lines.sec3_read import listing
-
+def listed_ranges(tex: str, var: str) -> list[tuple]:
+    """Every listed range ``var=a,\\ldots,c`` or ``var=a,b,\\ldots,c`` of ``tex`` (a display, or the ``$..$``
+    segments of a prose line; a segment latex_math does not read lists nothing): the items ``(a, [b,] ldots, c)`` of
+    the clauses ``var in (..)`` of :func:`paper_repro.printed.latex_math.parse_relation`."""
+    segs = lm.inline_math(tex) or [tex]
+    v = sympy.Symbol(var)
     out = []
-    found = listing(tex, var)
+    for seg in segs:
+        try:
+            rel = lm.parse_relation(seg)
+        except LatexMathError:
+            if len(segs) == 1:
+                raise
+            continue
+        for r in (rel, *rel.conditions):
+            if r.ops and r.ops[-1] == "in" and r.parts[-2] == v and isinstance(r.parts[-1], sympy.Tuple):
+                items = r.parts[-1].args
+                if len(items) in (3, 4) and items[-2] == lm.LDOTS and lm.LDOTS not in items[:-2] + items[-1:]:
+                    out.append(items)
+    return out
+
+
+def listed_orders(tex: str, var: str, **env: int) -> list[range]:
+    """Every listed range ``var=a,a+1,\\ldots,b`` of ``tex`` (:func:`listed_ranges`) as a range (``ValueError`` if
+    there is none, or if a second listed value is not the first plus one)."""
+    out = []
+    found = listed_ranges(tex, var)
     if not found:
         raise ValueError(f"no listed range {var}=a,...,b in {tex[:50]!r}")
-    for a, b, c in found:
-        lo = bound(a, **env)
-        if b is not None and bound(b, **env) != lo + 1:
-            raise ValueError(f"{var}={a},{b},... does not step by one")
-        out.append(range(lo, bound(c, **env) + 1))
+    for items in found:
+        lo = _int_at(items[0], env)
+        if len(items) == 4 and _int_at(items[1], env) != lo + 1:
+            raise ValueError(f"{var}={items[0]},{items[1]},... does not step by one")
+        out.append(range(lo, _int_at(items[-1], env) + 1))
     return out
 
 
@@ -2373,7 +2394,176 @@ def _A(pt, k: int) -> fmpq:
     return _c(pt, k) * _sn(pt, "alpha-t", 2 * n - k) * _sn(pt, "t", k)
 
 
-# -- Section 3 values read from the transcriptions (paper_repro.printed.lines.sec3_read) -------------------------
+# -- Section 3 values read from the transcriptions (paper_repro.printed.latex_math) -----------------------------
+@dataclass(frozen=True)
+class Factor:
+    """One printed factor of a term of the proof, from the parsed expression.  ``kind``: ``trig`` (sin^s cos^c of half
+    an argument, ``deriv`` = (order, coordinate) when differentiated), ``bar`` (an evaluation bar at ``args[0]`` = 0),
+    ``S``/``M`` (derivatives at 0 of Lemma lem:sign_cos_power_derivative / Proposition derivative_cosine_sine:
+    ``(indices, order)``), ``c`` (normalizing constant: ``(k,)``), ``A`` (univariate function: ``(k, variable)``).
+    An argument is a coordinate ``("u", 1)`` of a parametrization or a linear form (a sympy expression)."""
+
+    kind: str
+    args: tuple
+    deriv: tuple | None = None
+
+
+@dataclass
+class Term:
+    """A printed term: its sums ``[(var, lo, hi), ...]`` (outermost first), its combining constant (colour, first
+    index, level, primed) and its factors."""
+
+    sums: list
+    constant: tuple | None
+    factors: list = field(default_factory=list)
+
+
+_TWO_N = 2 * sympy.Symbol("n")
+_PRIMED = {"rho_prime": "R", "gamma_prime": "G", "beta_prime": "B"}
+
+
+def _coordinate(arg: sympy.Expr):
+    """``u(1, (x, y))`` -> ``("u", 1)``, ``u((x, y))`` -> ``("u", None)``; anything else is returned as it is (a
+    linear form, checked where it is evaluated)."""
+    if isinstance(arg, AppliedUndef) and arg.func.__name__ in ("u", "v", "w"):
+        idx = arg.args[:-1] if arg.args and isinstance(arg.args[-1], sympy.Tuple) else arg.args
+        if len(idx) > 1 or (idx and not idx[0].is_Integer):
+            raise LatexMathError(f"the coordinate {arg} is not u_k(x, y)")
+        return arg.func.__name__, int(idx[0]) if idx else None
+    return arg
+
+
+def _trig_factors(e: sympy.Expr) -> list[tuple[str, sympy.Expr, object]]:
+    """(sin or cos, exponent, half-angle argument) of a product of powers of sin(X/2), cos(X/2)."""
+    out = []
+    for f in sympy.Mul.make_args(e):
+        base, exp = f.as_base_exp()
+        if not isinstance(base, (sympy.sin, sympy.cos)):
+            raise LatexMathError(f"the factor {f} is not a power of a half-angle sine or cosine")
+        out.append(("sin" if isinstance(base, sympy.sin) else "cos", exp, _coordinate(sympy.expand(2 * base.args[0]))))
+    return out
+
+
+def _factors_of(e: sympy.Expr) -> list[Factor]:
+    """The factors of the coefficient part of a term (trigonometric powers, derivatives of them, evaluation bars)."""
+    out: list[Factor] = []
+    for f in sympy.Mul.make_args(e):
+        if f == 1:
+            continue
+        if isinstance(f, sympy.Subs):
+            inner, (var,), (val,) = f.args
+            if val != 0:
+                raise LatexMathError(f"an evaluation bar at {var} = {val}, not 0")
+            out += _factors_of(inner)
+            out.append(Factor("bar", (str(var),)))
+        elif isinstance(f, AppliedUndef) and f.func == lm.D:
+            body, *specs = f.args
+            if len(specs) != 1:
+                raise LatexMathError(f"a derivative in {len(specs)} variables")
+            var, order = specs[0]
+            trig = _trig_factors(body)
+            args = {a for _, _, a in trig}
+            if len(args) != 1 or _coordinate(var) != next(iter(args)):
+                raise LatexMathError("a derivative of sines and cosines of another argument")
+            s = sum((x for k, x, _ in trig if k == "sin"), sympy.Integer(0))
+            c = sum((x for k, x, _ in trig if k == "cos"), sympy.Integer(0))
+            out.append(Factor("trig", ((s, c), args.pop()), (order, _coordinate(var))))
+        else:
+            for kind, x, arg in _trig_factors(f):
+                out.append(Factor("trig", ((x, sympy.Integer(0)) if kind == "sin" else (sympy.Integer(0), x), arg)))
+    return out
+
+
+def read_products(expr: sympy.Expr) -> list[Term]:
+    """The terms of a parsed sum of products of the proof (:func:`paper_repro.printed.latex_math.terms` after the
+    products of a parenthesised sum are multiplied out): the sums of each term, its combining constant (rho, gamma,
+    beta, possibly primed) and its factors (:class:`Factor`); :class:`LatexMathError` for anything else (a
+    coefficient, an unknown name, a second constant)."""
+    expr = sympy.expand(expr, deep=False, mul=True, multinomial=False, power_exp=False, power_base=False, log=False)
+    out = []
+    for t in lm.terms(expr):
+        constant, factors = None, []
+        for f in t.names:
+            name = f.func.__name__
+            if name in _CONST_COLOUR or name in _PRIMED:
+                if constant is not None or len(f.args) != 3 or f.args[0] != _TWO_N:
+                    raise LatexMathError(f"the constant {f} (a second constant, or not of order 2n)")
+                constant = (_CONST_COLOUR.get(name) or _PRIMED[name], f.args[1], f.args[2], name in _PRIMED)
+            elif name == "c" and len(f.args) == 2 and f.args[0] == _TWO_N:
+                factors.append(Factor("c", (f.args[1],)))
+            elif name == "A" and len(f.args) == 3 and f.args[0] == _TWO_N and len(f.args[2]) == 1:
+                factors.append(Factor("A", (f.args[1], f.args[2][0])))
+            elif name == "S_sup" and len(f.args) == 4 and f.args[3] == sympy.Tuple(0):
+                factors.append(Factor("S", ((f.args[0], f.args[1]), f.args[2])))
+            elif name == "M_sup" and len(f.args) == 6 and f.args[5] == sympy.Tuple(0):
+                factors.append(Factor("M", (tuple(f.args[:4]), f.args[4])))
+            elif f.func == lm.D:
+                factors += _factors_of(f)
+            else:
+                raise LatexMathError(f"the factor {f} is not read")
+        factors += _factors_of(t.coefficient)
+        out.append(Term([(str(v), lo, hi) for v, lo, hi in t.limits], constant, factors))
+    if not out:
+        raise LatexMathError("no product read")
+    return out
+
+
+def _rate(x) -> Fraction:
+    """An angular velocity of S or M (a parsed rational) as a Fraction."""
+    x = sympy.sympify(x)
+    if not x.is_Rational:
+        raise LatexMathError(f"the rate {x} is not a number")
+    return Fraction(int(x.p), int(x.q))
+
+
+def read_prime_definition(tex: str) -> tuple[tuple[str, sympy.Expr], list[tuple]]:
+    """A printed definition ``\\rho_{2n,2n-i,L}^{\\prime} = \\left\\{ CONST/c_{2n,K}^{\\alpha}, & i=a,..,b \\\\
+    ..``: ((colour, L), [((colour, first index, level) of CONST, K, first i, last i), ...]), every row read by
+    :func:`paper_repro.printed.latex_math.parse_relation` (value and clause); a single case ``i=2n-(r+1)`` has
+    first = last; a listed range ``a,b,\\ldots,c`` must step by one."""
+    rel = lm.parse_relation(tex)
+    head = rel.parts[0] if rel.parts else None
+    if rel.ops != ["="] or not isinstance(head, AppliedUndef) or head.func.__name__ not in _PRIMED or \
+            len(head.args) != 3 or head.args[0] != _TWO_N or sympy.expand(head.args[1] - _TWO_N + sympy.Symbol("i")):
+        raise LatexMathError(f"no primed constant X'_{{2n,2n-i,L}} defined in {tex[:60]!r}")
+    i = sympy.Symbol("i")
+    value = rel.parts[1]
+    if isinstance(value, AppliedUndef) and value.func == lm.Cases:  # the rows, each with its clause, re-read
+        arrays: list = []
+        lm.clean(lm._display_math(tex), arrays)
+        rows = [lm.parse_relation(row[0].strip().rstrip(",") + " , " + row[1]) if len(row) == 2 else row
+                for row in (arrays[0] if arrays else []) if any(c.strip() for c in row)]
+    else:  # one case: X' = CONST/c, i = ..
+        rows = [lm.Relation([value], [], conditions=rel.conditions)]
+    cases = []
+    for r in rows:
+        if not isinstance(r, lm.Relation):
+            raise LatexMathError(f"a case row with {len(r)} cells")
+        num, den = sympy.fraction(r.parts[0]) if len(r.parts) == 1 and not r.ops else (None, None)
+        if not (isinstance(num, AppliedUndef) and num.func.__name__ in _CONST_COLOUR and len(num.args) == 3
+                and num.args[0] == _TWO_N and isinstance(den, AppliedUndef) and den.func.__name__ == "c"
+                and len(den.args) == 2 and den.args[0] == _TWO_N) or len(r.conditions) != 1:
+            raise LatexMathError(f"the case {r.parts} is not CONST/c_{{2n,K}}, i = ..")
+        cond = r.conditions[0]
+        if cond.parts[0] != i or len(cond.parts) != 2:
+            raise LatexMathError(f"the case condition {cond} is not on i")
+        if cond.ops == ["="]:
+            first = last = cond.parts[1]
+        elif cond.ops == ["in"] and isinstance(cond.parts[1], sympy.Tuple):
+            items = cond.parts[1].args
+            if len(items) not in (3, 4) or items[-2] != lm.LDOTS or lm.LDOTS in items[:-2]:
+                raise LatexMathError(f"unread range {items}")
+            if len(items) == 4 and sympy.expand(items[1] - items[0] - 1) != 0:
+                raise LatexMathError(f"the listed range {items} does not step by one")
+            first, last = items[0], items[-1]
+        else:
+            raise LatexMathError(f"unread case condition {cond}")
+        cases.append(((_CONST_COLOUR[num.func.__name__], num.args[1], num.args[2]), den.args[1], first, last))
+    if not cases:
+        raise LatexMathError(f"no case of the definition read in {tex[:60]!r}")
+    return (_PRIMED[head.func.__name__], head.args[2]), cases
+
+
 def _unit(half: tuple[fmpq, fmpq]) -> tuple[fmpq, fmpq]:
     """(cos, sin) of a half angle from (sin, cos): the unit complex number exp(i h)."""
     return half[1], half[0]
@@ -2390,36 +2580,33 @@ def _half_of(pt, p_alpha: int, q_t: int) -> tuple[fmpq, fmpq]:
     return s, c
 
 
-def _arg_half(arg: str, param_index: int, pt) -> tuple[fmpq, fmpq]:
+def _arg_half(arg, param_index: int, pt) -> tuple[fmpq, fmpq]:
     """Half angles of a printed argument at the boundary of the step: a coordinate ``u_1`` of the printed
     parametrization (its index must be the step's), or a linear form in alpha, x, y; (x, y) = (t, 0) when the
     running parameter is y, (0, t) when it is x."""
 
     _fmap, run, maps, _ranges = _params()[STEP_PARAMS[param_index]]
-    m = re.fullmatch(r"([uvw])_(\d)", arg)
-    if m:
-        if int(m.group(2)) != param_index + 1:
-            raise ValueError(f"{arg} in the step of parametrization {param_index + 1}")
-        a, x, y = maps["uvw".index(m.group(1))]
-    elif re.fullmatch(r"[uvw]", arg):
-        raise ValueError(f"an unindexed coordinate {arg} in a step of the proof")
+    if isinstance(arg, tuple):  # a coordinate (letter, index) of the parametrization
+        letter, idx = arg
+        if idx is None:
+            raise ValueError(f"an unindexed coordinate {letter} in a step of the proof")
+        if idx != param_index + 1:
+            raise ValueError(f"{letter}_{idx} in the step of parametrization {param_index + 1}")
+        a, x, y = maps["uvw".index(letter)]
     else:
         a, x, y = linear_form(arg)
     return _half_of(pt, a, x if run == "y" else y)
 
 
-def _expr(expr: str, env: dict) -> int:
-    from paper_repro.printed.lines.read import bound
-
-    return int(bound(expr.replace("\\left(", "(").replace("\\right)", ")"), **env))
+def _expr(expr, env: dict) -> int:
+    """Integer value of a parsed index or bound (or of its LaTeX, read by :func:`parse`) at ``env``."""
+    return _int_at(parse(expr) if isinstance(expr, str) else expr, {str(k): v for k, v in env.items()})
 
 
 def _factor_value(f, env: dict, param_index: int, pt, orders=None) -> fmpq:
-    """Value of one printed factor (:class:`paper_repro.printed.lines.sec3_read.Factor`) at the boundary point.
+    """Value of one printed factor (:class:`Factor`) at the boundary point.
     ``orders`` = (z, k) replaces the printed orders of S, M (z) and of a derivative (k) -- the factor structure
     tested at other orders; the printed orders are compared with the step's apart."""
-    from paper_repro.printed.lines.sec3_read import rate
-
     n = env["n"]
     if f.kind == "bar":
         run = _params()[STEP_PARAMS[param_index]][1]
@@ -2444,13 +2631,13 @@ def _factor_value(f, env: dict, param_index: int, pt, orders=None) -> fmpq:
         if f.kind == "S":
             if len(sub) != 2:
                 raise ValueError(f"S with {len(sub)} indices")
-            j, mu = _expr(sub[0], env), rate(sub[1])
+            j, mu = _expr(sub[0], env), _rate(sub[1])
             if j < 0 or z < 0:
                 raise ValueError("a negative power or order")
             return sin_power_derivative(j, fmpq(mu.numerator, mu.denominator), z)
         if len(sub) != 4:
             raise ValueError(f"M with {len(sub)} indices")
-        i, lam, j, mu = _expr(sub[0], env), rate(sub[1]), _expr(sub[2], env), rate(sub[3])
+        i, lam, j, mu = _expr(sub[0], env), _rate(sub[1]), _expr(sub[2], env), _rate(sub[3])
         if min(i, j, z) < 0:
             raise ValueError("a negative power or order")
         return mixed_derivative(i, fmpq(lam.numerator, lam.denominator), j, fmpq(mu.numerator, mu.denominator), z)
@@ -2464,15 +2651,13 @@ def _factor_value(f, env: dict, param_index: int, pt, orders=None) -> fmpq:
         if not 0 <= k <= 2 * n:
             raise ValueError(f"A_{{2n,{k}}} does not exist")
         var = _arg_half(f.args[1], param_index, pt)
-        rest = _arg_half(f"\\alpha-{f.args[1]}", param_index, pt)
+        rest = _arg_half(sympy.Symbol("alpha") - f.args[1], param_index, pt)
         return _c(pt, k) * rest[0] ** (2 * n - k) * var[0] ** k
     raise ValueError(f"unknown factor {f.kind}")
 
 
 def _prime_defs(line_ids) -> dict[str, tuple]:
     """{colour of the primed constant: (level expression, cases)} read from the definition lines."""
-    from paper_repro.printed.lines.sec3_read import read_prime_definition
-
     out = {}
     for lid in line_ids:
         (color, level), cases = read_prime_definition(_transcribed([lid])[lid])
@@ -2537,29 +2722,6 @@ def _pt(n: int, at: fmpq, x: fmpq):
     pt = boundary_point(at, x)
     pt["n"], pt["alpha_t"], pt["alpha"] = n, at, _half(at)
     return pt
-
-
-def _quantified_step(tex: str, param_index: int) -> str:
-    """The value part of ``[0=] VALUE ,~\\forall V\\in\\left[ 0,\\alpha\\right]``: the quantifier must range over the
-    free variable of the step's edge and its printed range there, [0, alpha] (read)."""
-
-    m = re.search(r",\s*~?\s*\\forall\s*([xy])\s*\\in\s*\\left\[\s*([^,\]]+?)\s*,\s*([^\]]+?)\s*\\right\]", tex)
-    if not m:
-        raise ValueError(f"no quantifier forall x in [0, alpha] in {tex[:50]!r}")
-    run = _params()[STEP_PARAMS[param_index]][1]
-    free = "x" if run == "y" else "y"
-    if m.group(1) != free or linear_form(m.group(2)) != (0, 0, 0) or linear_form(m.group(3)) != (1, 0, 0):
-        raise ValueError(f"quantifier over {m.group(1)} in [{m.group(2)}, {m.group(3)}] on the edge {run} = 0")
-    return tex[:m.start()]
-
-
-def _value_part(tex: str, param_index: int) -> str:
-    """Strip ``\\[ 0=`` / ``& =`` before a value and the quantifier after it."""
-    body = _quantified_step(tex, param_index)
-    body = re.sub(r"^\s*(\\\[)?\s*0\s*=", " ", body) if re.match(r"^\s*(\\\[)?\s*0\s*=", body) else body
-    if re.match(r"^\s*(\\\[)", body):
-        raise ValueError("a display that does not start with 0 =")
-    return body
 
 
 def _A_at(pt, k: int, var: str) -> fmpq:
@@ -2941,25 +3103,96 @@ VALUE_CHECKS = {
 
 
 def _is_definition(tex: str) -> bool:
-    return bool(re.search(r"\^\{\\prime\}\s*=\s*(\\left\\\{|\\frac|\\dfrac)", tex))
+    """A line that defines a primed constant (``X'_{..} = ..``, parsed)."""
+    try:
+        rel = lm.parse_relation(tex)
+    except LatexMathError:
+        return False
+    return bool(rel.parts) and rel.ops == ["="] and isinstance(rel.parts[0], AppliedUndef) and \
+        rel.parts[0].func.__name__ in _PRIMED
+
+
+def _row_value(tex: str) -> sympy.Expr:
+    """The value of a printed row ``[= &] VALUE [\\\\]`` (no relation or clause after it), read by
+    :func:`paper_repro.printed.latex_math.parse_relation`."""
+    rel = lm.parse_relation(tex)
+    if rel.lead not in (None, "=") or rel.ops or rel.conditions or rel.continues:
+        raise LatexMathError(f"not a row '= VALUE': {rel.lead} {rel.ops} {len(rel.conditions)} clauses")
+    return rel.parts[0]
+
+
+def _k_range(cond, var: str = "k") -> tuple[sympy.Expr, sympy.Expr]:
+    """(lo, hi) of a parsed case condition ``k=K`` (lo = hi) or ``a\\leq k\\leq b`` (a Relation or a sympy boolean)."""
+    k = sympy.Symbol(var)
+    if isinstance(cond, lm.Relation):
+        if cond.ops == ["="] and len(cond.parts) == 2 and cond.parts[0] == k:
+            return cond.parts[1], cond.parts[1]
+        if cond.ops == ["<=", "<="] and len(cond.parts) == 3 and cond.parts[1] == k:
+            return cond.parts[0], cond.parts[2]
+        raise LatexMathError(f"unread condition {cond.parts} {cond.ops}")
+    if isinstance(cond, sympy.Eq) and k in (cond.lhs, cond.rhs):
+        other = cond.rhs if cond.lhs == k else cond.lhs
+        return other, other
+    if isinstance(cond, sympy.And) and len(cond.args) == 2:
+        lo = hi = None
+        for a in cond.args:
+            if isinstance(a, (sympy.Le, sympy.Ge)) and a.gts == k:
+                lo = a.lts
+            elif isinstance(a, (sympy.Le, sympy.Ge)) and a.lts == k:
+                hi = a.gts
+        if lo is not None and hi is not None:
+            return lo, hi
+    raise LatexMathError(f"unread condition {cond}")
+
+
+def read_case_row(tex: str) -> tuple[sympy.Expr, sympy.Expr, sympy.Expr]:
+    """(value, lo, hi) of a printed case row ``VALUE , & k=K`` or ``VALUE , & a\\leq k\\leq b``: a bare row, or a
+    case display ``= & \\left\\{ \\begin{array}..`` of one row (its value possibly printed over several rows)."""
+    rel = lm.parse_relation(tex)
+    last = rel.parts[-1] if rel.parts else None
+    if isinstance(last, AppliedUndef) and last.func == lm.Cases:
+        if len(last.args) != 1 or rel.conditions or rel.parts[:-1]:
+            raise LatexMathError(f"{len(last.args)} case rows")
+        value, cond = last.args[0].args
+        return (value, *_k_range(cond))
+    if rel.ops or len(rel.conditions) != 1 or rel.lead is not None:
+        raise LatexMathError(f"not a case row VALUE, & COND: {rel.ops} {len(rel.conditions)} clauses")
+    return (rel.parts[0], *_k_range(rel.conditions[0]))
+
+
+def _quantified_value(rel: lm.Relation, param_index: int) -> sympy.Expr:
+    """The value of ``[0=] VALUE ,~\\forall V\\in\\left[ 0,\\alpha\\right]`` (or ``= & VALUE, ..``): the quantifier
+    must range over the free variable of the step's edge and its printed range there, [0, alpha] (read)."""
+    run = _params()[STEP_PARAMS[param_index]][1]
+    free = sympy.Symbol("x" if run == "y" else "y")
+    (c,) = rel.conditions
+    rng = c.parts[-1] if c.parts else None
+    if c.quantifier != "forall" or c.ops != ["in"] or c.parts[0] != free or not isinstance(rng, sympy.Interval) or \
+            linear_form(rng.start) != (0, 0, 0) or linear_form(rng.end) != (1, 0, 0):
+        raise ValueError(f"the quantifier {c.quantifier} {c.parts} is not over {free} in [0, alpha] on the edge "
+                         f"{run} = 0")
+    if rel.parts[:-1] not in ([], [0]) or any(op != "=" for op in rel.ops) or rel.lead not in (None, "="):
+        raise ValueError("a display that does not start with 0 =")
+    return rel.parts[-1]
 
 
 def read_value_line(tex: str, param_index: int):
     """(terms, k) of a printed value: a case row ``VALUE , & k=K`` (k = K), ``[0=] VALUE ,~\\forall x\\in[0,\\alpha]``
     or ``& = VALUE \\\\`` (k None: the whole derivative)."""
-    from paper_repro.printed.lines.sec3_read import case_range, read_products, split_case
-
+    rel = lm.parse_relation(tex)
+    last = rel.parts[-1] if rel.parts else None
     k = None
-    if re.search(r",\s*&\s*[^&]*$", tex.replace("%", " ").rstrip().rstrip("\\").rstrip()):
-        body, cond = split_case(tex)
-        lo, hi = case_range(cond)
+    if (isinstance(last, AppliedUndef) and last.func == lm.Cases) or (not rel.ops and rel.lead is None and
+                                                                     len(rel.conditions) == 1
+                                                                     and rel.conditions[0].quantifier is None):
+        body, lo, hi = read_case_row(tex)
         if lo != hi:
-            raise ValueError(f"a value for a range of k: {cond!r}")
+            raise ValueError(f"a value for a range of k: {lo}..{hi}")
         k = _expr(lo, {})
-    elif "\\forall" in tex:
-        body = _value_part(tex, param_index)
+    elif rel.conditions:
+        body = _quantified_value(rel, param_index)
     else:
-        body = re.sub(r"\\\\\s*$", "", tex.strip())
+        body = _row_value(tex)
     return read_products(body), k
 
 
@@ -2974,8 +3207,6 @@ def value_lines_check(check_id: str, texts: dict[str, str] | None = None, defs_t
     series, sines by exact half angles): the {member of T_{2n}: coefficient} it prints must equal the one computed
     from the exact derivatives of the step (the k-th term of its chain rule where the line is a case k = K, the
     whole derivative of the step's order otherwise), n = 1..6 (order-0 steps) or n = 2..6, r = 0..n-2."""
-    from paper_repro.printed.lines.sec3_read import read_prime_definition
-
     param_index, order, def_ids = VALUE_CHECKS[check_id]
     param = STEP_PARAMS[param_index]
     own = {x.id: x.verbatim for x in _lines_of(check_id)}
@@ -3060,13 +3291,11 @@ def kpos_check(check_id: str, param_index: int) -> LineResult:
     """The rows ``0, & 1\\leq k\\leq r+1`` (read: the value 0 and the range of k): the range is the rest of the
     chain rule's k = 0..r+1 after k = 0, and every mixed partial of the equality's functions with k in it vanishes
     at the boundary (exact), n = 2..6, r = 0..n-2."""
-    from paper_repro.printed.lines.sec3_read import case_range, split_case
-
     param = STEP_PARAMS[param_index]
     try:
-        rows = {x.id: split_case(x.verbatim) for x in _lines_of(check_id)}
-        ranges = {lid: case_range(cond) for lid, (value, cond) in rows.items()}
-        if not rows or any(value.strip() != "0" for value, _ in rows.values()):
+        rows = {x.id: read_case_row(x.verbatim) for x in _lines_of(check_id)}
+        ranges = {lid: (lo, hi) for lid, (value, lo, hi) in rows.items()}
+        if not rows or any(value != 0 for value, _, _ in rows.values()):
             raise ValueError("a value other than 0")
     except ValueError as exc:
         return LineResult(False, how="the rows read from the transcriptions", detail={"unread": str(exc)})
@@ -3102,11 +3331,9 @@ def kterm_row_check(line_id: str, texts: dict[str, str] | None = None) -> LineRe
     at the printed orders (the orders of S, M must read r+1-k and that of the derivative k, the chain rule's k-th
     term) and, to test the factor structure where it does not vanish, at z = 0..n+2, k = 0..2; the seven rows
     together list exactly the functions of L_r, each once (n = 2..6, r = 0..n-2)."""
-    from paper_repro.printed.lines.sec3_read import read_products
-
     t = _transcribed(list(KTERM_LINES), texts)
     try:
-        rows = {lid: read_products(tx) for lid, tx in t.items()}
+        rows = {lid: read_products(_row_value(tx)) for lid, tx in t.items()}
     except ValueError as exc:
         return LineResult(False, how="the rows read from the transcriptions", detail={"unread": str(exc)})
     bad, cases, nonzero = [], 0, 0
@@ -3412,13 +3639,11 @@ def r0p1_sines() -> LineResult:
     parametrization_1_y_0 against the exact values of the functions there.  As printed the last term's constant
     gamma_{2n,2n-i,0} stands outside the sum over i (i unbound: unread); with gamma_{2n,2n,0} (the line before, and
     the definition of rho'_{2n,0,0}) it holds."""
-    from paper_repro.printed.lines.sec3_read import read_products
-
     tex = _transcribed(["sec1_3-r0-p1-sines"])["sec1_3-r0-p1-sines"]
 
     def run(text: str) -> tuple[bool, object]:
         try:
-            terms = read_products(re.sub(r"\\\\\s*$", "", text.strip()))
+            terms = read_products(_row_value(text))
         except ValueError as exc:
             return False, str(exc)
         for n in N_PROOF:
