@@ -289,6 +289,8 @@ def test_doubled_comma_of_symmetry_condition_3_is_refused():
 
 def test_quantifiers():
     assert parse_relation(r"a=0,~\forall x\in\left[0,1\right]").conditions[0].quantifier == "forall"
+    lone = parse_relation(r"\forall y\in\left[ 0,\alpha-x\right]")  # (system_partition_of_unity), its own line
+    assert lone.quantifier == "forall" and lone.ops == ["in"] and lone.parts == [y, sympy.Interval(0, ALPHA - x)]
     assert parse_relation(r"a=0,~\exists x\in\left[0,1\right]").conditions[0].quantifier == "exists"
 
 

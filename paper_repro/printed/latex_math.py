@@ -1029,6 +1029,12 @@ def parse_relation(tex: str) -> Relation:
         items = [_run("start_expr", c.strip(), arrays) for c in chunks]
         return Relation([sympy.Tuple(*items)], [], continues=cont)
     head = chunks[0].strip()
+    if head.startswith(("\\forall", "\\exists")):  # a lone quantified clause: \forall y\in[0, alpha-x]
+        r = _conditions(chunks, arrays)
+        if len(r) != 1:
+            raise LatexMathError(f"{len(r)} clauses where one quantified relation is read")
+        r[0].continues = cont
+        return r[0]
     r = _run("start_relation", head, arrays)
     k = 1
     if isinstance(r, Relation):
