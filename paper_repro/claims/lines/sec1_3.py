@@ -1427,7 +1427,6 @@ def distinct_union(n: int) -> frozenset[tuple[int, ...]]:
 def read_delta(tex: str) -> list:
     """The printed values of delta_n in ``tex`` (everything after ``\\delta_{n}=``, split at ``=``), each as a
     function of n: a closed form such as ``3n\\left( n+1\\right) +1`` or ``1+3\\sum_{j=..}^{..}\\sum_{i=..}^{..}1``."""
-    from paper_repro.printed.lines.read import bound
 
     body = tex.split("\\delta_{n}=", 1)[1]
     body = re.split(r"\\\]|\$", body)[0].replace("\\left(", "(").replace("\\right)", ")").replace("%", " ")
@@ -1482,9 +1481,10 @@ def _transcribed(ids, override: dict[str, str] | None = None) -> dict[str, str]:
 
 def _read_pairs(tex: str, n: int) -> list[tuple[int, int]]:
     """The (i, j) of a printed double index set _{j=a,i=b(j)}^{c,d(j)}, read from ``tex`` at order n."""
-    from paper_repro.printed.lines.read import bound, index_set
-
-    (ov, olo, ohi), (iv, ilo, ihi) = index_set(tex)
+    iset = lm.index_set(tex)
+    if len(iset) != 2:
+        raise ValueError(f"not a double index set: {iset}")
+    (ov, olo, ohi), (iv, ilo, ihi) = ((str(v), lo, hi) for v, lo, hi in iset)
     if (ov, iv) != ("j", "i"):
         raise ValueError(f"index set over {(ov, iv)}, not (j, i)")
     return [(i, j) for j in range(bound(olo, n=n), bound(ohi, n=n) + 1)
@@ -1771,8 +1771,6 @@ def param_3() -> LineResult:
 def param_ranges() -> LineResult:
     """"for all x in [0, alpha], y in [0, alpha - x] and order r in N" (read): on these ranges each of the three
     printed parametrizations maps onto Omega^alpha."""
-    from paper_repro.printed.lines.read import interval
-
     tex = _transcribed(["sec1_3-chain-ranges"])["sec1_3-chain-ranges"]
     try:
         rng = {"x": interval(tex, "x"), "y": interval(tex, "y")}
@@ -1783,7 +1781,8 @@ def param_ranges() -> LineResult:
         return LineResult(False, how="the ranges read from the transcription", kind="proof",
                           detail={"unread": str(exc)})
     return LineResult(ok, how="the ranges read from the transcription; the three printed parametrizations on them "
-                      "(exact images of the parameter triangle)", kind="proof", detail={"onto": ok, "ranges": rng})
+                      "(exact images of the parameter triangle)", kind="proof",
+                      detail={"onto": ok, "ranges": {k: [str(a), str(b)] for k, (a, b) in rng.items()}})
 
 
 def read_boundary_vars(tex: str) -> list[tuple[str, str]]:
@@ -2092,6 +2091,31 @@ def listed_ranges(tex: str, var: str) -> list[tuple]:
     return out
 
 
+def listed_range(tex: str, var: str) -> tuple[sympy.Expr, sympy.Expr]:
+    """(first, last) of the first listed range ``var=a,[b,]\\ldots,c`` of ``tex`` (:func:`listed_ranges`)."""
+    found = listed_ranges(tex, var)
+    if not found:
+        raise ValueError(f"no listed range {var}=a,...,b in {tex[:60]!r}")
+    return found[0][0], found[0][-1]
+
+
+def interval(tex: str, var: str) -> tuple[sympy.Expr, sympy.Expr]:
+    """(lo, hi) of the closed interval of the clause ``var\\in\\left[ lo,hi\\right]`` of ``tex`` (a display, or the
+    ``$..$`` segments of a prose line), read by :func:`paper_repro.printed.latex_math.parse_relation`."""
+    v = sympy.Symbol(var)
+    for seg in lm.inline_math(tex) or [tex]:
+        try:
+            rel = lm.parse_relation(seg)
+        except LatexMathError:
+            continue
+        for r in (rel, *rel.conditions):
+            rng = r.parts[-1] if r.parts else None
+            if r.ops and r.ops[-1] == "in" and r.parts[-2] == v and isinstance(rng, sympy.Interval) and \
+                    not rng.left_open and not rng.right_open:
+                return rng.start, rng.end
+    raise ValueError(f"no interval {var} in [lo, hi] in {tex[:60]!r}")
+
+
 def listed_orders(tex: str, var: str, **env: int) -> list[range]:
     """Every listed range ``var=a,a+1,\\ldots,b`` of ``tex`` (:func:`listed_ranges`) as a range (``ValueError`` if
     there is none, or if a second listed value is not the first plus one)."""
@@ -2144,7 +2168,6 @@ _CONSTANT_SET = re.compile(r"\\left\\\{\s*\\rho_\{2n,2n-i,([^{}]+)\},\\gamma_\{2
 def level_zeroed(verbatim: str | None = None) -> LineResult:
     """The constants {rho, gamma, beta}_{2n,2n-i,r+1}, i = r+1..2n-1-(r+1) (levels, range and the value 0 read from
     the transcription), are those set to 0 by the step r -> r+1."""
-    from paper_repro.printed.lines.read import bound
 
     tex = verbatim if verbatim is not None else _transcribed(["sec1_3-step-zeroed"])["sec1_3-step-zeroed"]
     m = _CONSTANT_SET.search(tex.replace("\\left(", "(").replace("\\right)", ")"))
@@ -2182,7 +2205,6 @@ def ln2_set(override=None) -> LineResult:
 
 
 def bound_n(expr: str, n: int) -> int:
-    from paper_repro.printed.lines.read import bound
 
     return bound(expr, n=n)
 
@@ -2264,8 +2286,6 @@ def elimination_orders(override: dict[str, str] | None = None) -> LineResult:
     exists, non-empty, for r = 0..n-1 (induction-range); the steps r -> r+1 are r = 0..n-2 (step-range,
     induction-conclusion); the figure shows the first and last of them, r = 0 and r = n-2, with derivatives of
     orders r + 1 of L_r."""
-    from paper_repro.printed.lines.read import bound, listed_range
-
     ids = ("sec1_3-induction-range", "sec1_3-step-range", "sec1_3-induction-conclusion",
            "sec1_3-fig-j1-caption-orders", "sec1_3-fig-j1-text")
     t = _transcribed(ids, override)
@@ -2314,8 +2334,6 @@ def induction_orders(verbatim_text: str | None = None) -> LineResult:
     r + 1, r = 0..n-2 -- i.e. 0..n-1 (level j is removed by the order-j steps; after them only the centre is left,
     which the proof removes by R_{2n,n,n} != 0, without a derivative), and the hypothesis it proves is stated for
     r = 0..n-1 (line sec1_3-Lr-orders, read).  Printed: 0..n; corrected: 0..n-1."""
-    from paper_repro.printed.lines.read import bound, listed_range
-
     tex = verbatim_text if verbatim_text is not None else _transcribed(["sec1_3-induction-orders"])[
         "sec1_3-induction-orders"]
 
@@ -2483,7 +2501,9 @@ def read_products(expr: sympy.Expr) -> list[Term]:
     out = []
     for t in lm.terms(expr):
         constant, factors = None, []
-        for f in t.names:
+        named = [f for f in sympy.Mul.make_args(t.coefficient) if isinstance(f, AppliedUndef) and f.func != lm.D]
+        rest = sympy.Mul(*[f for f in sympy.Mul.make_args(t.coefficient) if f not in named])
+        for f in [*t.names, *named]:
             name = f.func.__name__
             if name in _CONST_COLOUR or name in _PRIMED:
                 if constant is not None or len(f.args) != 3 or f.args[0] != _TWO_N:
@@ -2501,7 +2521,7 @@ def read_products(expr: sympy.Expr) -> list[Term]:
                 factors += _factors_of(f)
             else:
                 raise LatexMathError(f"the factor {f} is not read")
-        factors += _factors_of(t.coefficient)
+        factors += _factors_of(rest)
         out.append(Term([(str(v), lo, hi) for v, lo, hi in t.limits], constant, factors))
     if not out:
         raise LatexMathError("no product read")
@@ -2596,6 +2616,11 @@ def _arg_half(arg, param_index: int, pt) -> tuple[fmpq, fmpq]:
     else:
         a, x, y = linear_form(arg)
     return _half_of(pt, a, x if run == "y" else y)
+
+
+def bound(expr, **env: int) -> int:
+    """Integer value of a printed bound such as ``2n-1-j`` (read by :func:`parse`) with ``env`` bound."""
+    return _expr(expr, env)
 
 
 def _expr(expr, env: dict) -> int:
@@ -2826,7 +2851,7 @@ def omitted_check(line_id: str, before: str, terms_line: str, param_index: int,
         var = "uvw".index(o["coord"])
         same_arg = linear_form(o["arg"]) == maps[var]
         pt = _pt(1, ALPHA_TS[0], X_FRACTIONS[0])
-        value = _arg_half(f"{o['coord']}_{o['index']}", param_index, pt)[0]
+        value = _arg_half((o["coord"], o["index"]), param_index, pt)[0]
     except ValueError as exc:
         return LineResult(False, how="the omitted functions' factor read from the transcription, n = 1..12",
                           kind="exhaustive", detail={"unread": str(exc)})
@@ -3000,31 +3025,34 @@ def _zeroed_check(computed_fn, printed_level, corrected_level, i_range, color, a
                                                            "corrected_mismatches": len(bad_c)})
 
 
-def _zero_line_strict(tex: str, color: str | None) -> None:
-    """A printed conclusion ``\\rho_{2n,2n-i,L}^{\\prime}=0,~i=a,a+1,\\ldots,b`` must be exactly that: a primed
-    constant of the step's colour (the one its definition line defines), ``=``, a listed range stepping by one
-    (``ValueError`` otherwise; the value and the range are compared by the callers)."""
-    m = re.fullmatch(r"\s*\\(rho|gamma|beta)_\{2n,2n-i,[^{}]+\}\^\{\\prime\}=\d+,~i=.+?[.,]\s*", tex.replace("%", " "))
-    if not m or (color and {"rho": "R", "gamma": "G", "beta": "B"}[m.group(1)] != color):
+def read_zero_line(tex: str, color: str | None = None) -> tuple[sympy.Expr, sympy.Expr, sympy.Expr, sympy.Expr]:
+    """(level, first i, last i, right-hand side) of a printed conclusion ``\\rho_{2n,2n-i,L}^{\\prime}=0,~i=a,a+1,
+    \\ldots,b``, read by :func:`paper_repro.printed.latex_math.parse_relation`: a primed constant of order 2n and first
+    index 2n-i of the step's colour, ``=``, a number, and a listed range of i stepping by one (``ValueError``
+    otherwise; the value and the range are compared by the callers)."""
+    rel = lm.parse_relation(tex)
+    head = rel.parts[0] if rel.parts else None
+    i = sympy.Symbol("i")
+    if rel.ops != ["="] or len(rel.parts) != 2 or rel.lead is not None or not isinstance(head, AppliedUndef) or \
+            head.func.__name__ not in _PRIMED or len(head.args) != 3 or head.args[0] != _TWO_N or \
+            sympy.expand(head.args[1] - _TWO_N + i) != 0 or (color and _PRIMED[head.func.__name__] != color) or \
+            not rel.parts[1].is_Integer:
         raise ValueError(f"not a conclusion const'_{{2n,2n-i,L}}=0, i=a,..,b of colour {color}: {tex[:40]!r}")
-    listed_orders(tex, "i", n=5, r=1)
+    found = [c.parts[1].args for c in rel.conditions if c.ops == ["in"] and c.parts[0] == i
+             and isinstance(c.parts[1], sympy.Tuple)]
+    if len(found) != 1 or len(rel.conditions) != 1:
+        raise ValueError(f"not one listed range of i after the conclusion: {tex[:40]!r}")
+    listed_orders(tex, "i", n=5, r=1)  # the range steps by one
+    return head.args[2], found[0][0], found[0][-1], rel.parts[1]
 
 
 def read_zeroed(line_id: str, verbatim: str | None = None, color: str | None = None):
     """(level, range of i, right-hand side) of a printed ``const'_{2n,2n-i,LEVEL} = 0, i = a, ..., b``, read from its
-    transcription, as functions of (n, r)."""
-    from paper_repro.printed.lines.read import bound, listed_range, right_hand_side
-
+    transcription (:func:`read_zero_line`), as functions of (n, r)."""
     tex = verbatim if verbatim is not None else _transcribed([line_id])[line_id]
-    _zero_line_strict(tex, color)
-    m = re.search(r"_\{2n,2n-i,([^{}]+)\}\^\{\\prime\}", tex)
-    if not m:
-        raise ValueError(f"no primed constant in {tex[:50]!r}")
-    level_expr = m.group(1)
-    lo, hi = listed_range(tex, "i")
-    rhs = right_hand_side(tex, r",~i\s*=")
+    level_expr, lo, hi, rhs = read_zero_line(tex, color)
     return (lambda n, r: bound(level_expr, n=n, r=r),
-            lambda n, r: range(bound(lo, n=n, r=r), bound(hi, n=n, r=r) + 1), rhs)
+            lambda n, r: range(bound(lo, n=n, r=r), bound(hi, n=n, r=r) + 1), str(rhs))
 
 
 def _zeroed_read(line_id, computed_fn, corrected_level, color, alias, level=None, verbatim=None) -> LineResult:
@@ -3038,8 +3066,8 @@ def _zeroed_read(line_id, computed_fn, corrected_level, color, alias, level=None
     res.holds_as_printed &= rhs == "0"
     ln = transcribed_line(line_id)
     if ln.status == "erratum" and verbatim is None:  # the erratum describes what is printed: the level read
-        lev = re.search(r"_\{2n,2n-i,([^{}]+)\}\^\{\\prime\}", ln.verbatim).group(1)
-        if f"_{{2n,2n-i,{lev}}}" not in ln.erratum["printed"]:
+        lev = read_zero_line(ln.verbatim)[0]
+        if f"_{{2n,2n-i,{lev}}}".replace(" ", "") not in ln.erratum["printed"].replace(" ", ""):
             res.corrected_holds = False
             res.detail["erratum_describes_another_level"] = lev
     res.detail["right_hand_side"] = rhs
@@ -3678,19 +3706,16 @@ def zero_conclusion(line_id: str, verbatim: str | None = None) -> LineResult:
     functions whose restriction to the step's edge does not vanish (the elimination recomputed from exact values),
     and those restrictions are linearly independent (exact rank at 2n + 4 points of the edge), so a vanishing
     combination has exactly these constants equal to the printed right-hand side 0 (n = 1..6)."""
-    from paper_repro.printed.lines.read import bound, listed_range, right_hand_side
-
     param_index, color, alias = ZERO_LINES[line_id]
     tex = verbatim if verbatim is not None else _transcribed([line_id])[line_id]
     try:
-        _zero_line_strict(tex, color)
-        if not re.match(r"\s*\\\w+_\{2n,2n-i,0\}", tex):
+        level, lo, hi, rhs = read_zero_line(tex, color)
+        if level != 0:
             raise ValueError("not the level-0 constants")
+        rhs = str(rhs)
     except ValueError as exc:
         return LineResult(False, how="the conclusion read from the transcription, n = 1..6", kind="exhaustive",
                           detail={"unread": str(exc)})
-    lo, hi = listed_range(tex, "i")
-    rhs = right_hand_side(tex, r",~i\s*=")
     bad = []
     for n in N_PROOF:
         named = set()
@@ -3714,7 +3739,7 @@ def zero_conclusion(line_id: str, verbatim: str | None = None) -> LineResult:
     return LineResult(ok, how="range and right-hand side read from the transcription; the constants of the functions "
                       "not vanishing on the step's edge (exact values) and their exact rank at 2n + 4 points of the "
                       f"edge, n = {N_PROOF.start}..{N_PROOF.stop - 1}", kind="exhaustive",
-                      detail={"printed_range": [lo, hi], "right_hand_side": rhs, "mismatches": bad[:2]})
+                      detail={"printed_range": [str(lo), str(hi)], "right_hand_side": rhs, "mismatches": bad[:2]})
 
 
 @line_check("sec1_3-r0-p1-zero")

@@ -81,6 +81,29 @@ def parse(tex: str):
     return section_names(lm.parse(tex))
 
 
+def bound(expr: str, **env: int) -> int:
+    """Integer value of a printed bound such as ``2n-1-j`` (read by :func:`parse`) with ``env`` bound;
+    :class:`LatexMathError` if a name stays unbound or the value is not an integer.
+
+    >>> bound("2n-1-j", n=3, j=1)
+    4
+    """
+    names, f = _bound_fn(expr)
+    if not set(names) <= set(env):
+        raise LatexMathError(f"the bound {expr!r} names {sorted(set(names) - set(env))}, unbound")
+    v = f(*(env[x] for x in names))
+    if v != int(v):
+        raise LatexMathError(f"the bound {expr!r} is not an integer at {env}: {v}")
+    return int(v)
+
+
+@cache
+def _bound_fn(expr: str):
+    e = parse(expr)
+    names = tuple(sorted(s.name for s in e.free_symbols))
+    return names, sp.lambdify([sp.Symbol(x) for x in names], e, "math")
+
+
 def chain(tex: str) -> list:
     """The parts of a chain ``a = b = c`` (a continued row ``= & ..`` too), by
     :func:`paper_repro.printed.latex_math.parse_relation`: every relation must be ``=`` and no clause may follow
@@ -916,7 +939,6 @@ def check_b2() -> LineResult:
 def read_prop_families(tex: str, n: int) -> list[tuple[int, int, int]]:
     """The representatives of the printed families ``\\left\\{ \\left[ .. \\right] \\right\\} _{g=0}^{n-1}`` of
     Proposition iterative_construction_of_trivariate_extension at order n, read from the transcription."""
-    from paper_repro.printed.lines.read import bound
 
     fams = re.findall(r"\\left\\\{\s*\\left\[\s*(.*?)\s*\\right\]\s*\\right\\\}"
                       r"\s*_\{(\w)=([^{}]+)\}\^\{([^{}]+)\}", tex)
@@ -953,7 +975,6 @@ def read_prop() -> tuple[int, str]:
 def prop_sets_agree(n_max: int, lowest: int, top: str) -> dict[int, bool]:
     """E_n/~ minus the union over i = lowest..top(n) against the printed representatives (read): distinct classes,
     exactly the new ones."""
-    from paper_repro.printed.lines.read import bound
 
     tex = verbatim("sec4_5-prop-new-classes")
     out = {}
@@ -1293,7 +1314,6 @@ def read_proof_r() -> tuple:
 def _proof_reduction() -> dict[str, bool]:
     import sympy as sp
 
-    from paper_repro.printed.lines.read import bound
 
     jr, ir, second, first_idx, level_idx, formula = read_proof_r()
     ns, is_, js = sp.symbols("n i j")
