@@ -2324,7 +2324,7 @@ def elimination_orders(override: dict[str, str] | None = None) -> LineResult:
             bad.append(f"n={n}: levels")
     return LineResult(not bad, how="orders read from the five transcriptions against the elimination recomputed from "
                       f"exact derivatives, n = 1..{N_PROOF.stop - 1}", kind="exhaustive",
-                      detail={"ranges": {k: list(v) for k, v in ranges.items()}, "mismatches": bad[:3]})
+                      detail={"ranges": {k: [str(x) for x in v] for k, v in ranges.items()}, "mismatches": bad[:3]})
 
 
 @line_check("sec1_3-induction-orders")
