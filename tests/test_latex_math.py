@@ -287,6 +287,14 @@ def test_doubled_comma_of_symmetry_condition_3_is_refused():
         parse_relation(verbatim("sec4_5-symmetry-3"))
 
 
+def test_a_listed_range_follows_an_equals_sign():
+    """``i=0,1,\\ldots,2n`` is a listed range; ``i\\neq0,1,\\ldots,2n`` is not (a changed relation must not be read as
+    the same range)."""
+    assert parse_relation(r"a=0,~i=0,1,\ldots,2n").conditions[0].ops == ["in"]
+    with pytest.raises(LatexMathError, match="list after"):
+        parse_relation(r"a=0,~i\neq0,1,\ldots,2n")
+
+
 def test_quantifiers():
     assert parse_relation(r"a=0,~\forall x\in\left[0,1\right]").conditions[0].quantifier == "forall"
     lone = parse_relation(r"\forall y\in\left[ 0,\alpha-x\right]")  # (system_partition_of_unity), its own line
