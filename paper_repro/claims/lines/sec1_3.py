@@ -1938,6 +1938,8 @@ def row_terms(tex: str) -> list[tuple[list, str, sympy.Expr, sympy.Expr, sympy.T
     parts before the last are 0 or L, widetilde L, widehat L at (u, v, w); a clause must be ``\\forall (u,v,w) \\in
     \\Omega^{\\alpha}``; every function is applied to (u, v, w)."""
     rel = lm.parse_relation(tex)
+    if rel.lead not in (None, "=") or any(op != "=" for op in rel.ops):
+        raise LatexMathError(f"the row relates by {rel.lead} {rel.ops}, not '='")
     for p in rel.parts[:-1]:
         if p != 0 and not (isinstance(p, AppliedUndef) and p.func.__name__ in ("L", "Ltilde", "Lhat")
                            and p.args[-1] == _UVW):
@@ -3179,7 +3181,7 @@ def read_case_row(tex: str) -> tuple[sympy.Expr, sympy.Expr, sympy.Expr]:
     rel = lm.parse_relation(tex)
     last = rel.parts[-1] if rel.parts else None
     if isinstance(last, AppliedUndef) and last.func == lm.Cases:
-        if len(last.args) != 1 or rel.conditions or rel.parts[:-1]:
+        if len(last.args) != 1 or rel.conditions or rel.parts[:-1] or rel.lead not in (None, "="):
             raise LatexMathError(f"{len(last.args)} case rows")
         value, cond = last.args[0].args
         return (value, *_k_range(cond))
