@@ -4,6 +4,7 @@ reject wrong inputs (perturbed index sets, bounds, levels, chain rules, parametr
 import json
 
 import pytest
+import sympy
 
 from paper_repro.claims.lines import CHECKS, LINE_KINDS
 from paper_repro.claims.lines import sec1_3 as C
@@ -386,29 +387,31 @@ def test_level_zeroed_reads_the_constants(right, wrong):
 
 
 # -- the readers of Sections 1-2 (issue 37) ------------------------------------------------------------------------
-@pytest.mark.parametrize("line_id", ["sec1_3-R-leq-n", "sec1_3-G-geq-explicit", "sec1_3-B-leq-explicit",
-                                     "sec1_3-univariate-basis", "sec1_3-bernstein-identity"])
-def test_interim_reader_agrees_with_latex_math(line_id):
-    """tex_expr.parse delegates to printed/latex_math; the interim reader written before it gives the same objects."""
-    import re
-
+@pytest.mark.parametrize("line_id", ["sec1_3-R-leq-n", "sec1_3-G-geq-explicit", "sec1_3-B-leq-explicit"])
+def test_explicit_formulas_are_read_by_latex_math(line_id):
+    """The explicit R, G, B displays are read by printed/latex_math (no reader of their own): the set-builder's
+    member is a product of half-angle powers whose exponents use n, i, j only, and a blank body is refused."""
     import sympy
 
+    from paper_repro.printed import symmetry as S
+    from paper_repro.printed.latex_math import LatexMathError
     from paper_repro.printed.lines import verbatim
-    from paper_repro.printed.lines.tex_expr import own_parse, parse
 
-    text = verbatim(line_id)
-    bodies = re.findall(r"\\left\\\{(.*?)(?::|\\right\\\})", text) or re.findall(r"\\\[(.*?)=1", text)
-    assert bodies
-    for body in bodies:
-        a, b = own_parse(body), parse(body)
-        assert a == b or sympy.simplify(a - b) == 0, (a, b)
+    body = S.set_builders(verbatim(line_id))[-1][0]
+    powers = S.half_angle_powers(S.parse(body))
+    assert {x for _, x in powers} <= set(S.VARS) and len(powers) >= 2
+    assert set().union(*(sympy.sympify(e).free_symbols for e in powers.values())) <= set(sympy.symbols("n i j"))
+    with pytest.raises(LatexMathError):
+        S.half_angle_powers(S.parse(r"\sin^{i}\frac{w}{3}"))  # not a half angle
+    with pytest.raises(LatexMathError):
+        S.parse("XXX")
+    assert S.bound("2n-1-j", n=3, j=1) == 4
 
 
 def test_printed_symmetry_objects_come_from_the_transcriptions():
     from paper_repro.printed import symmetry as S
+    from paper_repro.printed.latex_math import LatexMathError as TexError
     from paper_repro.printed.lines import substituted, verbatim
-    from paper_repro.printed.lines.tex_expr import TexError
 
     assert S.printed_half() == {"R": (2, 1, 0), "G": (0, 2, 1), "B": (1, 0, 2)}
     assert len(S.six_properties()) == S.six_count() == 6
@@ -425,30 +428,33 @@ def test_printed_symmetry_objects_come_from_the_transcriptions():
 # ==============================================================================================================
 # Section 3 (sec:linear_independence, source lines >= 462): the checks read their lines (issue 37)
 # ==============================================================================================================
-def test_sec3_reader_reads_products_parametrizations_and_sign_functions():
-    from paper_repro.printed.lines import verbatim
-    from paper_repro.printed.lines.sec3_read import (
+def test_sec3_reads_products_parametrizations_and_sign_functions_through_latex_math():
+    from paper_repro.claims.lines.sec1_3 import (
+        LatexMathError,
+        _row_value,
         linear_form,
         read_parametrization,
         read_products,
-        read_sign_function,
-        sign_of,
     )
+    from paper_repro.printed.derivatives import read_sign_function, sign_of
+    from paper_repro.printed.lines import verbatim
 
     assert linear_form(r"\alpha-x-y") == (1, -1, -1) and linear_form("x-y") == (0, 1, -1)
     with pytest.raises(ValueError):
         linear_form(r"\alpha-1")
     maps, ranges = read_parametrization(verbatim("sec1_3-param-2"))
-    assert maps == ((0, 1, 0), (1, -1, -1), (0, 0, 1)) and ranges["y"] == ("0", "\\alpha-x")
-    (term,) = read_products(verbatim("sec1_3-kterm-R-low"))
-    assert term.sums == [("j", "r+1", "n-1"), ("i", "j", "n")] and term.constant == ("R", "2n-i", "j", False)
-    assert [f.kind for f in term.factors] == ["trig", "bar", "trig", "bar", "M"]
+    alpha, x = sympy.symbols("alpha x")
+    assert maps == ((0, 1, 0), (1, -1, -1), (0, 0, 1)) and ranges["y"] == (0, alpha - x)
+    (term,) = read_products(_row_value(verbatim("sec1_3-kterm-R-low")))
+    n, r, i, j = sympy.symbols("n r i j")
+    assert term.sums == [("j", r + 1, n - 1), ("i", j, n)] and term.constant == ("R", 2 * n - i, j, False)
+    assert sorted(f.kind for f in term.factors) == ["M", "bar", "bar", "trig", "trig"]
     cos = read_sign_function(verbatim("sec1_3-sign-cos"))
     assert sign_of(cos, i=2, p=2) == 1          # printed +1, the true sign is -1 (erratum lemma-sign-cos-power)
     assert sign_of(cos, i=1, p=2) is None       # no printed branch applies
     assert sign_of(cos, i=1, p=1) is None       # branches 0 (p odd) and +1 (p - i = 0 = 2r, r even) both apply
-    with pytest.raises(ValueError):
-        read_products("XXX")
+    with pytest.raises(LatexMathError):
+        read_products(_row_value("XXX"))
 
 
 def test_sec3_blank_lines_fail_their_checks():

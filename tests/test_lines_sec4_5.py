@@ -85,13 +85,19 @@ def test_sec4_no_retyped_copies_left():
 def test_sec4_reader_reads_the_notation_and_refuses_the_rest():
     import sympy as sp
 
-    from paper_repro.claims.lines.sec4_tex import PM, TexError, chain, parse
+    from paper_repro.claims.lines.sec4_5 import PM, chain, parse
+    from paper_repro.printed.latex_math import LatexMathError as TexError
 
     u, t, m = sp.symbols("u t m")
     assert parse(r"\sin^{m}\frac{t}{2}") == sp.sin(t / 2) ** m
     assert parse(r"\cos\left( z\mp r_{1}\right)") == sp.cos(sp.Symbol("z") - PM * sp.Symbol("r1"))
     assert parse(r"za") == sp.Symbol("z") * sp.Symbol("a")  # juxtaposition: the printed 'za' is z times a
     assert chain(r"{\displaystyle\sum\limits_{k=0}^{2}} k = 3")[0].doit() == 3
+    assert chain(r"z=\min\left\{ r_{1},g_{1}+1\right\} .") == [sp.Symbol("z"), sp.Min(sp.Symbol("r1"),
+                                                                                      sp.Symbol("g1") + 1)]
+    for bad in (r"a=b,~\forall x", r"\leq & b", r"a\leq b"):  # a chain of '=' only
+        with pytest.raises(TexError):
+            chain(bad)
     for bad in ("", r"\foo{x}", r"\sin\left( u"):
         with pytest.raises(TexError):
             parse(bad)

@@ -1,10 +1,10 @@
 """Claim ``derivative_signs``: Lemma lem:sign_cos_power_derivative and Proposition derivative_cosine_sine.
 
 The printed sign rules, read from the transcriptions of eqs. sign_cos_power_derivative, sign_sin_power_derivative
-and derivative_cosine_sine_at_0 (:func:`paper_repro.printed.lines.sec3_read.read_sign_function`: each branch's value
-and condition, the Proposition's hypotheses i + j != 0, z >= 1 read from its statement), against exact derivatives
-at 0 computed from Taylor series with rational lambda, mu.  Where no printed branch applies, or branches that apply
-give different values, the printed rule gives no sign (a mismatch).  Disagreements become errata (with the
+and derivative_cosine_sine_at_0 (:func:`paper_repro.printed.derivatives.read_sign_function`, by latex_math: each
+branch's value and condition, the Proposition's hypotheses i + j != 0, z >= 1 read from its statement), against exact
+derivatives at 0 computed from Taylor series with rational lambda, mu.  Where no printed branch applies, or branches
+that apply give different values, the printed rule gives no sign (a mismatch).  Disagreements become errata (with the
 corrected rule, itself checked on the same range).
 """
 
@@ -12,10 +12,12 @@ from __future__ import annotations
 
 import re
 
+import sympy
 from flint import fmpq
 
+from paper_repro.printed import latex_math as lm
+from paper_repro.printed.derivatives import Condition, read_sign_function, sign_function_argument, sign_of
 from paper_repro.printed.lines import verbatim
-from paper_repro.printed.lines.sec3_read import _condition, read_sign_function, sign_of
 from paper_repro.theory.derivatives import (
     corrected_sign_cos,
     cos_power_derivative,
@@ -43,10 +45,12 @@ def run(i_max, j_max, p_max, m_i_max, m_j_max, z_max, rates) -> Outcome:
     sin_rule = read_sign_function(verbatim("sec1_3-sign-sin"))
     prop = verbatim("sec1_3-proposition-M")
     # what each rule is the sign of, read: sign C_{i,lambda}^{p}(0) =, sign S_{j,mu}^{p}(0) =, sign M^{z}_{..}(0) =
-    for lid, head in (("sec1_3-sign-cos", r"C_\{i,\\lambda\}\^\{p\}"), ("sec1_3-sign-sin", r"S_\{j,\\mu\}\^\{p\}"),
-                      ("sec1_3-proposition-M", r"M_\{i,\\lambda,j,\\mu\}\^\{z\}")):
-        if not re.search(r"\\operatorname\{sign\}%?\s*" + head + r"\\left\(\s*0\\right\)\s*=\\left\\\{",
-                         verbatim(lid)):
+    i, j, p, z, lam, mu = sympy.symbols("i j p z lambda mu")
+    zero = sympy.Tuple(0)
+    for lid, head in (("sec1_3-sign-cos", sympy.Function("C_sup")(i, lam, p, zero)),
+                      ("sec1_3-sign-sin", sympy.Function("S_sup")(j, mu, p, zero)),
+                      ("sec1_3-proposition-M", sympy.Function("M_sup")(i, lam, j, mu, z, zero))):
+        if sign_function_argument(verbatim(lid)) != head:  # sign C_{i,lambda}^{p}(0), parsed
             raise ValueError(f"{lid}: the left-hand side sign X(0) = is not read")
     if not re.match(r"Independently of \$i\\in%?\s*\\mathbb\{N\}\s*\$ and \$\\lambda,\\mu>0\$, for all values of "
                     r"\$j,z\\in%?\s*\\mathbb\{N\}\s*\$ such that \$[^$]*\$ and \$[^$]*\$ we have the equality", prop):
@@ -55,7 +59,7 @@ def run(i_max, j_max, p_max, m_i_max, m_j_max, z_max, rates) -> Outcome:
     hyps = re.findall(r"\$([^$]*?(?:\\neq|\\geq)[^$]*?)\$", prop.split("\\begin{equation}")[0])
     if len(hyps) != 2:
         raise ValueError(f"the Proposition's hypotheses i+j != 0, z >= 1 not read: {hyps}")
-    m_domain = " and ".join(f"({_condition(h)})" for h in hyps)
+    m_domain = [Condition(lm.parse_relation(h).as_boolean(), ("i", "j", "z")) for h in hyps]
 
     def printed_sign_cos(i, p):
         return sign_of(cos_rule, i=i, p=p)
@@ -84,7 +88,7 @@ def run(i_max, j_max, p_max, m_i_max, m_j_max, z_max, rates) -> Outcome:
             for i in range(0, m_i_max + 1):
                 for j in range(0, m_j_max + 1):
                     for z in range(0, z_max + 1):
-                        if not eval(m_domain, {"__builtins__": {}}, {"i": i, "j": j, "z": z}):  # noqa: S307
+                        if not all(h(i=i, j=j, z=z) for h in m_domain):
                             continue
                         n_m += 1
                         if sign_of(m_rule, j=j, z=z, i=i) != sign(mixed_derivative(i, lam, j, mu, z)):
@@ -113,7 +117,7 @@ def run(i_max, j_max, p_max, m_i_max, m_j_max, z_max, rates) -> Outcome:
     kinds = {"none": set(), "several": set(), "wrong": set()}
     for i in range(1, i_max + 1):
         for p in range(0, p_max + 1):
-            applies = {v for v, c in cos_rule if eval(c, {"__builtins__": {}}, {"i": i, "p": p})}  # noqa: S307
+            applies = {v for v, c in cos_rule if c(i=i, p=p)}
             if not applies:
                 kinds["none"].add((i, p))
             elif len(applies) > 1:

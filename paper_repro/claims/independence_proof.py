@@ -296,9 +296,8 @@ def run(n_max: int, r_max: int, system_n_max: int) -> Outcome:
                                                              printed.reduced_y_derivative_tilde(n, 0), 6))
     chain["y_derivative_L_hat_n_minus_2"] = float(chain_rule_error(n, "parametrization_3_y_0", 1,
                                                                    printed.reduced_x_derivative_hat(n, 0), 7))
-    from paper_repro.claims.lines.sec1_3 import _params, r0p1_sines
+    from paper_repro.claims.lines.sec1_3 import _params, interval, r0p1_sines
     from paper_repro.printed.lines import verbatim
-    from paper_repro.printed.lines.read import interval
 
     params = {p: parametrization_ok(p) for p in PARAM_LABELS}
     # the y-range of system_partition_of_unity (read), with the printed x-range of the parametrization
@@ -308,8 +307,8 @@ def run(n_max: int, r_max: int, system_n_max: int) -> Outcome:
         raise ValueError(f"sec4_5-system-y-range not read: {sys_line!r}")
     system_range = parametrization_ok(pu, ranges={"x": _params()[pu][3]["x"], "y": interval(sys_line, "y")})
     # the errata recorded on the two lines describe these transcriptions: the y-range they call printed
+    from paper_repro.claims.lines.sec1_3 import linear_form
     from paper_repro.printed.lines import line
-    from paper_repro.printed.lines.sec3_read import linear_form
 
     def recorded_y(line_id: str):
         m = re.search(r"y in \[([^\]]+)\]", line(line_id).erratum["printed"])

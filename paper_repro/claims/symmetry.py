@@ -25,7 +25,7 @@ from paper_repro.core.alphas import alpha_mp
 from paper_repro.core.basis import evaluate
 from paper_repro.core.labels import BasisLabel, compose, exponents, full_system
 from paper_repro.printed import symmetry as printed
-from paper_repro.printed.lines.tex_expr import TexError
+from paper_repro.printed.latex_math import LatexMathError
 from paper_repro.util.measured import bound
 from paper_repro.util.registry import Outcome, claim
 
@@ -47,7 +47,7 @@ def structural_checks(n: int) -> list[str]:
     A line that cannot be read is a failure."""
     try:
         return _structural(n)
-    except (TexError, ValueError) as exc:
+    except (LatexMathError, ValueError) as exc:
         return [f"unread: {exc}"]
 
 
@@ -145,7 +145,7 @@ def run(n_max: int, alphas: list[str], points: int, dps: int, seed: int) -> Outc
     tol = mpmath.mpf(10) ** (-(dps - 10))
     try:
         maps = {name: family_image(2, sub, c, t) for name, sub, c, t in printed.six_properties()}
-    except TexError as exc:
+    except LatexMathError as exc:
         return Outcome(False, {"exact_monomial_checks": fails, "unread": str(exc)})
     return Outcome(not fails and worst <= tol, {
         "exact_monomial_checks": "all hold" if not fails else fails, "n_range": [1, n_max],

@@ -190,6 +190,7 @@ def clean(tex: str, arrays: list | None = None) -> str:
     s = re.sub(r"\\(" + "|".join(COLOURS) + r")\s*\{", "{", s)
     s = _replace_macro(s, "underset", 2, lambda a, b: b)
     s = _replace_macro(s, "overset", 2, lambda a, b: b)
+    s = _replace_macro(s, "underbrace", 1, lambda a: "{" + a + "}")  # after underset: \underset{..}{\underbrace{X}}
     s = _replace_macro(s, "operatorname", 1, lambda a: "\\" + a.strip() + " ")
     for kind in DECOR:
         s = _replace_macro(s, kind, 1, functools.partial(_decor, kind))
@@ -449,7 +450,8 @@ class Relation:
     Relations; ``quantifier`` is ``'forall'`` (``'exists'``) on a clause that carries ``\\forall``
     (``\\exists``).  The op ``'equiv'`` has as right part ``Tuple(b, m)`` for ``a \\equiv b \\pmod{m}``; ``'in'``
     with a ``Tuple`` right part is a listed range ``i=0,1,\\ldots,2n`` (``ldots`` is the Symbol ``ldots``).
-    ``continues`` is the operator (``'+'``, ``'-'``, ``'*'``) a row ends with when the next row continues it.
+    ``continues`` is the operator (``'+'``, ``'-'``, ``'*'``) a row ends with when the next row continues it, or
+    ``'forall'`` for a row that ends inside a clause (``,~\\forall\\left(``) the next row goes on with.
     """
 
     parts: list[Any]
@@ -577,9 +579,13 @@ class _Build(Transformer):
         return c[0] - PM * c[2]
 
     def pm_unary(self, c):
+        if isinstance(c[1], sympy.Tuple) and len(c[1]) == 2:  # \equiv\pm1 \pmod{4}: the sign of the residue
+            return sympy.Tuple(PM * c[1][0], c[1][1])
         return PM * c[1]
 
     def mp_unary(self, c):
+        if isinstance(c[1], sympy.Tuple) and len(c[1]) == 2:
+            return sympy.Tuple(-PM * c[1][0], c[1][1])
         return -PM * c[1]
 
     def cup(self, c):
@@ -668,7 +674,12 @@ class _Build(Transformer):
 
     # functions
     def func(self, c):
-        return FUNCS[_name(c[0])](c[1])
+        name, arg = _name(c[0]), c[1]
+        if name in ("min", "max") and isinstance(arg, sympy.Function) and arg.func == Family \
+                and not arg.args[1] and not arg.args[2]:  # \min\left\{a,b,c\right\}: a listed set, no condition
+            members = arg.args[0].args if isinstance(arg.args[0], sympy.Tuple) else (arg.args[0],)
+            return (sympy.Min if name == "min" else sympy.Max)(*members)
+        return FUNCS[name](arg)
 
     def func_pow(self, c):
         return FUNCS[_name(c[0])](c[2]) ** self._scalar(c[1])
@@ -991,6 +1002,8 @@ def _listing(first: Relation, rest: list[str], arrays: list) -> Relation:
     """``i=0`` followed by ``1``, ``\\ldots``, ``2n`` -> ``i in (0, 1, ldots, 2n)``."""
     if any(not t.strip() for t in rest):
         raise LatexMathError(f"an empty item between commas (',,') in the list after {first.parts[-1]}")
+    if not first.ops or first.ops[-1] != "=":  # i\neq0,1,\ldots,2n is no listed range
+        raise LatexMathError(f"a list after {first.ops[-1] if first.ops else 'no relation'}, not after '='")
     items = [first.parts[-1]] + [_run("start_expr", t.strip(), arrays) for t in rest]
     return Relation(first.parts[:-1] + [sympy.Tuple(*items)], first.ops[:-1] + ["in"], first.lead,
                     quantifier=first.quantifier)
@@ -1040,8 +1053,12 @@ def parse_relation(tex: str) -> Relation:
     if not s:
         raise LatexMathError("nothing to read")
     cont = None
-    m = re.search(r"(\+|-|\\cdot|\\times)\s*$", s)
+    m = re.search(r",?\s*\\forall\s*\(\s*$", s)  # the row ends inside a clause that the next row goes on with
     if m:
+        cont = "forall"
+        s = s[:m.start()].rstrip()
+    m = re.search(r"(\+|-|\\cdot|\\times)\s*$", s)
+    if m and not cont:
         cont = {"+": "+", "-": "-"}.get(m.group(1), "*")
         s = s[:m.start()].rstrip()
     chunks = _split_top(s)
@@ -1049,6 +1066,12 @@ def parse_relation(tex: str) -> Relation:
         items = [_run("start_expr", c.strip(), arrays) for c in chunks]
         return Relation([sympy.Tuple(*items)], [], continues=cont)
     head = chunks[0].strip()
+    if head.startswith(("\\forall", "\\exists")):  # a lone quantified clause: \forall y\in[0, alpha-x]
+        r = _conditions(chunks, arrays)
+        if len(r) != 1:
+            raise LatexMathError(f"{len(r)} clauses where one quantified relation is read")
+        r[0].continues = cont
+        return r[0]
     r = _run("start_relation", head, arrays)
     k = 1
     if isinstance(r, Relation):
@@ -1134,13 +1157,26 @@ def _condition(t: str):
     pieces = _split_top(t)
     if len(pieces) > 1:
         return sympy.And(*[_condition(x) for x in pieces])
-    if t.startswith("(") and _split_top(t[1:], ")")[0] == t[1:-1] and t.endswith(")"):
+    if t.startswith("(") and t.endswith(")") and _closing(t, 0) == len(t) - 1:
         return _condition(t[1:-1])
     forall = t.startswith("\\forall")
     r = _run("start_relation", t[len("\\forall"):] if forall else t, [])
     if not isinstance(r, Relation):
         raise LatexMathError(f"a condition without a relation: {t!r}")
     return _as_basic(r)
+
+
+def _closing(s: str, k: int) -> int:
+    """Index of the bracket that closes the one at ``s[k]`` (-1 if none)."""
+    depth = 0
+    for m in range(k, len(s)):
+        if s[m] in "([{":
+            depth += 1
+        elif s[m] in ")]}":
+            depth -= 1
+            if depth == 0:
+                return m
+    return -1
 
 
 def _split_top_word(s: str, word: str) -> list[str]:
@@ -1171,7 +1207,7 @@ def parse_cases(tex: str) -> list[tuple[Any, Any]]:
     [(-1, Eq(-i + p, 2*r)), (0, Eq(Mod(p + 1, 2), 0))]
     """
     arrays: list = []
-    clean(tex, arrays)
+    clean(_display_math(tex), arrays)
     if not arrays:
         raise LatexMathError(f"no array in {tex[:60]!r}")
     return _case_rows(arrays[0])

@@ -4,7 +4,7 @@ second-half relations ``X_{2n,2n-i,j}(u,v,w) = X_{2n,i,j}(sigma)`` and the six s
 Fig. oriented_graph(b) (its caption).
 
 Everything is parsed at call time from :func:`paper_repro.printed.lines.verbatim` (so the blank and mutation tests
-of the lines reach it) with :mod:`paper_repro.printed.lines.tex_expr` and :mod:`paper_repro.printed.lines.read`;
+of the lines reach it) with :mod:`paper_repro.printed.latex_math`;
 exponent vectors are in the order of :data:`paper_repro.core.labels.SLOTS` (sin u/2, cos u/2, sin v/2, ...).
 
 >>> printed_g(2, 1, 0)  # G_{4,3,0} = sin^3(w/2) sin(v/2) cos(u/2)
@@ -23,11 +23,52 @@ from functools import cache
 
 import sympy
 
+from paper_repro.printed import latex_math as lm
+from paper_repro.printed.latex_math import LatexMathError, clean
 from paper_repro.printed.lines import verbatim
-from paper_repro.printed.lines.read import bound
-from paper_repro.printed.lines.tex_expr import TexError, clean, half_angle_powers, parse
 
 VARS = ("u", "v", "w")
+
+
+@cache
+def parse(tex: str) -> sympy.Expr:
+    """One expression, by :func:`paper_repro.printed.latex_math.parse` (cached by the text read)."""
+    return lm.parse(tex)
+
+
+def bound(expr: str, **env: int) -> int:
+    """Integer value of a printed bound such as ``2n-1-j`` (read by :func:`parse`) with ``env`` bound;
+    :class:`LatexMathError` if a name stays unbound or the value is not an integer.
+
+    >>> bound("2n-1-j", n=3, j=1)
+    4
+    """
+    v = parse(expr).subs({sympy.Symbol(k): x for k, x in env.items()})
+    if not v.is_Integer:
+        raise LatexMathError(f"the bound {expr!r} is not an integer at {env}: {v}")
+    return int(v)
+
+
+def half_angle_powers(expr: sympy.Expr, variables=VARS) -> dict[tuple[str, str], sympy.Expr]:
+    """The exponents of a parsed product of powers of ``sin(x/2)``, ``cos(x/2)`` (x among ``variables``):
+    ``{("sin", "u"): 2n-i, ...}``; :class:`LatexMathError` if ``expr`` is anything else (a sum, another factor,
+    another argument).  A factor that occurs twice has its exponents added.
+
+    >>> half_angle_powers(parse(r"\\sin^{i}\\frac{w}{2}\\cos^{j}\\frac{v}{2}\\sin\\frac{w}{2}"))
+    {('cos', 'v'): j, ('sin', 'w'): i + 1}
+    """
+    out: dict[tuple[str, str], sympy.Expr] = {}
+    for base, exp in (f.as_base_exp() for f in sympy.Mul.make_args(expr)):
+        if isinstance(base, (sympy.sin, sympy.cos)):
+            arg = base.args[0]
+            x = [v for v in variables if sympy.simplify(arg - sympy.Symbol(v) / 2) == 0]
+            if len(x) != 1:
+                raise LatexMathError(f"{base} is not a function of one half angle of {variables}")
+            key = ("sin" if isinstance(base, sympy.sin) else "cos", x[0])
+            out[key] = out.get(key, 0) + exp
+        elif base != 1:
+            raise LatexMathError(f"factor {base} is not a power of a half-angle sine or cosine")
+    return dict(sorted(out.items()))
 #: The lines of the explicit formulas: (colour, half) -> line id; "low" is i = j..n, "high" i = n+1..2n-j.
 EXPLICIT_LINES = {("R", "low"): "sec1_3-R-leq-n", ("R", "high"): "sec1_3-R-geq-n-explicit",
                   ("G", "low"): "sec1_3-G-leq-explicit", ("G", "high"): "sec1_3-G-geq-explicit",
@@ -43,12 +84,12 @@ IndexSet = tuple[tuple[str, str, str], tuple[str, str, str]]
 
 def set_builders(tex: str) -> list[tuple[str, IndexSet, tuple[int, int]]]:
     """The set-builders ``\\left\\{ body \\right\\} _{j=a,i=b}^{c,d}`` of ``tex``: (body, ((j, a, c), (i, b, d)),
-    span in ``tex``); ``TexError`` if the index set is not a double one over j, i."""
+    span in ``tex``); ``LatexMathError`` if the index set is not a double one over j, i."""
     out = []
     for m in _SET.finditer(tex):
         sub, sup = m.group("sub").split(","), m.group("sup").split(",")
         if len(sub) != 2 or len(sup) != 2 or any("=" not in s for s in sub):
-            raise TexError(f"not a double index set: _{{{m.group('sub')}}}^{{{m.group('sup')}}}")
+            raise LatexMathError(f"not a double index set: _{{{m.group('sub')}}}^{{{m.group('sup')}}}")
         (ov, olo), (iv, ilo) = (s.split("=", 1) for s in sub)
         out.append((m.group("body"), ((ov.strip(), olo.strip(), sup[0].strip()),
                                       (iv.strip(), ilo.strip(), sup[1].strip())), m.span()))
@@ -75,7 +116,7 @@ def pairs(iset: IndexSet, n: int) -> list[tuple[int, int]]:
     """The (i, j) of a printed index set at order n (outer j, inner i), each once, in printed order."""
     (ov, olo, ohi), (iv, ilo, ihi) = iset
     if (ov, iv) != ("j", "i"):
-        raise TexError(f"index set over {(ov, iv)}, not (j, i)")
+        raise LatexMathError(f"index set over {(ov, iv)}, not (j, i)")
     return [(i, j) for j in range(bound(olo, n=n), bound(ohi, n=n) + 1)
             for i in range(bound(ilo, n=n, j=j), bound(ihi, n=n, j=j) + 1)]
 
@@ -86,7 +127,7 @@ def monomial(body: str) -> Callable[[int, int, int], tuple[int, ...]]:
     n, i, j = sympy.symbols("n i j")
     extra = set().union(*(sympy.sympify(e).free_symbols for e in powers.values())) - {n, i, j}
     if extra:
-        raise TexError(f"exponents name {sorted(map(str, extra))}")
+        raise LatexMathError(f"exponents name {sorted(map(str, extra))}")
     slots = [sympy.sympify(powers.get((f, x), 0)) for x in VARS for f in ("sin", "cos")]
     fn = sympy.lambdify((n, i, j), slots, "math")
     return lambda nn, ii, jj: tuple(int(q) for q in fn(nn, ii, jj))
@@ -98,14 +139,14 @@ def explicit(color: str, half: str) -> tuple[Callable[[int, int, int], tuple[int
     tex = verbatim(EXPLICIT_LINES[color, half])
     found = set_builders(tex)
     if not found:
-        raise TexError(f"no set-builder in {EXPLICIT_LINES[color, half]}")
+        raise LatexMathError(f"no set-builder in {EXPLICIT_LINES[color, half]}")
     body, iset, (a, _) = found[-1]
     if not clean(tex[:a]).rstrip().endswith("="):
-        raise TexError(f"{EXPLICIT_LINES[color, half]}: the explicit set does not follow an '='")
+        raise LatexMathError(f"{EXPLICIT_LINES[color, half]}: the explicit set does not follow an '='")
     if len(found) == 2:  # the display names its left side: it must be color_{2n,2n-i,j}(u,v,w) on the same set
         lhs, lset, _ = found[0]
         if lset != iset or label(lhs) != (color, "2*n - i", "j", (0, 1, 2)):
-            raise TexError(f"{EXPLICIT_LINES[color, half]}: left side {lhs!r} on {lset} is not "
+            raise LatexMathError(f"{EXPLICIT_LINES[color, half]}: left side {lhs!r} on {lset} is not "
                            f"{color}_{{2n,2n-i,j}}(u,v,w) on {iset}")
     return monomial(body), iset
 
@@ -118,14 +159,14 @@ def label(tex: str) -> tuple[str, str, str, tuple[int, ...]]:
 def label_of(e: sympy.Expr) -> tuple[str, str, str, tuple[int, ...]]:
     """:func:`label` of a parsed label."""
     if not isinstance(e, sympy.core.function.AppliedUndef) or len(e.args) != 4:
-        raise TexError(f"not a label with arguments: {e}")
+        raise LatexMathError(f"not a label with arguments: {e}")
     order, first, level, args = e.args
     n = sympy.Symbol("n")
     if sympy.simplify(order - 2 * n) != 0:
-        raise TexError(f"order {order} is not 2n")
+        raise LatexMathError(f"order {order} is not 2n")
     names = [str(a) for a in args]
     if sorted(names) != list(VARS):
-        raise TexError(f"arguments {names} are not a permutation of (u, v, w)")
+        raise LatexMathError(f"arguments {names} are not a permutation of (u, v, w)")
     return e.func.__name__, _canon(first), _canon(level), tuple(VARS.index(x) for x in names)
 
 
@@ -173,21 +214,21 @@ def half_relation(color: str) -> tuple[tuple[str, str, str, tuple[int, ...]], tu
     tex = verbatim(lid)
     found = set_builders(tex)
     if len(found) != 2:
-        raise TexError(f"{lid}: {len(found)} set-builders, not 2")
+        raise LatexMathError(f"{lid}: {len(found)} set-builders, not 2")
     (lb, lset, (_, a_end)), (rb, rset, (b_start, _)) = found
     if clean(tex[a_end:b_start]).strip() != "=" or lset != rset:
-        raise TexError(f"{lid}: not an equality of two sets on one index set")
+        raise LatexMathError(f"{lid}: not an equality of two sets on one index set")
     return label(lb), label(rb), lset
 
 
 def printed_half() -> dict[str, tuple[int, int, int]]:
     """The substitution of each printed relation (e.g. R: (w, v, u) -> (2, 1, 0)), for the relations of the form
-    X_{2n,2n-i,j}(u,v,w) = X_{2n,i,j}(sigma) (``TexError`` for any other form)."""
+    X_{2n,2n-i,j}(u,v,w) = X_{2n,i,j}(sigma) (``LatexMathError`` for any other form)."""
     out = {}
     for color in "RGB":
         left, right, _ = half_relation(color)
         if left != (color, "2*n - i", "j", (0, 1, 2)) or right[:3] != (color, "i", "j"):
-            raise TexError(f"{RELATION_LINES[color]}: not {color}_{{2n,2n-i,j}}(u,v,w) = {color}_{{2n,i,j}}(..)")
+            raise LatexMathError(f"{RELATION_LINES[color]}: not {color}_{{2n,2n-i,j}}(u,v,w) = {color}_{{2n,i,j}}(..)")
         out[color] = right[3]
     return out
 
@@ -209,20 +250,20 @@ def six_properties() -> list[tuple[str, tuple[int, int, int], str, str]]:
         m = re.search(r"(.*?) are symmetric in variables (.*?), respectively", sentence)
         kinds = re.findall(r"\b(shaded|adjacent) domains", sentence)
         if not m or len(kinds) != 1:
-            raise TexError(f"unread caption sentence {sentence[:60]!r}")
+            raise LatexMathError(f"unread caption sentence {sentence[:60]!r}")
         (families, pairs_tex), kind = m.groups(), kinds[0]
         names = re.findall(r"(?:red|green|blue)(?:--(?:red|green|blue))?", families)
         swaps = re.findall(r"\\left\(\s*([uvw])\s*,\s*([uvw])\s*\\right\)", pairs_tex)
         if len(names) != len(swaps) or not names:
-            raise TexError(f"{len(names)} domains but {len(swaps)} pairs of variables in {sentence[:60]!r}")
+            raise LatexMathError(f"{len(names)} domains but {len(swaps)} pairs of variables in {sentence[:60]!r}")
         for name, (a, b) in zip(names, swaps):
             if a == b:
-                raise TexError(f"({a},{b}) is not a swap")
+                raise LatexMathError(f"({a},{b}) is not a swap")
             sub = [0, 1, 2]
             sub[VARS.index(a)], sub[VARS.index(b)] = VARS.index(b), VARS.index(a)
             fam = [_COLOURS[c] for c in name.split("--")]
             if (kind == "shaded") != (len(fam) == 1):
-                raise TexError(f"{kind} domains with {name}")
+                raise LatexMathError(f"{kind} domains with {name}")
             out.append((f"({a},{b})", tuple(sub), fam[0], fam[-1]))
     return out
 
@@ -231,10 +272,10 @@ def six_count() -> int:
     """The number of symmetry properties the text announces ("six cyclic symmetry properties")."""
     m = re.search(r"\b(\w+) cyclic symmetry properties", verbatim(COUNT_LINE))
     if not m or m.group(1) not in _NUMBERS:
-        raise TexError(f"no count of symmetry properties in {verbatim(COUNT_LINE)!r}")
+        raise LatexMathError(f"no count of symmetry properties in {verbatim(COUNT_LINE)!r}")
     return _NUMBERS[m.group(1)]
 
 
-__all__ = ["EXPLICIT_LINES", "RELATION_LINES", "set_builders", "set_builders_1", "set_builders_1_all", "pairs", "label",
-           "label_of", "monomial", "explicit", "printed_exponents", "printed_g",
+__all__ = ["EXPLICIT_LINES", "RELATION_LINES", "parse", "bound", "half_angle_powers", "set_builders", "set_builders_1",
+           "set_builders_1_all", "pairs", "label", "label_of", "monomial", "explicit", "printed_exponents", "printed_g",
            "printed_b", "half_relation", "printed_half", "six_properties", "six_count"]

@@ -391,3 +391,9 @@ UNCHECKABLE: dict[str, str] = {
     "sec7-first-order-products:constant:1f7351e286": (
         "'Lemma 5.1' -> 'Lemma 5.2' of the technical report [tech_report], which is not available"),
 }
+
+# -- Section 3 (readers_a: the Sections 1-4 readers folded into latex_math) ---------------------------------------
+EQUIVALENT["sec1_3-L-coefficients:swap:b23a9135d7"] = (  # i <-> j in the whole line
+    "renaming the bound variables: {rho_{2n,2n-j,i}}_{i=0,j=i}^{n-1,2n-1-i} is the set {rho_{2n,2n-i,j}}_{j=0,i=j}"
+    "^{n-1,2n-1-j} with i and j named the other way round (the same constants for every n); the line names the "
+    "same coefficients")

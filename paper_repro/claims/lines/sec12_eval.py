@@ -1,5 +1,5 @@
-"""Evaluation of the formulas of Sections 1-2 read from their transcriptions (:mod:`paper_repro.printed.lines.tex_expr`)
-for the line checks of :mod:`paper_repro.claims.lines.sec1_3`.
+"""Evaluation of the formulas of Sections 1-2 read from their transcriptions (:mod:`paper_repro.printed.latex_math`) for
+the line checks of :mod:`paper_repro.claims.lines.sec1_3`.
 
 The independent objects the parsed formulas are compared with live here too:
 
@@ -13,7 +13,7 @@ The independent objects the parsed formulas are compared with live here too:
 check compares values of the printed formula with values of the independent objects.
 
 >>> import mpmath
->>> from paper_repro.printed.lines.tex_expr import parse
+>>> from paper_repro.printed.latex_math import parse
 >>> with mpmath.workdps(30):
 ...     v = num(parse(r"\\sum_{i=0}^{2n}A_{2n,i}^{\\alpha}\\left( t\\right)"), {"n": 2, "alpha": 1, "t": 0.25})
 >>> bool(abs(v - 1) < 1e-25)
@@ -33,7 +33,7 @@ from flint import fmpq
 from sympy.core.function import AppliedUndef
 
 from paper_repro.core.univariate import c_numerator_by_expansion
-from paper_repro.printed.lines.tex_expr import TexError
+from paper_repro.printed.latex_math import LatexMathError
 
 
 @cache
@@ -91,7 +91,7 @@ def _int(x) -> int:
 #: Functions of the paper that :func:`num` knows (by name of the parsed applied function).
 FUNCS: dict[str, Callable] = {
     "A": lambda env, order, k, args: a_value(order, k, args[0], env["alpha"], env.get("_scale", 1)),
-    "B": lambda env, k, d, args: bernstein(k, d, args[0]),
+    "B_sup": lambda env, k, d, args: bernstein(k, d, args[0]),  # B_{k}^{d}(s): latex_math keeps the superscript
     "c": lambda env, order, k: c_indep(_half_order(order), _int(k), env["alpha"]),
 }
 
@@ -105,7 +105,7 @@ def _half_order(order) -> int:
 
 def num(expr: sympy.Basic, env: dict, funcs: dict[str, Callable] | None = None):
     """mpmath value of a parsed expression; ``env`` binds every free symbol (by name), ``funcs`` the applied
-    functions (default :data:`FUNCS`).  A name not bound raises :class:`TexError`."""
+    functions (default :data:`FUNCS`).  A name not bound raises :class:`LatexMathError`."""
     funcs = FUNCS if funcs is None else funcs
 
     def ev(e):
@@ -119,7 +119,7 @@ def num(expr: sympy.Basic, env: dict, funcs: dict[str, Callable] | None = None):
             return mpmath.pi
         if isinstance(e, sympy.Symbol):
             if e.name not in env:
-                raise TexError(f"unbound name {e.name!r}")
+                raise LatexMathError(f"unbound name {e.name!r}")
             return env[e.name]
         if isinstance(e, sympy.Add):
             return sum((ev(a) for a in e.args), 0)
@@ -152,9 +152,9 @@ def num(expr: sympy.Basic, env: dict, funcs: dict[str, Callable] | None = None):
         if isinstance(e, AppliedUndef):
             name = e.func.__name__
             if name not in funcs:
-                raise TexError(f"unknown function {name!r}")
+                raise LatexMathError(f"unknown function {name!r}")
             return funcs[name](env, *(ev(a) for a in e.args))
-        raise TexError(f"cannot evaluate {e}")
+        raise LatexMathError(f"cannot evaluate {e}")
 
     return ev(expr)
 
@@ -166,7 +166,7 @@ def sign_word(tex: str) -> tuple[str, Callable]:
                        ("negative", lambda x: x < 0)):
         if re.search(rf"(?<![\w-]){word}\b", tex):
             return word, pred
-    raise TexError(f"no sign word in {tex[:60]!r}")
+    raise LatexMathError(f"no sign word in {tex[:60]!r}")
 
 
 __all__ = ["c_indep", "c_exact", "a_value", "bernstein", "num", "FUNCS", "sign_word"]

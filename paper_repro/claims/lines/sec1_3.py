@@ -13,7 +13,7 @@ The independent computations:
 * the elimination of the proof, recomputed from these exact derivatives: the functions whose derivative of the
   step's order does not vanish at the boundary are removed, step by step;
 * the printed sums, values and primed coefficients of Section 3 read from the transcriptions
-  (:mod:`paper_repro.printed.lines.sec3_read`: sums with their bounds, constants, half-angle sines and their
+  (:mod:`paper_repro.printed.latex_math`: sums with their bounds, constants, half-angle sines and their
   derivatives, S and M of the Lemma and the Proposition, c and A; the parametrizations and sign functions too),
   compared with the computed sets and, as linear forms in the combining constants, with the computed values.
 """
@@ -21,6 +21,8 @@ The independent computations:
 from __future__ import annotations
 
 import re
+from dataclasses import dataclass, field
+from fractions import Fraction
 from functools import cache
 from math import comb, factorial
 
@@ -34,10 +36,11 @@ from paper_repro.claims.lines.sec12_eval import c_exact, c_indep, num, sign_word
 from paper_repro.core.domain import rational_alpha
 from paper_repro.core.labels import BasisLabel, compose, delta, exponents, full_system, index_of, united_system
 from paper_repro.core.univariate import c_const, c_numerator, c_numerator_by_expansion
+from paper_repro.printed import latex_math as lm
 from paper_repro.printed import symmetry as printed_sym
+from paper_repro.printed.latex_math import LatexMathError
 from paper_repro.printed.lines import line as transcribed_line
 from paper_repro.printed.lines import lines_of, verbatim
-from paper_repro.printed.lines.tex_expr import TexError, clean, parse, relation
 from paper_repro.theory.derivatives import mixed_derivative, sign, sin_power_derivative
 
 HALF = fmpq(1, 2)
@@ -45,6 +48,83 @@ HALF = fmpq(1, 2)
 ALPHA_TS = (fmpq(1, 2), fmpq(3, 4))
 X_FRACTIONS = (fmpq(1, 3), fmpq(5, 7))
 N_PROOF = range(1, 7)  # orders n for which the proof's steps are recomputed
+
+
+# -- reading (paper_repro.printed.latex_math) -------------------------------------------------------------------
+@cache
+def parse(tex: str) -> sympy.Expr:
+    """One expression, by :func:`paper_repro.printed.latex_math.parse` (cached by the text read)."""
+    return lm.parse(tex)
+
+
+@cache
+def relation(tex: str) -> list[sympy.Expr]:
+    """The parts of an equality chain ``a = b = c`` (every relation ``=``, no trailing clause), by
+    :func:`paper_repro.printed.latex_math.parse_relation`; :class:`LatexMathError` on anything else.
+
+    >>> relation(r"c_{2n,i}^{\\alpha}=c_{2n,2n-i}^{\\alpha}")
+    [c(2*n, i), c(2*n, -i + 2*n)]
+    """
+    rel = lm.parse_relation(tex)
+    if rel.lead not in (None, "=") or any(op != "=" for op in rel.ops) or rel.conditions:
+        raise LatexMathError(f"not an equality chain: {rel.lead} {rel.ops} {len(rel.conditions)} clauses")
+    return rel.parts
+
+
+def linear_form(expr: str | sympy.Expr) -> tuple[int, int, int]:
+    """Integer coefficients (of alpha, x, y) of a printed linear form such as ``\\alpha-x-y``, ``x-y``, ``y``, ``0``
+    (its LaTeX, read by :func:`parse`, or the parsed expression); ``ValueError`` for anything else (another symbol, a
+    constant term, a non-integer or non-linear coefficient).
+
+    >>> linear_form(r"\\alpha-x-y")
+    (1, -1, -1)
+    """
+    e = sympy.expand(parse(expr) if isinstance(expr, str) else sympy.sympify(expr))
+    alpha, x, y = sympy.symbols("alpha x y")
+    if not isinstance(e, sympy.Expr) or not e.free_symbols <= {alpha, x, y}:
+        raise LatexMathError(f"not a linear form in alpha, x, y: {expr!r}")
+    if e == 0:
+        return 0, 0, 0
+    coeffs = sympy.Poly(e, alpha, x, y).as_dict()
+    if any(sum(m) != 1 for m in coeffs) or any(not c.is_integer for c in coeffs.values()):
+        raise LatexMathError(f"not a linear form in alpha, x, y: {expr!r}")
+    return tuple(int(coeffs.get(m, 0)) for m in ((1, 0, 0), (0, 1, 0), (0, 0, 1)))
+
+
+def read_parametrization(tex: str) -> tuple[tuple[tuple[int, int, int], ...], dict[str, tuple]]:
+    """The printed parametrization ``\\left\\{ \\begin{array}{rcl} u_{1}\\left( x,y\\right) & = & x,~x\\in\\left[
+    0,\\alpha\\right] ,\\\\ ...``: each row read by :func:`paper_repro.printed.latex_math.parse_relation` (the
+    three cells of a row are one relation with its clause); the maps of u, v, w (in this order, one subscript, applied
+    to (x, y)) as integer linear forms in alpha, x, y, and the printed ranges ``{"x": (lo, hi), "y": (lo, hi)}``
+    (closed intervals; the endpoints parsed).
+
+    >>> maps, ranges = read_parametrization(verbatim("sec1_3-param-2"))
+    >>> maps, ranges["y"]
+    (((0, 1, 0), (1, -1, -1), (0, 0, 1)), (0, alpha - x))
+    """
+    arrays: list = []
+    lm.clean(tex, arrays)
+    rows = [r for r in (arrays[0] if len(arrays) == 1 else []) if any(c.strip() for c in r)]
+    if len(rows) != 3 or any(len(r) != 3 for r in rows):
+        raise LatexMathError(f"not a parametrization of three rows lhs & = & rhs: {tex[:60]!r}")
+    xy = sympy.Tuple(*sympy.symbols("x y"))
+    maps, ranges, subs = [], {}, set()
+    for name, row in zip("uvw", rows):
+        rel = lm.parse_relation(" ".join(row))
+        lhs = rel.parts[0]
+        if rel.ops != ["="] or not isinstance(lhs, AppliedUndef) or lhs.func.__name__ != name or lhs.args[-1] != xy:
+            raise LatexMathError(f"row {row[0]!r} is not {name}(x, y) = ..")
+        subs.add(lhs.args[:-1])
+        maps.append(linear_form(rel.parts[1]))
+        for c in rel.conditions:
+            var, rng = c.parts[0] if c.parts else None, c.parts[-1] if c.parts else None
+            if c.ops != ["in"] or var not in xy or not isinstance(rng, sympy.Interval) or rng.left_open or \
+                    rng.right_open or str(var) in ranges:
+                raise LatexMathError(f"unread range {c}")
+            ranges[str(var)] = (rng.start, rng.end)
+    if len(subs) != 1 or set(ranges) != {"x", "y"}:
+        raise LatexMathError(f"subscripts {subs} / ranges of {sorted(ranges)}: not one parametrization of x and y")
+    return tuple(maps), ranges
 
 
 # -- exact half-angle arithmetic ------------------------------------------------------------------------------
@@ -93,8 +173,6 @@ def _params() -> dict[str, tuple]:
     """label -> (map (alpha, x, y) -> (u, v, w), running parameter, the three printed linear forms, printed ranges):
     the maps and ranges read from the parametrization's transcription, the running parameter from the derivative
     formula that differentiates along it (``\\frac{\\partial^{r}}{\\partial y^{r}}``)."""
-    from paper_repro.printed.lines.sec3_read import read_parametrization
-
     out = {}
     for label, (lid, chain) in PARAM_LINES.items():
         maps, ranges = read_parametrization(_transcribed([lid])[lid])
@@ -259,20 +337,30 @@ def read_interval(tex: str, var: str) -> tuple[bool, sympy.Expr, sympy.Expr, boo
     """``(lo closed, lo, hi, hi closed)`` of the printed ``var \\in \\left( lo,hi \\right)`` (``var`` a regex)."""
     m = re.search(var + _INTERVAL, tex)
     if not m:
-        raise TexError(f"no interval for {var} in {tex[:60]!r}")
+        raise LatexMathError(f"no interval for {var} in {tex[:60]!r}")
     return m.group(1) == "[", parse(m.group(2)), parse(m.group(3)), m.group(4) == "]"
 
 
 def listed(tex: str, var: str) -> tuple[sympy.Expr, sympy.Expr]:
-    """(first, last) of the printed ``var=a,b,\\ldots,c`` whose step b - a must be 1 (every index between)."""
-    text = clean(tex)
-    m = re.search(rf"(?<![\w\\]){var}\s*=\s*([^,=]+?)\s*,\s*([^,=]+?)\s*,\s*\\ldots\s*,\s*([^,\s$]+?)\s*(?:[.,$]|$)",
-                  text)
-    if not m:
-        raise TexError(f"no listed range {var}=a,b,...,c")
-    a, b, c = (parse(x) for x in m.groups())
+    """(first, last) of the printed ``var=a,b,\\ldots,c`` whose step b - a must be 1 (every index between): the
+    clause ``var in (a, b, ldots, c)`` of :func:`paper_repro.printed.latex_math.parse_relation` (the relation itself
+    or one of its trailing clauses).
+
+    >>> listed(r"i=0,1,\\ldots,2n", "i")
+    (0, 2*n)
+    """
+    rel = lm.parse_relation(tex)
+    v = sympy.Symbol(var)
+    found = [r for r in (rel, *rel.conditions) if r.ops == ["in"] and r.parts[0] == v
+             and isinstance(r.parts[1], sympy.Tuple)]
+    if len(found) != 1:
+        raise LatexMathError(f"no listed range {var}=a,b,...,c")
+    items = found[0].parts[1].args
+    if len(items) != 4 or items[2] != lm.LDOTS or lm.LDOTS in items[:2] + items[3:]:
+        raise LatexMathError(f"the listed range {var}={items} is not a,b,...,c")
+    a, b, _, c = items
     if sympy.simplify(b - a - 1) != 0:
-        raise TexError(f"the listed range {var}={m.group(1)},{m.group(2)},... does not step by 1")
+        raise LatexMathError(f"the listed range {var}={a},{b},... does not step by 1")
     return a, c
 
 
@@ -285,7 +373,7 @@ def _env_int(expr: sympy.Expr, **env: int) -> int:
     """Integer value of a parsed index or bound (every name bound by ``env``)."""
     v = num(expr, env, {})
     if v != int(v):
-        raise TexError(f"{expr} is not an integer at {env}")
+        raise LatexMathError(f"{expr} is not an integer at {env}")
     return int(v)
 
 
@@ -323,7 +411,7 @@ def alpha_range() -> LineResult:
             try:
                 lo_c, lo, hi, hi_c = read_interval(ln.verbatim, r"\\alpha")
                 lo_v, hi_v = num(lo, {}), num(hi, {})
-            except (TexError, ValueError) as exc:
+            except (LatexMathError, ValueError) as exc:
                 return _unread(how, exc, "exhaustive")
             inside = all(_basis_alpha_ok(lo_v + (hi_v - lo_v) * k / 9) for k in range(1, 9)) and lo_v < hi_v
             ends = all(_basis_alpha_ok(e) if closed else not _basis_alpha_ok(e)
@@ -342,30 +430,28 @@ def _member_labels(tex: str) -> list[tuple[str, str, str, tuple[int, ...]]]:
     system display, as (colour, first index, level, argument permutation)."""
     found = printed_sym.set_builders(tex)
     if not found:
-        raise TexError(f"no set-builder in {tex[:60]!r}")
+        raise LatexMathError(f"no set-builder in {tex[:60]!r}")
     members, _, domain = found[-1][0].partition(":")
     _require_omega(domain)
     out = [printed_sym.label(m.group()) for m in re.finditer(r"[RGB]_\{[^{}]*\}\^\{\\alpha\}\s*%?\s*\\left\(\s*"
                                                              r"[uvw]\s*,\s*[uvw]\s*,\s*[uvw]\s*\\right\)", members)]
     if not out:
-        raise TexError(f"no member label in {members[:60]!r}")
+        raise LatexMathError(f"no member label in {members[:60]!r}")
     return out
-
-
-_OMEGA = re.compile(r"\s*\(\s*u\s*,\s*v\s*,\s*w\s*\)\s*\\in\s*\\Omega\^\{\\alpha\}\s*$")
 
 
 def _require_omega(domain: str) -> None:
     """The domain of a system must read ``(u,v,w) \\in \\Omega^{\\alpha}`` (membership in the printed triangle)."""
-    if not _OMEGA.match(clean(domain)):
-        raise TexError(f"the domain {domain.strip()[:40]!r} is not (u,v,w) in Omega^alpha")
+    r = lm.parse_relation(domain)
+    if r.ops != ["in"] or r.conditions or r.parts != [sympy.Tuple(*sympy.symbols("u v w")), sympy.Symbol("Omega")]:
+        raise LatexMathError(f"the domain {domain.strip()[:40]!r} is not (u,v,w) in Omega^alpha")
 
 
 def _index_value(first: str, level: str, n: int, i: int, j: int) -> tuple[int, int]:
     """(i, j) of the label X_{2n,first,level} at (n, i, j): first = 2n - i'."""
     f, lv = _index_fn(first, level)(n, i, j)
     if f != int(f) or lv != int(lv):
-        raise TexError(f"index ({first}, {level}) is not an integer at n={n}, i={i}, j={j}")
+        raise LatexMathError(f"index ({first}, {level}) is not an integer at n={n}, i={i}, j={j}")
     return 2 * n - int(f), int(lv)
 
 
@@ -374,7 +460,7 @@ def _index_fn(first: str, level: str):
     n, i, j = sympy.symbols("n i j")
     exprs = [sympy.sympify(first), sympy.sympify(level)]
     if set().union(*(e.free_symbols for e in exprs)) - {n, i, j}:
-        raise TexError(f"index ({first}, {level}) names unknown symbols")
+        raise LatexMathError(f"index ({first}, {level}) names unknown symbols")
     return sympy.lambdify((n, i, j), exprs, "math")
 
 
@@ -406,7 +492,7 @@ def united_dedupe(verbatim_text: str | None = None) -> LineResult:
     try:
         members = _member_labels(tex)
         if [m[0] for m in members] != list("RGB") or any(m[3] != (0, 1, 2) for m in members):
-            raise TexError(f"members {members} are not R, G, B at (u, v, w)")
+            raise LatexMathError(f"members {members} are not R, G, B at (u, v, w)")
         for n in range(1, 21):
             pairs = _read_pairs(tex, n)
             centre = _centre_members(n)
@@ -416,7 +502,7 @@ def united_dedupe(verbatim_text: str | None = None) -> LineResult:
             ok &= good
             if not good:
                 bad.append(n)
-    except (TexError, ValueError) as exc:
+    except (LatexMathError, ValueError) as exc:
         return _unread(how, exc, "exhaustive")
     return LineResult(ok, how=how, kind="exhaustive", detail={"n_max": 20, "failing_n": bad[:3]})
 
@@ -435,13 +521,13 @@ def levels() -> LineResult:
     try:
         m = _LEVELS.search(verbatim("sec1_3-graph-levels"))
         if not m:
-            raise TexError("no '$n\\geq k$ levels (numbered from $a$ to $b$)'")
+            raise LatexMathError("no '$n\\geq k$ levels (numbered from $a$ to $b$)'")
         least, lo, hi = int(m.group(1)), parse(m.group(2)), parse(m.group(3))
         named = re.search(r"We refer to the index \$(\w)\$ of these functions as levels", verbatim("sec1_3-levels-j"))
         ends = re.search(r"shrinking from the (\w+) to their common (\w+)", verbatim("sec1_3-levels-j"))
         if not named or not ends:
-            raise TexError("the named index or the nesting words are not read")
-    except (TexError, ValueError) as exc:
+            raise LatexMathError("the named index or the nesting words are not read")
+    except (LatexMathError, ValueError) as exc:
         return _unread(how, exc, "exhaustive")
     first_n = min(n for n in range(0, 4) if _has_levels(n))
     ok = least == first_n
@@ -478,14 +564,14 @@ def corners_centre() -> LineResult:
         count = re.search(r"The (\w+) outermost nodes", tex)
         maths = re.findall(r"\$([^$]*)\$", tex)
         if not count or count.group(1) not in _NUMBER_WORDS or len(maths) < 2:
-            raise TexError("the corner count or the functions are not read")
+            raise LatexMathError("the corner count or the functions are not read")
         corners_tex, centre_tex = maths[:-1], maths[-1]
         nodes = ("innermost", "outermost", "stored in an inner node", "vertices of the outermost")
         if not all(w in tex for w in nodes):
-            raise TexError("the nodes (outermost vertices, inner nodes, innermost centroid) are not read")
+            raise LatexMathError("the nodes (outermost vertices, inner nodes, innermost centroid) are not read")
         corner_f = [printed_sym.monomial(t) for t in corners_tex]
         centre_f = printed_sym.monomial(centre_tex)
-    except (TexError, ValueError) as exc:
+    except (LatexMathError, ValueError) as exc:
         return _unread(how, exc, "exhaustive")
     ok = len(corners_tex) == _NUMBER_WORDS[count.group(1)]
     for n in range(1, 21):
@@ -497,7 +583,7 @@ def corners_centre() -> LineResult:
         try:
             printed_corners = [f(n, 0, 0) for f in corner_f]
             members = _centre_members(n)
-        except (TexError, ValueError) as exc:
+        except (LatexMathError, ValueError) as exc:
             return _unread(how, exc, "exhaustive")
         ok &= sorted(printed_corners) == sorted(vertices) and len(set(printed_corners)) == len(printed_corners)
         ok &= {centre_f(n, 0, 0)} == centre and set(members) == centre and len(members) == 3
@@ -521,9 +607,9 @@ def nonnegative() -> LineResult:
     try:
         word, pred = sign_word(verbatim("sec1_3-nonnegative"))
         if not re.search(r"consist of \S+ functions", verbatim("sec1_3-nonnegative")):
-            raise TexError("not a statement about the functions")
+            raise LatexMathError("not a statement about the functions")
         funcs = {(c, h): printed_sym.explicit(c, h) for c in "RGB" for h in ("low", "high")}
-    except (TexError, ValueError) as exc:
+    except (LatexMathError, ValueError) as exc:
         return _unread(how, exc, "exhaustive")
     ok, count = True, 0
     for at in (fmpq(1, 2), fmpq(99, 100)):
@@ -564,16 +650,19 @@ def rgb_index_sets(override: dict[str, str] | None = None, n_max: int = 30) -> L
     try:
         for color, key in zip("RGB", INDEX_SET_LINES[:3]):
             if _member_labels(text[key]) != [(color, "2*n - i", "j", (0, 1, 2))]:
-                raise TexError(f"{key}: the member is not {color}_{{2n,2n-i,j}}(u,v,w)")
+                raise LatexMathError(f"{key}: the member is not {color}_{{2n,2n-i,j}}(u,v,w)")
         leq = printed_sym.set_builders(text["sec1_3-R-leq-n"])
         if not leq or printed_sym.label(leq[0][0]) != ("R", "2*n - i", "j", (0, 1, 2)):
-            raise TexError("sec1_3-R-leq-n: the left side is not R_{2n,2n-i,j}(u,v,w)")
-    except (TexError, ValueError) as exc:
+            raise LatexMathError("sec1_3-R-leq-n: the left side is not R_{2n,2n-i,j}(u,v,w)")
+    except (LatexMathError, ValueError) as exc:
         return _unread(how, exc, "exhaustive")
     for color, key in zip("RGB", INDEX_SET_LINES[:3]):
-        head = clean(text[key].split("\\left\\{", 1)[0]).replace(" ", "")
+        try:
+            head = lm.clean(text[key].split("\\left\\{", 1)[0]).replace(" ", "")
+        except LatexMathError as exc:
+            return _unread(how, exc, "exhaustive")
         if head != f"{color}_{{2n}}^{{\\alpha}}=":
-            return _unread(how, TexError(f"{key}: not '{color}_{{2n}}^alpha = ..' but {head!r}"), "exhaustive")
+            return _unread(how, LatexMathError(f"{key}: not '{color}_{{2n}}^alpha = ..' but {head!r}"), "exhaustive")
     for n in range(1, n_max + 1):
         try:
             sets = {k: _read_pairs(text[k], n) for k in INDEX_SET_LINES}
@@ -613,10 +702,10 @@ def order_n3() -> LineResult:
                         verbatim("sec1_3-fig-united-n3-caption"))
         t2n = re.match(r"\s*T_\{([^{}]+)\}\^\{\\alpha\}", verbatim("sec1_3-united-system"))
         if not m or not cap or not t2n:
-            raise TexError("the subscript or the orders are not read")
+            raise LatexMathError("the subscript or the orders are not read")
         sub, order, cap_n = int(m.group(1)), int(m.group(2)), int(cap.group(1))
         ok = sub == _env_int(parse(t2n.group(1)), n=order) and cap_n == order
-    except (TexError, ValueError) as exc:
+    except (LatexMathError, ValueError) as exc:
         return _unread(how, exc)
     labs = united_system(order)
     levels_ = {lb.j for lb in labs if not lb.is_centre}
@@ -648,23 +737,23 @@ def _boundary(line_id: str) -> LineResult:
         m = _RESTRICT.search(tex)
         found = printed_sym.set_builders_1(tex)
         if not m or not found:
-            raise TexError("no restriction T|_{x=a} = {..}_{i=..}^{..}")
+            raise LatexMathError("no restriction T|_{x=a} = {..}_{i=..}^{..}")
         t_order, var, value = parse(m.group(1)), m.group(2), parse(m.group(3))
         body, (iv, ilo, ihi) = found
         between = tex[m.end():tex.index(body)]
-        if clean(between).replace("\\{", "").strip() != "=":
-            raise TexError(f"the restriction and the set are not equated: {between!r}")
+        if lm.clean(between).replace("\\{", "").strip() != "=":
+            raise LatexMathError(f"the restriction and the set are not equated: {between!r}")
         member_tex, domain = body.split(":", 1)
         member = parse(member_tex)
         arg = read_interval(domain, "")  # [0, alpha]
         dom_var = re.match(r"\s*([uvw])\s*\\in", domain)
         a_terms = [f for f in member.atoms(AppliedUndef) if f.func.__name__ == "A"]
         if len(a_terms) != 1 or not dom_var or len(a_terms[0].args[2]) != 1:
-            raise TexError("the member is not one A_{2n,..}(x)/c")
+            raise LatexMathError("the member is not one A_{2n,..}(x)/c")
         x = str(a_terms[0].args[2][0])
         if x != dom_var.group(1) or x == var or arg != (True, sympy.Integer(0), sympy.Symbol("alpha"), True):
-            raise TexError(f"argument {x} on {arg} is not a remaining variable on [0, alpha]")
-    except (TexError, ValueError) as exc:
+            raise LatexMathError(f"argument {x} on {arg} is not a remaining variable on [0, alpha]")
+    except (LatexMathError, ValueError) as exc:
         return _unread(how, exc, "exhaustive")
     rest = [k for k in range(3) if k != printed_sym.VARS.index(var)]
     y = [printed_sym.VARS[k] for k in rest if printed_sym.VARS[k] != x][0]
@@ -675,7 +764,7 @@ def _boundary(line_id: str) -> LineResult:
         try:
             zero = _env_int(value, n=n) == 0
             idx = range(_env_int(parse(ilo), n=n), _env_int(parse(ihi), n=n) + 1)
-        except (TexError, ValueError) as exc:
+        except (LatexMathError, ValueError) as exc:
             return _unread(how, exc, "exhaustive")
         for _at, ha, hx in _edge_points():
             hy = _diff_half(ha, hx)
@@ -690,7 +779,7 @@ def _boundary(line_id: str) -> LineResult:
             for i in idx:
                 try:
                     printed.append(_edge_value(member, n, i, ha, hx, hy))
-                except (TexError, ValueError):
+                except (LatexMathError, ValueError):
                     printed.append(None)
             ok &= sorted(computed) == sorted(printed) if None not in printed else False
     return LineResult(ok, how=how, kind="exhaustive", detail={"variable": var, "argument": x})
@@ -710,13 +799,13 @@ def _edge_value(member: sympy.Expr, n: int, i: int, ha, hx, hy) -> fmpq:
     def a_fn(order, k, _args):
         m2, kk = _env_int(order, n=n, i=i), _env_int(k, n=n, i=i)
         if m2 != 2 * n:
-            raise TexError("A of another order")
+            raise LatexMathError("A of another order")
         return c_exact(n, kk, *ha) * hy[0] ** (m2 - kk) * hx[0] ** kk
 
     def c_fn(order, k):
         m2, kk = _env_int(order, n=n, i=i), _env_int(k, n=n, i=i)
         if m2 % 2:
-            raise TexError("c of odd order")
+            raise LatexMathError("c of odd order")
         return c_exact(m2 // 2, kk, *ha)
 
     out = fmpq(1)
@@ -727,7 +816,7 @@ def _edge_value(member: sympy.Expr, n: int, i: int, ha, hx, hy) -> fmpq:
         elif base.is_Integer:
             v = fmpq(int(base))
         else:
-            raise TexError(f"factor {base} of the member is not read")
+            raise LatexMathError(f"factor {base} of the member is not read")
         out *= v ** int(ex)
     return out
 
@@ -753,17 +842,17 @@ def _angle_points() -> list[tuple[fmpq, fmpq, fmpq]]:
 
 
 def _trig_exact(expr: sympy.Expr, sin_half: fmpq, cos_half: fmpq) -> fmpq:
-    """Exact value of an expression in sin(alpha/2), cos(alpha/2) and numbers (``TexError`` otherwise)."""
+    """Exact value of an expression in sin(alpha/2), cos(alpha/2) and numbers (``LatexMathError`` otherwise)."""
     a = sympy.Symbol("alpha")
     s_, c_ = sympy.Symbol("S_"), sympy.Symbol("C_")
     e = expr.xreplace({sympy.sin(a / 2, evaluate=False): s_, sympy.cos(a / 2, evaluate=False): c_})
     e = e.xreplace({sympy.sin(a / 2): s_, sympy.cos(a / 2): c_})
     if e.free_symbols - {s_, c_} or e.atoms(sympy.Function):
-        raise TexError(f"{expr} is not a function of the half angle of alpha")
+        raise LatexMathError(f"{expr} is not a function of the half angle of alpha")
     v = e.subs({s_: sympy.Rational(int(sin_half.p), int(sin_half.q)),
                 c_: sympy.Rational(int(cos_half.p), int(cos_half.q))})
     if not v.is_Rational:
-        raise TexError(f"{expr} is not rational at a rational half angle")
+        raise LatexMathError(f"{expr} is not rational at a rational half angle")
     return fmpq(int(v.p), int(v.q))
 
 
@@ -780,16 +869,16 @@ def c_formula() -> LineResult:
     try:
         word, pred = sign_word(tex.split("\\[", 1)[0])
         if not re.search(r"\bnormalizing\b", tex):
-            raise TexError("the coefficients are not said to normalize")
+            raise LatexMathError("the coefficients are not said to normalize")
         display = tex.split("\\[", 1)[1].split("\\]", 1)[0]
         formula, tail = re.split(r",\s*~?\s*(?=i\s*=)", display, maxsplit=1)
         lhs, rhs = relation(formula)
         lo, hi = listed(tail, "i")
         if not (isinstance(lhs, AppliedUndef) and lhs.func.__name__ == "c" and len(lhs.args) == 2):
-            raise TexError(f"left side {lhs} is not c_{{2n,i}}")
+            raise LatexMathError(f"left side {lhs} is not c_{{2n,i}}")
         if sympy.simplify(lhs.args[0] - 2 * sympy.Symbol("n")) != 0 or lhs.args[1] != sympy.Symbol("i"):
-            raise TexError(f"left side {lhs} is not c_{{2n,i}}")
-    except (TexError, ValueError) as exc:
+            raise LatexMathError(f"left side {lhs} is not c_{{2n,i}}")
+    except (LatexMathError, ValueError) as exc:
         return _unread(how, exc, "exhaustive")
     ok, bad = True, []
     n_, i_ = sympy.symbols("n i")
@@ -802,7 +891,7 @@ def c_formula() -> LineResult:
             for at, sh, ch in _angle_points():
                 try:
                     v = values[at, i] = _trig_exact(e, sh, ch)
-                except (TexError, ValueError, ZeroDivisionError) as exc:
+                except (LatexMathError, ValueError, ZeroDivisionError) as exc:
                     return _unread(how, exc, "exhaustive")
                 good = 0 <= i <= 2 * n and v == c_exact(n, i, sh, ch) and pred(v)
                 ok &= good
@@ -834,8 +923,8 @@ def c_symmetry() -> LineResult:
         lo, hi = listed(tail, "i")
         for side in (lhs, rhs):
             if not (isinstance(side, AppliedUndef) and side.func.__name__ == "c" and len(side.args) == 2):
-                raise TexError(f"{side} is not a c_{{..,..}}")
-    except (TexError, ValueError) as exc:
+                raise LatexMathError(f"{side} is not a c_{{..,..}}")
+    except (LatexMathError, ValueError) as exc:
         return _unread(how, exc, "exhaustive")
     ok = True
     for n in range(1, 31):
@@ -867,11 +956,11 @@ def _fourier_rows(members: list[sympy.Expr], names_: tuple[str, ...], ranges, pt
         env = dict(zip(names_, (r, g, b)))
         for f in members:
             if not isinstance(f, (sympy.sin, sympy.cos)):
-                raise TexError(f"member {f} is not a cosine or sine")
+                raise LatexMathError(f"member {f} is not a cosine or sine")
             arg = sympy.expand(f.args[0].subs({sympy.Symbol(k): x for k, x in env.items()}))
             poly = sympy.Poly(arg, u, v, w)
             if poly.total_degree() > 1 or poly.coeff_monomial(1) != 0 or arg.free_symbols - {u, v, w}:
-                raise TexError(f"argument {arg} is not a linear form in u, v, w")
+                raise LatexMathError(f"argument {arg} is not a linear form in u, v, w")
             forms.append((isinstance(f, sympy.sin), [int(poly.coeff_monomial(x)) for x in (u, v, w)]))
     for hu, hv, hw in pts:
         e = [_angle(h) for h in (hu, hv, hw)]
@@ -895,36 +984,36 @@ def fourier_dimension() -> LineResult:
     try:
         sys_tex = verbatim("sec1_3-fourier-system")
         if "largest linearly independent subset" not in sys_tex:
-            raise TexError("V_n is not the largest linearly independent subset")
+            raise LatexMathError("V_n is not the largest linearly independent subset")
         m = _TRIPLE.search(sys_tex)
         body = re.search(r"\\left\\\{(.*)\\right\\\}", sys_tex, re.S)
         if not m or not body:
-            raise TexError("no set {..}_{r=..,g=..,b=..}^{..,..,..}")
+            raise LatexMathError("no set {..}_{r=..,g=..,b=..}^{..,..,..}")
         names_, los, his = m.group(1, 3, 5), m.group(2, 4, 6), m.group(7, 8, 9)
         members_tex, domain = body.group(1).split(":", 1)
         if "\\Omega^{\\alpha}" not in domain or not re.search(r"\\left\(\s*u,v,w\s*\\right\)\s*\\in", domain):
-            raise TexError("the domain is not (u,v,w) in Omega^alpha")
+            raise LatexMathError("the domain is not (u,v,w) in Omega^alpha")
         members = [parse(t.group()) for t in re.finditer(r"\\(?:cos|sin)\\left\((.*?)\\right\)", members_tex)]
         if not members or len(members) != members_tex.count(",") + 1:
-            raise TexError(f"members of {members_tex!r} not read")
+            raise LatexMathError(f"members of {members_tex!r} not read")
         # the trivariate extension of the canonical basis {cos(it), sin(it)}: a cosine and a sine of one argument
         # r u + g v + b w, each index with its own variable
         args = {f.args[0] for f in members}
         kinds = sorted(type(f).__name__ for f in members)
         uvw = sympy.symbols("u v w")
         if len(args) != 1 or kinds != ["cos", "sin"]:
-            raise TexError("the members are not the cosine and the sine of one argument")
+            raise LatexMathError("the members are not the cosine and the sine of one argument")
         coeffs = [sympy.Poly(next(iter(args)), *uvw).coeff_monomial(x) for x in uvw]
         if sorted(str(c) for c in coeffs) != sorted(m.group(1, 3, 5)):
-            raise TexError(f"the argument {args} does not give each index its own variable")
+            raise LatexMathError(f"the argument {args} does not give each index its own variable")
         dim = re.search(r"common dimension \$\\delta_\{n\}=(.+?)\$", verbatim("sec1_3-span-coincide-dim"))
         same = re.search(r"spans the same vector space of functions as the constrained trivariate extension of the "
                          r"canonical basis of truncated Fourier series of order \$([^$]+)\$",
                          verbatim("sec1_3-abstract-same-span"))
         if not dim or not same:
-            raise TexError("the common dimension or the abstract's order is not read")
+            raise LatexMathError("the common dimension or the abstract's order is not read")
         delta_printed, order = parse(dim.group(1)), parse(same.group(1))
-    except (TexError, ValueError) as exc:
+    except (LatexMathError, ValueError) as exc:
         return _unread(how, exc)
     detail, ok = {}, True
     for n in (1, 2, 3):
@@ -935,7 +1024,7 @@ def fourier_dimension() -> LineResult:
             k = _env_int(order, n=n)
             rows_a = _fourier_rows(members, names_, [(0, k + 1)] * 3, pts)
             d_printed = _env_int(delta_printed, n=n)
-        except (TexError, ValueError) as exc:
+        except (LatexMathError, ValueError) as exc:
             return _unread(how, exc)
         rows_t = [[hu[0] ** e[0] * hu[1] ** e[1] * hv[0] ** e[2] * hv[1] ** e[3] * hw[0] ** e[4] * hw[1] ** e[5]
                    for e in (exponents(lb) for lb in united_system(n))] for hu, hv, hw in pts]
@@ -961,11 +1050,11 @@ def univariate_span() -> LineResult:
         lhs, member = parse(lb), parse(rb)
         if (lv, llo, lhi) != (rv, rlo, rhi) or ldom != rdom or ldom[:2] != ("t", (True, 0, sympy.Symbol("alpha"),
                                                                                    True)):
-            raise TexError("the two sides are not on one index set and one domain t in [0, alpha]")
+            raise LatexMathError("the two sides are not on one index set and one domain t in [0, alpha]")
         if not (isinstance(lhs, AppliedUndef) and lhs.func.__name__ == "A" and lhs.args[1] == sympy.Symbol(lv)
                 and tuple(lhs.args[2]) == (sympy.Symbol("t"),)):
-            raise TexError(f"left member {lhs} is not A_{{2n,{lv}}}(t)")
-    except (TexError, ValueError) as exc:
+            raise LatexMathError(f"left member {lhs} is not A_{{2n,{lv}}}(t)")
+    except (LatexMathError, ValueError) as exc:
         return _unread(how, exc)
     detail, ok = {}, True
     n_, t_ = sympy.Symbol("n"), sympy.Symbol("t")
@@ -975,8 +1064,8 @@ def univariate_span() -> LineResult:
         try:
             idx = range(_env_int(parse(rlo), n=n), _env_int(parse(rhi), n=n) + 1)
             if _env_int(lhs.args[0], n=n) != 2 * n:
-                raise TexError("A of another order")
-        except (TexError, ValueError) as exc:
+                raise LatexMathError("A of another order")
+        except (LatexMathError, ValueError) as exc:
             return _unread(how, exc)
         rows_a, rows_f = [], []
         for k in range(2 * n + 6):
@@ -986,7 +1075,7 @@ def univariate_span() -> LineResult:
             for i in idx:
                 try:
                     row.append(_member_value(member.subs({n_: n, sympy.Symbol(lv): i}), n, ha, hx, hy, t_))
-                except (TexError, ValueError):
+                except (LatexMathError, ValueError):
                     return LineResult(False, how=how, detail={"member": str(member), "i": i})
             rows_a.append(row)
             rows_f.append([q for m in range(n + 1) for q in _cpow(_angle(hx), m)])
@@ -1005,10 +1094,10 @@ def _single_sets(tex: str):
         member, domain = body.split(":", 1)
         dv = re.match(r"\s*(\w)\s*\\in", domain)
         if not dv:
-            raise TexError(f"no domain in {domain!r}")
+            raise LatexMathError(f"no domain in {domain!r}")
         out.append((member, iset, (dv.group(1), read_interval(domain, ""))))
     if len(out) != 2:
-        raise TexError(f"{len(out)} sets, not 2")
+        raise LatexMathError(f"{len(out)} sets, not 2")
     return out
 
 
@@ -1021,7 +1110,7 @@ def _member_value(e: sympy.Expr, n: int, ha, hx, hy, t: sympy.Symbol) -> fmpq:
         if isinstance(base, AppliedUndef) and base.func.__name__ == "c":
             o, k = (int(x) for x in base.args)
             if o != 2 * n:
-                raise TexError("c of another order")
+                raise LatexMathError("c of another order")
             v = c_exact(n, k, *ha)
         elif isinstance(base, sympy.sin) and sympy.simplify(base.args[0] - (alpha - t) / 2) == 0:
             v = hy[0]
@@ -1030,9 +1119,9 @@ def _member_value(e: sympy.Expr, n: int, ha, hx, hy, t: sympy.Symbol) -> fmpq:
         elif base.is_Integer:
             v = fmpq(int(base))
         else:
-            raise TexError(f"factor {base} not read")
+            raise LatexMathError(f"factor {base} not read")
         if not ex.is_Integer or ex < 0:
-            raise TexError(f"power {ex} is not a non-negative integer")
+            raise LatexMathError(f"power {ex} is not a non-negative integer")
         out *= v ** int(ex)
     return out
 
@@ -1054,7 +1143,7 @@ def _quantified(tex: str) -> tuple[str, list]:
     t (eq. univariate_basis): closed, alpha a = 0 and alpha b = alpha."""
     m = re.search(r"\\(forall|exists)\s*s\s*\\in", tex)
     if not m:
-        raise TexError("no quantifier over s")
+        raise LatexMathError("no quantifier over s")
     s_interval(tex[m.start():], r"\\(?:forall|exists)\s*s")
     return m.group(1), _s_samples(0, 1)
 
@@ -1064,7 +1153,7 @@ def s_interval(tex: str, var: str) -> None:
     lo_c, lo, hi, hi_c = read_interval(tex, var)
     alpha = sympy.Symbol("alpha")
     if not (lo_c and hi_c) or sympy.simplify(alpha * lo) != 0 or sympy.simplify(alpha * hi - alpha) != 0:
-        raise TexError(f"s in {'[' if lo_c else '('}{lo}, {hi}{']' if hi_c else ')'}: t = alpha s does not cover "
+        raise LatexMathError(f"s in {'[' if lo_c else '('}{lo}, {hi}{']' if hi_c else ')'}: t = alpha s does not cover "
                        f"[0, alpha]")
 
 
@@ -1085,7 +1174,7 @@ def bernstein_limit() -> LineResult:
         deg = re.search(r"Bernstein polynomials of degree \$([^$]+)\$ when \$\\alpha\\rightarrow\s*([^$]+)\$", tex)
         order = re.search(r"basis functions \(\\ref\{univariate_basis\}\) of order \$([^$]+)\$", tex)
         if not rep or not deg or not order:
-            raise TexError("the reparametrization, degree or order is not read")
+            raise LatexMathError("the reparametrization, degree or order is not read")
         t_of_s, degree, prose_point, order_n = parse(rep.group(1)), parse(deg.group(1)), parse(deg.group(2)), \
             parse(order.group(1))
         display = _display(tex, "\\begin{equation}", "\\label")
@@ -1093,19 +1182,19 @@ def bernstein_limit() -> LineResult:
         lhs, rhs = relation(formula)
         _, s_vals = _quantified(display)
         if not re.search(r"\\forall\s*s", display):
-            raise TexError("the limit is not claimed for all s")
+            raise LatexMathError("the limit is not claimed for all s")
         lo, hi = listed(display, "i")
         if not isinstance(lhs, sympy.Limit):
-            raise TexError("the left side is not a limit")
+            raise LatexMathError("the left side is not a limit")
         body, var, point = lhs.args[0], lhs.args[1], lhs.args[2]
         if var != sympy.Symbol("alpha") or point != prose_point:
-            raise TexError("the limit is not alpha -> the prose's point")
+            raise LatexMathError("the limit is not alpha -> the prose's point")
         a_term = body
         if not (isinstance(a_term, AppliedUndef) and a_term.func.__name__ == "A"):
-            raise TexError("the limit is not of one A")
+            raise LatexMathError("the limit is not of one A")
         if sympy.simplify(a_term.args[2][0] - t_of_s) != 0:
-            raise TexError("the argument is not the printed reparametrization")
-    except (TexError, ValueError) as exc:
+            raise LatexMathError("the argument is not the printed reparametrization")
+    except (LatexMathError, ValueError) as exc:
         return _unread(how, exc, "numeric-evidence")
     exact = all(sum(c_numerator(n, i)) == comb(2 * n, i) for n in range(1, 16) for i in range(2 * n + 1))
     worst, ok = mpmath.mpf(0), exact
@@ -1121,7 +1210,7 @@ def bernstein_limit() -> LineResult:
                     for s in s_vals:
                         env = {"n": n, "i": i, "s": s, "alpha": alpha}
                         worst = max(worst, abs(num(body, env) - num(rhs, env)))
-            except (TexError, ValueError, ZeroDivisionError) as exc:
+            except (LatexMathError, ValueError, ZeroDivisionError) as exc:
                 return _unread(how, exc, "numeric-evidence")
     ok = bool(ok and worst < mpmath.mpf("1e-20"))
     return LineResult(ok, how=how, kind="numeric-evidence",
@@ -1150,7 +1239,7 @@ def _read_chain(line_id: str) -> tuple[list[sympy.Expr], str, list]:
     parts = relation(formula)
     quant, s_vals = _quantified(display)
     if len(parts) < 2:
-        raise TexError("not an equality")
+        raise LatexMathError("not an equality")
     return parts, quant, s_vals
 
 
@@ -1179,7 +1268,7 @@ def bernstein_identity() -> LineResult:
         parts, quant, s_vals = _read_chain("sec1_3-bernstein-identity")
         printed = _a_identity(parts, quant, s_vals)
         corrected = _a_identity([_order_one(p) for p in parts], quant, s_vals)
-    except (TexError, ValueError, ZeroDivisionError) as exc:
+    except (LatexMathError, ValueError, ZeroDivisionError) as exc:
         return _unread(how, exc, "numeric-evidence")
     return LineResult(printed, corrected, how=how, kind="numeric-evidence", detail={"quantifier": quant})
 
@@ -1195,13 +1284,13 @@ def bernstein_power() -> LineResult:
     try:
         parts, quant, s_vals = _read_chain("sec1_3-bernstein-power")
         if len(parts) != 3:
-            raise TexError("not a chain of three parts")
+            raise LatexMathError("not a chain of three parts")
         printed = _a_identity(parts, quant, s_vals)
         fixed = [parts[0], _order_one(parts[1], True), parts[2]]
         # the values are all 1; the proof's content is the expansion: the first two parts must agree as homogeneous
         # polynomials in sin((alpha-t)/2), sin(t/2) (a power n-1 would still give the value 1)
         corrected = _a_identity(fixed, quant, s_vals) and _a_identity(fixed[:2], quant, s_vals, scale=mpmath.mpf(1.3))
-    except (TexError, ValueError, ZeroDivisionError) as exc:
+    except (LatexMathError, ValueError, ZeroDivisionError) as exc:
         return _unread(how, exc, "numeric-evidence")
     a = rational_alpha(ALPHA_TS[0])
     for n in range(1, 6):
@@ -1239,7 +1328,7 @@ def _termwise(lhs: sympy.Limit, rhs: sympy.Expr) -> bool:
         try:
             lv = sorted(tuple(mpmath.nstr(num(t, {"s": s, "alpha": alpha}), 15) for s in ss) for t in left)
             rv = sorted(tuple(mpmath.nstr(num(t, {"s": s}), 15) for s in ss) for t in right)
-        except (TexError, ValueError, ZeroDivisionError):
+        except (LatexMathError, ValueError, ZeroDivisionError):
             return False
     return lv == rv
 
@@ -1256,12 +1345,12 @@ def bernstein_proof_limit() -> LineResult:
         used = re.findall(r"\$(.*?)\$", verbatim("sec1_3-bernstein-limits-used"))
         used_parts = [relation(u.rstrip(". ")) for u in used]
         if len(parts) != 2 or len(used_parts) != 2 or any(len(p) != 2 for p in used_parts):
-            raise TexError("the limits are not read")
+            raise LatexMathError("the limits are not read")
         checks = [parts] + used_parts
         for lhs, _ in checks:
             if not isinstance(lhs, sympy.Limit) or lhs.args[1] != sympy.Symbol("alpha"):
-                raise TexError(f"{lhs} is not a limit over alpha")
-    except (TexError, ValueError) as exc:
+                raise LatexMathError(f"{lhs} is not a limit over alpha")
+    except (LatexMathError, ValueError) as exc:
         return _unread(how, exc, "numeric-evidence")
     worst = mpmath.mpf(0)
     termwise = _termwise(parts[0], parts[1])
@@ -1273,7 +1362,7 @@ def bernstein_proof_limit() -> LineResult:
                     try:
                         env = {"n": n, "s": mpmath.mpf(s), "alpha": alpha}
                         worst = max(worst, abs(num(lhs.args[0], env) - num(rhs, env)))
-                    except (TexError, ValueError, ZeroDivisionError) as exc:
+                    except (LatexMathError, ValueError, ZeroDivisionError) as exc:
                         return _unread(how, exc, "numeric-evidence")
     ok = bool(worst < mpmath.mpf("1e-20")) and termwise
     return LineResult(ok, how=how + "; the limit of each term of the power's base against the right side's terms",
@@ -1291,7 +1380,7 @@ def _bernstein_xs(f: sympy.Expr, x: sympy.Symbol, s: sympy.Symbol) -> sympy.Expr
     """B_k^d(s) = binom(d, k) x^{d-k} s^k with x = 1 - s (homogeneous form)."""
     k, d, args = f.args
     if tuple(args) != (s,):
-        raise TexError(f"{f} is not a Bernstein polynomial in s")
+        raise LatexMathError(f"{f} is not a Bernstein polynomial in s")
     return sympy.binomial(d, k) * x ** (d - k) * s**k
 
 
@@ -1308,13 +1397,13 @@ def bernstein_polynomials() -> LineResult:
                  for p in relation("0" + _one_minus_s(verbatim(lid)).replace("\\end{align*}", ""))[1:]]
         start = _limit_parts(_one_minus_s(verbatim("sec1_3-bernstein-limit-step1")))[-1]
         if len(parts) != 3:
-            raise TexError(f"{len(parts)} parts, not 3")
-    except (TexError, ValueError) as exc:
+            raise LatexMathError(f"{len(parts)} parts, not 3")
+    except (LatexMathError, ValueError) as exc:
         return _unread(how, exc, "exhaustive")
 
     def homog(e, n):
         e = e.subs(sympy.Symbol("n"), n)
-        e = e.replace(lambda f: isinstance(f, AppliedUndef) and f.func.__name__ == "B",
+        e = e.replace(lambda f: isinstance(f, AppliedUndef) and f.func.__name__ == "B_sup",
                       lambda f: _bernstein_xs(f, x, s))
         return sympy.expand(e.doit())
 
@@ -1323,7 +1412,7 @@ def bernstein_polynomials() -> LineResult:
         try:
             want = homog(start, n)
             got = [homog(p, n) for p in parts]
-        except (TexError, ValueError, TypeError) as exc:
+        except (LatexMathError, ValueError, TypeError) as exc:
             return _unread(how, exc, "exhaustive")
         ok &= all(g == want for g in got) and want.free_symbols <= {x, s}
     return LineResult(ok, how=how, kind="exhaustive", detail={"n_max": 12})
@@ -1338,7 +1427,6 @@ def distinct_union(n: int) -> frozenset[tuple[int, ...]]:
 def read_delta(tex: str) -> list:
     """The printed values of delta_n in ``tex`` (everything after ``\\delta_{n}=``, split at ``=``), each as a
     function of n: a closed form such as ``3n\\left( n+1\\right) +1`` or ``1+3\\sum_{j=..}^{..}\\sum_{i=..}^{..}1``."""
-    from paper_repro.printed.lines.read import bound
 
     body = tex.split("\\delta_{n}=", 1)[1]
     body = re.split(r"\\\]|\$", body)[0].replace("\\left(", "(").replace("\\right)", ")").replace("%", " ")
@@ -1393,9 +1481,10 @@ def _transcribed(ids, override: dict[str, str] | None = None) -> dict[str, str]:
 
 def _read_pairs(tex: str, n: int) -> list[tuple[int, int]]:
     """The (i, j) of a printed double index set _{j=a,i=b(j)}^{c,d(j)}, read from ``tex`` at order n."""
-    from paper_repro.printed.lines.read import bound, index_set
-
-    (ov, olo, ohi), (iv, ilo, ihi) = index_set(tex)
+    iset = lm.index_set(tex)
+    if len(iset) != 2:
+        raise ValueError(f"not a double index set: {iset}")
+    (ov, olo, ohi), (iv, ilo, ihi) = ((str(v), lo, hi) for v, lo, hi in iset)
     if (ov, iv) != ("j", "i"):
         raise ValueError(f"index set over {(ov, iv)}, not (j, i)")
     return [(i, j) for j in range(bound(olo, n=n), bound(ohi, n=n) + 1)
@@ -1533,7 +1622,6 @@ def read_chain_strict(tex: str, param: str) -> dict:
     every order equal, the sum from k = 0, the arguments the coordinates of ``param`` (its index) at (x, y), the
     point the running parameter at 0, the quantifier over the other parameter on its printed range
     (``ValueError`` otherwise)."""
-    from paper_repro.printed.lines.sec3_read import linear_form
 
     t = re.sub(r"\s+", "", tex.replace("%", ""))
     for p in (r"\\begin\{equation\}", r"\\end\{equation\}", r"\\label\{[^{}]*\}", r"&", r"\\\\$",
@@ -1615,7 +1703,6 @@ def chain_3(override=None) -> LineResult:
 
 def _lin(expr: str, a, x=None):
     """A printed bound (linear form in alpha, x; no y) at alpha = a and x."""
-    from paper_repro.printed.lines.sec3_read import linear_form
 
     ca, cx, cy = linear_form(expr)
     if cy or (cx and x is None):
@@ -1684,8 +1771,6 @@ def param_3() -> LineResult:
 def param_ranges() -> LineResult:
     """"for all x in [0, alpha], y in [0, alpha - x] and order r in N" (read): on these ranges each of the three
     printed parametrizations maps onto Omega^alpha."""
-    from paper_repro.printed.lines.read import interval
-
     tex = _transcribed(["sec1_3-chain-ranges"])["sec1_3-chain-ranges"]
     try:
         rng = {"x": interval(tex, "x"), "y": interval(tex, "y")}
@@ -1696,7 +1781,8 @@ def param_ranges() -> LineResult:
         return LineResult(False, how="the ranges read from the transcription", kind="proof",
                           detail={"unread": str(exc)})
     return LineResult(ok, how="the ranges read from the transcription; the three printed parametrizations on them "
-                      "(exact images of the parameter triangle)", kind="proof", detail={"onto": ok, "ranges": rng})
+                      "(exact images of the parameter triangle)", kind="proof",
+                      detail={"onto": ok, "ranges": {k: [str(a), str(b)] for k, (a, b) in rng.items()}})
 
 
 def read_boundary_vars(tex: str) -> list[tuple[str, str]]:
@@ -1780,25 +1866,141 @@ def boundary_vars(override: dict[str, str] | None = None) -> LineResult:
 # ==============================================================================================================
 # The proof of Theorem joint_systems_linear_independence
 # ==============================================================================================================
+#: the combining constant of each colour
+_CONST_COLOUR = {"rho": "R", "gamma": "G", "beta": "B"}
+_UVW = sympy.Tuple(*sympy.symbols("u v w"))
+
+
+def combination_terms(expr: sympy.Expr) -> list[tuple[list, str, sympy.Expr, sympy.Expr, sympy.Tuple]]:
+    """The terms ``constant_{2n,a,b} X_{2n,a,b}^{alpha}(args)`` of a parsed linear combination
+    (:func:`paper_repro.printed.latex_math.terms`): ``[(sums, colour, a, b, args), ...]``, the sums outermost first;
+    :class:`LatexMathError` for a term that is anything else (a coefficient, another factor, a constant whose colour
+    or indices disagree with its function's, an order other than 2n).
+
+    >>> combination_terms(parse(r"\\rho_{2n,n,n}R_{2n,n,n}^{\\alpha}\\left( u,v,w\\right) "
+    ...                         r"+\\sum_{i=1}^{n}\\gamma_{2n,2n-i,1}G_{2n,2n-i,1}^{\\alpha}\\left( x,0,y\\right)"))
+    [([], 'R', n, n, (u, v, w)), ([(i, 1, n)], 'G', -i + 2*n, 1, (x, 0, y))]
+    """
+    out = []
+    two_n = 2 * sympy.Symbol("n")
+    for t in lm.terms(expr):
+        consts = [f for f in t.names if f.func.__name__ in _CONST_COLOUR]
+        funcs = [f for f in t.names if f.func.__name__ in ("R", "G", "B")]
+        if t.coefficient != 1 or len(t.names) != 2 or len(consts) != 1 or len(funcs) != 1:
+            raise LatexMathError(f"the term {t.names} {t.coefficient} is not constant x function")
+        (c,), (f,) = consts, funcs
+        if _CONST_COLOUR[c.func.__name__] != f.func.__name__ or len(c.args) != 3 or len(f.args) != 4 or \
+                tuple(c.args) != tuple(f.args[:3]) or c.args[0] != two_n or not isinstance(f.args[3], sympy.Tuple):
+            raise LatexMathError(f"the constant {c} does not match the function {f}")
+        out.append((t.limits, f.func.__name__, f.args[1], f.args[2], f.args[3]))
+    return out
+
+
+@cache
+def _int_fn(expr: sympy.Expr):
+    names = tuple(sorted(s.name for s in expr.free_symbols))
+    return names, sympy.lambdify([sympy.Symbol(x) for x in names], expr, "math")
+
+
+def _int_at(expr: sympy.Expr, scope: dict[str, int]) -> int:
+    """Integer value of a parsed bound or index at ``scope`` (every name bound)."""
+    names, f = _int_fn(sympy.sympify(expr))
+    missing = [x for x in names if x not in scope]
+    if missing:
+        raise LatexMathError(f"{expr} names {missing}, unbound")
+    v = f(*(scope[x] for x in names))
+    if v != int(v):
+        raise LatexMathError(f"{expr} is not an integer at {scope}")
+    return int(v)
+
+
+def term_indices(terms, **env: int) -> list[tuple[str, int, int]]:
+    """``(colour, i, j)`` of every function of :func:`combination_terms` (i from the first index 2n - i), the sums
+    written out (an empty sum, upper bound below the lower, names nothing) with ``env`` (``n``, ``r``) bound."""
+    out: list[tuple[str, int, int]] = []
+
+    def walk(sums, colour, first, level, scope):
+        if not sums:
+            out.append((colour, 2 * scope["n"] - _int_at(first, scope), _int_at(level, scope)))
+            return
+        (v, lo, hi), rest = sums[0], sums[1:]
+        for x in range(_int_at(lo, scope), _int_at(hi, scope) + 1):
+            walk(rest, colour, first, level, {**scope, str(v): x})
+
+    for sums, colour, first, level, _args in terms:
+        walk(sums, colour, first, level, dict(env))
+    return out
+
+
+def row_terms(tex: str) -> list[tuple[list, str, sympy.Expr, sympy.Expr, sympy.Tuple]]:
+    """The terms (:func:`combination_terms`) of a displayed row of the proof's combinations, read by
+    :func:`paper_repro.printed.latex_math.parse_relation`: ``0 = L(u,v,w) = ..``, ``= ..`` or a continued sum; the
+    parts before the last are 0 or L, widetilde L, widehat L at (u, v, w); a clause must be ``\\forall (u,v,w) \\in
+    \\Omega^{\\alpha}``; every function is applied to (u, v, w)."""
+    rel = lm.parse_relation(tex)
+    if rel.lead not in (None, "=") or any(op != "=" for op in rel.ops):
+        raise LatexMathError(f"the row relates by {rel.lead} {rel.ops}, not '='")
+    for p in rel.parts[:-1]:
+        if p != 0 and not (isinstance(p, AppliedUndef) and p.func.__name__ in ("L", "Ltilde", "Lhat")
+                           and p.args[-1] == _UVW):
+            raise LatexMathError(f"the row equates {p}, not 0 or L(u,v,w)")
+    for c in rel.conditions:
+        if c.quantifier != "forall" or c.ops != ["in"] or c.parts != [_UVW, sympy.Symbol("Omega")]:
+            raise LatexMathError(f"the clause {c.parts} {c.ops} is not forall (u,v,w) in Omega^alpha")
+    terms = combination_terms(rel.parts[-1])
+    if any(args != _UVW for *_, args in terms):
+        raise LatexMathError("a function not at (u, v, w)")
+    return terms
+
+
+def constant_sets(tex: str, n: int) -> list[tuple[str, int, int]]:
+    """``(colour, i, j)`` of the constants named by a printed list such as ``$\\rho_{2n,n,n}$, $\\left\\{
+    \\rho_{2n,2n-i,j}\\right\\} _{j=0,i=j}^{n-1,2n-1-j}$, ..`` at order n: each ``$..$`` segment read by
+    :func:`paper_repro.printed.latex_math.parse` (a constant, or a family of constants with its index set; i from the
+    first index 2n - i)."""
+    out: list[tuple[str, int, int]] = []
+    two_n = 2 * sympy.Symbol("n")
+    for seg in lm.inline_math(tex):
+        e = parse(seg)
+        if isinstance(e, AppliedUndef) and e.func == lm.Family:
+            member, conds, bounds = e.args
+            if conds:
+                raise LatexMathError(f"a set of constants with conditions {conds}")
+            limits = list(bounds)
+        else:
+            member, limits = e, []
+        if not (isinstance(member, AppliedUndef) and member.func.__name__ in _CONST_COLOUR and len(member.args) == 3
+                and member.args[0] == two_n):
+            raise LatexMathError(f"{member} is not a constant rho, gamma, beta of order 2n")
+        out += term_indices([(limits, _CONST_COLOUR[member.func.__name__], member.args[1], member.args[2], None)],
+                            n=n)
+    return out
+
+
+def row_combination(tex: str) -> list[tuple[list, str, sympy.Expr, sympy.Expr, sympy.Tuple]]:
+    """:func:`combination_terms` of the last part of a printed row (read by
+    :func:`paper_repro.printed.latex_math.parse_relation`)."""
+    return combination_terms(lm.parse_relation(tex).parts[-1])
+
+
+@cache
+def _row_terms_cached(tex: str):
+    return row_terms(tex)
+
+
 def printed_rows(check_id: str, n: int, r: int = 0, override: dict[str, str] | None = None) -> set:
     """The functions named by the displayed rows of the lines checked by ``check_id``, read from their
-    transcriptions (sums, bounds, constants, functions: :func:`paper_repro.printed.lines.read.sum_terms`) at order
-    n and step r: indices into T_{2n} by the functions' own names (no alias); a name that is not a member of T_{2n}
-    stays in the set as a string (a mismatch).  ``override`` replaces transcriptions (tests)."""
-    from paper_repro.printed.lines.read import sum_terms, term_indices
+    transcriptions (sums, bounds, constants, functions: :func:`row_terms`) at order n and step r: indices into T_{2n}
+    by the functions' own names (no alias); a name that is not a member of T_{2n} stays in the set as a string (a
+    mismatch).  ``override`` replaces transcriptions (tests)."""
     from paper_repro.printed.lines.sec1_3 import LINES
 
     rows = {x.id: x.verbatim for x in LINES if x.check == check_id and x.kind == "display"}
     rows.update({k: v for k, v in (override or {}).items() if k in rows})
-    from paper_repro.printed.lines.sec3_read import row_residue
-
     strict = {lb.paper: k for k, lb in enumerate(united_system(n))}
     out: set = set()
     for key in sorted(rows):
-        rest = row_residue(rows[key])
-        if rest:
-            raise ValueError(f"{key}: unread {rest[:40]!r}")
-        for color, i, j in term_indices(sum_terms(rows[key]), n=n, r=r):
+        for color, i, j in term_indices(_row_terms_cached(rows[key]), n=n, r=r):
             name = f"{color}_{{{2 * n},{2 * n - i},{j}}}"
             out.add(strict.get(name, name))
     return out
@@ -1819,8 +2021,6 @@ def l_set(override: dict[str, str] | None = None) -> LineResult:
     """The rows of eq. linear_combination_union name every function of T_{2n} once; the constants listed after it
     (line sec1_3-L-coefficients, read: rho_{2n,n,n} and the sets of rho and gamma -- the set of beta follows on the
     next, untranscribed, line) are exactly the constants of the R and G terms of the rows (n = 1..12)."""
-    from paper_repro.printed.lines.read import constant_sets, sum_terms, term_indices
-
     res = _read_sets("sec1_3-L-set", lambda n, r: set(range(len(united_system(n)))), ns=range(1, 13),
                      override=override)
     res.how = res.how.replace("against the elimination recomputed from exact derivatives", "against T_{2n}")
@@ -1833,7 +2033,7 @@ def l_set(override: dict[str, str] | None = None) -> LineResult:
         for n in range(1, 13):
             listed = sorted(constant_sets(t["sec1_3-L-coefficients"], n))
             rows = sorted(c for k in ("sec1_3-L-R-row", "sec1_3-L-G-row")
-                          for c in term_indices(sum_terms(t[k]), n=n))
+                          for c in term_indices(row_terms(t[k]), n=n))
             if listed != rows:
                 bad.append(n)
     except ValueError as exc:
@@ -1871,21 +2071,65 @@ def l0_set(override=None) -> LineResult:
     return _read_sets("sec1_3-L0-set", lambda n, r: alive_after(n, 0, 2), override=override)
 
 
-def listed_orders(tex: str, var: str, **env: int) -> list[range]:
-    """Every listed range ``var=a,a+1,\\ldots,b`` of ``tex`` as a range (``ValueError`` if there is none, or if a
-    second listed value is not the first plus one)."""
-    from paper_repro.printed.lines.read import bound
-    from paper_repro.printed.lines.sec3_read import listing
-
+def listed_ranges(tex: str, var: str) -> list[tuple]:
+    """Every listed range ``var=a,\\ldots,c`` or ``var=a,b,\\ldots,c`` of ``tex`` (a display, or the ``$..$``
+    segments of a prose line; a segment latex_math does not read lists nothing): the items ``(a, [b,] ldots, c)`` of
+    the clauses ``var in (..)`` of :func:`paper_repro.printed.latex_math.parse_relation`."""
+    segs = lm.inline_math(tex) or [tex]
+    v = sympy.Symbol(var)
     out = []
-    found = listing(tex, var)
+    for seg in segs:
+        try:
+            rel = lm.parse_relation(seg)
+        except LatexMathError:
+            if len(segs) == 1:
+                raise
+            continue
+        for r in (rel, *rel.conditions):
+            if r.ops and r.ops[-1] == "in" and r.parts[-2] == v and isinstance(r.parts[-1], sympy.Tuple):
+                items = r.parts[-1].args
+                if len(items) in (3, 4) and items[-2] == lm.LDOTS and lm.LDOTS not in items[:-2] + items[-1:]:
+                    out.append(items)
+    return out
+
+
+def listed_range(tex: str, var: str) -> tuple[sympy.Expr, sympy.Expr]:
+    """(first, last) of the first listed range ``var=a,[b,]\\ldots,c`` of ``tex`` (:func:`listed_ranges`)."""
+    found = listed_ranges(tex, var)
+    if not found:
+        raise ValueError(f"no listed range {var}=a,...,b in {tex[:60]!r}")
+    return found[0][0], found[0][-1]
+
+
+def interval(tex: str, var: str) -> tuple[sympy.Expr, sympy.Expr]:
+    """(lo, hi) of the closed interval of the clause ``var\\in\\left[ lo,hi\\right]`` of ``tex`` (a display, or the
+    ``$..$`` segments of a prose line), read by :func:`paper_repro.printed.latex_math.parse_relation`."""
+    v = sympy.Symbol(var)
+    for seg in lm.inline_math(tex) or [tex]:
+        try:
+            rel = lm.parse_relation(seg)
+        except LatexMathError:
+            continue
+        for r in (rel, *rel.conditions):
+            rng = r.parts[-1] if r.parts else None
+            if r.ops and r.ops[-1] == "in" and r.parts[-2] == v and isinstance(rng, sympy.Interval) and \
+                    not rng.left_open and not rng.right_open:
+                return rng.start, rng.end
+    raise ValueError(f"no interval {var} in [lo, hi] in {tex[:60]!r}")
+
+
+def listed_orders(tex: str, var: str, **env: int) -> list[range]:
+    """Every listed range ``var=a,a+1,\\ldots,b`` of ``tex`` (:func:`listed_ranges`) as a range (``ValueError`` if
+    there is none, or if a second listed value is not the first plus one)."""
+    out = []
+    found = listed_ranges(tex, var)
     if not found:
         raise ValueError(f"no listed range {var}=a,...,b in {tex[:50]!r}")
-    for a, b, c in found:
-        lo = bound(a, **env)
-        if b is not None and bound(b, **env) != lo + 1:
-            raise ValueError(f"{var}={a},{b},... does not step by one")
-        out.append(range(lo, bound(c, **env) + 1))
+    for items in found:
+        lo = _int_at(items[0], env)
+        if len(items) == 4 and _int_at(items[1], env) != lo + 1:
+            raise ValueError(f"{var}={items[0]},{items[1]},... does not step by one")
+        out.append(range(lo, _int_at(items[-1], env) + 1))
     return out
 
 
@@ -1926,7 +2170,6 @@ _CONSTANT_SET = re.compile(r"\\left\\\{\s*\\rho_\{2n,2n-i,([^{}]+)\},\\gamma_\{2
 def level_zeroed(verbatim: str | None = None) -> LineResult:
     """The constants {rho, gamma, beta}_{2n,2n-i,r+1}, i = r+1..2n-1-(r+1) (levels, range and the value 0 read from
     the transcription), are those set to 0 by the step r -> r+1."""
-    from paper_repro.printed.lines.read import bound
 
     tex = verbatim if verbatim is not None else _transcribed(["sec1_3-step-zeroed"])["sec1_3-step-zeroed"]
     m = _CONSTANT_SET.search(tex.replace("\\left(", "(").replace("\\right)", ")"))
@@ -1964,7 +2207,6 @@ def ln2_set(override=None) -> LineResult:
 
 
 def bound_n(expr: str, n: int) -> int:
-    from paper_repro.printed.lines.read import bound
 
     return bound(expr, n=n)
 
@@ -2046,8 +2288,6 @@ def elimination_orders(override: dict[str, str] | None = None) -> LineResult:
     exists, non-empty, for r = 0..n-1 (induction-range); the steps r -> r+1 are r = 0..n-2 (step-range,
     induction-conclusion); the figure shows the first and last of them, r = 0 and r = n-2, with derivatives of
     orders r + 1 of L_r."""
-    from paper_repro.printed.lines.read import bound, listed_range
-
     ids = ("sec1_3-induction-range", "sec1_3-step-range", "sec1_3-induction-conclusion",
            "sec1_3-fig-j1-caption-orders", "sec1_3-fig-j1-text")
     t = _transcribed(ids, override)
@@ -2086,7 +2326,7 @@ def elimination_orders(override: dict[str, str] | None = None) -> LineResult:
             bad.append(f"n={n}: levels")
     return LineResult(not bad, how="orders read from the five transcriptions against the elimination recomputed from "
                       f"exact derivatives, n = 1..{N_PROOF.stop - 1}", kind="exhaustive",
-                      detail={"ranges": {k: list(v) for k, v in ranges.items()}, "mismatches": bad[:3]})
+                      detail={"ranges": {k: [str(x) for x in v] for k, v in ranges.items()}, "mismatches": bad[:3]})
 
 
 @line_check("sec1_3-induction-orders")
@@ -2096,8 +2336,6 @@ def induction_orders(verbatim_text: str | None = None) -> LineResult:
     r + 1, r = 0..n-2 -- i.e. 0..n-1 (level j is removed by the order-j steps; after them only the centre is left,
     which the proof removes by R_{2n,n,n} != 0, without a derivative), and the hypothesis it proves is stated for
     r = 0..n-1 (line sec1_3-Lr-orders, read).  Printed: 0..n; corrected: 0..n-1."""
-    from paper_repro.printed.lines.read import bound, listed_range
-
     tex = verbatim_text if verbatim_text is not None else _transcribed(["sec1_3-induction-orders"])[
         "sec1_3-induction-orders"]
 
@@ -2176,7 +2414,178 @@ def _A(pt, k: int) -> fmpq:
     return _c(pt, k) * _sn(pt, "alpha-t", 2 * n - k) * _sn(pt, "t", k)
 
 
-# -- Section 3 values read from the transcriptions (paper_repro.printed.lines.sec3_read) -------------------------
+# -- Section 3 values read from the transcriptions (paper_repro.printed.latex_math) -----------------------------
+@dataclass(frozen=True)
+class Factor:
+    """One printed factor of a term of the proof, from the parsed expression.  ``kind``: ``trig`` (sin^s cos^c of half
+    an argument, ``deriv`` = (order, coordinate) when differentiated), ``bar`` (an evaluation bar at ``args[0]`` = 0),
+    ``S``/``M`` (derivatives at 0 of Lemma lem:sign_cos_power_derivative / Proposition derivative_cosine_sine:
+    ``(indices, order)``), ``c`` (normalizing constant: ``(k,)``), ``A`` (univariate function: ``(k, variable)``).
+    An argument is a coordinate ``("u", 1)`` of a parametrization or a linear form (a sympy expression)."""
+
+    kind: str
+    args: tuple
+    deriv: tuple | None = None
+
+
+@dataclass
+class Term:
+    """A printed term: its sums ``[(var, lo, hi), ...]`` (outermost first), its combining constant (colour, first
+    index, level, primed) and its factors."""
+
+    sums: list
+    constant: tuple | None
+    factors: list = field(default_factory=list)
+
+
+_TWO_N = 2 * sympy.Symbol("n")
+_PRIMED = {"rho_prime": "R", "gamma_prime": "G", "beta_prime": "B"}
+
+
+def _coordinate(arg: sympy.Expr):
+    """``u(1, (x, y))`` -> ``("u", 1)``, ``u((x, y))`` -> ``("u", None)``; anything else is returned as it is (a
+    linear form, checked where it is evaluated)."""
+    if isinstance(arg, AppliedUndef) and arg.func.__name__ in ("u", "v", "w"):
+        idx = arg.args[:-1] if arg.args and isinstance(arg.args[-1], sympy.Tuple) else arg.args
+        if len(idx) > 1 or (idx and not idx[0].is_Integer):
+            raise LatexMathError(f"the coordinate {arg} is not u_k(x, y)")
+        return arg.func.__name__, int(idx[0]) if idx else None
+    return arg
+
+
+def _trig_factors(e: sympy.Expr) -> list[tuple[str, sympy.Expr, object]]:
+    """(sin or cos, exponent, half-angle argument) of a product of powers of sin(X/2), cos(X/2)."""
+    out = []
+    for f in sympy.Mul.make_args(e):
+        base, exp = f.as_base_exp()
+        if not isinstance(base, (sympy.sin, sympy.cos)):
+            raise LatexMathError(f"the factor {f} is not a power of a half-angle sine or cosine")
+        out.append(("sin" if isinstance(base, sympy.sin) else "cos", exp, _coordinate(sympy.expand(2 * base.args[0]))))
+    return out
+
+
+def _factors_of(e: sympy.Expr) -> list[Factor]:
+    """The factors of the coefficient part of a term (trigonometric powers, derivatives of them, evaluation bars)."""
+    out: list[Factor] = []
+    for f in sympy.Mul.make_args(e):
+        if f == 1:
+            continue
+        if isinstance(f, sympy.Subs):
+            inner, (var,), (val,) = f.args
+            if val != 0:
+                raise LatexMathError(f"an evaluation bar at {var} = {val}, not 0")
+            out += _factors_of(inner)
+            out.append(Factor("bar", (str(var),)))
+        elif isinstance(f, AppliedUndef) and f.func == lm.D:
+            body, *specs = f.args
+            if len(specs) != 1:
+                raise LatexMathError(f"a derivative in {len(specs)} variables")
+            var, order = specs[0]
+            trig = _trig_factors(body)
+            args = {a for _, _, a in trig}
+            if len(args) != 1 or _coordinate(var) != next(iter(args)):
+                raise LatexMathError("a derivative of sines and cosines of another argument")
+            s = sum((x for k, x, _ in trig if k == "sin"), sympy.Integer(0))
+            c = sum((x for k, x, _ in trig if k == "cos"), sympy.Integer(0))
+            out.append(Factor("trig", ((s, c), args.pop()), (order, _coordinate(var))))
+        else:
+            for kind, x, arg in _trig_factors(f):
+                out.append(Factor("trig", ((x, sympy.Integer(0)) if kind == "sin" else (sympy.Integer(0), x), arg)))
+    return out
+
+
+def read_products(expr: sympy.Expr) -> list[Term]:
+    """The terms of a parsed sum of products of the proof (:func:`paper_repro.printed.latex_math.terms` after the
+    products of a parenthesised sum are multiplied out): the sums of each term, its combining constant (rho, gamma,
+    beta, possibly primed) and its factors (:class:`Factor`); :class:`LatexMathError` for anything else (a
+    coefficient, an unknown name, a second constant)."""
+    expr = sympy.expand(expr, deep=False, mul=True, multinomial=False, power_exp=False, power_base=False, log=False)
+    out = []
+    for t in lm.terms(expr):
+        constant, factors = None, []
+        named = [f for f in sympy.Mul.make_args(t.coefficient) if isinstance(f, AppliedUndef) and f.func != lm.D]
+        rest = sympy.Mul(*[f for f in sympy.Mul.make_args(t.coefficient) if f not in named])
+        for f in [*t.names, *named]:
+            name = f.func.__name__
+            if name in _CONST_COLOUR or name in _PRIMED:
+                if constant is not None or len(f.args) != 3 or f.args[0] != _TWO_N:
+                    raise LatexMathError(f"the constant {f} (a second constant, or not of order 2n)")
+                constant = (_CONST_COLOUR.get(name) or _PRIMED[name], f.args[1], f.args[2], name in _PRIMED)
+            elif name == "c" and len(f.args) == 2 and f.args[0] == _TWO_N:
+                factors.append(Factor("c", (f.args[1],)))
+            elif name == "A" and len(f.args) == 3 and f.args[0] == _TWO_N and len(f.args[2]) == 1:
+                factors.append(Factor("A", (f.args[1], f.args[2][0])))
+            elif name == "S_sup" and len(f.args) == 4 and f.args[3] == sympy.Tuple(0):
+                factors.append(Factor("S", ((f.args[0], f.args[1]), f.args[2])))
+            elif name == "M_sup" and len(f.args) == 6 and f.args[5] == sympy.Tuple(0):
+                factors.append(Factor("M", (tuple(f.args[:4]), f.args[4])))
+            elif f.func == lm.D:
+                factors += _factors_of(f)
+            else:
+                raise LatexMathError(f"the factor {f} is not read")
+        factors += _factors_of(rest)
+        out.append(Term([(str(v), lo, hi) for v, lo, hi in t.limits], constant, factors))
+    if not out:
+        raise LatexMathError("no product read")
+    return out
+
+
+def _rate(x) -> Fraction:
+    """An angular velocity of S or M (a parsed rational) as a Fraction."""
+    x = sympy.sympify(x)
+    if not x.is_Rational:
+        raise LatexMathError(f"the rate {x} is not a number")
+    return Fraction(int(x.p), int(x.q))
+
+
+def read_prime_definition(tex: str) -> tuple[tuple[str, sympy.Expr], list[tuple]]:
+    """A printed definition ``\\rho_{2n,2n-i,L}^{\\prime} = \\left\\{ CONST/c_{2n,K}^{\\alpha}, & i=a,..,b \\\\
+    ..``: ((colour, L), [((colour, first index, level) of CONST, K, first i, last i), ...]), every row read by
+    :func:`paper_repro.printed.latex_math.parse_relation` (value and clause); a single case ``i=2n-(r+1)`` has
+    first = last; a listed range ``a,b,\\ldots,c`` must step by one."""
+    rel = lm.parse_relation(tex)
+    head = rel.parts[0] if rel.parts else None
+    if rel.ops != ["="] or not isinstance(head, AppliedUndef) or head.func.__name__ not in _PRIMED or \
+            len(head.args) != 3 or head.args[0] != _TWO_N or sympy.expand(head.args[1] - _TWO_N + sympy.Symbol("i")):
+        raise LatexMathError(f"no primed constant X'_{{2n,2n-i,L}} defined in {tex[:60]!r}")
+    i = sympy.Symbol("i")
+    value = rel.parts[1]
+    if isinstance(value, AppliedUndef) and value.func == lm.Cases:  # the rows, each with its clause, re-read
+        arrays: list = []
+        lm.clean(lm._display_math(tex), arrays)
+        rows = [lm.parse_relation(row[0].strip().rstrip(",") + " , " + row[1]) if len(row) == 2 else row
+                for row in (arrays[0] if arrays else []) if any(c.strip() for c in row)]
+    else:  # one case: X' = CONST/c, i = ..
+        rows = [lm.Relation([value], [], conditions=rel.conditions)]
+    cases = []
+    for r in rows:
+        if not isinstance(r, lm.Relation):
+            raise LatexMathError(f"a case row with {len(r)} cells")
+        num, den = sympy.fraction(r.parts[0]) if len(r.parts) == 1 and not r.ops else (None, None)
+        if not (isinstance(num, AppliedUndef) and num.func.__name__ in _CONST_COLOUR and len(num.args) == 3
+                and num.args[0] == _TWO_N and isinstance(den, AppliedUndef) and den.func.__name__ == "c"
+                and len(den.args) == 2 and den.args[0] == _TWO_N) or len(r.conditions) != 1:
+            raise LatexMathError(f"the case {r.parts} is not CONST/c_{{2n,K}}, i = ..")
+        cond = r.conditions[0]
+        if cond.parts[0] != i or len(cond.parts) != 2:
+            raise LatexMathError(f"the case condition {cond} is not on i")
+        if cond.ops == ["="]:
+            first = last = cond.parts[1]
+        elif cond.ops == ["in"] and isinstance(cond.parts[1], sympy.Tuple):
+            items = cond.parts[1].args
+            if len(items) not in (3, 4) or items[-2] != lm.LDOTS or lm.LDOTS in items[:-2]:
+                raise LatexMathError(f"unread range {items}")
+            if len(items) == 4 and sympy.expand(items[1] - items[0] - 1) != 0:
+                raise LatexMathError(f"the listed range {items} does not step by one")
+            first, last = items[0], items[-1]
+        else:
+            raise LatexMathError(f"unread case condition {cond}")
+        cases.append(((_CONST_COLOUR[num.func.__name__], num.args[1], num.args[2]), den.args[1], first, last))
+    if not cases:
+        raise LatexMathError(f"no case of the definition read in {tex[:60]!r}")
+    return (_PRIMED[head.func.__name__], head.args[2]), cases
+
+
 def _unit(half: tuple[fmpq, fmpq]) -> tuple[fmpq, fmpq]:
     """(cos, sin) of a half angle from (sin, cos): the unit complex number exp(i h)."""
     return half[1], half[0]
@@ -2193,37 +2602,38 @@ def _half_of(pt, p_alpha: int, q_t: int) -> tuple[fmpq, fmpq]:
     return s, c
 
 
-def _arg_half(arg: str, param_index: int, pt) -> tuple[fmpq, fmpq]:
+def _arg_half(arg, param_index: int, pt) -> tuple[fmpq, fmpq]:
     """Half angles of a printed argument at the boundary of the step: a coordinate ``u_1`` of the printed
     parametrization (its index must be the step's), or a linear form in alpha, x, y; (x, y) = (t, 0) when the
     running parameter is y, (0, t) when it is x."""
-    from paper_repro.printed.lines.sec3_read import linear_form
 
     _fmap, run, maps, _ranges = _params()[STEP_PARAMS[param_index]]
-    m = re.fullmatch(r"([uvw])_(\d)", arg)
-    if m:
-        if int(m.group(2)) != param_index + 1:
-            raise ValueError(f"{arg} in the step of parametrization {param_index + 1}")
-        a, x, y = maps["uvw".index(m.group(1))]
-    elif re.fullmatch(r"[uvw]", arg):
-        raise ValueError(f"an unindexed coordinate {arg} in a step of the proof")
+    if isinstance(arg, tuple):  # a coordinate (letter, index) of the parametrization
+        letter, idx = arg
+        if idx is None:
+            raise ValueError(f"an unindexed coordinate {letter} in a step of the proof")
+        if idx != param_index + 1:
+            raise ValueError(f"{letter}_{idx} in the step of parametrization {param_index + 1}")
+        a, x, y = maps["uvw".index(letter)]
     else:
         a, x, y = linear_form(arg)
     return _half_of(pt, a, x if run == "y" else y)
 
 
-def _expr(expr: str, env: dict) -> int:
-    from paper_repro.printed.lines.read import bound
+def bound(expr, **env: int) -> int:
+    """Integer value of a printed bound such as ``2n-1-j`` (read by :func:`parse`) with ``env`` bound."""
+    return _expr(expr, env)
 
-    return int(bound(expr.replace("\\left(", "(").replace("\\right)", ")"), **env))
+
+def _expr(expr, env: dict) -> int:
+    """Integer value of a parsed index or bound (or of its LaTeX, read by :func:`parse`) at ``env``."""
+    return _int_at(parse(expr) if isinstance(expr, str) else expr, {str(k): v for k, v in env.items()})
 
 
 def _factor_value(f, env: dict, param_index: int, pt, orders=None) -> fmpq:
-    """Value of one printed factor (:class:`paper_repro.printed.lines.sec3_read.Factor`) at the boundary point.
+    """Value of one printed factor (:class:`Factor`) at the boundary point.
     ``orders`` = (z, k) replaces the printed orders of S, M (z) and of a derivative (k) -- the factor structure
     tested at other orders; the printed orders are compared with the step's apart."""
-    from paper_repro.printed.lines.sec3_read import rate
-
     n = env["n"]
     if f.kind == "bar":
         run = _params()[STEP_PARAMS[param_index]][1]
@@ -2248,13 +2658,13 @@ def _factor_value(f, env: dict, param_index: int, pt, orders=None) -> fmpq:
         if f.kind == "S":
             if len(sub) != 2:
                 raise ValueError(f"S with {len(sub)} indices")
-            j, mu = _expr(sub[0], env), rate(sub[1])
+            j, mu = _expr(sub[0], env), _rate(sub[1])
             if j < 0 or z < 0:
                 raise ValueError("a negative power or order")
             return sin_power_derivative(j, fmpq(mu.numerator, mu.denominator), z)
         if len(sub) != 4:
             raise ValueError(f"M with {len(sub)} indices")
-        i, lam, j, mu = _expr(sub[0], env), rate(sub[1]), _expr(sub[2], env), rate(sub[3])
+        i, lam, j, mu = _expr(sub[0], env), _rate(sub[1]), _expr(sub[2], env), _rate(sub[3])
         if min(i, j, z) < 0:
             raise ValueError("a negative power or order")
         return mixed_derivative(i, fmpq(lam.numerator, lam.denominator), j, fmpq(mu.numerator, mu.denominator), z)
@@ -2268,15 +2678,13 @@ def _factor_value(f, env: dict, param_index: int, pt, orders=None) -> fmpq:
         if not 0 <= k <= 2 * n:
             raise ValueError(f"A_{{2n,{k}}} does not exist")
         var = _arg_half(f.args[1], param_index, pt)
-        rest = _arg_half(f"\\alpha-{f.args[1]}", param_index, pt)
+        rest = _arg_half(sympy.Symbol("alpha") - f.args[1], param_index, pt)
         return _c(pt, k) * rest[0] ** (2 * n - k) * var[0] ** k
     raise ValueError(f"unknown factor {f.kind}")
 
 
 def _prime_defs(line_ids) -> dict[str, tuple]:
     """{colour of the primed constant: (level expression, cases)} read from the definition lines."""
-    from paper_repro.printed.lines.sec3_read import read_prime_definition
-
     out = {}
     for lid in line_ids:
         (color, level), cases = read_prime_definition(_transcribed([lid])[lid])
@@ -2343,30 +2751,6 @@ def _pt(n: int, at: fmpq, x: fmpq):
     return pt
 
 
-def _quantified_step(tex: str, param_index: int) -> str:
-    """The value part of ``[0=] VALUE ,~\\forall V\\in\\left[ 0,\\alpha\\right]``: the quantifier must range over the
-    free variable of the step's edge and its printed range there, [0, alpha] (read)."""
-    from paper_repro.printed.lines.sec3_read import linear_form
-
-    m = re.search(r",\s*~?\s*\\forall\s*([xy])\s*\\in\s*\\left\[\s*([^,\]]+?)\s*,\s*([^\]]+?)\s*\\right\]", tex)
-    if not m:
-        raise ValueError(f"no quantifier forall x in [0, alpha] in {tex[:50]!r}")
-    run = _params()[STEP_PARAMS[param_index]][1]
-    free = "x" if run == "y" else "y"
-    if m.group(1) != free or linear_form(m.group(2)) != (0, 0, 0) or linear_form(m.group(3)) != (1, 0, 0):
-        raise ValueError(f"quantifier over {m.group(1)} in [{m.group(2)}, {m.group(3)}] on the edge {run} = 0")
-    return tex[:m.start()]
-
-
-def _value_part(tex: str, param_index: int) -> str:
-    """Strip ``\\[ 0=`` / ``& =`` before a value and the quantifier after it."""
-    body = _quantified_step(tex, param_index)
-    body = re.sub(r"^\s*(\\\[)?\s*0\s*=", " ", body) if re.match(r"^\s*(\\\[)?\s*0\s*=", body) else body
-    if re.match(r"^\s*(\\\[)", body):
-        raise ValueError("a display that does not start with 0 =")
-    return body
-
-
 def _A_at(pt, k: int, var: str) -> fmpq:
     """A_{2n,k} at the boundary coordinate named var ('t' is the parameter; 'alpha-t' its complement)."""
     n = pt["n"]
@@ -2386,33 +2770,25 @@ def read_terms_at_edge(line_id: str, param_index: int, verbatim: str | None = No
     ``(n, r, pt) -> {member of T_{2n}: its value at the boundary point}`` of the functions it names (by their own
     names), after checking that the printed point is the step's parametrization at running parameter 0.  A name
     that is no member of T_{2n} is kept as a string (a mismatch)."""
-    from paper_repro.printed.lines.read import sum_terms, term_indices
-
     tex = verbatim if verbatim is not None else _transcribed([line_id])[line_id]
-    terms = sum_terms(tex)
-    rest = re.sub(r"\s+", "", tex.replace("%", ""))
-    rest = re.sub(r"^&=", "", re.sub(r"\\\\$", "", rest))
-    rest = re.sub(r"\\(rho|gamma|beta)_\{[^{}]*\}[RGB]_\{[^{}]*\}\^\{\\alpha\}\\left\([^()]*\\right\)", "", rest)
-    rest = re.sub(r"\\sum_\{[^{}]*\}\^\{[^{}]*\}", "", rest).replace("+", "")
-    if rest:
-        raise ValueError(f"unread {rest[:40]!r}")
-    points = {re.sub(r"\s+", "", x) for x in re.findall(r"\\left\(\s*([^()]*?)\s*\\right\)", tex)}
+    rel = lm.parse_relation(tex)
+    if rel.lead not in (None, "=") or rel.ops or rel.conditions:
+        raise LatexMathError(f"not a row '= sum of terms': {rel.lead} {rel.ops} {len(rel.conditions)} clauses")
+    terms = combination_terms(rel.parts[-1])
     fmap, run = PARAMS[STEP_PARAMS[param_index]]
     a, q = fmpq(7, 5), fmpq(2, 5)  # the printed point and the map compared at exact values of alpha and the parameter
     at0 = fmap(a, q, fmpq(0)) if run == "y" else fmap(a, fmpq(0), q)
     other = "x" if run == "y" else "y"
+    at = {sympy.Symbol("alpha"): sympy.Rational(7, 5), sympy.Symbol(other): sympy.Rational(2, 5)}
+    points = {args for *_, args in terms}
     readable = []
-    for pt_text in points:
-        parts = pt_text.split(",")
-        vals = []
-        for part in parts:
-            expr = part.replace("\\alpha", "A")
-            if not re.fullmatch(r"[0A-Za-z+\-]+", expr):
-                raise ValueError(f"unread point {pt_text!r}")
-            vals.append(eval(expr.replace(other, "Q"), {"__builtins__": {}}, {"A": a, "Q": q}))  # noqa: S307
-        readable.append(tuple(vals))
+    for pt in points:
+        vals = [sympy.sympify(c).subs(at) for c in pt]
+        if not all(v.is_Rational for v in vals):
+            raise LatexMathError(f"unread point {pt}")
+        readable.append(tuple(fmpq(int(v.p), int(v.q)) for v in vals))
     if readable != [tuple(at0)] * len(readable) or not readable:
-        raise ValueError(f"the printed points {sorted(points)} are not the parametrization at {run} = 0")
+        raise ValueError(f"the printed points {sorted(map(str, points))} are not the parametrization at {run} = 0")
 
     def fn(n, r, pt):
         strict = {lb.paper: k for k, lb in enumerate(united_system(n))}
@@ -2470,9 +2846,6 @@ def omitted_check(line_id: str, before: str, terms_line: str, param_index: int,
     coordinate of the step (its index), equal to the printed argument (both as linear forms), and its half-angle
     sine at the printed point (the step's edge) is the printed value, 0 (exact); every function before the step and
     not kept has that sine to a power in the printed relation ("at least one"), every kept one has not (n = 1..12)."""
-    from paper_repro.printed.lines.read import sum_terms, term_indices
-    from paper_repro.printed.lines.sec3_read import linear_form
-
     t = _transcribed([line_id, terms_line], override)
     try:
         o = read_omitted(t[line_id])
@@ -2480,7 +2853,7 @@ def omitted_check(line_id: str, before: str, terms_line: str, param_index: int,
         var = "uvw".index(o["coord"])
         same_arg = linear_form(o["arg"]) == maps[var]
         pt = _pt(1, ALPHA_TS[0], X_FRACTIONS[0])
-        value = _arg_half(f"{o['coord']}_{o['index']}", param_index, pt)[0]
+        value = _arg_half((o["coord"], o["index"]), param_index, pt)[0]
     except ValueError as exc:
         return LineResult(False, how="the omitted functions' factor read from the transcription, n = 1..12",
                           kind="exhaustive", detail={"unread": str(exc)})
@@ -2489,7 +2862,7 @@ def omitted_check(line_id: str, before: str, terms_line: str, param_index: int,
     for n in range(1, 13):
         strict = {lb.paper: k for k, lb in enumerate(united_system(n))}
         kept = {strict.get(f"{c}_{{{2 * n},{2 * n - i},{j}}}", "?") for c, i, j in
-                term_indices(sum_terms(t[terms_line]), n=n)}
+                term_indices(row_combination(t[terms_line]), n=n)}
         alive = printed_rows(before, n, 0, override)
         ok &= "?" not in kept and kept <= alive
         ok &= all(rel(exponents(united_system(n)[k])[2 * var], o["power"]) == (k not in kept)
@@ -2654,31 +3027,34 @@ def _zeroed_check(computed_fn, printed_level, corrected_level, i_range, color, a
                                                            "corrected_mismatches": len(bad_c)})
 
 
-def _zero_line_strict(tex: str, color: str | None) -> None:
-    """A printed conclusion ``\\rho_{2n,2n-i,L}^{\\prime}=0,~i=a,a+1,\\ldots,b`` must be exactly that: a primed
-    constant of the step's colour (the one its definition line defines), ``=``, a listed range stepping by one
-    (``ValueError`` otherwise; the value and the range are compared by the callers)."""
-    m = re.fullmatch(r"\s*\\(rho|gamma|beta)_\{2n,2n-i,[^{}]+\}\^\{\\prime\}=\d+,~i=.+?[.,]\s*", tex.replace("%", " "))
-    if not m or (color and {"rho": "R", "gamma": "G", "beta": "B"}[m.group(1)] != color):
+def read_zero_line(tex: str, color: str | None = None) -> tuple[sympy.Expr, sympy.Expr, sympy.Expr, sympy.Expr]:
+    """(level, first i, last i, right-hand side) of a printed conclusion ``\\rho_{2n,2n-i,L}^{\\prime}=0,~i=a,a+1,
+    \\ldots,b``, read by :func:`paper_repro.printed.latex_math.parse_relation`: a primed constant of order 2n and first
+    index 2n-i of the step's colour, ``=``, a number, and a listed range of i stepping by one (``ValueError``
+    otherwise; the value and the range are compared by the callers)."""
+    rel = lm.parse_relation(tex)
+    head = rel.parts[0] if rel.parts else None
+    i = sympy.Symbol("i")
+    if rel.ops != ["="] or len(rel.parts) != 2 or rel.lead is not None or not isinstance(head, AppliedUndef) or \
+            head.func.__name__ not in _PRIMED or len(head.args) != 3 or head.args[0] != _TWO_N or \
+            sympy.expand(head.args[1] - _TWO_N + i) != 0 or (color and _PRIMED[head.func.__name__] != color) or \
+            not rel.parts[1].is_Integer:
         raise ValueError(f"not a conclusion const'_{{2n,2n-i,L}}=0, i=a,..,b of colour {color}: {tex[:40]!r}")
-    listed_orders(tex, "i", n=5, r=1)
+    found = [c.parts[1].args for c in rel.conditions if c.ops == ["in"] and c.parts[0] == i
+             and isinstance(c.parts[1], sympy.Tuple)]
+    if len(found) != 1 or len(rel.conditions) != 1:
+        raise ValueError(f"not one listed range of i after the conclusion: {tex[:40]!r}")
+    listed_orders(tex, "i", n=5, r=1)  # the range steps by one
+    return head.args[2], found[0][0], found[0][-1], rel.parts[1]
 
 
 def read_zeroed(line_id: str, verbatim: str | None = None, color: str | None = None):
     """(level, range of i, right-hand side) of a printed ``const'_{2n,2n-i,LEVEL} = 0, i = a, ..., b``, read from its
-    transcription, as functions of (n, r)."""
-    from paper_repro.printed.lines.read import bound, listed_range, right_hand_side
-
+    transcription (:func:`read_zero_line`), as functions of (n, r)."""
     tex = verbatim if verbatim is not None else _transcribed([line_id])[line_id]
-    _zero_line_strict(tex, color)
-    m = re.search(r"_\{2n,2n-i,([^{}]+)\}\^\{\\prime\}", tex)
-    if not m:
-        raise ValueError(f"no primed constant in {tex[:50]!r}")
-    level_expr = m.group(1)
-    lo, hi = listed_range(tex, "i")
-    rhs = right_hand_side(tex, r",~i\s*=")
+    level_expr, lo, hi, rhs = read_zero_line(tex, color)
     return (lambda n, r: bound(level_expr, n=n, r=r),
-            lambda n, r: range(bound(lo, n=n, r=r), bound(hi, n=n, r=r) + 1), rhs)
+            lambda n, r: range(bound(lo, n=n, r=r), bound(hi, n=n, r=r) + 1), str(rhs))
 
 
 def _zeroed_read(line_id, computed_fn, corrected_level, color, alias, level=None, verbatim=None) -> LineResult:
@@ -2692,8 +3068,8 @@ def _zeroed_read(line_id, computed_fn, corrected_level, color, alias, level=None
     res.holds_as_printed &= rhs == "0"
     ln = transcribed_line(line_id)
     if ln.status == "erratum" and verbatim is None:  # the erratum describes what is printed: the level read
-        lev = re.search(r"_\{2n,2n-i,([^{}]+)\}\^\{\\prime\}", ln.verbatim).group(1)
-        if f"_{{2n,2n-i,{lev}}}" not in ln.erratum["printed"]:
+        lev = read_zero_line(ln.verbatim)[0]
+        if f"_{{2n,2n-i,{lev}}}".replace(" ", "") not in ln.erratum["printed"].replace(" ", ""):
             res.corrected_holds = False
             res.detail["erratum_describes_another_level"] = lev
     res.detail["right_hand_side"] = rhs
@@ -2757,25 +3133,96 @@ VALUE_CHECKS = {
 
 
 def _is_definition(tex: str) -> bool:
-    return bool(re.search(r"\^\{\\prime\}\s*=\s*(\\left\\\{|\\frac|\\dfrac)", tex))
+    """A line that defines a primed constant (``X'_{..} = ..``, parsed)."""
+    try:
+        rel = lm.parse_relation(tex)
+    except LatexMathError:
+        return False
+    return bool(rel.parts) and rel.ops == ["="] and isinstance(rel.parts[0], AppliedUndef) and \
+        rel.parts[0].func.__name__ in _PRIMED
+
+
+def _row_value(tex: str) -> sympy.Expr:
+    """The value of a printed row ``[= &] VALUE [\\\\]`` (no relation or clause after it), read by
+    :func:`paper_repro.printed.latex_math.parse_relation`."""
+    rel = lm.parse_relation(tex)
+    if rel.lead not in (None, "=") or rel.ops or rel.conditions or rel.continues:
+        raise LatexMathError(f"not a row '= VALUE': {rel.lead} {rel.ops} {len(rel.conditions)} clauses")
+    return rel.parts[0]
+
+
+def _k_range(cond, var: str = "k") -> tuple[sympy.Expr, sympy.Expr]:
+    """(lo, hi) of a parsed case condition ``k=K`` (lo = hi) or ``a\\leq k\\leq b`` (a Relation or a sympy boolean)."""
+    k = sympy.Symbol(var)
+    if isinstance(cond, lm.Relation):
+        if cond.ops == ["="] and len(cond.parts) == 2 and cond.parts[0] == k:
+            return cond.parts[1], cond.parts[1]
+        if cond.ops == ["<=", "<="] and len(cond.parts) == 3 and cond.parts[1] == k:
+            return cond.parts[0], cond.parts[2]
+        raise LatexMathError(f"unread condition {cond.parts} {cond.ops}")
+    if isinstance(cond, sympy.Eq) and k in (cond.lhs, cond.rhs):
+        other = cond.rhs if cond.lhs == k else cond.lhs
+        return other, other
+    if isinstance(cond, sympy.And) and len(cond.args) == 2:
+        lo = hi = None
+        for a in cond.args:
+            if isinstance(a, (sympy.Le, sympy.Ge)) and a.gts == k:
+                lo = a.lts
+            elif isinstance(a, (sympy.Le, sympy.Ge)) and a.lts == k:
+                hi = a.gts
+        if lo is not None and hi is not None:
+            return lo, hi
+    raise LatexMathError(f"unread condition {cond}")
+
+
+def read_case_row(tex: str) -> tuple[sympy.Expr, sympy.Expr, sympy.Expr]:
+    """(value, lo, hi) of a printed case row ``VALUE , & k=K`` or ``VALUE , & a\\leq k\\leq b``: a bare row, or a
+    case display ``= & \\left\\{ \\begin{array}..`` of one row (its value possibly printed over several rows)."""
+    rel = lm.parse_relation(tex)
+    last = rel.parts[-1] if rel.parts else None
+    if isinstance(last, AppliedUndef) and last.func == lm.Cases:
+        if len(last.args) != 1 or rel.conditions or rel.parts[:-1] or rel.lead not in (None, "="):
+            raise LatexMathError(f"{len(last.args)} case rows")
+        value, cond = last.args[0].args
+        return (value, *_k_range(cond))
+    if rel.ops or len(rel.conditions) != 1 or rel.lead is not None:
+        raise LatexMathError(f"not a case row VALUE, & COND: {rel.ops} {len(rel.conditions)} clauses")
+    return (rel.parts[0], *_k_range(rel.conditions[0]))
+
+
+def _quantified_value(rel: lm.Relation, param_index: int) -> sympy.Expr:
+    """The value of ``[0=] VALUE ,~\\forall V\\in\\left[ 0,\\alpha\\right]`` (or ``= & VALUE, ..``): the quantifier
+    must range over the free variable of the step's edge and its printed range there, [0, alpha] (read)."""
+    run = _params()[STEP_PARAMS[param_index]][1]
+    free = sympy.Symbol("x" if run == "y" else "y")
+    (c,) = rel.conditions
+    rng = c.parts[-1] if c.parts else None
+    if c.quantifier != "forall" or c.ops != ["in"] or c.parts[0] != free or not isinstance(rng, sympy.Interval) or \
+            linear_form(rng.start) != (0, 0, 0) or linear_form(rng.end) != (1, 0, 0):
+        raise ValueError(f"the quantifier {c.quantifier} {c.parts} is not over {free} in [0, alpha] on the edge "
+                         f"{run} = 0")
+    if rel.parts[:-1] not in ([], [0]) or any(op != "=" for op in rel.ops) or rel.lead not in (None, "="):
+        raise ValueError("a display that does not start with 0 =")
+    return rel.parts[-1]
 
 
 def read_value_line(tex: str, param_index: int):
     """(terms, k) of a printed value: a case row ``VALUE , & k=K`` (k = K), ``[0=] VALUE ,~\\forall x\\in[0,\\alpha]``
     or ``& = VALUE \\\\`` (k None: the whole derivative)."""
-    from paper_repro.printed.lines.sec3_read import case_range, read_products, split_case
-
+    rel = lm.parse_relation(tex)
+    last = rel.parts[-1] if rel.parts else None
     k = None
-    if re.search(r",\s*&\s*[^&]*$", tex.replace("%", " ").rstrip().rstrip("\\").rstrip()):
-        body, cond = split_case(tex)
-        lo, hi = case_range(cond)
+    if (isinstance(last, AppliedUndef) and last.func == lm.Cases) or (not rel.ops and rel.lead is None and
+                                                                     len(rel.conditions) == 1
+                                                                     and rel.conditions[0].quantifier is None):
+        body, lo, hi = read_case_row(tex)
         if lo != hi:
-            raise ValueError(f"a value for a range of k: {cond!r}")
+            raise ValueError(f"a value for a range of k: {lo}..{hi}")
         k = _expr(lo, {})
-    elif "\\forall" in tex:
-        body = _value_part(tex, param_index)
+    elif rel.conditions:
+        body = _quantified_value(rel, param_index)
     else:
-        body = re.sub(r"\\\\\s*$", "", tex.strip())
+        body = _row_value(tex)
     return read_products(body), k
 
 
@@ -2790,8 +3237,6 @@ def value_lines_check(check_id: str, texts: dict[str, str] | None = None, defs_t
     series, sines by exact half angles): the {member of T_{2n}: coefficient} it prints must equal the one computed
     from the exact derivatives of the step (the k-th term of its chain rule where the line is a case k = K, the
     whole derivative of the step's order otherwise), n = 1..6 (order-0 steps) or n = 2..6, r = 0..n-2."""
-    from paper_repro.printed.lines.sec3_read import read_prime_definition
-
     param_index, order, def_ids = VALUE_CHECKS[check_id]
     param = STEP_PARAMS[param_index]
     own = {x.id: x.verbatim for x in _lines_of(check_id)}
@@ -2876,13 +3321,11 @@ def kpos_check(check_id: str, param_index: int) -> LineResult:
     """The rows ``0, & 1\\leq k\\leq r+1`` (read: the value 0 and the range of k): the range is the rest of the
     chain rule's k = 0..r+1 after k = 0, and every mixed partial of the equality's functions with k in it vanishes
     at the boundary (exact), n = 2..6, r = 0..n-2."""
-    from paper_repro.printed.lines.sec3_read import case_range, split_case
-
     param = STEP_PARAMS[param_index]
     try:
-        rows = {x.id: split_case(x.verbatim) for x in _lines_of(check_id)}
-        ranges = {lid: case_range(cond) for lid, (value, cond) in rows.items()}
-        if not rows or any(value.strip() != "0" for value, _ in rows.values()):
+        rows = {x.id: read_case_row(x.verbatim) for x in _lines_of(check_id)}
+        ranges = {lid: (lo, hi) for lid, (value, lo, hi) in rows.items()}
+        if not rows or any(value != 0 for value, _, _ in rows.values()):
             raise ValueError("a value other than 0")
     except ValueError as exc:
         return LineResult(False, how="the rows read from the transcriptions", detail={"unread": str(exc)})
@@ -2918,11 +3361,9 @@ def kterm_row_check(line_id: str, texts: dict[str, str] | None = None) -> LineRe
     at the printed orders (the orders of S, M must read r+1-k and that of the derivative k, the chain rule's k-th
     term) and, to test the factor structure where it does not vanish, at z = 0..n+2, k = 0..2; the seven rows
     together list exactly the functions of L_r, each once (n = 2..6, r = 0..n-2)."""
-    from paper_repro.printed.lines.sec3_read import read_products
-
     t = _transcribed(list(KTERM_LINES), texts)
     try:
-        rows = {lid: read_products(tx) for lid, tx in t.items()}
+        rows = {lid: read_products(_row_value(tx)) for lid, tx in t.items()}
     except ValueError as exc:
         return LineResult(False, how="the rows read from the transcriptions", detail={"unread": str(exc)})
     bad, cases, nonzero = [], 0, 0
@@ -3101,7 +3542,7 @@ def fig_n4_caption(order: int | None = None, n: int | None = None) -> LineResult
     other black dots (the second condition).  Computed: for every function of T_{2n} (n of the text, "In the case of
     $n=4$") with sin(v/2) to the power j and cos(v/2) to the power i (i + j != 0) and every order z in v, its partial
     vanishes at v = 0 exactly when gray or the second condition; the gray ones are exactly those with j > z."""
-    from paper_repro.printed.lines.sec3_read import _condition, linear_form, read_sign_function
+    from paper_repro.printed.derivatives import branch_disjuncts
 
     tex = _transcribed(["sec1_3-fig-n4-caption"])["sec1_3-fig-n4-caption"].replace("%", " ")
     try:
@@ -3125,16 +3566,13 @@ def fig_n4_caption(order: int | None = None, n: int | None = None) -> LineResult
         label, at = m.group(4), m.group(5)
         fmap, run, maps, _r = _params()[label]
         forms_ok = linear_form(m.group(2)) == maps[1] and linear_form(m.group(3)) == maps[2] and at == run
-        branches = read_sign_function(_transcribed(["sec1_3-proposition-M"])["sec1_3-proposition-M"])
-        zero = [c for v, c in branches if v == 0]
-        parts = [p.strip() for p in re.split(r"\)\s+or\s+\(", zero[0].strip()[1:-1])] if len(zero) == 1 else []
+        parts = branch_disjuncts(_transcribed(["sec1_3-proposition-M"])["sec1_3-proposition-M"], 0, ("j", "z"))
         if len(parts) != 2:
             raise ValueError("the zero branch of the Proposition is not two conditions joined by 'or'")
         which = {"first": parts[0], "second": parts[1]}
         gray_cond, black_cond = which[conds[0][0] or conds[0][1]], which[conds[1][0] or conds[1][1]]
         rel = {"greater than": lambda j, z: j > z, "less than": lambda j, z: j < z,
                "at least": lambda j, z: j >= z, "at most": lambda j, z: j <= z}[gray.group(1)]
-        _condition("z<j")  # the reader of conditions is the one the Proposition's branches went through
     except (ValueError, KeyError) as exc:
         return LineResult(False, how="the caption read from its transcription", detail={"unread": str(exc)})
     order = printed_order if order is None else order
@@ -3150,10 +3588,9 @@ def fig_n4_caption(order: int | None = None, n: int | None = None) -> LineResult
             continue
         for k in range(order + 1):
             z = order - k
-            env = {"__builtins__": {}}
             vanish = mixed_derivative(i, HALF, j, HALF, z) == 0
-            is_gray = eval(gray_cond, env, {"z": z, "j": j})  # noqa: S307 - read above
-            is_black = eval(black_cond, env, {"z": z, "j": j})  # noqa: S307
+            is_gray = gray_cond(z=z, j=j)
+            is_black = black_cond(z=z, j=j)
             bad += vanish != (is_gray or is_black)
             gray_bad += bool(is_gray) != rel(j, z)
     ok = bad == 0 and gray_bad == 0 and ok_orders and forms_ok and direction == (0, 1, -1)
@@ -3168,7 +3605,6 @@ def interval_typo() -> LineResult:
     """An interval [a, b] is written with a comma between its endpoints; the printed ``\\left[ 0\\,\\alpha\\right]``
     (read from the transcription) has none (a thin space instead), so it does not parse as an interval; with the comma
     it is [0, alpha], the range of x on the edge y = 0 of parametrization_3_y_0 (read from its transcription)."""
-    from paper_repro.printed.lines.sec3_read import linear_form
 
     tex = _transcribed(["sec1_3-r0-p3-interval"])["sec1_3-r0-p3-interval"]
     m = re.fullmatch(r"\s*x\s*\\in\s*\\left\[(.*)\\right\]\s*", tex)
@@ -3196,7 +3632,7 @@ def lemma_hypotheses(verbatim_text: str | None = None) -> LineResult:
     without it (i, j >= 1, p >= 0 as the sets say) the statement is consistent, and the sine rule (read from its
     transcription) holds on the whole range, p = 0 included (exact Taylor coefficients, j = lower bound..8,
     p = 0..16, mu in {1/2, 1, 3})."""
-    from paper_repro.printed.lines.sec3_read import read_sign_function, sign_of
+    from paper_repro.printed.derivatives import read_sign_function, sign_of
 
     tex = verbatim_text if verbatim_text is not None else _transcribed(["sec1_3-lemma-hypotheses"])[
         "sec1_3-lemma-hypotheses"]
@@ -3233,13 +3669,11 @@ def r0p1_sines() -> LineResult:
     parametrization_1_y_0 against the exact values of the functions there.  As printed the last term's constant
     gamma_{2n,2n-i,0} stands outside the sum over i (i unbound: unread); with gamma_{2n,2n,0} (the line before, and
     the definition of rho'_{2n,0,0}) it holds."""
-    from paper_repro.printed.lines.sec3_read import read_products
-
     tex = _transcribed(["sec1_3-r0-p1-sines"])["sec1_3-r0-p1-sines"]
 
     def run(text: str) -> tuple[bool, object]:
         try:
-            terms = read_products(re.sub(r"\\\\\s*$", "", text.strip()))
+            terms = read_products(_row_value(text))
         except ValueError as exc:
             return False, str(exc)
         for n in N_PROOF:
@@ -3274,19 +3708,16 @@ def zero_conclusion(line_id: str, verbatim: str | None = None) -> LineResult:
     functions whose restriction to the step's edge does not vanish (the elimination recomputed from exact values),
     and those restrictions are linearly independent (exact rank at 2n + 4 points of the edge), so a vanishing
     combination has exactly these constants equal to the printed right-hand side 0 (n = 1..6)."""
-    from paper_repro.printed.lines.read import bound, listed_range, right_hand_side
-
     param_index, color, alias = ZERO_LINES[line_id]
     tex = verbatim if verbatim is not None else _transcribed([line_id])[line_id]
     try:
-        _zero_line_strict(tex, color)
-        if not re.match(r"\s*\\\w+_\{2n,2n-i,0\}", tex):
+        level, lo, hi, rhs = read_zero_line(tex, color)
+        if level != 0:
             raise ValueError("not the level-0 constants")
+        rhs = str(rhs)
     except ValueError as exc:
         return LineResult(False, how="the conclusion read from the transcription, n = 1..6", kind="exhaustive",
                           detail={"unread": str(exc)})
-    lo, hi = listed_range(tex, "i")
-    rhs = right_hand_side(tex, r",~i\s*=")
     bad = []
     for n in N_PROOF:
         named = set()
@@ -3310,7 +3741,7 @@ def zero_conclusion(line_id: str, verbatim: str | None = None) -> LineResult:
     return LineResult(ok, how="range and right-hand side read from the transcription; the constants of the functions "
                       "not vanishing on the step's edge (exact values) and their exact rank at 2n + 4 points of the "
                       f"edge, n = {N_PROOF.start}..{N_PROOF.stop - 1}", kind="exhaustive",
-                      detail={"printed_range": [lo, hi], "right_hand_side": rhs, "mismatches": bad[:2]})
+                      detail={"printed_range": [str(lo), str(hi)], "right_hand_side": rhs, "mismatches": bad[:2]})
 
 
 @line_check("sec1_3-r0-p1-zero")

@@ -1,8 +1,8 @@
 """Checks of the lines of Sections sec:coincidence and sec:partition_of_unity (source lines 1414-2167).
 
 Section sec:coincidence (lines 1414-1906): every check reads its lines at call time through
-:func:`paper_repro.printed.lines.verbatim` and :mod:`paper_repro.claims.lines.sec4_tex` (formulas by
-:mod:`paper_repro.printed.latex_math`; prose by anchored regular expressions that must match the whole sentence, so
+:func:`paper_repro.printed.lines.verbatim`, formulas by :mod:`paper_repro.printed.latex_math` (:func:`parse`,
+:func:`chain`; prose by anchored regular expressions that must match the whole sentence, so
 that a changed word, index, count or quantifier is refused), and compares what it read with the computation below;
 no formula of the section is retyped.  The printed formulas become exact trigonometric polynomials
 (:func:`to_ep`, :func:`compile_ep`).
@@ -29,6 +29,7 @@ from functools import cache
 from itertools import product
 from math import comb
 
+import sympy as sp
 from flint import fmpq, fmpq_mat
 
 from paper_repro.claims.lines import LineResult, line_check
@@ -37,10 +38,84 @@ from paper_repro.core.context import ExactContext
 from paper_repro.core.domain import rational_alpha, sample_rational_points
 from paper_repro.core.fourier import cos_sin_combination, full_angles
 from paper_repro.core.labels import exponents, r_exponents, united_system
+from paper_repro.printed import latex_math as lm
+from paper_repro.printed.latex_math import LatexMathError
 from paper_repro.printed.lines import live_texts, verbatim
 from paper_repro.printed.lines import sec4_5 as pl
 
 Q = Fraction
+PM = lm.PM  # the sign of \mp / \pm (latex_math's ``pm``): +1 for the upper sign, -1 for the lower one
+ALPHA = sp.Symbol("alpha")
+#: the section's subscripted letters, plain symbols here: ``r_{1}`` (latex_math's ``r(1)``) is ``r1``
+_INDEXED = {"r", "g", "b", "k", "s"}
+
+
+# ---------------------------------------------------------------------------------------------------------------
+# reading: paper_repro.printed.latex_math, with the section's names
+# ---------------------------------------------------------------------------------------------------------------
+def section_names(e):
+    """A parsed expression (:mod:`paper_repro.printed.latex_math`) in this section's names: ``r(1)`` -> ``r1`` (the
+    section's subscripted letters r, g, b, k, s with one integer index are plain symbols),
+    ``dim(Vcal(n))`` -> ``dim_V(n)``, ``dim(Tcal(2n))`` -> ``dim_T(2n)``."""
+    from sympy.core.function import AppliedUndef
+
+    def conv(f):
+        name = f.func.__name__
+        if name == "dim" and len(f.args) == 1 and isinstance(f.args[0], AppliedUndef) and \
+                f.args[0].func.__name__ in ("Vcal", "Tcal") and len(f.args[0].args) == 1:
+            return sp.Function(f"dim_{f.args[0].func.__name__[0]}")(f.args[0].args[0])
+        if name in _INDEXED and len(f.args) == 1 and f.args[0].is_Integer:
+            return sp.Symbol(f"{name}{f.args[0]}")
+        return f
+
+    return e.replace(lambda x: isinstance(x, AppliedUndef), conv)
+
+
+def parse(tex: str):
+    """One expression, by :func:`paper_repro.printed.latex_math.parse`, in the section's names
+    (:func:`section_names`); :class:`LatexMathError` on anything unread.
+
+    >>> parse(r"\\sin\\left( z\\mp r_{1}\\right) ")
+    -sin(pm*r1 - z)
+    """
+    return section_names(lm.parse(tex))
+
+
+def bound(expr: str, **env: int) -> int:
+    """Integer value of a printed bound such as ``2n-1-j`` (read by :func:`parse`) with ``env`` bound;
+    :class:`LatexMathError` if a name stays unbound or the value is not an integer.
+
+    >>> bound("2n-1-j", n=3, j=1)
+    4
+    """
+    names, f = _bound_fn(expr)
+    if not set(names) <= set(env):
+        raise LatexMathError(f"the bound {expr!r} names {sorted(set(names) - set(env))}, unbound")
+    v = f(*(env[x] for x in names))
+    if v != int(v):
+        raise LatexMathError(f"the bound {expr!r} is not an integer at {env}: {v}")
+    return int(v)
+
+
+@cache
+def _bound_fn(expr: str):
+    e = parse(expr)
+    names = tuple(sorted(s.name for s in e.free_symbols))
+    return names, sp.lambdify([sp.Symbol(x) for x in names], e, "math")
+
+
+def chain(tex: str) -> list:
+    """The parts of a chain ``a = b = c`` (a continued row ``= & ..`` too), by
+    :func:`paper_repro.printed.latex_math.parse_relation`: every relation must be ``=`` and no clause may follow
+    (:class:`LatexMathError` otherwise).
+
+    >>> chain(r"\\dim\\mathcal{V}_{n}^{\\alpha}=\\dim\\mathcal{V}_{n-1}^{\\alpha}+6n")
+    [dim_V(n), 6*n + dim_V(n - 1)]
+    """
+    r = lm.parse_relation(tex)
+    if r.lead not in (None, "=") or any(op != "=" for op in r.ops) or r.conditions:
+        raise LatexMathError(f"not a chain of '=': lead {r.lead}, {r.ops}, {len(r.conditions)} clauses")
+    return [section_names(x) for x in r.parts]
 TS = (fmpq(1, 3), fmpq(2, 5), fmpq(1, 7))  # tan(alpha/4) of the sampled alpha
 
 
@@ -144,15 +219,13 @@ def half_monomial(e: tuple[int, ...]) -> EP:
 
 
 # ---------------------------------------------------------------------------------------------------------------
-# printed formulas (read by paper_repro.claims.lines.sec4_tex) as exact trigonometric polynomials
+# printed formulas (read by paper_repro.printed.latex_math) as exact trigonometric polynomials
 # ---------------------------------------------------------------------------------------------------------------
 def to_ep(expr, variables) -> EP:
     """The sympy expression ``expr`` (sums and products of rationals, integer powers, sin/cos of rational linear
-    forms in ``variables``) as an :class:`EP` over ``variables``; ``TexError`` for anything else (an unknown symbol
-    left in a printed formula, a non-linear argument)."""
+    forms in ``variables``) as an :class:`EP` over ``variables``; ``LatexMathError`` for anything else (an unknown
+    symbol left in a printed formula, a non-linear argument)."""
     import sympy as sp
-
-    from paper_repro.claims.lines.sec4_tex import TexError
 
     nv = len(variables)
     if expr.is_Rational:
@@ -173,30 +246,28 @@ def to_ep(expr, variables) -> EP:
         arg = sp.expand(expr.args[0])
         poly = sp.Poly(arg, *variables) if arg.free_symbols <= set(variables) else None
         if poly is None or poly.total_degree() > 1 or poly.coeff_monomial(1) != 0:
-            raise TexError(f"argument {arg} is not a linear form in {variables}")
+            raise LatexMathError(f"argument {arg} is not a linear form in {variables}")
         freq = []
         for v in variables:
             c = poly.coeff_monomial(v)
             if not c.is_Rational:
-                raise TexError(f"coefficient {c} of {v} is not rational")
+                raise LatexMathError(f"coefficient {c} of {v} is not rational")
             freq.append(Q(int(c.p), int(c.q)))
         return EP.sin(freq) if isinstance(expr, sp.sin) else EP.cos(freq)
-    raise TexError(f"cannot expand {expr}")
+    raise LatexMathError(f"cannot expand {expr}")
 
 
 def compile_ep(expr, variables, params):
     """``expr`` (read from a transcription; sin/cos of forms linear in ``variables`` whose coefficients, like the
     other factors, may depend on ``params``) compiled to a function ``values of params -> EP`` (fast exact
-    evaluation at many parameter values); ``TexError`` for a symbol that is neither a variable nor a parameter, or
+    evaluation at many parameter values); ``LatexMathError`` for a symbol that is neither a variable nor a parameter, or
     an argument that is not linear in the variables."""
     import sympy as sp
-
-    from paper_repro.claims.lines.sec4_tex import TexError
 
     nv = len(variables)
     extra = expr.free_symbols - set(variables) - set(params)
     if extra:
-        raise TexError(f"unknown symbols {sorted(map(str, extra))}")
+        raise LatexMathError(f"unknown symbols {sorted(map(str, extra))}")
 
     def scalar(e):
         f = sp.lambdify(params, e, modules=[{"binomial": comb}, "math"])
@@ -221,11 +292,11 @@ def compile_ep(expr, variables, params):
             arg = sp.expand(e.args[0])
             poly = sp.Poly(arg, *variables)
             if poly.total_degree() > 1 or poly.coeff_monomial(1) != 0:
-                raise TexError(f"argument {arg} is not a linear form in {variables}")
+                raise LatexMathError(f"argument {arg} is not a linear form in {variables}")
             cf = [sp.lambdify(params, poly.coeff_monomial(v)) for v in variables]
             mk = EP.sin if isinstance(e, sp.sin) else EP.cos
             return lambda vals: mk([Q(c(*vals)) for c in cf])
-        raise TexError(f"cannot expand {e}")
+        raise LatexMathError(f"cannot expand {e}")
 
     return comp(expr)
 
@@ -235,18 +306,16 @@ def linear_triple(expr, env: dict | None = None) -> tuple[int, int, int]:
     integer coefficients of u, v, w and nothing else."""
     import sympy as sp
 
-    from paper_repro.claims.lines.sec4_tex import TexError
-
     u, v, w = sp.symbols("u v w")
     e = sp.expand(sp.sympify(expr).subs({sp.Symbol(k): x for k, x in (env or {}).items()}))
     if not e.free_symbols <= {u, v, w}:
-        raise TexError(f"{e} is not a combination of u, v, w")
+        raise LatexMathError(f"{e} is not a combination of u, v, w")
     poly = sp.Poly(e, u, v, w)
     if poly.total_degree() > 1 or poly.coeff_monomial(1) != 0:
-        raise TexError(f"{e} is not a linear combination of u, v, w")
+        raise LatexMathError(f"{e} is not a linear combination of u, v, w")
     out = tuple(poly.coeff_monomial(x) for x in (u, v, w))
     if not all(c.is_Integer for c in out):
-        raise TexError(f"{e}: coefficients not integers")
+        raise LatexMathError(f"{e}: coefficients not integers")
     return tuple(int(c) for c in out)  # type: ignore[return-value]
 
 
@@ -287,8 +356,6 @@ def read_conditions() -> list[list]:
     as functions ``(r1, g1, b1, r2, g2, b2, z) -> lhs - rhs`` (a row holds when it is 0)."""
     import sympy as sp
 
-    from paper_repro.claims.lines.sec4_tex import TexError, chain
-
     names = sp.symbols("r1 g1 b1 r2 g2 b2 z")
     out = []
     for rows in COND_LINES:
@@ -296,10 +363,10 @@ def read_conditions() -> list[list]:
         for lid in rows:
             parts = chain(verbatim(lid))
             if len(parts) != 2:
-                raise TexError(f"{lid}: not one equation")
+                raise LatexMathError(f"{lid}: not one equation")
             e = sp.expand(parts[0] - parts[1])
             if not e.free_symbols <= set(names):
-                raise TexError(f"{lid}: unknown symbols in {e}")
+                raise LatexMathError(f"{lid}: unknown symbols in {e}")
             system.append(sp.lambdify(names, e))
         out.append(system)
     return out
@@ -330,34 +397,33 @@ def read_z_range():
     """The printed set of z, ``\\left\\{ -n,-\\left( n-1\\right) ,\\ldots,0,1,\\ldots,2n\\right\\}``, read from
     both lines that print it (they must agree): a function n -> the list of its integers.  Every listed element is
     read; two listed neighbours differ by 1, elements around ``\\ldots`` increase."""
-    from paper_repro.claims.lines.sec4_tex import TexError, parse
 
     ends = set()
     for lid in ("sec4_5-z-range", "sec4_5-z-range-2"):
         tex = verbatim(lid)
         m = re.search(r"exists an integer \$z\\in\\left\\\{(.*)\\right\\\}\s*\$", tex)
         if not m:
-            raise TexError(f"{lid}: no 'exists an integer z in {{..}}'")
+            raise LatexMathError(f"{lid}: no 'exists an integer z in {{..}}'")
         ends.add(m.group(1).replace(" ", ""))
     if len(ends) != 1:
-        raise TexError(f"the two lines print different ranges: {sorted(ends)}")
+        raise LatexMathError(f"the two lines print different ranges: {sorted(ends)}")
     items = [x.strip() for x in re.split(r",(?![^()]*\\right\))", ends.pop().replace("\\left(", "(")
                                                                      .replace("\\right)", ")"))]
     exprs = [None if x == "\\ldots" else parse(x) for x in items]
     if exprs[0] is None or exprs[-1] is None:
-        raise TexError("the set starts or ends with an ellipsis")
+        raise LatexMathError("the set starts or ends with an ellipsis")
 
     def listed(n: int) -> list[int]:
         vals = [None if e is None else e.subs("n", n) for e in exprs]
         for x in vals:
             if x is not None and not x.is_Integer:
-                raise TexError(f"element {x} is not an integer")
+                raise LatexMathError(f"element {x} is not an integer")
         for k in range(len(vals) - 1):
             x, y = vals[k], vals[k + 1]
             if x is not None and y is not None and y - x != 1:
-                raise TexError(f"listed neighbours {x}, {y} do not step by 1")
+                raise LatexMathError(f"listed neighbours {x}, {y} do not step by 1")
             if x is None and (vals[k - 1] is None or y is None or not y >= vals[k - 1]):
-                raise TexError("elements around an ellipsis decrease")
+                raise LatexMathError("elements around an ellipsis decrease")
         return list(range(int(vals[0]), int(vals[-1]) + 1))
 
     return listed
@@ -367,7 +433,6 @@ def read_z_range():
 def check_relation() -> LineResult:
     """The printed conditions (each row read) with z in the printed set (every element read, from both lines that
     print it) against phase equivalence; the set is exactly the z that relate two elements of E_n."""
-    from paper_repro.claims.lines.sec4_tex import TexError
 
     how = ("the two systems of conditions (each row read from the transcriptions) with z in the printed set (read "
            "from both lines) compared with phase equivalence (a - b or a + b in Z(1,1,1)) on all pairs of E_n, "
@@ -375,7 +440,7 @@ def check_relation() -> LineResult:
     try:
         zrange, conds = read_z_range(), read_conditions()
         ok, det = relation_matches(3, zrange, conds)
-    except (TexError, TypeError) as exc:
+    except (LatexMathError, TypeError) as exc:
         return LineResult(False, how=how, kind="exhaustive", detail={"unread": str(exc)})
     ext = all(zrange(int(k)) == list(range(v[0], v[1] + 1)) for k, v in det["z_needed_min_max"].items())
     return LineResult(ok and ext, how=how, kind="exhaustive", detail={**det, "n_max": 3, "range_exact": ext})
@@ -403,15 +468,12 @@ def _related_pairs(n: int):
 
 def phase_chain(kind: str) -> list:
     """The '=' parts of the printed chain of ``kind`` (read from the transcriptions, in order)."""
-    from paper_repro.claims.lines.sec4_tex import chain
 
     return [part for lid in PHASE_LINES[kind] for part in chain(verbatim(lid))]
 
 
 def _pair_params():
     import sympy as sp
-
-    from paper_repro.claims.lines.sec4_tex import PM
 
     return (*sp.symbols("r1 g1 b1 r2 g2 b2 z"), PM)
 
@@ -420,19 +482,16 @@ def _compile_on_omega(expr, extra=()):
     """``expr`` with w = alpha - u - v compiled over (u, v, alpha, *extra) with the pair parameters."""
     import sympy as sp
 
-    from paper_repro.claims.lines.sec4_tex import ALPHA
-
     u, v, w = sp.symbols("u v w")
     return compile_ep(expr.subs(w, ALPHA - u - v), (u, v, ALPHA, *extra), _pair_params())
 
 
 def phase_steps(kind: str, n_max: int = 2) -> list[bool]:
     """Each '=' step of the printed chain, exactly at every related pair of E_n, n <= n_max (both signs)."""
-    from paper_repro.claims.lines.sec4_tex import TexError
 
     parts = phase_chain(kind)
     if len(parts) < 2:
-        raise TexError(f"a chain of {len(parts)} parts")
+        raise LatexMathError(f"a chain of {len(parts)} parts")
     fs = [_compile_on_omega(x) for x in parts]
     ok = [True] * (len(parts) - 1)
     for n in range(1, n_max + 1):
@@ -447,12 +506,10 @@ def phase_last(kind: str, n_max: int = 2) -> tuple[bool, bool]:
     part of the chain, at every related pair of E_n, n <= n_max."""
     import sympy as sp
 
-    from paper_repro.claims.lines.sec4_tex import ALPHA, TexError, chain
-
     prev = phase_chain(kind)[-1]
     last = chain(verbatim(PHASE_LAST[kind]))
     if len(last) != 1:
-        raise TexError(f"the last step has {len(last)} parts")
+        raise LatexMathError(f"the last step has {len(last)} parts")
     a = sp.Symbol("a")
     f_prev, f_last = _compile_on_omega(prev, (a,)), _compile_on_omega(last[0], (a,))
     f_corr = _compile_on_omega(last[0].subs(a, ALPHA), (a,))
@@ -473,12 +530,10 @@ def phase_meaning() -> dict[str, bool]:
     of E_n, n <= 2."""
     import sympy as sp
 
-    from paper_repro.claims.lines.sec4_tex import ALPHA, TexError, parse
-
     tex = verbatim("sec4_5-phase-meaning")
     pieces = [parse(x) for x in re.findall(r"\$([^$]*)\$", tex)]
     if len(pieces) != 4 or not all(isinstance(x, (sp.sin, sp.cos)) for x in pieces):
-        raise TexError(f"{len(pieces)} functions, not 4")
+        raise LatexMathError(f"{len(pieces)} functions, not 4")
     f0, f1, f2, f3 = pieces
     words = {"phase": "phase change" in tex, "combination": "linear combination" in tex and "differs" in tex}
     same_arg = f1.args[0] == f2.args[0] == f3.args[0] and {type(f2), type(f3)} == {sp.sin, sp.cos}
@@ -496,14 +551,13 @@ def phase_meaning() -> dict[str, bool]:
 def _register_phase(kind: str, steps_how: str, za_how: str) -> None:
     """Register the two checks of the phase identity for ``kind`` ("cos" or "sin"): its steps, and its last step
     with the printed 'za' (sec4_5-phase-<kind> and sec4_5-phase-<kind>-za)."""
-    from paper_repro.claims.lines.sec4_tex import TexError
 
     @line_check(f"sec4_5-phase-{kind}")
     def check_steps() -> LineResult:
         try:
             steps = phase_steps(kind)
             meaning = phase_meaning() if kind == "cos" else {}
-        except TexError as exc:
+        except LatexMathError as exc:
             return LineResult(False, how="the chain read from the transcriptions", kind="exhaustive",
                               detail={"unread": str(exc)}) if False else LineResult(
                 False, how="the chain read from the transcriptions, n <= 2", kind="exhaustive",
@@ -515,7 +569,7 @@ def _register_phase(kind: str, steps_how: str, za_how: str) -> None:
     def check_za() -> LineResult:
         try:
             printed, corrected = phase_last(kind)
-        except TexError as exc:
+        except LatexMathError as exc:
             return LineResult(False, how="the last step read from the transcription, n <= 2", kind="exhaustive",
                               detail={"unread": str(exc)})
         return LineResult(printed, corrected, how=za_how, kind="exhaustive",
@@ -582,7 +636,6 @@ def _texts(ids, override=None) -> dict[str, str]:
 def check_examples_n3() -> LineResult:
     """Every link of the worked examples (read from their transcriptions: combinations, ~ and the negated relation)
     against phase equivalence; every combination in E_3 (the text's n = 3: coefficients 0..3)."""
-    from paper_repro.claims.lines.sec4_tex import TexError, parse
 
     how = "phase equivalence of the printed pairs (read from the transcriptions), every combination in E_3 (n = 3)"
     try:
@@ -593,7 +646,7 @@ def check_examples_n3() -> LineResult:
             triples = [linear_triple(parse(x)) for x in parts[0::2]]
             in_e3 = all(0 <= c <= 3 for t in triples for c in t)
             got.append(in_e3 and len(parts) >= 3 and relation_chain_holds(tex))
-    except (TexError, TypeError) as exc:
+    except (LatexMathError, TypeError) as exc:
         return LineResult(False, how=how, kind="proof", detail={"unread": str(exc)})
     return LineResult(all(got), how=how, kind="proof", detail={"lines_hold": got})
 
@@ -620,24 +673,23 @@ def split_relations(math: str) -> list[str]:
 def read_set_of_classes(item: str, env: dict | None = None) -> set:
     """``E_{a}^{\\alpha}/_{\\sim}`` or ``E_{a}/_{\\sim}\\setminus\\left( E_{b}/_{\\sim}\\cup ..\\right)``: the class
     keys of E_a not in the removed E_b (indices evaluated with ``env``)."""
-    from paper_repro.claims.lines.sec4_tex import TexError, parse
 
     text = item.replace("%", " ")
     head, _, removed = text.partition("\\setminus")
     idx = re.findall(r"E_\{([^{}]+)\}\^\{\\alpha\s*\}\s*/_\{\\sim,?\}", head)
     if len(idx) != 1 or re.sub(r"E_\{[^{}]+\}\^\{\\alpha\s*\}\s*/_\{\\sim,?\}", "", head).strip():
-        raise TexError(f"not a quotient set: {item[:40]!r}")
+        raise LatexMathError(f"not a quotient set: {item[:40]!r}")
     pat = r"E_\{([^{}]+)\}\^\{\\alpha\s*\}\s*/_\{\\sim,?\}"
     gone = re.findall(pat, removed)
     rest = re.sub(pat, "", removed)
     rest = re.sub(r"^\s*\\left\(|\\right\)\s*$", "", rest.strip()) if len(gone) > 1 else rest
     if re.sub(r"\\cup|\s", "", rest) or (removed.strip() and not gone):
-        raise TexError(f"unread removed sets {removed[:40]!r}")
+        raise LatexMathError(f"unread removed sets {removed[:40]!r}")
 
     def val(x: str) -> int:
         e = parse(x).subs({k: v for k, v in (env or {}).items()})
         if not e.is_Integer:
-            raise TexError(f"index {x!r} is not an integer")
+            raise LatexMathError(f"index {x!r} is not an integer")
         return int(e)
 
     out = classes_of(val(idx[0]))
@@ -648,7 +700,6 @@ def read_set_of_classes(item: str, env: dict | None = None) -> set:
 
 def read_item(item: str, env: dict | None = None):
     """One member of a printed relation chain: ``("class", key)``, ``("set", keys)`` or ``("triple", t)``."""
-    from paper_repro.claims.lines.sec4_tex import parse
 
     text = item.strip().replace("%", " ").strip()
     m = re.fullmatch(r"\\left\[\s*(.*?)\s*\\right\]", text)
@@ -663,31 +714,30 @@ def relation_chain_holds(math: str, env: dict | None = None) -> bool:
     """Every link of a printed chain such as ``1\\cdot u+1\\cdot v+1\\cdot w\\sim0\\cdot u+..\\in\\left[ 0\\right]
     \\in E_{0}^{\\alpha}/_{\\sim}`` against the class keys (``~``: same class; ``\\in`` a class: same class; ``=``
     of classes: same key; ``\\in`` a set: member); a link the reader does not know raises."""
-    from paper_repro.claims.lines.sec4_tex import TexError
 
     parts = split_relations(math)
     items = [read_item(x, env) for x in parts[0::2]]
     rels = parts[1::2]
     if not rels:
-        raise TexError(f"no relation in {math[:40]!r}")
+        raise LatexMathError(f"no relation in {math[:40]!r}")
     ok = True
     for (ka, a), rel, (kb, b) in zip(items, rels, items[1:]):
         ka_key = class_key(a) if ka == "triple" else a
         if kb == "set":
             if ka == "set":
-                raise TexError("a set related to a set")
+                raise LatexMathError("a set related to a set")
             ok &= (ka_key in b) == (rel == "\\in")
             if rel not in ("\\in", "\\notin"):
-                raise TexError(f"{rel} before a set")
+                raise LatexMathError(f"{rel} before a set")
         elif rel in ("\\sim", "\\nsim", "=", "\\in"):
             kb_key = class_key(b) if kb == "triple" else b
             if rel == "\\in" and kb != "class":
-                raise TexError("\\in before a combination")
+                raise LatexMathError("\\in before a combination")
             if rel == "=" and (ka, kb) != ("class", "class"):
-                raise TexError("= between combinations")
+                raise LatexMathError("= between combinations")
             ok &= (ka_key == kb_key) == (rel != "\\nsim")
         else:
-            raise TexError(f"unknown link {rel}")
+            raise LatexMathError(f"unknown link {rel}")
     return ok
 
 
@@ -699,12 +749,11 @@ def read_order_classes(tex: str) -> dict[str, bool]:
     """``\\left[ ru+gv+bw\\right] \\in E_{a}/_{\\sim}\\setminus .., where at least one of the coefficients r,g,b is
     equal to $c$``: every new class of the printed difference of quotient sets is met, in E_a, only by triples with a
     coefficient c (the new classes of order a are those of the triples with a coefficient a)."""
-    from paper_repro.claims.lines.sec4_tex import TexError
 
     m = re.search(r"\\left\[\s*ru\+gv\+bw\\right\]\s*\\in(.*?),\s*\\\]\s*where at least one of the coefficients "
                   r"\$r,g,b\$ is equal to \$(\d+)\$\.", tex)
     if not m:
-        raise TexError("no 'classes in E_a/~ \\ .. where at least one of r,g,b is equal to c'")
+        raise LatexMathError("no 'classes in E_a/~ \\ .. where at least one of r,g,b is equal to c'")
     new = read_set_of_classes(m.group(1))
     order = int(re.search(r"E_\{(\d+)\}", m.group(1)).group(1))
     c = int(m.group(2))
@@ -716,11 +765,10 @@ def read_order_classes(tex: str) -> dict[str, bool]:
 def read_if_then(tex: str) -> tuple[list[dict], list[str]]:
     """``If $r=a$ and $g\\in\\left\\{ ..\\right\\} $, then $..$``: the environments the condition allows and the
     math of the conclusion."""
-    from paper_repro.claims.lines.sec4_tex import TexError, chain, parse
 
     m = re.match(r"\s*If (.*?), then (.*)$", tex)
     if not m:
-        raise TexError("no 'If .., then ..'")
+        raise LatexMathError("no 'If .., then ..'")
     envs: list[dict] = [{}]
     for cond in _math(m.group(1)):
         for piece in [x for x in re.split(r",(?![^{}]*\\right\\\})", cond) if x.strip()]:
@@ -731,7 +779,7 @@ def read_if_then(tex: str) -> tuple[list[dict], list[str]]:
                 continue
             parts = chain(piece)
             if len(parts) < 2 or not parts[-1].is_Integer or not all(p.is_Symbol for p in parts[:-1]):
-                raise TexError(f"unread condition {piece!r}")
+                raise LatexMathError(f"unread condition {piece!r}")
             envs = [{**e, **{str(p): int(parts[-1]) for p in parts[:-1]}} for e in envs]
     return envs, _math(m.group(2))
 
@@ -740,8 +788,6 @@ def _orders_1_2() -> dict[str, bool]:
     """The worked text of orders 1 and 2, every statement read from its transcription and checked with the class keys
     of phase equivalence."""
     import sympy as sp
-
-    from paper_repro.claims.lines.sec4_tex import TexError, chain, parse
 
     k = class_key
     t = live_texts()
@@ -756,13 +802,13 @@ def _orders_1_2() -> dict[str, bool]:
     envs, concl = read_if_then(t["sec4_5-n2-222"])
     first = re.match(r"\s*\\left\[\s*(.*?)\s*\\right\]", concl[0]) if len(concl) == 1 else None
     if not first:
-        raise TexError("sec4_5-n2-222: no class")
+        raise LatexMathError("sec4_5-n2-222: no class")
     out["222"] = len(envs) == 1 and relation_chain_holds(concl[0]) and linear_triple(parse(first.group(1))) == (
         envs[0].get("r"), envs[0].get("g"), 2)
     # 0 < r <= g <= 2, i.e. r = 1, g in {1, 2}; z = min{r, g} = 1
     pieces = _math(t["sec4_5-n2-r1"])
     if len(pieces) != 3:
-        raise TexError("sec4_5-n2-r1: not three formulas")
+        raise LatexMathError("sec4_5-n2-r1: not three formulas")
     ineq = re.split(r"(<|\\leq)", pieces[0].replace(" ", ""))
     terms = [parse(x) for x in ineq[0::2]]
     rs, gs = sp.symbols("r g")
@@ -782,7 +828,6 @@ def _orders_1_2() -> dict[str, bool]:
     # the chain ru+gv+2w = ... (u + v + w = alpha), for the stated (r, g) and z
     ch = chain(t["sec4_5-n2-chain"])
     u, v, w = sp.symbols("u v w")
-    from paper_repro.claims.lines.sec4_tex import ALPHA
 
     ok_chain = len(ch) == 4
     for r, g in stated:
@@ -796,13 +841,13 @@ def _orders_1_2() -> dict[str, bool]:
     rows = rows.split("\\end{array}")[0]
     mh = re.fullmatch(r"\s*(.*?)\\in\s*\\left\[\s*(.*?)\s*\\right\]\s*=\s*\\left\\\{\s*", head)
     if not mh:
-        raise TexError("sec4_5-n2-g12: unread head")
+        raise LatexMathError("sec4_5-n2-g12: unread head")
     ok_g12, seen = True, set()
     for row in [x for x in rows.split("\\\\") if x.strip()]:
         stmt, _, cond = row.partition("&")
         mc = re.fullmatch(r"\s*g=(\d+)[.,]?\s*", cond)
         if not mc:
-            raise TexError(f"sec4_5-n2-g12: unread row condition {cond!r}")
+            raise LatexMathError(f"sec4_5-n2-g12: unread row condition {cond!r}")
         env = {"g": int(mc.group(1)), "z": zval}
         seen.add(env["g"])
         lhs, cls = linear_triple(parse(mh.group(1)), env), linear_triple(parse(mh.group(2)), env)
@@ -821,7 +866,7 @@ def _orders_1_2() -> dict[str, bool]:
     # [2v+2w] reappears as [2u], new at order 2
     pieces = _math(t["sec4_5-n2-2v2w"])
     if len(pieces) != 2:
-        raise TexError("sec4_5-n2-2v2w: not two formulas")
+        raise LatexMathError("sec4_5-n2-2v2w: not two formulas")
     a_cls = read_item(pieces[0])
     b_cls = read_item(split_relations(pieces[1])[0])
     out["2v2w_is_2u"] = a_cls[0] == b_cls[0] == "class" and a_cls[1] == b_cls[1] and relation_chain_holds(
@@ -843,14 +888,13 @@ def _orders_1_2() -> dict[str, bool]:
 
 @line_check("sec4_5-orders-1-2")
 def check_orders_1_2() -> LineResult:
-    from paper_repro.claims.lines.sec4_tex import TexError
 
     how = ("every statement of the worked text of orders 1 and 2 read from its transcription (relations, classes, "
            "quotient sets, conditions, the chain, V_1, the six classes, V_2) against the class keys of phase "
            "equivalence")
     try:
         out = _orders_1_2()
-    except (TexError, TypeError, KeyError) as exc:
+    except (LatexMathError, TypeError, KeyError) as exc:
         return LineResult(False, how=how, kind="proof", detail={"unread": str(exc)})
     return LineResult(all(out.values()), how=how, kind="proof", detail=out)
 
@@ -895,8 +939,6 @@ def check_b2() -> LineResult:
 def read_prop_families(tex: str, n: int) -> list[tuple[int, int, int]]:
     """The representatives of the printed families ``\\left\\{ \\left[ .. \\right] \\right\\} _{g=0}^{n-1}`` of
     Proposition iterative_construction_of_trivariate_extension at order n, read from the transcription."""
-    from paper_repro.claims.lines.sec4_tex import parse
-    from paper_repro.printed.lines.read import bound
 
     fams = re.findall(r"\\left\\\{\s*\\left\[\s*(.*?)\s*\\right\]\s*\\right\\\}"
                       r"\s*_\{(\w)=([^{}]+)\}\^\{([^{}]+)\}", tex)
@@ -933,7 +975,6 @@ def read_prop() -> tuple[int, str]:
 def prop_sets_agree(n_max: int, lowest: int, top: str) -> dict[int, bool]:
     """E_n/~ minus the union over i = lowest..top(n) against the printed representatives (read): distinct classes,
     exactly the new ones."""
-    from paper_repro.printed.lines.read import bound
 
     tex = verbatim("sec4_5-prop-new-classes")
     out = {}
@@ -1067,23 +1108,21 @@ def read_E_n() -> tuple[list, callable]:
     -> (the coefficient letters in the order of u, v, w, n -> the set of triples)."""
     import sympy as sp
 
-    from paper_repro.claims.lines.sec4_tex import TexError, parse
-
     tex = verbatim("sec4_5-E-n").replace("%", " ")
     m = re.fullmatch(r"\s*E_\{n\}\^\{\\alpha\}=\\left\\\{\s*(.*?):\s*(\w),(\w),(\w)\\in\s*\\mathbb\{N\}\s*,~(.*?)"
                      r"\\leq\s*(\w),(\w),(\w)\\leq\s*(.*?)\\right\\\}\s*\.?\s*", tex)
     if not m:
-        raise TexError("unread E_n")
+        raise LatexMathError("unread E_n")
     combo, *rest = m.groups()
     names, lo, names2, hi = rest[:3], rest[3], rest[4:7], rest[7]
     if names != names2 or len(set(names)) != 3:
-        raise TexError("the letters of the set and of the bounds differ")
+        raise LatexMathError("the letters of the set and of the bounds differ")
     u, v, w = sp.symbols("u v w")
     poly = sp.Poly(parse(combo), u, v, w)
     letters = [poly.coeff_monomial(x) for x in (u, v, w)]
     if [str(x) for x in letters] != [str(x) for x in sorted(letters, key=lambda s: names.index(str(s)))] or \
             {str(x) for x in letters} != set(names) or poly.coeff_monomial(1) != 0:
-        raise TexError("the combination does not use the three letters once each")
+        raise LatexMathError("the combination does not use the three letters once each")
     lo_e, hi_e = parse(lo), parse(hi)
 
     def members(n: int) -> list:
@@ -1095,8 +1134,6 @@ def read_E_n() -> tuple[list, callable]:
 
 def _dimension_items() -> dict[str, bool]:
     import sympy as sp
-
-    from paper_repro.claims.lines.sec4_tex import chain, parse
 
     out: dict[str, bool] = {}
     # E_n and its classes: 1 + 2 (#classes - 1) = delta_n, the classes give independent cos/sin (rank)
@@ -1157,7 +1194,6 @@ _SPAN = re.compile(r"\\operatorname\{span\}%?\s*([TV])_\{([^{}]+)\}\^\{\\alpha\}
 def read_spans(tex: str, n: int) -> list[tuple[str, int]]:
     """The spaces ``\\mathcal{T}_{2n}``, ``\\operatorname{span}T_{2n}``, ``\\operatorname{span}V_{n}``,
     ``\\mathcal{V}_{n}`` of a printed chain, in order, their indices at order n."""
-    from paper_repro.claims.lines.sec4_tex import parse
 
     out = []
     for m in _SPAN.finditer(tex.replace("%", " ").replace("% ", " ")):
@@ -1168,8 +1204,6 @@ def read_spans(tex: str, n: int) -> list[tuple[str, int]]:
 
 def _coincidence_items() -> dict[str, bool]:
     import sympy as sp
-
-    from paper_repro.claims.lines.sec4_tex import chain
 
     out: dict[str, bool] = {}
     for lid in ("sec4_5-theorem", "sec4_5-conclusion"):
@@ -1231,21 +1265,19 @@ def check_coincidence_rank() -> LineResult:
 # -- proof of the coincidence theorem -----------------------------------------------------------------------------
 def half_angle_exponents(expr) -> tuple[int, ...]:
     """The exponents (sin u/2, cos u/2, sin v/2, cos v/2, sin w/2, cos w/2) of a printed product of half-angle
-    powers (``TexError`` for anything else)."""
+    powers (``LatexMathError`` for anything else)."""
     import sympy as sp
-
-    from paper_repro.claims.lines.sec4_tex import TexError
 
     out = [sp.Integer(0)] * 6
     for f in sp.Mul.make_args(expr):
         base, p = (f.base, f.exp) if f.is_Pow else (f, sp.Integer(1))
         if not isinstance(base, (sp.sin, sp.cos)) or p.has(sp.sin, sp.cos) or not p.free_symbols <= set(
                 sp.symbols("n i j")):
-            raise TexError(f"{f} is not a power of a half-angle function")
+            raise LatexMathError(f"{f} is not a power of a half-angle function")
         arg = base.args[0]
         var = [k for k, x in enumerate(sp.symbols("u v w")) if arg == x / 2]
         if len(var) != 1:
-            raise TexError(f"argument {arg} is not u/2, v/2 or w/2")
+            raise LatexMathError(f"argument {arg} is not u/2, v/2 or w/2")
         out[2 * var[0] + (1 if isinstance(base, sp.cos) else 0)] += p
     return tuple(out)
 
@@ -1253,7 +1285,6 @@ def half_angle_exponents(expr) -> tuple[int, ...]:
 def read_proof_r() -> tuple:
     """The ranges j = a..b, i = c..d (read from both lines that print them: they must agree), the printed indices of
     R_{2n,2n-i,j} and its printed product of half-angle powers."""
-    from paper_repro.claims.lines.sec4_tex import TexError, chain, parse
     from paper_repro.printed.lines.read import listed_range
 
     rng = set()
@@ -1261,21 +1292,21 @@ def read_proof_r() -> tuple:
         tex = verbatim(lid)
         m = re.search(r"(?:for all |^)indices \$j=(.*?)\$ and \$i=(.*?)\$", tex)
         if lid == "sec4_5-proof-symmetry-reduction" and "it is sufficient to show that for all indices" not in tex:
-            raise TexError(f"{lid}: not 'sufficient to show that for all indices'")
+            raise LatexMathError(f"{lid}: not 'sufficient to show that for all indices'")
         if not m:
-            raise TexError(f"{lid}: no ranges of j and i")
+            raise LatexMathError(f"{lid}: no ranges of j and i")
         rng.add((listed_range("j=" + m.group(1), "j"), listed_range("i=" + m.group(2), "i"),
                  re.sub(r"\s", "", m.group(1)), re.sub(r"\s", "", m.group(2))))
     if len(rng) != 1:
-        raise TexError("the two lines print different ranges")
+        raise LatexMathError("the two lines print different ranges")
     (jr, ir, jtxt, itxt) = rng.pop()
     tex = verbatim("sec4_5-proof-R").replace("%", " ")
     m = re.search(r"the function \$R_\{2n,([^{}]+),([^{}]+)\}\s*\^\{\\alpha\}\\left\(\s*u,v,w\\right\)\s*=(.*)$", tex)
     if not m:
-        raise TexError("no R_{2n,..}(u,v,w) = ..")
+        raise LatexMathError("no R_{2n,..}(u,v,w) = ..")
     parts = chain(m.group(3))
     if len(parts) != 1:
-        raise TexError("the formula is not one product")
+        raise LatexMathError("the formula is not one product")
     second = {"j": re.match(r"j=[^,]+,([^,]+),", jtxt), "i": re.match(r"i=[^,]+,([^,]+),", itxt)}
     return jr, ir, second, parse(m.group(1)), parse(m.group(2)), parts[0]
 
@@ -1283,8 +1314,6 @@ def read_proof_r() -> tuple:
 def _proof_reduction() -> dict[str, bool]:
     import sympy as sp
 
-    from paper_repro.claims.lines.sec4_tex import parse
-    from paper_repro.printed.lines.read import bound
 
     jr, ir, second, first_idx, level_idx, formula = read_proof_r()
     ns, is_, js = sp.symbols("n i j")
@@ -1331,14 +1360,13 @@ def _proof_reduction() -> dict[str, bool]:
 
 @line_check("sec4_5-proof-reduction")
 def check_proof_reduction() -> LineResult:
-    from paper_repro.claims.lines.sec4_tex import TexError
 
     how = ("the ranges of j and i (read from both lines), the printed indices and product of R_{2n,2n-i,j} (read) "
            "against the exponents of R_system (core.labels.r_exponents); every function of T_{2n} is a permutation "
            "of the variables of one printed R (n <= 6)")
     try:
         out = _proof_reduction()
-    except (TexError, ValueError, TypeError) as exc:
+    except (LatexMathError, ValueError, TypeError) as exc:
         return LineResult(False, how=how, kind="exhaustive", detail={"unread": str(exc)})
     return LineResult(all(out.values()), how=how, kind="exhaustive", detail=out)
 
@@ -1350,19 +1378,18 @@ POWER_LINES = {"cos": ("sec4_5-cos-power-odd", "sec4_5-cos-power-even"),
 
 def read_power_reduction(which: str) -> tuple:
     """The printed left side and the two cases ``(right side, parity)`` of the power reduction of ``which``."""
-    from paper_repro.claims.lines.sec4_tex import TexError, parse
 
     odd, even = (verbatim(x).replace("%", " ") for x in POWER_LINES[which])
     m = re.fullmatch(r"\s*(.*?)&\s*=\\left\\\{\s*\\begin\{array\}\s*\[c\]\{rl\}\s*(.*)$", odd)
     if not m:
-        raise TexError(f"{which}: no left side")
+        raise LatexMathError(f"{which}: no left side")
     lhs = parse(m.group(1))
     cases = []
     for body in (m.group(2), even):
         mc = re.fullmatch(r"\s*(.*?),\s*&\s*m\\equiv(\d)\\left\(\s*\\operatorname\{mod\}\s*2\\right\)\s*,(?:\\\\)?\s*",
                           body)
         if not mc:
-            raise TexError(f"{which}: unread case {body[-40:]!r}")
+            raise LatexMathError(f"{which}: unread case {body[-40:]!r}")
         cases.append((parse(mc.group(1)), int(mc.group(2))))
     return lhs, cases
 
@@ -1386,7 +1413,6 @@ def power_reduction_holds(which: str, m_max: int = 16) -> dict[str, bool]:
 
 @line_check("sec4_5-power-reduction")
 def check_power_reduction() -> LineResult:
-    from paper_repro.claims.lines.sec4_tex import TexError
 
     how = ("both printed cases of each identity (left side, right side, sums with their bounds and parity, read from "
            "the transcriptions) expanded exactly in t at every m = 0..16 of the case's parity; m in N, t in R read")
@@ -1396,7 +1422,7 @@ def check_power_reduction() -> LineResult:
         out["ranges_m_in_N_t_in_R"] = re.fullmatch(r"\s*\(\$m\\in\s*\\mathbb\{N\}\s*\$,\s*"
                                                    r"\$t\\in\s*\\mathbb\{R\}\s*\$\)"
                                                    r"\s*", rng) is not None
-    except (TexError, TypeError, ValueError) as exc:
+    except (LatexMathError, TypeError, ValueError) as exc:
         return LineResult(False, how=how, kind="exhaustive", detail={"unread": str(exc)})
     return LineResult(all(out.values()), how=how, kind="exhaustive", detail=out)
 
@@ -1434,18 +1460,17 @@ def listed_values(items: list, env: dict) -> list[int]:
 def read_k_sets(line_id: str) -> tuple[str, list]:
     """``(case, [four listed sets])`` of a printed ``K_{a,b} & =\\left\\{ 0,1,\\ldots,\\frac{..}{..}\\right\\}
     \\times ..``: each set as its parsed items."""
-    from paper_repro.claims.lines.sec4_tex import TexError, parse
 
     tex = verbatim(line_id).replace("%", " ")
     m = re.fullmatch(r"\s*K_\{(\d),(\d)\}\s*&\s*=(.*?)[,.]?(?:\\\\)?\s*", tex)
     if not m:
-        raise TexError(f"{line_id}: not K_{{a,b}} = ..")
+        raise LatexMathError(f"{line_id}: not K_{{a,b}} = ..")
     factors = [x.strip() for x in m.group(3).split("\\times")]
     sets = []
     for f in factors:
         mf = re.fullmatch(r"\\left\\\{(.*)\\right\\\}", f)
         if not mf:
-            raise TexError(f"{line_id}: unread factor {f[:30]!r}")
+            raise LatexMathError(f"{line_id}: unread factor {f[:30]!r}")
         sets.append([None if x.strip() == "\\ldots" else parse(x) for x in mf.group(1).split(",")])
     return f"{m.group(1)},{m.group(2)}", sets
 
@@ -1486,7 +1511,6 @@ def k_sets_agree(line_id: str, n_max: int = 6, fix_third: bool = False) -> bool:
 
 
 def k_case_check(case: str) -> LineResult:
-    from paper_repro.claims.lines.sec4_tex import TexError
 
     line_id = K_LINES[case]
     how = ("the four listed sets of K_{a,b} (every element read from the transcription; each must be a run of "
@@ -1496,7 +1520,7 @@ def k_case_check(case: str) -> LineResult:
         read_case = read_k_sets(line_id)[0]
         printed = read_case == case and k_sets_agree(line_id)
         corrected = read_case == case and k_sets_agree(line_id, fix_third=True) if case == "1,0" else None
-    except (TexError, ValueError, TypeError) as exc:
+    except (LatexMathError, ValueError, TypeError) as exc:
         return LineResult(False, how=how, kind="exhaustive", detail={"unread": str(exc)})
     return LineResult(printed, corrected if not printed else None, how=how, kind="exhaustive",
                       detail={"case_i_j_mod_2": case, "printed_holds": printed, "corrected_holds": corrected,
@@ -1514,7 +1538,6 @@ _KSYMS = "n i j k1 k2 k3 k4"
 
 def read_product_types() -> dict[tuple[int, int], object]:
     """``{(i mod 2, j mod 2): product}`` of the printed cases of possible_products_inclusion (each read)."""
-    from paper_repro.claims.lines.sec4_tex import TexError, parse
 
     out = {}
     for lid in PRODUCT_LINES:
@@ -1522,10 +1545,10 @@ def read_product_types() -> dict[tuple[int, int], object]:
         m = re.fullmatch(r"\s*i\\equiv(\d)\\left\(\s*\\operatorname\{mod\}2\\right\)\s*\\text\{ and \}j\\equiv(\d)"
                          r"\\left\(\s*\\operatorname\{mod\}2\\right\)\s*,?(?:\\\\)?\s*", cond)
         if not m:
-            raise TexError(f"{lid}: unread condition")
+            raise LatexMathError(f"{lid}: unread condition")
         key = (int(m.group(1)), int(m.group(2)))
         if key in out or max(key) > 1:
-            raise TexError(f"{lid}: case {key} printed twice or not a parity")
+            raise LatexMathError(f"{lid}: case {key} printed twice or not a parity")
         out[key] = parse(body.strip().rstrip(","))
     return out
 
@@ -1566,8 +1589,6 @@ def check_product_types() -> LineResult:
     powers are read."""
     import sympy as sp
 
-    from paper_repro.claims.lines.sec4_tex import TexError, parse
-
     how = ("each printed product (read) over the k's of the factors' expansions spans the exact expansion of "
            "R_{2n,2n-i,j} for every "
            "(i, j) of the printed parity, n <= 3; the four cases are the four parities; the parity line names the "
@@ -1582,14 +1603,14 @@ def check_product_types() -> LineResult:
                          r"that function \$R_\{2n,2n-i,j\}\^\{\\alpha\}\\left\( u,v,w\\right\) \$ can be written as "
                          r"the sum of products of the type%", tex)
         if not m:
-            raise TexError("unread parity line")
+            raise LatexMathError("unread parity line")
         powers = [parse(x) for x in m.groups()]
         ns, is_, js = sp.symbols("n i j")
         out["powers_of_R"] = all(
             sorted(int(p.subs({ns: n, is_: i, js: j})) for p in powers) == sorted(
                 x for k, x in enumerate(r_exponents(n, i, j)) if k in (0, 2, 3, 4))
             for n in range(1, 5) for j in range(n + 1) for i in range(j, n + 1))
-    except (TexError, ValueError, TypeError) as exc:
+    except (LatexMathError, ValueError, TypeError) as exc:
         return LineResult(False, how=how, kind="exhaustive", detail={"unread": str(exc)})
     return LineResult(all(out.values()), how=how, kind="exhaustive", detail=out)
 
@@ -1599,8 +1620,6 @@ def check_product_to_sum() -> LineResult:
     """Each printed identity (both sides read) expanded exactly in the independent variables x, y."""
     import sympy as sp
 
-    from paper_repro.claims.lines.sec4_tex import TexError, chain
-
     how = "both sides of each identity read from the transcriptions, exponential expansion in x, y"
     rows = []
     try:
@@ -1608,7 +1627,7 @@ def check_product_to_sum() -> LineResult:
             parts = chain(verbatim(f"sec4_5-product-to-sum-{k}"))
             xy = sp.symbols("x y")
             rows.append(len(parts) == 2 and to_ep(parts[0], xy) == to_ep(parts[1], xy))
-    except (TexError, ValueError, TypeError) as exc:
+    except (LatexMathError, ValueError, TypeError) as exc:
         return LineResult(False, how=how, kind="proof", detail={"unread": str(exc)})
     return LineResult(all(rows), how=how, kind="proof", detail={"rows": rows})
 
@@ -1634,24 +1653,22 @@ def read_signs() -> dict:
     $r=1,2,3,4$`` (each read; s_r^2 = 1 checked for the listed r)."""
     import sympy as sp
 
-    from paper_repro.claims.lines.sec4_tex import TexError, parse
-
     tex = verbatim("sec4_5-signs")
     m = re.fullmatch(r"where \$s_\{(\d)\}=([-+]?\d+)\$ and \$((?:s_\{\d\},?)+)\\in\\left\\\{(.*?)\\right\\\} "
                      r"\$, i\.e\., "
                      r"\$s_\{r\}\^\{2\}=(\d+)\$, \$(r=.*)\$", tex)
     if not m:
-        raise TexError("unread signs")
+        raise LatexMathError("unread signs")
     vals = {f"s{m.group(1)}": [int(m.group(2))]}
     options = [int(parse(x)) for x in m.group(4).split(",")]
     for x in re.findall(r"s_\{(\d)\}", m.group(3)):
         vals[f"s{x}"] = options
     if not m.group(6).startswith("r=") or "\\ldots" in m.group(6):
-        raise TexError("the indices r are not listed")
+        raise LatexMathError("the indices r are not listed")
     rs = [int(parse(x)) for x in m.group(6)[2:].split(",")]
     if sorted(vals) != [f"s{r}" for r in rs] or not all(
             sp.Integer(x) ** 2 == int(m.group(5)) for r in rs for x in vals[f"s{r}"]):
-        raise TexError("s_r^2 = 1 fails for the listed r, or the listed r are not the signs")
+        raise LatexMathError("s_r^2 = 1 fails for the listed r, or the listed r are not the signs")
     return vals
 
 
@@ -1674,8 +1691,6 @@ def check_eight_terms() -> LineResult:
     number of terms, each +- the form at one choice of signs, and the product over K_{1,1} spans R_{2n,2n-i,j}."""
     import sympy as sp
 
-    from paper_repro.claims.lines.sec4_tex import TexError, parse
-
     how = ("the product and the form read from the transcription, the signs read: for every odd (i, j) and (k1..k4) "
            "in K_{1,1}, n <= 3, the 2^(factors-1) formal terms of the product are, up to sign, exactly the form at "
            "the printed signs (a sine for a sine series); the product spans R_{2n,2n-i,j} (n <= 3)")
@@ -1684,12 +1699,12 @@ def check_eight_terms() -> LineResult:
         m = re.fullmatch(r"each of the (\w+) terms of the expansion of the product\s*\\\[(.*?)\\\]\s*has the form\s*"
                          r"\\\[(.*?),?\s*\\\]\s*", tex)
         if not m or m.group(1) not in NUMBER_WORDS:
-            raise TexError("unread line")
+            raise LatexMathError("unread line")
         count, prod_e, form = NUMBER_WORDS[m.group(1)], parse(m.group(2)), parse(m.group(3).strip().rstrip(","))
         signs = read_signs()
         factors = sp.Mul.make_args(prod_e)
         if not all(isinstance(f, (sp.sin, sp.cos)) for f in factors) or not isinstance(form, (sp.sin, sp.cos)):
-            raise TexError("not a product of sines and cosines, or the form is not one function")
+            raise LatexMathError("not a product of sines and cosines, or the form is not one function")
         uvw = sp.symbols("u v w")
         params = sp.symbols(_KSYMS)
         ep_prod = compile_ep(prod_e, uvw, params)
@@ -1709,7 +1724,7 @@ def check_eight_terms() -> LineResult:
             ep = ep_prod((n, i, j, *k))
             ok_type &= (ep.is_sine_series() if isinstance(form, sp.sin) else ep.is_cosine_series())
         spans = r_in_span_of(prod_e, 3, (1, 1))
-    except (TexError, ValueError, TypeError) as exc:
+    except (LatexMathError, ValueError, TypeError) as exc:
         return LineResult(False, how=how, kind="exhaustive", detail={"unread": str(exc)})
     out = {"count": ok_count, "terms_are_the_form": ok_terms, "function_type": ok_type, "spans_R_odd_odd": spans}
     return LineResult(all(out.values()), how=how, kind="exhaustive", detail=out)
@@ -1725,8 +1740,6 @@ def check_shift_chain() -> LineResult:
     printed signs, n <= 3."""
     import sympy as sp
 
-    from paper_repro.claims.lines.sec4_tex import ALPHA, TexError, chain
-
     how = ("each '=' of the three lines read from the transcriptions, expanded exactly over (u, v, w, alpha) (alpha "
            "free where the step does not use the constraint, alpha = u + v + w for the step that does), every odd "
            "(i, j), (k1..k4) in K_{1,1}, the printed signs, n <= 3")
@@ -1734,7 +1747,7 @@ def check_shift_chain() -> LineResult:
         parts = [chain(verbatim(x)) for x in SHIFT_LINES]
         signs = read_signs()
         if [len(p) for p in parts] != [2, 2, 2]:
-            raise TexError(f"parts per line {[len(p) for p in parts]}")
+            raise LatexMathError(f"parts per line {[len(p) for p in parts]}")
         uvwa = (*sp.symbols("u v w"), ALPHA)
         params = (*sp.symbols(_KSYMS), *sp.symbols("s1 s2 s3 s4"))
         free = [[compile_ep(x, uvwa, params) for x in p] for p in parts]
@@ -1752,7 +1765,7 @@ def check_shift_chain() -> LineResult:
                 pl_ = [f(vals) for f in plane[2]]
                 ok["step3_on_plane"] &= pl_[0] == pl_[1]
                 ok["step3_not_free"] |= ep[2][0] != ep[2][1]  # the last step uses the constraint
-    except (TexError, ValueError, TypeError, KeyError) as exc:
+    except (LatexMathError, ValueError, TypeError, KeyError) as exc:
         return LineResult(False, how=how, kind="exhaustive", detail={"unread": str(exc)})
     return LineResult(all(ok.values()), how=how, kind="exhaustive", detail=ok)
 
@@ -1762,12 +1775,10 @@ def read_class_entries():
     (each marked as a natural number) and the arguments of the printed ``z=\\min\\left\\{ ..\\right\\}``."""
     import sympy as sp
 
-    from paper_repro.claims.lines.sec4_tex import TexError, chain, parse
-
     tex = verbatim("sec4_5-class-N").replace("%", " ")
     m = re.fullmatch(r"\s*\\left\[(.*)\\right\]\s*,?\s*", tex)
     if not m:
-        raise TexError("no class [..]")
+        raise LatexMathError("no class [..]")
     body, items, depth, last = m.group(1), [], 0, 0
     for k, ch in enumerate(body):
         depth += {"{": 1, "}": -1}.get(ch, 0)
@@ -1776,11 +1787,11 @@ def read_class_entries():
             last = k + 1
     items.append(body[last:])
     if not all(re.match(r"\s*\\underset\{\\in\s*\\mathbb\{N\}\s*\}", x) for x in items):
-        raise TexError("an entry is not marked natural")
+        raise LatexMathError("an entry is not marked natural")
     entries = [parse(x) for x in items]
     zparts = chain(verbatim("sec4_5-z-min"))
     if len(zparts) != 2 or zparts[0] != sp.Symbol("z") or not isinstance(zparts[1], sp.Min):
-        raise TexError("z-min is not z = min{..}")
+        raise LatexMathError("z-min is not z = min{..}")
     return entries, zparts[1]
 
 
@@ -1798,8 +1809,6 @@ def check_integer_class() -> LineResult:
     and "the remaining two cases": every case of the minimum."""
     import sympy as sp
 
-    from paper_repro.claims.lines.sec4_tex import TexError
-
     how = ("the printed K_{a,b}, tuple length, minimum and class entries read from the transcriptions against the "
            "coefficients of X - (u+v+w)/2 (A, B, C, D from the powers of R, the signs read), every (i, j) of the "
            "printed parity, n <= 4")
@@ -1809,15 +1818,15 @@ def check_integer_class() -> LineResult:
                          r"the coefficients of variables \$u\$, \$v\$ and \$w\$ are integer numbers and both of the "
                          r"sine and cosine functions belong to the equivalence class%", tex)
         if not m:
-            raise TexError("unread integer line")
+            raise LatexMathError("unread integer line")
         ks = re.findall(r"k_\{(\d)\}", m.group(2))
         parity = (int(m.group(3)), int(m.group(4)))
         if max(parity) > 1:
-            raise TexError(f"K_{parity} is not a parity case")
+            raise LatexMathError(f"K_{parity} is not a parity case")
         other = re.fullmatch(r"The remaining (\w+) cases of \$z\$ can be treated analogously\.",
                              verbatim("sec4_5-other-z-cases"))
         if not other or other.group(1) not in NUMBER_WORDS:
-            raise TexError("unread remaining cases")
+            raise LatexMathError("unread remaining cases")
         entries, zmin = read_class_entries()
         signs = read_signs()
         ok = {"tuple": int(m.group(1)) == len(ks) == 4 and ks == ["1", "2", "3", "4"],
@@ -1843,7 +1852,7 @@ def check_integer_class() -> LineResult:
                             nat = all(x.denominator == 1 and 0 <= x <= n for x in ent)
                             ok_nat &= nat and tuple(x - z for x in truth) == ent
         ok.update({"integer": ok_int, "min_of_the_coefficients": ok_min, "entries_natural_same_class_in_E_n": ok_nat})
-    except (TexError, ValueError, TypeError, KeyError) as exc:
+    except (LatexMathError, ValueError, TypeError, KeyError) as exc:
         return LineResult(False, how=how, kind="exhaustive", detail={"unread": str(exc)})
     return LineResult(all(ok.values()), how=how, kind="exhaustive", detail=ok)
 
@@ -1855,11 +1864,10 @@ _MAX = re.compile(r"\s*&?\s*\\max\\left\\\{(.*?):\\left\(\s*k_\{1\},k_\{2\},k_\{
 
 def read_max(line_id: str) -> tuple:
     """``(expression, {sign: values} quantified, parity of K, printed value)`` of a printed max{..} = value."""
-    from paper_repro.claims.lines.sec4_tex import TexError, parse
 
     m = _MAX.fullmatch(verbatim(line_id).replace("%", " "))
     if not m:
-        raise TexError(f"{line_id}: unread max")
+        raise LatexMathError(f"{line_id}: unread max")
     quant: dict[str, list[int]] = {}
     q = m.group(4)
     for var, val in re.findall(r"s_\{(\d)\}=([-+]?\d+)", q):
@@ -1869,9 +1877,9 @@ def read_max(line_id: str) -> tuple:
             quant[f"s{x}"] = [int(parse(o)) for o in opts.split(",")]
     rest = re.sub(r"s_\{(\d)\}=([-+]?\d+)|((?:s_\{\d\},?)+)\\in\\left\\\{(.*?)\\right\\\}|,|\s", "", q)
     if rest:
-        raise TexError(f"{line_id}: unread quantifier {rest!r}")
+        raise LatexMathError(f"{line_id}: unread quantifier {rest!r}")
     if max(int(m.group(2)), int(m.group(3))) > 1:
-        raise TexError(f"{line_id}: K_{{{m.group(2)},{m.group(3)}}} is not a parity case")
+        raise LatexMathError(f"{line_id}: K_{{{m.group(2)},{m.group(3)}}} is not a parity case")
     return parse(m.group(1)), quant, (int(m.group(2)), int(m.group(3))), parse(m.group(5))
 
 
@@ -1906,7 +1914,6 @@ def max_values(line_id: str, quantify_free: bool, n_max: int = 6) -> bool:
 
 def _chain_le(line_id: str) -> tuple[list, object]:
     """The '=' parts of a printed chain and its final ``\\leq`` bound (None if there is none)."""
-    from paper_repro.claims.lines.sec4_tex import chain, parse
 
     tex = verbatim(line_id)
     head, _, bound_ = tex.partition("\\leq")
@@ -1918,8 +1925,6 @@ def check_max_bounds() -> LineResult:
     """The first max (set, quantifiers and value read) by enumeration; the arithmetic lines (read) equal n and i
     with i <= n (the second max's value: with its sign s4 quantified, see sec4_5-max2-quantifier)."""
     import sympy as sp
-
-    from paper_repro.claims.lines.sec4_tex import TexError
 
     how = ("maxima by enumeration over the printed K (its true k ranges) and the printed signs, every (i, j) of its "
            "parity, n <= 6; the printed values and the chains '= n', '= i <= n' read and evaluated")
@@ -1936,7 +1941,7 @@ def check_max_bounds() -> LineResult:
         out["max2_is_i_le_n"] = b2 is not None and len(p2) == 2 and p2[0] == v2 and p2[1] == is_ and all(
             p2[0].subs({ns: n, is_: i, js: j}) == i <= b2.subs({ns: n, is_: i, js: j}) for n, i, j in cases)
         out["max2_value_with_s4_quantified"] = max_values("sec4_5-max2-set", True)
-    except (TexError, ValueError, TypeError) as exc:
+    except (LatexMathError, ValueError, TypeError) as exc:
         return LineResult(False, how=how, kind="exhaustive", detail={"unread": str(exc)})
     return LineResult(all(out.values()), how=how, kind="exhaustive", detail=out)
 
@@ -1945,14 +1950,13 @@ def check_max_bounds() -> LineResult:
 def check_max2_quantifier() -> LineResult:
     """The second max as printed: its expression has s4, its quantifiers name s1 = 1, s2, s3 (s4 free): the max is
     (i-1)/2 + (i-j)/2 + (j+1)/2 = i for s4 = +1 only; with s4 in {-1, +1} (the correction) it is i."""
-    from paper_repro.claims.lines.sec4_tex import TexError
 
     how = ("the second max read (expression, quantifiers, K, value): by enumeration over K_{1,1} and the quantified "
            "signs, each value of the unquantified s4 separately (printed) and s4 in {-1, +1} (corrected), n <= 6")
     try:
         printed, corrected = max_values("sec4_5-max2-set", False), max_values("sec4_5-max2-set", True)
         expr, quant, _, _ = read_max("sec4_5-max2-set")
-    except (TexError, ValueError, TypeError) as exc:
+    except (LatexMathError, ValueError, TypeError) as exc:
         return LineResult(False, how=how, kind="exhaustive", detail={"unread": str(exc)})
     free = sorted(str(x) for x in expr.free_symbols if re.fullmatch(r"s\d", str(x)) and str(x) not in quant)
     return LineResult(printed, corrected, how=how, kind="exhaustive",
@@ -1976,11 +1980,10 @@ def frequency_classes(n: int) -> set:
 
 def read_union(tex: str) -> tuple:
     """``\\cup_{i=a}^{b}E_{i}^{\\alpha}/_{\\sim}`` of a line: (a, b) parsed."""
-    from paper_repro.claims.lines.sec4_tex import TexError, parse
 
     m = re.findall(r"\\cup_\{i=([^{}]+)\}\^\{([^{}]+)\}E_\{i\}\^\{\\alpha\}/_\{\\sim\}", tex)
     if len(m) != 1:
-        raise TexError("no single union of E_i/~")
+        raise LatexMathError("no single union of E_i/~")
     return parse(m[0][0]), parse(m[0][1])
 
 
@@ -2007,8 +2010,6 @@ def check_in_vn() -> LineResult:
     V_n); corrected (in span V_n): exact ranks of V_n with cos, sin of each triple added, n <= 2."""
     import sympy as sp
 
-    from paper_repro.claims.lines.sec4_tex import TexError
-
     how = ("the union's bounds and V's index read from the transcription; printed: cos/sin of every triple of the "
            "union equal (exact expansion over (u, v, alpha), w = alpha - u - v) to a function of V_n (1 and cos/sin of "
            "one triple per class); corrected: they lie in span V_n (exact ranks at rational points), and the "
@@ -2020,7 +2021,7 @@ def check_in_vn() -> LineResult:
                        r"\\sin\\left\(\s*r_\{2\}u\+g_\{2\}%?\s*v\+b_\{2\}w\\right\)\s*"
                        r"\\in\s*(\\operatorname\{span\}\s*)?V_\{([^{}]+)\}\^\{\\alpha\}\.\s*$", t_in)
         if not mv:
-            raise TexError("unread line")
+            raise LatexMathError("unread line")
         says_span, v_text = bool(mv.group(1)), mv.group(2)
         ns = sp.Symbol("n")
         lo, hi = read_union(t_in)
@@ -2038,7 +2039,7 @@ def check_in_vn() -> LineResult:
                 raise ValueError(f"V_{vi} is not computed")
             base = span_rank((("V", vi),))
             spans &= all(span_rank((("V", vi), ("X", t))) == base for t in triples)
-    except (TexError, ValueError, TypeError, sp.SympifyError) as exc:
+    except (LatexMathError, ValueError, TypeError, sp.SympifyError) as exc:
         return LineResult(False, how=how, kind="exhaustive", detail={"unread": str(exc)})
     printed = spans if says_span else literal and spans
     return LineResult(printed, spans if not printed else None, how=how, kind="exhaustive",
@@ -2054,8 +2055,6 @@ def check_inclusion() -> LineResult:
     ranks (n <= 3)."""
     import sympy as sp
 
-    from paper_repro.claims.lines.sec4_tex import TexError
-
     how = ("exact exponential expansion of every function of T_{2n}: each frequency is m(1,1,1)/2 + an integer triple "
            "whose class lies in the printed union of E_i/~ (bounds read), n = 1..3; the printed inclusion of spans "
            "(indices read) by exact ranks of T and V at rational points, n <= 3")
@@ -2067,12 +2066,12 @@ def check_inclusion() -> LineResult:
                        r"T_\{([^{}]+)\}\^\{\\alpha\}\\subseteq\s*\\operatorname\{span\}\s*V_\{([^{}]+)\}\^\{\\alpha\}"
                        r"\\text\{\.\}\s*\\\]\s*$", t_inc)
         if not mi:
-            raise TexError("unread line")
+            raise LatexMathError("unread line")
         ok = {"inclusion": union_holds(t_inc, mi.group(2))}
         t_idx, v_idx = sp.sympify(mi.group(1).replace("2n", "2*n")), sp.sympify(mi.group(2))
         ok["spans"] = all(span_rank((("T", int(t_idx.subs(ns, n))), ("V", int(v_idx.subs(ns, n))))) == span_rank(
             (("V", int(v_idx.subs(ns, n))),)) for n in (1, 2, 3))
-    except (TexError, ValueError, TypeError, sp.SympifyError) as exc:
+    except (LatexMathError, ValueError, TypeError, sp.SympifyError) as exc:
         return LineResult(False, how=how, kind="exhaustive", detail={"unread": str(exc)})
     return LineResult(all(ok.values()), how=how, kind="exhaustive", detail=ok)
 

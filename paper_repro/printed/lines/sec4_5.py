@@ -1,7 +1,7 @@
 """Sections sec:coincidence and sec:partition_of_unity (source lines 1414-2167), line by line, verbatim.
 
 ``LINES``: every displayed line and inline statement of the part (see :mod:`paper_repro.printed.lines`).  The checks
-(:mod:`paper_repro.claims.lines.sec4_5` for Section 4, through :mod:`paper_repro.claims.lines.sec4_tex`;
+(:mod:`paper_repro.claims.lines.sec4_5` for Section 4, through :mod:`paper_repro.printed.latex_math`;
 :mod:`paper_repro.claims.lines.sec5` for Section 5) read these transcriptions and compare them with independent
 computations; no retyped copy of a formula is kept.  The formulas of Section 5 (Examples
 normalizing_coefficients_n_1..3, Remark normalizing_coeff_of_level_0, Proposition prop:level_1_coefficients) are
