@@ -1,0 +1,155 @@
+"""Tests that kill the mutants of the library code that survived ``tools/mutate_code.py`` (issue 39, item 6).
+
+Each test asserts a value computed independently of the code under test (by hand, by another route, or by a
+definition of the paper) at small n, so the fast suite stays fast.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+# --- core/labels.py --------------------------------------------------------------------------------------------
+
+
+def test_parse_label_reads_every_even_first_index_and_refuses_odd_ones():
+    from paper_repro.core.labels import BasisLabel, parse_label
+
+    # R_{2n, 2n - i, j}: the first index is 2n (the order n), by the paper's naming of the systems
+    for two_n in (2, 4, 6, 8):
+        lab = parse_label(f"R_{{{two_n},{two_n},0}}")  # i = 0, j = 0: the corner function
+        assert lab == BasisLabel("R", two_n // 2, 0, 0)
+    for bad in ("R_{3,3,0}", "R_{5,4,1}", "R_{0,0,0}"):
+        with pytest.raises(ValueError, match="first index must be 2n"):
+            parse_label(bad)
+
+
+def test_names_of_the_normalizing_coefficient_and_control_point():
+    from paper_repro.core.labels import BasisLabel
+
+    lab = BasisLabel("G", 2, 1, 1)  # G_{4,3,1}: its coefficient is g_{4,3,1} (paper, Section 4)
+    assert lab.paper == "G_{4,3,1}" and lab.coefficient == "g_{4,3,1}" and lab.control_point == "g_{4,3,1}"
+    centre = BasisLabel("B", 2, 2, 2)  # the centre is always written R_{2n,n,n}
+    assert centre.coefficient == "r_{4,2,2}"
+
+
+def test_parse_label_refuses_a_non_string():
+    from paper_repro.core.labels import parse_label
+
+    with pytest.raises(TypeError, match="label must be a string"):
+        parse_label(431)
+
+
+def test_exponent_matrix_is_the_united_system_and_read_only():
+    from paper_repro.core.labels import delta, exponent_matrix, exponents, united_system
+
+    e = exponent_matrix(2)
+    assert e.shape == (delta(2), 6) and e.tolist() == [list(exponents(lab)) for lab in united_system(2)]
+    with pytest.raises(ValueError):  # a cached array: a caller must not be able to change it
+        e[0, 0] = 7
+
+
+def test_variable_swap_for_every_pair_of_variables_by_values():
+    from paper_repro.core.labels import exponent_matrix, variable_swap
+
+    def values(n, x):  # f_k(x) = prod over SLOTS (sin u/2, cos u/2, sin v/2, ...) of trig^exponent
+        trig = np.array([f(t / 2) for t in x for f in (np.sin, np.cos)])
+        return np.prod(trig[None, :] ** exponent_matrix(n), axis=1)
+
+    x = np.array([0.3, 0.5, 0.2])
+    for n in (1, 2):
+        for a in range(3):
+            for b in range(3):
+                if a == b:
+                    with pytest.raises(ValueError, match="two different variables"):
+                        variable_swap(n, a, b)
+                    continue
+                y = x.copy()
+                y[[a, b]] = x[[b, a]]
+                pi = variable_swap(n, a, b)
+                assert sorted(pi.tolist()) == list(range(len(pi)))
+                assert np.allclose(values(n, x)[pi], values(n, y), rtol=1e-14, atol=0)
+    for bad in ((0, 3), (-1, 1)):
+        with pytest.raises(ValueError):
+            variable_swap(1, *bad)
+
+
+# --- core/alphas.py --------------------------------------------------------------------------------------------
+
+
+def test_alpha_strings_as_fractions_of_pi_and_numbers():
+    import math
+    from fractions import Fraction
+
+    import mpmath
+
+    from paper_repro.core.alphas import alpha_float, alpha_fraction_of_pi, alpha_mp
+
+    assert alpha_fraction_of_pi("2pi/3") == Fraction(2, 3)
+    assert alpha_fraction_of_pi(" pi / 4 ") == Fraction(1, 4)
+    assert alpha_fraction_of_pi("pi") == Fraction(1, 1)
+    assert alpha_fraction_of_pi("3*pi/5") == Fraction(3, 5)
+    assert alpha_fraction_of_pi("0.7") is None
+    with pytest.raises(ValueError, match="division by zero"):
+        alpha_fraction_of_pi("pi/0")
+    with mpmath.workdps(40):
+        assert alpha_mp("2pi/3") == 2 * mpmath.pi / 3 and alpha_mp("0.7") == mpmath.mpf("0.7")
+    assert alpha_float("pi/2") == math.pi / 2 and alpha_float(1.25) == 1.25
+    for bad in ("pi", "4pi/3", "0", "-0.5", "one"):  # alpha must lie in (0, pi)
+        with pytest.raises(ValueError):
+            alpha_mp(bad)
+
+
+# --- core/ordered.py -------------------------------------------------------------------------------------------
+
+
+def test_ordered_matmul_is_the_exact_product_for_small_integers_and_refuses_other_shapes():
+    from paper_repro.core.ordered import ordered_matmul
+
+    rng = np.random.default_rng(5)
+    a = rng.integers(-9, 10, size=(4, 5)).astype(float)
+    b = rng.integers(-9, 10, size=(5, 3)).astype(float)
+    exact = [[sum(int(a[i, k]) * int(b[k, j]) for k in range(5)) for j in range(3)] for i in range(4)]
+    assert ordered_matmul(a, b).tolist() == exact  # small integers: every float operation is exact
+    assert ordered_matmul(a[:, :1], b[:1]).tolist() == [[a[i, 0] * b[0, j] for j in range(3)] for i in range(4)]
+    for x, y in ((a, b.T), (a[0], b), (a, b[:, 0])):
+        with pytest.raises(ValueError, match="do not chain"):
+            ordered_matmul(x, y)
+
+
+# --- surfaces/limit.py -----------------------------------------------------------------------------------------
+
+
+def test_bezier_order_is_bezier_packages_node_order():
+    from math import comb
+
+    from paper_repro.surfaces.limit import bezier_order
+
+    for N in range(1, 6):
+        order = bezier_order(N)
+        assert len(order) == comb(N + 2, 2) and len(set(order)) == len(order)
+        assert all(min(t) >= 0 and sum(t) == N for t in order)
+        # bezier.Triangle's nodes: j (the power of t) outermost, then i (the power of s) increasing
+        assert order[0] == (N, 0, 0) and order[N] == (0, N, 0) and order[-1] == (0, 0, N)
+        assert order[N + 1] == (N - 1, 0, 1)
+
+
+def test_bezier_triangle_evaluates_the_limit_net_as_a_bernstein_polynomial():
+    pytest.importorskip("bezier")
+    from math import factorial
+
+    from paper_repro.surfaces.limit import bezier_nodes, bezier_triangle
+    from paper_repro.theory.limits import bezier_limit
+
+    n = 2
+    net = np.random.default_rng(11).normal(size=(19, 3))
+    N, bez = bezier_limit(net, n)
+    assert N == 3 * n - 1
+    tri = bezier_triangle(net, n)
+    N2, nodes = bezier_nodes(net, n)
+    assert N2 == N and nodes.shape == (3, (N + 1) * (N + 2) // 2) and nodes.flags.f_contiguous
+    for s, t in ((0.2, 0.3), (0.0, 0.0), (0.6, 0.1), (0.0, 1.0)):
+        x, y, z = 1 - s - t, s, t  # bezier's barycentric weights
+        direct = sum(factorial(N) / (factorial(d) * factorial(e) * factorial(f)) * x**d * y**e * z**f * p
+                     for (d, e, f), p in bez.items())
+        assert np.allclose(tri.evaluate_cartesian(s, t)[:, 0], direct, atol=1e-12)

@@ -34,6 +34,7 @@ from __future__ import annotations
 
 import argparse
 import ast
+import functools
 import hashlib
 import json
 import os
@@ -148,7 +149,7 @@ def _sites(tree: ast.AST) -> list[tuple[str, ast.AST, int]]:
 
 def _apply(source: str, site_index: int) -> tuple[str, str, int, str, str] | None:
     """The source with mutant ``site_index`` applied: (new source, operator, line, the original text of the node,
-    the mutated node's text), or None if it does not compile."""
+    the mutated statement's first line), or None if it does not compile."""
     tree = ast.parse(source)
     sites = _sites(tree)
     op, node, variant = sites[site_index]
@@ -171,23 +172,25 @@ def _apply(source: str, site_index: int) -> tuple[str, str, int, str, str] | Non
                     value[value.index(node)] = node.operand
     elif op == "return":
         node.value = ast.Constant(None)
-        mutated = "return None"
     elif op == "raise":
         for parent in ast.walk(tree):
             for _field, value in ast.iter_fields(parent):
                 if isinstance(value, list) and node in value:
                     value[value.index(node)] = ast.Pass(lineno=node.lineno, col_offset=node.col_offset)
-        mutated = "pass"
-    if op == "bool" and variant == 1:
-        mutated = ast.unparse(node.operand)
-    elif op not in ("return", "raise"):
-        mutated = ast.unparse(node)
+    mutated = "pass" if op == "raise" else ""
     try:
         new = ast.unparse(ast.fix_missing_locations(tree))
         compile(new, "<mutant>", "exec")
     except (SyntaxError, ValueError):
         return None
-    return new, op, line, snippet, mutated
+    changed = [b for a, b in zip(_unparsed(source).splitlines(), new.splitlines()) if a != b]
+    return new, op, line, snippet, (changed[0].strip() if changed else mutated)
+
+
+@functools.cache
+def _unparsed(source: str) -> str:
+    """The module as :func:`ast.unparse` writes it (the mutants' layout), to show the mutated statement."""
+    return ast.unparse(ast.parse(source))
 
 
 def _qualnames(tree: ast.AST) -> dict[int, str]:
@@ -353,7 +356,7 @@ def main(argv: list[str] | None = None) -> int:
                 else:
                     killed, secs = futs[key].result()
                 records.append({"module": module, "line": line, "op": op, "key": key, "snippet": snippet[:100],
-                                "mutated": mutated[:100], "killed": killed, "seconds": round(secs, 1),
+                                "mutated": mutated[:160], "killed": killed, "seconds": round(secs, 1),
                                 "source_sha": sha, "equivalent": EQUIVALENT.get(key)})
                 print(f"{module}:{line} {op}: {'killed' if killed else 'SURVIVED'} ({secs:.0f} s) {key}",
                       flush=True)
