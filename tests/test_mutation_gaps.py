@@ -153,3 +153,72 @@ def test_bezier_triangle_evaluates_the_limit_net_as_a_bernstein_polynomial():
         direct = sum(factorial(N) / (factorial(d) * factorial(e) * factorial(f)) * x**d * y**e * z**f * p
                      for (d, e, f), p in bez.items())
         assert np.allclose(tri.evaluate_cartesian(s, t)[:, 0], direct, atol=1e-12)
+
+
+# --- core/collocation.py ---------------------------------------------------------------------------------------
+
+
+def _line_system(ctx, xs_by_set, last=None):
+    """y = 2x + 1 at the points of set k (the last one a verification row); ``last`` replaces its right-hand side."""
+    def system(k):
+        xs = xs_by_set[k]
+        rhs = [2 * x + 1 for x in xs]
+        if last is not None:
+            rhs[-1] = last
+        return ctx.asarray([[x, 1] for x in xs]), ctx.asarray([[y] for y in rhs])
+    return system
+
+
+def test_collocate_in_float_verifies_to_the_context_tolerance_or_to_rtol():
+    from paper_repro.core.collocation import collocate
+    from paper_repro.core.context import get_context
+
+    ctx = get_context("float")
+    sets = {0: [0.0, 1.0, 5.0]}
+    res = collocate(ctx, _line_system(ctx, sets), m=2)
+    assert np.allclose(res.solution.reshape(-1), [2.0, 1.0], rtol=0, atol=1e-15)
+    assert (res.point_set, res.verified) == (0, 1)
+    # the verification row y(5) = 11: off by 11e-12 (relative 1e-12) passes float's own check (|r| <= |A||x| 10^-9.6),
+    # off by 11e-6 fails it; rtol replaces that tolerance in both directions
+    near, far = 11 * (1 + 1e-12), 11 * (1 + 1e-6)
+    assert collocate(ctx, _line_system(ctx, sets, near), m=2).verified == 1
+    with pytest.raises(ArithmeticError, match=r"fails at the 1 verification point\(s\) of point set 0"):
+        collocate(ctx, _line_system(ctx, sets, far), m=2)
+    assert collocate(ctx, _line_system(ctx, sets, far), m=2, rtol=1e-5).verified == 1  # 11e-6 <= 1e-5 * 11
+    with pytest.raises(ArithmeticError):
+        collocate(ctx, _line_system(ctx, sets, far), m=2, rtol=1e-7)  # 11e-6 > 1e-7 * 11
+    with pytest.raises(ArithmeticError):
+        collocate(ctx, _line_system(ctx, sets, near), m=2, rtol=1e-14)
+    # the scale is |A| |x| (or the right-hand side): a residual of 1e-5 * 11 with rtol 1e-5 x (|A||x| = 11) passes,
+    # one of 2e-5 * 11 does not
+    assert collocate(ctx, _line_system(ctx, sets, 11 * (1 + 0.9e-5)), m=2, rtol=1e-5).verified == 1
+    with pytest.raises(ArithmeticError):
+        collocate(ctx, _line_system(ctx, sets, 11 * (1 + 2e-5)), m=2, rtol=1e-5)
+
+
+def test_collocate_exact_ignores_rtol_and_counts_singular_point_sets():
+    from flint import fmpq
+
+    from paper_repro.core.collocation import collocate, has_equal_rows
+    from paper_repro.core.context import get_context
+
+    ctx = get_context("exact")
+    sets = {0: [0, 1, 5]}
+    with pytest.raises(ArithmeticError, match="verification"):  # exact: any residual, whatever rtol says
+        collocate(ctx, _line_system(ctx, sets, fmpq(11) + fmpq(1, 10**30)), m=2, rtol=1.0)
+    calls = []
+
+    def singular(k):  # two equal collocation rows in every point set
+        calls.append(k)
+        return ctx.asarray([[1, 1], [1, 1], [2, 1]]), ctx.asarray([[1], [1], [3]])
+
+    with pytest.raises(ArithmeticError, match="singular for 3 point sets"):
+        collocate(ctx, singular, m=2, attempts=3)
+    assert calls == [0, 1, 2]
+    fctx = get_context("float")
+    calls.clear()
+    with pytest.raises(ArithmeticError, match="singular for 2 point sets"):  # float: the solve itself says so
+        collocate(fctx, singular, m=2, attempts=2)
+    assert calls == [0, 1]
+    assert has_equal_rows(np.array([[object()], [object()]], dtype=object)) is False  # unhashable: no shortcut
+    assert has_equal_rows(np.array([[1, 2], [3, 4]])) is False
