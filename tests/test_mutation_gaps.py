@@ -220,5 +220,7 @@ def test_collocate_exact_ignores_rtol_and_counts_singular_point_sets():
     with pytest.raises(ArithmeticError, match="singular for 2 point sets"):  # float: the solve itself says so
         collocate(fctx, singular, m=2, attempts=2)
     assert calls == [0, 1]
-    assert has_equal_rows(np.array([[object()], [object()]], dtype=object)) is False  # unhashable: no shortcut
+    unhashable = np.empty((2, 1), dtype=object)
+    unhashable[0, 0], unhashable[1, 0] = [1], [1]  # equal rows, but lists cannot be hashed: no shortcut
+    assert has_equal_rows(unhashable) is False
     assert has_equal_rows(np.array([[1, 2], [3, 4]])) is False
