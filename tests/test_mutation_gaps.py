@@ -215,6 +215,10 @@ def test_collocate_exact_ignores_rtol_and_counts_singular_point_sets():
     with pytest.raises(ArithmeticError, match="singular for 3 point sets"):
         collocate(ctx, singular, m=2, attempts=3)
     assert calls == [0, 1, 2]
+    calls.clear()
+    with pytest.raises(ArithmeticError, match="singular for 5 point sets"):  # the documented default: 5 sets
+        collocate(ctx, singular, m=2)
+    assert calls == [0, 1, 2, 3, 4]
     fctx = get_context("float")
     calls.clear()
     with pytest.raises(ArithmeticError, match="singular for 2 point sets"):  # float: the solve itself says so
