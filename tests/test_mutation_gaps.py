@@ -228,3 +228,22 @@ def test_collocate_exact_ignores_rtol_and_counts_singular_point_sets():
     unhashable[0, 0], unhashable[1, 0] = [1], [1]  # equal rows, but lists cannot be hashed: no shortcut
     assert has_equal_rows(unhashable) is False
     assert has_equal_rows(np.array([[1, 2], [3, 4]])) is False
+
+
+# --- core/basis.py ---------------------------------------------------------------------------------------------
+
+
+def test_monomials_with_every_exponent_zero_are_ones_in_every_arithmetic():
+    from flint import fmpq
+
+    from paper_repro.core.basis import monomials
+    from paper_repro.core.context import get_context
+
+    for arith in ("exact", "float", "mp"):
+        ctx = get_context(arith)
+        trig = [ctx.asarray([fmpq(1, k + 2), fmpq(1, 3)]) for k in range(6)]  # slot k: 1/(k+2) and 1/3 (P = 2)
+        with ctx.scope():
+            out = monomials(np.zeros((3, 6), dtype=np.int64), trig, ctx)  # F = 3 constant functions
+            assert out.shape == (2, 3) and all(float(x) == 1.0 for x in out.reshape(-1))
+            one = monomials(np.array([[1, 0, 0, 2, 0, 0]]), trig, ctx)  # slot 0 times slot 3 squared
+            assert one.shape == (2, 1) and np.allclose([float(x) for x in one[:, 0]], [1 / 50, 1 / 27], rtol=1e-15)

@@ -113,6 +113,9 @@ EQUIVALENT: dict[str, str] = {
     "core/collocation.py:collocate:const0:6b86b273#0":
         "reshape(x.shape[0], -1) -> reshape(x.shape[0], -2): numpy (2.x) takes any negative size as the one inferred "
         "dimension, so the array is the same",
+    "core/basis.py:evaluate:const0:5feceb66#0":
+        "count = 0 -> 1 for points without len(): count only feeds the size check count * delta_n > 2e8, and "
+        "1 * delta_n <= delta_1000 = 3,003,001 for every n that check_n admits (n <= 1000), so it never fires",
 }
 
 _CMP = {ast.Lt: ast.LtE, ast.LtE: ast.Lt, ast.Gt: ast.GtE, ast.GtE: ast.Gt, ast.Eq: ast.NotEq, ast.NotEq: ast.Eq,
