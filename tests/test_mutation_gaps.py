@@ -247,3 +247,77 @@ def test_monomials_with_every_exponent_zero_are_ones_in_every_arithmetic():
             assert out.shape == (2, 3) and all(float(x) == 1.0 for x in out.reshape(-1))
             one = monomials(np.array([[1, 0, 0, 2, 0, 0]]), trig, ctx)  # slot 0 times slot 3 squared
             assert one.shape == (2, 1) and np.allclose([float(x) for x in one[:, 0]], [1 / 50, 1 / 27], rtol=1e-15)
+
+
+# --- surfaces/patch.py -----------------------------------------------------------------------------------------
+
+
+def _points_on(alpha, count, seed=0):
+    rng = np.random.default_rng(seed)
+    bary = rng.dirichlet([1.0, 1.0, 1.0], size=count)
+    return alpha * bary
+
+
+@pytest.mark.parametrize("jit", [True, False], ids=["compiled", "numpy"])
+@pytest.mark.parametrize("rational", [False, True], ids=["polynomial", "rational"])
+def test_patch_float_routes_against_mp(jit, rational, monkeypatch):
+    """Values, derivatives and normals of the float path (compiled kernel or numpy blocks) against the mp route
+    (evaluate_normalized and basis_derivative, the quotient rule written out), on a net far from unit scale."""
+    import paper_repro.surfaces.patch as pm
+
+    if not jit:
+        monkeypatch.setattr(pm, "jit_available", lambda: False)
+    n, alpha = 2, 1.1
+    rng = np.random.default_rng(7)
+    net = rng.normal(size=(19, 3)) * 1e3 + 5e3  # off-centre and large: the power-of-two scalings matter
+    weights = rng.uniform(0.5, 2.0, size=19) * 1e-200 if rational else None
+    p = pm.Patch(n, alpha, net, weights=weights)
+    pts = _points_on(alpha, 4)
+    assert p.dimension == 3
+    ref = np.array(p(pts, arith="mp", dps=30), dtype=float)
+    assert np.allclose(p(pts), ref, rtol=1e-12, atol=1e-12 * 5e3)
+    for d in ("u", "v", "w", (1.0, -3.0, 2.0), (0.0, 0.0, 0.0)):
+        dref = np.array(p.derivative(pts, d, arith="mp", dps=30), dtype=float)
+        assert np.allclose(p.derivative(pts, d), dref, rtol=1e-9, atol=1e-9 * np.abs(dref).max(initial=1.0)), d
+    du = np.array(p.derivative(pts, "u", arith="mp", dps=30), dtype=float)
+    dv = np.array(p.derivative(pts, "v", arith="mp", dps=30), dtype=float)
+    cross = np.cross(du, dv)
+    assert np.allclose(p.normals(pts), cross / np.linalg.norm(cross, axis=1)[:, None], rtol=0, atol=1e-9)
+    # the mp derivative itself against a central difference of mp values along u (v fixed, w = alpha - u - v)
+    h = 1e-12
+    import mpmath
+
+    with mpmath.workdps(40):
+        q = np.array([[mpmath.mpf(float(x)) for x in row] for row in pts[:2]], dtype=object)
+        qp, qm = q.copy(), q.copy()
+        qp[:, 0] += h
+        qp[:, 2] -= h
+        qm[:, 0] -= h
+        qm[:, 2] += h
+        fd = (p(qp, arith="mp", dps=40) - p(qm, arith="mp", dps=40)) / (2 * h)
+        assert np.allclose(np.array(fd, dtype=float), du[:2], rtol=1e-8)
+
+
+def test_patch_boundary_curves_are_the_patch_on_its_edges():
+    from paper_repro.surfaces.patch import Patch
+
+    n, alpha = 2, 1.3
+    net = np.random.default_rng(2).normal(size=(19, 2))
+    p = Patch(n, alpha, net)
+    t = np.array([0.0, 0.4, alpha])
+    on_edge = {"v=0": np.column_stack([t, 0 * t, alpha - t]),  # t is u on v = 0
+               "w=0": np.column_stack([alpha - t, t, 0 * t]),  # t is v on w = 0
+               "u=0": np.column_stack([0 * t, alpha - t, t])}  # t is w on u = 0
+    for edge, pts in on_edge.items():
+        assert p.boundary_net(edge).shape == (2 * n + 1, 2)
+        assert np.allclose(p.boundary_curve(edge, t), p(pts), rtol=0, atol=1e-13), edge
+    with pytest.raises(ValueError, match="edge must be one of"):
+        p.boundary_net("x=0")
+    with pytest.raises(ValueError, match=r"t must lie in \[0, alpha\]"):
+        p.boundary_curve("v=0", [alpha * 1.01])
+    with pytest.raises(ValueError, match="t must be finite"):
+        p.boundary_curve("v=0", [float("nan")])
+    assert repr(p) == "<Patch n=2 alpha=1.3 dim=2>"
+    assert repr(Patch(1, 1.0, np.zeros((7, 3)), weights=np.ones(7))) == "<rational Patch n=1 alpha=1 dim=3>"
+    with pytest.raises(ValueError, match="normals need a 3-D control net"):
+        p.normals([[0.5, 0.4, 0.4]])
