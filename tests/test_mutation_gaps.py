@@ -8,6 +8,10 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from flint import fmpq
+
+from paper_repro.core.domain import rational_alpha
+from paper_repro.core.labels import delta
 
 # --- core/labels.py --------------------------------------------------------------------------------------------
 
@@ -321,3 +325,73 @@ def test_patch_boundary_curves_are_the_patch_on_its_edges():
     assert repr(Patch(1, 1.0, np.zeros((7, 3)), weights=np.ones(7))) == "<rational Patch n=1 alpha=1 dim=3>"
     with pytest.raises(ValueError, match="normals need a 3-D control net"):
         p.normals([[0.5, 0.4, 0.4]])
+
+
+# --- core/elevation.py -----------------------------------------------------------------------------------------
+
+
+def test_precision_schedule_of_the_certified_solve():
+    from paper_repro.core.elevation import certified_solve, next_precision, start_precision
+
+    # documented: a solve that certified nothing doubles the precision; otherwise the bits lost (prec - bits)
+    # plus 64 would just do, and 25 % more are taken, rounded up to whole 64-bit words
+    assert next_precision(256, 0) == 512 and next_precision(128, -3) == 256
+    for prec, bits in ((256, 40), (512, 10), (1024, 60), (192, 63)):
+        nxt = next_precision(prec, bits)
+        assert nxt % 64 == 0 and nxt >= prec - bits + 64 + 0.25 * (prec - bits)
+        assert nxt < 1.25 * (prec - bits) + 96 + 64
+    # the start: whole words, at least 96 bits above what a solve loses at alpha = 1 (<= 16 (n + 1), measured),
+    # growing as alpha -> 0 and near pi
+    for n in (1, 3, 10):
+        s = start_precision(n, 1.0)
+        assert s % 64 == 0 and s >= 16 * (n + 1) + 96
+        assert start_precision(n, 1e-9) > start_precision(n, 1e-3) > s
+        assert start_precision(n, np.pi - 1e-9) > s
+    # one solve is enough at n = 1, alpha = 1 (docstring: "with 96 bits to spare one solve is enough")
+    e, prec, lost, solves = certified_solve(1, 1.0, child=False)
+    assert solves == 1 and prec == start_precision(1, 1.0) and 0 <= lost <= prec - 65
+    assert np.allclose(e.sum(axis=1), 1.0, atol=1e-15) and e.min() >= -1e-18
+
+
+def test_elevation_matrix_at_its_edges():
+    from paper_repro.core.elevation import CACHE_MAX_N, elevation_matrix, elevation_matrix_exact
+    from paper_repro.core.half_angle_matrices import ALPHA_TINY
+
+    with pytest.raises(ValueError):
+        elevation_matrix(1, rational_alpha(fmpq(0)))  # tan(alpha/4) = 0 is alpha = 0
+    # below ALPHA_TINY the float closed form is taken at ALPHA_TINY: E(alpha) = E(0) + O(alpha^2)
+    tiny = elevation_matrix(1, 1e-300)
+    exact_small = elevation_matrix_exact(1, rational_alpha(fmpq(1, 10**40)))
+    assert np.abs(tiny - np.array([[float(x) for x in row] for row in exact_small])).max() < 1e-15
+    assert np.array_equal(tiny, elevation_matrix(1, ALPHA_TINY))
+    # the returned array is the caller's: changing it does not change the next result (cache copy)
+    e = elevation_matrix(2, 0.9)
+    e[:] = 0
+    assert elevation_matrix(2, 0.9).sum() == pytest.approx(delta(3))
+    # beyond the cached orders the same closed form, rows summing to 1
+    big = elevation_matrix(CACHE_MAX_N + 1, 1.0)
+    assert big.shape == (delta(CACHE_MAX_N + 2), delta(CACHE_MAX_N + 1))
+    assert np.abs(big.sum(axis=1) - 1).max() < 1e-13 and big.min() >= 0
+
+
+def test_elevate_to_and_times():
+    from paper_repro.core.elevation import elevate, elevation_matrix
+
+    net = np.random.default_rng(1).normal(size=(delta(1), 2))
+    assert np.array_equal(elevate(net, 1, 1.0, times=0), net) and np.array_equal(elevate(net, 1, 1.0, to=1), net)
+    one = elevation_matrix(1, 1.0) @ net
+    assert np.allclose(elevate(net, 1, 1.0), one, rtol=0, atol=1e-15)
+    two = elevation_matrix(2, 1.0) @ one
+    assert np.allclose(elevate(net, 1, 1.0, to=3), two, rtol=0, atol=1e-14)
+    assert np.array_equal(elevate(net, 1, 1.0, to=3, times=2), elevate(net, 1, 1.0, times=2))
+    with pytest.raises(ValueError, match="give to or times, not both"):
+        elevate(net, 1, 1.0, to=3, times=1)
+    with pytest.raises(ValueError):
+        elevate(net, 1, 1.0, to=0)
+    with pytest.raises(ValueError):
+        elevate(net, 1, 4.0)
+    # the same patch: values of the elevated net in order 3 equal the order-1 values
+    from paper_repro.surfaces.patch import Patch
+
+    pts = _points_on(1.0, 5, seed=3)
+    assert np.allclose(Patch(3, 1.0, two)(pts), Patch(1, 1.0, net)(pts), rtol=0, atol=1e-13)
