@@ -395,3 +395,125 @@ def test_elevate_to_and_times():
 
     pts = _points_on(1.0, 5, seed=3)
     assert np.allclose(Patch(3, 1.0, two)(pts), Patch(1, 1.0, net)(pts), rtol=0, atol=1e-13)
+
+
+# --- core/domain.py --------------------------------------------------------------------------------------------
+
+
+def test_rationals_angles_and_rational_points():
+    import math
+    from fractions import Fraction
+
+    import mpmath
+
+    from paper_repro.core.domain import RationalAngle, RationalPoints, _q
+
+    for x, want in ((fmpq(2, 7), fmpq(2, 7)), (3, fmpq(3)), (Fraction(5, 9), fmpq(5, 9)), ((4, -6), fmpq(-2, 3)),
+                    (" 1/3 ", fmpq(1, 3)), (0.375, fmpq(3, 8)), (np.int64(2), fmpq(2))):
+        assert _q(x) == want
+    with pytest.raises(ValueError, match=r"t = 1/0"):
+        _q((1, 0))
+    with pytest.raises(TypeError, match="tuple of length 3"):
+        _q((1, 2, 3))
+    with pytest.raises(TypeError, match="pair"):
+        _q((1.5, 2))
+    with pytest.raises(TypeError, match="pair"):
+        _q((True, 2))
+    with pytest.raises(ValueError, match="rational like"):
+        _q("1/0")
+    # tan(x/4) = t: sin(x/2) = 2t/(1+t^2), cos(x/2) = (1-t^2)/(1+t^2) (double-angle formulas)
+    a = RationalAngle(fmpq(1, 3))
+    assert a.sin_half == fmpq(3, 5) and a.cos_half == fmpq(4, 5)
+    assert float(a) == pytest.approx(4 * math.atan(1 / 3), rel=1e-15)
+    with mpmath.workdps(50):
+        assert abs(a.mp() - 4 * mpmath.atan(mpmath.mpf(1) / 3)) < mpmath.mpf(10) ** -48
+    assert RationalAngle(0).t == 0  # [0, pi): 0 is an angle (not a shape parameter: rational_alpha refuses it)
+    for bad in (1, fmpq(-1, 5), fmpq(3, 2)):
+        with pytest.raises(ValueError, match="0 <= t < 1"):
+            RationalAngle(bad)
+    with pytest.raises(ValueError, match="open interval"):
+        rational_alpha(0)
+    alpha = rational_alpha(fmpq(1, 2))
+    pts = RationalPoints(alpha, (fmpq(1, 5), fmpq(1, 9)), (fmpq(1, 7), 0))
+    assert len(pts) == 2
+    quarter = pts.quarter_values()
+    assert quarter[0] == [fmpq(5, 13), fmpq(9, 41)] and quarter[3] == [fmpq(24, 25), fmpq(1)]
+    full = pts.half_angle_values()
+    assert full[:4] == quarter
+    for k in range(2):  # sin^2 + cos^2 = 1 for w too, and w = alpha - u - v
+        assert full[4][k] ** 2 + full[5][k] ** 2 == 1
+    uvw = pts.uvw_float()
+    assert uvw.shape == (2, 3) and np.allclose(uvw.sum(axis=1), float(alpha), rtol=1e-15)
+    assert uvw[0, 0] == pytest.approx(4 * math.atan(1 / 5), rel=1e-15) and uvw[1, 1] == 0.0
+    assert np.allclose(np.sin(uvw[:, 2] / 2), [float(x) for x in full[4]], rtol=1e-14)
+    with mpmath.workdps(30):
+        assert np.allclose(np.array(pts.uvw_mp(), dtype=float), uvw, rtol=1e-15)
+    with pytest.raises(ValueError, match="outside Omega"):
+        RationalPoints(alpha, (fmpq(1, 3),), (fmpq(1, 3),))  # u + v > alpha
+    with pytest.raises(ValueError, match="same length"):
+        RationalPoints(alpha, (fmpq(1, 5),), ())
+    with pytest.raises(ValueError, match=r"must lie in \[0, 1\)"):
+        RationalPoints(alpha, (fmpq(1, 1),), (fmpq(0),))
+    with pytest.raises(TypeError, match="must be a RationalAngle"):
+        RationalPoints(1.0, (fmpq(1, 5),), (fmpq(1, 7),))
+    with pytest.raises(TypeError, match="sequence of rationals"):
+        RationalPoints(alpha, "1/5", (fmpq(1, 7),))
+    assert len(RationalPoints(None, (fmpq(7, 8),), (fmpq(7, 8),), check=False)) == 1  # the plane: no check
+
+
+def test_check_points_and_barycentric_edges():
+    from paper_repro.core.domain import barycentric_to_uvw, check_barycentric, check_points
+
+    a = 1.0
+    assert check_points([0.5, 0.25, 0.25], a).shape == (1, 3)  # one point as a flat triple
+    assert check_points([[1.0, 0.0, 0.0]], a).tolist() == [[1.0, 0.0, 0.0]]  # a corner is on the domain
+    with pytest.raises(ValueError, match="point 3 = "):
+        check_points([[0.5, 0.5, 0.1]], a, offset=3)  # offset: the index as the caller counts
+    with pytest.raises(ValueError, match="finite"):
+        check_points([[np.nan, 0.5, 0.5]], a)
+    with pytest.raises(ValueError, match="not on Omega"):
+        check_points([[-0.01, 0.51, 0.5]], a)  # negative coordinate
+    assert check_points([[-1e-14, 0.5, 0.5 + 1e-14]], a).shape == (1, 3)  # within the tolerance
+    assert check_points([[0.5, 0.5, 0.1]], a, tol=0.2).shape == (1, 3)
+    for bad in ("points", {1: 2}, 3.0, None):
+        with pytest.raises(TypeError):
+            check_points(bad, a)
+    assert check_barycentric([0.2, 0.3, 0.5]).shape == (3,)
+    with pytest.raises(ValueError, match="has a negative entry"):
+        check_barycentric([[1.5, -0.5, 0.0]])
+    with pytest.raises(ValueError, match="is not finite"):
+        check_barycentric([[np.inf, 0.0, 0.0]])
+    with pytest.raises(ValueError, match=r"shape \(m, 3\)"):
+        check_barycentric([[0.5, 0.5]])
+    with pytest.raises(TypeError):
+        check_barycentric([["a", "b", "c"]])
+    assert np.allclose(barycentric_to_uvw(2.0, [[0.25, 0.25, 0.5]]), [[0.5, 0.5, 1.0]])
+
+
+def test_sampled_points_lie_inside_and_are_seeded():
+    from paper_repro.core.context import get_context
+    from paper_repro.core.domain import sample_points, sample_rational_points, scaled_half_angle_values
+
+    p = sample_points(2.0, 50, seed=4)
+    assert p.shape == (50, 3) and np.allclose(p.sum(axis=1), 2.0) and p.min() >= 2.0 * 0.02 / 3 * 0.999
+    assert np.array_equal(p, sample_points(2.0, 50, seed=4)) and not np.array_equal(p, sample_points(2.0, 50, seed=5))
+    q = sample_points(2.0, 200, seed=4, interior=False)
+    assert q.min() < 2.0 * 0.02 / 3  # the whole triangle
+    with pytest.raises(TypeError):
+        sample_points(1.0, 3, interior=1)
+    alpha = rational_alpha(fmpq(1, 2))
+    r = sample_rational_points(alpha, 6, seed=1)
+    assert len(r) == 6 and len(set(zip(r.tu, r.tv))) == 6 and all(d.q <= 1000 for d in r.tu + r.tv)
+    assert all(d.q <= 10 for d in sample_rational_points(alpha, 3, seed=1, max_denominator=10).tu)
+    with pytest.raises(TypeError):
+        sample_rational_points(1.0, 3)
+    # the scaled sines: sin(x/2)/sin(alpha/2) in float (alpha >= 1e-8) and x/alpha below
+    ctx = get_context("float")
+    pts = np.array([[0.5, 0.3, 0.2]])
+    vals = scaled_half_angle_values(pts, 1.0, ctx)
+    assert np.allclose([v[0] for v in vals[::2]], np.sin(pts[0] / 2) / np.sin(0.5), rtol=1e-15)
+    assert np.allclose([v[0] for v in vals[1::2]], np.cos(pts[0] / 2), rtol=1e-15)
+    tiny = scaled_half_angle_values(pts * 1e-9, 1e-9, ctx)
+    assert np.allclose([v[0] for v in tiny[::2]], [0.5, 0.3, 0.2], rtol=1e-15)
+    mp_vals = scaled_half_angle_values(pts, 1.0, get_context("mp"))
+    assert np.allclose([float(v[0]) for v in mp_vals[::2]], np.sin(pts[0] / 2) / np.sin(0.5), rtol=1e-15)
