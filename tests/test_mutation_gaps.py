@@ -517,3 +517,178 @@ def test_sampled_points_lie_inside_and_are_seeded():
     assert np.allclose([v[0] for v in tiny[::2]], [0.5, 0.3, 0.2], rtol=1e-15)
     mp_vals = scaled_half_angle_values(pts, 1.0, get_context("mp"))
     assert np.allclose([float(v[0]) for v in mp_vals[::2]], np.sin(pts[0] / 2) / np.sin(0.5), rtol=1e-15)
+
+
+# --- core/context.py -------------------------------------------------------------------------------------------
+
+
+def _close(ctx, got, want, digits=12):
+    """Scalars or arrays of ``ctx`` against exact Fractions: equal (exact, modp images) or within 10^-digits."""
+    from fractions import Fraction
+
+    from paper_repro.core.context import ModpContext
+
+    got_flat = np.asarray(got, dtype=object).reshape(-1)
+    want_flat = np.asarray(want, dtype=object).reshape(-1)
+    assert got_flat.size == want_flat.size
+    for g, w in zip(got_flat, want_flat):
+        w = Fraction(w)
+        if isinstance(ctx, ModpContext):
+            assert int(g) == w.numerator * pow(w.denominator, -1, ctx.p) % ctx.p
+        elif ctx.exact:
+            assert g == fmpq(w.numerator, w.denominator)
+        else:
+            gv = float(g.mid()) if hasattr(g, "mid") else float(g)
+            assert abs(gv - float(w)) <= 10.0**-digits * max(1.0, abs(float(w))), (g, w)
+
+
+@pytest.mark.parametrize("arith", ["float", "mp", "exact", "ball", "modp"])
+def test_every_context_computes_the_same_rational_results(arith):
+    from fractions import Fraction as F
+
+    from paper_repro.core.context import get_context, power_table
+
+    ctx = get_context(arith, dps=30)
+    with ctx.scope():
+        a = ctx.asarray([[fmpq(2), fmpq(1)], [fmpq(1), fmpq(3)]])
+        b = ctx.asarray([[fmpq(1), fmpq(2)], [fmpq(4), fmpq(-1)]])
+        _close(ctx, ctx.add(a, b), [[3, 3], [5, 2]])
+        _close(ctx, ctx.sub(a, b), [[1, -1], [-3, 4]])
+        _close(ctx, ctx.mul(a, b), [[2, 2], [4, -3]])
+        _close(ctx, ctx.div(a, ctx.asarray([[fmpq(4), fmpq(2)], [fmpq(3), fmpq(5)]])),
+               [[F(1, 2), F(1, 2)], [F(1, 3), F(3, 5)]])
+        _close(ctx, ctx.dot(a, b), [[6, 3], [13, -1]])
+        # A x = B with A = [[2, 1], [1, 3]] (det 5): x = A^-1 B, A^-1 = [[3, -1], [-1, 2]] / 5
+        _close(ctx, ctx.solve(a, b), [[F(-1, 5), F(7, 5)], [F(7, 5), F(-4, 5)]])
+        x1 = ctx.solve(a, ctx.asarray([fmpq(3), fmpq(4)]))  # a 1-D right-hand side keeps its shape
+        assert np.shape(x1) == (2,)
+        _close(ctx, x1, [1, 1])
+        _close(ctx, ctx.from_rational(fmpq(3, 4)), [F(3, 4)])
+        _close(ctx, ctx.convert(F(5, 8)), [F(5, 8)])
+        _close(ctx, ctx.ones((2, 1)), [1, 1])
+        _close(ctx, ctx.zeros((1, 2)), [0, 0])
+        assert ctx.ones((2, 3)).shape == (2, 3) and ctx.zeros((3, 1)).shape == (3, 1)
+        _close(ctx, power_table(ctx.asarray([fmpq(2), fmpq(1, 2)]), 3, ctx),
+               [[1, 1], [2, F(1, 2)], [4, F(1, 4)], [8, F(1, 8)]])
+        if arith != "ball":
+            singular = ctx.asarray([[fmpq(1), fmpq(2)], [fmpq(2), fmpq(4)]])
+            assert ctx.rank(singular) == 1 and ctx.rank(a) == 2
+            with pytest.raises(ZeroDivisionError):
+                ctx.solve(singular, b)
+        else:
+            assert ctx.rank(a) == 2
+            with pytest.raises(ValueError, match="certifies full rank"):
+                ctx.rank(ctx.asarray([[fmpq(1), fmpq(2)], [fmpq(2), fmpq(4)]]))
+        # alpha = 4 atan(1/3): sin(alpha/2) = 3/5, cos(alpha/2) = 4/5, in every context
+        alpha = rational_alpha(fmpq(1, 3))
+        sa, ca = ctx.alpha_half(alpha)
+        _close(ctx, [sa, ca], [F(3, 5), F(4, 5)])
+        # w = alpha - u - v from the angle-difference formulas: u = v = 4 atan(1/7), both exact
+        s7, c7 = ctx.from_rational(fmpq(7, 25)), ctx.from_rational(fmpq(24, 25))  # t = 1/7: 2t/(1+t^2), ...
+        sw, cw = ctx.w_half(ctx, sa, ca, s7, c7, s7, c7)
+        # (u+v)/2: sin = 2 s c = 336/625, cos = c^2 - s^2 = 527/625; w/2 = alpha/2 - (u+v)/2
+        _close(ctx, [sw, cw], [F(3, 5) * F(527, 625) - F(4, 5) * F(336, 625),
+                               F(4, 5) * F(527, 625) + F(3, 5) * F(336, 625)])
+        if not ctx.exact:
+            sa_f, ca_f = ctx.alpha_half(1.0)
+            assert abs(float(sa_f.mid() if arith == "ball" else sa_f) - np.sin(0.5)) < 1e-15
+            assert abs(float(ca_f.mid() if arith == "ball" else ca_f) - np.cos(0.5)) < 1e-15
+            assert np.allclose(ctx.to_float(ctx.sin(ctx.asarray([0.5, 1.0]))), np.sin([0.5, 1.0]), rtol=1e-15)
+            assert np.allclose(ctx.to_float(ctx.cos(ctx.asarray([0.5, 1.0]))), np.cos([0.5, 1.0]), rtol=1e-15)
+            assert ctx.to_float(a).tolist() == [[2.0, 1.0], [1.0, 3.0]]
+            assert ctx.digits >= 15
+        else:
+            assert ctx.digits == 0
+            with pytest.raises(TypeError):
+                ctx.alpha_half(1.0)
+            with pytest.raises(TypeError):
+                ctx.sin(a)
+
+
+def test_context_specifics():
+    import math
+    from fractions import Fraction
+
+    import mpmath
+
+    from paper_repro.core.context import (
+        BallContext,
+        LogContext,
+        ModpContext,
+        MpContext,
+        _to_fraction,
+        _unwrap,
+        get_context,
+    )
+
+    assert _to_fraction(fmpq(3, 7)) == Fraction(3, 7) and _to_fraction("2/6") == Fraction(1, 3)
+    assert _to_fraction(0.5) == Fraction(1, 2) and _to_fraction(np.float32(0.25)) == Fraction(1, 4)
+    assert _to_fraction(mpmath.mpf(0.75)) == Fraction(3, 4) and _to_fraction(np.int64(4)) == Fraction(4)
+    for bad in (True, np.bool_(False), "x", object(), math.inf, mpmath.inf):
+        with pytest.raises((TypeError, ValueError)):
+            _to_fraction(bad)
+    assert _unwrap(np.array(2.5)) == 2.5 and type(_unwrap(np.float32(2.5))) is float
+    assert type(_unwrap(np.int64(3))) is int and type(_unwrap(np.longdouble(1.5))) is float
+    # contexts by name, with their precisions
+    assert get_context("mp", dps=40).digits == 40 and get_context("ball", dps=30).prec == int(3.33 * 30) + 20
+    assert get_context("ball", prec=128).prec == 128 and get_context("modp", p=101).p == 101
+    ctx = BallContext(prec=100)
+    assert get_context(ctx) is ctx and BallContext(prec=333).digits == 100
+    for bad in ("fast", 3, None):
+        with pytest.raises(ValueError, match="arith must be one of"):
+            get_context(bad)
+    for bad in (4, 0, 10_001, True):
+        with pytest.raises(ValueError, match="dps"):
+            MpContext(dps=bad)
+    for bad in (19, True, 2.5):
+        with pytest.raises(ValueError, match="prec"):
+            BallContext(prec=bad)
+    for bad in (2, 91, 2**31 + 11, True):
+        with pytest.raises(ValueError, match="p must be a prime"):
+            ModpContext(p=bad)
+    assert ModpContext(p=3).p == 3
+    m = ModpContext(p=7)
+    assert m.convert(-1) == 6 and m.convert(Fraction(1, 2)) == 4 and m.from_rational(fmpq(3, 5)) == 2
+    with pytest.raises(ValueError, match="divides the denominator"):
+        m.from_rational(fmpq(1, 14))
+    assert m.asarray([[fmpq(1, 2), 3]]).tolist() == [[4, 3]] and m.asarray([8, -1]).tolist() == [1, 6]
+    assert m.residual_ok(np.array([7, 14]), 1.0) and not m.residual_ok(np.array([7, 1]), 1.0)
+    with pytest.raises(TypeError):
+        m.to_float(np.array([1]))
+    # the mp and ball contexts convert every kind of number at their precision
+    mp = MpContext(dps=40)
+    b200 = BallContext(prec=200)
+    with b200.scope():
+        third_ball = b200.convert(fmpq(1, 3))
+    with mp.scope():
+        assert mp.convert(fmpq(1, 3)) == mpmath.mpf(1) / 3 and mpmath.mp.dps == 40
+        assert abs(mp.convert(third_ball) - mpmath.mpf(1) / 3) < mpmath.mpf(10) ** -39
+        assert mp.residual_ok(np.array([mpmath.mpf(10) ** -30]), 1.0)  # 10^-30 <= 10^(-0.6 * 40) = 10^-24
+        assert not mp.residual_ok(np.array([mpmath.mpf(10) ** -20]), 1.0)
+    from flint import ctx as flint_ctx
+
+    b = BallContext(prec=200)
+    before = flint_ctx.prec
+    with b.scope():
+        assert flint_ctx.prec == 200
+        third = b.convert(mpmath.mpf(1) / 3)
+        assert abs(float(third.mid()) - 1 / 3) < 1e-16 and b.convert(Fraction(1, 4)) == b.convert(0.25)
+        assert b.residual_ok(np.array([b.convert(1e-40)]), 1.0) and not b.residual_ok(np.array([b.convert(1e-10)]), 1.0)
+    assert flint_ctx.prec == before != 200  # restored after the scope
+    # the log context: sums and products of non-negative numbers by their logarithms
+    lg = LogContext()
+    assert lg.convert(0) == -math.inf and lg.from_rational(fmpq(0)) == -math.inf
+    assert lg.from_rational(fmpq(3, 2)) == pytest.approx(math.log(1.5), rel=1e-15)
+    assert float(lg.to_float(lg.div(lg.convert(6.0), lg.convert(3.0)))) == pytest.approx(2.0, rel=1e-15)
+    assert lg.to_float(lg.ones((2,))).tolist() == [1.0, 1.0] and lg.to_float(lg.zeros((1,))).tolist() == [0.0]
+    assert np.allclose(lg.to_float(lg.asarray([2.0, 0.0])), [2.0, 0.0])
+    for bad in (lambda: lg.convert(-1.0), lambda: lg.from_rational(fmpq(-1, 2))):
+        with pytest.raises(ValueError, match="non-negative"):
+            bad()
+    for bad in (lambda: lg.sub(1.0, 0.0), lambda: lg.dot(np.eye(2), np.eye(2)), lambda: lg.sin(1.0)):
+        with pytest.raises(TypeError):
+            bad()
+    # float residuals: |r| <= scale 10^(-0.6 * 16)
+    f = get_context("float")
+    assert f.residual_ok(np.array([1e-10]), 1.0) and not f.residual_ok(np.array([1e-9]), 1.0)
+    assert f.residual_ok(np.array([]), 1.0)
