@@ -692,3 +692,35 @@ def test_context_specifics():
     f = get_context("float")
     assert f.residual_ok(np.array([1e-10]), 1.0) and not f.residual_ok(np.array([1e-9]), 1.0)
     assert f.residual_ok(np.array([]), 1.0)
+
+
+def test_rational_patch_weights_zero_inside_negative_or_corner():
+    from paper_repro.core.labels import index_of
+    from paper_repro.surfaces.patch import Patch, check_weights
+
+    n, alpha = 1, 1.0
+    idx = index_of(n)
+    net = np.random.default_rng(4).normal(size=(delta(n), 3))
+    w = np.ones(delta(n))
+    w[idx["r_{2,1,1}"]] = 0.0  # the centre: zero weight is allowed away from the corners
+    p = Patch(n, alpha, net, weights=w)
+    pts = _points_on(alpha, 3, seed=8)
+    # a zero weight removes that control point: moving it changes nothing
+    moved = net.copy()
+    moved[idx["r_{2,1,1}"]] += 100.0
+    assert np.allclose(p(pts), Patch(n, alpha, moved, weights=w)(pts), rtol=0, atol=1e-13)
+    ex, fl = check_weights(w * 3, n)  # divided by the largest weight (a power of two in float)
+    assert fl.max() <= 1.0 and fl.min() == 0.0
+    for bad_index, match in ((idx["r_{2,2,0}"], "corner weight"), (idx["g_{2,2,0}"], "corner weight")):
+        wb = np.ones(delta(n))
+        wb[bad_index] = 0.0
+        with pytest.raises(ValueError, match=match):
+            Patch(n, alpha, net, weights=wb)
+    wn = np.ones(delta(n))
+    wn[idx["r_{2,1,1}"]] = -0.5
+    with pytest.raises(ValueError, match="non-negative"):
+        Patch(n, alpha, net, weights=wn)
+    with pytest.raises(ValueError, match="shape"):
+        Patch(n, alpha, net, weights=np.ones(delta(n) + 1))
+    ex, fl = check_weights([fmpq(1, 3)] * delta(n), n)  # exact weights stay exact: all equal to 1 after scaling
+    assert all(x == 1 for x in ex) and fl.tolist() == [1.0] * delta(n)
