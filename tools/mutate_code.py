@@ -285,8 +285,8 @@ def _report(records: list[dict], per_module: int, seed: int, goal: float) -> tup
             k[0] += r["killed"]
             k[1] += 1
     md = ["# Mutation test of the library code (tools/mutate_code.py, `make mutate-code`)", "",
-          f"Up to {per_module} mutants per module (seed {seed}; a deterministic sample of the module's mutation "
-          "sites), "
+          f"A deterministic sample of each module's mutation sites (seed {seed}; `--per-module`, {per_module} in the "
+          "last run; the count per module is killed + survived + equivalent below), "
           "each run against the tests that cover the module (tools/mutate_code.py MODULES) and its doctests, "
           "`pytest -x`; killed = the tests fail or time out. Equivalent mutants (nothing observable changes) are "
           "listed with their reason below and in tools/mutate_code.py EQUIVALENT, and not counted in the rate. "
@@ -340,13 +340,6 @@ def main(argv: list[str] | None = None) -> int:
         sha = hashlib.sha256(source.encode()).hexdigest()
         reuse = {r["key"]: r for r in old if a.resume and r["module"] == module and r.get("source_sha") == sha
                  and r["killed"]}
-        base_killed, base_secs = run_mutant(module, None, tests, 1800.0)
-        if base_killed:
-            print(f"{module}: the tests fail on the unmutated module; not mutated", flush=True)
-            status = 2
-            continue
-        timeout = a.timeout or max(60.0, 5 * base_secs)
-        print(f"{module}: unmutated run {base_secs:.0f} s; timeout {timeout:.0f} s", flush=True)
         sites = _sites(ast.parse(source))
         keys = mutant_keys(module, source)
         rng = random.Random(f"{a.seed}/{module}")
@@ -359,6 +352,16 @@ def main(argv: list[str] | None = None) -> int:
             if len(chosen) >= a.per_module:
                 break
         todo = [c for c in chosen if c[0] not in reuse]
+        timeout = a.timeout or 60.0
+        if todo:  # the unmutated module must pass (else every mutant would count as killed); sets the time limit
+            base_killed, base_secs = run_mutant(module, None, tests, 1800.0)
+            if base_killed:
+                print(f"{module}: the tests fail on the unmutated module; not mutated", flush=True)
+                status = 2
+                continue
+            timeout = a.timeout or max(60.0, 5 * base_secs)
+            print(f"{module}: unmutated run {base_secs:.0f} s; timeout {timeout:.0f} s; {len(todo)} mutants to run, "
+                  f"{len(chosen) - len(todo)} killed before (same source)", flush=True)
         with ThreadPoolExecutor(a.jobs) as ex:
             futs = {c[0]: ex.submit(run_mutant, module, c[1], tests, timeout) for c in todo}
             for key, _new, op, line, snippet, mutated in chosen:
