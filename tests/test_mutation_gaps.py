@@ -724,3 +724,21 @@ def test_rational_patch_weights_zero_inside_negative_or_corner():
         Patch(n, alpha, net, weights=np.ones(delta(n) + 1))
     ex, fl = check_weights([fmpq(1, 3)] * delta(n), n)  # exact weights stay exact: all equal to 1 after scaling
     assert all(x == 1 for x in ex) and fl.tolist() == [1.0] * delta(n)
+
+
+def test_unit_normals_threshold_is_relative_to_the_tangents():
+    from paper_repro.surfaces.patch import unit_normals
+
+    # (3, P) rows; |du x dv| = 1e-9 for tangents of length 100: below tol (|du| + |dv|) = 1e-10 * 200 -> NaN
+    du = np.array([[100.0, 100.0, 3.0], [0.0, 0.0, 0.0], [0.0, 0.0, 0.0]])
+    dv = np.array([[100.0, 0.0, 0.0], [1e-11, 100.0, 4.0], [0.0, 0.0, 0.0]])
+    nrm = unit_normals(du, dv, 1e-10)
+    assert np.isnan(nrm[:, 0]).all()
+    assert np.allclose(nrm[:, 1], [0, 0, 1]) and np.allclose(nrm[:, 2], [0, 0, 1])  # x cross y = z
+    # a cross product of 1e-7 with tangents of length 100 + 100 is kept (above 1e-10 * 200)
+    du2, dv2 = du[:, :1].copy(), dv[:, :1].copy()
+    dv2[1, 0] = 1e-9
+    assert np.allclose(unit_normals(du2, dv2, 1e-10)[:, 0], [0, 0, 1])
+    # the orientation: (0, 0, 1) x (1, 0, 0) = (0, 1, 0)
+    assert np.allclose(unit_normals(np.array([[0.0], [0.0], [1.0]]), np.array([[1.0], [0.0], [0.0]]), 1e-12)[:, 0],
+                       [0, 1, 0])
