@@ -742,3 +742,71 @@ def test_unit_normals_threshold_is_relative_to_the_tangents():
     # the orientation: (0, 0, 1) x (1, 0, 0) = (0, 1, 0)
     assert np.allclose(unit_normals(np.array([[0.0], [0.0], [1.0]]), np.array([[1.0], [0.0], [0.0]]), 1e-12)[:, 0],
                        [0, 1, 0])
+
+
+# --- core/univariate.py ----------------------------------------------------------------------------------------
+
+
+def test_univariate_basis_is_a_partition_of_unity_in_every_arithmetic():
+    import math
+
+    import mpmath
+
+    from paper_repro.core.univariate import A, bernstein, c_const, c_numerator, c_numerator_by_expansion
+
+    for n in (1, 2, 3):
+        exp = c_numerator_by_expansion(n)  # the coefficients of (X^2 + 2 c X Y + Y^2)^n, independently
+        for i in range(2 * n + 1):
+            assert c_numerator(n, i) == [int(exp[i][k]) for k in range(i + 1)], (n, i)
+        alpha = 1.3
+        t = np.array([0.0, 0.2, 0.9, alpha])
+        a = A(n, alpha, t)
+        assert a.shape == (4, 2 * n + 1) and a.min() >= -1e-15
+        assert np.allclose(a.sum(axis=1), 1.0, rtol=0, atol=1e-14)  # Proposition (partition of unity)
+        assert np.allclose(a[0], np.eye(2 * n + 1)[0], atol=1e-15)  # t = 0: only A_{2n,0}
+        assert np.allclose(a[-1], np.eye(2 * n + 1)[-1], atol=1e-15)  # t = alpha: only A_{2n,2n}
+        # the definition: c_{2n,i} sin^{2n-i}((alpha - t)/2) sin^i(t/2)
+        i = 1
+        want = c_const(n, i, alpha) * math.sin((alpha - 0.2) / 2) ** (2 * n - i) * math.sin(0.1) ** i
+        assert a[1, i] == pytest.approx(want, rel=1e-13)
+        with mpmath.workdps(40):
+            amp = A(n, mpmath.mpf(alpha), [mpmath.mpf("0.2")], "mp")
+            assert abs(sum(amp[0]) - 1) < mpmath.mpf(10) ** -38
+            assert np.allclose(np.array(amp, dtype=float)[0], a[1], rtol=1e-14)
+    # c_{2,1} = 2 cos(alpha/2) / sin^2(alpha/2), exactly at tan(alpha/4) = 1/2 (s = 4/5, c = 3/5)
+    assert c_const(1, 1, rational_alpha(fmpq(1, 2)), "exact") == fmpq(2 * 3 * 25, 5 * 16)
+    with pytest.raises(ValueError):
+        c_numerator(1, 3)
+    with pytest.raises(ValueError):
+        c_numerator(1, -1)
+    with pytest.raises(ValueError, match=r"t must lie in \[0, alpha\]"):
+        A(1, 1.0, [1.1])
+    with pytest.raises(ValueError, match=r"t must lie in \[0, alpha\]"):
+        A(1, 1.0, [-0.01])
+    b = bernstein(3, [0.25])
+    assert [float(x) for x in b[0]] == [27 / 64, 27 / 64, 9 / 64, 1 / 64]
+
+
+# --- core/layout.py --------------------------------------------------------------------------------------------
+
+
+def test_layout_of_the_net_graph():
+    from paper_repro.core.labels import BasisLabel, united_system
+    from paper_repro.core.layout import barycentric, edges, net_edges, position
+
+    for n in (1, 2, 3):
+        es = net_edges(n)
+        assert len(es) == 6 * n * n + 3 * n and len(set(es)) == len(es)  # documented count
+        assert all(0 <= a < delta(n) and 0 <= b < delta(n) and a != b for a, b in es)
+        # every node is on some edge, and the centre (row 0) is only entered, never left
+        assert {x for e in es for x in e} == set(range(delta(n)))
+        assert all(a != 0 for a, _ in es)
+        for lab in united_system(n):
+            bc = barycentric(lab)
+            assert bc.min() >= 0 and bc.sum() == pytest.approx(1.0)
+        assert len(edges(n)) >= len(es)
+    # positions: corners of the drawing and the centroid
+    corners = sorted(tuple(np.round(position(BasisLabel(c, 1, 0, 0)), 12)) for c in "RGB")  # sin^2 of u, v, w
+    assert corners == sorted([(0.0, 0.0), (1.0, 0.0), (0.5, round(float(np.sqrt(3) / 2), 12))])
+    assert position(BasisLabel("R", 1, 0, 0)).tolist() == [0.0, 0.0]
+    assert barycentric(BasisLabel("R", 2, 2, 1)).tolist() == pytest.approx([2 / 5, 1 / 5, 2 / 5])
