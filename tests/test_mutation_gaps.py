@@ -810,3 +810,32 @@ def test_layout_of_the_net_graph():
     assert corners == sorted([(0.0, 0.0), (1.0, 0.0), (0.5, round(float(np.sqrt(3) / 2), 12))])
     assert position(BasisLabel("R", 1, 0, 0)).tolist() == [0.0, 0.0]
     assert barycentric(BasisLabel("R", 2, 2, 1)).tolist() == pytest.approx([2 / 5, 1 / 5, 2 / 5])
+
+
+def test_merge_meshes_dimensions_and_normals():
+    from paper_repro.surfaces.patch import merge_meshes
+
+    f = np.array([[0, 1, 2]])
+    for d in (1, 2, 4):  # any dimension d >= 1 of a net (Patch.mesh of a d-dimensional net)
+        v, faces = merge_meshes([(np.ones((3, d)), f), (np.zeros((3, d)), f)])
+        assert v.shape == (6, d) and faces.tolist() == [[0, 1, 2], [3, 4, 5]]
+    with pytest.raises(ValueError, match="finite"):
+        merge_meshes([(np.ones((3, 0)), f)])  # no coordinates
+    with pytest.raises(ValueError, match="finite"):
+        merge_meshes([(np.ones((3, 2)), f), (np.ones((3, 3)), f)])  # dimensions differ
+    with pytest.raises(ValueError, match="normals with every mesh"):
+        merge_meshes([(np.eye(3), f, np.eye(3)), (np.eye(3), f)])
+    v, faces, nrm = merge_meshes([(np.eye(3), f, np.eye(3)), (np.eye(3), f, -np.eye(3))])
+    assert nrm.tolist() == np.vstack([np.eye(3), -np.eye(3)]).tolist()
+    with pytest.raises(ValueError, match="normals must have the shape"):
+        merge_meshes([(np.eye(3), f, np.eye(2))])
+    with pytest.raises(ValueError, match="faces must be an integer"):
+        merge_meshes([(np.eye(3), f.astype(float))])
+    with pytest.raises(ValueError, match="non-empty"):
+        merge_meshes([])
+    with pytest.raises(TypeError):
+        merge_meshes("mesh")
+    with pytest.raises(TypeError):
+        merge_meshes([(np.eye(3),)])
+    v, faces = merge_meshes([(np.eye(3), np.zeros((0, 3), dtype=np.int64))])  # no faces is a mesh too
+    assert faces.shape == (0, 3)
