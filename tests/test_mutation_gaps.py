@@ -839,3 +839,56 @@ def test_merge_meshes_dimensions_and_normals():
         merge_meshes([(np.eye(3),)])
     v, faces = merge_meshes([(np.eye(3), np.zeros((0, 3), dtype=np.int64))])  # no faces is a mesh too
     assert faces.shape == (0, 3)
+
+
+# --- core/nets.py ----------------------------------------------------------------------------------------------
+
+
+def test_nets_by_labels_and_their_checks():
+    import copy
+    import pickle
+    from fractions import Fraction
+
+    from paper_repro.core.labels import united_system
+    from paper_repro.core.nets import LabelledNet, check_net, check_net_exact, net_from_labels
+
+    n = 1
+    labs = [lab.control_point for lab in united_system(n)]
+    pts = {lab: [k, -k] for k, lab in enumerate(labs)}
+    arr = net_from_labels(pts, n)
+    assert arr.shape == (7, 2) and arr[:, 0].tolist() == list(range(7))
+    # every function given once (its paper labels and aliases map to one row)
+    with pytest.raises(ValueError, match="missing control points"):
+        net_from_labels({labs[0]: [0, 0]}, n)
+    with pytest.raises(ValueError, match="unknown control point"):
+        net_from_labels({**pts, "r_{2,3,0}": [0, 0]}, n)
+    with pytest.raises(TypeError, match="labels must be strings"):
+        net_from_labels({**pts, 3: [0, 0]}, n)
+    with pytest.raises(ValueError, match="different dimensions"):
+        net_from_labels({**pts, labs[1]: [1, 2, 3]}, n)
+    same = net_from_labels({**pts, "R_{2,1,1}": pts["r_{2,1,1}"]}, n)  # the same point under another name
+    assert same.tolist() == arr.tolist()
+    with pytest.raises(ValueError, match="conflicts"):  # R_{2n,0,0} = G_{2n,2n,0}: one point, two different values
+        net_from_labels({**pts, "r_{2,0,0}": [99, 99]}, n)
+    ex = check_net_exact([[Fraction(1, 3), 2]] * 7, n)
+    assert ex.dtype == object and ex[0, 0] == Fraction(1, 3)
+    assert check_net([[1, 2]] * 7, n).dtype == np.float64
+    for bad, err in (([[1, 2]] * 6, ValueError), (np.zeros((7, 0)), ValueError), ([[1, np.nan]] * 7, ValueError),
+                     ([["a", 1]] * 7, TypeError), ([[True, 1]] * 7, TypeError), ([[1j, 1]] * 7, TypeError),
+                     ([[1, 2], [3]] + [[1, 2]] * 5, (TypeError, ValueError)), (np.zeros(7), ValueError)):
+        with pytest.raises(err):
+            check_net(bad, n)
+    net = LabelledNet(np.arange(14.0).reshape(7, 2), n)
+    assert net.labels() == labs
+    assert net["r_{2,1,1}"].tolist() == net[labs.index("r_{2,1,1}")].tolist()
+    net["g_{2,1,0}"] = [-1.0, -2.0]
+    assert net[labs.index("g_{2,1,0}")].tolist() == [-1.0, -2.0]
+    assert type(net + 1) is np.ndarray and type(net[1:3]) is np.ndarray
+    for clone in (pickle.loads(pickle.dumps(net)), copy.deepcopy(net)):
+        assert isinstance(clone, LabelledNet) and clone.n == 1 and clone["g_{2,1,0}"].tolist() == [-1.0, -2.0]
+    flat = pickle.loads(pickle.dumps(net.reshape(-1)))
+    assert type(flat) is np.ndarray and flat.shape == (14,)
+    with pytest.raises(ValueError, match="7 rows expected"):
+        LabelledNet(np.zeros((6, 2)), n)
+    with pytest.raises(KeyError, match="r_{2,1,1}"):
+        net["q"]
