@@ -892,3 +892,65 @@ def test_nets_by_labels_and_their_checks():
         LabelledNet(np.zeros((6, 2)), n)
     with pytest.raises(KeyError, match="r_{2,1,1}"):
         net["q"]
+
+
+# --- core/exact_solve.py ---------------------------------------------------------------------------------------
+
+
+class _Watched:
+    """An fmpq_mat that counts (or refuses) the fraction-free fallback solve of :func:`solve_exact`."""
+
+    def __init__(self, mat, allow=False):
+        self.mat, self.allow, self.fallbacks = mat, allow, 0
+
+    def nrows(self):
+        return self.mat.nrows()
+
+    def ncols(self):
+        return self.mat.ncols()
+
+    def table(self):
+        return self.mat.table()
+
+    def __mul__(self, other):
+        return self.mat * other
+
+    def solve(self, b, algorithm=None):
+        self.fallbacks += 1
+        assert self.allow, "the modular route should have given the solution"
+        return self.mat.solve(b, algorithm=algorithm)
+
+
+def test_exact_solve_against_flint_small_large_and_beyond_the_primes():
+    from flint import fmpq_mat, fmpz
+
+    from paper_repro.core.exact_solve import _primes, solve_exact, solve_exact_array, wang_pair
+
+    ps = _primes()
+    assert len(ps) == 64 and all(fmpz(p).is_prime() and p < 2**62 for p in ps) and list(ps) == sorted(ps)[::-1]
+    assert ps[0] == 2**62 - 57  # the largest prime below 2^62
+    m = 1_000_003
+    for x, y in ((3, 7), (-5, 11), (0, 1), (13, -2)):
+        a = x * pow(y, -1, m) % m
+        got = wang_pair(a, m, 707)  # bound sqrt(m / 2)
+        assert got is not None and fmpq(*got) == fmpq(x, y)
+    rng = np.random.default_rng(9)
+    for bits in (4, 200, 900):  # solutions of a few bits, of several primes, of many primes
+        k = 3
+        a = fmpq_mat(k, k, [fmpq(int(rng.integers(-50, 50)), int(rng.integers(1, 9))) for _ in range(k * k)])
+        x = fmpq_mat(k, 2, [fmpq(int(rng.integers(1, 2**31)) ** (bits // 31 + 1) * (-1) ** j, 3 + j)
+                            for j in range(2 * k)])
+        b = a * x
+        assert solve_exact(_Watched(a), b) == a.solve(b) == x  # by the modular route (no fallback)
+    # a solution of about 4000 bits: beyond 64 primes of 62 bits, the fraction-free fallback gives it
+    big = fmpq_mat(2, 1, [fmpq(fmpz(3) ** 2600, 7), fmpq(-1, fmpz(5) ** 1700)])
+    a = fmpq_mat(2, 2, [2, 1, 1, 3])
+    watched = _Watched(a, allow=True)
+    assert solve_exact(watched, a * big) == big and watched.fallbacks == 1
+    with pytest.raises(ZeroDivisionError):
+        solve_exact(fmpq_mat(2, 2, [1, 2, 2, 4]), fmpq_mat(2, 1, [1, 1]))
+    with pytest.raises(ValueError, match="square"):
+        solve_exact(fmpq_mat(2, 3, [1] * 6), fmpq_mat(2, 1, [1, 1]))
+    arr = solve_exact_array(np.array([[fmpq(2), fmpq(1)], [fmpq(1), fmpq(3)]], dtype=object),
+                            np.array([fmpq(3), fmpq(4)], dtype=object))
+    assert arr.shape == (2,) and arr.tolist() == [fmpq(1), fmpq(1)]
