@@ -59,10 +59,9 @@ MODULES: dict[str, list[str]] = {
     "core/context.py": ["tests/test_basis_arithmetics.py", "tests/test_collocation.py", "tests/test_elevation_all_n.py",
                         "tests/test_mutation_gaps.py", "tests/test_modp_elimination.py"],
     "core/derivatives_basis.py": ["tests/test_derivative_tables.py", "tests/test_mutation_gaps.py"],
-    "core/domain.py": ["tests/test_code_gaps.py", "tests/test_domain_of_validity.py", "tests/test_patches_surfaces.py",
-                       "tests/test_mutation_gaps.py"],
+    "core/domain.py": ["tests/test_code_gaps.py", "tests/test_mutation_gaps.py", "tests/test_domain_of_validity.py"],
     "core/elevation.py": ["tests/test_code_gaps.py", "tests/test_elevation_all_n.py", "tests/test_limits_elevation.py",
-                          "tests/test_domain_of_validity.py", "tests/test_mutation_gaps.py"],
+                          "tests/test_mutation_gaps.py"],
     "core/exact_solve.py": ["tests/test_speed_exact_routines.py", "tests/test_mutation_gaps.py"],
     "core/fast.py": ["tests/test_fast_kernel.py", "tests/test_patch_arithmetics.py", "tests/test_mutation_gaps.py"],
     "core/fast_jit.py": ["tests/test_fast_jit.py", "tests/test_fast_kernel.py", "tests/test_mutation_gaps.py"],
@@ -98,7 +97,7 @@ MODULES: dict[str, list[str]] = {
 #: tests/test_domain_of_validity.py (subprocesses, 40 s) exercise the CLI, not these modules' code paths, and the
 #: exact check of the printed torus net (40 s) the torus model (surfaces/models.py), which keeps it
 _NOT_TORUS = "not printed_torus_net"
-SELECT: dict[str, str] = {"core/domain.py": f"{_NOT_CLI} and {_NOT_TORUS}", "core/elevation.py": _NOT_CLI,
+SELECT: dict[str, str] = {"core/domain.py": _NOT_CLI,
                           "surfaces/patch.py": _NOT_TORUS, "surfaces/mesh.py": _NOT_TORUS,
                           "surfaces/fitting.py": _NOT_TORUS}
 
