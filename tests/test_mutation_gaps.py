@@ -954,3 +954,48 @@ def test_exact_solve_against_flint_small_large_and_beyond_the_primes():
     arr = solve_exact_array(np.array([[fmpq(2), fmpq(1)], [fmpq(1), fmpq(3)]], dtype=object),
                             np.array([fmpq(3), fmpq(4)], dtype=object))
     assert arr.shape == (2,) and arr.tolist() == [fmpq(1), fmpq(1)]
+
+
+# --- core/derivatives_basis.py ---------------------------------------------------------------------------------
+
+
+def test_basis_derivative_against_mp_differences_in_every_direction():
+    from fractions import Fraction
+
+    import mpmath
+
+    from paper_repro.core.derivatives_basis import basis_derivative, check_direction, monomial_derivative
+    from paper_repro.core.normalization import evaluate_normalized
+
+    assert check_direction("u") == (1, 0, -1) and check_direction("v") == (0, 1, -1)
+    assert check_direction((2, -0.5, -1.5)) == (Fraction(2), Fraction(-1, 2), Fraction(-3, 2))
+    for bad, err in (((True, 0, -1), TypeError), ("x", ValueError), ((1, 0), ValueError), ((1, 1, 1), ValueError),
+                     (3, TypeError), ((1, "a", -1), TypeError), ((np.inf, 0, -np.inf), ValueError),
+                     ((1e309, 0, 0), ValueError)):
+        with pytest.raises(err):
+            check_direction(bad)
+    n, alpha = 2, 1.2
+    pts = np.array([[0.3, 0.5, 0.4], [0.1, 0.2, 0.9]])
+    h = mpmath.mpf(10) ** -20
+    with mpmath.workdps(50):
+        a = mpmath.mpf(alpha)
+        for d in ("u", "v", "w", (1.5, -2.0, 0.5)):
+            du, dv, dw = (mpmath.mpf(float(x)) for x in check_direction(d))
+            q = np.array([[mpmath.mpf(float(x)) for x in row] for row in pts], dtype=object)
+            q[:, 2] = a - q[:, 0] - q[:, 1]
+            step = np.array([du, dv, dw], dtype=object) * h
+            fd = (evaluate_normalized(n, a, q + step, "mp", dps=50)
+                  - evaluate_normalized(n, a, q - step, "mp", dps=50)) / (2 * h)
+            for arith in ("float", "mp"):
+                got = np.array(basis_derivative(n, alpha if arith == "float" else a, pts if arith == "float" else q, d,
+                                                arith, dps=50), dtype=float)
+                assert np.allclose(got, np.array(fd, dtype=float), rtol=1e-12, atol=1e-12), (d, arith)
+    # the unscaled derivative: d/dx sin^a(x/2) cos^b(x/2) = (a/2) s^(a-1) c^(b+1) - (b/2) s^(a+1) c^(b-1)
+    from paper_repro.core.context import get_context
+
+    ctx = get_context("float")
+    x = 0.7
+    trig = [np.array([np.sin(x / 2)]), np.array([np.cos(x / 2)])] + [np.array([0.5])] * 4
+    got = monomial_derivative(np.array([[3, 2, 0, 0, 0, 0]]), trig, (1, 0, -1), ctx)
+    s, c = np.sin(x / 2), np.cos(x / 2)
+    assert got[0, 0] == pytest.approx(1.5 * s**2 * c**3 - 1.0 * s**4 * c, rel=1e-14)
