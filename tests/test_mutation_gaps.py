@@ -999,3 +999,54 @@ def test_basis_derivative_against_mp_differences_in_every_direction():
     got = monomial_derivative(np.array([[3, 2, 0, 0, 0, 0]]), trig, (1, 0, -1), ctx)
     s, c = np.sin(x / 2), np.cos(x / 2)
     assert got[0, 0] == pytest.approx(1.5 * s**2 * c**3 - 1.0 * s**4 * c, rel=1e-14)
+
+
+# --- core/normalizing_formula.py -------------------------------------------------------------------------------
+
+
+def test_normalizing_formula_parts_and_levels():
+    import math
+    from math import comb
+
+    from paper_repro.core.context import LogContext, get_context
+    from paper_repro.core.domain import sample_rational_points
+    from paper_repro.core.normalization import evaluate_normalized
+    from paper_repro.core.normalizing_formula import (
+        multiplicity,
+        sanchez_reyes_numerators,
+        scaled_table,
+        sin_powers,
+        t_weight,
+    )
+
+    for n in (1, 2, 3):
+        for f in range(n + 1):
+            for m in (1, 2, 3):  # [t^f] (1 - m t) (1 - t)^-(2n+1), from the binomial series
+                want = comb(2 * n + f, f) - (m * comb(2 * n + f - 1, f - 1) if f else 0)
+                assert t_weight(n, f, m) == want
+    assert [multiplicity(2, i, j) for i, j in ((1, 0), (1, 1), (2, 2), (2, 0))] == [1, 2, 3, 1]
+    assert sin_powers(2) == [4, 4, 4, 5, 5, 6]
+    ex = get_context("exact")
+    c = fmpq(3, 5)
+    rows = sanchez_reyes_numerators(3, c, ex)  # [X^x] (1 + 2cX + X^2)^a
+    assert [list(r) for r in rows[:3]] == [[1, 0, 0, 0], [1, 2 * c, 1, 0], [1, 4 * c, 2 + 4 * c * c, 4 * c]]
+    s2 = fmpq(16, 25)
+    for n in (1, 2, 3):
+        full = scaled_table(n, c, s2, ex)
+        assert len(full) == (n + 1) * (n + 2) // 2
+        sizes = [n + 1 - j for j in range(n + 1)]  # level j holds i = j..n
+        for k in range(n + 1):
+            assert scaled_table(n, c, s2, ex, max_level=k) == full[: sum(sizes[: k + 1])]
+            assert scaled_table(n, c, s2, ex, min_level=k) == full[sum(sizes[:k]):]
+        lg = LogContext()
+        logs = scaled_table(n, lg.from_rational(c), lg.from_rational(s2), lg)
+        assert np.allclose(np.exp(np.array(logs, dtype=float)), [float(x) for x in full], rtol=1e-13)
+        fl = scaled_table(n, 0.6, 0.64, get_context("float"))
+        assert np.allclose(fl, [float(x) for x in full], rtol=1e-14)
+        # the partition of unity (Definition of the normalized system), exactly, at rational points
+        alpha = rational_alpha(fmpq(1, 2))  # s = 4/5, c = 3/5
+        vals = evaluate_normalized(n, alpha, sample_rational_points(alpha, 3, seed=n), "exact")
+        assert all(sum(row) == 1 for row in vals)
+    with pytest.raises(ValueError, match="min_level"):
+        scaled_table(1, c, s2, ex, min_level=-1)
+    assert math.isfinite(float(scaled_table(2, 0.99, 1 - 0.99**2, get_context("float"))[-1]))
