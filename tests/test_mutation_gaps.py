@@ -1050,3 +1050,76 @@ def test_normalizing_formula_parts_and_levels():
     with pytest.raises(ValueError, match="min_level"):
         scaled_table(1, c, s2, ex, min_level=-1)
     assert math.isfinite(float(scaled_table(2, 0.99, 1 - 0.99**2, get_context("float"))[-1]))
+
+
+# --- surfaces/fitting.py ---------------------------------------------------------------------------------------
+
+
+def test_fit_least_squares_interpolates_what_is_fixed():
+    from paper_repro.surfaces.fitting import fit_least_squares
+    from paper_repro.surfaces.patch import Patch
+
+    n, a = 1, 1.0
+    truth = Patch(n, a, np.random.default_rng(12).normal(size=(delta(n), 2)))
+    pts = np.vstack([a * np.eye(3), _points_on(a, 40, seed=13)])  # the three corners first
+    noisy = truth(pts) + np.random.default_rng(14).normal(scale=0.05, size=(43, 2))
+    net, rms = fit_least_squares(pts, truth(pts), n, a, full_output=True)
+    assert np.allclose(net, truth.net, atol=1e-10) and rms < 1e-12
+    # corners=True: the corner values of the data are interpolated exactly (eqs. boundary_property_1..3)
+    fitted = Patch(n, a, fit_least_squares(pts, noisy, n, a, corners=True))
+    assert np.allclose(fitted(a * np.eye(3)), noisy[:3], rtol=0, atol=1e-12)
+    given = np.array([[1.0, 2.0], [3.0, 4.0], [5.0, 6.0]])
+    assert np.allclose(Patch(n, a, fit_least_squares(pts, noisy, n, a, corners=given))(a * np.eye(3)), given)
+    # a boundary curve in the span of the boundary basis is reproduced, the rest fitted
+    for edge in ("u=0", "v=0", "w=0"):
+        fb = Patch(n, a, fit_least_squares(pts, noisy, n, a, boundary={edge: lambda t, e=edge: truth.boundary_curve(
+            e, t)}))
+        assert np.allclose(fb.boundary_net(edge), truth.boundary_net(edge), atol=1e-12), edge
+    # a corner that disagrees with a fitted edge is refused; one that agrees is fine
+    with pytest.raises(ValueError, match="fixed twice"):
+        fit_least_squares(pts, noisy, n, a, corners=given, boundary={"v=0": lambda t: truth.boundary_curve("v=0", t)})
+    fit_least_squares(pts, noisy, n, a, corners=truth(a * np.eye(3)),
+                      boundary={"v=0": lambda t: truth.boundary_curve("v=0", t)})
+    one_d = fit_least_squares(pts, noisy[:, 0], n, a)  # values as a vector: d = 1
+    assert one_d.shape == (delta(n), 1)
+    with pytest.raises(ValueError, match="include the three corners"):
+        fit_least_squares(pts[3:], noisy[3:], n, a, corners=True)
+    with pytest.raises(ValueError, match="at least as many data points"):
+        fit_least_squares(pts[3:6], noisy[3:6], n, a)
+    with pytest.raises(ValueError, match="do not determine"):
+        fit_least_squares(np.repeat(pts[5:6], 10, axis=0), np.repeat(noisy[5:6], 10, axis=0), n, a)
+    with pytest.raises(ValueError, match="corners must be a finite"):
+        fit_least_squares(pts, noisy, n, a, corners=np.ones((2, 2)))
+    with pytest.raises(ValueError, match="edges are"):
+        fit_least_squares(pts, noisy, n, a, boundary={"x=0": lambda t: t})
+    with pytest.raises(TypeError):
+        fit_least_squares(pts, noisy, n, a, boundary={"u=0": 3})
+    with pytest.raises(TypeError):
+        fit_least_squares(pts, noisy, n, a, boundary=[1])
+    with pytest.raises(ValueError, match="curve"):
+        fit_least_squares(pts, noisy, n, a, boundary={"u=0": lambda t: np.ones((len(t), 3))})
+    with pytest.raises(ValueError, match="values must be"):
+        fit_least_squares(pts, noisy[:-1], n, a)
+    with pytest.raises(TypeError):
+        fit_least_squares(pts, noisy, n, a, full_output=1)
+
+
+def test_fit_in_float_mp_and_exact_agree_and_refuse_what_is_not_in_the_span():
+    import mpmath
+
+    from paper_repro.surfaces.fitting import fit, fit_float
+
+    alpha = rational_alpha(fmpq(1, 3))
+    a = float(alpha)
+    exact = fit(lambda t: [t.cos(1, 0, 0), t.sin(0, 1, 0)], 1, alpha, "exact")
+    with mpmath.workdps(40):
+        mp = fit(lambda u, v, w: [mpmath.cos(u), mpmath.sin(v)], 1, alpha.mp(), "mp")
+    fl = fit(lambda u, v, w: (np.cos(u), np.sin(v)), 1, a, "float")
+    ex = np.array([[float(x) for x in row] for row in exact])
+    assert np.allclose(np.array(mp, dtype=float), ex, atol=1e-14) and np.allclose(fl, ex, atol=1e-9)
+    with pytest.raises(ValueError, match="not in the span"):
+        fit_float(lambda u, v, w: (np.cos(3 * u),), 1, a)  # cos 3u is not in V_1
+    with pytest.raises(TypeError, match="surface must be callable"):
+        fit(3, 1, a)
+    with pytest.raises(TypeError, match="with mpmath"):
+        fit(lambda u, v, w: [np.cos(np.array(u, dtype=float)) + "x"], 1, a, "mp")
