@@ -314,6 +314,40 @@ def _report(records: list[dict], per_module: int, seed: int, goal: float) -> tup
     return "\n".join(md) + "\n", ok
 
 
+def recheck(a: argparse.Namespace) -> int:
+    """``--recheck TEST...``: the survivors of the existing json run again against the given tests only."""
+    jpath = Path(a.out) / "mutate_code.json"
+    records = json.loads(jpath.read_text())
+    modules = a.module or sorted({r["module"] for r in records})
+    for module in modules:
+        source = (ROOT / "paper_repro" / module).read_text()
+        sha = hashlib.sha256(source.encode()).hexdigest()
+        todo = [r for r in records if r["module"] == module and not r["killed"] and not r["equivalent"]
+                and r.get("source_sha") == sha]
+        if not todo:
+            continue
+        base_killed, base_secs = run_mutant(module, None, a.recheck, 1800.0)
+        if base_killed:
+            print(f"{module}: {a.recheck} fail on the unmutated module; not rechecked", flush=True)
+            continue
+        keys = mutant_keys(module, source)
+        for r in todo:
+            m = _apply(source, keys.index(r["key"]))
+            assert m is not None
+            killed, secs = run_mutant(module, m[0], a.recheck, a.timeout or max(60.0, 5 * base_secs))
+            if killed:
+                r.update(killed=True, seconds=round(secs, 1), killed_by=" ".join(a.recheck))
+            print(f"{module}:{r['line']} {r['op']}: {'killed' if killed else 'SURVIVED'} (recheck) {r['key']}",
+                  flush=True)
+        jpath.write_text(json.dumps(records, indent=1) + "\n")
+    for r in records:
+        r["equivalent"] = EQUIVALENT.get(r["key"])
+    md, ok = _report(records, a.per_module, a.seed, a.goal)
+    (Path(a.out) / "mutate_code.md").write_text(md)
+    jpath.write_text(json.dumps(records, indent=1) + "\n")
+    return 0 if ok else 1
+
+
 def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--module", nargs="*", default=None, help="modules below paper_repro/ (default: all of MODULES "
@@ -326,7 +360,13 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--goal", type=float, default=0.95)
     ap.add_argument("--resume", action="store_true", help="reuse killed records of the json (same module source)")
     ap.add_argument("--out", default="reports")
+    ap.add_argument("--recheck", nargs="+", default=None, metavar="TEST",
+                    help="run only these tests against the survivors of the existing json (same module source): a "
+                         "survivor they kill is killed (a subset of the tests failing means the full set fails); "
+                         "the others stay survivors of the full run.  No new mutants are drawn")
     a = ap.parse_args(argv)
+    if a.recheck:
+        return recheck(a)
     modules = a.module or [m for m in MODULES if m not in SKIPPED and (ROOT / "paper_repro" / m).exists()]
     out = Path(a.out)
     out.mkdir(parents=True, exist_ok=True)
