@@ -1123,3 +1123,69 @@ def test_fit_in_float_mp_and_exact_agree_and_refuse_what_is_not_in_the_span():
         fit(3, 1, a)
     with pytest.raises(TypeError, match="with mpmath"):
         fit(lambda u, v, w: [np.cos(np.array(u, dtype=float)) + "x"], 1, a, "mp")
+
+
+# --- core/normalization.py -------------------------------------------------------------------------------------
+
+
+def test_normalizing_coefficients_in_every_arithmetic_against_the_collocation_solve():
+    import math
+
+    import mpmath
+
+    from paper_repro.core.normalization import (
+        certified_orbit_floats,
+        coefficient_vector,
+        coefficients,
+        evaluate_normalized,
+        log_scaled_orbit_coefficients,
+        orbit_coefficients,
+        orbit_coefficients_collocation,
+        scaled_coefficient_vector,
+        scaled_float_vector,
+        scaled_orbit_coefficients,
+    )
+    from paper_repro.core.normalizing_formula import sin_powers
+
+    alpha = rational_alpha(fmpq(1, 2))  # s = 4/5, c = 3/5
+    a = float(alpha)
+    for n in (1, 2, 3):
+        solved = orbit_coefficients_collocation(n, alpha)  # the exact collocation solve: no formula
+        assert orbit_coefficients(n, alpha, "exact") == solved
+        s = fmpq(4, 5)
+        assert scaled_orbit_coefficients(n, alpha, "exact") == [x * s**k for x, k in zip(solved, sin_powers(n))]
+        want = [float(x) for x in solved]
+        assert np.allclose(orbit_coefficients(n, a), want, rtol=1e-15)
+        assert np.allclose([float(x) for x in orbit_coefficients(n, alpha.mp(), "mp", dps=40)], want, rtol=1e-15)
+        assert np.allclose(certified_orbit_floats(n, alpha, False), want, rtol=1e-16)
+        scaled = [float(x * s**k) for x, k in zip(solved, sin_powers(n))]
+        assert np.allclose(np.exp(log_scaled_orbit_coefficients(n, a)), scaled, rtol=1e-13)
+        assert np.allclose(scaled_orbit_coefficients(n, a), scaled, rtol=1e-15)
+        vec, svec = coefficient_vector(n, a), scaled_coefficient_vector(n, a)
+        assert vec.shape == svec.shape == (delta(n),) and np.allclose(scaled_float_vector(n, a), svec, rtol=1e-15)
+        assert set(np.round(vec, 12)) == set(np.round(want, 12))  # every member takes its orbit's coefficient
+        keyed = coefficients(n, a)
+        assert len(keyed) >= delta(n) and all(isinstance(k, str) for k in keyed)
+        assert np.allclose(sorted(set(np.round(list(coefficients(n, a, scaled=True).values()), 12))),
+                           sorted(set(np.round(scaled, 12))))
+        # the partition of unity in float at a tiny alpha (scaled route) and in mp
+        pts = _points_on(1e-200, 4, seed=n)
+        assert np.allclose(evaluate_normalized(n, 1e-200, pts).sum(axis=1), 1.0, rtol=0, atol=1e-13)
+        with mpmath.workdps(30):
+            q = np.array([[mpmath.mpf(float(x)) for x in row] for row in _points_on(a, 2, seed=5)], dtype=object)
+            q[:, 2] = alpha.mp() - q[:, 0] - q[:, 1]
+            tot = evaluate_normalized(n, alpha.mp(), q, "mp", dps=30).sum(axis=1)
+            assert all(abs(x - 1) < mpmath.mpf(10) ** -28 for x in tot)
+    # a tiny alpha: r grows like alpha^-(2n+j) and leaves float64; the scaled values stay finite
+    with pytest.raises(ValueError, match="exceeds float64"):
+        orbit_coefficients(2, 1e-200)
+    # alpha -> 0 (c = 1, s = 0) in the formula of Question 1: [t^j X^i] (1 + X)^4 (1 - m t) / (1 - t)^5, by hand
+    # 1, 4, 6 (j = 0), (5 - 2) 4 = 12 and (5 - 1) 6 = 24 (j = 1); the centre's is of size sin^2(alpha/2): 0 here
+    tiny = scaled_orbit_coefficients(2, 1e-200)
+    assert all(math.isfinite(x) and x >= 0 for x in tiny) and tiny[:5] == pytest.approx([1, 4, 6, 12, 24])
+    with pytest.raises(ValueError):
+        orbit_coefficients(1, rational_alpha(fmpq(1, 2)).__class__(0), "exact")  # tan(alpha/4) = 0
+    with pytest.raises(TypeError):
+        orbit_coefficients(1, 1.0, "exact")
+    with pytest.raises(TypeError):
+        coefficients(1, 1.0, scaled=1)
