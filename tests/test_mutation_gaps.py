@@ -1189,3 +1189,13 @@ def test_normalizing_coefficients_in_every_arithmetic_against_the_collocation_so
         orbit_coefficients(1, 1.0, "exact")
     with pytest.raises(TypeError):
         coefficients(1, 1.0, scaled=1)
+
+
+def test_bezier_triangle_without_the_bezier_package_says_so(monkeypatch):
+    import sys
+
+    from paper_repro.surfaces.limit import bezier_triangle
+
+    monkeypatch.setitem(sys.modules, "bezier", None)  # import bezier raises ImportError
+    with pytest.raises(ImportError, match="needs the 'bezier' package: pip install bezier"):
+        bezier_triangle(np.zeros((7, 3)), 1)
