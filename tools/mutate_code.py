@@ -116,6 +116,9 @@ EQUIVALENT: dict[str, str] = {
     "core/basis.py:evaluate:const0:5feceb66#0":
         "count = 0 -> 1 for points without len(): count only feeds the size check count * delta_n > 2e8, and "
         "1 * delta_n <= delta_1000 = 3,003,001 for every n that check_n admits (n <= 1000), so it never fires",
+    "surfaces/limit.py:bezier_order:const0:6b86b273#0":
+        "for j in range(N + 1) -> range(N + 2): the extra j = N + 1 has the inner range(N + 1 - j) = range(0), "
+        "empty, so the list is the same",
 }
 
 _CMP = {ast.Lt: ast.LtE, ast.LtE: ast.Lt, ast.Gt: ast.GtE, ast.GtE: ast.Gt, ast.Eq: ast.NotEq, ast.NotEq: ast.Eq,
