@@ -1199,3 +1199,25 @@ def test_bezier_triangle_without_the_bezier_package_says_so(monkeypatch):
     monkeypatch.setitem(sys.modules, "bezier", None)  # import bezier raises ImportError
     with pytest.raises(ImportError, match="needs the 'bezier' package: pip install bezier"):
         bezier_triangle(np.zeros((7, 3)), 1)
+
+
+def test_rational_alpha_near_default_denominator_and_a_failed_ball_solve(monkeypatch):
+    from fractions import Fraction
+
+    import flint
+
+    from paper_repro.core import elevation as el
+
+    # tan(0.319/4) is best approximated by 39/488 with denominators <= 1000 and by 80/1001 with <= 1001
+    assert Fraction(np.tan(0.319 / 4)).limit_denominator(1000) == Fraction(39, 488)
+    assert el.rational_alpha_near(0.319).t == fmpq(39, 488)  # the documented default: denominator 1000
+
+    class Singular:  # a ball matrix that is not certified invertible
+        def __init__(self, *args):
+            pass
+
+        def solve(self, *args, **kwargs):
+            raise ZeroDivisionError
+
+    monkeypatch.setattr(flint, "arb_mat", Singular)
+    assert el._ball_solve(1, 1.0, 128) == (None, 0)  # nothing certified: 0 bits (the next precision doubles)

@@ -119,6 +119,11 @@ EQUIVALENT: dict[str, str] = {
     "surfaces/limit.py:bezier_order:const0:6b86b273#0":
         "for j in range(N + 1) -> range(N + 2): the extra j = N + 1 has the inner range(N + 1 - j) = range(0), "
         "empty, so the list is the same",
+    "core/elevation.py:_elevation_matrix_float:const0:60a33e6c#0":
+        "setflags(write=False) -> write=True on the cached float E: its only reader, elevation_matrix, returns a copy, "
+        "so no caller can reach the cached array to write it",
+    "core/elevation.py:_elevation_matrix_float:const0:b17ef6d1#0":
+        "lru_cache(maxsize=16) -> 17: one more cached matrix; every value is the same (recomputed or cached)",
 }
 
 _CMP = {ast.Lt: ast.LtE, ast.LtE: ast.Lt, ast.Gt: ast.GtE, ast.GtE: ast.Gt, ast.Eq: ast.NotEq, ast.NotEq: ast.Eq,
