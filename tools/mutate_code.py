@@ -56,7 +56,8 @@ _NOT_CLI = "not cli and not ctrl_c and not watchdog"
 MODULES: dict[str, list[str]] = {
     "core/alphas.py": ["tests/test_mutation_gaps.py"],
     "core/basis.py": ["tests/test_mutation_gaps.py", "tests/test_basis_arithmetics.py"],
-    "core/collocation.py": ["tests/test_mutation_gaps.py", "tests/test_collocation.py", "tests/test_transformation_all_n.py"],
+    "core/collocation.py": ["tests/test_mutation_gaps.py", "tests/test_collocation.py",
+                            "tests/test_transformation_all_n.py"],
     "core/context.py": ["tests/test_mutation_gaps.py", "tests/test_basis_arithmetics.py", "tests/test_collocation.py",
                         "tests/test_elevation_all_n.py", "tests/test_modp_elimination.py"],
     "core/derivatives_basis.py": ["tests/test_mutation_gaps.py", "tests/test_derivative_tables.py"],
