@@ -1221,3 +1221,15 @@ def test_rational_alpha_near_default_denominator_and_a_failed_ball_solve(monkeyp
 
     monkeypatch.setattr(flint, "arb_mat", Singular)
     assert el._ball_solve(1, 1.0, 128) == (None, 0)  # nothing certified: 0 bits (the next precision doubles)
+
+
+def test_layout_edges_point_to_the_middle_of_each_side_and_inwards():
+    from paper_repro.core.layout import edges
+
+    for n in (1, 2, 3):
+        for a, b in edges(n):
+            assert a.color == b.color
+            if a.j == b.j:  # a side edge of level j: between neighbours, towards i = n (the middle of the side)
+                assert abs(a.i - b.i) == 1 and abs(b.i - n) < abs(a.i - n)
+            else:  # inward: the same i, from level j to level j + 1
+                assert a.i == b.i and b.j == a.j + 1
