@@ -313,6 +313,14 @@ def _report(records: list[dict], per_module: int, seed: int, goal: float) -> tup
     skipped = {m: why for m, why in SKIPPED.items() if m not in by_mod}
     if skipped:
         md += ["", "Not run: " + "; ".join(f"`{m}` ({why})" for m, why in skipped.items()) + "."]
+    missing = [m for m in MODULES if m not in by_mod and m not in SKIPPED]
+    if missing:
+        md += ["", "Not measured yet (no records in this json; run `make mutate-code`, or `tools/mutate_code.py "
+               "--module ...`): " + ", ".join(f"`{m}`" for m in missing) + "."]
+    killed_by = [r for r in records if r.get("killed_by")]
+    if killed_by:
+        md += ["", f"{len(killed_by)} mutant(s) that survived the full run were killed on a recheck (`--recheck`) by "
+               "tests added since: " + ", ".join(f"`{r['key']}`" for r in killed_by) + "."]
     md += ["", "## Survivors (not equivalent: gaps in the tests)", ""]
     surv = [r for r in records if not r["killed"] and not r["equivalent"]]
     md += [f"* `{r['module']}:{r['line']}` {r['op']}: `{r['snippet']}` -> `{r.get('mutated', '')}` ({r['key']})"
