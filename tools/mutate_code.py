@@ -117,6 +117,8 @@ EQUIVALENT: dict[str, str] = {
     "core/basis.py:evaluate:const0:5feceb66#0":
         "count = 0 -> 1 for points without len(): count only feeds the size check count * delta_n > 2e8, and "
         "1 * delta_n <= delta_1000 = 3,003,001 for every n that check_n admits (n <= 1000), so it never fires",
+    "core/nets.py:net_from_labels:const0:6b86b273#1":
+        "reshape(-1) -> reshape(-2): numpy (2.x) takes any negative size as the one inferred dimension",
     "surfaces/limit.py:bezier_order:const0:6b86b273#0":
         "for j in range(N + 1) -> range(N + 2): the extra j = N + 1 has the inner range(N + 1 - j) = range(0), "
         "empty, so the list is the same",
@@ -238,13 +240,23 @@ def mutant_keys(module: str, source: str) -> list[str]:
     names = _qualnames(tree)
     seen: dict[tuple, int] = {}
     keys = []
+    lines = [line.encode() for line in source.splitlines(keepends=True)]
     for op, node, variant in _sites(tree):
-        snippet = ast.get_source_segment(source, node) or ""
+        snippet = _segment(lines, node)
         base = (names.get(id(node), "<module>"), f"{op}{variant}", hashlib.sha256(snippet.encode()).hexdigest()[:8])
         occ = seen.get(base, 0)
         seen[base] = occ + 1
         keys.append(f"{module}:{base[0]}:{base[1]}:{base[2]}#{occ}")
     return keys
+
+
+def _segment(lines: list[bytes], node: ast.AST) -> str:
+    """:func:`ast.get_source_segment` on the module's lines, encoded once (the offsets count UTF-8 bytes)."""
+    first, last = node.lineno - 1, node.end_lineno - 1  # type: ignore[attr-defined]
+    if first == last:
+        return lines[first][node.col_offset: node.end_col_offset].decode()  # type: ignore[attr-defined]
+    parts = [lines[first][node.col_offset:], *lines[first + 1: last], lines[last][: node.end_col_offset]]  # type: ignore[attr-defined]
+    return b"".join(parts).decode()
 
 
 def mutant_key(module: str, source: str, site_index: int) -> str:
