@@ -775,6 +775,9 @@ def test_univariate_basis_is_a_partition_of_unity_in_every_arithmetic():
             assert np.allclose(np.array(amp, dtype=float)[0], a[1], rtol=1e-14)
     # c_{2,1} = 2 cos(alpha/2) / sin^2(alpha/2), exactly at tan(alpha/4) = 1/2 (s = 4/5, c = 3/5)
     assert c_const(1, 1, rational_alpha(fmpq(1, 2)), "exact") == fmpq(2 * 3 * 25, 5 * 16)
+    for bad in (4.0, -1.0, 0.0):  # alpha outside (0, pi)
+        with pytest.raises(ValueError):
+            c_const(1, 1, bad)
     with pytest.raises(ValueError):
         c_numerator(1, 3)
     with pytest.raises(ValueError):
