@@ -786,6 +786,10 @@ def test_univariate_basis_is_a_partition_of_unity_in_every_arithmetic():
         A(1, 1.0, [1.1])
     with pytest.raises(ValueError, match=r"t must lie in \[0, alpha\]"):
         A(1, 1.0, [-0.01])
+    # rounding: t within 1e-12 alpha outside [0, alpha] is taken (alpha = 3: -1e-12 and 3 + 2e-12), farther is not
+    assert A(1, 3.0, [-1e-12, 3.0 + 2e-12]).shape == (2, 3)
+    with pytest.raises(ValueError):
+        A(1, 3.0, [-1e-11])
     b = bernstein(3, [0.25])
     assert [float(x) for x in b[0]] == [27 / 64, 27 / 64, 9 / 64, 1 / 64]
 
