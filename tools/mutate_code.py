@@ -120,6 +120,9 @@ EQUIVALENT: dict[str, str] = {
         "1 * delta_n <= delta_1000 = 3,003,001 for every n that check_n admits (n <= 1000), so it never fires",
     "core/nets.py:net_from_labels:const0:6b86b273#1":
         "reshape(-1) -> reshape(-2): numpy (2.x) takes any negative size as the one inferred dimension",
+    "core/exact_solve.py:_primes:arith0:748b9007#0":
+        "x = 2**62 - 1 -> 2**62 + 1 at the start of the descent by 2: 2^62 + 1 = 4^31 + 1 is divisible by 5 "
+        "(4 = -1 mod 5), so it is skipped and the primes found are the same",
     "surfaces/limit.py:bezier_order:const0:6b86b273#0":
         "for j in range(N + 1) -> range(N + 2): the extra j = N + 1 has the inner range(N + 1 - j) = range(0), "
         "empty, so the list is the same",
