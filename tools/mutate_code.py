@@ -123,6 +123,14 @@ EQUIVALENT: dict[str, str] = {
     "core/exact_solve.py:_primes:arith0:748b9007#0":
         "x = 2**62 - 1 -> 2**62 + 1 at the start of the descent by 2: 2^62 + 1 = 4^31 + 1 is divisible by 5 "
         "(4 = -1 mod 5), so it is skipped and the primes found are the same",
+    "core/exact_solve.py:_reconstruct_row:compare0:faf20822#1":
+        "y > half -> y >= half after the denominator is widened: mod is a product of odd primes, so y = half = "
+        "(mod - 1)/2 is either kept or becomes -(mod + 1)/2; both exceed bound = isqrt(mod // 2) in size, and the "
+        "next line returns None in both cases",
+    "core/exact_solve.py:_reconstruct_row:compare0:72066a7e#1":
+        "-bound <= y -> -bound < y: a numerator of exactly -bound is refused, so the row is reconstructed at the "
+        "next prime (a larger bound) instead; the returned X is the same exactly checked solution, without the "
+        "fallback (the module's design: the choices change the speed, never the result)",
     "surfaces/limit.py:bezier_order:const0:6b86b273#0":
         "for j in range(N + 1) -> range(N + 2): the extra j = N + 1 has the inner range(N + 1 - j) = range(0), "
         "empty, so the list is the same",
