@@ -131,6 +131,10 @@ EQUIVALENT: dict[str, str] = {
         "-bound <= y -> -bound < y: a numerator of exactly -bound is refused, so the row is reconstructed at the "
         "next prime (a larger bound) instead; the returned X is the same exactly checked solution, without the "
         "fallback (the module's design: the choices change the speed, never the result)",
+    "core/normalizing_formula.py:_scalar:bool0:c0319d08#0":
+        "not len and not getitem -> not len or not getitem: differs only for an object with exactly one of the two; "
+        "the scalars the contexts hold (float, int, mpf, fmpq, fmpz, arb: neither; fmpq_poly: both; numpy scalars: "
+        "np.generic, taken by the first test) never have exactly one",
     "surfaces/limit.py:bezier_order:const0:6b86b273#0":
         "for j in range(N + 1) -> range(N + 2): the extra j = N + 1 has the inner range(N + 1 - j) = range(0), "
         "empty, so the list is the same",
