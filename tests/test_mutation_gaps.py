@@ -1240,3 +1240,20 @@ def test_layout_edges_point_to_the_middle_of_each_side_and_inwards():
                 assert abs(a.i - b.i) == 1 and abs(b.i - n) < abs(a.i - n)
             else:  # inward: the same i, from level j to level j + 1
                 assert a.i == b.i and b.j == a.j + 1
+
+
+def test_basis_derivative_beyond_float64_says_so_and_mp_gives_it():
+    import sys
+
+    import mpmath
+
+    from paper_repro.core.derivatives_basis import basis_derivative
+
+    a = sys.float_info.min  # the smallest alpha: the derivatives are of size 1/alpha = 4.5e307 times the coefficients
+    corner = np.array([[a, 0.0, 0.0]])
+    with pytest.raises(OverflowError, match="use arith='mp'"):
+        basis_derivative(2, a, corner, "u")
+    with mpmath.workdps(30):
+        q = np.array([[mpmath.mpf(a), mpmath.mpf(0), mpmath.mpf(0)]], dtype=object)
+        big = max(abs(x) for x in basis_derivative(2, mpmath.mpf(a), q, "u", "mp", dps=30)[0])
+    assert big > sys.float_info.max  # it does exceed float64

@@ -135,6 +135,10 @@ EQUIVALENT: dict[str, str] = {
         "not len and not getitem -> not len or not getitem: differs only for an object with exactly one of the two; "
         "the scalars the contexts hold (float, int, mpf, fmpq, fmpz, arb: neither; fmpq_poly: both; numpy scalars: "
         "np.generic, taken by the first test) never have exactly one",
+    "core/basis.py:_monomials_by_pairs:const0:d4735e3a#4":
+        "exps[:, 2 var: 2 var + 2] -> exps[:, 2 var: 3 var + 2]: for v (var = 1) the slice takes w's sine exponent "
+        "as a third column; np.unique then groups by (a, b, e) instead of (a, b), finer groups of the same "
+        "sin^a cos^b (only columns 0 and 1 of the keys are used), so every product is the same",
     "surfaces/limit.py:bezier_order:const0:6b86b273#0":
         "for j in range(N + 1) -> range(N + 2): the extra j = N + 1 has the inner range(N + 1 - j) = range(0), "
         "empty, so the list is the same",
