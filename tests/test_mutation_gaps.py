@@ -1257,3 +1257,14 @@ def test_basis_derivative_beyond_float64_says_so_and_mp_gives_it():
         q = np.array([[mpmath.mpf(a), mpmath.mpf(0), mpmath.mpf(0)]], dtype=object)
         big = max(abs(x) for x in basis_derivative(2, mpmath.mpf(a), q, "u", "mp", dps=30)[0])
     assert big > sys.float_info.max  # it does exceed float64
+
+
+def test_sample_rational_points_default_denominator_below_one_half():
+    from paper_repro.core.domain import sample_rational_points
+
+    # documented: 1000 for alpha >= 1/2, growing like 1/alpha below: continuous at 1/2, so 500 / alpha
+    alpha = rational_alpha(fmpq(1, 40))
+    cap = int(500 / float(alpha))
+    default = sample_rational_points(alpha, 20, seed=0)
+    assert default == sample_rational_points(alpha, 20, seed=0, max_denominator=cap)
+    assert default != sample_rational_points(alpha, 20, seed=0, max_denominator=cap + 10)  # the cap matters here
