@@ -139,6 +139,8 @@ EQUIVALENT: dict[str, str] = {
         "exps[:, 2 var: 2 var + 2] -> exps[:, 2 var: 3 var + 2]: for v (var = 1) the slice takes w's sine exponent "
         "as a third column; np.unique then groups by (a, b, e) instead of (a, b), finer groups of the same "
         "sin^a cos^b (only columns 0 and 1 of the keys are used), so every product is the same",
+    "core/context.py:ObjectContext.asarray:const0:6b86b273#1":
+        "src.reshape(-1) -> reshape(-2): numpy (2.x) takes any negative size as the one inferred dimension",
     "surfaces/limit.py:bezier_order:const0:6b86b273#0":
         "for j in range(N + 1) -> range(N + 2): the extra j = N + 1 has the inner range(N + 1 - j) = range(0), "
         "empty, so the list is the same",
