@@ -1268,3 +1268,16 @@ def test_sample_rational_points_default_denominator_below_one_half():
     default = sample_rational_points(alpha, 20, seed=0)
     assert default == sample_rational_points(alpha, 20, seed=0, max_denominator=cap)
     assert default != sample_rational_points(alpha, 20, seed=0, max_denominator=cap + 10)  # the cap matters here
+
+
+def test_orbit_coefficients_beyond_the_certified_orders():
+    import math
+
+    from paper_repro.core.normalization import MAX_N_CERTIFIED, orbit_coefficients, scaled_orbit_coefficients
+    from paper_repro.core.normalizing_formula import sin_powers
+
+    n = MAX_N_CERTIFIED + 1  # the float route: r = (s^(2n+j) r) / s^(2n+j), the paper's scaling undone
+    r = orbit_coefficients(n, 2.0)
+    s = math.sin(1.0)
+    want = [x / s**k for x, k in zip(scaled_orbit_coefficients(n, 2.0), sin_powers(n))]
+    assert np.allclose(r, want, rtol=1e-12)

@@ -141,6 +141,11 @@ EQUIVALENT: dict[str, str] = {
         "sin^a cos^b (only columns 0 and 1 of the keys are used), so every product is the same",
     "core/context.py:ObjectContext.asarray:const0:6b86b273#1":
         "src.reshape(-1) -> reshape(-2): numpy (2.x) takes any negative size as the one inferred dimension",
+    "core/context.py:ModpContext.asarray:const0:6b86b273#0":
+        "src.reshape(-1) -> reshape(-2): numpy (2.x) takes any negative size as the one inferred dimension",
+    "core/normalization.py:orbit_coefficients:const0:d4735e3a#0":
+        "log(alpha / 2) -> log(alpha / 3) in the branch s = sin(alpha/2) <= 0, which no valid alpha reaches: "
+        "check_alpha admits alpha >= 2.2e-308, and then s >= 1.1e-308 > 0 (float64 subnormals)",
     "surfaces/limit.py:bezier_order:const0:6b86b273#0":
         "for j in range(N + 1) -> range(N + 2): the extra j = N + 1 has the inner range(N + 1 - j) = range(0), "
         "empty, so the list is the same",
