@@ -1281,3 +1281,17 @@ def test_orbit_coefficients_beyond_the_certified_orders():
     s = math.sin(1.0)
     want = [x / s**k for x, k in zip(scaled_orbit_coefficients(n, 2.0), sin_powers(n))]
     assert np.allclose(r, want, rtol=1e-12)
+
+
+def test_collocate_fmpq_default_number_of_point_sets():
+    from paper_repro.core.collocation import collocate_fmpq
+
+    calls = []
+
+    def singular(k):  # two equal collocation rows in every point set
+        calls.append(k)
+        return (np.array([[1, 1], [1, 1], [2, 1]], dtype=object), np.array([[1], [1], [3]], dtype=object))
+
+    with pytest.raises(ArithmeticError, match="singular for 10 point sets"):  # the documented default: 10
+        collocate_fmpq(singular, 2)
+    assert calls == list(range(10))
