@@ -18,7 +18,6 @@ import numpy as np
 import pytest
 from flint import fmpq
 
-from paper_repro.core import derivative_tables as dt
 from paper_repro.core.domain import rational_alpha, sample_points
 from paper_repro.core.fast import FloatKernel, trig_of_rows
 from paper_repro.core.labels import delta, exponent_matrix, variable_swap
@@ -32,13 +31,13 @@ def _as_dict(rows, cols, coefs):
 
 @pytest.mark.parametrize("n", [1, 2, 3])
 def test_tables_are_the_recovery(n):
-    assert _as_dict(*dm.derivative_polynomials(n)) == _as_dict(*dt.table(n))
+    assert _as_dict(*dm.derivative_polynomials(n)) == _as_dict(*dm.table(n))
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("n", range(4, dt.TABLE_MAX_N + 1))
+@pytest.mark.parametrize("n", range(4, dm.TABLE_MAX_N + 1))
 def test_tables_are_the_recovery_all(n):
-    assert _as_dict(*dm.derivative_polynomials(n)) == _as_dict(*dt.table(n))
+    assert _as_dict(*dm.derivative_polynomials(n)) == _as_dict(*dm.table(n))
 
 
 @pytest.mark.parametrize("n", [1, 2, 3])
@@ -56,7 +55,7 @@ def test_recovery_is_independent_of_points_parameters_and_prime(n):
         except ZeroDivisionError:
             continue
     kappa = int(alpha.cos_half.p) * pow(int(alpha.cos_half.q), -1, p) % p
-    rows, cols, coefs = dt.table(n)
+    rows, cols, coefs = dm.table(n)
     want = np.zeros_like(c)
     for i, j, co in zip(rows, cols, coefs.astype(np.int64)):
         want[i, j] = sum(int(x) * pow(kappa, d, p) for d, x in enumerate(co)) % p
@@ -67,13 +66,13 @@ def test_recovery_is_independent_of_points_parameters_and_prime(n):
 def test_direction_v_is_u_with_u_and_v_exchanged(n):
     direct = _as_dict(*dm.derivative_polynomials(n, direction=(0, 1, -1)))
     pi = variable_swap(n, 0, 1)
-    rows, cols, coefs = dt.table(n)
+    rows, cols, coefs = dm.table(n)
     assert direct == _as_dict(pi[rows], pi[cols], coefs)
 
 
 def test_found_pattern_on_the_tables():
-    for n in range(1, dt.TABLE_MAX_N + 1):
-        rows, cols, coefs = dt.table(n)
+    for n in range(1, dm.TABLE_MAX_N + 1):
+        rows, cols, coefs = dm.table(n)
         assert coefs.shape[1] == n + 2 and np.any(coefs[:, -1] != 0)  # degree n + 1, reached
         assert np.abs(coefs).max() == 2 * n
         per_column = np.bincount(cols, minlength=delta(n))
@@ -91,7 +90,7 @@ def test_route_through_c_against_the_brackets(n, alpha):
     pts = sample_points(alpha, 300, seed=n)
     sa = math.sin(alpha / 2)
     s, c = trig_of_rows(np.ascontiguousarray(pts.T), alpha, sa)
-    qu, qv = dt.derivative_nets(n, math.cos(alpha / 2), net)
+    qu, qv = dm.table_derivative_nets(n, math.cos(alpha / 2), net)
     basis = kern.basis_rows(s, c)
     via_c = [qu.T @ basis, qv.T @ basis]
     _, direct = kern.contract_derivatives(s, c, sa * sa, [(1, 0, -1), (0, 1, -1)], kern.split_net(net.T.copy()))
@@ -121,8 +120,8 @@ def test_patch_derivative_against_central_differences_in_mp(n, alpha):
 
 
 def test_orders_beyond_the_tables_take_the_direct_route():
-    n = dt.TABLE_MAX_N + 1
-    assert not dt.has_table(n)
+    n = dm.TABLE_MAX_N + 1
+    assert not dm.has_table(n)
     p = Patch(n, 1.0, np.random.default_rng(1).normal(size=(delta(n), 3)))
     pts = sample_points(1.0, 3, seed=1)
     ref = np.array(p.derivative(pts, "v", arith="mp", dps=30), dtype=float)
@@ -153,7 +152,7 @@ def test_tables_inside_the_certified_ball_solve(n, alpha):
             arb_mat(basis_derivative(n, a, pts, "u", ctx).tolist()), algorithm="precond")
         coef = scaled_coefficient_vector(n, a, ctx)
         kappa, two_s = (a / 2).cos(), 2 * (a / 2).sin()
-        rows, cols, coefs = dt.table(n)
+        rows, cols, coefs = dm.table(n)
         predicted = {}
         for g, f, co in zip(rows, cols, coefs):
             value = sum(int(x) * kappa ** d for d, x in enumerate(co))
@@ -200,13 +199,13 @@ def test_large_direction_components_do_not_overflow_on_the_way():
 
 def test_table_arguments_are_checked():
     with pytest.raises(ValueError, match="integer from 1 to"):
-        dt.table(2.0)
+        dm.table(2.0)
     with pytest.raises(ValueError, match="delta_n"):
-        dt.derivative_nets(1, 0.5, np.ones((8, 1)))
+        dm.table_derivative_nets(1, 0.5, np.ones((8, 1)))
     with pytest.raises(ValueError, match="delta_n"):
-        dt.derivative_nets(1, 0.5, np.ones(7))
+        dm.table_derivative_nets(1, 0.5, np.ones(7))
     with pytest.raises(ValueError, match="kappa"):
-        dt.derivative_nets(1, float("nan"), np.ones((7, 1)))
+        dm.table_derivative_nets(1, float("nan"), np.ones((7, 1)))
 
 
 def test_recovery_stops_when_every_parameter_is_singular(monkeypatch):

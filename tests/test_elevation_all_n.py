@@ -10,7 +10,6 @@ import numpy as np
 import pytest
 from flint import fmpq
 
-from paper_repro.core import derivative_tables as dt
 from paper_repro.core import half_angle_rules as hr
 from paper_repro.core.context import FloatContext, get_context
 from paper_repro.core.domain import rational_alpha, sample_points
@@ -26,6 +25,7 @@ from paper_repro.core.half_angle_matrices import (
 )
 from paper_repro.core.labels import delta
 from paper_repro.core.normalization import evaluate_normalized
+from paper_repro.theory import derivative_matrix as dt
 from paper_repro.theory import half_angle_checks as hc
 from paper_repro.util.limits import MAX_N_ELEVATION
 
@@ -126,7 +126,7 @@ def test_derivative_matrix_agrees_with_the_table_route(n):
     assert np.abs(c - ref).max() <= 1e-13 * max(1.0, np.abs(ref).max())
     net = np.random.default_rng(n).normal(size=(delta(n), 3))
     qu, qv = derivative_nets(n, a, net)
-    ru, rv = dt.derivative_nets(n, kappa, net)
+    ru, rv = dt.table_derivative_nets(n, kappa, net)
     assert np.abs(qu - ru).max() < 1e-11 and np.abs(qv - rv).max() < 1e-11
 
 

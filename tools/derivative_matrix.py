@@ -3,7 +3,7 @@
 The span of T_{2n} is closed under d/du (it is the span of cos/sin(pu + qv) over the hexagon |p|, |q|, |p - q| <= n,
 ``paper_repro.theory.question1.hexagon_check``), so the derivative along u of a patch with net ``p`` is the patch
 of the same order with net ``C^T``-transformed: ``sum_f dB_f p_f = sum_g B_g (C p)_g``; its normals are one
-6-coordinate point evaluation.  The library takes C from exact tables (:mod:`paper_repro.core.derivative_tables`,
+6-coordinate point evaluation.  The package tables of C (:mod:`paper_repro.theory.derivative_matrix`,
 integer polynomials in cos(alpha/2) recovered modulo primes).  This tool solves for C independently, in certified
 ball arithmetic (flint ``arb``, collocation at the alpha-independent points of the elevation solve), and reports,
 per n, its nonzero pattern and the time of the solve (what a float path would pay per (n, alpha) without the

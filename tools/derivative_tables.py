@@ -8,8 +8,7 @@ the closed form).  The file is the independent reference of claim ``derivative_a
 
 from __future__ import annotations
 
-from paper_repro.core.derivative_tables import TABLE_MAX_N, TABLES
-from paper_repro.theory.derivative_matrix import tables_text
+from paper_repro.theory.derivative_matrix import TABLE_MAX_N, TABLES, tables_text
 from paper_repro.util.io import write_text
 
 

@@ -109,7 +109,7 @@ def to_kappa(terms) -> dict:
 
 
 def check_tables(nmax: int) -> None:
-    from paper_repro.core.derivative_tables import table
+    from paper_repro.theory.derivative_matrix import table
     for n in range(1, nmax + 1):
         mine = to_kappa(hr.derivative_terms(n))
         rows, cols, coefs = table(n)

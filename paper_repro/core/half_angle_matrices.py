@@ -11,7 +11,7 @@ are evaluated here through a context (:mod:`paper_repro.core.context`): the same
   sigma = sin^2(alpha/2) with non-negative integer coefficients, so E >= 0 and its rows sum to 1: elevation is a
   convex combination for every n and alpha in (0, pi).
 * :func:`derivative_matrix`: C with ``2 s d/du m_f = sum_g C[g, f] m_g`` (u = (1, 0, -1)), the matrix of
-  :mod:`paper_repro.core.derivative_tables`, now for every n.
+  :mod:`paper_repro.theory.derivative_matrix` (the tables recovered modulo primes), now for every n.
 
 Float results are the same bits on every CPU: kappa and sigma are taken from flint ``arb`` (correctly rounded, no
 libm), then only elementwise ``+``, ``*`` and ``/`` in a fixed order (no BLAS, no reductions).  Each entry of M is a

@@ -25,11 +25,26 @@ The other directions follow by symmetry: T_{2n} is invariant under every permuta
 >>> rows, cols, coefs = derivative_polynomials(1)
 >>> len(rows), int(abs(coefs).max()), coefs.shape[1] - 1
 (20, 2, 2)
+
+The tables (package data ``paper_repro/resources/derivative_tables.json``, n <= :data:`TABLE_MAX_N`, written by
+``tools/derivative_tables.py`` from :func:`tables_text`) are read here too, beside the recovery that writes them and
+the checks that use them (issue 39, item 4: they were ``paper_repro.core.derivative_tables``, though no library code
+reads them since C has a proven closed form, :mod:`paper_repro.core.half_angle_matrices`): :func:`table` gives the
+integers, :func:`entries` their float values at ``kappa`` by Horner's rule and :func:`table_derivative_nets` the
+nets ``(q_u, q_v)`` of ``2 s d/du`` and ``2 s d/dv`` through them, the independent reference that claim
+``derivative_all_n`` (:func:`paper_repro.theory.half_angle_checks.tables_equal`) and the tests compare the closed
+form with (n <= 3 recovered again in the fast suite, every n <= 10 in the slow one).
+
+>>> import math
+>>> qu, qv = table_derivative_nets(1, math.cos(0.5), np.eye(7)[:, :1])   # the net of m_0 = S_u S_v S_w
+>>> np.nonzero(qu[:, 0])[0].tolist(), qu[np.nonzero(qu[:, 0])[0], 0].tolist()
+([4, 6], [1.0, -1.0])
 """
 
 from __future__ import annotations
 
 import json
+from functools import cache
 
 import numpy as np
 from flint import fmpq
@@ -38,9 +53,10 @@ from paper_repro.core.basis import monomials
 from paper_repro.core.context import ModpContext
 from paper_repro.core.derivatives_basis import monomial_derivative
 from paper_repro.core.domain import RationalPoints, rational_alpha, scaled_half_angle_values
-from paper_repro.core.labels import delta, exponent_matrix
+from paper_repro.core.labels import delta, exponent_matrix, variable_swap
 from paper_repro.core.normalization import fixed_points
 from paper_repro.theory.modular import _matmul_mod, _nmod_solve, primes_below
+from paper_repro.util.io import RESOURCES
 from paper_repro.util.validation import check_n
 
 #: The direction of the recovered matrix, (du, dv, dw).
@@ -132,3 +148,71 @@ def tables_text(nmax: int, progress: bool = False) -> str:
             print(f"  derivative tables: n = {n}, {len(rows)} entries", flush=True)
     lines.append("}}")
     return "\n".join(lines) + "\n"
+
+
+#: Largest order with a table (the float-accuracy claim's range; each table is exact integers, about 50 KB at n = 10).
+TABLE_MAX_N = 10
+
+#: The package data file.
+TABLES = RESOURCES / "derivative_tables.json"
+
+
+def has_table(n: int) -> bool:
+    """True when the derivative of order ``n`` goes through C (``1 <= n <= TABLE_MAX_N``)."""
+    return 1 <= n <= TABLE_MAX_N
+
+
+@cache
+def _all_tables() -> dict:
+    return json.loads(TABLES.read_text(encoding="utf-8"))["tables"]
+
+
+@cache
+def table(n: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """``(rows, cols, coefs)`` of C for the direction u: entry ``C[rows[e], cols[e]] = sum_d coefs[e, d] kappa^d``
+    (``coefs`` of shape ``(nnz, n + 2)``, integers as float64: exact, at most 2n in size); read-only arrays."""
+    if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or not has_table(int(n)):
+        raise ValueError(f"n must be an integer from 1 to {TABLE_MAX_N} for a table of C, got {n!r}")
+    n = int(n)
+    t = _all_tables()[str(n)]
+    out = (np.array(t["rows"], dtype=np.int64), np.array(t["cols"], dtype=np.int64),
+           np.array(t["coefs"], dtype=np.float64))
+    for a in out:
+        a.setflags(write=False)
+    return out
+
+
+def entries(n: int, kappa: float) -> np.ndarray:
+    """The float64 values of C's nonzero entries at ``kappa`` (Horner's rule in the order of :func:`table`);
+    each within ``(2 (n + 1) + 1) u sum_d |c_d| kappa^d`` of the exact polynomial (u = 2^-53)."""
+    coefs = table(n)[2]
+    val = coefs[:, -1].copy()
+    for d in range(coefs.shape[1] - 2, -1, -1):
+        val *= kappa
+        val += coefs[:, d]
+    return val
+
+
+def apply(n: int, vals: np.ndarray, net: np.ndarray) -> np.ndarray:
+    """``C net`` for a ``(delta_n, m)`` net, with the entry values ``vals`` of :func:`entries`: each output row
+    summed in the order of the table (deterministic)."""
+    rows, cols, _ = table(n)
+    out = np.zeros((delta(n), net.shape[1]))
+    np.add.at(out, rows, vals[:, None] * net[cols])
+    return out
+
+
+def table_derivative_nets(n: int, kappa: float, net: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """``(q_u, q_v)``: the nets of ``2 s d/du`` and ``2 s d/dv`` of the patch ``sum_f net[f] m_f``
+    (``net`` of shape ``(delta_n, m)``, on the scaled monomials, :func:`entries` at ``kappa = cos(alpha/2)``)."""
+    if not -1.0 <= kappa <= 1.0:
+        raise ValueError(f"kappa = cos(alpha/2) must be a number in [-1, 1], got {kappa!r}")
+    net = np.asarray(net, dtype=np.float64)
+    if net.ndim != 2 or net.shape[0] != delta(n):
+        raise ValueError(f"net must be a (delta_n, m) = ({delta(n)}, m) array for n = {n}, got shape {net.shape}")
+    vals = entries(n, kappa)
+    pi = variable_swap(n, 0, 1)  # m_{pi[f]}(u, v, w) = m_f(v, u, w)
+    qu = apply(n, vals, net)
+    qv = np.empty_like(qu)
+    qv[pi] = apply(n, vals, net[pi])
+    return qu, qv

@@ -246,9 +246,9 @@ def _strip(coefs) -> tuple[int, ...]:
 
 def tables_equal(n: int, form, recovered=None) -> bool:
     """C (``form``, in kappa) equals the recovered polynomials ``(rows, cols, coefs)``: the package table
-    (:func:`~paper_repro.core.derivative_tables.table`, n <= 10) when ``recovered`` is None."""
+    (:func:`~paper_repro.theory.derivative_matrix.table`, n <= 10) when ``recovered`` is None."""
     if recovered is None:
-        from paper_repro.core.derivative_tables import table
+        from paper_repro.theory.derivative_matrix import table
 
         recovered = table(n)
     rows, cols, coefs = recovered
