@@ -139,11 +139,6 @@ def reduced_matrix(n: int, alpha, pts: RationalPoints, ctx: Context) -> np.ndarr
         return ctx.add(sums, ctx.zeros(sums.shape))  # brings the sums back into the arithmetic (mod p)
 
 
-def reduced_matrix_exact(n: int, alpha: RationalAngle, pts: RationalPoints) -> np.ndarray:
-    """``(P, m)`` object array of fmpq: orbit sums of T_{2n} at the points."""
-    return reduced_matrix(n, alpha, pts, ExactContext())
-
-
 def solve_reduced(n: int, alpha, ctx: Context, *, verify: int = 3, seed: int = 0,
                   attempts: int = 5) -> Collocation:
     """Orbit coefficients (in :func:`orbits` order) by :func:`~paper_repro.core.collocation.collocate`.
