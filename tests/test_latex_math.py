@@ -289,3 +289,17 @@ def test_all_lines_read_count():
             total += 1
     assert total >= ALL_READ
     assert time.perf_counter() - t0 < 15
+
+
+def test_untagged_names_the_indexed_names_printed_without_alpha():
+    """``untagged``: the tag ``^{\\alpha}`` is dropped by ``parse``; ``untagged`` lists the names printed without
+    any superscript (a ``^{\\prime}`` or another superscript is not a missing tag), and a blank line raises."""
+    from paper_repro.printed.latex_math import LatexMathError, untagged
+
+    c, r, rbar = Function("c"), Function("r"), Function("Rbar")
+    assert untagged(r"r_{6,4,1}^{\alpha}=c_{6,4}\left( 2+\frac{1}{2}\right)") == [c(6, 4)]
+    assert untagged(r"r_{6,4,1}^{\alpha}=c_{6,4}^{\alpha}") == []
+    assert untagged(r"r_{6,4,1}=\overline{R}_{6,4,1}\left(u,v,w\right)+c_{6,4}^{\prime}") == [r(6, 4, 1),
+                                                                                               rbar(6, 4, 1)]
+    with pytest.raises(LatexMathError):
+        untagged("XXX")

@@ -69,7 +69,7 @@ from lark import Lark, Token, Transformer
 from lark.exceptions import LarkError, UnexpectedCharacters, UnexpectedEOF, UnexpectedInput
 
 __all__ = ["LatexMathError", "Relation", "parse", "parse_relation", "parse_cases", "parse_vector", "index_set",
-           "inline_math", "evaluate_sums", "Term", "terms", "clean", "D", "Family", "Cases", "PM"]
+           "inline_math", "evaluate_sums", "Term", "terms", "untagged", "clean", "D", "Family", "Cases", "PM"]
 
 
 class LatexMathError(ValueError):
@@ -825,6 +825,8 @@ class _Build(Transformer):
         name = _name(base)
         idx = list(sub) if isinstance(sub, sympy.Tuple) else [sub]
         if sup is None or sup == _TAG or sup == sympy.Tuple(_TAG):
+            if sup is None and _UNTAGGED is not None:
+                _UNTAGGED.append(_fn(name, idx))
             return _fn(name, idx)
         if sup == "prime":
             return _fn(name + "_prime", idx)
@@ -859,6 +861,23 @@ class _Build(Transformer):
 
 
 _BUILDER = _Build([])
+_UNTAGGED: list | None = None  # while untagged() reads: the indexed names printed without a superscript
+
+
+def untagged(tex: str) -> list:
+    r"""The indexed names of the relation ``tex`` printed without a superscript (the tag ``^{\alpha}`` of the
+    notation is dropped by :func:`parse`; this says where it was missing), in the order read.
+
+    >>> untagged(r"r_{6,4,1}^{\alpha}=c_{6,4}\left( 2+\frac{1}{2}\right)")
+    [c(6, 4)]
+    """
+    global _UNTAGGED
+    saved, _UNTAGGED = _UNTAGGED, []
+    try:
+        parse_relation(tex)
+        return list(_UNTAGGED)
+    finally:
+        _UNTAGGED = saved
 
 
 def _as_basic(x):
