@@ -1,0 +1,296 @@
+r"""What the line checks do with the objects the one reader of the paper's mathematics returns.
+
+Every text of the paper is read by :mod:`paper_repro.printed.latex_math` (``parse``, ``parse_relation``,
+``index_set``, ``terms``, ``evaluate_sums``); nothing here reads LaTeX with a regular expression.  This module only
+*interprets* the parsed sympy objects the way the checks of Sections 5--7 (and the proof of Theorem
+joint_systems_linear_independence) need them:
+
+* :func:`expression`, :func:`chain` -- a scalar expression / an (in)equality chain ``c<\mu\leq a``, refusing
+  anything else (a relation where an expression is printed, a membership where a chain is);
+* :func:`bound` -- the value of a printed bound (``2n-1-j`` at ``n=3, j=1``);
+* :func:`listed_range` -- the clause ``i=j+1,j+2,\ldots,n-1`` of a parsed relation as ``(i, j + 1, n - 1)``
+  (the step between the listed items must be one, ``\ldots`` must come before the last item);
+* :func:`progression` -- the values of a listed range at given n, r (any constant step);
+* :func:`interval` -- the clause ``x\in\left[0,\alpha\right]`` as ``(0, alpha)``;
+* :func:`constants_as_factors` -- the paper's constants ``c``, ``r``, ``g``, ``b`` are numbers: a parenthesis the
+  reader appended to one as an argument list is a factor (``c_{6,4}\left(2+..\right)``);
+* :func:`expand_sums` -- every sum written out (bounds must be numbers, empty when they cross, as the paper means);
+* :func:`untagged_names` -- the indexed names printed without the tag ``^{\alpha}`` of the notation;
+* :func:`linear_terms`, :func:`point_label` -- a linear combination of control points;
+* :func:`exact_value`, :func:`evaluate_in`, :func:`relation_holds` -- exact evaluation (python-flint numbers).
+
+>>> expression(r"\frac{1+\sqrt{5}}{2}\mu") == (1 + sympy.sqrt(5)) / 2 * MU
+True
+>>> chain(r"c<\mu\leq a")
+([c, mu, a], ['<', '<='])
+>>> listed_range(latex_math.parse_relation(r"\gamma_{2n,2n-i,0}^{\prime}=0,~i=1,2,\ldots,2n."), "i")
+(i, 1, 2*n)
+>>> bound("2n-1-j", n=3, j=1)
+4
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import sympy
+from sympy.core.function import AppliedUndef
+
+from paper_repro.printed import latex_math
+from paper_repro.printed.latex_math import LDOTS, LatexMathError, Relation
+
+ALPHA, VARRHO, RHO, MU, VARPHI, PSI = sympy.symbols("alpha varrho rho mu varphi psi")
+A, B, C, U, V, W = sympy.symbols("a b c u v w")
+
+_TESTS = {"<": lambda x, y: x < y, ">": lambda x, y: x > y, "=": lambda x, y: x == y, "<=": lambda x, y: x <= y,
+          ">=": lambda x, y: x >= y, "!=": lambda x, y: x != y}
+
+
+# -- expressions and chains ------------------------------------------------------------------------------------
+def expression(tex: str) -> sympy.Expr:
+    """One scalar expression (:func:`latex_math.parse`); ``LatexMathError`` if anything is unread or the text is
+    not a scalar expression (a blank line ``XXX`` is refused by the reader)."""
+    out = latex_math.parse(tex)
+    if not isinstance(out, sympy.Expr):
+        raise LatexMathError(f"not a scalar expression: {tex[:40]!r}")
+    return out
+
+
+def chain(tex: str) -> tuple[list[sympy.Expr], list[str]]:
+    """A chain ``e0 op1 e1 op2 e2 ...`` with ops ``=``, ``!=``, ``<``, ``<=``, ``>``, ``>=`` and nothing after it
+    (:func:`latex_math.parse_relation`): the parts and the ops."""
+    rel = latex_math.parse_relation(tex)
+    if not rel.ops or rel.conditions or rel.lead:
+        raise LatexMathError(f"not a bare relation chain: {tex[:40]!r}")
+    if any(op not in _TESTS for op in rel.ops):
+        raise LatexMathError(f"relation {rel.ops} is not an (in)equality chain")
+    return list(rel.parts), list(rel.ops)
+
+
+def relation_holds(parts: list, ops: list[str]) -> bool:
+    """Whether a chain of numbers satisfies every relation."""
+    return all(bool(_TESTS[op](parts[k], parts[k + 1])) for k, op in enumerate(ops))
+
+
+# -- bounds, listed ranges, intervals --------------------------------------------------------------------------
+def _env(env: dict) -> dict:
+    return {sympy.Symbol(k) if isinstance(k, str) else k: v for k, v in env.items()}
+
+
+def bound(expr: Any, **env: int) -> int:
+    """The integer value of a printed bound (a text, read by :func:`latex_math.parse`, or a parsed expression) at
+    ``env``; ``ValueError`` if it names a variable not in ``env`` or is not an integer there.
+
+    >>> bound(latex_math.parse("2n-(r+1)"), n=4, r=1)
+    6
+    """
+    e = latex_math.parse(expr) if isinstance(expr, str) else sympy.sympify(expr)
+    v = e.subs(_env(env))
+    if not getattr(v, "is_Integer", False):
+        raise ValueError(f"bound {expr} is not an integer at {env}: {v}")
+    return int(v)
+
+
+def _clause(rel: Relation, var: str, op: str) -> Relation:
+    sym = sympy.Symbol(var)
+    found = [c for c in [rel, *rel.conditions] if len(c.parts) == 2 and c.ops == [op] and c.parts[0] == sym]
+    if len(found) != 1:
+        raise LatexMathError(f"expected one clause '{var} {op} ..', found {len(found)}")
+    return found[0]
+
+
+def listed(rel: Relation, var: str) -> list:
+    """The items of the listed range ``var=a,b,\\ldots,c`` of a parsed relation (a clause of op ``in`` whose right
+    part is a ``Tuple`` with ``ldots`` before its last item)."""
+    right = _clause(rel, var, "in").parts[1]
+    if not isinstance(right, sympy.Tuple):
+        raise LatexMathError(f"{var} is not in a listed range: {right}")
+    items = list(right)
+    if items.count(LDOTS) != 1 or items.index(LDOTS) != len(items) - 2 or len(items) < 3:
+        raise LatexMathError(f"no '\\ldots' before the last listed item of {var!r}: {items}")
+    return items
+
+
+def listed_range(rel: Relation, var: str) -> tuple[sympy.Symbol, sympy.Expr, sympy.Expr]:
+    """``(Symbol(var), first, last)`` of the listed range ``var=a,a+1,\\ldots,b`` of a parsed relation: the step
+    between consecutive listed items must be one."""
+    items = listed(rel, var)
+    head = items[:-2]
+    for a, b in zip(head, head[1:]):
+        if sympy.simplify(b - a) != 1:
+            raise LatexMathError(f"the listed range of {var!r} does not step by one: {items}")
+    return sympy.Symbol(var), head[0], items[-1]
+
+
+def progression(items: list, **env: int) -> list[int]:
+    """The values of listed items ``a, b, \\ldots, c`` at ``env`` (the step is b - a; ``a, \\ldots, c`` has step 1);
+    an empty list (c < a) or a non-positive step is refused."""
+    if len(items) not in (3, 4) or items[-2] != LDOTS:
+        raise ValueError(f"not a list 'a, b, ..., c': {items!r}")
+    first, last = bound(items[0], **env), bound(items[-1], **env)
+    step = bound(items[1], **env) - first if len(items) == 4 else 1
+    if step <= 0 or last < first:
+        raise ValueError(f"unread list {items!r} (an empty list a, ..., c with c < a is refused)")
+    return list(range(first, last + 1, step))
+
+
+def interval(rel: Relation, var: str) -> tuple[sympy.Expr, sympy.Expr]:
+    """``(lo, hi)`` of the clause ``var\\in\\left[lo,hi\\right]`` of a parsed relation (closed interval)."""
+    right = _clause(rel, var, "in").parts[1]
+    if not isinstance(right, sympy.Interval) or right.left_open or right.right_open:
+        raise LatexMathError(f"{var} is not in a closed interval: {right}")
+    return right.start, right.end
+
+
+# -- the paper's constants, sums, tags ---------------------------------------------------------------------------
+CONSTANTS = ("c", "r", "g", "b")  # univariate constants and normalizing coefficients: numbers, not functions
+
+
+def constants_as_factors(e):
+    """``c(6, 4, Tuple(x))`` -> ``c(6, 4) * x``: the reader appends a parenthesis after an indexed name as its
+    argument list; after a constant of the notation (``c``, ``r``, ``g``, ``b``) it is a factor."""
+    if e is None:
+        return None
+
+    def fix(f):
+        if f.func.__name__ in CONSTANTS and f.args and isinstance(f.args[-1], sympy.Tuple) and len(f.args[-1]) == 1:
+            return sympy.Function(f.func.__name__)(*f.args[:-1]) * f.args[-1][0]
+        return f
+
+    return e.replace(lambda x: isinstance(x, AppliedUndef), fix)
+
+
+def expand_sums(e):
+    """Every ``Sum`` written out (:func:`latex_math.evaluate_sums`: empty when the bounds cross); ``LatexMathError``
+    if a bound is not a number."""
+    out = latex_math.evaluate_sums(e)
+    if isinstance(out, sympy.Basic) and out.has(sympy.Sum):
+        raise LatexMathError(f"a sum whose bounds are not numbers in {out}")
+    return out
+
+
+def untagged_names(tex: str) -> list:
+    """The indexed names of ``tex`` printed without the tag ``^{\\alpha}`` of the notation
+    (:func:`latex_math.untagged`)."""
+    return latex_math.untagged(tex)
+
+
+# -- linear combinations of control points -----------------------------------------------------------------------
+def linear_terms(expr) -> dict:
+    """``{atom: coefficient}`` of an expression linear in applied names (``r_vec(6, 5, 0)``); ``ValueError`` if it is
+    not linear in them (a product of two points, a point in a denominator)."""
+    e = sympy.expand(expr)
+    atoms = sorted(e.atoms(AppliedUndef), key=str)
+    coefs = {a: sympy.expand(e.diff(a)) for a in atoms}
+    if any(c.atoms(AppliedUndef) for c in coefs.values()) or sympy.expand(e - sum(c * a for a, c in coefs.items())):
+        raise ValueError(f"not a linear combination of points: {expr}")
+    return coefs
+
+
+def point_label(atom) -> str:
+    """``r_{6,5,0}`` of the parsed ``r_vec(6, 5, 0)``."""
+    name = atom.func.__name__
+    if not name.endswith("_vec") or len(atom.args) != 3:
+        raise ValueError(f"not a control point: {atom}")
+    return f"{name[:-4]}_{{{','.join(str(int(a)) for a in atom.args)}}}"
+
+
+# -- exact evaluation --------------------------------------------------------------------------------------------
+def _linear_angle(arg: sympy.Expr, bases: dict) -> list[tuple[int, sympy.Symbol]]:
+    """``arg = sum k_s (s / den_s)`` with integers ``k_s`` over the base angles ``s / den_s`` of ``bases``."""
+    arg = sympy.expand(arg)
+    out = []
+    if not arg.free_symbols <= set(bases):
+        raise LatexMathError(f"trigonometric argument {arg} names an unknown angle")
+    for s in arg.free_symbols:
+        coeff = arg.coeff(s)
+        k = sympy.nsimplify(coeff * bases[s][0])
+        if not k.is_Integer:
+            raise LatexMathError(f"trigonometric argument {arg}: {coeff} {s} is not a multiple of {s}/{bases[s][0]}")
+        out.append((int(k), s))
+    if sympy.expand(arg - sum(k * s / bases[s][0] for k, s in out)) != 0:
+        raise LatexMathError(f"trigonometric argument {arg} has a constant term")
+    return out
+
+
+def exact_value(expr: sympy.Expr, values: dict, bases: dict, zero):
+    """``expr`` at ``values`` (symbol -> exact number) with ``bases``: symbol -> ``(den, cos(s/den), sin(s/den))``;
+    ``sin``/``cos``/``tan`` of an integer combination of the base angles from ``(cos + i sin)`` products.  ``zero``
+    is the zero of the number type (``fmpq(0)``)."""
+
+    def cs(terms: list[tuple[int, sympy.Symbol]]):
+        c, s = zero + 1, zero
+        for k, sym in terms:
+            _, cb, sb = bases[sym]
+            for _ in range(abs(k)):
+                sb_k = sb if k > 0 else -sb
+                c, s = c * cb - s * sb_k, s * cb + c * sb_k
+        return c, s
+
+    def ev(e: sympy.Expr):
+        if e.is_Integer:
+            return zero + int(e)
+        if e.is_Rational:
+            return (zero + int(e.p)) / int(e.q)
+        if e in values:
+            return zero + values[e]
+        if e.is_Add:
+            out = zero
+            for a in e.args:
+                out = out + ev(a)
+            return out
+        if e.is_Mul:
+            out = zero + 1
+            for a in e.args:
+                out = out * ev(a)
+            return out
+        if e.is_Pow and e.exp.is_Integer:
+            base = ev(e.base)
+            return base ** int(e.exp) if int(e.exp) >= 0 else 1 / base ** (-int(e.exp))
+        if isinstance(e, (sympy.sin, sympy.cos, sympy.tan)):
+            c, s = cs(_linear_angle(e.args[0], bases))
+            return s if isinstance(e, sympy.sin) else c if isinstance(e, sympy.cos) else s / c
+        raise LatexMathError(f"cannot evaluate {e} exactly")
+
+    return ev(expr)
+
+
+def evaluate_in(expr, K, values: dict, squares: dict | None = None):
+    """Value of a parsed expression in the arithmetic of ``K`` (a constructor of constants: ``fmpq``,
+    ``RatFunc.const``, an mpoly constant): ``values`` maps sympy atoms (``r(2, 2, 0)``, ``sin(alpha/2)``, ...) to
+    values; ``squares`` maps an atom whose even powers only occur (``cos(alpha/2)``) to the value of its square.
+    Sums, products and integer powers only; anything else raises ``ValueError``."""
+    squares = squares or {}
+
+    def power(base, k: int):
+        out = K(1)
+        for _ in range(abs(k)):
+            out = out * base if k >= 0 else out / base
+        return out
+
+    def ev(e):
+        if e in values:
+            return values[e]
+        if isinstance(e, sympy.Integer):
+            return K(int(e))
+        if isinstance(e, sympy.Rational):
+            return K(int(e.p)) / K(int(e.q))
+        if isinstance(e, (sympy.Add, sympy.Mul)):
+            out = ev(e.args[0])
+            for a in e.args[1:]:
+                out = out + ev(a) if isinstance(e, sympy.Add) else out * ev(a)
+            return out
+        if isinstance(e, sympy.Pow) and isinstance(e.exp, sympy.Integer):
+            k = int(e.exp)
+            if e.base in squares and k % 2 == 0:
+                return power(squares[e.base], k // 2)
+            return power(ev(e.base), k)
+        raise ValueError(f"cannot evaluate {e!r}")
+
+    return ev(expr)
+
+
+__all__ = ["ALPHA", "VARRHO", "RHO", "MU", "VARPHI", "PSI", "A", "B", "C", "U", "V", "W", "expression", "chain",
+           "relation_holds", "bound", "listed", "listed_range", "progression", "interval", "CONSTANTS",
+           "constants_as_factors", "expand_sums", "untagged_names", "linear_terms", "point_label", "exact_value",
+           "evaluate_in"]
