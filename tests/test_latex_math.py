@@ -303,3 +303,20 @@ def test_untagged_names_the_indexed_names_printed_without_alpha():
                                                                                                rbar(6, 4, 1)]
     with pytest.raises(LatexMathError):
         untagged("XXX")
+
+
+def test_parse_conditions_reads_clauses_alone():
+    """``parse_conditions``: the clauses that follow a relation, read alone (a ``\\forall`` clause, listed ranges,
+    an interval); a doubled comma and a blank line raise."""
+    from paper_repro.printed.latex_math import LDOTS, LatexMathError, parse_conditions
+
+    i, j, n, x, alpha = Symbol("i"), Symbol("j"), Symbol("n"), Symbol("x"), Symbol("alpha")
+    (c,) = parse_conditions(r",~\forall i=0,1,\ldots,n.")
+    assert (c.parts, c.ops, c.quantifier) == ([i, sympy.Tuple(0, 1, LDOTS, n)], ["in"], "forall")
+    cs = parse_conditions(r",~j=0,1,\ldots ,n-1,~i=j+1,j+2,\ldots,n-1,")
+    assert [c.parts for c in cs] == [[j, sympy.Tuple(0, 1, LDOTS, n - 1)], [i, sympy.Tuple(j + 1, j + 2, LDOTS, n - 1)]]
+    (c,) = parse_conditions(r"x\in\left[ 0,\alpha\right]")
+    assert c.parts == [x, sympy.Interval(0, alpha)]
+    for bad in (r",~j=0,1,\ldots ,n-1,~i=j,j+1,,\ldots,2n-1-j,", "XXX"):
+        with pytest.raises(LatexMathError):
+            parse_conditions(bad)

@@ -69,7 +69,7 @@ from lark import Lark, Token, Transformer
 from lark.exceptions import LarkError, UnexpectedCharacters, UnexpectedEOF, UnexpectedInput
 
 __all__ = ["LatexMathError", "Relation", "parse", "parse_relation", "parse_cases", "parse_vector", "index_set",
-           "inline_math", "evaluate_sums", "Term", "terms", "untagged", "clean", "D", "Family", "Cases", "PM"]
+           "inline_math", "evaluate_sums", "Term", "terms", "untagged", "parse_conditions", "clean", "D", "Family", "Cases", "PM"]
 
 
 class LatexMathError(ValueError):
@@ -1048,6 +1048,21 @@ def parse_relation(tex: str) -> Relation:
     r.conditions = _conditions(chunks[k:], arrays) if len(chunks) > k else []
     r.continues = cont
     return r
+
+
+def parse_conditions(tex: str) -> list[Relation]:
+    r"""A list of clauses alone, as they follow a relation (each a :class:`Relation`; a listed range
+    ``i=0,1,\ldots,2n`` is one clause ``i in (0, 1, ldots, 2n)``; ``\forall`` sets ``quantifier``); leading commas
+    are skipped.
+
+    >>> [(c.parts, c.ops, c.quantifier) for c in parse_conditions(r",~\forall i=0,1,\ldots,n.")]
+    [([i, (0, 1, ldots, n)], ['in'], 'forall')]
+    """
+    arrays: list = []
+    s = clean(tex, arrays).lstrip(", ")
+    if not s:
+        raise LatexMathError("nothing to read")
+    return _conditions(_split_top(s), arrays)
 
 
 _DISPLAY = re.compile(r"\\\[(.*?)(\\\]|$)|\\begin\{(equation|align)\*?\}(.*?)(\\end\{(equation|align)\*?\}|$)", re.S)
