@@ -91,30 +91,43 @@ def bound(expr: Any, **env: int) -> int:
     return int(v)
 
 
-def _clause(rel: Relation, var: str, op: str) -> Relation:
+def clauses(src: Relation | str) -> list[Relation]:
+    """The relation and its clauses (a parsed :class:`Relation`), or the clauses of a text: each ``$..$`` segment of
+    a prose line (or the whole text) read by :func:`latex_math.parse_conditions`; a segment the reader refuses
+    gives no clause."""
+    if isinstance(src, Relation):
+        return [src, *src.conditions]
+    out: list[Relation] = []
+    for seg in latex_math.inline_math(src) or [src]:
+        try:
+            out += latex_math.parse_conditions(seg)
+        except LatexMathError:
+            continue
+    return out
+
+
+def _clause(src: Relation | str, var: str, op: str, kind: type) -> Relation:
+    """The first clause ``var op X`` with ``X`` of type ``kind`` (``LatexMathError`` if there is none)."""
     sym = sympy.Symbol(var)
-    found = [c for c in [rel, *rel.conditions] if len(c.parts) == 2 and c.ops == [op] and c.parts[0] == sym]
-    if len(found) != 1:
-        raise LatexMathError(f"expected one clause '{var} {op} ..', found {len(found)}")
-    return found[0]
+    for c in clauses(src):
+        if len(c.parts) == 2 and c.ops == [op] and c.parts[0] == sym and isinstance(c.parts[1], kind):
+            return c
+    raise LatexMathError(f"no clause '{var} {op} ..' ({kind.__name__}) read")
 
 
-def listed(rel: Relation, var: str) -> list:
-    """The items of the listed range ``var=a,b,\\ldots,c`` of a parsed relation (a clause of op ``in`` whose right
-    part is a ``Tuple`` with ``ldots`` before its last item)."""
-    right = _clause(rel, var, "in").parts[1]
-    if not isinstance(right, sympy.Tuple):
-        raise LatexMathError(f"{var} is not in a listed range: {right}")
-    items = list(right)
+def listed(src: Relation | str, var: str) -> list:
+    """The items of the (first) listed range ``var=a,b,\\ldots,c`` of a parsed relation or a text (a clause of op
+    ``in`` whose right part is a ``Tuple`` with ``ldots`` before its last item)."""
+    items = list(_clause(src, var, "in", sympy.Tuple).parts[1])
     if items.count(LDOTS) != 1 or items.index(LDOTS) != len(items) - 2 or len(items) < 3:
         raise LatexMathError(f"no '\\ldots' before the last listed item of {var!r}: {items}")
     return items
 
 
-def listed_range(rel: Relation, var: str) -> tuple[sympy.Symbol, sympy.Expr, sympy.Expr]:
-    """``(Symbol(var), first, last)`` of the listed range ``var=a,a+1,\\ldots,b`` of a parsed relation: the step
-    between consecutive listed items must be one."""
-    items = listed(rel, var)
+def listed_range(src: Relation | str, var: str) -> tuple[sympy.Symbol, sympy.Expr, sympy.Expr]:
+    """``(Symbol(var), first, last)`` of the listed range ``var=a,a+1,\\ldots,b`` of a parsed relation or a text:
+    the step between consecutive listed items must be one."""
+    items = listed(src, var)
     head = items[:-2]
     for a, b in zip(head, head[1:]):
         if sympy.simplify(b - a) != 1:
@@ -134,10 +147,11 @@ def progression(items: list, **env: int) -> list[int]:
     return list(range(first, last + 1, step))
 
 
-def interval(rel: Relation, var: str) -> tuple[sympy.Expr, sympy.Expr]:
-    """``(lo, hi)`` of the clause ``var\\in\\left[lo,hi\\right]`` of a parsed relation (closed interval)."""
-    right = _clause(rel, var, "in").parts[1]
-    if not isinstance(right, sympy.Interval) or right.left_open or right.right_open:
+def interval(src: Relation | str, var: str) -> tuple[sympy.Expr, sympy.Expr]:
+    """``(lo, hi)`` of the (first) clause ``var\\in\\left[lo,hi\\right]`` of a parsed relation or a text (a
+    closed interval)."""
+    right = _clause(src, var, "in", sympy.Interval).parts[1]
+    if right.left_open or right.right_open:
         raise LatexMathError(f"{var} is not in a closed interval: {right}")
     return right.start, right.end
 
@@ -160,6 +174,27 @@ def constants_as_factors(e):
     return e.replace(lambda x: isinstance(x, AppliedUndef), fix)
 
 
+def relation(tex: str) -> Relation:
+    """A chain of relations with the constants read as numbers (:func:`constants_as_factors`): a row ``& =b`` that
+    continues a chain has the part None first (``parts [None, b]``, ``ops ['=']``); trailing clauses are refused
+    (the checks read them with :func:`listed_range` and :func:`interval`)."""
+    rel = latex_math.parse_relation(tex)
+    if rel.conditions:
+        raise LatexMathError(f"clauses {rel.conditions} after the relation")
+    parts = [constants_as_factors(p) for p in rel.parts]
+    if rel.lead is not None:
+        return Relation([None, *parts], [rel.lead, *rel.ops])
+    return Relation(parts, list(rel.ops))
+
+
+def value(tex: str):
+    """One expression with the constants read as numbers (a relation or a clause is refused)."""
+    rel = latex_math.parse_relation(tex)
+    if rel.ops or len(rel.parts) != 1 or rel.conditions or rel.lead:
+        raise LatexMathError(f"a relation, not an expression: {tex[:60]!r}")
+    return constants_as_factors(rel.parts[0])
+
+
 def expand_sums(e):
     """Every ``Sum`` written out (:func:`latex_math.evaluate_sums`: empty when the bounds cross); ``LatexMathError``
     if a bound is not a number."""
@@ -169,10 +204,14 @@ def expand_sums(e):
     return out
 
 
-def untagged_names(tex: str) -> list:
-    """The indexed names of ``tex`` printed without the tag ``^{\\alpha}`` of the notation
-    (:func:`latex_math.untagged`)."""
-    return latex_math.untagged(tex)
+TAGGED = ("r", "g", "b", "c", "R", "G", "B", "L", "Rbar", "Gbar", "Bbar", "Tbar")  # named objects that carry alpha
+
+
+def untagged_names(tex: str) -> list[str]:
+    """The named objects of the notation (:data:`TAGGED`) printed in ``tex`` without the tag ``^{\\alpha}``, as
+    ``c_{6,4}`` (:func:`latex_math.untagged`)."""
+    return [f"{f.func.__name__}_{{{','.join(str(a) for a in f.args)}}}" for f in latex_math.untagged(tex)
+            if f.func.__name__ in TAGGED]
 
 
 # -- linear combinations of control points -----------------------------------------------------------------------
@@ -291,6 +330,6 @@ def evaluate_in(expr, K, values: dict, squares: dict | None = None):
 
 
 __all__ = ["ALPHA", "VARRHO", "RHO", "MU", "VARPHI", "PSI", "A", "B", "C", "U", "V", "W", "expression", "chain",
-           "relation_holds", "bound", "listed", "listed_range", "progression", "interval", "CONSTANTS",
-           "constants_as_factors", "expand_sums", "untagged_names", "linear_terms", "point_label", "exact_value",
-           "evaluate_in"]
+           "relation_holds", "bound", "clauses", "listed", "listed_range", "progression", "interval", "CONSTANTS",
+           "constants_as_factors", "relation", "value", "expand_sums", "TAGGED", "untagged_names", "linear_terms",
+           "point_label", "exact_value", "evaluate_in"]
