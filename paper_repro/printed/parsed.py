@@ -147,6 +147,19 @@ def progression(items: list, **env: int) -> list[int]:
     return list(range(first, last + 1, step))
 
 
+def index_set(tex: str) -> list[tuple]:
+    """The bounds of the last bounded set of ``tex`` (:func:`latex_math.index_set`); in a prose line, of the last
+    ``$..$`` segment that has one."""
+    segs = latex_math.inline_math(tex) or [tex]
+    for seg in reversed(segs):
+        try:
+            return latex_math.index_set(seg)
+        except LatexMathError:
+            if len(segs) == 1:
+                raise
+    raise LatexMathError(f"no index set _{{v=lo,..}}^{{hi,..}} in {tex[:60]!r}")
+
+
 def interval(src: Relation | str, var: str) -> tuple[sympy.Expr, sympy.Expr]:
     """``(lo, hi)`` of the (first) clause ``var\\in\\left[lo,hi\\right]`` of a parsed relation or a text (a
     closed interval)."""
@@ -330,6 +343,6 @@ def evaluate_in(expr, K, values: dict, squares: dict | None = None):
 
 
 __all__ = ["ALPHA", "VARRHO", "RHO", "MU", "VARPHI", "PSI", "A", "B", "C", "U", "V", "W", "expression", "chain",
-           "relation_holds", "bound", "clauses", "listed", "listed_range", "progression", "interval", "CONSTANTS",
-           "constants_as_factors", "relation", "value", "expand_sums", "TAGGED", "untagged_names", "linear_terms",
-           "point_label", "exact_value", "evaluate_in"]
+           "relation_holds", "bound", "index_set", "clauses", "listed", "listed_range", "progression", "interval",
+           "CONSTANTS", "constants_as_factors", "relation", "value", "expand_sums", "TAGGED", "untagged_names",
+           "linear_terms", "point_label", "exact_value", "evaluate_in"]

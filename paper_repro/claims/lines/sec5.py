@@ -367,14 +367,13 @@ def check_orders(tex: str, n_max: int = 3) -> tuple[bool, dict]:
 @line_check("sec4_5-unknowns")
 def check_unknowns(override: dict[str, str] | None = None) -> LineResult:
     """The unknowns {r_{2n,2n-i,j}}_{j=0,i=j}^{n,n} of both lines that print them (read from the transcriptions)."""
-    from paper_repro.printed.latex_math import index_set
 
     rows = {}
     for n in range(1, 11):
         sets = []
         for tex in _texts({"sec4_5-unknowns", "sec4_5-closed-forms-index"}, override).values():
             try:
-                (jv, jlo, jhi), (iv, ilo, ihi) = index_set(tex)
+                (jv, jlo, jhi), (iv, ilo, ihi) = P.index_set(tex)
             except ValueError as exc:
                 return LineResult(False, how="the unknowns read from the transcriptions, n <= 10", kind="exhaustive",
                                   detail={"unread": str(exc)})
