@@ -320,3 +320,14 @@ def test_parse_conditions_reads_clauses_alone():
     for bad in (r",~j=0,1,\ldots ,n-1,~i=j,j+1,,\ldots,2n-1-j,", "XXX"):
         with pytest.raises(LatexMathError):
             parse_conditions(bad)
+
+
+def test_a_last_clause_the_next_row_finishes_is_kept_as_text():
+    """A display row that ends in ``,~\\forall\\left(`` (the next transcribed row closes the parenthesis): the
+    relation is read and the unfinished clause kept as ``unfinished``; a balanced row has none."""
+    from paper_repro.printed.latex_math import parse_relation
+
+    r = parse_relation(r"& & +% {\displaystyle\sum\limits_{j=r+2}^{n-1}} \beta_{2n,2n-i,j}B_{2n,2n-i,j}^{\alpha}"
+                       r"\left( u,v,w\right) ,~\forall\left(")
+    assert r.unfinished == "\\forall (" and r.conditions == [] and isinstance(r.parts[0], sympy.Sum)
+    assert parse_relation(r"x=0,~\forall x\in\left[ 0,\alpha\right]").unfinished is None

@@ -449,7 +449,8 @@ class Relation:
     Relations; ``quantifier`` is ``'forall'`` (``'exists'``) on a clause that carries ``\\forall``
     (``\\exists``).  The op ``'equiv'`` has as right part ``Tuple(b, m)`` for ``a \\equiv b \\pmod{m}``; ``'in'``
     with a ``Tuple`` right part is a listed range ``i=0,1,\\ldots,2n`` (``ldots`` is the Symbol ``ldots``).
-    ``continues`` is the operator (``'+'``, ``'-'``, ``'*'``) a row ends with when the next row continues it.
+    ``continues`` is the operator (``'+'``, ``'-'``, ``'*'``) a row ends with when the next row continues it;
+    ``unfinished`` the cleaned text of a last clause that opens a parenthesis the next row closes (``\forall (``).
     """
 
     parts: list[Any]
@@ -458,6 +459,7 @@ class Relation:
     conditions: list[Relation] = field(default_factory=list)
     quantifier: str | None = None
     continues: str | None = None
+    unfinished: str | None = None  # a last clause the next transcribed row finishes (``\forall (``), cleaned text
 
     def as_boolean(self):
         """The chain as a sympy boolean (``And`` of each link); ``in``/``sim`` links are refused."""
@@ -1029,6 +1031,10 @@ def parse_relation(tex: str) -> Relation:
         cont = {"+": "+", "-": "-"}.get(m.group(1), "*")
         s = s[:m.start()].rstrip()
     chunks = _split_top(s)
+    unfinished = None
+    if len(chunks) > 1 and chunks[-1].count("(") > chunks[-1].count(")"):
+        # the last clause opens a parenthesis the next transcribed row closes (``,~\forall\left(``): kept as text
+        unfinished = chunks.pop().strip()
     if len(chunks) > 1 and not any(_RELOP_RE.search(c) for c in chunks):
         items = [_run("start_expr", c.strip(), arrays) for c in chunks]
         return Relation([sympy.Tuple(*items)], [], continues=cont)
@@ -1047,6 +1053,7 @@ def parse_relation(tex: str) -> Relation:
         r = Relation([r], [])
     r.conditions = _conditions(chunks[k:], arrays) if len(chunks) > k else []
     r.continues = cont
+    r.unfinished = unfinished
     return r
 
 
