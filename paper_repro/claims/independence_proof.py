@@ -298,7 +298,7 @@ def run(n_max: int, r_max: int, system_n_max: int) -> Outcome:
                                                                    printed.reduced_x_derivative_hat(n, 0), 7))
     from paper_repro.claims.lines.sec1_3 import _params, r0p1_sines
     from paper_repro.printed.lines import verbatim
-    from paper_repro.printed.lines.read import interval
+    from paper_repro.printed.parsed import interval
 
     params = {p: parametrization_ok(p) for p in PARAM_LABELS}
     # the y-range of system_partition_of_unity (read), with the printed x-range of the parametrization

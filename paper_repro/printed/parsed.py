@@ -31,6 +31,7 @@ True
 
 from __future__ import annotations
 
+import functools
 from typing import Any
 
 import sympy
@@ -77,6 +78,24 @@ def _env(env: dict) -> dict:
     return {sympy.Symbol(k) if isinstance(k, str) else k: v for k, v in env.items()}
 
 
+@functools.lru_cache(maxsize=4096)
+def _parsed_bound(text: str):
+    return latex_math.parse(text)
+
+
+@functools.lru_cache(maxsize=4096)
+def _compiled(expr, names: tuple[str, ...]):
+    """``expr`` as a plain Python function of ``names`` (integer arithmetic), or None if it is not a polynomial
+    with integer coefficients in them."""
+    syms = [sympy.Symbol(x) for x in names]
+    if not expr.free_symbols <= set(syms) or not expr.is_polynomial(*syms):
+        return None
+    poly = sympy.Poly(expr, *syms) if syms else None
+    if poly is not None and not all(c.is_Integer for c in poly.coeffs()):
+        return None
+    return sympy.lambdify(syms, expr, modules=[])
+
+
 def bound(expr: Any, **env: int) -> int:
     """The integer value of a printed bound (a text, read by :func:`latex_math.parse`, or a parsed expression) at
     ``env``; ``ValueError`` if it names a variable not in ``env`` or is not an integer there.
@@ -84,7 +103,13 @@ def bound(expr: Any, **env: int) -> int:
     >>> bound(latex_math.parse("2n-(r+1)"), n=4, r=1)
     6
     """
-    e = latex_math.parse(expr) if isinstance(expr, str) else sympy.sympify(expr)
+    e = _parsed_bound(expr) if isinstance(expr, str) else sympy.sympify(expr)
+    names = tuple(sorted(env))
+    f = _compiled(e, names)
+    if f is not None:
+        v = f(*[env[k] for k in names])
+        if isinstance(v, int):
+            return v
     v = e.subs(_env(env))
     if not getattr(v, "is_Integer", False):
         raise ValueError(f"bound {expr} is not an integer at {env}: {v}")
@@ -169,6 +194,22 @@ def interval(src: Relation | str, var: str) -> tuple[sympy.Expr, sympy.Expr]:
     return right.start, right.end
 
 
+def linear_form(expr: Any) -> tuple[int, int, int]:
+    """Integer coefficients (of alpha, x, y) of a printed linear form such as ``\\alpha-x-y``, ``x-y``, ``0`` (a
+    text, read by :func:`latex_math.parse`, or a parsed expression); ``ValueError`` for anything else (another
+    symbol, a constant term, a non-integer or non-linear coefficient)."""
+    e = sympy.expand(latex_math.parse(expr) if isinstance(expr, str) else sympy.sympify(expr))
+    alpha, x, y = sympy.symbols("alpha x y")
+    if not isinstance(e, sympy.Expr) or not e.free_symbols <= {alpha, x, y}:
+        raise ValueError(f"not a linear form in alpha, x, y: {expr!r}")
+    if e == 0:
+        return 0, 0, 0
+    coeffs = sympy.Poly(e, alpha, x, y).as_dict()
+    if any(sum(m) != 1 for m in coeffs) or any(not c.is_integer for c in coeffs.values()):
+        raise ValueError(f"not a linear form in alpha, x, y: {expr!r}")
+    return tuple(int(coeffs.get(m, 0)) for m in ((1, 0, 0), (0, 1, 0), (0, 0, 1)))  # type: ignore[return-value]
+
+
 # -- the paper's constants, sums, tags ---------------------------------------------------------------------------
 CONSTANTS = ("c", "r", "g", "b")  # univariate constants and normalizing coefficients: numbers, not functions
 
@@ -225,6 +266,93 @@ def untagged_names(tex: str) -> list[str]:
     ``c_{6,4}`` (:func:`latex_math.untagged`)."""
     return [f"{f.func.__name__}_{{{','.join(str(a) for a in f.args)}}}" for f in latex_math.untagged(tex)
             if f.func.__name__ in TAGGED]
+
+
+# -- the linear combinations of the proof of Theorem joint_systems_linear_independence ----------------------------
+COLOUR_OF = {"rho": "R", "gamma": "G", "beta": "B"}
+FUNCTIONS = {"R": "R", "G": "G", "B": "B", "Rbar": "R", "Gbar": "G", "Bbar": "B"}
+_N = sympy.Symbol("n")
+
+
+def _constant_indices(c) -> tuple:
+    if len(c.args) != 3 or c.args[0] != 2 * _N:
+        raise ValueError(f"the constant {c} is not indexed _{{2n,a,b}}")
+    return c.args[1], c.args[2]
+
+
+def function_terms(tex: str) -> list[tuple[list, str, sympy.Expr, sympy.Expr]]:
+    """The terms ``constant_{2n,a,b} X_{2n,a,b}(u,v,w)`` of a printed row (every part of its relation, read by
+    :func:`latex_math.parse_relation`; :func:`latex_math.terms`), each with its sums:
+    ``[(limits [(var, lo, hi), ...] outermost first, colour, a, b), ...]`` (sympy).  A term whose constant and
+    function disagree (colour or indices), a coefficient other than 1, or a term with another name raises
+    ``ValueError``; parts without a constant or function (``L(u,v,w)``, ``0``) are skipped."""
+    rel = latex_math.parse_relation(tex)
+    out = []
+    for part in rel.parts:
+        for t in latex_math.terms(part):
+            consts = [f for f in t.names if f.func.__name__ in COLOUR_OF]
+            funcs = [f for f in t.names if f.func.__name__ in FUNCTIONS]
+            if not consts and not funcs and t.coefficient.is_number:
+                continue
+            if len(consts) != 1 or len(funcs) != 1 or len(t.names) != 2 or t.coefficient != 1:
+                raise ValueError(f"not a term constant_{{2n,a,b}} X_{{2n,a,b}}: {t}")
+            (c,), (f,) = consts, funcs
+            fargs = f.args[:-1] if f.args and isinstance(f.args[-1], sympy.Tuple) else f.args
+            colour = FUNCTIONS[f.func.__name__]
+            if COLOUR_OF[c.func.__name__] != colour or tuple(fargs) != tuple(c.args):
+                raise ValueError(f"constant {c} does not match {f}")
+            a, b = _constant_indices(c)
+            out.append(([tuple(lim) for lim in t.limits], colour, a, b))
+    return out
+
+
+def term_indices(terms, **env: int) -> list[tuple[str, int, int]]:
+    """``(colour, i, j)`` of every function of :func:`function_terms` (i from the first index 2n - i), the sums
+    written out with ``env`` (``n``, ``r``) and the outer sum variables (an empty sum names nothing)."""
+    out: list[tuple[str, int, int]] = []
+
+    def walk(limits, colour, first, level, scope):
+        if not limits:
+            out.append((colour, 2 * scope["n"] - bound(first, **scope), bound(level, **scope)))
+            return
+        (v, lo, hi), rest = limits[0], limits[1:]
+        for x in range(bound(lo, **scope), bound(hi, **scope) + 1):
+            walk(rest, colour, first, level, {**scope, str(v): x})
+
+    for limits, colour, first, level in terms:
+        walk(limits, colour, first, level, dict(env))
+    return out
+
+
+def constant_sets(tex: str, n: int) -> list[tuple[str, int, int]]:
+    """``(colour, i, j)`` of the constants named by a printed list of ``$..$`` segments, each a constant
+    ``\\rho_{2n,n,n}`` or a bounded set ``\\left\\{ \\rho_{2n,2n-i,j}\\right\\} _{j=0,i=j}^{n-1,2n-1-j}``
+    (:func:`latex_math.parse`), at order n; any other segment raises ``ValueError``."""
+    out = []
+    for seg in latex_math.inline_math(tex) or [tex]:
+        e = latex_math.parse(seg)
+        if isinstance(e, AppliedUndef) and e.func.__name__ in COLOUR_OF:
+            a, b = _constant_indices(e)
+            out.append((COLOUR_OF[e.func.__name__], 2 * n - bound(a, n=n), bound(b, n=n)))
+            continue
+        if not (isinstance(e, AppliedUndef) and e.func == latex_math.Family and len(e.args) == 3
+                and isinstance(e.args[0], AppliedUndef) and e.args[0].func.__name__ in COLOUR_OF and not e.args[1]):
+            raise ValueError(f"not a constant or a bounded set of constants: {seg[:60]!r}")
+        member, _conds, bounds = e.args
+        a, b = _constant_indices(member)
+        colour = COLOUR_OF[member.func.__name__]
+        out += [(colour, 2 * n - bound(a, **env), bound(b, **env))
+                for env in _walk_bounds(list(bounds), {"n": n})]
+    return out
+
+
+def _walk_bounds(bounds: list, scope: dict):
+    if not bounds:
+        yield scope
+        return
+    (v, lo, hi), rest = bounds[0], bounds[1:]
+    for x in range(bound(lo, **scope), bound(hi, **scope) + 1):
+        yield from _walk_bounds(rest, {**scope, str(v): x})
 
 
 # -- linear combinations of control points -----------------------------------------------------------------------
@@ -345,4 +473,5 @@ def evaluate_in(expr, K, values: dict, squares: dict | None = None):
 __all__ = ["ALPHA", "VARRHO", "RHO", "MU", "VARPHI", "PSI", "A", "B", "C", "U", "V", "W", "expression", "chain",
            "relation_holds", "bound", "index_set", "clauses", "listed", "listed_range", "progression", "interval",
            "CONSTANTS", "constants_as_factors", "relation", "value", "expand_sums", "TAGGED", "untagged_names",
-           "linear_terms", "point_label", "exact_value", "evaluate_in"]
+           "linear_terms", "point_label", "exact_value", "evaluate_in", "COLOUR_OF", "FUNCTIONS", "function_terms",
+           "term_indices", "constant_sets", "linear_form"]

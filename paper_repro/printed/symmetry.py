@@ -4,7 +4,7 @@ second-half relations ``X_{2n,2n-i,j}(u,v,w) = X_{2n,i,j}(sigma)`` and the six s
 Fig. oriented_graph(b) (its caption).
 
 Everything is parsed at call time from :func:`paper_repro.printed.lines.verbatim` (so the blank and mutation tests
-of the lines reach it) with :mod:`paper_repro.printed.lines.tex_expr` and :mod:`paper_repro.printed.lines.read`;
+of the lines reach it) with :mod:`paper_repro.printed.lines.tex_expr` and :mod:`paper_repro.printed.parsed`;
 exponent vectors are in the order of :data:`paper_repro.core.labels.SLOTS` (sin u/2, cos u/2, sin v/2, ...).
 
 >>> printed_g(2, 1, 0)  # G_{4,3,0} = sin^3(w/2) sin(v/2) cos(u/2)
@@ -24,8 +24,8 @@ from functools import cache
 import sympy
 
 from paper_repro.printed.lines import verbatim
-from paper_repro.printed.lines.read import bound
 from paper_repro.printed.lines.tex_expr import TexError, clean, half_angle_powers, parse
+from paper_repro.printed.parsed import bound
 
 VARS = ("u", "v", "w")
 #: The lines of the explicit formulas: (colour, half) -> line id; "low" is i = j..n, "high" i = n+1..2n-j.

@@ -1338,7 +1338,7 @@ def distinct_union(n: int) -> frozenset[tuple[int, ...]]:
 def read_delta(tex: str) -> list:
     """The printed values of delta_n in ``tex`` (everything after ``\\delta_{n}=``, split at ``=``), each as a
     function of n: a closed form such as ``3n\\left( n+1\\right) +1`` or ``1+3\\sum_{j=..}^{..}\\sum_{i=..}^{..}1``."""
-    from paper_repro.printed.lines.read import bound
+    from paper_repro.printed.parsed import bound
 
     body = tex.split("\\delta_{n}=", 1)[1]
     body = re.split(r"\\\]|\$", body)[0].replace("\\left(", "(").replace("\\right)", ")").replace("%", " ")
@@ -1393,10 +1393,10 @@ def _transcribed(ids, override: dict[str, str] | None = None) -> dict[str, str]:
 
 def _read_pairs(tex: str, n: int) -> list[tuple[int, int]]:
     """The (i, j) of a printed double index set _{j=a,i=b(j)}^{c,d(j)}, read from ``tex`` at order n."""
-    from paper_repro.printed.lines.read import bound, index_set
+    from paper_repro.printed.parsed import bound, index_set
 
     (ov, olo, ohi), (iv, ilo, ihi) = index_set(tex)
-    if (ov, iv) != ("j", "i"):
+    if (str(ov), str(iv)) != ("j", "i"):
         raise ValueError(f"index set over {(ov, iv)}, not (j, i)")
     return [(i, j) for j in range(bound(olo, n=n), bound(ohi, n=n) + 1)
             for i in range(bound(ilo, n=n, j=j), bound(ihi, n=n, j=j) + 1)]
@@ -1613,9 +1613,9 @@ def chain_3(override=None) -> LineResult:
     return _chain("parametrization_3_y_0", "sec1_3-chain-rule-3", override)
 
 
-def _lin(expr: str, a, x=None):
-    """A printed bound (linear form in alpha, x; no y) at alpha = a and x."""
-    from paper_repro.printed.lines.sec3_read import linear_form
+def _lin(expr, a, x=None):
+    """A printed bound (linear form in alpha, x; no y; a text or a parsed expression) at alpha = a and x."""
+    from paper_repro.printed.parsed import linear_form
 
     ca, cx, cy = linear_form(expr)
     if cy or (cx and x is None):
@@ -1684,7 +1684,7 @@ def param_3() -> LineResult:
 def param_ranges() -> LineResult:
     """"for all x in [0, alpha], y in [0, alpha - x] and order r in N" (read): on these ranges each of the three
     printed parametrizations maps onto Omega^alpha."""
-    from paper_repro.printed.lines.read import interval
+    from paper_repro.printed.parsed import interval
 
     tex = _transcribed(["sec1_3-chain-ranges"])["sec1_3-chain-ranges"]
     try:
@@ -1782,11 +1782,11 @@ def boundary_vars(override: dict[str, str] | None = None) -> LineResult:
 # ==============================================================================================================
 def printed_rows(check_id: str, n: int, r: int = 0, override: dict[str, str] | None = None) -> set:
     """The functions named by the displayed rows of the lines checked by ``check_id``, read from their
-    transcriptions (sums, bounds, constants, functions: :func:`paper_repro.printed.lines.read.sum_terms`) at order
+    transcriptions (sums, bounds, constants, functions: :func:`paper_repro.printed.parsed.function_terms`) at order
     n and step r: indices into T_{2n} by the functions' own names (no alias); a name that is not a member of T_{2n}
     stays in the set as a string (a mismatch).  ``override`` replaces transcriptions (tests)."""
-    from paper_repro.printed.lines.read import sum_terms, term_indices
     from paper_repro.printed.lines.sec1_3 import LINES
+    from paper_repro.printed.parsed import function_terms, term_indices
 
     rows = {x.id: x.verbatim for x in LINES if x.check == check_id and x.kind == "display"}
     rows.update({k: v for k, v in (override or {}).items() if k in rows})
@@ -1798,7 +1798,7 @@ def printed_rows(check_id: str, n: int, r: int = 0, override: dict[str, str] | N
         rest = row_residue(rows[key])
         if rest:
             raise ValueError(f"{key}: unread {rest[:40]!r}")
-        for color, i, j in term_indices(sum_terms(rows[key]), n=n, r=r):
+        for color, i, j in term_indices(function_terms(rows[key]), n=n, r=r):
             name = f"{color}_{{{2 * n},{2 * n - i},{j}}}"
             out.add(strict.get(name, name))
     return out
@@ -1819,7 +1819,7 @@ def l_set(override: dict[str, str] | None = None) -> LineResult:
     """The rows of eq. linear_combination_union name every function of T_{2n} once; the constants listed after it
     (line sec1_3-L-coefficients, read: rho_{2n,n,n} and the sets of rho and gamma -- the set of beta follows on the
     next, untranscribed, line) are exactly the constants of the R and G terms of the rows (n = 1..12)."""
-    from paper_repro.printed.lines.read import constant_sets, sum_terms, term_indices
+    from paper_repro.printed.parsed import constant_sets, function_terms, term_indices
 
     res = _read_sets("sec1_3-L-set", lambda n, r: set(range(len(united_system(n)))), ns=range(1, 13),
                      override=override)
@@ -1833,7 +1833,7 @@ def l_set(override: dict[str, str] | None = None) -> LineResult:
         for n in range(1, 13):
             listed = sorted(constant_sets(t["sec1_3-L-coefficients"], n))
             rows = sorted(c for k in ("sec1_3-L-R-row", "sec1_3-L-G-row")
-                          for c in term_indices(sum_terms(t[k]), n=n))
+                          for c in term_indices(function_terms(t[k]), n=n))
             if listed != rows:
                 bad.append(n)
     except ValueError as exc:
@@ -1874,8 +1874,8 @@ def l0_set(override=None) -> LineResult:
 def listed_orders(tex: str, var: str, **env: int) -> list[range]:
     """Every listed range ``var=a,a+1,\\ldots,b`` of ``tex`` as a range (``ValueError`` if there is none, or if a
     second listed value is not the first plus one)."""
-    from paper_repro.printed.lines.read import bound
     from paper_repro.printed.lines.sec3_read import listing
+    from paper_repro.printed.parsed import bound
 
     out = []
     found = listing(tex, var)
@@ -1926,7 +1926,7 @@ _CONSTANT_SET = re.compile(r"\\left\\\{\s*\\rho_\{2n,2n-i,([^{}]+)\},\\gamma_\{2
 def level_zeroed(verbatim: str | None = None) -> LineResult:
     """The constants {rho, gamma, beta}_{2n,2n-i,r+1}, i = r+1..2n-1-(r+1) (levels, range and the value 0 read from
     the transcription), are those set to 0 by the step r -> r+1."""
-    from paper_repro.printed.lines.read import bound
+    from paper_repro.printed.parsed import bound
 
     tex = verbatim if verbatim is not None else _transcribed(["sec1_3-step-zeroed"])["sec1_3-step-zeroed"]
     m = _CONSTANT_SET.search(tex.replace("\\left(", "(").replace("\\right)", ")"))
@@ -1964,7 +1964,7 @@ def ln2_set(override=None) -> LineResult:
 
 
 def bound_n(expr: str, n: int) -> int:
-    from paper_repro.printed.lines.read import bound
+    from paper_repro.printed.parsed import bound
 
     return bound(expr, n=n)
 
@@ -2046,13 +2046,13 @@ def elimination_orders(override: dict[str, str] | None = None) -> LineResult:
     exists, non-empty, for r = 0..n-1 (induction-range); the steps r -> r+1 are r = 0..n-2 (step-range,
     induction-conclusion); the figure shows the first and last of them, r = 0 and r = n-2, with derivatives of
     orders r + 1 of L_r."""
-    from paper_repro.printed.lines.read import bound, listed_range
+    from paper_repro.printed.parsed import bound, listed_range
 
     ids = ("sec1_3-induction-range", "sec1_3-step-range", "sec1_3-induction-conclusion",
            "sec1_3-fig-j1-caption-orders", "sec1_3-fig-j1-text")
     t = _transcribed(ids, override)
     try:
-        ranges = {k: listed_range(t[k], "r") for k in ids[:3]}
+        ranges = {k: listed_range(t[k], "r")[1:] for k in ids[:3]}
         for k in ids[:3]:  # every listing of the line steps by one and they agree
             if len({(x.start, x.stop) for x in listed_orders(t[k], "r", n=5)}) != 1:
                 raise ValueError(f"{k}: listings differ")
@@ -2086,7 +2086,7 @@ def elimination_orders(override: dict[str, str] | None = None) -> LineResult:
             bad.append(f"n={n}: levels")
     return LineResult(not bad, how="orders read from the five transcriptions against the elimination recomputed from "
                       f"exact derivatives, n = 1..{N_PROOF.stop - 1}", kind="exhaustive",
-                      detail={"ranges": {k: list(v) for k, v in ranges.items()}, "mismatches": bad[:3]})
+                      detail={"ranges": {k: [str(x) for x in v] for k, v in ranges.items()}, "mismatches": bad[:3]})
 
 
 @line_check("sec1_3-induction-orders")
@@ -2096,16 +2096,16 @@ def induction_orders(verbatim_text: str | None = None) -> LineResult:
     r + 1, r = 0..n-2 -- i.e. 0..n-1 (level j is removed by the order-j steps; after them only the centre is left,
     which the proof removes by R_{2n,n,n} != 0, without a derivative), and the hypothesis it proves is stated for
     r = 0..n-1 (line sec1_3-Lr-orders, read).  Printed: 0..n; corrected: 0..n-1."""
-    from paper_repro.printed.lines.read import bound, listed_range
+    from paper_repro.printed.parsed import bound, listed_range
 
     tex = verbatim_text if verbatim_text is not None else _transcribed(["sec1_3-induction-orders"])[
         "sec1_3-induction-orders"]
 
     def run(text: str) -> tuple[bool, list]:
-        lo, hi = listed_range(text, "r")
+        _r, lo, hi = listed_range(text, "r")
         if "induction on the derivation order" not in text:
             raise ValueError("not the induction on the derivation order")
-        hyp_lo, hyp_hi = listed_range(_transcribed(["sec1_3-Lr-orders"])["sec1_3-Lr-orders"], "r")
+        _r, hyp_lo, hyp_hi = listed_range(_transcribed(["sec1_3-Lr-orders"])["sec1_3-Lr-orders"], "r")
         bad = []
         for n in N_PROOF:
             used = sorted({r for r, _p, _b, gone in elimination(n) if gone})
@@ -2213,7 +2213,7 @@ def _arg_half(arg: str, param_index: int, pt) -> tuple[fmpq, fmpq]:
 
 
 def _expr(expr: str, env: dict) -> int:
-    from paper_repro.printed.lines.read import bound
+    from paper_repro.printed.parsed import bound
 
     return int(bound(expr.replace("\\left(", "(").replace("\\right)", ")"), **env))
 
@@ -2386,10 +2386,10 @@ def read_terms_at_edge(line_id: str, param_index: int, verbatim: str | None = No
     ``(n, r, pt) -> {member of T_{2n}: its value at the boundary point}`` of the functions it names (by their own
     names), after checking that the printed point is the step's parametrization at running parameter 0.  A name
     that is no member of T_{2n} is kept as a string (a mismatch)."""
-    from paper_repro.printed.lines.read import sum_terms, term_indices
+    from paper_repro.printed.parsed import function_terms, term_indices
 
     tex = verbatim if verbatim is not None else _transcribed([line_id])[line_id]
-    terms = sum_terms(tex)
+    terms = function_terms(tex)
     rest = re.sub(r"\s+", "", tex.replace("%", ""))
     rest = re.sub(r"^&=", "", re.sub(r"\\\\$", "", rest))
     rest = re.sub(r"\\(rho|gamma|beta)_\{[^{}]*\}[RGB]_\{[^{}]*\}\^\{\\alpha\}\\left\([^()]*\\right\)", "", rest)
@@ -2470,8 +2470,8 @@ def omitted_check(line_id: str, before: str, terms_line: str, param_index: int,
     coordinate of the step (its index), equal to the printed argument (both as linear forms), and its half-angle
     sine at the printed point (the step's edge) is the printed value, 0 (exact); every function before the step and
     not kept has that sine to a power in the printed relation ("at least one"), every kept one has not (n = 1..12)."""
-    from paper_repro.printed.lines.read import sum_terms, term_indices
     from paper_repro.printed.lines.sec3_read import linear_form
+    from paper_repro.printed.parsed import function_terms, term_indices
 
     t = _transcribed([line_id, terms_line], override)
     try:
@@ -2489,7 +2489,7 @@ def omitted_check(line_id: str, before: str, terms_line: str, param_index: int,
     for n in range(1, 13):
         strict = {lb.paper: k for k, lb in enumerate(united_system(n))}
         kept = {strict.get(f"{c}_{{{2 * n},{2 * n - i},{j}}}", "?") for c, i, j in
-                term_indices(sum_terms(t[terms_line]), n=n)}
+                term_indices(function_terms(t[terms_line]), n=n)}
         alive = printed_rows(before, n, 0, override)
         ok &= "?" not in kept and kept <= alive
         ok &= all(rel(exponents(united_system(n)[k])[2 * var], o["power"]) == (k not in kept)
@@ -2667,7 +2667,8 @@ def _zero_line_strict(tex: str, color: str | None) -> None:
 def read_zeroed(line_id: str, verbatim: str | None = None, color: str | None = None):
     """(level, range of i, right-hand side) of a printed ``const'_{2n,2n-i,LEVEL} = 0, i = a, ..., b``, read from its
     transcription, as functions of (n, r)."""
-    from paper_repro.printed.lines.read import bound, listed_range, right_hand_side
+    from paper_repro.printed.latex_math import parse_relation
+    from paper_repro.printed.parsed import bound, listed_range
 
     tex = verbatim if verbatim is not None else _transcribed([line_id])[line_id]
     _zero_line_strict(tex, color)
@@ -2675,8 +2676,9 @@ def read_zeroed(line_id: str, verbatim: str | None = None, color: str | None = N
     if not m:
         raise ValueError(f"no primed constant in {tex[:50]!r}")
     level_expr = m.group(1)
-    lo, hi = listed_range(tex, "i")
-    rhs = right_hand_side(tex, r",~i\s*=")
+    rel = parse_relation(tex)
+    _i, lo, hi = listed_range(rel, "i")
+    rhs = str(rel.parts[-1])
     return (lambda n, r: bound(level_expr, n=n, r=r),
             lambda n, r: range(bound(lo, n=n, r=r), bound(hi, n=n, r=r) + 1), rhs)
 
@@ -3274,7 +3276,8 @@ def zero_conclusion(line_id: str, verbatim: str | None = None) -> LineResult:
     functions whose restriction to the step's edge does not vanish (the elimination recomputed from exact values),
     and those restrictions are linearly independent (exact rank at 2n + 4 points of the edge), so a vanishing
     combination has exactly these constants equal to the printed right-hand side 0 (n = 1..6)."""
-    from paper_repro.printed.lines.read import bound, listed_range, right_hand_side
+    from paper_repro.printed.latex_math import parse_relation
+    from paper_repro.printed.parsed import bound, listed_range
 
     param_index, color, alias = ZERO_LINES[line_id]
     tex = verbatim if verbatim is not None else _transcribed([line_id])[line_id]
@@ -3285,8 +3288,9 @@ def zero_conclusion(line_id: str, verbatim: str | None = None) -> LineResult:
     except ValueError as exc:
         return LineResult(False, how="the conclusion read from the transcription, n = 1..6", kind="exhaustive",
                           detail={"unread": str(exc)})
-    lo, hi = listed_range(tex, "i")
-    rhs = right_hand_side(tex, r",~i\s*=")
+    rel = parse_relation(tex)
+    _i, lo, hi = listed_range(rel, "i")
+    rhs = str(rel.parts[-1])
     bad = []
     for n in N_PROOF:
         named = set()

@@ -896,7 +896,7 @@ def read_prop_families(tex: str, n: int) -> list[tuple[int, int, int]]:
     """The representatives of the printed families ``\\left\\{ \\left[ .. \\right] \\right\\} _{g=0}^{n-1}`` of
     Proposition iterative_construction_of_trivariate_extension at order n, read from the transcription."""
     from paper_repro.claims.lines.sec4_tex import parse
-    from paper_repro.printed.lines.read import bound
+    from paper_repro.printed.parsed import bound
 
     fams = re.findall(r"\\left\\\{\s*\\left\[\s*(.*?)\s*\\right\]\s*\\right\\\}"
                       r"\s*_\{(\w)=([^{}]+)\}\^\{([^{}]+)\}", tex)
@@ -933,7 +933,7 @@ def read_prop() -> tuple[int, str]:
 def prop_sets_agree(n_max: int, lowest: int, top: str) -> dict[int, bool]:
     """E_n/~ minus the union over i = lowest..top(n) against the printed representatives (read): distinct classes,
     exactly the new ones."""
-    from paper_repro.printed.lines.read import bound
+    from paper_repro.printed.parsed import bound
 
     tex = verbatim("sec4_5-prop-new-classes")
     out = {}
@@ -1254,7 +1254,7 @@ def read_proof_r() -> tuple:
     """The ranges j = a..b, i = c..d (read from both lines that print them: they must agree), the printed indices of
     R_{2n,2n-i,j} and its printed product of half-angle powers."""
     from paper_repro.claims.lines.sec4_tex import TexError, chain, parse
-    from paper_repro.printed.lines.read import listed_range
+    from paper_repro.printed.parsed import listed_range
 
     rng = set()
     for lid in ("sec4_5-proof-symmetry-reduction", "sec4_5-proof-R"):
@@ -1264,7 +1264,7 @@ def read_proof_r() -> tuple:
             raise TexError(f"{lid}: not 'sufficient to show that for all indices'")
         if not m:
             raise TexError(f"{lid}: no ranges of j and i")
-        rng.add((listed_range("j=" + m.group(1), "j"), listed_range("i=" + m.group(2), "i"),
+        rng.add((listed_range("j=" + m.group(1), "j")[1:], listed_range("i=" + m.group(2), "i")[1:],
                  re.sub(r"\s", "", m.group(1)), re.sub(r"\s", "", m.group(2))))
     if len(rng) != 1:
         raise TexError("the two lines print different ranges")
@@ -1284,7 +1284,7 @@ def _proof_reduction() -> dict[str, bool]:
     import sympy as sp
 
     from paper_repro.claims.lines.sec4_tex import parse
-    from paper_repro.printed.lines.read import bound
+    from paper_repro.printed.parsed import bound
 
     jr, ir, second, first_idx, level_idx, formula = read_proof_r()
     ns, is_, js = sp.symbols("n i j")

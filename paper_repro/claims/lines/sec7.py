@@ -1121,7 +1121,7 @@ def check_question_limiting_case(verbatim: str | None = None) -> LineResult:
     """The Question read from the transcription -- the limit point ``$\\alpha \\to 0$``, the order ``$n$`` and the
     degree ``$3n-1$`` of the (rational) Bezier patch on the unit simplex -- against the degree of the limit from
     the limit formula and from the proven closed forms."""
-    from paper_repro.printed.lines.read import bound
+    from paper_repro.printed.parsed import bound
 
     t = re.sub(r"\s+", " ", VERBATIM["sec7-question-limiting-case"] if verbatim is None else verbatim)
     m = re.match(r"Is the limiting case (\$[^$]+\$) of the \(rational\) triangular trigonometric patch of order "
@@ -1151,7 +1151,7 @@ def check_dimension_and_span(verbatim: str | None = None) -> LineResult:
     """delta_n as printed (read from the transcription: ``\\delta_{n}=3n\\left(n+1\\right)+1``) = |T_{2n}| = |V_n|;
     'linearly independent' read: the exact rank of T_{2n} is delta_n; the order of the truncated Fourier basis read
     ('of order $n\\in\\mathbb{N}$'): the ranks of V_k and of [T_{2n} V_k] equal delta_n (same span)."""
-    from paper_repro.printed.lines.read import bound
+    from paper_repro.printed.parsed import bound
 
     dim = re.sub(r"\s+", " ", VERBATIM["sec7-s8-dimension"] if verbatim is None else verbatim)
     m = re.fullmatch(r"the normalized linearly independent constrained trivariate function system "

@@ -373,7 +373,7 @@ def read_prime_definition(tex: str) -> tuple[tuple[str, str], list[tuple[tuple[s
             if rng.index("\\ldots") != len(rng) - 2 or len(rng) > 4:
                 raise ValueError(f"unread range {c.group(4)!r}")
             if len(rng) == 4:  # a, b, ..., c: b must be a + 1
-                from paper_repro.printed.lines.read import bound
+                from paper_repro.printed.parsed import bound
 
                 def val(e: str, n: int, r: int) -> int:
                     return bound(e.replace("\\left(", "(").replace("\\right)", ")"), n=n, r=r)
