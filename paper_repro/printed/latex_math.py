@@ -69,7 +69,8 @@ from lark import Lark, Token, Transformer
 from lark.exceptions import LarkError, UnexpectedCharacters, UnexpectedEOF, UnexpectedInput
 
 __all__ = ["LatexMathError", "Relation", "parse", "parse_relation", "parse_cases", "parse_vector", "index_set",
-           "inline_math", "evaluate_sums", "Term", "terms", "untagged", "parse_conditions", "clean", "D", "Family", "Cases", "PM"]
+           "inline_math", "evaluate_sums", "Term", "terms", "untagged", "parse_conditions", "clean", "D", "Family",
+           "Cases", "PM"]
 
 
 class LatexMathError(ValueError):
