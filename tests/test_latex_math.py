@@ -331,3 +331,16 @@ def test_a_last_clause_the_next_row_finishes_is_kept_as_text():
                        r"\left( u,v,w\right) ,~\forall\left(")
     assert r.unfinished == "\\forall (" and r.conditions == [] and isinstance(r.parts[0], sympy.Sum)
     assert parse_relation(r"x=0,~\forall x\in\left[ 0,\alpha\right]").unfinished is None
+
+
+def test_summands_keep_the_printed_order_and_signs():
+    """``summands``: the terms of each part in the printed order (sympy's evaluated sum reorders them), a ``-``
+    kept as the factor -1; ``parse`` afterwards evaluates again."""
+    from paper_repro.printed.latex_math import parse, summands
+
+    r, p = Function("r_vec"), Function("p_vec")
+    tex = r"\mathbf{p}_{4,0,1} & =\frac{1}{5}\Red{\mathbf{r}_{4,4,0}}+\frac{4}{5}\Red{\mathbf{r}_{4,3,0}}"
+    assert summands(tex) == [[p(4, 0, 1)], [r(4, 4, 0) / 5, 4 * r(4, 3, 0) / 5]]
+    assert summands(r"x=b-a")[1] == [Symbol("b"), -Symbol("a")]
+    assert summands(r"x=a+b")[1] == [Symbol("a"), Symbol("b")]
+    assert parse("b+a") == Symbol("a") + Symbol("b")

@@ -69,8 +69,8 @@ from lark import Lark, Token, Transformer
 from lark.exceptions import LarkError, UnexpectedCharacters, UnexpectedEOF, UnexpectedInput
 
 __all__ = ["LatexMathError", "Relation", "parse", "parse_relation", "parse_cases", "parse_vector", "index_set",
-           "inline_math", "evaluate_sums", "Term", "terms", "untagged", "parse_conditions", "clean", "D", "Family",
-           "Cases", "PM"]
+           "inline_math", "evaluate_sums", "Term", "terms", "untagged", "parse_conditions", "summands", "clean", "D",
+           "Family", "Cases", "PM"]
 
 
 class LatexMathError(ValueError):
@@ -568,9 +568,13 @@ class _Build(Transformer):
 
     # arithmetic
     def add(self, c):
+        if _ORDERED and all(isinstance(x, sympy.Expr) for x in c):
+            return sympy.Add(c[0], c[1], evaluate=False)
         return c[0] + c[1]
 
     def sub(self, c):
+        if _ORDERED and all(isinstance(x, sympy.Expr) for x in c):
+            return sympy.Add(c[0], -c[1], evaluate=False)
         return c[0] - c[1]
 
     def pm(self, c):
@@ -865,6 +869,29 @@ class _Build(Transformer):
 
 _BUILDER = _Build([])
 _UNTAGGED: list | None = None  # while untagged() reads: the indexed names printed without a superscript
+_ORDERED = False  # while summands() reads: a sum is built unevaluated, its terms in the printed order
+
+
+def summands(tex: str) -> list[list]:
+    r"""The terms of every part of the relation ``tex`` in the printed order (sympy reorders an evaluated sum):
+    one list per part, each term a sympy product (a ``-`` is a factor -1).
+
+    >>> summands(r"\mathbf{p}_{4,0,1}=\frac{1}{5}\mathbf{r}_{4,4,0}-\frac{4}{5}\mathbf{r}_{4,3,0}")
+    [[p_vec(4, 0, 1)], [r_vec(4, 4, 0)/5, -4*r_vec(4, 3, 0)/5]]
+    """
+    global _ORDERED
+    saved, _ORDERED = _ORDERED, True
+    try:
+        rel = parse_relation(tex)
+    finally:
+        _ORDERED = saved
+
+    def flat(e) -> list:
+        if isinstance(e, sympy.Add):
+            return [t for a in e.args for t in flat(a)]
+        return [e]
+
+    return [flat(p) for p in rel.parts]
 
 
 def untagged(tex: str) -> list:
