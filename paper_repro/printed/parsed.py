@@ -116,7 +116,7 @@ def bound(expr: Any, **env: int) -> int:
     return int(v)
 
 
-def clauses(src: Relation | str) -> list[Relation]:
+def clauses(src: Relation | str, errors: list | None = None) -> list[Relation]:
     """The relation and its clauses (a parsed :class:`Relation`), or the clauses of a text: each ``$..$`` segment of
     a prose line (or the whole text) read by :func:`latex_math.parse_conditions`; a segment the reader refuses
     gives no clause."""
@@ -126,18 +126,19 @@ def clauses(src: Relation | str) -> list[Relation]:
     for seg in latex_math.inline_math(src) or [src]:
         try:
             out += latex_math.parse_conditions(seg)
-        except LatexMathError:
-            continue
+        except LatexMathError as exc:
+            if errors is not None:
+                errors.append(str(exc))
     return out
 
 
 def _clause(src: Relation | str, var: str, op: str, kind: type) -> Relation:
     """The first clause ``var op X`` with ``X`` of type ``kind`` (``LatexMathError`` if there is none)."""
-    sym = sympy.Symbol(var)
-    for c in clauses(src):
+    sym, errors = sympy.Symbol(var), []
+    for c in clauses(src, errors):
         if len(c.parts) == 2 and c.ops == [op] and c.parts[0] == sym and isinstance(c.parts[1], kind):
             return c
-    raise LatexMathError(f"no clause '{var} {op} ..' ({kind.__name__}) read")
+    raise LatexMathError(f"no clause '{var} {op} ..' ({kind.__name__}) read" + (f": {errors[0]}" if errors else ""))
 
 
 def listed(src: Relation | str, var: str) -> list:
