@@ -32,6 +32,7 @@ True
 from __future__ import annotations
 
 import functools
+from fractions import Fraction
 from typing import Any
 
 import sympy
@@ -48,12 +49,19 @@ _TESTS = {"<": lambda x, y: x < y, ">": lambda x, y: x > y, "=": lambda x, y: x 
 
 
 # -- expressions and chains ------------------------------------------------------------------------------------
-def expression(tex: str) -> sympy.Expr:
-    """One scalar expression (:func:`latex_math.parse`); ``LatexMathError`` if anything is unread or the text is
-    not a scalar expression (a blank line ``XXX`` is refused by the reader)."""
+def expression(tex: str, allowed: tuple[str, ...] | None = None) -> sympy.Expr:
+    """One scalar expression (:func:`latex_math.parse`); ``LatexMathError`` if anything is unread, the text is not
+    a scalar expression (a blank line ``XXX`` is refused by the reader) or, with ``allowed``, names a symbol not in
+    it."""
+    if not tex.strip():
+        raise LatexMathError("empty expression")
     out = latex_math.parse(tex)
     if not isinstance(out, sympy.Expr):
         raise LatexMathError(f"not a scalar expression: {tex[:40]!r}")
+    if allowed is not None:
+        unknown = sorted({str(x) for x in out.free_symbols} - set(allowed))
+        if unknown or out.atoms(AppliedUndef):
+            raise LatexMathError(f"unknown names {unknown or sorted(map(str, out.atoms(AppliedUndef)))} in {tex!r}")
     return out
 
 
@@ -116,6 +124,28 @@ def bound(expr: Any, **env: int) -> int:
     return int(v)
 
 
+def evaluate_at(expr: Any, **env):
+    """The value of a printed expression (a text or a parsed expression) at ``env`` (ints, Fractions), computed in
+    Python's arithmetic (``1-x`` at ``x = Fraction(1, 3)`` is ``Fraction(2, 3)``); ``ValueError`` if it names a
+    variable not in ``env``.
+
+    >>> from fractions import Fraction
+    >>> evaluate_at("1-x", x=Fraction(1, 3))
+    Fraction(2, 3)
+    """
+    e = _parsed_bound(expr) if isinstance(expr, str) else sympy.sympify(expr)
+    names = tuple(sorted(env))
+    syms = [sympy.Symbol(x) for x in names]
+    if not e.free_symbols <= set(syms):
+        raise ValueError(f"{expr} names {sorted(map(str, e.free_symbols - set(syms)))}, not in {names}")
+    return _function(e, names)(*[env[k] for k in names])
+
+
+@functools.lru_cache(maxsize=4096)
+def _function(expr, names: tuple[str, ...]):
+    return sympy.lambdify([sympy.Symbol(x) for x in names], expr, modules=[])
+
+
 def clauses(src: Relation | str, errors: list | None = None) -> list[Relation]:
     """The relation and its clauses (a parsed :class:`Relation`), or the clauses of a text: each ``$..$`` segment of
     a prose line (or the whole text) read by :func:`latex_math.parse_conditions`; a segment the reader refuses
@@ -164,6 +194,7 @@ def listed_range(src: Relation | str, var: str) -> tuple[sympy.Symbol, sympy.Exp
 def progression(items: list, **env: int) -> list[int]:
     """The values of listed items ``a, b, \\ldots, c`` at ``env`` (the step is b - a; ``a, \\ldots, c`` has step 1);
     an empty list (c < a) or a non-positive step is refused."""
+    items = [LDOTS if x == "\\ldots" else x for x in items]
     if len(items) not in (3, 4) or items[-2] != LDOTS:
         raise ValueError(f"not a list 'a, b, ..., c': {items!r}")
     first, last = bound(items[0], **env), bound(items[-1], **env)
@@ -376,6 +407,55 @@ def point_label(atom) -> str:
     return f"{name[:-4]}_{{{','.join(str(int(a)) for a in atom.args)}}}"
 
 
+def conversion(tex: str) -> tuple[tuple[int, int, int], list[tuple[Fraction, str]]]:
+    """See :func:`_conversion` (memoized on the text: a changed line is another key)."""
+    idx, terms = _conversion(tex)
+    return idx, list(terms)
+
+
+@functools.lru_cache(maxsize=512)
+def _conversion(tex: str) -> tuple[tuple[int, int, int], tuple[tuple[Fraction, str], ...]]:
+    """``((d, e, f), [(weight, control point), ...])`` of a printed Bezier point ``p_{d,e,f} = w_1 x_1 + ...`` in the
+    printed order (:func:`latex_math.summands`): the relation must be one ``=``, the left side a point ``p``, each
+    term a rational weight (signs as printed) times one control point; anything else raises ``ValueError``."""
+    rel = latex_math.parse_relation(tex)
+    if rel.ops != ["="] or len(rel.parts) != 2 or rel.conditions or rel.lead:
+        raise ValueError(f"relation {rel.ops}, not one '='")
+    lhs = rel.parts[0]
+    if getattr(lhs.func, "__name__", "") != "p_vec" or len(lhs.args) != 3 or not all(a.is_Integer for a in lhs.args):
+        raise ValueError(f"not a Bezier point: {lhs}")
+    terms = []
+    for t in latex_math.summands(tex)[1]:
+        points = [a for a in sympy.Mul.make_args(t) if isinstance(a, AppliedUndef)]
+        if len(points) != 1:
+            raise ValueError(f"not a weight times one control point: {t}")
+        w = sympy.simplify(t / points[0])
+        if not isinstance(w, sympy.Rational):
+            raise ValueError(f"weight {w} is not a rational number")
+        label = point_label(points[0])
+        if label[0] not in "rgb":
+            raise ValueError(f"{label} is not a control point r, g or b")
+        terms.append((Fraction(int(w.p), int(w.q)), label))
+    return tuple(int(a) for a in lhs.args), tuple(terms)  # type: ignore[return-value]
+
+
+def elevation(tex: str) -> list[tuple[str, dict]]:
+    """See :func:`_elevation` (memoized on the text: a changed line is another key)."""
+    return [(left, dict(row)) for left, row in _elevation(tex)]
+
+
+@functools.lru_cache(maxsize=512)
+def _elevation(tex: str) -> list[tuple[str, dict]]:
+    """``[(order-2 point, {order-1 point: weight expression (sympy)}), ...]`` of a printed elevation equation
+    (:func:`latex_math.parse_relation`, relation ``=``): a vector equation gives its three rows, the centre one."""
+    rel = latex_math.parse_relation(tex)
+    if rel.ops != ["="] or len(rel.parts) != 2:
+        raise ValueError(f"relation {rel.ops}, expected ['=']")
+    lhs, rhs = rel.parts
+    rows = list(zip(lhs, rhs)) if isinstance(lhs, sympy.MatrixBase) else [(lhs, rhs)]
+    return [(point_label(left), {point_label(a): c for a, c in linear_terms(right).items()}) for left, right in rows]
+
+
 # -- exact evaluation --------------------------------------------------------------------------------------------
 def _linear_angle(arg: sympy.Expr, bases: dict) -> list[tuple[int, sympy.Symbol]]:
     """``arg = sum k_s (s / den_s)`` with integers ``k_s`` over the base angles ``s / den_s`` of ``bases``."""
@@ -475,4 +555,4 @@ __all__ = ["ALPHA", "VARRHO", "RHO", "MU", "VARPHI", "PSI", "A", "B", "C", "U", 
            "relation_holds", "bound", "index_set", "clauses", "listed", "listed_range", "progression", "interval",
            "CONSTANTS", "constants_as_factors", "relation", "value", "expand_sums", "TAGGED", "untagged_names",
            "linear_terms", "point_label", "exact_value", "evaluate_in", "COLOUR_OF", "FUNCTIONS", "function_terms",
-           "term_indices", "constant_sets", "linear_form"]
+           "term_indices", "constant_sets", "linear_form", "evaluate_at", "conversion", "elevation"]
