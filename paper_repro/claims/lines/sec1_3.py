@@ -140,6 +140,19 @@ def step_geometry(param: str) -> tuple[tuple[int, int, int], int, int, int]:
     return direction, zero[0], fixed[0], rest
 
 
+def elimination_geometry() -> dict[str, tuple[int, int, int]]:
+    """The three step parametrizations in the proof's order, each as ``(coordinate set to 0, coordinate running
+    with the parameter, the third)`` (:data:`paper_repro.theory.elimination.Geometry`), computed from the printed
+    maps (:func:`step_geometry`)."""
+    out = {}
+    for param in STEP_PARAMS:
+        direction, zero, fixed, rest = step_geometry(param)
+        if (direction[zero], direction[rest]) != (1, -1):
+            raise ValueError(f"{param}: direction {direction} is not d_zero - d_other")
+        out[param] = (zero, rest, fixed)
+    return out
+
+
 def _split(e: tuple[int, ...], var: int) -> tuple[int, int]:
     return e[2 * var], e[2 * var + 1]
 
