@@ -111,7 +111,7 @@ def _parsed_relation(tex: str):
 def alpha_limit(text: str):
     """The value alpha tends to in the one ``$\\alpha \\to v$`` of ``text`` (every ``$..$`` segment read; exactly
     one is a limit of alpha)."""
-    alpha = LM.parse("\\alpha")
+    alpha = sympy.Symbol("alpha")
     found = []
     for seg in LM.inline_math(text) or [text]:
         try:
@@ -127,8 +127,8 @@ def alpha_limit(text: str):
 
 def listed_values(tex: str, var: str, **env) -> list[int]:
     """Values of the one listed range ``$var=a,b,\\ldots,c$`` of ``tex`` at ``env`` (read by the one reader)."""
-    found = [c for c in P.clauses(tex) if c.ops == ["in"] and c.parts[0] == LM.parse(var)
-             and isinstance(c.parts[1], type(LM.parse("(a,b,c)")))]
+    found = [c for c in P.clauses(tex) if c.ops == ["in"] and c.parts[0] == sympy.Symbol(var)
+             and isinstance(c.parts[1], sympy.Tuple)]
     if len(found) != 1:
         raise ValueError(f"expected one '{var}=a,b,...,c' in {tex[:60]!r}")
     return P.progression(list(found[0].parts[1]), **env)
@@ -200,7 +200,7 @@ def unity_product(tex: str) -> dict:
     factors = sympy.Mul.make_args(rhs)
     if len(factors) != 2 or not all(isinstance(f, sympy.Add) for f in factors):
         raise ValueError(f"not a product of two sums: {rhs}")
-    first, second = sorted(factors, key=lambda f: LM.parse("n") not in f.free_symbols)
+    first, second = sorted(factors, key=lambda f: sympy.Symbol("n") not in f.free_symbols)
     return {"lhs": lhs, "first": _signed_terms(first), "second": _signed_terms(second)}
 
 
