@@ -344,3 +344,13 @@ def test_summands_keep_the_printed_order_and_signs():
     assert summands(r"x=b-a")[1] == [Symbol("b"), -Symbol("a")]
     assert summands(r"x=a+b")[1] == [Symbol("a"), Symbol("b")]
     assert parse("b+a") == Symbol("a") + Symbol("b")
+
+
+def test_a_listed_range_follows_an_equals_sign_only():
+    """``i=0,1,\\ldots,n`` is a listed range; ``i\\neq0,1,\\ldots,n`` is not one (it raises, it does not become
+    ``i in (0, 1, ldots, n)``)."""
+    from paper_repro.printed.latex_math import LatexMathError, parse_conditions
+
+    assert parse_conditions(r"i=0,1,\ldots,n")[0].ops == ["in"]
+    with pytest.raises(LatexMathError):
+        parse_conditions(r"i\neq0,1,\ldots,n")

@@ -1005,6 +1005,8 @@ def _listing(first: Relation, rest: list[str], arrays: list) -> Relation:
     """``i=0`` followed by ``1``, ``\\ldots``, ``2n`` -> ``i in (0, 1, ldots, 2n)``."""
     if any(not t.strip() for t in rest):
         raise LatexMathError(f"an empty item between commas (',,') in the list after {first.parts[-1]}")
+    if not first.ops or first.ops[-1] != "=":
+        raise LatexMathError(f"a listed range after {first.ops[-1:] or 'no relation'}, not after '='")
     items = [first.parts[-1]] + [_run("start_expr", t.strip(), arrays) for t in rest]
     return Relation(first.parts[:-1] + [sympy.Tuple(*items)], first.ops[:-1] + ["in"], first.lead,
                     quantifier=first.quantifier)
