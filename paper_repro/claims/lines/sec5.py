@@ -1121,7 +1121,14 @@ def read_chain_sum(tex: str) -> dict:
     if (v_, w_) != sympy.symbols("v w"):
         raise ValueError(f"derivatives in {v_}, {w_}, not in v, w")
     return {"klo": klo, "khi": khi, "weight": total.function / bar, "pv": pv, "pw": pw, "y0": bar.point[0],
-            "rhs": rhs, "x_range": P.interval(rel, "x")}
+            "rhs": rhs, "x_range": P.interval(_forall(rel), "x")}
+
+
+def _forall(rel: Relation) -> Relation:
+    """``rel`` if its clauses are quantified with ``\\forall`` (else ``ValueError``: the check reads 'for all x')."""
+    if not rel.conditions or any(c.quantifier != "forall" for c in rel.conditions):
+        raise ValueError(f"the clauses {[c.quantifier for c in rel.conditions]} are not 'for all'")
+    return rel
 
 
 def chain_weight(parts: dict, r: int, k: int) -> int:
