@@ -360,3 +360,68 @@ def test_memo_hands_out_copies_a_caller_may_change():
     m[0, 0] = 5
     again_m = lm.parse(r"\left[\begin{array}[c]{ccc} \varrho & 0 & \mu\end{array}\right]^{T}")
     assert again_m[0, 0] == sympy.Symbol("varrho")
+def test_untagged_names_the_indexed_names_printed_without_alpha():
+    """``untagged``: the tag ``^{\\alpha}`` is dropped by ``parse``; ``untagged`` lists the names printed without
+    any superscript (a ``^{\\prime}`` or another superscript is not a missing tag), and a blank line raises."""
+    from paper_repro.printed.latex_math import LatexMathError, untagged
+
+    c, r, rbar = Function("c"), Function("r"), Function("Rbar")
+    assert untagged(r"r_{6,4,1}^{\alpha}=c_{6,4}\left( 2+\frac{1}{2}\right)") == [c(6, 4)]
+    assert untagged(r"r_{6,4,1}^{\alpha}=c_{6,4}^{\alpha}") == []
+    assert untagged(r"r_{6,4,1}=\overline{R}_{6,4,1}\left(u,v,w\right)+c_{6,4}^{\prime}") == [r(6, 4, 1),
+                                                                                               rbar(6, 4, 1)]
+    with pytest.raises(LatexMathError):
+        untagged("XXX")
+
+
+def test_parse_conditions_reads_clauses_alone():
+    """``parse_conditions``: the clauses that follow a relation, read alone (a ``\\forall`` clause, listed ranges,
+    an interval); a doubled comma and a blank line raise."""
+    from paper_repro.printed.latex_math import LDOTS, LatexMathError, parse_conditions
+
+    i, j, n, x, alpha = Symbol("i"), Symbol("j"), Symbol("n"), Symbol("x"), Symbol("alpha")
+    (c,) = parse_conditions(r",~\forall i=0,1,\ldots,n.")
+    assert (c.parts, c.ops, c.quantifier) == ([i, sympy.Tuple(0, 1, LDOTS, n)], ["in"], "forall")
+    cs = parse_conditions(r",~j=0,1,\ldots ,n-1,~i=j+1,j+2,\ldots,n-1,")
+    assert [c.parts for c in cs] == [[j, sympy.Tuple(0, 1, LDOTS, n - 1)], [i, sympy.Tuple(j + 1, j + 2, LDOTS, n - 1)]]
+    (c,) = parse_conditions(r"x\in\left[ 0,\alpha\right]")
+    assert c.parts == [x, sympy.Interval(0, alpha)]
+    for bad in (r",~j=0,1,\ldots ,n-1,~i=j,j+1,,\ldots,2n-1-j,", "XXX"):
+        with pytest.raises(LatexMathError):
+            parse_conditions(bad)
+
+
+def test_a_last_clause_the_next_row_finishes_is_kept_as_text():
+    """A display row that ends in ``,~\\forall\\left(`` (the next transcribed row closes the parenthesis): the
+    relation is read and the unfinished clause kept as ``unfinished``; a balanced row has none."""
+    from paper_repro.printed.latex_math import parse_relation
+
+    r = parse_relation(r"& & +% {\displaystyle\sum\limits_{j=r+2}^{n-1}} \beta_{2n,2n-i,j}B_{2n,2n-i,j}^{\alpha}"
+                       r"\left( u,v,w\right) ,~\forall\left(")
+    # the \forall( ending is the row's continuation (continues == 'forall'); another unbalanced last clause is kept
+    assert r.continues == "forall" and r.unfinished is None and r.conditions == [] and isinstance(r.parts[0], sympy.Sum)
+    assert parse_relation(r"x=0,~y\in\left( 0").unfinished == "y\\in ( 0"
+    assert parse_relation(r"x=0,~\forall x\in\left[ 0,\alpha\right]").unfinished is None
+
+
+def test_summands_keep_the_printed_order_and_signs():
+    """``summands``: the terms of each part in the printed order (sympy's evaluated sum reorders them), a ``-``
+    kept as the factor -1; ``parse`` afterwards evaluates again."""
+    from paper_repro.printed.latex_math import parse, summands
+
+    r, p = Function("r_vec"), Function("p_vec")
+    tex = r"\mathbf{p}_{4,0,1} & =\frac{1}{5}\Red{\mathbf{r}_{4,4,0}}+\frac{4}{5}\Red{\mathbf{r}_{4,3,0}}"
+    assert summands(tex) == [[p(4, 0, 1)], [r(4, 4, 0) / 5, 4 * r(4, 3, 0) / 5]]
+    assert summands(r"x=b-a")[1] == [Symbol("b"), -Symbol("a")]
+    assert summands(r"x=a+b")[1] == [Symbol("a"), Symbol("b")]
+    assert parse("b+a") == Symbol("a") + Symbol("b")
+
+
+def test_a_listed_range_follows_an_equals_sign_only():
+    """``i=0,1,\\ldots,n`` is a listed range; ``i\\neq0,1,\\ldots,n`` is not one (it raises, it does not become
+    ``i in (0, 1, ldots, n)``)."""
+    from paper_repro.printed.latex_math import LatexMathError, parse_conditions
+
+    assert parse_conditions(r"i=0,1,\ldots,n")[0].ops == ["in"]
+    with pytest.raises(LatexMathError):
+        parse_conditions(r"i\neq0,1,\ldots,n")

@@ -8,9 +8,10 @@ import pytest
 from paper_repro.claims.lines import load_checks
 from paper_repro.claims.lines import sec5 as ck
 from paper_repro.claims.lines.mutation import blank_test
+from paper_repro.printed.latex_math import LatexMathError
 from paper_repro.printed.lines import sec4_5 as pl
 from paper_repro.printed.lines import substituted, verbatim
-from paper_repro.printed.lines.sec5_latex import LatexMathError, listed_range, parse, parse_relation
+from paper_repro.printed.parsed import listed_range, relation, value
 
 
 def test_y_range_erratum_is_sharp():
@@ -104,8 +105,8 @@ def test_parser_reads_the_paper_notation():
     a = sympy.Symbol("alpha")
     half = a / 2
     expected = 2 * sympy.cos(half) / sympy.sin(half) ** 2
-    assert parse(r"\frac{2\cos\frac{\alpha}{2}}{\sin ^{2}\frac{\alpha}{2}}") == expected
-    rel = parse_relation(r"r_{6,4,2}^{\alpha} & =c_{6,4}\left( 2+\dfrac{6}{\sin^{2}\frac{\alpha}{2}}\right)")
+    assert value(r"\frac{2\cos\frac{\alpha}{2}}{\sin ^{2}\frac{\alpha}{2}}") == expected
+    rel = relation(r"r_{6,4,2}^{\alpha} & =c_{6,4}\left( 2+\dfrac{6}{\sin^{2}\frac{\alpha}{2}}\right)")
     c64 = sympy.Function("c")(6, 4)
     assert rel.ops == ["="] and sympy.simplify(rel.parts[1] - c64 * (2 + 6 / sympy.sin(a / 2) ** 2)) == 0
     assert listed_range(r"~i=j+1,j+2,\ldots,n-1,", "i")[1:] == (sympy.Symbol("j") + 1, sympy.Symbol("n") - 1)

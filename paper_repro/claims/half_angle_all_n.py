@@ -162,11 +162,11 @@ def printed_products() -> dict:
     unread."""
     import re
 
-    from paper_repro.printed.lines import sec7_latex as X
+    from paper_repro.claims.lines import sec7 as X
     from paper_repro.printed.lines import verbatim
 
     def products(tex: str) -> list[tuple[str, str]]:
-        body = X.clean(tex)
+        body = X.layout_free(tex)
         found = re.findall(r"\\overline\{([RGB])\}_\{([^{}]+)\}\^\{\\alpha\}\\cdot\\overline\{([RGB])\}_\{(\d,\d,\d)\}"
                            r"\^\{\\alpha\}", body)
         rest = re.sub(r"\\overline\{[RGB]\}_\{[^{}]+\}\^\{\\alpha\}\\cdot\\overline\{[RGB]\}_\{\d,\d,\d\}\^\{\\alpha\}",
@@ -187,7 +187,7 @@ def printed_products() -> dict:
                          r"would also provide:", re.sub(r"\s+", " ", verbatim("sec7-unity-product-basis")))
     if not basis:
         raise ValueError("unread target basis")
-    target = X.to_sympy(X.clean(basis.group(1)))
+    target = X.read_expression(X.layout_free(basis.group(1)))
     cons = re.sub(r"\s+", " ", verbatim("sec7-transformation-consequences"))
     mc = re.fullmatch(r"\\item a recurrence relation between normalizing coefficients of consecutive orders; "
                       r"\\item the symmetry and non-negativity of normalizing coefficients; \\item the order "
@@ -201,7 +201,7 @@ def printed_products() -> dict:
     if not re.search(r"\bfor all indices\b", index):
         raise ValueError("no 'for all indices'")
     return {"easy": easy, "hard": hard, "target_order": target / 2,
-            "elevation": (X.to_sympy(mc.group(1)), X.to_sympy(mc.group(2))),
+            "elevation": (X.read_expression(mc.group(1)), X.read_expression(mc.group(2))),
             "index_set": lambda n: [(i, j) for j in X.listed_values(index, "j", n=n)
                                     for i in X.listed_values(index, "i", n=n, j=j)]}
 

@@ -80,7 +80,9 @@ def _names(n: int, idx) -> set[str]:
 
 def index_set_checks(n: int) -> dict[str, bool]:
     """Printed index sets against the computed elimination (n >= 2)."""
-    steps = elimination(n)
+    from paper_repro.claims.lines.sec1_3 import elimination_geometry
+
+    steps = elimination(n, elimination_geometry())
     after = [set(s["alive_before"]) - set(s["nonvanishing"]) for s in steps]
     pre = "linear_combination_union"
     out = {pre: _names(n, range(len(united_system(n)))) == printed.linear_combination_union(n),

@@ -103,10 +103,11 @@ def _render(terms: dict[str, fmpq]) -> str:
 def printed_conversions() -> list[tuple[str, str, tuple[int, int, int], list[tuple[Fraction, str]]]]:
     """Every printed Bezier point of the alpha -> 0 conversions (before Question que:limiting_case), read from the
     transcribed lines (``sec7-conv2-*``, ``sec7-conv3-*`` of :mod:`paper_repro.printed.lines.sec7`) by the strict
-    reader :func:`paper_repro.printed.lines.sec7_latex.strict_conversion`: ``(line id, printed key p_{d,e,f},
-    index, [(weight, control point), ...])``.  No copy of the formulas: a changed transcription changes the claim."""
+    reader (:func:`paper_repro.printed.parsed.conversion`, terms in the printed order): ``(line id, printed key
+    p_{d,e,f}, index, [(weight, control point), ...])``.  No copy of the formulas: a changed transcription changes
+    the claim."""
     from paper_repro.printed.lines import sec7 as lines7
-    from paper_repro.printed.lines.sec7_latex import strict_conversion
+    from paper_repro.printed.parsed import conversion as strict_conversion
 
     out = []
     for ln in lines7.LINES:

@@ -22,7 +22,8 @@ import numpy as np
 
 from paper_repro.core.labels import exponents, united_system
 from paper_repro.core.layout import position
-from paper_repro.theory.elimination import deriv_at_0, elimination
+from paper_repro.theory import elimination as _elimination
+from paper_repro.theory.elimination import deriv_at_0
 from paper_repro.util.registry import figure
 
 from . import COLOR_OF, plt, save
@@ -55,6 +56,15 @@ def _draw_step(ax, n: int, step: dict, title: str) -> None:
     ax.set_title(title, fontsize=11)
     ax.set_aspect("equal")
     ax.axis("off")
+
+
+def elimination(n: int) -> list[dict]:
+    """The steps of the proof (:func:`paper_repro.theory.elimination.elimination`) along the printed
+    parametrizations: their geometry is computed from the transcriptions
+    (:func:`paper_repro.claims.lines.sec1_3.elimination_geometry`, the one definition)."""
+    from paper_repro.claims.lines.sec1_3 import elimination_geometry
+
+    return _elimination.elimination(n, elimination_geometry())
 
 
 def _steps_figure(n: int, rows: list[int], path: Path) -> Path:

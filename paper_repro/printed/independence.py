@@ -2,14 +2,14 @@
 
 Each function returns the labels (``"R_{2n,2n-i,j}"`` etc., in the paper's own colour, the centre as
 ``R_{2n,n,n}``) of the functions the printed equality still contains, read from the transcriptions of its rows
-(:mod:`paper_repro.printed.lines.sec1_3`) with :func:`paper_repro.printed.lines.read.sum_terms` -- sums, bounds,
+(:mod:`paper_repro.printed.lines.sec1_3`) with :func:`paper_repro.printed.parsed.function_terms` -- sums, bounds,
 constants and functions as printed, never retyped.
 """
 
 from __future__ import annotations
 
 from paper_repro.printed.lines import verbatim
-from paper_repro.printed.lines.read import sum_terms, term_indices
+from paper_repro.printed.parsed import function_terms, term_indices
 
 #: equation label -> the transcribed lines of its rows
 ROWS = {
@@ -32,7 +32,7 @@ def printed_set(label: str, n: int, r: int = 0) -> set[str]:
     """Labels named by the printed rows of equation ``label`` at order n and step r."""
     out: set[str] = set()
     for line_id in ROWS[label]:
-        for color, i, j in term_indices(sum_terms(verbatim(line_id)), n=n, r=r):
+        for color, i, j in term_indices(function_terms(verbatim(line_id)), n=n, r=r):
             out.add(f"{color}_{{{2 * n},{2 * n - i},{j}}}")
     return out
 

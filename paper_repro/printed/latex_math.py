@@ -59,6 +59,7 @@ Sum(binomial(2*n, i), (i, 0, 2*n))
 
 from __future__ import annotations
 
+import dataclasses
 import functools
 import re
 from dataclasses import dataclass, field
@@ -69,7 +70,8 @@ from lark import Lark, Token, Transformer
 from lark.exceptions import LarkError, UnexpectedCharacters, UnexpectedEOF, UnexpectedInput
 
 __all__ = ["LatexMathError", "Relation", "parse", "parse_relation", "parse_cases", "parse_vector", "index_set",
-           "inline_math", "evaluate_sums", "Term", "terms", "clean", "D", "Family", "Cases", "PM"]
+           "inline_math", "evaluate_sums", "Term", "terms", "untagged", "parse_conditions", "summands", "clean", "D",
+           "Family", "Cases", "PM"]
 
 
 class LatexMathError(ValueError):
@@ -451,7 +453,8 @@ class Relation:
     (``\\exists``).  The op ``'equiv'`` has as right part ``Tuple(b, m)`` for ``a \\equiv b \\pmod{m}``; ``'in'``
     with a ``Tuple`` right part is a listed range ``i=0,1,\\ldots,2n`` (``ldots`` is the Symbol ``ldots``).
     ``continues`` is the operator (``'+'``, ``'-'``, ``'*'``) a row ends with when the next row continues it, or
-    ``'forall'`` for a row that ends inside a clause (``,~\\forall\\left(``) the next row goes on with.
+    ``'forall'`` for a row that ends inside a clause (``,~\\forall\\left(``) the next row goes on with;
+    ``unfinished`` the cleaned text of any other last clause that opens a parenthesis the next row closes.
     """
 
     parts: list[Any]
@@ -460,6 +463,7 @@ class Relation:
     conditions: list[Relation] = field(default_factory=list)
     quantifier: str | None = None
     continues: str | None = None
+    unfinished: str | None = None  # a last clause the next transcribed row finishes (``\forall (``), cleaned text
 
     def as_boolean(self):
         """The chain as a sympy boolean (``And`` of each link); ``in``/``sim`` links are refused."""
@@ -567,9 +571,13 @@ class _Build(Transformer):
 
     # arithmetic
     def add(self, c):
+        if _ORDERED and all(isinstance(x, sympy.Expr) for x in c):
+            return sympy.Add(c[0], c[1], evaluate=False)
         return c[0] + c[1]
 
     def sub(self, c):
+        if _ORDERED and all(isinstance(x, sympy.Expr) for x in c):
+            return sympy.Add(c[0], -c[1], evaluate=False)
         return c[0] - c[1]
 
     def pm(self, c):
@@ -836,6 +844,8 @@ class _Build(Transformer):
         name = _name(base)
         idx = list(sub) if isinstance(sub, sympy.Tuple) else [sub]
         if sup is None or sup == _TAG or sup == sympy.Tuple(_TAG):
+            if sup is None and _UNTAGGED is not None:
+                _UNTAGGED.append(_fn(name, idx))
             return _fn(name, idx)
         if sup == "prime":
             return _fn(name + "_prime", idx)
@@ -870,6 +880,46 @@ class _Build(Transformer):
 
 
 _BUILDER = _Build([])
+_UNTAGGED: list | None = None  # while untagged() reads: the indexed names printed without a superscript
+_ORDERED = False  # while summands() reads: a sum is built unevaluated, its terms in the printed order
+
+
+def summands(tex: str) -> list[list]:
+    r"""The terms of every part of the relation ``tex`` in the printed order (sympy reorders an evaluated sum):
+    one list per part, each term a sympy product (a ``-`` is a factor -1).
+
+    >>> summands(r"\mathbf{p}_{4,0,1}=\frac{1}{5}\mathbf{r}_{4,4,0}-\frac{4}{5}\mathbf{r}_{4,3,0}")
+    [[p_vec(4, 0, 1)], [r_vec(4, 4, 0)/5, -4*r_vec(4, 3, 0)/5]]
+    """
+    global _ORDERED
+    saved, _ORDERED = _ORDERED, True
+    try:
+        rel = parse_relation(tex)
+    finally:
+        _ORDERED = saved
+
+    def flat(e) -> list:
+        if isinstance(e, sympy.Add):
+            return [t for a in e.args for t in flat(a)]
+        return [e]
+
+    return [flat(p) for p in rel.parts]
+
+
+def untagged(tex: str) -> list:
+    r"""The indexed names of the relation ``tex`` printed without a superscript (the tag ``^{\alpha}`` of the
+    notation is dropped by :func:`parse`; this says where it was missing), in the order read.
+
+    >>> untagged(r"r_{6,4,1}^{\alpha}=c_{6,4}\left( 2+\frac{1}{2}\right)")
+    [c(6, 4)]
+    """
+    global _UNTAGGED
+    saved, _UNTAGGED = _UNTAGGED, []
+    try:
+        parse_relation(tex)
+        return list(_UNTAGGED)
+    finally:
+        _UNTAGGED = saved
 
 
 def _as_basic(x):
@@ -891,8 +941,8 @@ def _fresh(x):
     """A copy of a parsed object that a caller may change without changing the memo (:func:`_run`): sympy
     expressions are immutable and shared; Relations, matrices, lists and dicts are copied."""
     if isinstance(x, Relation):
-        return Relation([_fresh(p) for p in x.parts], list(x.ops), x.lead, [_fresh(c) for c in x.conditions],
-                        x.quantifier, x.continues)
+        return dataclasses.replace(x, parts=[_fresh(p) for p in x.parts], ops=list(x.ops),
+                                   conditions=[_fresh(c) for c in x.conditions])
     if isinstance(x, sympy.MatrixBase) and not isinstance(x, sympy.ImmutableMatrix):
         return x.copy()
     if isinstance(x, list):
@@ -1062,6 +1112,10 @@ def parse_relation(tex: str) -> Relation:
         cont = {"+": "+", "-": "-"}.get(m.group(1), "*")
         s = s[:m.start()].rstrip()
     chunks = _split_top(s)
+    unfinished = None
+    if len(chunks) > 1 and chunks[-1].count("(") > chunks[-1].count(")"):
+        # the last clause opens a parenthesis the next transcribed row closes (``,~\forall\left(``): kept as text
+        unfinished = chunks.pop().strip()
     if len(chunks) > 1 and not any(_RELOP_RE.search(c) for c in chunks):
         items = [_run("start_expr", c.strip(), arrays) for c in chunks]
         return Relation([sympy.Tuple(*items)], [], continues=cont)
@@ -1086,7 +1140,23 @@ def parse_relation(tex: str) -> Relation:
         r = Relation([r], [])
     r.conditions = _conditions(chunks[k:], arrays) if len(chunks) > k else []
     r.continues = cont
+    r.unfinished = unfinished
     return r
+
+
+def parse_conditions(tex: str) -> list[Relation]:
+    r"""A list of clauses alone, as they follow a relation (each a :class:`Relation`; a listed range
+    ``i=0,1,\ldots,2n`` is one clause ``i in (0, 1, ldots, 2n)``; ``\forall`` sets ``quantifier``); leading commas
+    are skipped.
+
+    >>> [(c.parts, c.ops, c.quantifier) for c in parse_conditions(r",~\forall i=0,1,\ldots,n.")]
+    [([i, (0, 1, ldots, n)], ['in'], 'forall')]
+    """
+    arrays: list = []
+    s = clean(tex, arrays).lstrip(", ")
+    if not s:
+        raise LatexMathError("nothing to read")
+    return _conditions(_split_top(s), arrays)
 
 
 _DISPLAY = re.compile(r"\\\[(.*?)(\\\]|$)|\\begin\{(equation|align)\*?\}(.*?)(\\end\{(equation|align)\*?\}|$)", re.S)

@@ -1,6 +1,6 @@
 """The printed normalizing-coefficient formulas of Section sec:partition_of_unity, read from their transcriptions.
 
-Nothing here is typed in: every value is parsed (:mod:`paper_repro.printed.lines.sec5_latex`) from the verbatim
+Nothing here is typed in: every value is parsed (:mod:`paper_repro.printed.latex_math`) from the verbatim
 LaTeX of the lines of :mod:`paper_repro.printed.lines.sec4_5` at the moment it is asked for (so the blank and
 mutation tests of :mod:`paper_repro.claims.lines.mutation` reach every user).  ``s = sin(alpha/2)``,
 ``c = cos(alpha/2)``, ``C(i) = c_{2n,i}^alpha`` (the univariate constants); the values are computed with the
@@ -22,8 +22,9 @@ from collections.abc import Callable, Iterator, Mapping
 
 import sympy
 
+from paper_repro.printed.latex_math import LatexMathError
 from paper_repro.printed.lines import line, verbatim
-from paper_repro.printed.lines.sec5_latex import LatexMathError, parse, parse_relation
+from paper_repro.printed.parsed import listed_range, relation, value
 
 #: The coefficients of the Examples, in the order printed (their lines are ``sec4_5-ex-<slug>-...``).
 LABELS = ("r_{2,2,0}", "r_{2,1,0}", "r_{2,1,1}", "r_{4,4,0}", "r_{4,3,0}", "r_{4,2,0}", "r_{4,3,1}", "r_{4,2,1}",
@@ -75,7 +76,7 @@ def evaluate(e: sympy.Expr, s, c, C: Callable | None = None):
 
 
 def _parts(line_id: str) -> list[sympy.Expr]:
-    rel = parse_relation(verbatim(line_id))
+    rel = relation(verbatim(line_id))
     if set(rel.ops) != {"="}:
         raise LatexMathError(f"{line_id}: relations {rel.ops}")
     return [_in_s_c(p) for p in rel.parts]
@@ -151,7 +152,7 @@ def final_value(label: str, s, c):
 
 def remark_level_0(n: int, i: int, C: Callable):
     """Remark normalizing_coeff_of_level_0, parsed: the constant r_{2n,2n-i,0} is equated with, at (n, i)."""
-    rel = parse_relation(verbatim("sec4_5-level0-r-c"))
+    rel = relation(verbatim("sec4_5-level0-r-c"))
     if rel.ops != ["="]:
         raise LatexMathError(f"relations {rel.ops}")
     e = rel.parts[1].subs({sympy.Symbol("n"): n, sympy.Symbol("i"): i})
@@ -161,8 +162,6 @@ def remark_level_0(n: int, i: int, C: Callable):
 def prop_level_1(n: int, i: int, s, c, C: Callable):
     """Proposition prop:level_1_coefficients (eq. level_1_coefficients), parsed: the case whose printed condition
     holds at i (``i=1`` or ``i=2,3,\\ldots,n``), at order n."""
-    from paper_repro.printed.lines.sec5_latex import listed_range
-
     for lid in ("sec4_5-level1-i1", "sec4_5-level1-i"):
         tex = verbatim(lid)
         k = tex.find(", &")
@@ -174,10 +173,10 @@ def prop_level_1(n: int, i: int, s, c, C: Callable):
             _v, lo, hi = listed_range(cond, "i")
             hit = int(lo.subs(n_, n)) <= i <= int(hi.subs(n_, n))
         else:
-            rel = parse_relation(cond)
+            rel = relation(cond)
             hit = rel.ops == ["="] and rel.parts[0] == sympy.Symbol("i") and rel.parts[1] == i
         if hit:
-            e = _in_s_c(parse(tex[:k])).subs({n_: n, sympy.Symbol("i"): i})
+            e = _in_s_c(value(tex[:k])).subs({n_: n, sympy.Symbol("i"): i})
             return evaluate(e, s, c, C)
     raise LatexMathError(f"no printed case of eq. level_1_coefficients for i = {i}")
 

@@ -3,7 +3,7 @@ transcriptions (lines ``sec6-torus-point-<label>`` of :mod:`paper_repro.printed.
 
 Each printed row ``\\mathbf{r}_{4,4,0} = \\left[\\begin{array}[c]{ccc} x & y & z \\end{array}\\right]^{T}`` is
 parsed by :func:`read_point` into its label and three sympy expressions in the symbols ``alpha``, ``varrho``,
-``mu`` with the reader of :mod:`paper_repro.printed.lines.sec6_latex` (anything unread raises
+``mu`` with the reader of :mod:`paper_repro.printed.latex_math` (anything unread raises
 :class:`TorusReadError`; a blank line ``XXX`` is refused).
 
 :func:`point_value` evaluates a parsed coordinate exactly (python-flint rationals) at an angle with rational
@@ -26,38 +26,29 @@ from collections.abc import Callable
 
 import sympy
 
-from paper_repro.printed.latex_math import parse_vector
-from paper_repro.printed.lines.sec6_latex import (
-    ALPHA,
-    MU,
-    VARRHO,
-    LatexReadError,
-    exact_value,
-    parse_expression,
-    strip_comments,
-)
+from paper_repro.printed.latex_math import LatexMathError, parse_relation
+from paper_repro.printed.parsed import ALPHA, MU, VARRHO, exact_value, point_label
+from paper_repro.printed.parsed import expression as parse_expression
 
 POINT_LINE_PREFIX = "sec6-torus-point-"
-TorusReadError = LatexReadError
-
-
-_ROW = re.compile(r"^\s*\\mathbf\{([rgb])\}_\{(\d+),(\d+),(\d+)\}\s*%?\s*\\normalcolor\s*&\s*=\s*\\left\[\s*"
-                  r"\\begin\{array\}\s*\[c\]\{ccc\}%?\s*(.*?)\\end\{array\}\s*\\right\]\s*\^\{T\}\s*$", re.S)
+TorusReadError = LatexMathError
 
 
 def read_point(tex: str) -> tuple[str, tuple[sympy.Expr, sympy.Expr, sympy.Expr]]:
-    """``(label, (x, y, z))`` of one printed control point row (``TorusReadError`` if it is not one)."""
-    m = _ROW.match(tex)
-    if not m:
-        raise TorusReadError(f"not a printed control point row: {tex[:50]!r}")
-    colour, a, b, c, body = m.groups()
-    cells = strip_comments(body).split("&")
-    if len(cells) != 3:
-        raise TorusReadError(f"{len(cells)} coordinates instead of 3 in {body[:50]!r}")
-    vector = parse_vector(tex[tex.index("\\left["):])  # the paper-wide reader (printed.latex_math)
-    if vector.shape != (3, 1) or any(not isinstance(x, sympy.Expr) for x in vector):
-        raise TorusReadError(f"not a column of 3 expressions: {vector}")
-    return f"{colour}_{{{a},{b},{c}}}", tuple(vector)  # type: ignore[return-value]
+    """``(label, (x, y, z))`` of one printed control point row ``\\mathbf{r}_{a,b,c} = [x y z]^{T}``, read by
+    :func:`paper_repro.printed.latex_math.parse_relation` (``TorusReadError`` if it is not one)."""
+    try:
+        rel = parse_relation(tex)
+        if rel.ops != ["="] or len(rel.parts) != 2 or rel.conditions:
+            raise TorusReadError(f"not one equation 'point = column': {rel.ops}")
+        point, vector = rel.parts
+        label = point_label(point)
+    except ValueError as exc:
+        raise TorusReadError(f"not a printed control point row: {tex[:50]!r} ({exc})") from None
+    if label[0] not in "rgb" or not isinstance(vector, sympy.MatrixBase) or vector.shape != (3, 1) or any(
+            not isinstance(x, sympy.Expr) for x in vector):
+        raise TorusReadError(f"not a control point and a column of 3 expressions: {point} = {vector}")
+    return label, tuple(vector)  # type: ignore[return-value]
 
 
 def point_line_ids() -> list[str]:
@@ -126,16 +117,17 @@ def coordinate_tex(line_id: str, axis: int) -> str:
     """The LaTeX of coordinate ``axis`` (0, 1, 2) of the printed point of ``line_id`` (for errata texts)."""
     from paper_repro.printed.lines import verbatim
 
-    m = _ROW.match(verbatim(line_id))
-    if not m:
+    tex = re.sub(r"%[^\n]*\n?", " ", verbatim(line_id))  # LaTeX comments (layout) out
+    begin, end = tex.find("{ccc}"), tex.find("\\end{array}")
+    if begin < 0 or end < begin:
         raise TorusReadError(f"not a printed control point row: {line_id}")
-    return " ".join(strip_comments(m.group(5)).split("&")[axis].split())
+    return " ".join(tex[begin + len("{ccc}"):end].split("&")[axis].split())
 
 
 # -- evaluation ------------------------------------------------------------------------------------------------
 def point_value(expr: sympy.Expr, cos_half, sin_half, rho, mu):
     """A parsed coordinate at ``cos(alpha/2) = cos_half``, ``sin(alpha/2) = sin_half`` (exact numbers, e.g. fmpq),
-    ``varrho = rho``, ``mu = mu`` (:func:`~paper_repro.printed.lines.sec6_latex.exact_value`)."""
+    ``varrho = rho``, ``mu = mu`` (:func:`~paper_repro.printed.lines.parsed.exact_value`)."""
     return exact_value(expr, {VARRHO: rho, MU: mu}, {ALPHA: (2, cos_half, sin_half)}, cos_half * 0)
 
 

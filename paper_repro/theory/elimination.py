@@ -38,15 +38,17 @@ def deriv_at(e, var: int, z: int, x: mpmath.mpf) -> mpmath.mpf:
     return mpmath.diff(lambda t: mpmath.sin(t / 2) ** s * mpmath.cos(t / 2) ** c, x, z)
 
 
-# (variable set to 0 by the substitution, the variable running with it, the third) for each
-# parametrization of the proof; the derivative of order r is sum_k C(r,k) (-1)^k d^{r-k}_first d^k_second
-PARAMS = {"parametrization_1_y_0": (1, 2, 0), "parametrization_2_x_0": (0, 1, 2),
-          "parametrization_3_y_0": (2, 0, 1)}
+#: The geometry of a parametrization of the proof, as the callers pass it: ``(the variable set to 0 by the
+#: substitution, the variable running with it, the third)`` (0 = u, 1 = v, 2 = w); the r-th derivative at the boundary
+#: is sum_k C(r,k) (-1)^k d^{r-k}_first d^k_second.  It is not defined here: the callers compute it from the printed
+#: parametrizations (:func:`paper_repro.claims.lines.sec1_3.step_geometry`, read from the transcriptions).
+Geometry = tuple[int, int, int]
 
 
-def nonvanishing(e, param: str, r: int, alpha: mpmath.mpf) -> bool:
-    """Whether the r-th derivative of the function along ``param`` at the boundary is non-zero."""
-    zero_var, other, fixed = PARAMS[param]
+def nonvanishing(e, geometry: Geometry, r: int, alpha: mpmath.mpf) -> bool:
+    """Whether the r-th derivative of the function along the parametrization of ``geometry`` at the boundary is
+    non-zero."""
+    zero_var, other, fixed = geometry
     with mpmath.workdps(30):
         for x in (alpha / 3, alpha * 5 / 7):
             total = mpmath.mpf(0)
@@ -61,14 +63,15 @@ def nonvanishing(e, param: str, r: int, alpha: mpmath.mpf) -> bool:
     return False
 
 
-def elimination(n: int, alpha: float = 1.0) -> list[dict]:
-    """The steps of the proof: list of {r, param, alive_before, nonvanishing} (indices into T_{2n})."""
+def elimination(n: int, params: dict[str, Geometry], alpha: float = 1.0) -> list[dict]:
+    """The steps of the proof: list of {r, param, alive_before, nonvanishing} (indices into T_{2n}); ``params`` are
+    the parametrizations in the order the proof takes them, each with its :data:`Geometry`."""
     labels = united_system(n)
     alive = set(range(len(labels)))
     steps = []
     for r in range(n):
-        for param in PARAMS:
-            nz = {k for k in alive if nonvanishing(exponents(labels[k]), param, r, mpmath.mpf(alpha))}
+        for param, geometry in params.items():
+            nz = {k for k in alive if nonvanishing(exponents(labels[k]), geometry, r, mpmath.mpf(alpha))}
             steps.append({"r": r, "param": param, "alive_before": sorted(alive), "nonvanishing": sorted(nz)})
             alive -= nz
     if alive != {0}:

@@ -369,6 +369,16 @@ EQUIVALENT.update({
         "lie in span T-bar_6; the check finds this (ranks mod p) and says so"),
 })
 
+# -- sec7-square-of-unity read by latex_math (helper readers_b): the exponents of "1^{2} = (sum)^{2}" ------------------
+EQUIVALENT.update({
+    "sec7-square-of-unity:bound:7747f939ee": (
+        "1^{2} -> 1^{2-1}: 1^1 = 1 = 1^2, and the printed sum of the members of T-bar_2 is 1, so 1^{1} = (sum)^{2} "
+        "still holds"),
+    "sec7-square-of-unity:bound:2a5635bc29": (
+        "(sum)^{2} -> (sum)^{2-1}: the printed sum of the members of T-bar_2 is 1, so (sum)^1 = 1 = 1^{2} still "
+        "holds"),
+})
+
 # -- the last survivors of the whole run (make mutate-lines, every part) ---------------------------------------------
 EQUIVALENT.update({
     "sec4_5-symmetry-1:bound:405957079c": (

@@ -218,6 +218,19 @@ def step_geometry(param: str) -> tuple[tuple[int, int, int], int, int, int]:
     return direction, zero[0], fixed[0], rest
 
 
+def elimination_geometry() -> dict[str, tuple[int, int, int]]:
+    """The three step parametrizations in the proof's order, each as ``(coordinate set to 0, coordinate running
+    with the parameter, the third)`` (:data:`paper_repro.theory.elimination.Geometry`), computed from the printed
+    maps (:func:`step_geometry`)."""
+    out = {}
+    for param in STEP_PARAMS:
+        direction, zero, fixed, rest = step_geometry(param)
+        if (direction[zero], direction[rest]) != (1, -1):
+            raise ValueError(f"{param}: direction {direction} is not d_zero - d_other")
+        out[param] = (zero, rest, fixed)
+    return out
+
+
 def _split(e: tuple[int, ...], var: int) -> tuple[int, int]:
     return e[2 * var], e[2 * var + 1]
 
@@ -1994,6 +2007,7 @@ def printed_rows(check_id: str, n: int, r: int = 0, override: dict[str, str] | N
     by the functions' own names (no alias); a name that is not a member of T_{2n} stays in the set as a string (a
     mismatch).  ``override`` replaces transcriptions (tests)."""
     from paper_repro.printed.lines.sec1_3 import LINES
+    from paper_repro.printed.parsed import term_indices
 
     rows = {x.id: x.verbatim for x in LINES if x.check == check_id and x.kind == "display"}
     rows.update({k: v for k, v in (override or {}).items() if k in rows})
@@ -2292,7 +2306,7 @@ def elimination_orders(override: dict[str, str] | None = None) -> LineResult:
            "sec1_3-fig-j1-caption-orders", "sec1_3-fig-j1-text")
     t = _transcribed(ids, override)
     try:
-        ranges = {k: listed_range(t[k], "r") for k in ids[:3]}
+        ranges = {k: listed_range(t[k], "r")[1:] for k in ids[:3]}
         for k in ids[:3]:  # every listing of the line steps by one and they agree
             if len({(x.start, x.stop) for x in listed_orders(t[k], "r", n=5)}) != 1:
                 raise ValueError(f"{k}: listings differ")
@@ -2340,10 +2354,10 @@ def induction_orders(verbatim_text: str | None = None) -> LineResult:
         "sec1_3-induction-orders"]
 
     def run(text: str) -> tuple[bool, list]:
-        lo, hi = listed_range(text, "r")
+        _r, lo, hi = listed_range(text, "r")
         if "induction on the derivation order" not in text:
             raise ValueError("not the induction on the derivation order")
-        hyp_lo, hyp_hi = listed_range(_transcribed(["sec1_3-Lr-orders"])["sec1_3-Lr-orders"], "r")
+        _r, hyp_lo, hyp_hi = listed_range(_transcribed(["sec1_3-Lr-orders"])["sec1_3-Lr-orders"], "r")
         bad = []
         for n in N_PROOF:
             used = sorted({r for r, _p, _b, gone in elimination(n) if gone})

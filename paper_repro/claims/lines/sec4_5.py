@@ -81,7 +81,7 @@ def parse(tex: str):
     return section_names(lm.parse(tex))
 
 
-def bound(expr: str, **env: int) -> int:
+def bound(expr, **env: int) -> int:
     """Integer value of a printed bound such as ``2n-1-j`` (read by :func:`parse`) with ``env`` bound;
     :class:`LatexMathError` if a name stays unbound or the value is not an integer.
 
@@ -98,8 +98,8 @@ def bound(expr: str, **env: int) -> int:
 
 
 @cache
-def _bound_fn(expr: str):
-    e = parse(expr)
+def _bound_fn(expr):
+    e = parse(expr) if isinstance(expr, str) else sp.sympify(expr)  # a text, or a bound latex_math already read
     names = tuple(sorted(s.name for s in e.free_symbols))
     return names, sp.lambdify([sp.Symbol(x) for x in names], e, "math")
 
@@ -1285,7 +1285,7 @@ def half_angle_exponents(expr) -> tuple[int, ...]:
 def read_proof_r() -> tuple:
     """The ranges j = a..b, i = c..d (read from both lines that print them: they must agree), the printed indices of
     R_{2n,2n-i,j} and its printed product of half-angle powers."""
-    from paper_repro.printed.lines.read import listed_range
+    from paper_repro.printed.parsed import listed_range
 
     rng = set()
     for lid in ("sec4_5-proof-symmetry-reduction", "sec4_5-proof-R"):
@@ -1295,7 +1295,7 @@ def read_proof_r() -> tuple:
             raise LatexMathError(f"{lid}: not 'sufficient to show that for all indices'")
         if not m:
             raise LatexMathError(f"{lid}: no ranges of j and i")
-        rng.add((listed_range("j=" + m.group(1), "j"), listed_range("i=" + m.group(2), "i"),
+        rng.add((listed_range("j=" + m.group(1), "j")[1:], listed_range("i=" + m.group(2), "i")[1:],
                  re.sub(r"\s", "", m.group(1)), re.sub(r"\s", "", m.group(2))))
     if len(rng) != 1:
         raise LatexMathError("the two lines print different ranges")

@@ -27,17 +27,10 @@ from paper_repro.core.domain import rational_alpha, sample_rational_points
 from paper_repro.core.labels import BasisLabel, exponents, index_of, united_system
 from paper_repro.core.normalization import coefficients, solve_full_exact
 from paper_repro.core.univariate import c_numerator_by_expansion
+from paper_repro.printed import parsed as P
+from paper_repro.printed.latex_math import LatexMathError, Relation
 from paper_repro.printed.lines import line, lines_of, verbatim
 from paper_repro.printed.lines import sec4_5 as pl
-from paper_repro.printed.lines.sec5_latex import (
-    LatexMathError,
-    Relation,
-    expand_sums,
-    listed_range,
-    parse,
-    parse_relation,
-    unlabelled,
-)
 
 
 # ---------------------------------------------------------------------------------------------------------------
@@ -46,16 +39,15 @@ from paper_repro.printed.lines.sec5_latex import (
 def read_weight_labels(tex: str, n: int) -> list[str]:
     """The normalizing weights named by the printed list ``r_{2n,n,n}^{\\alpha},\\left\\{ r_{2n,2n-i,j}^{\\alpha}
     \\right\\} _{j=0,i=j}^{n-1,2n-1-j},..`` at order n, read from the transcription."""
-    from paper_repro.printed.lines.read import bound
 
     text = tex.replace("%", " ")
     sets = re.compile(r"\\left\\\{\s*([rgb])_\{2n,2n-i,j\}\^\{\\alpha\}\s*\\right\\\}\s*_\{j=([^,{}]+),i=([^{}]+)\}"
                       r"\s*\^\{([^,{}]+),([^{}]+)\}")
     out = [f"{c}_{{{2 * n},{2 * n - i},{j}}}" for c, jlo, ilo, jhi, ihi in sets.findall(text)
-           for j in range(bound(jlo, n=n), bound(jhi, n=n) + 1)
-           for i in range(bound(ilo, n=n, j=j), bound(ihi, n=n, j=j) + 1)]
+           for j in range(P.bound(jlo, n=n), P.bound(jhi, n=n) + 1)
+           for i in range(P.bound(ilo, n=n, j=j), P.bound(ihi, n=n, j=j) + 1)]
     for c, a, b in re.findall(r"(?<![\\\w{])([rgb])_\{2n,([^{}]+?),([^{}]+?)\}", sets.sub(" ", text)):
-        out.append(f"{c}_{{{2 * n},{bound(a, n=n)},{bound(b, n=n)}}}")
+        out.append(f"{c}_{{{2 * n},{P.bound(a, n=n)},{P.bound(b, n=n)}}}")
     return out
 
 
@@ -103,7 +95,7 @@ def read_domain(tex: str) -> tuple[str, tuple[str, str, str]]:
 def partition_terms(expr: sympy.Expr, n: int, args: sympy.Tuple) -> list[str]:
     """The terms of the printed sum L at order n (sums written out): each must be +1 times a coefficient and the
     function of the same colour and indices applied to ``args``; returns the labels (``R_{2,1,0}`` ...)."""
-    e = expand_sums(expr.subs(sympy.Symbol("n"), n))
+    e = P.expand_sums(expr.subs(sympy.Symbol("n"), n))
     out = []
     for term in sympy.Add.make_args(sympy.expand(e)):
         coef, factors = term.as_coeff_mul()
@@ -127,11 +119,11 @@ def check_partition_sum(text: str | None = None) -> LineResult:
     Omega^alpha`` and, in the sentence before, the constant function and the word 'unique'.  With the coefficients
     of the exact collocation solve without symmetry (a square nonsingular system: unique), the printed sum
     evaluated at 6 fresh rational points of Omega^alpha equals the printed constant (n = 1..3, two alpha)."""
-    how = ("the four lines parsed (sec5_latex); coefficients by exact collocation without symmetry (delta_n "
+    how = ("the four lines parsed (latex_math); coefficients by exact collocation without symmetry (delta_n "
            "unknowns, nonsingular: unique), the printed sum at 6 fresh rational points of Omega^alpha, n = 1..3")
     try:
-        one = parse_relation(verbatim("sec4_5-L-one"))
-        lsum = parse_relation(text if text is not None else verbatim("sec4_5-L-sum"))
+        one = P.relation(verbatim("sec4_5-L-one"))
+        lsum = P.relation(text if text is not None else verbatim("sec4_5-L-sum"))
         quant, dom_vars = read_domain(verbatim("sec4_5-L-domain"))
         prose = verbatim("sec4_5-unique-coefs")
         if one.ops != ["="] or not one.parts[0].is_number or len(one.parts) != 2:
@@ -190,11 +182,11 @@ def read_symmetry(tex: str) -> tuple[sympy.Expr, sympy.Expr, tuple, tuple]:
     k = tex.find(",~")
     if k < 0:
         raise LatexMathError("no ',~' between the equation and its ranges")
-    rel = parse_relation(tex[:k])
+    rel = P.relation(tex[:k])
     if rel.ops != ["="] or len(rel.parts) != 2:
         raise LatexMathError(f"not one equation: {rel.ops}")
-    _j, jlo, jhi = listed_range(tex[k:], "j")
-    _i, ilo, ihi = listed_range(tex[k:], "i")
+    _j, jlo, jhi = P.listed_range(tex[k:], "j")
+    _i, ilo, ihi = P.listed_range(tex[k:], "i")
     return rel.parts[0], rel.parts[1], (jlo, jhi), (ilo, ihi)
 
 
@@ -360,7 +352,7 @@ def check_orders(tex: str, n_max: int = 3) -> tuple[bool, dict]:
     seg = next((x for x in tex.split("$")[1::2] if "\\leq" in x or "\\geq" in x), None)
     if seg is None:
         raise LatexMathError("no orders 'a \\leq r \\leq b' read")
-    rel = parse_relation(seg)
+    rel = P.relation(seg)
     r_, n_ = sympy.symbols("r n")
     if rel.ops != ["<=", "<="] or rel.parts[1] != r_:
         raise LatexMathError(f"orders read as {rel.ops} {rel.parts}")
@@ -375,23 +367,22 @@ def check_orders(tex: str, n_max: int = 3) -> tuple[bool, dict]:
 @line_check("sec4_5-unknowns")
 def check_unknowns(override: dict[str, str] | None = None) -> LineResult:
     """The unknowns {r_{2n,2n-i,j}}_{j=0,i=j}^{n,n} of both lines that print them (read from the transcriptions)."""
-    from paper_repro.printed.lines.read import bound, index_set
 
     rows = {}
     for n in range(1, 11):
         sets = []
         for tex in _texts({"sec4_5-unknowns", "sec4_5-closed-forms-index"}, override).values():
             try:
-                (jv, jlo, jhi), (iv, ilo, ihi) = index_set(tex)
+                (jv, jlo, jhi), (iv, ilo, ihi) = P.index_set(tex)
             except ValueError as exc:
                 return LineResult(False, how="the unknowns read from the transcriptions, n <= 10", kind="exhaustive",
                                   detail={"unread": str(exc)})
-            sets.append(sorted((i, j) for j in range(bound(jlo, n=n), bound(jhi, n=n) + 1)
-                               for i in range(bound(ilo, n=n, j=j), bound(ihi, n=n, j=j) + 1)))
+            sets.append(sorted((i, j) for j in range(P.bound(jlo, n=n), P.bound(jhi, n=n) + 1)
+                               for i in range(P.bound(ilo, n=n, j=j), P.bound(ihi, n=n, j=j) + 1)))
         elements = []
         for tex in _texts({"sec4_5-unknowns", "sec4_5-closed-forms-index"}, override).values():
             m = re.search(r"\\left\\\{\s*(.*?)\\right\\\}", tex)
-            elements.append(parse(m.group(1)) if m else None)
+            elements.append(P.value(m.group(1)) if m else None)
         if None in elements or elements[0] != elements[1]:
             return LineResult(False, how="the unknowns read from the transcriptions, n <= 10", kind="exhaustive",
                               detail={"unread": f"the members {elements}"})
@@ -427,10 +418,10 @@ def check_matrix_sizes() -> LineResult:
         segs = verbatim("sec4_5-matrix-sizes").split("$")[1::2]
         if len(segs) != 3:
             raise LatexMathError(f"{len(segs)} formulas, three sizes expected")
-        first = parse_relation(segs[0])
+        first = P.relation(segs[0])
         if first.ops != ["="] or first.parts[0] != sympy.Function("delta")(n_):
             raise LatexMathError(f"not delta_n = ..: {segs[0]!r}")
-        sizes = [first.parts[1], parse(segs[1]), parse(segs[2])]
+        sizes = [first.parts[1], P.value(segs[1]), P.value(segs[2])]
         rows, ok = {}, True
         for n in range(1, 11):
             part = symmetry_partition(n)
@@ -482,7 +473,7 @@ def example_heads() -> dict[int, list[str]]:
     out: dict[int, list[str]] = {}
     for ln in pl.LINES:
         if ln.near.startswith("normalizing_coefficients_n_") and ln.id.endswith(("-r-c", "-mid")):
-            head = parse_relation(verbatim(ln.id)).parts[0]
+            head = P.relation(verbatim(ln.id)).parts[0]
             out.setdefault(int(ln.near.rsplit("_", 1)[1]), []).append(_name(head))
     return out
 
@@ -496,22 +487,21 @@ _SYSTEM = re.compile(
 def read_system(tex: str, orders: str) -> dict:
     """system_partition_of_unity parsed: the orders of the derivative (numerator, denominator), the variable and the
     point of evaluation, the Kronecker delta, the quantified interval of x, and the orders ``\\forall r=..``."""
-    from paper_repro.printed.lines.read import interval
 
     m = _SYSTEM.search(tex)
     if not m:
         raise LatexMathError("d^r/dy^r L(u(x,y), v(x,y), w(x,y)) at y = .. = delta_{r,0}, forall x in .. not read")
     r_ = sympy.Symbol("r")
-    if parse(m.group("top")) != r_ or parse(m.group("bot")) != r_ or m.group("var") != "y" or m.group("pv") != "y":
+    if P.value(m.group("top")) != r_ or P.value(m.group("bot")) != r_ or m.group("var") != "y" or m.group("pv") != "y":
         raise LatexMathError("the derivative is not d^r/dy^r")
-    if parse(m.group("at")) != 0 or m.group("d1") != "r" or parse(m.group("d2")) != 0:
+    if P.value(m.group("at")) != 0 or m.group("d1") != "r" or P.value(m.group("d2")) != 0:
         raise LatexMathError("not at y = 0, or not delta_{r,0}")
-    lo, hi = (parse(x) for x in interval(tex, "x"))
+    lo, hi = P.interval(tex, "x")
     if (lo, hi) != (0, sympy.Symbol("alpha")):
         raise LatexMathError(f"x in [{lo}, {hi}], not [0, alpha]")
     if "\\forall r" not in orders.replace("~", " ").replace("  ", " "):
         raise LatexMathError("no quantifier 'for all r'")
-    return {"orders": listed_range(orders, "r")}
+    return {"orders": P.listed_range(orders, "r")}
 
 
 @line_check("sec4_5-system")
@@ -534,11 +524,6 @@ def check_system(override: dict[str, str] | None = None) -> LineResult:
                 raise LatexMathError(f"Example n = {k} lists {sorted(listed.get(k, []))}, the unknowns are {want}")
     except (LatexMathError, ValueError, TypeError) as exc:
         return LineResult(False, how="the system read from the transcription", detail={"unread": str(exc)[:200]})
-    n_sym = sympy.Symbol("n")
-
-    def bound(e, n):
-        return int(e.subs(n_sym, n))
-
     r_lo, r_hi = r_lo_e, r_hi_e
     ok, info = True, {}
     for n in (1, 2, 3):
@@ -552,7 +537,7 @@ def check_system(override: dict[str, str] | None = None) -> LineResult:
         for q in xs:
             sx, cx = _angle(q)
             su, cu = sa * cx - ca * sx, ca * cx + sa * sx  # (alpha - x)/2
-            for r in range(bound(r_lo, n=n), bound(r_hi, n=n) + 1):
+            for r in range(P.bound(r_lo, n=n), P.bound(r_hi, n=n) + 1):
                 vals = [y_derivative_at_0(exponents(lab), r, su, cu, sx, cx) for lab in united_system(n)]
                 lhs = sum((Q(int(coef[lab.coefficient].p), int(coef[lab.coefficient].q)) * v
                            for lab, v in zip(united_system(n), vals)), Q(0))
@@ -581,11 +566,11 @@ def read_parametrization(tex: str) -> dict:
     for seg in segs:
         m = re.fullmatch(r"\s*([uvw])\\left\(\s*x\s*,\s*y\s*\\right\)\s*=(.*)", seg, re.S)
         if m:
-            out[m.group(1)] = parse(m.group(2))
+            out[m.group(1)] = P.value(m.group(2))
         elif "\\ldots" in seg:
-            out["orders"] = listed_range(seg, "r")
+            out["orders"] = P.listed_range(seg, "r")
         elif seg.strip().startswith("y"):
-            rel = parse_relation(seg)
+            rel = P.relation(seg)
             if rel.ops != ["="] or rel.parts[0] != sympy.Symbol("y"):
                 raise LatexMathError(f"point {seg!r} not read")
             out["y0"] = rel.parts[1]
@@ -601,7 +586,6 @@ def check_chain_rule() -> LineResult:
     sum (binomial, sign, orders in v and w read from line sec4_5-chain-sum) as an identity in (x, y) (exact
     exponential expansion); the point y is the chain sum's; and at the printed orders the chain sum of L vanishes
     (check sec4_5-chain-sum, which reads the orders from this line)."""
-    from paper_repro.printed.lines.read import bound
 
     how = ("the parametrization and orders parsed; chain rule as identities in (x, y) by exact exponential expansion, "
            "n = 1..2; the printed chain sum vanishes at the printed orders (n = 1..3, exact)")
@@ -609,7 +593,7 @@ def check_chain_rule() -> LineResult:
     try:
         par = read_parametrization(verbatim("sec4_5-parametrization-restated"))
         chain = read_chain_sum(verbatim("sec4_5-chain-sum"))
-        if sympy.sympify(chain["y0"].strip()) != par["y0"]:
+        if chain["y0"] != par["y0"]:
             raise LatexMathError(f"the point y = {par['y0']} is not the chain sum's y = {chain['y0']}")
         lin = {}
         for var in ("v", "w"):
@@ -631,14 +615,13 @@ def check_chain_rule() -> LineResult:
                     for _ in range(r):
                         direct = direct.diff(1)
                     formula = EP(2)
-                    for k in range(bound(chain["klo"], r=r), bound(chain["khi"], r=r) + 1):
+                    for k in range(P.bound(chain["klo"], r=r), P.bound(chain["khi"], r=r) + 1):
                         g = f
-                        for _ in range(bound(chain["pv"], r=r, k=k)):
+                        for _ in range(P.bound(chain["pv"], r=r, k=k)):
                             g = g.diff(1)
-                        for _ in range(bound(chain["pw"], r=r, k=k)):
+                        for _ in range(P.bound(chain["pw"], r=r, k=k)):
                             g = g.diff(2)
-                        weight = comb(bound(chain["btop"], r=r, k=k), bound(chain["bbot"], r=r, k=k)) * \
-                            int(chain["base"]) ** bound(chain["sexp"], r=r, k=k)
+                        weight = chain_weight(chain, r, k)
                         formula = formula + g.linear(to_xy) * weight
                     ok &= direct == formula
         vanishes = check_chain_sum().holds_as_printed
@@ -676,7 +659,7 @@ def check_tan_polynomial() -> LineResult:
            "of the monomials, n = 1..6")
     n_, x_, a_ = sympy.symbols("n x alpha")
     try:
-        segs = [parse(s) for s in verbatim("sec4_5-tan-polynomial").split("$")[1::2]]
+        segs = [P.value(s) for s in verbatim("sec4_5-tan-polynomial").split("$")[1::2]]
         if len(segs) != 6:
             raise LatexMathError(f"{len(segs)} formulas read, six expected")
         par = read_parametrization(verbatim("sec4_5-parametrization-restated"))
@@ -708,12 +691,11 @@ def check_y_range() -> LineResult:
     """The interval of y parsed from the line (lower and upper end): with the parametrization u = alpha - x,
     v = y, w = x - y the printed triangle leaves Omega^alpha; the correction recorded in the erratum (the upper end
     alpha - x, as printed, replaced by x) maps it onto Omega^alpha."""
-    from paper_repro.printed.lines.read import interval
 
     how = "exact images of a grid of the parameter triangle (alpha = 3/2) under parametrization_for_partition_of_unity"
     x_, a_ = sympy.symbols("x alpha")
     try:
-        lo, hi = (parse(s) for s in interval(verbatim("sec4_5-chain-y-range"), "y"))
+        lo, hi = P.interval(verbatim("sec4_5-chain-y-range"), "y")
         if lo.free_symbols - {x_, a_} or hi.free_symbols - {x_, a_}:
             raise LatexMathError("the interval names other variables")
     except (LatexMathError, ValueError) as exc:
@@ -879,7 +861,7 @@ def chain_holds(parts: list, head=None) -> tuple[bool, bool, dict]:
 
 
 def _rel(tex: str) -> Relation:
-    return parse_relation(tex)
+    return P.relation(tex)
 
 
 def example_check(check_id: str) -> LineResult:
@@ -887,7 +869,7 @@ def example_check(check_id: str) -> LineResult:
     chain equals the others and, for a closed form continuing a chain (``-final``), the coefficient named at the
     head of that chain (read from the line ``-mid``).  Univariate constants by expansion, coefficients in the
     closed form proven for every alpha (an identity in alpha: a proof) and by exact collocation at three alpha."""
-    how = ("the printed chain parsed (sec5_latex) and compared part by part: an identity in alpha (numerators modulo "
+    how = ("the printed chain parsed (latex_math) and compared part by part: an identity in alpha (numerators modulo "
            "S^2 + C^2 - 1) with c_{2n,i} from (X^2 + 2cXY + Y^2)^n and r_{2n,k,j} in the closed form proven for every "
            "alpha, and exact collocation at tan(alpha/4) in {1/3, 2/5, 1/7}")
     (ln,) = lines_of(check_id)
@@ -910,7 +892,7 @@ def example_check(check_id: str) -> LineResult:
     math_ok = identity and sampled
     # the notation: every named object carries the superscript alpha (a "-final" line repeats the combination of
     # its "-mid" line, where a slip is recorded once)
-    bare = [] if check_id.endswith("-final") else unlabelled(ln.verbatim)
+    bare = [] if check_id.endswith("-final") else P.untagged_names(ln.verbatim)
     ok = math_ok and not bare
     correct = (math_ok and bool(bare)) if ln.status == "erratum" else None  # the slip present, the value right
     return LineResult(ok, correct, how=how, kind="proof" if (identity and proven) else "exact-evidence",
@@ -928,15 +910,15 @@ def _cases(tex: str) -> tuple[sympy.Expr, str]:
     k = tex.find(", &")
     if k < 0:
         raise LatexMathError("no ', &' between the formula and its condition")
-    return parse(tex[:k]), tex[k + 3:].replace("\\\\", "").strip()
+    return P.value(tex[:k]), tex[k + 3:].replace("\\\\", "").strip()
 
 
 def _condition_values(cond: str, n: int) -> list[int]:
     i, n_ = sympy.Symbol("i"), sympy.Symbol("n")
     if "\\ldots" in cond:
-        _v, lo, hi = listed_range(cond, "i")
+        _v, lo, hi = P.listed_range(cond, "i")
         return list(range(int(lo.subs(n_, n)), int(hi.subs(n_, n)) + 1))
-    rel = parse_relation(cond.rstrip(".,").strip())
+    rel = P.relation(cond.rstrip(".,").strip())
     if rel.ops != ["="] or rel.parts[0] != i or not rel.parts[1].is_number:
         raise LatexMathError(f"condition {cond!r} not read")
     return [int(rel.parts[1])]
@@ -954,8 +936,8 @@ def check_level_0() -> LineResult:
         k = t2.find(",~\\forall")
         if k < 0:
             raise LatexMathError("no quantifier ',~\\forall' read")
-        _v, lo, hi = listed_range(t2[k:], "i")
-        r1, r2 = parse_relation(t1), parse_relation(t2[:k])
+        _v, lo, hi = P.listed_range(t2[k:], "i")
+        r1, r2 = P.relation(t1), P.relation(t2[:k])
         if r1.ops != ["="] or r2.ops != ["="] or r1.parts[1] != r2.parts[0]:
             raise LatexMathError("the two lines do not continue one chain")
         rows, ok = {}, True
@@ -984,14 +966,14 @@ def check_level_1() -> LineResult:
     try:
         rng = verbatim("sec4_5-level1-range")
         dollar = [s for s in rng.split("$")[1::2]]
-        bound_rel = parse_relation(dollar[0])
+        bound_rel = P.relation(dollar[0])
         if bound_rel.ops != [">="] or bound_rel.parts[0] != n_ or not bound_rel.parts[1].is_number:
             raise LatexMathError(f"order bound {dollar[0]!r} not read")
         n_lo = int(bound_rel.parts[1])
         m = re.search(r"r_\{2n,2n-i,1\}%?\s*\^\{\\alpha\}\s*\\right\\\}\s*_\{i=([^{}]+)\}\s*\^\{([^{}]+)\}", rng)
         if not m:
             raise LatexMathError("the set {r_{2n,2n-i,1}}_{i=..}^{..} not read")
-        i_lo, i_hi = parse(m.group(1)), parse(m.group(2))
+        i_lo, i_hi = P.value(m.group(1)), P.value(m.group(2))
         rows = [_cases(verbatim("sec4_5-level1-i1")), _cases(verbatim("sec4_5-level1-i"))]
 
         def formula(n: int, i: int) -> sympy.Expr:
@@ -1027,7 +1009,7 @@ def blending_centre_holds(tex: str, n: int) -> bool:
     parsed (the part before ``:`` of a set row): every relation '=', every part the same function at 4 rational
     points of Omega^alpha, X-bar = x X by Definition normalized_united_system (coefficients by exact collocation)."""
     body = tex.split(":")[0].replace("\\cup", " ").replace("\\left\\{", " ")
-    rel = parse_relation(body)
+    rel = P.relation(body)
     if set(rel.ops) != {"="} or len(rel.parts) < 3:
         raise LatexMathError(f"the centre's chain not read: {rel.ops}")
     t = TS[0]
@@ -1111,41 +1093,67 @@ def check_blending_def(override: dict[str, str] | None = None) -> LineResult:
 
 
 # -- the printed chain sum and its value 0 (read from the transcription) ---------------------------------------------
-_CHAIN_SUM = re.compile(
-    r"\\sum_\{k=(?P<klo>[^{}]+)\}\^\{(?P<khi>[^{}]+)\}\s*\\dbinom\{(?P<btop>[^{}]+)\}\{(?P<bbot>[^{}]+)\}\s*"
-    r"\\left\(\s*(?P<base>-?\d+)\s*\\right\)\s*\^\{(?P<sexp>[^{}]+)\}.*?"
-    r"\\partial v\^\{(?P<pv>[^{}]+)\}\s*\\partial w\^\{(?P<pw>[^{}]+)\}\}.*?"
-    r"\\right\\vert\s*_\{y=(?P<y0>[^{}]+)\}", re.S)
+def read_chain_sum(tex: str) -> dict:
+    """The parts of the printed chain sum ``\\sum_{k=lo}^{hi} w(r, k) \\left. d^r L / dv^{pv} dw^{pw}
+    \\right\\vert_{y=y0} = rhs,~\\forall x\\in[..]`` read by :func:`paper_repro.printed.latex_math.parse_relation`
+    (sympy): the bounds of k, the weight (binomial and sign: the factors beside the derivative), the orders in v
+    and w, the point y, the right-hand side and the range of x."""
+    from paper_repro.printed.latex_math import D, parse_relation
+
+    rel = parse_relation(tex)
+    if rel.ops != ["="] or len(rel.parts) != 2:
+        raise ValueError(f"relations {rel.ops}, not one '='")
+    total, rhs = rel.parts
+    k_ = sympy.Symbol("k")
+    if not isinstance(total, sympy.Sum) or len(total.limits) != 1 or total.limits[0][0] != k_:
+        raise ValueError(f"not a sum over k: {total}")
+    _k, klo, khi = total.limits[0]
+    subs = [f for f in sympy.Mul.make_args(total.function) if isinstance(f, sympy.Subs)]
+    if len(subs) != 1:
+        raise ValueError("no evaluation bar |_{y=..} in the sum")
+    (bar,) = subs
+    if bar.variables != (sympy.Symbol("y"),):
+        raise ValueError(f"evaluated at {bar.variables}, not at y")
+    deriv = bar.expr
+    if deriv.func != D or len(deriv.args) != 3 or getattr(deriv.args[0].func, "__name__", "") != "L":
+        raise ValueError(f"not a mixed derivative of L: {deriv}")
+    (v_, pv), (w_, pw) = deriv.args[1], deriv.args[2]
+    if (v_, w_) != sympy.symbols("v w"):
+        raise ValueError(f"derivatives in {v_}, {w_}, not in v, w")
+    return {"klo": klo, "khi": khi, "weight": total.function / bar, "pv": pv, "pw": pw, "y0": bar.point[0],
+            "rhs": rhs, "x_range": P.interval(_forall(rel), "x")}
 
 
-def read_chain_sum(tex: str) -> dict[str, str]:
-    """The parts of the printed chain sum (bounds, binomial, sign, orders in v and w, the point y, the right-hand
-    side and the range of x), as printed."""
-    from paper_repro.printed.lines.read import interval, right_hand_side
+def _forall(rel: Relation) -> Relation:
+    """``rel`` if its clauses are quantified with ``\\forall`` (else ``ValueError``: the check reads 'for all x')."""
+    if not rel.conditions or any(c.quantifier != "forall" for c in rel.conditions):
+        raise ValueError(f"the clauses {[c.quantifier for c in rel.conditions]} are not 'for all'")
+    return rel
 
-    m = _CHAIN_SUM.search(tex)
-    if not m:
-        raise ValueError(f"not a chain sum: {tex[:60]!r}")
-    return {**m.groupdict(), "rhs": right_hand_side(tex), "x_range": interval(tex, "x")}
+
+def chain_weight(parts: dict, r: int, k: int) -> int:
+    """The printed weight of the k-th term at order r (an integer, else ``ValueError``)."""
+    w = parts["weight"].subs({sympy.Symbol("r"): r, sympy.Symbol("k"): k})
+    if not w.is_Integer:
+        raise ValueError(f"the weight {parts['weight']} is not an integer at r = {r}, k = {k}")
+    return int(w)
 
 
 def chain_sum_value(parts: dict, n: int, t: fmpq, r: int, hx: tuple[Q, Q]) -> Q:
     """The printed left-hand side, evaluated exactly: L = sum of the normalized functions of T_{2n} (coefficients by
     the exact collocation solve at tan(alpha/4) = t, no symmetry used) at u = alpha - x, v = y0 = 0, w = x."""
-    from paper_repro.printed.lines.read import bound
 
-    if parts["y0"].strip() != "0":
-        raise ValueError(f"evaluation point y = {parts['y0']!r} not read as 0")
+    if parts["y0"] != 0:
+        raise ValueError(f"evaluation point y = {parts['y0']} not read as 0")
     al = rational_alpha(t)
     sa, ca = Q(int(al.sin_half.p), int(al.sin_half.q)), Q(int(al.cos_half.p), int(al.cos_half.q))
     sx, cx = hx
     su, cu = sa * cx - ca * sx, ca * cx + sa * sx  # half angles of u = alpha - x
     coef = _full(n, t)
     total = Q(0)
-    for k in range(bound(parts["klo"], r=r), bound(parts["khi"], r=r) + 1):
-        weight = comb(bound(parts["btop"], r=r, k=k), bound(parts["bbot"], r=r, k=k)) * \
-            int(parts["base"]) ** bound(parts["sexp"], r=r, k=k)
-        pv, pw = bound(parts["pv"], r=r, k=k), bound(parts["pw"], r=r, k=k)
+    for k in range(P.bound(parts["klo"], r=r), P.bound(parts["khi"], r=r) + 1):
+        weight = chain_weight(parts, r, k)
+        pv, pw = P.bound(parts["pv"], r=r, k=k), P.bound(parts["pw"], r=r, k=k)
         for lab in united_system(n):
             e = exponents(lab)
             v0 = sum((q for (s, _c), q in _d({(e[2], e[3]): Q(1)}, pv).items() if s == 0), Q(0))
@@ -1162,31 +1170,26 @@ def check_chain_sum(verbatim: str | None = None, orders: str | None = None) -> L
     """The printed sum_k C(r,k) (-1)^k d^r L / dv^(r-k) dw^k at y = 0 equals the printed right-hand side 0 for every
     order r of the printed range (r = 1..n, line sec4_5-parametrization-restated) at x = 0, alpha (the printed
     ends) and three interior x: everything read from the transcriptions (``verbatim``/``orders`` replace them)."""
-    from paper_repro.printed.lines.read import bound, listed_range
 
     lines = {x.id: x.verbatim for x in pl.LINES}
     how = "the printed chain sum read from the transcription"
     try:
         parts = read_chain_sum(verbatim if verbatim is not None else lines["sec4_5-chain-sum"])
-        r_lo, r_hi = listed_range(orders if orders is not None else lines["sec4_5-parametrization-restated"], "r")
-        if parts["y0"].strip() != "0":
-            raise ValueError(f"evaluation point y = {parts['y0']!r}, the check evaluates at y = 0 only")
-        top = re.search(r"\\frac\{\\partial\^\{([^{}]+)\}%?\s*\}\{\\partial v",
-                        verbatim if verbatim is not None else lines["sec4_5-chain-sum"])
-        if not top or sympy.expand(parse(top.group(1)) - parse(parts["pv"]) - parse(parts["pw"])) != 0:
-            raise ValueError("the order of the mixed derivative is not the sum of its orders in v and w")
+        _r, r_lo, r_hi = P.listed_range(orders if orders is not None else lines["sec4_5-parametrization-restated"], "r")
+        if parts["y0"] != 0:
+            raise ValueError(f"evaluation point y = {parts['y0']}, the check evaluates at y = 0 only")
     except ValueError as exc:  # an unread or unexpected transcription fails the line, saying why
         return LineResult(False, how=how, kind="exact-evidence", detail={"unread": str(exc)})
-    rhs = Q(parts["rhs"]) if parts["rhs"].lstrip("-").isdigit() else None
+    rhs = Q(int(parts["rhs"])) if isinstance(parts["rhs"], sympy.Integer) else None
     bad, cases = [], 0
     for n in (1, 2, 3):
         for t in TS[:2]:
             al = rational_alpha(t)
-            ends = {"0": (Q(0), Q(1)), "\\alpha": (Q(int(al.sin_half.p), int(al.sin_half.q)),
-                                                   Q(int(al.cos_half.p), int(al.cos_half.q)))}
+            ends = {sympy.Integer(0): (Q(0), Q(1)), sympy.Symbol("alpha"): (Q(int(al.sin_half.p), int(al.sin_half.q)),
+                                                                      Q(int(al.cos_half.p), int(al.cos_half.q)))}
             xs = [ends.get(parts["x_range"][0]), ends.get(parts["x_range"][1])]
             xs += [_angle(Q(int(t.p), int(t.q)) * Q(m, 4)) for m in (1, 2, 3)]  # tan(x/4) = t m/4: 0 < x < alpha
-            for r in range(bound(r_lo, n=n), bound(r_hi, n=n) + 1):
+            for r in range(P.bound(r_lo, n=n), P.bound(r_hi, n=n) + 1):
                 for hx in xs:
                     cases += 1
                     value = None if hx is None else chain_sum_value(parts, n, t, r, hx)
@@ -1206,15 +1209,14 @@ def check_cos_nonzero(text: str | None = None) -> LineResult:
     is positive; so a power cos^m(x/2) never vanishes there (and sin^m(x/2) would, at x = 0).  The power is the
     one that makes the rewritten equality a polynomial in tan(x/2): the total degree of its terms (2n, by exponent
     bookkeeping, n = 1..6)."""
-    from paper_repro.printed.lines.read import interval
 
     how = ("the function, relation and interval parsed; cos(x/2) > 0 on x/2 in [0, alpha/2], alpha < pi (a proof for "
            "every n); the exponent equals the total degree of the terms (bookkeeping n = 1..6)")
     n_, x_, a_ = sympy.symbols("n x alpha")
     tex = text if text is not None else verbatim("sec4_5-cos-nonzero")
     try:
-        rel = parse_relation(tex.split("$")[1])
-        lo, hi = (parse(s) for s in interval(tex, "x"))
+        rel = P.relation(tex.split("$")[1])
+        lo, hi = P.interval(tex, "x")
         if rel.ops != ["!="] or rel.parts[1] != 0:
             raise LatexMathError(f"relation {rel.ops} with {rel.parts[1:]}, not '!= 0'")
         f = rel.parts[0]

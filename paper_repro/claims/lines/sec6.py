@@ -262,13 +262,13 @@ def order_range_ok(line_id: str) -> bool:
     """The printed range of the order (``of order $n\\geq1$``, read from the transcription) is exactly the set of
     orders n = 0..12 that have a patch: 2n >= 2 (n = 0 leaves the constant function 1 alone, no trigonometric
     function) with delta_n independent functions (rank at n = 1, 2 exact)."""
-    from paper_repro.printed.lines.sec6_latex import parse_relation, relation_holds
+    from paper_repro.printed.parsed import chain, relation_holds
 
     m = re.search(r"(?:rational )?triangular trigonometric patch of order \$([^$]+)\$", _LINE[line_id].verbatim)
     if not m:
         return False
-    parts, ops = parse_relation(m.group(1).replace("n", "u"))  # n read as a symbol (u: a letter the reader knows)
-    from paper_repro.printed.lines.sec6_latex import U
+    parts, ops = chain(m.group(1).replace("n", "u"))  # n read as a symbol (u: a letter the reader knows)
+    from paper_repro.printed.parsed import U
 
     alpha = rational_alpha(fmpq(1, 3))
 
@@ -358,12 +358,12 @@ def _points(alpha: RationalAngle, count: int, seed: int) -> RationalPoints:
 
 def read_open_interval(tex: str, var: str) -> tuple[sympy.Expr, sympy.Expr]:
     """``(lo, hi)`` of ``var \\in \\left(lo,hi\\right)`` in ``tex`` (parsed)."""
-    from paper_repro.printed.lines.sec6_latex import parse_expression
+    from paper_repro.printed.parsed import expression
 
     m = re.search(rf"{re.escape(var)}\s*\\in\s*\\left\(([^,]*),([^,]*?)\\right\)", tex)
     if not m:
         raise ValueError(f"no open interval {var} in (lo, hi) in {tex[:50]!r}")
-    return parse_expression(m.group(1)), parse_expression(m.group(2))
+    return expression(m.group(1)), expression(m.group(2))
 
 
 #: cos(alpha/2) of the sampled alphas (rational, so everything below is exact): alpha = 2 acos(c) from 0.57 to 5.7
@@ -503,7 +503,7 @@ def read_boundary(tex: str) -> tuple[int, int, str, sympy.Expr, sympy.Expr]:
     by :func:`paper_repro.printed.latex_math.parse_relation`: ``s_n(args) = sum_{i=lo}^{hi} x_{2n,2n-i,0}
     A_{2n,2n-i}(t), t in [0, alpha]`` with ``args`` the edge x_zero = 0 parametrized by t (``ValueError`` otherwise)."""
     from paper_repro.printed.latex_math import parse_relation
-    from paper_repro.printed.lines.sec6_latex import ALPHA
+    from paper_repro.printed.parsed import ALPHA
 
     rel = parse_relation(tex.strip().rstrip(",").rstrip("\\").strip().rstrip(","))
     if rel.ops != ["="] or len(rel.conditions) != 1:
@@ -750,7 +750,7 @@ def bezier_limit() -> LineResult:
     """A_{2n,i}(alpha s) = P_i(cos(alpha/2)) (sin(alpha(1-s)/2)/sin(alpha/2))^{2n-i} (sin(alpha s/2)/sin(alpha/2))^i
     with P_i the printed numerator; as alpha -> 0 the ratios tend to 1-s and s, so the limit is P_i(1)
     (1-s)^{2n-i} s^i: the Bernstein polynomial iff P_i(1) = binom(2n, i)."""
-    from paper_repro.printed.lines.sec6_latex import parse_expression
+    from paper_repro.printed.parsed import expression
 
     tex = _LINE["sec6-bezier-limit"].verbatim
     lim = re.search(r"when \$\\alpha \\to (\d+)\$ the boundary\s+curves degenerate to B\\'ezier curves of degree "
@@ -758,8 +758,8 @@ def bezier_limit() -> LineResult:
     if not lim or "Proposition \\ref{Bernstein}" not in tex:
         return LineResult(False, how="the limit and the degree read from the transcription",
                           detail={"unread": tex[:60]})
-    limit, degree = int(lim.group(1)), parse_expression(lim.group(2).replace("n", "u"))
-    from paper_repro.printed.lines.sec6_latex import U
+    limit, degree = int(lim.group(1)), expression(lim.group(2).replace("n", "u"))
+    from paper_repro.printed.parsed import U
 
     # as alpha -> 0 cos(alpha/2) -> 1: the limit of A_{2n,i} is P_i(1) (1-s)^{2n-i} s^i, the Bernstein polynomial of
     # degree 2n iff P_i(1) = binom(2n, i); a limit alpha -> a > 0 leaves cos(alpha/2) != 1 (not polynomial)
@@ -929,27 +929,37 @@ def torus_quartic_gradient(x, y, z, rho, mu):
     return (4 * p * x - 8 * rho * rho * x, 4 * p * y - 8 * rho * rho * y, 4 * p * z)
 
 
-_TORUS_LINE = re.compile(r"^\\mathbf\{t\}_\{(.*?)\}\\left\(\s*u,v\\right\)\s*=\\left\[\s*\\begin\{array\}\s*\[c\]"
-                         r"\{ccc\}%?\s*(.*?)\\end\{array\}\s*\\right\]\s*\^\{T\},~u\\in\\left\[(.*?),(.*?)\\right\]\s*,"
-                         r"~v\\in\\left\[(.*?),(.*?)\\right\]\s*$", re.S)
+def _surface_rows(tex: str, lhs_name: str | None) -> tuple:
+    """A printed parametrized surface ``X = [x y z]^{T},~u\\in[..],~v\\in[..]`` read by
+    :func:`paper_repro.printed.latex_math.parse_relation`: (left side or None, the three coordinates, the u and v
+    intervals); ``ValueError`` if it is not one."""
+    from paper_repro.printed.latex_math import parse_relation
+    from paper_repro.printed.parsed import U, V, interval
+
+    rel = parse_relation(tex)
+    if lhs_name is None:
+        if rel.ops:
+            raise ValueError(f"a relation {rel.ops} where a column is printed")
+        vec = rel.parts[0]
+        lhs = None
+    else:
+        if rel.ops != ["="] or len(rel.parts) != 2:
+            raise ValueError(f"relations {rel.ops}, not one '='")
+        lhs, vec = rel.parts
+        if getattr(lhs.func, "__name__", "") != lhs_name or lhs.args[-1] != sympy.Tuple(U, V):
+            raise ValueError(f"the left side {lhs} is not {lhs_name}(.., (u, v))")
+    if not isinstance(vec, sympy.MatrixBase) or vec.shape != (3, 1):
+        raise ValueError(f"not a column of three coordinates: {vec}")
+    if [c.parts[0] for c in rel.conditions] != [U, V]:
+        raise ValueError(f"the clauses {rel.conditions} are not u in [..], v in [..]")
+    return lhs, tuple(vec), interval(rel, "u"), interval(rel, "v")
 
 
 def read_torus_parametrization() -> dict:
     """eq. toroidal_triangle read from its transcription: ``{"params": subscript symbols, "xyz": (x, y, z) in u, v,
     varrho, mu, "u": (lo, hi), "v": (lo, hi)}`` (sympy; ``ValueError`` if unread)."""
-    from paper_repro.printed.lines.sec6_latex import parse_expression, strip_comments
-
-    m = _TORUS_LINE.match(_LINE["sec6-torus-parametrization"].verbatim)
-    if not m:
-        raise ValueError("eq. toroidal_triangle: the transcription is not t_{..}(u,v) = [x y z]^T, u in [..], "
-                         "v in [..]")
-    params = tuple(parse_expression(x) for x in m.group(1).split(","))
-    cells = strip_comments(m.group(2)).split("&")
-    if len(cells) != 3:
-        raise ValueError(f"{len(cells)} coordinates in eq. toroidal_triangle")
-    return {"params": params, "xyz": tuple(parse_expression(c) for c in cells),
-            "u": (parse_expression(m.group(3)), parse_expression(m.group(4))),
-            "v": (parse_expression(m.group(5)), parse_expression(m.group(6)))}
+    lhs, xyz, u, v = _surface_rows(_LINE["sec6-torus-parametrization"].verbatim, "t_vec")
+    return {"params": tuple(lhs.args[:-1]), "xyz": xyz, "u": u, "v": v}
 
 
 def torus_parameters() -> set[str]:
@@ -968,14 +978,14 @@ def parsed_torus_point(tu: fmpq, tv: fmpq, rho: fmpq, mu: fmpq) -> list[fmpq]:
 
 def parsed_torus_at(cu: fmpq, su: fmpq, cv: fmpq, sv: fmpq, rho: fmpq, mu: fmpq) -> list[fmpq]:
     """The printed parametrization (read) at (cos u, sin u) = (cu, su), (cos v, sin v) = (cv, sv), exactly."""
-    from paper_repro.printed.lines.sec6_latex import MU, VARRHO, U, V, exact_value
+    from paper_repro.printed.parsed import MU, VARRHO, U, V, exact_value
 
     xyz = read_torus_parametrization()["xyz"]
     return [exact_value(e, {VARRHO: rho, MU: mu}, {U: (1, cu, su), V: (1, cv, sv)}, fmpq(0)) for e in xyz]
 
 
 def _in_read_domain(dom: dict, u: fmpq, v: fmpq, alpha: fmpq) -> bool:
-    from paper_repro.printed.lines.sec6_latex import ALPHA, U
+    from paper_repro.printed.parsed import ALPHA, U
 
     def val(e):
         e = sympy.sympify(e).subs({ALPHA: sympy.Rational(int(alpha.p), int(alpha.q)),
@@ -1027,13 +1037,13 @@ def torus_rho() -> LineResult:
     printed parametrization (read) the meridian v = const is the circle of radius mu about (varrho cos v, varrho sin v,
     0), at distance varrho from the origin, in the plane through the z axis; and varrho > 0 is what the relation
     read says."""
-    from paper_repro.printed.lines.sec6_latex import VARRHO, parse_relation, relation_holds
+    from paper_repro.printed.parsed import VARRHO, chain, relation_holds
 
     tex = _LINE["sec6-torus-rho"].verbatim
     m = re.match(r"where \$([^$]*)\$ is the distance\s+from the origin to the center of the meridian circle$", tex)
     if not m:
         return LineResult(False, how="the line read from the transcription", detail={"unread": tex[:60]})
-    parts, ops = parse_relation(m.group(1))
+    parts, ops = chain(m.group(1))
     positive = (all(relation_holds([x.subs(VARRHO, r) for x in parts], ops) for r in (fmpq(1, 3), 1, 7))
                 and not any(relation_holds([x.subs(VARRHO, r) for x in parts], ops) for r in (0, -1)))
     rho, mu = fmpq(7, 2), fmpq(5, 3)
@@ -1070,12 +1080,12 @@ _MU_RANGE = re.compile(r"^of radius \$\\mu\\in\\left([(\[])(.*?),(.*?)\\right([)
 def mu_range_is_ring(tex: str | None) -> bool:
     """The range of mu in ``tex`` (parsed: brackets and end points; each symbol must be a parameter of eq.
     toroidal_triangle) is exactly the set of mu giving a ring torus, tested at mu = k/10 varrho, k = 0..14."""
-    from paper_repro.printed.lines.sec6_latex import VARRHO, parse_expression
+    from paper_repro.printed.parsed import VARRHO, expression
 
     m = _MU_RANGE.match(tex or "")
     if not m:
         return False
-    lo, hi = parse_expression(m.group(2)), parse_expression(m.group(3))
+    lo, hi = expression(m.group(2)), expression(m.group(3))
     params = {str(p) for p in read_torus_parametrization()["params"]}
     if not {str(s) for s in lo.free_symbols | hi.free_symbols} <= params:
         return False
@@ -1222,7 +1232,7 @@ def torus_settings_ring(tex: str | None) -> bool:
     """The caption's settings (parsed, in order) name parameters of eq. toroidal_triangle (read) or alpha, and give a
     ring torus (mu > 0, varrho > mu: exact for the algebraic number) with alpha in the range of sec6-alpha-range
     (read)."""
-    from paper_repro.printed.lines.sec6_latex import ALPHA, MU, VARRHO, parse_relation
+    from paper_repro.printed.parsed import ALPHA, MU, VARRHO, chain
 
     m = _SETTINGS.match(tex or "")
     if not m:
@@ -1230,7 +1240,7 @@ def torus_settings_ring(tex: str | None) -> bool:
     params = set(read_torus_parametrization()["params"]) | {ALPHA}
     values: dict = {}
     for part in m.groups():
-        (lhs, rhs), ops = parse_relation(part)
+        (lhs, rhs), ops = chain(part)
         if ops != ["="] or lhs not in params or lhs in values:
             return False
         values[lhs] = sympy.nsimplify(rhs.subs(values))
@@ -1332,7 +1342,7 @@ def rank1_sum(tex: str):
 def rank1_relation(tex: str):
     """The relation that closes the printed sum of weights (``\\neq0``, read by printed.latex_math): a test
     ``f(sum) -> bool`` (``None`` if unread)."""
-    from paper_repro.printed.lines.sec6_latex import relation_holds
+    from paper_repro.printed.parsed import relation_holds
 
     try:
         rel = _rank1_relation(tex)
@@ -1576,26 +1586,13 @@ def dupin_quartic_gradient(x, y, z, a, b, c, mu):
     return (4 * p * x - 8 * a * (a * x - c * mu), 4 * p * y - 8 * b * b * y, 4 * p * z)
 
 
-_DUPIN_X = re.compile(r"^(.*?)\\left\[\s*\\begin\{array\}\s*\[c\]\{l\}%?\s*(.*?)\\\\\s*$", re.S)
-_DUPIN_Y = re.compile(r"^(.*?)\\\\\s*$", re.S)
-_DUPIN_Z = re.compile(r"^(.*?)\\end\{array\}\s*\\right\]\s*,~u\\in\\left\[(.*?),(.*?)\\right\]\s*,~v\\in\\left\["
-                      r"(.*?),(.*?)\\right\]\s*,$", re.S)
-
-
 def read_dupin() -> dict:
-    """eq. Dupin_in_3d read from its three transcribed lines: ``{"xyz": (x, y, z) with the printed factor applied,
-    "u": (lo, hi), "v": (lo, hi)}`` (sympy in a, b, c, mu, u, v, varphi, psi; ``ValueError`` if unread)."""
-    from paper_repro.printed.lines.sec6_latex import parse_expression
-
-    mx = _DUPIN_X.match(_LINE["sec6-dupin-x"].verbatim)
-    my = _DUPIN_Y.match(_LINE["sec6-dupin-y"].verbatim)
-    mz = _DUPIN_Z.match(_LINE["sec6-dupin-z"].verbatim)
-    if not (mx and my and mz):
-        raise ValueError("eq. Dupin_in_3d: the transcription is not f [x \\\\ y \\\\ z], u in [..], v in [..]")
-    factor = parse_expression(mx.group(1))
-    rows = [parse_expression(mx.group(2)), parse_expression(my.group(1)), parse_expression(mz.group(1))]
-    return {"xyz": tuple(factor * r for r in rows), "u": (parse_expression(mz.group(2)), parse_expression(mz.group(3))),
-            "v": (parse_expression(mz.group(4)), parse_expression(mz.group(5)))}
+    """eq. Dupin_in_3d read from its three transcribed lines (one display: a factor times a column): ``{"xyz":
+    (x, y, z) with the printed factor applied, "u": (lo, hi), "v": (lo, hi)}`` (sympy in a, b, c, mu, u, v, varphi,
+    psi; ``ValueError`` if unread)."""
+    _, xyz, u, v = _surface_rows("".join(_LINE[k].verbatim for k in ("sec6-dupin-x", "sec6-dupin-y", "sec6-dupin-z")),
+                                 None)
+    return {"xyz": xyz, "u": u, "v": v}
 
 
 NO_PHASES = ((fmpq(1), fmpq(0)), (fmpq(1), fmpq(0)))  # (cos, sin) of varphi = psi = 0
@@ -1604,10 +1601,10 @@ NO_PHASES = ((fmpq(1), fmpq(0)), (fmpq(1), fmpq(0)))  # (cos, sin) of varphi = p
 def dupin_point(xyz, params, tu: fmpq, tv: fmpq, phases=NO_PHASES) -> list[fmpq]:
     """The printed cyclide (read) at u = 4 atan(tu), v = 4 atan(tv), exactly; ``params`` = (a, b, c, mu) rational,
     ``phases`` the (cos, sin) of varphi and psi."""
-    from paper_repro.printed.lines.sec6_latex import MU, PSI, VARPHI, U, V, exact_value
-    from paper_repro.printed.lines.sec6_latex import A as SA
-    from paper_repro.printed.lines.sec6_latex import B as SB
-    from paper_repro.printed.lines.sec6_latex import C as SC
+    from paper_repro.printed.parsed import MU, PSI, VARPHI, U, V, exact_value
+    from paper_repro.printed.parsed import A as SA
+    from paper_repro.printed.parsed import B as SB
+    from paper_repro.printed.parsed import C as SC
 
     a, b, c, mu = params
     bases = {U: (1, *trig_of(tu)), V: (1, *trig_of(tv)), VARPHI: (1, *phases[0]), PSI: (1, *phases[1])}
@@ -1680,7 +1677,7 @@ def dupin_count_holds(tex: str | None) -> tuple[bool, dict]:
     phase intervals read from sec6-dupin-phases) over the area of one triangle (the parameter set of eq. Dupin_in_3d,
     read, at the alpha of the caption of Fig. dupin_03, read); and exact order-n fits of both triangles of phase
     squares."""
-    from paper_repro.printed.lines.sec6_latex import ALPHA, U, V, parse_relation
+    from paper_repro.printed.parsed import ALPHA, U, V, chain
 
     m = re.match(r"^by means of ([\w-]+) smoothly joined (\w+) order rational triangular trigonometric patches,$",
                  tex or "")
@@ -1688,7 +1685,7 @@ def dupin_count_holds(tex: str | None) -> tuple[bool, dict]:
         return False, {"unread": (tex or "")[:60]}
     count, n = NUMBER_WORDS[m.group(1)], ORDINALS[m.group(2)]
     settings = dict(re.findall(r"\$\\?(\w+)\s*=\s*([^$]*)\$", _LINE["sec6-fig-dupin-settings"].verbatim))
-    (_, alpha_value), _ = parse_relation("u=" + settings["alpha"]) if "alpha" in settings else ((None, None), None)
+    (_, alpha_value), _ = chain("u=" + settings["alpha"]) if "alpha" in settings else ((None, None), None)
     dom = read_dupin()
     (lo_u, hi_u), (lo_v, hi_v) = dom["u"], dom["v"]
     area = sympy.integrate(sympy.integrate(1, (V, lo_v, hi_v)), (U, lo_u, hi_u)).subs(ALPHA, alpha_value)
@@ -1734,7 +1731,7 @@ def dupin_rational_patches() -> LineResult:
 
 def phase_intervals() -> list[tuple[sympy.Expr, sympy.Expr]]:
     """``[(lo, hi) of varphi, (lo, hi) of psi]`` read from "$\\left(\\varphi,\\psi\\right) \\in [..]\\times[..]$"."""
-    from paper_repro.printed.lines.sec6_latex import parse_expression
+    from paper_repro.printed.parsed import expression
 
     tex = _LINE["sec6-dupin-phases"].verbatim
     m = re.match(r"^while phase changes \$\\left\(\s*\\varphi,\\psi\\right\)\s*\\in\\left\[(.*?),(.*?)\\right\]"
@@ -1742,7 +1739,7 @@ def phase_intervals() -> list[tuple[sympy.Expr, sympy.Expr]]:
                  r"the patch on the cyclide\.$", tex)
     if not m:
         raise ValueError(f"phases not read: {tex[:60]!r}")
-    lo1, hi1, lo2, hi2 = (parse_expression(x) for x in m.groups())
+    lo1, hi1, lo2, hi2 = (expression(x) for x in m.groups())
     return [(lo1, hi1), (lo2, hi2)]
 
 
@@ -1770,10 +1767,10 @@ def collapsed_circle(xyz, a, b, c, mu) -> bool:
     c cos U0 = mu, or V0 with mu cos V0 = a, when such an angle exists."""
     import mpmath
 
-    from paper_repro.printed.lines.sec6_latex import MU, PSI, VARPHI, U, V
-    from paper_repro.printed.lines.sec6_latex import A as SA
-    from paper_repro.printed.lines.sec6_latex import B as SB
-    from paper_repro.printed.lines.sec6_latex import C as SC
+    from paper_repro.printed.parsed import MU, PSI, VARPHI, U, V
+    from paper_repro.printed.parsed import A as SA
+    from paper_repro.printed.parsed import B as SB
+    from paper_repro.printed.parsed import C as SC
 
     def sym(x):
         return sympy.Rational(int(x.p), int(x.q)) if isinstance(x, fmpq) else sympy.nsimplify(x)
@@ -1801,15 +1798,15 @@ def dupin_conditions_hold(tex: str | None) -> tuple[bool, dict]:
     """The two conditions read from ``tex``: the equation holds exactly for the (a, b, c) whose cyclide (eq.
     Dupin_in_3d, read) lies on the quartic (tested on 5 triples); the chain holds exactly for the mu that give a
     ring cyclide -- no parameter circle collapses (tested at 13 mu for two triples)."""
-    from paper_repro.printed.lines.sec6_latex import MU, parse_relation, relation_holds
-    from paper_repro.printed.lines.sec6_latex import A as SA
-    from paper_repro.printed.lines.sec6_latex import B as SB
-    from paper_repro.printed.lines.sec6_latex import C as SC
+    from paper_repro.printed.parsed import MU, chain, relation_holds
+    from paper_repro.printed.parsed import A as SA
+    from paper_repro.printed.parsed import B as SB
+    from paper_repro.printed.parsed import C as SC
 
     m = _DUPIN_CONDITIONS.match(tex or "")
     if not m:
         return False, {"unread": (tex or "")[:60]}
-    eq, chain = parse_relation(m.group(1)), parse_relation(m.group(2))
+    eq, chain = chain(m.group(1)), chain(m.group(2))
     xyz = read_dupin()["xyz"]
 
     def sub(rel, a, b, c, mu):
@@ -1860,10 +1857,10 @@ def fig_dupin_settings() -> LineResult:
     (a ring cyclide), and alpha is in the range of sec6-alpha-range (read)."""
     import mpmath
 
-    from paper_repro.printed.lines.sec6_latex import MU, PSI, VARPHI, U, V, parse_relation
-    from paper_repro.printed.lines.sec6_latex import A as SA
-    from paper_repro.printed.lines.sec6_latex import B as SB
-    from paper_repro.printed.lines.sec6_latex import C as SC
+    from paper_repro.printed.parsed import MU, PSI, VARPHI, U, V, chain
+    from paper_repro.printed.parsed import A as SA
+    from paper_repro.printed.parsed import B as SB
+    from paper_repro.printed.parsed import C as SC
 
     tex = _LINE["sec6-fig-dupin-settings"].verbatim
     m = re.match(r"^cyclide \(with settings \$([^$]*)\$, \$([^$]*)\$, \$([^$]*)\$ and \$([^$]*)\$\) which is rendered "
@@ -1873,7 +1870,7 @@ def fig_dupin_settings() -> LineResult:
         return LineResult(False, how="the settings read from the transcription", detail={"unread": tex[:60]})
     values = {}
     for part in m.groups():
-        (lhs, rhs), ops = parse_relation(part)
+        (lhs, rhs), ops = chain(part)
         if ops != ["="] or not lhs.is_Symbol or lhs in values:
             return LineResult(False, how="the settings read", detail={"unread": part})
         values[str(lhs)] = rhs

@@ -1,10 +1,10 @@
 """Checks of the lines of Sections 7 and 8 (:mod:`paper_repro.printed.lines.sec7`).
 
 Every printed formula is read from its verbatim LaTeX -- relations, elevation rows, conversions and simple
-expressions by the one reader :mod:`paper_repro.printed.latex_math` (through ``sec7_latex``),
-sums with bounds, listed ranges, intervals and the key words (orders, degrees, 'alpha -> 0', 'convex', 'innermost',
-'linearly independent', ...) by the strict readers of ``sec7_latex``, which refuse a changed relation, sign,
-superscript or word -- and compared with an independent computation of the package:
+expressions, sums with bounds, listed ranges and intervals by the one reader :mod:`paper_repro.printed.latex_math`
+(interpreted by :mod:`paper_repro.printed.parsed`), which refuses anything unread; a changed relation, sign or
+superscript changes what is read; the key words (orders, degrees, 'convex', 'innermost', 'linearly independent',
+...) are read from the prose (:func:`word_list`) -- and compared with an independent computation of the package:
 
 * normalizing coefficients: the closed forms recovered by :mod:`paper_repro.theory.closed_forms` (proven for every
   alpha, ``proof_cached``), as rational functions of t = tan(alpha/4) (:mod:`paper_repro.theory.ratfunc`), and the
@@ -17,6 +17,7 @@ superscript or word -- and compared with an independent computation of the packa
 
 from __future__ import annotations
 
+import functools
 import math
 import re
 from fractions import Fraction
@@ -24,7 +25,9 @@ from functools import cache
 
 import mpmath
 import numpy as np
+import sympy
 from flint import fmpq, fmpq_mpoly_ctx, fmpq_poly
+from sympy.core.function import AppliedUndef
 
 from paper_repro.claims.lines import LineResult, line_check
 from paper_repro.core.basis import evaluate
@@ -35,8 +38,9 @@ from paper_repro.core.elevation import elevation_matrix, elevation_matrix_exact
 from paper_repro.core.fourier import evaluate_v, v_labels
 from paper_repro.core.labels import delta, exponents, index_of, parse_label, united_system
 from paper_repro.core.normalization import coefficients, evaluate_normalized, orbits
+from paper_repro.printed import latex_math as LM
+from paper_repro.printed import parsed as P
 from paper_repro.printed.lines import live_texts
-from paper_repro.printed.lines import sec7_latex as X
 from paper_repro.printed.lines.sec7 import LINES
 from paper_repro.printed.normalization import final_value
 from paper_repro.theory.closed_forms import closed_forms_cached, proof_cached, sign_on_unit_interval
@@ -47,6 +51,87 @@ from paper_repro.theory.ratfunc import RatFunc, half_angle_functions, poly_at
 VERBATIM = live_texts()  # read at every lookup (the blank and mutation tests change the transcription)
 #: rational tan(alpha/4) of the exact samples (alpha from 0.57 to 2.9)
 TS = ("1/7", "1/3", "1/2", "5/7", "9/10")
+
+
+#: the names a simple printed expression may use (a name outside them is an unread change of the line)
+NAMES = ("x", "y", "z", "n", "m", "d", "e", "f", "alpha", "i", "j")
+ORDINALS = {"first": 1, "second": 2, "third": 3, "fourth": 4, "fifth": 5, "sixth": 6}
+DEGREE_WORDS = {"linear": 1, "quadratic": 2, "cubic": 3, "quartic": 4, "quintic": 5, "sextic": 6, "septic": 7,
+                "octic": 8, "nonic": 9}
+
+
+def word_list(text: str, vocabulary: dict[str, int], followed_by: str) -> list[int]:
+    """Values of the words of a prose list ``w1, w2 and w3`` (or ``w1 and w2``) right before ``followed_by``; every
+    word must be in ``vocabulary``, and a word listed twice is refused."""
+    text = re.sub(r"\s+", " ", text)
+    m = re.search(r"((?:[a-z]+, )*[a-z]+ and [a-z]+) " + re.escape(followed_by), text)
+    if not m:
+        raise ValueError(f"no list before {followed_by!r}")
+    words = re.split(r", | and ", m.group(1))
+    if any(w not in vocabulary for w in words) or len(set(words)) != len(words):
+        raise ValueError(f"unread list {words!r}")
+    return [vocabulary[w] for w in words]
+
+
+def layout_free(tex: str) -> str:
+    """The text with its layout removed (``%`` line ends, colour macros, ``\\left``/``\\right``,
+    ``\\displaystyle``, ``\\limits``, ``&``, ``~``, ``\\,`` and white space): for the prose patterns of a line,
+    not for its formulas (those are read by :mod:`paper_repro.printed.latex_math`)."""
+    t = re.sub(r"%[^\n]*\n?", "", tex)
+    t = re.sub(r"\\(?:Red|Green|Blue|Orange)\{((?:[^{}]|\{[^{}]*\})*)\}", r"\1", t)
+    t = re.sub(r"\\(?:displaystyle|limits)(?![A-Za-z])", "", t)
+    t = re.sub(r"\\left(?![A-Za-z])|\\right(?![A-Za-z])", "", t)
+    t = t.replace("\\,", "").replace("~", "").replace("&", "")
+    t = re.sub(r"(\\[A-Za-z]+)\s+(?=[A-Za-z])", "\\1\0", t)
+    return re.sub(r"\s+", "", t).replace("\0", " ")
+
+
+def read_expression(tex: str, allowed: tuple[str, ...] = NAMES):
+    """A simple printed expression (``\\alpha x``, ``1-x-y``, ``3n-1``) read by the one reader; ``ValueError`` on
+    anything unread or a name outside ``allowed``."""
+    return P.expression(tex, allowed)
+
+
+def _relation(tex: str, ops: tuple[str, ...] = ("=",)):
+    """The relation ``tex`` read by :func:`paper_repro.printed.latex_math.parse_relation`; its operators must be
+    ``ops`` (a changed relation, e.g. ``\\neq``, is refused)."""
+    rel = _parsed_relation(tex)
+    if tuple(rel.ops) != tuple(ops):
+        raise ValueError(f"relation {rel.ops}, expected {list(ops)}")
+    return rel
+
+
+@functools.lru_cache(maxsize=512)
+def _parsed_relation(tex: str):
+    """:func:`paper_repro.printed.latex_math.parse_relation`, memoized on the text (a changed line is another key;
+    the result is only read)."""
+    return LM.parse_relation(tex)
+
+
+def alpha_limit(text: str):
+    """The value alpha tends to in the one ``$\\alpha \\to v$`` of ``text`` (every ``$..$`` segment read; exactly
+    one is a limit of alpha)."""
+    alpha = sympy.Symbol("alpha")
+    found = []
+    for seg in LM.inline_math(text) or [text]:
+        try:
+            rel = LM.parse_relation(seg)
+        except LM.LatexMathError:
+            continue
+        if rel.ops == ["->"] and rel.parts[0] == alpha and not rel.conditions:
+            found.append(rel.parts[1])
+    if len(found) != 1 or found[0].free_symbols:
+        raise ValueError(f"expected one '$\\alpha \\to v$' in {text[:60]!r}, read {found}")
+    return found[0]
+
+
+def listed_values(tex: str, var: str, **env) -> list[int]:
+    """Values of the one listed range ``$var=a,b,\\ldots,c$`` of ``tex`` at ``env`` (read by the one reader)."""
+    found = [c for c in P.clauses(tex) if c.ops == ["in"] and c.parts[0] == sympy.Symbol(var)
+             and isinstance(c.parts[1], sympy.Tuple)]
+    if len(found) != 1:
+        raise ValueError(f"expected one '{var}=a,b,...,c' in {tex[:60]!r}")
+    return P.progression(list(found[0].parts[1]), **env)
 
 
 def _t(text: str) -> fmpq:
@@ -79,27 +164,68 @@ def _point_names(n: int) -> list[str]:
     return sorted(lab.control_point for lab in united_system(n))
 
 
-def _label(colour: str, sub: str, **env: int) -> str:
-    """``X_{a,b,c}`` with the printed subscript ``sub`` evaluated (``2n,2n-i,j`` at n, i, j)."""
-    return f"{colour}_{{{','.join(str(X.bound_value(p, **env)) for p in sub.split(','))}}}"
+def _label(name, **env: int) -> str:
+    """``X_{a,b,c}`` of a parsed normalized function ``Xbar(a, b, c)`` with its indices evaluated at n, i, j."""
+    fn = name.func.__name__
+    if fn not in ("Rbar", "Gbar", "Bbar"):
+        raise ValueError(f"not a normalized function: {name}")
+    return f"{fn[0]}_{{{','.join(str(P.bound(a, **env)) for a in name.args)}}}"
+
+
+def _signed_terms(expr) -> list[tuple[int, object, list]]:
+    """``[(sign, name, sums)]`` of a printed sum of normalized functions, each term +/- one name (with its sums);
+    anything else (a coefficient, a product) raises ``ValueError``."""
+    out = []
+    for t in LM.terms(expr):
+        if len(t.names) != 1 or t.coefficient not in (1, -1) or \
+                t.names[0].func.__name__ not in ("Rbar", "Gbar", "Bbar"):
+            raise ValueError(f"not a signed normalized function: {t}")
+        out.append((int(t.coefficient), t.names[0], [tuple(lim) for lim in t.limits]))
+    return out
+
+
+def _tagged(tex: str) -> None:
+    """Every normalized function of ``tex`` carries the superscript alpha (``ValueError`` naming the first that
+    does not)."""
+    bare = [f for f in LM.untagged(tex) if f.func.__name__ in ("Rbar", "Gbar", "Bbar")]
+    if bare:
+        raise ValueError(f"{bare[0]} printed without the superscript alpha")
+
+
+def unity_product(tex: str) -> dict:
+    """The printed ``1^{n+1} = (first factor) . (second factor)`` read by the one reader: ``{"lhs": left side,
+    "first": [(sign, name, sums)], "second": [(sign, name, sums)]}`` (the first factor is the one in n)."""
+    _tagged(tex)
+    lhs, rhs = _relation(tex).parts
+    factors = sympy.Mul.make_args(rhs)
+    if len(factors) != 2 or not all(isinstance(f, sympy.Add) for f in factors):
+        raise ValueError(f"not a product of two sums: {rhs}")
+    first, second = sorted(factors, key=lambda f: sympy.Symbol("n") not in f.free_symbols)
+    return {"lhs": lhs, "first": _signed_terms(first), "second": _signed_terms(second)}
 
 
 def printed_first_factor(tex: str, n: int) -> list[str]:
     """Names of the functions of the first factor of the printed 1^{n+1} (the single term and the three printed
     double sums, bounds read from the verbatim), each with its sign; a term with a minus sign is kept as ``-X``."""
     out = []
-    for term in X.unity_product(tex)["first"]:
-        sign = "" if term[0] > 0 else "-"
-        if len(term) == 3:
-            out.append(sign + _label(term[1], term[2], n=n))
+    for sign, name, sums in unity_product(tex)["first"]:
+        prefix = "" if sign > 0 else "-"
+        if not sums:
+            out.append(prefix + _label(name, n=n))
             continue
-        _, colour, sub, (vj, jlo, jhi), (vi, ilo, ihi) = term
-        if (vj, vi) != ("j", "i"):
-            raise ValueError(f"summation variables {vj}, {vi}: the subscript is written in i and j")
-        for j in range(X.bound_value(jlo, n=n), X.bound_value(jhi, n=n) + 1):
-            for i in range(X.bound_value(ilo, n=n, j=j), X.bound_value(ihi, n=n, j=j) + 1):
-                out.append(sign + _label(colour, sub, n=n, i=i, j=j))
+        if len(sums) != 2 or [str(v) for v, _, _ in sums] != ["j", "i"]:
+            raise ValueError(f"summation variables {[v for v, _, _ in sums]}: the subscript is written in i and j")
+        (_, jlo, jhi), (_, ilo, ihi) = sums
+        for j in range(P.bound(jlo, n=n), P.bound(jhi, n=n) + 1):
+            for i in range(P.bound(ilo, n=n, j=j), P.bound(ihi, n=n, j=j) + 1):
+                out.append(prefix + _label(name, n=n, i=i, j=j))
     return sorted(out)
+
+
+def _second_names(terms) -> list[str]:
+    if any(sums for _, _, sums in terms):
+        raise ValueError("a sum in the second factor")
+    return sorted(("" if sign > 0 else "-") + _label(name) for sign, name, _ in terms)
 
 
 def _unity_at(n: int, t: str, count: int = 4) -> bool:
@@ -108,20 +234,14 @@ def _unity_at(n: int, t: str, count: int = 4) -> bool:
     return all(sum(row) == 1 for row in vals)
 
 
-def _power_is_one(base: str, exponent: str, ns=range(1, 4)) -> bool:
-    """The printed left side ``base^{exponent}`` equals 1 (the value of the right side) at n = 1..3."""
-    b, e = X.to_sympy(base), X.to_sympy(exponent)
-    return all(b ** e.subs("n", n) == 1 for n in ns)
-
-
 @line_check("sec7-unity-product")
 def check_unity_product() -> LineResult:
     tex = VERBATIM["sec7-unity-product"]
-    read = X.unity_product(tex)
+    read = unity_product(tex)
     first = {n: printed_first_factor(tex, n) == _member_names(n) for n in range(1, 11)}
-    second = sorted(("" if s > 0 else "-") + lab for s, lab in read["second"]) == _member_names(1)
+    second = _second_names(read["second"]) == _member_names(1)
     unity = {n: all(_unity_at(n, t) for t in ("1/3", "5/7")) for n in (1, 2, 3)}
-    lhs = _power_is_one(*read["lhs"])
+    lhs = read["lhs"] == 1
     ok = all(first.values()) and second and all(unity.values()) and lhs
     return LineResult(ok, how="printed terms (signs, superscripts alpha, summation bounds) read and enumerated: the "
                       "first factor names exactly the members of T-bar_{2n} (n = 1..10), the second those of T-bar_2; "
@@ -134,15 +254,18 @@ def check_unity_product() -> LineResult:
 
 @line_check("sec7-square-of-unity")
 def check_square_of_unity() -> LineResult:
-    (base, exp), terms, outer = X.square_of_unity(VERBATIM["sec7-square-of-unity"])
-    same = sorted(("" if s > 0 else "-") + lab for s, lab in terms) == _member_names(1)
+    tex = VERBATIM["sec7-square-of-unity"]
+    _tagged(tex)
+    lhs, rhs = _relation(tex).parts
+    base, exp = rhs.as_base_exp()
+    same = isinstance(base, sympy.Add) and _second_names(_signed_terms(base)) == _member_names(1)
     unity = all(_unity_at(1, t) for t in TS)
-    lhs = _power_is_one(base, exp)
-    return LineResult(same and unity and lhs, how="the printed sum read with its signs: exactly the members of "
+    lhs_one = lhs == 1
+    return LineResult(same and unity and lhs_one, how="the printed sum read with its signs: exactly the members of "
                       "T-bar_2, each once with +; that sum is 1 exactly at rational points of 5 rational alpha, so "
                       "its power is 1 = the printed left side",
-                      detail={"labels_are_T2": same, "sum_is_one": unity, "left_side_is_1": lhs,
-                              "exponents": [exp, outer]})
+                      detail={"labels_are_T2": same, "sum_is_one": unity, "left_side_is_1": lhs_one,
+                              "exponents": [str(exp)]})
 
 
 def index_set_from_text(n: int) -> list[tuple[int, int]]:
@@ -151,7 +274,7 @@ def index_set_from_text(n: int) -> list[tuple[int, int]]:
     tex = VERBATIM["sec7-mixed-products-index-set"]
     if not re.search(r"\bfor all indices\b", tex):
         raise ValueError("no 'for all indices'")
-    return [(i, j) for j in X.listed_values(tex, "j", n=n) for i in X.listed_values(tex, "i", n=n, j=j)]
+    return [(i, j) for j in listed_values(tex, "j", n=n) for i in listed_values(tex, "i", n=n, j=j)]
 
 
 def _r_noncentre(n: int) -> list[tuple[int, int]]:
@@ -196,9 +319,9 @@ def products_orders(tex: str) -> tuple[int, int]:
     t = re.sub(r"\s+", " ", tex)
     m = re.search(r"to transform the pairwise products of ([a-z]+) order blending functions into linear "
                   r"combinations of ([a-z]+) order blending functions", t)
-    if not m or m.group(1) not in X.ORDINALS or m.group(2) not in X.ORDINALS:
+    if not m or m.group(1) not in ORDINALS or m.group(2) not in ORDINALS:
         raise ValueError("unread orders of the products")
-    return X.ORDINALS[m.group(1)], X.ORDINALS[m.group(2)]
+    return ORDINALS[m.group(1)], ORDINALS[m.group(2)]
 
 
 def products_in_span_modp(a: int, b: int) -> bool:
@@ -265,11 +388,16 @@ def relation_rhs(tex: str):
     import sympy as sp
 
     if "=" in tex or "\\neq" in tex:
-        lhs, rhs = X.math_relation(tex).parts
+        lhs, rhs = _relation(tex).parts
         if lhs != sp.Function("r")(4, 2, 2):
             raise ValueError(f"left side {lhs}")
         return rhs
-    return X.math_expr(tex)
+    return _parsed_expression(tex)
+
+
+@functools.lru_cache(maxsize=512)
+def _parsed_expression(tex: str):
+    return LM.parse(tex)
 
 
 def relation_value(tex: str, K, trig: dict, coeffs: dict):
@@ -282,7 +410,7 @@ def relation_value(tex: str, K, trig: dict, coeffs: dict):
     values = {sp.sin(a / 2): trig["s"], sp.cos(a / 2): trig["c"], sp.sin(a): trig["sinA"],
               sp.tan(a / 2): trig["tanH"]}
     values.update({sp.Function(k[0])(int(k[1]), int(k[2]), int(k[3])): v for k, v in coeffs.items()})
-    return X.evaluate_sympy(relation_rhs(tex), K, values)
+    return P.evaluate_in(relation_rhs(tex), K, values)
 
 
 def relation_holds(tex: str, label: str) -> bool:
@@ -331,8 +459,8 @@ def relation_orders() -> tuple[int, int]:
     """``(order of the right-hand sides, order of the left-hand sides)`` of the relations of Example
     exmp:from_1_to_2: from the printed coefficient names (``r_{2,..}`` is order 1) of every relation line, and
     from the line ids (the left-hand side of a row), which must all agree."""
-    rhs = {int(m) // 2 for lid in RELATION_IDS
-           for m in re.findall(r"[rgb]_\{(\d+),", X.clean(VERBATIM[lid]).split("=")[-1])}
+    rhs = {int(f.args[0]) // 2 for lid in RELATION_IDS for f in relation_rhs(VERBATIM[lid]).atoms(AppliedUndef)
+           if f.func.__name__ in ("r", "g", "b")}
     lhs = {int(lid[10]) // 2 for lid in RELATION_IDS}
     if len(rhs) != 1 or len(lhs) != 1:
         raise ValueError(f"relations of mixed orders: {rhs}, {lhs}")
@@ -347,7 +475,7 @@ def check_same_as_example() -> LineResult:
     t = re.sub(r"\s+", " ", VERBATIM["sec7-rel-same-as-example"])
     m = re.fullmatch(r"It is easy to verify that these relations lead to the same ([a-z]+) order normalizing "
                      r"coefficients that were described in Example \\ref\{normalizing_coefficients_n_(\d+)\}", t)
-    if not m or m.group(1) not in X.ORDINALS:
+    if not m or m.group(1) not in ORDINALS:
         raise ValueError("unread line")
     low, high = relation_orders()
     s, c = half_angle_functions()
@@ -362,12 +490,12 @@ def check_same_as_example() -> LineResult:
                              ns)
         if not val == final_value(rep[index_of(2)[label]], s, c):
             bad.append(slug)
-    orders = X.ORDINALS[m.group(1)] == int(m.group(2)) == high == 2 and low == 1
+    orders = ORDINALS[m.group(1)] == int(m.group(2)) == high == 2 and low == 1
     return LineResult(not bad and orders, kind="proof", how="the order read from the line (and its Example) is the "
                       "order of the relations' left sides; the 19 relations at the printed order-1 closed forms "
                       "equal the printed order-2 closed forms, as rational functions of tan(alpha/4)",
                       detail={"relations": len(RELATION_IDS), "disagreeing": bad,
-                              "orders_read": [X.ORDINALS[m.group(1)], int(m.group(2))]})
+                              "orders_read": [ORDINALS[m.group(1)], int(m.group(2))]})
 
 
 @line_check("sec7-rel-inheritance")
@@ -405,7 +533,7 @@ def printed_elevation(tex: str, colour: int, c2, s2, K) -> dict[str, object]:
     """``{order-1 label: weight}`` of one printed row (colour 0, 1, 2 = r, g, b; the centre has one)."""
     import sympy as sp
 
-    rows = X.math_elevation(tex)
+    rows = P.elevation(tex)
     names = set(_point_names(1)) | set(_point_names(2))
     unknown = [lab for left, row in rows for lab in [left, *row] if lab not in names]
     if unknown:
@@ -413,7 +541,7 @@ def printed_elevation(tex: str, colour: int, c2, s2, K) -> dict[str, object]:
     a = sp.Symbol("alpha")
     squares = {sp.cos(a / 2): c2, sp.sin(a / 2): s2}
     lhs, row = rows[colour]
-    return lhs, {lab: X.evaluate_sympy(w, K, {}, squares) for lab, w in row.items()}
+    return lhs, {lab: P.evaluate_in(w, K, {}, squares) for lab, w in row.items()}
 
 
 def elevation_row_holds(tex: str, colour: int, t: str) -> bool:
@@ -480,7 +608,7 @@ def _register_elevation(slug: str, colour: int) -> None:
     @line_check(f"sec7-elev-{slug}")
     def check() -> LineResult:
         tex = VERBATIM[f"sec7-elev-{slug}"]
-        rows = len(X.math_elevation(tex))  # the line is the whole vector equation: every row of it is checked
+        rows = len(P.elevation(tex))  # the line is the whole vector equation: every row of it is checked
         per_t = {t: all(elevation_row_holds(tex, k, t) for k in range(rows)) for t in TS}
         proof = _printed_elevation_proof()
         proven = all(proof_cached(n)["proved"] for n in (1, 2))
@@ -507,7 +635,7 @@ def elevation_orders() -> tuple[int, int]:
     point names of its rows (``r_{2,..}`` is order 1, ``r_{4,..}`` order 2)."""
     lhs, rhs = set(), set()
     for lid in ELEVATION_IDS:
-        for left, row in X.math_elevation(VERBATIM[lid]):
+        for left, row in P.elevation(VERBATIM[lid]):
             lhs.add(int(left.split("{")[1].split(",")[0]) // 2)
             rhs |= {int(lab.split("{")[1].split(",")[0]) // 2 for lab in row}
     if len(lhs) != 1 or len(rhs) != 1:
@@ -526,9 +654,37 @@ def printed_elevation_matrix(c2, s2, K) -> list[list]:
     return mat
 
 
+def patch_product(tex: str) -> dict:
+    """The printed ``\\mathbf{s}_{1}^{\\alpha}\\cdot1 = (sum of points times functions) . (sum of functions)``
+    read by the one reader: ``{"patch": order, "one": the factor of s, "pairs": [(sign, point, function)],
+    "second": [(sign, label)]}`` (the first factor is the one with the points)."""
+    _tagged(tex)
+    lhs, rhs = _relation(tex).parts
+    one = [f for f in sympy.Mul.make_args(lhs) if not isinstance(f, AppliedUndef)]
+    patch = [f for f in sympy.Mul.make_args(lhs) if isinstance(f, AppliedUndef)]
+    if len(patch) != 1 or patch[0].func.__name__ != "s_vec" or len(patch[0].args) != 1:
+        raise ValueError(f"the left side {lhs} is not s_n^alpha times a number")
+    factors = sympy.Mul.make_args(rhs)
+    if len(factors) != 2 or not all(isinstance(f, sympy.Add) for f in factors):
+        raise ValueError(f"not a product of two sums: {rhs}")
+    first, second = sorted(factors, key=lambda f: not any(a.func.__name__.endswith("_vec")
+                                                          for a in f.atoms(AppliedUndef)))
+    pairs = []
+    for t in LM.terms(first):
+        pts = [a for a in t.names if a.func.__name__.endswith("_vec")]
+        fns = [a for a in t.names if not a.func.__name__.endswith("_vec")]
+        if t.limits or len(pts) != 1 or len(fns) != 1 or t.coefficient not in (1, -1):
+            raise ValueError(f"not a signed point times a function: {t}")
+        pairs.append((int(t.coefficient), P.point_label(pts[0]), _label(fns[0])))
+    second_terms = [(sign, _label(name)) for sign, name, sums in _signed_terms(second) if not sums]
+    if len(second_terms) != len(second.args):
+        raise ValueError("a sum in the second factor")
+    return {"patch": int(patch[0].args[0]), "one": str(sympy.Mul(*one)), "pairs": pairs, "second": second_terms}
+
+
 @line_check("sec7-elev-product")
 def check_elev_product() -> LineResult:
-    read = X.patch_product(VERBATIM["sec7-elev-product"])
+    read = patch_product(VERBATIM["sec7-elev-product"])
     pairs = read["pairs"]
     own = all(sign > 0 and p == f[0].lower() + f[1:] for sign, p, f in pairs)
     labs = sorted(f for _, _, f in pairs) == _member_names(1) and read["patch"] == 1
@@ -550,10 +706,10 @@ def same_patch_orders(tex: str) -> dict[str, int]:
                      r"coefficients of ([a-z]+) order blending functions, one obtains the order elevated \(i\.e\., "
                      r"([a-z]+) order\) representation \$\\mathbf\{s\}_\{(\d+)\}\^\{\\alpha\}\$ of the original "
                      r"patch \$\\mathbf\{s\}_\{(\d+)\}\^\{\\alpha\}\$", t)
-    if not m or m.group(2) not in X.ORDINALS or m.group(3) not in X.ORDINALS:
+    if not m or m.group(2) not in ORDINALS or m.group(3) not in ORDINALS:
         raise ValueError("unread line (orders, superscripts)")
-    return {"basis": int(m.group(1)) // 2 if int(m.group(1)) % 2 == 0 else -1, "blending": X.ORDINALS[m.group(2)],
-            "elevated": X.ORDINALS[m.group(3)], "s_elevated": int(m.group(4)), "s_original": int(m.group(5))}
+    return {"basis": int(m.group(1)) // 2 if int(m.group(1)) % 2 == 0 else -1, "blending": ORDINALS[m.group(2)],
+            "elevated": ORDINALS[m.group(3)], "s_elevated": int(m.group(4)), "s_original": int(m.group(5))}
 
 
 @line_check("sec7-elev-same-patch")
@@ -588,7 +744,7 @@ def check_elev_index_sets() -> LineResult:
 
     tex = VERBATIM["sec7-elev-index-sets"]
     sets = re.findall(r"\\mathbf\{([rgb])\}_\{4,4-i,j\}\}\s*\\right\\\}\s*_\{j=(\d+),i=j\}\^\{(\d+),(\d+)-j\}", tex)
-    centre = re.match(r"\\mathbf\{([rgb])\}_\{(\d+),(\d+),(\d+)\},", X.clean(tex))
+    centre = re.match(r"\\mathbf\{([rgb])\}_\{(\d+),(\d+),(\d+)\},", layout_free(tex))
     if not centre:
         raise ValueError("unread first point")
     labs = [f"{centre.group(1)}_{{{centre.group(2)},{centre.group(3)},{centre.group(4)}}}"]
@@ -603,7 +759,7 @@ def check_elev_index_sets() -> LineResult:
 def _listed_points(tex: str) -> list[str]:
     """Names of the bold control points listed in ``tex`` (``,`` separated), in order."""
     return [f"{m.group(1)}_{{{m.group(2)},{m.group(3)},{m.group(4)}}}" for m in
-            re.finditer(r"\\mathbf\{([rgb])\}_\{(\d+),(\d+),(\d+)\}", X.clean(tex))]
+            re.finditer(r"\\mathbf\{([rgb])\}_\{(\d+),(\d+),(\d+)\}", layout_free(tex))]
 
 
 @line_check("sec7-elev-convex")
@@ -649,9 +805,9 @@ def check_elev_closer() -> LineResult:
     t = re.sub(r"\s+", " ", VERBATIM["sec7-elev-closer"])
     m = re.fullmatch(r"Thus, the degree elevated \(([a-z]+) order\) control net is closer to the given patch than its "
                      r"original \(([a-z]+) order\) one for all values of \$\\alpha\$\.", t)
-    if not m or m.group(1) not in X.ORDINALS or m.group(2) not in X.ORDINALS:
+    if not m or m.group(1) not in ORDINALS or m.group(2) not in ORDINALS:
         raise ValueError("unread line (orders, quantifier)")
-    orders = (X.ORDINALS[m.group(2)], X.ORDINALS[m.group(1)]) == elevation_orders()
+    orders = (ORDINALS[m.group(2)], ORDINALS[m.group(1)]) == elevation_orders()
     rng = np.random.default_rng(23)
     results = {}
     for alpha in (0.6, math.pi / 2, 2.6):
@@ -712,12 +868,12 @@ def parametrization_report(ranges: dict[str, tuple[str, str]], N: int = 12) -> d
     outside, reached, empty = 0, set(), 0
     for a in range(-2 * N, 3 * N + 1):
         x = Fraction(a, N)
-        if not X.bound_value(xlo, x=x) <= x <= X.bound_value(xhi, x=x):
+        if not P.evaluate_at(xlo, x=x) <= x <= P.evaluate_at(xhi, x=x):
             continue
-        empty += X.bound_value(ylo, x=x) > X.bound_value(yhi, x=x)  # a printed x with no y: not a point of the domain
+        empty += P.evaluate_at(ylo, x=x) > P.evaluate_at(yhi, x=x)  # a printed x with no y: not a point of the domain
         for b in range(-2 * N, 3 * N + 1):
             y = Fraction(b, N)
-            if not X.bound_value(ylo, x=x) <= y <= X.bound_value(yhi, x=x):
+            if not P.evaluate_at(ylo, x=x) <= y <= P.evaluate_at(yhi, x=x):
                 continue
             z = 1 - x - y
             if min(x, y, z) < 0:
@@ -744,11 +900,48 @@ def _range_result(ranges: dict[str, tuple[str, str]]) -> LineResult:
                       detail={"printed": printed, "corrected_y_upper_1-x": corrected})
 
 
+def parametrization_row(tex: str) -> tuple[str, tuple[str, ...], object, tuple]:
+    """One row ``u\\left(x,y\\right) & = & \\alpha x, & x \\in \\left[0, 1\\right]`` (or ``..., & z = 1-x-y``) read
+    by the one reader: ``(name, arguments, right-hand side, condition)``; the condition is ``("in", var, lo, hi)``
+    or ``("=", var, expression)``.  The relation must be one ``=`` with one clause."""
+    rel = _relation(tex)
+    lhs, rhs = rel.parts
+    if not (isinstance(lhs, AppliedUndef) and len(lhs.args) == 1 and isinstance(lhs.args[0], sympy.Tuple)
+            and len(rel.conditions) == 1 and len(rel.conditions[0].parts) == 2):
+        raise ValueError(f"not a parametrization row 'f(x,y) = expr, condition': {tex!r}")
+    if {str(x) for x in rhs.free_symbols} - set(NAMES) or rhs.atoms(AppliedUndef):
+        raise ValueError(f"unknown names in {rhs}")
+    cond = rel.conditions[0]
+    var, right = cond.parts
+    if cond.ops == ["in"] and isinstance(right, sympy.Interval) and not (right.left_open or right.right_open):
+        return lhs.func.__name__, tuple(str(a) for a in lhs.args[0]), rhs, ("in", str(var), right.start, right.end)
+    if cond.ops == ["="]:
+        return lhs.func.__name__, tuple(str(a) for a in lhs.args[0]), rhs, ("=", str(var), right)
+    raise ValueError(f"unread condition {cond}")
+
+
+def strict_ranges(tex: str) -> dict[str, tuple]:
+    """``{variable: (lower, upper)}`` of a text whose every ``$..$`` segment is ``v\\in\\left[lo,hi\\right]`` (read
+    by the one reader); any other segment (``\\notin``, a relation) is refused."""
+    segs = LM.inline_math(tex)
+    if not segs:
+        raise ValueError(f"no range in {tex!r}")
+    out = {}
+    for seg in segs:
+        rel = LM.parse_relation(seg)
+        right = rel.parts[-1]
+        if rel.ops != ["in"] or rel.conditions or not isinstance(right, sympy.Interval) or right.left_open \
+                or right.right_open:
+            raise ValueError(f"not 'v in [lo, hi]': {seg!r}")
+        out[str(rel.parts[0])] = (right.start, right.end)
+    return out
+
+
 def parametrization_rows() -> dict[str, tuple]:
     """The three printed rows u, v, w of the parametrization, read strictly (relation ``=``)."""
     rows = {}
     for r in "uvw":
-        name, args, rhs, cond = X.parametrization_row(VERBATIM[f"sec7-limit-param-{r}"])
+        name, args, rhs, cond = parametrization_row(VERBATIM[f"sec7-limit-param-{r}"])
         rows[name] = (args, rhs, cond)
     if sorted(rows) != ["u", "v", "w"]:
         raise ValueError(f"rows {sorted(rows)}: not u, v, w")
@@ -766,7 +959,7 @@ def check_limit_param_range() -> LineResult:
 
 @line_check("sec7-limit-caption-range")
 def check_limit_caption_range() -> LineResult:
-    return _range_result(X.strict_ranges(VERBATIM["sec7-fig-limit-caption-range"]))
+    return _range_result(strict_ranges(VERBATIM["sec7-fig-limit-caption-range"]))
 
 
 @line_check("sec7-limit-param-map")
@@ -832,7 +1025,7 @@ def _simplex_equation(text: str) -> bool:
     found = [p for p in re.findall(r"\$([^$]*)\$", text) if "=" in p or "\\neq" in p]
     if len(found) != 1 or found[0].count("=") != 1 or "\\" in found[0]:
         raise ValueError(f"unread simplex equation {found!r}")
-    lhs, rhs = (X.to_sympy(side) for side in found[0].split("="))
+    lhs, rhs = _relation(found[0]).parts
     alpha = sp.Symbol("alpha")
     rows = parametrization_rows()
     plane = sp.expand(sum(rows[r][1] for r in "uvw") / alpha)  # x + y + z of the parametrization (u+v+w = alpha)
@@ -841,7 +1034,7 @@ def _simplex_equation(text: str) -> bool:
 
 def _orders_of_figure_cases() -> list[int]:
     """The orders of cases (a), (b), (c) of Fig. fig:limit_cases_n_1_2_3, read from its caption."""
-    return X.word_list(VERBATIM["sec7-fig-limit-caption-cases"], X.ORDINALS, "order constrained trivariate")
+    return word_list(VERBATIM["sec7-fig-limit-caption-cases"], ORDINALS, "order constrained trivariate")
 
 
 @line_check("sec7-limit-degenerate-bernstein")
@@ -852,7 +1045,7 @@ def check_degenerate_bernstein() -> LineResult:
                      r"\(\\ref\{normalized_united_system\}\) degenerate to constrained trivariate Bernstein "
                      r"polynomials defined on the unit simplex \$", t):
         raise ValueError("unread line (systems, 'degenerate to ... Bernstein polynomials ... unit simplex')")
-    ns = X.word_list(tex, X.ORDINALS, "order normalized")
+    ns = word_list(tex, ORDINALS, "order normalized")
     figure = ns == _orders_of_figure_cases()  # 'as shown in Fig.': the orders are those of the figure's cases
     plane = _simplex_equation(tex)
     per_n = {str(n): bernstein_limits(n) for n in ns}
@@ -882,13 +1075,13 @@ def bernstein_definition() -> dict:
                      r"polynomial \$([^$]+)\$ of degree \$([^$]+)\$", re.sub(r"\s+", " ", t))
     if not m:
         raise ValueError("unread definition")
-    u = X.clean(VERBATIM["sec7-fig-limit-caption-indices"].replace("such that", "@"))
+    u = layout_free(VERBATIM["sec7-fig-limit-caption-indices"].replace("such that", "@"))
     mi = re.fullmatch(r"\$(\w),(\w),(\w)\\in\\\{([^}]*)\\\}\$@\$([^$=]+)=([^$=]+)\$", u)
     if not mi:
         raise ValueError("unread index set")
-    return {"degree": m.group(1), "indices": m.group(2, 3, 4), "formula": X.to_sympy(m.group(5)),
-            "degree_words": X.to_sympy(m.group(6)), "set_vars": mi.group(1, 2, 3), "set": mi.group(4).split(","),
-            "constraint": (X.to_sympy(mi.group(5)), X.to_sympy(mi.group(6)))}
+    return {"degree": m.group(1), "indices": m.group(2, 3, 4), "formula": read_expression(m.group(5)),
+            "degree_words": read_expression(m.group(6)), "set_vars": mi.group(1, 2, 3), "set": mi.group(4).split(","),
+            "constraint": (read_expression(mi.group(5)), read_expression(mi.group(6)))}
 
 
 @line_check("sec7-bernstein-definition")
@@ -905,7 +1098,7 @@ def check_bernstein_definition() -> LineResult:
     per_m, ok = {}, d["set_vars"] == d["indices"]
     for m in range(1, 9):
         env = {"m": m}
-        values = X.progression(d["set"], **env)
+        values = P.progression(d["set"], **env)
         idx = []
         for a in values:
             for b in values:
@@ -956,7 +1149,7 @@ def check_caption_centre() -> LineResult:
         raise ValueError("unread caption (node, 'vanish when')")
     spelled = m.group(1) == _paper_spelling()  # 'triavariate' is a typographical slip (erratum on the line)
     level = (lambda n: n) if m.group(2) == "innermost" else (lambda n: 0)
-    limit = X.alpha_limit(m.group(3))
+    limit = alpha_limit(m.group(3))
     named = {str(n): sorted(lab.paper for lab in united_system(n) if lab.j == level(n)) for n in range(1, 13)}
     if limit == 0:
         closed = {str(n): sorted(lab.paper for lab, (c, _) in zip(united_system(n), limit_terms(n)) if c == 0)
@@ -984,8 +1177,8 @@ def _degrees_result(tex: str, degrees: list[int]) -> tuple[bool, dict]:
     """Orders (ordinal words before 'order triangular') read from ``tex`` and the printed ``degrees``, paired in order,
     against the degree of the alpha -> 0 limit from the proven closed forms and from the limit formula; the limit
     point read (must be 0)."""
-    orders = X.word_list(tex, X.ORDINALS, "order triangular")
-    limit = X.alpha_limit(tex)
+    orders = word_list(tex, ORDINALS, "order triangular")
+    limit = alpha_limit(tex)
     computed = {str(n): (limit_degree(n, "closed_forms"), limit_degree(n, "formula")) for n in orders}
     ok = limit == 0 and len(orders) == len(degrees) and all(
         a == b == d for (a, b), d in zip(computed.values(), degrees))
@@ -996,11 +1189,11 @@ def _degrees_result(tex: str, degrees: list[int]) -> tuple[bool, dict]:
 @line_check("sec7-conversion-degrees")
 def check_conversion_degrees() -> LineResult:
     line, cap = VERBATIM["sec7-conversion-degrees"], VERBATIM["sec7-fig-conversion-caption"]
-    ok1, d1 = _degrees_result(line, X.word_list(line, X.DEGREE_WORDS, "triangular B"))
+    ok1, d1 = _degrees_result(line, word_list(line, DEGREE_WORDS, "triangular B"))
     caption = re.search(r"\(\\emph\{a\}\) ([a-z]+) and \(\\emph\{b\}\) ([a-z]+) triangular", cap)
-    if caption is None or any(w not in X.DEGREE_WORDS for w in caption.groups()):
+    if caption is None or any(w not in DEGREE_WORDS for w in caption.groups()):
         raise ValueError("unread caption degrees")
-    ok2, d2 = _degrees_result(cap, [X.DEGREE_WORDS[w] for w in caption.groups()])
+    ok2, d2 = _degrees_result(cap, [DEGREE_WORDS[w] for w in caption.groups()])
     return LineResult(ok1 and ok2, kind="proof", how="orders, degree words and alpha -> 0 read from the line and the "
                       "caption, paired in order; degree of the alpha -> 0 limit from the proven closed forms and from "
                       f"the limit formula, n = {', '.join(map(str, d1['orders']))} (the orders the line names)",
@@ -1020,8 +1213,7 @@ def conversion_order(terms: list[tuple[Fraction, str]]) -> int:
 def conversion_holds(n: int, tex: str) -> bool:
     """The printed p_{d,e,f} (read by the one reader: relation ``=``, signs, weights; names of members) equals the
     row of the exact conversion matrix (limit formula and closed forms agree)."""
-    idx, weights = X.math_conversion(tex)
-    terms = [(w, lab) for lab, w in weights.items()]
+    idx, terms = P.conversion(tex)
     if conversion_order(terms) != n or any(lab not in _point_names(n) for _, lab in terms):
         return False
     ix = index_of(n)
@@ -1055,8 +1247,7 @@ def printed_conversions() -> dict[int, list[tuple[tuple[int, int, int], list[tup
     """Every printed Bezier point of the conversions (read strictly), by the order of its control points."""
     out: dict[int, list] = {}
     for lid in CONVERSION_IDS:
-        idx, weights = X.math_conversion(VERBATIM[lid])
-        terms = [(w, lab) for lab, w in weights.items()]
+        idx, terms = P.conversion(VERBATIM[lid])
         out.setdefault(conversion_order(terms), []).append((idx, terms))
     return out
 
@@ -1121,7 +1312,7 @@ def check_question_limiting_case(verbatim: str | None = None) -> LineResult:
     """The Question read from the transcription -- the limit point ``$\\alpha \\to 0$``, the order ``$n$`` and the
     degree ``$3n-1$`` of the (rational) Bezier patch on the unit simplex -- against the degree of the limit from
     the limit formula and from the proven closed forms."""
-    from paper_repro.printed.lines.read import bound
+    from paper_repro.printed.parsed import bound
 
     t = re.sub(r"\s+", " ", VERBATIM["sec7-question-limiting-case"] if verbatim is None else verbatim)
     m = re.match(r"Is the limiting case (\$[^$]+\$) of the \(rational\) triangular trigonometric patch of order "
@@ -1130,7 +1321,7 @@ def check_question_limiting_case(verbatim: str | None = None) -> LineResult:
     if not m:
         return LineResult(False, how="the Question read from the transcription, n = 1..12", kind="exhaustive",
                           detail={"unread": "no 'limiting case $..$ ... of order $..$ ... of degree $..$'"})
-    limit = X.alpha_limit(m.group(1))
+    limit = alpha_limit(m.group(1))
     degrees = {str(n): limit_degree(bound(m.group(2), n=n), "formula") for n in range(1, 13)}
     lemmas = {str(n): all(v for k, v in limit_checks(n).items() if isinstance(v, bool)) for n in range(1, 6)}
     closed = {str(n): limit_degree(bound(m.group(2), n=n), "closed_forms") for n in (1, 2, 3, 4)}
@@ -1151,7 +1342,7 @@ def check_dimension_and_span(verbatim: str | None = None) -> LineResult:
     """delta_n as printed (read from the transcription: ``\\delta_{n}=3n\\left(n+1\\right)+1``) = |T_{2n}| = |V_n|;
     'linearly independent' read: the exact rank of T_{2n} is delta_n; the order of the truncated Fourier basis read
     ('of order $n\\in\\mathbb{N}$'): the ranks of V_k and of [T_{2n} V_k] equal delta_n (same span)."""
-    from paper_repro.printed.lines.read import bound
+    from paper_repro.printed.parsed import bound
 
     dim = re.sub(r"\s+", " ", VERBATIM["sec7-s8-dimension"] if verbatim is None else verbatim)
     m = re.fullmatch(r"the normalized linearly independent constrained trivariate function system "

@@ -5,7 +5,7 @@
 :mod:`paper_repro.claims.lines.sec5` for Section 5) read these transcriptions and compare them with independent
 computations; no retyped copy of a formula is kept.  The formulas of Section 5 (Examples
 normalizing_coefficients_n_1..3, Remark normalizing_coeff_of_level_0, Proposition prop:level_1_coefficients) are
-parsed from ``LINES`` by :mod:`paper_repro.printed.lines.sec5_latex`; :mod:`paper_repro.printed.normalization`
+parsed from ``LINES`` by :mod:`paper_repro.printed.latex_math`; :mod:`paper_repro.printed.normalization`
 derives its tables from them.
 """
 

@@ -6,7 +6,7 @@ are the lines the verbatim occupies.  Rows of the vector equations of Example ex
 each (the verbatim is the row's right-hand side); the vector equations of Example
 exmp:degree_elevation_from_1_to_2 are one line per colour (the verbatim is the whole vector equation).
 The formulas are read from the verbatim itself by the small LaTeX readers in
-:mod:`paper_repro.printed.lines.sec7_latex`.  Checks: :mod:`paper_repro.claims.lines.sec7`.
+:mod:`paper_repro.printed.latex_math`.  Checks: :mod:`paper_repro.claims.lines.sec7`.
 """
 
 from __future__ import annotations
