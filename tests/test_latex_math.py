@@ -425,3 +425,14 @@ def test_a_listed_range_follows_an_equals_sign_only():
     assert parse_conditions(r"i=0,1,\ldots,n")[0].ops == ["in"]
     with pytest.raises(LatexMathError):
         parse_conditions(r"i\neq0,1,\ldots,n")
+
+
+def test_the_memo_does_not_answer_summands_or_untagged():
+    """summands() and untagged() read while the parse runs: a memoised plain parse of the same text must not be
+    handed back to them (the printed order, the missing tags)."""
+    from paper_repro.printed.latex_math import parse_relation, summands, untagged
+
+    tex = r"x=b-a+c_{6,4}"
+    parse_relation(tex)  # fills the memo with the evaluated, reordered sum
+    assert [str(t) for t in summands(tex)[1]] == ["b", "-a", "c(6, 4)"]
+    assert [str(t) for t in untagged(tex)] == ["c(6, 4)"]

@@ -962,6 +962,8 @@ def _run(start: str, s: str, arrays: list):
     """Parse the cleaned text ``s`` from rule ``start``.  Memoised on (start, s, arrays): the blank and mutation
     tests and the claims read the same transcriptions many times; a changed line is a new text (and a refused one
     is never stored: it raises each time).  The caller gets a fresh copy (:func:`_fresh`)."""
+    if _ORDERED or _UNTAGGED is not None:  # summands()/untagged() read as the parse runs: never from the memo
+        return _parse_uncached(start, s, arrays)
     key = (start, s, repr(arrays))
     if key in _MEMO:
         return _fresh(_MEMO[key])

@@ -2007,7 +2007,6 @@ def printed_rows(check_id: str, n: int, r: int = 0, override: dict[str, str] | N
     by the functions' own names (no alias); a name that is not a member of T_{2n} stays in the set as a string (a
     mismatch).  ``override`` replaces transcriptions (tests)."""
     from paper_repro.printed.lines.sec1_3 import LINES
-    from paper_repro.printed.parsed import term_indices
 
     rows = {x.id: x.verbatim for x in LINES if x.check == check_id and x.kind == "display"}
     rows.update({k: v for k, v in (override or {}).items() if k in rows})
@@ -2306,7 +2305,7 @@ def elimination_orders(override: dict[str, str] | None = None) -> LineResult:
            "sec1_3-fig-j1-caption-orders", "sec1_3-fig-j1-text")
     t = _transcribed(ids, override)
     try:
-        ranges = {k: listed_range(t[k], "r")[1:] for k in ids[:3]}
+        ranges = {k: listed_range(t[k], "r") for k in ids[:3]}
         for k in ids[:3]:  # every listing of the line steps by one and they agree
             if len({(x.start, x.stop) for x in listed_orders(t[k], "r", n=5)}) != 1:
                 raise ValueError(f"{k}: listings differ")
@@ -2354,10 +2353,10 @@ def induction_orders(verbatim_text: str | None = None) -> LineResult:
         "sec1_3-induction-orders"]
 
     def run(text: str) -> tuple[bool, list]:
-        _r, lo, hi = listed_range(text, "r")
+        lo, hi = listed_range(text, "r")
         if "induction on the derivation order" not in text:
             raise ValueError("not the induction on the derivation order")
-        _r, hyp_lo, hyp_hi = listed_range(_transcribed(["sec1_3-Lr-orders"])["sec1_3-Lr-orders"], "r")
+        hyp_lo, hyp_hi = listed_range(_transcribed(["sec1_3-Lr-orders"])["sec1_3-Lr-orders"], "r")
         bad = []
         for n in N_PROOF:
             used = sorted({r for r, _p, _b, gone in elimination(n) if gone})
