@@ -1,4 +1,4 @@
-"""Joins of two triangular trigonometric patches along a shared edge (beyond the paper; issue 38, item 4).
+"""Joins of two triangular trigonometric patches along a shared edge (beyond the paper).
 
 Edges are named by the variable that vanishes on them: ``'v'`` is the edge v = 0 of Omega^alpha, parametrized by
 t = u from the corner w = alpha (t = 0) to the corner u = alpha (t = alpha); ``'u'`` (u = 0) by t = w and ``'w'``

@@ -1,4 +1,4 @@
-"""The de Casteljau question (issue 38, item 2): is one order-lowering corner-cutting step possible?
+"""The de Casteljau question: is one order-lowering corner-cutting step possible?
 
 Beyond the paper; docs/subdivision_for_all_n.md, §10.  A de Casteljau step of a Bezier triangle writes the degree-n
 basis as the degree-(n - 1) basis times a matrix of degree-1 weights that are >= 0 and sum to 1 along each row.  The

@@ -28,7 +28,7 @@ The other directions follow by symmetry: T_{2n} is invariant under every permuta
 
 The tables (package data ``paper_repro/resources/derivative_tables.json``, n <= :data:`TABLE_MAX_N`, written by
 ``tools/derivative_tables.py`` from :func:`tables_text`) are read here too, beside the recovery that writes them and
-the checks that use them (issue 39, item 4: they were ``paper_repro.core.derivative_tables``, though no library code
+the checks that use them (they were ``paper_repro.core.derivative_tables``, though no library code
 reads them since C has a proven closed form, :mod:`paper_repro.core.half_angle_matrices`): :func:`table` gives the
 integers, :func:`entries` their float values at ``kappa`` by Horner's rule and :func:`table_derivative_nets` the
 nets ``(q_u, q_v)`` of ``2 s d/du`` and ``2 s d/dv`` through them, the independent reference that claim

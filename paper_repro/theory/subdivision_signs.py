@@ -1,4 +1,4 @@
-"""Signs of the corner subdivision matrices for every n (issue 38, item 2; docs/subdivision_for_all_n.md, §9).
+"""Signs of the corner subdivision matrices for every n (docs/subdivision_for_all_n.md, §9).
 
 Beyond the paper.  Notation of the proof page: S_u is the matrix of the corner sub-triangle u >= alpha/2 of
 Omega^alpha (Q = S_u P), theta = alpha/4, c' = cos(theta), s' = sin(theta), T = tan(theta) in (0, 1).
