@@ -226,22 +226,6 @@ def interval(src: Relation | str, var: str) -> tuple[sympy.Expr, sympy.Expr]:
     return right.start, right.end
 
 
-def linear_form(expr: Any) -> tuple[int, int, int]:
-    """Integer coefficients (of alpha, x, y) of a printed linear form such as ``\\alpha-x-y``, ``x-y``, ``0`` (a
-    text, read by :func:`latex_math.parse`, or a parsed expression); ``ValueError`` for anything else (another
-    symbol, a constant term, a non-integer or non-linear coefficient)."""
-    e = sympy.expand(latex_math.parse(expr) if isinstance(expr, str) else sympy.sympify(expr))
-    alpha, x, y = sympy.symbols("alpha x y")
-    if not isinstance(e, sympy.Expr) or not e.free_symbols <= {alpha, x, y}:
-        raise ValueError(f"not a linear form in alpha, x, y: {expr!r}")
-    if e == 0:
-        return 0, 0, 0
-    coeffs = sympy.Poly(e, alpha, x, y).as_dict()
-    if any(sum(m) != 1 for m in coeffs) or any(not c.is_integer for c in coeffs.values()):
-        raise ValueError(f"not a linear form in alpha, x, y: {expr!r}")
-    return tuple(int(coeffs.get(m, 0)) for m in ((1, 0, 0), (0, 1, 0), (0, 0, 1)))  # type: ignore[return-value]
-
-
 # -- the paper's constants, sums, tags ---------------------------------------------------------------------------
 CONSTANTS = ("c", "r", "g", "b")  # univariate constants and normalizing coefficients: numbers, not functions
 
@@ -555,4 +539,4 @@ __all__ = ["ALPHA", "VARRHO", "RHO", "MU", "VARPHI", "PSI", "A", "B", "C", "U", 
            "relation_holds", "bound", "index_set", "clauses", "listed", "listed_range", "progression", "interval",
            "CONSTANTS", "constants_as_factors", "relation", "value", "expand_sums", "TAGGED", "untagged_names",
            "linear_terms", "point_label", "exact_value", "evaluate_in", "COLOUR_OF", "FUNCTIONS", "function_terms",
-           "term_indices", "constant_sets", "linear_form", "evaluate_at", "conversion", "elevation"]
+           "term_indices", "constant_sets", "evaluate_at", "conversion", "elevation"]
