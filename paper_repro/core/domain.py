@@ -94,6 +94,22 @@ class RationalAngle:
         return 4 * math.atan(int(self.t.p) / int(self.t.q))
 
 
+def open_alpha(alpha):
+    """alpha read (:func:`~paper_repro.util.validation.parse_alpha`) and checked to lie in (0, pi): a float or mpf by
+    :func:`~paper_repro.util.validation.check_alpha`, a :class:`RationalAngle` by tan(alpha/4) != 0.
+
+    >>> open_alpha(1.0)
+    1.0
+    """
+    alpha = parse_alpha(alpha)
+    if isinstance(alpha, RationalAngle):
+        if alpha.t == 0:
+            raise ValueError("alpha must lie in the open interval (0, pi): tan(alpha/4) = 0 gives alpha = 0")
+        return alpha
+    check_alpha(alpha)
+    return alpha
+
+
 def rational_alpha(t) -> RationalAngle:
     """Shape parameter alpha = 4 atan(t) for rational ``0 < t < 1`` (so alpha in (0, pi))."""
     a = RationalAngle(_q(t, "t"))

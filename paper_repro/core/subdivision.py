@@ -64,14 +64,13 @@ from paper_repro.core.context import (
     get_context,
     to_fmpq_mat,
 )
-from paper_repro.core.domain import RationalAngle
+from paper_repro.core.domain import RationalAngle, open_alpha
 from paper_repro.core.fourier import v_system
 from paper_repro.core.labels import delta
 from paper_repro.core.nets import check_net, check_net_exact
 from paper_repro.core.subdivision_products import subdivision_matrices_float
 from paper_repro.core.transformation import transformation_in_context
 from paper_repro.util.limits import MAX_N_TRANSFORMATION, check_int
-from paper_repro.util.validation import check_alpha, parse_alpha
 
 #: The four sub-triangles, in the order of :class:`SubNets`.
 PARTS = ("u", "v", "w", "middle")
@@ -267,14 +266,7 @@ def _check_n(n: object) -> int:
     return check_int(n, "n", 1, MAX_N_SUBDIVISION, why="the transformation's limit: dense delta_n x delta_n matrices")
 
 
-def _check_alpha(alpha):
-    alpha = parse_alpha(alpha)
-    if isinstance(alpha, RationalAngle):
-        if alpha.t == 0:
-            raise ValueError("alpha must lie in the open interval (0, pi): tan(alpha/4) = 0 gives alpha = 0")
-        return alpha
-    check_alpha(alpha)
-    return alpha
+_check_alpha = open_alpha  # one rule for alpha (core.domain)
 
 
 def _context(arith, alpha, dps: int) -> Context:

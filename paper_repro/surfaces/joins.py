@@ -55,13 +55,12 @@ import numpy as np
 from flint import fmpq
 
 from paper_repro.core.context import Context, ExactContext, FloatContext, MpContext, get_context
-from paper_repro.core.domain import RationalAngle
+from paper_repro.core.domain import RationalAngle, open_alpha
 from paper_repro.core.labels import delta, exponent_matrix
 from paper_repro.core.nets import check_net, check_net_exact
 from paper_repro.core.normalization import scaled_coefficient_vector
 from paper_repro.core.univariate import c_numerator
 from paper_repro.util.limits import check_int, real_scalar
-from paper_repro.util.validation import check_alpha, parse_alpha
 
 #: Edges by the variable that vanishes on them.
 EDGES = ("u", "v", "w")
@@ -223,14 +222,7 @@ def _closed_form(n: int, alpha, edge: str, ctx: Context) -> tuple[np.ndarray, np
 
 
 # --- arguments ---------------------------------------------------------------------------------------------------
-def _check_alpha(alpha):
-    alpha = parse_alpha(alpha)
-    if isinstance(alpha, RationalAngle):
-        if alpha.t == 0:
-            raise ValueError("alpha must lie in the open interval (0, pi): tan(alpha/4) = 0 gives alpha = 0")
-        return alpha
-    check_alpha(alpha)
-    return alpha
+_check_alpha = open_alpha  # one rule for alpha (core.domain)
 
 
 def _context(arith, alpha, dps) -> Context:
