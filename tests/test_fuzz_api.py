@@ -155,14 +155,9 @@ def test_the_hostile_suite_of_this_round_passes():
     assert "round5" in p.stdout and " 0               0               0" in p.stdout.splitlines()[-1], p.stdout
 
 
-@pytest.mark.slow
-def test_the_hostile_suite_of_the_tessellator_passes():
-    """tools/fuzz_api.py's class tessellate: every bad input refused naming its parameter, every valid one a mesh
-    within its bound and tol (checked at the triangles' centroids), or a refusal naming max_vertices."""
-def test_the_hostile_joins_class_passes():
-    """tools/fuzz_api.py's class joins (issue 38, item 4): NaN/inf/complex/out-of-range alpha, bool and huge n, bad
-    edge names, wrong net shapes, bad lam/mu/arith/dps for every public function of paper_repro.surfaces.joins give a
-    ValueError/TypeError naming the parameter; valid calls at alpha from 1e-300 to pi- are finite and joined."""
+def _hostile_class_passes(cls: str, timeout: int) -> None:
+    """Run one class of tools/fuzz_api.py on this checkout's package: every case good (no wrong exception, no silent
+    wrong result, no hang)."""
     import os
     import subprocess
     import sys
@@ -170,13 +165,28 @@ def test_the_hostile_joins_class_passes():
 
     root = Path(__file__).parents[1]  # this checkout's package, also in a worktree beside an installed one
     env = {**os.environ, "PYTHONPATH": os.pathsep.join(filter(None, [str(root), os.environ.get("PYTHONPATH")]))}
-    p = subprocess.run([sys.executable, str(root / "tools" / "fuzz_api.py"), "--classes", "tessellate"],
-                       capture_output=True, text=True, timeout=1200, env=env)
+    p = subprocess.run([sys.executable, str(root / "tools" / "fuzz_api.py"), "--classes", cls],
+                       capture_output=True, text=True, timeout=timeout, env=env)
     assert p.returncode == 0, p.stdout[-2000:] + p.stderr[-2000:]
-    assert "tessellate" in p.stdout and " 0               0               0" in p.stdout.splitlines()[-1], p.stdout
-    root = Path(__file__).parents[1]
-    env = dict(os.environ, PYTHONPATH=os.pathsep.join([str(root), os.environ.get("PYTHONPATH", "")]).rstrip(os.pathsep))
-    p = subprocess.run([sys.executable, str(root / "tools" / "fuzz_api.py"), "--classes", "joins"], capture_output=True,
-                       text=True, timeout=600, env=env)
-    assert p.returncode == 0, p.stdout[-2000:] + p.stderr[-2000:]
-    assert "joins" in p.stdout and " 0               0               0" in p.stdout.splitlines()[-1], p.stdout
+    assert cls in p.stdout and " 0               0               0" in p.stdout.splitlines()[-1], p.stdout
+
+
+@pytest.mark.slow
+def test_the_hostile_suite_of_the_tessellator_passes():
+    """tools/fuzz_api.py's class tessellate: every bad input refused naming its parameter, every valid one a mesh
+    within its bound and tol (checked at the triangles' centroids), or a refusal naming max_vertices."""
+    _hostile_class_passes("tessellate", 1200)
+
+
+def test_the_hostile_joins_class_passes():
+    """tools/fuzz_api.py's class joins: NaN/inf/complex/out-of-range alpha, bool and huge n, bad edge names, wrong net
+    shapes, bad lam/mu/arith/dps for every public function of paper_repro.surfaces.joins give a ValueError/TypeError
+    naming the parameter; valid calls at alpha from 1e-300 to pi- are finite and joined."""
+    _hostile_class_passes("joins", 600)
+
+
+def test_the_hostile_subdivision_class_passes():
+    """tools/fuzz_api.py's class subdivision: bad alpha, n, part, net and depth refused naming the parameter for
+    subdivision_matrix, subdivide and subdivide_to_depth; at alpha from 1e-300 to pi- the matrices are finite with rows
+    summing to 1 and a sub-patch equals the patch on its sub-triangle."""
+    _hostile_class_passes("subdivision", 600)

@@ -420,6 +420,30 @@ def cases(rng: random.Random, with_cli: bool):
         "r['C0'] == 0 and r['C1'] == 0 and r['G1'] == 0")
     add("joins", "r = c1_neighbour_row(np.ones((19, 3)), 2, '2*pi/3', 'v', arith='mp', dps=30)", "ok",
         "abs(np.asarray(r, dtype=float) - 1).max() < 1e-25")
+    # --- midpoint subdivision: hostile input refused naming the parameter; valid calls finite, rows summing to 1, the
+    # sub-patch equal to the patch on its sub-triangle (float route against the patch itself)
+    good = {"net": "np.ones((19, 3))", "n": "2", "a": "1.0", "part": "'u'", "k": "1"}
+    sub = {"subdivision_matrix": "subdivision_matrix({n}, {a}, {part})", "subdivide": "subdivide({net}, {n}, {a})",
+           "subdivide_to_depth": "subdivide_to_depth({net}, {n}, {a}, {k})"}
+    bad_args = [("a", b, ("alpha",)) for b in ("float('nan')", "float('inf')", "-1.0", "0.0", "4.0", "1j", "'x'",
+                                               "None", "5e-324")]
+    bad_args += [("n", b, ("n",)) for b in ("True", "0", "-3", "2.5", "10**9", "'2'", "None")]
+    bad_args += [("part", b, ("part",)) for b in ("'x'", "''", "1", "None", "['u']")]
+    bad_args += [("net", b, ("net",)) for b in ("np.ones((18, 3))", "np.full((19, 3), np.nan)", "'net'",
+                                                "np.ones((19, 3)) + 1j", "np.ones((19, 3, 2))")]
+    bad_args += [("k", b, ("k",)) for b in ("-1", "1.5", "'1'", "None", "10**6")]
+    for template in sub.values():
+        for key, b, words in bad_args:
+            if "{" + key + "}" in template:
+                add("subdivision", "r = " + template.format(**dict(good, **{key: b})), "err", words)
+    for a in (1e-300, 1e-30, 1e-3, 1.0, math.pi - 1e-8):
+        for n in (1, 3, 6):
+            add("subdivision", f"S = subdivision_matrix({n}, {a!r}, 'middle'); "
+                "r = (S, np.abs(S.sum(axis=1) - 1).max())", "ok", "finite(r[0]) and r[1] < 1e-12")
+        add("subdivision", f"net = np.random.default_rng(2).normal(size=(19, 3)); q = subdivide(net, 2, {a!r}); "
+            f"x = sample_points({a!r} / 2, 20, seed=1); from paper_repro.core.subdivision import to_parent; "
+            f"r = rel(Patch(2, {a!r} / 2, q.w)(x), Patch(2, {a!r}, net)(to_parent(x, {a!r}, 'w')), 1.0)", "ok",
+            "r < 1e-12")
     if with_cli:
         py = sys.executable
         for sched in ("tcp://127.0.0.1:1", "tcp://no-such-host.invalid:8786", "tls://127.0.0.1:1"):
