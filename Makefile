@@ -153,10 +153,12 @@ check-docs: $(STAMP)           ## every docs page, reports/tests.html, the galle
 check-gallery: $(STAMP)        ## open figures/index.html in headless chromium; installs nothing unless INSTALL=1
 	$(PY) -m paper_repro.app.check_gallery $(if $(INSTALL),--install)
 
-bench: $(STAMP)                ## speed: pytest-benchmark, then the comparison with bezier and mpmath -> reports/
+bench: $(STAMP)                ## speed: pytest-benchmark, the comparison with bezier and mpmath, subdivision accuracy, tessellation -> reports/
 	mkdir -p reports
 	$(PY) -m pytest -q -m benchmark --benchmark-enable --benchmark-only --benchmark-json=reports/pytest-benchmark.json tests
 	$(PY) -m paper_repro.app.bench
+	PYTHONPATH=$(CURDIR) $(PY) tools/subdivision_accuracy.py
+	PYTHONPATH=$(CURDIR) $(PY) tools/tessellation_bench.py --out reports/tessellation_bench.md
 
 bench-coefficients: $(STAMP)   ## accuracy (float64 vs 40 digits, n <= 200) and cost of the normalizing coefficients -> reports/
 	mkdir -p reports

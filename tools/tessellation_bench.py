@@ -12,6 +12,7 @@ separately), and the wall time per million vertices.
 from __future__ import annotations
 
 import argparse
+import os
 import sys
 import time
 
@@ -19,6 +20,7 @@ import numpy as np
 
 from paper_repro.surfaces.models import torus_pieces
 from paper_repro.surfaces.tessellation import tessellate
+from paper_repro.util.io import write_text
 
 
 def deviation(mesh, patch, k: int = 4) -> float:
@@ -38,12 +40,16 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--tols", default="1e-3,1e-4,1e-5,1e-6")
     ap.add_argument("--repeat", type=int, default=3)
     ap.add_argument("--no-check", action="store_true")
+    ap.add_argument("--out", help="also write the table as markdown to this file (e.g. reports/tessellation_bench.md)")
     args = ap.parse_args(argv)
+    rows = []
     piece = torus_pieces(np.pi / 2, 2.0, 1.0, [0.0], [0.0])[0].patch
     net = np.asarray(piece.net)
+    load = os.getloadavg()
     t0 = time.perf_counter()
     tessellate(net, 2, np.pi / 2, 1e-3)
-    print(f"first call (subdivision matrices, kernels): {time.perf_counter() - t0:.2f} s")
+    first = time.perf_counter() - t0
+    print(f"first call (subdivision matrices, kernels): {first:.2f} s")
     for tol in (float(x) for x in args.tols.split(",")):
         times, cpu = [], []
         for _ in range(args.repeat):
@@ -58,6 +64,19 @@ def main(argv: list[str] | None = None) -> int:
               f"depth {mesh.depth}, {mesh.fans} fans, bound {mesh.bound:.3e}, deviation {dev:.3e}; "
               f"wall {', '.join(f'{x:.2f}' for x in times)} s, CPU {', '.join(f'{x:.2f}' for x in cpu)} s; "
               f"{best / len(mesh.points) * 1e6:.2f} s wall per M vertices")
+        rows.append(f"| {tol:.0e} | {len(mesh.points)} | {len(mesh.triangles)} | {mesh.depth} | {mesh.bound:.2e} | "
+                    f"{dev:.2e} | {'yes' if dev <= tol else 'NO'} | {best:.2f} | {min(cpu):.2f} |")
+    if args.out:
+        write_text(args.out, "\n".join([
+            "# Adaptive tessellation of the torus piece (tools/tessellation_bench.py, run by `make bench`)", "",
+            "Example exmp:torus (radii 2 and 1), alpha = pi/2, order n = 2; `paper_repro.tessellate(net, 2, pi/2, "
+            "tol)`. *deviation*: max |s - mesh| on a barycentric grid in every triangle (3 steps above 1 M "
+            f"triangles, else 4); times: best of {args.repeat} warm calls (wall) and CPU of all threads. Machine: "
+            f"{os.cpu_count()} CPUs, load average at start {load[0]:.2f}. The first call of the process (the "
+            f"subdivision matrices, the kernels) took {first:.2f} s. Measurements, not data.", "",
+            "| tol | vertices | triangles | depth | bound | deviation | within tol | wall (s) | CPU (s) |",
+            "|---|---|---|---|---|---|---|---|---|", *rows, ""]))
+        print(f"wrote {args.out}")
     return 0
 
 
