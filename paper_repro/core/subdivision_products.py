@@ -36,6 +36,7 @@ recursion in absolute values.
 
 from __future__ import annotations
 
+import itertools
 from functools import cache, lru_cache
 
 import numpy as np
@@ -431,30 +432,81 @@ def restriction_matrices(n: int, alpha: float, *, absolute: bool = False, first:
     (u, v, w), :func:`~paper_repro.core.labels.variable_swap`): ``R^v = Pi R^u Pi`` for the swap of u and v."""
     kp, sg = _float_half_angle(alpha / 2)
     r1 = first if first is not None else [order_one_restriction(p, kp, sg) for p in ("u", "middle")]
-    rs = [r.copy() for r in r1]
+    plans = [_plan(n, part) for part in ("u", "middle")]
+    blocks = [r[:, plan[0][0]] for r, plan in zip(r1, plans)]
     for k in range(2, n + 1):
-        fp, hh = factorization(k)
         vals = _level_values(k, kp, sg, absolute)
-        d = delta_unchecked(k)
-        new = []
-        for r, w in zip(rs, r1):
-            out = np.empty((d, d))
+        for i, (r, plan) in enumerate(zip(r1, plans)):
+            cols, bounds, pos = plan[k - 1]
+            out = np.empty((delta_unchecked(k), len(cols)))
             for g in range(7):
-                cols = _columns(k, g)
-                if len(cols):
-                    out[:, cols] = _combined(k, w[:, g], vals) @ r[:, fp[cols]]
-            new.append(out)
-        rs = new
+                lo, hi = bounds[g], bounds[g + 1]
+                if hi > lo:
+                    out[:, lo:hi] = _combined(k, r[:, g], vals) @ blocks[i][:, pos[lo:hi]]
+            blocks[i] = out
+    rs = []
+    for block, plan, part in zip(blocks, plans, ("u", "middle")):
+        full = np.empty((delta_unchecked(n), delta_unchecked(n)))
+        cols = plan[-1][0]
+        for pi in symmetry_permutations(n, part):  # R[pi g, pi f] = R[g, f]
+            full[np.ix_(pi, pi[cols])] = block
+        rs.append(full)
     ru, rm = rs
     return (ru, _swapped(ru, n, 1), _swapped(ru, n, 2), rm)
 
 
 @cache
-def _columns(k: int, g: int) -> np.ndarray:
-    """The members of T_{2k} whose factor in T_2 (:func:`factorization`) is g."""
-    out = np.flatnonzero(factorization(k)[1] == g)
-    out.setflags(write=False)
-    return out
+def symmetry_permutations(n: int, part: str) -> tuple[np.ndarray, ...]:
+    """The member permutations ``pi`` (``m_{pi f}(u, v, w) = m_f`` at the permuted variables) of the exchanges of
+    variables that commute with the map of ``part``: for the corner ``'u'`` the identity and v <-> w; for
+    ``'middle'`` (the point reflection commutes with every permutation of (u, v, w)) all six.  Then
+    ``R[pi g, pi f] = R[g, f]``: with tau the exchange, ``m_{pi f} o x_k = m_f o tau o x_k = m_f o x_k o tau =
+    sum_g R[g, f] m'_g o tau = sum_g R[g, f] m'_{pi g}`` (docs/subdivision_for_all_n.md, section 11)."""
+    e = exponent_matrix(n).astype(np.int64)
+    weights = 64 ** np.arange(6, dtype=np.int64)
+    keys = e @ weights
+    order = np.argsort(keys)
+    sigmas = [(0, 1, 2), (0, 2, 1)] if part == "u" else list(itertools.permutations(range(3)))
+    out = []
+    for sigma in sigmas:
+        cols = [2 * sigma[c // 2] + c % 2 for c in range(6)]
+        want = e[:, cols] @ weights
+        pi = order[np.searchsorted(keys[order], want)]
+        if not np.array_equal(keys[pi], want):  # pragma: no cover - T_2n is invariant under the permutations
+            raise AssertionError(f"T_{2 * n} is not invariant under the permutation {sigma}")
+        pi.setflags(write=False)
+        out.append(pi)
+    return tuple(out)
+
+
+@cache
+def _plan(n: int, part: str) -> tuple[tuple[np.ndarray, ...], ...]:
+    """The columns of R_k computed at each level k = 1..n: at level n one member of each orbit of
+    :func:`symmetry_permutations` (the smallest index; the other columns are their images), at level k - 1 the
+    factors f'(f) (:func:`factorization`) of the columns of level k.  Entry k - 1: ``(cols, bounds, pos)`` with
+    ``cols`` ordered by the factor h(f) (k >= 2), ``bounds`` the start of each h's run (8 bounds) and ``pos`` the
+    position of f'(f) among the columns of level k - 1."""
+    perms = np.stack(symmetry_permutations(n, part))
+    cols = np.flatnonzero(perms.min(axis=0) == np.arange(delta_unchecked(n)))
+    out = []
+    if n >= 2:
+        cols = cols[np.argsort(factorization(n)[1][cols], kind="stable")]
+    for k in range(n, 1, -1):
+        fp, h = factorization(k)
+        bounds = np.searchsorted(h[cols], np.arange(8))
+        prev = np.unique(fp[cols])
+        if k > 2:
+            prev = prev[np.argsort(factorization(k - 1)[1][prev], kind="stable")]
+        where = np.empty(delta_unchecked(k - 1), dtype=np.int64)
+        where[prev] = np.arange(len(prev))
+        out.append((cols, bounds, where[fp[cols]]))
+        cols = prev
+    out.append((cols, np.zeros(8, dtype=np.int64), np.zeros(0, dtype=np.int64)))
+    out.reverse()
+    for entry in out:
+        for arr in entry:
+            arr.setflags(write=False)
+    return tuple(out)
 
 
 def _swapped(r: np.ndarray, n: int, var: int) -> np.ndarray:
