@@ -228,18 +228,69 @@ def _apply_cotangent_terms(big: int, var: np.ndarray, terms: tuple[np.ndarray, .
 def product_terms_fast(n: int, h: int) -> tuple[np.ndarray, ...]:
     """The terms ``(rows, cols, a, b, coef)`` of :func:`~paper_repro.core.half_angle_rules.product_terms` (the
     product of each member of T_{2n} with the member ``h`` of T_2, written in T_{2(n+1)}: Theorem P of
-    docs/elevation_and_derivative_for_all_n.md), built with numpy instead of one dictionary per column; merged
-    (:func:`~paper_repro.core.half_angle_rules.merge`).  ``n`` must be checked by the caller.
+    docs/elevation_and_derivative_for_all_n.md), merged and sorted as
+    :func:`~paper_repro.core.half_angle_rules.merge` (:func:`_product_terms_unsorted` sorted).  ``n`` must be
+    checked by the caller.
 
     >>> from paper_repro.core.half_angle_rules import product_terms
     >>> all(np.array_equal(x, y) for x, y in zip(product_terms_fast(3, 5), merge(product_terms(3, 5))))
     True
     """
+    rows, cols, a, b, coef = _product_terms_unsorted(n, h)
+    order = np.lexsort((b, a, cols, rows))
+    out = tuple(arr[order] for arr in (rows, cols, a, b, coef))
+    for arr in out:
+        arr.setflags(write=False)
+    return out
+
+
+@cache
+def centre_embedding(n: int) -> np.ndarray:
+    """For n >= 1 the index in T_{2n} of ``S_u S_v S_w m_f`` for each member f of T_{2n-2} (``M_X(m; Y, j)`` times the
+    centre is ``M_X(m + 1; Y, j + 1)``, a member); its image is the members with j >= 1.
+
+    >>> e = exponent_matrix(3)[centre_embedding(3)] - exponent_matrix(2)
+    >>> bool((e == [1, 0, 1, 0, 1, 0]).all())
+    True
+    """
+    if n == 1:
+        out = np.array([int(np.flatnonzero((exponent_matrix(1) == [1, 0, 1, 0, 1, 0]).all(axis=1))[0])])
+    else:
+        x, m, y, j = (member_parts_fast(n - 1)[:, k] for k in range(4))
+        out = member_table_fast(n)[x, y, m + 1, j + 1]
+    out.setflags(write=False)
+    return out
+
+
+@cache
+def _product_terms_unsorted(n: int, h: int) -> tuple[np.ndarray, ...]:
+    """:func:`product_terms_fast` unsorted (merged: no two terms with the same (row, col, a, b)).  For n >= 2 the
+    columns of the members ``S_u S_v S_w m_g`` (g in T_{2n-2}, :func:`centre_embedding`) are those of order n - 1
+    with rows and columns embedded: ``(S_u S_v S_w m_g) m_h = S_u S_v S_w sum_i P[i, g] m_i = sum_i P[i, g]
+    m_{centre i}`` (the same coefficient polynomials); only the 6n other columns (j = 0) are built by
+    :func:`_product_columns`."""
+    if n == 1:
+        return _product_columns(1, h, np.arange(delta_unchecked(1)))
+    rows, cols, a, b, coef = _product_terms_unsorted(n - 1, h)
+    outer = np.flatnonzero(member_parts_fast(n)[:, 3] == 0)
+    new = _product_columns(n, h, outer)
+    up_rows, up_cols = centre_embedding(n + 1), centre_embedding(n)
+    out = (np.concatenate([up_rows[rows], new[0]]), np.concatenate([up_cols[cols], new[1]]),
+           np.concatenate([a, new[2]]), np.concatenate([b, new[3]]), np.concatenate([coef, new[4]]))
+    for arr in out:
+        arr.setflags(write=False)
+    return out
+
+
+def _product_columns(n: int, h: int, f: np.ndarray) -> tuple[np.ndarray, ...]:
+    """The terms of :func:`~paper_repro.core.half_angle_rules.product_terms` (Theorem P of
+    docs/elevation_and_derivative_for_all_n.md) of the columns ``f`` (members of T_{2n}) only, built with numpy
+    instead of one dictionary per column; merged (:func:`~paper_repro.core.half_angle_rules.merge`)."""
     big = n + 1
     table = member_table_fast(big)
-    x, m, y, j = (member_parts_fast(n)[:, k] for k in range(4))
+    parts = member_parts_fast(n)
+    x, m, y, j = (parts[f, k] for k in range(4))
     z = 3 - x - y
-    f = np.arange(delta_unchecked(n))
     one = np.ones_like(f)
     zero = np.zeros_like(f)
     kind, var = order_one_parts()[h]
@@ -268,8 +319,8 @@ def product_terms_fast(n: int, h: int) -> tuple[np.ndarray, ...]:
     sel = case3 & (m == n)
     p.append((f[sel], table[y[sel], x[sel], n, n], zero[sel], zero[sel], one[sel]))
     pt = tuple(np.concatenate([q[k] for q in p]) for k in range(5))
-    steps = (m - j)[pt[0]]
-    out.append(_apply_cotangent_terms(big, y[pt[0]], pt, steps))
+    steps = (parts[:, 1] - parts[:, 3])[pt[0]]
+    out.append(_apply_cotangent_terms(big, parts[pt[0], 2], pt, steps))
     return _merged(tuple(np.concatenate([o[k] for o in out]) for k in range(5)))
 
 
@@ -376,10 +427,10 @@ def order_one_restriction(part: str, kp: float, sg: float, *, absolute: bool = F
 def _level_terms(k: int) -> tuple[np.ndarray, ...]:
     """The seven product forms of order k - 1 (:func:`product_terms_fast`) concatenated: ``(rows, cols, a, b, coef,
     h)``, sorted by (rows, cols) (stable), with the start of each (row, col) run."""
-    forms = [product_terms_fast(k - 1, h) for h in range(7)]
+    forms = [_product_terms_unsorted(k - 1, h) for h in range(7)]
     cat = [np.concatenate([f[i] for f in forms]) for i in range(5)]
     hidx = np.concatenate([np.full(len(f[0]), h) for h, f in enumerate(forms)])
-    order = np.lexsort((cat[1], cat[0]))  # by row, then column; stable within (h, the form's order)
+    order = np.argsort(cat[0] * delta_unchecked(k - 1) + cat[1], kind="stable")  # by (row, column), then h
     out = tuple(arr[order] for arr in cat) + (hidx[order],)
     for arr in out:
         arr.setflags(write=False)
