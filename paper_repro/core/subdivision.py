@@ -491,7 +491,12 @@ def subdivision_matrix(n: int, alpha, part: str, arith: str | Context | None = N
     ((19, 19), True)
     """
     part = check_part(part)
-    return subdivision_matrices(n, alpha, arith, dps=dps)[PARTS.index(part)]
+    n = _check_n(n)
+    alpha = _check_alpha(alpha)
+    ctx = _context(arith, alpha, dps)
+    if isinstance(ctx, FloatContext):  # copy only the matrix asked for
+        return _float_matrices(n, float(alpha))[PARTS.index(part)].copy()
+    return subdivision_matrices(n, alpha, ctx, dps=dps)[PARTS.index(part)]
 
 
 def _csr_apply(mat: sp.csr_matrix, net: np.ndarray) -> np.ndarray:

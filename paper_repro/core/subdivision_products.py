@@ -221,6 +221,13 @@ def _apply_cotangent_terms(big: int, var: np.ndarray, terms: tuple[np.ndarray, .
         fin = steps == 0
         done.append((col[fin], target[fin], a[fin], b[fin], coef[fin]))
         col, target, a, b, coef, var, steps = (arr[~fin] for arr in (col, target, a, b, coef, var, steps))
+        if len(col):  # add the terms equal in (col, target, a, b) (var and steps are functions of col): exact
+            key = ((col * (int(target.max()) + 1) + target) * (int(a.max()) + 1) + a) * (int(b.max()) + 1) + b
+            order = np.argsort(key, kind="stable")
+            first = order[np.r_[True, key[order][1:] != key[order][:-1]]]
+            summed = np.add.reduceat(coef[order], np.flatnonzero(np.r_[True, key[order][1:] != key[order][:-1]]))
+            col, target, a, b, var, steps = (arr[first] for arr in (col, target, a, b, var, steps))
+            coef = summed
     return tuple(np.concatenate([d[k] for d in done]) for k in range(5))
 
 
@@ -477,17 +484,24 @@ def restriction_matrices(n: int, alpha: float, *, absolute: bool = False, first:
     """The four R_n^k (scaled members at alpha -> scaled members at alpha/2), in the order of :data:`PARTS`;
     ``absolute``: the product matrices in absolute values (they are non-negative: only the sums' bits change);
     ``first``: the two 7 x 7 matrices R_1 of parts 'u' and 'middle' to start from (default: computed).  ``n >= 1``
-    and ``alpha`` in [ALPHA_TINY, pi) checked by the caller.
-
-    Corners 'v' and 'w' are corner 'u' with the variables exchanged (T_{2n} is invariant under the permutations of
-    (u, v, w), :func:`~paper_repro.core.labels.variable_swap`): ``R^v = Pi R^u Pi`` for the swap of u and v."""
+    and ``alpha`` in [ALPHA_TINY, pi) checked by the caller.  :func:`restriction_blocks` assembled
+    (:func:`assemble`, no normalization)."""
     kp, sg = _float_half_angle(alpha / 2)
     r1 = first if first is not None else [order_one_restriction(p, kp, sg) for p in ("u", "middle")]
+    ones = np.ones(delta_unchecked(n))
+    return assemble(n, restriction_blocks(n, kp, sg, r1, absolute=absolute), ones, ones)
+
+
+def restriction_blocks(n: int, kp: float, sg: float, first: list, *, absolute: bool = False) -> list[np.ndarray]:
+    """The columns ``_plan(n, part)[-1][0]`` (one per symmetry orbit) of R_n^u and R_n^middle, from the two 7 x 7
+    matrices R_1 ``first`` (parts 'u', 'middle') at ``kp, sg = cos(alpha/4), sin^2(alpha/4)``: level k computes
+    only the columns of its plan, column f as ``Q_{h(f)} R_{k-1}[:, f'(f)]`` with ``Q_g = sum_h R_1[h, g] P_h``
+    (the Theorem of docs/subdivision_for_all_n.md, section 11)."""
     plans = [_plan(n, part) for part in ("u", "middle")]
-    blocks = [r[:, plan[0][0]] for r, plan in zip(r1, plans)]
+    blocks = [r[:, plan[0][0]] for r, plan in zip(first, plans)]
     for k in range(2, n + 1):
         vals = _level_values(k, kp, sg, absolute)
-        for i, (r, plan) in enumerate(zip(r1, plans)):
+        for i, (r, plan) in enumerate(zip(first, plans)):
             cols, bounds, pos = plan[k - 1]
             out = np.empty((delta_unchecked(k), len(cols)))
             for g in range(7):
@@ -495,38 +509,28 @@ def restriction_matrices(n: int, alpha: float, *, absolute: bool = False, first:
                 if hi > lo:
                     out[:, lo:hi] = _combined(k, r[:, g], vals) @ blocks[i][:, pos[lo:hi]]
             blocks[i] = out
-    rs = []
-    for block, plan, part in zip(blocks, plans, ("u", "middle")):
-        full = np.empty((delta_unchecked(n), delta_unchecked(n)))
-        cols = plan[-1][0]
-        for pi in symmetry_permutations(n, part):  # R[pi g, pi f] = R[g, f]
-            full[np.ix_(pi, pi[cols])] = block
-        rs.append(full)
-    ru, rm = rs
-    return (ru, _swapped(ru, n, 1), _swapped(ru, n, 2), rm)
+    return blocks
 
 
-@cache
-def symmetry_permutations(n: int, part: str) -> tuple[np.ndarray, ...]:
-    """The member permutations ``pi`` (``m_{pi f}(u, v, w) = m_f`` at the permuted variables) of the exchanges of
-    variables that commute with the map of ``part``: for the corner ``'u'`` the identity and v <-> w; for
-    ``'middle'`` (the point reflection commutes with every permutation of (u, v, w)) all six.  Then
-    ``R[pi g, pi f] = R[g, f]``: with tau the exchange, ``m_{pi f} o x_k = m_f o tau o x_k = m_f o x_k o tau =
-    sum_g R[g, f] m'_g o tau = sum_g R[g, f] m'_{pi g}`` (docs/subdivision_for_all_n.md, section 11)."""
-    e = exponent_matrix(n).astype(np.int64)
-    weights = 64 ** np.arange(6, dtype=np.int64)
-    keys = e @ weights
-    order = np.argsort(keys)
-    sigmas = [(0, 1, 2), (0, 2, 1)] if part == "u" else list(itertools.permutations(range(3)))
+def assemble(n: int, blocks: list[np.ndarray], x0: np.ndarray, x1: np.ndarray) -> tuple[np.ndarray, ...]:
+    """The four ``S_k[g, f] = R_k[g, f] x0_f / x1_g`` in the order of :data:`PARTS` from the two blocks of
+    :func:`restriction_blocks`: every column is the image of a computed one under :func:`symmetry_permutations`
+    (``R[pi g, pi f] = R[g, f]``, and the normalizing coefficients are symmetric, Theorem B), and the corners v, w
+    are corner u with u and v (u and w) exchanged, ``R^v[pi g, pi f] = R^u[g, f]`` (T_{2n} is invariant under the
+    permutations of (u, v, w); the translation in v is the translation in u conjugated by the exchange).  One
+    normalization per computed entry, then every entry written once per orbit element."""
+    d = delta_unchecked(n)
     out = []
-    for sigma in sigmas:
-        cols = [2 * sigma[c // 2] + c % 2 for c in range(6)]
-        want = e[:, cols] @ weights
-        pi = order[np.searchsorted(keys[order], want)]
-        if not np.array_equal(keys[pi], want):  # pragma: no cover - T_2n is invariant under the permutations
-            raise AssertionError(f"T_{2 * n} is not invariant under the permutation {sigma}")
-        pi.setflags(write=False)
-        out.append(pi)
+    for part in PARTS:
+        which = 1 if part == "middle" else 0
+        cols = _plan(n, "middle" if which else "u")[-1][0]
+        block = blocks[which] * (x0[cols][None, :] / x1[:, None])
+        swap = None if part in ("u", "middle") else swap_permutation(n, "uvw".index(part))
+        full = np.empty((d, d))
+        for pi in symmetry_permutations(n, "middle" if which else "u"):
+            p = pi if swap is None else swap[pi]
+            full[np.ix_(p, p[cols])] = block
+        out.append(full)
     return tuple(out)
 
 
@@ -560,11 +564,28 @@ def _plan(n: int, part: str) -> tuple[tuple[np.ndarray, ...], ...]:
     return tuple(out)
 
 
-def _swapped(r: np.ndarray, n: int, var: int) -> np.ndarray:
-    """Corner ``var`` from corner u: exchange u and var in rows and columns (the permutation of
-    :func:`~paper_repro.core.labels.variable_swap`, here by a sorted-key lookup; tested equal)."""
-    pi = swap_permutation(n, var)
-    return r[np.ix_(pi, pi)]
+@cache
+def symmetry_permutations(n: int, part: str) -> tuple[np.ndarray, ...]:
+    """The member permutations ``pi`` (``m_{pi f}(u, v, w) = m_f`` at the permuted variables) of the exchanges of
+    variables that commute with the map of ``part``: for the corner ``'u'`` the identity and v <-> w; for
+    ``'middle'`` (the point reflection commutes with every permutation of (u, v, w)) all six.  Then
+    ``R[pi g, pi f] = R[g, f]``: with tau the exchange, ``m_{pi f} o x_k = m_f o tau o x_k = m_f o x_k o tau =
+    sum_g R[g, f] m'_g o tau = sum_g R[g, f] m'_{pi g}`` (docs/subdivision_for_all_n.md, section 11)."""
+    e = exponent_matrix(n).astype(np.int64)
+    weights = 64 ** np.arange(6, dtype=np.int64)
+    keys = e @ weights
+    order = np.argsort(keys)
+    sigmas = [(0, 1, 2), (0, 2, 1)] if part == "u" else list(itertools.permutations(range(3)))
+    out = []
+    for sigma in sigmas:
+        cols = [2 * sigma[c // 2] + c % 2 for c in range(6)]
+        want = e[:, cols] @ weights
+        pi = order[np.searchsorted(keys[order], want)]
+        if not np.array_equal(keys[pi], want):  # pragma: no cover - T_2n is invariant under the permutations
+            raise AssertionError(f"T_{2 * n} is not invariant under the permutation {sigma}")
+        pi.setflags(write=False)
+        out.append(pi)
+    return tuple(out)
 
 
 @cache
@@ -608,17 +629,16 @@ def subdivision_matrices_float(n: int, alpha: float, *, bound: bool = False):
     F(|R_1| + 2 e_1)) D`` with D the normalization.  First order in u; computed, not certified."""
     alpha = max(float(alpha), ALPHA_TINY)
     x0, x1 = _normalizers(n, alpha)
-    scale = x0[None, :] / x1[:, None]
     kp, sg = _float_half_angle(alpha / 2)
     r1 = [order_one_restriction(p, kp, sg) for p in ("u", "middle")]
-    mats = tuple(r * scale for r in restriction_matrices(n, alpha, first=r1))
+    mats = assemble(n, restriction_blocks(n, kp, sg, r1), x0, x1)
     if not bound:
         return mats
     e1 = [_gamma(128) * order_one_restriction(p, kp, sg, absolute=True) for p in ("u", "middle")]
-    low = restriction_matrices(n, alpha, absolute=True, first=[abs(r) for r in r1])
-    high = restriction_matrices(n, alpha, absolute=True, first=[abs(r) + 2 * e for r, e in zip(r1, e1)])
+    low = restriction_blocks(n, kp, sg, [abs(r) for r in r1], absolute=True)
+    high = restriction_blocks(n, kp, sg, [abs(r) + 2 * e for r, e in zip(r1, e1)], absolute=True)
     g = _gamma(2 * (rounding_count(n) - 64))
-    return mats, tuple(((h - lo) + g * h) * scale for h, lo in zip(high, low))
+    return mats, assemble(n, [(h - lo) + g * h for h, lo in zip(high, low)], x0, x1)
 
 
 def rounding_count(n: int) -> int:
@@ -645,4 +665,5 @@ def rounding_count(n: int) -> int:
 
 
 __all__ = ["PARTS", "ALPHA_TINY", "product_terms_fast", "factorization", "order_one_restriction",
-           "restriction_matrices", "subdivision_matrices_float", "rounding_count"]
+           "restriction_matrices", "restriction_blocks", "assemble", "symmetry_permutations", "centre_embedding",
+           "subdivision_matrices_float", "rounding_count"]
