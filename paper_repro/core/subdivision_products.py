@@ -270,6 +270,13 @@ def centre_embedding(n: int) -> np.ndarray:
 
 
 @cache
+def _outer_columns(n: int) -> list[tuple[np.ndarray, ...]]:
+    """:func:`_product_columns` of the 6n members with j = 0 (not a multiple of the centre; n = 1: all seven)."""
+    f = np.arange(delta_unchecked(1)) if n == 1 else np.flatnonzero(member_parts_fast(n)[:, 3] == 0)
+    return _product_columns_all(n, f)
+
+
+@cache
 def _product_terms_unsorted(n: int, h: int) -> tuple[np.ndarray, ...]:
     """:func:`product_terms_fast` unsorted (merged: no two terms with the same (row, col, a, b)).  For n >= 2 the
     columns of the members ``S_u S_v S_w m_g`` (g in T_{2n-2}, :func:`centre_embedding`) are those of order n - 1
@@ -277,10 +284,9 @@ def _product_terms_unsorted(n: int, h: int) -> tuple[np.ndarray, ...]:
     m_{centre i}`` (the same coefficient polynomials); only the 6n other columns (j = 0) are built by
     :func:`_product_columns`."""
     if n == 1:
-        return _product_columns(1, h, np.arange(delta_unchecked(1)))
+        return _outer_columns(1)[h]
     rows, cols, a, b, coef = _product_terms_unsorted(n - 1, h)
-    outer = np.flatnonzero(member_parts_fast(n)[:, 3] == 0)
-    new = _product_columns(n, h, outer)
+    new = _outer_columns(n)[h]
     up_rows, up_cols = centre_embedding(n + 1), centre_embedding(n)
     out = (np.concatenate([up_rows[rows], new[0]]), np.concatenate([up_cols[cols], new[1]]),
            np.concatenate([a, new[2]]), np.concatenate([b, new[3]]), np.concatenate([coef, new[4]]))
@@ -293,6 +299,39 @@ def _product_columns(n: int, h: int, f: np.ndarray) -> tuple[np.ndarray, ...]:
     """The terms of :func:`~paper_repro.core.half_angle_rules.product_terms` (Theorem P of
     docs/elevation_and_derivative_for_all_n.md) of the columns ``f`` (members of T_{2n}) only, built with numpy
     instead of one dictionary per column; merged (:func:`~paper_repro.core.half_angle_rules.merge`)."""
+    return _product_columns_all(n, f)[h]
+
+
+def _product_columns_all(n: int, f: np.ndarray) -> list[tuple[np.ndarray, ...]]:
+    """:func:`_product_columns` for the seven h at once (one pass of the cotangent powers for all of them: the
+    column index carries h, ``h delta_n + f``)."""
+    d = delta_unchecked(n)
+    direct, pending = [], []
+    for h in range(7):
+        done, pend = _product_seed(n, h, f)
+        direct += [(t[0] + h * d,) + t[1:] for t in done]
+        if pend is not None:
+            terms, var, steps = pend
+            pending.append(((terms[0] + h * d,) + terms[1:], var, steps))
+    if pending:
+        terms = tuple(np.concatenate([p[0][k] for p in pending]) for k in range(5))
+        var, steps = (np.concatenate([p[k] for p in pending]) for k in (1, 2))
+        direct.append(_apply_cotangent_terms(n + 1, var, terms, steps))
+    rows, cols, a, b, coef = _merged(tuple(np.concatenate([t[k] for t in direct]) for k in range(5)))
+    which = cols // d
+    out = []
+    for h in range(7):
+        sel = which == h
+        part = (rows[sel], cols[sel] - h * d, a[sel], b[sel], coef[sel])
+        for arr in part:
+            arr.setflags(write=False)
+        out.append(part)
+    return out
+
+
+def _product_seed(n: int, h: int, f: np.ndarray) -> tuple[list, tuple | None]:
+    """The terms of the columns ``f`` of the product with h that need no cotangent power, and the terms
+    ``((col, target, a, b, coef), var, steps)`` still to be raised by ``L_var^steps`` (Theorem P's cases)."""
     big = n + 1
     table = member_table_fast(big)
     parts = member_parts_fast(n)
@@ -305,8 +344,8 @@ def _product_columns(n: int, h: int, f: np.ndarray) -> tuple[np.ndarray, ...]:
         centre = table[x, y, m + 1, j + 1]
         terms = (f, centre, zero, zero, one)
         if kind == "edge":
-            terms = _apply_cotangent_terms(big, np.full_like(f, var), terms, one)
-        return _merged(terms)
+            return [], (terms, np.full_like(f, var), one)
+        return [terms], None
     out = []
     case1 = (var == x) | ((m == n) & (var == z))
     sel = case1
@@ -327,8 +366,7 @@ def _product_columns(n: int, h: int, f: np.ndarray) -> tuple[np.ndarray, ...]:
     p.append((f[sel], table[y[sel], x[sel], n, n], zero[sel], zero[sel], one[sel]))
     pt = tuple(np.concatenate([q[k] for q in p]) for k in range(5))
     steps = (parts[:, 1] - parts[:, 3])[pt[0]]
-    out.append(_apply_cotangent_terms(big, parts[pt[0], 2], pt, steps))
-    return _merged(tuple(np.concatenate([o[k] for o in out]) for k in range(5)))
+    return out, (pt, parts[pt[0], 2], steps)
 
 
 def _merged(terms: tuple[np.ndarray, ...]) -> tuple[np.ndarray, ...]:
