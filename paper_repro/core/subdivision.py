@@ -423,6 +423,14 @@ def _float_matrices(n: int, alpha: float) -> tuple[np.ndarray, ...]:
     return out
 
 
+@lru_cache(maxsize=32)
+def _float_part(n: int, alpha: float, part: str) -> np.ndarray:
+    """One S in float64 by the product route, read-only (the same values as ``_float_matrices(n, alpha)``)."""
+    (out,) = subdivision_matrices_float(n, alpha, parts=(part,))
+    out.setflags(write=False)
+    return out
+
+
 @lru_cache(maxsize=8)
 def _certified_float_matrices(n: int, alpha: float) -> tuple[np.ndarray, ...]:
     """The four S from S = M_{alpha/2} Rot M_alpha^{-1} in ball arithmetic, every entry certified to 2^-60 before
@@ -494,8 +502,8 @@ def subdivision_matrix(n: int, alpha, part: str, arith: str | Context | None = N
     n = _check_n(n)
     alpha = _check_alpha(alpha)
     ctx = _context(arith, alpha, dps)
-    if isinstance(ctx, FloatContext):  # copy only the matrix asked for
-        return _float_matrices(n, float(alpha))[PARTS.index(part)].copy()
+    if isinstance(ctx, FloatContext):  # only the matrix asked for (its recursion: the corners', or the middle's)
+        return _float_part(n, float(alpha), part).copy()
     return subdivision_matrices(n, alpha, ctx, dps=dps)[PARTS.index(part)]
 
 

@@ -530,28 +530,33 @@ def restriction_matrices(n: int, alpha: float, *, absolute: bool = False, first:
     return assemble(n, restriction_blocks(n, kp, sg, r1, absolute=absolute), ones, ones)
 
 
-def restriction_blocks(n: int, kp: float, sg: float, first: list, *, absolute: bool = False) -> list[np.ndarray]:
+def restriction_blocks(n: int, kp: float, sg: float, first: list, *, absolute: bool = False,
+                       families: tuple[str, ...] = ("u", "middle")) -> list[np.ndarray | None]:
     """The columns ``_plan(n, part)[-1][0]`` (one per symmetry orbit) of R_n^u and R_n^middle, from the two 7 x 7
     matrices R_1 ``first`` (parts 'u', 'middle') at ``kp, sg = cos(alpha/4), sin^2(alpha/4)``: level k computes
     only the columns of its plan, column f as ``Q_{h(f)} R_{k-1}[:, f'(f)]`` with ``Q_g = sum_h R_1[h, g] P_h``
-    (the Theorem of docs/subdivision_for_all_n.md, section 11)."""
-    plans = [_plan(n, part) for part in ("u", "middle")]
-    blocks = [r[:, plan[0][0]] for r, plan in zip(first, plans)]
+    (the Theorem of docs/subdivision_for_all_n.md, section 11).  Only the ``families`` asked for ('u': the three
+    corners, 'middle'); None for the other."""
+    fams = [f for f in ("u", "middle") if f in families]
+    plans = {f: _plan(n, f) for f in fams}
+    r1 = {"u": first[0], "middle": first[1]}
+    blocks = {f: r1[f][:, plans[f][0][0]] for f in fams}
     for k in range(2, n + 1):
         vals = _level_values(k, kp, sg, absolute)
-        for i, (r, plan) in enumerate(zip(first, plans)):
-            cols, bounds, pos = plan[k - 1]
+        for f in fams:
+            cols, bounds, pos = plans[f][k - 1]
             out = np.empty((delta_unchecked(k), len(cols)))
             for g in range(7):
                 lo, hi = bounds[g], bounds[g + 1]
                 if hi > lo:
-                    out[:, lo:hi] = _combined(k, r[:, g], vals) @ blocks[i][:, pos[lo:hi]]
-            blocks[i] = out
-    return blocks
+                    out[:, lo:hi] = _combined(k, r1[f][:, g], vals) @ blocks[f][:, pos[lo:hi]]
+            blocks[f] = out
+    return [blocks.get("u"), blocks.get("middle")]
 
 
-def assemble(n: int, blocks: list[np.ndarray], x0: np.ndarray, x1: np.ndarray) -> tuple[np.ndarray, ...]:
-    """The four ``S_k[g, f] = R_k[g, f] x0_f / x1_g`` in the order of :data:`PARTS` from the two blocks of
+def assemble(n: int, blocks: list[np.ndarray | None], x0: np.ndarray, x1: np.ndarray,
+             parts: tuple[str, ...] = PARTS) -> tuple[np.ndarray, ...]:
+    """The ``S_k[g, f] = R_k[g, f] x0_f / x1_g`` of ``parts`` (in that order) from the two blocks of
     :func:`restriction_blocks`: every column is the image of a computed one under :func:`symmetry_permutations`
     (``R[pi g, pi f] = R[g, f]``, and the normalizing coefficients are symmetric, Theorem B), and the corners v, w
     are corner u with u and v (u and w) exchanged, ``R^v[pi g, pi f] = R^u[g, f]`` (T_{2n} is invariant under the
@@ -559,13 +564,13 @@ def assemble(n: int, blocks: list[np.ndarray], x0: np.ndarray, x1: np.ndarray) -
     normalization per computed entry, then every entry written once per orbit element."""
     d = delta_unchecked(n)
     out = []
-    for part in PARTS:
-        which = 1 if part == "middle" else 0
-        cols = _plan(n, "middle" if which else "u")[-1][0]
-        block = blocks[which] * (x0[cols][None, :] / x1[:, None])
+    for part in parts:
+        family = "middle" if part == "middle" else "u"
+        cols = _plan(n, family)[-1][0]
+        block = blocks[family == "middle"] * (x0[cols][None, :] / x1[:, None])
         swap = None if part in ("u", "middle") else swap_permutation(n, "uvw".index(part))
         full = np.empty((d, d))
-        for pi in symmetry_permutations(n, "middle" if which else "u"):
+        for pi in symmetry_permutations(n, family):
             p = pi if swap is None else swap[pi]
             full[np.ix_(p, p[cols])] = block
         out.append(full)
@@ -655,12 +660,13 @@ def _gamma(m: int) -> float:
     return m * u / (1 - m * u)
 
 
-def subdivision_matrices_float(n: int, alpha: float, *, bound: bool = False):
-    """The four S_k (:func:`paper_repro.core.subdivision.subdivision_matrices`) in float64 by the product route,
-    ``n >= 1`` and ``alpha`` in (0, pi) checked by the caller (below :data:`ALPHA_TINY` computed at ALPHA_TINY).
+def subdivision_matrices_float(n: int, alpha: float, *, bound: bool = False, parts: tuple[str, ...] = PARTS):
+    """The S_k of ``parts`` (default the four, :func:`paper_repro.core.subdivision.subdivision_matrices`) in
+    float64 by the product route, ``n >= 1`` and ``alpha`` in (0, pi) checked by the caller (below
+    :data:`ALPHA_TINY` computed at ALPHA_TINY).  Only the recursions the parts need are run (the corners share one).
 
     ``bound=True`` returns ``(matrices, bounds)`` with the rounding part B of the running-error bound of
-    docs/subdivision_for_all_n.md, section 9: ``|S_float - S| <= B + (2 eps_x + 3u)(|S_float| + B)``, eps_x the
+    docs/subdivision_for_all_n.md, section 11: ``|S_float - S| <= B + (2 eps_x + 3u)(|S_float| + B)``, eps_x the
     relative error of the float scaled coefficients.  With F the level recursion (multilinear in R_1 with
     non-negative coefficients), e_1 = gamma_128 times the majorant of R_1's own computation and K_L the roundings of
     the levels (:func:`rounding_count` minus R_1's 64): ``B = D (F(|R_1| + 2 e_1) - F(|R_1|) + gamma_{2 K_L}
@@ -668,15 +674,18 @@ def subdivision_matrices_float(n: int, alpha: float, *, bound: bool = False):
     alpha = max(float(alpha), ALPHA_TINY)
     x0, x1 = _normalizers(n, alpha)
     kp, sg = _float_half_angle(alpha / 2)
+    families = tuple({"middle" if p == "middle" else "u" for p in parts})
     r1 = [order_one_restriction(p, kp, sg) for p in ("u", "middle")]
-    mats = assemble(n, restriction_blocks(n, kp, sg, r1), x0, x1)
+    mats = assemble(n, restriction_blocks(n, kp, sg, r1, families=families), x0, x1, parts)
     if not bound:
         return mats
     e1 = [_gamma(128) * order_one_restriction(p, kp, sg, absolute=True) for p in ("u", "middle")]
-    low = restriction_blocks(n, kp, sg, [abs(r) for r in r1], absolute=True)
-    high = restriction_blocks(n, kp, sg, [abs(r) + 2 * e for r, e in zip(r1, e1)], absolute=True)
+    low = restriction_blocks(n, kp, sg, [abs(r) for r in r1], absolute=True, families=families)
+    high = restriction_blocks(n, kp, sg, [abs(r) + 2 * e for r, e in zip(r1, e1)], absolute=True,
+                              families=families)
     g = _gamma(2 * (rounding_count(n) - 64))
-    return mats, assemble(n, [(h - lo) + g * h for h, lo in zip(high, low)], x0, x1)
+    comb = [None if h is None else (h - lo) + g * h for h, lo in zip(high, low)]
+    return mats, assemble(n, comb, x0, x1, parts)
 
 
 def rounding_count(n: int) -> int:
