@@ -485,15 +485,15 @@ def _level_terms(k: int) -> tuple[np.ndarray, ...]:
 @cache
 def _pattern(k: int, used: tuple[int, ...]) -> tuple[np.ndarray, ...]:
     """For the members h in ``used``: the positions of their terms in :func:`_level_terms`, the start of each
-    (row, col) run among them, and the CSR ``indptr``, ``indices`` of the distinct (row, col)."""
+    (row, col) run among them, the CSR ``indptr``, ``indices`` of the distinct (row, col) and the h of each term."""
     rows, cols, _, _, _, hidx = _level_terms(k)
     keep = np.zeros(7, dtype=bool)
     keep[list(used)] = True
     pos = np.flatnonzero(keep[hidx])
     r, c = rows[pos], cols[pos]
     starts = np.flatnonzero(np.r_[True, (r[1:] != r[:-1]) | (c[1:] != c[:-1])])
-    indptr = np.searchsorted(r[starts], np.arange(delta_unchecked(k) + 1))
-    out = (pos, starts, indptr, c[starts].copy())
+    indptr = np.searchsorted(r[starts], np.arange(delta_unchecked(k) + 1)).astype(np.int32)
+    out = (pos, starts, indptr, c[starts].astype(np.int32), hidx[pos])
     for arr in out:
         arr.setflags(write=False)
     return out
@@ -511,9 +511,8 @@ def _level_values(k: int, kp: float, sg: float, absolute: bool) -> np.ndarray:
 def _combined(k: int, weights: np.ndarray, vals: np.ndarray) -> sp.csr_matrix:
     """Q = sum_h weights[h] P_h (order k - 1 -> k) as CSR, each entry summed in a fixed order."""
     used = tuple(int(h) for h in np.flatnonzero(weights))
-    pos, starts, indptr, indices = _pattern(k, used)
-    hidx = _level_terms(k)[5]
-    data = np.add.reduceat(vals[pos] * weights[hidx[pos]], starts) if len(pos) else np.zeros(0)
+    pos, starts, indptr, indices, hpos = _pattern(k, used)
+    data = np.add.reduceat(vals[pos] * weights[hpos], starts) if len(pos) else np.zeros(0)
     return sp.csr_matrix((data, indices, indptr), shape=(delta_unchecked(k), delta_unchecked(k - 1)))
 
 
