@@ -1,5 +1,5 @@
 """The float product route of midpoint subdivision (paper_repro.core.subdivision_products; issue 38, items 1 and 6;
-docs/subdivision_for_all_n.md, section 9).
+docs/subdivision_for_all_n.md, section 11).
 
 The references are independent of the route: the certified ball computation of S = M_{alpha/2} Rot M_alpha^{-1}
 (``_certified_float_matrices``, within 2^-60 + half an ulp of the exact S), the exact S at a RationalAngle, and the
@@ -51,7 +51,7 @@ def _eps_x(n: int, alpha: float) -> float:
 
 
 def stated_bound(n: int, alpha: float) -> tuple[tuple[np.ndarray, ...], list[np.ndarray]]:
-    """The float matrices and the running-error bound of docs/subdivision_for_all_n.md, section 9:
+    """The float matrices and the running-error bound of docs/subdivision_for_all_n.md, section 11:
     |S_float - S| <= B + (2 eps_x + 3u)(|S_float| + B), B the rounding part computed by the route."""
     mats, rounding = subdivision_matrices_float(n, alpha, bound=True)
     eps = 2 * _eps_x(n, alpha) + 3 * U

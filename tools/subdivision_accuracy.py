@@ -1,7 +1,7 @@
 """Float accuracy and cost of midpoint subdivision (issue 38, items 1 and 6) -> reports/subdivision_accuracy.{md,json}.
 
 Run: ``PYTHONPATH=. python tools/subdivision_accuracy.py [--quick]``.  Three measurements of the float route (the
-product route of :mod:`paper_repro.core.subdivision_products`, docs/subdivision_for_all_n.md section 9):
+product route of :mod:`paper_repro.core.subdivision_products`, docs/subdivision_for_all_n.md section 11):
 
 1. *Against the certified route* (S = M_{alpha/2} Rot M_alpha^{-1} in ball arithmetic, 30 digits, the ``'mp'``
    arithmetic of :func:`~paper_repro.core.subdivision.subdivision_matrices`), n <= 8 on an alpha grid in

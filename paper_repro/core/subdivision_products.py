@@ -1,12 +1,12 @@
 """Midpoint subdivision in float64 without a solve: restriction is a ring homomorphism (docs/subdivision_for_all_n.md,
-section 9).
+section 11).
 
 Notation of docs/elevation_and_derivative_for_all_n.md: ``m_f = f / s^{2n+j(f)}`` the scaled members of T_{2n}^alpha
 (eq. united_system), ``x_f`` their scaled normalizing coefficients (T-bar_f = x_f m_f, eq. normalized_united_system),
 ``kappa' = cos(alpha/4)``, ``sigma' = sin^2(alpha/4)`` the half-angle values of the parameter alpha/2 of the
 sub-patches, and ``x_k`` the map of Omega^{alpha/2} onto the sub-triangle ``k`` (:mod:`paper_repro.core.subdivision`).
 
-The route, for every n (proof: docs/subdivision_for_all_n.md, section 9):
+The route, for every n (proof: docs/subdivision_for_all_n.md, section 11):
 
 1. *Order one.*  ``m_h o x_k = sum_g R_1^k[g, h] m'_g`` for the seven members h of T_2, by substituting
    ``sin(u/2) = s'(kappa' S'_u + C'_u)`` (translation) or ``s'(C'_u - kappa' S'_u)`` (point reflection) and the
@@ -19,6 +19,12 @@ The route, for every n (proof: docs/subdivision_for_all_n.md, section 9):
    coefficient a polynomial in kappa', sigma' with non-negative integer coefficients; here vectorised,
    :func:`product_terms_fast`).  So R_n^k[:, f] = sum_h R_1^k[h, h(f)] P_h R_{n-1}^k[:, f'(f)], level by level.
 3. *Normalization.*  ``S_k[g, f] = R_n^k[g, f] x_f / x'_g``.
+
+Speed (section 11, Lemmas 7 and 8): only one column per orbit of the exchanges of variables commuting with the
+part's map is computed at the last level (``R[pi g, pi f] = R[g, f]``, :func:`symmetry_permutations`; v <-> w for
+the corners, all six for the middle), and at each lower level only the factors those columns need (:func:`_plan`);
+the other columns and the corners v, w are written from them (:func:`assemble`).  The integer forms of order n are
+those of order n - 1 embedded by the centre S_u S_v S_w (:func:`centre_embedding`) plus the 6n new columns.
 
 Float results are the same bits on every CPU: kappa', sigma' from flint ``arb``, fixed-order sums (no BLAS:
 scipy's sparse products sum each row in the order of its entries).
@@ -58,7 +64,7 @@ from paper_repro.core.ordered import ordered_matmul
 PARTS = ("u", "v", "w", "middle")
 #: Below this alpha the float route computes at ALPHA_TINY: the scaled coefficients of size sigma would underflow
 #: (0/0 in x_f / x'_g).  Measured S(alpha) - S(ALPHA_TINY) ~ alpha^2/32 (n = 2, 6, 10), S even and smooth at 0 (proven
-#: for n <= 2, docs/subdivision_for_all_n.md section 9): the difference below ALPHA_TINY is about 1e-200.
+#: for n <= 2, docs/subdivision_for_all_n.md section 11): the difference below ALPHA_TINY is about 1e-200.
 ALPHA_TINY = 1e-100
 _F = FloatContext()
 
@@ -689,7 +695,7 @@ def subdivision_matrices_float(n: int, alpha: float, *, bound: bool = False, par
 
 def rounding_count(n: int) -> int:
     """K of the running-error bound: an upper bound of the roundings along any path of the recursion
-    (docs/subdivision_for_all_n.md, section 9).  Order one: per variable at most 2 binomial products and 2 Horner
+    (docs/subdivision_for_all_n.md, section 11).  Order one: per variable at most 2 binomial products and 2 Horner
     steps of (a 7-term sum, a product, a sum), times three variables, and the prefactor (2 kappa')^-3: 64.  Per level
     k: the evaluation of a product entry (the powers of kappa', sigma' up to the form's degree, the integer factor,
     the sum of the entry's monomials), the sparse row sum (its length), the weight, the sum over the seven h.  Then
