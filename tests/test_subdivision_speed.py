@@ -1,5 +1,5 @@
 """The float product route of midpoint subdivision (paper_repro.core.subdivision_products; issue 38, items 1 and 6;
-docs/subdivision_for_all_n.md, section 9).
+docs/subdivision_for_all_n.md, section 11).
 
 The references are independent of the route: the certified ball computation of S = M_{alpha/2} Rot M_alpha^{-1}
 (``_certified_float_matrices``, within 2^-60 + half an ulp of the exact S), the exact S at a RationalAngle, and the
@@ -51,7 +51,7 @@ def _eps_x(n: int, alpha: float) -> float:
 
 
 def stated_bound(n: int, alpha: float) -> tuple[tuple[np.ndarray, ...], list[np.ndarray]]:
-    """The float matrices and the running-error bound of docs/subdivision_for_all_n.md, section 9:
+    """The float matrices and the running-error bound of docs/subdivision_for_all_n.md, section 11:
     |S_float - S| <= B + (2 eps_x + 3u)(|S_float| + B), B the rounding part computed by the route."""
     mats, rounding = subdivision_matrices_float(n, alpha, bound=True)
     eps = 2 * _eps_x(n, alpha) + 3 * U
@@ -198,3 +198,67 @@ def test_cached_tables_are_read_only():
     arrays = [*m.factorization(3), m.member_table_fast(3), m.member_parts_fast(3), m.swap_permutation(3, 1),
               *m._padded_rule_a(3), *m.cotangent_csc_fast(3, 0), *m.product_terms_fast(2, 4), *m._level_terms(3)]
     assert all(not a.flags.writeable for a in arrays)
+
+
+def test_symmetries_hold_for_the_certified_matrices():
+    """The symmetry the route fills with (docs/subdivision_for_all_n.md, section 11): R[pi g, pi f] = R[g, f] for
+    the exchanges commuting with the part's map, and corner v is corner u with u and v exchanged -- checked on the
+    certified matrices (ball route, which knows nothing of the symmetries), not on the route's own output."""
+    from paper_repro.core.subdivision_products import swap_permutation, symmetry_permutations
+
+    n, alpha = 3, 0.7
+    ref = _certified_float_matrices(n, alpha)
+    tol = 2.0 ** -58
+    for pi in symmetry_permutations(n, "u"):
+        assert np.abs(ref[0][np.ix_(pi, pi)] - ref[0]).max() <= tol
+    for pi in symmetry_permutations(n, "middle"):
+        assert np.abs(ref[3][np.ix_(pi, pi)] - ref[3]).max() <= tol
+    for k, var in ((1, 1), (2, 2)):
+        p = swap_permutation(n, var)
+        assert np.abs(ref[0][np.ix_(p, p)] - ref[k]).max() <= tol
+    assert len(symmetry_permutations(n, "middle")) == 6
+    assert len({tuple(p) for p in symmetry_permutations(n, "middle")}) == 6
+
+
+@pytest.mark.parametrize("alpha", [1e-3, 0.3, math.pi - 1e-12])
+def test_orbit_route_within_its_bound_of_the_certified_route(alpha):
+    """n = 5 (members in orbits of size 1, 2, 3 and 6): every entry of the four float matrices within the stated
+    bound of the certified route (expected values from the ball route only)."""
+    n = 5
+    ref = _certified_float_matrices(n, alpha)
+    mats, bound = stated_bound(n, alpha)
+    for part, s, r, b in zip(PARTS, mats, ref, bound):
+        err = np.abs(s - r)
+        assert (err <= b + 2.0 ** -60 + U * np.abs(r)).all(), (part, float(err.max()))
+        assert err.max() < 2e-15, (part, float(err.max()))
+
+
+def test_one_part_is_the_same_bits_as_the_four():
+    """subdivision_matrix(n, alpha, part) runs only its part's recursion: the same bits as the four together."""
+    from paper_repro.core.subdivision import subdivision_matrix
+
+    for n in (1, 4, 7):
+        four = subdivision_matrices(n, 1.3)
+        for k, part in enumerate(PARTS):
+            assert np.array_equal(subdivision_matrix(n, 1.3, part), four[k]), (n, part)
+            (one,) = subdivision_matrices_float(n, 1.3, parts=(part,))
+            assert np.array_equal(one, four[k]), (n, part)
+
+
+def test_exponent_matrix_is_the_labels_exponents():
+    """The vectorised exponent_matrix is the exponents of the labels of united_system (n <= 30)."""
+    from paper_repro.core.labels import exponents, united_system
+
+    for n in range(1, 31):
+        ref = np.array([exponents(lab) for lab in united_system(n)], dtype=np.int64)
+        assert np.array_equal(ref, exponent_matrix(n)), n
+
+
+def test_centre_embedding_columns_are_the_dictionary_route():
+    """The product forms built by the centre embedding (order n - 1 copied, 6n columns built) are the proven
+    dictionary construction term for term at n = 6, 7 (n <= 5: test_product_terms_fast_equals_the_dictionary_route)."""
+    for n in (6, 7):
+        for h in (0, 2, 5):
+            fast = product_terms_fast(n, h)
+            slow = merge(product_terms(n, h))
+            assert all(np.array_equal(x, y) for x, y in zip(fast, slow)), (n, h)

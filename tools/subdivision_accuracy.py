@@ -1,7 +1,7 @@
 """Float accuracy and cost of midpoint subdivision (issue 38, items 1 and 6) -> reports/subdivision_accuracy.{md,json}.
 
 Run: ``PYTHONPATH=. python tools/subdivision_accuracy.py [--quick]``.  Three measurements of the float route (the
-product route of :mod:`paper_repro.core.subdivision_products`, docs/subdivision_for_all_n.md section 9):
+product route of :mod:`paper_repro.core.subdivision_products`, docs/subdivision_for_all_n.md section 11):
 
 1. *Against the certified route* (S = M_{alpha/2} Rot M_alpha^{-1} in ball arithmetic, 30 digits, the ``'mp'``
    arithmetic of :func:`~paper_repro.core.subdivision.subdivision_matrices`), n <= 8 on an alpha grid in
@@ -30,8 +30,9 @@ from paper_repro.core.normalization import evaluate_normalized
 from paper_repro.core.subdivision import PARTS, subdivision_matrices, to_parent
 from paper_repro.core.subdivision_products import subdivision_matrices_float
 
-ALPHAS = (1e-3, 0.01, 0.1, 0.5, 1.0, 2.0, 3.0, math.pi - 1e-3)
-SMALL = (1e-6, 1e-30)
+ALPHAS = (1e-3, 0.01, 0.1, 0.5, 1.0, 2.0, 3.0, math.pi - 1e-3, math.pi - 1e-12)
+#: small alpha against the certified route (n <= 4: its precision grows like (3n - 1) log2(1/alpha) bits)
+SMALL = (1e-6, 1e-30, 1e-300)
 U = 2.0 ** -53
 
 
@@ -87,15 +88,20 @@ def tiny_rows(n: int) -> list[dict]:
     return out
 
 
+def _alpha(a: float) -> str:
+    """alpha as printed: near pi as pi - d (3.1416 would hide d)."""
+    return f"π − {math.pi - a:.0e}" if a > 3.1 else f"{a:.4g}"
+
+
 def markdown(rep: dict) -> str:
     out = ["# Midpoint subdivision in float64: accuracy (issue 38)", "",
            "Written by `tools/subdivision_accuracy.py` (not data: measurements of this machine's run; "
            f"load average at start {rep['load'][0]:.1f}). The float route is the product route "
-           "(docs/subdivision_for_all_n.md, section 9); *bound* is the largest entry of the rounding part B of its "
+           "(docs/subdivision_for_all_n.md, section 11); *bound* is the largest entry of the rounding part B of its "
            "stated running-error bound (computed by the route; a worst case, above the measured error).", "",
            "## 1. Against the certified route (ball arithmetic, 30 digits)", "",
            "| n | α | max \\|float − mp\\| | bound | float (s) | certified mp (s) |", "|---|---|---|---|---|---|"]
-    out += [f"| {r['n']} | {r['alpha']:.4g} | {r['max_abs_err']:.2e} | {r['bound']:.1e} | {r['float_s']} | "
+    out += [f"| {r['n']} | {_alpha(r['alpha'])} | {r['max_abs_err']:.2e} | {r['bound']:.1e} | {r['float_s']} | "
             f"{r['certified_mp_s']} |" for r in rep["certified"]]
     worst = max(r["max_abs_err"] for r in rep["certified"])
     out += ["", f"Largest error over the table: **{worst:.2e}**.", "",
@@ -104,7 +110,7 @@ def markdown(rep: dict) -> str:
             "digits, 12 random points, a random net (error relative to max |P|); and the row-sum defect of S.", "",
             "| n | α | max \\|sub-patch − patch\\| / max \\|P\\| | max \\|S 1 − 1\\| | bound |",
             "|---|---|---|---|---|"]
-    out += [f"| {r['n']} | {r['alpha']:.4g} | {r['patch_err_rel']:.2e} | {r['row_sum_defect']:.2e} | "
+    out += [f"| {r['n']} | {_alpha(r['alpha'])} | {r['patch_err_rel']:.2e} | {r['row_sum_defect']:.2e} | "
             f"{r['bound']:.1e} |" for r in rep["patch"]]
     out += ["", "## 3. Below α = 1e-100", "",
             "The route computes at α = 1e-100 (measured S(α) − S(1e-100) ≈ α²/32 above it, S even and smooth at 0 "
@@ -119,6 +125,7 @@ def main(argv: list[str] | None = None) -> int:
 
     ap = argparse.ArgumentParser()
     ap.add_argument("--quick", action="store_true")
+    ap.add_argument("--patch-ns", default=None, help="orders of section 2, comma-separated (default 2,6,10,14,20)")
     ap.add_argument("--out", default="reports")
     ap.add_argument("--rebound", action="store_true",
                     help="recompute only the bound column of an existing <out>/subdivision_accuracy.json")
@@ -133,7 +140,9 @@ def main(argv: list[str] | None = None) -> int:
         return 0
     cert_ns = [2, 4] if args.quick else [1, 2, 4, 6, 8]
     patch_ns = [2, 6] if args.quick else [2, 6, 10, 14, 20]
-    patch_alphas = (1e-3, 1.0, math.pi - 1e-3)
+    if args.patch_ns:
+        patch_ns = [int(x) for x in args.patch_ns.split(",")]
+    patch_alphas = (1e-300, 1e-30, 1e-3, 1.0, math.pi - 1e-3, math.pi - 1e-12)
     rep: dict = {"load": list(os.getloadavg()), "certified": [], "patch": [], "tiny": []}
     for n in cert_ns:
         for alpha in ALPHAS + (SMALL if n <= 4 else ()):

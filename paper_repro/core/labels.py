@@ -146,7 +146,21 @@ def _united_system(n: int) -> tuple[BasisLabel, ...]:
 @cache
 def exponent_matrix(n: int) -> np.ndarray:
     """``(delta_n, 6)`` integer array: the exponent vectors of ``T_{2n}`` in internal order."""
-    arr = np.array([exponents(lab) for lab in united_system(n)], dtype=np.int64)  # checks n (cold only)
+    n = check_n(n)
+    # the order of united_system: the centre, then per colour j = 0..n-1, i = j..2n-j-1 (vectorised; tested equal
+    # to the labels' exponents)
+    j, i = (np.concatenate([np.full(2 * n - 2 * jj, jj) for jj in range(n)]),
+            np.concatenate([np.arange(jj, 2 * n - jj) for jj in range(n)]))
+    m = np.where(i <= n, i, 2 * n - i)
+    r = np.stack([2 * n - i, np.zeros_like(i), j, m - j, i, np.zeros_like(i)], axis=1)
+    blocks = [np.array([r_exponents(n, n, n)], dtype=np.int64)]
+    for color in COLORS:
+        s = CYCLIC[color]
+        out = np.zeros_like(r)
+        for slot in range(3):  # as compose: argument ``slot`` of R is fed the variable s[slot]
+            out[:, 2 * s[slot]:2 * s[slot] + 2] += r[:, 2 * slot:2 * slot + 2]
+        blocks.append(out)
+    arr = np.concatenate(blocks).astype(np.int64)
     arr.setflags(write=False)
     return arr
 

@@ -41,6 +41,7 @@ from paper_repro.core.labels import (
     compose,
     delta,
     delta_unchecked,
+    exponent_matrix,
     exponents,
     united_system,
 )
@@ -78,7 +79,7 @@ def orbits(n: int) -> tuple[tuple[BasisLabel, tuple[int, ...]], ...]:
 def _orbits(n: int) -> tuple[tuple[BasisLabel, tuple[int, ...]], ...]:
     """:func:`orbits` for inner code (``n`` already checked)."""
     labels = _united_system(n)
-    by_exps = {exponents(lab): k for k, lab in enumerate(labels)}
+    by_exps = {tuple(e): k for k, e in enumerate(exponent_matrix(n).tolist())}  # = exponents(labels[k])
     out = []
     for j in range(n + 1):
         for i in range(j, n + 1):

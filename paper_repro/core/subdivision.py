@@ -23,7 +23,7 @@ above cancels: in float64 it loses every digit (measured: n = 4 at alpha = 0.1 h
 alpha = 1 9e-5).  So ``'float'`` does not use it: it takes the *product route* of
 :mod:`paper_repro.core.subdivision_products` (no solve, no M_alpha: the seven order-one restrictions by
 substitution and the cotangent rules, then the products of Theorem P level by level; proof in
-docs/subdivision_for_all_n.md, section 9), with an entrywise running-error bound and a measured error of at most
+docs/subdivision_for_all_n.md, section 11), with an entrywise running-error bound and a measured error of at most
 a few units of 1e-15 against the certified route (n <= 8; the patch in mp up to n = 20,
 reports/subdivision_accuracy.md).  Below
 alpha = 1e-100 the float route computes at 1e-100 (measured S(alpha) - S(1e-100) ~ alpha^2/32: about 1e-200 there).
@@ -423,6 +423,14 @@ def _float_matrices(n: int, alpha: float) -> tuple[np.ndarray, ...]:
     return out
 
 
+@lru_cache(maxsize=32)
+def _float_part(n: int, alpha: float, part: str) -> np.ndarray:
+    """One S in float64 by the product route, read-only (the same values as ``_float_matrices(n, alpha)``)."""
+    (out,) = subdivision_matrices_float(n, alpha, parts=(part,))
+    out.setflags(write=False)
+    return out
+
+
 @lru_cache(maxsize=8)
 def _certified_float_matrices(n: int, alpha: float) -> tuple[np.ndarray, ...]:
     """The four S from S = M_{alpha/2} Rot M_alpha^{-1} in ball arithmetic, every entry certified to 2^-60 before
@@ -480,7 +488,7 @@ def subdivision_matrix(n: int, alpha, part: str, arith: str | Context | None = N
 
     ``alpha``: a real number in (0, pi) or a :class:`~paper_repro.core.domain.RationalAngle`; ``arith``: ``'float'``
     (default for a real alpha; the product route, no solve: every entry within its running-error bound, measured
-    within 5e-15 of the certified value for n <= 20, docs/subdivision_for_all_n.md section 9), ``'mp'``
+    within 5e-15 of the certified value for n <= 20, docs/subdivision_for_all_n.md section 11), ``'mp'``
     (``dps`` digits, certified), ``'ball'`` (balls at the context's precision) or ``'exact'`` (default for a
     RationalAngle; flint ``fmpq``).  ``n`` from 1 to :data:`MAX_N_SUBDIVISION`.  Every row sums to 1 (partition
     of unity on both sides); S has negative entries (not a corner-cutting scheme, docs/subdivision_for_all_n.md).
@@ -491,7 +499,12 @@ def subdivision_matrix(n: int, alpha, part: str, arith: str | Context | None = N
     ((19, 19), True)
     """
     part = check_part(part)
-    return subdivision_matrices(n, alpha, arith, dps=dps)[PARTS.index(part)]
+    n = _check_n(n)
+    alpha = _check_alpha(alpha)
+    ctx = _context(arith, alpha, dps)
+    if isinstance(ctx, FloatContext):  # only the matrix asked for (its recursion: the corners', or the middle's)
+        return _float_part(n, float(alpha), part).copy()
+    return subdivision_matrices(n, alpha, ctx, dps=dps)[PARTS.index(part)]
 
 
 def _csr_apply(mat: sp.csr_matrix, net: np.ndarray) -> np.ndarray:

@@ -1,12 +1,12 @@
 """Midpoint subdivision in float64 without a solve: restriction is a ring homomorphism (docs/subdivision_for_all_n.md,
-section 9).
+section 11).
 
 Notation of docs/elevation_and_derivative_for_all_n.md: ``m_f = f / s^{2n+j(f)}`` the scaled members of T_{2n}^alpha
 (eq. united_system), ``x_f`` their scaled normalizing coefficients (T-bar_f = x_f m_f, eq. normalized_united_system),
 ``kappa' = cos(alpha/4)``, ``sigma' = sin^2(alpha/4)`` the half-angle values of the parameter alpha/2 of the
 sub-patches, and ``x_k`` the map of Omega^{alpha/2} onto the sub-triangle ``k`` (:mod:`paper_repro.core.subdivision`).
 
-The route, for every n (proof: docs/subdivision_for_all_n.md, section 9):
+The route, for every n (proof: docs/subdivision_for_all_n.md, section 11):
 
 1. *Order one.*  ``m_h o x_k = sum_g R_1^k[g, h] m'_g`` for the seven members h of T_2, by substituting
    ``sin(u/2) = s'(kappa' S'_u + C'_u)`` (translation) or ``s'(C'_u - kappa' S'_u)`` (point reflection) and the
@@ -19,6 +19,12 @@ The route, for every n (proof: docs/subdivision_for_all_n.md, section 9):
    coefficient a polynomial in kappa', sigma' with non-negative integer coefficients; here vectorised,
    :func:`product_terms_fast`).  So R_n^k[:, f] = sum_h R_1^k[h, h(f)] P_h R_{n-1}^k[:, f'(f)], level by level.
 3. *Normalization.*  ``S_k[g, f] = R_n^k[g, f] x_f / x'_g``.
+
+Speed (section 11, Lemmas 7 and 8): only one column per orbit of the exchanges of variables commuting with the
+part's map is computed at the last level (``R[pi g, pi f] = R[g, f]``, :func:`symmetry_permutations`; v <-> w for
+the corners, all six for the middle), and at each lower level only the factors those columns need (:func:`_plan`);
+the other columns and the corners v, w are written from them (:func:`assemble`).  The integer forms of order n are
+those of order n - 1 embedded by the centre S_u S_v S_w (:func:`centre_embedding`) plus the 6n new columns.
 
 Float results are the same bits on every CPU: kappa', sigma' from flint ``arb``, fixed-order sums (no BLAS:
 scipy's sparse products sum each row in the order of its entries).
@@ -36,6 +42,7 @@ recursion in absolute values.
 
 from __future__ import annotations
 
+import itertools
 from functools import cache, lru_cache
 
 import numpy as np
@@ -57,7 +64,7 @@ from paper_repro.core.ordered import ordered_matmul
 PARTS = ("u", "v", "w", "middle")
 #: Below this alpha the float route computes at ALPHA_TINY: the scaled coefficients of size sigma would underflow
 #: (0/0 in x_f / x'_g).  Measured S(alpha) - S(ALPHA_TINY) ~ alpha^2/32 (n = 2, 6, 10), S even and smooth at 0 (proven
-#: for n <= 2, docs/subdivision_for_all_n.md section 9): the difference below ALPHA_TINY is about 1e-200.
+#: for n <= 2, docs/subdivision_for_all_n.md section 11): the difference below ALPHA_TINY is about 1e-200.
 ALPHA_TINY = 1e-100
 _F = FloatContext()
 
@@ -220,6 +227,13 @@ def _apply_cotangent_terms(big: int, var: np.ndarray, terms: tuple[np.ndarray, .
         fin = steps == 0
         done.append((col[fin], target[fin], a[fin], b[fin], coef[fin]))
         col, target, a, b, coef, var, steps = (arr[~fin] for arr in (col, target, a, b, coef, var, steps))
+        if len(col):  # add the terms equal in (col, target, a, b) (var and steps are functions of col): exact
+            key = ((col * (int(target.max()) + 1) + target) * (int(a.max()) + 1) + a) * (int(b.max()) + 1) + b
+            order = np.argsort(key, kind="stable")
+            first = order[np.r_[True, key[order][1:] != key[order][:-1]]]
+            summed = np.add.reduceat(coef[order], np.flatnonzero(np.r_[True, key[order][1:] != key[order][:-1]]))
+            col, target, a, b, var, steps = (arr[first] for arr in (col, target, a, b, var, steps))
+            coef = summed
     return tuple(np.concatenate([d[k] for d in done]) for k in range(5))
 
 
@@ -227,18 +241,108 @@ def _apply_cotangent_terms(big: int, var: np.ndarray, terms: tuple[np.ndarray, .
 def product_terms_fast(n: int, h: int) -> tuple[np.ndarray, ...]:
     """The terms ``(rows, cols, a, b, coef)`` of :func:`~paper_repro.core.half_angle_rules.product_terms` (the
     product of each member of T_{2n} with the member ``h`` of T_2, written in T_{2(n+1)}: Theorem P of
-    docs/elevation_and_derivative_for_all_n.md), built with numpy instead of one dictionary per column; merged
-    (:func:`~paper_repro.core.half_angle_rules.merge`).  ``n`` must be checked by the caller.
+    docs/elevation_and_derivative_for_all_n.md), merged and sorted as
+    :func:`~paper_repro.core.half_angle_rules.merge` (:func:`_product_terms_unsorted` sorted).  ``n`` must be
+    checked by the caller.
 
     >>> from paper_repro.core.half_angle_rules import product_terms
     >>> all(np.array_equal(x, y) for x, y in zip(product_terms_fast(3, 5), merge(product_terms(3, 5))))
     True
     """
+    rows, cols, a, b, coef = _product_terms_unsorted(n, h)
+    order = np.lexsort((b, a, cols, rows))
+    out = tuple(arr[order] for arr in (rows, cols, a, b, coef))
+    for arr in out:
+        arr.setflags(write=False)
+    return out
+
+
+@cache
+def centre_embedding(n: int) -> np.ndarray:
+    """For n >= 1 the index in T_{2n} of ``S_u S_v S_w m_f`` for each member f of T_{2n-2} (``M_X(m; Y, j)`` times the
+    centre is ``M_X(m + 1; Y, j + 1)``, a member); its image is the members with j >= 1.
+
+    >>> e = exponent_matrix(3)[centre_embedding(3)] - exponent_matrix(2)
+    >>> bool((e == [1, 0, 1, 0, 1, 0]).all())
+    True
+    """
+    if n == 1:
+        out = np.array([int(np.flatnonzero((exponent_matrix(1) == [1, 0, 1, 0, 1, 0]).all(axis=1))[0])])
+    else:
+        x, m, y, j = (member_parts_fast(n - 1)[:, k] for k in range(4))
+        out = member_table_fast(n)[x, y, m + 1, j + 1]
+    out.setflags(write=False)
+    return out
+
+
+@cache
+def _outer_columns(n: int) -> list[tuple[np.ndarray, ...]]:
+    """:func:`_product_columns` of the 6n members with j = 0 (not a multiple of the centre; n = 1: all seven)."""
+    f = np.arange(delta_unchecked(1)) if n == 1 else np.flatnonzero(member_parts_fast(n)[:, 3] == 0)
+    return _product_columns_all(n, f)
+
+
+@cache
+def _product_terms_unsorted(n: int, h: int) -> tuple[np.ndarray, ...]:
+    """:func:`product_terms_fast` unsorted (merged: no two terms with the same (row, col, a, b)).  For n >= 2 the
+    columns of the members ``S_u S_v S_w m_g`` (g in T_{2n-2}, :func:`centre_embedding`) are those of order n - 1
+    with rows and columns embedded: ``(S_u S_v S_w m_g) m_h = S_u S_v S_w sum_i P[i, g] m_i = sum_i P[i, g]
+    m_{centre i}`` (the same coefficient polynomials); only the 6n other columns (j = 0) are built by
+    :func:`_product_columns`."""
+    if n == 1:
+        return _outer_columns(1)[h]
+    rows, cols, a, b, coef = _product_terms_unsorted(n - 1, h)
+    new = _outer_columns(n)[h]
+    up_rows, up_cols = centre_embedding(n + 1), centre_embedding(n)
+    out = (np.concatenate([up_rows[rows], new[0]]), np.concatenate([up_cols[cols], new[1]]),
+           np.concatenate([a, new[2]]), np.concatenate([b, new[3]]), np.concatenate([coef, new[4]]))
+    for arr in out:
+        arr.setflags(write=False)
+    return out
+
+
+def _product_columns(n: int, h: int, f: np.ndarray) -> tuple[np.ndarray, ...]:
+    """The terms of :func:`~paper_repro.core.half_angle_rules.product_terms` (Theorem P of
+    docs/elevation_and_derivative_for_all_n.md) of the columns ``f`` (members of T_{2n}) only, built with numpy
+    instead of one dictionary per column; merged (:func:`~paper_repro.core.half_angle_rules.merge`)."""
+    return _product_columns_all(n, f)[h]
+
+
+def _product_columns_all(n: int, f: np.ndarray) -> list[tuple[np.ndarray, ...]]:
+    """:func:`_product_columns` for the seven h at once (one pass of the cotangent powers for all of them: the
+    column index carries h, ``h delta_n + f``)."""
+    d = delta_unchecked(n)
+    direct, pending = [], []
+    for h in range(7):
+        done, pend = _product_seed(n, h, f)
+        direct += [(t[0] + h * d,) + t[1:] for t in done]
+        if pend is not None:
+            terms, var, steps = pend
+            pending.append(((terms[0] + h * d,) + terms[1:], var, steps))
+    if pending:
+        terms = tuple(np.concatenate([p[0][k] for p in pending]) for k in range(5))
+        var, steps = (np.concatenate([p[k] for p in pending]) for k in (1, 2))
+        direct.append(_apply_cotangent_terms(n + 1, var, terms, steps))
+    rows, cols, a, b, coef = _merged(tuple(np.concatenate([t[k] for t in direct]) for k in range(5)))
+    which = cols // d
+    out = []
+    for h in range(7):
+        sel = which == h
+        part = (rows[sel], cols[sel] - h * d, a[sel], b[sel], coef[sel])
+        for arr in part:
+            arr.setflags(write=False)
+        out.append(part)
+    return out
+
+
+def _product_seed(n: int, h: int, f: np.ndarray) -> tuple[list, tuple | None]:
+    """The terms of the columns ``f`` of the product with h that need no cotangent power, and the terms
+    ``((col, target, a, b, coef), var, steps)`` still to be raised by ``L_var^steps`` (Theorem P's cases)."""
     big = n + 1
     table = member_table_fast(big)
-    x, m, y, j = (member_parts_fast(n)[:, k] for k in range(4))
+    parts = member_parts_fast(n)
+    x, m, y, j = (parts[f, k] for k in range(4))
     z = 3 - x - y
-    f = np.arange(delta_unchecked(n))
     one = np.ones_like(f)
     zero = np.zeros_like(f)
     kind, var = order_one_parts()[h]
@@ -246,8 +350,8 @@ def product_terms_fast(n: int, h: int) -> tuple[np.ndarray, ...]:
         centre = table[x, y, m + 1, j + 1]
         terms = (f, centre, zero, zero, one)
         if kind == "edge":
-            terms = _apply_cotangent_terms(big, np.full_like(f, var), terms, one)
-        return _merged(terms)
+            return [], (terms, np.full_like(f, var), one)
+        return [terms], None
     out = []
     case1 = (var == x) | ((m == n) & (var == z))
     sel = case1
@@ -267,9 +371,8 @@ def product_terms_fast(n: int, h: int) -> tuple[np.ndarray, ...]:
     sel = case3 & (m == n)
     p.append((f[sel], table[y[sel], x[sel], n, n], zero[sel], zero[sel], one[sel]))
     pt = tuple(np.concatenate([q[k] for q in p]) for k in range(5))
-    steps = (m - j)[pt[0]]
-    out.append(_apply_cotangent_terms(big, y[pt[0]], pt, steps))
-    return _merged(tuple(np.concatenate([o[k] for o in out]) for k in range(5)))
+    steps = (parts[:, 1] - parts[:, 3])[pt[0]]
+    return out, (pt, parts[pt[0], 2], steps)
 
 
 def _merged(terms: tuple[np.ndarray, ...]) -> tuple[np.ndarray, ...]:
@@ -375,10 +478,10 @@ def order_one_restriction(part: str, kp: float, sg: float, *, absolute: bool = F
 def _level_terms(k: int) -> tuple[np.ndarray, ...]:
     """The seven product forms of order k - 1 (:func:`product_terms_fast`) concatenated: ``(rows, cols, a, b, coef,
     h)``, sorted by (rows, cols) (stable), with the start of each (row, col) run."""
-    forms = [product_terms_fast(k - 1, h) for h in range(7)]
+    forms = [_product_terms_unsorted(k - 1, h) for h in range(7)]
     cat = [np.concatenate([f[i] for f in forms]) for i in range(5)]
     hidx = np.concatenate([np.full(len(f[0]), h) for h, f in enumerate(forms)])
-    order = np.lexsort((cat[1], cat[0]))  # by row, then column; stable within (h, the form's order)
+    order = np.argsort(cat[0] * delta_unchecked(k - 1) + cat[1], kind="stable")  # by (row, column), then h
     out = tuple(arr[order] for arr in cat) + (hidx[order],)
     for arr in out:
         arr.setflags(write=False)
@@ -388,15 +491,15 @@ def _level_terms(k: int) -> tuple[np.ndarray, ...]:
 @cache
 def _pattern(k: int, used: tuple[int, ...]) -> tuple[np.ndarray, ...]:
     """For the members h in ``used``: the positions of their terms in :func:`_level_terms`, the start of each
-    (row, col) run among them, and the CSR ``indptr``, ``indices`` of the distinct (row, col)."""
+    (row, col) run among them, the CSR ``indptr``, ``indices`` of the distinct (row, col) and the h of each term."""
     rows, cols, _, _, _, hidx = _level_terms(k)
     keep = np.zeros(7, dtype=bool)
     keep[list(used)] = True
     pos = np.flatnonzero(keep[hidx])
     r, c = rows[pos], cols[pos]
     starts = np.flatnonzero(np.r_[True, (r[1:] != r[:-1]) | (c[1:] != c[:-1])])
-    indptr = np.searchsorted(r[starts], np.arange(delta_unchecked(k) + 1))
-    out = (pos, starts, indptr, c[starts].copy())
+    indptr = np.searchsorted(r[starts], np.arange(delta_unchecked(k) + 1)).astype(np.int32)
+    out = (pos, starts, indptr, c[starts].astype(np.int32), hidx[pos])
     for arr in out:
         arr.setflags(write=False)
     return out
@@ -414,9 +517,8 @@ def _level_values(k: int, kp: float, sg: float, absolute: bool) -> np.ndarray:
 def _combined(k: int, weights: np.ndarray, vals: np.ndarray) -> sp.csr_matrix:
     """Q = sum_h weights[h] P_h (order k - 1 -> k) as CSR, each entry summed in a fixed order."""
     used = tuple(int(h) for h in np.flatnonzero(weights))
-    pos, starts, indptr, indices = _pattern(k, used)
-    hidx = _level_terms(k)[5]
-    data = np.add.reduceat(vals[pos] * weights[hidx[pos]], starts) if len(pos) else np.zeros(0)
+    pos, starts, indptr, indices, hpos = _pattern(k, used)
+    data = np.add.reduceat(vals[pos] * weights[hpos], starts) if len(pos) else np.zeros(0)
     return sp.csr_matrix((data, indices, indptr), shape=(delta_unchecked(k), delta_unchecked(k - 1)))
 
 
@@ -425,43 +527,113 @@ def restriction_matrices(n: int, alpha: float, *, absolute: bool = False, first:
     """The four R_n^k (scaled members at alpha -> scaled members at alpha/2), in the order of :data:`PARTS`;
     ``absolute``: the product matrices in absolute values (they are non-negative: only the sums' bits change);
     ``first``: the two 7 x 7 matrices R_1 of parts 'u' and 'middle' to start from (default: computed).  ``n >= 1``
-    and ``alpha`` in [ALPHA_TINY, pi) checked by the caller.
-
-    Corners 'v' and 'w' are corner 'u' with the variables exchanged (T_{2n} is invariant under the permutations of
-    (u, v, w), :func:`~paper_repro.core.labels.variable_swap`): ``R^v = Pi R^u Pi`` for the swap of u and v."""
+    and ``alpha`` in [ALPHA_TINY, pi) checked by the caller.  :func:`restriction_blocks` assembled
+    (:func:`assemble`, no normalization)."""
     kp, sg = _float_half_angle(alpha / 2)
     r1 = first if first is not None else [order_one_restriction(p, kp, sg) for p in ("u", "middle")]
-    rs = [r.copy() for r in r1]
+    ones = np.ones(delta_unchecked(n))
+    return assemble(n, restriction_blocks(n, kp, sg, r1, absolute=absolute), ones, ones)
+
+
+def restriction_blocks(n: int, kp: float, sg: float, first: list, *, absolute: bool = False,
+                       families: tuple[str, ...] = ("u", "middle")) -> list[np.ndarray | None]:
+    """The columns ``_plan(n, part)[-1][0]`` (one per symmetry orbit) of R_n^u and R_n^middle, from the two 7 x 7
+    matrices R_1 ``first`` (parts 'u', 'middle') at ``kp, sg = cos(alpha/4), sin^2(alpha/4)``: level k computes
+    only the columns of its plan, column f as ``Q_{h(f)} R_{k-1}[:, f'(f)]`` with ``Q_g = sum_h R_1[h, g] P_h``
+    (the Theorem of docs/subdivision_for_all_n.md, section 11).  Only the ``families`` asked for ('u': the three
+    corners, 'middle'); None for the other."""
+    fams = [f for f in ("u", "middle") if f in families]
+    plans = {f: _plan(n, f) for f in fams}
+    r1 = {"u": first[0], "middle": first[1]}
+    blocks = {f: r1[f][:, plans[f][0][0]] for f in fams}
     for k in range(2, n + 1):
-        fp, hh = factorization(k)
         vals = _level_values(k, kp, sg, absolute)
-        d = delta_unchecked(k)
-        new = []
-        for r, w in zip(rs, r1):
-            out = np.empty((d, d))
+        for f in fams:
+            cols, bounds, pos = plans[f][k - 1]
+            out = np.empty((delta_unchecked(k), len(cols)))
             for g in range(7):
-                cols = _columns(k, g)
-                if len(cols):
-                    out[:, cols] = _combined(k, w[:, g], vals) @ r[:, fp[cols]]
-            new.append(out)
-        rs = new
-    ru, rm = rs
-    return (ru, _swapped(ru, n, 1), _swapped(ru, n, 2), rm)
+                lo, hi = bounds[g], bounds[g + 1]
+                if hi > lo:
+                    out[:, lo:hi] = _combined(k, r1[f][:, g], vals) @ blocks[f][:, pos[lo:hi]]
+            blocks[f] = out
+    return [blocks.get("u"), blocks.get("middle")]
+
+
+def assemble(n: int, blocks: list[np.ndarray | None], x0: np.ndarray, x1: np.ndarray,
+             parts: tuple[str, ...] = PARTS) -> tuple[np.ndarray, ...]:
+    """The ``S_k[g, f] = R_k[g, f] x0_f / x1_g`` of ``parts`` (in that order) from the two blocks of
+    :func:`restriction_blocks`: every column is the image of a computed one under :func:`symmetry_permutations`
+    (``R[pi g, pi f] = R[g, f]``, and the normalizing coefficients are symmetric, Theorem B), and the corners v, w
+    are corner u with u and v (u and w) exchanged, ``R^v[pi g, pi f] = R^u[g, f]`` (T_{2n} is invariant under the
+    permutations of (u, v, w); the translation in v is the translation in u conjugated by the exchange).  One
+    normalization per computed entry, then every entry written once per orbit element."""
+    d = delta_unchecked(n)
+    out = []
+    for part in parts:
+        family = "middle" if part == "middle" else "u"
+        cols = _plan(n, family)[-1][0]
+        block = blocks[family == "middle"] * (x0[cols][None, :] / x1[:, None])
+        swap = None if part in ("u", "middle") else swap_permutation(n, "uvw".index(part))
+        full = np.empty((d, d))
+        for pi in symmetry_permutations(n, family):
+            p = pi if swap is None else swap[pi]
+            full[np.ix_(p, p[cols])] = block
+        out.append(full)
+    return tuple(out)
 
 
 @cache
-def _columns(k: int, g: int) -> np.ndarray:
-    """The members of T_{2k} whose factor in T_2 (:func:`factorization`) is g."""
-    out = np.flatnonzero(factorization(k)[1] == g)
-    out.setflags(write=False)
-    return out
+def _plan(n: int, part: str) -> tuple[tuple[np.ndarray, ...], ...]:
+    """The columns of R_k computed at each level k = 1..n: at level n one member of each orbit of
+    :func:`symmetry_permutations` (the smallest index; the other columns are their images), at level k - 1 the
+    factors f'(f) (:func:`factorization`) of the columns of level k.  Entry k - 1: ``(cols, bounds, pos)`` with
+    ``cols`` ordered by the factor h(f) (k >= 2), ``bounds`` the start of each h's run (8 bounds) and ``pos`` the
+    position of f'(f) among the columns of level k - 1."""
+    perms = np.stack(symmetry_permutations(n, part))
+    cols = np.flatnonzero(perms.min(axis=0) == np.arange(delta_unchecked(n)))
+    out = []
+    if n >= 2:
+        cols = cols[np.argsort(factorization(n)[1][cols], kind="stable")]
+    for k in range(n, 1, -1):
+        fp, h = factorization(k)
+        bounds = np.searchsorted(h[cols], np.arange(8))
+        prev = np.unique(fp[cols])
+        if k > 2:
+            prev = prev[np.argsort(factorization(k - 1)[1][prev], kind="stable")]
+        where = np.empty(delta_unchecked(k - 1), dtype=np.int64)
+        where[prev] = np.arange(len(prev))
+        out.append((cols, bounds, where[fp[cols]]))
+        cols = prev
+    out.append((cols, np.zeros(8, dtype=np.int64), np.zeros(0, dtype=np.int64)))
+    out.reverse()
+    for entry in out:
+        for arr in entry:
+            arr.setflags(write=False)
+    return tuple(out)
 
 
-def _swapped(r: np.ndarray, n: int, var: int) -> np.ndarray:
-    """Corner ``var`` from corner u: exchange u and var in rows and columns (the permutation of
-    :func:`~paper_repro.core.labels.variable_swap`, here by a sorted-key lookup; tested equal)."""
-    pi = swap_permutation(n, var)
-    return r[np.ix_(pi, pi)]
+@cache
+def symmetry_permutations(n: int, part: str) -> tuple[np.ndarray, ...]:
+    """The member permutations ``pi`` (``m_{pi f}(u, v, w) = m_f`` at the permuted variables) of the exchanges of
+    variables that commute with the map of ``part``: for the corner ``'u'`` the identity and v <-> w; for
+    ``'middle'`` (the point reflection commutes with every permutation of (u, v, w)) all six.  Then
+    ``R[pi g, pi f] = R[g, f]``: with tau the exchange, ``m_{pi f} o x_k = m_f o tau o x_k = m_f o x_k o tau =
+    sum_g R[g, f] m'_g o tau = sum_g R[g, f] m'_{pi g}`` (docs/subdivision_for_all_n.md, section 11)."""
+    e = exponent_matrix(n).astype(np.int64)
+    weights = 64 ** np.arange(6, dtype=np.int64)
+    keys = e @ weights
+    order = np.argsort(keys)
+    sigmas = [(0, 1, 2), (0, 2, 1)] if part == "u" else list(itertools.permutations(range(3)))
+    out = []
+    for sigma in sigmas:
+        cols = [2 * sigma[c // 2] + c % 2 for c in range(6)]
+        want = e[:, cols] @ weights
+        pi = order[np.searchsorted(keys[order], want)]
+        if not np.array_equal(keys[pi], want):  # pragma: no cover - T_2n is invariant under the permutations
+            raise AssertionError(f"T_{2 * n} is not invariant under the permutation {sigma}")
+        pi.setflags(write=False)
+        out.append(pi)
+    return tuple(out)
 
 
 @cache
@@ -493,34 +665,37 @@ def _gamma(m: int) -> float:
     return m * u / (1 - m * u)
 
 
-def subdivision_matrices_float(n: int, alpha: float, *, bound: bool = False):
-    """The four S_k (:func:`paper_repro.core.subdivision.subdivision_matrices`) in float64 by the product route,
-    ``n >= 1`` and ``alpha`` in (0, pi) checked by the caller (below :data:`ALPHA_TINY` computed at ALPHA_TINY).
+def subdivision_matrices_float(n: int, alpha: float, *, bound: bool = False, parts: tuple[str, ...] = PARTS):
+    """The S_k of ``parts`` (default the four, :func:`paper_repro.core.subdivision.subdivision_matrices`) in
+    float64 by the product route, ``n >= 1`` and ``alpha`` in (0, pi) checked by the caller (below
+    :data:`ALPHA_TINY` computed at ALPHA_TINY).  Only the recursions the parts need are run (the corners share one).
 
     ``bound=True`` returns ``(matrices, bounds)`` with the rounding part B of the running-error bound of
-    docs/subdivision_for_all_n.md, section 9: ``|S_float - S| <= B + (2 eps_x + 3u)(|S_float| + B)``, eps_x the
+    docs/subdivision_for_all_n.md, section 11: ``|S_float - S| <= B + (2 eps_x + 3u)(|S_float| + B)``, eps_x the
     relative error of the float scaled coefficients.  With F the level recursion (multilinear in R_1 with
     non-negative coefficients), e_1 = gamma_128 times the majorant of R_1's own computation and K_L the roundings of
     the levels (:func:`rounding_count` minus R_1's 64): ``B = D (F(|R_1| + 2 e_1) - F(|R_1|) + gamma_{2 K_L}
     F(|R_1| + 2 e_1)) D`` with D the normalization.  First order in u; computed, not certified."""
     alpha = max(float(alpha), ALPHA_TINY)
     x0, x1 = _normalizers(n, alpha)
-    scale = x0[None, :] / x1[:, None]
     kp, sg = _float_half_angle(alpha / 2)
+    families = tuple({"middle" if p == "middle" else "u" for p in parts})
     r1 = [order_one_restriction(p, kp, sg) for p in ("u", "middle")]
-    mats = tuple(r * scale for r in restriction_matrices(n, alpha, first=r1))
+    mats = assemble(n, restriction_blocks(n, kp, sg, r1, families=families), x0, x1, parts)
     if not bound:
         return mats
     e1 = [_gamma(128) * order_one_restriction(p, kp, sg, absolute=True) for p in ("u", "middle")]
-    low = restriction_matrices(n, alpha, absolute=True, first=[abs(r) for r in r1])
-    high = restriction_matrices(n, alpha, absolute=True, first=[abs(r) + 2 * e for r, e in zip(r1, e1)])
+    low = restriction_blocks(n, kp, sg, [abs(r) for r in r1], absolute=True, families=families)
+    high = restriction_blocks(n, kp, sg, [abs(r) + 2 * e for r, e in zip(r1, e1)], absolute=True,
+                              families=families)
     g = _gamma(2 * (rounding_count(n) - 64))
-    return mats, tuple(((h - lo) + g * h) * scale for h, lo in zip(high, low))
+    comb = [None if h is None else (h - lo) + g * h for h, lo in zip(high, low)]
+    return mats, assemble(n, comb, x0, x1, parts)
 
 
 def rounding_count(n: int) -> int:
     """K of the running-error bound: an upper bound of the roundings along any path of the recursion
-    (docs/subdivision_for_all_n.md, section 9).  Order one: per variable at most 2 binomial products and 2 Horner
+    (docs/subdivision_for_all_n.md, section 11).  Order one: per variable at most 2 binomial products and 2 Horner
     steps of (a 7-term sum, a product, a sum), times three variables, and the prefactor (2 kappa')^-3: 64.  Per level
     k: the evaluation of a product entry (the powers of kappa', sigma' up to the form's degree, the integer factor,
     the sum of the entry's monomials), the sparse row sum (its length), the weight, the sum over the seven h.  Then
@@ -542,4 +717,5 @@ def rounding_count(n: int) -> int:
 
 
 __all__ = ["PARTS", "ALPHA_TINY", "product_terms_fast", "factorization", "order_one_restriction",
-           "restriction_matrices", "subdivision_matrices_float", "rounding_count"]
+           "restriction_matrices", "restriction_blocks", "assemble", "symmetry_permutations", "centre_embedding",
+           "subdivision_matrices_float", "rounding_count"]
