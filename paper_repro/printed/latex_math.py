@@ -1194,8 +1194,7 @@ def parse_list(tex: str) -> list:
     :func:`parse`; one item is a list of one.  A line that also carries prose: its displayed part.  A relation
     outside the items' groups is refused (a listed range ``i=0,1,\ldots,n`` is no list of items).
 
-    >>> parse_list(r"\mathbf{r}_{2,1,1},~\left\{ \mathbf{g}_{2,2-i,0}
-ight\}_{i=0}^{1}")
+    >>> parse_list(r"\mathbf{r}_{2,1,1},~\left\{ \mathbf{g}_{2,2-i,0}\right\}_{i=0}^{1}")
     [r_vec(2, 1, 1), Family(g_vec(2, 2 - i, 0), (), ((i, 0, 1),))]
     """
     r = parse_relation(tex)
