@@ -58,11 +58,16 @@ def expression(tex: str, allowed: tuple[str, ...] | None = None) -> sympy.Expr:
     out = latex_math.parse(tex)
     if not isinstance(out, sympy.Expr):
         raise LatexMathError(f"not a scalar expression: {tex[:40]!r}")
-    if allowed is not None:
-        unknown = sorted({str(x) for x in out.free_symbols} - set(allowed))
-        if unknown or out.atoms(AppliedUndef):
-            raise LatexMathError(f"unknown names {unknown or sorted(map(str, out.atoms(AppliedUndef)))} in {tex!r}")
-    return out
+    return out if allowed is None else within(out, allowed, tex)
+
+
+def within(expr: sympy.Expr, allowed: tuple[str, ...], tex: str | None = None) -> sympy.Expr:
+    """``expr`` (parsed) if it names only symbols in ``allowed`` and no applied name; ``LatexMathError`` otherwise."""
+    unknown = sorted({str(x) for x in expr.free_symbols} - set(allowed))
+    if unknown or expr.atoms(AppliedUndef):
+        raise LatexMathError(f"unknown names {unknown or sorted(map(str, expr.atoms(AppliedUndef)))} in "
+                             f"{tex if tex is not None else expr!r}")
+    return expr
 
 
 def chain(tex: str) -> tuple[list[sympy.Expr], list[str]]:
@@ -559,4 +564,4 @@ __all__ = ["ALPHA", "VARRHO", "RHO", "MU", "VARPHI", "PSI", "A", "B", "C", "U", 
            "relation_holds", "bound", "index_set", "clauses", "listed", "listed_range", "progression", "interval",
            "CONSTANTS", "constants_as_factors", "relation", "value", "expand_sums", "TAGGED", "untagged_names",
            "linear_terms", "point_label", "exact_value", "evaluate_in", "COLOUR_OF", "FUNCTIONS", "function_terms",
-           "term_indices", "constant_sets", "evaluate_at", "conversion", "elevation", "members"]
+           "term_indices", "constant_sets", "evaluate_at", "conversion", "elevation", "members", "within"]
