@@ -194,13 +194,13 @@ def printed_products() -> dict:
     if "could not write as the linear combination" not in " ".join(hard_tex.split()):
         raise ValueError("unread 'could not write' products")
     hard = products(hard_tex)
-    words, segs = X._prose_and_math(verbatim("sec7-unity-product-basis"))
+    words, segs = LM.prose(verbatim("sec7-unity-product-basis"))
     basis = LM.parse(segs[0]) if len(segs) == 1 else None
     if words != "into the basis $$, then this transformation would also provide:" or \
             getattr(getattr(basis, "func", None), "__name__", "") != "Tbar" or len(basis.args) != 1:
         raise ValueError("unread target basis")
     target = P.within(basis.args[0], X.NAMES)
-    words, segs = X._prose_and_math(verbatim("sec7-transformation-consequences"))
+    words, segs = LM.prose(verbatim("sec7-transformation-consequences"))
     if words != ("\\item a recurrence relation between normalizing coefficients of consecutive orders; \\item the "
                  "symmetry and non-negativity of normalizing coefficients; \\item the order elevation of the "
                  "constrained trivariate trigonometric blending system $$ (and consequently, the order elevation of "

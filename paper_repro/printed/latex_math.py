@@ -1371,6 +1371,17 @@ def inline_math(tex: str) -> list[str]:
     return re.findall(r"(?<!\\)\$(.+?)(?<!\\)\$", tex, flags=re.S)
 
 
+def prose(tex: str) -> tuple[str, list[str]]:
+    r"""The words of a prose line with each ``$..$`` segment replaced by ``$$`` (white space made single), and the
+    segments (:func:`inline_math`): a check matches the words as prose and reads every segment with this reader.
+
+    >>> prose("of radius $\\mu\\in\\left(\n0,\\rho\\right]$")
+    ('of radius $$', ['\\mu\\in\\left(\n0,\\rho\\right]'])
+    """
+    words = re.sub(r"(?<!\\)\$(.+?)(?<!\\)\$", "$$", tex, flags=re.S)
+    return " ".join(words.split()), inline_math(tex)
+
+
 def evaluate_sums(expr):
     r"""``expr`` with every ``Sum`` whose bounds are integers written out term by term, the paper's way: a sum
     whose upper bound is below its lower bound is empty (0).  (sympy's ``Sum.doit`` follows Karr's convention

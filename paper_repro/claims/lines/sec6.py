@@ -1074,18 +1074,23 @@ def ring_torus_regular(rho: fmpq, mu: fmpq) -> bool:
     return 0 < mu < rho and torus_quartic(0, 0, 0, rho, mu) > 0 and rho - mu > 0
 
 
-_MU_RANGE = re.compile(r"^of radius \$\\mu\\in\\left([(\[])(.*?),(.*?)\\right([)\]])\$$", re.S)
-
-
 def mu_range_is_ring(tex: str | None) -> bool:
-    """The range of mu in ``tex`` (parsed: brackets and end points; each symbol must be a parameter of eq.
-    toroidal_triangle) is exactly the set of mu giving a ring torus, tested at mu = k/10 varrho, k = 0..14."""
-    from paper_repro.printed.parsed import VARRHO, expression
+    """The range of mu in ``tex`` (the words 'of radius' and one ``$..$`` segment ``\\mu\\in`` an interval, read by
+    :func:`~paper_repro.printed.latex_math.parse_relation`: brackets and end points; each symbol must be a parameter
+    of eq. toroidal_triangle) is exactly the set of mu giving a ring torus, tested at mu = k/10 varrho, k = 0..14."""
+    from paper_repro.printed.latex_math import parse_relation, prose
+    from paper_repro.printed.parsed import MU, VARRHO
 
-    m = _MU_RANGE.match(tex or "")
-    if not m:
+    words, segs = prose(tex or "")
+    if words != "of radius $$" or len(segs) != 1:
         return False
-    lo, hi = expression(m.group(2)), expression(m.group(3))
+    rel = parse_relation(segs[0])
+    right = rel.parts[-1]
+    if isinstance(right, sympy.Tuple) and len(right) == 2:  # the reader's pair (a, b): after \in the open interval
+        right = sympy.Interval.open(*right)
+    if rel.ops != ["in"] or rel.conditions or rel.lead or rel.parts[0] != MU or not isinstance(right, sympy.Interval):
+        return False
+    lo, hi, left_open, right_open = right.args
     params = {str(p) for p in read_torus_parametrization()["params"]}
     if not {str(s) for s in lo.free_symbols | hi.free_symbols} <= params:
         return False
@@ -1100,7 +1105,7 @@ def mu_range_is_ring(tex: str | None) -> bool:
     a, b = num(lo), num(hi)
     for k in range(15):
         mu = rho * fmpq(k, 10)
-        inside = (a < mu if m.group(1) == "(" else a <= mu) and (mu < b if m.group(4) == ")" else mu <= b)
+        inside = (a < mu if left_open else a <= mu) and (mu < b if right_open else mu <= b)
         if inside != ring_torus_regular(rho, mu):
             return False
     return True
@@ -1790,23 +1795,22 @@ def collapsed_circle(xyz, a, b, c, mu) -> bool:
                    for pts in circles)
 
 
-_DUPIN_CONDITIONS = re.compile(r"^where parameters \$a\$, \$b\$, \$c\$ and \$\\mu\$ have to fulfill the conditions "
-                               r"\$([^$]*)\$ and \$([^$]*)\$$")
-
-
 def dupin_conditions_hold(tex: str | None) -> tuple[bool, dict]:
-    """The two conditions read from ``tex``: the equation holds exactly for the (a, b, c) whose cyclide (eq.
+    """The two conditions read from ``tex`` (its words, and its ``$..$`` segments by the one reader: the parameters
+    a, b, c, mu, then the equation and the chain): the equation holds exactly for the (a, b, c) whose cyclide (eq.
     Dupin_in_3d, read) lies on the quartic (tested on 5 triples); the chain holds exactly for the mu that give a
     ring cyclide -- no parameter circle collapses (tested at 13 mu for two triples)."""
+    from paper_repro.printed.latex_math import parse, prose
     from paper_repro.printed.parsed import MU, chain, relation_holds
     from paper_repro.printed.parsed import A as SA
     from paper_repro.printed.parsed import B as SB
     from paper_repro.printed.parsed import C as SC
 
-    m = _DUPIN_CONDITIONS.match(tex or "")
-    if not m:
+    words, segs = prose(tex or "")
+    if words != "where parameters $$, $$, $$ and $$ have to fulfill the conditions $$ and $$" or \
+            [parse(x) for x in segs[:4]] != [SA, SB, SC, MU]:
         return False, {"unread": (tex or "")[:60]}
-    eq, chain = chain(m.group(1)), chain(m.group(2))
+    eq, chain = chain(segs[4]), chain(segs[5])
     xyz = read_dupin()["xyz"]
 
     def sub(rel, a, b, c, mu):

@@ -1066,27 +1066,19 @@ def check_degenerate_bernstein() -> LineResult:
                               "per_n": per_n, "R_431_over_x3yz_at_alpha_1e-4": numeric})
 
 
-def _prose_and_math(tex: str) -> tuple[str, list[str]]:
-    """The prose of a line with each ``$..$`` segment replaced by ``$$`` (white space made single), and the
-    segments (:func:`~paper_repro.printed.latex_math.inline_math`): the words are matched as prose, the segments
-    read by the one reader."""
-    segs = LM.inline_math(tex)
-    return re.sub(r"\s+", " ", re.sub(r"\$[^$]*\$", "$$", tex)).strip(), segs
-
-
 def bernstein_definition() -> dict:
     """The caption's definition read: ``P^{m}_{d,e,f}`` (degree symbol, index symbols), the formula (sympy), the
     words 'of degree $m$', and the index set ``d,e,f \\in \\{0,1,\\ldots,m\\}`` 'such that' ``d+e+f=m``, each
     ``$..$`` segment read by :mod:`~paper_repro.printed.latex_math` (a listed subject in a listed set; the
     superscript of ``P^{m}_{d,e,f}`` printed before its subscript)."""
-    words, segs = _prose_and_math(VERBATIM["sec7-fig-limit-caption-bernstein"])
+    words, segs = LM.prose(VERBATIM["sec7-fig-limit-caption-bernstein"])
     if words != "($$ denotes the constrained trivariate Bernstein polynomial $$ of degree $$" or len(segs) != 3:
         raise ValueError("unread definition")
     name = LM.parse(segs[0])
     if not (isinstance(name, AppliedUndef) and name.func.__name__ == "P_sup" and len(name.args) == 4
             and all(isinstance(a, sympy.Symbol) for a in name.args)):
         raise ValueError(f"unread P^{{m}}_{{d,e,f}}: {name}")
-    words, segs_i = _prose_and_math(VERBATIM["sec7-fig-limit-caption-indices"])
+    words, segs_i = LM.prose(VERBATIM["sec7-fig-limit-caption-indices"])
     if words != "$$ such that $$" or len(segs_i) != 2:
         raise ValueError("unread index set")
     member = LM.parse_relation(segs_i[0])
