@@ -1270,43 +1270,28 @@ def fig_torus_settings() -> LineResult:
 # --- Section 6.2: rational patches ---------------------------------------------------------------------------
 @line_check("sec6-weights-set")
 def weights_set(verbatim: str | None = None) -> LineResult:
-    """The weights rho_{2n,n,n} and the three printed sets of weights (each set's bounds read by
-    :func:`paper_repro.printed.latex_math.index_set`, the lone weight by :func:`~paper_repro.printed.latex_math.parse`)
-    name each function of T_{2n} once, n = 1..12."""
-    from paper_repro.printed.latex_math import index_set, parse
+    """The weights rho_{2n,n,n} and the three printed sets of weights (the list read by
+    :func:`paper_repro.printed.latex_math.parse_list`: a weight and bounded sets, each set over (j, i) enumerated by
+    :func:`~paper_repro.printed.parsed.members`) name each function of T_{2n} once, n = 1..12."""
+    from paper_repro.printed.latex_math import Family, parse_list
+    from paper_repro.printed.parsed import members
 
     tex = _LINE["sec6-weights-set"].verbatim if verbatim is None else verbatim
-    parts = [p for p in re.split(r",(?=\\left\\\{)|%\n,", tex.replace("%\n,", ",")) if p.strip(" %\n")]
-    sets: list[tuple] = []
     try:
-        for part in parts:
-            m = re.match(r"\s*\\left\\\{\s*\\(rho|gamma|beta)_\{2n,2n-i,j\}\\right\\\}", part)
-            if m:
-                (jv, jlo, jhi), (iv, ilo, ihi) = index_set(part)
-                if (str(jv), str(iv)) != ("j", "i"):
-                    raise ValueError(f"index set over {jv}, {iv}")
-                sets.append((_WEIGHT_OF[m.group(1)], jlo, jhi, ilo, ihi))
-            else:
-                w = parse(part.strip(" ,%\n"))
-                if type(w).__name__ not in _WEIGHT_OF or len(w.args) != 3:
-                    raise ValueError(f"not a weight: {part!r}")
-                sets.append((_WEIGHT_OF[type(w).__name__], w.args))
+        items = parse_list(tex)
+        for item in items:
+            if isinstance(item, sympy.core.function.AppliedUndef) and item.func == Family:
+                if [str(b[0]) for b in item.args[2]] != ["j", "i"]:
+                    raise ValueError(f"index set over {[str(b[0]) for b in item.args[2]]}")
+                item = item.args[0]
+            if type(item).__name__ not in _WEIGHT_OF or len(item.args) != 3:
+                raise ValueError(f"not a weight: {item}")
     except ValueError as exc:
         return LineResult(False, how="the weights read from the transcription", detail={"unread": str(exc)[:80]})
 
     def names(n: int) -> list[str]:
-        out = []
-        for item in sets:
-            if len(item) == 2:
-                a, b, c = (sympy.sympify(x).subs(N_SYM, n) for x in item[1])
-                out.append(f"{item[0].lower()}_{{{a},{b},{c}}}")
-                continue
-            colour, jlo, jhi, ilo, ihi = item
-            J = sympy.Symbol("j")
-            for j in range(int(jlo.subs(N_SYM, n)), int(jhi.subs(N_SYM, n)) + 1):
-                for i in range(int(ilo.subs({N_SYM: n, J: j})), int(ihi.subs({N_SYM: n, J: j})) + 1):
-                    out.append(f"{colour.lower()}_{{{2 * n},{2 * n - i},{j}}}")
-        return out
+        return [f"{_WEIGHT_OF[type(w).__name__].lower()}_{{{','.join(str(a) for a in w.args)}}}"
+                for item in items for w in members(item, n=n)]
 
     got = {n: names(n) for n in NS}
     ok = all(matches_basis(v, n) for n, v in got.items())
