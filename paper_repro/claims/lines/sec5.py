@@ -54,10 +54,15 @@ def read_weight_labels(tex: str, n: int) -> list[str]:
 
 @line_check("sec4_5-weights-index")
 def check_weights_index(verbatim: str | None = None) -> LineResult:
+    """The weights listed by the line (:func:`read_weight_labels`) name each coefficient of T_{2n} once, n <= 12."""
     tex = verbatim if verbatim is not None else _texts({"sec4_5-weights"})["sec4_5-weights"]
     ok = True
-    for n in range(1, 13):
-        printed = read_weight_labels(tex, n)
+    try:
+        listed = {n: read_weight_labels(tex, n) for n in range(1, 13)}
+    except (LatexMathError, ValueError, TypeError) as exc:
+        return LineResult(False, how="the printed index sets read from the transcription, n <= 12", kind="exhaustive",
+                          detail={"unread": str(exc)[:200]})
+    for n, printed in listed.items():
         ok &= len(printed) == len(set(printed)) == 3 * n * (n + 1) + 1
         ok &= set(printed) == {lab.coefficient for lab in united_system(n)}
     return LineResult(ok, how="the printed index sets (read from the transcription) against the labels of T_{2n} "
