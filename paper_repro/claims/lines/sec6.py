@@ -357,13 +357,19 @@ def _points(alpha: RationalAngle, count: int, seed: int) -> RationalPoints:
 
 
 def read_open_interval(tex: str, var: str) -> tuple[sympy.Expr, sympy.Expr]:
-    """``(lo, hi)`` of ``var \\in \\left(lo,hi\\right)`` in ``tex`` (parsed)."""
-    from paper_repro.printed.parsed import expression
+    """``(lo, hi)`` of the clause ``var \\in \\left(lo,hi\\right)`` of ``tex`` (each ``$..$`` segment read by
+    :func:`paper_repro.printed.latex_math.parse_conditions`; the reader's pair after ``\\in`` is the open
+    interval); ``ValueError`` if there is none."""
+    from paper_repro.printed.latex_math import parse
+    from paper_repro.printed.parsed import clauses
 
-    m = re.search(rf"{re.escape(var)}\s*\\in\s*\\left\(([^,]*),([^,]*?)\\right\)", tex)
-    if not m:
-        raise ValueError(f"no open interval {var} in (lo, hi) in {tex[:50]!r}")
-    return expression(m.group(1)), expression(m.group(2))
+    sym = parse(var)
+    for c in clauses(tex):
+        right = c.parts[-1]
+        if c.ops == ["in"] and c.parts[0] == sym and isinstance(right, sympy.Tuple) and len(right) == 2 and \
+                all(isinstance(x, sympy.Expr) for x in right):
+            return right[0], right[1]
+    raise ValueError(f"no open interval {var} in (lo, hi) in {tex[:50]!r}")
 
 
 #: cos(alpha/2) of the sampled alphas (rational, so everything below is exact): alpha = 2 acos(c) from 0.57 to 5.7
