@@ -316,10 +316,21 @@ def delta3(verbatim: str | None = None) -> LineResult:
     """delta_3 = 37 control points (order and count read from the transcription) against the terms of eq.
     triangular_trig_surface (read) and T_6."""
     tex = _LINE["sec6-delta3"].verbatim if verbatim is None else verbatim
-    m = re.search(r"\\delta_\{(\d+)\}=(\d+)", tex)
-    if not m:
+    from paper_repro.printed.latex_math import inline_math, parse_relation
+
+    found = []
+    for seg in inline_math(tex):  # the count: a segment delta_{n}=count (read by the one reader)
+        try:
+            rel = parse_relation(seg)
+        except ValueError:
+            continue
+        head = rel.parts[0]
+        if rel.ops == ["="] and not rel.conditions and getattr(head.func, "__name__", "") == "delta" and \
+                len(head.args) == 1 and head.args[0].is_Integer and rel.parts[1].is_Integer:
+            found.append((int(head.args[0]), int(rel.parts[1])))
+    if not found:
         return LineResult(False, how="the count read from the transcription", detail={"unread": tex[:60]})
-    n, count = int(m.group(1)), int(m.group(2))
+    n, count = found[0]
     order = re.search(r"illustrates a (\w+) order triangular trigonometric\s+patch defined by", tex)
     said = ORDINALS.get(order.group(1)) if order else None
     terms = len(patch_terms_read(n))
@@ -1726,17 +1737,24 @@ def dupin_rational_patches() -> LineResult:
 
 
 def phase_intervals() -> list[tuple[sympy.Expr, sympy.Expr]]:
-    """``[(lo, hi) of varphi, (lo, hi) of psi]`` read from "$\\left(\\varphi,\\psi\\right) \\in [..]\\times[..]$"."""
-    from paper_repro.printed.parsed import expression
+    """``[(lo, hi) of varphi, (lo, hi) of psi]`` read from "$\\left(\\varphi,\\psi\\right) \\in [..]\\times[..]$": the
+    words by :func:`~paper_repro.printed.latex_math.prose`, the segment by ``parse_relation`` (a ``ProductSet`` of two
+    closed intervals)."""
+    from paper_repro.printed.latex_math import parse_relation, prose
+    from paper_repro.printed.parsed import PSI, VARPHI
 
-    tex = _LINE["sec6-dupin-phases"].verbatim
-    m = re.match(r"^while phase changes \$\\left\(\s*\\varphi,\\psi\\right\)\s*\\in\\left\[(.*?),(.*?)\\right\]"
-                 r"\\times\\left\[(.*?),(.*?)\\right\]\s*\$ are free design parameters that can be used to\s+slide "
-                 r"the patch on the cyclide\.$", tex)
-    if not m:
-        raise ValueError(f"phases not read: {tex[:60]!r}")
-    lo1, hi1, lo2, hi2 = (expression(x) for x in m.groups())
-    return [(lo1, hi1), (lo2, hi2)]
+    words, segs = prose(_LINE["sec6-dupin-phases"].verbatim)
+    unread = ValueError(f"phases not read: {_LINE['sec6-dupin-phases'].verbatim[:60]!r}")
+    if words != "while phase changes $$ are free design parameters that can be used to slide the patch on the " \
+                "cyclide." or len(segs) != 1:
+        raise unread
+    rel = parse_relation(segs[0])
+    box = rel.parts[-1]
+    if rel.ops != ["in"] or rel.conditions or rel.parts[0] != sympy.Tuple(VARPHI, PSI) or \
+            not isinstance(box, sympy.ProductSet) or len(box.sets) != 2 or \
+            not all(isinstance(x, sympy.Interval) and not x.left_open and not x.right_open for x in box.sets):
+        raise unread
+    return [(x.start, x.end) for x in box.sets]
 
 
 @line_check("sec6-dupin-phases")
