@@ -162,8 +162,9 @@ def printed_products() -> dict:
     parsed printed object, not a copy): the products ``\\overline{R}_{2n,2n-i,j} \\cdot \\overline{h}`` it calls easy
     (line sec7-mixed-products-easy) and those it could not write (sec7-mixed-products-hard), the index set of
     (i, j) (sec7-mixed-products-index-set), the basis ``\\overline{T}_{2(n+1)}`` they go to
-    (sec7-unity-product-basis) and the consequences it expects (sec7-transformation-consequences: a recurrence of
-    consecutive orders, symmetry and non-negativity, order elevation from n to n + 1).  Every formula is read by
+    (sec7-unity-product-basis; the hard ones name it too) and the consequences it expects
+    (sec7-transformation-consequences: a recurrence of consecutive orders, symmetry and non-negativity, order
+    elevation from n to n + 1).  Every formula is read by
     :mod:`paper_repro.printed.latex_math` (the lists of products by ``parse_list``); the prose around the ``$..$``
     segments is matched as words.  ``ValueError`` on anything unread."""
     import re
@@ -200,6 +201,9 @@ def printed_products() -> dict:
             getattr(getattr(basis, "func", None), "__name__", "") != "Tbar" or len(basis.args) != 1:
         raise ValueError("unread target basis")
     target = P.within(basis.args[0], X.NAMES)
+    hard_basis = LM.prose(hard_tex)[1]  # "... could not write as the linear combination of basis functions of $$"
+    if len(hard_basis) != 1 or LM.parse(hard_basis[0]) != basis:
+        raise ValueError("the basis the hard products could not be written in is not the target basis")
     words, segs = LM.prose(verbatim("sec7-transformation-consequences"))
     if words != ("\\item a recurrence relation between normalizing coefficients of consecutive orders; \\item the "
                  "symmetry and non-negativity of normalizing coefficients; \\item the order elevation of the "
