@@ -152,56 +152,72 @@ def run_derivative(ts, n_tables, n_recovered, n_exact, n_modp):
                  "evidence for the stated ranges)"})
 
 
+def _label(f) -> str:
+    """``R_{2,1,1}`` of the parsed normalized function ``Rbar(2, 1, 1)`` (integer indices)."""
+    return f"{f.func.__name__[0]}_{{{','.join(str(int(a)) for a in f.args)}}}"
+
+
 def printed_products() -> dict:
     """What the paper asks for, read from the transcribed lines of sec:open_problems (issue 37: the claim gets the
     parsed printed object, not a copy): the products ``\\overline{R}_{2n,2n-i,j} \\cdot \\overline{h}`` it calls easy
     (line sec7-mixed-products-easy) and those it could not write (sec7-mixed-products-hard), the index set of
     (i, j) (sec7-mixed-products-index-set), the basis ``\\overline{T}_{2(n+1)}`` they go to
-    (sec7-unity-product-basis) and the consequences it expects (sec7-transformation-consequences: a recurrence of
-    consecutive orders, symmetry and non-negativity, order elevation from n to n + 1).  ``ValueError`` on anything
-    unread."""
+    (sec7-unity-product-basis; the hard ones name it too) and the consequences it expects
+    (sec7-transformation-consequences: a recurrence of consecutive orders, symmetry and non-negativity, order
+    elevation from n to n + 1).  Every formula is read by
+    :mod:`paper_repro.printed.latex_math` (the lists of products by ``parse_list``); the prose around the ``$..$``
+    segments is matched as words.  ``ValueError`` on anything unread."""
     import re
 
+    import sympy
+
     from paper_repro.claims.lines import sec7 as X
+    from paper_repro.printed import latex_math as LM
+    from paper_repro.printed import parsed as P
     from paper_repro.printed.lines import verbatim
 
-    def products(tex: str) -> list[tuple[str, str]]:
-        body = X.layout_free(tex)
-        found = re.findall(r"\\overline\{([RGB])\}_\{([^{}]+)\}\^\{\\alpha\}\\cdot\\overline\{([RGB])\}_\{(\d,\d,\d)\}"
-                           r"\^\{\\alpha\}", body)
-        rest = re.sub(r"\\overline\{[RGB]\}_\{[^{}]+\}\^\{\\alpha\}\\cdot\\overline\{[RGB]\}_\{\d,\d,\d\}\^\{\\alpha\}",
-                      "P", body)
-        return [(f"{a}_{{{b}}}", f"{c}_{{{d}}}") for a, b, c, d in found], rest
+    normalized = ("Rbar", "Gbar", "Bbar")
 
-    easy, rest_easy = products(verbatim("sec7-mixed-products-easy"))
-    if rest_easy.strip(",") .replace("P,", "").replace("P", ""):
-        raise ValueError(f"unread products {rest_easy!r}")
+    def products(tex: str) -> list[tuple[object, str]]:
+        out = []
+        for item in LM.parse_list(tex):
+            factors = sympy.Mul.make_args(item)
+            if len(factors) != 2 or not all(getattr(f.func, "__name__", "") in normalized for f in factors):
+                raise ValueError(f"unread product {item}")
+            first = [f for f in factors if f.free_symbols]  # R_{2n,2n-i,j} (T_{2n}) times h (T_2, fixed indices)
+            if len(first) != 1:
+                raise ValueError(f"unread product {item}")
+            out.append((first[0], _label(next(f for f in factors if f is not first[0]))))
+        return out
+
+    easy = products(verbatim("sec7-mixed-products-easy"))
     hard_tex = verbatim("sec7-mixed-products-hard")
-    m = re.search(r"\\\[(.*)\\\]", hard_tex, re.S)
-    if not m or "could not write as the linear combination" not in re.sub(r"\s+", " ", hard_tex):
+    if "could not write as the linear combination" not in " ".join(hard_tex.split()):
         raise ValueError("unread 'could not write' products")
-    hard, rest_hard = products(m.group(1))
-    if rest_hard.replace("P,", "").replace("P", ""):
-        raise ValueError(f"unread products {rest_hard!r}")
-    basis = re.fullmatch(r"into the basis \$\\overline\{T\}_\{([^$]+)\}\^\{\\alpha\}\$, then this transformation "
-                         r"would also provide:", re.sub(r"\s+", " ", verbatim("sec7-unity-product-basis")))
-    if not basis:
+    hard = products(hard_tex)
+    words, segs = LM.prose(verbatim("sec7-unity-product-basis"))
+    basis = LM.parse(segs[0]) if len(segs) == 1 else None
+    if words != "into the basis $$, then this transformation would also provide:" or \
+            getattr(getattr(basis, "func", None), "__name__", "") != "Tbar" or len(basis.args) != 1:
         raise ValueError("unread target basis")
-    target = X.read_expression(X.layout_free(basis.group(1)))
-    cons = re.sub(r"\s+", " ", verbatim("sec7-transformation-consequences"))
-    mc = re.fullmatch(r"\\item a recurrence relation between normalizing coefficients of consecutive orders; "
-                      r"\\item the symmetry and non-negativity of normalizing coefficients; \\item the order "
-                      r"elevation of the constrained trivariate trigonometric blending system "
-                      r"\$\\overline\{T\}_\{2n\}\^\{\\alpha\}\$ \(and consequently, the order elevation of "
-                      r"triangular \(rational\) trigonometric patches from arbitrary order \$([^$]+)\$ to "
-                      r"\$([^$]+)\$\)\.", cons)
-    if not mc:
+    target = P.within(basis.args[0], X.NAMES)
+    hard_basis = LM.prose(hard_tex)[1]  # "... could not write as the linear combination of basis functions of $$"
+    if len(hard_basis) != 1 or LM.parse(hard_basis[0]) != basis:
+        raise ValueError("the basis the hard products could not be written in is not the target basis")
+    words, segs = LM.prose(verbatim("sec7-transformation-consequences"))
+    if words != ("\\item a recurrence relation between normalizing coefficients of consecutive orders; \\item the "
+                 "symmetry and non-negativity of normalizing coefficients; \\item the order elevation of the "
+                 "constrained trivariate trigonometric blending system $$ (and consequently, the order elevation of "
+                 "triangular (rational) trigonometric patches from arbitrary order $$ to $$).") or len(segs) != 3:
         raise ValueError("unread consequences")
+    system = LM.parse(segs[0])
+    elevation = (X.read_expression(segs[1]), X.read_expression(segs[2]))
+    if getattr(getattr(system, "func", None), "__name__", "") != "Tbar" or system.args != (2 * elevation[0],):
+        raise ValueError(f"the blending system {system} is not T-bar of the order elevated from ({elevation[0]})")
     index = verbatim("sec7-mixed-products-index-set")
-    if not re.search(r"\bfor all indices\b", index):
+    if not re.search(r"\bfor all indices\b", index):  # prose
         raise ValueError("no 'for all indices'")
-    return {"easy": easy, "hard": hard, "target_order": target / 2,
-            "elevation": (X.read_expression(mc.group(1)), X.read_expression(mc.group(2))),
+    return {"easy": easy, "hard": hard, "target_order": target / 2, "elevation": elevation,
             "index_set": lambda n: [(i, j) for j in X.listed_values(index, "j", n=n)
                                     for i in X.listed_values(index, "i", n=n, j=j)]}
 
@@ -211,6 +227,8 @@ def printed_products_agree(n_max: int = 12) -> dict:
     h of T_2 once, with the first factor R_{2n,2n-i,j} over the printed (i, j) = the non-central R members of
     T_{2n}; the target basis is order n + 1 and the elevation goes from n to n + 1 (n = 1..n_max); the easy ones
     are those Theorem P writes with at most two members (n = 1..5)."""
+    import sympy
+
     from paper_repro.core.labels import united_system
 
     read = printed_products()
@@ -220,7 +238,12 @@ def printed_products_agree(n_max: int = 12) -> dict:
     ns = range(1, n_max + 1)
     noncentre = {n: sorted((lab.i, lab.j) for lab in united_system(n) if lab.color == "R" and not lab.is_centre)
                  for n in ns}
-    out = {"h_named_once": hs == members, "first_factor": sorted(first) == ["R_{2n,2n-i,j}"],
+    n_, i_, j_ = sympy.symbols("n i j")
+    # the first factor, at each printed (i, j), is the non-central R member R_{2n,2n-i,j} of T_{2n} (its label)
+    first_ok = len(first) == 1 and all(_label(f.subs({n_: n, i_: lab.i, j_: lab.j})) == lab.paper
+                                       for f in first for n in ns for lab in united_system(n)
+                                       if lab.color == "R" and not lab.is_centre)
+    out = {"h_named_once": hs == members, "first_factor": first_ok,
            "index_set_is_noncentral_R": all(sorted(read["index_set"](n)) == noncentre[n] for n in ns),
            "target_order_n_plus_1": all(read["target_order"].subs("n", n) == n + 1 for n in ns),
            "elevation_n_to_n_plus_1": all((a.subs("n", n), b.subs("n", n)) == (n, n + 1)

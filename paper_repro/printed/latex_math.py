@@ -363,6 +363,7 @@ indexed: (NAMEVAR | CAPVAR | GREEKV | NAMED) "_" sarg                 -> indexed
        | (NAMEVAR | CAPVAR | GREEKV | NAMED) "_" sarg "^" sarg        -> indexed_sup
        | (CAPVAR | NAMED | GREEKV) "^" TAGSUP                          -> tagged
        | (CAPVAR | NAMED | GREEKV) "^" TAGSUP "_" sarg                 -> indexed_sup_first
+       | (CAPVAR | NAMED | GREEKV) "^" sarg "_" sarg                   -> indexed_sup_before
 
 sarg: "{" exprlist "}"                -> sarg_group
     | "{" "}"                         -> sarg_empty
@@ -861,6 +862,9 @@ class _Build(Transformer):
     def indexed_sup_first(self, c):
         return self._indexed(c[0], c[2])
 
+    def indexed_sup_before(self, c):  # P^{m}_{d,e,f}: the superscript printed first
+        return self._indexed(c[0], c[2], c[1])
+
     def tagged(self, c):
         return sympy.Symbol(_name(c[0]))
 
@@ -1064,6 +1068,31 @@ def _listing(first: Relation, rest: list[str], arrays: list) -> Relation:
 _RELOP_RE = re.compile(r"=|\\neq|\\leq|\\geq|<|>|\\in(?![A-Za-z])|\\notin|\\sim|\\nsim|\\equiv|\\subset")
 
 
+def _top_level(s: str) -> str:
+    """The text of ``s`` outside every group, parenthesis, bracket and set (the depth rule of :func:`_split_top`):
+    the ``=`` of a bound ``_{j=0,i=j}`` or the ``\\in`` of a set ``\\{X : x\\in..\\}`` is not at the top."""
+    out, depth, k = [], 0, 0
+    while k < len(s):
+        ch = s[k]
+        if ch == "\\" and k + 1 < len(s) and s[k + 1] in "{}":
+            depth += 1 if s[k + 1] == "{" else -1
+            k += 2
+            continue
+        if ch in ")]}":
+            depth -= 1
+        elif depth == 0 and ch not in "([{":
+            out.append(ch)
+        if ch in "([{":
+            depth += 1
+        k += 1
+    return "".join(out)
+
+
+def _top_relop(chunk: str) -> bool:
+    """Whether ``chunk`` carries a relation outside its groups (:func:`_top_level`)."""
+    return bool(_RELOP_RE.search(_top_level(chunk)))
+
+
 def _conditions(chunks: list[str], arrays: list) -> list[Relation]:
     out: list[Relation] = []
     k = 0
@@ -1118,10 +1147,24 @@ def parse_relation(tex: str) -> Relation:
     if len(chunks) > 1 and chunks[-1].count("(") > chunks[-1].count(")"):
         # the last clause opens a parenthesis the next transcribed row closes (``,~\forall\left(``): kept as text
         unfinished = chunks.pop().strip()
-    if len(chunks) > 1 and not any(_RELOP_RE.search(c) for c in chunks):
+    if len(chunks) > 1 and not any(_top_relop(c) for c in chunks):
+        # a list of items: names, control points, sets with bounds (``r_{2n,n,n}^{\alpha},\left\{ ..\right\}
+        # _{j=0,i=j}^{n-1,2n-1-j},..``): a relation inside a group (a bound, a set's condition) is the item's own
         items = [_run("start_expr", c.strip(), arrays) for c in chunks]
         return Relation([sympy.Tuple(*items)], [], continues=cont)
     head = chunks[0].strip()
+    k = next((i for i, c in enumerate(chunks) if _top_relop(c)), 0)
+    last = chunks[k].strip() if k else ""
+    if k >= 2 and not last.startswith(("\\forall", "\\exists")) and "\\AND" not in last and "\\OR" not in last:
+        # a listed subject ``d,e,f\in\left\{0,1,\ldots,m\right\}``: each listed item is in the set.  Two bare
+        # items at least before the relation (one, ``X, x\in S``, is an expression and its clause)
+        r = _run("start_relation", last, arrays)
+        if isinstance(r, Relation) and r.lead is None and r.ops and r.ops[0] in ("in", "notin"):
+            subjects = [_run("start_expr", c.strip(), arrays) for c in chunks[:k]] + [r.parts[0]]
+            r = Relation([sympy.Tuple(*subjects), *r.parts[1:]], r.ops)
+            r.conditions = _conditions(chunks[k + 1:], arrays) if len(chunks) > k + 1 else []
+            r.continues, r.unfinished = cont, unfinished
+            return r
     if head.startswith(("\\forall", "\\exists")):  # a lone quantified clause: \forall y\in[0, alpha-x]
         r = _conditions(chunks, arrays)
         if len(r) != 1:
@@ -1144,6 +1187,20 @@ def parse_relation(tex: str) -> Relation:
     r.continues = cont
     r.unfinished = unfinished
     return r
+
+
+def parse_list(tex: str) -> list:
+    r"""The items of a list printed with commas (control points, named constants, sets with bounds), each read by
+    :func:`parse`; one item is a list of one.  A line that also carries prose: its displayed part.  A relation
+    outside the items' groups is refused (a listed range ``i=0,1,\ldots,n`` is no list of items).
+
+    >>> parse_list(r"\mathbf{r}_{2,1,1},~\left\{ \mathbf{g}_{2,2-i,0}\right\}_{i=0}^{1}")
+    [r_vec(2, 1, 1), Family(g_vec(2, 2 - i, 0), (), ((i, 0, 1),))]
+    """
+    r = parse_relation(tex)
+    if r.ops or r.conditions or r.lead or r.continues or r.unfinished or len(r.parts) != 1:
+        raise LatexMathError(f"not a list of items: {tex[:60]!r}")
+    return list(r.parts[0]) if isinstance(r.parts[0], sympy.Tuple) else [r.parts[0]]
 
 
 def parse_conditions(tex: str) -> list[Relation]:
@@ -1312,6 +1369,17 @@ def inline_math(tex: str) -> list[str]:
     ['n=1', '\\alpha\\in\\left(0,\\pi\\right)']
     """
     return re.findall(r"(?<!\\)\$(.+?)(?<!\\)\$", tex, flags=re.S)
+
+
+def prose(tex: str) -> tuple[str, list[str]]:
+    r"""The words of a prose line with each ``$..$`` segment replaced by ``$$`` (white space made single), and the
+    segments (:func:`inline_math`): a check matches the words as prose and reads every segment with this reader.
+
+    >>> prose("of radius $\\mu\\in\\left(\n0,\\rho\\right]$")
+    ('of radius $$', ['\\mu\\in\\left(\n0,\\rho\\right]'])
+    """
+    words = re.sub(r"(?<!\\)\$(.+?)(?<!\\)\$", "$$", tex, flags=re.S)
+    return " ".join(words.split()), inline_math(tex)
 
 
 def evaluate_sums(expr):

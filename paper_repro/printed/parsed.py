@@ -58,11 +58,16 @@ def expression(tex: str, allowed: tuple[str, ...] | None = None) -> sympy.Expr:
     out = latex_math.parse(tex)
     if not isinstance(out, sympy.Expr):
         raise LatexMathError(f"not a scalar expression: {tex[:40]!r}")
-    if allowed is not None:
-        unknown = sorted({str(x) for x in out.free_symbols} - set(allowed))
-        if unknown or out.atoms(AppliedUndef):
-            raise LatexMathError(f"unknown names {unknown or sorted(map(str, out.atoms(AppliedUndef)))} in {tex!r}")
-    return out
+    return out if allowed is None else within(out, allowed, tex)
+
+
+def within(expr: sympy.Expr, allowed: tuple[str, ...], tex: str | None = None) -> sympy.Expr:
+    """``expr`` (parsed) if it names only symbols in ``allowed`` and no applied name; ``LatexMathError`` otherwise."""
+    unknown = sorted({str(x) for x in expr.free_symbols} - set(allowed))
+    if unknown or expr.atoms(AppliedUndef):
+        raise LatexMathError(f"unknown names {unknown or sorted(map(str, expr.atoms(AppliedUndef)))} in "
+                             f"{tex if tex is not None else expr!r}")
+    return expr
 
 
 def chain(tex: str) -> tuple[list[sympy.Expr], list[str]]:
@@ -371,6 +376,31 @@ def _walk_bounds(bounds: list, scope: dict):
         yield from _walk_bounds(rest, {**scope, str(v): x})
 
 
+def members(item, **env: int) -> list:
+    r"""The objects a listed item names at ``env``: a bounded set without condition
+    (``\left\{ r_{2n,2n-i,j}^{\alpha}\right\} _{j=0,i=j}^{n-1,2n-1-j}``, parsed) gives its member at every binding
+    of its bounds, the first bound outermost, each index evaluated; any other item is itself, evaluated at ``env``.
+    A set with a condition is refused (``ValueError``).
+
+    >>> members(latex_math.parse(r"\left\{ r_{2n,2n-i,j}\right\} _{j=0,i=j}^{1,2-j}"), n=1)
+    [r(2, 2, 0), r(2, 1, 0), r(2, 0, 0), r(2, 1, 1)]
+    """
+    def at(e, scope):  # an applied name with integer indices: each index by bound() (compiled, fast)
+        if isinstance(e, AppliedUndef) and all(isinstance(a, sympy.Expr) for a in e.args):
+            try:
+                return e.func(*[sympy.Integer(bound(a, **scope)) for a in e.args])
+            except ValueError:
+                pass
+        return e.subs({sympy.Symbol(k): v for k, v in scope.items()})
+
+    if isinstance(item, AppliedUndef) and item.func == latex_math.Family:
+        member, conds, bounds = item.args
+        if conds or not bounds:
+            raise ValueError(f"not a bounded set without condition: {item}")
+        return [at(member, scope) for scope in _walk_bounds(list(bounds), dict(env))]
+    return [at(item, env)]
+
+
 # -- linear combinations of control points -----------------------------------------------------------------------
 def linear_terms(expr) -> dict:
     """``{atom: coefficient}`` of an expression linear in applied names (``r_vec(6, 5, 0)``); ``ValueError`` if it is
@@ -539,4 +569,4 @@ __all__ = ["ALPHA", "VARRHO", "RHO", "MU", "VARPHI", "PSI", "A", "B", "C", "U", 
            "relation_holds", "bound", "index_set", "clauses", "listed", "listed_range", "progression", "interval",
            "CONSTANTS", "constants_as_factors", "relation", "value", "expand_sums", "TAGGED", "untagged_names",
            "linear_terms", "point_label", "exact_value", "evaluate_in", "COLOUR_OF", "FUNCTIONS", "function_terms",
-           "term_indices", "constant_sets", "evaluate_at", "conversion", "elevation"]
+           "term_indices", "constant_sets", "evaluate_at", "conversion", "elevation", "members", "within"]

@@ -52,12 +52,6 @@ N_PROOF = range(1, 7)  # orders n for which the proof's steps are recomputed
 
 # -- reading (paper_repro.printed.latex_math) -------------------------------------------------------------------
 @cache
-def parse(tex: str) -> sympy.Expr:
-    """One expression, by :func:`paper_repro.printed.latex_math.parse` (cached by the text read)."""
-    return lm.parse(tex)
-
-
-@cache
 def relation(tex: str) -> list[sympy.Expr]:
     """The parts of an equality chain ``a = b = c`` (every relation ``=``, no trailing clause), by
     :func:`paper_repro.printed.latex_math.parse_relation`; :class:`LatexMathError` on anything else.
@@ -79,7 +73,7 @@ def linear_form(expr: str | sympy.Expr) -> tuple[int, int, int]:
     >>> linear_form(r"\\alpha-x-y")
     (1, -1, -1)
     """
-    e = sympy.expand(parse(expr) if isinstance(expr, str) else sympy.sympify(expr))
+    e = sympy.expand(lm.parse(expr) if isinstance(expr, str) else sympy.sympify(expr))
     alpha, x, y = sympy.symbols("alpha x y")
     if not isinstance(e, sympy.Expr) or not e.free_symbols <= {alpha, x, y}:
         raise LatexMathError(f"not a linear form in alpha, x, y: {expr!r}")
@@ -351,7 +345,7 @@ def read_interval(tex: str, var: str) -> tuple[bool, sympy.Expr, sympy.Expr, boo
     m = re.search(var + _INTERVAL, tex)
     if not m:
         raise LatexMathError(f"no interval for {var} in {tex[:60]!r}")
-    return m.group(1) == "[", parse(m.group(2)), parse(m.group(3)), m.group(4) == "]"
+    return m.group(1) == "[", lm.parse(m.group(2)), lm.parse(m.group(3)), m.group(4) == "]"
 
 
 def listed(tex: str, var: str) -> tuple[sympy.Expr, sympy.Expr]:
@@ -439,18 +433,21 @@ def alpha_range() -> LineResult:
 
 
 def _member_labels(tex: str) -> list[tuple[str, str, str, tuple[int, ...]]]:
-    """The labels ``X_{2n,a,b}^{\\alpha}\\left( u,v,w\\right)`` listed before the ``:`` of the last set-builder of a
-    system display, as (colour, first index, level, argument permutation)."""
-    found = printed_sym.set_builders(tex)
-    if not found:
+    """The labels ``X_{2n,a,b}^{\\alpha}\\left( u,v,w\\right)`` listed before the ``:`` of the last set of a system
+    display, as (colour, first index, level, argument permutation): the display read by
+    :func:`~paper_repro.printed.latex_math.parse_relation`, the set (a ``Family`` with a double index set) and its
+    condition ``(u,v,w) \\in \\Omega^{\\alpha}`` taken from the parsed object."""
+    sets = [x for part in lm.parse_relation(tex).parts if part is not None for x in sympy.preorder_traversal(part)
+            if isinstance(x, AppliedUndef) and x.func == lm.Family]
+    if not sets:
         raise LatexMathError(f"no set-builder in {tex[:60]!r}")
-    members, _, domain = found[-1][0].partition(":")
-    _require_omega(domain)
-    out = [printed_sym.label(m.group()) for m in re.finditer(r"[RGB]_\{[^{}]*\}\^\{\\alpha\}\s*%?\s*\\left\(\s*"
-                                                             r"[uvw]\s*,\s*[uvw]\s*,\s*[uvw]\s*\\right\)", members)]
-    if not out:
-        raise LatexMathError(f"no member label in {members[:60]!r}")
-    return out
+    members, conds, bounds = sets[-1].args
+    if len(bounds) != 2:
+        raise LatexMathError(f"not a double index set: {bounds}")
+    uvw = sympy.Tuple(*sympy.symbols("u v w"))
+    if tuple(conds) != (sympy.Function("In")(uvw, sympy.Symbol("Omega")),):
+        raise LatexMathError(f"the domain {conds} is not (u,v,w) in Omega^alpha")
+    return [printed_sym.label_of(m) for m in (members if isinstance(members, sympy.Tuple) else [members])]
 
 
 def _require_omega(domain: str) -> None:
@@ -535,7 +532,7 @@ def levels() -> LineResult:
         m = _LEVELS.search(verbatim("sec1_3-graph-levels"))
         if not m:
             raise LatexMathError("no '$n\\geq k$ levels (numbered from $a$ to $b$)'")
-        least, lo, hi = int(m.group(1)), parse(m.group(2)), parse(m.group(3))
+        least, lo, hi = int(m.group(1)), lm.parse(m.group(2)), lm.parse(m.group(3))
         named = re.search(r"We refer to the index \$(\w)\$ of these functions as levels", verbatim("sec1_3-levels-j"))
         ends = re.search(r"shrinking from the (\w+) to their common (\w+)", verbatim("sec1_3-levels-j"))
         if not named or not ends:
@@ -717,7 +714,7 @@ def order_n3() -> LineResult:
         if not m or not cap or not t2n:
             raise LatexMathError("the subscript or the orders are not read")
         sub, order, cap_n = int(m.group(1)), int(m.group(2)), int(cap.group(1))
-        ok = sub == _env_int(parse(t2n.group(1)), n=order) and cap_n == order
+        ok = sub == _env_int(lm.parse(t2n.group(1)), n=order) and cap_n == order
     except (LatexMathError, ValueError) as exc:
         return _unread(how, exc)
     labs = united_system(order)
@@ -751,13 +748,13 @@ def _boundary(line_id: str) -> LineResult:
         found = printed_sym.set_builders_1(tex)
         if not m or not found:
             raise LatexMathError("no restriction T|_{x=a} = {..}_{i=..}^{..}")
-        t_order, var, value = parse(m.group(1)), m.group(2), parse(m.group(3))
+        t_order, var, value = lm.parse(m.group(1)), m.group(2), lm.parse(m.group(3))
         body, (iv, ilo, ihi) = found
         between = tex[m.end():tex.index(body)]
         if lm.clean(between).replace("\\{", "").strip() != "=":
             raise LatexMathError(f"the restriction and the set are not equated: {between!r}")
         member_tex, domain = body.split(":", 1)
-        member = parse(member_tex)
+        member = lm.parse(member_tex)
         arg = read_interval(domain, "")  # [0, alpha]
         dom_var = re.match(r"\s*([uvw])\s*\\in", domain)
         a_terms = [f for f in member.atoms(AppliedUndef) if f.func.__name__ == "A"]
@@ -776,7 +773,7 @@ def _boundary(line_id: str) -> LineResult:
             return LineResult(False, how=how, kind="exhaustive", detail={"order": str(t_order)})
         try:
             zero = _env_int(value, n=n) == 0
-            idx = range(_env_int(parse(ilo), n=n), _env_int(parse(ihi), n=n) + 1)
+            idx = range(_env_int(lm.parse(ilo), n=n), _env_int(lm.parse(ihi), n=n) + 1)
         except (LatexMathError, ValueError) as exc:
             return _unread(how, exc, "exhaustive")
         for _at, ha, hx in _edge_points():
@@ -1006,7 +1003,7 @@ def fourier_dimension() -> LineResult:
         members_tex, domain = body.group(1).split(":", 1)
         if "\\Omega^{\\alpha}" not in domain or not re.search(r"\\left\(\s*u,v,w\s*\\right\)\s*\\in", domain):
             raise LatexMathError("the domain is not (u,v,w) in Omega^alpha")
-        members = [parse(t.group()) for t in re.finditer(r"\\(?:cos|sin)\\left\((.*?)\\right\)", members_tex)]
+        members = [lm.parse(t.group()) for t in re.finditer(r"\\(?:cos|sin)\\left\((.*?)\\right\)", members_tex)]
         if not members or len(members) != members_tex.count(",") + 1:
             raise LatexMathError(f"members of {members_tex!r} not read")
         # the trivariate extension of the canonical basis {cos(it), sin(it)}: a cosine and a sine of one argument
@@ -1025,14 +1022,14 @@ def fourier_dimension() -> LineResult:
                          verbatim("sec1_3-abstract-same-span"))
         if not dim or not same:
             raise LatexMathError("the common dimension or the abstract's order is not read")
-        delta_printed, order = parse(dim.group(1)), parse(same.group(1))
+        delta_printed, order = lm.parse(dim.group(1)), lm.parse(same.group(1))
     except (LatexMathError, ValueError) as exc:
         return _unread(how, exc)
     detail, ok = {}, True
     for n in (1, 2, 3):
         pts = _domain_points(ALPHA_TS[0], delta(n) + 12)
         try:
-            ranges = [(_env_int(parse(a), n=n), _env_int(parse(b), n=n) + 1) for a, b in zip(los, his)]
+            ranges = [(_env_int(lm.parse(a), n=n), _env_int(lm.parse(b), n=n) + 1) for a, b in zip(los, his)]
             rows_f = _fourier_rows(members, names_, ranges, pts)
             k = _env_int(order, n=n)
             rows_a = _fourier_rows(members, names_, [(0, k + 1)] * 3, pts)
@@ -1060,7 +1057,7 @@ def univariate_span() -> LineResult:
     try:
         left, right = _single_sets(tex)
         (lb, (lv, llo, lhi), ldom), (rb, (rv, rlo, rhi), rdom) = left, right
-        lhs, member = parse(lb), parse(rb)
+        lhs, member = lm.parse(lb), lm.parse(rb)
         if (lv, llo, lhi) != (rv, rlo, rhi) or ldom != rdom or ldom[:2] != ("t", (True, 0, sympy.Symbol("alpha"),
                                                                                    True)):
             raise LatexMathError("the two sides are not on one index set and one domain t in [0, alpha]")
@@ -1075,7 +1072,7 @@ def univariate_span() -> LineResult:
         at = ALPHA_TS[0]
         ha = _half(at)
         try:
-            idx = range(_env_int(parse(rlo), n=n), _env_int(parse(rhi), n=n) + 1)
+            idx = range(_env_int(lm.parse(rlo), n=n), _env_int(lm.parse(rhi), n=n) + 1)
             if _env_int(lhs.args[0], n=n) != 2 * n:
                 raise LatexMathError("A of another order")
         except (LatexMathError, ValueError) as exc:
@@ -1188,8 +1185,8 @@ def bernstein_limit() -> LineResult:
         order = re.search(r"basis functions \(\\ref\{univariate_basis\}\) of order \$([^$]+)\$", tex)
         if not rep or not deg or not order:
             raise LatexMathError("the reparametrization, degree or order is not read")
-        t_of_s, degree, prose_point, order_n = parse(rep.group(1)), parse(deg.group(1)), parse(deg.group(2)), \
-            parse(order.group(1))
+        t_of_s, degree, prose_point, order_n = lm.parse(rep.group(1)), lm.parse(deg.group(1)), lm.parse(deg.group(2)), \
+            lm.parse(order.group(1))
         display = _display(tex, "\\begin{equation}", "\\label")
         formula = re.split(r",\s*\\,", display, maxsplit=1)[0]
         lhs, rhs = relation(formula)
@@ -1606,17 +1603,35 @@ def chain_ok(param: str, printed: tuple[int, int]) -> bool:
     return tuple(want) == direction and binom_ok
 
 
-_CHAIN_PAIR = re.compile(r"\\left\(\s*(-?1)\s*\\right\)\s*\^\{k\}.*?\\partial\s*([uvw])(?:_\{\d\})?\^\{[^{}]*-k\}\s*"
-                         r"\\partial\s*([uvw])(?:_\{\d\})?\^\{k\}", re.S)
-
-
 def read_chain(tex: str) -> tuple[int, int]:
-    """(a, b) of a printed chain rule sum_k binom (-1)^k d/da^{r-k} d/db^k, read from its transcription (variables
-    u, v, w as 0, 1, 2); a sign other than (-1)^k is unread (``ValueError``)."""
-    m = _CHAIN_PAIR.search(tex)
-    if not m or m.group(1) != "-1":
-        raise ValueError(f"no chain rule sum (-1)^k d^(r-k)/da d^k/db in {tex[:50]!r}")
-    return "uvw".index(m.group(2)), "uvw".index(m.group(3))
+    """(a, b) of a printed chain rule sum_k binom (-1)^k d/da^{r-k} d/db^k, read by
+    :func:`~paper_repro.printed.latex_math.parse_relation` (variables u, v, w -- also ``v_{1}`` -- as 0, 1, 2): the
+    first sum over k whose term has the factor (-1)^k and a derivative of orders (.. - k, k) in two variables; a
+    sign other than (-1)^k is unread (``ValueError``)."""
+    try:
+        rel = lm.parse_relation(tex)
+    except LatexMathError as exc:
+        raise ValueError(f"chain rule not read: {exc}") from None
+    for part in rel.parts:
+        for s in (x for x in sympy.preorder_traversal(part) if isinstance(x, sympy.Sum)) if part is not None else ():
+            k = s.limits[0][0]
+            factors = sympy.Mul.make_args(s.function)
+            if sympy.Pow(-1, k) not in factors:
+                continue
+            for d in sympy.preorder_traversal(s.function):
+                if isinstance(d, AppliedUndef) and d.func.__name__ == "D" and len(d.args) == 3:
+                    (a, oa), (b, ob) = d.args[1:]
+                    if ob == k and sympy.diff(oa, k) == -1:
+                        return _uvw_index(a), _uvw_index(b)
+    raise ValueError(f"no chain rule sum (-1)^k d^(r-k)/da d^k/db in {tex[:50]!r}")
+
+
+def _uvw_index(var) -> int:
+    """0, 1, 2 of a parsed variable ``u``, ``v``, ``w`` or ``v_{1}`` (``v(1)``)."""
+    name = var.name if isinstance(var, sympy.Symbol) else getattr(var.func, "__name__", "")
+    if name not in ("u", "v", "w"):
+        raise ValueError(f"{var} is not u, v or w")
+    return "uvw".index(name)
 
 
 _CHAIN_STRICT = re.compile(
@@ -1714,7 +1729,7 @@ def chain_3(override=None) -> LineResult:
     return _chain("parametrization_3_y_0", "sec1_3-chain-rule-3", override)
 
 
-def _lin(expr: str, a, x=None):
+def _lin(expr: str | sympy.Expr, a, x=None):
     """A printed bound (linear form in alpha, x; no y) at alpha = a and x."""
 
     ca, cx, cy = linear_form(expr)
@@ -1890,7 +1905,7 @@ def combination_terms(expr: sympy.Expr) -> list[tuple[list, str, sympy.Expr, sym
     :class:`LatexMathError` for a term that is anything else (a coefficient, another factor, a constant whose colour
     or indices disagree with its function's, an order other than 2n).
 
-    >>> combination_terms(parse(r"\\rho_{2n,n,n}R_{2n,n,n}^{\\alpha}\\left( u,v,w\\right) "
+    >>> combination_terms(lm.parse(r"\\rho_{2n,n,n}R_{2n,n,n}^{\\alpha}\\left( u,v,w\\right) "
     ...                         r"+\\sum_{i=1}^{n}\\gamma_{2n,2n-i,1}G_{2n,2n-i,1}^{\\alpha}\\left( x,0,y\\right)"))
     [([], 'R', n, n, (u, v, w)), ([(i, 1, n)], 'G', -i + 2*n, 1, (x, 0, y))]
     """
@@ -1974,7 +1989,7 @@ def constant_sets(tex: str, n: int) -> list[tuple[str, int, int]]:
     out: list[tuple[str, int, int]] = []
     two_n = 2 * sympy.Symbol("n")
     for seg in lm.inline_math(tex):
-        e = parse(seg)
+        e = lm.parse(seg)
         if isinstance(e, AppliedUndef) and e.func == lm.Family:
             member, conds, bounds = e.args
             if conds:
@@ -2640,7 +2655,7 @@ def bound(expr, **env: int) -> int:
 
 def _expr(expr, env: dict) -> int:
     """Integer value of a parsed index or bound (or of its LaTeX, read by :func:`parse`) at ``env``."""
-    return _int_at(parse(expr) if isinstance(expr, str) else expr, {str(k): v for k, v in env.items()})
+    return _int_at(lm.parse(expr) if isinstance(expr, str) else expr, {str(k): v for k, v in env.items()})
 
 
 def _factor_value(f, env: dict, param_index: int, pt, orders=None) -> fmpq:
@@ -2923,27 +2938,39 @@ A_SYSTEM_OF = {"sec1_3-r0-p1-A-system": "sec1_3-r0-p1-aform", "sec1_3-r0-p2-A-sy
                "sec1_3-r0-p3-A-system": "sec1_3-r0-p3-aform"}
 
 
-def read_a_system(tex: str, param_index: int) -> tuple[str, str, str]:
+def read_a_system(tex: str, param_index: int) -> tuple[sympy.Expr, sympy.Expr, sympy.Expr]:
     """(first, last, index expression k(i)) of a printed system ``\\left\\{ A_{2n,k(i)}^{\\alpha}\\left( x\\right)
-    :x\\in\\left[ 0,\\alpha\\right] \\right\\} _{i=a}^{b}``, read: the variable must be the free parameter of
-    the step's edge and the interval its printed range there; "is"/"are linearly independent" where the line
-    says it (the thin-space typo ``0\\,\\alpha`` of one line is erratum sec1_3-r0-p3-interval)."""
-    t = tex.replace("%", " ")
-    m = re.search(r"\\left\\\{\s*A_\{2n,([^{}]+)\}\^\{\\alpha\}\\left\(\s*([xy])\\right\)\s*:\s*([xy])\s*\\in\s*"
-                  r"\\left\[\s*([^,\]\\]+?)\s*(?:,|\\,)\s*([^\]]+?)\s*\\right\]\s*\\right\\\}\s*_\{i=([^{}]+)\}"
-                  r"\^\{([^{}]+)\}\$(.*)$", t)
+    :x\\in\\left[ 0,\\alpha\\right] \\right\\} _{i=a}^{b}`` (the ``$..$`` segment read by
+    :func:`~paper_repro.printed.latex_math.parse_relation`), read: the variable must be the free parameter of the
+    step's edge and the interval its printed range there; "is"/"are linearly independent" where the line says it.
+    The thin-space typo ``0\\,\\alpha`` of one line is erratum sec1_3-r0-p3-interval: its correction (the comma) is
+    applied before reading."""
+    typo = _transcribed(["sec1_3-r0-p3-interval"])["sec1_3-r0-p3-interval"]
+    t = tex.replace(typo, typo.replace("\\,", ",")) if "\\," in typo else tex
+    words, segs = lm.prose(t)
     _fmap, run, _maps, ranges = _params()[STEP_PARAMS[param_index]]
-    free = "x" if run == "y" else "y"
-    if not m or m.group(2) != free or m.group(3) != free:
-        raise ValueError(f"no system {{A_{{2n,k}}({free}) : {free} in [0, alpha]}}_{{i=a}}^{{b}} in {tex[:40]!r}")
-    if (_lin(m.group(4), 1), _lin(m.group(5), 1)) != (0, 1):
-        raise ValueError(f"the interval [{m.group(4)}, {m.group(5)}] is not [0, alpha]")
-    after = m.group(8).strip()
-    if after and not re.fullmatch(r"(is|are) linearly independent", after):
-        raise ValueError(f"not 'is linearly independent': {after!r}")
-    if re.search(r"\bdependent", t.replace("independent", "")):
+    free = sympy.Symbol("x" if run == "y" else "y")
+    unread = ValueError(f"no system {{A_{{2n,k}}({free}) : {free} in [0, alpha]}}_{{i=a}}^{{b}} in {tex[:40]!r}")
+    if not segs or not words.endswith(("$$", "$$ is linearly independent", "$$ are linearly independent")):
+        raise unread
+    try:
+        fam = lm.parse(segs[-1])
+    except LatexMathError:
+        raise unread from None
+    if not (isinstance(fam, AppliedUndef) and fam.func == lm.Family and len(fam.args[2]) == 1):
+        raise unread
+    member, conds, ((var, first, last),) = fam.args
+    if not (isinstance(member, AppliedUndef) and member.func.__name__ == "A" and len(member.args) == 3
+            and member.args[0] == 2 * sympy.Symbol("n") and member.args[2] == sympy.Tuple(free)) or \
+            var != sympy.Symbol("i") or len(conds) != 1 or conds[0].func.__name__ != "In" or conds[0].args[0] != free:
+        raise unread
+    interval = conds[0].args[1]
+    if not isinstance(interval, sympy.Interval) or interval.left_open or interval.right_open or \
+            (_lin(interval.start, 1), _lin(interval.end, 1)) != (0, 1):
+        raise ValueError(f"the interval {interval} is not [0, alpha]")
+    if re.search(r"\bdependent", t.replace("independent", "")):  # prose
         raise ValueError("'dependent'")
-    return m.group(6), m.group(7), m.group(1)
+    return first, last, member.args[1]
 
 
 def _display_a_indices(tex: str, param_index: int, n: int, r: int = 0) -> list[int]:
@@ -2973,7 +3000,7 @@ def a_independent(override: dict[str, str] | None = None) -> LineResult:
     try:
         for k, (line_id, display) in enumerate(A_SYSTEM_OF.items()):
             first_e, last_e, idx = read_a_system(texts[line_id], k)
-            ranges[line_id] = [first_e, last_e, idx]
+            ranges[line_id] = [str(first_e), str(last_e), str(idx)]
             for n in range(1, 6):
                 first, last = _expr(first_e, {"n": n}), _expr(last_e, {"n": n})
                 listed = [_expr(idx, {"n": n, "i": i}) for i in range(first, last + 1)]

@@ -18,6 +18,7 @@ from math import comb
 
 import sympy
 from flint import fmpq, fmpq_mat
+from sympy.core.function import AppliedUndef
 
 from paper_repro.claims.lines import CHECKS, LineResult, line_check
 from paper_repro.claims.lines.sec4_5 import EP, TS, Q, _texts, half_monomial
@@ -27,6 +28,7 @@ from paper_repro.core.domain import rational_alpha, sample_rational_points
 from paper_repro.core.labels import BasisLabel, exponents, index_of, united_system
 from paper_repro.core.normalization import coefficients, solve_full_exact
 from paper_repro.core.univariate import c_numerator_by_expansion
+from paper_repro.printed import latex_math as LM
 from paper_repro.printed import parsed as P
 from paper_repro.printed.latex_math import LatexMathError, Relation
 from paper_repro.printed.lines import line, lines_of, verbatim
@@ -38,25 +40,29 @@ from paper_repro.printed.lines import sec4_5 as pl
 # ---------------------------------------------------------------------------------------------------------------
 def read_weight_labels(tex: str, n: int) -> list[str]:
     """The normalizing weights named by the printed list ``r_{2n,n,n}^{\\alpha},\\left\\{ r_{2n,2n-i,j}^{\\alpha}
-    \\right\\} _{j=0,i=j}^{n-1,2n-1-j},..`` at order n, read from the transcription."""
-
-    text = tex.replace("%", " ")
-    sets = re.compile(r"\\left\\\{\s*([rgb])_\{2n,2n-i,j\}\^\{\\alpha\}\s*\\right\\\}\s*_\{j=([^,{}]+),i=([^{}]+)\}"
-                      r"\s*\^\{([^,{}]+),([^{}]+)\}")
-    out = [f"{c}_{{{2 * n},{2 * n - i},{j}}}" for c, jlo, ilo, jhi, ihi in sets.findall(text)
-           for j in range(P.bound(jlo, n=n), P.bound(jhi, n=n) + 1)
-           for i in range(P.bound(ilo, n=n, j=j), P.bound(ihi, n=n, j=j) + 1)]
-    for c, a, b in re.findall(r"(?<![\\\w{])([rgb])_\{2n,([^{}]+?),([^{}]+?)\}", sets.sub(" ", text)):
-        out.append(f"{c}_{{{2 * n},{P.bound(a, n=n)},{P.bound(b, n=n)}}}")
+    \\right\\} _{j=0,i=j}^{n-1,2n-1-j},..`` at order n: the list read by
+    :func:`~paper_repro.printed.latex_math.parse_list`, each bounded set enumerated
+    (:func:`~paper_repro.printed.parsed.members`); an item that is no weight ``r``, ``g``, ``b`` raises."""
+    out = []
+    for item in LM.parse_list(tex):
+        for w in P.members(item, n=n):
+            if not (isinstance(w, AppliedUndef) and w.func.__name__ in ("r", "g", "b") and len(w.args) == 3):
+                raise LatexMathError(f"{w} is no normalizing weight r, g, b")
+            out.append(f"{w.func.__name__}_{{{','.join(str(P.bound(a)) for a in w.args)}}}")
     return out
 
 
 @line_check("sec4_5-weights-index")
 def check_weights_index(verbatim: str | None = None) -> LineResult:
+    """The weights listed by the line (:func:`read_weight_labels`) name each coefficient of T_{2n} once, n <= 12."""
     tex = verbatim if verbatim is not None else _texts({"sec4_5-weights"})["sec4_5-weights"]
     ok = True
-    for n in range(1, 13):
-        printed = read_weight_labels(tex, n)
+    try:
+        listed = {n: read_weight_labels(tex, n) for n in range(1, 13)}
+    except (LatexMathError, ValueError, TypeError) as exc:
+        return LineResult(False, how="the printed index sets read from the transcription, n <= 12", kind="exhaustive",
+                          detail={"unread": str(exc)[:200]})
+    for n, printed in listed.items():
         ok &= len(printed) == len(set(printed)) == 3 * n * (n + 1) + 1
         ok &= set(printed) == {lab.coefficient for lab in united_system(n)}
     return LineResult(ok, how="the printed index sets (read from the transcription) against the labels of T_{2n} "
@@ -73,7 +79,16 @@ def _coef(n: int, t: fmpq, name: str) -> fmpq:
     return _full(n, t)[united_system(n)[index_of(n)[name]].coefficient]
 
 
-_POINT_ARGS = re.compile(r"\\left\(\s*(\w)\s*,\s*(\w)\s*,\s*(\w)\s*\\right\)\s*(\\in|\\notin)\s*\\Omega\^\{([^{}]*)\}")
+def _in_omega(rel) -> tuple[str, str, str]:
+    """The variables of a parsed membership ``\\left( u,v,w\\right) \\in\\Omega^{\\alpha}`` (the reader drops the
+    tag alpha; another superscript is unread); ``LatexMathError`` on anything else."""
+    parts = rel.parts if hasattr(rel, "parts") else list(rel.args)
+    ops = rel.ops if hasattr(rel, "parts") else ["in"]
+    if ops != ["in"] or len(parts) != 2 or parts[1] != sympy.Symbol("Omega") or not (
+            isinstance(parts[0], sympy.Tuple) and len(parts[0]) == 3 and
+            all(isinstance(x, sympy.Symbol) for x in parts[0])):
+        raise LatexMathError(f"not '(u,v,w) in Omega^alpha': {parts} {ops}")
+    return tuple(str(x) for x in parts[0])
 
 
 def alpha_labels(tex: str) -> list[str]:
@@ -84,12 +99,15 @@ def alpha_labels(tex: str) -> list[str]:
 
 
 def read_domain(tex: str) -> tuple[str, tuple[str, str, str]]:
-    """``for all $\\left( u,v,w\\right) \\in\\Omega^{\\alpha}$``: the quantifier words and the variables."""
-    m = _POINT_ARGS.search(tex)
-    if not m or m.group(4) != "\\in" or m.group(5).strip() != "\\alpha":
+    """``for all $\\left( u,v,w\\right) \\in\\Omega^{\\alpha}$``: the quantifier words (prose) and the variables
+    (the one ``$..$`` segment, read by :func:`~paper_repro.printed.latex_math.parse_relation`)."""
+    words, segs = LM.prose(tex)
+    if len(segs) != 1 or "$$" not in words:
         raise LatexMathError("no '(u,v,w) \\in \\Omega^{\\alpha}' read")
-    words = tex[: m.start()].replace("$", " ").split()
-    return " ".join(words[-2:]), (m.group(1), m.group(2), m.group(3))
+    rel = LM.parse_relation(segs[0])
+    if rel.conditions or rel.lead:
+        raise LatexMathError("no '(u,v,w) \\in \\Omega^{\\alpha}' read")
+    return " ".join(words.split("$$")[0].split()[-2:]), _in_omega(rel)
 
 
 def partition_terms(expr: sympy.Expr, n: int, args: sympy.Tuple) -> list[str]:
@@ -478,30 +496,35 @@ def example_heads() -> dict[int, list[str]]:
     return out
 
 
-_SYSTEM = re.compile(
-    r"\\left\.\s*\\frac\{\\partial\^\{(?P<top>[^{}]+)\}\}\{\\partial\s*(?P<var>\w)\^\{(?P<bot>[^{}]+)\}\}\s*"
-    r"L\\left\(\s*u\\left\(\s*x,y\\right\)\s*,v\\left\(\s*x,y\\right\)\s*,w\\left\(\s*x,y\\right\)\s*\\right\)\s*"
-    r"\\right\\vert\s*_\{(?P<pv>\w)=(?P<at>[^{}]+)\}%?\s*=\\delta_\{(?P<d1>\w),(?P<d2>[^{}]+)\},~\\forall\s*x\s*\\in")
-
-
 def read_system(tex: str, orders: str) -> dict:
-    """system_partition_of_unity parsed: the orders of the derivative (numerator, denominator), the variable and the
-    point of evaluation, the Kronecker delta, the quantified interval of x, and the orders ``\\forall r=..``."""
-
-    m = _SYSTEM.search(tex)
-    if not m:
+    """system_partition_of_unity parsed by :func:`~paper_repro.printed.latex_math.parse_relation`: the derivative
+    ``\\left. \\frac{\\partial^{r}}{\\partial y^{r}}L(u(x,y), v(x,y), w(x,y)) \\right\\vert_{y=0}`` (its order, the
+    variable, the point of evaluation, the arguments), the Kronecker delta ``\\delta_{r,0}``, the quantified interval of
+    x, and the orders ``\\forall r=..``."""
+    rel = LM.parse_relation(tex)
+    r_, x_, y_ = sympy.symbols("r x y")
+    if rel.ops != ["="] or rel.lead or len(rel.parts) != 2 or not isinstance(rel.parts[0], sympy.Subs):
         raise LatexMathError("d^r/dy^r L(u(x,y), v(x,y), w(x,y)) at y = .. = delta_{r,0}, forall x in .. not read")
-    r_ = sympy.Symbol("r")
-    if P.value(m.group("top")) != r_ or P.value(m.group("bot")) != r_ or m.group("var") != "y" or m.group("pv") != "y":
+    deriv, (pv,), (at,) = rel.parts[0].args
+    args = sympy.Tuple(*[sympy.Function(c)(sympy.Tuple(x_, y_)) for c in "uvw"])
+    if not (isinstance(deriv, AppliedUndef) and deriv.func.__name__ == "D" and len(deriv.args) == 2) or \
+            deriv.args[0] != sympy.Function("L")(args):
+        raise LatexMathError(f"{deriv} is not a derivative of L(u(x,y), v(x,y), w(x,y))")
+    if deriv.args[1] != sympy.Tuple(y_, r_) or pv != y_:
         raise LatexMathError("the derivative is not d^r/dy^r")
-    if P.value(m.group("at")) != 0 or m.group("d1") != "r" or P.value(m.group("d2")) != 0:
+    delta = rel.parts[1]
+    if at != 0 or not (isinstance(delta, AppliedUndef) and delta.func.__name__ == "delta") or \
+            delta.args != (r_, 0):
         raise LatexMathError("not at y = 0, or not delta_{r,0}")
-    lo, hi = P.interval(tex, "x")
+    if len(rel.conditions) != 1 or rel.conditions[0].quantifier != "forall":
+        raise LatexMathError("no quantified clause 'for all x in ..'")
+    lo, hi = P.interval(rel, "x")
     if (lo, hi) != (0, sympy.Symbol("alpha")):
         raise LatexMathError(f"x in [{lo}, {hi}], not [0, alpha]")
-    if "\\forall r" not in orders.replace("~", " ").replace("  ", " "):
+    quantified = LM.parse_relation(orders)
+    if quantified.quantifier != "forall":
         raise LatexMathError("no quantifier 'for all r'")
-    return {"orders": P.listed_range(orders, "r")}
+    return {"orders": P.listed_range(quantified, "r")}
 
 
 @line_check("sec4_5-system")
@@ -1041,6 +1064,21 @@ def blending_centre_holds(tex: str, n: int) -> bool:
     return all(len({value(e, p) for e in rel.parts}) == 1 for p in range(len(pts)))
 
 
+def _weight_of(member, **env: int) -> str:
+    """``r_{4,3,0}``: the weight of the parsed normalized function ``Rbar(2n, 2n-i, j, (u, v, w))`` at ``env``."""
+    return f"{member.func.__name__[0].lower()}_{{{','.join(str(P.bound(a, **env)) for a in member.args[:-1])}}}"
+
+
+def _the_set(tex: str):
+    """The one set ``\\left\\{ .. : .. \\right\\}`` of a row of Definition normalized_united_system (parsed; the
+    row ``\\overline{T}_{2n}^{\\alpha} = \\{..\\}_{..}^{..}`` or ``\\cup\\{..\\}``)."""
+    found = [x for part in LM.parse_relation(tex).parts if part is not None
+             for x in sympy.preorder_traversal(part) if isinstance(x, AppliedUndef) and x.func == LM.Family]
+    if len(found) != 1:
+        raise LatexMathError(f"{len(found)} sets in {tex[:50]!r}")
+    return found[0]
+
+
 @line_check("sec4_5-blending-def")
 def check_blending_def(override: dict[str, str] | None = None) -> LineResult:
     """The index set of the normalized system (read from the transcription of its first row) names the non-central
@@ -1065,26 +1103,34 @@ def check_blending_def(override: dict[str, str] | None = None) -> LineResult:
         for key in ("sec4_5-blending-set", "sec4_5-blending-centre-set", "sec4_5-blending-centre"):
             if any(x != "\\alpha" for x in alpha_labels(texts[key])):
                 raise LatexMathError(f"{key}: superscripts {alpha_labels(texts[key])}")
-        for key in ("sec4_5-blending-set", "sec4_5-blending-centre-set"):
-            m = _POINT_ARGS.search(texts[key])
-            if not m or m.group(4) != "\\in" or (m.group(1), m.group(2), m.group(3)) != ("u", "v", "w"):
+        sets = {key: _the_set(texts[key]) for key in ("sec4_5-blending-set", "sec4_5-blending-centre-set")}
+        for key, fam in sets.items():
+            if len(fam.args[1]) != 1 or _in_omega(fam.args[1][0]) != ("u", "v", "w"):
                 raise LatexMathError(f"{key}: no ': (u,v,w) \\in \\Omega^{{\\alpha}}' read")
         centre_ok = all(blending_centre_holds(texts[key], n) for n in (1, 2, 3)
                         for key in ("sec4_5-blending-centre", "sec4_5-blending-centre-set"))
     except (LatexMathError, ValueError, TypeError) as exc:
         return LineResult(False, how="the normalized system read from the transcriptions", kind="exhaustive",
                           detail={"unread": str(exc)[:200]})
-    colours = re.findall(r"\\overline\{([RGB])\}_\{2n,2n-i,j\}", texts["sec4_5-blending-set"])
-    centre_names = re.findall(r"\\overline\{([RGB])\}%?\s*_\{2n,n,n\}", texts["sec4_5-blending-centre-set"])
+    # the members of each set (parsed): normalized functions X-bar applied to (u, v, w)
+    listed = sets["sec4_5-blending-set"].args[0]
+    members = list(listed) if isinstance(listed, sympy.Tuple) else [listed]
+    centre_members = sorted(sets["sec4_5-blending-centre-set"].args[0].atoms(AppliedUndef), key=str)
+    normalized = [m for m in members + centre_members if m.func.__name__ in ("Rbar", "Gbar", "Bbar")
+                  and len(m.args) == 4 and m.args[-1] == sympy.Tuple(*sympy.symbols("u v w"))]
+    colours = [m.func.__name__[0] for m in members if m in normalized]
+    centre_names = [m.func.__name__[0] for m in centre_members if m in normalized]
     ok = (jv, iv) == ("j", "i") and sorted(colours) == ["B", "G", "R"] and sorted(centre_names) == ["B", "G", "R"]
-    ok &= centre_ok
-    for n in range(1, 9):
-        named = sorted(f"{x.lower()}_{{{2 * n},{2 * n - i},{j}}}" for x in colours
+    ok &= len(normalized) == len(members) + len(centre_members) and centre_ok
+    for n in range(1, 9) if ok else ():
+        named = sorted(_weight_of(m, n=n, i=i, j=j) for m in members
                        for j in range(bound(jlo, n=n), bound(jhi, n=n) + 1)
                        for i in range(bound(ilo, n=n, j=j), bound(ihi, n=n, j=j) + 1))
         ok &= named == sorted(lab.coefficient for lab in united_system(n) if not lab.is_centre)
-        centre = [exponents(BasisLabel(X, n, n, n)) for X in centre_names]
-        ok &= len(set(centre)) == 1
+        # X-bar_{2n,a,b}: the label of T_{2n} with i = 2n - a, j = b (Definition normalized_united_system)
+        centre = [exponents(BasisLabel(m.func.__name__[0], n, 2 * n - P.bound(m.args[1], n=n), P.bound(m.args[2], n=n)))
+                  for m in centre_members]
+        ok &= len(set(centre)) == 1 and all(P.bound(m.args[0], n=n) == 2 * n for m in centre_members)
     return LineResult(ok, how="index set and centre read from the transcriptions vs the labels of T_{2n} (n <= 8); "
                       "R_{2n,n,n}, G_{2n,n,n}, B_{2n,n,n} have the same exponent vector", kind="exhaustive",
                       detail={"n_max": 8})

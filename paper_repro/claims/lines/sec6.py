@@ -316,10 +316,21 @@ def delta3(verbatim: str | None = None) -> LineResult:
     """delta_3 = 37 control points (order and count read from the transcription) against the terms of eq.
     triangular_trig_surface (read) and T_6."""
     tex = _LINE["sec6-delta3"].verbatim if verbatim is None else verbatim
-    m = re.search(r"\\delta_\{(\d+)\}=(\d+)", tex)
-    if not m:
+    from paper_repro.printed.latex_math import inline_math, parse_relation
+
+    found = []
+    for seg in inline_math(tex):  # the count: a segment delta_{n}=count (read by the one reader)
+        try:
+            rel = parse_relation(seg)
+        except ValueError:
+            continue
+        head = rel.parts[0]
+        if rel.ops == ["="] and not rel.conditions and getattr(head.func, "__name__", "") == "delta" and \
+                len(head.args) == 1 and head.args[0].is_Integer and rel.parts[1].is_Integer:
+            found.append((int(head.args[0]), int(rel.parts[1])))
+    if not found:
         return LineResult(False, how="the count read from the transcription", detail={"unread": tex[:60]})
-    n, count = int(m.group(1)), int(m.group(2))
+    n, count = found[0]
     order = re.search(r"illustrates a (\w+) order triangular trigonometric\s+patch defined by", tex)
     said = ORDINALS.get(order.group(1)) if order else None
     terms = len(patch_terms_read(n))
@@ -357,13 +368,19 @@ def _points(alpha: RationalAngle, count: int, seed: int) -> RationalPoints:
 
 
 def read_open_interval(tex: str, var: str) -> tuple[sympy.Expr, sympy.Expr]:
-    """``(lo, hi)`` of ``var \\in \\left(lo,hi\\right)`` in ``tex`` (parsed)."""
-    from paper_repro.printed.parsed import expression
+    """``(lo, hi)`` of the clause ``var \\in \\left(lo,hi\\right)`` of ``tex`` (each ``$..$`` segment read by
+    :func:`paper_repro.printed.latex_math.parse_conditions`; the reader's pair after ``\\in`` is the open
+    interval); ``ValueError`` if there is none."""
+    from paper_repro.printed.latex_math import parse
+    from paper_repro.printed.parsed import clauses
 
-    m = re.search(rf"{re.escape(var)}\s*\\in\s*\\left\(([^,]*),([^,]*?)\\right\)", tex)
-    if not m:
-        raise ValueError(f"no open interval {var} in (lo, hi) in {tex[:50]!r}")
-    return expression(m.group(1)), expression(m.group(2))
+    sym = parse(var)
+    for c in clauses(tex):
+        right = c.parts[-1]
+        if c.ops == ["in"] and c.parts[0] == sym and isinstance(right, sympy.Tuple) and len(right) == 2 and \
+                all(isinstance(x, sympy.Expr) for x in right):
+            return right[0], right[1]
+    raise ValueError(f"no open interval {var} in (lo, hi) in {tex[:50]!r}")
 
 
 #: cos(alpha/2) of the sampled alphas (rational, so everything below is exact): alpha = 2 acos(c) from 0.57 to 5.7
@@ -1074,18 +1091,23 @@ def ring_torus_regular(rho: fmpq, mu: fmpq) -> bool:
     return 0 < mu < rho and torus_quartic(0, 0, 0, rho, mu) > 0 and rho - mu > 0
 
 
-_MU_RANGE = re.compile(r"^of radius \$\\mu\\in\\left([(\[])(.*?),(.*?)\\right([)\]])\$$", re.S)
-
-
 def mu_range_is_ring(tex: str | None) -> bool:
-    """The range of mu in ``tex`` (parsed: brackets and end points; each symbol must be a parameter of eq.
-    toroidal_triangle) is exactly the set of mu giving a ring torus, tested at mu = k/10 varrho, k = 0..14."""
-    from paper_repro.printed.parsed import VARRHO, expression
+    """The range of mu in ``tex`` (the words 'of radius' and one ``$..$`` segment ``\\mu\\in`` an interval, read by
+    :func:`~paper_repro.printed.latex_math.parse_relation`: brackets and end points; each symbol must be a parameter
+    of eq. toroidal_triangle) is exactly the set of mu giving a ring torus, tested at mu = k/10 varrho, k = 0..14."""
+    from paper_repro.printed.latex_math import parse_relation, prose
+    from paper_repro.printed.parsed import MU, VARRHO
 
-    m = _MU_RANGE.match(tex or "")
-    if not m:
+    words, segs = prose(tex or "")
+    if words != "of radius $$" or len(segs) != 1:
         return False
-    lo, hi = expression(m.group(2)), expression(m.group(3))
+    rel = parse_relation(segs[0])
+    right = rel.parts[-1]
+    if isinstance(right, sympy.Tuple) and len(right) == 2:  # the reader's pair (a, b): after \in the open interval
+        right = sympy.Interval.open(*right)
+    if rel.ops != ["in"] or rel.conditions or rel.lead or rel.parts[0] != MU or not isinstance(right, sympy.Interval):
+        return False
+    lo, hi, left_open, right_open = right.args
     params = {str(p) for p in read_torus_parametrization()["params"]}
     if not {str(s) for s in lo.free_symbols | hi.free_symbols} <= params:
         return False
@@ -1100,7 +1122,7 @@ def mu_range_is_ring(tex: str | None) -> bool:
     a, b = num(lo), num(hi)
     for k in range(15):
         mu = rho * fmpq(k, 10)
-        inside = (a < mu if m.group(1) == "(" else a <= mu) and (mu < b if m.group(4) == ")" else mu <= b)
+        inside = (a < mu if left_open else a <= mu) and (mu < b if right_open else mu <= b)
         if inside != ring_torus_regular(rho, mu):
             return False
     return True
@@ -1265,43 +1287,28 @@ def fig_torus_settings() -> LineResult:
 # --- Section 6.2: rational patches ---------------------------------------------------------------------------
 @line_check("sec6-weights-set")
 def weights_set(verbatim: str | None = None) -> LineResult:
-    """The weights rho_{2n,n,n} and the three printed sets of weights (each set's bounds read by
-    :func:`paper_repro.printed.latex_math.index_set`, the lone weight by :func:`~paper_repro.printed.latex_math.parse`)
-    name each function of T_{2n} once, n = 1..12."""
-    from paper_repro.printed.latex_math import index_set, parse
+    """The weights rho_{2n,n,n} and the three printed sets of weights (the list read by
+    :func:`paper_repro.printed.latex_math.parse_list`: a weight and bounded sets, each set over (j, i) enumerated by
+    :func:`~paper_repro.printed.parsed.members`) name each function of T_{2n} once, n = 1..12."""
+    from paper_repro.printed.latex_math import Family, parse_list
+    from paper_repro.printed.parsed import members
 
     tex = _LINE["sec6-weights-set"].verbatim if verbatim is None else verbatim
-    parts = [p for p in re.split(r",(?=\\left\\\{)|%\n,", tex.replace("%\n,", ",")) if p.strip(" %\n")]
-    sets: list[tuple] = []
     try:
-        for part in parts:
-            m = re.match(r"\s*\\left\\\{\s*\\(rho|gamma|beta)_\{2n,2n-i,j\}\\right\\\}", part)
-            if m:
-                (jv, jlo, jhi), (iv, ilo, ihi) = index_set(part)
-                if (str(jv), str(iv)) != ("j", "i"):
-                    raise ValueError(f"index set over {jv}, {iv}")
-                sets.append((_WEIGHT_OF[m.group(1)], jlo, jhi, ilo, ihi))
-            else:
-                w = parse(part.strip(" ,%\n"))
-                if type(w).__name__ not in _WEIGHT_OF or len(w.args) != 3:
-                    raise ValueError(f"not a weight: {part!r}")
-                sets.append((_WEIGHT_OF[type(w).__name__], w.args))
+        items = parse_list(tex)
+        for item in items:
+            if isinstance(item, sympy.core.function.AppliedUndef) and item.func == Family:
+                if [str(b[0]) for b in item.args[2]] != ["j", "i"]:
+                    raise ValueError(f"index set over {[str(b[0]) for b in item.args[2]]}")
+                item = item.args[0]
+            if type(item).__name__ not in _WEIGHT_OF or len(item.args) != 3:
+                raise ValueError(f"not a weight: {item}")
     except ValueError as exc:
         return LineResult(False, how="the weights read from the transcription", detail={"unread": str(exc)[:80]})
 
     def names(n: int) -> list[str]:
-        out = []
-        for item in sets:
-            if len(item) == 2:
-                a, b, c = (sympy.sympify(x).subs(N_SYM, n) for x in item[1])
-                out.append(f"{item[0].lower()}_{{{a},{b},{c}}}")
-                continue
-            colour, jlo, jhi, ilo, ihi = item
-            J = sympy.Symbol("j")
-            for j in range(int(jlo.subs(N_SYM, n)), int(jhi.subs(N_SYM, n)) + 1):
-                for i in range(int(ilo.subs({N_SYM: n, J: j})), int(ihi.subs({N_SYM: n, J: j})) + 1):
-                    out.append(f"{colour.lower()}_{{{2 * n},{2 * n - i},{j}}}")
-        return out
+        return [f"{_WEIGHT_OF[type(w).__name__].lower()}_{{{','.join(str(a) for a in w.args)}}}"
+                for item in items for w in members(item, n=n)]
 
     got = {n: names(n) for n in NS}
     ok = all(matches_basis(v, n) for n, v in got.items())
@@ -1730,17 +1737,24 @@ def dupin_rational_patches() -> LineResult:
 
 
 def phase_intervals() -> list[tuple[sympy.Expr, sympy.Expr]]:
-    """``[(lo, hi) of varphi, (lo, hi) of psi]`` read from "$\\left(\\varphi,\\psi\\right) \\in [..]\\times[..]$"."""
-    from paper_repro.printed.parsed import expression
+    """``[(lo, hi) of varphi, (lo, hi) of psi]`` read from "$\\left(\\varphi,\\psi\\right) \\in [..]\\times[..]$": the
+    words by :func:`~paper_repro.printed.latex_math.prose`, the segment by ``parse_relation`` (a ``ProductSet`` of two
+    closed intervals)."""
+    from paper_repro.printed.latex_math import parse_relation, prose
+    from paper_repro.printed.parsed import PSI, VARPHI
 
-    tex = _LINE["sec6-dupin-phases"].verbatim
-    m = re.match(r"^while phase changes \$\\left\(\s*\\varphi,\\psi\\right\)\s*\\in\\left\[(.*?),(.*?)\\right\]"
-                 r"\\times\\left\[(.*?),(.*?)\\right\]\s*\$ are free design parameters that can be used to\s+slide "
-                 r"the patch on the cyclide\.$", tex)
-    if not m:
-        raise ValueError(f"phases not read: {tex[:60]!r}")
-    lo1, hi1, lo2, hi2 = (expression(x) for x in m.groups())
-    return [(lo1, hi1), (lo2, hi2)]
+    words, segs = prose(_LINE["sec6-dupin-phases"].verbatim)
+    unread = ValueError(f"phases not read: {_LINE['sec6-dupin-phases'].verbatim[:60]!r}")
+    if words != "while phase changes $$ are free design parameters that can be used to slide the patch on the " \
+                "cyclide." or len(segs) != 1:
+        raise unread
+    rel = parse_relation(segs[0])
+    box = rel.parts[-1]
+    if rel.ops != ["in"] or rel.conditions or rel.parts[0] != sympy.Tuple(VARPHI, PSI) or \
+            not isinstance(box, sympy.ProductSet) or len(box.sets) != 2 or \
+            not all(isinstance(x, sympy.Interval) and not x.left_open and not x.right_open for x in box.sets):
+        raise unread
+    return [(x.start, x.end) for x in box.sets]
 
 
 @line_check("sec6-dupin-phases")
@@ -1790,23 +1804,22 @@ def collapsed_circle(xyz, a, b, c, mu) -> bool:
                    for pts in circles)
 
 
-_DUPIN_CONDITIONS = re.compile(r"^where parameters \$a\$, \$b\$, \$c\$ and \$\\mu\$ have to fulfill the conditions "
-                               r"\$([^$]*)\$ and \$([^$]*)\$$")
-
-
 def dupin_conditions_hold(tex: str | None) -> tuple[bool, dict]:
-    """The two conditions read from ``tex``: the equation holds exactly for the (a, b, c) whose cyclide (eq.
+    """The two conditions read from ``tex`` (its words, and its ``$..$`` segments by the one reader: the parameters
+    a, b, c, mu, then the equation and the chain): the equation holds exactly for the (a, b, c) whose cyclide (eq.
     Dupin_in_3d, read) lies on the quartic (tested on 5 triples); the chain holds exactly for the mu that give a
     ring cyclide -- no parameter circle collapses (tested at 13 mu for two triples)."""
+    from paper_repro.printed.latex_math import parse, prose
     from paper_repro.printed.parsed import MU, chain, relation_holds
     from paper_repro.printed.parsed import A as SA
     from paper_repro.printed.parsed import B as SB
     from paper_repro.printed.parsed import C as SC
 
-    m = _DUPIN_CONDITIONS.match(tex or "")
-    if not m:
+    words, segs = prose(tex or "")
+    if words != "where parameters $$, $$, $$ and $$ have to fulfill the conditions $$ and $$" or \
+            [parse(x) for x in segs[:4]] != [SA, SB, SC, MU]:
         return False, {"unread": (tex or "")[:60]}
-    eq, chain = chain(m.group(1)), chain(m.group(2))
+    eq, chain = chain(segs[4]), chain(segs[5])
     xyz = read_dupin()["xyz"]
 
     def sub(rel, a, b, c, mu):

@@ -740,16 +740,15 @@ def check_same_patch() -> LineResult:
 
 @line_check("sec7-elev-index-sets")
 def check_elev_index_sets() -> LineResult:
-    import re
-
-    tex = VERBATIM["sec7-elev-index-sets"]
-    sets = re.findall(r"\\mathbf\{([rgb])\}_\{4,4-i,j\}\}\s*\\right\\\}\s*_\{j=(\d+),i=j\}\^\{(\d+),(\d+)-j\}", tex)
-    centre = re.match(r"\\mathbf\{([rgb])\}_\{(\d+),(\d+),(\d+)\},", layout_free(tex))
-    if not centre:
+    """The printed list ``\\mathbf{r}_{4,2,2}, \\left\\{ \\mathbf{r}_{4,4-i,j}\\right\\} _{j=0,i=j}^{1,3-j}, ..``
+    read by :func:`~paper_repro.printed.latex_math.parse_list` (a point and three bounded sets of points), each set
+    enumerated (:func:`~paper_repro.printed.parsed.members`): the names of the control points of order 2, each
+    once."""
+    items = LM.parse_list(VERBATIM["sec7-elev-index-sets"])
+    sets = [x for x in items if isinstance(x, AppliedUndef) and x.func == LM.Family]
+    if not items or items[0] in sets:
         raise ValueError("unread first point")
-    labs = [f"{centre.group(1)}_{{{centre.group(2)},{centre.group(3)},{centre.group(4)}}}"]
-    labs += [f"{col}_{{4,{4 - i},{j}}}" for col, jlo, jhi, top in sets
-             for j in range(int(jlo), int(jhi) + 1) for i in range(j, int(top) - j + 1)]
+    labs = [P.point_label(p) for item in items for p in P.members(item)]
     ok = len(sets) == 3 and sorted(labs) == _point_names(2)
     return LineResult(ok, kind="proof", how="printed point and index sets enumerated and compared with the names of "
                       "the control points of order 2 (each once)",
@@ -757,9 +756,9 @@ def check_elev_index_sets() -> LineResult:
 
 
 def _listed_points(tex: str) -> list[str]:
-    """Names of the bold control points listed in ``tex`` (``,`` separated), in order."""
-    return [f"{m.group(1)}_{{{m.group(2)},{m.group(3)},{m.group(4)}}}" for m in
-            re.finditer(r"\\mathbf\{([rgb])\}_\{(\d+),(\d+),(\d+)\}", layout_free(tex))]
+    """Names of the bold control points listed in ``tex`` (its displayed list, read by
+    :func:`~paper_repro.printed.latex_math.parse_list`), in order; ``ValueError`` on an item that is no point."""
+    return [P.point_label(p) for p in LM.parse_list(tex)]
 
 
 @line_check("sec7-elev-convex")
@@ -1069,19 +1068,32 @@ def check_degenerate_bernstein() -> LineResult:
 
 def bernstein_definition() -> dict:
     """The caption's definition read: ``P^{m}_{d,e,f}`` (degree symbol, index symbols), the formula (sympy), the
-    words 'of degree $m$', and the index set ``d,e,f \\in \\{0,1,\\ldots,m\\}`` 'such that' ``d+e+f=m``."""
-    t = VERBATIM["sec7-fig-limit-caption-bernstein"]
-    m = re.fullmatch(r"\(\$P\^\{(\w)\}_\{(\w),(\w),(\w)\}\$ denotes the constrained trivariate Bernstein "
-                     r"polynomial \$([^$]+)\$ of degree \$([^$]+)\$", re.sub(r"\s+", " ", t))
-    if not m:
+    words 'of degree $m$', and the index set ``d,e,f \\in \\{0,1,\\ldots,m\\}`` 'such that' ``d+e+f=m``, each
+    ``$..$`` segment read by :mod:`~paper_repro.printed.latex_math` (a listed subject in a listed set; the
+    superscript of ``P^{m}_{d,e,f}`` printed before its subscript)."""
+    words, segs = LM.prose(VERBATIM["sec7-fig-limit-caption-bernstein"])
+    if words != "($$ denotes the constrained trivariate Bernstein polynomial $$ of degree $$" or len(segs) != 3:
         raise ValueError("unread definition")
-    u = layout_free(VERBATIM["sec7-fig-limit-caption-indices"].replace("such that", "@"))
-    mi = re.fullmatch(r"\$(\w),(\w),(\w)\\in\\\{([^}]*)\\\}\$@\$([^$=]+)=([^$=]+)\$", u)
-    if not mi:
+    name = LM.parse(segs[0])
+    if not (isinstance(name, AppliedUndef) and name.func.__name__ == "P_sup" and len(name.args) == 4
+            and all(isinstance(a, sympy.Symbol) for a in name.args)):
+        raise ValueError(f"unread P^{{m}}_{{d,e,f}}: {name}")
+    words, segs_i = LM.prose(VERBATIM["sec7-fig-limit-caption-indices"])
+    if words != "$$ such that $$" or len(segs_i) != 2:
         raise ValueError("unread index set")
-    return {"degree": m.group(1), "indices": m.group(2, 3, 4), "formula": read_expression(m.group(5)),
-            "degree_words": read_expression(m.group(6)), "set_vars": mi.group(1, 2, 3), "set": mi.group(4).split(","),
-            "constraint": (read_expression(mi.group(5)), read_expression(mi.group(6)))}
+    member = LM.parse_relation(segs_i[0])
+    listed = member.parts[-1] if len(member.parts) == 2 else None
+    if member.ops != ["in"] or member.conditions or not isinstance(member.parts[0], sympy.Tuple) or not (
+            isinstance(listed, AppliedUndef) and listed.func == LM.Family and not listed.args[1]
+            and not listed.args[2] and isinstance(listed.args[0], sympy.Tuple)):
+        raise ValueError("unread index set")
+    constraint = _relation(segs_i[1])
+    for e in (*member.parts[0], *listed.args[0], *constraint.parts):
+        P.within(e, NAMES + ("ldots",))
+    return {"degree": str(name.args[3]), "indices": tuple(str(a) for a in name.args[:3]),
+            "formula": read_expression(segs[1]), "degree_words": read_expression(segs[2]),
+            "set_vars": tuple(str(a) for a in member.parts[0]), "set": list(listed.args[0]),
+            "constraint": tuple(constraint.parts)}
 
 
 @line_check("sec7-bernstein-definition")

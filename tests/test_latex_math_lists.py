@@ -1,0 +1,112 @@
+"""The constructs the reader of the paper's mathematics gained when the last formula-reading regular expressions of
+the checks were folded into it (issue 37, item 1): lists of items (names, control points, bounded sets), a listed
+subject of a membership, a superscript printed before the subscript, the prose frame of a line, and the members a
+bounded set names.
+
+Expected values are written by hand from the paper (the weights of Section 5, the control points of order 2 in
+Section 7, the caption of Figure fig:limit), never copied from the reader's output."""
+
+from __future__ import annotations
+
+import pytest
+import sympy
+from sympy import Function, Symbol, Tuple
+
+from paper_repro.printed import parsed as P
+from paper_repro.printed.latex_math import (
+    LDOTS,
+    Family,
+    LatexMathError,
+    parse,
+    parse_list,
+    parse_relation,
+    prose,
+)
+from paper_repro.printed.lines import verbatim
+
+n, i, j, d, e, f, m, x = sympy.symbols("n i j d e f m x")
+ALPHA = Symbol("alpha")
+r_, g_, b_ = Function("r"), Function("g"), Function("b")
+r_vec, g_vec, b_vec = Function("r_vec"), Function("g_vec"), Function("b_vec")
+
+
+# -- a list of items whose relations sit inside groups -------------------------------------------------------------
+def test_weights_list_is_a_name_and_three_bounded_sets():
+    """Section 5 (partition_of_unity): the weights r_{2n,n,n}, {r_{2n,2n-i,j}}, {g..}, {b..} over j = 0..n-1,
+    i = j..2n-1-j: the = of the bounds is no relation of the list."""
+    items = parse_list(verbatim("sec4_5-weights"))
+    bounds = Tuple(Tuple(j, 0, n - 1), Tuple(i, j, 2 * n - 1 - j))
+    assert items == [r_(2 * n, n, n), Family(r_(2 * n, 2 * n - i, j), Tuple(), bounds),
+                     Family(g_(2 * n, 2 * n - i, j), Tuple(), bounds), Family(b_(2 * n, 2 * n - i, j), Tuple(), bounds)]
+
+
+def test_weights_at_order_one_are_the_seven_of_T2():
+    """n = 1: r_{2,1,1}, and for j = 0, i = 0, 1 the weights x_{2,2,0}, x_{2,1,0} of each colour: 7 = 3n(n+1)+1."""
+    named = [w for item in parse_list(verbatim("sec4_5-weights")) for w in P.members(item, n=1)]
+    assert named == [r_(2, 1, 1), r_(2, 2, 0), r_(2, 1, 0), g_(2, 2, 0), g_(2, 1, 0), b_(2, 2, 0), b_(2, 1, 0)]
+
+
+def test_control_points_of_order_two_listed_by_sets():
+    """Section 7 (elevation example): r_{4,2,2} and {r_{4,4-i,j}}_{j=0,i=j}^{1,3-j} (and g, b): j = 0 gives
+    i = 0..3, j = 1 gives i = 1..2; 1 + 3 * 6 = 19 = delta_2 points."""
+    items = parse_list(verbatim("sec7-elev-index-sets"))
+    assert items[0] == r_vec(4, 2, 2)
+    assert P.members(items[1]) == [r_vec(4, 4, 0), r_vec(4, 3, 0), r_vec(4, 2, 0), r_vec(4, 1, 0),
+                                   r_vec(4, 3, 1), r_vec(4, 2, 1)]
+    assert sum(len(P.members(it)) for it in items) == 19
+
+
+def test_a_displayed_list_after_prose():
+    """A prose line with a displayed list: the list of sec7-elev-convex, the 7 control points of order 1."""
+    assert parse_list(verbatim("sec7-elev-convex")) == [r_vec(2, 1, 1), r_vec(2, 2, 0), r_vec(2, 1, 0), g_vec(2, 2, 0),
+                                                        g_vec(2, 1, 0), b_vec(2, 2, 0), b_vec(2, 1, 0)]
+
+
+def test_one_item_and_refusals():
+    assert parse_list(r"\mathbf{r}_{2,1,1}") == [r_vec(2, 1, 1)]
+    with pytest.raises(LatexMathError):  # a listed range is a relation, not a list of items
+        parse_list(r"i=0,1,\ldots,n")
+    with pytest.raises(LatexMathError):  # a blank line
+        parse_list("XXX")
+    with pytest.raises(ValueError):  # a set with a condition names no members
+        P.members(parse(r"\left\{ A_{2n,2n-i}^{\alpha}\left( x\right) :x\in\left[ 0,\alpha\right] \right\}"
+                        r" _{i=0}^{2n}"), n=1)
+
+
+# -- a listed subject of a membership --------------------------------------------------------------------------------
+def test_listed_subject_in_a_listed_set():
+    """Figure fig:limit's caption: d, e, f in {0, 1, ..., m} -- each of the three is in the set."""
+    rel = parse_relation(r"d,e,f\in\left\{0,1,\ldots,m\right\}")
+    assert rel.ops == ["in"]
+    assert rel.parts == [Tuple(d, e, f), Family(Tuple(0, 1, LDOTS, m), Tuple(), Tuple())]
+
+
+def test_listed_signs_of_the_product_rules():
+    """Section 4 (the signs s_2, s_3, s_4 in {-1, +1}): the three signs are the subject."""
+    rel = parse_relation(r"s_{2},s_{3},s_{4}\in\left\{ -1,+1\right\}")
+    s = Function("s")
+    assert rel.parts[0] == Tuple(s(2), s(3), s(4)) and rel.ops == ["in"]
+
+
+def test_one_item_before_a_membership_stays_an_expression_and_its_clause():
+    """``X, x\\in S`` is the paper's 'X for x in S': not a listed subject."""
+    rel = parse_relation(r"A_{2n,i}^{\alpha}\left( x\right) ,~x\in\left[ 0,\alpha\right]")
+    assert rel.parts == [Function("A")(2 * n, i, Tuple(x))]
+    assert rel.conditions[0].parts == [x, sympy.Interval(0, ALPHA)]
+
+
+# -- a superscript printed before the subscript ----------------------------------------------------------------------
+def test_superscript_first():
+    """P^{m}_{d,e,f} (caption of fig:limit) is P_{d,e,f}^{m}: the Bernstein polynomial of degree m."""
+    assert parse(r"P^{m}_{d,e,f}") == parse(r"P_{d,e,f}^{m}") == Function("P_sup")(d, e, f, m)
+    assert parse(r"P^{\alpha}_{d,e,f}") == Function("P")(d, e, f)  # the tag alpha, as after the subscript
+    with pytest.raises(LatexMathError):
+        parse(r"P^{m}")
+
+
+# -- the prose frame -------------------------------------------------------------------------------------------------
+def test_prose_frame():
+    words, segs = prose("where parameters $a$, $b$, $c$ and $\\mu$ have to fulfill the conditions\n"
+                        "$a^{2}=b^{2}+c^{2}$ and $c<\\mu\\leq a$")
+    assert words == "where parameters $$, $$, $$ and $$ have to fulfill the conditions $$ and $$"
+    assert segs == ["a", "b", "c", "\\mu", "a^{2}=b^{2}+c^{2}", "c<\\mu\\leq a"]
