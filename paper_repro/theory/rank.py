@@ -1,6 +1,8 @@
 """Rank of collocation matrices: high precision (singular values) and exact (modulo a prime).
 
 * :func:`mp_singular_values` -- mpmath SVD at a given precision;
+* :func:`collocation_singular_values` -- the same for a normalized collocation matrix, memoised on disk (shared by a
+  claim and a figure);
 * :func:`ball_sigma_min_bound` -- certified lower bound of sigma_min (and upper bound of the
   condition number) from the inverse in flint ball arithmetic, used where mpmath SVD is slow;
 * :func:`numeric_rank` -- rank by the gap criterion: sigma_i counts if ``sigma_i > sigma_1 * 10^-(dps-10)``
@@ -23,6 +25,45 @@ def mp_singular_values(a: np.ndarray, dps: int) -> list[mpmath.mpf]:
     with mpmath.workdps(dps):
         s = mpmath.svd_r(mpmath.matrix(a.tolist()), compute_uv=False)
         return sorted((s[k] for k in range(len(s))), reverse=True)
+
+
+def _exact_pairs(count: int):
+    """A validator of stored singular values: ``count`` pairs ``[mantissa as decimal text, exponent]``."""
+    def check(value) -> str | None:
+        if not isinstance(value, list) or len(value) != count:
+            return f"not a list of {count} singular values"
+        for m, e in value:
+            if not isinstance(m, str) or not m.lstrip("-").isdigit() or isinstance(e, bool) or not isinstance(e, int):
+                return f"{[m, e]!r} is not [mantissa text, integer exponent]"
+        return None
+
+    return check
+
+
+def collocation_singular_values(n: int, alpha_text: str, dps: int, seed: int,
+                                control: bool = False) -> list[mpmath.mpf]:
+    """``mp_singular_values(collocation_mp(n, alpha_text, dps, seed, control), dps)``, memoised on disk: claim
+    ``linear_independence`` and the figure ``singular_values`` ask for the same matrices (n <= 4 at alpha = pi/6 and
+    5pi/6, 50 digits, seed 5), so a run computes them once.  Stored exactly (mantissa and exponent of each mpf) and
+    keyed by the code fingerprint as well as the parameters, so a stored value is the one this code computes.
+
+    >>> from paper_repro.core.normalization import collocation_mp
+    >>> fresh = mp_singular_values(collocation_mp(1, "pi/3", 30, 5), 30)
+    >>> [s._mpf_ for s in collocation_singular_values(1, "pi/3", 30, 5)] == [s._mpf_ for s in fresh]
+    True
+    """
+    from paper_repro.core.labels import delta
+    from paper_repro.core.normalization import collocation_mp
+    from paper_repro.util.cache import cached, code_fingerprint
+
+    def compute() -> list[list]:
+        sv = mp_singular_values(collocation_mp(n, alpha_text, dps, seed, control), dps)
+        return [[str(m), int(e)] for m, e in (s.man_exp for s in sv)]
+
+    params = {"n": n, "alpha": alpha_text, "dps": dps, "seed": seed, "control": control, "code": code_fingerprint()}
+    stored = cached("collocation_singular_values", params, compute, validate=_exact_pairs(delta(n)))
+    with mpmath.workdps(dps):  # the working precision of the SVD: every stored mantissa fits, the values are exact
+        return [mpmath.mpf((int(m), e)) for m, e in stored]
 
 
 def numeric_rank(sv: list[mpmath.mpf], dps: int) -> int:
