@@ -1,5 +1,6 @@
 import mpmath
 import numpy as np
+import pytest
 from flint import fmpq
 from hypothesis import given
 from hypothesis import strategies as st
@@ -32,8 +33,13 @@ def test_numeric_rank_gap_criterion_and_control():
         assert numeric_rank(mp_singular_values(a, 40), 40) == 6
         a[:, 5] = a[:, 0] + a[:, 1]
         assert numeric_rank(mp_singular_values(a, 40), 40) == 5
-        lower, _ = ball_sigma_min_bound(a, 40)  # the rounded matrix is invertible, but only just
-        assert lower < mpmath.mpf(10) ** -30
+        # the last column is exactly the sum (floats are exact at 40 digits), and the ball inverse takes the entries
+        # exactly: no invertibility can be certified
+        with pytest.raises(ZeroDivisionError):
+            ball_sigma_min_bound(a, 40)
+        a[5, 5] += mpmath.mpf(10) ** -35  # invertible, but only just
+        lower, _ = ball_sigma_min_bound(a, 40)
+        assert 0 < lower < mpmath.mpf(10) ** -30
 
 
 def test_linear_independence_small_cases():

@@ -24,7 +24,7 @@ from paper_repro.core.domain import mp_domain_points, rational_alpha, sample_rat
 from paper_repro.core.fourier import evaluate_v
 from paper_repro.core.labels import delta
 from paper_repro.core.normalization import evaluate_normalized
-from paper_repro.theory.rank import modp_rank, mp_singular_values, numeric_rank
+from paper_repro.theory.rank import arb_matrix, modp_rank, mp_singular_values, numeric_rank
 from paper_repro.util.measured import bound, bound_holds
 from paper_repro.util.registry import ALPHA_RANGES, Outcome, claim
 from paper_repro.util.tasks import Task
@@ -32,7 +32,7 @@ from paper_repro.util.tasks import Task
 
 def span_residual(n: int, a_text: str, dps: int, seed: int) -> mpmath.mpf:
     """max relative residual |T-bar M - V| at 5 extra points, M solved from delta_n points (arb ball solve)."""
-    from flint import arb, arb_mat, ctx
+    from flint import ctx
 
     d = delta(n)
     with mpmath.workdps(dps):
@@ -43,11 +43,8 @@ def span_residual(n: int, a_text: str, dps: int, seed: int) -> mpmath.mpf:
     old = ctx.prec
     ctx.prec = int(3.4 * dps) + 64
     try:
-        def conv(a):
-            return arb_mat([[arb(mpmath.nstr(x, dps + 5)) for x in row] for row in a])
-
-        m = conv(t[:d]).solve(conv(v[:d]))
-        res = conv(t[d:]) * m - conv(v[d:])
+        m = arb_matrix(t[:d]).solve(arb_matrix(v[:d]))  # entries exactly (mantissa, exponent)
+        res = arb_matrix(t[d:]) * m - arb_matrix(v[d:])
         worst = max(abs(res[i, j]).upper() for i in range(5) for j in range(d))
         scale = max(abs(x) for x in v.reshape(-1))
         with mpmath.workdps(dps):

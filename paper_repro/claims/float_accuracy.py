@@ -53,8 +53,9 @@ def errors(n: int, alpha: float, count: int, seed: int, dps: int) -> tuple[float
         a = mpmath.mpf(alpha)
         exact_pts = np.array([[mpmath.mpf(u), mpmath.mpf(v), a - mpmath.mpf(u) - mpmath.mpf(v)] for u, v, _ in pts],
                              dtype=object)
-        mp_points = patch(exact_pts, arith="mp", dps=dps)
-        mp_basis_sum = evaluate_normalized(n, a, exact_pts, "mp", dps=dps).sum(axis=1)
+        mp_basis = evaluate_normalized(n, a, exact_pts, "mp", dps=dps)
+        mp_points = patch.from_blending_values(mp_basis, arith="mp", dps=dps)  # = patch(exact_pts, arith="mp")
+        mp_basis_sum = mp_basis.sum(axis=1)
         pou_mp = max(abs(float(x - 1)) for x in mp_basis_sum)
     if pou_mp > 1e-25:
         raise ArithmeticError(f"mp route not a partition of unity (n={n}, alpha={alpha}): {pou_mp}")

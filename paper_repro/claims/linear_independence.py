@@ -27,7 +27,7 @@ from paper_repro.core.domain import rational_alpha, sample_rational_points
 from paper_repro.core.labels import delta
 from paper_repro.core.normalization import collocation_mp
 from paper_repro.theory.modp_elimination import modp_rank_blas
-from paper_repro.theory.rank import ball_sigma_min_bound, mp_singular_values, numeric_rank
+from paper_repro.theory.rank import ball_sigma_min_bound, collocation_singular_values, numeric_rank
 from paper_repro.util.registry import Outcome, claim
 from paper_repro.util.tasks import Task
 
@@ -36,14 +36,13 @@ def numeric_case(n: int, alpha_text: str, dps: int, svd_n_max: int, seed: int, c
     """Task: sigma_min, condition and rank of the collocation matrix of order n at alpha, at ``dps`` digits (doubled
     while sigma_min/sigma_max is within 20 digits of the working precision)."""
     for _ in range(4):
-        a = collocation_mp(n, alpha_text, dps, seed, control)
-        if n <= svd_n_max:
-            sv = mp_singular_values(a, dps)
+        if n <= svd_n_max:  # memoised: the figure singular_values draws the same spectra
+            sv = collocation_singular_values(n, alpha_text, dps, seed, control)
             smin, smax, rank = sv[-1], sv[0], numeric_rank(sv, dps)
             method = "mpmath SVD"
         else:
             try:
-                smin, kappa = ball_sigma_min_bound(a, dps)
+                smin, kappa = ball_sigma_min_bound(collocation_mp(n, alpha_text, dps, seed, control), dps)
             except ZeroDivisionError:
                 dps *= 2
                 continue
@@ -61,7 +60,7 @@ def numeric_case(n: int, alpha_text: str, dps: int, svd_n_max: int, seed: int, c
 
 def control_mp_rank(n: int, alpha_text: str, dps: int, seed: int) -> int:
     """Task: the high-precision rank of the negative control (last column = sum of the first two)."""
-    return numeric_rank(mp_singular_values(collocation_mp(n, alpha_text, dps, seed, control=True), dps), dps)
+    return numeric_rank(collocation_singular_values(n, alpha_text, dps, seed, control=True), dps)
 
 
 def modp_case(n: int, t: str, seed: int, control: bool = False) -> int:

@@ -127,10 +127,12 @@ class Scene:
         self.surfaces: list[Surface] = []
         self.nets: list[tuple[np.ndarray, list[tuple[int, int]], list[str] | str, str, float]] = []
         self._tri: tuple[np.ndarray, np.ndarray] | None = None
+        self._prep: tuple | None = None
 
     def surface(self, verts: np.ndarray, faces: np.ndarray, color: str) -> None:
         self.surfaces.append(Surface(np.asarray(verts, float), np.asarray(faces), color))
         self._tri = None
+        self._prep = None
 
     def net(self, pts: np.ndarray, edges: list[tuple[int, int]], point_colors, line_color: str = "black",
             size: float = 28) -> None:
@@ -166,24 +168,42 @@ class Scene:
                 out[out] = self._covered_nearer(q2[out] + (dx, dy), qd[out])
         return out
 
+    def _prepared(self) -> tuple:
+        """What :meth:`_covered_nearer` needs of the triangles, computed once per scene: the non-degenerate ones,
+        their corners, the denominator of the barycentric coordinates, depths, the screen boxes widened by 1e-12
+        and the depth tolerance."""
+        if self._prep is None:
+            tri2, tdep = self._projected()
+            a, b, c = tri2[:, 0], tri2[:, 1], tri2[:, 2]
+            den = (b[:, 1] - c[:, 1]) * (a[:, 0] - c[:, 0]) + (c[:, 0] - b[:, 0]) * (a[:, 1] - c[:, 1])
+            ok = np.abs(den) > 1e-14 * (np.ptp(tri2.reshape(-1, 2), axis=0).max() ** 2)
+            a, b, c, den, zt = a[ok], b[ok], c[ok], den[ok], tdep[ok]
+            lo, hi = np.minimum(np.minimum(a, b), c), np.maximum(np.maximum(a, b), c)
+            self._prep = (a, b, c, den, zt, lo - 1e-12, hi + 1e-12, self.depth_tolerance())
+        return self._prep
+
     def _covered_nearer(self, q2: np.ndarray, qd: np.ndarray) -> np.ndarray:
-        """Whether a triangle covering the screen point ``q2`` is nearer than the depth ``qd`` (by the tolerance)."""
-        tri2, tdep = self._projected()
+        """Whether a triangle covering the screen point ``q2`` is nearer than the depth ``qd`` (by the tolerance).
+
+        Per block of points only the triangles whose (widened) screen box meets the block's box are tested: any
+        other triangle fails the box test at every point of the block, so the answer is the same as testing all,
+        computed with the same operations."""
+        a, b, c, den, zt, lo, hi, tol = self._prepared()
         out = np.zeros(len(q2), bool)
-        a, b, c = tri2[:, 0], tri2[:, 1], tri2[:, 2]
-        den = (b[:, 1] - c[:, 1]) * (a[:, 0] - c[:, 0]) + (c[:, 0] - b[:, 0]) * (a[:, 1] - c[:, 1])
-        ok = np.abs(den) > 1e-14 * (np.ptp(tri2.reshape(-1, 2), axis=0).max() ** 2)
-        a, b, c, den, zt = a[ok], b[ok], c[ok], den[ok], tdep[ok]
-        lo, hi = np.minimum(np.minimum(a, b), c), np.maximum(np.maximum(a, b), c)
-        tol = self.depth_tolerance()
         for s in range(0, len(q2), 512):
-            q, d = q2[s:s + 512, None, :], qd[s:s + 512, None]
-            box = np.all((q >= lo - 1e-12) & (q <= hi + 1e-12), axis=2)
-            l1 = ((b[:, 1] - c[:, 1]) * (q[..., 0] - c[:, 0]) + (c[:, 0] - b[:, 0]) * (q[..., 1] - c[:, 1])) / den
-            l2 = ((c[:, 1] - a[:, 1]) * (q[..., 0] - c[:, 0]) + (a[:, 0] - c[:, 0]) * (q[..., 1] - c[:, 1])) / den
+            block = q2[s:s + 512]
+            near = np.flatnonzero(np.all((hi >= block.min(axis=0)) & (lo <= block.max(axis=0)), axis=1))
+            if not len(near):
+                continue
+            ta, tb, tc, tden, tz, tlo, thi = a[near], b[near], c[near], den[near], zt[near], lo[near], hi[near]
+            q, d = block[:, None, :], qd[s:s + 512, None]
+            box = np.all((q >= tlo) & (q <= thi), axis=2)
+            qx, qy = q[..., 0] - tc[:, 0], q[..., 1] - tc[:, 1]
+            l1 = ((tb[:, 1] - tc[:, 1]) * qx + (tc[:, 0] - tb[:, 0]) * qy) / tden
+            l2 = ((tc[:, 1] - ta[:, 1]) * qx + (ta[:, 0] - tc[:, 0]) * qy) / tden
             l3 = 1 - l1 - l2
             inside = box & (l1 >= -1e-9) & (l2 >= -1e-9) & (l3 >= -1e-9)
-            z = l1 * zt[:, 0] + l2 * zt[:, 1] + l3 * zt[:, 2]
+            z = l1 * tz[:, 0] + l2 * tz[:, 1] + l3 * tz[:, 2]
             out[s:s + 512] = np.any(inside & (z > d + tol), axis=1)
         return out
 

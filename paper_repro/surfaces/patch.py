@@ -351,6 +351,12 @@ class Patch:
         b = evaluate_normalized(self.n, self.alpha, points, ctx)
         return self._combine(b, ctx)
 
+    def from_blending_values(self, b: np.ndarray, arith: str | Context | None = None, dps: int = 50) -> np.ndarray:
+        """Patch points from blending values ``b`` (``(P, delta_n)``, :func:`evaluate_normalized` at the points in
+        the arithmetic ``arith``): what :meth:`__call__` computes after evaluating them, for a caller that needs the
+        blending values too (``claim float_accuracy``: its mp reference evaluates them once, not twice)."""
+        return self._combine(b, self._ctx(arith, dps))
+
     def reference(self, points, dps: int = 50) -> np.ndarray:
         """A high-precision reference for the float path: ``(P, d)`` floats.
 

@@ -60,7 +60,12 @@ def process_context():
         from multiprocessing import forkserver
 
         ctx = mp.get_context("forkserver")
-        ctx.set_forkserver_preload(["paper_repro.util.registry", "numpy", "mpmath", "flint"])
+        # The server imports every claim and figure module once (what each worker's ``load_all`` would import: about
+        # 1 s of CPU per worker and per pool, and a new pool starts every round of tasks and for the figures).
+        from paper_repro.util.registry import CLAIM_MODULES, FIGURE_MODULES
+
+        ctx.set_forkserver_preload(["paper_repro.util.registry", "numpy", "mpmath", "flint",
+                                    *CLAIM_MODULES, *FIGURE_MODULES])
         # Start the fork server now with SIGINT ignored: an ignored signal stays ignored across fork and exec, so
         # neither the server (CPython ignores SIGINT there only after the preload, which takes a second) nor the
         # workers it forks (restored to the server's start-up disposition) can die of a Ctrl-C with a traceback.
