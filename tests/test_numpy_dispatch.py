@@ -92,7 +92,8 @@ def test_the_comparison_sees_numpy_dispatch():
 _SUBDIVISION_XFAIL = pytest.mark.xfail(
     condition=_svml_here(), strict=True,
     reason="core/subdivision_products._level_values takes kp ** np.arange(...) with numpy's power (SVML here): "
-           "to be replaced by repeated multiplication (np.multiply.accumulate), then this passes")
+           "to be replaced by repeated multiplication (np.multiply.accumulate); then remove this xfail and re-pin "
+           "tests/fixtures/cpu_bits.json (tools/cpu_bits.py pin)")
 
 
 @pytest.mark.parametrize("variant", cpu_bits.NUMPY_VARIANTS)
