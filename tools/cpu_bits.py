@@ -129,14 +129,17 @@ def fingerprints(values: dict) -> dict:
 
 def compare(ref_path: Path, paths: list[Path], report: Path | None) -> int:
     ref = json.loads(ref_path.read_text())
+    runs = {path: json.loads(path.read_text()) for path in paths if path != ref_path}
     lines = ["# Float results across CPU kernels (tools/cpu_bits.py)", "",
-             f"Reference run: `{ref_path.name}` ({ref['info']})", "",
-             "| run | item | same bits | largest difference / largest magnitude |", "|---|---|---|---|"]
+             "Each run recomputes the items of `tools/cpu_bits.py` in a fresh process on this machine, with one "
+             "setting changed: the OpenBLAS kernel (`OPENBLAS_CORETYPE`), numba's target (`NUMBA_CPU_NAME`) or the "
+             "SIMD code numpy's ufuncs dispatch to (`NPY_DISABLE_CPU_FEATURES`; `numpy` below: the dispatch target "
+             "of float64 power, exp, log10 in that run).", "",
+             f"Reference run: `{ref_path.name}` ({ref['info']})", "", "Runs compared with it:", ""]
+    lines += [f"* `{path.stem}`: {run['info']}" for path, run in runs.items()]
+    lines += ["", "| run | item | same bits | largest difference / largest magnitude |", "|---|---|---|---|"]
     bad = 0
-    for path in paths:
-        if path == ref_path:
-            continue
-        run = json.loads(path.read_text())
+    for path, run in runs.items():
         for item, hexes in sorted(ref["values"].items()):
             other = run["values"].get(item)
             a = np.array([float.fromhex(x) for x in hexes])
