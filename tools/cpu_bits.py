@@ -127,7 +127,7 @@ def fingerprints(values: dict) -> dict:
     return {k: hashlib.sha256(" ".join(v).encode()).hexdigest() for k, v in sorted(values.items())}
 
 
-def compare(ref_path: Path, paths: list[Path], report: Path | None) -> int:
+def compare(ref_path: Path, paths: list[Path], report: Path | None, note: str = "") -> int:
     ref = json.loads(ref_path.read_text())
     runs = {path: json.loads(path.read_text()) for path in paths if path != ref_path}
     lines = ["# Float results across CPU kernels (tools/cpu_bits.py)", "",
@@ -135,6 +135,7 @@ def compare(ref_path: Path, paths: list[Path], report: Path | None) -> int:
              "setting changed: the OpenBLAS kernel (`OPENBLAS_CORETYPE`), numba's target (`NUMBA_CPU_NAME`) or the "
              "SIMD code numpy's ufuncs dispatch to (`NPY_DISABLE_CPU_FEATURES`; `numpy` below: the dispatch target "
              "of float64 power, exp, log10 in that run).", "",
+             *([note, ""] if note else []),
              f"Reference run: `{ref_path.name}` ({ref['info']})", "", "Runs compared with it:", ""]
     lines += [f"* `{path.stem}`: {run['info']}" for path, run in runs.items()]
     lines += ["", "| run | item | same bits | largest difference / largest magnitude |", "|---|---|---|---|"]
@@ -174,6 +175,7 @@ def main(argv: list[str] | None = None) -> int:
     m.add_argument("ref", type=Path)
     m.add_argument("runs", type=Path, nargs="+")
     m.add_argument("--report", type=Path)
+    m.add_argument("--note", default="", help="a paragraph for the report (how and when the runs were made)")
     p = sub.add_parser("pin", help="write the sha256 of every promised item (tests/fixtures/cpu_bits.json)")
     p.add_argument("out", type=Path)
     e = sub.add_parser("numpy-env", help="print NPY_DISABLE_CPU_FEATURES for a numpy dispatch variant (exit 1 if it "
@@ -196,7 +198,7 @@ def main(argv: list[str] | None = None) -> int:
         args.out.write_text(json.dumps({"info": _kernel_info(), "values": compute()}, indent=0, sort_keys=True))
         print(f"cpu_bits: {args.out} ({_kernel_info()})")
         return 0
-    return compare(args.ref, args.runs, args.report)
+    return compare(args.ref, args.runs, args.report, args.note)
 
 
 if __name__ == "__main__":
