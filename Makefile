@@ -27,7 +27,7 @@ ifneq ($(filter-out 3.11,$(PYVER)),)
 export PAPER_REPRO_CACHE ?= $(CURDIR)/$(VENV)/cache
 endif
 
-.PHONY: check-docs mutate-lines mutate-code test-cpus test-bits-other-cpu venv lock report paper check-paper check-gallery test-min test-pythons test-wheel docs reproduce reproduce-extended test test-all bench bench-coefficients bench-question1 figures lint clean distclean
+.PHONY: check-docs mutate-lines mutate-code test-cpus test-bits-other-cpu test-bits-numpy-dispatch venv lock report paper check-paper check-gallery test-min test-pythons test-wheel docs reproduce reproduce-extended test test-all bench bench-coefficients bench-question1 figures lint clean distclean
 
 # The environment: the exact versions of requirements.lock (what `make reproduce` was run with, so
 # figures stay byte-identical), then the package itself without resolving anything.  A failed install
@@ -67,7 +67,9 @@ test: $(STAMP)                 ## fast test suite (on TEST_JOBS processes, defau
 # OpenBLAS kernels numpy's DYNAMIC_ARCH build can be forced to here (Zen runs the Haswell kernel in this build;
 # Sandybridge and Nehalem are pre-AVX2).  The compiled kernel also runs for numba's generic CPU target.
 CORETYPES ?= Haswell SkylakeX Zen Sandybridge Nehalem
-test-cpus: $(STAMP)            ## byte-sensitive tests (-m bits) and a cold `reproduce` data comparison under every OpenBLAS kernel and numba's generic target -> reports/cpu_bits.md (about an hour)
+#: numpy dispatch variants (tools/cpu_bits.py numpy-env): no AVX512 (a Haswell-like CPU), only the baseline (SSE4.2)
+NUMPY_VARIANTS ?= avx2 baseline
+test-cpus: $(STAMP)            ## byte-sensitive tests (-m bits) and a cold `reproduce` data comparison under every OpenBLAS kernel, numba's generic target and numpy's SIMD dispatch limited to AVX2 and to the baseline -> reports/cpu_bits.md (about 1.5 hours)
 	mkdir -p build/cpus reports
 	$(PY) tools/cpu_bits.py compute build/cpus/host.json
 	@for k in $(CORETYPES); do echo "== OPENBLAS_CORETYPE=$$k"; \
@@ -76,19 +78,38 @@ test-cpus: $(STAMP)            ## byte-sensitive tests (-m bits) and a cold `rep
 	@echo "== NUMBA_CPU_NAME=generic"
 	NUMBA_CPU_NAME=generic PAPER_REPRO_CACHE=$(CURDIR)/build/cpus/cache-generic $(PY) -m pytest -q -p no:cacheprovider -m bits
 	NUMBA_CPU_NAME=generic PAPER_REPRO_CACHE=$(CURDIR)/build/cpus/cache-generic $(PY) tools/cpu_bits.py compute build/cpus/numba-generic.json
-	$(PY) tools/cpu_bits.py compare build/cpus/host.json build/cpus/openblas-*.json build/cpus/numba-generic.json --report reports/cpu_bits.md
+	rm -f build/cpus/numpy-*.json
+	@for v in $(NUMPY_VARIANTS); do d=$$($(PY) tools/cpu_bits.py numpy-env $$v) || continue; \
+	  echo "== numpy dispatch $$v: NPY_DISABLE_CPU_FEATURES='$$d'"; \
+	  NPY_DISABLE_CPU_FEATURES="$$d" PAPER_REPRO_CACHE=$(CURDIR)/build/cpus/cache-numpy-$$v $(PY) -m pytest -q -p no:cacheprovider -m bits || exit 1; \
+	  NPY_DISABLE_CPU_FEATURES="$$d" PAPER_REPRO_CACHE=$(CURDIR)/build/cpus/cache-numpy-$$v $(PY) tools/cpu_bits.py compute build/cpus/numpy-$$v.json || exit 1; done
+	$(PY) tools/cpu_bits.py compare build/cpus/host.json build/cpus/openblas-*.json build/cpus/numba-generic.json $$(ls build/cpus/numpy-*.json 2>/dev/null) --report reports/cpu_bits.md
 	@for k in $(CORETYPES); do echo "== make reproduce, cold, OPENBLAS_CORETYPE=$$k"; rm -rf build/cpus/reproduce-$$k; \
 	  OPENBLAS_CORETYPE=$$k PAPER_REPRO_NO_CACHE=1 $(PY) -m paper_repro reproduce --out build/cpus/reproduce-$$k >/dev/null || exit 1; \
 	  diff -r -x '*_extended*' data build/cpus/reproduce-$$k/data && \
 	  diff -r -x index.html figures build/cpus/reproduce-$$k/figures || \
 	  { echo "test-cpus: data/ or figures/ differ under OPENBLAS_CORETYPE=$$k"; exit 1; }; done
-	@echo "test-cpus: same bits under $(CORETYPES) and numba's generic target (reports/cpu_bits.md)"
+	@for v in $(NUMPY_VARIANTS); do d=$$($(PY) tools/cpu_bits.py numpy-env $$v) || continue; \
+	  echo "== make reproduce, cold, numpy dispatch $$v (NPY_DISABLE_CPU_FEATURES='$$d')"; rm -rf build/cpus/reproduce-numpy-$$v; \
+	  NPY_DISABLE_CPU_FEATURES="$$d" PAPER_REPRO_NO_CACHE=1 $(PY) -m paper_repro reproduce --out build/cpus/reproduce-numpy-$$v >/dev/null || exit 1; \
+	  diff -r -x '*_extended*' data build/cpus/reproduce-numpy-$$v/data && \
+	  diff -r -x index.html figures build/cpus/reproduce-numpy-$$v/figures || \
+	  { echo "test-cpus: data/ or figures/ differ under numpy dispatch $$v"; exit 1; }; done
+	@echo "test-cpus: same bits under $(CORETYPES), numba's generic target and numpy dispatch $(NUMPY_VARIANTS) (reports/cpu_bits.md)"
 
 # CI: the byte-sensitive subset under one OpenBLAS kernel other than the host's
 test-bits-other-cpu: $(STAMP)  ## the byte-sensitive tests under an OpenBLAS kernel other than the host's
 	@host=$$($(PY) -c 'import numpy, threadpoolctl; numpy.ones(2) @ numpy.ones(2); print([i["architecture"] for i in threadpoolctl.threadpool_info() if i["user_api"] == "blas"][0])'); \
 	k=Sandybridge; [ "$$host" = Sandybridge ] && k=Haswell; echo "== byte-sensitive tests: host kernel $$host, forced OPENBLAS_CORETYPE=$$k"; \
 	OPENBLAS_CORETYPE=$$k $(PY) -m pytest -q -p no:cacheprovider -m bits
+
+# CI: the byte-sensitive subset with numpy's run-time SIMD dispatch limited as on other CPUs (NPY_DISABLE_CPU_FEATURES:
+# avx2 = no AVX512, so no Intel SVML exp/log/power; baseline = SSE4.2 on x86-64); a variant that does not apply to the
+# numpy build (avx2 off x86-64) is skipped.  Each run has its own cache, so nothing computed by the host is reused.
+test-bits-numpy-dispatch: $(STAMP)  ## the byte-sensitive tests with numpy's SIMD dispatch limited to AVX2 and to the baseline
+	@for v in $(NUMPY_VARIANTS); do d=$$($(PY) tools/cpu_bits.py numpy-env $$v) || continue; \
+	  echo "== byte-sensitive tests, numpy dispatch $$v: NPY_DISABLE_CPU_FEATURES='$$d'"; \
+	  NPY_DISABLE_CPU_FEATURES="$$d" PAPER_REPRO_CACHE=$(CURDIR)/build/cpus/cache-numpy-$$v $(PY) -m pytest -q -p no:cacheprovider -m bits || exit 1; done
 
 mutate-lines: $(STAMP)         ## blank and mutate every checked line; each check must fail -> reports/mutate_lines.{md,json}
 	$(PY) tools/mutate_lines.py --out reports

@@ -130,11 +130,14 @@ def pytest_html_results_table_row(report, cells):
 
 
 #: The byte-sensitive tests (marker ``bits``): results promised to be the same bits for any memory layout, thread
-#: count, OpenBLAS kernel or numba target.  ``make test-cpus`` runs them under every OpenBLAS kernel this machine can
-#: be forced to (``OPENBLAS_CORETYPE``) and with ``NUMBA_CPU_NAME=generic``; CI runs them under one kernel other
-#: than the host's (``make test-bits-other-cpu``).
+#: count, OpenBLAS kernel, numba target or SIMD code of numpy's ufuncs.  ``make test-cpus`` runs them under every
+#: OpenBLAS kernel this machine can be forced to (``OPENBLAS_CORETYPE``), with ``NUMBA_CPU_NAME=generic`` and with
+#: numpy's dispatch limited to AVX2 and to the baseline (``NPY_DISABLE_CPU_FEATURES``); CI runs them under one kernel
+#: other than the host's (``make test-bits-other-cpu``) and under the numpy variants
+#: (``make test-bits-numpy-dispatch``).
 BITS_TESTS = (
     "tests/test_cpu_bits.py::",
+    "tests/test_numpy_dispatch.py::",
     "tests/test_figures_regression.py::",
     "tests/test_domain_of_validity.py::test_every_point_layout_gives_the_same_values",
     "tests/test_domain_of_validity.py::test_elevation_sums_in_a_fixed_order_whatever_the_cpu",

@@ -256,5 +256,6 @@ def rational_alpha_near(alpha: float, denominator: int = 1000) -> RationalAngle:
     """A rational-tangent alpha close to ``alpha``: tan(alpha/4) rounded to ``denominator``."""
     from fractions import Fraction
 
-    f = Fraction(np.tan(check_alpha(parse_alpha(alpha)) / 4)).limit_denominator(denominator)
+    # math.tan (libm): numpy's tan ufunc is SIMD code chosen per CPU (Intel SVML on AVX512), other last bits
+    f = Fraction(math.tan(check_alpha(parse_alpha(alpha)) / 4)).limit_denominator(denominator)
     return rational_alpha(fmpq(f.numerator, f.denominator))

@@ -1,21 +1,92 @@
 """Figure scripts (registered in :mod:`paper_repro.util.registry`) and their shared helpers.
 
 Figures are written as PNG and SVG with fixed metadata (no timestamps; a fixed SVG hash salt), so
-reruns give identical bytes.
+reruns give identical bytes.  Logarithmic axes take their logarithms from libm (:class:`LibmLogScale`, registered
+as matplotlib's ``"log"`` scale), not from numpy's ufuncs, whose SIMD code depends on the CPU (on AVX512
+machines numpy's ``log10``/``exp`` are Intel SVML, not the AVX2 or SSE code other machines run: a log-log panel
+then differs in a pixel or two, ``make test-bits-numpy-dispatch``).
 """
 
 from __future__ import annotations
 
+import math
 from pathlib import Path
 
 import matplotlib
+import numpy as np
 
 matplotlib.use("Agg")
 matplotlib.rcParams["svg.hashsalt"] = "paper_repro"  # deterministic SVG element ids
 matplotlib.rcParams["svg.fonttype"] = "none"  # text stays text (small, searchable files)
 import matplotlib.pyplot as plt  # noqa: E402
+from matplotlib.scale import InvertedLogTransform, LogScale, LogTransform, register_scale  # noqa: E402
 
 from paper_repro.util.io import atomic_path, write_json  # noqa: E402
+
+
+def _elementwise(values, func) -> np.ndarray:
+    """``func`` applied to every element of ``values`` as a Python float (same shape; a mask is kept)."""
+    arr = np.asarray(values, dtype=np.float64)
+    out = np.array([func(x) for x in arr.ravel().tolist()], dtype=np.float64).reshape(arr.shape)
+    return np.ma.array(out, mask=np.ma.getmask(values)) if np.ma.isMaskedArray(values) else out
+
+
+class LibmLogTransform(LogTransform):
+    """matplotlib's log transform with the logarithm of libm (``math.log10`` on Python floats) instead of numpy's
+    ``log10`` ufunc, whose result depends on the SIMD code numpy dispatches to on the running CPU.
+
+    >>> t = LibmLogTransform(10)
+    >>> t.transform_non_affine(np.array([1e-3, 1.0, 0.0, -1.0])).tolist()
+    [-3.0, 0.0, -1000.0, -1000.0]
+    >>> t.inverted().transform_non_affine(np.array([-3.0, 0.5])).tolist() == [10.0 ** -3.0, 10.0 ** 0.5]
+    True
+    """
+
+    def _log(self, x: float) -> float:
+        if not x > 0:  # zero, negative or nan: numpy's log10 gives -inf or nan, clipped like matplotlib's
+            return -1000.0 if self._clip and x <= 0 else (-math.inf if x == 0 else math.nan)
+        if self.base == 10:
+            return math.log10(x)
+        if self.base == 2:
+            return math.log2(x)
+        return math.log(x) if self.base == math.e else math.log(x) / math.log(self.base)
+
+    def transform_non_affine(self, values):
+        return _elementwise(values, self._log)
+
+    def inverted(self):
+        return LibmInvertedLogTransform(self.base)
+
+
+class LibmInvertedLogTransform(InvertedLogTransform):
+    """The inverse of :class:`LibmLogTransform`: ``base ** x`` by libm's ``pow`` on Python floats."""
+
+    def _exp(self, x: float) -> float:
+        try:
+            return math.pow(self.base, x)
+        except OverflowError:
+            return math.inf
+
+    def transform_non_affine(self, values):
+        return _elementwise(values, self._exp)
+
+    def inverted(self):
+        return LibmLogTransform(self.base)
+
+
+class LibmLogScale(LogScale):
+    """matplotlib's ``"log"`` scale (``loglog``, ``semilogy``, ``set_yscale("log")``) with :class:`LibmLogTransform`:
+    the same pixels on every CPU whatever numpy's SIMD dispatch (registered under the name ``"log"`` when this
+    package is imported, so every figure of paper_repro uses it)."""
+
+    name = "log"
+
+    def __init__(self, *, base: float = 10, subs=None, nonpositive: str = "clip") -> None:
+        super().__init__(base=base, subs=subs, nonpositive=nonpositive)
+        self._transform = LibmLogTransform(base, nonpositive)
+
+
+register_scale(LibmLogScale)
 
 COLOR_OF = {"R": "#d62728", "G": "#2ca02c", "B": "#1f5fbf", "centre": "#ff9900"}
 DPI = 110

@@ -44,6 +44,19 @@ def make_coefficients(outdir: Path) -> list[Path]:
     return [save(fig, outdir / "normalizing_coefficients.png")]
 
 
+def _int_power(x: np.ndarray, k: int) -> np.ndarray:
+    """``x ** k`` by k products in a fixed order: numpy's ``power`` ufunc runs SIMD code chosen per CPU (Intel SVML
+    on AVX512), so its last bits depend on the machine.
+
+    >>> _int_power(np.array([0.5, 3.0]), 3).tolist()
+    [0.125, 27.0]
+    """
+    out = np.ones_like(x)
+    for _ in range(k):
+        out = out * x
+    return out
+
+
 def _level_values(n: int, alphas: np.ndarray) -> dict[int, np.ndarray]:
     """Per level j, the smallest normalizing coefficient r^alpha_{2n,2n-i,j} = P(cos(alpha/2)) / sin^{2n+j}(alpha/2)
     of that level at each alpha (from the closed forms, proven for every alpha)."""
@@ -52,7 +65,7 @@ def _level_values(n: int, alphas: np.ndarray) -> dict[int, np.ndarray]:
     for lab, f in closed_forms_cached(n).items():
         j = int(lab.rstrip("}").split(",")[-1])
         coeffs = [int(x) for x in f.numerator.coeffs()]  # constant term first
-        val = np.polyval(coeffs[::-1], c) / s ** f.sin_power
+        val = np.polyval(coeffs[::-1], c) / _int_power(s, f.sin_power)
         out.setdefault(j, []).append(val)
     return {j: np.min(v, axis=0) for j, v in sorted(out.items())}
 

@@ -1,8 +1,9 @@
 """Machine-independent measured values: what may reach ``data/``.
 
 ``data/`` holds only what every machine computes to the same bytes.  Floating-point results depend on the
-machine in their last bits (BLAS threads and kernels, SIMD implementations of sin/cos, FMA), and a quantity at
-rounding level (a float64 error of 1e-15, an mpmath residual of 1e-40) is nothing *but* those bits.  So:
+machine in their last bits (BLAS threads and kernels, the SIMD code numpy picks per CPU for exp, log, power, tan,
+FMA), and a quantity at rounding level (a float64 error of 1e-15, an mpmath residual of 1e-40) is nothing *but*
+those bits.  So:
 
 * a quantity at rounding level is published as a **bound** that it must clear, ``"< 1e-12"``
   (:func:`bound`): the bound is the claim's tolerance, far above the value, so every machine writes the same
