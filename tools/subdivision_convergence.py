@@ -33,6 +33,7 @@ from paper_repro.core.elevation import elevate
 from paper_repro.core.labels import delta, united_system
 from paper_repro.core.layout import barycentric
 from paper_repro.core.subdivision import subdivision_matrices
+from paper_repro.figures.subdivision_fig import subdivision_levels
 from paper_repro.surfaces.patch import Patch
 from paper_repro.surfaces.tessellation import second_derivative_bound, second_derivative_nets
 
@@ -106,21 +107,13 @@ def rates_at(positions_: np.ndarray, n: int, alpha: float, depth: int, seed: int
     """max_f |Q_f - s(x_f)| per depth with the points placed at ``positions_`` (barycentric, one row per member)."""
     net = np.random.default_rng(seed).normal(size=(delta(n), 3))
     patch = Patch(n, alpha, net)
-    nets, a, b, sign = net[None], np.zeros(1), np.zeros(1), np.ones(1)
     out = []
-    for k in range(depth + 1):
-        h = alpha / 2 ** k
+    for lev in subdivision_levels(net, n, alpha, depth):  # the figure's loop: sub-nets with their placements
+        h, nets, a, b, sign = lev["h"], lev["nets"], lev["a"], lev["b"], lev["sign"]
         u = a[:, None] + sign[:, None] * h * positions_[None, :, 0]
         v = b[:, None] + sign[:, None] * h * positions_[None, :, 1]
         pts = np.stack([u, v, np.maximum(alpha - u - v, 0.0)], axis=-1).reshape(-1, 3)
         out.append(float(np.linalg.norm(patch(pts).reshape(nets.shape) - nets, axis=2).max()))
-        if k == depth:
-            break
-        mats = subdivision_matrices(n, h)
-        nets = np.concatenate([np.einsum("ij,njd->nid", m, nets) for m in mats])
-        a = np.concatenate([a + sign * h / 2, a, a, a + sign * h / 2])
-        b = np.concatenate([b, b + sign * h / 2, b, b + sign * h / 2])
-        sign = np.concatenate([sign, sign, sign, -sign])
     return out
 
 
