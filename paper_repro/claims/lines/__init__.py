@@ -60,6 +60,17 @@ def line_check(id: str) -> Callable[[Callable[[], LineResult]], Callable[[], Lin
     return deco
 
 
+def items_result(items: Callable[[], dict[str, Any]], how: str, kind: str,
+                 errors: tuple[type[BaseException], ...]) -> LineResult:
+    """The line holds when every item of ``items()`` (read from the transcription, then computed) is true; an error of
+    ``errors`` means the line could not be read as the check reads it, and is a failure that says why (``unread``)."""
+    try:
+        out = items()
+    except errors as exc:
+        return LineResult(False, how=how, kind=kind, detail={"unread": str(exc)})
+    return LineResult(all(out.values()), how=how, kind=kind, detail=out)
+
+
 #: Check modules beyond one per part: Section 5's checks (lines of part sec4_5 from source line 1907 on) live in
 #: ``sec5`` (it imports helpers of ``sec4_5``, so ``sec4_5`` cannot import it back without an import circle).
 EXTRA_MODULES = ("sec5",)

@@ -32,7 +32,7 @@ from math import comb
 import sympy as sp
 from flint import fmpq, fmpq_mat
 
-from paper_repro.claims.lines import LineResult, line_check
+from paper_repro.claims.lines import LineResult, items_result, line_check
 from paper_repro.core.basis import evaluate
 from paper_repro.core.context import ExactContext
 from paper_repro.core.domain import rational_alpha, sample_rational_points
@@ -558,10 +558,8 @@ def _register_phase(kind: str, steps_how: str, za_how: str) -> None:
             steps = phase_steps(kind)
             meaning = phase_meaning() if kind == "cos" else {}
         except LatexMathError as exc:
-            return LineResult(False, how="the chain read from the transcriptions", kind="exhaustive",
-                              detail={"unread": str(exc)}) if False else LineResult(
-                False, how="the chain read from the transcriptions, n <= 2", kind="exhaustive",
-                detail={"unread": str(exc)})
+            return LineResult(False, how="the chain read from the transcriptions, n <= 2", kind="exhaustive",
+                              detail={"unread": str(exc)})
         return LineResult(all(steps) and all(meaning.values()), how=steps_how, kind="exhaustive",
                           detail={"steps": steps, **meaning})
 
@@ -892,11 +890,7 @@ def check_orders_1_2() -> LineResult:
     how = ("every statement of the worked text of orders 1 and 2 read from its transcription (relations, classes, "
            "quotient sets, conditions, the chain, V_1, the six classes, V_2) against the class keys of phase "
            "equivalence")
-    try:
-        out = _orders_1_2()
-    except (LatexMathError, TypeError, KeyError) as exc:
-        return LineResult(False, how=how, kind="proof", detail={"unread": str(exc)})
-    return LineResult(all(out.values()), how=how, kind="proof", detail=out)
+    return items_result(_orders_1_2, how, "proof", (LatexMathError, TypeError, KeyError))
 
 
 def b2_classes(b: int, restrict_r_le_g: bool) -> set:
@@ -1180,11 +1174,7 @@ def check_dimension() -> LineResult:
            "and the closed form) against exact ranks of cos/sin of one triple per class of E_k at delta_3 + 4 "
            "rational points (k <= 3) and the number of functions of T_{2n}; class counts of E_n, n = 1..8; the "
            "closed form n = 1..12")
-    try:
-        out = _dimension_items()
-    except (ValueError, TypeError, AttributeError) as exc:
-        return LineResult(False, how=how, kind="exact-evidence", detail={"unread": str(exc)})
-    return LineResult(all(out.values()), how=how, kind="exact-evidence", detail=out)
+    return items_result(_dimension_items, how, "exact-evidence", (ValueError, TypeError, AttributeError))
 
 
 _SPAN = re.compile(r"\\operatorname\{span\}%?\s*([TV])_\{([^{}]+)\}\^\{\\alpha\}|\\mathcal\{([TV])\}%?\s*_\{([^{}]+)\}"
@@ -1255,11 +1245,7 @@ def check_coincidence_rank() -> LineResult:
     how = ("the spaces of each line read from the transcriptions (T_{2n}, V_n, their indices, the relations) and "
            "compared by exact ranks of their unions at delta_3 + 4 rational points of Omega^alpha (tan(alpha/4) = "
            "1/3, n <= 3); the inclusion itself is proven by sec4_5-inclusion")
-    try:
-        out = _coincidence_items()
-    except (ValueError, TypeError, AttributeError) as exc:
-        return LineResult(False, how=how, kind="exact-evidence", detail={"unread": str(exc)})
-    return LineResult(all(out.values()), how=how, kind="exact-evidence", detail=out)
+    return items_result(_coincidence_items, how, "exact-evidence", (ValueError, TypeError, AttributeError))
 
 
 # -- proof of the coincidence theorem -----------------------------------------------------------------------------
@@ -1364,11 +1350,7 @@ def check_proof_reduction() -> LineResult:
     how = ("the ranges of j and i (read from both lines), the printed indices and product of R_{2n,2n-i,j} (read) "
            "against the exponents of R_system (core.labels.r_exponents); every function of T_{2n} is a permutation "
            "of the variables of one printed R (n <= 6)")
-    try:
-        out = _proof_reduction()
-    except (LatexMathError, ValueError, TypeError) as exc:
-        return LineResult(False, how=how, kind="exhaustive", detail={"unread": str(exc)})
-    return LineResult(all(out.values()), how=how, kind="exhaustive", detail=out)
+    return items_result(_proof_reduction, how, "exhaustive", (LatexMathError, ValueError, TypeError))
 
 
 #: the lines of the power-reduction identities: (odd line with the left side, even line)
