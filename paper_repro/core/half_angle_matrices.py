@@ -101,7 +101,9 @@ def below_tiny(build, alpha: float) -> np.ndarray:
     Q(alpha) = Q(a) (sigma(alpha) / sigma(a))^e (1 + O(a^2)), sigma(alpha) / sigma(a) = (alpha / a)^2 (1 + O(a^2)).
     The exponent e is read from Q(2a) / Q(a) = 4^e (1 + O(a^2)); an entry that is 0 at a (e >= 2: below 1e-400) stays
     0.  Taking Q(a) itself, as before, left the entries with e >= 1 (all of Q for h = R_{2,1,1}) wrong relative to
-    themselves: 2.9e-202 for 2.9e-602 at alpha = 1e-300.  Cost: 2e + 1 roundings more per entry.
+    themselves: 2.9e-202 for 2.9e-602 at alpha = 1e-300.  Cost: 2e roundings more per entry.  (Q(a) itself is right
+    because :func:`product_matrix` forms x_f / x'_g first: x_f x_h P, of size sigma^2, underflowed at a = 1e-100 and
+    gave 0 for entries of size sigma = 2.5e-201.)
 
     >>> q = below_tiny(lambda a: np.array([1.0, 3 * a * a, 0.0]), 1e-150)
     >>> [f"{x:.3g}" for x in q]
@@ -210,8 +212,8 @@ def _product_matrix(n: int, h: int, alpha, ctx: Context) -> np.ndarray:
     kappa, sigma = half_angle(alpha, ctx)
     rows, cols, p = evaluate_terms(product_form(n, int(h)), kappa, sigma, ctx)
     x, x1, x2 = (scaled_coefficients(k, kappa, sigma, ctx) for k in (n, 1, n + 1))
-    with ctx.scope():
-        vals = ctx.div(ctx.mul(ctx.mul(x[cols], p), x1[int(h)]), x2[rows])
+    with ctx.scope():  # x_f / x'_g first: the sigma-valuation of the partial products never exceeds the result's
+        vals = ctx.mul(ctx.mul(ctx.div(x[cols], x2[rows]), x1[int(h)]), p)  # (no underflow of x_f x_h P before / x'_g)
     return _dense(rows, cols, vals, (delta(n + 1), delta(n)), ctx)
 
 
