@@ -56,7 +56,6 @@ column the exact collocation solve of claim ``basis_transformation`` published i
 
 from __future__ import annotations
 
-import contextlib
 from functools import cache
 from math import comb
 
@@ -534,7 +533,8 @@ def transformation_matrix(n: int, alpha, direction: str = "V_to_T", *, normalize
     if ctx.exact and not isinstance(alpha, RationalAngle):
         raise TypeError(f"arith {ctx.name!r} needs alpha as a RationalAngle (rational tan(alpha/4)), "
                         f"got {type(alpha).__name__}")
-    with ctx.scope() if not isinstance(ctx, FloatContext) else contextlib.nullcontext():
+    # float: an entry beyond float64 is reported by the OverflowError below, not by numpy's RuntimeWarnings first
+    with ctx.scope() if not isinstance(ctx, FloatContext) else np.errstate(over="ignore", invalid="ignore"):
         s, c = half_angle(alpha, ctx)
         out = transformation_in_context(n, s, c, ctx, direction, bool(normalized))
     if out.dtype == np.float64 and not np.isfinite(out).all():
