@@ -116,12 +116,26 @@ def test_transformation_float_within_its_bound_or_refused_up_to_n_30(n):
 
 # --- the product matrices -----------------------------------------------------------------------------------------
 def _product_ratio(n: int, h: int, alpha: float) -> float:
+    """The largest |Q_float - Q| / ((2 n + 8) eps |Q| + floor); Q in mp (30 digits), in double-double from n = 10 at
+    alpha >= 1e-60 (the same formulas; checked against mp in test_product_reference_double_double_agrees_with_mp)."""
     q = product_matrix(n, h, alpha)
-    with mpmath.workdps(30):
-        m = product_matrix(n, h, mpmath.mpf(alpha), "mp")
-        ref = np.array([[ta.DD.convert(x) for x in row] for row in m], dtype=np.complex128)
+    if n >= 10 and alpha >= 1e-60:
+        ref = product_matrix(n, h, alpha, ta.DD)
+    else:
+        with mpmath.workdps(30):
+            m = product_matrix(n, h, mpmath.mpf(alpha), "mp")
+            ref = np.array([[ta.DD.convert(x) for x in row] for row in m], dtype=np.complex128)
     diff = np.abs((q - ref.real) - ref.imag)
     return float((diff / (product_float_bound(n) * np.abs(ref.real) + PRODUCT_FLOAT_FLOOR)).max())
+
+
+def test_product_reference_double_double_agrees_with_mp():
+    for h, alpha in ((0, 1e-3), (5, 3.0), (6, 1e-60)):
+        dd = product_matrix(4, h, alpha, ta.DD)
+        with mpmath.workdps(40):
+            m = product_matrix(4, h, mpmath.mpf(alpha), "mp")
+            ref = np.array([[ta.DD.convert(x) for x in row] for row in m], dtype=np.complex128)
+        assert ta.dd_distance(dd, ref) < 1e-30, (h, alpha)
 
 
 @pytest.mark.parametrize("n", [1, 2, 4])
@@ -144,6 +158,7 @@ def test_product_matrix_below_alpha_tiny_within_its_bound(alpha):
 @pytest.mark.slow
 @pytest.mark.parametrize("n", [20, 30])
 def test_product_matrix_float_within_its_bound_up_to_n_30(n):
+    assert _product_ratio(n, 0, 1e-300) <= 1  # the centre R_{2,1,1}: all of Q of size sigma (mp, cheap for this h)
     for h in (0, 5):
-        for alpha in (1e-300, 1e-3, 3.0):
+        for alpha in (1e-3, 3.0):
             assert _product_ratio(n, h, alpha) <= 1, (n, h, alpha)

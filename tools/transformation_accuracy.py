@@ -61,7 +61,7 @@ from paper_repro.core.transformation import (
 from paper_repro.util.io import write_text
 
 ALPHAS_SMALL_N = (1e-300, 1e-150, 1e-100, 1e-90, 1e-60, 1e-9, 1e-6, 1e-4, 1e-3, 1e-2, 1.0, 3.0, math.pi - 1e-12)
-ALPHAS_LARGE_N = (1e-300, 1e-150, 1e-100, 1e-90, 1e-60, 1e-6, 1e-3, 1e-2, 1.0, 3.0, math.pi - 1e-12)
+ALPHAS_LARGE_N = (1e-300, 1e-100, 1e-60, 1e-6, 1e-3, 1e-2, 1.0, 3.0, math.pi - 1e-12)
 DPS = 30
 EPS = 2.0**-52
 #: Below this alpha the 'V_to_T' reference is not computed (the float result is refused; 1/s^{3n} leaves the range).
@@ -299,10 +299,10 @@ def product_errors(n: int, alpha: float, h: int) -> dict:
 
 
 def products(n: int, alpha: float) -> dict:
-    """The worst over the h of :data:`product_hs` (all seven for n <= 10; the centre R_{2,1,1}, B_{2,2,0} and
-    B_{2,1,0} beyond)."""
+    """The worst over the h measured: all seven for n <= 10; beyond, the centre R_{2,1,1}, B_{2,2,0} and B_{2,1,0}
+    (the first two below 1e-60, where the reference is mp)."""
     t0 = time.perf_counter()
-    hs = range(7) if n <= 10 else (0, 5, 6)
+    hs = range(7) if n <= 10 else (0, 5, 6) if alpha >= 1e-60 else (0, 5)  # mp at n = 20: 50 s per h
     per = [product_errors(n, alpha, h) for h in hs]
     return {"hs": list(hs), "normwise": max(p["normwise"] for p in per), "entrywise": max(p["entrywise"] for p in per),
             "ratio": max(p["ratio"] for p in per), "worst_h": max(per, key=lambda p: p["ratio"])["h"],
@@ -361,11 +361,11 @@ SUBDIVISION_DIRECT_N = 4
 SUBDIVISION_PROXY_ALPHA = 1e-30
 
 
-def subdivision_edges(ns, alphas=(1e-300, math.pi - 1e-12)) -> list[dict]:
+def subdivision_edges(ns, alphas=(1e-300, math.pi - 1e-12), proxy: float = SUBDIVISION_PROXY_ALPHA) -> list[dict]:
     """Subdivision (report only): the float product route against the certified mp route (30 digits).  For
-    alpha = 1e-300 and n > SUBDIVISION_DIRECT_N the reference is S(1e-30): S is even and smooth at 0 (proven for
-    n <= 2, docs/subdivision_for_all_n.md section 9; measured S(alpha) - S(0) ~ alpha^2/32 beyond), so the two differ
-    by about 1e-61 -- evidence, not a proof, for those n."""
+    alpha = 1e-300 and n > SUBDIVISION_DIRECT_N the reference is S(proxy), 1e-30 or 1e-10: S is even and smooth at 0
+    (proven for n <= 2, docs/subdivision_for_all_n.md section 9; measured S(alpha) - S(0) ~ alpha^2/32 beyond), so
+    the two differ by about 1e-61 or 3e-22 -- evidence, not a proof, for those n."""
     from paper_repro.core.subdivision import subdivision_matrices
     from paper_repro.core.subdivision_products import subdivision_matrices_float
 
@@ -373,7 +373,7 @@ def subdivision_edges(ns, alphas=(1e-300, math.pi - 1e-12)) -> list[dict]:
     for n in ns:
         for alpha in alphas:
             t0 = time.perf_counter()
-            ref_alpha = alpha if alpha > 1e-100 or n <= SUBDIVISION_DIRECT_N else SUBDIVISION_PROXY_ALPHA
+            ref_alpha = alpha if alpha > 1e-100 or n <= SUBDIVISION_DIRECT_N else proxy
             flo, bnd = subdivision_matrices_float(n, alpha, bound=True)
             with mpmath.workdps(DPS):
                 mp = subdivision_matrices(n, mpmath.mpf(ref_alpha), "mp", dps=DPS)
@@ -470,6 +470,8 @@ def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--n", type=int, nargs="*", default=[1, 2, 3, 5, 8, 10, 15, 20, 25, 30])
     ap.add_argument("--subdivision-n", type=int, nargs="*", default=list(range(1, 11)))
+    ap.add_argument("--subdivision-proxy", type=float, default=SUBDIVISION_PROXY_ALPHA,
+                    help="the reference alpha for subdivision at 1e-300 beyond n = 4 (1e-30: 155 s at n = 7)")
     ap.add_argument("--combine", nargs="*", default=None,
                     help="write the report from these JSON files of earlier runs (parts run in parallel)")
     ap.add_argument("--out", default="reports")
@@ -481,7 +483,7 @@ def main(argv=None) -> int:
         sub = sorted((s for p in parts for s in p["subdivision"]), key=lambda s: (s["n"], s["alpha"]))
         load = tuple(max(p["load"][k] for p in parts) for k in range(3))
     else:
-        recs, sub = [], subdivision_edges(a.subdivision_n)
+        recs, sub = [], subdivision_edges(a.subdivision_n, proxy=a.subdivision_proxy)
         for n in a.n:
             alphas = ALPHAS_SMALL_N if n <= 10 else ALPHAS_LARGE_N
             for alpha in sorted({*alphas, 1.01 * v_to_t_float_alpha_min(n)}):
