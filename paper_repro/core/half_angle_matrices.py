@@ -162,7 +162,7 @@ def product_float_bound(n: int) -> float:
     """The relative part of the entrywise bound of the float :func:`product_matrix`: ``|Q_float - Q| <= (2 n + 8) eps
     |Q| + PRODUCT_FLOAT_FLOOR`` for every entry, every h and alpha in (0, pi).  A measured bound: each of x_f, x_h,
     P and x'_g is a sum of non-negative terms (no cancellation), and the largest error measured against mp is
-    3.3 eps for n <= 10 (the seven h, alpha from 1e-300 to pi - 1e-12), at most 0.2 of this bound up to n = 30
+    3.4 eps for n <= 10 (the seven h, alpha from 1e-300 to pi - 1e-12), at most 0.17 of this bound up to n = 30
     (``tools/transformation_accuracy.py`` -> ``reports/transformation_accuracy.md``).
 
     >>> product_float_bound(10) / 2.0**-52
