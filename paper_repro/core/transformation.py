@@ -56,7 +56,6 @@ column the exact collocation solve of claim ``basis_transformation`` published i
 
 from __future__ import annotations
 
-import contextlib
 from functools import cache
 from math import comb
 
@@ -439,28 +438,56 @@ def transformation_in_context(n: int, s, c, ctx: Context, direction: str, normal
         return ctx.mul(big_n, ctx.mul(scaled_normalizing(n, s, c, ctx), _inverse_sin_powers(n, s, ctx))[None, :])
 
 
-#: The float 'V_to_T' matrix loses digits to cancellation as alpha -> 0: measured against mp at 60 digits
-#: (``tools/transformation_accuracy.py`` -> ``reports/transformation_accuracy.md``, n = 1..10, alpha from 1e-6 to
-#: pi - 1e-12), its largest error relative to its largest entry stays below :func:`v_to_t_float_bound`.  Float
-#: results whose bound exceeds :data:`FLOAT_REL_GOAL` are refused.
+#: The float matrices lose digits: 'V_to_T' to cancellation as alpha -> 0 (about eps / alpha^2) and, in both
+#: directions, geometrically in n (about 1.6^n eps; 'V_to_T' most near alpha = pi, 'T_to_V' at small alpha).  Measured
+#: for n <= 30 and alpha in [1e-300, pi - 1e-12] (``tools/transformation_accuracy.py`` -> ``reports/
+#: transformation_accuracy.md``; the reference: mp for n <= 10, double-double beyond), the largest error relative to
+#: the largest entry stays below :func:`v_to_t_float_bound` / :func:`t_to_v_float_bound`.  Float 'V_to_T' results
+#: whose bound exceeds :data:`FLOAT_REL_GOAL` are refused.
 FLOAT_REL_GOAL = 1e-8
 _EPS = 2.0**-52
 
 
-def v_to_t_float_bound(n: int, alpha: float) -> float:
-    """Bound of the relative error (to the largest entry) of the float 'V_to_T' matrix: ``(12 n + 8) eps (1 +
-    1/alpha^2)``, 1.5-5 times the largest error measured for n <= 10 at alpha in [1e-6, pi - 1e-12] (a measured bound;
-    beyond n = 10 it extrapolates the measured growth, about 3 n eps / alpha^2).
+def _growth(n: int, rate: float, divisor: float, linear: int) -> float:
+    """``max(linear, rate^n / divisor)``: the n-dependence of the float bounds (a measured geometric growth)."""
+    return max(float(linear), rate**n / divisor)
 
-    >>> v_to_t_float_bound(3, 1.0) < 1e-13, v_to_t_float_bound(3, 1e-4) > 1e-8
-    (True, True)
+
+def v_to_t_float_bound(n: int, alpha: float) -> float:
+    """Bound of the relative error (to the largest entry) of the float 'V_to_T' matrix:
+    ``eps ((12 n + 8) / alpha^2 + max(12 n + 8, 1.7^n / 3))``, a measured bound.
+
+    The first term is the cancellation as alpha -> 0 (measured at most 120 eps / alpha^2 up to n = 30); the second
+    the growth in n at large alpha (measured 126, 518, 6375 eps at n = 12, 15, 20 near alpha = 3.1, about 1.65^n).
+    Until this bound, ``(12 n + 8) eps (1 + 1/alpha^2)`` (set from n <= 10) was exceeded 2.4 times at n = 15,
+    alpha = 3 and 4.8 times at n = 20.  The form was fitted on n <= 20; n = 25 and 30 are out of sample.
+
+    >>> v_to_t_float_bound(3, 1.0) < 1e-13, v_to_t_float_bound(3, 1e-4) > 1e-8, v_to_t_float_bound(3, 1e-300)
+    (True, True, inf)
+    >>> round(v_to_t_float_bound(20, 3.0) / 2.0**-52)
+    13575
     """
-    return (12 * n + 8) * _EPS * (1 + 1 / (alpha * alpha))
+    inv = 1.0 / alpha  # not 1 / alpha^2: alpha^2 underflows to 0 below alpha = 1.5e-162 (then the bound is inf)
+    return _EPS * ((12 * n + 8) * inv * inv + _growth(n, 1.7, 3.0, 12 * n + 8))
+
+
+def t_to_v_float_bound(n: int) -> float:
+    """Bound of the relative error (to the largest entry) of the float 'T_to_V' matrix wherever it is finite:
+    ``eps max(4 n + 4, 1.6^n / 5)`` at every alpha, a measured bound (the largest errors: 18.5 eps at n = 10, 135 at
+    n = 15, 1279 at n = 20, at alpha <= 0.01; fitted on n <= 20).  Where an entry leaves float64 (about 1/s^{3n}),
+    :func:`transformation_matrix` raises OverflowError.
+
+    >>> t_to_v_float_bound(10) / 2.0**-52, round(t_to_v_float_bound(20) / 2.0**-52)
+    (44.0, 2418)
+    """
+    return _growth(n, 1.6, 5.0, 4 * n + 4) * _EPS
 
 
 def v_to_t_float_alpha_min(n: int) -> float:
-    """The smallest alpha at which the float 'V_to_T' matrix keeps :data:`FLOAT_REL_GOAL` (its bound's threshold)."""
-    return float(np.sqrt((12 * n + 8) * _EPS / (FLOAT_REL_GOAL - (12 * n + 8) * _EPS)))
+    """The smallest alpha at which the float 'V_to_T' matrix keeps :data:`FLOAT_REL_GOAL` (its bound's threshold;
+    ``inf`` if the bound exceeds it at every alpha)."""
+    room = FLOAT_REL_GOAL - _growth(n, 1.7, 3.0, 12 * n + 8) * _EPS
+    return float(np.sqrt((12 * n + 8) * _EPS / room)) if room > 0 else float("inf")
 
 
 def transformation_matrix(n: int, alpha, direction: str = "V_to_T", *, normalized: bool = True,
@@ -478,9 +505,11 @@ def transformation_matrix(n: int, alpha, direction: str = "V_to_T", *, normalize
     ``alpha``: a :class:`~paper_repro.core.domain.RationalAngle` (then exact: an object array of flint ``fmpq``) or a
     real number in (0, pi) (then float64, bit-stable); ``arith`` overrides the arithmetic (``'float'``, ``'exact'``,
     ``'mp'`` with ``dps`` digits, ``'ball'``, or a context).  ``n`` from 1 to
-    :data:`~paper_repro.util.limits.MAX_N_TRANSFORMATION`.  The float matrix of ``'V_to_T'`` loses accuracy as n
-    grows and as alpha -> 0 (cancellation to about eps/s^2; measured in docs/transformation_for_all_n.md);
-    ``OverflowError`` if an entry exceeds float64.
+    :data:`~paper_repro.util.limits.MAX_N_TRANSFORMATION`.  Float results: ``'V_to_T'`` is within
+    :func:`v_to_t_float_bound` (relative to its largest entry) and refused (``ValueError``) where that bound exceeds
+    :data:`FLOAT_REL_GOAL`, below alpha = :func:`v_to_t_float_alpha_min` (6.7e-4 at n = 1, 2.9e-3 at n = 30);
+    ``'T_to_V'`` is within :func:`t_to_v_float_bound` and raises ``OverflowError`` where an entry exceeds float64
+    (measured for n <= 30, alpha in [1e-300, pi - 1e-12]: reports/transformation_accuracy.md).
     """
     n = check_int(n, "n", 1, MAX_N_TRANSFORMATION, why="a dense delta_n x delta_n matrix built in O(n^5) operations")
     if not isinstance(direction, str):
@@ -499,12 +528,13 @@ def transformation_matrix(n: int, alpha, direction: str = "V_to_T", *, normalize
             and float(alpha) < v_to_t_float_alpha_min(n)):
         raise ValueError(f"transformation_matrix(n={n}, alpha={float(alpha)!r}, 'V_to_T') in float64 loses its digits "
                          f"to cancellation below alpha = {v_to_t_float_alpha_min(n):.2g} (measured bound "
-                         f"(12n+8) eps/alpha^2 > {FLOAT_REL_GOAL:g} relative): give arith='mp' or alpha as a "
+                         f"v_to_t_float_bound > {FLOAT_REL_GOAL:g} relative): give arith='mp' or alpha as a "
                          f"RationalAngle (exact); the 'T_to_V' direction is accurate at every alpha")
     if ctx.exact and not isinstance(alpha, RationalAngle):
         raise TypeError(f"arith {ctx.name!r} needs alpha as a RationalAngle (rational tan(alpha/4)), "
                         f"got {type(alpha).__name__}")
-    with ctx.scope() if not isinstance(ctx, FloatContext) else contextlib.nullcontext():
+    # float: an entry beyond float64 is reported by the OverflowError below, not by numpy's RuntimeWarnings first
+    with ctx.scope() if not isinstance(ctx, FloatContext) else np.errstate(over="ignore", invalid="ignore"):
         s, c = half_angle(alpha, ctx)
         out = transformation_in_context(n, s, c, ctx, direction, bool(normalized))
     if out.dtype == np.float64 and not np.isfinite(out).all():
@@ -513,6 +543,6 @@ def transformation_matrix(n: int, alpha, direction: str = "V_to_T", *, normalize
     return out
 
 
-__all__ = ["DIRECTIONS", "FLOAT_REL_GOAL", "v_to_t_float_bound", "v_to_t_float_alpha_min",
+__all__ = ["DIRECTIONS", "FLOAT_REL_GOAL", "v_to_t_float_bound", "t_to_v_float_bound", "v_to_t_float_alpha_min",
            "transformation_matrix", "transformation_in_context", "gamma_coefficients", "scaled_theta",
            "expansion_matrix", "scaled_normalizing", "half_angle", "v_columns"]
