@@ -168,7 +168,7 @@ def product_float_bound(n: int) -> float:
     >>> product_float_bound(10) / 2.0**-52
     28.0
     """
-    return (2 * n + 8) * 2.0**-52
+    return (2 * check_n(n) + 8) * 2.0**-52
 
 
 def product_matrix(n: int, h: int | str, alpha, arith: str | Context = "float") -> np.ndarray:

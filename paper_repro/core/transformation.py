@@ -467,6 +467,8 @@ def v_to_t_float_bound(n: int, alpha: float) -> float:
     >>> round(v_to_t_float_bound(20, 3.0) / 2.0**-52)
     13575
     """
+    n = check_int(n, "n", 1, MAX_N_TRANSFORMATION, why="the bound is measured up to n = 30")
+    alpha = check_alpha(alpha)
     inv = 1.0 / alpha  # not 1 / alpha^2: alpha^2 underflows to 0 below alpha = 1.5e-162 (then the bound is inf)
     return _EPS * ((12 * n + 8) * inv * inv + _growth(n, 1.7, 3.0, 12 * n + 8))
 
@@ -480,12 +482,18 @@ def t_to_v_float_bound(n: int) -> float:
     >>> t_to_v_float_bound(10) / 2.0**-52, round(t_to_v_float_bound(20) / 2.0**-52)
     (44.0, 2418)
     """
+    n = check_int(n, "n", 1, MAX_N_TRANSFORMATION, why="the bound is measured up to n = 30")
     return _growth(n, 1.6, 5.0, 4 * n + 4) * _EPS
 
 
 def v_to_t_float_alpha_min(n: int) -> float:
     """The smallest alpha at which the float 'V_to_T' matrix keeps :data:`FLOAT_REL_GOAL` (its bound's threshold;
     ``inf`` if the bound exceeds it at every alpha)."""
+    return _alpha_min(check_int(n, "n", 1, MAX_N_TRANSFORMATION, why="the bound is measured up to n = 30"))
+
+
+def _alpha_min(n: int) -> float:
+    """:func:`v_to_t_float_alpha_min` for inner code (``n`` already checked)."""
     room = FLOAT_REL_GOAL - _growth(n, 1.7, 3.0, 12 * n + 8) * _EPS
     return float(np.sqrt((12 * n + 8) * _EPS / room)) if room > 0 else float("inf")
 
@@ -525,9 +533,9 @@ def transformation_matrix(n: int, alpha, direction: str = "V_to_T", *, normalize
         arith = "exact" if isinstance(alpha, RationalAngle) else "float"
     ctx = get_context(arith, dps=dps)
     if (direction == "V_to_T" and isinstance(ctx, FloatContext) and not isinstance(alpha, RationalAngle)
-            and float(alpha) < v_to_t_float_alpha_min(n)):
+            and float(alpha) < _alpha_min(n)):
         raise ValueError(f"transformation_matrix(n={n}, alpha={float(alpha)!r}, 'V_to_T') in float64 loses its digits "
-                         f"to cancellation below alpha = {v_to_t_float_alpha_min(n):.2g} (measured bound "
+                         f"to cancellation below alpha = {_alpha_min(n):.2g} (measured bound "
                          f"v_to_t_float_bound > {FLOAT_REL_GOAL:g} relative): give arith='mp' or alpha as a "
                          f"RationalAngle (exact); the 'T_to_V' direction is accurate at every alpha")
     if ctx.exact and not isinstance(alpha, RationalAngle):
