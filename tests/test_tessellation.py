@@ -182,8 +182,11 @@ def test_every_triangle_lies_in_a_right_isosceles_cell():
 
 def test_rounding_allowance_covers_the_measured_error_of_m():
     """M of float64 sub-nets against a 40-digit chain (the middle and the u corner sub-triangle, repeated to depth 14,
-    n = 2, alpha = 3): at every depth k the relative error of M is at most a tenth of the allowance
-    rounding_factor(k) - 1 (it grows like 4^k eps, docs/tessellation.md §3)."""
+    n = 2, alpha = 3): at every depth k the relative error of M is at most 1/100 of the allowance
+    rounding_factor(k) - 1 (it grows like 4^k eps, docs/tessellation.md §3).  The margin 100 at n = 2 stands for
+    about 30 at n = 6, whose errors the referee measured about 3 times larger (rel / (4^k eps) up to 4.2 against
+    1.3 here).  Measured: worst ratio 0.0029 (depth 13); the former constant allowance 1e-6 gives 0.032 at depth 14
+    and fails."""
     import mpmath
 
     from paper_repro.core.half_angle_matrices import derivative_nets
@@ -218,7 +221,7 @@ def test_rounding_allowance_covers_the_measured_error_of_m():
                 m_mp = float((m[0] + m[2]) / 2 + mpmath.sqrt(((m[0] - m[2]) / 2) ** 2 + m[1] ** 2))
                 rel = abs(m_float - m_mp) / m_mp
                 worst.append((rel / (rounding_factor(k) - 1), part, k, rel))
-    assert max(worst)[0] <= 0.1, max(worst)
+    assert max(worst)[0] <= 0.01, max(worst)
 
 
 @pytest.mark.parametrize("kwargs, name", [
