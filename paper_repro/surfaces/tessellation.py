@@ -84,8 +84,8 @@ ROUNDING_ALLOWANCE = 1e-6
 #: Depth-aware part of the allowance: C 4^k eps at depth k.  Measured (float tree against a 40-digit tree, chains to
 #: depth 14, n = 2 and 6, docs/tessellation.md §3): |relative error of M| <= 4.2 * 4^k eps; C = 256 is 60 times that.
 ROUNDING_GROWTH = 256.0
-#: Allowed leaf grid steps: m 2^j with m in {1, 3, 5, 7} (consecutive steps differ by at most a factor 1.25), so all
-#: points lie on one lattice alpha / (105 * 2^K).
+#: Allowed leaf grid steps: m 2^j with m in {1, 3, 5, 7}, j <= 10 (consecutive steps differ by a factor 2, 1.5, 1.33
+#: from 1 to 4 and by at most 1.25 from 4 on), so all points lie on one lattice alpha / (105 * 2^K).
 LATTICE = 105
 _STEPS = sorted({m << j for m in (1, 3, 5, 7) for j in range(0, 11)})
 #: Largest K of the lattice (the line keys, below about 5.5 * (4 * 105 * 2^K)^2, stay below 2^63).
@@ -174,7 +174,7 @@ def rounding_factor(depth: int) -> float:
     >>> rounding_factor(0) == 1 + ROUNDING_ALLOWANCE, rounding_factor(14) > 1 + 3e-6
     (True, True)
     """
-    return 1.0 + max(ROUNDING_ALLOWANCE, ROUNDING_GROWTH * 4.0 ** depth * np.finfo(np.float64).eps)
+    return 1.0 + max(ROUNDING_ALLOWANCE, ROUNDING_GROWTH * 4.0 ** depth * 2.0 ** -52)
 
 
 def _need(beta: float, m_bound: np.ndarray, tol: float) -> np.ndarray:
@@ -239,8 +239,9 @@ class _Leaves(NamedTuple):
 
 def _tree(arr: np.ndarray, n: int, alpha: float, tol: float, leaf_resolution: int, max_depth: int,
           max_vertices: int) -> _Leaves:
-    """Breadth-first subdivision: a node becomes a leaf when its grid needs at most ``leaf_resolution`` steps (or at
-    ``max_depth``, or when the next level would exceed :data:`MAX_TREE_FLOATS`).  Refused early (``ValueError``
+    """Breadth-first subdivision: a node becomes a leaf when its unrounded grid step ``need`` is at most
+    ``leaf_resolution`` (the rounded step may exceed it), at ``max_depth``, or when the next level would exceed
+    :data:`MAX_TREE_FLOATS`.  Refused early (``ValueError``
     naming max_vertices) when the grids the current level asks for exceed :data:`EARLY_REFUSAL` times
     ``max_vertices``: refining lowers the count only as far as the bound tightens (measured: the bound of the root
     is at most 3.7 times the sampled maximum of the second derivative, docs/tessellation.md)."""
