@@ -2,9 +2,11 @@
 radii 2 and 1, alpha = pi/2; the lower triangle of the square [0, pi/2]^2) and check each mesh densely.
 
     PYTHONPATH=$PWD python tools/tessellation_bench.py [--tols 1e-3,1e-4,1e-5,1e-6] [--repeat 3] [--no-check]
+        [--check-steps K]
 
 Per tolerance: vertices, triangles, leaves, depth, fans, the bound, the measured deviation (barycentric grid of 4
-steps in every triangle, 3 above 1 M triangles; skipped with --no-check), the wall and CPU times (all threads) of
+steps, 15 points, in every triangle, 3 steps, 10 points, above 1 M triangles unless --check-steps K is given;
+skipped with --no-check), the wall and CPU times (all threads) of
 ``repeat`` warm calls (the first call of the process, which builds the subdivision matrices, is reported
 separately), and the wall time per million vertices.
 """
@@ -40,6 +42,8 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--tols", default="1e-3,1e-4,1e-5,1e-6")
     ap.add_argument("--repeat", type=int, default=3)
     ap.add_argument("--no-check", action="store_true")
+    ap.add_argument("--check-steps", type=int, default=None,
+                    help="barycentric steps of the deviation check in every triangle, for every tol (4: 15 points)")
     ap.add_argument("--out", help="also write the table as markdown to this file (e.g. reports/tessellation_bench.md)")
     args = ap.parse_args(argv)
     rows = []
@@ -58,10 +62,12 @@ def main(argv: list[str] | None = None) -> int:
             times.append(time.perf_counter() - t)
             cpu.append(time.process_time() - c)
         big = len(mesh.triangles) > 1_000_000
-        dev = float("nan") if args.no_check else deviation(mesh, piece, k=3 if big else 4)
+        steps = args.check_steps or (3 if big else 4)
+        dev = float("nan") if args.no_check else deviation(mesh, piece, k=steps)
         best = min(times)
         print(f"tol {tol:.0e}: {len(mesh.points)} vertices, {len(mesh.triangles)} triangles, {mesh.leaves} leaves, "
-              f"depth {mesh.depth}, {mesh.fans} fans, bound {mesh.bound:.3e}, deviation {dev:.3e}; "
+              f"depth {mesh.depth}, {mesh.fans} fans, bound {mesh.bound:.3e}, deviation {dev:.3e} "
+              f"({(steps + 1) * (steps + 2) // 2} points per triangle), ratio {dev / mesh.bound:.3f}; "
               f"wall {', '.join(f'{x:.2f}' for x in times)} s, CPU {', '.join(f'{x:.2f}' for x in cpu)} s; "
               f"{best / len(mesh.points) * 1e6:.2f} s wall per M vertices")
         rows.append(f"| {tol:.0e} | {len(mesh.points)} | {len(mesh.triangles)} | {mesh.depth} | {mesh.bound:.2e} | "
@@ -70,8 +76,9 @@ def main(argv: list[str] | None = None) -> int:
         write_text(args.out, "\n".join([
             "# Adaptive tessellation of the torus piece (tools/tessellation_bench.py, run by `make bench`)", "",
             "Example exmp:torus (radii 2 and 1), alpha = pi/2, order n = 2; `paper_repro.tessellate(net, 2, pi/2, "
-            "tol)`. *deviation*: max |s - mesh| on a barycentric grid in every triangle (3 steps above 1 M "
-            f"triangles, else 4); times: best of {args.repeat} warm calls (wall) and CPU of all threads. Machine: "
+            "tol)`. *deviation*: max |s - mesh| on a barycentric grid in every triangle ("
+            + (f"{args.check_steps} steps" if args.check_steps else "3 steps above 1 M triangles, else 4")
+            + f"); times: best of {args.repeat} warm calls (wall) and CPU of all threads. Machine: "
             f"{os.cpu_count()} CPUs, load average at start {load[0]:.2f}. The first call of the process (the "
             f"subdivision matrices, the kernels) took {first:.2f} s. Measurements, not data.", "",
             "| tol | vertices | triangles | depth | bound | deviation | within tol | wall (s) | CPU (s) |",

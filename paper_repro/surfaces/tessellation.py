@@ -8,18 +8,23 @@ The bound (proven, §2 of docs/tessellation.md).  Write a patch over the paramet
   same alpha (the closed-form matrix C of :func:`~paper_repro.core.half_angle_matrices.derivative_nets`, proven for
   every n in docs/elevation_and_derivative_for_all_n.md).  So s_uu, s_uv, s_vv are patches with nets
   P_uu, P_uv, P_vv (:func:`second_derivative_nets`), and by the convex hull property (the blending functions are
-  non-negative and sum to 1: claims ``nonnegativity``, ``partition_of_unity``) |s_ab(x)| <= m_ab = max_f |P_ab,f|
+  non-negative and sum to 1: claim ``partition_of_unity``; non-negativity for every n by Corollary C of
+  docs/question1_for_all_n.md, a hand proof beyond the paper, and by claim ``nonnegativity_extended`` for
+  n <= 12 -- the paper proves it only for n <= 3, claim ``nonnegativity``) |s_ab(x)| <= m_ab = max_f |P_ab,f|
   on the whole triangle.  Hence every second directional derivative, unit direction e in (u, v), satisfies
   |D^2 s(x)[e, e]| <= M = lambda_max([[m_uu, m_uv], [m_uv, m_vv]]) (:func:`second_derivative_bound`).
-* *Linear interpolation.*  On a triangle tau of the (u, v) plane with longest edge l, the affine interpolant I of s
-  at its vertices satisfies |s(x) - I(x)| <= M l^2 / 6 for x in tau (Taylor with integral remainder, and
-  sum_i lambda_i |x - x_i|^2 <= l^2 / 3 on every triangle).
+* *Linear interpolation.*  On a triangle tau of the (u, v) plane whose vertices lie in a disc of radius rho, the
+  affine interpolant I of s at its vertices satisfies |s(x) - I(x)| <= M rho^2 / 2 for x in tau (Taylor with
+  integral remainder, and sum_i lambda_i |x - x_i|^2 = sum_i lambda_i |x_i - c|^2 - |x - c|^2 <= rho^2 for the
+  disc's centre c).  Every triangle the tessellator emits lies in one cell of its leaf's grid, a right-isosceles
+  triangle of hypotenuse l, inside the disc of radius l / 2 about the hypotenuse's midpoint (Thales): so
+  |s - I| <= M l^2 / 8 (:data:`INTERPOLATION_DIVISOR`; l^2 / 6 holds on every triangle).
 
 Midpoint subdivision (:mod:`paper_repro.core.subdivision`) gives the nets of the sub-patches; the sub-triangles are
 images of Omega^{alpha/2} by translations and point reflections of (u, v), isometries, so the bound of a sub-net
 holds for the parent patch over that sub-triangle.  Under subdivision M tends to the true maximum of the second
 derivative (the derivative's nets converge to it, measured in docs/tessellation.md), so refining the tree tightens
-the bound; a leaf is then cut into a uniform grid of r steps, r chosen so that M l^2 / 6 <= tol.
+the bound; a leaf is then cut into a uniform grid of r steps, r chosen so that M l^2 / 8 <= tol.
 
 Cracks: neighbouring leaves of different depth or grid step share their edge points.  Every leaf edge takes every
 mesh point that any leaf puts on the same segment; a grid cell with such extra points on its boundary is
@@ -29,8 +34,9 @@ shared segment both sides use the same sorted points.
 
 Vertices are evaluated on the given patch (:class:`~paper_repro.surfaces.patch.Patch`, float64), not taken from the
 sub-nets.  What is proven and what is measured: the inequality is proven; it is evaluated in float64 (the sub-nets,
-their derivative nets and the vertices carry rounding errors, not bounded rigorously; an allowance is subtracted
-from tol, see :func:`tessellate`), and the tests verify the deviation a posteriori by dense sampling.
+their derivative nets and the vertices carry rounding errors, not bounded rigorously; M is multiplied by
+:func:`rounding_factor` of the depth and an allowance for the vertices is subtracted from tol, see
+:func:`tessellate`), and the tests verify the deviation a posteriori by dense sampling.
 
 >>> import numpy as np
 >>> from paper_repro.core.labels import delta
@@ -70,10 +76,16 @@ MAX_VERTICES = 4_000_000
 MAX_TREE_FLOATS = 20_000_000
 #: Early refusal: the tree stops when its current level asks for more than this many times max_vertices.
 EARLY_REFUSAL = 16
-#: Relative allowance for float64 rounding in the bound (the sub-nets, their derivative nets; not proven).
+#: The interpolation constant: |s - I| <= M l^2 / INTERPOLATION_DIVISOR on every triangle inside a right-isosceles
+#: grid cell of hypotenuse l (the disc lemma, docs/tessellation.md §2, Lemma B; 6 on an arbitrary triangle).
+INTERPOLATION_DIVISOR = 8.0
+#: Floor of the relative allowance for float64 rounding in M (the sub-nets, their derivative nets; not proven).
 ROUNDING_ALLOWANCE = 1e-6
-#: Allowed leaf grid steps: m 2^j with m in {1, 3, 5, 7} (consecutive steps differ by at most a factor 1.25), so all
-#: points lie on one lattice alpha / (105 * 2^K).
+#: Depth-aware part of the allowance: C 4^k eps at depth k.  Measured (float tree against a 40-digit tree, chains to
+#: depth 14, n = 2 and 6, docs/tessellation.md §3): |relative error of M| <= 4.2 * 4^k eps; C = 256 is 60 times that.
+ROUNDING_GROWTH = 256.0
+#: Allowed leaf grid steps: m 2^j with m in {1, 3, 5, 7}, j <= 10 (consecutive steps differ by a factor 2, 1.5, 1.33
+#: from 1 to 4 and by at most 1.25 from 4 on), so all points lie on one lattice alpha / (105 * 2^K).
 LATTICE = 105
 _STEPS = sorted({m << j for m in (1, 3, 5, 7) for j in range(0, 11)})
 #: Largest K of the lattice (the line keys, below about 5.5 * (4 * 105 * 2^K)^2, stay below 2^63).
@@ -153,10 +165,32 @@ def second_derivative_bound(nets, n: int, beta: float) -> np.ndarray:
     return 0.5 * (m_uu + m_vv) + np.sqrt(0.25 * (m_uu - m_vv) ** 2 + m_uv ** 2)
 
 
+def rounding_factor(depth: int) -> float:
+    """The factor applied to the float64 M of the nodes at ``depth`` k: 1 + max(:data:`ROUNDING_ALLOWANCE`,
+    :data:`ROUNDING_GROWTH` 4^k eps).  The relative error of M measured against a 40-digit tree grows like 4^k eps
+    (the second-derivative nets of a sub-net of side h = alpha / 2^k amplify its rounding by about 1/h^2);
+    docs/tessellation.md §3.  Not a proven bound.
+
+    >>> rounding_factor(0) == 1 + ROUNDING_ALLOWANCE, rounding_factor(14) > 1 + 3e-6
+    (True, True)
+    """
+    return 1.0 + max(ROUNDING_ALLOWANCE, ROUNDING_GROWTH * 4.0 ** depth * 2.0 ** -52)
+
+
+def _need(beta: float, m_bound: np.ndarray, tol: float) -> np.ndarray:
+    """The unrounded grid step: M l^2 / 8 = M beta^2 / (4 r^2) <= tol, l = sqrt(2) beta / r."""
+    return beta * np.sqrt(np.maximum(m_bound, 0.0) * 2.0 / (INTERPOLATION_DIVISOR * tol))
+
+
 def steps_for(beta: float, m_bound: np.ndarray, tol: float) -> np.ndarray:
-    """The grid steps r per leaf (allowed values m 2^j, m in {1, 3, 5, 7}) with ``M l^2 / 6 <= tol``, l = sqrt(2)
-    beta / r the longest edge of a grid cell (legs beta / r in the (u, v) plane): r >= beta sqrt(M / (3 tol))."""
-    need = beta * np.sqrt(np.maximum(m_bound, 0.0) / (3.0 * tol))
+    """The grid steps r per leaf (allowed values m 2^j, m in {1, 3, 5, 7}, j <= 10, so r <= 7168) with
+    ``M l^2 / 8 <= tol``, l = sqrt(2) beta / r the hypotenuse of a grid cell (legs beta / r in the (u, v) plane):
+    r >= beta sqrt(M / (4 tol)).  ``ValueError`` naming tol when more than 7168 steps are needed.
+
+    >>> steps_for(1.0, np.array([4.0, 400.0, 401.0]), 1.0).tolist()   # need 1, 10, 10.01
+    [1, 10, 12]
+    """
+    need = _need(beta, m_bound, tol)
     idx = np.searchsorted(np.array(_STEPS, dtype=np.float64), need, side="left")
     if idx.size and idx.max() >= len(_STEPS):
         raise ValueError(f"tol = {tol!r} needs a leaf grid of more than {_STEPS[-1]} steps; raise tol or max_depth")
@@ -200,13 +234,14 @@ class _Leaves(NamedTuple):
     b: np.ndarray
     sign: np.ndarray    # +1: (u', v') -> (a + u', b + v'); -1: (a - u', b - v')
     steps: np.ndarray   # r
-    bound: np.ndarray   # M beta^2 / (3 r^2)
+    bound: np.ndarray   # M beta^2 / (4 r^2) = M l^2 / 8
 
 
 def _tree(arr: np.ndarray, n: int, alpha: float, tol: float, leaf_resolution: int, max_depth: int,
           max_vertices: int) -> _Leaves:
-    """Breadth-first subdivision: a node becomes a leaf when its grid needs at most ``leaf_resolution`` steps (or at
-    ``max_depth``, or when the next level would exceed :data:`MAX_TREE_FLOATS`).  Refused early (``ValueError``
+    """Breadth-first subdivision: a node becomes a leaf when its unrounded grid step ``need`` is at most
+    ``leaf_resolution`` (the rounded step may exceed it), at ``max_depth``, or when the next level would exceed
+    :data:`MAX_TREE_FLOATS`.  Refused early (``ValueError``
     naming max_vertices) when the grids the current level asks for exceed :data:`EARLY_REFUSAL` times
     ``max_vertices``: refining lowers the count only as far as the bound tightens (measured: the bound of the root
     is at most 3.7 times the sampled maximum of the second derivative, docs/tessellation.md)."""
@@ -220,8 +255,8 @@ def _tree(arr: np.ndarray, n: int, alpha: float, tol: float, leaf_resolution: in
     out: list[tuple] = []
     for k in range(max_depth + 1):
         beta = alpha / (1 << k)
-        m_bound = np.minimum(second_derivative_bound(nets, n, beta) * (1 + ROUNDING_ALLOWANCE), cap)
-        need = beta * np.sqrt(m_bound / (3.0 * tol))
+        m_bound = np.minimum(second_derivative_bound(nets, n, beta) * rounding_factor(k), cap)
+        need = _need(beta, m_bound, tol)
         estimate = float(((need + 2) * (need + 3) / 2).sum())
         if estimate > EARLY_REFUSAL * max_vertices:
             raise ValueError(f"tol = {tol:.3g} needs about {estimate:.3g} vertices at depth {k} (the bound of this "
@@ -232,7 +267,7 @@ def _tree(arr: np.ndarray, n: int, alpha: float, tol: float, leaf_resolution: in
         if leaf.any():
             r = steps_for(beta, m_bound[leaf], tol)
             out.append((np.full(int(leaf.sum()), k), a[leaf], b[leaf], sign[leaf], r,
-                        m_bound[leaf] * beta ** 2 / (3.0 * r.astype(np.float64) ** 2)))
+                        m_bound[leaf] * 2.0 * beta ** 2 / (INTERPOLATION_DIVISOR * r.astype(np.float64) ** 2)))
         keep = ~leaf
         if not keep.any():
             break
@@ -393,12 +428,18 @@ def tessellate(net, n: int, alpha, tol, *, leaf_resolution: int = 64, max_depth:
     a node (:func:`second_derivative_bound`) allows a grid of at most ``leaf_resolution`` steps, or ``max_depth``;
     each leaf is cut into the uniform grid its bound asks for; leaves of different depth or step are joined without
     cracks (shared edge points, centroid fans).  The guarantee is the proven bound of the module docstring, evaluated
-    in float64 with a relative allowance :data:`ROUNDING_ALLOWANCE` for rounding (not proven); the tests verify
-    it a posteriori by dense sampling.  ``Tessellation.bound`` is the largest leaf bound.
+    in float64 with M multiplied by :func:`rounding_factor` of the node's depth and 1e-13 times the net's largest
+    absolute coordinate (its extent) subtracted from tol for the vertices' rounding (allowances, not proven); the
+    tests verify it a posteriori by dense sampling.  ``Tessellation.bound`` is the largest leaf bound plus that
+    1e-13 extent.  A node is a leaf when its unrounded step need <= ``leaf_resolution``, at ``max_depth``, or when
+    the next level would hold more than :data:`MAX_TREE_FLOATS` floats.
 
     Refused before work (``TypeError``/``ValueError`` naming the parameter): ``n`` outside 1..
     :data:`MAX_N_TESSELLATE`, alpha outside (0, pi), ``tol`` not positive or below 1e-12 times the net's largest
-    coordinate, a malformed net; after the (cheap) tree, a mesh above ``max_vertices`` (``ValueError`` naming it).
+    coordinate, a malformed net, ``leaf_resolution`` outside 1..256, ``max_depth`` outside 0..14, ``max_vertices``
+    outside 3..5e7; during the (cheap) tree, a level asking for more than 16 ``max_vertices`` or a leaf needing more
+    than 7168 steps (``ValueError`` naming max_vertices or tol); after it, a mesh above ``max_vertices`` or a lattice
+    finer than alpha / (105 2^21) (``ValueError`` naming tol and max_depth).
 
     >>> import numpy as np
     >>> from paper_repro.core.labels import delta
@@ -424,4 +465,4 @@ def tessellate(net, n: int, alpha, tol, *, leaf_resolution: int = 64, max_depth:
 
 
 __all__ = ["tessellate", "Tessellation", "second_derivative_bound", "second_derivative_nets", "derivative_nets_t",
-           "steps_for", "MAX_N_TESSELLATE", "MAX_VERTICES"]
+           "steps_for", "rounding_factor", "MAX_N_TESSELLATE", "MAX_VERTICES"]
