@@ -190,3 +190,10 @@ def test_the_hostile_subdivision_class_passes():
     subdivision_matrix, subdivide and subdivide_to_depth; at alpha from 1e-300 to pi- the matrices are finite with rows
     summing to 1 and a sub-patch equals the patch on its sub-triangle."""
     _hostile_class_passes("subdivision", 600)
+
+
+def test_the_hostile_float_bounds_class_passes():
+    """tools/fuzz_api.py's class float_bounds: v_to_t_float_bound, t_to_v_float_bound, v_to_t_float_alpha_min and
+    product_float_bound refuse bad n and alpha naming the parameter; valid calls are positive (inf where alpha^2
+    underflows); transformation_matrix returns just above v_to_t_float_alpha_min and refuses just below it."""
+    _hostile_class_passes("float_bounds", 600)

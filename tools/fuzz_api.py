@@ -444,6 +444,31 @@ def cases(rng: random.Random, with_cli: bool):
             f"x = sample_points({a!r} / 2, 20, seed=1); from paper_repro.core.subdivision import to_parent; "
             f"r = rel(Patch(2, {a!r} / 2, q.w)(x), Patch(2, {a!r}, net)(to_parent(x, {a!r}, 'w')), 1.0)", "ok",
             "r < 1e-12")
+    # --- the stated float bounds of the transformation and the products: bad n/alpha refused naming it; valid calls
+    #     give the documented shape (finite or inf, positive); the refusal threshold is where the bound says
+    fb = ("from paper_repro.core.transformation import v_to_t_float_bound, t_to_v_float_bound, "
+          "v_to_t_float_alpha_min, transformation_matrix; "
+          "from paper_repro.core.half_angle_matrices import product_float_bound; ")
+    for b in ("True", "0", "-3", "2.5", "10**9", "'2'", "None", "np.int64(31)"):
+        for f in ("v_to_t_float_bound({}, 1.0)", "t_to_v_float_bound({})", "v_to_t_float_alpha_min({})",
+                  "product_float_bound({})"):
+            if not (b == "np.int64(31)" and f.startswith("product")):  # the products' bound holds to n = 1000
+                add("float_bounds", fb + "r = " + f.format(b), "err", ("n",))
+    add("float_bounds", fb + "r = product_float_bound(np.int64(1001))", "err", ("n",))
+    for b in ("float('nan')", "float('inf')", "-1.0", "0.0", "4.0", "1j", "'x'", "None", "5e-324"):
+        add("float_bounds", fb + f"r = v_to_t_float_bound(3, {b})", "err", ("alpha",))
+    for n in (1, 10, 30):
+        for a in (1e-300, 1e-100, 1e-8, 1e-3, 1.0, math.pi - 1e-12):
+            add("float_bounds", fb + f"r = v_to_t_float_bound({n}, {a!r})", "ok",
+                "r > 0 and (r == math.inf or math.isfinite(r))")
+        add("float_bounds", fb + f"r = (t_to_v_float_bound({n}), product_float_bound({n}))", "ok",
+            "0 < r[0] < 1e-9 and 0 < r[1] < 1e-13")
+        add("float_bounds", fb + f"a = v_to_t_float_alpha_min({n}); "
+            f"T = transformation_matrix({n}, a * 1.01) if {n} <= 10 else None; r = (a, T)", "ok",
+            "1e-4 < r[0] < 1e-2 and (r[1] is None or np.isfinite(r[1]).all())")
+        add("float_bounds", fb + f"r = transformation_matrix({n}, v_to_t_float_alpha_min({n}) * 0.99)", "err",
+            ("alpha",))
+
     if with_cli:
         py = sys.executable
         for sched in ("tcp://127.0.0.1:1", "tcp://no-such-host.invalid:8786", "tls://127.0.0.1:1"):
