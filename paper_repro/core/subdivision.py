@@ -47,6 +47,9 @@ True
 from __future__ import annotations
 
 import math
+import threading
+from collections import OrderedDict
+from collections.abc import Callable
 from functools import lru_cache
 from typing import NamedTuple
 
@@ -78,6 +81,9 @@ PARTS = ("u", "v", "w", "middle")
 MAX_N_SUBDIVISION = MAX_N_TRANSFORMATION
 #: Bits to which the float64 route certifies every entry before rounding.
 FLOAT_BITS = 60
+#: Byte budget of the float matrix caches (the four S, one S, the stacked CSR, the CSR of each S; one budget for all):
+#: at n = 30 one S is 62 MB, so entry counts alone (32 each) could hold about 8 GB.
+FLOAT_CACHE_BYTES = 512 * 2**20
 #: Largest ball precision tried (bits) before giving up.
 MAX_PREC = 1 << 14
 #: Largest depth of :func:`subdivide_to_depth` (4^k sub-nets).
@@ -414,21 +420,78 @@ def _certified(n: int, alpha, bits: int) -> tuple[list[arb_mat], int]:
                           f"at {MAX_PREC} bits")
 
 
-@lru_cache(maxsize=32)
-def _float_matrices(n: int, alpha: float) -> tuple[np.ndarray, ...]:
-    """The four S in float64 by the product route (:mod:`paper_repro.core.subdivision_products`), read-only."""
-    out = subdivision_matrices_float(n, alpha)
-    for arr in out:
+def _nbytes(value) -> int:
+    """Bytes held by a cached value: numpy arrays, scipy CSR matrices, tuples of them."""
+    if isinstance(value, tuple):
+        return sum(_nbytes(v) for v in value)
+    if isinstance(value, sp.csr_matrix):
+        return value.data.nbytes + value.indices.nbytes + value.indptr.nbytes
+    return int(value.nbytes)
+
+
+class ByteBoundedCache:
+    """A least-recently-used cache bounded by the bytes of its values: after an insertion the oldest entries are
+    dropped until the total is at most ``budget`` or only the new entry is left (so it holds at most
+    max(budget, the largest single value) bytes).  Thread-safe; a value is computed outside the lock.
+
+    >>> c = ByteBoundedCache(100)
+    >>> a = c.get("a", lambda: np.zeros(10)); b = c.get("b", lambda: np.zeros(10))  # 80 bytes each
+    >>> list(c.keys()), c.nbytes
+    (['b'], 80)
+    """
+
+    def __init__(self, budget: int) -> None:
+        self.budget = budget
+        self.nbytes = 0
+        self._data: OrderedDict = OrderedDict()
+        self._lock = threading.Lock()
+
+    def get(self, key, compute: Callable[[], object]):
+        with self._lock:
+            if key in self._data:
+                self._data.move_to_end(key)
+                return self._data[key][0]
+        value = compute()
+        size = _nbytes(value)
+        with self._lock:
+            if key not in self._data:
+                self._data[key] = (value, size)
+                self.nbytes += size
+            while self.nbytes > self.budget and len(self._data) > 1:
+                _, (_, old) = self._data.popitem(last=False)
+                self.nbytes -= old
+        return value
+
+    def keys(self) -> list:
+        with self._lock:
+            return list(self._data)
+
+    def clear(self) -> None:
+        with self._lock:
+            self._data.clear()
+            self.nbytes = 0
+
+
+#: The float matrices of the product route, bounded by :data:`FLOAT_CACHE_BYTES`.
+FLOAT_CACHE = ByteBoundedCache(FLOAT_CACHE_BYTES)
+
+
+def _read_only(arrays):
+    for arr in arrays:
         arr.setflags(write=False)
-    return out
+    return arrays
 
 
-@lru_cache(maxsize=32)
+def _float_matrices(n: int, alpha: float) -> tuple[np.ndarray, ...]:
+    """The four S in float64 by the product route (:mod:`paper_repro.core.subdivision_products`), read-only;
+    cached in :data:`FLOAT_CACHE`."""
+    return FLOAT_CACHE.get(("four", n, alpha), lambda: _read_only(subdivision_matrices_float(n, alpha)))
+
+
 def _float_part(n: int, alpha: float, part: str) -> np.ndarray:
     """One S in float64 by the product route, read-only (the same values as ``_float_matrices(n, alpha)``)."""
-    (out,) = subdivision_matrices_float(n, alpha, parts=(part,))
-    out.setflags(write=False)
-    return out
+    return FLOAT_CACHE.get(("part", n, alpha, part),
+                           lambda: _read_only(subdivision_matrices_float(n, alpha, parts=(part,)))[0])
 
 
 @lru_cache(maxsize=8)
@@ -570,17 +633,15 @@ def subdivide(net, n: int, alpha, arith: str | Context | None = None, *, dps: in
     return SubNets(*(_apply(m, arr) for m in mats))
 
 
-@lru_cache(maxsize=32)
 def _stacked_float(n: int, alpha: float) -> sp.csr_matrix:
     """The four float S stacked, ``(4 delta_n, delta_n)``, as a CSR matrix of the nonzero entries: its product with a
     net sums each row in the order of the columns (scipy's ``csr_matvecs``, a plain C loop: no BLAS, the same bits
     on every CPU) and skips S's zeros (about 80 % of a corner matrix, 40 % of the middle one at n = 10)."""
-    return sp.csr_matrix(np.vstack(_float_matrices(n, alpha)))
+    return FLOAT_CACHE.get(("stacked", n, alpha), lambda: sp.csr_matrix(np.vstack(_float_matrices(n, alpha))))
 
 
-@lru_cache(maxsize=32)
 def _float_csr(n: int, alpha: float) -> tuple[sp.csr_matrix, ...]:
-    return tuple(sp.csr_matrix(m) for m in _float_matrices(n, alpha))
+    return FLOAT_CACHE.get(("csr", n, alpha), lambda: tuple(sp.csr_matrix(m) for m in _float_matrices(n, alpha)))
 
 
 def subdivide_to_depth(net, n: int, alpha, k: int, arith: str | Context | None = None, *, dps: int = 50
