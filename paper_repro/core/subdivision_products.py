@@ -68,10 +68,11 @@ PARTS = ("u", "v", "w", "middle")
 #: for n <= 2, docs/subdivision_for_all_n.md section 11): the difference below ALPHA_TINY is about 1e-200.
 ALPHA_TINY = 1e-100
 #: Roundings along any path of the order-one computation (:func:`order_one_restriction`; derived in
-#: docs/subdivision_for_all_n.md section 11, "Error bound"): an entry of L_x at most 2, a binomial coefficient at
-#: most 2, a Horner start 3 and a Horner step 10 over its input, so at most 23 per variable; three variables (the
-#: middle) 69; the prefactor 1/(2 kappa')^e (e <= 3: two products, a quotient) 3.
-ORDER_ONE_ROUNDINGS = 3 * 23 + 3
+#: docs/subdivision_for_all_n.md section 11, "Error bound"), each occurrence of the correctly rounded inputs kappa',
+#: sigma' counted as one: an entry of L_x at most 4, a binomial coefficient at most 4, a Horner start 5 and a Horner
+#: step 12 over its input, so at most 29 per variable; three variables (the middle) 87; the prefactor
+#: 1/(2 kappa')^e (e <= 3: the input, two products, a quotient) 6.
+ORDER_ONE_ROUNDINGS = 3 * 29 + 6
 _F = FloatContext()
 
 
@@ -732,8 +733,8 @@ def subdivision_matrices_float(n: int, alpha: float, *, bound: bool = False, par
 def level_roundings(k: int) -> int:
     """Roundings that level k (order k - 1 -> k) adds along any path, the factor R_{k-1} excepted
     (docs/subdivision_for_all_n.md section 11, "Error bound"): a term ``coef kappa'^a sigma'^b`` of a product form
-    (powers by repeated multiplication, :func:`power_table`: a - 1 and b - 1, then two products; the integer coef
-    exact) at most max(a + b) over the terms; times the weight R_1[h, g]: 1; the fixed-order sum of a (row, column)
+    (the a + b occurrences of the correctly rounded inputs; powers by repeated multiplication, :func:`power_table`:
+    a - 1 and b - 1 products, then two products; the integer coef exact) at most 2 max(a + b) over the terms; times the weight R_1[h, g]: 1; the fixed-order sum of a (row, column)
     run of :func:`_combined` over the seven h: its length - 1; the sparse product: 1 product and the row's length - 1
     additions (the first addition to 0 is exact, not counted: the count is an upper bound either way).
 
@@ -746,7 +747,7 @@ def level_roundings(k: int) -> int:
     _, starts, indptr, _, _ = _pattern(k, tuple(range(7)))
     run = int(np.diff(np.r_[starts, len(rows)]).max())
     row = int(np.diff(indptr).max())
-    return int((a + b).max()) + 1 + (run - 1) + 1 + (row - 1)
+    return 2 * int((a + b).max()) + 1 + (run - 1) + 1 + (row - 1)
 
 
 def rounding_count(n: int) -> int:
@@ -756,7 +757,7 @@ def rounding_count(n: int) -> int:
     normalization ``x_f / x'_g`` (a quotient, then a product).
 
     >>> rounding_count(1), rounding_count(2) - rounding_count(1) == level_roundings(2)
-    (74, True)
+    (95, True)
     """
     return ORDER_ONE_ROUNDINGS + sum(level_roundings(k) for k in range(2, n + 1)) + 2
 
