@@ -23,9 +23,10 @@ above cancels: in float64 it loses every digit (measured: n = 4 at alpha = 0.1 h
 alpha = 1 9e-5).  So ``'float'`` does not use it: it takes the *product route* of
 :mod:`paper_repro.core.subdivision_products` (no solve, no M_alpha: the seven order-one restrictions by
 substitution and the cotangent rules, then the products of Theorem P level by level; proof in
-docs/subdivision_for_all_n.md, section 11), with an entrywise running-error bound and a measured error of at most
-a few units of 1e-15 against the certified route (n <= 8; the patch in mp up to n = 20,
-reports/subdivision_accuracy.md).  Below
+docs/subdivision_for_all_n.md, section 11), with an entrywise first-order error estimate (heuristic, a-posteriori)
+and a measured error of at most a few units of 1e-15 against the certified route (entrywise for n <= 8 and at
+n = 9, 10 against the exact S at a RationalAngle, tests/test_subdivision_speed.py; for n <= 20 only through the
+sub-patch against the patch in mp, reports/subdivision_accuracy.md).  Below
 alpha = 1e-100 the float route computes at 1e-100 (measured S(alpha) - S(1e-100) ~ alpha^2/32: about 1e-200 there).
 ``'mp'`` computes S = M_{alpha/2} Rot M_alpha^{-1} in ball arithmetic (python-flint ``arb``) at a precision raised
 until every entry is certified to ``2^-(prec + 10)``, then rounds the midpoints (the reference the float route is
@@ -550,8 +551,10 @@ def subdivision_matrix(n: int, alpha, part: str, arith: str | Context | None = N
     :func:`~paper_repro.core.labels.united_system`.
 
     ``alpha``: a real number in (0, pi) or a :class:`~paper_repro.core.domain.RationalAngle`; ``arith``: ``'float'``
-    (default for a real alpha; the product route, no solve: every entry within its running-error bound, measured
-    within 5e-15 of the certified value for n <= 20, docs/subdivision_for_all_n.md section 11), ``'mp'``
+    (default for a real alpha; the product route, no solve; entrywise within 1.8e-15 of the certified value measured
+    for n <= 8 and within its first-order error estimate, a heuristic a-posteriori estimate, in the tests; for
+    9 <= n <= 20 measured through the sub-patch against the patch in mp (2.3e-16 of max |P|) and entrywise against
+    the exact S at n = 9, 10 at one RationalAngle; docs/subdivision_for_all_n.md section 11), ``'mp'``
     (``dps`` digits, certified), ``'ball'`` (balls at the context's precision) or ``'exact'`` (default for a
     RationalAngle; flint ``fmpq``).  ``n`` from 1 to :data:`MAX_N_SUBDIVISION`.  Every row sums to 1 (partition
     of unity on both sides); S has negative entries (not a corner-cutting scheme, docs/subdivision_for_all_n.md).
@@ -572,8 +575,8 @@ def subdivision_matrix(n: int, alpha, part: str, arith: str | Context | None = N
 
 def _csr_apply(mat: sp.csr_matrix, net: np.ndarray) -> np.ndarray:
     """``mat @ net`` one coordinate at a time (scipy's ``csr_matvec``: each row summed in the order of its entries,
-    a plain C loop, the same bits on every CPU and for every layout of ``net``; faster than the multi-vector loop
-    for d = 3)."""
+    a plain C loop, the same bits for every layout of ``net`` and every SIMD dispatch of numpy; faster than the
+    multi-vector loop for d = 3)."""
     cols = np.ascontiguousarray(net.T)
     out = np.empty((mat.shape[0], net.shape[1]))
     for c in range(net.shape[1]):
@@ -635,8 +638,9 @@ def subdivide(net, n: int, alpha, arith: str | Context | None = None, *, dps: in
 
 def _stacked_float(n: int, alpha: float) -> sp.csr_matrix:
     """The four float S stacked, ``(4 delta_n, delta_n)``, as a CSR matrix of the nonzero entries: its product with a
-    net sums each row in the order of the columns (scipy's ``csr_matvecs``, a plain C loop: no BLAS, the same bits
-    on every CPU) and skips S's zeros (about 80 % of a corner matrix, 40 % of the middle one at n = 10)."""
+    net sums each row in the order of the columns (scipy's ``csr_matvecs``, a plain C loop: no BLAS; the same bits
+    wherever it runs unfused, docs/subdivision_for_all_n.md section 11) and skips S's zeros (about 80 % of a corner
+    matrix, 40 % of the middle one at n = 10)."""
     return FLOAT_CACHE.get(("stacked", n, alpha), lambda: sp.csr_matrix(np.vstack(_float_matrices(n, alpha))))
 
 

@@ -20,19 +20,22 @@ The route, for every n (proof: docs/subdivision_for_all_n.md, section 11):
    :func:`product_terms_fast`).  So R_n^k[:, f] = sum_h R_1^k[h, h(f)] P_h R_{n-1}^k[:, f'(f)], level by level.
 3. *Normalization.*  ``S_k[g, f] = R_n^k[g, f] x_f / x'_g``.
 
-Speed (section 11, Lemmas 7 and 8): only one column per orbit of the exchanges of variables commuting with the
+Speed (section 11, Lemmas 11.4 and 11.5): only one column per orbit of the exchanges of variables commuting with the
 part's map is computed at the last level (``R[pi g, pi f] = R[g, f]``, :func:`symmetry_permutations`; v <-> w for
 the corners, all six for the middle), and at each lower level only the factors those columns need (:func:`_plan`);
 the other columns and the corners v, w are written from them (:func:`assemble`).  The integer forms of order n are
 those of order n - 1 embedded by the centre S_u S_v S_w (:func:`centre_embedding`) plus the 6n new columns.
 
-Float results are the same bits on every CPU: kappa', sigma' from flint ``arb``, fixed-order sums (no BLAS:
-scipy's sparse products sum each row in the order of its entries).
+Float results are the same bits wherever numpy's and scipy's loops do unfused IEEE double operations (x86-64; tested
+with numpy's SIMD dispatch limited below AVX512, tests/test_subdivision_bits.py): kappa', sigma' from flint ``arb``,
+every power by repeated multiplication (:func:`power_table`; never numpy's ``power``, which dispatches to SVML under
+AVX512, nor libm's ``pow``), fixed-order sums (no BLAS: scipy's sparse products sum each row in the order of its
+entries).  An aarch64 build that contracts a*b + c into FMA in scipy's ``csr_matvecs`` is an unverified risk.
 
 No step subtracts except inside the 7 x 7 matrix R_1 and the signed sums of the level recursion (R_1 has negative
 entries), so float64 keeps about 15 digits for every n and alpha measured (reports/subdivision_accuracy.md); the
-entrywise running-error bound of :func:`subdivision_matrices_float` (``bound=True``) is computed from the same
-recursion in absolute values.
+entrywise error estimate of :func:`subdivision_matrices_float` (``bound=True``; first order, a heuristic
+a-posteriori estimate, not a certificate) is computed from the same recursion in absolute values.
 
 >>> import numpy as np
 >>> s = subdivision_matrices_float(2, 1.0)
@@ -68,7 +71,7 @@ PARTS = ("u", "v", "w", "middle")
 #: for n <= 2, docs/subdivision_for_all_n.md section 11): the difference below ALPHA_TINY is about 1e-200.
 ALPHA_TINY = 1e-100
 #: Roundings along any path of the order-one computation (:func:`order_one_restriction`; derived in
-#: docs/subdivision_for_all_n.md section 11, "Error bound"), each occurrence of the correctly rounded inputs kappa',
+#: docs/subdivision_for_all_n.md section 11, "Error estimate"), each occurrence of the correctly rounded inputs kappa',
 #: sigma' counted as one: an entry of L_x at most 4, a binomial coefficient at most 4, a Horner start 5 and a Horner
 #: step 12 over its input, so at most 29 per variable; three variables (the middle) 87; the prefactor
 #: 1/(2 kappa')^e (e <= 3: the input, two products, a quotient) 6.
@@ -707,12 +710,15 @@ def subdivision_matrices_float(n: int, alpha: float, *, bound: bool = False, par
     float64 by the product route, ``n >= 1`` and ``alpha`` in (0, pi) checked by the caller (below
     :data:`ALPHA_TINY` computed at ALPHA_TINY).  Only the recursions the parts need are run (the corners share one).
 
-    ``bound=True`` returns ``(matrices, bounds)`` with the rounding part B of the running-error bound of
-    docs/subdivision_for_all_n.md, section 11: ``|S_float - S| <= B + (2 eps_x + 3u)(|S_float| + B)``, eps_x the
-    relative error of the float scaled coefficients.  With F the level recursion (multilinear in R_1 with
-    non-negative coefficients), e_1 = gamma_128 times the majorant of R_1's own computation and K_L the roundings of
-    the levels (:func:`rounding_count` minus R_1's 64): ``B = D (F(|R_1| + 2 e_1) - F(|R_1|) + gamma_{2 K_L}
-    F(|R_1| + 2 e_1)) D`` with D the normalization.  First order in u; computed, not certified."""
+    ``bound=True`` returns ``(matrices, bounds)`` with the rounding part B of the error estimate of
+    docs/subdivision_for_all_n.md, section 11: ``|S_float - S| <= B + (2 eps_x + 3u)(|S_float| + B)`` to first order
+    in u, eps_x the relative error of the float scaled coefficients (not computed here: measured by the tests).
+    With F the level recursion (each column a homogeneous polynomial of degree n in the entries of R_1 with
+    non-negative coefficients, so ``|F(A + E) - F(A)| <= F(|A| + |E|) - F(|A|)`` and ``A -> F(A + e) - F(A)`` is
+    monotone on A >= 0), Q_1 the computed R_1, e_1 = gamma_{2 K_1} times the majorant of R_1's computation
+    (K_1 = :data:`ORDER_ONE_ROUNDINGS`) and K_L the roundings of the levels (:func:`level_roundings` summed):
+    ``B = D (F(|Q_1| + 2 e_1) - F(|Q_1|) + gamma_{2 K_L} F(|Q_1| + 2 e_1)) D`` with D the normalization.  First
+    order in u and eps_x not bounded: a heuristic a-posteriori estimate, not a certificate."""
     alpha = max(float(alpha), ALPHA_TINY)
     x0, x1 = _normalizers(n, alpha)
     kp, sg = _float_half_angle(alpha / 2)
@@ -732,11 +738,12 @@ def subdivision_matrices_float(n: int, alpha: float, *, bound: bool = False, par
 
 def level_roundings(k: int) -> int:
     """Roundings that level k (order k - 1 -> k) adds along any path, the factor R_{k-1} excepted
-    (docs/subdivision_for_all_n.md section 11, "Error bound"): a term ``coef kappa'^a sigma'^b`` of a product form
+    (docs/subdivision_for_all_n.md section 11, "Error estimate"): a term ``coef kappa'^a sigma'^b`` of a product form
     (the a + b occurrences of the correctly rounded inputs; powers by repeated multiplication, :func:`power_table`:
-    a - 1 and b - 1 products, then two products; the integer coef exact) at most 2 max(a + b) over the terms; times the weight R_1[h, g]: 1; the fixed-order sum of a (row, column)
-    run of :func:`_combined` over the seven h: its length - 1; the sparse product: 1 product and the row's length - 1
-    additions (the first addition to 0 is exact, not counted: the count is an upper bound either way).
+    a - 1 and b - 1 products, then two products; the integer coef exact) at most 2 max(a + b) over the terms; times
+    the weight R_1[h, g]: 1; the fixed-order sum of a (row, column) run of :func:`_combined` over the seven h: its
+    length - 1; the sparse product: 1 product and the row's length - 1 additions (the first addition to 0 is exact,
+    not counted: the count is an upper bound either way).
 
     >>> level_roundings(2) > 0
     True
