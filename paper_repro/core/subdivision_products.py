@@ -483,7 +483,7 @@ def order_one_restriction(part: str, kp: float, sg: float, *, absolute: bool = F
     and each monomial S'^(e - t) C'^t (times the rest) is L^t of the member with S'^e (the cotangent rules;
     a function divisible by S'_x has no member without S'_x in its expansion, so L applies term by term).
     ``absolute``: the same computation with the images' coefficients replaced by their absolute values (every
-    other quantity is already non-negative), the majorant of the running-error bound.
+    other quantity is already non-negative), the majorant of the error estimate.
     """
     e = exponent_matrix(1)
     index = {tuple(int(v) for v in row): k for k, row in enumerate(e)}
