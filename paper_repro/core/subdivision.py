@@ -23,9 +23,10 @@ above cancels: in float64 it loses every digit (measured: n = 4 at alpha = 0.1 h
 alpha = 1 9e-5).  So ``'float'`` does not use it: it takes the *product route* of
 :mod:`paper_repro.core.subdivision_products` (no solve, no M_alpha: the seven order-one restrictions by
 substitution and the cotangent rules, then the products of Theorem P level by level; proof in
-docs/subdivision_for_all_n.md, section 11), with an entrywise running-error bound and a measured error of at most
-a few units of 1e-15 against the certified route (n <= 8; the patch in mp up to n = 20,
-reports/subdivision_accuracy.md).  Below
+docs/subdivision_for_all_n.md, section 11), with an entrywise first-order error estimate (heuristic, a-posteriori)
+and a measured error of at most a few units of 1e-15 against the certified route (entrywise for n <= 8 and at
+n = 9, 10 against the exact S at a RationalAngle, tests/test_subdivision_speed.py; for n <= 20 only through the
+sub-patch against the patch in mp, reports/subdivision_accuracy.md).  Below
 alpha = 1e-100 the float route computes at 1e-100 (measured S(alpha) - S(1e-100) ~ alpha^2/32: about 1e-200 there).
 ``'mp'`` computes S = M_{alpha/2} Rot M_alpha^{-1} in ball arithmetic (python-flint ``arb``) at a precision raised
 until every entry is certified to ``2^-(prec + 10)``, then rounds the midpoints (the reference the float route is
@@ -47,6 +48,9 @@ True
 from __future__ import annotations
 
 import math
+import threading
+from collections import OrderedDict
+from collections.abc import Callable
 from functools import lru_cache
 from typing import NamedTuple
 
@@ -78,6 +82,9 @@ PARTS = ("u", "v", "w", "middle")
 MAX_N_SUBDIVISION = MAX_N_TRANSFORMATION
 #: Bits to which the float64 route certifies every entry before rounding.
 FLOAT_BITS = 60
+#: Byte budget of the float matrix caches (the four S, one S, the stacked CSR, the CSR of each S; one budget for all):
+#: at n = 30 one S is 62 MB, so entry counts alone (32 each) could hold about 8 GB.
+FLOAT_CACHE_BYTES = 512 * 2**20
 #: Largest ball precision tried (bits) before giving up.
 MAX_PREC = 1 << 14
 #: Largest depth of :func:`subdivide_to_depth` (4^k sub-nets).
@@ -414,21 +421,78 @@ def _certified(n: int, alpha, bits: int) -> tuple[list[arb_mat], int]:
                           f"at {MAX_PREC} bits")
 
 
-@lru_cache(maxsize=32)
-def _float_matrices(n: int, alpha: float) -> tuple[np.ndarray, ...]:
-    """The four S in float64 by the product route (:mod:`paper_repro.core.subdivision_products`), read-only."""
-    out = subdivision_matrices_float(n, alpha)
-    for arr in out:
+def _nbytes(value) -> int:
+    """Bytes held by a cached value: numpy arrays, scipy CSR matrices, tuples of them."""
+    if isinstance(value, tuple):
+        return sum(_nbytes(v) for v in value)
+    if isinstance(value, sp.csr_matrix):
+        return value.data.nbytes + value.indices.nbytes + value.indptr.nbytes
+    return int(value.nbytes)
+
+
+class ByteBoundedCache:
+    """A least-recently-used cache bounded by the bytes of its values: after an insertion the oldest entries are
+    dropped until the total is at most ``budget`` or only the new entry is left (so it holds at most
+    max(budget, the largest single value) bytes).  Thread-safe; a value is computed outside the lock.
+
+    >>> c = ByteBoundedCache(100)
+    >>> a = c.get("a", lambda: np.zeros(10)); b = c.get("b", lambda: np.zeros(10))  # 80 bytes each
+    >>> list(c.keys()), c.nbytes
+    (['b'], 80)
+    """
+
+    def __init__(self, budget: int) -> None:
+        self.budget = budget
+        self.nbytes = 0
+        self._data: OrderedDict = OrderedDict()
+        self._lock = threading.Lock()
+
+    def get(self, key, compute: Callable[[], object]):
+        with self._lock:
+            if key in self._data:
+                self._data.move_to_end(key)
+                return self._data[key][0]
+        value = compute()
+        size = _nbytes(value)
+        with self._lock:
+            if key not in self._data:
+                self._data[key] = (value, size)
+                self.nbytes += size
+            while self.nbytes > self.budget and len(self._data) > 1:
+                _, (_, old) = self._data.popitem(last=False)
+                self.nbytes -= old
+        return value
+
+    def keys(self) -> list:
+        with self._lock:
+            return list(self._data)
+
+    def clear(self) -> None:
+        with self._lock:
+            self._data.clear()
+            self.nbytes = 0
+
+
+#: The float matrices of the product route, bounded by :data:`FLOAT_CACHE_BYTES`.
+FLOAT_CACHE = ByteBoundedCache(FLOAT_CACHE_BYTES)
+
+
+def _read_only(arrays):
+    for arr in arrays:
         arr.setflags(write=False)
-    return out
+    return arrays
 
 
-@lru_cache(maxsize=32)
+def _float_matrices(n: int, alpha: float) -> tuple[np.ndarray, ...]:
+    """The four S in float64 by the product route (:mod:`paper_repro.core.subdivision_products`), read-only;
+    cached in :data:`FLOAT_CACHE`."""
+    return FLOAT_CACHE.get(("four", n, alpha), lambda: _read_only(subdivision_matrices_float(n, alpha)))
+
+
 def _float_part(n: int, alpha: float, part: str) -> np.ndarray:
     """One S in float64 by the product route, read-only (the same values as ``_float_matrices(n, alpha)``)."""
-    (out,) = subdivision_matrices_float(n, alpha, parts=(part,))
-    out.setflags(write=False)
-    return out
+    return FLOAT_CACHE.get(("part", n, alpha, part),
+                           lambda: _read_only(subdivision_matrices_float(n, alpha, parts=(part,)))[0])
 
 
 @lru_cache(maxsize=8)
@@ -487,8 +551,10 @@ def subdivision_matrix(n: int, alpha, part: str, arith: str | Context | None = N
     :func:`~paper_repro.core.labels.united_system`.
 
     ``alpha``: a real number in (0, pi) or a :class:`~paper_repro.core.domain.RationalAngle`; ``arith``: ``'float'``
-    (default for a real alpha; the product route, no solve: every entry within its running-error bound, measured
-    within 5e-15 of the certified value for n <= 20, docs/subdivision_for_all_n.md section 11), ``'mp'``
+    (default for a real alpha; the product route, no solve; entrywise within 1.8e-15 of the certified value measured
+    for n <= 8 and within its first-order error estimate, a heuristic a-posteriori estimate, in the tests; for
+    9 <= n <= 20 measured through the sub-patch against the patch in mp (2.3e-16 of max |P|) and entrywise against
+    the exact S at n = 9, 10 at one RationalAngle; docs/subdivision_for_all_n.md section 11), ``'mp'``
     (``dps`` digits, certified), ``'ball'`` (balls at the context's precision) or ``'exact'`` (default for a
     RationalAngle; flint ``fmpq``).  ``n`` from 1 to :data:`MAX_N_SUBDIVISION`.  Every row sums to 1 (partition
     of unity on both sides); S has negative entries (not a corner-cutting scheme, docs/subdivision_for_all_n.md).
@@ -509,8 +575,8 @@ def subdivision_matrix(n: int, alpha, part: str, arith: str | Context | None = N
 
 def _csr_apply(mat: sp.csr_matrix, net: np.ndarray) -> np.ndarray:
     """``mat @ net`` one coordinate at a time (scipy's ``csr_matvec``: each row summed in the order of its entries,
-    a plain C loop, the same bits on every CPU and for every layout of ``net``; faster than the multi-vector loop
-    for d = 3)."""
+    a plain C loop, the same bits for every layout of ``net`` and every SIMD dispatch of numpy; faster than the
+    multi-vector loop for d = 3)."""
     cols = np.ascontiguousarray(net.T)
     out = np.empty((mat.shape[0], net.shape[1]))
     for c in range(net.shape[1]):
@@ -570,17 +636,16 @@ def subdivide(net, n: int, alpha, arith: str | Context | None = None, *, dps: in
     return SubNets(*(_apply(m, arr) for m in mats))
 
 
-@lru_cache(maxsize=32)
 def _stacked_float(n: int, alpha: float) -> sp.csr_matrix:
     """The four float S stacked, ``(4 delta_n, delta_n)``, as a CSR matrix of the nonzero entries: its product with a
-    net sums each row in the order of the columns (scipy's ``csr_matvecs``, a plain C loop: no BLAS, the same bits
-    on every CPU) and skips S's zeros (about 80 % of a corner matrix, 40 % of the middle one at n = 10)."""
-    return sp.csr_matrix(np.vstack(_float_matrices(n, alpha)))
+    net sums each row in the order of the columns (scipy's ``csr_matvecs``, a plain C loop: no BLAS; the same bits
+    wherever it runs unfused, docs/subdivision_for_all_n.md section 11) and skips S's zeros (about 80 % of a corner
+    matrix, 40 % of the middle one at n = 10)."""
+    return FLOAT_CACHE.get(("stacked", n, alpha), lambda: sp.csr_matrix(np.vstack(_float_matrices(n, alpha))))
 
 
-@lru_cache(maxsize=32)
 def _float_csr(n: int, alpha: float) -> tuple[sp.csr_matrix, ...]:
-    return tuple(sp.csr_matrix(m) for m in _float_matrices(n, alpha))
+    return FLOAT_CACHE.get(("csr", n, alpha), lambda: tuple(sp.csr_matrix(m) for m in _float_matrices(n, alpha)))
 
 
 def subdivide_to_depth(net, n: int, alpha, k: int, arith: str | Context | None = None, *, dps: int = 50

@@ -20,19 +20,22 @@ The route, for every n (proof: docs/subdivision_for_all_n.md, section 11):
    :func:`product_terms_fast`).  So R_n^k[:, f] = sum_h R_1^k[h, h(f)] P_h R_{n-1}^k[:, f'(f)], level by level.
 3. *Normalization.*  ``S_k[g, f] = R_n^k[g, f] x_f / x'_g``.
 
-Speed (section 11, Lemmas 7 and 8): only one column per orbit of the exchanges of variables commuting with the
+Speed (section 11, Lemmas 11.4 and 11.5): only one column per orbit of the exchanges of variables commuting with the
 part's map is computed at the last level (``R[pi g, pi f] = R[g, f]``, :func:`symmetry_permutations`; v <-> w for
 the corners, all six for the middle), and at each lower level only the factors those columns need (:func:`_plan`);
 the other columns and the corners v, w are written from them (:func:`assemble`).  The integer forms of order n are
 those of order n - 1 embedded by the centre S_u S_v S_w (:func:`centre_embedding`) plus the 6n new columns.
 
-Float results are the same bits on every CPU: kappa', sigma' from flint ``arb``, fixed-order sums (no BLAS:
-scipy's sparse products sum each row in the order of its entries).
+Float results are the same bits wherever numpy's and scipy's loops do unfused IEEE double operations (x86-64; tested
+with numpy's SIMD dispatch limited below AVX512, tests/test_subdivision_bits.py): kappa', sigma' from flint ``arb``,
+every power by repeated multiplication (:func:`power_table`; never numpy's ``power``, which dispatches to SVML under
+AVX512, nor libm's ``pow``), fixed-order sums (no BLAS: scipy's sparse products sum each row in the order of its
+entries).  An aarch64 build that contracts a*b + c into FMA in scipy's ``csr_matvecs`` is an unverified risk.
 
 No step subtracts except inside the 7 x 7 matrix R_1 and the signed sums of the level recursion (R_1 has negative
 entries), so float64 keeps about 15 digits for every n and alpha measured (reports/subdivision_accuracy.md); the
-entrywise running-error bound of :func:`subdivision_matrices_float` (``bound=True``) is computed from the same
-recursion in absolute values.
+entrywise error estimate of :func:`subdivision_matrices_float` (``bound=True``; first order, a heuristic
+a-posteriori estimate, not a certificate) is computed from the same recursion in absolute values.
 
 >>> import numpy as np
 >>> s = subdivision_matrices_float(2, 1.0)
@@ -43,6 +46,7 @@ recursion in absolute values.
 from __future__ import annotations
 
 import itertools
+import math
 from functools import cache, lru_cache
 
 import numpy as np
@@ -66,6 +70,12 @@ PARTS = ("u", "v", "w", "middle")
 #: (0/0 in x_f / x'_g).  Measured S(alpha) - S(ALPHA_TINY) ~ alpha^2/32 (n = 2, 6, 10), S even and smooth at 0 (proven
 #: for n <= 2, docs/subdivision_for_all_n.md section 11): the difference below ALPHA_TINY is about 1e-200.
 ALPHA_TINY = 1e-100
+#: Roundings along any path of the order-one computation (:func:`order_one_restriction`; derived in
+#: docs/subdivision_for_all_n.md section 11, "Error estimate"), each occurrence of the correctly rounded inputs kappa',
+#: sigma' counted as one: an entry of L_x at most 4, a binomial coefficient at most 4, a Horner start 5 and a Horner
+#: step 12 over its input, so at most 29 per variable; three variables (the middle) 87; the prefactor
+#: 1/(2 kappa')^e (e <= 3: the input, two products, a quotient) 6.
+ORDER_ONE_ROUNDINGS = 3 * 29 + 6
 _F = FloatContext()
 
 
@@ -412,6 +422,36 @@ def factorization(n: int) -> tuple[np.ndarray, np.ndarray]:
 
 
 # --- step 1: order one by substitution and the cotangent rules ------------------------------------------------------
+def _power(x: float, k: int) -> float:
+    """``x^k`` (k >= 0) by k - 1 multiplications from the left, ``((x x) x) ...``: no ``pow`` (libm's is only
+    faithfully rounded and may differ between builds), so the same bits wherever IEEE double arithmetic is used.
+
+    >>> _power(0.1, 3) == (0.1 * 0.1) * 0.1, _power(0.7, 0)
+    (True, 1.0)
+    """
+    out = 1.0
+    for _ in range(k):
+        out = out * x
+    return out
+
+
+def power_table(x: float, k: int) -> np.ndarray:
+    """``[x^0, x^1, ..., x^k]`` as float64, each by one multiplication from the previous (:func:`_power`'s values):
+    not numpy's ``power``, whose SIMD loops (SVML under AVX512) are not correctly rounded and differ with the CPU
+    features numpy dispatches to (docs/subdivision_for_all_n.md, section 11, the referee's point 2).
+
+    >>> t = power_table(0.3, 4)
+    >>> [float(v) == _power(0.3, i) for i, v in enumerate(t)]
+    [True, True, True, True, True]
+    """
+    out = np.empty(k + 1)
+    acc = 1.0
+    for i in range(k + 1):
+        out[i] = acc
+        acc = acc * x
+    return out
+
+
 def _cotangent_dense(var: int, kp: float, sg: float) -> np.ndarray:
     """L_var on T_2 as a dense 7 x 7 float matrix at (kappa', sigma') (zero columns where m_g has no S_var)."""
     out = np.zeros((7, 7))
@@ -419,7 +459,7 @@ def _cotangent_dense(var: int, kp: float, sg: float) -> np.ndarray:
     for g in range(7):
         if e[g, 2 * var]:
             for a, b, c, t in cotangent(1, var, g).tolist():
-                out[t, g] += c * kp ** a * sg ** b
+                out[t, g] += c * _power(kp, a) * _power(sg, b)
     return out
 
 
@@ -443,7 +483,7 @@ def order_one_restriction(part: str, kp: float, sg: float, *, absolute: bool = F
     and each monomial S'^(e - t) C'^t (times the rest) is L^t of the member with S'^e (the cotangent rules;
     a function divisible by S'_x has no member without S'_x in its expansion, so L applies term by term).
     ``absolute``: the same computation with the images' coefficients replaced by their absolute values (every
-    other quantity is already non-negative), the majorant of the running-error bound.
+    other quantity is already non-negative), the majorant of the error estimate.
     """
     e = exponent_matrix(1)
     index = {tuple(int(v) for v in row): k for k, row in enumerate(e)}
@@ -469,7 +509,7 @@ def order_one_restriction(part: str, kp: float, sg: float, *, absolute: bool = F
             for t in range(len(poly) - 2, -1, -1):
                 acc = ordered_matmul(lops[v], acc[:, None])[:, 0] + poly[t] * vec
             vec = acc
-        out[:, h] = vec * (2.0 * kp) ** -float(e[h, 0] + e[h, 2] + e[h, 4])
+        out[:, h] = vec / _power(2.0 * kp, int(e[h, 0] + e[h, 2] + e[h, 4]))
     return out
 
 
@@ -508,8 +548,8 @@ def _pattern(k: int, used: tuple[int, ...]) -> tuple[np.ndarray, ...]:
 def _level_values(k: int, kp: float, sg: float, absolute: bool) -> np.ndarray:
     """The value of every term of :func:`_level_terms` at (kappa', sigma'): coef kappa'^a sigma'^b (coef >= 0)."""
     _, _, a, b, coef, _ = _level_terms(k)
-    kpow = kp ** np.arange(int(a.max()) + 1)
-    spow = sg ** np.arange(int(b.max()) + 1)
+    kpow = power_table(kp, int(a.max()))
+    spow = power_table(sg, int(b.max()))
     vals = coef.astype(np.float64) * kpow[a] * spow[b]
     return np.abs(vals) if absolute else vals
 
@@ -661,7 +701,7 @@ def _normalizers(n: int, alpha: float) -> tuple[np.ndarray, np.ndarray]:
 
 
 def _gamma(m: int) -> float:
-    u = 2.0 ** -53
+    u = math.ldexp(1.0, -53)
     return m * u / (1 - m * u)
 
 
@@ -670,12 +710,15 @@ def subdivision_matrices_float(n: int, alpha: float, *, bound: bool = False, par
     float64 by the product route, ``n >= 1`` and ``alpha`` in (0, pi) checked by the caller (below
     :data:`ALPHA_TINY` computed at ALPHA_TINY).  Only the recursions the parts need are run (the corners share one).
 
-    ``bound=True`` returns ``(matrices, bounds)`` with the rounding part B of the running-error bound of
-    docs/subdivision_for_all_n.md, section 11: ``|S_float - S| <= B + (2 eps_x + 3u)(|S_float| + B)``, eps_x the
-    relative error of the float scaled coefficients.  With F the level recursion (multilinear in R_1 with
-    non-negative coefficients), e_1 = gamma_128 times the majorant of R_1's own computation and K_L the roundings of
-    the levels (:func:`rounding_count` minus R_1's 64): ``B = D (F(|R_1| + 2 e_1) - F(|R_1|) + gamma_{2 K_L}
-    F(|R_1| + 2 e_1)) D`` with D the normalization.  First order in u; computed, not certified."""
+    ``bound=True`` returns ``(matrices, bounds)`` with the rounding part B of the error estimate of
+    docs/subdivision_for_all_n.md, section 11: ``|S_float - S| <= B + (2 eps_x + 3u)(|S_float| + B)`` to first order
+    in u, eps_x the relative error of the float scaled coefficients (not computed here: measured by the tests).
+    With F the level recursion (each column a homogeneous polynomial of degree n in the entries of R_1 with
+    non-negative coefficients, so ``|F(A + E) - F(A)| <= F(|A| + |E|) - F(|A|)`` and ``A -> F(A + e) - F(A)`` is
+    monotone on A >= 0), Q_1 the computed R_1, e_1 = gamma_{2 K_1} times the majorant of R_1's computation
+    (K_1 = :data:`ORDER_ONE_ROUNDINGS`) and K_L the roundings of the levels (:func:`level_roundings` summed):
+    ``B = D (F(|Q_1| + 2 e_1) - F(|Q_1|) + gamma_{2 K_L} F(|Q_1| + 2 e_1)) D`` with D the normalization.  First
+    order in u and eps_x not bounded: a heuristic a-posteriori estimate, not a certificate."""
     alpha = max(float(alpha), ALPHA_TINY)
     x0, x1 = _normalizers(n, alpha)
     kp, sg = _float_half_angle(alpha / 2)
@@ -684,38 +727,49 @@ def subdivision_matrices_float(n: int, alpha: float, *, bound: bool = False, par
     mats = assemble(n, restriction_blocks(n, kp, sg, r1, families=families), x0, x1, parts)
     if not bound:
         return mats
-    e1 = [_gamma(128) * order_one_restriction(p, kp, sg, absolute=True) for p in ("u", "middle")]
+    e1 = [_gamma(2 * ORDER_ONE_ROUNDINGS) * order_one_restriction(p, kp, sg, absolute=True) for p in ("u", "middle")]
     low = restriction_blocks(n, kp, sg, [abs(r) for r in r1], absolute=True, families=families)
     high = restriction_blocks(n, kp, sg, [abs(r) + 2 * e for r, e in zip(r1, e1)], absolute=True,
                               families=families)
-    g = _gamma(2 * (rounding_count(n) - 64))
+    g = _gamma(2 * (rounding_count(n) - ORDER_ONE_ROUNDINGS - 2))
     comb = [None if h is None else (h - lo) + g * h for h, lo in zip(high, low)]
     return mats, assemble(n, comb, x0, x1, parts)
 
 
-def rounding_count(n: int) -> int:
-    """K of the running-error bound: an upper bound of the roundings along any path of the recursion
-    (docs/subdivision_for_all_n.md, section 11).  Order one: per variable at most 2 binomial products and 2 Horner
-    steps of (a 7-term sum, a product, a sum), times three variables, and the prefactor (2 kappa')^-3: 64.  Per level
-    k: the evaluation of a product entry (the powers of kappa', sigma' up to the form's degree, the integer factor,
-    the sum of the entry's monomials), the sparse row sum (its length), the weight, the sum over the seven h.  Then
-    2 for the normalization x_f / x'_g.
+def level_roundings(k: int) -> int:
+    """Roundings that level k (order k - 1 -> k) adds along any path, the factor R_{k-1} excepted
+    (docs/subdivision_for_all_n.md section 11, "Error estimate"): a term ``coef kappa'^a sigma'^b`` of a product form
+    (the a + b occurrences of the correctly rounded inputs; powers by repeated multiplication, :func:`power_table`:
+    a - 1 and b - 1 products, then two products; the integer coef exact) at most 2 max(a + b) over the terms; times
+    the weight R_1[h, g]: 1; the fixed-order sum of a (row, column) run of :func:`_combined` over the seven h: its
+    length - 1; the sparse product: 1 product and the row's length - 1 additions (the first addition to 0 is exact,
+    not counted: the count is an upper bound either way).
 
-    >>> rounding_count(1), rounding_count(2) > rounding_count(1)
-    (66, True)
+    >>> level_roundings(2) > 0
+    True
     """
-    k_total = 64
-    for k in range(2, n + 1):
-        worst = 0
-        for h in range(7):
-            rows, cols, a, b, _ = product_terms_fast(k - 1, h)
-            per_entry = np.unique(rows * (delta_unchecked(k - 1) + 1) + cols, return_counts=True)[1].max()
-            per_row = np.unique(rows, return_counts=True)[1].max()
-            worst = max(worst, int(a.max() + b.max()) + 2 + int(per_entry) + int(per_row))
-        k_total += worst + 1 + 7
-    return k_total + 2
+    rows, cols, a, b, coef, _ = _level_terms(k)
+    if int(np.abs(coef).max()) >= 2**53:  # pragma: no cover - the integer coefficients are small
+        raise AssertionError("an integer coefficient is not exact in float64")
+    _, starts, indptr, _, _ = _pattern(k, tuple(range(7)))
+    run = int(np.diff(np.r_[starts, len(rows)]).max())
+    row = int(np.diff(indptr).max())
+    return 2 * int((a + b).max()) + 1 + (run - 1) + 1 + (row - 1)
+
+
+def rounding_count(n: int) -> int:
+    """K of the running-error estimate: an upper bound of the roundings along any path of the recursion
+    (docs/subdivision_for_all_n.md, section 11, where the counts are derived): :data:`ORDER_ONE_ROUNDINGS` for R_1,
+    :func:`level_roundings` per level k = 2..n (a product's roundings add along a path), and 2 for the
+    normalization ``x_f / x'_g`` (a quotient, then a product).
+
+    >>> rounding_count(1), rounding_count(2) - rounding_count(1) == level_roundings(2)
+    (95, True)
+    """
+    return ORDER_ONE_ROUNDINGS + sum(level_roundings(k) for k in range(2, n + 1)) + 2
 
 
 __all__ = ["PARTS", "ALPHA_TINY", "product_terms_fast", "factorization", "order_one_restriction",
            "restriction_matrices", "restriction_blocks", "assemble", "symmetry_permutations", "centre_embedding",
-           "subdivision_matrices_float", "rounding_count"]
+           "subdivision_matrices_float", "rounding_count",
+           "level_roundings", "power_table", "ORDER_ONE_ROUNDINGS"]
