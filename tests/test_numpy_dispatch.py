@@ -89,16 +89,8 @@ def test_the_comparison_sees_numpy_dispatch():
     assert _child("avx2")["power"] != _here()["power"]
 
 
-_SUBDIVISION_XFAIL = pytest.mark.xfail(
-    condition=_svml_here(), strict=True,
-    reason="core/subdivision_products._level_values takes kp ** np.arange(...) with numpy's power (SVML here): "
-           "to be replaced by repeated multiplication (np.multiply.accumulate); then remove this xfail and re-pin "
-           "tests/fixtures/cpu_bits.json (tools/cpu_bits.py pin)")
-
-
 @pytest.mark.parametrize("variant", cpu_bits.NUMPY_VARIANTS)
-@pytest.mark.parametrize("group", [pytest.param(g, marks=_SUBDIVISION_XFAIL) if g == "subdivision" else g
-                                   for g in cpu_bits.PROMISED])
+@pytest.mark.parametrize("group", list(cpu_bits.PROMISED))
 def test_promised_results_do_not_depend_on_numpy_dispatch(group, variant):
     here, there = _here()["fp"], _child(variant)["fp"]
     items = sorted(k for k in here if k.split("/")[0] == group)
