@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 from flint import fmpq
 
-from paper_repro.core.domain import rational_alpha
+from paper_repro.core.domain import RationalAngle, rational_alpha
 from paper_repro.core.labels import delta
 
 # --- core/labels.py --------------------------------------------------------------------------------------------
@@ -359,6 +359,8 @@ def test_elevation_matrix_at_its_edges():
 
     with pytest.raises(ValueError):
         elevation_matrix(1, rational_alpha(fmpq(0)))  # tan(alpha/4) = 0 is alpha = 0
+    with pytest.raises(ValueError, match="open interval"):  # the same, past rational_alpha's own check
+        elevation_matrix(1, RationalAngle(fmpq(0)))
     # below ALPHA_TINY the float closed form is taken at ALPHA_TINY: E(alpha) = E(0) + O(alpha^2)
     tiny = elevation_matrix(1, 1e-300)
     exact_small = elevation_matrix_exact(1, rational_alpha(fmpq(1, 10**40)))
@@ -1295,3 +1297,132 @@ def test_collocate_fmpq_default_number_of_point_sets():
     with pytest.raises(ArithmeticError, match="singular for 10 point sets"):  # the documented default: 10
         collocate_fmpq(singular, 2)
     assert calls == list(range(10))
+
+
+# --- core/half_angle_rules.py ----------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("n", [1, 2, 3])
+def test_member_table_names_each_member_by_its_exponents(n):
+    from paper_repro.core.half_angle_rules import member_table
+    from paper_repro.core.labels import exponent_matrix
+
+    # docs/elevation_and_derivative_for_all_n.md: M_X(m; Y, j) = S_X^{2n-m} S_Y^j C_Y^{m-j} S_Z^m, 0 <= j <= m <= n,
+    # X != Y (Z the third variable); the names give exactly delta_n distinct monomials.  Exponent columns: (S_u, C_u,
+    # S_v, C_v, S_w, C_w).
+    K = member_table(n)
+    assert K.shape == (3, 3, n + 1, n + 1)
+    E = exponent_matrix(n)
+    named = set()
+    for x in range(3):
+        for y in range(3):
+            for m in range(n + 1):
+                for j in range(n + 1):
+                    k = int(K[x, y, m, j])
+                    if x == y or j > m:
+                        assert k == -1
+                        continue
+                    (z,) = {0, 1, 2} - {x, y}
+                    want = [0] * 6
+                    want[2 * x] += 2 * n - m
+                    want[2 * y] += j
+                    want[2 * y + 1] += m - j
+                    want[2 * z] += m
+                    assert E[k].tolist() == want, (x, y, m, j)
+                    named.add(k)
+    assert named == set(range(delta(n)))
+
+
+# --- core/half_angle_matrices.py -------------------------------------------------------------------------------
+
+
+def test_half_angle_refuses_a_float_alpha_in_exact_arithmetic():
+    from flint import fmpq
+
+    from paper_repro.core.context import ExactContext
+    from paper_repro.core.domain import rational_alpha
+    from paper_repro.core.exact_solve import ModularExactContext
+    from paper_repro.core.half_angle_matrices import half_angle
+
+    # exact arithmetic needs an exact kappa = cos(alpha/2), sigma = sin^2(alpha/2): a float alpha has no exact cosine
+    for ctx in (ExactContext(), ModularExactContext()):
+        with pytest.raises(TypeError, match="alpha must be a RationalAngle"):
+            half_angle(1.0, ctx)
+    # tan(alpha/4) = 1/2: cos(alpha/2) = (1 - t^2)/(1 + t^2) = 3/5, sin^2(alpha/2) = (2t/(1 + t^2))^2 = 16/25
+    kappa, sigma = half_angle(rational_alpha(fmpq(1, 2)), ExactContext())
+    assert (kappa, sigma) == (fmpq(3, 5), fmpq(16, 25))
+
+
+def test_evaluate_terms_adds_once_per_rank_and_sums_each_entry(monkeypatch):
+    from paper_repro.core.context import FloatContext
+    from paper_repro.core.half_angle_matrices import elevation_form, evaluate_terms
+
+    # documented: each entry the sum of its monomials, one elementwise addition per rank, so the number of additions
+    # is the largest number of monomials in one entry (counted here from the form itself), not the number of terms
+    form = elevation_form(3)
+    rows, cols, a, b, coef = form
+    keys, inverse, counts = np.unique(np.stack([rows, cols], axis=1), axis=0, return_inverse=True,
+                                      return_counts=True)
+    calls = []
+    add = FloatContext.add
+
+    def counting_add(self, x, y):
+        calls.append(1)
+        return add(self, x, y)
+
+    monkeypatch.setattr(FloatContext, "add", counting_add)
+    ctx = FloatContext()
+    kappa, sigma = 0.8, 0.36
+    erows, ecols, vals = evaluate_terms(form, kappa, sigma, ctx)
+    assert len(calls) == counts.max() < len(rows)
+    want = np.zeros(len(keys))
+    np.add.at(want, inverse.ravel(), coef * kappa ** a * sigma ** b)
+    assert np.array_equal(np.stack([erows, ecols], axis=1), keys)
+    assert np.allclose(vals, want, rtol=1e-15, atol=0)
+
+
+def test_half_angle_refuses_alpha_zero_as_a_rational_angle():
+    from flint import fmpq
+
+    from paper_repro.core.context import ExactContext, FloatContext
+    from paper_repro.core.domain import RationalAngle
+    from paper_repro.core.half_angle_matrices import half_angle
+
+    zero = RationalAngle(fmpq(0))  # an angle of [0, pi) (rational_alpha would refuse it already)
+    for ctx in (ExactContext(), FloatContext()):  # tan(alpha/4) = 0 is alpha = 0, outside (0, pi)
+        with pytest.raises(ValueError, match="open interval"):
+            half_angle(zero, ctx)
+
+
+def test_derivative_nets_in_float_at_a_rational_angle():
+    import math
+
+    from flint import fmpq
+
+    from paper_repro.core.domain import rational_alpha
+    from paper_repro.core.half_angle_matrices import derivative_nets
+
+    # a RationalAngle in float arithmetic: kappa, sigma from the exact half-angle values, rounded once; the same
+    # nets (to rounding) as the float alpha 4 atan(1/2) and as the exact nets rounded
+    n = 2
+    net = np.random.default_rng(3).normal(size=(delta(n), 2))
+    angle = rational_alpha(fmpq(1, 2))
+    qu, qv = derivative_nets(n, angle, net)
+    fu, fv = derivative_nets(n, 4 * math.atan(0.5), net)
+    assert np.allclose(qu, fu, rtol=0, atol=1e-13) and np.allclose(qv, fv, rtol=0, atol=1e-13)
+    exact = np.array([[fmpq(int(round(x * 2**40)), 2**40) for x in row] for row in net], dtype=object)
+    eu, ev = derivative_nets(n, angle, exact, "exact")
+    scale = np.abs(qu).max() + np.abs(qv).max()
+    assert np.abs(qu - eu.astype(float)).max() < 1e-10 * scale and np.abs(qv - ev.astype(float)).max() < 1e-10 * scale
+
+
+def test_the_cached_integer_forms_are_read_only():
+    from paper_repro.core.half_angle_matrices import derivative_form, elevation_form, product_form
+
+    # documented ("read-only arrays"): the forms are cached and returned as they are, so a caller writing into one
+    # would change every later matrix; numpy must refuse the write
+    for form in (elevation_form(2), derivative_form(2), product_form(2, 0)):
+        for arr in form:
+            assert not arr.flags.writeable
+            with pytest.raises(ValueError, match="read-only"):
+                arr[0] = arr[0]
