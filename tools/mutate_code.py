@@ -159,6 +159,14 @@ EQUIVALENT: dict[str, str] = {
     "core/fourier.py:cos_sin_combination:compare0:ceeb01dc#0":
         "power < 0 -> power <= 0: for power = 0 the branch negates s and sets power = -0 = 0; the loop then runs "
         "range(0) times, so the negated s is never used (the next factor rebinds s), and (re, im) are the same",
+    "core/transformation.py:_item:const0:5feceb66#0":
+        "x.ndim == 0 -> x.ndim == 1 in _item: 0-d arrays are no longer unwrapped (a 1-d x[()] is x itself, as "
+        "before).  The only 0-d arrays that reach it are the context's 1 and 0 (zeta^0, and the powers' start in "
+        "_pow); stored into a float array they give the same value, stored into an object array they stay 0-d "
+        "arrays, but every such entry is only an operand of a ring operation (_cmul's products, scaled_table's "
+        "arithmetic), and numpy's ufuncs on object operands apply Python's operator to the elements and return "
+        "the element for a 0-d result: the same values and the same element types (fmpq, mpf, arb) in every "
+        "output (checked: every entry of the exact and mp matrices, both directions, is an fmpq resp. mpf)",
     "core/elevation.py:start_precision:const0:d4735e3a#0":
         "2 near_pi -> 3 near_pi in the first ball precision of the certified solve (a cross-check, not the library "
         "route): it only raises the start, by near_pi = log2(1/(pi - alpha)) < 52 bits (a float alpha < pi is at "
