@@ -1426,3 +1426,27 @@ def test_the_cached_integer_forms_are_read_only():
             assert not arr.flags.writeable
             with pytest.raises(ValueError, match="read-only"):
                 arr[0] = arr[0]
+
+
+
+# --- surfaces/models.py ----------------------------------------------------------------------------------------
+
+
+def test_models_refuse_empty_phases_and_bad_params_and_measure_with_two_samples():
+    from paper_repro.surfaces.models import cyclide_pieces, model_gap, torus_pieces
+
+    half_pi = np.pi / 2
+    for phis, psis in (([], [0.0]), ([0.0], [])):  # documented: a non-empty sequence of phases
+        with pytest.raises(ValueError, match="at least one phase"):
+            torus_pieces(half_pi, 2.0, 1.0, phis, psis)
+        with pytest.raises(ValueError, match="at least one phase"):
+            cyclide_pieces(half_pi, {"a": 6, "b": 32 ** 0.5, "c": 2, "mu": 3}, phis, psis)
+    for params in ({"a": 6, "b": 4, "c": 2}, {"a": 6, "b": 4, "c": 2, "mu": 3, "nu": 1}, [6, 4, 2, 3]):
+        with pytest.raises(TypeError, match="params must be a dict with the keys"):
+            cyclide_pieces(half_pi, params, [0.0], [0.0])
+    # samples: at least 2 points per edge (documented: "samples below 2" is refused); with 2, the corners and the
+    # ends of the diagonal, where the two triangles of the torus square share their exact corner points
+    pieces = torus_pieces(half_pi, 2.0, 1.0, [0.0], [0.0])
+    assert 0 <= model_gap(pieces, half_pi, samples=2) < 1e-12
+    with pytest.raises(ValueError, match="samples"):
+        model_gap(pieces, half_pi, samples=1)
