@@ -1450,3 +1450,28 @@ def test_models_refuse_empty_phases_and_bad_params_and_measure_with_two_samples(
     assert 0 <= model_gap(pieces, half_pi, samples=2) < 1e-12
     with pytest.raises(ValueError, match="samples"):
         model_gap(pieces, half_pi, samples=1)
+
+
+# --- surfaces/fitting.py ---------------------------------------------------------------------------------------
+
+
+def test_surface_coordinates_refuses_a_row_that_is_not_a_sequence():
+    from paper_repro.surfaces.fitting import surface_coordinates
+
+    for rows in ([1.0, 2.0], ["xy"], [b"xy"], [(1.0, 2.0), 3.0]):
+        with pytest.raises(TypeError, match="surface must return a sequence of coordinates"):
+            surface_coordinates(rows, exact=False)
+
+
+def test_fit_float_reports_its_verification_points():
+    from paper_repro.surfaces.fitting import fit_float
+
+    # |u - v| is not a trigonometric polynomial: refused, naming the verification points of the signature's
+    # default (verify=8) or of the call
+    def kink(u, v, w):
+        return (np.abs(u - v),)
+
+    with pytest.raises(ValueError, match="at the 8 verification points"):
+        fit_float(kink, 1, 1.0)
+    with pytest.raises(ValueError, match="at the 3 verification points"):
+        fit_float(kink, 1, 1.0, verify=3)

@@ -167,6 +167,11 @@ EQUIVALENT: dict[str, str] = {
         "arithmetic), and numpy's ufuncs on object operands apply Python's operator to the elements and return "
         "the element for a 0-d result: the same values and the same element types (fmpq, mpf, arb) in every "
         "output (checked: every entry of the exact and mp matrices, both directions, is an fmpq resp. mpf)",
+    "surfaces/fitting.py:fit_exact:const0:6f4b6612#0":
+        "fit_exact's default seed 21 -> 22: other rational collocation points.  For a surface in the span the exact "
+        "net is unique (T_2n is a basis, and collocate solves exactly and verifies at 4 more points, drawing new "
+        "points if the system is singular), so every seed returns the same rationals; a surface outside the span is "
+        "refused at every seed whose d + 4 points it does not happen to fit exactly (no such surface is a caller's)",
     "core/elevation.py:start_precision:const0:d4735e3a#0":
         "2 near_pi -> 3 near_pi in the first ball precision of the certified solve (a cross-check, not the library "
         "route): it only raises the start, by near_pi = log2(1/(pi - alpha)) < 52 bits (a float alpha < pi is at "
