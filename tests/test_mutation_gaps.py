@@ -1475,3 +1475,121 @@ def test_fit_float_reports_its_verification_points():
         fit_float(kink, 1, 1.0)
     with pytest.raises(ValueError, match="at the 3 verification points"):
         fit_float(kink, 1, 1.0, verify=3)
+
+
+# --- core/fast.py ----------------------------------------------------------------------------------------------
+
+
+def test_run_blocks_limits_blas_to_one_thread_by_default():
+    from threadpoolctl import threadpool_info, threadpool_limits
+
+    from paper_repro.core.fast import run_blocks
+
+    def blas_threads() -> list[int]:
+        return [i["num_threads"] for i in threadpool_info() if i["user_api"] == "blas"]
+
+    seen: list[list[int]] = []
+    with threadpool_limits(limits=2, user_api="blas"):  # the user's setting: two BLAS threads
+        if not blas_threads() or max(blas_threads()) < 2:
+            pytest.skip("no BLAS that takes two threads")
+        run_blocks(4, lambda lo, hi, ws: seen.append(blas_threads()), block=1, workers=1)  # documented default
+        assert seen and all(t == [1] * len(t) for t in seen)  # blas=True: single-threaded while the blocks run
+        assert max(blas_threads()) == 2  # and the user's setting back after
+        seen.clear()
+        run_blocks(2, lambda lo, hi, ws: seen.append(blas_threads()), block=1, workers=1, blas=False)
+        assert all(max(t) == 2 for t in seen)
+
+
+def test_contract_derivatives_values_over_several_chunks():
+    import math
+
+    from paper_repro.core.domain import sample_points
+    from paper_repro.core.fast import CHUNK, FloatKernel, scaled_trig_rows
+    from paper_repro.core.labels import exponent_matrix
+
+    # n = 4: 61 functions, two chunks of CHUNK = 32; the values pass must sum every chunk (the plain values route,
+    # net @ basis_rows, is the reference), and the derivative pass is 2 sin(alpha/2) times the directional
+    # derivative of those values (central differences, h = 1e-5: error O(h^2))
+    n, alpha = 4, 1.2
+    kern = FloatKernel(exponent_matrix(n))
+    assert kern.F > CHUNK
+    sa = math.sin(alpha / 2)
+    pts = sample_points(alpha, 50, seed=5)
+    s, c = scaled_trig_rows(pts, alpha, sa)
+    net = np.random.default_rng(5).normal(size=(3, kern.F))
+    basis = kern.basis_rows(s, c)
+
+    def values_at(q):
+        return net @ kern.basis_rows(*scaled_trig_rows(q, alpha, sa))
+
+    h = 1e-5
+    for dirs in ([(1, 0, -1)], [(1, 0, -1), (0, 1, -1)], [(1, -2, 1)]):
+        vals, outs = kern.contract_derivatives(s, c, sa * sa, dirs, kern.split_net(net), values=True)
+        assert np.allclose(vals, net @ basis, rtol=0, atol=1e-12 * (np.abs(net) @ np.abs(basis)).max())
+        for k, d in enumerate(dirs):
+            step = h * np.array(d, dtype=float)
+            fd = 2 * sa * (values_at(pts + step) - values_at(pts - step)) / (2 * h)
+            assert np.allclose(outs[k], fd, rtol=1e-7, atol=1e-7 * np.abs(fd).max()), d
+
+
+def test_threads_without_sched_getaffinity_counts_the_cpus(monkeypatch):
+    import os
+
+    from paper_repro.core.fast import threads
+
+    monkeypatch.delenv("PAPER_REPRO_THREADS", raising=False)
+    monkeypatch.delattr(os, "sched_getaffinity", raising=False)  # as on macOS and Windows
+    monkeypatch.setattr(os, "cpu_count", lambda: 6)
+    assert threads() == 6
+    monkeypatch.setattr(os, "cpu_count", lambda: None)  # documented by os: None when undetermined
+    assert threads() == 1
+
+
+def _blas_threads_in_run_blocks() -> list[list[int]]:
+    from threadpoolctl import threadpool_info
+
+    from paper_repro.core.fast import run_blocks
+
+    seen: list[list[int]] = []
+    run_blocks(2, lambda lo, hi, ws: seen.append(
+        [i["num_threads"] for i in threadpool_info() if i["user_api"] == "blas"]), block=1, workers=1)
+    return seen
+
+
+def test_a_forked_child_limits_blas_in_run_blocks_too():
+    import multiprocessing
+
+    from threadpoolctl import threadpool_info, threadpool_limits
+
+    # the fork handler (_forget_pool_after_fork) starts the child with no BLAS user: its first run_blocks sets the
+    # one-thread limit as in the parent
+    with threadpool_limits(limits=2, user_api="blas"):
+        if max([i["num_threads"] for i in threadpool_info() if i["user_api"] == "blas"], default=1) < 2:
+            pytest.skip("no BLAS that takes two threads")
+        with multiprocessing.get_context("fork").Pool(1) as pool:
+            seen = pool.apply(_blas_threads_in_run_blocks)
+    assert seen and all(t == [1] * len(t) for t in seen)
+
+
+def test_float_kernel_contract_and_blocks_against_the_plain_sum():
+    from paper_repro.core.fast import FloatKernel
+    from paper_repro.core.labels import exponent_matrix
+
+    # unscaled rows: B_f(p) = prod_v sin(x_v/2)^a cos(x_v/2)^b with the exponents (a, b) of exponent_matrix, summed
+    # here directly; contract gives sum_f B_f net_f, and with weights (sum_f B_f w_f net_f) / (sum_f B_f w_f)
+    n = 2
+    exps = exponent_matrix(n)
+    kern = FloatKernel(exps)
+    rng = np.random.default_rng(8)
+    uvw = rng.uniform(0.1, 1.0, size=(7, 3))
+    half = uvw / 2
+    B = np.prod(np.sin(half[:, None, :]) ** exps[None, :, 0::2] * np.cos(half[:, None, :]) ** exps[None, :, 1::2],
+                axis=2)
+    net = rng.normal(size=(delta(n), 2))
+    w = rng.uniform(0.5, 2.0, size=delta(n))
+    assert np.allclose(kern.contract(uvw, net, block=3), B @ net, rtol=1e-13, atol=1e-13)
+    rational = (B @ (w[:, None] * net)) / (B @ w)[:, None]
+    assert np.allclose(kern.contract(uvw, w[:, None] * net, weights=w, block=3), rational, rtol=1e-13, atol=1e-13)
+    got = list(kern.blocks(uvw, block=3))
+    assert [sl for sl, _ in got] == [slice(0, 3), slice(3, 6), slice(6, 7)]
+    assert np.allclose(np.vstack([b for _, b in got]), B, rtol=1e-13, atol=1e-15)
