@@ -1593,3 +1593,20 @@ def test_float_kernel_contract_and_blocks_against_the_plain_sum():
     got = list(kern.blocks(uvw, block=3))
     assert [sl for sl, _ in got] == [slice(0, 3), slice(3, 6), slice(6, 7)]
     assert np.allclose(np.vstack([b for _, b in got]), B, rtol=1e-13, atol=1e-15)
+
+
+# --- core/fast_jit.py ------------------------------------------------------------------------------------------
+
+
+def test_is_cached_reads_numbas_index_file_and_says_true_when_it_cannot_tell(tmp_path):
+    from types import SimpleNamespace
+
+    from paper_repro.core import fast_jit
+
+    def dispatcher(index):  # the attribute path of numba's FunctionCache
+        return SimpleNamespace(_cache=SimpleNamespace(_cache_file=SimpleNamespace(_index_path=str(index))))
+
+    assert fast_jit._is_cached(dispatcher(tmp_path / "missing.nbi")) is False
+    (tmp_path / "kernel.nbi").write_bytes(b"")
+    assert fast_jit._is_cached(dispatcher(tmp_path / "kernel.nbi")) is True
+    assert fast_jit._is_cached(object()) is True  # documented: True when that cannot be told (no numba cache)
