@@ -1610,3 +1610,49 @@ def test_is_cached_reads_numbas_index_file_and_says_true_when_it_cannot_tell(tmp
     (tmp_path / "kernel.nbi").write_bytes(b"")
     assert fast_jit._is_cached(dispatcher(tmp_path / "kernel.nbi")) is True
     assert fast_jit._is_cached(object()) is True  # documented: True when that cannot be told (no numba cache)
+
+
+def test_announce_compilation_returns_a_bool(monkeypatch):
+    import io
+
+    from paper_repro.core import fast_jit
+
+    # documented: "Returns whether a line was written" -- False, not merely falsy, on both silent paths
+    monkeypatch.setattr(fast_jit, "_ANNOUNCED", set())
+    monkeypatch.setattr(fast_jit, "_compiled", lambda: {"values": None, "derivatives": None})  # nothing compiled
+    monkeypatch.setattr(fast_jit, "_is_cached", lambda dispatcher: True)
+    monkeypatch.delenv("PAPER_REPRO_NO_CACHE", raising=False)
+    out = io.StringIO()
+    assert fast_jit.announce_compilation("values", out) is False  # in numba's cache: silent
+    assert fast_jit.announce_compilation("values", out) is False  # said (or skipped) once already
+    monkeypatch.setattr(fast_jit, "_is_cached", lambda dispatcher: False)
+    assert fast_jit.announce_compilation("derivatives", out) is True and out.getvalue().count("\n") == 1
+
+
+def test_jit_derivatives_of_two_general_directions():
+    import math
+
+    from paper_repro.core import fast_jit
+    from paper_repro.core.domain import sample_points
+    from paper_repro.core.fast import FloatKernel, scaled_trig_rows
+    from paper_repro.core.labels import exponent_matrix
+
+    if not fast_jit.available():
+        pytest.skip("numba is not installed: the compiled kernel does not run")
+    # two directions that are not the normals' (u, v): the general two-direction pass (_d2_k3) for a 3-D net,
+    # against 2 sin(alpha/2) times central differences of the values (h = 1e-5)
+    n, alpha = 2, 1.1
+    kern = FloatKernel(exponent_matrix(n))
+    jit = fast_jit.JitKernel(kern)
+    sa = math.sin(alpha / 2)
+    pts = sample_points(alpha, 40, seed=9)
+    s, c = scaled_trig_rows(pts, alpha, sa)
+    net = np.random.default_rng(9).normal(size=(3, kern.F))
+    dirs = np.array([(1.0, -2.0, 1.0), (0.0, 1.0, -1.0)])
+    _, outs = jit.derivatives(s, c, sa * sa, dirs, net, np.empty((2, 3, s.shape[1])))
+    h = 1e-5
+    for r, d in enumerate(dirs):
+        plus = net @ kern.basis_rows(*scaled_trig_rows(pts + h * d, alpha, sa))
+        minus = net @ kern.basis_rows(*scaled_trig_rows(pts - h * d, alpha, sa))
+        fd = 2 * sa * (plus - minus) / (2 * h)
+        assert np.allclose(outs[r], fd, rtol=1e-7, atol=1e-7 * np.abs(fd).max()), d
