@@ -1656,3 +1656,27 @@ def test_jit_derivatives_of_two_general_directions():
         minus = net @ kern.basis_rows(*scaled_trig_rows(pts - h * d, alpha, sa))
         fd = 2 * sa * (plus - minus) / (2 * h)
         assert np.allclose(outs[r], fd, rtol=1e-7, atol=1e-7 * np.abs(fd).max()), d
+
+
+# --- core/subdivision_products.py ------------------------------------------------------------------------------
+
+
+def test_rounding_count_follows_its_definition():
+    from paper_repro.core.half_angle_matrices import product_form
+    from paper_repro.core.subdivision_products import rounding_count
+
+    # docstring (docs/subdivision_for_all_n.md, section 9): 64 for order one; per level k the worst h of
+    # (degree in kappa' + degree in sigma' + 2 + monomials of one entry + entries of one row) + 1 + 7; then 2.
+    # Counted here on the dictionary route's forms (half_angle_matrices.product_form), pairs counted as pairs.
+    def level(k: int) -> int:
+        worst = 0
+        for h in range(7):
+            rows, cols, a, b, _ = product_form(k - 1, h)
+            per_entry = np.unique(np.stack([rows, cols], axis=1), axis=0, return_counts=True)[1].max()
+            per_row = np.unique(rows, return_counts=True)[1].max()
+            worst = max(worst, int(a.max()) + int(b.max()) + 2 + int(per_entry) + int(per_row))
+        return worst + 1 + 7
+
+    assert rounding_count(1) == 64 + 2
+    for n in (2, 3, 4):
+        assert rounding_count(n) == 64 + sum(level(k) for k in range(2, n + 1)) + 2

@@ -172,6 +172,11 @@ EQUIVALENT: dict[str, str] = {
         "net is unique (T_2n is a basis, and collocate solves exactly and verifies at 4 more points, drawing new "
         "points if the system is singular), so every seed returns the same rationals; a surface outside the span is "
         "refused at every seed whose d + 4 points it does not happen to fit exactly (no such surface is a caller's)",
+    "core/subdivision_products.py:swap_permutation:arith0:1497f389#0":
+        "T_{2 * n} -> T_{2 / n} in the text of an AssertionError no input reaches (pragma: no cover): T_2n is "
+        "invariant under every exchange of two variables (the paper's cyclic rule and the reflection "
+        "R_{2n,2n-i,j}(w, v, u) = R_{2n,i,j}(u, v, w); core/labels.variable_swap checks the same for every n it "
+        "builds), so every exchanged exponent vector is found and the message is never formatted",
     "core/elevation.py:start_precision:const0:d4735e3a#0":
         "2 near_pi -> 3 near_pi in the first ball precision of the certified solve (a cross-check, not the library "
         "route): it only raises the start, by near_pi = log2(1/(pi - alpha)) < 52 bits (a float alpha < pi is at "
