@@ -94,7 +94,7 @@ MODULES: dict[str, list[str]] = {
     "surfaces/tessellation.py": ["tests/test_tessellation.py"],
     "surfaces/joins.py": ["tests/test_joins.py"],
     "core/subdivision.py": ["tests/test_subdivision.py", "tests/test_subdivision_speed.py"],
-    "core/subdivision_products.py": ["tests/test_subdivision_speed.py"],
+    "core/subdivision_products.py": ["tests/test_mutation_gaps.py", "tests/test_subdivision_speed.py"],
 }
 
 #: pytest ``-k`` expression per module (default: every fast test of the files): the CLI round trips of
