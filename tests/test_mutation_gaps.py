@@ -1680,3 +1680,65 @@ def test_rounding_count_follows_its_definition():
     assert rounding_count(1) == 64 + 2
     for n in (2, 3, 4):
         assert rounding_count(n) == 64 + sum(level(k) for k in range(2, n + 1)) + 2
+
+
+# --- core/normalization.py -------------------------------------------------------------------------------------
+
+
+def test_exact_coefficients_cache_validation_refuses_malformed_entries(monkeypatch):
+    from flint import fmpq
+
+    import paper_repro.core.normalization as nz
+    from paper_repro.core.domain import rational_alpha
+
+    m = len(nz.orbits(1))
+    seen = {}
+
+    def fake_cached(name, key, compute, validate):  # the disk cache, replaced: keep its validator
+        seen["validate"] = validate
+        return {"solution": ["1"] * m, "point_set": 0}
+
+    monkeypatch.setattr(nz, "cached", fake_cached)
+    assert nz.exact_coefficients_cached(1, rational_alpha(fmpq(1, 2))) == ([fmpq(1)] * m, 0)
+    validate = seen["validate"]
+    assert validate({"solution": ["-3/4"] * m, "point_set": 2}) is None
+    for bad in (["1"] * (m + 1), ["1"] * (m - 1), "1" * m, ["1"] * (m - 1) + ["x"], None):
+        assert "not a list of" in validate({"solution": bad, "point_set": 0}), bad
+    assert validate({"solution": ["1"] * m, "point_set": "0"}) == "point_set is not an integer"
+
+
+def test_cramer_degree_bound_is_4n_times_the_orbits():
+    from paper_repro.core.normalization import cramer_degree_bound, orbits
+
+    # each row times (1 + t^2)^{2n}: entries of degree <= 4n in t; Cramer with m = number of orbits unknowns
+    for n in (1, 2, 3):
+        assert cramer_degree_bound(n) == 4 * n * len(orbits(n))
+
+
+def test_coefficient_vector_in_mp_keeps_the_digits_asked_for():
+    import mpmath
+    from flint import fmpq
+
+    from paper_repro.core.domain import rational_alpha
+    from paper_repro.core.normalization import coefficient_vector
+
+    angle = rational_alpha(fmpq(1, 3))
+    exact = coefficient_vector(2, angle, "exact")
+    with mpmath.workdps(15):  # the ambient precision is not what was asked for
+        mp60 = coefficient_vector(2, angle, "mp", dps=60)
+    with mpmath.workdps(60):
+        err = max(abs(mpmath.mpf(int(e.p)) / int(e.q) - x) for e, x in zip(exact, mp60))
+    assert err < mpmath.mpf(10) ** -50
+
+
+def test_solve_reduced_verifies_at_its_default_three_points():
+    from flint import fmpq
+
+    from paper_repro.core.context import ExactContext
+    from paper_repro.core.domain import rational_alpha
+    from paper_repro.core.normalization import solve_reduced
+
+    # the signature's verify=3: the identity checked at 3 further points (Collocation.verified), or as many as asked
+    angle = rational_alpha(fmpq(1, 2))
+    assert solve_reduced(1, angle, ExactContext()).verified == 3
+    assert solve_reduced(1, angle, ExactContext(), verify=5).verified == 5

@@ -177,6 +177,12 @@ EQUIVALENT: dict[str, str] = {
         "invariant under every exchange of two variables (the paper's cyclic rule and the reflection "
         "R_{2n,2n-i,j}(w, v, u) = R_{2n,i,j}(u, v, w); core/labels.variable_swap checks the same for every n it "
         "builds), so every exchanged exponent vector is found and the message is never formatted",
+    "core/normalization.py:orbit_coefficients:compare0:e254fbf0#0":
+        "x / s^k if s^k > 0 else exp(lx) -> s^k >= 0 in the float route for n > MAX_N_CERTIFIED: differs only when "
+        "s^k underflows to exactly 0 while lx = ln x - k ln s <= ln(float max) (else the ValueError before it), "
+        "i.e. a positive scaled coefficient x below 2^-1074 * 1.8e308 = 8.9e-16 at an alpha where s^k < 2^-1075.  "
+        "On the evidence of a sweep, not a proof: n = 101, alpha = 10^-300 .. 1 (151 values), 787,880 (alpha, "
+        "coefficient) pairs with s^k = 0, none with a finite coefficient",
     "core/elevation.py:start_precision:const0:d4735e3a#0":
         "2 near_pi -> 3 near_pi in the first ball precision of the certified solve (a cross-check, not the library "
         "route): it only raises the start, by near_pi = log2(1/(pi - alpha)) < 52 bits (a float alpha < pi is at "
