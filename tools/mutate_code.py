@@ -396,6 +396,11 @@ def _report(records: list[dict], per_module: int, seed: int, goal: float) -> tup
     if missing:
         md += ["", "Not measured yet (no records in this json; run `make mutate-code`, or `tools/mutate_code.py "
                "--module ...`): " + ", ".join(f"`{m}`" for m in missing) + "."]
+    stale = sorted({r["module"] for r in records if (ROOT / "paper_repro" / r["module"]).exists() and r.get(
+        "source_sha") != hashlib.sha256((ROOT / "paper_repro" / r["module"]).read_bytes()).hexdigest()})
+    if stale:
+        md += ["", "Measured on an older source (the module changed since; run it again): "
+               + ", ".join(f"`{m}`" for m in stale) + "."]
     killed_by = [r for r in records if r.get("killed_by")]
     if killed_by:
         md += ["", f"{len(killed_by)} mutant(s) that survived the full run were killed on a recheck (`--recheck`) by "
