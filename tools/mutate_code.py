@@ -183,6 +183,13 @@ EQUIVALENT: dict[str, str] = {
         "i.e. a positive scaled coefficient x below 2^-1074 * 1.8e308 = 8.9e-16 at an alpha where s^k < 2^-1075.  "
         "On the evidence of a sweep, not a proof: n = 101, alpha = 10^-300 .. 1 (151 values), 787,880 (alpha, "
         "coefficient) pairs with s^k = 0, none with a finite coefficient",
+    "surfaces/tessellation.py:_mesh.keys:arith0:9ff733e2#0":
+        "(kind span + val + root) span + t + root -> (kind span - val + root) span + t + root: the encoding of a "
+        "lattice line (kind, val) and a position t on it.  span = 4 root + 2 is the width the original needs (val "
+        "+ root in [0, span)); with -val the block of kind k is k span + [-2 root - 1, 2 root], the same width, so "
+        "the blocks of the three kinds still do not overlap and (kind, val) -> block stays injective, and t is "
+        "encoded as before (keys increase with t inside a block).  line_keys and every searchsorted range between "
+        "keys(kind, val, t0) and keys(kind, val, t1) therefore hold the same points: the mesh is the same",
     "core/elevation.py:start_precision:const0:d4735e3a#0":
         "2 near_pi -> 3 near_pi in the first ball precision of the certified solve (a cross-check, not the library "
         "route): it only raises the start, by near_pi = log2(1/(pi - alpha)) < 52 bits (a float alpha < pi is at "
