@@ -190,6 +190,10 @@ EQUIVALENT: dict[str, str] = {
         "the blocks of the three kinds still do not overlap and (kind, val) -> block stays injective, and t is "
         "encoded as before (keys increase with t inside a block).  line_keys and every searchsorted range between "
         "keys(kind, val, t0) and keys(kind, val, t1) therefore hold the same points: the mesh is the same",
+    "surfaces/joins.py:_closed_form:arith0:a3379d8f#1":
+        "a + b + e + g -> a + b + e - g in the text of an AssertionError no input reaches (pragma: no cover): every "
+        "edge monomial has degree 2n (docs/joins_for_all_n.md, Lemma 1; the condition itself is not mutated here), "
+        "so the message is never formatted",
     "core/elevation.py:start_precision:const0:d4735e3a#0":
         "2 near_pi -> 3 near_pi in the first ball precision of the certified solve (a cross-check, not the library "
         "route): it only raises the start, by near_pi = log2(1/(pi - alpha)) < 52 bits (a float alpha < pi is at "
