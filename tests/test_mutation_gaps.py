@@ -1742,3 +1742,17 @@ def test_solve_reduced_verifies_at_its_default_three_points():
     angle = rational_alpha(fmpq(1, 2))
     assert solve_reduced(1, angle, ExactContext()).verified == 3
     assert solve_reduced(1, angle, ExactContext(), verify=5).verified == 5
+
+
+# --- core/transformation.py ------------------------------------------------------------------------------------
+
+
+def test_transformation_matrix_refuses_entries_beyond_float64():
+    from paper_repro.core.transformation import transformation_matrix
+
+    # T_to_V of the normalized basis carries the normalizing coefficients: for n = 1 the centre's is
+    # 1/sin^2(alpha/2) (Example normalizing_coefficients_n_1), about 4/alpha^2 = 4e400 at alpha = 1e-200: no float64
+    with pytest.raises(OverflowError, match="exceeds float64"):
+        transformation_matrix(1, 1e-200, "T_to_V")
+    m = transformation_matrix(1, 1e-100, "T_to_V")  # 4e200: still a float64
+    assert np.isfinite(m).all() and 1e200 < np.abs(m).max() < 1e201
