@@ -1756,3 +1756,22 @@ def test_transformation_matrix_refuses_entries_beyond_float64():
         transformation_matrix(1, 1e-200, "T_to_V")
     m = transformation_matrix(1, 1e-100, "T_to_V")  # 4e200: still a float64
     assert np.isfinite(m).all() and 1e200 < np.abs(m).max() < 1e201
+
+
+# --- core/domain.py --------------------------------------------------------------------------------------------
+
+
+def test_check_points_tolerance_is_relative_to_alpha():
+    from paper_repro.core.domain import check_points
+
+    # documented: accepted if |u + v + w - alpha| <= tol * alpha and u, v, w >= -tol * alpha
+    tol = 1e-6
+    for a in (0.01, 2.0):
+        near = [a / 3, a / 3, a / 3 + 0.5 * tol * a]  # off by half the tolerance: accepted
+        far = [a / 3, a / 3, a / 3 + 2.0 * tol * a]  # off by twice the tolerance: refused
+        assert check_points([near], a, tol).shape == (1, 3)
+        with pytest.raises(ValueError, match="is not on Omega"):
+            check_points([far], a, tol)
+        assert check_points([[a + 0.5 * tol * a, -0.5 * tol * a, 0.0]], a, tol).shape == (1, 3)
+        with pytest.raises(ValueError, match="is not on Omega"):
+            check_points([[a + 2 * tol * a, -2 * tol * a, 0.0]], a, tol)
