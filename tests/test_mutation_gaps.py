@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 from flint import fmpq
 
-from paper_repro.core.domain import rational_alpha
+from paper_repro.core.domain import RationalAngle, rational_alpha
 from paper_repro.core.labels import delta
 
 # --- core/labels.py --------------------------------------------------------------------------------------------
@@ -359,6 +359,8 @@ def test_elevation_matrix_at_its_edges():
 
     with pytest.raises(ValueError):
         elevation_matrix(1, rational_alpha(fmpq(0)))  # tan(alpha/4) = 0 is alpha = 0
+    with pytest.raises(ValueError, match="open interval"):  # the same, past rational_alpha's own check
+        elevation_matrix(1, RationalAngle(fmpq(0)))
     # below ALPHA_TINY the float closed form is taken at ALPHA_TINY: E(alpha) = E(0) + O(alpha^2)
     tiny = elevation_matrix(1, 1e-300)
     exact_small = elevation_matrix_exact(1, rational_alpha(fmpq(1, 10**40)))
@@ -1295,3 +1297,481 @@ def test_collocate_fmpq_default_number_of_point_sets():
     with pytest.raises(ArithmeticError, match="singular for 10 point sets"):  # the documented default: 10
         collocate_fmpq(singular, 2)
     assert calls == list(range(10))
+
+
+# --- core/half_angle_rules.py ----------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("n", [1, 2, 3])
+def test_member_table_names_each_member_by_its_exponents(n):
+    from paper_repro.core.half_angle_rules import member_table
+    from paper_repro.core.labels import exponent_matrix
+
+    # docs/elevation_and_derivative_for_all_n.md: M_X(m; Y, j) = S_X^{2n-m} S_Y^j C_Y^{m-j} S_Z^m, 0 <= j <= m <= n,
+    # X != Y (Z the third variable); the names give exactly delta_n distinct monomials.  Exponent columns: (S_u, C_u,
+    # S_v, C_v, S_w, C_w).
+    K = member_table(n)
+    assert K.shape == (3, 3, n + 1, n + 1)
+    E = exponent_matrix(n)
+    named = set()
+    for x in range(3):
+        for y in range(3):
+            for m in range(n + 1):
+                for j in range(n + 1):
+                    k = int(K[x, y, m, j])
+                    if x == y or j > m:
+                        assert k == -1
+                        continue
+                    (z,) = {0, 1, 2} - {x, y}
+                    want = [0] * 6
+                    want[2 * x] += 2 * n - m
+                    want[2 * y] += j
+                    want[2 * y + 1] += m - j
+                    want[2 * z] += m
+                    assert E[k].tolist() == want, (x, y, m, j)
+                    named.add(k)
+    assert named == set(range(delta(n)))
+
+
+# --- core/half_angle_matrices.py -------------------------------------------------------------------------------
+
+
+def test_half_angle_refuses_a_float_alpha_in_exact_arithmetic():
+    from flint import fmpq
+
+    from paper_repro.core.context import ExactContext
+    from paper_repro.core.domain import rational_alpha
+    from paper_repro.core.exact_solve import ModularExactContext
+    from paper_repro.core.half_angle_matrices import half_angle
+
+    # exact arithmetic needs an exact kappa = cos(alpha/2), sigma = sin^2(alpha/2): a float alpha has no exact cosine
+    for ctx in (ExactContext(), ModularExactContext()):
+        with pytest.raises(TypeError, match="alpha must be a RationalAngle"):
+            half_angle(1.0, ctx)
+    # tan(alpha/4) = 1/2: cos(alpha/2) = (1 - t^2)/(1 + t^2) = 3/5, sin^2(alpha/2) = (2t/(1 + t^2))^2 = 16/25
+    kappa, sigma = half_angle(rational_alpha(fmpq(1, 2)), ExactContext())
+    assert (kappa, sigma) == (fmpq(3, 5), fmpq(16, 25))
+
+
+def test_evaluate_terms_adds_once_per_rank_and_sums_each_entry(monkeypatch):
+    from paper_repro.core.context import FloatContext
+    from paper_repro.core.half_angle_matrices import elevation_form, evaluate_terms
+
+    # documented: each entry the sum of its monomials, one elementwise addition per rank, so the number of additions
+    # is the largest number of monomials in one entry (counted here from the form itself), not the number of terms
+    form = elevation_form(3)
+    rows, cols, a, b, coef = form
+    keys, inverse, counts = np.unique(np.stack([rows, cols], axis=1), axis=0, return_inverse=True,
+                                      return_counts=True)
+    calls = []
+    add = FloatContext.add
+
+    def counting_add(self, x, y):
+        calls.append(1)
+        return add(self, x, y)
+
+    monkeypatch.setattr(FloatContext, "add", counting_add)
+    ctx = FloatContext()
+    kappa, sigma = 0.8, 0.36
+    erows, ecols, vals = evaluate_terms(form, kappa, sigma, ctx)
+    assert len(calls) == counts.max() < len(rows)
+    want = np.zeros(len(keys))
+    np.add.at(want, inverse.ravel(), coef * kappa ** a * sigma ** b)
+    assert np.array_equal(np.stack([erows, ecols], axis=1), keys)
+    assert np.allclose(vals, want, rtol=1e-15, atol=0)
+
+
+def test_half_angle_refuses_alpha_zero_as_a_rational_angle():
+    from flint import fmpq
+
+    from paper_repro.core.context import ExactContext, FloatContext
+    from paper_repro.core.domain import RationalAngle
+    from paper_repro.core.half_angle_matrices import half_angle
+
+    zero = RationalAngle(fmpq(0))  # an angle of [0, pi) (rational_alpha would refuse it already)
+    for ctx in (ExactContext(), FloatContext()):  # tan(alpha/4) = 0 is alpha = 0, outside (0, pi)
+        with pytest.raises(ValueError, match="open interval"):
+            half_angle(zero, ctx)
+
+
+def test_derivative_nets_in_float_at_a_rational_angle():
+    import math
+
+    from flint import fmpq
+
+    from paper_repro.core.domain import rational_alpha
+    from paper_repro.core.half_angle_matrices import derivative_nets
+
+    # a RationalAngle in float arithmetic: kappa, sigma from the exact half-angle values, rounded once; the same
+    # nets (to rounding) as the float alpha 4 atan(1/2) and as the exact nets rounded
+    n = 2
+    net = np.random.default_rng(3).normal(size=(delta(n), 2))
+    angle = rational_alpha(fmpq(1, 2))
+    qu, qv = derivative_nets(n, angle, net)
+    fu, fv = derivative_nets(n, 4 * math.atan(0.5), net)
+    assert np.allclose(qu, fu, rtol=0, atol=1e-13) and np.allclose(qv, fv, rtol=0, atol=1e-13)
+    exact = np.array([[fmpq(int(round(x * 2**40)), 2**40) for x in row] for row in net], dtype=object)
+    eu, ev = derivative_nets(n, angle, exact, "exact")
+    scale = np.abs(qu).max() + np.abs(qv).max()
+    assert np.abs(qu - eu.astype(float)).max() < 1e-10 * scale and np.abs(qv - ev.astype(float)).max() < 1e-10 * scale
+
+
+def test_the_cached_integer_forms_are_read_only():
+    from paper_repro.core.half_angle_matrices import derivative_form, elevation_form, product_form
+
+    # documented ("read-only arrays"): the forms are cached and returned as they are, so a caller writing into one
+    # would change every later matrix; numpy must refuse the write
+    for form in (elevation_form(2), derivative_form(2), product_form(2, 0)):
+        for arr in form:
+            assert not arr.flags.writeable
+            with pytest.raises(ValueError, match="read-only"):
+                arr[0] = arr[0]
+
+
+
+# --- surfaces/models.py ----------------------------------------------------------------------------------------
+
+
+def test_models_refuse_empty_phases_and_bad_params_and_measure_with_two_samples():
+    from paper_repro.surfaces.models import cyclide_pieces, model_gap, torus_pieces
+
+    half_pi = np.pi / 2
+    for phis, psis in (([], [0.0]), ([0.0], [])):  # documented: a non-empty sequence of phases
+        with pytest.raises(ValueError, match="at least one phase"):
+            torus_pieces(half_pi, 2.0, 1.0, phis, psis)
+        with pytest.raises(ValueError, match="at least one phase"):
+            cyclide_pieces(half_pi, {"a": 6, "b": 32 ** 0.5, "c": 2, "mu": 3}, phis, psis)
+    for params in ({"a": 6, "b": 4, "c": 2}, {"a": 6, "b": 4, "c": 2, "mu": 3, "nu": 1}, [6, 4, 2, 3]):
+        with pytest.raises(TypeError, match="params must be a dict with the keys"):
+            cyclide_pieces(half_pi, params, [0.0], [0.0])
+    # samples: at least 2 points per edge (documented: "samples below 2" is refused); with 2, the corners and the
+    # ends of the diagonal, where the two triangles of the torus square share their exact corner points
+    pieces = torus_pieces(half_pi, 2.0, 1.0, [0.0], [0.0])
+    assert 0 <= model_gap(pieces, half_pi, samples=2) < 1e-12
+    with pytest.raises(ValueError, match="samples"):
+        model_gap(pieces, half_pi, samples=1)
+
+
+# --- surfaces/fitting.py ---------------------------------------------------------------------------------------
+
+
+def test_surface_coordinates_refuses_a_row_that_is_not_a_sequence():
+    from paper_repro.surfaces.fitting import surface_coordinates
+
+    for rows in ([1.0, 2.0], ["xy"], [b"xy"], [(1.0, 2.0), 3.0]):
+        with pytest.raises(TypeError, match="surface must return a sequence of coordinates"):
+            surface_coordinates(rows, exact=False)
+
+
+def test_fit_float_reports_its_verification_points():
+    from paper_repro.surfaces.fitting import fit_float
+
+    # |u - v| is not a trigonometric polynomial: refused, naming the verification points of the signature's
+    # default (verify=8) or of the call
+    def kink(u, v, w):
+        return (np.abs(u - v),)
+
+    with pytest.raises(ValueError, match="at the 8 verification points"):
+        fit_float(kink, 1, 1.0)
+    with pytest.raises(ValueError, match="at the 3 verification points"):
+        fit_float(kink, 1, 1.0, verify=3)
+
+
+# --- core/fast.py ----------------------------------------------------------------------------------------------
+
+
+def test_run_blocks_limits_blas_to_one_thread_by_default():
+    from threadpoolctl import threadpool_info, threadpool_limits
+
+    from paper_repro.core.fast import run_blocks
+
+    def blas_threads() -> list[int]:
+        return [i["num_threads"] for i in threadpool_info() if i["user_api"] == "blas"]
+
+    seen: list[list[int]] = []
+    with threadpool_limits(limits=2, user_api="blas"):  # the user's setting: two BLAS threads
+        if not blas_threads() or max(blas_threads()) < 2:
+            pytest.skip("no BLAS that takes two threads")
+        run_blocks(4, lambda lo, hi, ws: seen.append(blas_threads()), block=1, workers=1)  # documented default
+        assert seen and all(t == [1] * len(t) for t in seen)  # blas=True: single-threaded while the blocks run
+        assert max(blas_threads()) == 2  # and the user's setting back after
+        seen.clear()
+        run_blocks(2, lambda lo, hi, ws: seen.append(blas_threads()), block=1, workers=1, blas=False)
+        assert all(max(t) == 2 for t in seen)
+
+
+def test_contract_derivatives_values_over_several_chunks():
+    import math
+
+    from paper_repro.core.domain import sample_points
+    from paper_repro.core.fast import CHUNK, FloatKernel, scaled_trig_rows
+    from paper_repro.core.labels import exponent_matrix
+
+    # n = 4: 61 functions, two chunks of CHUNK = 32; the values pass must sum every chunk (the plain values route,
+    # net @ basis_rows, is the reference), and the derivative pass is 2 sin(alpha/2) times the directional
+    # derivative of those values (central differences, h = 1e-5: error O(h^2))
+    n, alpha = 4, 1.2
+    kern = FloatKernel(exponent_matrix(n))
+    assert kern.F > CHUNK
+    sa = math.sin(alpha / 2)
+    pts = sample_points(alpha, 50, seed=5)
+    s, c = scaled_trig_rows(pts, alpha, sa)
+    net = np.random.default_rng(5).normal(size=(3, kern.F))
+    basis = kern.basis_rows(s, c)
+
+    def values_at(q):
+        return net @ kern.basis_rows(*scaled_trig_rows(q, alpha, sa))
+
+    h = 1e-5
+    for dirs in ([(1, 0, -1)], [(1, 0, -1), (0, 1, -1)], [(1, -2, 1)]):
+        vals, outs = kern.contract_derivatives(s, c, sa * sa, dirs, kern.split_net(net), values=True)
+        assert np.allclose(vals, net @ basis, rtol=0, atol=1e-12 * (np.abs(net) @ np.abs(basis)).max())
+        for k, d in enumerate(dirs):
+            step = h * np.array(d, dtype=float)
+            fd = 2 * sa * (values_at(pts + step) - values_at(pts - step)) / (2 * h)
+            assert np.allclose(outs[k], fd, rtol=1e-7, atol=1e-7 * np.abs(fd).max()), d
+
+
+def test_threads_without_sched_getaffinity_counts_the_cpus(monkeypatch):
+    import os
+
+    from paper_repro.core.fast import threads
+
+    monkeypatch.delenv("PAPER_REPRO_THREADS", raising=False)
+    monkeypatch.delattr(os, "sched_getaffinity", raising=False)  # as on macOS and Windows
+    monkeypatch.setattr(os, "cpu_count", lambda: 6)
+    assert threads() == 6
+    monkeypatch.setattr(os, "cpu_count", lambda: None)  # documented by os: None when undetermined
+    assert threads() == 1
+
+
+def _blas_threads_in_run_blocks() -> list[list[int]]:
+    from threadpoolctl import threadpool_info
+
+    from paper_repro.core.fast import run_blocks
+
+    seen: list[list[int]] = []
+    run_blocks(2, lambda lo, hi, ws: seen.append(
+        [i["num_threads"] for i in threadpool_info() if i["user_api"] == "blas"]), block=1, workers=1)
+    return seen
+
+
+def test_a_forked_child_limits_blas_in_run_blocks_too():
+    import multiprocessing
+
+    from threadpoolctl import threadpool_info, threadpool_limits
+
+    # the fork handler (_forget_pool_after_fork) starts the child with no BLAS user: its first run_blocks sets the
+    # one-thread limit as in the parent
+    with threadpool_limits(limits=2, user_api="blas"):
+        if max([i["num_threads"] for i in threadpool_info() if i["user_api"] == "blas"], default=1) < 2:
+            pytest.skip("no BLAS that takes two threads")
+        with multiprocessing.get_context("fork").Pool(1) as pool:
+            seen = pool.apply(_blas_threads_in_run_blocks)
+    assert seen and all(t == [1] * len(t) for t in seen)
+
+
+def test_float_kernel_contract_and_blocks_against_the_plain_sum():
+    from paper_repro.core.fast import FloatKernel
+    from paper_repro.core.labels import exponent_matrix
+
+    # unscaled rows: B_f(p) = prod_v sin(x_v/2)^a cos(x_v/2)^b with the exponents (a, b) of exponent_matrix, summed
+    # here directly; contract gives sum_f B_f net_f, and with weights (sum_f B_f w_f net_f) / (sum_f B_f w_f)
+    n = 2
+    exps = exponent_matrix(n)
+    kern = FloatKernel(exps)
+    rng = np.random.default_rng(8)
+    uvw = rng.uniform(0.1, 1.0, size=(7, 3))
+    half = uvw / 2
+    B = np.prod(np.sin(half[:, None, :]) ** exps[None, :, 0::2] * np.cos(half[:, None, :]) ** exps[None, :, 1::2],
+                axis=2)
+    net = rng.normal(size=(delta(n), 2))
+    w = rng.uniform(0.5, 2.0, size=delta(n))
+    assert np.allclose(kern.contract(uvw, net, block=3), B @ net, rtol=1e-13, atol=1e-13)
+    rational = (B @ (w[:, None] * net)) / (B @ w)[:, None]
+    assert np.allclose(kern.contract(uvw, w[:, None] * net, weights=w, block=3), rational, rtol=1e-13, atol=1e-13)
+    got = list(kern.blocks(uvw, block=3))
+    assert [sl for sl, _ in got] == [slice(0, 3), slice(3, 6), slice(6, 7)]
+    assert np.allclose(np.vstack([b for _, b in got]), B, rtol=1e-13, atol=1e-15)
+
+
+# --- core/fast_jit.py ------------------------------------------------------------------------------------------
+
+
+def test_is_cached_reads_numbas_index_file_and_says_true_when_it_cannot_tell(tmp_path):
+    from types import SimpleNamespace
+
+    from paper_repro.core import fast_jit
+
+    def dispatcher(index):  # the attribute path of numba's FunctionCache
+        return SimpleNamespace(_cache=SimpleNamespace(_cache_file=SimpleNamespace(_index_path=str(index))))
+
+    assert fast_jit._is_cached(dispatcher(tmp_path / "missing.nbi")) is False
+    (tmp_path / "kernel.nbi").write_bytes(b"")
+    assert fast_jit._is_cached(dispatcher(tmp_path / "kernel.nbi")) is True
+    assert fast_jit._is_cached(object()) is True  # documented: True when that cannot be told (no numba cache)
+
+
+def test_announce_compilation_returns_a_bool(monkeypatch):
+    import io
+
+    from paper_repro.core import fast_jit
+
+    # documented: "Returns whether a line was written" -- False, not merely falsy, on both silent paths
+    monkeypatch.setattr(fast_jit, "_ANNOUNCED", set())
+    monkeypatch.setattr(fast_jit, "_compiled", lambda: {"values": None, "derivatives": None})  # nothing compiled
+    monkeypatch.setattr(fast_jit, "_is_cached", lambda dispatcher: True)
+    monkeypatch.delenv("PAPER_REPRO_NO_CACHE", raising=False)
+    out = io.StringIO()
+    assert fast_jit.announce_compilation("values", out) is False  # in numba's cache: silent
+    assert fast_jit.announce_compilation("values", out) is False  # said (or skipped) once already
+    monkeypatch.setattr(fast_jit, "_is_cached", lambda dispatcher: False)
+    assert fast_jit.announce_compilation("derivatives", out) is True and out.getvalue().count("\n") == 1
+
+
+def test_jit_derivatives_of_two_general_directions():
+    import math
+
+    from paper_repro.core import fast_jit
+    from paper_repro.core.domain import sample_points
+    from paper_repro.core.fast import FloatKernel, scaled_trig_rows
+    from paper_repro.core.labels import exponent_matrix
+
+    if not fast_jit.available():
+        pytest.skip("numba is not installed: the compiled kernel does not run")
+    # two directions that are not the normals' (u, v): the general two-direction pass (_d2_k3) for a 3-D net,
+    # against 2 sin(alpha/2) times central differences of the values (h = 1e-5)
+    n, alpha = 2, 1.1
+    kern = FloatKernel(exponent_matrix(n))
+    jit = fast_jit.JitKernel(kern)
+    sa = math.sin(alpha / 2)
+    pts = sample_points(alpha, 40, seed=9)
+    s, c = scaled_trig_rows(pts, alpha, sa)
+    net = np.random.default_rng(9).normal(size=(3, kern.F))
+    dirs = np.array([(1.0, -2.0, 1.0), (0.0, 1.0, -1.0)])
+    _, outs = jit.derivatives(s, c, sa * sa, dirs, net, np.empty((2, 3, s.shape[1])))
+    h = 1e-5
+    for r, d in enumerate(dirs):
+        plus = net @ kern.basis_rows(*scaled_trig_rows(pts + h * d, alpha, sa))
+        minus = net @ kern.basis_rows(*scaled_trig_rows(pts - h * d, alpha, sa))
+        fd = 2 * sa * (plus - minus) / (2 * h)
+        assert np.allclose(outs[r], fd, rtol=1e-7, atol=1e-7 * np.abs(fd).max()), d
+
+
+# --- core/subdivision_products.py ------------------------------------------------------------------------------
+
+
+def test_rounding_count_follows_its_definition():
+    from paper_repro.core.half_angle_matrices import product_form
+    from paper_repro.core.subdivision_products import rounding_count
+
+    # docstring (docs/subdivision_for_all_n.md, section 9): 64 for order one; per level k the worst h of
+    # (degree in kappa' + degree in sigma' + 2 + monomials of one entry + entries of one row) + 1 + 7; then 2.
+    # Counted here on the dictionary route's forms (half_angle_matrices.product_form), pairs counted as pairs.
+    def level(k: int) -> int:
+        worst = 0
+        for h in range(7):
+            rows, cols, a, b, _ = product_form(k - 1, h)
+            per_entry = np.unique(np.stack([rows, cols], axis=1), axis=0, return_counts=True)[1].max()
+            per_row = np.unique(rows, return_counts=True)[1].max()
+            worst = max(worst, int(a.max()) + int(b.max()) + 2 + int(per_entry) + int(per_row))
+        return worst + 1 + 7
+
+    assert rounding_count(1) == 64 + 2
+    for n in (2, 3, 4):
+        assert rounding_count(n) == 64 + sum(level(k) for k in range(2, n + 1)) + 2
+
+
+# --- core/normalization.py -------------------------------------------------------------------------------------
+
+
+def test_exact_coefficients_cache_validation_refuses_malformed_entries(monkeypatch):
+    from flint import fmpq
+
+    import paper_repro.core.normalization as nz
+    from paper_repro.core.domain import rational_alpha
+
+    m = len(nz.orbits(1))
+    seen = {}
+
+    def fake_cached(name, key, compute, validate):  # the disk cache, replaced: keep its validator
+        seen["validate"] = validate
+        return {"solution": ["1"] * m, "point_set": 0}
+
+    monkeypatch.setattr(nz, "cached", fake_cached)
+    assert nz.exact_coefficients_cached(1, rational_alpha(fmpq(1, 2))) == ([fmpq(1)] * m, 0)
+    validate = seen["validate"]
+    assert validate({"solution": ["-3/4"] * m, "point_set": 2}) is None
+    for bad in (["1"] * (m + 1), ["1"] * (m - 1), "1" * m, ["1"] * (m - 1) + ["x"], None):
+        assert "not a list of" in validate({"solution": bad, "point_set": 0}), bad
+    assert validate({"solution": ["1"] * m, "point_set": "0"}) == "point_set is not an integer"
+
+
+def test_cramer_degree_bound_is_4n_times_the_orbits():
+    from paper_repro.core.normalization import cramer_degree_bound, orbits
+
+    # each row times (1 + t^2)^{2n}: entries of degree <= 4n in t; Cramer with m = number of orbits unknowns
+    for n in (1, 2, 3):
+        assert cramer_degree_bound(n) == 4 * n * len(orbits(n))
+
+
+def test_coefficient_vector_in_mp_keeps_the_digits_asked_for():
+    import mpmath
+    from flint import fmpq
+
+    from paper_repro.core.domain import rational_alpha
+    from paper_repro.core.normalization import coefficient_vector
+
+    angle = rational_alpha(fmpq(1, 3))
+    exact = coefficient_vector(2, angle, "exact")
+    with mpmath.workdps(15):  # the ambient precision is not what was asked for
+        mp60 = coefficient_vector(2, angle, "mp", dps=60)
+    with mpmath.workdps(60):
+        err = max(abs(mpmath.mpf(int(e.p)) / int(e.q) - x) for e, x in zip(exact, mp60))
+    assert err < mpmath.mpf(10) ** -50
+
+
+def test_solve_reduced_verifies_at_its_default_three_points():
+    from flint import fmpq
+
+    from paper_repro.core.context import ExactContext
+    from paper_repro.core.domain import rational_alpha
+    from paper_repro.core.normalization import solve_reduced
+
+    # the signature's verify=3: the identity checked at 3 further points (Collocation.verified), or as many as asked
+    angle = rational_alpha(fmpq(1, 2))
+    assert solve_reduced(1, angle, ExactContext()).verified == 3
+    assert solve_reduced(1, angle, ExactContext(), verify=5).verified == 5
+
+
+# --- core/transformation.py ------------------------------------------------------------------------------------
+
+
+def test_transformation_matrix_refuses_entries_beyond_float64():
+    from paper_repro.core.transformation import transformation_matrix
+
+    # T_to_V of the normalized basis carries the normalizing coefficients: for n = 1 the centre's is
+    # 1/sin^2(alpha/2) (Example normalizing_coefficients_n_1), about 4/alpha^2 = 4e400 at alpha = 1e-200: no float64
+    with pytest.raises(OverflowError, match="exceeds float64"):
+        transformation_matrix(1, 1e-200, "T_to_V")
+    m = transformation_matrix(1, 1e-100, "T_to_V")  # 4e200: still a float64
+    assert np.isfinite(m).all() and 1e200 < np.abs(m).max() < 1e201
+
+
+# --- core/domain.py --------------------------------------------------------------------------------------------
+
+
+def test_check_points_tolerance_is_relative_to_alpha():
+    from paper_repro.core.domain import check_points
+
+    # documented: accepted if |u + v + w - alpha| <= tol * alpha and u, v, w >= -tol * alpha
+    tol = 1e-6
+    for a in (0.01, 2.0):
+        near = [a / 3, a / 3, a / 3 + 0.5 * tol * a]  # off by half the tolerance: accepted
+        far = [a / 3, a / 3, a / 3 + 2.0 * tol * a]  # off by twice the tolerance: refused
+        assert check_points([near], a, tol).shape == (1, 3)
+        with pytest.raises(ValueError, match="is not on Omega"):
+            check_points([far], a, tol)
+        assert check_points([[a + 0.5 * tol * a, -0.5 * tol * a, 0.0]], a, tol).shape == (1, 3)
+        with pytest.raises(ValueError, match="is not on Omega"):
+            check_points([[a + 2 * tol * a, -2 * tol * a, 0.0]], a, tol)

@@ -239,3 +239,13 @@ def test_bad_input_refused(kwargs, name):
     with pytest.raises((ValueError, TypeError)) as exc:
         tessellate(**args)
     assert name in str(exc.value)
+
+
+def test_max_depth_range_is_0_to_14():
+    """docs/tessellation.md: max_depth outside 0..14 is refused; both ends of the range are accepted."""
+    net = np.random.default_rng(0).normal(size=(19, 3))
+    with pytest.raises(ValueError, match="max_depth"):
+        tessellate(net, 2, 1.0, 1e-3, max_depth=15)
+    for depth in (0, 14):  # a coarse tol: the tree stops long before the largest depth
+        mesh = tessellate(net, 2, 1.0, 10.0, max_depth=depth)
+        assert mesh.bound <= 10.0

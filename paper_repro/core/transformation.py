@@ -95,10 +95,6 @@ def _cmul(ctx: Context, x: Pair, y: Pair) -> Pair:
     return (ctx.sub(ctx.mul(x[0], y[0]), ctx.mul(x[1], y[1])), ctx.add(ctx.mul(x[0], y[1]), ctx.mul(x[1], y[0])))
 
 
-def _cadd(ctx: Context, x: Pair, y: Pair) -> Pair:
-    return (ctx.add(x[0], y[0]), ctx.add(x[1], y[1]))
-
-
 def _rscale(ctx: Context, k, x: Pair) -> Pair:
     """A real ``k`` times a complex ``x``."""
     return (ctx.mul(k, x[0]), ctx.mul(k, x[1]))
