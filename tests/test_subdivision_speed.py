@@ -196,7 +196,8 @@ def test_cached_tables_are_read_only():
     from paper_repro.core import subdivision_products as m
 
     arrays = [*m.factorization(3), m.member_table_fast(3), m.member_parts_fast(3), m.swap_permutation(3, 1),
-              *m._padded_rule_a(3), *m.cotangent_csc_fast(3, 0), *m.product_terms_fast(2, 4), *m._level_terms(3)]
+              *m._padded_rule_a(3), *m.cotangent_csc_fast(3, 0), *m.product_terms_fast(2, 4), *m._level_terms(3),
+              *m._stabilizer_rows(3, "u"), *m._stabilizer_rows(3, "middle")]
     assert all(not a.flags.writeable for a in arrays)
 
 
@@ -309,3 +310,47 @@ def test_float_route_equals_exact_entrywise_beyond_eight(n):
         err = np.abs(np.array(e, dtype=float) - s)
         assert (err <= b + U * np.abs(s)).all(), (n, part, float(err.max()))
         assert err.max() < 2e-15, (n, part, float(err.max()))
+
+
+@pytest.mark.parametrize("n", [3, 5, 10])
+def test_float_matrices_exactly_symmetric(n):
+    """The orbit route writes every column from a computed one; a computed column whose member is fixed by a
+    nontrivial pi is made constant on its stabilizer's orbits first (the referee's point 1 of the second pass,
+    docs/subdivision_for_all_n.md section 11.1), so the output is bitwise invariant: S^u under v <-> w, S^mid under
+    all six exchanges, S^v and S^w the bitwise conjugates of S^u; the same for the estimate B.  Failed before the
+    fix at n = 3, 5, 10, alpha = 1.1 (n = 10: 564 entries of S^u differed, in the columns with a nontrivial
+    stabilizer)."""
+    from paper_repro.core.subdivision_products import swap_permutation, symmetry_permutations
+
+    mats, bound = subdivision_matrices_float(n, 1.1, bound=True)
+    for m in (mats, bound):
+        for k, family in ((0, "u"), (3, "middle")):
+            for pi in symmetry_permutations(n, family):
+                assert np.array_equal(m[k][np.ix_(pi, pi)], m[k]), (n, family)
+        for k in (1, 2):
+            p = swap_permutation(n, k)
+            assert np.array_equal(m[0][np.ix_(p, p)], m[k]), (n, PARTS[k])
+
+
+@pytest.mark.parametrize("n", [3, 5, 10])
+def test_symmetric_net_gives_exactly_symmetric_sub_nets(n):
+    """A net constant on the orbits of the six exchanges: its sub-nets S^u P (under v <-> w) and S^mid P (under all
+    six) are exactly symmetric when each row is summed correctly rounded (math.fsum: the rounded products of row
+    pi g are those of row g, so only the matrices' symmetry matters).  ``subdivide`` sums each row in column order,
+    which is not invariant under pi: its sub-nets are symmetric only up to that rounding (checked against the
+    correctly rounded sums with the standard bound of a recursive dot product, gamma_{d+1} |S| |P| + u |sum|)."""
+    from paper_repro.core.subdivision_products import symmetry_permutations
+
+    d = delta(n)
+    perms = symmetry_permutations(n, "middle")
+    net = np.random.default_rng(n).standard_normal(d)[np.stack(perms).min(axis=0)]
+    assert all(np.array_equal(net[p], net) for p in perms)
+    mats = subdivision_matrices_float(n, 1.1)
+    subs = subdivide(net[:, None], n, 1.1)
+    for k, family in ((0, "u"), (3, "middle")):
+        exact_sum = np.array([math.fsum(mats[k][g] * net) for g in range(d)])
+        for pi in symmetry_permutations(n, family):
+            assert np.array_equal(exact_sum[pi], exact_sum), (n, family)
+        gamma = (d + 1) * U / (1 - (d + 1) * U)
+        assert (np.abs(subs[k][:, 0] - exact_sum) <= gamma * (np.abs(mats[k]) @ np.abs(net)) + U * np.abs(exact_sum)
+                ).all(), (n, family)

@@ -606,13 +606,29 @@ def assemble(n: int, blocks: list[np.ndarray | None], x0: np.ndarray, x1: np.nda
     (``R[pi g, pi f] = R[g, f]``, and the normalizing coefficients are symmetric, Theorem B), and the corners v, w
     are corner u with u and v (u and w) exchanged, ``R^v[pi g, pi f] = R^u[g, f]`` (T_{2n} is invariant under the
     permutations of (u, v, w); the translation in v is the translation in u conjugated by the exchange).  One
-    normalization per computed entry, then every entry written once per orbit element."""
+    normalization per computed entry; then each computed column whose member is fixed by a nontrivial pi is made
+    constant on the orbits of its stabilizer (:func:`_stabilizer_rows`: every entry takes the value of the smallest
+    row of its orbit, which the exact column has there, Lemma 11.4), so that the copies written to the same place
+    agree bit for bit and the output is exactly invariant (``S[pi g, pi f] == S[g, f]`` bitwise; corners v, w
+    bitwise conjugates of u); then every entry written once per orbit element.  For the estimate B (the same call
+    on the bound's blocks) the moved entry takes the estimate of the entry it was moved from.
+
+    >>> import numpy as np
+    >>> s_u, s_mid = subdivision_matrices_float(5, 1.1, parts=("u", "middle"))
+    >>> all(np.array_equal(s_u[np.ix_(p, p)], s_u) for p in symmetry_permutations(5, "u"))
+    True
+    >>> all(np.array_equal(s_mid[np.ix_(p, p)], s_mid) for p in symmetry_permutations(5, "middle"))
+    True
+    """
     d = delta_unchecked(n)
     out = []
     for part in parts:
         family = "middle" if part == "middle" else "u"
         cols = _plan(n, family)[-1][0]
         block = blocks[family == "middle"] * (x0[cols][None, :] / x1[:, None])
+        fixed, rows = _stabilizer_rows(n, family)
+        if len(fixed):
+            block[:, fixed] = np.take_along_axis(block[:, fixed], rows, axis=0)
         swap = None if part in ("u", "middle") else swap_permutation(n, "uvw".index(part))
         full = np.empty((d, d))
         for pi in symmetry_permutations(n, family):
@@ -620,6 +636,31 @@ def assemble(n: int, blocks: list[np.ndarray | None], x0: np.ndarray, x1: np.nda
             full[np.ix_(p, p[cols])] = block
         out.append(full)
     return tuple(out)
+
+
+@cache
+def _stabilizer_rows(n: int, part: str) -> tuple[np.ndarray, np.ndarray]:
+    """For the computed columns of :func:`_plan` (``_plan(n, part)[-1][0]``) whose member f is fixed by a nontrivial
+    pi of :func:`symmetry_permutations`: their positions ``fixed`` among the computed columns, and ``rows``
+    (delta_n x len(fixed)), ``rows[g, i]`` the smallest member of the orbit of g under the stabilizer of f (the
+    group of the pi with pi f = f).  The exact column is constant on these orbits (Lemma 11.4: R[pi g, f] =
+    R[pi g, pi f] = R[g, f]); the computed one only up to rounding, which :func:`assemble` removes.
+
+    >>> fixed, rows = _stabilizer_rows(2, "u")
+    >>> bool(len(fixed) > 0 and (rows <= np.arange(19)[:, None]).all())
+    True
+    """
+    d = delta_unchecked(n)
+    perms = [pi for pi in symmetry_permutations(n, part) if not np.array_equal(pi, np.arange(d))]
+    cols = _plan(n, part)[-1][0]
+    stab = np.array([pi[cols] == cols for pi in perms]).reshape(len(perms), len(cols))  # pi fixes the column's f
+    fixed = np.flatnonzero(stab.any(axis=0))
+    rows = np.repeat(np.arange(d)[:, None], len(fixed), axis=1)
+    for pi, fixes in zip(perms, stab[:, fixed]):
+        rows[:, fixes] = np.minimum(rows[:, fixes], pi[:, None])
+    for arr in (fixed, rows):
+        arr.setflags(write=False)
+    return fixed, rows
 
 
 @cache
