@@ -1715,15 +1715,24 @@ def dupin_count_holds(tex: str | None) -> tuple[bool, dict]:
     phase intervals read from sec6-dupin-phases) over the area of one triangle (the parameter set of eq. Dupin_in_3d,
     read, at the alpha of the caption of Fig. dupin_03, read); and exact order-n fits of both triangles of phase
     squares."""
-    from paper_repro.printed.parsed import ALPHA, U, V, chain
+    from paper_repro.printed.parsed import ALPHA, U, V
 
     m = re.match(r"^by means of ([\w-]+) smoothly joined (\w+) order rational triangular trigonometric patches,$",
                  tex or "")
     if not m or m.group(1) not in NUMBER_WORDS or m.group(2) not in ORDINALS:
         return False, {"unread": (tex or "")[:60]}
     count, n = NUMBER_WORDS[m.group(1)], ORDINALS[m.group(2)]
-    settings = dict(re.findall(r"\$\\?(\w+)\s*=\s*([^$]*)\$", _LINE["sec6-fig-dupin-settings"].verbatim))
-    (_, alpha_value), _ = chain("u=" + settings["alpha"]) if "alpha" in settings else ((None, None), None)
+    from paper_repro.printed import latex_math as LM
+
+    settings = {}  # the caption's settings: each $..$ segment 'name = value', read by the one reader
+    for seg in LM.inline_math(_LINE["sec6-fig-dupin-settings"].verbatim):
+        try:
+            rel = LM.parse_relation(seg)
+        except LM.LatexMathError:
+            continue
+        if rel.ops == ["="] and len(rel.parts) == 2 and isinstance(rel.parts[0], sympy.Symbol):
+            settings[str(rel.parts[0])] = rel.parts[1]
+    alpha_value = settings.get("alpha")
     dom = read_dupin()
     (lo_u, hi_u), (lo_v, hi_v) = dom["u"], dom["v"]
     area = sympy.integrate(sympy.integrate(1, (V, lo_v, hi_v)), (U, lo_u, hi_u)).subs(ALPHA, alpha_value)
