@@ -707,14 +707,23 @@ def order_n3() -> LineResult:
     (package labels).  The figure itself (an image, empty in the source) cannot be read."""
     how = "the printed subscript and orders against eq. united_system's T_{2n} and the labels of T_{2n}"
     try:
-        m = re.fullmatch(r"\$T_\{(\d+)\}\^\{\\alpha\}\$ of order \$(\d+)\$", verbatim("sec1_3-T6-order-3").strip())
-        cap = re.search(r"joint function system \(\\ref\{united_system\}\) of order \$n=(\d+)\$",
-                        verbatim("sec1_3-fig-united-n3-caption"))
-        t2n = re.match(r"\s*T_\{([^{}]+)\}\^\{\\alpha\}", verbatim("sec1_3-united-system"))
-        if not m or not cap or not t2n:
+        words, segs = lm.prose(verbatim("sec1_3-T6-order-3"))  # '$T_{6}^{\alpha}$ of order $3$'
+        cap_words, cap_segs = lm.prose(verbatim("sec1_3-fig-united-n3-caption"))  # '.. of order $n=3$.'
+        united = lm.parse_relation(verbatim("sec1_3-united-system"))  # 'T_{2n}^{\alpha} & = & \left\{..'
+        frame = "joint function system (\\ref{united_system}) of order $$"
+        if words != "$$ of order $$" or len(segs) != 2 or frame not in cap_words or len(cap_segs) != 1:
             raise LatexMathError("the subscript or the orders are not read")
-        sub, order, cap_n = int(m.group(1)), int(m.group(2)), int(cap.group(1))
-        ok = sub == _env_int(lm.parse(t2n.group(1)), n=order) and cap_n == order
+        t_sub, order_e, cap = lm.parse(segs[0]), lm.parse(segs[1]), lm.parse_relation(cap_segs[0])
+        head = united.parts[0] if united.parts else None
+        if not (isinstance(t_sub, AppliedUndef) and t_sub.func.__name__ == "T" and len(t_sub.args) == 1
+                and t_sub.args[0].is_Integer and order_e.is_Integer and isinstance(head, AppliedUndef)
+                and head.func.__name__ == "T" and len(head.args) == 1 and cap.ops == ["="]
+                and cap.parts[0] == sympy.Symbol("n") and cap.parts[1].is_Integer and not cap.conditions):
+            raise LatexMathError("the subscript or the orders are not read")
+        if lm.untagged(segs[0]) or any(f.func.__name__ == "T" for f in lm.untagged(verbatim("sec1_3-united-system"))):
+            raise LatexMathError("T printed without its tag alpha")
+        sub, order, cap_n = int(t_sub.args[0]), int(order_e), int(cap.parts[1])
+        ok = sub == _env_int(head.args[0], n=order) and cap_n == order
     except (LatexMathError, ValueError) as exc:
         return _unread(how, exc)
     labs = united_system(order)
