@@ -1242,11 +1242,18 @@ def torus_joined() -> LineResult:
     (w = 0 edges, reversed) and the edge U = alpha between the upper triangle of one square and the lower triangle of
     the next (u = 0 edges, reversed)."""
     tex = _LINE["sec6-torus-joined"].verbatim
-    m = re.search(r"illustrates several triangular trigonometric\s+patches of order \$(\d+)\$ that are smoothly "
-                  r"joined in order to form a part of a ring torus\.$", tex)
-    if not m or "Fig.\\ \\ref{fig:torus}" not in tex:
+    from paper_repro.printed import latex_math as LM
+
+    words, segs = LM.prose(tex)  # the words; the order, the one $..$ segment, read by the one reader
+    try:
+        order = LM.parse(segs[0]) if len(segs) == 1 else None
+    except LM.LatexMathError:
+        order = None
+    if (words != "Fig.\\ \\ref{fig:torus} illustrates several triangular trigonometric patches of order $$ that are "
+            "smoothly joined in order to form a part of a ring torus." or order is None or not order.is_Integer
+            or order < 1):
         return LineResult(False, how="the line read from the transcription", detail={"unread": tex[:60]})
-    n = int(m.group(1))
+    n = int(order)
     t = TS[1]
     alpha = rational_alpha(t)
     rho, mu = fmpq(7, 2), fmpq(5, 3)
