@@ -2243,7 +2243,7 @@ def ln2_set(override=None) -> LineResult:
                       override=override)
 
 
-def bound_n(expr: str, n: int) -> int:
+def bound_n(expr: str | sympy.Expr, n: int) -> int:
 
     return bound(expr, n=n)
 
@@ -2256,23 +2256,39 @@ def _names_set(n: int, idx) -> set[str]:
 def ln1_set(override=None) -> LineResult:
     """L_{n-1} = rho_{2n,n,n} R_{2n,n,n}, and R_{2n,n,n} is not the zero function (so rho_{2n,n,n} = 0)."""
     res = _read_sets("sec1_3-Ln1-set", lambda n, r: alive_after(n, n - 1, 2), override=override)
-    head = re.search(r"0=L_\{([^{}]+)\}\\left\( u,v,w\\right\) =", _transcribed(["sec1_3-Ln1"], override)["sec1_3-Ln1"])
+    try:  # '0=L_{n-1}\left( u,v,w\right) =..': the order of L read by the one reader
+        ln1 = lm.parse_relation(_transcribed(["sec1_3-Ln1"], override)["sec1_3-Ln1"])
+        lcall = ln1.parts[1] if len(ln1.parts) > 2 else None
+        head = (lcall.args[0] if ln1.ops[:2] == ["=", "="] and ln1.parts[0] == 0 and isinstance(lcall, AppliedUndef)
+                and lcall.func.__name__ == "L" and len(lcall.args) == 2
+                and lcall.args[1] == sympy.Tuple(*sympy.symbols("u v w")) else None)
+    except LatexMathError:
+        head = None
     # the equality is L_r for the last order r of the recomputed elimination
-    res.holds_as_printed &= bool(head) and all(
-        bound_n(head.group(1), n) == max(r for r, _p, _b, _g in elimination(n)) for n in N_PROOF)
+    res.holds_as_printed &= head is not None and all(
+        bound_n(head, n) == max(r for r, _p, _b, _g in elimination(n)) for n in N_PROOF)
     pt = _domain_points(ALPHA_TS[0], 1)[0]
     nonzero = all(pt[0][0] ** n * pt[1][0] ** n * pt[2][0] ** n != 0 for n in N_PROOF)
-    # "equality (..n_minus_1) holds if and only if \\[ \\rho_{2n,n,n}=0, \\]" (read): the one constant of L_{n-1},
-    # and the value 0 that R_{2n,n,n} != 0 forces
-    tex = re.sub(r"\s+", " ", _transcribed(["sec1_3-rho-centre-zero"], override)["sec1_3-rho-centre-zero"])
-    m = re.fullmatch(r"Moreover, equality \(\\ref\{induction_hypothesis_for_linear_independence_n_minus_1\}\) holds "
-                     r"if and only if% ?\\\[ \\rho_\{2n,(\w+),(\w+)\}=(\d+), \\\]", tex.strip())
-    names_ok = bool(m) and all(
-        {f"R_{{{2 * n},{bound_n(m.group(1), n)},{bound_n(m.group(2), n)}}}"} == _names_set(n, alive_after(n, n - 1, 2))
-        for n in N_PROOF)
-    res.holds_as_printed &= nonzero and names_ok and bool(m) and m.group(3) == "0"
+    # "equality (..n_minus_1) holds if and only if \\[ \\rho_{2n,n,n}=0, \\]" (the words, then the display read by
+    # the one reader): the one constant of L_{n-1}, and the value 0 that R_{2n,n,n} != 0 forces
+    tex = _transcribed(["sec1_3-rho-centre-zero"], override)["sec1_3-rho-centre-zero"]
+    words = " ".join(tex.split("\\[", 1)[0].replace("%", " ").split())
+    try:
+        rel = lm.parse_relation(tex) if "\\[" in tex and tex.rstrip().endswith("\\]") else None
+        rho = rel.parts[0] if rel is not None and rel.ops == ["="] and not rel.conditions else None
+        if not (isinstance(rho, AppliedUndef) and rho.func.__name__ == "rho" and len(rho.args) == 3
+                and rho.args[0] == 2 * sympy.Symbol("n") and rel.parts[1].is_Integer):
+            rho = None
+    except LatexMathError:
+        rho = None
+    read = rho is not None and words == ("Moreover, equality (\\ref{induction_hypothesis_for_linear_independence_"
+                                         "n_minus_1}) holds if and only if")
+    names_ok = read and all(
+        {f"R_{{{2 * n},{bound_n(rho.args[1], n)},{bound_n(rho.args[2], n)}}}"}
+        == _names_set(n, alive_after(n, n - 1, 2)) for n in N_PROOF)
+    res.holds_as_printed &= nonzero and names_ok and read and rel.parts[1] == 0
     res.detail["centre_nonzero_at_a_point"] = nonzero
-    res.detail["rho_centre_zero_read"] = bool(m) and names_ok
+    res.detail["rho_centre_zero_read"] = read and names_ok
     return res
 
 
