@@ -133,3 +133,17 @@ def test_control_net_of_order_one_read_as_a_union():
     # a row that is not the union continued by \subset names no point
     assert net_from_transcription(1, verbatim("sec6-control-net-set").replace("\\subset", "")) == []
     assert net_from_transcription(1, "XXX") == []
+
+
+def test_greek_letter_raised_to_a_power():
+    mu = Symbol("mu")
+    # Lemma 3's consequence "In particular, S_{j,mu}^{j}(0) = j! mu^{j}" (sec1_3-sin-leading): a Greek letter with a
+    # superscript and no subscript is a power (refused before: the table expected the subscript of P^{m}_{d,e,f})
+    rel = parse_relation(r"S_{j,\mu}^{j}\left( 0\right) =j!\mu^{j}")
+    assert rel.ops == ["="]
+    assert rel.parts == [Function("S_sup")(j, mu, j, Tuple(0)), sympy.factorial(j) * mu ** j]
+    assert parse(r"\alpha^{2}") == ALPHA ** 2
+    assert parse(r"\mu^{\prime}") == Symbol("mu_prime")
+    # the tag stays a tag, and a superscript printed before a subscript stays an index
+    assert parse(r"\Omega^{\alpha}") == Symbol("Omega")
+    assert parse(r"\Omega^{m}_{d,e,f}") == Function("Omega_sup")(d, e, f, m)

@@ -24,7 +24,7 @@ import re
 from dataclasses import dataclass, field
 from fractions import Fraction
 from functools import cache
-from math import comb, factorial
+from math import comb
 
 import mpmath
 import sympy
@@ -1583,16 +1583,29 @@ def independence_rank() -> LineResult:
 def sin_power_leading() -> LineResult:
     """"In particular, $S_{j,\\mu}^{j}\\left( 0\\right) =j!\\mu^{j}$" (read: the indices, the order, the point 0 and
     the right-hand side factorial times power) against exact Taylor coefficients, j = 1..15, mu in {1/2, 1, 3, 7/5}."""
-    tex = re.sub(r"\s+", "", _transcribed(["sec1_3-sin-leading"])["sec1_3-sin-leading"])
-    m = re.search(r"\$S_\{([a-z]),\\mu\}\^\{([a-z])\}\\left\(0\\right\)=([a-z])!\\mu\^\{([a-z])\}\$", tex)
-    if not m or "Inparticular" not in tex:
-        return LineResult(False, how="the formula read from the transcription", detail={"unread": tex[:60]})
-    names = m.groups()
-    ok = all(sin_power_derivative(*(env[v] for v in names[:1]), mu, env[names[1]])
-             == factorial(env[names[2]]) * mu ** env[names[3]]
-             for j in range(1, 16) for env in [{"j": j}] if all(v in env for v in names)
-             for mu in (fmpq(1, 2), fmpq(1), fmpq(3), fmpq(7, 5)))
-    ok = ok and all(v == "j" for v in names)
+    tex = _transcribed(["sec1_3-sin-leading"])["sec1_3-sin-leading"]
+    words, segs = lm.prose(tex)  # the words; the formula, the one $..$ segment, read by the one reader
+    j_, mu_ = sympy.Symbol("j"), sympy.Symbol("mu")
+    try:
+        rel = lm.parse_relation(segs[0]) if len(segs) == 1 and "(In particular, $$)" in words else None
+        lhs, rhs = rel.parts if rel is not None and rel.ops == ["="] and not rel.conditions else (None, None)
+        if not (isinstance(lhs, AppliedUndef) and lhs.func.__name__ == "S_sup" and len(lhs.args) == 4
+                and lhs.args[1] == mu_ and lhs.args[3] == sympy.Tuple(0)
+                and (lhs.free_symbols | rhs.free_symbols) <= {j_, mu_}):
+            raise LatexMathError(f"not S_{{j,mu}}^{{p}}(0) = f(j, mu): {rel.parts if rel else segs}")
+    except LatexMathError as exc:
+        return LineResult(False, how="the formula read from the transcription", detail={"unread": str(exc)[:80]})
+    names = [str(lhs.args[0]), str(lhs.args[2]), str(rhs)]
+
+    def printed_value(j: int, mu: fmpq):
+        v = rhs.subs({j_: j, mu_: sympy.Rational(int(mu.p), int(mu.q))})
+        return fmpq(int(v.p), int(v.q)) if v.is_Rational else None
+
+    try:
+        ok = all(sin_power_derivative(bound(lhs.args[0], j=j), mu, bound(lhs.args[2], j=j)) == printed_value(j, mu)
+                 for j in range(1, 16) for mu in (fmpq(1, 2), fmpq(1), fmpq(3), fmpq(7, 5)))
+    except ValueError:  # an index that is not a non-negative integer at j
+        ok = False
     return LineResult(ok, how="the printed formula read from the transcription against exact Taylor coefficients, "
                       "j = 1..15", kind="exhaustive", detail={"ok": ok, "read": list(names)})
 
