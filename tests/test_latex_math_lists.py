@@ -110,3 +110,40 @@ def test_prose_frame():
                         "$a^{2}=b^{2}+c^{2}$ and $c<\\mu\\leq a$")
     assert words == "where parameters $$, $$, $$ and $$ have to fulfill the conditions $$ and $$"
     assert segs == ["a", "b", "c", "\\mu", "a^{2}=b^{2}+c^{2}", "c<\\mu\\leq a"]
+
+
+# -- regexfold2: superscripts other than the tag; the control net as a union of bounded sets ------------------------
+def test_foreign_tags_of_the_partition_of_unity_lines():
+    # eq. system_partition_of_unity's sum and its domain print every named object with the tag alpha only
+    assert P.foreign_tags(verbatim("sec4_5-L-sum")) == []
+    assert P.foreign_tags(verbatim("sec4_5-L-domain")) == []
+    # another superscript is seen: a prime, a number; one the reader refuses raises
+    assert P.foreign_tags(r"r_{2n,n,n}^{\prime}R_{2n,n,n}^{\alpha}\left( u,v,w\right)") == ["r_prime(2*n, n, n)"]
+    assert P.foreign_tags(r"for all $c_{6,4}^{2}$") == ["c_sup(6, 4, 2)"]
+    with pytest.raises(LatexMathError):
+        P.foreign_tags(r"for all $\left( u,v,w\right) \in\Omega^{\beta}$.")
+
+
+def test_control_net_of_order_one_read_as_a_union():
+    from paper_repro.claims.lines.sec6 import net_from_transcription
+
+    # def:surface_patch at n = 1: {r_{2,2-i,j}}_{j=0,i=j}^{1,1-j} is r_{2,2,0}, r_{2,1,0} (j = 1: i = 1..0, empty);
+    # {g}, {b}_{j=0,i=j}^{0,1-j}: g_{2,2,0}, g_{2,1,0}, b_{2,2,0}, b_{2,1,0} -- six points, the centre r_{2,1,1} lacks
+    assert net_from_transcription(1) == ["r_{2,2,0}", "r_{2,1,0}", "g_{2,2,0}", "g_{2,1,0}", "b_{2,2,0}", "b_{2,1,0}"]
+    # a row that is not the union continued by \subset names no point
+    assert net_from_transcription(1, verbatim("sec6-control-net-set").replace("\\subset", "")) == []
+    assert net_from_transcription(1, "XXX") == []
+
+
+def test_greek_letter_raised_to_a_power():
+    mu = Symbol("mu")
+    # Lemma 3's consequence "In particular, S_{j,mu}^{j}(0) = j! mu^{j}" (sec1_3-sin-leading): a Greek letter with a
+    # superscript and no subscript is a power (refused before: the table expected the subscript of P^{m}_{d,e,f})
+    rel = parse_relation(r"S_{j,\mu}^{j}\left( 0\right) =j!\mu^{j}")
+    assert rel.ops == ["="]
+    assert rel.parts == [Function("S_sup")(j, mu, j, Tuple(0)), sympy.factorial(j) * mu ** j]
+    assert parse(r"\alpha^{2}") == ALPHA ** 2
+    assert parse(r"\mu^{\prime}") == Symbol("mu_prime")
+    # the tag stays a tag, and a superscript printed before a subscript stays an index
+    assert parse(r"\Omega^{\alpha}") == Symbol("Omega")
+    assert parse(r"\Omega^{m}_{d,e,f}") == Function("Omega_sup")(d, e, f, m)

@@ -326,6 +326,7 @@ func: FUNC atom                       -> func
 
 ?atom: primary
      | primary "^" sarg               -> power
+     | GREEKV "^" sarg                -> greek_power
      | primary "!"                    -> factorial
 
 ?primary: NUMBER                      -> number
@@ -852,6 +853,14 @@ class _Build(Transformer):
             return _fn(name + "_prime", idx)
         s = self._scalar(sup)
         return _fn(name + "_sup", idx + [s])
+
+    def greek_power(self, c):
+        """``\\mu^{j}``: a lower-case Greek letter raised to a power (``\\Omega^{m}_{..}`` is indexed_sup_before).
+        A capital (``\\Omega^{\\beta}``: a set, whose only superscript is the tag alpha) stays refused."""
+        name = _name(c[0])
+        if name[:1].isupper():
+            raise LatexMathError(f"\\{name} with a superscript other than the tag alpha")
+        return self.power([sympy.Symbol(name), c[1]])
 
     def indexed(self, c):
         return self._indexed(c[0], c[1])

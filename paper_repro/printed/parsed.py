@@ -289,6 +289,35 @@ def untagged_names(tex: str) -> list[str]:
             if f.func.__name__ in TAGGED]
 
 
+def _objects(rel: Relation):
+    """Every parsed object of a relation: its parts and, recursively, those of its clauses."""
+    for p in rel.parts:
+        if p is not None:
+            yield p
+    for c in rel.conditions:
+        yield from _objects(c)
+
+
+def foreign_tags(tex: str) -> list[str]:
+    r"""The named objects of ``tex`` (a display line, or every ``$..$`` segment of a prose line) that carry a
+    superscript other than the notation's tag ``^{\alpha}`` (the reader drops the tag; any other superscript makes
+    ``X_sup(.., s)``, ``^{\prime}`` makes ``X_prime``); a superscript the reader refuses (``\Omega^{\beta}``)
+    raises ``LatexMathError``.
+
+    >>> foreign_tags(r"where $\left\{ r_{2n,2n-i,j}^{\alpha}\right\} _{j=0,i=j}^{n,n}$ and $\Omega^{\alpha}$")
+    []
+    >>> foreign_tags(r"r_{2n,n,n}^{\alpha}R_{2n,n,n}^{\beta}\left( u,v,w\right)")
+    ['R_sup(2*n, n, n, beta, (u, v, w))']
+    """
+    segs = latex_math.inline_math(tex) if "$" in tex else [tex]
+    out = []
+    for seg in segs:
+        for obj in _objects(latex_math.parse_relation(seg)):
+            if isinstance(obj, sympy.Basic):
+                out += [str(a) for a in obj.atoms(AppliedUndef) if a.func.__name__.endswith(("_sup", "_prime"))]
+    return sorted(set(out))
+
+
 # -- the linear combinations of the proof of Theorem joint_systems_linear_independence ----------------------------
 COLOUR_OF = {"rho": "R", "gamma": "G", "beta": "B"}
 FUNCTIONS = {"R": "R", "G": "G", "B": "B", "Rbar": "R", "Gbar": "G", "Bbar": "B"}

@@ -414,3 +414,9 @@ EQUIVALENT["sec7-elev-index-sets:swap:86ed7af3c5"] = (  # i <-> j in the whole l
 EQUIVALENT["sec4_5-weights:swap:8db582f965"] = (  # i <-> j in the whole line
     "renaming the bound variables: {r_{2n,2n-j,i}}_{i=0,j=i}^{n-1,2n-1-i} is the set {r_{2n,2n-i,j}}_{j=0,i=j}"
     "^{n-1,2n-1-j} with i and j named the other way round (and likewise for g, b): the line names the same weights")
+# -- Section 6 (regexfold2: the control net read as a union of bounded sets by latex_math.parse) --------------------
+for _lid in ("sec6-control-net-set", "sec6-rational-control-net-set"):
+    EQUIVALENT[f"{_lid}:swap:1d5b5ec26a"] = (  # i <-> j in the whole line
+        "renaming the bound variables: {r_{2n,2n-j,i}}_{i=0,j=i}^{n,2n-1-i} is the set {r_{2n,2n-i,j}}_{j=0,i=j}"
+        "^{n,2n-1-j} with i and j named the other way round (and likewise for g, b with upper bound n-1): the line "
+        "names the same control points for every n (and still lacks the centre)")

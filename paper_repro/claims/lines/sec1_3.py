@@ -24,7 +24,7 @@ import re
 from dataclasses import dataclass, field
 from fractions import Fraction
 from functools import cache
-from math import comb, factorial
+from math import comb
 
 import mpmath
 import sympy
@@ -707,14 +707,23 @@ def order_n3() -> LineResult:
     (package labels).  The figure itself (an image, empty in the source) cannot be read."""
     how = "the printed subscript and orders against eq. united_system's T_{2n} and the labels of T_{2n}"
     try:
-        m = re.fullmatch(r"\$T_\{(\d+)\}\^\{\\alpha\}\$ of order \$(\d+)\$", verbatim("sec1_3-T6-order-3").strip())
-        cap = re.search(r"joint function system \(\\ref\{united_system\}\) of order \$n=(\d+)\$",
-                        verbatim("sec1_3-fig-united-n3-caption"))
-        t2n = re.match(r"\s*T_\{([^{}]+)\}\^\{\\alpha\}", verbatim("sec1_3-united-system"))
-        if not m or not cap or not t2n:
+        words, segs = lm.prose(verbatim("sec1_3-T6-order-3"))  # '$T_{6}^{\alpha}$ of order $3$'
+        cap_words, cap_segs = lm.prose(verbatim("sec1_3-fig-united-n3-caption"))  # '.. of order $n=3$.'
+        united = lm.parse_relation(verbatim("sec1_3-united-system"))  # 'T_{2n}^{\alpha} & = & \left\{..'
+        frame = "joint function system (\\ref{united_system}) of order $$"
+        if words != "$$ of order $$" or len(segs) != 2 or frame not in cap_words or len(cap_segs) != 1:
             raise LatexMathError("the subscript or the orders are not read")
-        sub, order, cap_n = int(m.group(1)), int(m.group(2)), int(cap.group(1))
-        ok = sub == _env_int(lm.parse(t2n.group(1)), n=order) and cap_n == order
+        t_sub, order_e, cap = lm.parse(segs[0]), lm.parse(segs[1]), lm.parse_relation(cap_segs[0])
+        head = united.parts[0] if united.parts else None
+        if not (isinstance(t_sub, AppliedUndef) and t_sub.func.__name__ == "T" and len(t_sub.args) == 1
+                and t_sub.args[0].is_Integer and order_e.is_Integer and isinstance(head, AppliedUndef)
+                and head.func.__name__ == "T" and len(head.args) == 1 and cap.ops == ["="]
+                and cap.parts[0] == sympy.Symbol("n") and cap.parts[1].is_Integer and not cap.conditions):
+            raise LatexMathError("the subscript or the orders are not read")
+        if lm.untagged(segs[0]) or any(f.func.__name__ == "T" for f in lm.untagged(verbatim("sec1_3-united-system"))):
+            raise LatexMathError("T printed without its tag alpha")
+        sub, order, cap_n = int(t_sub.args[0]), int(order_e), int(cap.parts[1])
+        ok = sub == _env_int(head.args[0], n=order) and cap_n == order
     except (LatexMathError, ValueError) as exc:
         return _unread(how, exc)
     labs = united_system(order)
@@ -1574,16 +1583,29 @@ def independence_rank() -> LineResult:
 def sin_power_leading() -> LineResult:
     """"In particular, $S_{j,\\mu}^{j}\\left( 0\\right) =j!\\mu^{j}$" (read: the indices, the order, the point 0 and
     the right-hand side factorial times power) against exact Taylor coefficients, j = 1..15, mu in {1/2, 1, 3, 7/5}."""
-    tex = re.sub(r"\s+", "", _transcribed(["sec1_3-sin-leading"])["sec1_3-sin-leading"])
-    m = re.search(r"\$S_\{([a-z]),\\mu\}\^\{([a-z])\}\\left\(0\\right\)=([a-z])!\\mu\^\{([a-z])\}\$", tex)
-    if not m or "Inparticular" not in tex:
-        return LineResult(False, how="the formula read from the transcription", detail={"unread": tex[:60]})
-    names = m.groups()
-    ok = all(sin_power_derivative(*(env[v] for v in names[:1]), mu, env[names[1]])
-             == factorial(env[names[2]]) * mu ** env[names[3]]
-             for j in range(1, 16) for env in [{"j": j}] if all(v in env for v in names)
-             for mu in (fmpq(1, 2), fmpq(1), fmpq(3), fmpq(7, 5)))
-    ok = ok and all(v == "j" for v in names)
+    tex = _transcribed(["sec1_3-sin-leading"])["sec1_3-sin-leading"]
+    words, segs = lm.prose(tex)  # the words; the formula, the one $..$ segment, read by the one reader
+    j_, mu_ = sympy.Symbol("j"), sympy.Symbol("mu")
+    try:
+        rel = lm.parse_relation(segs[0]) if len(segs) == 1 and "(In particular, $$)" in words else None
+        lhs, rhs = rel.parts if rel is not None and rel.ops == ["="] and not rel.conditions else (None, None)
+        if not (isinstance(lhs, AppliedUndef) and lhs.func.__name__ == "S_sup" and len(lhs.args) == 4
+                and lhs.args[1] == mu_ and lhs.args[3] == sympy.Tuple(0)
+                and (lhs.free_symbols | rhs.free_symbols) <= {j_, mu_}):
+            raise LatexMathError(f"not S_{{j,mu}}^{{p}}(0) = f(j, mu): {rel.parts if rel else segs}")
+    except LatexMathError as exc:
+        return LineResult(False, how="the formula read from the transcription", detail={"unread": str(exc)[:80]})
+    names = [str(lhs.args[0]), str(lhs.args[2]), str(rhs)]
+
+    def printed_value(j: int, mu: fmpq):
+        v = rhs.subs({j_: j, mu_: sympy.Rational(int(mu.p), int(mu.q))})
+        return fmpq(int(v.p), int(v.q)) if v.is_Rational else None
+
+    try:
+        ok = all(sin_power_derivative(bound(lhs.args[0], j=j), mu, bound(lhs.args[2], j=j)) == printed_value(j, mu)
+                 for j in range(1, 16) for mu in (fmpq(1, 2), fmpq(1), fmpq(3), fmpq(7, 5)))
+    except ValueError:  # an index that is not a non-negative integer at j
+        ok = False
     return LineResult(ok, how="the printed formula read from the transcription against exact Taylor coefficients, "
                       "j = 1..15", kind="exhaustive", detail={"ok": ok, "read": list(names)})
 
@@ -2234,7 +2256,7 @@ def ln2_set(override=None) -> LineResult:
                       override=override)
 
 
-def bound_n(expr: str, n: int) -> int:
+def bound_n(expr: str | sympy.Expr, n: int) -> int:
 
     return bound(expr, n=n)
 
@@ -2247,23 +2269,39 @@ def _names_set(n: int, idx) -> set[str]:
 def ln1_set(override=None) -> LineResult:
     """L_{n-1} = rho_{2n,n,n} R_{2n,n,n}, and R_{2n,n,n} is not the zero function (so rho_{2n,n,n} = 0)."""
     res = _read_sets("sec1_3-Ln1-set", lambda n, r: alive_after(n, n - 1, 2), override=override)
-    head = re.search(r"0=L_\{([^{}]+)\}\\left\( u,v,w\\right\) =", _transcribed(["sec1_3-Ln1"], override)["sec1_3-Ln1"])
+    try:  # '0=L_{n-1}\left( u,v,w\right) =..': the order of L read by the one reader
+        ln1 = lm.parse_relation(_transcribed(["sec1_3-Ln1"], override)["sec1_3-Ln1"])
+        lcall = ln1.parts[1] if len(ln1.parts) > 2 else None
+        head = (lcall.args[0] if ln1.ops[:2] == ["=", "="] and ln1.parts[0] == 0 and isinstance(lcall, AppliedUndef)
+                and lcall.func.__name__ == "L" and len(lcall.args) == 2
+                and lcall.args[1] == sympy.Tuple(*sympy.symbols("u v w")) else None)
+    except LatexMathError:
+        head = None
     # the equality is L_r for the last order r of the recomputed elimination
-    res.holds_as_printed &= bool(head) and all(
-        bound_n(head.group(1), n) == max(r for r, _p, _b, _g in elimination(n)) for n in N_PROOF)
+    res.holds_as_printed &= head is not None and all(
+        bound_n(head, n) == max(r for r, _p, _b, _g in elimination(n)) for n in N_PROOF)
     pt = _domain_points(ALPHA_TS[0], 1)[0]
     nonzero = all(pt[0][0] ** n * pt[1][0] ** n * pt[2][0] ** n != 0 for n in N_PROOF)
-    # "equality (..n_minus_1) holds if and only if \\[ \\rho_{2n,n,n}=0, \\]" (read): the one constant of L_{n-1},
-    # and the value 0 that R_{2n,n,n} != 0 forces
-    tex = re.sub(r"\s+", " ", _transcribed(["sec1_3-rho-centre-zero"], override)["sec1_3-rho-centre-zero"])
-    m = re.fullmatch(r"Moreover, equality \(\\ref\{induction_hypothesis_for_linear_independence_n_minus_1\}\) holds "
-                     r"if and only if% ?\\\[ \\rho_\{2n,(\w+),(\w+)\}=(\d+), \\\]", tex.strip())
-    names_ok = bool(m) and all(
-        {f"R_{{{2 * n},{bound_n(m.group(1), n)},{bound_n(m.group(2), n)}}}"} == _names_set(n, alive_after(n, n - 1, 2))
-        for n in N_PROOF)
-    res.holds_as_printed &= nonzero and names_ok and bool(m) and m.group(3) == "0"
+    # "equality (..n_minus_1) holds if and only if \\[ \\rho_{2n,n,n}=0, \\]" (the words, then the display read by
+    # the one reader): the one constant of L_{n-1}, and the value 0 that R_{2n,n,n} != 0 forces
+    tex = _transcribed(["sec1_3-rho-centre-zero"], override)["sec1_3-rho-centre-zero"]
+    words = " ".join(tex.split("\\[", 1)[0].replace("%", " ").split())
+    try:
+        rel = lm.parse_relation(tex) if "\\[" in tex and tex.rstrip().endswith("\\]") else None
+        rho = rel.parts[0] if rel is not None and rel.ops == ["="] and not rel.conditions else None
+        if not (isinstance(rho, AppliedUndef) and rho.func.__name__ == "rho" and len(rho.args) == 3
+                and rho.args[0] == 2 * sympy.Symbol("n") and rel.parts[1].is_Integer):
+            rho = None
+    except LatexMathError:
+        rho = None
+    read = rho is not None and words == ("Moreover, equality (\\ref{induction_hypothesis_for_linear_independence_"
+                                         "n_minus_1}) holds if and only if")
+    names_ok = read and all(
+        {f"R_{{{2 * n},{bound_n(rho.args[1], n)},{bound_n(rho.args[2], n)}}}"}
+        == _names_set(n, alive_after(n, n - 1, 2)) for n in N_PROOF)
+    res.holds_as_printed &= nonzero and names_ok and read and rel.parts[1] == 0
     res.detail["centre_nonzero_at_a_point"] = nonzero
-    res.detail["rho_centre_zero_read"] = bool(m) and names_ok
+    res.detail["rho_centre_zero_read"] = read and names_ok
     return res
 
 

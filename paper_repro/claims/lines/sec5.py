@@ -91,13 +91,6 @@ def _in_omega(rel) -> tuple[str, str, str]:
     return tuple(str(x) for x in parts[0])
 
 
-def alpha_labels(tex: str) -> list[str]:
-    """The superscripts of the named objects (``X_{..}^{..}``, ``\\overline{X}_{..}^{..}``) and of ``\\Omega`` in
-    ``tex``: the notation labels each with the angle alpha."""
-    named = re.findall(r"(?<![\\A-Za-z])(?:[A-Za-z]|\\overline\{[A-Z]\})_\{[^{}]*\}%?\s*\^\{([^{}]*)\}", tex)
-    return [x.strip() for x in named + re.findall(r"\\Omega\s*\^\{([^{}]*)\}", tex)]
-
-
 def read_domain(tex: str) -> tuple[str, tuple[str, str, str]]:
     """``for all $\\left( u,v,w\\right) \\in\\Omega^{\\alpha}$``: the quantifier words (prose) and the variables
     (the one ``$..$`` segment, read by :func:`~paper_repro.printed.latex_math.parse_relation`)."""
@@ -158,9 +151,9 @@ def check_partition_sum(text: str | None = None) -> LineResult:
         said = re.search(r"contains the constant function \$(\d+)\$.*?there exist (\w+) coefficients", prose, re.S)
         if not said or sympy.Integer(said.group(1)) != const or said.group(2) != "unique":
             raise LatexMathError("the constant function or 'unique' of the sentence not read")
-        labels_text = " ".join(verbatim(x) for x in ("sec4_5-L-sum", "sec4_5-L-domain")) if text is None else text
-        if any(x != "\\alpha" for x in alpha_labels(labels_text)):
-            raise LatexMathError(f"superscripts {alpha_labels(labels_text)}, the notation labels each with alpha")
+        for labels_text in ([verbatim(x) for x in ("sec4_5-L-sum", "sec4_5-L-domain")] if text is None else [text]):
+            if P.foreign_tags(labels_text):
+                raise LatexMathError(f"superscripts {P.foreign_tags(labels_text)}, the notation labels each with alpha")
     except (LatexMathError, ValueError, TypeError) as exc:
         return LineResult(False, how=how, kind="exact-evidence", detail={"unread": str(exc)[:200]})
     ok, rows = True, {}
@@ -399,8 +392,12 @@ def check_unknowns(override: dict[str, str] | None = None) -> LineResult:
                                for i in range(P.bound(ilo, n=n, j=j), P.bound(ihi, n=n, j=j) + 1)))
         elements = []
         for tex in _texts({"sec4_5-unknowns", "sec4_5-closed-forms-index"}, override).values():
-            m = re.search(r"\\left\\\{\s*(.*?)\\right\\\}", tex)
-            elements.append(P.value(m.group(1)) if m else None)
+            try:  # the member of the one bounded set of the line's $..$ segments
+                fams = [p for seg in LM.inline_math(tex) for p in LM.parse_relation(seg).parts
+                        if isinstance(p, AppliedUndef) and p.func == LM.Family]
+            except LatexMathError:
+                fams = []
+            elements.append(P.constants_as_factors(fams[0].args[0]) if len(fams) == 1 else None)
         if None in elements or elements[0] != elements[1]:
             return LineResult(False, how="the unknowns read from the transcriptions, n <= 10", kind="exhaustive",
                               detail={"unread": f"the members {elements}"})
@@ -410,9 +407,9 @@ def check_unknowns(override: dict[str, str] | None = None) -> LineResult:
     texts = _texts({"sec4_5-unknowns", "sec4_5-closed-forms-index"}, override)
     try:
         orders_ok, orders = check_orders(texts["sec4_5-closed-forms-index"])
-        labels = [x for tex in texts.values() for x in alpha_labels(tex)]
-        if any(x != "\\alpha" for x in labels):
-            raise LatexMathError(f"superscripts {labels}")
+        labels = [x for tex in texts.values() for x in P.foreign_tags(tex)]
+        if labels:
+            raise LatexMathError(f"superscripts other than alpha: {labels}")
     except (LatexMathError, ValueError, TypeError) as exc:
         return LineResult(False, how="the unknowns and orders read from the transcriptions, n <= 10",
                           kind="exhaustive", detail={"unread": str(exc)[:200]})
@@ -586,10 +583,15 @@ def read_parametrization(tex: str) -> dict:
     and the point y."""
     segs = tex.split("$")[1::2]
     out: dict = {}
+    xy = sympy.Tuple(*sympy.symbols("x y"))
     for seg in segs:
-        m = re.fullmatch(r"\s*([uvw])\\left\(\s*x\s*,\s*y\s*\\right\)\s*=(.*)", seg, re.S)
-        if m:
-            out[m.group(1)] = P.value(m.group(2))
+        rel = LM.parse_relation(seg)
+        head = rel.parts[0] if rel.parts else None
+        if (isinstance(head, AppliedUndef) and head.func.__name__ in ("u", "v", "w") and head.args == (xy,)
+                and rel.ops == ["="] and len(rel.parts) == 2 and not rel.conditions and rel.lead is None):
+            if head.func.__name__ in out:
+                raise LatexMathError(f"{head.func.__name__}(x, y) printed twice")
+            out[head.func.__name__] = P.constants_as_factors(rel.parts[1])
         elif "\\ldots" in seg:
             out["orders"] = P.listed_range(seg, "r")
         elif seg.strip().startswith("y"):
@@ -993,10 +995,14 @@ def check_level_1() -> LineResult:
         if bound_rel.ops != [">="] or bound_rel.parts[0] != n_ or not bound_rel.parts[1].is_number:
             raise LatexMathError(f"order bound {dollar[0]!r} not read")
         n_lo = int(bound_rel.parts[1])
-        m = re.search(r"r_\{2n,2n-i,1\}%?\s*\^\{\\alpha\}\s*\\right\\\}\s*_\{i=([^{}]+)\}\s*\^\{([^{}]+)\}", rng)
-        if not m:
-            raise LatexMathError("the set {r_{2n,2n-i,1}}_{i=..}^{..} not read")
-        i_lo, i_hi = P.value(m.group(1)), P.value(m.group(2))
+        fams = [p for seg in dollar[1:] for p in LM.parse_relation(seg).parts
+                if isinstance(p, AppliedUndef) and p.func == LM.Family]
+        r_ = sympy.Function("r")
+        if (len(fams) != 1 or fams[0].args[0] != r_(2 * n_, 2 * n_ - i_, 1) or fams[0].args[1] != sympy.Tuple()
+                or len(fams[0].args[2]) != 1 or fams[0].args[2][0][0] != i_
+                or any(P.untagged_names(seg) for seg in dollar[1:])):
+            raise LatexMathError(f"the set {{r_{{2n,2n-i,1}}}}_{{i=..}}^{{..}} not read: {fams}")
+        i_lo, i_hi = fams[0].args[2][0][1:]
         rows = [_cases(verbatim("sec4_5-level1-i1")), _cases(verbatim("sec4_5-level1-i"))]
 
         def formula(n: int, i: int) -> sympy.Expr:
@@ -1101,8 +1107,8 @@ def check_blending_def(override: dict[str, str] | None = None) -> LineResult:
     texts["sec4_5-blending-centre"] = verbatim("sec4_5-blending-centre")
     try:  # the notation (superscripts alpha), the domain of each set, and the centre's chain of equalities
         for key in ("sec4_5-blending-set", "sec4_5-blending-centre-set", "sec4_5-blending-centre"):
-            if any(x != "\\alpha" for x in alpha_labels(texts[key])):
-                raise LatexMathError(f"{key}: superscripts {alpha_labels(texts[key])}")
+            if P.foreign_tags(texts[key]):
+                raise LatexMathError(f"{key}: superscripts other than alpha {P.foreign_tags(texts[key])}")
         sets = {key: _the_set(texts[key]) for key in ("sec4_5-blending-set", "sec4_5-blending-centre-set")}
         for key, fam in sets.items():
             if len(fam.args[1]) != 1 or _in_omega(fam.args[1][0]) != ("u", "v", "w"):

@@ -488,30 +488,37 @@ VARS = ("u", "v", "w")
 
 def net_from_transcription(n: int, tex: str | None = None) -> list[str]:
     """The control points of def:surface_patch read from the transcription of its net (line sec6-control-net-set;
-    that printed set lacks the centre, erratum sec6-control-net-set, which no boundary curve uses): each set
-    ``\\left\\{ \\mathbf{x}_{2n,2n-i,j}\\right\\}_{j=..,i=..}^{..,..}`` between the ``\\cup`` with its bounds read by
-    :func:`paper_repro.printed.latex_math.index_set`."""
-    from paper_repro.printed.latex_math import index_set
+    that printed set lacks the centre, erratum sec6-control-net-set, which no boundary curve uses): the row is the
+    union ``\\left\\{ \\mathbf{x}_{..}\\right\\}_{j=..,i=..}^{..,..}\\cup..`` that the next row continues after
+    ``\\subset``, read by :func:`paper_repro.printed.latex_math.parse` (``cup`` of ``Family``), each set's members
+    at n by :func:`paper_repro.printed.parsed.members`.  A row that is not such a union (a blanked line) names no
+    point: ``[]``."""
+    from paper_repro.printed import latex_math as LM
+    from paper_repro.printed.parsed import members, point_label
 
-    tex = _LINE["sec6-control-net-set"].verbatim if tex is None else tex
-    N = sympy.Symbol("n")
+    tex = (_LINE["sec6-control-net-set"].verbatim if tex is None else tex).rstrip()
+    if not tex.endswith("\\subset"):
+        return []
+    try:
+        union = LM.parse(tex[:-len("\\subset")])
+    except LM.LatexMathError:
+        return []
+    sets, todo = [], [union]
+    while todo:  # the union's sets, in the printed order
+        e = todo.pop(0)
+        if isinstance(e, sympy.Function) and e.func.__name__ == "cup":
+            todo[:0] = list(e.args)
+        else:
+            sets.append(e)
     out = []
-    for part in tex.split("\\cup"):
-        m = re.search(r"\\left\\\{\s*\\mathbf\{([rgb])\}_\{2n,2n-i,j\}\\right\\\}", part)
-        if not m:
-            continue
-        (jv, jlo, jhi), (iv, ilo, ihi) = index_set(part)
-        if (str(jv), str(iv)) != ("j", "i"):
-            continue
-
-        def val(e, **env):
-            x = sympy.sympify(e).subs({N: n, **{sympy.Symbol(k): v for k, v in env.items()}})
-            if not x.is_Integer:
-                raise ValueError(f"bound {e} is not an integer at n = {n}")
-            return int(x)
-
-        out += [f"{m.group(1)}_{{{2 * n},{2 * n - i},{j}}}" for j in range(val(jlo), val(jhi) + 1)
-                for i in range(val(ilo, j=j), val(ihi, j=j) + 1)]
+    for fam in sets:
+        if not (isinstance(fam, sympy.Function) and fam.func == LM.Family
+                and fam.args[0].func.__name__ in ("r_vec", "g_vec", "b_vec")):
+            return []
+        try:
+            out += [point_label(p) for p in members(fam, n=n)]
+        except (ValueError, TypeError):
+            return []
     return out
 
 
@@ -670,14 +677,20 @@ def corners() -> LineResult:
             ok &= len(nz) == 1 and row[nz[0]] == 1
             found[f"n={n} {name}"] = united_system(n)[nz[0]].control_point if nz else "none"
     tex = _LINE["sec6-corners"].verbatim
-    read = re.findall(r"\\mathbf\{([rgb])\}%?\s*_\{2n,2n,0\}", tex)  # the three corners as printed
+    from paper_repro.printed import latex_math as LM
+    from paper_repro.printed.parsed import members, point_label
+
     words = has_words(tex, "interpolates the three corners", "of its control net")
-    printed = {n: {f"{c}_{{{2 * n},{2 * n},0}}" for c in read} for n in (1, 2, 3)}
-    ok &= words and len(read) == 3 and len(tex.split("$")) == 7  # three labels, nothing else in math mode
+    try:  # the three corners as printed: each $..$ segment one control point (the one reader)
+        read = [LM.parse(seg) for seg in LM.inline_math(tex)]
+        printed = {n: {point_label(members(p, n=n)[0]) for p in read} for n in (1, 2, 3)}
+    except (LM.LatexMathError, ValueError, TypeError, AttributeError):
+        read, printed = [], {n: set() for n in (1, 2, 3)}
+    ok &= words and len(read) == 3  # three labels, nothing else in math mode
     ok &= all({v for k, v in found.items() if k.startswith(f"n={n} ")} == printed[n] for n in (1, 2, 3))
     return LineResult(ok, how="the corner labels read from the transcription vs the exact normalized basis at the "
                       "corners (a unit vector there), n = 1, 2, 3", kind="exact-evidence",
-                      detail={"corner_points": found, "printed": read})
+                      detail={"corner_points": found, "printed": [p.func.__name__[0] for p in read]})
 
 
 def a_forms_rank(n: int, alpha: RationalAngle) -> int:
@@ -770,12 +783,21 @@ def bezier_limit() -> LineResult:
     from paper_repro.printed.parsed import expression
 
     tex = _LINE["sec6-bezier-limit"].verbatim
-    lim = re.search(r"when \$\\alpha \\to (\d+)\$ the boundary\s+curves degenerate to B\\'ezier curves of degree "
-                    r"\$([^$]+)\$", tex)
-    if not lim or "Proposition \\ref{Bernstein}" not in tex:
+    from paper_repro.printed import latex_math as LM
+
+    words, segs = LM.prose(tex)  # the words, then the limit alpha -> 0 and the degree read by the one reader
+    try:
+        if ("when $$ the boundary curves degenerate to B\\'ezier curves of degree $$" not in words
+                or "Proposition \\ref{Bernstein}" not in tex or len(segs) != 2):
+            raise LM.LatexMathError("the words of the limit not read")
+        lim = LM.parse_relation(segs[0])
+        if (lim.ops != ["->"] or lim.parts[0] != sympy.Symbol("alpha") or not lim.parts[1].is_Integer
+                or lim.conditions or lim.lead):
+            raise LM.LatexMathError(f"not alpha -> an integer: {lim.parts} {lim.ops}")
+        limit, degree = int(lim.parts[1]), expression(segs[1].replace("n", "u"))
+    except LM.LatexMathError:
         return LineResult(False, how="the limit and the degree read from the transcription",
                           detail={"unread": tex[:60]})
-    limit, degree = int(lim.group(1)), expression(lim.group(2).replace("n", "u"))
     from paper_repro.printed.parsed import U
 
     # as alpha -> 0 cos(alpha/2) -> 1: the limit of A_{2n,i} is P_i(1) (1-s)^{2n-i} s^i, the Bernstein polynomial of
@@ -1220,11 +1242,18 @@ def torus_joined() -> LineResult:
     (w = 0 edges, reversed) and the edge U = alpha between the upper triangle of one square and the lower triangle of
     the next (u = 0 edges, reversed)."""
     tex = _LINE["sec6-torus-joined"].verbatim
-    m = re.search(r"illustrates several triangular trigonometric\s+patches of order \$(\d+)\$ that are smoothly "
-                  r"joined in order to form a part of a ring torus\.$", tex)
-    if not m or "Fig.\\ \\ref{fig:torus}" not in tex:
+    from paper_repro.printed import latex_math as LM
+
+    words, segs = LM.prose(tex)  # the words; the order, the one $..$ segment, read by the one reader
+    try:
+        order = LM.parse(segs[0]) if len(segs) == 1 else None
+    except LM.LatexMathError:
+        order = None
+    if (words != "Fig.\\ \\ref{fig:torus} illustrates several triangular trigonometric patches of order $$ that are "
+            "smoothly joined in order to form a part of a ring torus." or order is None or not order.is_Integer
+            or order < 1):
         return LineResult(False, how="the line read from the transcription", detail={"unread": tex[:60]})
-    n = int(m.group(1))
+    n = int(order)
     t = TS[1]
     alpha = rational_alpha(t)
     rho, mu = fmpq(7, 2), fmpq(5, 3)
@@ -1518,11 +1547,20 @@ def q_normalized_independent() -> LineResult:
     the system is dependent (exact rank); with positive weights (the correction) it is normalized and independent
     (exact, n = 1, 2, 3)."""
     tex = _LINE["sec6-q-normalized-independent"].verbatim
-    m = re.search(r"i\.e\., \$\\overline\{Q\}_\{2n\}\^\{\\alpha\}\$ is also\s+((?:not )?normalized) and "
-                  r"linearly ((?:in)?dependent)\.$", tex)
-    if not m or "inherits advantageous properties of $\\overline{T}%\n_{2n}^{\\alpha}$" not in tex or not has_words(
-            tex, "Quotient functions in (\\ref{rational_patch}) determine the constrained trivariate rational "
-            "trigonometric function system $\\overline{Q}_{2n}^{\\alpha}$ of order $n$ that"):
+    from paper_repro.printed import latex_math as LM
+
+    words, segs = LM.prose(tex)  # the words carry the properties; the four $..$ segments read by the one reader
+    m = re.fullmatch(r"Quotient functions in \(\\ref\{rational_patch\}\) determine the constrained trivariate "
+                     r"rational trigonometric function system \$\$ of order \$\$ that inherits advantageous "
+                     r"properties of \$\$, i\.e\., \$\$ is also ((?:not )?normalized) and linearly "
+                     r"((?:in)?dependent)\.", words)
+    try:
+        q, order, t, q_again = [LM.parse(seg) for seg in segs] if len(segs) == 4 else [None] * 4
+        named = (q == q_again == sympy.Function("Qbar")(2 * order) and t == sympy.Function("Tbar")(2 * order)
+                 and order == sympy.Symbol("n") and not any(LM.untagged(segs[k]) for k in (0, 2, 3)))
+    except (LM.LatexMathError, TypeError):
+        named = False
+    if not m or not named:
         return LineResult(False, how="the properties read from the transcription", detail={"unread": tex[-60:]})
     want = (m.group(1) == "normalized", m.group(2) == "independent")
     printed, corrected, ranks = True, True, {}
@@ -1684,15 +1722,24 @@ def dupin_count_holds(tex: str | None) -> tuple[bool, dict]:
     phase intervals read from sec6-dupin-phases) over the area of one triangle (the parameter set of eq. Dupin_in_3d,
     read, at the alpha of the caption of Fig. dupin_03, read); and exact order-n fits of both triangles of phase
     squares."""
-    from paper_repro.printed.parsed import ALPHA, U, V, chain
+    from paper_repro.printed.parsed import ALPHA, U, V
 
     m = re.match(r"^by means of ([\w-]+) smoothly joined (\w+) order rational triangular trigonometric patches,$",
                  tex or "")
     if not m or m.group(1) not in NUMBER_WORDS or m.group(2) not in ORDINALS:
         return False, {"unread": (tex or "")[:60]}
     count, n = NUMBER_WORDS[m.group(1)], ORDINALS[m.group(2)]
-    settings = dict(re.findall(r"\$\\?(\w+)\s*=\s*([^$]*)\$", _LINE["sec6-fig-dupin-settings"].verbatim))
-    (_, alpha_value), _ = chain("u=" + settings["alpha"]) if "alpha" in settings else ((None, None), None)
+    from paper_repro.printed import latex_math as LM
+
+    settings = {}  # the caption's settings: each $..$ segment 'name = value', read by the one reader
+    for seg in LM.inline_math(_LINE["sec6-fig-dupin-settings"].verbatim):
+        try:
+            rel = LM.parse_relation(seg)
+        except LM.LatexMathError:
+            continue
+        if rel.ops == ["="] and len(rel.parts) == 2 and isinstance(rel.parts[0], sympy.Symbol):
+            settings[str(rel.parts[0])] = rel.parts[1]
+    alpha_value = settings.get("alpha")
     dom = read_dupin()
     (lo_u, hi_u), (lo_v, hi_v) = dom["u"], dom["v"]
     area = sympy.integrate(sympy.integrate(1, (V, lo_v, hi_v)), (U, lo_u, hi_u)).subs(ALPHA, alpha_value)

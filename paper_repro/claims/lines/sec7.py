@@ -701,15 +701,21 @@ def same_patch_orders(tex: str) -> dict[str, int]:
     """Orders named by the line: the basis ``\\overline{T}_{2m}^{\\alpha}``, the '<ordinal> order blending
     functions', the '(i.e., <ordinal> order)' representation ``\\mathbf{s}_{k}^{\\alpha}`` and the original
     ``\\mathbf{s}_{l}^{\\alpha}``; every superscript must be ``\\alpha``."""
-    t = re.sub(r"\s+", " ", tex)
-    m = re.fullmatch(r"into the basis \$\\overline\{T\}_\{(\d+)\}\^\{\\alpha\}\$ and then collecting the vector "
-                     r"coefficients of ([a-z]+) order blending functions, one obtains the order elevated \(i\.e\., "
-                     r"([a-z]+) order\) representation \$\\mathbf\{s\}_\{(\d+)\}\^\{\\alpha\}\$ of the original "
-                     r"patch \$\\mathbf\{s\}_\{(\d+)\}\^\{\\alpha\}\$", t)
-    if not m or m.group(2) not in ORDINALS or m.group(3) not in ORDINALS:
+    words, segs = LM.prose(tex)  # the words carry the ordinals; the three $..$ segments read by the one reader
+    m = re.fullmatch(r"into the basis \$\$ and then collecting the vector coefficients of ([a-z]+) order blending "
+                     r"functions, one obtains the order elevated \(i\.e\., ([a-z]+) order\) representation \$\$ of "
+                     r"the original patch \$\$", words)
+    if not m or m.group(1) not in ORDINALS or m.group(2) not in ORDINALS or len(segs) != 3:
         raise ValueError("unread line (orders, superscripts)")
-    return {"basis": int(m.group(1)) // 2 if int(m.group(1)) % 2 == 0 else -1, "blending": ORDINALS[m.group(2)],
-            "elevated": ORDINALS[m.group(3)], "s_elevated": int(m.group(4)), "s_original": int(m.group(5))}
+    basis, elevated, original = (LM.parse(seg) for seg in segs)  # every superscript must be the tag alpha:
+    if any(LM.untagged(seg) or P.foreign_tags(seg) for seg in segs):  # none missing, none other
+        raise ValueError("unread line (orders, superscripts)")
+    if not (basis.func.__name__ == "Tbar" and elevated.func.__name__ == original.func.__name__ == "s_vec"
+            and all(len(x.args) == 1 and x.args[0].is_Integer for x in (basis, elevated, original))):
+        raise ValueError(f"unread line (orders, superscripts): {basis}, {elevated}, {original}")
+    k = int(basis.args[0])
+    return {"basis": k // 2 if k % 2 == 0 else -1, "blending": ORDINALS[m.group(1)],
+            "elevated": ORDINALS[m.group(2)], "s_elevated": int(elevated.args[0]), "s_original": int(original.args[0])}
 
 
 @line_check("sec7-elev-same-patch")
@@ -1270,12 +1276,14 @@ def _rotate(t: tuple[int, int, int]) -> tuple[int, int, int]:
 
 @line_check("sec7-conversion-symmetry")
 def check_conversion_symmetry() -> LineResult:
-    t = re.sub(r"\s+", " ", VERBATIM["sec7-conversion-symmetry"])
-    m = re.fullmatch(r"Due to symmetry, we only list for \$n=(\d+)\$ and \$(\d+)\$ the position of B\\'ezier "
-                     r"points", t)
-    if not m:
+    words, segs = LM.prose(VERBATIM["sec7-conversion-symmetry"])  # the words, then 'n = 2' and '3' read
+    if words != "Due to symmetry, we only list for $$ and $$ the position of B\\'ezier points" or len(segs) != 2:
         raise ValueError("unread line ('Due to symmetry', the orders)")
-    named = [int(m.group(1)), int(m.group(2))]
+    first, second = LM.parse_relation(segs[0]), LM.parse(segs[1])
+    if (first.ops != ["="] or first.parts[0] != sympy.Symbol("n") or first.conditions or not first.parts[1].is_Integer
+            or not second.is_Integer):
+        raise ValueError("unread line ('Due to symmetry', the orders)")
+    named = [int(first.parts[1]), int(second)]
     printed = printed_conversions()
     detail = {"orders_named": named, "orders_listed": sorted(printed)}
     ok = named == sorted(printed)
@@ -1356,23 +1364,30 @@ def check_dimension_and_span(verbatim: str | None = None) -> LineResult:
     ('of order $n\\in\\mathbb{N}$'): the ranks of V_k and of [T_{2n} V_k] equal delta_n (same span)."""
     from paper_repro.printed.parsed import bound
 
-    dim = re.sub(r"\s+", " ", VERBATIM["sec7-s8-dimension"] if verbatim is None else verbatim)
-    m = re.fullmatch(r"the normalized linearly independent constrained trivariate function system "
-                     r"\(\\ref\{normalized_united_system\}\) of dimension \$\\delta_\{n\}=([^$]+)\$", dim)
-    if not m:
+    words, segs = LM.prose(VERBATIM["sec7-s8-dimension"] if verbatim is None else verbatim)
+    try:  # the words, then 'delta_n = ..' read by the one reader
+        if words != ("the normalized linearly independent constrained trivariate function system "
+                     "(\\ref{normalized_united_system}) of dimension $$") or len(segs) != 1:
+            raise LM.LatexMathError("no delta_n")
+        rel = LM.parse_relation(segs[0])
+        if rel.ops != ["="] or rel.parts[0] != sympy.Function("delta")(sympy.Symbol("n")) or rel.conditions:
+            raise LM.LatexMathError("no delta_n")
+    except LM.LatexMathError:
         return LineResult(False, how="delta_n read from the transcription", detail={"unread": "no delta_n"})
-    span = re.sub(r"\s+", " ", VERBATIM["sec7-s8-spans-fourier"])
-    ms = re.fullmatch(r"that spans the same vector space of functions as the constrained trivariate extension of the "
-                      r"canonical basis of truncated Fourier series of order \$([^$]+)\\in\\mathbb\{N\}\$\.", span)
-    if not ms:
+    expr = rel.parts[1]
+    span_words, span_segs = LM.prose(VERBATIM["sec7-s8-spans-fourier"])  # 'of order $n\in\mathbb{N}$.'
+    order = LM.parse_relation(span_segs[0]) if len(span_segs) == 1 else None
+    if (span_words != "that spans the same vector space of functions as the constrained trivariate extension of the "
+            "canonical basis of truncated Fourier series of order $$." or order is None or order.ops != ["in"]
+            or order.parts[1] != sympy.Symbol("N_bb") or order.conditions):
         raise ValueError("unread order of the Fourier basis")
-    expr = m.group(1).replace("\\left(", "(").replace("\\right)", ")")
-    counts = {str(n): (len(united_system(n)), bound(expr, n=n), len(v_labels(bound(ms.group(1), n=n))))
+    k_order = order.parts[0]
+    counts = {str(n): (len(united_system(n)), bound(expr, n=n), len(v_labels(bound(k_order, n=n))))
               for n in range(1, 13)}
     ctx = ModpContext(p=2**31 - 1)
     ranks = {}
     for n in (1, 2, 3):
-        k = bound(ms.group(1), n=n)
+        k = bound(k_order, n=n)
         alpha = rational_alpha(fmpq(2, 5))
         pts = sample_rational_points(alpha, delta(max(n, k)) + 6, seed=40 + n)
         t = evaluate(n, alpha, pts, ctx)
