@@ -477,12 +477,34 @@ def order_one_restriction(part: str, kp: float, sg: float, *, absolute: bool = F
 @cache
 def _level_terms(k: int) -> tuple[np.ndarray, ...]:
     """The seven product forms of order k - 1 (:func:`product_terms_fast`) concatenated: ``(rows, cols, a, b, coef,
-    h)``, sorted by (rows, cols) (stable), with the start of each (row, col) run."""
-    forms = [_product_terms_unsorted(k - 1, h) for h in range(7)]
-    cat = [np.concatenate([f[i] for f in forms]) for i in range(5)]
-    hidx = np.concatenate([np.full(len(f[0]), h) for h, f in enumerate(forms)])
-    order = np.argsort(cat[0] * delta_unchecked(k - 1) + cat[1], kind="stable")  # by (row, column), then h
-    out = tuple(arr[order] for arr in cat) + (hidx[order],)
+    h)``, sorted by (rows, cols, h, a, b).  Built level by level (Lemma 8 of docs/subdivision_for_all_n.md,
+    section 11): the terms of level k - 1 with rows and columns embedded by the centre (:func:`centre_embedding`,
+    increasing, so the order is kept) merged with the terms of the 6(k - 1) new columns (:func:`_outer_columns`;
+    their (row, col) are not among the embedded ones) -- no sort of the whole level.  The same arrays as the seven
+    :func:`_product_terms_unsorted` concatenated and sorted stably by (rows, cols) (tested equal)."""
+    new = _outer_columns(k - 1)
+    cat = [np.concatenate([f[i] for f in new]) for i in range(5)]
+    hidx = np.concatenate([np.full(len(f[0]), h, dtype=np.int64) for h, f in enumerate(new)])
+    width = delta_unchecked(k - 1)
+    key = cat[0] * width + cat[1]
+    order = np.argsort(key, kind="stable")  # by (row, column), then h, then (a, b) (each form is sorted)
+    fresh = [arr[order] for arr in cat] + [hidx[order]]
+    if k == 2:
+        out = tuple(fresh)
+    else:
+        prev = _level_terms(k - 1)
+        old = [centre_embedding(k)[prev[0]], centre_embedding(k - 1)[prev[1]]] + list(prev[2:])
+        total = len(old[0]) + len(fresh[0])
+        at = np.searchsorted(old[0] * width + old[1], key[order]) + np.arange(len(order))
+        keep = np.ones(total, dtype=bool)
+        keep[at] = False
+        out = []
+        for o, f in zip(old, fresh):
+            arr = np.empty(total, dtype=np.result_type(o, f))
+            arr[keep] = o
+            arr[at] = f
+            out.append(arr)
+        out = tuple(out)
     for arr in out:
         arr.setflags(write=False)
     return out
@@ -554,7 +576,7 @@ def restriction_blocks(n: int, kp: float, sg: float, first: list, *, absolute: b
             for g in range(7):
                 lo, hi = bounds[g], bounds[g + 1]
                 if hi > lo:
-                    out[:, lo:hi] = _combined(k, r1[f][:, g], vals) @ blocks[f][:, pos[lo:hi]]
+                    out[:, lo:hi] = _combined(k, r1[f][:, g], vals) @ np.take(blocks[f], pos[lo:hi], axis=1)
             blocks[f] = out
     return [blocks.get("u"), blocks.get("middle")]
 
