@@ -208,9 +208,12 @@ def _padded_rule_a(n: int) -> tuple[np.ndarray, ...]:
 
 
 # --- step 2: the products with the members of T_2, vectorised ------------------------------------------------------
-def _apply_cotangent_terms(big: int, var: np.ndarray, terms: tuple[np.ndarray, ...], steps: np.ndarray
-                           ) -> tuple[np.ndarray, ...]:
-    """Apply ``L_var`` ``steps[t]`` times to each term ``(col, target, a, b, coef)`` (``var`` per term)."""
+def _apply_cotangent_terms(big: int, var: np.ndarray, terms: tuple[np.ndarray, ...], steps: np.ndarray,
+                           ops: tuple | None = None) -> tuple[np.ndarray, ...]:
+    """Apply ``L_var`` ``steps[t]`` times to each term ``(col, target, a, b, coef)`` (``var`` per term); ``ops``:
+    the three operators to use (default ``cotangent_csc_fast(big, v)``, v = 0, 1, 2)."""
+    if ops is None:
+        ops = tuple(cotangent_csc_fast(big, v) for v in range(3))
     col, target, a, b, coef = terms
     done = [tuple(arr[steps == 0] for arr in terms)]
     col, target, a, b, coef, var, steps = (arr[steps > 0] for arr in (col, target, a, b, coef, var, steps))
@@ -220,7 +223,7 @@ def _apply_cotangent_terms(big: int, var: np.ndarray, terms: tuple[np.ndarray, .
             sel = var == v
             if not sel.any():
                 continue
-            pos, t, aa, bb, cc = _gather(cotangent_csc_fast(big, v), target[sel])
+            pos, t, aa, bb, cc = _gather(ops[v], target[sel])
             idx = np.flatnonzero(sel)[pos]
             parts_out.append((col[idx], t, a[idx] + aa, b[idx] + bb, coef[idx] * cc, var[idx], steps[idx] - 1))
         col, target, a, b, coef, var, steps = (np.concatenate([p[k] for p in parts_out]) for k in range(7))
@@ -275,11 +278,71 @@ def centre_embedding(n: int) -> np.ndarray:
     return out
 
 
-@cache
+#: The forms of the new columns by order n (:func:`_outer_columns`), filled for all orders at once.
+_OUTER: dict[int, list[tuple[np.ndarray, ...]]] = {}
+
+
 def _outer_columns(n: int) -> list[tuple[np.ndarray, ...]]:
-    """:func:`_product_columns` of the 6n members with j = 0 (not a multiple of the centre; n = 1: all seven)."""
-    f = np.arange(delta_unchecked(1)) if n == 1 else np.flatnonzero(member_parts_fast(n)[:, 3] == 0)
-    return _product_columns_all(n, f)
+    """:func:`_product_columns` of the 6n members with j = 0 (not a multiple of the centre; n = 1: all seven).  The
+    orders 1..n not yet built are built together (:func:`_outer_columns_batch`)."""
+    if n not in _OUTER:
+        _OUTER.update(_outer_columns_batch(tuple(m for m in range(1, n + 1) if m not in _OUTER)))
+    return _OUTER[n]
+
+
+def _outer_columns_batch(ns: tuple[int, ...]) -> dict[int, list[tuple[np.ndarray, ...]]]:
+    """:func:`_product_columns_all` of the new columns of each order in ``ns``, the orders side by side: the members
+    of T_{2(n+1)} and the columns ``h delta_n + f`` of order n shifted past those of the orders before, one operator
+    per variable (the operators of the orders block-diagonal, :func:`cotangent_csc_fast`), so the powers of the
+    cotangent rules run once for all orders (the terms of different orders never meet: the integer forms are those
+    of :func:`_product_columns_all` order by order, tested equal)."""
+    toff, coff, t_at, c_at = {}, {}, 0, 0
+    for n in ns:
+        toff[n], coff[n] = t_at, c_at
+        t_at += delta_unchecked(n + 1)
+        c_at += 7 * delta_unchecked(n)
+    direct, pending = [], []
+    for n in ns:
+        d = delta_unchecked(n)
+        f = np.arange(delta_unchecked(1)) if n == 1 else np.flatnonzero(member_parts_fast(n)[:, 3] == 0)
+        for h in range(7):
+            done, pend = _product_seed(n, h, f)
+            direct += [(t[0] + (h * d + coff[n]), t[1] + toff[n]) + t[2:] for t in done]
+            if pend is not None:
+                terms, var, steps = pend
+                pending.append(((terms[0] + (h * d + coff[n]), terms[1] + toff[n]) + terms[2:], var, steps))
+    if pending:
+        terms = tuple(np.concatenate([p[0][k] for p in pending]) for k in range(5))
+        var, steps = (np.concatenate([p[k] for p in pending]) for k in (1, 2))
+        ops = tuple(_block_operator(tuple(n + 1 for n in ns), v) for v in range(3))
+        direct.append(_apply_cotangent_terms(0, var, terms, steps, ops))
+    rows, cols, a, b, coef = _merged(tuple(np.concatenate([t[k] for t in direct]) for k in range(5)))
+    out = {}
+    bounds = np.searchsorted(rows, [toff[n] for n in ns] + [t_at])  # sorted by rows: the orders in turn
+    for i, n in enumerate(ns):
+        d = delta_unchecked(n)
+        lo, hi = bounds[i], bounds[i + 1]
+        r, c = rows[lo:hi] - toff[n], cols[lo:hi] - coff[n]
+        which = c // d
+        forms = []
+        for h in range(7):
+            sel = which == h
+            part = (r[sel], c[sel] - h * d, a[lo:hi][sel], b[lo:hi][sel], coef[lo:hi][sel])
+            for arr in part:
+                arr.setflags(write=False)
+            forms.append(part)
+        out[n] = forms
+    return out
+
+
+def _block_operator(bigs: tuple[int, ...], var: int) -> tuple[np.ndarray, ...]:
+    """The operators ``cotangent_csc_fast(big, var)`` of ``bigs`` block-diagonal (columns and targets shifted)."""
+    ops = [cotangent_csc_fast(big, var) for big in bigs]
+    toffs = np.cumsum([0] + [delta_unchecked(big) for big in bigs])
+    nnz = np.cumsum([0] + [len(op[1]) for op in ops])
+    indptr = np.concatenate([op[0][:-1] + nnz[i] for i, op in enumerate(ops)] + [nnz[-1:]])
+    target = np.concatenate([op[1] + toffs[i] for i, op in enumerate(ops)])
+    return (indptr, target) + tuple(np.concatenate([op[k] for op in ops]) for k in (2, 3, 4))
 
 
 @cache
@@ -474,39 +537,61 @@ def order_one_restriction(part: str, kp: float, sg: float, *, absolute: bool = F
 
 
 # --- the recursion --------------------------------------------------------------------------------------------------
-@cache
 def _level_terms(k: int) -> tuple[np.ndarray, ...]:
     """The seven product forms of order k - 1 (:func:`product_terms_fast`) concatenated: ``(rows, cols, a, b, coef,
-    h)``, sorted by (rows, cols, h, a, b).  Built level by level (Lemma 8 of docs/subdivision_for_all_n.md,
-    section 11): the terms of level k - 1 with rows and columns embedded by the centre (:func:`centre_embedding`,
-    increasing, so the order is kept) merged with the terms of the 6(k - 1) new columns (:func:`_outer_columns`;
-    their (row, col) are not among the embedded ones) -- no sort of the whole level.  The same arrays as the seven
-    :func:`_product_terms_unsorted` concatenated and sorted stably by (rows, cols) (tested equal)."""
+    h)``, sorted by (rows, cols, h, a, b): :func:`_level_build`."""
+    return _level_build(k)[0]
+
+
+@cache
+def _level_build(k: int) -> tuple[tuple[np.ndarray, ...], np.ndarray]:
+    """:func:`_level_terms` and the key ``rows delta_{k-1} + cols`` of each term.  Built level by level (Lemma 8
+    of docs/subdivision_for_all_n.md, section 11): the terms of level k - 1 with rows and columns embedded by the
+    centre (:func:`centre_embedding`, increasing, so their order is kept) merged with the terms of the 6(k - 1) new
+    columns (:func:`_outer_columns`; their (row, col) are none of the embedded ones) -- no sort of the whole level.
+    The same arrays as the seven :func:`_product_terms_unsorted` concatenated and sorted stably by (rows, cols)
+    (tested equal, ``tests/test_subdivision_speed.py``)."""
     new = _outer_columns(k - 1)
-    cat = [np.concatenate([f[i] for f in new]) for i in range(5)]
-    hidx = np.concatenate([np.full(len(f[0]), h, dtype=np.int64) for h, f in enumerate(new)])
     width = delta_unchecked(k - 1)
+    kdt = np.int32 if delta_unchecked(k) * width < 2**31 else np.int64
+    idt = np.int32 if delta_unchecked(k) < 2**31 else np.int64
+    # compact integer types (the values are those of the forms: rows, cols < delta_k; a, b <= 2k; h < 7)
+    dtypes = (idt, idt, np.int16, np.int16, np.int64, np.int16, kdt)
+    cat = [np.concatenate([f[i] for f in new]) for i in range(5)]
+    if max(int(cat[2].max()), int(cat[3].max())) >= 2**15:  # pragma: no cover - a, b <= 2k
+        raise OverflowError("exponents of kappa', sigma' beyond int16")
+    hidx = np.concatenate([np.full(len(f[0]), h, dtype=np.int64) for h, f in enumerate(new)])
     key = cat[0] * width + cat[1]
     order = np.argsort(key, kind="stable")  # by (row, column), then h, then (a, b) (each form is sorted)
-    fresh = [arr[order] for arr in cat] + [hidx[order]]
+    fresh = [arr[order].astype(dt) for arr, dt in zip(cat + [hidx, key], dtypes)]
     if k == 2:
-        out = tuple(fresh)
+        out = fresh
     else:
-        prev = _level_terms(k - 1)
-        old = [centre_embedding(k)[prev[0]], centre_embedding(k - 1)[prev[1]]] + list(prev[2:])
-        total = len(old[0]) + len(fresh[0])
-        at = np.searchsorted(old[0] * width + old[1], key[order]) + np.arange(len(order))
-        keep = np.ones(total, dtype=bool)
-        keep[at] = False
+        prev, prev_key = _level_build(k - 1)
+        rows, cols = _centre_index(k, idt)[prev[0]], _centre_index(k - 1, idt)[prev[1]]
+        old = [rows, cols] + list(prev[2:]) + [rows.astype(kdt) * width + cols]
+        n_old, n_new = len(rows), len(order)
+        ins = np.searchsorted(old[-1], fresh[-1])  # the new terms go before these old ones
+        at = ins + np.arange(n_new)
+        free = np.ones(n_old + n_new, dtype=bool)
+        free[at] = False
+        old_at = np.flatnonzero(free)
         out = []
-        for o, f in zip(old, fresh):
-            arr = np.empty(total, dtype=np.result_type(o, f))
-            arr[keep] = o
+        for o, f, dt in zip(old, fresh, dtypes):
+            arr = np.empty(n_old + n_new, dtype=dt)
+            arr[old_at] = o
             arr[at] = f
             out.append(arr)
-        out = tuple(out)
     for arr in out:
         arr.setflags(write=False)
+    return tuple(out[:6]), out[6]
+
+
+@cache
+def _centre_index(n: int, dtype: type) -> np.ndarray:
+    """:func:`centre_embedding` as ``dtype`` (the compact index type of :func:`_level_build`)."""
+    out = centre_embedding(n).astype(dtype)
+    out.setflags(write=False)
     return out
 
 
@@ -514,14 +599,15 @@ def _level_terms(k: int) -> tuple[np.ndarray, ...]:
 def _pattern(k: int, used: tuple[int, ...]) -> tuple[np.ndarray, ...]:
     """For the members h in ``used``: the positions of their terms in :func:`_level_terms`, the start of each
     (row, col) run among them, the CSR ``indptr``, ``indices`` of the distinct (row, col) and the h of each term."""
-    rows, cols, _, _, _, hidx = _level_terms(k)
+    (rows, cols, _, _, _, hidx), key = _level_build(k)
     keep = np.zeros(7, dtype=bool)
     keep[list(used)] = True
-    pos = np.flatnonzero(keep[hidx])
-    r, c = rows[pos], cols[pos]
-    starts = np.flatnonzero(np.r_[True, (r[1:] != r[:-1]) | (c[1:] != c[:-1])])
-    indptr = np.searchsorted(r[starts], np.arange(delta_unchecked(k) + 1)).astype(np.int32)
-    out = (pos, starts, indptr, c[starts].astype(np.int32), hidx[pos])
+    pos = np.arange(len(hidx)) if keep.all() else np.flatnonzero(keep[hidx])
+    key = key[pos]
+    starts = np.flatnonzero(np.r_[True, key[1:] != key[:-1]])
+    first = pos[starts]
+    indptr = np.searchsorted(rows[first], np.arange(delta_unchecked(k) + 1)).astype(np.int32)
+    out = (pos, starts, indptr, cols[first].astype(np.int32), hidx[pos])
     for arr in out:
         arr.setflags(write=False)
     return out
@@ -568,14 +654,17 @@ def restriction_blocks(n: int, kp: float, sg: float, first: list, *, absolute: b
     plans = {f: _plan(n, f) for f in fams}
     r1 = {"u": first[0], "middle": first[1]}
     blocks = {f: r1[f][:, plans[f][0][0]] for f in fams}
+    # two buffers per family, used in turn by the levels (fresh memory for every level costs page faults)
+    size = {f: max(delta_unchecked(k + 1) * len(plans[f][k][0]) for k in range(n)) for f in fams}
+    buffers = {f: (np.empty(size[f]), np.empty(size[f])) for f in fams}
     for k in range(2, n + 1):
         vals = _level_values(k, kp, sg, absolute)
         for f in fams:
             cols, bounds, pos = plans[f][k - 1]
-            out = np.empty((delta_unchecked(k), len(cols)))
+            out = buffers[f][k % 2][:delta_unchecked(k) * len(cols)].reshape(delta_unchecked(k), len(cols))
             for g in range(7):
                 lo, hi = bounds[g], bounds[g + 1]
-                if hi > lo:
+                if hi > lo:  # np.take: a C-contiguous copy, which scipy's product uses as it is
                     out[:, lo:hi] = _combined(k, r1[f][:, g], vals) @ np.take(blocks[f], pos[lo:hi], axis=1)
             blocks[f] = out
     return [blocks.get("u"), blocks.get("middle")]
