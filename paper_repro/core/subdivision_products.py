@@ -181,7 +181,7 @@ def cotangent_csc_fast(n: int, var: int) -> tuple[np.ndarray, ...]:
     cols, targets, a, b = (np.concatenate([o[k] for o in out]) for k in range(4))
     order = np.argsort(cols, kind="stable")
     indptr = np.zeros(delta_unchecked(n) + 1, dtype=np.int64)
-    np.add.at(indptr, cols + 1, 1)
+    indptr[1:] = np.bincount(cols, minlength=delta_unchecked(n))
     res = (np.cumsum(indptr), targets[order], a[order], b[order], np.ones(len(order), dtype=np.int64))
     for arr in res:
         arr.setflags(write=False)
@@ -208,36 +208,43 @@ def _padded_rule_a(n: int) -> tuple[np.ndarray, ...]:
 
 
 # --- step 2: the products with the members of T_2, vectorised ------------------------------------------------------
-def _apply_cotangent_terms(big: int, var: np.ndarray, terms: tuple[np.ndarray, ...], steps: np.ndarray,
-                           ops: tuple | None = None) -> tuple[np.ndarray, ...]:
-    """Apply ``L_var`` ``steps[t]`` times to each term ``(col, target, a, b, coef)`` (``var`` per term); ``ops``:
-    the three operators to use (default ``cotangent_csc_fast(big, v)``, v = 0, 1, 2)."""
-    if ops is None:
-        ops = tuple(cotangent_csc_fast(big, v) for v in range(3))
+def _apply_cotangent_terms(big: int, var: np.ndarray, terms: tuple[np.ndarray, ...], steps: np.ndarray
+                           ) -> tuple[np.ndarray, ...]:
+    """Apply ``L_var`` ``steps[t]`` times to each term ``(col, target, a, b, coef)`` (``var`` per term).  The terms
+    come out in some order, equal terms not yet added: the caller merges (integer sums, exact in any order)."""
+    op = _cotangent_all(big)
+    d = delta_unchecked(big)
     col, target, a, b, coef = terms
     done = [tuple(arr[steps == 0] for arr in terms)]
     col, target, a, b, coef, var, steps = (arr[steps > 0] for arr in (col, target, a, b, coef, var, steps))
     while len(col):
-        parts_out = []
-        for v in range(3):
-            sel = var == v
-            if not sel.any():
-                continue
-            pos, t, aa, bb, cc = _gather(ops[v], target[sel])
-            idx = np.flatnonzero(sel)[pos]
-            parts_out.append((col[idx], t, a[idx] + aa, b[idx] + bb, coef[idx] * cc, var[idx], steps[idx] - 1))
-        col, target, a, b, coef, var, steps = (np.concatenate([p[k] for p in parts_out]) for k in range(7))
+        pos, target, aa, bb, cc = _gather(op, var * d + target)  # L_var of each term's member, all variables at once
+        col, a, b, coef, var, steps = col[pos], a[pos] + aa, b[pos] + bb, coef[pos] * cc, var[pos], steps[pos] - 1
         fin = steps == 0
         done.append((col[fin], target[fin], a[fin], b[fin], coef[fin]))
         col, target, a, b, coef, var, steps = (arr[~fin] for arr in (col, target, a, b, coef, var, steps))
         if len(col):  # add the terms equal in (col, target, a, b) (var and steps are functions of col): exact
             key = ((col * (int(target.max()) + 1) + target) * (int(a.max()) + 1) + a) * (int(b.max()) + 1) + b
-            order = np.argsort(key, kind="stable")
-            first = order[np.r_[True, key[order][1:] != key[order][:-1]]]
-            summed = np.add.reduceat(coef[order], np.flatnonzero(np.r_[True, key[order][1:] != key[order][:-1]]))
+            order = np.argsort(key, kind="stable")  # the keys come in long sorted runs
+            key = key[order]
+            start = np.flatnonzero(np.r_[True, key[1:] != key[:-1]])
+            first = order[start]
+            coef = np.add.reduceat(coef[order], start)
             col, target, a, b, var, steps = (arr[first] for arr in (col, target, a, b, var, steps))
-            coef = summed
     return tuple(np.concatenate([d[k] for d in done]) for k in range(5))
+
+
+@cache
+def _cotangent_all(n: int) -> tuple[np.ndarray, ...]:
+    """The three :func:`cotangent_csc_fast` ``(n, var)`` side by side: column ``var delta_n + g`` is ``L_var`` of
+    the member g."""
+    ops = [cotangent_csc_fast(n, v) for v in range(3)]
+    nnz = np.cumsum([0] + [len(op[1]) for op in ops])
+    indptr = np.concatenate([op[0][:-1] + nnz[v] for v, op in enumerate(ops)] + [nnz[-1:]])
+    out = (indptr,) + tuple(np.concatenate([op[k] for op in ops]) for k in range(1, 5))
+    for arr in out:
+        arr.setflags(write=False)
+    return out
 
 
 @cache
@@ -278,71 +285,11 @@ def centre_embedding(n: int) -> np.ndarray:
     return out
 
 
-#: The forms of the new columns by order n (:func:`_outer_columns`), filled for all orders at once.
-_OUTER: dict[int, list[tuple[np.ndarray, ...]]] = {}
-
-
+@cache
 def _outer_columns(n: int) -> list[tuple[np.ndarray, ...]]:
-    """:func:`_product_columns` of the 6n members with j = 0 (not a multiple of the centre; n = 1: all seven).  The
-    orders 1..n not yet built are built together (:func:`_outer_columns_batch`)."""
-    if n not in _OUTER:
-        _OUTER.update(_outer_columns_batch(tuple(m for m in range(1, n + 1) if m not in _OUTER)))
-    return _OUTER[n]
-
-
-def _outer_columns_batch(ns: tuple[int, ...]) -> dict[int, list[tuple[np.ndarray, ...]]]:
-    """:func:`_product_columns_all` of the new columns of each order in ``ns``, the orders side by side: the members
-    of T_{2(n+1)} and the columns ``h delta_n + f`` of order n shifted past those of the orders before, one operator
-    per variable (the operators of the orders block-diagonal, :func:`cotangent_csc_fast`), so the powers of the
-    cotangent rules run once for all orders (the terms of different orders never meet: the integer forms are those
-    of :func:`_product_columns_all` order by order, tested equal)."""
-    toff, coff, t_at, c_at = {}, {}, 0, 0
-    for n in ns:
-        toff[n], coff[n] = t_at, c_at
-        t_at += delta_unchecked(n + 1)
-        c_at += 7 * delta_unchecked(n)
-    direct, pending = [], []
-    for n in ns:
-        d = delta_unchecked(n)
-        f = np.arange(delta_unchecked(1)) if n == 1 else np.flatnonzero(member_parts_fast(n)[:, 3] == 0)
-        for h in range(7):
-            done, pend = _product_seed(n, h, f)
-            direct += [(t[0] + (h * d + coff[n]), t[1] + toff[n]) + t[2:] for t in done]
-            if pend is not None:
-                terms, var, steps = pend
-                pending.append(((terms[0] + (h * d + coff[n]), terms[1] + toff[n]) + terms[2:], var, steps))
-    if pending:
-        terms = tuple(np.concatenate([p[0][k] for p in pending]) for k in range(5))
-        var, steps = (np.concatenate([p[k] for p in pending]) for k in (1, 2))
-        ops = tuple(_block_operator(tuple(n + 1 for n in ns), v) for v in range(3))
-        direct.append(_apply_cotangent_terms(0, var, terms, steps, ops))
-    rows, cols, a, b, coef = _merged(tuple(np.concatenate([t[k] for t in direct]) for k in range(5)))
-    out = {}
-    bounds = np.searchsorted(rows, [toff[n] for n in ns] + [t_at])  # sorted by rows: the orders in turn
-    for i, n in enumerate(ns):
-        d = delta_unchecked(n)
-        lo, hi = bounds[i], bounds[i + 1]
-        r, c = rows[lo:hi] - toff[n], cols[lo:hi] - coff[n]
-        which = c // d
-        forms = []
-        for h in range(7):
-            sel = which == h
-            part = (r[sel], c[sel] - h * d, a[lo:hi][sel], b[lo:hi][sel], coef[lo:hi][sel])
-            for arr in part:
-                arr.setflags(write=False)
-            forms.append(part)
-        out[n] = forms
-    return out
-
-
-def _block_operator(bigs: tuple[int, ...], var: int) -> tuple[np.ndarray, ...]:
-    """The operators ``cotangent_csc_fast(big, var)`` of ``bigs`` block-diagonal (columns and targets shifted)."""
-    ops = [cotangent_csc_fast(big, var) for big in bigs]
-    toffs = np.cumsum([0] + [delta_unchecked(big) for big in bigs])
-    nnz = np.cumsum([0] + [len(op[1]) for op in ops])
-    indptr = np.concatenate([op[0][:-1] + nnz[i] for i, op in enumerate(ops)] + [nnz[-1:]])
-    target = np.concatenate([op[1] + toffs[i] for i, op in enumerate(ops)])
-    return (indptr, target) + tuple(np.concatenate([op[k] for op in ops]) for k in (2, 3, 4))
+    """:func:`_product_columns` of the 6n members with j = 0 (not a multiple of the centre; n = 1: all seven)."""
+    f = np.arange(delta_unchecked(1)) if n == 1 else np.flatnonzero(member_parts_fast(n)[:, 3] == 0)
+    return _product_columns_all(n, f)
 
 
 @cache
