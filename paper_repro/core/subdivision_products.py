@@ -24,7 +24,9 @@ Speed (section 11, Lemmas 7 and 8): only one column per orbit of the exchanges o
 part's map is computed at the last level (``R[pi g, pi f] = R[g, f]``, :func:`symmetry_permutations`; v <-> w for
 the corners, all six for the middle), and at each lower level only the factors those columns need (:func:`_plan`);
 the other columns and the corners v, w are written from them (:func:`assemble`).  The integer forms of order n are
-those of order n - 1 embedded by the centre S_u S_v S_w (:func:`centre_embedding`) plus the 6n new columns.
+those of order n - 1 embedded by the centre S_u S_v S_w (:func:`centre_embedding`) plus the 6n new columns; the
+terms of a level stay sorted through the embedding (it is increasing) and the new columns' terms are merged in by
+position (:func:`_level_build`), so no level is sorted whole.
 
 Float results are the same bits on every CPU: kappa', sigma' from flint ``arb``, fixed-order sums (no BLAS:
 scipy's sparse products sum each row in the order of its entries).
