@@ -24,7 +24,9 @@ Speed (section 11, Lemmas 11.4 and 11.5): only one column per orbit of the excha
 part's map is computed at the last level (``R[pi g, pi f] = R[g, f]``, :func:`symmetry_permutations`; v <-> w for
 the corners, all six for the middle), and at each lower level only the factors those columns need (:func:`_plan`);
 the other columns and the corners v, w are written from them (:func:`assemble`).  The integer forms of order n are
-those of order n - 1 embedded by the centre S_u S_v S_w (:func:`centre_embedding`) plus the 6n new columns.
+those of order n - 1 embedded by the centre S_u S_v S_w (:func:`centre_embedding`) plus the 6n new columns; the
+terms of a level stay sorted through the embedding (it is increasing) and the new columns' terms are merged in by
+position (:func:`_level_build`), so no level is sorted whole.
 
 Float results are the same bits wherever numpy's and scipy's loops do unfused IEEE double operations (x86-64; tested
 with numpy's SIMD dispatch limited below AVX512, tests/test_subdivision_bits.py): kappa', sigma' from flint ``arb``,
@@ -191,7 +193,7 @@ def cotangent_csc_fast(n: int, var: int) -> tuple[np.ndarray, ...]:
     cols, targets, a, b = (np.concatenate([o[k] for o in out]) for k in range(4))
     order = np.argsort(cols, kind="stable")
     indptr = np.zeros(delta_unchecked(n) + 1, dtype=np.int64)
-    np.add.at(indptr, cols + 1, 1)
+    indptr[1:] = np.bincount(cols, minlength=delta_unchecked(n))
     res = (np.cumsum(indptr), targets[order], a[order], b[order], np.ones(len(order), dtype=np.int64))
     for arr in res:
         arr.setflags(write=False)
@@ -220,31 +222,41 @@ def _padded_rule_a(n: int) -> tuple[np.ndarray, ...]:
 # --- step 2: the products with the members of T_2, vectorised ------------------------------------------------------
 def _apply_cotangent_terms(big: int, var: np.ndarray, terms: tuple[np.ndarray, ...], steps: np.ndarray
                            ) -> tuple[np.ndarray, ...]:
-    """Apply ``L_var`` ``steps[t]`` times to each term ``(col, target, a, b, coef)`` (``var`` per term)."""
+    """Apply ``L_var`` ``steps[t]`` times to each term ``(col, target, a, b, coef)`` (``var`` per term).  The terms
+    come out in some order, equal terms not yet added: the caller merges (integer sums, exact in any order)."""
+    op = _cotangent_all(big)
+    d = delta_unchecked(big)
     col, target, a, b, coef = terms
     done = [tuple(arr[steps == 0] for arr in terms)]
     col, target, a, b, coef, var, steps = (arr[steps > 0] for arr in (col, target, a, b, coef, var, steps))
     while len(col):
-        parts_out = []
-        for v in range(3):
-            sel = var == v
-            if not sel.any():
-                continue
-            pos, t, aa, bb, cc = _gather(cotangent_csc_fast(big, v), target[sel])
-            idx = np.flatnonzero(sel)[pos]
-            parts_out.append((col[idx], t, a[idx] + aa, b[idx] + bb, coef[idx] * cc, var[idx], steps[idx] - 1))
-        col, target, a, b, coef, var, steps = (np.concatenate([p[k] for p in parts_out]) for k in range(7))
+        pos, target, aa, bb, cc = _gather(op, var * d + target)  # L_var of each term's member, all variables at once
+        col, a, b, coef, var, steps = col[pos], a[pos] + aa, b[pos] + bb, coef[pos] * cc, var[pos], steps[pos] - 1
         fin = steps == 0
         done.append((col[fin], target[fin], a[fin], b[fin], coef[fin]))
         col, target, a, b, coef, var, steps = (arr[~fin] for arr in (col, target, a, b, coef, var, steps))
         if len(col):  # add the terms equal in (col, target, a, b) (var and steps are functions of col): exact
             key = ((col * (int(target.max()) + 1) + target) * (int(a.max()) + 1) + a) * (int(b.max()) + 1) + b
-            order = np.argsort(key, kind="stable")
-            first = order[np.r_[True, key[order][1:] != key[order][:-1]]]
-            summed = np.add.reduceat(coef[order], np.flatnonzero(np.r_[True, key[order][1:] != key[order][:-1]]))
+            order = np.argsort(key, kind="stable")  # the keys come in long sorted runs
+            key = key[order]
+            start = np.flatnonzero(np.r_[True, key[1:] != key[:-1]])
+            first = order[start]
+            coef = np.add.reduceat(coef[order], start)
             col, target, a, b, var, steps = (arr[first] for arr in (col, target, a, b, var, steps))
-            coef = summed
     return tuple(np.concatenate([d[k] for d in done]) for k in range(5))
+
+
+@cache
+def _cotangent_all(n: int) -> tuple[np.ndarray, ...]:
+    """The three :func:`cotangent_csc_fast` ``(n, var)`` side by side: column ``var delta_n + g`` is ``L_var`` of
+    the member g."""
+    ops = [cotangent_csc_fast(n, v) for v in range(3)]
+    nnz = np.cumsum([0] + [len(op[1]) for op in ops])
+    indptr = np.concatenate([op[0][:-1] + nnz[v] for v, op in enumerate(ops)] + [nnz[-1:]])
+    out = (indptr,) + tuple(np.concatenate([op[k] for op in ops]) for k in range(1, 5))
+    for arr in out:
+        arr.setflags(write=False)
+    return out
 
 
 @cache
@@ -514,17 +526,61 @@ def order_one_restriction(part: str, kp: float, sg: float, *, absolute: bool = F
 
 
 # --- the recursion --------------------------------------------------------------------------------------------------
-@cache
 def _level_terms(k: int) -> tuple[np.ndarray, ...]:
     """The seven product forms of order k - 1 (:func:`product_terms_fast`) concatenated: ``(rows, cols, a, b, coef,
-    h)``, sorted by (rows, cols) (stable), with the start of each (row, col) run."""
-    forms = [_product_terms_unsorted(k - 1, h) for h in range(7)]
-    cat = [np.concatenate([f[i] for f in forms]) for i in range(5)]
-    hidx = np.concatenate([np.full(len(f[0]), h) for h, f in enumerate(forms)])
-    order = np.argsort(cat[0] * delta_unchecked(k - 1) + cat[1], kind="stable")  # by (row, column), then h
-    out = tuple(arr[order] for arr in cat) + (hidx[order],)
+    h)``, sorted by (rows, cols, h, a, b): :func:`_level_build`."""
+    return _level_build(k)[0]
+
+
+@cache
+def _level_build(k: int) -> tuple[tuple[np.ndarray, ...], np.ndarray]:
+    """:func:`_level_terms` and the key ``rows delta_{k-1} + cols`` of each term.  Built level by level (Lemma 8
+    of docs/subdivision_for_all_n.md, section 11): the terms of level k - 1 with rows and columns embedded by the
+    centre (:func:`centre_embedding`, increasing, so their order is kept) merged with the terms of the 6(k - 1) new
+    columns (:func:`_outer_columns`; their (row, col) are none of the embedded ones) -- no sort of the whole level.
+    The same arrays as the seven :func:`_product_terms_unsorted` concatenated and sorted stably by (rows, cols)
+    (tested equal, ``tests/test_subdivision_speed.py``)."""
+    new = _outer_columns(k - 1)
+    width = delta_unchecked(k - 1)
+    kdt = np.int32 if delta_unchecked(k) * width < 2**31 else np.int64
+    idt = np.int32 if delta_unchecked(k) < 2**31 else np.int64
+    # compact integer types (the values are those of the forms: rows, cols < delta_k; a, b <= 2k; h < 7)
+    dtypes = (idt, idt, np.int16, np.int16, np.int64, np.int16, kdt)
+    cat = [np.concatenate([f[i] for f in new]) for i in range(5)]
+    if max(int(cat[2].max()), int(cat[3].max())) >= 2**15:  # pragma: no cover - a, b <= 2k
+        raise OverflowError("exponents of kappa', sigma' beyond int16")
+    hidx = np.concatenate([np.full(len(f[0]), h, dtype=np.int64) for h, f in enumerate(new)])
+    key = cat[0] * width + cat[1]
+    order = np.argsort(key, kind="stable")  # by (row, column), then h, then (a, b) (each form is sorted)
+    fresh = [arr[order].astype(dt) for arr, dt in zip(cat + [hidx, key], dtypes)]
+    if k == 2:
+        out = fresh
+    else:
+        prev, prev_key = _level_build(k - 1)
+        rows, cols = _centre_index(k, idt)[prev[0]], _centre_index(k - 1, idt)[prev[1]]
+        old = [rows, cols] + list(prev[2:]) + [rows.astype(kdt) * width + cols]
+        n_old, n_new = len(rows), len(order)
+        ins = np.searchsorted(old[-1], fresh[-1])  # the new terms go before these old ones
+        at = ins + np.arange(n_new)
+        free = np.ones(n_old + n_new, dtype=bool)
+        free[at] = False
+        old_at = np.flatnonzero(free)
+        out = []
+        for o, f, dt in zip(old, fresh, dtypes):
+            arr = np.empty(n_old + n_new, dtype=dt)
+            arr[old_at] = o
+            arr[at] = f
+            out.append(arr)
     for arr in out:
         arr.setflags(write=False)
+    return tuple(out[:6]), out[6]
+
+
+@cache
+def _centre_index(n: int, dtype: type) -> np.ndarray:
+    """:func:`centre_embedding` as ``dtype`` (the compact index type of :func:`_level_build`)."""
+    out = centre_embedding(n).astype(dtype)
+    out.setflags(write=False)
     return out
 
 
@@ -532,14 +588,15 @@ def _level_terms(k: int) -> tuple[np.ndarray, ...]:
 def _pattern(k: int, used: tuple[int, ...]) -> tuple[np.ndarray, ...]:
     """For the members h in ``used``: the positions of their terms in :func:`_level_terms`, the start of each
     (row, col) run among them, the CSR ``indptr``, ``indices`` of the distinct (row, col) and the h of each term."""
-    rows, cols, _, _, _, hidx = _level_terms(k)
+    (rows, cols, _, _, _, hidx), key = _level_build(k)
     keep = np.zeros(7, dtype=bool)
     keep[list(used)] = True
-    pos = np.flatnonzero(keep[hidx])
-    r, c = rows[pos], cols[pos]
-    starts = np.flatnonzero(np.r_[True, (r[1:] != r[:-1]) | (c[1:] != c[:-1])])
-    indptr = np.searchsorted(r[starts], np.arange(delta_unchecked(k) + 1)).astype(np.int32)
-    out = (pos, starts, indptr, c[starts].astype(np.int32), hidx[pos])
+    pos = np.arange(len(hidx)) if keep.all() else np.flatnonzero(keep[hidx])
+    key = key[pos]
+    starts = np.flatnonzero(np.r_[True, key[1:] != key[:-1]])
+    first = pos[starts]
+    indptr = np.searchsorted(rows[first], np.arange(delta_unchecked(k) + 1)).astype(np.int32)
+    out = (pos, starts, indptr, cols[first].astype(np.int32), hidx[pos])
     for arr in out:
         arr.setflags(write=False)
     return out
@@ -586,15 +643,18 @@ def restriction_blocks(n: int, kp: float, sg: float, first: list, *, absolute: b
     plans = {f: _plan(n, f) for f in fams}
     r1 = {"u": first[0], "middle": first[1]}
     blocks = {f: r1[f][:, plans[f][0][0]] for f in fams}
+    # two buffers per family, used in turn by the levels (fresh memory for every level costs page faults)
+    size = {f: max(delta_unchecked(k + 1) * len(plans[f][k][0]) for k in range(n)) for f in fams}
+    buffers = {f: (np.empty(size[f]), np.empty(size[f])) for f in fams}
     for k in range(2, n + 1):
         vals = _level_values(k, kp, sg, absolute)
         for f in fams:
             cols, bounds, pos = plans[f][k - 1]
-            out = np.empty((delta_unchecked(k), len(cols)))
+            out = buffers[f][k % 2][:delta_unchecked(k) * len(cols)].reshape(delta_unchecked(k), len(cols))
             for g in range(7):
                 lo, hi = bounds[g], bounds[g + 1]
-                if hi > lo:
-                    out[:, lo:hi] = _combined(k, r1[f][:, g], vals) @ blocks[f][:, pos[lo:hi]]
+                if hi > lo:  # np.take: a C-contiguous copy, which scipy's product uses as it is
+                    out[:, lo:hi] = _combined(k, r1[f][:, g], vals) @ np.take(blocks[f], pos[lo:hi], axis=1)
             blocks[f] = out
     return [blocks.get("u"), blocks.get("middle")]
 
