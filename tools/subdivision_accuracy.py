@@ -29,6 +29,7 @@ from paper_repro.core.labels import delta
 from paper_repro.core.normalization import evaluate_normalized
 from paper_repro.core.subdivision import PARTS, subdivision_matrices, to_parent
 from paper_repro.core.subdivision_products import subdivision_matrices_float
+from paper_repro.util.io import write_text
 
 ALPHAS = (1e-3, 0.01, 0.1, 0.5, 1.0, 2.0, 3.0, math.pi - 1e-3, math.pi - 1e-12)
 #: small alpha against the certified route (n <= 4: its precision grows like (3n - 1) log2(1/alpha) bits)
@@ -135,8 +136,8 @@ def main(argv: list[str] | None = None) -> int:
         rep = json.loads(path.read_text())
         for row in rep["certified"] + rep["patch"]:
             row["bound"] = bound_max(row["n"], row["alpha"])
-        path.write_text(json.dumps(rep, indent=1) + "\n")
-        (Path(args.out) / "subdivision_accuracy.md").write_text(markdown(rep))
+        write_text(path, json.dumps(rep, indent=1) + "\n")
+        write_text(Path(args.out) / "subdivision_accuracy.md", markdown(rep))
         return 0
     cert_ns = [2, 4] if args.quick else [1, 2, 4, 6, 8]
     patch_ns = [2, 6] if args.quick else [2, 6, 10, 14, 20]
@@ -156,8 +157,8 @@ def main(argv: list[str] | None = None) -> int:
         rep["tiny"] += tiny_rows(n)
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
-    (out / "subdivision_accuracy.json").write_text(json.dumps(rep, indent=1) + "\n")
-    (out / "subdivision_accuracy.md").write_text(markdown(rep))
+    write_text(out / "subdivision_accuracy.json", json.dumps(rep, indent=1) + "\n")  # temp file + rename
+    write_text(out / "subdivision_accuracy.md", markdown(rep))
     print(f"wrote {out / 'subdivision_accuracy.md'}")
     return 0
 
