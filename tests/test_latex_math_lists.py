@@ -112,7 +112,7 @@ def test_prose_frame():
     assert segs == ["a", "b", "c", "\\mu", "a^{2}=b^{2}+c^{2}", "c<\\mu\\leq a"]
 
 
-# -- regexfold2: superscripts other than the tag; the control net as a union of bounded sets ------------------------
+# -- superscripts other than the tag; the control net as a union of bounded sets ------------------------
 def test_foreign_tags_of_the_partition_of_unity_lines():
     # eq. system_partition_of_unity's sum and its domain print every named object with the tag alpha only
     assert P.foreign_tags(verbatim("sec4_5-L-sum")) == []

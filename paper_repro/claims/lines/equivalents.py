@@ -407,14 +407,14 @@ EQUIVALENT["sec1_3-L-coefficients:swap:b23a9135d7"] = (  # i <-> j in the whole 
     "renaming the bound variables: {rho_{2n,2n-j,i}}_{i=0,j=i}^{n-1,2n-1-i} is the set {rho_{2n,2n-i,j}}_{j=0,i=j}"
     "^{n-1,2n-1-j} with i and j named the other way round (the same constants for every n); the line names the "
     "same coefficients")
-# -- Section 7 (regexfold: the list of control points read by latex_math.parse_list) ------------------------------
+# -- Section 7 (the list of control points read by latex_math.parse_list) ------------------------------
 EQUIVALENT["sec7-elev-index-sets:swap:86ed7af3c5"] = (  # i <-> j in the whole line
     "renaming the bound variables: {r_{4,4-j,i}}_{i=0,j=i}^{1,3-i} is the set {r_{4,4-i,j}}_{j=0,i=j}^{1,3-j} with "
     "i and j named the other way round (and likewise for g, b): the line lists the same 19 control points")
 EQUIVALENT["sec4_5-weights:swap:8db582f965"] = (  # i <-> j in the whole line
     "renaming the bound variables: {r_{2n,2n-j,i}}_{i=0,j=i}^{n-1,2n-1-i} is the set {r_{2n,2n-i,j}}_{j=0,i=j}"
     "^{n-1,2n-1-j} with i and j named the other way round (and likewise for g, b): the line names the same weights")
-# -- Section 6 (regexfold2: the control net read as a union of bounded sets by latex_math.parse) --------------------
+# -- Section 6 (the control net read as a union of bounded sets by latex_math.parse) --------------------
 for _lid in ("sec6-control-net-set", "sec6-rational-control-net-set"):
     EQUIVALENT[f"{_lid}:swap:1d5b5ec26a"] = (  # i <-> j in the whole line
         "renaming the bound variables: {r_{2n,2n-j,i}}_{i=0,j=i}^{n,2n-1-i} is the set {r_{2n,2n-i,j}}_{j=0,i=j}"
