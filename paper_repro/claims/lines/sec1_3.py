@@ -37,6 +37,7 @@ from paper_repro.core.domain import rational_alpha
 from paper_repro.core.labels import BasisLabel, compose, delta, exponents, full_system, index_of, united_system
 from paper_repro.core.univariate import c_const, c_numerator, c_numerator_by_expansion
 from paper_repro.printed import latex_math as lm
+from paper_repro.printed import parsed
 from paper_repro.printed import symmetry as printed_sym
 from paper_repro.printed.latex_math import LatexMathError
 from paper_repro.printed.lines import line as transcribed_line
@@ -2211,31 +2212,57 @@ def lr1_set(override=None) -> LineResult:
                       override=override)
 
 
-_CONSTANT_SET = re.compile(r"\\left\\\{\s*\\rho_\{2n,2n-i,([^{}]+)\},\\gamma_\{2n,2n-i,([^{}]+)\},"
-                           r"\\beta_\{2n,2n-i,([^{}]+)\}\s*\\right\\\}\s*_\{i=([^{}]+)\}\^\{([^{}]+)\}"
-                           r".*?equal to \$(\w+)\$", re.S)
+_ZEROED_WORDS = ("by evaluating its $$th order partial derivatives under parametrizations "
+                 "(\\ref{parametrization_1_y_0})--(\\ref{parametrization_3_y_0}) with proper substitutions of $$, "
+                 "where the combining constants $$ of all the omitted functions are equal to $$.")
+_ZEROED_NAMES = {"rho": "R", "gamma": "G", "beta": "B"}
+
+
+def _zeroed_constants(tex: str):
+    r"""The parsed ``$..$`` segments of the line "by evaluating its $(r+1)$th order ... the combining constants
+    ``\left\{ \rho_{2n,2n-i,r+1},\gamma_{2n,2n-i,r+1},\beta_{2n,2n-i,r+1}\right\} _{i=r+1}^{2n-1-(r+1)}`` ...
+    are equal to $0$": ``(order, substituted value, the Family, the value)``, or None when the words differ, a
+    segment is unread or the set is not a bounded set over one index of three constants rho, gamma, beta."""
+    words, segs = lm.prose(tex)
+    if words != _ZEROED_WORDS or len(segs) != 4:
+        return None
+    try:
+        order, subst, family, value = (lm.parse(x) for x in segs)
+    except LatexMathError:
+        return None
+    if not (isinstance(family, sympy.Function) and family.func == lm.Family):
+        return None
+    member, conds, bounds = family.args
+    if conds or len(bounds) != 1 or not isinstance(member, sympy.Tuple) or len(member) != 3 or \
+            [getattr(c.func, "__name__", None) for c in member] != list(_ZEROED_NAMES):
+        return None
+    return order, subst, family, value
 
 
 @line_check("sec1_3-level-zeroed")
 def level_zeroed(verbatim: str | None = None) -> LineResult:
-    """The constants {rho, gamma, beta}_{2n,2n-i,r+1}, i = r+1..2n-1-(r+1) (levels, range and the value 0 read from
-    the transcription), are those set to 0 by the step r -> r+1."""
+    """The constants {rho, gamma, beta}_{2n,2n-i,r+1}, i = r+1..2n-1-(r+1) (every index, the bounds, the order
+    r+1, the substituted 0 and the value 0 read from the transcription by :func:`latex_math.prose` and
+    :func:`latex_math.parse`), are those set to 0 by the step r -> r+1."""
 
     tex = verbatim if verbatim is not None else _transcribed(["sec1_3-step-zeroed"])["sec1_3-step-zeroed"]
-    m = _CONSTANT_SET.search(tex.replace("\\left(", "(").replace("\\right)", ")"))
-    words = re.search(r"^by evaluating its \$\\left\( r\+1\\right\) \$th order partial derivatives under "
-                      r"parametrizations \(\\ref\{parametrization_1_y_0\}\)--\(\\ref\{parametrization_3_y_0\}\) with "
-                      r"proper substitutions of \$0\$, where the combining constants", re.sub(r"\s+", " ", tex).strip())
-    if not m or m.group(6) != "0" or not words:
+    read = _zeroed_constants(tex)
+    r_ = sympy.Symbol("r")
+    if read is None or sympy.expand(read[0] - (r_ + 1)) != 0 or read[1] != 0 or read[3] != 0:
         return LineResult(False, how="the constants read from the transcription", detail={"unread": tex[:60]})
-    levels, lo, hi = m.group(1, 2, 3), m.group(4), m.group(5)
+    family = read[2]
 
     def printed(n, r):
         strict = {lb.paper: k for k, lb in enumerate(united_system(n))}
-        return {strict.get(f"{c}_{{{2 * n},{2 * n - i},{bound(lev, n=n, r=r)}}}", f"{c}?{i}")
-                for c, lev in zip("RGB", levels) for i in range(bound(lo, n=n, r=r), bound(hi, n=n, r=r) + 1)}
+        out = set()
+        for triple in parsed.members(family, n=n, r=r):
+            for c in triple:
+                key = f"{_ZEROED_NAMES[c.func.__name__]}_{{{','.join(str(a) for a in c.args)}}}"
+                out.add(strict.get(key, key))
+        return out
     return _proof_sets(printed, lambda n, r: alive_after(n, r, 2) - alive_after(n, r + 1, 2), rs=lambda n: range(n - 1),
-                       how="constants of the printed set (levels, range and value read from the transcription)")
+                       how="constants of the printed set (every index, the range and the value parsed from the "
+                           "transcription)")
 
 
 @line_check("sec1_3-Ltilde-r-set")
