@@ -961,10 +961,6 @@ def c_symmetry() -> LineResult:
     return LineResult(ok, how=how, kind="exhaustive", detail={"n_max": 30})
 
 
-_TRIPLE = re.compile(r"\\right\\\}\s*_\{\s*(\w)=([^,{}]+),\s*(\w)=([^,{}]+),\s*(\w)=([^,{}]+)\}\s*\^\{([^,{}]+),"
-                     r"([^,{}]+),([^,{}]+)\}")
-
-
 def _fourier_rows(members: list[sympy.Expr], names_: tuple[str, ...], ranges, pts) -> list[list[fmpq]]:
     """Exact collocation rows of the printed Fourier system: each member cos/sin of a linear combination of u, v, w
     with integer coefficients, for every index triple of the printed ranges."""
@@ -1005,41 +1001,46 @@ def fourier_dimension() -> LineResult:
         sys_tex = verbatim("sec1_3-fourier-system")
         if "largest linearly independent subset" not in sys_tex:
             raise LatexMathError("V_n is not the largest linearly independent subset")
-        m = _TRIPLE.search(sys_tex)
-        body = re.search(r"\\left\\\{(.*)\\right\\\}", sys_tex, re.S)
-        if not m or not body:
+        rel = lm.parse_relation(sys_tex)  # the display after the words
+        fam = rel.parts[0] if len(rel.parts) == 1 and not rel.ops and not rel.conditions else None
+        if not (isinstance(fam, sympy.Function) and fam.func == lm.Family) or len(fam.args[2]) != 3:
             raise LatexMathError("no set {..}_{r=..,g=..,b=..}^{..,..,..}")
-        names_, los, his = m.group(1, 3, 5), m.group(2, 4, 6), m.group(7, 8, 9)
-        members_tex, domain = body.group(1).split(":", 1)
-        if "\\Omega^{\\alpha}" not in domain or not re.search(r"\\left\(\s*u,v,w\s*\\right\)\s*\\in", domain):
+        member, conds, bounds = fam.args
+        names_ = tuple(str(v) for v, _lo, _hi in bounds)
+        los, his = [lo for _v, lo, _hi in bounds], [hi for _v, _lo, hi in bounds]
+        uvw = sympy.symbols("u v w")
+        if [str(c) for c in conds] != ["In((u, v, w), Omega)"]:  # the tag ^{\alpha} dropped, another refused
             raise LatexMathError("the domain is not (u,v,w) in Omega^alpha")
-        members = [lm.parse(t.group()) for t in re.finditer(r"\\(?:cos|sin)\\left\((.*?)\\right\)", members_tex)]
-        if not members or len(members) != members_tex.count(",") + 1:
-            raise LatexMathError(f"members of {members_tex!r} not read")
+        members = list(member) if isinstance(member, sympy.Tuple) else [member]
         # the trivariate extension of the canonical basis {cos(it), sin(it)}: a cosine and a sine of one argument
         # r u + g v + b w, each index with its own variable
+        if not all(isinstance(f, (sympy.sin, sympy.cos)) for f in members):
+            raise LatexMathError(f"members {members} are not cosines and sines")
         args = {f.args[0] for f in members}
         kinds = sorted(type(f).__name__ for f in members)
-        uvw = sympy.symbols("u v w")
         if len(args) != 1 or kinds != ["cos", "sin"]:
             raise LatexMathError("the members are not the cosine and the sine of one argument")
         coeffs = [sympy.Poly(next(iter(args)), *uvw).coeff_monomial(x) for x in uvw]
-        if sorted(str(c) for c in coeffs) != sorted(m.group(1, 3, 5)):
+        if sorted(str(c) for c in coeffs) != sorted(names_):
             raise LatexMathError(f"the argument {args} does not give each index its own variable")
-        dim = re.search(r"common dimension \$\\delta_\{n\}=(.+?)\$", verbatim("sec1_3-span-coincide-dim"))
-        same = re.search(r"spans the same vector space of functions as the constrained trivariate extension of the "
-                         r"canonical basis of truncated Fourier series of order \$([^$]+)\$",
-                         verbatim("sec1_3-abstract-same-span"))
-        if not dim or not same:
+        dim_words, dim_segs = lm.prose(verbatim("sec1_3-span-coincide-dim"))
+        same_words, same_segs = lm.prose(verbatim("sec1_3-abstract-same-span"))
+        if dim_words != "along with the determination of the common dimension $$ of these vector spaces" or \
+                same_words != ("that spans the same vector space of functions as the constrained trivariate extension "
+                               "of the canonical basis of truncated Fourier series of order $$ over") or \
+                len(dim_segs) != 1 or len(same_segs) != 1:
             raise LatexMathError("the common dimension or the abstract's order is not read")
-        delta_printed, order = lm.parse(dim.group(1)), lm.parse(same.group(1))
+        dim = lm.parse_relation(dim_segs[0])
+        if dim.ops != ["="] or str(dim.parts[0]) != "delta(n)" or dim.conditions:
+            raise LatexMathError(f"not delta_n = ..: {dim_segs[0]!r}")
+        delta_printed, order = dim.parts[1], lm.parse(same_segs[0])
     except (LatexMathError, ValueError) as exc:
         return _unread(how, exc)
     detail, ok = {}, True
     for n in (1, 2, 3):
         pts = _domain_points(ALPHA_TS[0], delta(n) + 12)
         try:
-            ranges = [(_env_int(lm.parse(a), n=n), _env_int(lm.parse(b), n=n) + 1) for a, b in zip(los, his)]
+            ranges = [(_env_int(a, n=n), _env_int(b, n=n) + 1) for a, b in zip(los, his)]
             rows_f = _fourier_rows(members, names_, ranges, pts)
             k = _env_int(order, n=n)
             rows_a = _fourier_rows(members, names_, [(0, k + 1)] * 3, pts)
