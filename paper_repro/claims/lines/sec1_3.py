@@ -734,9 +734,6 @@ def order_n3() -> LineResult:
     return LineResult(ok, how=how, detail={"order": order, "functions": len(labs)})
 
 
-_RESTRICT = re.compile(r"\\left\.\s*T_\{([^{}]+)\}\^\{\\alpha\}\s*\\right\\vert\s*_\{([uvw])=([^{}]+)\}")
-
-
 def _edge_points() -> list[tuple[fmpq, tuple[fmpq, fmpq], tuple[fmpq, fmpq]]]:
     """(tan(alpha/4), half angles of alpha, half angles of x) for exact points x in [0, alpha] (ends included)."""
     out = []
@@ -754,25 +751,26 @@ def _boundary(line_id: str) -> LineResult:
     how = "exact values on the edge of the restricted T_{2n} (package labels) and of the printed members, n = 1..6"
     tex = verbatim(line_id)
     try:
-        m = _RESTRICT.search(tex)
-        found = printed_sym.set_builders_1(tex)
-        if not m or not found:
+        rel = lm.parse_relation(tex)  # Subs(T(2*n), v, 0) = Family(A(2*n, 2*n - i, (u,))/c(..), (In(u, ..),), (..))
+        if len(rel.parts) != 2 or rel.ops != ["="] or rel.conditions or not isinstance(rel.parts[0], sympy.Subs):
             raise LatexMathError("no restriction T|_{x=a} = {..}_{i=..}^{..}")
-        t_order, var, value = lm.parse(m.group(1)), m.group(2), lm.parse(m.group(3))
-        body, (iv, ilo, ihi) = found
-        between = tex[m.end():tex.index(body)]
-        if lm.clean(between).replace("\\{", "").strip() != "=":
-            raise LatexMathError(f"the restriction and the set are not equated: {between!r}")
-        member_tex, domain = body.split(":", 1)
-        member = lm.parse(member_tex)
-        arg = read_interval(domain, "")  # [0, alpha]
-        dom_var = re.match(r"\s*([uvw])\s*\\in", domain)
+        restricted, fam = rel.parts
+        (t_fn,), (var_s,), (value,) = [restricted.expr], restricted.variables, restricted.point
+        if not isinstance(t_fn, AppliedUndef) or t_fn.func.__name__ != "T" or len(t_fn.args) != 1 or \
+                str(var_s) not in printed_sym.VARS:
+            raise LatexMathError(f"not a restriction of T_{{..}}: {restricted}")
+        t_order, var = t_fn.args[0], str(var_s)
+        if not (isinstance(fam, AppliedUndef) and fam.func == lm.Family) or len(fam.args[1]) != 1 or \
+                len(fam.args[2]) != 1:
+            raise LatexMathError(f"the restriction is not equated to a set with one condition and one bound: {fam}")
+        member, (cond,), ((iv, ilo, ihi),) = fam.args
+        dom_var, dom = cond.args if cond.func.__name__ == "In" and len(cond.args) == 2 else (None, None)
         a_terms = [f for f in member.atoms(AppliedUndef) if f.func.__name__ == "A"]
-        if len(a_terms) != 1 or not dom_var or len(a_terms[0].args[2]) != 1:
+        if len(a_terms) != 1 or not isinstance(dom_var, sympy.Symbol) or len(a_terms[0].args[2]) != 1:
             raise LatexMathError("the member is not one A_{2n,..}(x)/c")
         x = str(a_terms[0].args[2][0])
-        if x != dom_var.group(1) or x == var or arg != (True, sympy.Integer(0), sympy.Symbol("alpha"), True):
-            raise LatexMathError(f"argument {x} on {arg} is not a remaining variable on [0, alpha]")
+        if x != str(dom_var) or x == var or dom != sympy.Interval(0, sympy.Symbol("alpha")):
+            raise LatexMathError(f"argument {x} on {dom} is not a remaining variable on [0, alpha]")
     except (LatexMathError, ValueError) as exc:
         return _unread(how, exc, "exhaustive")
     rest = [k for k in range(3) if k != printed_sym.VARS.index(var)]
@@ -783,7 +781,7 @@ def _boundary(line_id: str) -> LineResult:
             return LineResult(False, how=how, kind="exhaustive", detail={"order": str(t_order)})
         try:
             zero = _env_int(value, n=n) == 0
-            idx = range(_env_int(lm.parse(ilo), n=n), _env_int(lm.parse(ihi), n=n) + 1)
+            idx = range(_env_int(ilo, n=n), _env_int(ihi, n=n) + 1)
         except (LatexMathError, ValueError) as exc:
             return _unread(how, exc, "exhaustive")
         for _at, ha, hx in _edge_points():
