@@ -66,6 +66,20 @@ def relation(tex: str) -> list[sympy.Expr]:
     return rel.parts
 
 
+def equation_over(tex: str, var: str) -> tuple[list[sympy.Expr], sympy.Expr, sympy.Expr]:
+    """The parts of an equality chain printed with one trailing listed range ``var=a,a+1,\\ldots,c`` and nothing
+    else, and the range's ``(a, c)`` (:func:`listed`), by one :func:`latex_math.parse_relation` of the line.
+
+    >>> equation_over(r"c_{2n,i}^{\\alpha}=c_{2n,2n-i}^{\\alpha},~i=0,1,\\ldots,n.", "i")
+    ([c(2*n, i), c(2*n, -i + 2*n)], 0, n)
+    """
+    rel = lm.parse_relation(tex)
+    if rel.lead not in (None, "=") or not rel.ops or any(op != "=" for op in rel.ops) or len(rel.conditions) != 1:
+        raise LatexMathError(f"not an equality chain with one listed range: {rel.lead} {rel.ops} "
+                             f"{len(rel.conditions)} clauses")
+    return rel.parts, *listed(rel, var)
+
+
 def linear_form(expr: str | sympy.Expr) -> tuple[int, int, int]:
     """Integer coefficients (of alpha, x, y) of a printed linear form such as ``\\alpha-x-y``, ``x-y``, ``y``, ``0``
     (its LaTeX, read by :func:`parse`, or the parsed expression); ``ValueError`` for anything else (another symbol, a
@@ -349,15 +363,15 @@ def read_interval(tex: str, var: str) -> tuple[bool, sympy.Expr, sympy.Expr, boo
     return m.group(1) == "[", lm.parse(m.group(2)), lm.parse(m.group(3)), m.group(4) == "]"
 
 
-def listed(tex: str, var: str) -> tuple[sympy.Expr, sympy.Expr]:
+def listed(tex: str | lm.Relation, var: str) -> tuple[sympy.Expr, sympy.Expr]:
     """(first, last) of the printed ``var=a,b,\\ldots,c`` whose step b - a must be 1 (every index between): the
     clause ``var in (a, b, ldots, c)`` of :func:`paper_repro.printed.latex_math.parse_relation` (the relation itself
-    or one of its trailing clauses).
+    or one of its trailing clauses; ``tex`` a text or a parsed relation).
 
     >>> listed(r"i=0,1,\\ldots,2n", "i")
     (0, 2*n)
     """
-    rel = lm.parse_relation(tex)
+    rel = tex if isinstance(tex, lm.Relation) else lm.parse_relation(tex)
     v = sympy.Symbol(var)
     found = [r for r in (rel, *rel.conditions) if r.ops == ["in"] and r.parts[0] == v
              and isinstance(r.parts[1], sympy.Tuple)]
@@ -889,9 +903,7 @@ def c_formula() -> LineResult:
         if not re.search(r"\bnormalizing\b", tex):
             raise LatexMathError("the coefficients are not said to normalize")
         display = tex.split("\\[", 1)[1].split("\\]", 1)[0]
-        formula, tail = re.split(r",\s*~?\s*(?=i\s*=)", display, maxsplit=1)
-        lhs, rhs = relation(formula)
-        lo, hi = listed(tail, "i")
+        (lhs, rhs), lo, hi = equation_over(display, "i")
         if not (isinstance(lhs, AppliedUndef) and lhs.func.__name__ == "c" and len(lhs.args) == 2):
             raise LatexMathError(f"left side {lhs} is not c_{{2n,i}}")
         if sympy.simplify(lhs.args[0] - 2 * sympy.Symbol("n")) != 0 or lhs.args[1] != sympy.Symbol("i"):
@@ -935,10 +947,7 @@ def c_symmetry() -> LineResult:
     tex = verbatim("sec1_3-c-symmetry")
     how = "the parsed relation and range against the expansion's coefficients, n = 1..30"
     try:
-        body = tex.split("\\begin{equation}", 1)[-1].split("\\label", 1)[0]
-        formula, tail = re.split(r",\s*~?\s*(?=i\s*=)", body, maxsplit=1)
-        lhs, rhs = relation(formula)
-        lo, hi = listed(tail, "i")
+        (lhs, rhs), lo, hi = equation_over(tex, "i")
         for side in (lhs, rhs):
             if not (isinstance(side, AppliedUndef) and side.func.__name__ == "c" and len(side.args) == 2):
                 raise LatexMathError(f"{side} is not a c_{{..,..}}")
