@@ -1165,24 +1165,31 @@ def _s_samples(lo, hi) -> list:
     return [lo, hi, lo + (hi - lo) / 3, lo + 5 * (hi - lo) / 7]
 
 
-def _quantified(tex: str) -> tuple[str, list]:
-    """(quantifier, sample values of s) of the printed ``,~\\forall s\\in\\left[ a,b\\right]``; the interval must
-    be the one that the reparametrization t = alpha s of Proposition Bernstein maps onto the domain [0, alpha] of
-    t (eq. univariate_basis): closed, alpha a = 0 and alpha b = alpha."""
-    m = re.search(r"\\(forall|exists)\s*s\s*\\in", tex)
-    if not m:
+def _quantified(rel: lm.Relation) -> tuple[str, list]:
+    """(quantifier, sample values of s) of the printed clause ``,~\\forall s\\in\\left[ a,b\\right]`` of a parsed
+    relation (:func:`latex_math.parse_relation`, the one clause over s with a quantifier); the interval must be the
+    one that the reparametrization t = alpha s of Proposition Bernstein maps onto the domain [0, alpha] of t
+    (eq. univariate_basis): closed, alpha a = 0 and alpha b = alpha."""
+    found = [c for c in rel.conditions if c.quantifier in ("forall", "exists") and c.ops == ["in"]
+             and c.parts[0] == sympy.Symbol("s")]
+    if len(found) != 1:
         raise LatexMathError("no quantifier over s")
-    s_interval(tex[m.start():], r"\\(?:forall|exists)\s*s")
-    return m.group(1), _s_samples(0, 1)
+    s_interval(found[0].parts[1])
+    return found[0].quantifier, _s_samples(0, 1)
 
 
-def s_interval(tex: str, var: str) -> None:
-    """Refuse an interval of s that t = alpha s does not map onto [0, alpha]."""
-    lo_c, lo, hi, hi_c = read_interval(tex, var)
+def s_interval(iv) -> None:
+    """Refuse an interval of s (parsed) that t = alpha s does not map onto [0, alpha]."""
+    if not isinstance(iv, sympy.Interval):
+        raise LatexMathError(f"s in {iv}: not an interval")
     alpha = sympy.Symbol("alpha")
-    if not (lo_c and hi_c) or sympy.simplify(alpha * lo) != 0 or sympy.simplify(alpha * hi - alpha) != 0:
-        raise LatexMathError(f"s in {'[' if lo_c else '('}{lo}, {hi}{']' if hi_c else ')'}: t = alpha s does not cover "
-                       f"[0, alpha]")
+    if iv.left_open or iv.right_open or sympy.simplify(alpha * iv.start) != 0 or \
+            sympy.simplify(alpha * iv.end - alpha) != 0:
+        raise LatexMathError(f"s in {iv}: t = alpha s does not cover [0, alpha]")
+
+
+_LIMIT_WORDS = ("If one uses the linear reparametrization $$, then basis functions (\\ref{univariate_basis}) of order "
+                "$$ converge to the Bernstein polynomials of degree $$ when $$, i.e.,%")
 
 
 @line_check("sec1_3-bernstein-limit")
@@ -1196,22 +1203,26 @@ def bernstein_limit() -> LineResult:
     tex = verbatim("sec1_3-bernstein-limit")
     how = "60-digit values at alpha = 1e-15 of the parsed limit, n = 1..5; exact coefficient limit n <= 15"
     try:
-        rep = re.search(r"reparametrization \$t\\left\(\s*s\s*\\right\)\s*=(.+?),~?s\\in", tex)
-        if rep:
-            s_interval(tex[rep.end() - 3:], "s")
-        deg = re.search(r"Bernstein polynomials of degree \$([^$]+)\$ when \$\\alpha\\rightarrow\s*([^$]+)\$", tex)
-        order = re.search(r"basis functions \(\\ref\{univariate_basis\}\) of order \$([^$]+)\$", tex)
-        if not rep or not deg or not order:
+        words, segs = lm.prose(tex.split("\\begin{equation}", 1)[0])
+        if words != _LIMIT_WORDS or len(segs) != 4:
             raise LatexMathError("the reparametrization, degree or order is not read")
-        t_of_s, degree, prose_point, order_n = lm.parse(rep.group(1)), lm.parse(deg.group(1)), lm.parse(deg.group(2)), \
-            lm.parse(order.group(1))
-        display = _display(tex, "\\begin{equation}", "\\label")
-        formula = re.split(r",\s*\\,", display, maxsplit=1)[0]
-        lhs, rhs = relation(formula)
-        _, s_vals = _quantified(display)
-        if not re.search(r"\\forall\s*s", display):
+        rep, lim = lm.parse_relation(segs[0]), lm.parse_relation(segs[3])
+        s_ = sympy.Symbol("s")  # t\\left( s\\right) is read as the product t*s (one parenthesised expression)
+        if rep.ops != ["="] or rep.parts[0] != sympy.Symbol("t") * s_ or len(rep.conditions) != 1 or \
+                rep.conditions[0].ops != ["in"] or rep.conditions[0].parts[0] != s_:
+            raise LatexMathError(f"not the reparametrization t(s) = .., s in ..: {segs[0]!r}")
+        s_interval(rep.conditions[0].parts[1])
+        if lim.ops != ["->"] or lim.parts[0] != sympy.Symbol("alpha") or lim.conditions:
+            raise LatexMathError(f"not alpha -> ..: {segs[3]!r}")
+        t_of_s, order_n, degree, prose_point = rep.parts[1], lm.parse(segs[1]), lm.parse(segs[2]), lim.parts[1]
+        rel = lm.parse_relation(_display(tex, "\\begin{equation}", "\\label"))
+        if rel.lead is not None or rel.ops != ["="] or len(rel.conditions) != 2:
+            raise LatexMathError("not one equation with the clauses over s and i")
+        lhs, rhs = rel.parts
+        quant, s_vals = _quantified(rel)
+        if quant != "forall":
             raise LatexMathError("the limit is not claimed for all s")
-        lo, hi = listed(display, "i")
+        lo, hi = listed(rel, "i")
         if not isinstance(lhs, sympy.Limit):
             raise LatexMathError("the left side is not a limit")
         body, var, point = lhs.args[0], lhs.args[1], lhs.args[2]
@@ -1262,10 +1273,11 @@ def _a_identity(parts: list[sympy.Expr], quant: str, s_vals: list, scale=1) -> b
 
 def _read_chain(line_id: str) -> tuple[list[sympy.Expr], str, list]:
     tex = verbatim(line_id)
-    display = _display(tex, "\\[", "\\]")
-    formula = re.split(r",\s*~?\s*\\(?:forall|exists)", display, maxsplit=1)[0]
-    parts = relation(formula)
-    quant, s_vals = _quantified(display)
+    rel = lm.parse_relation(_display(tex, "\\[", "\\]"))
+    if rel.lead is not None or any(op != "=" for op in rel.ops) or len(rel.conditions) != 1:
+        raise LatexMathError(f"not an equality chain with one clause over s: {rel.ops} {len(rel.conditions)} clauses")
+    parts = rel.parts
+    quant, s_vals = _quantified(rel)
     if len(parts) < 2:
         raise LatexMathError("not an equality")
     return parts, quant, s_vals
