@@ -1677,55 +1677,94 @@ def _uvw_index(var) -> int:
     return "uvw".index(name)
 
 
-_CHAIN_STRICT = re.compile(
-    r"^(?:\\frac\{\\partial\^\{(?P<o0>[^{}]+)\}\}\{\\partial(?P<run>[xy])\^\{(?P<o1>[^{}]+)\}\}"
-    r"(?P<f0>L|\\widetilde\{L\}_\{r\}|\\widehat\{L\}_\{r\}|L_\{r\})\((?P<args0>[^=]*)\))?="
-    r"\\sum_\{k=(?P<k0>[^{}]+)\}\^\{(?P<o2>[^{}]+)\}\\dbinom\{(?P<o3>[^{}]+)\}\{k\}\(-1\)\^\{k\}"
-    r"\\frac\{\\partial\^\{(?P<o4>[^{}]+)\}\}\{\\partial(?P<a>[uvw])(?:_\{(?P<ai>\d)\})?\^\{(?P<o5>[^{}]+)-k\}"
-    r"\\partial(?P<b>[uvw])(?:_\{(?P<bi>\d)\})?\^\{k\}\}"
-    r"(?P<f1>L|\\widetilde\{L\}_\{r\}|\\widehat\{L\}_\{r\}|L_\{r\})\((?P<args1>.*?)\)"
-    r"(?:\\rightvert_\{(?P<bar>[xy])=0\})?(?P<tail>[.,]?|,~\\forall(?P<qv>[xy])\\in\[(?P<lo>[^,\]]+),(?P<hi>[^\]]+)\][.,])$")
+_CHAIN_HEADS = {("L", ()), ("L", ("r",)), ("Ltilde", ("r",)), ("Lhat", ("r",))}  # L, L_{r}, \widetilde{L}_{r}, ..
+
+
+def _chain_function(f, coords: tuple) -> str:
+    """``L``, ``L_{r}``, ``\\widetilde{L}_{r}`` or ``\\widehat{L}_{r}`` applied to ``coords`` (parsed: ``L(r, (..))``),
+    as ``name(index)``; ``ValueError`` otherwise."""
+    if not isinstance(f, AppliedUndef) or not f.args or not isinstance(f.args[-1], sympy.Tuple):
+        raise ValueError(f"{f} is not a function of the parametrization's coordinates")
+    head = (f.func.__name__, tuple(str(x) for x in f.args[:-1]))
+    if head not in _CHAIN_HEADS or tuple(f.args[-1]) != coords:
+        raise ValueError("the arguments are not the coordinates of the parametrization")
+    return f"{head[0]}_{{{','.join(head[1])}}}" if head[1] else head[0]
 
 
 def read_chain_strict(tex: str, param: str) -> dict:
     """The whole printed chain rule ``\\frac{\\partial^{r}}{\\partial y^{r}}L(..) = \\sum_{k=0}^{r} \\dbinom{r}{k}
-    (-1)^k \\frac{\\partial^{r}}{\\partial a^{r-k}\\partial b^{k}} L(..) [|_{y=0}, \\forall x \\in [0,\\alpha]]``, read:
-    every order equal, the sum from k = 0, the arguments the coordinates of ``param`` (its index) at (x, y), the
-    point the running parameter at 0, the quantifier over the other parameter on its printed range
-    (``ValueError`` otherwise)."""
-
-    t = re.sub(r"\s+", "", tex.replace("%", ""))
-    for p in (r"\\begin\{equation\}", r"\\end\{equation\}", r"\\label\{[^{}]*\}", r"&", r"\\\\$",
-              r"\\left\.", r"\\right\.(?!\w)"):
-        t = re.sub(p, "", t)
-    t = t.replace("\\left(", "(").replace("\\right)", ")").replace("\\dfrac", "\\frac").replace("\\left[", "[")
-    t = t.replace("\\right]", "]").replace("\\right\\vert", "\\rightvert").replace("\\,", "")
-    t = re.sub(r"\{\\displaystyle\\sum\\limits(_\{[^{}]*\}\^\{[^{}]*\})\}", r"\\sum\1", t)
-    m = _CHAIN_STRICT.match(t)
-    if not m:
-        raise ValueError(f"chain rule not read: {t[:60]!r}")
-    orders = {m.group(g) for g in ("o0", "o1", "o2", "o3", "o4", "o5") if m.group(g) is not None}
-    if len(orders) != 1 or m.group("k0") != "0":
-        raise ValueError(f"orders {sorted(orders)} / sum from k={m.group('k0')}")
+    (-1)^k \\frac{\\partial^{r}}{\\partial a^{r-k}\\partial b^{k}} L(..) [|_{y=0}, \\forall x \\in [0,\\alpha]]``
+    (or its continuation row ``& = & \\sum ..``), read by :func:`latex_math.parse_relation`: every order equal (of
+    the left derivative, the sum's upper bound, the binomial, the derivative under the sum), the sum over k from 0
+    of exactly (-1)^k binom(.., k) D(.., (a, .. - k), (b, k)), the variables a, b and the arguments the coordinates
+    of ``param`` (its index) at (x, y), the evaluation point the running parameter at 0, the quantifier over the
+    other parameter on its printed range (``ValueError`` otherwise)."""
+    try:
+        rel = lm.parse_relation(tex)
+    except LatexMathError as exc:
+        raise ValueError(f"chain rule not read: {exc}") from None
+    if rel.lead is None and rel.ops == ["="] and len(rel.parts) == 2:
+        lhs, rhs = rel.parts
+    elif rel.lead == "=" and not rel.ops and len(rel.parts) == 1:
+        lhs, rhs = None, rel.parts[0]
+    else:
+        raise ValueError(f"chain rule not read: {rel.lead} {rel.ops}")
+    k = sympy.Symbol("k")
+    if not isinstance(rhs, sympy.Sum) or len(rhs.limits) != 1 or rhs.limits[0][:2] != (k, 0):
+        raise ValueError(f"not a sum over k from 0: {rhs}")
+    order = rhs.limits[0][2]
+    factors = sympy.Mul.make_args(rhs.function)
+    binoms = [f for f in factors if isinstance(f, sympy.binomial)]
+    rest = [f for f in factors if f != sympy.Pow(-1, k) and f not in binoms]
+    if len(factors) != 3 or sympy.Pow(-1, k) not in factors or len(binoms) != 1 or binoms[0].args[1] != k or \
+            len(rest) != 1:
+        raise ValueError(f"the term is not (-1)^k binom(.., k) d/d..: {rhs.function}")
+    deriv, bar = rest[0], None
+    if isinstance(deriv, sympy.Subs):
+        if len(deriv.variables) != 1 or deriv.point != sympy.Tuple(0):
+            raise ValueError(f"the evaluation bar is not at 0: {deriv}")
+        bar, deriv = str(deriv.variables[0]), deriv.expr
+    if not (isinstance(deriv, AppliedUndef) and deriv.func.__name__ == "D" and len(deriv.args) == 3):
+        raise ValueError(f"not a derivative in two variables: {deriv}")
+    (va, oa), (vb, ob) = deriv.args[1:]
+    orders = [order, binoms[0].args[0], oa + k]
     idx = STEP_PARAMS.index(param) + 1 if param in STEP_PARAMS else None
-    want_idx = str(idx) if idx else None
-    coords = ",".join(f"{c}{'_{' + want_idx + '}' if want_idx else ''}(x,y)" for c in "uvw")
-    if m.group("ai") != want_idx or m.group("bi") != want_idx or m.group("args1") != coords or \
-            (m.group("args0") is not None and m.group("args0") != coords) or m.group("f0") not in (None, m.group("f1")):
-        raise ValueError("the arguments are not the coordinates of the parametrization")
+    x_y = sympy.Tuple(*sympy.symbols("x y"))
+    coords = tuple(sympy.Function(c)(idx, x_y) if idx else sympy.Function(c)(x_y) for c in "uvw")
+    names = {sympy.Function(c)(idx) if idx else sympy.Symbol(c) for c in "uvw"}
+    if ob != k or va not in names or vb not in names:
+        raise ValueError("the variables are not the coordinates of the parametrization")
+    f1 = _chain_function(deriv.args[0], coords)
+    run0 = None
+    if lhs is not None:
+        if not (isinstance(lhs, AppliedUndef) and lhs.func.__name__ == "D" and len(lhs.args) == 2):
+            raise ValueError(f"the left side is not a derivative in one variable: {lhs}")
+        run0, o0 = str(lhs.args[1][0]), lhs.args[1][1]
+        orders.append(o0)
+        if _chain_function(lhs.args[0], coords) != f1:
+            raise ValueError("the two sides differentiate different functions")
+    if any(sympy.expand(o - order) != 0 for o in orders):
+        raise ValueError(f"orders {orders}")
     _fmap, run, _maps, ranges = _params()[param]
-    if m.group("run") not in (None, run) or m.group("bar") not in (None, run):
+    if run0 not in (None, run) or bar not in (None, run):
         raise ValueError("not the running parameter of the parametrization")
-    if m.group("qv"):
+    if len(rel.conditions) > 1:
+        raise ValueError("more than one clause")
+    if rel.conditions:
+        cond = rel.conditions[0]
         free = "x" if run == "y" else "y"
-        lo, hi = _lin(m.group("lo"), 1), _lin(m.group("hi"), 1)
-        def at_edge(q: str) -> tuple[int, int, int]:  # the printed bound with the running parameter at 0
+        iv = cond.parts[1] if cond.ops == ["in"] and len(cond.parts) == 2 else None
+        if cond.quantifier != "forall" or str(cond.parts[0]) != free or not isinstance(iv, sympy.Interval) or \
+                iv.left_open or iv.right_open or bar is None:
+            raise ValueError("the quantifier is not over the other parameter on [0, alpha]")
+        lo, hi = _lin(iv.start, 1), _lin(iv.end, 1)
+
+        def at_edge(q) -> tuple[int, int, int]:  # the printed bound with the running parameter at 0
             a, x, y = linear_form(q)
             return (a, 0, y) if run == "x" else (a, x, 0)
-        if m.group("qv") != free or (lo, hi) != (0, 1) or m.group("bar") is None or \
-                [at_edge(q) for q in ranges[free]] != [at_edge(m.group("lo")), at_edge(m.group("hi"))]:
+        if (lo, hi) != (0, 1) or [at_edge(q) for q in ranges[free]] != [at_edge(iv.start), at_edge(iv.end)]:
             raise ValueError("the quantifier is not over the other parameter on [0, alpha]")
-    return m.groupdict()
+    return {"order": str(order), "a": str(va), "b": str(vb), "function": f1, "run": run0, "bar": bar}
 
 
 def _chain(param: str, check_id: str, override: dict[str, str] | None = None) -> LineResult:
