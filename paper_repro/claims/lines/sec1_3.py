@@ -1464,27 +1464,47 @@ def distinct_union(n: int) -> frozenset[tuple[int, ...]]:
     return frozenset(exponents(x) for color in "RGB" for x in full_system(n, color))
 
 
-def read_delta(tex: str) -> list:
-    """The printed values of delta_n in ``tex`` (everything after ``\\delta_{n}=``, split at ``=``), each as a
-    function of n: a closed form such as ``3n\\left( n+1\\right) +1`` or ``1+3\\sum_{j=..}^{..}\\sum_{i=..}^{..}1``."""
+def _int_at(e: sympy.Expr, env: dict[str, int]) -> int:
+    """The integer value of a parsed expression at ``env``, every ``Sum`` (of one or several limits, the first
+    innermost as sympy orders them) summed term by term: an empty range (upper < lower) is an empty sum, the paper's
+    convention (``LatexMathError`` if a value is not an integer)."""
+    if isinstance(e, sympy.Sum):
+        return _limits_int(e.function, list(e.limits), env)
+    if e.has(sympy.Sum):
+        return _env_int(e.func(*[sympy.Integer(_int_at(x, env)) if x.has(sympy.Sum) else x for x in e.args]), **env)
+    return _env_int(e, **env)
 
-    body = tex.split("\\delta_{n}=", 1)[1]
-    body = re.split(r"\\\]|\$", body)[0].replace("\\left(", "(").replace("\\right)", ")").replace("%", " ")
-    out = []
-    for part in re.split(r"=(?![^{]*\})", body):  # not the = of a subscript j=0
-        part = part.strip().rstrip(".").strip()
-        m = re.fullmatch(r"(\d+)\s*\+\s*(\d+)\s*\\sum_\{j=([^{}]+)\}\^\{([^{}]+)\}\s*"
-                         r"\\sum_\{i=([^{}]+)\}\^\{([^{}]+)\}\s*1", part)
-        if m:
-            a, b, jlo, jhi, ilo, ihi = m.groups()
-            out.append(lambda n, a=a, b=b, jlo=jlo, jhi=jhi, ilo=ilo, ihi=ihi: int(a) + int(b) * sum(
-                1 for j in range(bound(jlo, n=n), bound(jhi, n=n) + 1)
-                for _ in range(bound(ilo, n=n, j=j), bound(ihi, n=n, j=j) + 1)))
-        elif "\\" in part:
-            raise ValueError(f"unread value of delta_n: {part!r}")
-        else:
-            out.append(lambda n, e=part: bound(e, n=n))
-    return out
+
+def _limits_int(f: sympy.Expr, limits: list, env: dict[str, int]) -> int:
+    if not limits:
+        return _int_at(f, env)
+    v, lo, hi = limits[-1]
+    return sum(_limits_int(f, limits[:-1], {**env, str(v): x}) for x in range(_int_at(lo, env), _int_at(hi, env) + 1))
+
+
+def _delta_value(e: sympy.Expr, n: int) -> int | None:
+    try:
+        return _int_at(e, {"n": n})
+    except (LatexMathError, ValueError, ZeroDivisionError, TypeError):
+        return None
+
+
+def read_delta(tex: str) -> list:
+    """The printed values of delta_n in ``tex`` (the chain ``\\delta_{n}=a=b..`` of its one ``$..$`` segment or of
+    its display, read by :func:`latex_math.parse_relation`), each as a function of n (None where it is not an
+    integer): a closed form such as ``3n\\left( n+1\\right) +1`` or ``1+3\\sum_{j=..}^{..}\\sum_{i=..}^{..}1`` (the
+    sums evaluated, an empty one 0)."""
+    segs = lm.inline_math(tex)
+    if len(segs) > 1:
+        raise ValueError(f"more than one formula in {tex[:50]!r}")
+    try:
+        rel = lm.parse_relation(segs[0] if segs else tex)
+    except LatexMathError as exc:
+        raise ValueError(f"unread value of delta_n: {exc}") from None
+    if rel.lead is not None or not rel.ops or any(op != "=" for op in rel.ops) or rel.conditions or \
+            rel.parts[0] != sympy.Function("delta")(sympy.Symbol("n")):
+        raise ValueError(f"not delta_n = ..: {rel.parts[0]} {rel.ops}")
+    return [lambda n, e=part: _delta_value(e, n) for part in rel.parts[1:]]
 
 
 @line_check("sec1_3-delta-count")
