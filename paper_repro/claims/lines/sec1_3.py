@@ -185,13 +185,18 @@ def _params() -> dict[str, tuple]:
     out = {}
     for label, (lid, chain) in PARAM_LINES.items():
         maps, ranges = read_parametrization(_transcribed([lid])[lid])
-        m = re.search(r"\\frac\{\\partial\^\{r\}\}\{\\partial\s*([xy])\^\{r\}\}", _transcribed([chain])[chain])
-        if not m:
+        try:  # the left side D(L(..), (y, r)) of the chain rule
+            lhs = lm.parse_relation(_transcribed([chain])[chain]).parts[0]
+        except LatexMathError as exc:
+            raise ValueError(f"no running parameter in {chain}: {exc}") from None
+        if not (isinstance(lhs, AppliedUndef) and lhs.func.__name__ == "D" and len(lhs.args) == 2) or \
+                str(lhs.args[1][0]) not in ("x", "y") or lhs.args[1][1] != sympy.Symbol("r"):
             raise ValueError(f"no running parameter d^r/dx^r or d^r/dy^r in {chain}")
+        run = str(lhs.args[1][0])
 
         def fmap(a, x, y, maps=maps):
             return tuple(p * a + q * x + s * y for p, q, s in maps)
-        out[label] = (fmap, m.group(1), maps, ranges)
+        out[label] = (fmap, run, maps, ranges)
     return out
 
 
