@@ -357,15 +357,29 @@ def _set_result(printed, computed, how: str, kind: str = "exact-evidence", corre
 # Sections 1-2
 # ==============================================================================================================
 # -- Sections 1-2: readers of the transcriptions (issue 37) ------------------------------------------------------
-_INTERVAL = r"\s*\\in\s*\\left\s*([(\[])\s*([^,]+?)\s*,\s*([^,]+?)\s*\\right\s*([)\]])"
+def interval_of(x) -> tuple[bool, sympy.Expr, sympy.Expr, bool]:
+    """``(lo closed, lo, hi, hi closed)`` of a parsed interval: ``Interval`` (``\\left[ a,b\\right]``, ``(a,b]``, ..)
+    or the pair ``Tuple(a, b)`` that ``\\left( a,b\\right)`` after ``\\in`` is read as (the open interval);
+    ``LatexMathError`` for anything else (an empty or one-point interval included)."""
+    if isinstance(x, sympy.Interval):
+        return not x.left_open, x.start, x.end, not x.right_open
+    if isinstance(x, sympy.Tuple) and len(x) == 2:
+        return False, x[0], x[1], False
+    raise LatexMathError(f"{x} is not an interval")
 
 
 def read_interval(tex: str, var: str) -> tuple[bool, sympy.Expr, sympy.Expr, bool]:
-    """``(lo closed, lo, hi, hi closed)`` of the printed ``var \\in \\left( lo,hi \\right)`` (``var`` a regex)."""
-    m = re.search(var + _INTERVAL, tex)
-    if not m:
-        raise LatexMathError(f"no interval for {var} in {tex[:60]!r}")
-    return m.group(1) == "[", lm.parse(m.group(2)), lm.parse(m.group(3)), m.group(4) == "]"
+    """``(lo closed, lo, hi, hi closed)`` of the printed ``var \\in \\left( lo,hi \\right)`` (``var`` a name such as
+    ``alpha``): the one relation or clause ``var in ..`` of the line's ``$..$`` segments (or of the line), read by
+    :func:`latex_math.parse_relation` and :func:`interval_of`."""
+    v = sympy.Symbol(var)
+    found = []
+    for seg in lm.inline_math(tex) or [tex]:
+        rel = lm.parse_relation(seg)
+        found += [r for r in (rel, *rel.conditions) if r.ops == ["in"] and len(r.parts) == 2 and r.parts[0] == v]
+    if len(found) != 1:
+        raise LatexMathError(f"{len(found)} intervals for {var} in {tex[:60]!r}")
+    return interval_of(found[0].parts[1])
 
 
 def listed(tex: str | lm.Relation, var: str) -> tuple[sympy.Expr, sympy.Expr]:
@@ -436,7 +450,7 @@ def alpha_range() -> LineResult:
     with mpmath.workdps(40):
         for ln in lines_of("sec1_3-alpha-range"):
             try:
-                lo_c, lo, hi, hi_c = read_interval(ln.verbatim, r"\\alpha")
+                lo_c, lo, hi, hi_c = read_interval(ln.verbatim, "alpha")
                 lo_v, hi_v = num(lo, {}), num(hi, {})
             except (LatexMathError, ValueError) as exc:
                 return _unread(how, exc, "exhaustive")
@@ -1080,7 +1094,7 @@ def univariate_span() -> LineResult:
     try:
         left, right = _single_sets(tex)
         (lb, (lv, llo, lhi), ldom), (rb, (rv, rlo, rhi), rdom) = left, right
-        lhs, member = lm.parse(lb), lm.parse(rb)
+        lhs, member = lb, rb
         if (lv, llo, lhi) != (rv, rlo, rhi) or ldom != rdom or ldom[:2] != ("t", (True, 0, sympy.Symbol("alpha"),
                                                                                    True)):
             raise LatexMathError("the two sides are not on one index set and one domain t in [0, alpha]")
@@ -1095,7 +1109,7 @@ def univariate_span() -> LineResult:
         at = ALPHA_TS[0]
         ha = _half(at)
         try:
-            idx = range(_env_int(lm.parse(rlo), n=n), _env_int(lm.parse(rhi), n=n) + 1)
+            idx = range(_env_int(rlo, n=n), _env_int(rhi, n=n) + 1)
             if _env_int(lhs.args[0], n=n) != 2 * n:
                 raise LatexMathError("A of another order")
         except (LatexMathError, ValueError) as exc:
@@ -1120,15 +1134,22 @@ def univariate_span() -> LineResult:
 
 
 def _single_sets(tex: str):
-    """The two set-builders ``\\left\\{ body : x\\in\\left[ a,b\\right] \\right\\} _{i=lo}^{hi}`` of an equality:
-    [(body, (i, lo, hi), (x, interval)), ...]."""
+    """The two set-builders ``\\left\\{ body : x\\in\\left[ a,b\\right] \\right\\} _{i=lo}^{hi}`` of an equality
+    (:func:`latex_math.parse_relation`: two ``Family`` parts, each with one condition and one bound):
+    [(member, (i, lo, hi), (x, interval)), ...], the member and the bounds parsed, ``interval`` as
+    :func:`interval_of`."""
+    rel = lm.parse_relation(tex)
+    if rel.ops != ["="] or rel.conditions:
+        raise LatexMathError(f"not one equality of two sets: {rel.ops}")
     out = []
-    for body, iset in printed_sym.set_builders_1_all(tex):
-        member, domain = body.split(":", 1)
-        dv = re.match(r"\s*(\w)\s*\\in", domain)
-        if not dv:
-            raise LatexMathError(f"no domain in {domain!r}")
-        out.append((member, iset, (dv.group(1), read_interval(domain, ""))))
+    for fam in rel.parts:
+        if not (isinstance(fam, AppliedUndef) and fam.func == lm.Family) or len(fam.args[1]) != 1 or \
+                len(fam.args[2]) != 1:
+            raise LatexMathError(f"{fam} is not a set with one condition and one bound")
+        member, (cond,), ((iv, ilo, ihi),) = fam.args
+        if cond.func.__name__ != "In" or len(cond.args) != 2 or not isinstance(cond.args[0], sympy.Symbol):
+            raise LatexMathError(f"no domain in {cond}")
+        out.append((member, (str(iv), ilo, ihi), (str(cond.args[0]), interval_of(cond.args[1]))))
     if len(out) != 2:
         raise LatexMathError(f"{len(out)} sets, not 2")
     return out
