@@ -3024,16 +3024,30 @@ def read_omitted(tex: str) -> dict:
     """The sentence "the omitted functions include the factor $\\left. \\sin\\frac{v_{1}(x,y)}{2}\\right\\vert _{y=0}
     =\\left. \\sin\\frac{y}{2}\\right\\vert _{y=0}=0$ raised to a power at least one", read: the coordinate and its
     parametrization index, the argument it equals, the points, the printed value and the power relation."""
-    t = re.sub(r"\s+", " ", tex.replace("%", " "))
-    m = re.search(r"\$\\left\. \\sin ?\\frac\{([uvw])_\{(\d)\}\\left\( x,y\\right\) \}\{2\}\\right\\vert _\{([xy])=0\}"
-                  r" ?= ?\\left\. \\sin ?\\frac\{([^{}]+)\} ?\{2\}\\right\\vert _\{([xy])=0\} ?= ?(\d+)\$ "
-                  r"raised to a power "
+    words, segs = lm.prose(tex)
+    w = re.search(r"factor \$\$ raised to a power "
                   r"(at least|greater than or equal to|greater than|at most|less than|equal to) (zero|one|two|three)\b",
-                  t)
-    if not m:
+                  words)  # the words (prose); the one segment is the formula
+    if not w or len(segs) != 1:
         raise ValueError(f"the omitted functions' factor not read in {tex[:50]!r}")
-    return {"coord": m.group(1), "index": int(m.group(2)), "points": {m.group(3), m.group(5)}, "arg": m.group(4),
-            "value": int(m.group(6)), "relation": m.group(7), "power": _NUMBER_WORDS[m.group(8)]}
+    try:
+        rel = lm.parse_relation(segs[0])
+    except LatexMathError as exc:
+        raise ValueError(f"the omitted functions' factor not read: {exc}") from None
+    if rel.lead is not None or rel.ops != ["=", "="] or rel.conditions or \
+            not all(isinstance(x, sympy.Subs) for x in rel.parts[:2]) or not rel.parts[2].is_Integer:
+        raise ValueError(f"not sin(x_k/2)|_.. = sin(../2)|_.. = value: {segs[0]!r}")
+    halves = []
+    for bar in rel.parts[:2]:  # Subs(sin(X/2), p, 0): X, the point p
+        if not isinstance(bar.expr, sympy.sin) or len(bar.variables) != 1 or bar.point != sympy.Tuple(0):
+            raise ValueError(f"not a half-angle sine at 0: {bar}")
+        halves.append((sympy.expand(2 * bar.expr.args[0]), str(bar.variables[0])))
+    (coord, p1), (arg, p2) = halves
+    if not (isinstance(coord, AppliedUndef) and coord.func.__name__ in ("u", "v", "w") and len(coord.args) == 2
+            and coord.args[0].is_Integer and coord.args[1] == sympy.Tuple(*sympy.symbols("x y"))):
+        raise ValueError(f"{coord} is not a coordinate u_k(x,y), v_k(x,y), w_k(x,y)")
+    return {"coord": coord.func.__name__, "index": int(coord.args[0]), "points": {p1, p2}, "arg": arg,
+            "value": int(rel.parts[2]), "relation": w.group(1), "power": _NUMBER_WORDS[w.group(2)]}
 
 
 def omitted_check(line_id: str, before: str, terms_line: str, param_index: int,
