@@ -3849,6 +3849,30 @@ def interval_typo() -> LineResult:
                       "parametrization_3_y_0", kind="proof", detail={"printed": inner.strip()})
 
 
+def _sign_value_sets(text: str) -> list[int]:
+    """The lower bounds of p of the Lemma's two sets of values, the last two ``$..$`` segments of ``text``
+    (:func:`latex_math.parse`): ``\\left\\{ C_{i,\\lambda}^{p}\\left( 0\\right) \\right\\} _{p\\geq0}`` and
+    ``\\left\\{ S_{j,\\mu}^{p}\\left( 0\\right) \\right\\} _{p\\geq0}``, each a set without condition over p from an
+    integer on (``ValueError`` otherwise)."""
+    segs = lm.inline_math(text)
+    p_, zero = sympy.Symbol("p"), sympy.Tuple(0)
+    want = [("C_sup", (sympy.Symbol("i"), sympy.Symbol("lambda"), p_, zero)),
+            ("S_sup", (sympy.Symbol("j"), sympy.Symbol("mu"), p_, zero))]
+    out = []
+    for seg, (name, args) in zip(segs[-2:], want):
+        fam = lm.parse(seg)
+        if not (isinstance(fam, AppliedUndef) and fam.func == lm.Family) or fam.args[1] or len(fam.args[2]) != 1:
+            raise ValueError(f"not a set of values over p: {seg!r}")
+        member, ((v, lo, hi),) = fam.args[0], fam.args[2]
+        if not (isinstance(member, AppliedUndef) and member.func.__name__ == name and member.args == args) or \
+                v != p_ or hi != sympy.oo or not lo.is_Integer:
+            raise ValueError(f"not the values {name}(..)(0) for p >= an integer: {seg!r}")
+        out.append(int(lo))
+    if len(out) != 2:
+        raise ValueError("two sets of values not read")
+    return out
+
+
 @line_check("sec1_3-lemma-hypotheses")
 def lemma_hypotheses(verbatim_text: str | None = None) -> LineResult:
     """The Lemma's hypotheses (read): "Let $i$, $j$ and $p$ be natural numbers greater than or equal to $1$" while its
@@ -3863,10 +3887,8 @@ def lemma_hypotheses(verbatim_text: str | None = None) -> LineResult:
 
     def run(text: str) -> tuple[bool, dict]:
         m = re.search(r"Let ((?:\$[a-z]\$(?:, | and )?)+) be natural numbers greater than or equal to \$(\d+)\$", text)
-        sets = re.findall(r"\\right\\\}\s*_\{p\\geq(\d+)\}", text)
-        if not m or len(sets) != 2 or len(set(sets)) != 1 or "\\lambda,\\mu>0" not in text or \
-                not re.search(r"\\left\\\{\s*C_\{i,\\lambda\}\^\{p\}\\left\(\s*0\\right\)", text) or \
-                not re.search(r"\\left\\\{\s*S_\{j,\\mu\}\^\{p\}\\left\(\s*0\\right\)", text):
+        sets = _sign_value_sets(text)
+        if not m or len(set(sets)) != 1 or "\\lambda,\\mu>0" not in text:
             raise ValueError("hypotheses not read")
         letters = re.findall(r"\$([a-z])\$", m.group(1))
         lo = int(m.group(2))
