@@ -2472,11 +2472,43 @@ def _orders_prose(t: dict[str, str]) -> None:
             not re.search(r"Cases \(\\emph\{a\}\)--\(\\emph\{c\}\) and \(\\emph\{d\}\)--\(\\emph\{f\}\)", cap):
         raise ValueError("fig-j1-caption-orders: words")
     txt = norm("sec1_3-fig-j1-text")
-    eqs = re.findall(r"\\\[ 0=L_\{([^{}]+)\}\\left\( u,v,w\\right\) ,~\\forall\\left\( u,v,w\\right\) \\in ?"
-                     r"\\Omega\^\{\\alpha\} ?\\\]", txt)
+    eqs = _zero_l_orders(txt)
     if len(eqs) != 2 or not re.search(r"under successive parametrizations \(\\ref\{parametrization_1_y_0\} ?\)--"
                                       r"\(\\ref\{parametrization_3_y_0\}\), respectively", txt):
         raise ValueError("fig-j1-text: words")
+
+
+def _zero_l_orders(tex: str) -> list[sympy.Expr]:
+    """The orders k of the displays ``\\[ 0=L_{k}\\left( u,v,w\\right) ,~\\forall\\left( u,v,w\\right)
+    \\in\\Omega^{\\alpha} \\]`` of a prose line, each display read by :func:`latex_math.parse_relation`
+    (``ValueError`` if a display is another formula)."""
+    out = []
+    uvw = sympy.Tuple(*sympy.symbols("u v w"))
+    for chunk in tex.split("\\[")[1:]:
+        rel = lm.parse_relation(chunk.split("\\]")[0])
+        lhs, rhs = (rel.parts + [None, None])[:2]
+        cond = rel.conditions[0] if len(rel.conditions) == 1 else None
+        if rel.ops != ["="] or lhs != 0 or not (isinstance(rhs, AppliedUndef) and rhs.func.__name__ == "L"
+                                                 and len(rhs.args) == 2 and rhs.args[1] == uvw) or \
+                cond is None or cond.quantifier != "forall" or cond.ops != ["in"] or \
+                cond.parts != [uvw, sympy.Symbol("Omega")]:
+            raise ValueError(f"not 0 = L_k(u,v,w) for all (u,v,w) in Omega: {chunk[:50]!r}")
+        out.append(rhs.args[0])
+    return out
+
+
+def _r_values(tex: str) -> list[sympy.Expr]:
+    """The values X of the ``$r=X$`` segments of a prose line (:func:`latex_math.parse_relation`)."""
+    r_ = sympy.Symbol("r")
+    out = []
+    for seg in lm.inline_math(tex):
+        try:
+            rel = lm.parse_relation(seg)
+        except LatexMathError:
+            continue
+        if rel.ops == ["="] and rel.parts[0] == r_ and not rel.conditions:
+            out.append(rel.parts[1])
+    return out
 
 
 @line_check("sec1_3-elimination-orders")
@@ -2495,10 +2527,14 @@ def elimination_orders(override: dict[str, str] | None = None) -> LineResult:
             if len({(x.start, x.stop) for x in listed_orders(t[k], "r", n=5)}) != 1:
                 raise ValueError(f"{k}: listings differ")
         _orders_prose(t)
-        caption_r = re.findall(r"\$r=([^$]+)\$", t["sec1_3-fig-j1-caption-orders"])
-        head = t["sec1_3-fig-j1-text"].split("order partial derivatives")[0]
-        text_orders = re.findall(r"\b(first)\b|\$\\left\(\s*([^$]+?)\s*\\right\)\s*\$th", head)
-        text_l = re.findall(r"0=L_\{([^{}]+)\}", t["sec1_3-fig-j1-text"])
+        caption_r = _r_values(t["sec1_3-fig-j1-caption-orders"])
+        words, segs = lm.prose(t["sec1_3-fig-j1-text"].split("order partial derivatives")[0])
+        ordinals = re.findall(r"\b(first)\b|\$\$th", words)  # the words; each $$ is the next segment, parsed
+        if ordinals.count("") != len(segs):
+            raise ValueError("fig-j1-text: orders")
+        it = iter(segs)
+        text_orders = [("first", None) if o else ("", lm.parse(next(it))) for o in ordinals]
+        text_l = _zero_l_orders(t["sec1_3-fig-j1-text"])
     except ValueError as exc:
         return LineResult(False, how="the orders read from the transcriptions", detail={"unread": str(exc)})
     bad = []
