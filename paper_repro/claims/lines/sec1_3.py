@@ -3867,22 +3867,19 @@ def interval_typo() -> LineResult:
     it is [0, alpha], the range of x on the edge y = 0 of parametrization_3_y_0 (read from its transcription)."""
 
     tex = _transcribed(["sec1_3-r0-p3-interval"])["sec1_3-r0-p3-interval"]
-    m = re.fullmatch(r"\s*x\s*\\in\s*\\left\[(.*)\\right\]\s*", tex)
-
-    def holds(inner: str) -> bool:
-        parts = [p.strip() for p in inner.split(",")]
+    def holds(text: str) -> bool:  # x in [a, b] (parse_relation), a closed interval with the printed range's ends
         try:
-            return len(parts) == 2 and [linear_form(p) for p in parts] == \
+            rel = lm.parse_relation(text)
+            if rel.ops != ["in"] or rel.parts[0] != sympy.Symbol("x") or rel.conditions:
+                return False
+            lo_c, lo, hi, hi_c = interval_of(rel.parts[1])
+            return lo_c and hi_c and [linear_form(lo), linear_form(hi)] == \
                 [linear_form(q) for q in _params()["parametrization_3_y_0"][3]["x"]]
-        except ValueError:
+        except ValueError:  # LatexMathError included: the thin space leaves no interval to read
             return False
-    if not m:
-        return LineResult(False, None, how="the interval read from the transcription", kind="proof",
-                          detail={"unread": tex[:40]})
-    inner = m.group(1)
-    return LineResult(holds(inner), holds(inner.replace("\\,", ",")) if "\\," in inner else None,
-                      how="the printed interval read into endpoints, against the printed range of x of "
-                      "parametrization_3_y_0", kind="proof", detail={"printed": inner.strip()})
+    return LineResult(holds(tex), holds(tex.replace("\\,", ",")) if "\\," in tex else None,
+                      how="the printed interval read by parse_relation, against the printed range of x of "
+                      "parametrization_3_y_0", kind="proof", detail={"printed": tex.strip()})
 
 
 def _sign_value_sets(text: str) -> list[int]:
