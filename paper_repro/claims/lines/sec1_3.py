@@ -551,7 +551,7 @@ def united_dedupe(verbatim_text: str | None = None) -> LineResult:
     return LineResult(ok, how=how, kind="exhaustive", detail={"n_max": 20, "failing_n": bad[:3]})
 
 
-_LEVELS = re.compile(r"\$n\\geq\s*(\d+)\$\s*levels\s*\(numbered from \$([^$]+)\$ to \$([^$]+)\$\)")
+_LEVELS_WORDS = "weighted oriented\\ graph of $$ levels (numbered from $$ to $$)"
 
 
 @line_check("sec1_3-levels")
@@ -563,10 +563,14 @@ def levels() -> LineResult:
     boundary and n at the centroid; and the printed least order is the least n with a level."""
     how = "levels and boundary vanishing orders of the labels of T_{2n}, n = 1..12, against the printed numbering"
     try:
-        m = _LEVELS.search(verbatim("sec1_3-graph-levels"))
-        if not m:
+        words, segs = lm.prose(verbatim("sec1_3-graph-levels"))
+        if words != _LEVELS_WORDS or len(segs) != 3:
             raise LatexMathError("no '$n\\geq k$ levels (numbered from $a$ to $b$)'")
-        least, lo, hi = int(m.group(1)), lm.parse(m.group(2)), lm.parse(m.group(3))
+        at_least = lm.parse_relation(segs[0])  # n >= k
+        if at_least.ops != [">="] or at_least.parts[0] != sympy.Symbol("n") or not at_least.parts[1].is_Integer or \
+                at_least.conditions:
+            raise LatexMathError(f"not n >= an integer: {segs[0]!r}")
+        least, lo, hi = int(at_least.parts[1]), lm.parse(segs[1]), lm.parse(segs[2])
         named = re.search(r"We refer to the index \$(\w)\$ of these functions as levels", verbatim("sec1_3-levels-j"))
         ends = re.search(r"shrinking from the (\w+) to their common (\w+)", verbatim("sec1_3-levels-j"))
         if not named or not ends:
