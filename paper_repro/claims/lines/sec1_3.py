@@ -1934,7 +1934,10 @@ def param_ranges() -> LineResult:
     tex = _transcribed(["sec1_3-chain-ranges"])["sec1_3-chain-ranges"]
     try:
         rng = {"x": interval(tex, "x"), "y": interval(tex, "y")}
-        if not re.search(r"\\forall|for all", tex) or not re.search(r"r\\in%?\s*\\mathbb\{N\}", tex):
+        words, segs = lm.prose(tex)
+        natural = [seg for seg in segs if lm.parse_relation(seg).parts == [sympy.Symbol("r"), sympy.Symbol("N_bb")]
+                   and lm.parse_relation(seg).ops == ["in"]]
+        if words != "for all $$,$$ and order $$." or len(segs) != 3 or len(natural) != 1:
             raise ValueError("no 'for all ... and order r in N'")
         ok = all(param_onto(p, ranges=rng) for p in STEP_PARAMS)
     except ValueError as exc:
