@@ -436,3 +436,21 @@ def test_the_memo_does_not_answer_summands_or_untagged():
     parse_relation(tex)  # fills the memo with the evaluated, reordered sum
     assert [str(t) for t in summands(tex)[1]] == ["b", "-a", "c(6, 4)"]
     assert [str(t) for t in untagged(tex)] == ["c(6, 4)"]
+
+
+def test_set_with_a_lower_bound_only():
+    """``\\left\\{ X\\right\\} _{p\\geq0}`` (Lemma sign_sin's sets of values): the one bound p = 0, 1, 2, ..., read
+    by hand as (p, 0, oo); the member keeps its superscript p (``C_sup``); another relation in the bound is refused."""
+    from sympy import Function, Symbol, Tuple, oo
+
+    from paper_repro.printed.latex_math import Family, LatexMathError, parse
+
+    i, p, n, lam = Symbol("i"), Symbol("p"), Symbol("n"), Symbol("lambda")
+    got = parse(r"\left\{ C_{i,\lambda}^{p}\left( 0\right) \right\} _{p\geq0}")
+    assert got == Family(Function("C_sup")(i, lam, p, Tuple(0)), Tuple(), Tuple(Tuple(p, 0, oo)))
+    got = parse(r"\left\{ S_{j,\mu}^{p}\left( 0\right) \right\} _{p\geq 2n-1}")
+    assert got.args[2] == Tuple(Tuple(p, 2 * n - 1, oo))
+    with pytest.raises(LatexMathError):
+        parse(r"\left\{ C_{i}\right\} _{p\leq0}")
+    with pytest.raises(LatexMathError):
+        parse(r"\left\{ C_{i}\right\} _{p\geq}")

@@ -356,6 +356,7 @@ func: FUNC atom                       -> func
         | LDOT expr RVERT "_" "{" NAMEVAR "=" expr "}" -> evalbar
         | LSET setbody RSET           -> family
         | LSET setbody RSET "_" "{" bindings "}" "^" "{" exprlist "}" -> family_bounded
+        | LSET setbody RSET "_" "{" NAMEVAR GEQ expr "}"  -> family_from
         | LSET ARRAY RDOT             -> cases
         | ARRAY                       -> array
         | NAMED                       -> named
@@ -800,6 +801,13 @@ class _Build(Transformer):
             raise LatexMathError(f"{len(binds)} lower bounds but {len(his)} upper bounds")
         m = members[0] if len(members) == 1 else sympy.Tuple(*members)
         bounds = sympy.Tuple(*[sympy.Tuple(v, lo, hi) for (v, lo), hi in zip(binds, his)])
+        return Family(_as_basic(m), sympy.Tuple(*[_as_basic(x) for x in conds]), bounds)
+
+    def family_from(self, c):
+        r"""``\left\{ X\right\} _{p\geq0}``: the one bound ``(p, 0, oo)`` (every p from the lower bound on)."""
+        members, conds = c[1]
+        m = members[0] if len(members) == 1 else sympy.Tuple(*members)
+        bounds = sympy.Tuple(sympy.Tuple(sympy.Symbol(_name(c[3])), c[5], sympy.oo))
         return Family(_as_basic(m), sympy.Tuple(*[_as_basic(x) for x in conds]), bounds)
 
     def setbody(self, c):

@@ -10,6 +10,11 @@ EQUIVALENT: dict[str, str] = {}
 
 # -- Section 3 (sec:linear_independence, source lines >= 462; worktree sec3) ------------------------------------
 EQUIVALENT.update({
+    'sec1_3-delta-sum:swap:d10546374f': (
+        'i <-> j swapped everywhere in delta_n = 1+3 sum_{j=0}^{n-1} sum_{i=j}^{2n-1-j} 1: a consistent renaming '
+        'of the two summation variables (bound variables), the same sum (regexfold3: the regular expression '
+        'demanded the literal names j, i; the parsed sum is evaluated)'
+    ),
     'sec1_3-L-R-row:sign:939eec8c60': (
         'the outer bound of a double sum moved from n-1 to n+1: for j >= n the inner range i = j..2n-1-j is '
         'empty, so the sum names the same functions (constants) -- the line states the same'

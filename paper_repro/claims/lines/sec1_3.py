@@ -37,6 +37,7 @@ from paper_repro.core.domain import rational_alpha
 from paper_repro.core.labels import BasisLabel, compose, delta, exponents, full_system, index_of, united_system
 from paper_repro.core.univariate import c_const, c_numerator, c_numerator_by_expansion
 from paper_repro.printed import latex_math as lm
+from paper_repro.printed import parsed
 from paper_repro.printed import symmetry as printed_sym
 from paper_repro.printed.latex_math import LatexMathError
 from paper_repro.printed.lines import line as transcribed_line
@@ -63,6 +64,20 @@ def relation(tex: str) -> list[sympy.Expr]:
     if rel.lead not in (None, "=") or any(op != "=" for op in rel.ops) or rel.conditions:
         raise LatexMathError(f"not an equality chain: {rel.lead} {rel.ops} {len(rel.conditions)} clauses")
     return rel.parts
+
+
+def equation_over(tex: str, var: str) -> tuple[list[sympy.Expr], sympy.Expr, sympy.Expr]:
+    """The parts of an equality chain printed with one trailing listed range ``var=a,a+1,\\ldots,c`` and nothing
+    else, and the range's ``(a, c)`` (:func:`listed`), by one :func:`latex_math.parse_relation` of the line.
+
+    >>> equation_over(r"c_{2n,i}^{\\alpha}=c_{2n,2n-i}^{\\alpha},~i=0,1,\\ldots,n.", "i")
+    ([c(2*n, i), c(2*n, -i + 2*n)], 0, n)
+    """
+    rel = lm.parse_relation(tex)
+    if rel.lead not in (None, "=") or not rel.ops or any(op != "=" for op in rel.ops) or len(rel.conditions) != 1:
+        raise LatexMathError(f"not an equality chain with one listed range: {rel.lead} {rel.ops} "
+                             f"{len(rel.conditions)} clauses")
+    return rel.parts, *listed(rel, var)
 
 
 def linear_form(expr: str | sympy.Expr) -> tuple[int, int, int]:
@@ -170,13 +185,18 @@ def _params() -> dict[str, tuple]:
     out = {}
     for label, (lid, chain) in PARAM_LINES.items():
         maps, ranges = read_parametrization(_transcribed([lid])[lid])
-        m = re.search(r"\\frac\{\\partial\^\{r\}\}\{\\partial\s*([xy])\^\{r\}\}", _transcribed([chain])[chain])
-        if not m:
+        try:  # the left side D(L(..), (y, r)) of the chain rule
+            lhs = lm.parse_relation(_transcribed([chain])[chain]).parts[0]
+        except LatexMathError as exc:
+            raise ValueError(f"no running parameter in {chain}: {exc}") from None
+        if not (isinstance(lhs, AppliedUndef) and lhs.func.__name__ == "D" and len(lhs.args) == 2) or \
+                str(lhs.args[1][0]) not in ("x", "y") or lhs.args[1][1] != sympy.Symbol("r"):
             raise ValueError(f"no running parameter d^r/dx^r or d^r/dy^r in {chain}")
+        run = str(lhs.args[1][0])
 
         def fmap(a, x, y, maps=maps):
             return tuple(p * a + q * x + s * y for p, q, s in maps)
-        out[label] = (fmap, m.group(1), maps, ranges)
+        out[label] = (fmap, run, maps, ranges)
     return out
 
 
@@ -337,26 +357,40 @@ def _set_result(printed, computed, how: str, kind: str = "exact-evidence", corre
 # Sections 1-2
 # ==============================================================================================================
 # -- Sections 1-2: readers of the transcriptions (issue 37) ------------------------------------------------------
-_INTERVAL = r"\s*\\in\s*\\left\s*([(\[])\s*([^,]+?)\s*,\s*([^,]+?)\s*\\right\s*([)\]])"
+def interval_of(x) -> tuple[bool, sympy.Expr, sympy.Expr, bool]:
+    """``(lo closed, lo, hi, hi closed)`` of a parsed interval: ``Interval`` (``\\left[ a,b\\right]``, ``(a,b]``, ..)
+    or the pair ``Tuple(a, b)`` that ``\\left( a,b\\right)`` after ``\\in`` is read as (the open interval);
+    ``LatexMathError`` for anything else (an empty or one-point interval included)."""
+    if isinstance(x, sympy.Interval):
+        return not x.left_open, x.start, x.end, not x.right_open
+    if isinstance(x, sympy.Tuple) and len(x) == 2:
+        return False, x[0], x[1], False
+    raise LatexMathError(f"{x} is not an interval")
 
 
 def read_interval(tex: str, var: str) -> tuple[bool, sympy.Expr, sympy.Expr, bool]:
-    """``(lo closed, lo, hi, hi closed)`` of the printed ``var \\in \\left( lo,hi \\right)`` (``var`` a regex)."""
-    m = re.search(var + _INTERVAL, tex)
-    if not m:
-        raise LatexMathError(f"no interval for {var} in {tex[:60]!r}")
-    return m.group(1) == "[", lm.parse(m.group(2)), lm.parse(m.group(3)), m.group(4) == "]"
+    """``(lo closed, lo, hi, hi closed)`` of the printed ``var \\in \\left( lo,hi \\right)`` (``var`` a name such as
+    ``alpha``): the one relation or clause ``var in ..`` of the line's ``$..$`` segments (or of the line), read by
+    :func:`latex_math.parse_relation` and :func:`interval_of`."""
+    v = sympy.Symbol(var)
+    found = []
+    for seg in lm.inline_math(tex) or [tex]:
+        rel = lm.parse_relation(seg)
+        found += [r for r in (rel, *rel.conditions) if r.ops == ["in"] and len(r.parts) == 2 and r.parts[0] == v]
+    if len(found) != 1:
+        raise LatexMathError(f"{len(found)} intervals for {var} in {tex[:60]!r}")
+    return interval_of(found[0].parts[1])
 
 
-def listed(tex: str, var: str) -> tuple[sympy.Expr, sympy.Expr]:
+def listed(tex: str | lm.Relation, var: str) -> tuple[sympy.Expr, sympy.Expr]:
     """(first, last) of the printed ``var=a,b,\\ldots,c`` whose step b - a must be 1 (every index between): the
     clause ``var in (a, b, ldots, c)`` of :func:`paper_repro.printed.latex_math.parse_relation` (the relation itself
-    or one of its trailing clauses).
+    or one of its trailing clauses; ``tex`` a text or a parsed relation).
 
     >>> listed(r"i=0,1,\\ldots,2n", "i")
     (0, 2*n)
     """
-    rel = lm.parse_relation(tex)
+    rel = tex if isinstance(tex, lm.Relation) else lm.parse_relation(tex)
     v = sympy.Symbol(var)
     found = [r for r in (rel, *rel.conditions) if r.ops == ["in"] and r.parts[0] == v
              and isinstance(r.parts[1], sympy.Tuple)]
@@ -416,7 +450,7 @@ def alpha_range() -> LineResult:
     with mpmath.workdps(40):
         for ln in lines_of("sec1_3-alpha-range"):
             try:
-                lo_c, lo, hi, hi_c = read_interval(ln.verbatim, r"\\alpha")
+                lo_c, lo, hi, hi_c = read_interval(ln.verbatim, "alpha")
                 lo_v, hi_v = num(lo, {}), num(hi, {})
             except (LatexMathError, ValueError) as exc:
                 return _unread(how, exc, "exhaustive")
@@ -517,7 +551,7 @@ def united_dedupe(verbatim_text: str | None = None) -> LineResult:
     return LineResult(ok, how=how, kind="exhaustive", detail={"n_max": 20, "failing_n": bad[:3]})
 
 
-_LEVELS = re.compile(r"\$n\\geq\s*(\d+)\$\s*levels\s*\(numbered from \$([^$]+)\$ to \$([^$]+)\$\)")
+_LEVELS_WORDS = "weighted oriented\\ graph of $$ levels (numbered from $$ to $$)"
 
 
 @line_check("sec1_3-levels")
@@ -529,10 +563,14 @@ def levels() -> LineResult:
     boundary and n at the centroid; and the printed least order is the least n with a level."""
     how = "levels and boundary vanishing orders of the labels of T_{2n}, n = 1..12, against the printed numbering"
     try:
-        m = _LEVELS.search(verbatim("sec1_3-graph-levels"))
-        if not m:
+        words, segs = lm.prose(verbatim("sec1_3-graph-levels"))
+        if words != _LEVELS_WORDS or len(segs) != 3:
             raise LatexMathError("no '$n\\geq k$ levels (numbered from $a$ to $b$)'")
-        least, lo, hi = int(m.group(1)), lm.parse(m.group(2)), lm.parse(m.group(3))
+        at_least = lm.parse_relation(segs[0])  # n >= k
+        if at_least.ops != [">="] or at_least.parts[0] != sympy.Symbol("n") or not at_least.parts[1].is_Integer or \
+                at_least.conditions:
+            raise LatexMathError(f"not n >= an integer: {segs[0]!r}")
+        least, lo, hi = int(at_least.parts[1]), lm.parse(segs[1]), lm.parse(segs[2])
         named = re.search(r"We refer to the index \$(\w)\$ of these functions as levels", verbatim("sec1_3-levels-j"))
         ends = re.search(r"shrinking from the (\w+) to their common (\w+)", verbatim("sec1_3-levels-j"))
         if not named or not ends:
@@ -733,9 +771,6 @@ def order_n3() -> LineResult:
     return LineResult(ok, how=how, detail={"order": order, "functions": len(labs)})
 
 
-_RESTRICT = re.compile(r"\\left\.\s*T_\{([^{}]+)\}\^\{\\alpha\}\s*\\right\\vert\s*_\{([uvw])=([^{}]+)\}")
-
-
 def _edge_points() -> list[tuple[fmpq, tuple[fmpq, fmpq], tuple[fmpq, fmpq]]]:
     """(tan(alpha/4), half angles of alpha, half angles of x) for exact points x in [0, alpha] (ends included)."""
     out = []
@@ -753,25 +788,26 @@ def _boundary(line_id: str) -> LineResult:
     how = "exact values on the edge of the restricted T_{2n} (package labels) and of the printed members, n = 1..6"
     tex = verbatim(line_id)
     try:
-        m = _RESTRICT.search(tex)
-        found = printed_sym.set_builders_1(tex)
-        if not m or not found:
+        rel = lm.parse_relation(tex)  # Subs(T(2*n), v, 0) = Family(A(2*n, 2*n - i, (u,))/c(..), (In(u, ..),), (..))
+        if len(rel.parts) != 2 or rel.ops != ["="] or rel.conditions or not isinstance(rel.parts[0], sympy.Subs):
             raise LatexMathError("no restriction T|_{x=a} = {..}_{i=..}^{..}")
-        t_order, var, value = lm.parse(m.group(1)), m.group(2), lm.parse(m.group(3))
-        body, (iv, ilo, ihi) = found
-        between = tex[m.end():tex.index(body)]
-        if lm.clean(between).replace("\\{", "").strip() != "=":
-            raise LatexMathError(f"the restriction and the set are not equated: {between!r}")
-        member_tex, domain = body.split(":", 1)
-        member = lm.parse(member_tex)
-        arg = read_interval(domain, "")  # [0, alpha]
-        dom_var = re.match(r"\s*([uvw])\s*\\in", domain)
+        restricted, fam = rel.parts
+        (t_fn,), (var_s,), (value,) = [restricted.expr], restricted.variables, restricted.point
+        if not isinstance(t_fn, AppliedUndef) or t_fn.func.__name__ != "T" or len(t_fn.args) != 1 or \
+                str(var_s) not in printed_sym.VARS:
+            raise LatexMathError(f"not a restriction of T_{{..}}: {restricted}")
+        t_order, var = t_fn.args[0], str(var_s)
+        if not (isinstance(fam, AppliedUndef) and fam.func == lm.Family) or len(fam.args[1]) != 1 or \
+                len(fam.args[2]) != 1:
+            raise LatexMathError(f"the restriction is not equated to a set with one condition and one bound: {fam}")
+        member, (cond,), ((iv, ilo, ihi),) = fam.args
+        dom_var, dom = cond.args if cond.func.__name__ == "In" and len(cond.args) == 2 else (None, None)
         a_terms = [f for f in member.atoms(AppliedUndef) if f.func.__name__ == "A"]
-        if len(a_terms) != 1 or not dom_var or len(a_terms[0].args[2]) != 1:
+        if len(a_terms) != 1 or not isinstance(dom_var, sympy.Symbol) or len(a_terms[0].args[2]) != 1:
             raise LatexMathError("the member is not one A_{2n,..}(x)/c")
         x = str(a_terms[0].args[2][0])
-        if x != dom_var.group(1) or x == var or arg != (True, sympy.Integer(0), sympy.Symbol("alpha"), True):
-            raise LatexMathError(f"argument {x} on {arg} is not a remaining variable on [0, alpha]")
+        if x != str(dom_var) or x == var or dom != sympy.Interval(0, sympy.Symbol("alpha")):
+            raise LatexMathError(f"argument {x} on {dom} is not a remaining variable on [0, alpha]")
     except (LatexMathError, ValueError) as exc:
         return _unread(how, exc, "exhaustive")
     rest = [k for k in range(3) if k != printed_sym.VARS.index(var)]
@@ -782,7 +818,7 @@ def _boundary(line_id: str) -> LineResult:
             return LineResult(False, how=how, kind="exhaustive", detail={"order": str(t_order)})
         try:
             zero = _env_int(value, n=n) == 0
-            idx = range(_env_int(lm.parse(ilo), n=n), _env_int(lm.parse(ihi), n=n) + 1)
+            idx = range(_env_int(ilo, n=n), _env_int(ihi, n=n) + 1)
         except (LatexMathError, ValueError) as exc:
             return _unread(how, exc, "exhaustive")
         for _at, ha, hx in _edge_points():
@@ -890,9 +926,7 @@ def c_formula() -> LineResult:
         if not re.search(r"\bnormalizing\b", tex):
             raise LatexMathError("the coefficients are not said to normalize")
         display = tex.split("\\[", 1)[1].split("\\]", 1)[0]
-        formula, tail = re.split(r",\s*~?\s*(?=i\s*=)", display, maxsplit=1)
-        lhs, rhs = relation(formula)
-        lo, hi = listed(tail, "i")
+        (lhs, rhs), lo, hi = equation_over(display, "i")
         if not (isinstance(lhs, AppliedUndef) and lhs.func.__name__ == "c" and len(lhs.args) == 2):
             raise LatexMathError(f"left side {lhs} is not c_{{2n,i}}")
         if sympy.simplify(lhs.args[0] - 2 * sympy.Symbol("n")) != 0 or lhs.args[1] != sympy.Symbol("i"):
@@ -936,10 +970,7 @@ def c_symmetry() -> LineResult:
     tex = verbatim("sec1_3-c-symmetry")
     how = "the parsed relation and range against the expansion's coefficients, n = 1..30"
     try:
-        body = tex.split("\\begin{equation}", 1)[-1].split("\\label", 1)[0]
-        formula, tail = re.split(r",\s*~?\s*(?=i\s*=)", body, maxsplit=1)
-        lhs, rhs = relation(formula)
-        lo, hi = listed(tail, "i")
+        (lhs, rhs), lo, hi = equation_over(tex, "i")
         for side in (lhs, rhs):
             if not (isinstance(side, AppliedUndef) and side.func.__name__ == "c" and len(side.args) == 2):
                 raise LatexMathError(f"{side} is not a c_{{..,..}}")
@@ -958,10 +989,6 @@ def c_symmetry() -> LineResult:
             covered |= {i, 2 * n - i}
         ok &= covered | {n} == set(range(2 * n + 1))  # i = n is its own mirror: c_{2n,n} = c_{2n,n} says nothing
     return LineResult(ok, how=how, kind="exhaustive", detail={"n_max": 30})
-
-
-_TRIPLE = re.compile(r"\\right\\\}\s*_\{\s*(\w)=([^,{}]+),\s*(\w)=([^,{}]+),\s*(\w)=([^,{}]+)\}\s*\^\{([^,{}]+),"
-                     r"([^,{}]+),([^,{}]+)\}")
 
 
 def _fourier_rows(members: list[sympy.Expr], names_: tuple[str, ...], ranges, pts) -> list[list[fmpq]]:
@@ -1004,41 +1031,46 @@ def fourier_dimension() -> LineResult:
         sys_tex = verbatim("sec1_3-fourier-system")
         if "largest linearly independent subset" not in sys_tex:
             raise LatexMathError("V_n is not the largest linearly independent subset")
-        m = _TRIPLE.search(sys_tex)
-        body = re.search(r"\\left\\\{(.*)\\right\\\}", sys_tex, re.S)
-        if not m or not body:
+        rel = lm.parse_relation(sys_tex)  # the display after the words
+        fam = rel.parts[0] if len(rel.parts) == 1 and not rel.ops and not rel.conditions else None
+        if not (isinstance(fam, sympy.Function) and fam.func == lm.Family) or len(fam.args[2]) != 3:
             raise LatexMathError("no set {..}_{r=..,g=..,b=..}^{..,..,..}")
-        names_, los, his = m.group(1, 3, 5), m.group(2, 4, 6), m.group(7, 8, 9)
-        members_tex, domain = body.group(1).split(":", 1)
-        if "\\Omega^{\\alpha}" not in domain or not re.search(r"\\left\(\s*u,v,w\s*\\right\)\s*\\in", domain):
+        member, conds, bounds = fam.args
+        names_ = tuple(str(v) for v, _lo, _hi in bounds)
+        los, his = [lo for _v, lo, _hi in bounds], [hi for _v, _lo, hi in bounds]
+        uvw = sympy.symbols("u v w")
+        if [str(c) for c in conds] != ["In((u, v, w), Omega)"]:  # the tag ^{\alpha} dropped, another refused
             raise LatexMathError("the domain is not (u,v,w) in Omega^alpha")
-        members = [lm.parse(t.group()) for t in re.finditer(r"\\(?:cos|sin)\\left\((.*?)\\right\)", members_tex)]
-        if not members or len(members) != members_tex.count(",") + 1:
-            raise LatexMathError(f"members of {members_tex!r} not read")
+        members = list(member) if isinstance(member, sympy.Tuple) else [member]
         # the trivariate extension of the canonical basis {cos(it), sin(it)}: a cosine and a sine of one argument
         # r u + g v + b w, each index with its own variable
+        if not all(isinstance(f, (sympy.sin, sympy.cos)) for f in members):
+            raise LatexMathError(f"members {members} are not cosines and sines")
         args = {f.args[0] for f in members}
         kinds = sorted(type(f).__name__ for f in members)
-        uvw = sympy.symbols("u v w")
         if len(args) != 1 or kinds != ["cos", "sin"]:
             raise LatexMathError("the members are not the cosine and the sine of one argument")
         coeffs = [sympy.Poly(next(iter(args)), *uvw).coeff_monomial(x) for x in uvw]
-        if sorted(str(c) for c in coeffs) != sorted(m.group(1, 3, 5)):
+        if sorted(str(c) for c in coeffs) != sorted(names_):
             raise LatexMathError(f"the argument {args} does not give each index its own variable")
-        dim = re.search(r"common dimension \$\\delta_\{n\}=(.+?)\$", verbatim("sec1_3-span-coincide-dim"))
-        same = re.search(r"spans the same vector space of functions as the constrained trivariate extension of the "
-                         r"canonical basis of truncated Fourier series of order \$([^$]+)\$",
-                         verbatim("sec1_3-abstract-same-span"))
-        if not dim or not same:
+        dim_words, dim_segs = lm.prose(verbatim("sec1_3-span-coincide-dim"))
+        same_words, same_segs = lm.prose(verbatim("sec1_3-abstract-same-span"))
+        if dim_words != "along with the determination of the common dimension $$ of these vector spaces" or \
+                same_words != ("that spans the same vector space of functions as the constrained trivariate extension "
+                               "of the canonical basis of truncated Fourier series of order $$ over") or \
+                len(dim_segs) != 1 or len(same_segs) != 1:
             raise LatexMathError("the common dimension or the abstract's order is not read")
-        delta_printed, order = lm.parse(dim.group(1)), lm.parse(same.group(1))
+        dim = lm.parse_relation(dim_segs[0])
+        if dim.ops != ["="] or str(dim.parts[0]) != "delta(n)" or dim.conditions:
+            raise LatexMathError(f"not delta_n = ..: {dim_segs[0]!r}")
+        delta_printed, order = dim.parts[1], lm.parse(same_segs[0])
     except (LatexMathError, ValueError) as exc:
         return _unread(how, exc)
     detail, ok = {}, True
     for n in (1, 2, 3):
         pts = _domain_points(ALPHA_TS[0], delta(n) + 12)
         try:
-            ranges = [(_env_int(lm.parse(a), n=n), _env_int(lm.parse(b), n=n) + 1) for a, b in zip(los, his)]
+            ranges = [(_env_int(a, n=n), _env_int(b, n=n) + 1) for a, b in zip(los, his)]
             rows_f = _fourier_rows(members, names_, ranges, pts)
             k = _env_int(order, n=n)
             rows_a = _fourier_rows(members, names_, [(0, k + 1)] * 3, pts)
@@ -1066,7 +1098,7 @@ def univariate_span() -> LineResult:
     try:
         left, right = _single_sets(tex)
         (lb, (lv, llo, lhi), ldom), (rb, (rv, rlo, rhi), rdom) = left, right
-        lhs, member = lm.parse(lb), lm.parse(rb)
+        lhs, member = lb, rb
         if (lv, llo, lhi) != (rv, rlo, rhi) or ldom != rdom or ldom[:2] != ("t", (True, 0, sympy.Symbol("alpha"),
                                                                                    True)):
             raise LatexMathError("the two sides are not on one index set and one domain t in [0, alpha]")
@@ -1081,7 +1113,7 @@ def univariate_span() -> LineResult:
         at = ALPHA_TS[0]
         ha = _half(at)
         try:
-            idx = range(_env_int(lm.parse(rlo), n=n), _env_int(lm.parse(rhi), n=n) + 1)
+            idx = range(_env_int(rlo, n=n), _env_int(rhi, n=n) + 1)
             if _env_int(lhs.args[0], n=n) != 2 * n:
                 raise LatexMathError("A of another order")
         except (LatexMathError, ValueError) as exc:
@@ -1106,15 +1138,22 @@ def univariate_span() -> LineResult:
 
 
 def _single_sets(tex: str):
-    """The two set-builders ``\\left\\{ body : x\\in\\left[ a,b\\right] \\right\\} _{i=lo}^{hi}`` of an equality:
-    [(body, (i, lo, hi), (x, interval)), ...]."""
+    """The two set-builders ``\\left\\{ body : x\\in\\left[ a,b\\right] \\right\\} _{i=lo}^{hi}`` of an equality
+    (:func:`latex_math.parse_relation`: two ``Family`` parts, each with one condition and one bound):
+    [(member, (i, lo, hi), (x, interval)), ...], the member and the bounds parsed, ``interval`` as
+    :func:`interval_of`."""
+    rel = lm.parse_relation(tex)
+    if rel.ops != ["="] or rel.conditions:
+        raise LatexMathError(f"not one equality of two sets: {rel.ops}")
     out = []
-    for body, iset in printed_sym.set_builders_1_all(tex):
-        member, domain = body.split(":", 1)
-        dv = re.match(r"\s*(\w)\s*\\in", domain)
-        if not dv:
-            raise LatexMathError(f"no domain in {domain!r}")
-        out.append((member, iset, (dv.group(1), read_interval(domain, ""))))
+    for fam in rel.parts:
+        if not (isinstance(fam, AppliedUndef) and fam.func == lm.Family) or len(fam.args[1]) != 1 or \
+                len(fam.args[2]) != 1:
+            raise LatexMathError(f"{fam} is not a set with one condition and one bound")
+        member, (cond,), ((iv, ilo, ihi),) = fam.args
+        if cond.func.__name__ != "In" or len(cond.args) != 2 or not isinstance(cond.args[0], sympy.Symbol):
+            raise LatexMathError(f"no domain in {cond}")
+        out.append((member, (str(iv), ilo, ihi), (str(cond.args[0]), interval_of(cond.args[1]))))
     if len(out) != 2:
         raise LatexMathError(f"{len(out)} sets, not 2")
     return out
@@ -1156,24 +1195,31 @@ def _s_samples(lo, hi) -> list:
     return [lo, hi, lo + (hi - lo) / 3, lo + 5 * (hi - lo) / 7]
 
 
-def _quantified(tex: str) -> tuple[str, list]:
-    """(quantifier, sample values of s) of the printed ``,~\\forall s\\in\\left[ a,b\\right]``; the interval must
-    be the one that the reparametrization t = alpha s of Proposition Bernstein maps onto the domain [0, alpha] of
-    t (eq. univariate_basis): closed, alpha a = 0 and alpha b = alpha."""
-    m = re.search(r"\\(forall|exists)\s*s\s*\\in", tex)
-    if not m:
+def _quantified(rel: lm.Relation) -> tuple[str, list]:
+    """(quantifier, sample values of s) of the printed clause ``,~\\forall s\\in\\left[ a,b\\right]`` of a parsed
+    relation (:func:`latex_math.parse_relation`, the one clause over s with a quantifier); the interval must be the
+    one that the reparametrization t = alpha s of Proposition Bernstein maps onto the domain [0, alpha] of t
+    (eq. univariate_basis): closed, alpha a = 0 and alpha b = alpha."""
+    found = [c for c in rel.conditions if c.quantifier in ("forall", "exists") and c.ops == ["in"]
+             and c.parts[0] == sympy.Symbol("s")]
+    if len(found) != 1:
         raise LatexMathError("no quantifier over s")
-    s_interval(tex[m.start():], r"\\(?:forall|exists)\s*s")
-    return m.group(1), _s_samples(0, 1)
+    s_interval(found[0].parts[1])
+    return found[0].quantifier, _s_samples(0, 1)
 
 
-def s_interval(tex: str, var: str) -> None:
-    """Refuse an interval of s that t = alpha s does not map onto [0, alpha]."""
-    lo_c, lo, hi, hi_c = read_interval(tex, var)
+def s_interval(iv) -> None:
+    """Refuse an interval of s (parsed) that t = alpha s does not map onto [0, alpha]."""
+    if not isinstance(iv, sympy.Interval):
+        raise LatexMathError(f"s in {iv}: not an interval")
     alpha = sympy.Symbol("alpha")
-    if not (lo_c and hi_c) or sympy.simplify(alpha * lo) != 0 or sympy.simplify(alpha * hi - alpha) != 0:
-        raise LatexMathError(f"s in {'[' if lo_c else '('}{lo}, {hi}{']' if hi_c else ')'}: t = alpha s does not cover "
-                       f"[0, alpha]")
+    if iv.left_open or iv.right_open or sympy.simplify(alpha * iv.start) != 0 or \
+            sympy.simplify(alpha * iv.end - alpha) != 0:
+        raise LatexMathError(f"s in {iv}: t = alpha s does not cover [0, alpha]")
+
+
+_LIMIT_WORDS = ("If one uses the linear reparametrization $$, then basis functions (\\ref{univariate_basis}) of order "
+                "$$ converge to the Bernstein polynomials of degree $$ when $$, i.e.,%")
 
 
 @line_check("sec1_3-bernstein-limit")
@@ -1187,22 +1233,26 @@ def bernstein_limit() -> LineResult:
     tex = verbatim("sec1_3-bernstein-limit")
     how = "60-digit values at alpha = 1e-15 of the parsed limit, n = 1..5; exact coefficient limit n <= 15"
     try:
-        rep = re.search(r"reparametrization \$t\\left\(\s*s\s*\\right\)\s*=(.+?),~?s\\in", tex)
-        if rep:
-            s_interval(tex[rep.end() - 3:], "s")
-        deg = re.search(r"Bernstein polynomials of degree \$([^$]+)\$ when \$\\alpha\\rightarrow\s*([^$]+)\$", tex)
-        order = re.search(r"basis functions \(\\ref\{univariate_basis\}\) of order \$([^$]+)\$", tex)
-        if not rep or not deg or not order:
+        words, segs = lm.prose(tex.split("\\begin{equation}", 1)[0])
+        if words != _LIMIT_WORDS or len(segs) != 4:
             raise LatexMathError("the reparametrization, degree or order is not read")
-        t_of_s, degree, prose_point, order_n = lm.parse(rep.group(1)), lm.parse(deg.group(1)), lm.parse(deg.group(2)), \
-            lm.parse(order.group(1))
-        display = _display(tex, "\\begin{equation}", "\\label")
-        formula = re.split(r",\s*\\,", display, maxsplit=1)[0]
-        lhs, rhs = relation(formula)
-        _, s_vals = _quantified(display)
-        if not re.search(r"\\forall\s*s", display):
+        rep, lim = lm.parse_relation(segs[0]), lm.parse_relation(segs[3])
+        s_ = sympy.Symbol("s")  # t\\left( s\\right) is read as the product t*s (one parenthesised expression)
+        if rep.ops != ["="] or rep.parts[0] != sympy.Symbol("t") * s_ or len(rep.conditions) != 1 or \
+                rep.conditions[0].ops != ["in"] or rep.conditions[0].parts[0] != s_:
+            raise LatexMathError(f"not the reparametrization t(s) = .., s in ..: {segs[0]!r}")
+        s_interval(rep.conditions[0].parts[1])
+        if lim.ops != ["->"] or lim.parts[0] != sympy.Symbol("alpha") or lim.conditions:
+            raise LatexMathError(f"not alpha -> ..: {segs[3]!r}")
+        t_of_s, order_n, degree, prose_point = rep.parts[1], lm.parse(segs[1]), lm.parse(segs[2]), lim.parts[1]
+        rel = lm.parse_relation(_display(tex, "\\begin{equation}", "\\label"))
+        if rel.lead is not None or rel.ops != ["="] or len(rel.conditions) != 2:
+            raise LatexMathError("not one equation with the clauses over s and i")
+        lhs, rhs = rel.parts
+        quant, s_vals = _quantified(rel)
+        if quant != "forall":
             raise LatexMathError("the limit is not claimed for all s")
-        lo, hi = listed(display, "i")
+        lo, hi = listed(rel, "i")
         if not isinstance(lhs, sympy.Limit):
             raise LatexMathError("the left side is not a limit")
         body, var, point = lhs.args[0], lhs.args[1], lhs.args[2]
@@ -1253,10 +1303,11 @@ def _a_identity(parts: list[sympy.Expr], quant: str, s_vals: list, scale=1) -> b
 
 def _read_chain(line_id: str) -> tuple[list[sympy.Expr], str, list]:
     tex = verbatim(line_id)
-    display = _display(tex, "\\[", "\\]")
-    formula = re.split(r",\s*~?\s*\\(?:forall|exists)", display, maxsplit=1)[0]
-    parts = relation(formula)
-    quant, s_vals = _quantified(display)
+    rel = lm.parse_relation(_display(tex, "\\[", "\\]"))
+    if rel.lead is not None or any(op != "=" for op in rel.ops) or len(rel.conditions) != 1:
+        raise LatexMathError(f"not an equality chain with one clause over s: {rel.ops} {len(rel.conditions)} clauses")
+    parts = rel.parts
+    quant, s_vals = _quantified(rel)
     if len(parts) < 2:
         raise LatexMathError("not an equality")
     return parts, quant, s_vals
@@ -1443,27 +1494,47 @@ def distinct_union(n: int) -> frozenset[tuple[int, ...]]:
     return frozenset(exponents(x) for color in "RGB" for x in full_system(n, color))
 
 
-def read_delta(tex: str) -> list:
-    """The printed values of delta_n in ``tex`` (everything after ``\\delta_{n}=``, split at ``=``), each as a
-    function of n: a closed form such as ``3n\\left( n+1\\right) +1`` or ``1+3\\sum_{j=..}^{..}\\sum_{i=..}^{..}1``."""
+def _int_at(e: sympy.Expr, env: dict[str, int]) -> int:
+    """The integer value of a parsed expression at ``env``, every ``Sum`` (of one or several limits, the first
+    innermost as sympy orders them) summed term by term: an empty range (upper < lower) is an empty sum, the paper's
+    convention (``LatexMathError`` if a value is not an integer)."""
+    if isinstance(e, sympy.Sum):
+        return _limits_int(e.function, list(e.limits), env)
+    if e.has(sympy.Sum):
+        return _env_int(e.func(*[sympy.Integer(_int_at(x, env)) if x.has(sympy.Sum) else x for x in e.args]), **env)
+    return _env_int(e, **env)
 
-    body = tex.split("\\delta_{n}=", 1)[1]
-    body = re.split(r"\\\]|\$", body)[0].replace("\\left(", "(").replace("\\right)", ")").replace("%", " ")
-    out = []
-    for part in re.split(r"=(?![^{]*\})", body):  # not the = of a subscript j=0
-        part = part.strip().rstrip(".").strip()
-        m = re.fullmatch(r"(\d+)\s*\+\s*(\d+)\s*\\sum_\{j=([^{}]+)\}\^\{([^{}]+)\}\s*"
-                         r"\\sum_\{i=([^{}]+)\}\^\{([^{}]+)\}\s*1", part)
-        if m:
-            a, b, jlo, jhi, ilo, ihi = m.groups()
-            out.append(lambda n, a=a, b=b, jlo=jlo, jhi=jhi, ilo=ilo, ihi=ihi: int(a) + int(b) * sum(
-                1 for j in range(bound(jlo, n=n), bound(jhi, n=n) + 1)
-                for _ in range(bound(ilo, n=n, j=j), bound(ihi, n=n, j=j) + 1)))
-        elif "\\" in part:
-            raise ValueError(f"unread value of delta_n: {part!r}")
-        else:
-            out.append(lambda n, e=part: bound(e, n=n))
-    return out
+
+def _limits_int(f: sympy.Expr, limits: list, env: dict[str, int]) -> int:
+    if not limits:
+        return _int_at(f, env)
+    v, lo, hi = limits[-1]
+    return sum(_limits_int(f, limits[:-1], {**env, str(v): x}) for x in range(_int_at(lo, env), _int_at(hi, env) + 1))
+
+
+def _delta_value(e: sympy.Expr, n: int) -> int | None:
+    try:
+        return _int_at(e, {"n": n})
+    except (LatexMathError, ValueError, ZeroDivisionError, TypeError):
+        return None
+
+
+def read_delta(tex: str) -> list:
+    """The printed values of delta_n in ``tex`` (the chain ``\\delta_{n}=a=b..`` of its one ``$..$`` segment or of
+    its display, read by :func:`latex_math.parse_relation`), each as a function of n (None where it is not an
+    integer): a closed form such as ``3n\\left( n+1\\right) +1`` or ``1+3\\sum_{j=..}^{..}\\sum_{i=..}^{..}1`` (the
+    sums evaluated, an empty one 0)."""
+    segs = lm.inline_math(tex)
+    if len(segs) > 1:
+        raise ValueError(f"more than one formula in {tex[:50]!r}")
+    try:
+        rel = lm.parse_relation(segs[0] if segs else tex)
+    except LatexMathError as exc:
+        raise ValueError(f"unread value of delta_n: {exc}") from None
+    if rel.lead is not None or not rel.ops or any(op != "=" for op in rel.ops) or rel.conditions or \
+            rel.parts[0] != sympy.Function("delta")(sympy.Symbol("n")):
+        raise ValueError(f"not delta_n = ..: {rel.parts[0]} {rel.ops}")
+    return [lambda n, e=part: _delta_value(e, n) for part in rel.parts[1:]]
 
 
 @line_check("sec1_3-delta-count")
@@ -1656,55 +1727,94 @@ def _uvw_index(var) -> int:
     return "uvw".index(name)
 
 
-_CHAIN_STRICT = re.compile(
-    r"^(?:\\frac\{\\partial\^\{(?P<o0>[^{}]+)\}\}\{\\partial(?P<run>[xy])\^\{(?P<o1>[^{}]+)\}\}"
-    r"(?P<f0>L|\\widetilde\{L\}_\{r\}|\\widehat\{L\}_\{r\}|L_\{r\})\((?P<args0>[^=]*)\))?="
-    r"\\sum_\{k=(?P<k0>[^{}]+)\}\^\{(?P<o2>[^{}]+)\}\\dbinom\{(?P<o3>[^{}]+)\}\{k\}\(-1\)\^\{k\}"
-    r"\\frac\{\\partial\^\{(?P<o4>[^{}]+)\}\}\{\\partial(?P<a>[uvw])(?:_\{(?P<ai>\d)\})?\^\{(?P<o5>[^{}]+)-k\}"
-    r"\\partial(?P<b>[uvw])(?:_\{(?P<bi>\d)\})?\^\{k\}\}"
-    r"(?P<f1>L|\\widetilde\{L\}_\{r\}|\\widehat\{L\}_\{r\}|L_\{r\})\((?P<args1>.*?)\)"
-    r"(?:\\rightvert_\{(?P<bar>[xy])=0\})?(?P<tail>[.,]?|,~\\forall(?P<qv>[xy])\\in\[(?P<lo>[^,\]]+),(?P<hi>[^\]]+)\][.,])$")
+_CHAIN_HEADS = {("L", ()), ("L", ("r",)), ("Ltilde", ("r",)), ("Lhat", ("r",))}  # L, L_{r}, \widetilde{L}_{r}, ..
+
+
+def _chain_function(f, coords: tuple) -> str:
+    """``L``, ``L_{r}``, ``\\widetilde{L}_{r}`` or ``\\widehat{L}_{r}`` applied to ``coords`` (parsed: ``L(r, (..))``),
+    as ``name(index)``; ``ValueError`` otherwise."""
+    if not isinstance(f, AppliedUndef) or not f.args or not isinstance(f.args[-1], sympy.Tuple):
+        raise ValueError(f"{f} is not a function of the parametrization's coordinates")
+    head = (f.func.__name__, tuple(str(x) for x in f.args[:-1]))
+    if head not in _CHAIN_HEADS or tuple(f.args[-1]) != coords:
+        raise ValueError("the arguments are not the coordinates of the parametrization")
+    return f"{head[0]}_{{{','.join(head[1])}}}" if head[1] else head[0]
 
 
 def read_chain_strict(tex: str, param: str) -> dict:
     """The whole printed chain rule ``\\frac{\\partial^{r}}{\\partial y^{r}}L(..) = \\sum_{k=0}^{r} \\dbinom{r}{k}
-    (-1)^k \\frac{\\partial^{r}}{\\partial a^{r-k}\\partial b^{k}} L(..) [|_{y=0}, \\forall x \\in [0,\\alpha]]``, read:
-    every order equal, the sum from k = 0, the arguments the coordinates of ``param`` (its index) at (x, y), the
-    point the running parameter at 0, the quantifier over the other parameter on its printed range
-    (``ValueError`` otherwise)."""
-
-    t = re.sub(r"\s+", "", tex.replace("%", ""))
-    for p in (r"\\begin\{equation\}", r"\\end\{equation\}", r"\\label\{[^{}]*\}", r"&", r"\\\\$",
-              r"\\left\.", r"\\right\.(?!\w)"):
-        t = re.sub(p, "", t)
-    t = t.replace("\\left(", "(").replace("\\right)", ")").replace("\\dfrac", "\\frac").replace("\\left[", "[")
-    t = t.replace("\\right]", "]").replace("\\right\\vert", "\\rightvert").replace("\\,", "")
-    t = re.sub(r"\{\\displaystyle\\sum\\limits(_\{[^{}]*\}\^\{[^{}]*\})\}", r"\\sum\1", t)
-    m = _CHAIN_STRICT.match(t)
-    if not m:
-        raise ValueError(f"chain rule not read: {t[:60]!r}")
-    orders = {m.group(g) for g in ("o0", "o1", "o2", "o3", "o4", "o5") if m.group(g) is not None}
-    if len(orders) != 1 or m.group("k0") != "0":
-        raise ValueError(f"orders {sorted(orders)} / sum from k={m.group('k0')}")
+    (-1)^k \\frac{\\partial^{r}}{\\partial a^{r-k}\\partial b^{k}} L(..) [|_{y=0}, \\forall x \\in [0,\\alpha]]``
+    (or its continuation row ``& = & \\sum ..``), read by :func:`latex_math.parse_relation`: every order equal (of
+    the left derivative, the sum's upper bound, the binomial, the derivative under the sum), the sum over k from 0
+    of exactly (-1)^k binom(.., k) D(.., (a, .. - k), (b, k)), the variables a, b and the arguments the coordinates
+    of ``param`` (its index) at (x, y), the evaluation point the running parameter at 0, the quantifier over the
+    other parameter on its printed range (``ValueError`` otherwise)."""
+    try:
+        rel = lm.parse_relation(tex)
+    except LatexMathError as exc:
+        raise ValueError(f"chain rule not read: {exc}") from None
+    if rel.lead is None and rel.ops == ["="] and len(rel.parts) == 2:
+        lhs, rhs = rel.parts
+    elif rel.lead == "=" and not rel.ops and len(rel.parts) == 1:
+        lhs, rhs = None, rel.parts[0]
+    else:
+        raise ValueError(f"chain rule not read: {rel.lead} {rel.ops}")
+    k = sympy.Symbol("k")
+    if not isinstance(rhs, sympy.Sum) or len(rhs.limits) != 1 or rhs.limits[0][:2] != (k, 0):
+        raise ValueError(f"not a sum over k from 0: {rhs}")
+    order = rhs.limits[0][2]
+    factors = sympy.Mul.make_args(rhs.function)
+    binoms = [f for f in factors if isinstance(f, sympy.binomial)]
+    rest = [f for f in factors if f != sympy.Pow(-1, k) and f not in binoms]
+    if len(factors) != 3 or sympy.Pow(-1, k) not in factors or len(binoms) != 1 or binoms[0].args[1] != k or \
+            len(rest) != 1:
+        raise ValueError(f"the term is not (-1)^k binom(.., k) d/d..: {rhs.function}")
+    deriv, bar = rest[0], None
+    if isinstance(deriv, sympy.Subs):
+        if len(deriv.variables) != 1 or deriv.point != sympy.Tuple(0):
+            raise ValueError(f"the evaluation bar is not at 0: {deriv}")
+        bar, deriv = str(deriv.variables[0]), deriv.expr
+    if not (isinstance(deriv, AppliedUndef) and deriv.func.__name__ == "D" and len(deriv.args) == 3):
+        raise ValueError(f"not a derivative in two variables: {deriv}")
+    (va, oa), (vb, ob) = deriv.args[1:]
+    orders = [order, binoms[0].args[0], oa + k]
     idx = STEP_PARAMS.index(param) + 1 if param in STEP_PARAMS else None
-    want_idx = str(idx) if idx else None
-    coords = ",".join(f"{c}{'_{' + want_idx + '}' if want_idx else ''}(x,y)" for c in "uvw")
-    if m.group("ai") != want_idx or m.group("bi") != want_idx or m.group("args1") != coords or \
-            (m.group("args0") is not None and m.group("args0") != coords) or m.group("f0") not in (None, m.group("f1")):
-        raise ValueError("the arguments are not the coordinates of the parametrization")
+    x_y = sympy.Tuple(*sympy.symbols("x y"))
+    coords = tuple(sympy.Function(c)(idx, x_y) if idx else sympy.Function(c)(x_y) for c in "uvw")
+    names = {sympy.Function(c)(idx) if idx else sympy.Symbol(c) for c in "uvw"}
+    if ob != k or va not in names or vb not in names:
+        raise ValueError("the variables are not the coordinates of the parametrization")
+    f1 = _chain_function(deriv.args[0], coords)
+    run0 = None
+    if lhs is not None:
+        if not (isinstance(lhs, AppliedUndef) and lhs.func.__name__ == "D" and len(lhs.args) == 2):
+            raise ValueError(f"the left side is not a derivative in one variable: {lhs}")
+        run0, o0 = str(lhs.args[1][0]), lhs.args[1][1]
+        orders.append(o0)
+        if _chain_function(lhs.args[0], coords) != f1:
+            raise ValueError("the two sides differentiate different functions")
+    if any(sympy.expand(o - order) != 0 for o in orders):
+        raise ValueError(f"orders {orders}")
     _fmap, run, _maps, ranges = _params()[param]
-    if m.group("run") not in (None, run) or m.group("bar") not in (None, run):
+    if run0 not in (None, run) or bar not in (None, run):
         raise ValueError("not the running parameter of the parametrization")
-    if m.group("qv"):
+    if len(rel.conditions) > 1:
+        raise ValueError("more than one clause")
+    if rel.conditions:
+        cond = rel.conditions[0]
         free = "x" if run == "y" else "y"
-        lo, hi = _lin(m.group("lo"), 1), _lin(m.group("hi"), 1)
-        def at_edge(q: str) -> tuple[int, int, int]:  # the printed bound with the running parameter at 0
+        iv = cond.parts[1] if cond.ops == ["in"] and len(cond.parts) == 2 else None
+        if cond.quantifier != "forall" or str(cond.parts[0]) != free or not isinstance(iv, sympy.Interval) or \
+                iv.left_open or iv.right_open or bar is None:
+            raise ValueError("the quantifier is not over the other parameter on [0, alpha]")
+        lo, hi = _lin(iv.start, 1), _lin(iv.end, 1)
+
+        def at_edge(q) -> tuple[int, int, int]:  # the printed bound with the running parameter at 0
             a, x, y = linear_form(q)
             return (a, 0, y) if run == "x" else (a, x, 0)
-        if m.group("qv") != free or (lo, hi) != (0, 1) or m.group("bar") is None or \
-                [at_edge(q) for q in ranges[free]] != [at_edge(m.group("lo")), at_edge(m.group("hi"))]:
+        if (lo, hi) != (0, 1) or [at_edge(q) for q in ranges[free]] != [at_edge(iv.start), at_edge(iv.end)]:
             raise ValueError("the quantifier is not over the other parameter on [0, alpha]")
-    return m.groupdict()
+    return {"order": str(order), "a": str(va), "b": str(vb), "function": f1, "run": run0, "bar": bar}
 
 
 def _chain(param: str, check_id: str, override: dict[str, str] | None = None) -> LineResult:
@@ -1824,7 +1934,10 @@ def param_ranges() -> LineResult:
     tex = _transcribed(["sec1_3-chain-ranges"])["sec1_3-chain-ranges"]
     try:
         rng = {"x": interval(tex, "x"), "y": interval(tex, "y")}
-        if not re.search(r"\\forall|for all", tex) or not re.search(r"r\\in%?\s*\\mathbb\{N\}", tex):
+        words, segs = lm.prose(tex)
+        natural = [seg for seg in segs if lm.parse_relation(seg).parts == [sympy.Symbol("r"), sympy.Symbol("N_bb")]
+                   and lm.parse_relation(seg).ops == ["in"]]
+        if words != "for all $$,$$ and order $$." or len(segs) != 3 or len(natural) != 1:
             raise ValueError("no 'for all ... and order r in N'")
         ok = all(param_onto(p, ranges=rng) for p in STEP_PARAMS)
     except ValueError as exc:
@@ -2211,31 +2324,57 @@ def lr1_set(override=None) -> LineResult:
                       override=override)
 
 
-_CONSTANT_SET = re.compile(r"\\left\\\{\s*\\rho_\{2n,2n-i,([^{}]+)\},\\gamma_\{2n,2n-i,([^{}]+)\},"
-                           r"\\beta_\{2n,2n-i,([^{}]+)\}\s*\\right\\\}\s*_\{i=([^{}]+)\}\^\{([^{}]+)\}"
-                           r".*?equal to \$(\w+)\$", re.S)
+_ZEROED_WORDS = ("by evaluating its $$th order partial derivatives under parametrizations "
+                 "(\\ref{parametrization_1_y_0})--(\\ref{parametrization_3_y_0}) with proper substitutions of $$, "
+                 "where the combining constants $$ of all the omitted functions are equal to $$.")
+_ZEROED_NAMES = {"rho": "R", "gamma": "G", "beta": "B"}
+
+
+def _zeroed_constants(tex: str):
+    r"""The parsed ``$..$`` segments of the line "by evaluating its $(r+1)$th order ... the combining constants
+    ``\left\{ \rho_{2n,2n-i,r+1},\gamma_{2n,2n-i,r+1},\beta_{2n,2n-i,r+1}\right\} _{i=r+1}^{2n-1-(r+1)}`` ...
+    are equal to $0$": ``(order, substituted value, the Family, the value)``, or None when the words differ, a
+    segment is unread or the set is not a bounded set over one index of three constants rho, gamma, beta."""
+    words, segs = lm.prose(tex)
+    if words != _ZEROED_WORDS or len(segs) != 4:
+        return None
+    try:
+        order, subst, family, value = (lm.parse(x) for x in segs)
+    except LatexMathError:
+        return None
+    if not (isinstance(family, sympy.Function) and family.func == lm.Family):
+        return None
+    member, conds, bounds = family.args
+    if conds or len(bounds) != 1 or not isinstance(member, sympy.Tuple) or len(member) != 3 or \
+            [getattr(c.func, "__name__", None) for c in member] != list(_ZEROED_NAMES):
+        return None
+    return order, subst, family, value
 
 
 @line_check("sec1_3-level-zeroed")
 def level_zeroed(verbatim: str | None = None) -> LineResult:
-    """The constants {rho, gamma, beta}_{2n,2n-i,r+1}, i = r+1..2n-1-(r+1) (levels, range and the value 0 read from
-    the transcription), are those set to 0 by the step r -> r+1."""
+    """The constants {rho, gamma, beta}_{2n,2n-i,r+1}, i = r+1..2n-1-(r+1) (every index, the bounds, the order
+    r+1, the substituted 0 and the value 0 read from the transcription by :func:`latex_math.prose` and
+    :func:`latex_math.parse`), are those set to 0 by the step r -> r+1."""
 
     tex = verbatim if verbatim is not None else _transcribed(["sec1_3-step-zeroed"])["sec1_3-step-zeroed"]
-    m = _CONSTANT_SET.search(tex.replace("\\left(", "(").replace("\\right)", ")"))
-    words = re.search(r"^by evaluating its \$\\left\( r\+1\\right\) \$th order partial derivatives under "
-                      r"parametrizations \(\\ref\{parametrization_1_y_0\}\)--\(\\ref\{parametrization_3_y_0\}\) with "
-                      r"proper substitutions of \$0\$, where the combining constants", re.sub(r"\s+", " ", tex).strip())
-    if not m or m.group(6) != "0" or not words:
+    read = _zeroed_constants(tex)
+    r_ = sympy.Symbol("r")
+    if read is None or sympy.expand(read[0] - (r_ + 1)) != 0 or read[1] != 0 or read[3] != 0:
         return LineResult(False, how="the constants read from the transcription", detail={"unread": tex[:60]})
-    levels, lo, hi = m.group(1, 2, 3), m.group(4), m.group(5)
+    family = read[2]
 
     def printed(n, r):
         strict = {lb.paper: k for k, lb in enumerate(united_system(n))}
-        return {strict.get(f"{c}_{{{2 * n},{2 * n - i},{bound(lev, n=n, r=r)}}}", f"{c}?{i}")
-                for c, lev in zip("RGB", levels) for i in range(bound(lo, n=n, r=r), bound(hi, n=n, r=r) + 1)}
+        out = set()
+        for triple in parsed.members(family, n=n, r=r):
+            for c in triple:
+                key = f"{_ZEROED_NAMES[c.func.__name__]}_{{{','.join(str(a) for a in c.args)}}}"
+                out.add(strict.get(key, key))
+        return out
     return _proof_sets(printed, lambda n, r: alive_after(n, r, 2) - alive_after(n, r + 1, 2), rs=lambda n: range(n - 1),
-                       how="constants of the printed set (levels, range and value read from the transcription)")
+                       how="constants of the printed set (every index, the range and the value parsed from the "
+                           "transcription)")
 
 
 @line_check("sec1_3-Ltilde-r-set")
@@ -2340,11 +2479,43 @@ def _orders_prose(t: dict[str, str]) -> None:
             not re.search(r"Cases \(\\emph\{a\}\)--\(\\emph\{c\}\) and \(\\emph\{d\}\)--\(\\emph\{f\}\)", cap):
         raise ValueError("fig-j1-caption-orders: words")
     txt = norm("sec1_3-fig-j1-text")
-    eqs = re.findall(r"\\\[ 0=L_\{([^{}]+)\}\\left\( u,v,w\\right\) ,~\\forall\\left\( u,v,w\\right\) \\in ?"
-                     r"\\Omega\^\{\\alpha\} ?\\\]", txt)
+    eqs = _zero_l_orders(txt)
     if len(eqs) != 2 or not re.search(r"under successive parametrizations \(\\ref\{parametrization_1_y_0\} ?\)--"
                                       r"\(\\ref\{parametrization_3_y_0\}\), respectively", txt):
         raise ValueError("fig-j1-text: words")
+
+
+def _zero_l_orders(tex: str) -> list[sympy.Expr]:
+    """The orders k of the displays ``\\[ 0=L_{k}\\left( u,v,w\\right) ,~\\forall\\left( u,v,w\\right)
+    \\in\\Omega^{\\alpha} \\]`` of a prose line, each display read by :func:`latex_math.parse_relation`
+    (``ValueError`` if a display is another formula)."""
+    out = []
+    uvw = sympy.Tuple(*sympy.symbols("u v w"))
+    for chunk in tex.split("\\[")[1:]:
+        rel = lm.parse_relation(chunk.split("\\]")[0])
+        lhs, rhs = (rel.parts + [None, None])[:2]
+        cond = rel.conditions[0] if len(rel.conditions) == 1 else None
+        if rel.ops != ["="] or lhs != 0 or not (isinstance(rhs, AppliedUndef) and rhs.func.__name__ == "L"
+                                                 and len(rhs.args) == 2 and rhs.args[1] == uvw) or \
+                cond is None or cond.quantifier != "forall" or cond.ops != ["in"] or \
+                cond.parts != [uvw, sympy.Symbol("Omega")]:
+            raise ValueError(f"not 0 = L_k(u,v,w) for all (u,v,w) in Omega: {chunk[:50]!r}")
+        out.append(rhs.args[0])
+    return out
+
+
+def _r_values(tex: str) -> list[sympy.Expr]:
+    """The values X of the ``$r=X$`` segments of a prose line (:func:`latex_math.parse_relation`)."""
+    r_ = sympy.Symbol("r")
+    out = []
+    for seg in lm.inline_math(tex):
+        try:
+            rel = lm.parse_relation(seg)
+        except LatexMathError:
+            continue
+        if rel.ops == ["="] and rel.parts[0] == r_ and not rel.conditions:
+            out.append(rel.parts[1])
+    return out
 
 
 @line_check("sec1_3-elimination-orders")
@@ -2363,10 +2534,14 @@ def elimination_orders(override: dict[str, str] | None = None) -> LineResult:
             if len({(x.start, x.stop) for x in listed_orders(t[k], "r", n=5)}) != 1:
                 raise ValueError(f"{k}: listings differ")
         _orders_prose(t)
-        caption_r = re.findall(r"\$r=([^$]+)\$", t["sec1_3-fig-j1-caption-orders"])
-        head = t["sec1_3-fig-j1-text"].split("order partial derivatives")[0]
-        text_orders = re.findall(r"\b(first)\b|\$\\left\(\s*([^$]+?)\s*\\right\)\s*\$th", head)
-        text_l = re.findall(r"0=L_\{([^{}]+)\}", t["sec1_3-fig-j1-text"])
+        caption_r = _r_values(t["sec1_3-fig-j1-caption-orders"])
+        words, segs = lm.prose(t["sec1_3-fig-j1-text"].split("order partial derivatives")[0])
+        ordinals = re.findall(r"\b(first)\b|\$\$th", words)  # the words; each $$ is the next segment, parsed
+        if ordinals.count("") != len(segs):
+            raise ValueError("fig-j1-text: orders")
+        it = iter(segs)
+        text_orders = [("first", None) if o else ("", lm.parse(next(it))) for o in ordinals]
+        text_l = _zero_l_orders(t["sec1_3-fig-j1-text"])
     except ValueError as exc:
         return LineResult(False, how="the orders read from the transcriptions", detail={"unread": str(exc)})
     bad = []
@@ -2892,16 +3067,30 @@ def read_omitted(tex: str) -> dict:
     """The sentence "the omitted functions include the factor $\\left. \\sin\\frac{v_{1}(x,y)}{2}\\right\\vert _{y=0}
     =\\left. \\sin\\frac{y}{2}\\right\\vert _{y=0}=0$ raised to a power at least one", read: the coordinate and its
     parametrization index, the argument it equals, the points, the printed value and the power relation."""
-    t = re.sub(r"\s+", " ", tex.replace("%", " "))
-    m = re.search(r"\$\\left\. \\sin ?\\frac\{([uvw])_\{(\d)\}\\left\( x,y\\right\) \}\{2\}\\right\\vert _\{([xy])=0\}"
-                  r" ?= ?\\left\. \\sin ?\\frac\{([^{}]+)\} ?\{2\}\\right\\vert _\{([xy])=0\} ?= ?(\d+)\$ "
-                  r"raised to a power "
+    words, segs = lm.prose(tex)
+    w = re.search(r"factor \$\$ raised to a power "
                   r"(at least|greater than or equal to|greater than|at most|less than|equal to) (zero|one|two|three)\b",
-                  t)
-    if not m:
+                  words)  # the words (prose); the one segment is the formula
+    if not w or len(segs) != 1:
         raise ValueError(f"the omitted functions' factor not read in {tex[:50]!r}")
-    return {"coord": m.group(1), "index": int(m.group(2)), "points": {m.group(3), m.group(5)}, "arg": m.group(4),
-            "value": int(m.group(6)), "relation": m.group(7), "power": _NUMBER_WORDS[m.group(8)]}
+    try:
+        rel = lm.parse_relation(segs[0])
+    except LatexMathError as exc:
+        raise ValueError(f"the omitted functions' factor not read: {exc}") from None
+    if rel.lead is not None or rel.ops != ["=", "="] or rel.conditions or \
+            not all(isinstance(x, sympy.Subs) for x in rel.parts[:2]) or not rel.parts[2].is_Integer:
+        raise ValueError(f"not sin(x_k/2)|_.. = sin(../2)|_.. = value: {segs[0]!r}")
+    halves = []
+    for bar in rel.parts[:2]:  # Subs(sin(X/2), p, 0): X, the point p
+        if not isinstance(bar.expr, sympy.sin) or len(bar.variables) != 1 or bar.point != sympy.Tuple(0):
+            raise ValueError(f"not a half-angle sine at 0: {bar}")
+        halves.append((sympy.expand(2 * bar.expr.args[0]), str(bar.variables[0])))
+    (coord, p1), (arg, p2) = halves
+    if not (isinstance(coord, AppliedUndef) and coord.func.__name__ in ("u", "v", "w") and len(coord.args) == 2
+            and coord.args[0].is_Integer and coord.args[1] == sympy.Tuple(*sympy.symbols("x y"))):
+        raise ValueError(f"{coord} is not a coordinate u_k(x,y), v_k(x,y), w_k(x,y)")
+    return {"coord": coord.func.__name__, "index": int(coord.args[0]), "points": {p1, p2}, "arg": arg,
+            "value": int(rel.parts[2]), "relation": w.group(1), "power": _NUMBER_WORDS[w.group(2)]}
 
 
 def omitted_check(line_id: str, before: str, terms_line: str, param_index: int,
@@ -3685,22 +3874,43 @@ def interval_typo() -> LineResult:
     it is [0, alpha], the range of x on the edge y = 0 of parametrization_3_y_0 (read from its transcription)."""
 
     tex = _transcribed(["sec1_3-r0-p3-interval"])["sec1_3-r0-p3-interval"]
-    m = re.fullmatch(r"\s*x\s*\\in\s*\\left\[(.*)\\right\]\s*", tex)
-
-    def holds(inner: str) -> bool:
-        parts = [p.strip() for p in inner.split(",")]
+    def holds(text: str) -> bool:  # x in [a, b] (parse_relation), a closed interval with the printed range's ends
         try:
-            return len(parts) == 2 and [linear_form(p) for p in parts] == \
+            rel = lm.parse_relation(text)
+            if rel.ops != ["in"] or rel.parts[0] != sympy.Symbol("x") or rel.conditions:
+                return False
+            lo_c, lo, hi, hi_c = interval_of(rel.parts[1])
+            return lo_c and hi_c and [linear_form(lo), linear_form(hi)] == \
                 [linear_form(q) for q in _params()["parametrization_3_y_0"][3]["x"]]
-        except ValueError:
+        except ValueError:  # LatexMathError included: the thin space leaves no interval to read
             return False
-    if not m:
-        return LineResult(False, None, how="the interval read from the transcription", kind="proof",
-                          detail={"unread": tex[:40]})
-    inner = m.group(1)
-    return LineResult(holds(inner), holds(inner.replace("\\,", ",")) if "\\," in inner else None,
-                      how="the printed interval read into endpoints, against the printed range of x of "
-                      "parametrization_3_y_0", kind="proof", detail={"printed": inner.strip()})
+    return LineResult(holds(tex), holds(tex.replace("\\,", ",")) if "\\," in tex else None,
+                      how="the printed interval read by parse_relation, against the printed range of x of "
+                      "parametrization_3_y_0", kind="proof", detail={"printed": tex.strip()})
+
+
+def _sign_value_sets(text: str) -> list[int]:
+    """The lower bounds of p of the Lemma's two sets of values, the last two ``$..$`` segments of ``text``
+    (:func:`latex_math.parse`): ``\\left\\{ C_{i,\\lambda}^{p}\\left( 0\\right) \\right\\} _{p\\geq0}`` and
+    ``\\left\\{ S_{j,\\mu}^{p}\\left( 0\\right) \\right\\} _{p\\geq0}``, each a set without condition over p from an
+    integer on (``ValueError`` otherwise)."""
+    segs = lm.inline_math(text)
+    p_, zero = sympy.Symbol("p"), sympy.Tuple(0)
+    want = [("C_sup", (sympy.Symbol("i"), sympy.Symbol("lambda"), p_, zero)),
+            ("S_sup", (sympy.Symbol("j"), sympy.Symbol("mu"), p_, zero))]
+    out = []
+    for seg, (name, args) in zip(segs[-2:], want):
+        fam = lm.parse(seg)
+        if not (isinstance(fam, AppliedUndef) and fam.func == lm.Family) or fam.args[1] or len(fam.args[2]) != 1:
+            raise ValueError(f"not a set of values over p: {seg!r}")
+        member, ((v, lo, hi),) = fam.args[0], fam.args[2]
+        if not (isinstance(member, AppliedUndef) and member.func.__name__ == name and member.args == args) or \
+                v != p_ or hi != sympy.oo or not lo.is_Integer:
+            raise ValueError(f"not the values {name}(..)(0) for p >= an integer: {seg!r}")
+        out.append(int(lo))
+    if len(out) != 2:
+        raise ValueError("two sets of values not read")
+    return out
 
 
 @line_check("sec1_3-lemma-hypotheses")
@@ -3717,10 +3927,8 @@ def lemma_hypotheses(verbatim_text: str | None = None) -> LineResult:
 
     def run(text: str) -> tuple[bool, dict]:
         m = re.search(r"Let ((?:\$[a-z]\$(?:, | and )?)+) be natural numbers greater than or equal to \$(\d+)\$", text)
-        sets = re.findall(r"\\right\\\}\s*_\{p\\geq(\d+)\}", text)
-        if not m or len(sets) != 2 or len(set(sets)) != 1 or "\\lambda,\\mu>0" not in text or \
-                not re.search(r"\\left\\\{\s*C_\{i,\\lambda\}\^\{p\}\\left\(\s*0\\right\)", text) or \
-                not re.search(r"\\left\\\{\s*S_\{j,\\mu\}\^\{p\}\\left\(\s*0\\right\)", text):
+        sets = _sign_value_sets(text)
+        if not m or len(set(sets)) != 1 or "\\lambda,\\mu>0" not in text:
             raise ValueError("hypotheses not read")
         letters = re.findall(r"\$([a-z])\$", m.group(1))
         lo = int(m.group(2))
