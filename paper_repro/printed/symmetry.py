@@ -96,22 +96,6 @@ def set_builders(tex: str) -> list[tuple[str, IndexSet, tuple[int, int]]]:
     return out
 
 
-_SET1 = re.compile(r"\\left\\\{(?P<body>.*?)\\right\\\}\s*_\{\s*(?P<var>\w)\s*=(?P<lo>[^{},]*)\}\s*%?\s*"
-                   r"\^\{(?P<hi>[^{},]*)\}", re.S)
-
-
-def set_builders_1_all(tex: str) -> list[tuple[str, tuple[str, str, str]]]:
-    """The set-builders ``\\left\\{ body \\right\\} _{i=lo}^{hi}`` (one index) of ``tex``: (body, (i, lo, hi))."""
-    return [(m.group("body"), (m.group("var"), m.group("lo").strip(), m.group("hi").strip()))
-            for m in _SET1.finditer(tex)]
-
-
-def set_builders_1(tex: str) -> tuple[str, tuple[str, str, str]] | None:
-    """The last of :func:`set_builders_1_all`, or ``None``."""
-    found = set_builders_1_all(tex)
-    return found[-1] if found else None
-
-
 def pairs(iset: IndexSet, n: int) -> list[tuple[int, int]]:
     """The (i, j) of a printed index set at order n (outer j, inner i), each once, in printed order."""
     (ov, olo, ohi), (iv, ilo, ihi) = iset
@@ -276,6 +260,6 @@ def six_count() -> int:
     return _NUMBERS[m.group(1)]
 
 
-__all__ = ["EXPLICIT_LINES", "RELATION_LINES", "parse", "bound", "half_angle_powers", "set_builders", "set_builders_1",
-           "set_builders_1_all", "pairs", "label", "label_of", "monomial", "explicit", "printed_exponents", "printed_g",
+__all__ = ["EXPLICIT_LINES", "RELATION_LINES", "parse", "bound", "half_angle_powers", "set_builders",
+           "pairs", "label", "label_of", "monomial", "explicit", "printed_exponents", "printed_g",
            "printed_b", "half_relation", "printed_half", "six_properties", "six_count"]

@@ -12,7 +12,7 @@ EQUIVALENT: dict[str, str] = {}
 EQUIVALENT.update({
     'sec1_3-delta-sum:swap:d10546374f': (
         'i <-> j swapped everywhere in delta_n = 1+3 sum_{j=0}^{n-1} sum_{i=j}^{2n-1-j} 1: a consistent renaming '
-        'of the two summation variables (bound variables), the same sum (regexfold3: the regular expression '
+        'of the two summation variables (bound variables), the same sum (a former regular expression '
         'demanded the literal names j, i; the parsed sum is evaluated)'
     ),
     'sec1_3-L-R-row:sign:939eec8c60': (
