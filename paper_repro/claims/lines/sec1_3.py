@@ -2169,12 +2169,32 @@ def printed_rows(check_id: str, n: int, r: int = 0, override: dict[str, str] | N
     return out
 
 
+def _open_clauses_are_forall(check_id: str, override: dict[str, str] | None = None) -> bool:
+    """Every displayed row of the check that ends in an open clause ends in the clause ``\\forall (u, v, w) ..``: the
+    combination vanishes identically on Omega^alpha, which is what lets the proof differentiate it (an ``\\exists``
+    there would state only a zero somewhere)."""
+    from paper_repro.printed.lines.sec1_3 import LINES
+
+    rows = {x.id: x.verbatim for x in LINES if x.check == check_id and x.kind == "display"}
+    rows.update({k: v for k, v in (override or {}).items() if k in rows})
+    for tex in rows.values():
+        rel = lm.parse_relation(tex)
+        if rel.unfinished is not None and rel.continues != "forall":
+            return False
+    return True
+
+
 def _read_sets(check_id: str, computed_fn, rs=lambda n: [0], ns=N_PROOF, override=None) -> LineResult:
-    """:func:`_proof_sets` with the printed sets read from the transcriptions of the check's lines."""
+    """:func:`_proof_sets` with the printed sets read from the transcriptions of the check's lines; a row that ends
+    in an open quantifier clause must end in ``\\forall`` (:func:`_open_clauses_are_forall`)."""
     try:
-        return _proof_sets(lambda n, r: printed_rows(check_id, n, r, override), computed_fn, rs=rs, ns=ns,
-                           how="index sets of the printed sums (read from the transcriptions)")
-    except ValueError as exc:
+        res = _proof_sets(lambda n, r: printed_rows(check_id, n, r, override), computed_fn, rs=rs, ns=ns,
+                          how="index sets of the printed sums (read from the transcriptions)")
+        forall = _open_clauses_are_forall(check_id, override)
+        res.holds_as_printed &= forall
+        res.detail["open_clauses_forall"] = forall
+        return res
+    except (ValueError, LatexMathError) as exc:
         return LineResult(False, how="index sets of the printed sums, read from the transcriptions",
                           detail={"unread": str(exc)})
 
