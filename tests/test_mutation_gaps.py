@@ -1665,21 +1665,23 @@ def test_rounding_count_follows_its_definition():
     from paper_repro.core.half_angle_matrices import product_form
     from paper_repro.core.subdivision_products import rounding_count
 
-    # docstring (docs/subdivision_for_all_n.md, section 9): 64 for order one; per level k the worst h of
-    # (degree in kappa' + degree in sigma' + 2 + monomials of one entry + entries of one row) + 1 + 7; then 2.
-    # Counted here on the dictionary route's forms (half_angle_matrices.product_form), pairs counted as pairs.
+    # docs/subdivision_for_all_n.md section 11, "Error estimate": K_1 = 93 for order one (derived there); per level k
+    # 2 max(a + b) over the terms of the seven product forms (the inputs' occurrences, powers by repeated products)
+    # + 1 (the weight R_1[h, g]) + (terms of one entry of the combined form - 1) + 1 + (entries of one row - 1) (the
+    # sparse product); then 2 for the normalization. Counted here on the dictionary route's forms
+    # (half_angle_matrices.product_form), not on the vectorised forms the code counts.
     def level(k: int) -> int:
-        worst = 0
-        for h in range(7):
-            rows, cols, a, b, _ = product_form(k - 1, h)
-            per_entry = np.unique(np.stack([rows, cols], axis=1), axis=0, return_counts=True)[1].max()
-            per_row = np.unique(rows, return_counts=True)[1].max()
-            worst = max(worst, int(a.max()) + int(b.max()) + 2 + int(per_entry) + int(per_row))
-        return worst + 1 + 7
+        forms = [product_form(k - 1, h) for h in range(7)]
+        rows = np.concatenate([f[0] for f in forms])
+        cols = np.concatenate([f[1] for f in forms])
+        deg = max(int((f[2] + f[3]).max()) for f in forms)
+        run = int(np.unique(np.stack([rows, cols], axis=1), axis=0, return_counts=True)[1].max())
+        row = int(np.unique(np.unique(np.stack([rows, cols], axis=1), axis=0)[:, 0], return_counts=True)[1].max())
+        return 2 * deg + 1 + (run - 1) + 1 + (row - 1)
 
-    assert rounding_count(1) == 64 + 2
+    assert rounding_count(1) == 93 + 2
     for n in (2, 3, 4):
-        assert rounding_count(n) == 64 + sum(level(k) for k in range(2, n + 1)) + 2
+        assert rounding_count(n) == 93 + sum(level(k) for k in range(2, n + 1)) + 2
 
 
 # --- core/normalization.py -------------------------------------------------------------------------------------
