@@ -55,6 +55,7 @@ import numpy as np
 import scipy.sparse as sp
 
 from paper_repro.core.context import FloatContext
+from paper_repro.core.context import power_table as context_power_table
 from paper_repro.core.half_angle_matrices import _float_half_angle, scaled_coefficients
 from paper_repro.core.half_angle_rules import (
     _gather,
@@ -456,12 +457,7 @@ def power_table(x: float, k: int) -> np.ndarray:
     >>> [float(v) == _power(0.3, i) for i, v in enumerate(t)]
     [True, True, True, True, True]
     """
-    out = np.empty(k + 1)
-    acc = 1.0
-    for i in range(k + 1):
-        out[i] = acc
-        acc = acc * x
-    return out
+    return context_power_table(np.float64(x), k, _F)  # the contexts' table: one ctx.mul per power, in order
 
 
 def _cotangent_dense(var: int, kp: float, sg: float) -> np.ndarray:
