@@ -147,3 +147,26 @@ def test_greek_letter_raised_to_a_power():
     # the tag stays a tag, and a superscript printed before a subscript stays an index
     assert parse(r"\Omega^{\alpha}") == Symbol("Omega")
     assert parse(r"\Omega^{m}_{d,e,f}") == Function("Omega_sup")(d, e, f, m)
+
+
+def test_sentence_reads_prose_by_a_template_of_its_words():
+    from paper_repro.printed.latex_math import sentence
+
+    line = r"Thus, equality $b=2$ generates only two acceptable equivalence classes, namely $\left[ u\right]$."
+    got = sentence("Thus, equality {b} generates only {k:count} acceptable equivalence classes, namely {c}.", line)
+    assert got == {"b": "b=2", "k": 2, "c": r"\left[ u\right]"}
+    # a changed word, a missing word, or a changed literal formula is no match
+    assert sentence("Thus, equality {b} generates only {k:count} acceptable classes, namely {c}.", line) is None
+    assert sentence("equality $b=2$ generates", line) is None  # the whole line must match ...
+    assert sentence("equality $b=2$ generates", line, search=True) == {}  # ... unless asked to search
+    assert sentence("equality $b=3$ generates", line, search=True) is None  # literal math read, not string-compared
+    assert sentence("equality $b = 2$ generates", line, search=True) == {}  # spacing is not meaning
+    # digits and number words, an unknown number word is None (the check decides)
+    assert sentence("only {k:count} classes", "only 12 classes") == {"k": 12}
+    assert sentence("only {k:count} classes", "only several classes") == {"k": None}
+    assert sentence("of order {n:number}", "of order 3") == {"n": 3}
+    assert sentence("of order {n:number}", "of order three") is None
+    # `words` keeps the mathematics it spans, a space in the template also matches a line break
+    assert sentence("where {w:words} holds", "where $a=1$ or\n$b=2$ holds") == {"w": "$a=1$ or $b=2$"}
+    with pytest.raises(ValueError, match="slot kind"):
+        sentence("{x:colour}", "red")

@@ -70,8 +70,8 @@ from lark import Lark, Token, Transformer
 from lark.exceptions import LarkError, UnexpectedCharacters, UnexpectedEOF, UnexpectedInput
 
 __all__ = ["LatexMathError", "Relation", "parse", "parse_relation", "parse_cases", "parse_vector", "index_set",
-           "inline_math", "evaluate_sums", "Term", "terms", "untagged", "parse_conditions", "summands", "clean", "D",
-           "Family", "Cases", "PM"]
+           "inline_math", "prose", "sentence", "NUMBER_WORDS", "evaluate_sums", "Term", "terms", "untagged",
+           "parse_conditions", "summands", "clean", "D", "Family", "Cases", "PM"]
 
 
 class LatexMathError(ValueError):
@@ -1397,6 +1397,102 @@ def prose(tex: str) -> tuple[str, list[str]]:
     """
     words = re.sub(r"(?<!\\)\$(.+?)(?<!\\)\$", "$$", tex, flags=re.S)
     return " ".join(words.split()), inline_math(tex)
+
+
+#: Number words of the paper's prose (``{name:count}`` of :func:`sentence` reads them, and digits).
+NUMBER_WORDS = {"zero": 0, "one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7, "eight": 8,
+                "nine": 9, "ten": 10, "eleven": 11, "twelve": 12}
+_SLOT = re.compile(r"\{(\w+)(?::(\w+))?\}|\.\.\.|(?<!\\)\$(.+?)(?<!\\)\$", flags=re.S)
+_SLOT_PATTERNS = {"math": "\x00(\\d+)\x00", "word": r"([\w'-]+)", "words": r"(.+?)", "count": r"([\w]+)",
+                  "number": r"(\d+)"}
+_MARK = re.compile("\x00(\\d+)\x00")
+
+
+def _same_math(printed: str, template: str) -> bool:
+    """Whether the printed ``$..$`` segment says what the template's literal math says: both read by :func:`parse`
+    (or :func:`parse_relation`) and compared as sympy objects; white space alone where neither is read."""
+    for reader in (parse, parse_relation):
+        try:
+            a, b = reader(printed), reader(template)
+        except LatexMathError:
+            continue
+        if isinstance(a, Relation):
+            return (a.ops == b.ops and len(a.parts) == len(b.parts)
+                    and all(sympy.simplify(x - y) == 0 if isinstance(x, sympy.Expr) and isinstance(y, sympy.Expr)
+                            else x == y for x, y in zip(a.parts, b.parts)))
+        return a == b
+    return "".join(printed.split()) == "".join(template.split())
+
+
+@functools.lru_cache(maxsize=4096)
+def _template_regex(template: str) -> tuple[re.Pattern, tuple[tuple[str, str], ...]]:
+    parts, slots, pos = [], [], 0
+    for m in _SLOT.finditer(template):
+        parts.append(r"\s*".join(re.escape(w) for w in template[pos:m.start()].split(" ")) if template[pos:m.start()]
+                     else "")
+        if m.group(0) == "...":
+            parts.append(r".*?")
+        elif m.group(3) is not None:  # literal math: any segment, compared by the reader afterwards
+            parts.append(_SLOT_PATTERNS["math"])
+            slots.append(("=" + m.group(3), "literal"))
+        else:
+            kind = m.group(2) or "math"
+            if kind not in _SLOT_PATTERNS:
+                raise ValueError(f"template slot kind must be one of {sorted(_SLOT_PATTERNS)}, got {kind!r}")
+            parts.append(_SLOT_PATTERNS[kind])
+            slots.append((m.group(1), kind))
+        pos = m.end()
+    parts.append(r"\s*".join(re.escape(w) for w in template[pos:].split(" ")) if template[pos:] else "")
+    return re.compile("".join(parts), flags=re.S), tuple(slots)
+
+
+def sentence(template: str, tex: str, *, search: bool = False) -> dict[str, Any] | None:
+    r"""Read a prose line by a template of its words: the one way a check reads prose.
+
+    The template is the sentence as printed, with its claim-carrying parts as slots:
+
+    * ``{name}`` (or ``{name:math}``): one ``$..$`` segment, returned as its LaTeX, to be read by this reader;
+    * ``{name:word}`` one word, ``{name:words}`` any words (as few as possible), ``{name:number}`` digits (an int),
+      ``{name:count}`` a number word or digits (an int, :data:`NUMBER_WORDS`; an unknown word gives ``None``);
+    * ``$..$`` literal mathematics: the printed segment must *read* the same (:func:`parse`/:func:`parse_relation`,
+      compared as sympy objects, so spacing and ``\left`` do not matter, while a changed index does);
+    * ``...`` any text; a space any white space (also none, so a template may break where the line does).
+
+    The whole line must match (``search=True``: anywhere in it).  Returns the slots' values, or ``None`` when the
+    words differ or a literal segment reads differently.
+
+    >>> sentence("for {n} and $\\alpha\\in\\left(0,\\pi\\right)$ the {m:count} functions",
+    ...          r"for $n=2$ and $\alpha\in\left( 0,\pi\right) $ the five functions")
+    {'n': 'n=2', 'm': 5}
+    >>> sentence("for {n} and $\\alpha\\in\\left(0,\\pi\\right)$", r"for $n=2$ and $\alpha\in\left(0,2\pi\right)$")
+    >>> sentence("is {w:word}", "is non-negative.") is None, sentence("is {w:word}.", "is non-negative.")
+    (True, {'w': 'non-negative'})
+    """
+    words, segs = prose(tex)
+    k = iter(range(len(segs)))
+    marked = re.sub(r"\$\$", lambda _m: f"\x00{next(k)}\x00", words)
+    rx, slots = _template_regex(" ".join(template.split()))
+    m = (rx.search if search else rx.fullmatch)(marked)
+    if m is None:
+        return None
+    out: dict[str, Any] = {}
+    for (name, kind), val in zip(slots, m.groups()):
+        if kind in ("math", "literal"):
+            seg = segs[int(val)]
+            if kind == "literal":
+                if not _same_math(seg, name[1:]):
+                    return None
+                continue
+            out[name] = seg
+        elif _MARK.search(val) and kind != "words":  # pragma: no cover - the word patterns exclude the marks
+            return None
+        elif kind == "number":
+            out[name] = int(val)
+        elif kind == "count":
+            out[name] = int(val) if val.isdigit() else NUMBER_WORDS.get(val.lower())
+        else:
+            out[name] = _MARK.sub(lambda mm: "$" + segs[int(mm.group(1))] + "$", val)
+    return out
 
 
 def evaluate_sums(expr):
