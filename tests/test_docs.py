@@ -238,6 +238,8 @@ def _plain_math():
     ("on 0 < c < 1 (Sturm), so x_f(α) > 0 and", r"on $0 < c < 1$ (Sturm), so $x_f(\alpha) > 0$ and"),
     ("`R_{2n}` in code and $a_b$ as math stay", "`R_{2n}` in code and $a_b$ as math stay"),
     ("times multinomial(r). So", r"times $\operatorname{multinomial}(r)$. So"),
+    ("with T̄_f^α = x_f f, and", r"with $\bar{T}_f^\alpha = x_f f$, and"),  # a combining accent is TeX's accent
+    ("a bijection π̂ of", r"a bijection $\hat{\pi}$ of"),
 ])
 def test_plain_math_inline(text, want):
     assert _plain_math().convert_inline(text) == want

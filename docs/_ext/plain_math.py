@@ -38,6 +38,8 @@ SYMBOLS = {
 }
 SUPERSCRIPTS = dict(zip("⁰¹²³⁴⁵⁶⁷⁸⁹⁺⁻ⁿ", "0123456789+-n", strict=True))
 SUBSCRIPTS = dict(zip("₀₁₂₃₄₅₆₇₈₉₊₋", "0123456789+-", strict=True))
+#: Combining accents written after a letter (T̄, π̂, p̃): TeX's accent on that letter.
+ACCENTS = {"\u0304": r"\bar", "\u0305": r"\bar", "\u0302": r"\hat", "\u0303": r"\tilde"}
 #: Words that are mathematics: TeX's operators, and the names this project's pages use as functions.
 OPERATORS = {"sin": r"\sin", "cos": r"\cos", "tan": r"\tan", "exp": r"\exp", "log": r"\log", "ln": r"\ln",
              "min": r"\min", "max": r"\max", "det": r"\det", "dim": r"\dim", "deg": r"\deg", "gcd": r"\gcd",
@@ -55,11 +57,12 @@ ENGLISH = {"a", "i", "an", "as", "at", "be", "by", "do", "if", "in", "is", "it",
            "big", "odd", "sub", "max", "min", "ok", "vs", "ie", "eg", "cf", "us", "my", "me", "he", "go", "am",
            "dps", "lu", "qr", "log", "pdf", "doc", "src", "tex", "csv", "css", "js", "url", "www", "com", "org"}
 TRIGGERS = set("_^=≤≥<>→≡∈∉≠∑∏Σ∘·×±∓⊂⊆∪∩∞↦⇒′″+−/!") | set(GREEK) | set(SUPERSCRIPTS) | set(SUBSCRIPTS) | set(
-    "ℕℤℚℝℂ𝒱𝐞𝐫𝐩𝐬ℓ∂√")
+    "ℕℤℚℝℂ𝒱𝐞𝐫𝐩𝐬ℓ∂√") | set(ACCENTS)
 LETTER = r"A-Za-z" + "".join(GREEK) + "ℓ𝒱𝐞𝐫𝐩𝐬ℕℤℚℝℂ"
-BASE = rf"[{LETTER}](?:[′″']*)"
+MARK = "[" + "".join(ACCENTS) + "]?"
+BASE = rf"[{LETTER}]{MARK}(?:[′″']*)"
 GROUP = r"\{(?:[^{}]|\{(?:[^{}]|\{[^{}]*\})*\})*\}"
-SCRIPT = rf"[_^](?:{GROUP}|[−-]?[0-9]+|[{LETTER}0-9][′″']*)"
+SCRIPT = rf"[_^](?:{GROUP}|[−-]?[0-9]+|[{LETTER}0-9]{MARK}[′″']*)"
 TOKEN = re.compile(
     rf"(?P<word>[A-Za-z]{{2,}}(?:{SCRIPT})*)"  # a word: an operator, a named function, a product or English
     rf"|(?P<atom>{BASE}(?:{SCRIPT}|[′″'])*)"
@@ -94,6 +97,10 @@ def _to_tex(text: str) -> str:
             out.append("{" if grouping else r"\{")
         elif ch == "}":
             out.append("}" if (braces.pop() if braces else False) else r"\}")
+        elif k + 1 < len(text) and text[k + 1] in ACCENTS:  # T̄ -> \bar{T}, π̂ -> \hat{\pi}
+            out.append(ACCENTS[text[k + 1]] + "{" + GREEK.get(ch, SYMBOLS.get(ch, ch)).strip() + "}")
+            k += 2
+            continue
         elif ch in GREEK:
             nxt = text[k + 1] if k + 1 < len(text) else ""
             out.append(GREEK[ch] + (" " if nxt.isalnum() else ""))
