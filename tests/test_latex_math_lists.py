@@ -170,3 +170,14 @@ def test_sentence_reads_prose_by_a_template_of_its_words():
     assert sentence("where {w:words} holds", "where $a=1$ or\n$b=2$ holds") == {"w": "$a=1$ or $b=2$"}
     with pytest.raises(ValueError, match="slot kind"):
         sentence("{x:colour}", "red")
+
+
+def test_sentence_takes_a_control_words_argument_literally():
+    from paper_repro.printed.latex_math import sentence
+
+    line = r"as in Figure \ref{fig:limit} and (\emph{a}) for $n=1$"
+    assert sentence(r"as in Figure \ref{fig:limit} and (\emph{a}) for {n}", line) == {"n": "n=1"}
+    assert sentence(r"as in Figure \ref{fig:other} and (\emph{a}) for {n}", line) is None
+    assert sentence(r"as in Figure \ref{{label:word}} and (\emph{a}) for {n}", line) is None  # ':' is not a word char
+    assert sentence(r"as in Figure \ref{fig:{label:word}} and (\emph{a}) for {n}", line) == {"label": "limit",
+                                                                                           "n": "n=1"}

@@ -1428,6 +1428,8 @@ def _same_math(printed: str, template: str) -> bool:
 def _template_regex(template: str) -> tuple[re.Pattern, tuple[tuple[str, str], ...]]:
     parts, slots, pos = [], [], 0
     for m in _SLOT.finditer(template):
+        if m.group(0).startswith("{") and re.search(r"\\[A-Za-z]+$", template[:m.start()]):
+            continue  # the argument of a control word (\ref{fig:x}, \emph{a}) is literal text
         parts.append(r"\s*".join(re.escape(w) for w in template[pos:m.start()].split(" ")) if template[pos:m.start()]
                      else "")
         if m.group(0) == "...":
@@ -1456,7 +1458,9 @@ def sentence(template: str, tex: str, *, search: bool = False) -> dict[str, Any]
       ``{name:count}`` a number word or digits (an int, :data:`NUMBER_WORDS`; an unknown word gives ``None``);
     * ``$..$`` literal mathematics: the printed segment must *read* the same (:func:`parse`/:func:`parse_relation`,
       compared as sympy objects, so spacing and ``\left`` do not matter, while a changed index does);
-    * ``...`` any text; a space any white space (also none, so a template may break where the line does).
+    * ``...`` any text; a space any white space (also none, so a template may break where the line does);
+    * a brace group right after a control word (``\ref{fig:limit}``, ``\emph{a}``) is literal text; write
+      ``\ref{{label:word}}`` to read the label as a slot.
 
     The whole line must match (``search=True``: anywhere in it).  Returns the slots' values, or ``None`` when the
     words differ or a literal segment reads differently.
