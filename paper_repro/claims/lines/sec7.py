@@ -73,19 +73,6 @@ def word_list(text: str, vocabulary: dict[str, int], followed_by: str) -> list[i
     return [vocabulary[w] for w in words]
 
 
-def layout_free(tex: str) -> str:
-    """The text with its layout removed (``%`` line ends, colour macros, ``\\left``/``\\right``,
-    ``\\displaystyle``, ``\\limits``, ``&``, ``~``, ``\\,`` and white space): for the prose patterns of a line,
-    not for its formulas (those are read by :mod:`paper_repro.printed.latex_math`)."""
-    t = re.sub(r"%[^\n]*\n?", "", tex)
-    t = re.sub(r"\\(?:Red|Green|Blue|Orange)\{((?:[^{}]|\{[^{}]*\})*)\}", r"\1", t)
-    t = re.sub(r"\\(?:displaystyle|limits)(?![A-Za-z])", "", t)
-    t = re.sub(r"\\left(?![A-Za-z])|\\right(?![A-Za-z])", "", t)
-    t = t.replace("\\,", "").replace("~", "").replace("&", "")
-    t = re.sub(r"(\\[A-Za-z]+)\s+(?=[A-Za-z])", "\\1\0", t)
-    return re.sub(r"\s+", "", t).replace("\0", " ")
-
-
 def read_expression(tex: str, allowed: tuple[str, ...] = NAMES):
     """A simple printed expression (``\\alpha x``, ``1-x-y``, ``3n-1``) read by the one reader; ``ValueError`` on
     anything unread or a name outside ``allowed``."""
