@@ -4,7 +4,8 @@ Every printed formula is read from its verbatim LaTeX -- relations, elevation ro
 expressions, sums with bounds, listed ranges and intervals by the one reader :mod:`paper_repro.printed.latex_math`
 (interpreted by :mod:`paper_repro.printed.parsed`), which refuses anything unread; a changed relation, sign or
 superscript changes what is read; the key words (orders, degrees, 'convex', 'innermost', 'linearly independent',
-...) are read from the prose (:func:`word_list`) -- and compared with an independent computation of the package:
+...) are read from the prose (:func:`~paper_repro.printed.latex_math.sentence`, a list of words by
+:func:`listed_words`) -- and compared with an independent computation of the package:
 
 * normalizing coefficients: the closed forms recovered by :mod:`paper_repro.theory.closed_forms` (proven for every
   alpha, ``proof_cached``), as rational functions of t = tan(alpha/4) (:mod:`paper_repro.theory.ratfunc`), and the
@@ -60,17 +61,28 @@ DEGREE_WORDS = {"linear": 1, "quadratic": 2, "cubic": 3, "quartic": 4, "quintic"
                 "octic": 8, "nonic": 9}
 
 
-def word_list(text: str, vocabulary: dict[str, int], followed_by: str) -> list[int]:
-    """Values of the words of a prose list ``w1, w2 and w3`` (or ``w1 and w2``) right before ``followed_by``; every
-    word must be in ``vocabulary``, and a word listed twice is refused."""
-    text = re.sub(r"\s+", " ", text)
-    m = re.search(r"((?:[a-z]+, )*[a-z]+ and [a-z]+) " + re.escape(followed_by), text)
-    if not m:
-        raise ValueError(f"no list before {followed_by!r}")
-    words = re.split(r", | and ", m.group(1))
-    if any(w not in vocabulary for w in words) or len(set(words)) != len(words):
+def listed_words(words: str, vocabulary: dict[str, int]) -> list[int]:
+    """Values of the words of a prose list ``w1, w2 and w3`` (or ``w1 and w2``), as a ``{name:words}`` slot of
+    :func:`~paper_repro.printed.latex_math.sentence` returns it; every word must be in ``vocabulary``, and a word
+    listed twice is refused.
+
+    >>> listed_words("first, second and third", ORDINALS), listed_words("quadratic and octic", DEGREE_WORDS)
+    ([1, 2, 3], [2, 8])
+    """
+    head, sep, last = words.rpartition(" and ")
+    items = [*head.split(", "), last] if sep else []
+    if len(items) < 2 or any(w not in vocabulary for w in items) or len(set(items)) != len(items):
         raise ValueError(f"unread list {words!r}")
-    return [vocabulary[w] for w in words]
+    return [vocabulary[w] for w in items]
+
+
+def read_sentence(template: str, tex: str, what: str) -> dict:
+    """:func:`~paper_repro.printed.latex_math.sentence` of ``tex`` by ``template``; ``ValueError`` naming ``what``
+    when the words differ."""
+    got = LM.sentence(template, tex)
+    if got is None:
+        raise ValueError(f"unread line ({what})")
+    return got
 
 
 def read_expression(tex: str, allowed: tuple[str, ...] = NAMES):
@@ -1009,15 +1021,12 @@ def _numeric_limit(n: int, label: str, xyz=(Fraction(1, 2), Fraction(1, 4), Frac
         return mpmath.nstr(val / mono, 6)
 
 
-def _simplex_equation(text: str) -> bool:
-    """The printed ``$x+y+z=1$`` (exactly one ``=``) is the plane that the parametrization's rows make of
-    Omega^alpha: with u, v, w = alpha x, alpha y, alpha z and u + v + w = alpha, x + y + z = 1."""
+def _simplex_equation(tex: str) -> bool:
+    """The printed ``x+y+z=1`` (one ``=``, read by the one reader) is the plane that the parametrization's rows make
+    of Omega^alpha: with u, v, w = alpha x, alpha y, alpha z and u + v + w = alpha, x + y + z = 1."""
     import sympy as sp
 
-    found = [p for p in re.findall(r"\$([^$]*)\$", text) if "=" in p or "\\neq" in p]
-    if len(found) != 1 or found[0].count("=") != 1 or "\\" in found[0]:
-        raise ValueError(f"unread simplex equation {found!r}")
-    lhs, rhs = _relation(found[0]).parts
+    lhs, rhs = _relation(tex).parts
     alpha = sp.Symbol("alpha")
     rows = parametrization_rows()
     plane = sp.expand(sum(rows[r][1] for r in "uvw") / alpha)  # x + y + z of the parametrization (u+v+w = alpha)
@@ -1026,20 +1035,27 @@ def _simplex_equation(text: str) -> bool:
 
 def _orders_of_figure_cases() -> list[int]:
     """The orders of cases (a), (b), (c) of Fig. fig:limit_cases_n_1_2_3, read from its caption."""
-    return word_list(VERBATIM["sec7-fig-limit-caption-cases"], ORDINALS, "order constrained trivariate")
+    got = read_sentence("\\caption{Cases (\\emph{{a:word}}), (\\emph{{b:word}}) and (\\emph{{c:word}}) illustrate the "
+                        "limiting case $\\alpha\\to 0$ of the {orders:words} order constrained trivariate normalized "
+                        "trigonometric bases of type (\\ref{{eq:word}}), respectively.",
+                        VERBATIM["sec7-fig-limit-caption-cases"], "the cases' orders")
+    if (got["a"], got["b"], got["c"], got["eq"]) != ("a", "b", "c", "normalized_united_system"):
+        raise ValueError("unread caption of the cases (a), (b), (c)")
+    return listed_words(got["orders"], ORDINALS)
 
 
 @line_check("sec7-limit-degenerate-bernstein")
 def check_degenerate_bernstein() -> LineResult:
     tex = VERBATIM["sec7-limit-degenerate-bernstein"]
-    t = re.sub(r"\s+", " ", tex)
-    if not re.search(r"normalized constrained trivariate trigonometric function systems of type "
-                     r"\(\\ref\{normalized_united_system\}\) degenerate to constrained trivariate Bernstein "
-                     r"polynomials defined on the unit simplex \$", t):
-        raise ValueError("unread line (systems, 'degenerate to ... Bernstein polynomials ... unit simplex')")
-    ns = word_list(tex, ORDINALS, "order normalized")
+    got = read_sentence("it is easy to observe that the {orders:words} order normalized constrained trivariate "
+                        "trigonometric function systems of type (\\ref{{eq:word}}) degenerate to constrained "
+                        "trivariate Bernstein polynomials defined on the unit simplex {plane} as shown in "
+                        "Fig.\\ \\ref{...}.", tex, "systems, 'degenerate to Bernstein polynomials'")
+    if got["eq"] != "normalized_united_system":
+        raise ValueError("unread line (systems of type (normalized_united_system))")
+    ns = listed_words(got["orders"], ORDINALS)
     figure = ns == _orders_of_figure_cases()  # 'as shown in Fig.': the orders are those of the figure's cases
-    plane = _simplex_equation(tex)
+    plane = _simplex_equation(got["plane"])
     per_n = {str(n): bernstein_limits(n) for n in ns}
     printed = all(not r["proper_multiple"] for r in per_n.values())
     corrected = True
@@ -1178,12 +1194,12 @@ def check_caption_centre() -> LineResult:
                       detail={"values": vals})
 
 
-def _degrees_result(tex: str, degrees: list[int]) -> tuple[bool, dict]:
-    """Orders (ordinal words before 'order triangular') read from ``tex`` and the printed ``degrees``, paired in order,
-    against the degree of the alpha -> 0 limit from the proven closed forms and from the limit formula; the limit
-    point read (must be 0)."""
-    orders = word_list(tex, ORDINALS, "order triangular")
-    limit = alpha_limit(tex)
+def _degrees_result(got: dict, degrees: list[int]) -> tuple[bool, dict]:
+    """The orders (the ordinal words of the slot ``orders``) and the printed ``degrees``, paired in order, against the
+    degree of the alpha -> 0 limit from the proven closed forms and from the limit formula; the limit point (the
+    segment of the slot ``limit``) read (must be 0)."""
+    orders = listed_words(got["orders"], ORDINALS)
+    limit = alpha_limit(got["limit"])
     computed = {str(n): (limit_degree(n, "closed_forms"), limit_degree(n, "formula")) for n in orders}
     ok = limit == 0 and len(orders) == len(degrees) and all(
         a == b == d for (a, b), d in zip(computed.values(), degrees))
@@ -1193,12 +1209,20 @@ def _degrees_result(tex: str, degrees: list[int]) -> tuple[bool, dict]:
 
 @line_check("sec7-conversion-degrees")
 def check_conversion_degrees() -> LineResult:
-    line, cap = VERBATIM["sec7-conversion-degrees"], VERBATIM["sec7-fig-conversion-caption"]
-    ok1, d1 = _degrees_result(line, word_list(line, DEGREE_WORDS, "triangular B"))
-    caption = re.search(r"\(\\emph\{a\}\) ([a-z]+) and \(\\emph\{b\}\) ([a-z]+) triangular", cap)
-    if caption is None or any(w not in DEGREE_WORDS for w in caption.groups()):
+    """The orders, the degree words and 'when $\\alpha \\to 0$' of the line and of the caption of Fig.
+    fig:conversion (each read by :func:`~paper_repro.printed.latex_math.sentence`), paired in order."""
+    line = read_sentence("Moreover, the control nets of the original {orders:words} order triangular trigonometric "
+                         "patches can be converted to control nets that describe classical polynomial {degrees:words} "
+                         "triangular B\\'ezier patches, respectively, when {limit}.",
+                         VERBATIM["sec7-conversion-degrees"], "orders, degrees")
+    cap = read_sentence("\\caption{Conversion of control nets of original {orders:words} order triangular "
+                        "trigonometric patches to that of (\\emph{{a:word}}) {d1:word} and (\\emph{{b:word}}) "
+                        "{d2:word} triangular B\\'ezier patches, respectively, when {limit}.}",
+                        VERBATIM["sec7-fig-conversion-caption"], "caption degrees")
+    if (cap["a"], cap["b"]) != ("a", "b") or any(cap[d] not in DEGREE_WORDS for d in ("d1", "d2")):
         raise ValueError("unread caption degrees")
-    ok2, d2 = _degrees_result(cap, [DEGREE_WORDS[w] for w in caption.groups()])
+    ok1, d1 = _degrees_result(line, listed_words(line["degrees"], DEGREE_WORDS))
+    ok2, d2 = _degrees_result(cap, [DEGREE_WORDS[cap[d]] for d in ("d1", "d2")])
     return LineResult(ok1 and ok2, kind="proof", how="orders, degree words and alpha -> 0 read from the line and the "
                       "caption, paired in order; degree of the alpha -> 0 limit from the proven closed forms and from "
                       f"the limit formula, n = {', '.join(map(str, d1['orders']))} (the orders the line names)",
