@@ -271,9 +271,8 @@ def index_set_from_text(n: int) -> list[tuple[int, int]]:
     """(i, j) of the printed lists 'j=0,1,...,n-1 and i=j,j+1,...,2n-1-j' (first, step and last read from the
     verbatim)."""
     tex = VERBATIM["sec7-mixed-products-index-set"]
-    if not re.search(r"\bfor all indices\b", tex):
-        raise ValueError("no 'for all indices'")
-    return [(i, j) for j in listed_values(tex, "j", n=n) for i in listed_values(tex, "i", n=n, j=j)]
+    got = read_sentence("for all indices {j} and {i}", tex, "no 'for all indices $..$ and $..$'")
+    return [(i, j) for j in listed_values(got["j"], "j", n=n) for i in listed_values(got["i"], "i", n=n, j=j)]
 
 
 def _r_noncentre(n: int) -> list[tuple[int, int]]:
