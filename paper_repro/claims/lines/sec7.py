@@ -314,12 +314,12 @@ def product_expansion(n: int, t: str = "1/3") -> dict[tuple[str, str], list[fmpq
 def products_orders(tex: str) -> tuple[int, int]:
     """``(a, b)`` of the printed 'pairwise products of <a> order blending functions into linear combinations of
     <b> order blending functions' (ordinal words)."""
-    t = re.sub(r"\s+", " ", tex)
-    m = re.search(r"to transform the pairwise products of ([a-z]+) order blending functions into linear "
-                  r"combinations of ([a-z]+) order blending functions", t)
-    if not m or m.group(1) not in ORDINALS or m.group(2) not in ORDINALS:
+    got = read_sentence("For the moment, we are only able ... to transform the pairwise products of {a:word} order "
+                        "blending functions into linear combinations of {b:word} order blending functions.", tex,
+                        "orders of the products")
+    if got["a"] not in ORDINALS or got["b"] not in ORDINALS:
         raise ValueError("unread orders of the products")
-    return ORDINALS[m.group(1)], ORDINALS[m.group(2)]
+    return ORDINALS[got["a"]], ORDINALS[got["b"]]
 
 
 def products_in_span_modp(a: int, b: int) -> bool:
