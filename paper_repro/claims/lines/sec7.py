@@ -470,11 +470,13 @@ def check_same_as_example() -> LineResult:
     """The statement compares two printed things: the relations evaluated at the printed order-1 coefficients of
     Example normalizing_coefficients_n_1 against the printed order-2 ones of Example normalizing_coefficients_n_2
     (the order is read from the line: 'the same <ordinal> order normalizing coefficients ... Example \\ref{..}')."""
-    t = re.sub(r"\s+", " ", VERBATIM["sec7-rel-same-as-example"])
-    m = re.fullmatch(r"It is easy to verify that these relations lead to the same ([a-z]+) order normalizing "
-                     r"coefficients that were described in Example \\ref\{normalizing_coefficients_n_(\d+)\}", t)
-    if not m or m.group(1) not in ORDINALS:
+    got = read_sentence("It is easy to verify that these relations lead to the same {o:word} order normalizing "
+                        "coefficients that were described in Example \\ref{{example:word}}",
+                        VERBATIM["sec7-rel-same-as-example"], "order, Example")
+    example = got["example"].removeprefix("normalizing_coefficients_n_")
+    if got["o"] not in ORDINALS or example == got["example"] or not example.isdigit():
         raise ValueError("unread line")
+    said = [ORDINALS[got["o"]], int(example)]  # the ordinal and the order of the Example's label
     low, high = relation_orders()
     s, c = half_angle_functions()
     ns = {f"{col}2{k}": final_value(f"r_{{2,{k[0]},{k[1]}}}", s, c) for col in "rgb" for k in ("20", "10")}
@@ -488,22 +490,23 @@ def check_same_as_example() -> LineResult:
                              ns)
         if not val == final_value(rep[index_of(2)[label]], s, c):
             bad.append(slug)
-    orders = ORDINALS[m.group(1)] == int(m.group(2)) == high == 2 and low == 1
+    orders = said[0] == said[1] == high == 2 and low == 1
     return LineResult(not bad and orders, kind="proof", how="the order read from the line (and its Example) is the "
                       "order of the relations' left sides; the 19 relations at the printed order-1 closed forms "
                       "equal the printed order-2 closed forms, as rational functions of tan(alpha/4)",
                       detail={"relations": len(RELATION_IDS), "disagreeing": bad,
-                              "orders_read": [ORDINALS[m.group(1)], int(m.group(2))]})
+                              "orders_read": said})
 
 
 @line_check("sec7-rel-inheritance")
 def check_inheritance() -> LineResult:
-    t = re.sub(r"\s+", " ", VERBATIM["sec7-rel-inheritance"])
-    m = re.fullmatch(r"Observe that the symmetry and non-negativity of normalizing coefficients of order \$(\d+)\$ "
-                     r"are inherited by those of order \$(\d+)\$\.", t)
-    if not m:
-        raise ValueError("unread line (properties, orders)")
-    orders = (int(m.group(1)), int(m.group(2))) == relation_orders()
+    got = read_sentence("Observe that the symmetry and non-negativity of normalizing coefficients of order {low} are "
+                        "inherited by those of order {high}.", VERBATIM["sec7-rel-inheritance"], "properties, orders")
+    said = [read_expression(got[k], ()) for k in ("low", "high")]  # numbers: no name allowed
+    if not all(x.is_Integer for x in said):
+        raise ValueError(f"unread line (orders {said})")
+    said = [int(x) for x in said]
+    orders = tuple(said) == relation_orders()
     names = ("r220", "g220", "b220", "r210", "g210", "b210", "r211", "s", "c", "sinA", "tanH")
     ctx = fmpq_mpoly_ctx.get(names, "lex")
     gens = dict(zip(names, ctx.gens()))
@@ -522,7 +525,7 @@ def check_inheritance() -> LineResult:
                           "in the order-1 coefficients and s, c, sin(alpha), tan(alpha/2) (all positive on (0, pi)): "
                           "every coefficient is positive; with g = b = r at order 1 the r, g and b rows coincide",
                       detail={"all_coefficients_positive": nonneg, "rows_equal_under_symmetry": symmetric,
-                              "orders_read": [int(m.group(1)), int(m.group(2))]})
+                              "orders_read": said})
 
 
 # ---------------------------------------------------------------- Example exmp:degree_elevation_from_1_to_2
