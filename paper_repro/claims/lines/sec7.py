@@ -702,12 +702,12 @@ def same_patch_orders(tex: str) -> dict[str, int]:
     """Orders named by the line: the basis ``\\overline{T}_{2m}^{\\alpha}``, the '<ordinal> order blending
     functions', the '(i.e., <ordinal> order)' representation ``\\mathbf{s}_{k}^{\\alpha}`` and the original
     ``\\mathbf{s}_{l}^{\\alpha}``; every superscript must be ``\\alpha``."""
-    words, segs = LM.prose(tex)  # the words carry the ordinals; the three $..$ segments read by the one reader
-    m = re.fullmatch(r"into the basis \$\$ and then collecting the vector coefficients of ([a-z]+) order blending "
-                     r"functions, one obtains the order elevated \(i\.e\., ([a-z]+) order\) representation \$\$ of "
-                     r"the original patch \$\$", words)
-    if not m or m.group(1) not in ORDINALS or m.group(2) not in ORDINALS or len(segs) != 3:
+    got = LM.sentence("into the basis {basis} and then collecting the vector coefficients of {blending:word} order "
+                      "blending functions, one obtains the order elevated (i.e., {elevated:word} order) representation "
+                      "{s_elevated} of the original patch {s_original}", tex)  # the words carry the ordinals
+    if got is None or got["blending"] not in ORDINALS or got["elevated"] not in ORDINALS:
         raise ValueError("unread line (orders, superscripts)")
+    segs = [got[k] for k in ("basis", "s_elevated", "s_original")]  # read by the one reader
     basis, elevated, original = (LM.parse(seg) for seg in segs)  # every superscript must be the tag alpha:
     if any(LM.untagged(seg) or P.foreign_tags(seg) for seg in segs):  # none missing, none other
         raise ValueError("unread line (orders, superscripts)")
@@ -715,8 +715,9 @@ def same_patch_orders(tex: str) -> dict[str, int]:
             and all(len(x.args) == 1 and x.args[0].is_Integer for x in (basis, elevated, original))):
         raise ValueError(f"unread line (orders, superscripts): {basis}, {elevated}, {original}")
     k = int(basis.args[0])
-    return {"basis": k // 2 if k % 2 == 0 else -1, "blending": ORDINALS[m.group(1)],
-            "elevated": ORDINALS[m.group(2)], "s_elevated": int(elevated.args[0]), "s_original": int(original.args[0])}
+    return {"basis": k // 2 if k % 2 == 0 else -1, "blending": ORDINALS[got["blending"]],
+            "elevated": ORDINALS[got["elevated"]], "s_elevated": int(elevated.args[0]),
+            "s_original": int(original.args[0])}
 
 
 @line_check("sec7-elev-same-patch")
@@ -771,9 +772,9 @@ def _listed_points(tex: str) -> list[str]:
 @line_check("sec7-elev-convex")
 def check_elev_convex() -> LineResult:
     tex = VERBATIM["sec7-elev-convex"]
-    words = re.match(r"are in fact convex combinations of different subsets of control points\s*%", tex)
+    words = LM.sentence("are in fact convex combinations of different subsets of control points%...", tex)
     listed = _listed_points(tex)
-    if not words:
+    if words is None:
         raise ValueError("unread words ('convex combinations of different subsets')")
     listed_ok = sorted(listed) == _point_names(1)
     x = RatFunc(fmpq_poly([0, 1]))  # c2 = cos^2(alpha/2) runs over (0, 1) for alpha in (0, pi)
@@ -808,12 +809,12 @@ def _net_to_patch_distance(net: np.ndarray, patch_pts: np.ndarray) -> float:
 def check_elev_closer() -> LineResult:
     from paper_repro.core.domain import sample_points
 
-    t = re.sub(r"\s+", " ", VERBATIM["sec7-elev-closer"])
-    m = re.fullmatch(r"Thus, the degree elevated \(([a-z]+) order\) control net is closer to the given patch than its "
-                     r"original \(([a-z]+) order\) one for all values of \$\\alpha\$\.", t)
-    if not m or m.group(1) not in ORDINALS or m.group(2) not in ORDINALS:
+    got = read_sentence("Thus, the degree elevated ({elevated:word} order) control net is closer to the given patch "
+                        "than its original ({original:word} order) one for all values of $\\alpha$.",
+                        VERBATIM["sec7-elev-closer"], "orders, quantifier")
+    if got["elevated"] not in ORDINALS or got["original"] not in ORDINALS:
         raise ValueError("unread line (orders, quantifier)")
-    orders = (ORDINALS[m.group(2)], ORDINALS[m.group(1)]) == elevation_orders()
+    orders = (ORDINALS[got["original"]], ORDINALS[got["elevated"]]) == elevation_orders()
     rng = np.random.default_rng(23)
     results = {}
     for alpha in (0.6, math.pi / 2, 2.6):
