@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import functools
 import math
+import operator
 import re
 from fractions import Fraction
 from functools import cache
@@ -836,18 +837,43 @@ def check_elev_closer() -> LineResult:
                       detail={"nets_closer_after_elevation_of_10": results})
 
 
+def alpha_condition(tex: str):
+    r"""The printed condition on alpha (``0<\alpha<\frac{\pi}{2}``, ``\alpha=\frac{\pi}{2}``: a chain of
+    ``<``, ``<=``, ``=``, read by :func:`~paper_repro.printed.latex_math.parse_relation`) as a predicate of alpha/pi
+    (a Fraction), evaluated exactly: every part must be a rational multiple of pi once alpha is.
+
+    >>> p = alpha_condition("\\frac{\\pi}{2}<\\alpha <\\pi")
+    >>> p(Fraction(1, 2)), p(Fraction(3, 4)), p(Fraction(1))
+    (False, True, False)
+    """
+    ops = {"<": operator.lt, "<=": operator.le, "=": operator.eq, ">": operator.gt, ">=": operator.ge}
+    rel = LM.parse_relation(tex)
+    alpha = sympy.Symbol("alpha")
+    names = set().union(*(x.free_symbols for x in rel.parts))
+    if rel.conditions or rel.lead or not rel.ops or any(op not in ops for op in rel.ops) or names != {alpha}:
+        raise ValueError(f"unread condition on alpha {tex!r}")
+
+    def holds(a: Fraction) -> bool:
+        vals = [sympy.nsimplify(x.subs(alpha, sympy.Rational(a.numerator, a.denominator) * sympy.pi) / sympy.pi)
+                for x in rel.parts]
+        if not all(v.is_Rational for v in vals):
+            raise ValueError(f"condition {tex!r}: not a rational multiple of pi")
+        return all(ops[op](Fraction(int(x.p), int(x.q)), Fraction(int(y.p), int(y.q)))
+                   for op, x, y in zip(rel.ops, vals, vals[1:]))
+
+    return holds
+
+
 @line_check("sec7-fig-elev-ranges")
 def check_fig_elev_ranges() -> LineResult:
-    import re
-
-    tex = VERBATIM["sec7-fig-elev-caption"]
-    conds = re.findall(r"\$([^$]*)\$", tex)[1:]
-    preds = []
-    for cond in conds:
-        c = cond.replace("\n", "").replace(" ", "").replace("\\frac{\\pi}{2}", "H").replace("\\pi", "P")
-        c = c.replace("\\alpha", "a")
-        preds.append({"0<a<H": lambda a: 0 < a < Fraction(1, 2), "a=H": lambda a: a == Fraction(1, 2),
-                      "H<a<P": lambda a: Fraction(1, 2) < a < 1}[c])
+    """The caption's three conditions on alpha (read by :func:`~paper_repro.printed.latex_math.sentence`, each by
+    :func:`alpha_condition`) partition (0, pi); the printed weights against the exact elevation in each case."""
+    got = read_sentence("in cases (\\emph{{a:word}}), (\\emph{{b:word}}) and (\\emph{{c:word}}) the parameter "
+                        "$\\alpha$ fulfills the conditions {ca}, {cb} and {cc}, respectively.",
+                        VERBATIM["sec7-fig-elev-caption"], "cases, conditions")
+    if (got["a"], got["b"], got["c"]) != ("a", "b", "c"):
+        raise ValueError("unread cases (a), (b), (c)")
+    preds = [alpha_condition(got[k]) for k in ("ca", "cb", "cc")]
     samples = [Fraction(k, 24) for k in range(1, 24)]  # alpha / pi
     partition = all(sum(p(a) for p in preds) == 1 for a in samples) and not any(p(Fraction(0)) or p(Fraction(1))
                                                                                  for p in preds)
