@@ -21,7 +21,6 @@ from __future__ import annotations
 import functools
 import math
 import operator
-import re
 from fractions import Fraction
 from functools import cache
 
@@ -1182,7 +1181,8 @@ def _paper_spelling() -> str:
 
     from paper_repro.printed.lines import all_lines
 
-    words = Counter(w.lower() for ln in all_lines() for w in re.findall(r"\b[Tt]ri[a-z]*variate\b", ln.verbatim))
+    prose_words = (x.strip(".,;:(){}").lower() for ln in all_lines() for x in LM.prose(ln.verbatim)[0].split())
+    words = Counter(w for w in prose_words if w.startswith("tri") and w.endswith("variate") and w.isalpha())
     return words.most_common(1)[0][0]
 
 
@@ -1192,14 +1192,13 @@ def check_caption_centre() -> LineResult:
     0), the word 'vanish', and the limit point of alpha, read; compared with the limits of the proven closed forms
     (n = 1..3) and of the limit formula (n = 1..12), or, for a limit point other than 0, with the values there."""
     tex = VERBATIM["sec7-fig-limit-caption-centre"]
-    t = re.sub(r"\s+", " ", tex)
-    m = re.fullmatch(r"Constrained ([a-z]+) normalized trigonometric basis functions associated with the "
-                     r"(innermost|outermost) node of the graphs above vanish when (\$[^$]+\$)\.", t)
-    if not m:
+    m = read_sentence("Constrained {word:word} normalized trigonometric basis functions associated with the "
+                      "{node:word} node of the graphs above vanish when {limit}.", tex, "node, 'vanish when'")
+    if m["node"] not in ("innermost", "outermost"):
         raise ValueError("unread caption (node, 'vanish when')")
-    spelled = m.group(1) == _paper_spelling()  # 'triavariate' is a typographical slip (erratum on the line)
-    level = (lambda n: n) if m.group(2) == "innermost" else (lambda n: 0)
-    limit = alpha_limit(m.group(3))
+    spelled = m["word"] == _paper_spelling()  # 'triavariate' is a typographical slip (erratum on the line)
+    level = (lambda n: n) if m["node"] == "innermost" else (lambda n: 0)
+    limit = alpha_limit(m["limit"])
     named = {str(n): sorted(lab.paper for lab in united_system(n) if lab.j == level(n)) for n in range(1, 13)}
     if limit == 0:
         closed = {str(n): sorted(lab.paper for lab, (c, _) in zip(united_system(n), limit_terms(n)) if c == 0)
@@ -1210,7 +1209,7 @@ def check_caption_centre() -> LineResult:
         return LineResult(ok and spelled, ok, kind="exhaustive",
                           how="node read from the caption; limit coefficients P_f(1) of the proven closed forms "
                           "(n = 1..3) and the limit formula (n = 1..12): exactly the named node's functions tend to 0",
-                          detail={"word": m.group(1), "paper_spelling": _paper_spelling(),
+                          detail={"word": m["word"], "paper_spelling": _paper_spelling(),
                                   "named": {k: v for k, v in named.items() if int(k) <= 3},
                                   "vanishing_closed_forms": closed, "vanishing_formula_n_le_12": len(formula)})
     value = float(limit)
@@ -1350,10 +1349,8 @@ def check_conversion_symmetry() -> LineResult:
 
 @line_check("sec7-conversion-convex")
 def check_conversion_convex() -> LineResult:
-    t = re.sub(r"\s+", " ", VERBATIM["sec7-conversion-convex"])
-    if not re.fullmatch(r"shows all B\\'ezier points obtained by the evaluation of convex combinations describing "
-                        r"these conversion processes\.", t):
-        raise ValueError("unread line ('all ... convex combinations')")
+    read_sentence("shows all B\\'ezier points obtained by the evaluation of convex combinations describing these "
+                  "conversion processes.", VERBATIM["sec7-conversion-convex"], "'all ... convex combinations'")
     printed = printed_conversions()
     per_n = {}
     for n in sorted(printed):
@@ -1374,18 +1371,17 @@ def check_question_limiting_case(verbatim: str | None = None) -> LineResult:
     the limit formula and from the proven closed forms."""
     from paper_repro.printed.parsed import bound
 
-    t = re.sub(r"\s+", " ", VERBATIM["sec7-question-limiting-case"] if verbatim is None else verbatim)
-    m = re.match(r"Is the limiting case (\$[^$]+\$) of the \(rational\) triangular trigonometric patch of order "
-                 r"\$([^$]+)\$ a \(rational\) triangular B\\'ezier patch of degree \$([^$]+)\$ defined on the unit "
-                 r"simplex\?", t)
-    if not m:
+    m = LM.sentence("Is the limiting case {limit} of the (rational) triangular trigonometric patch of order {n} a "
+                    "(rational) triangular B\\'ezier patch of degree {degree} defined on the unit simplex?...",
+                    VERBATIM["sec7-question-limiting-case"] if verbatim is None else verbatim)
+    if m is None:
         return LineResult(False, how="the Question read from the transcription, n = 1..12", kind="exhaustive",
                           detail={"unread": "no 'limiting case $..$ ... of order $..$ ... of degree $..$'"})
-    limit = alpha_limit(m.group(1))
-    degrees = {str(n): limit_degree(bound(m.group(2), n=n), "formula") for n in range(1, 13)}
+    limit = alpha_limit(m["limit"])
+    degrees = {str(n): limit_degree(bound(m["n"], n=n), "formula") for n in range(1, 13)}
     lemmas = {str(n): all(v for k, v in limit_checks(n).items() if isinstance(v, bool)) for n in range(1, 6)}
-    closed = {str(n): limit_degree(bound(m.group(2), n=n), "closed_forms") for n in (1, 2, 3, 4)}
-    ok = limit == 0 and all(d == bound(m.group(3), n=int(n)) for n, d in {**degrees, **closed}.items()) \
+    closed = {str(n): limit_degree(bound(m["n"], n=n), "closed_forms") for n in (1, 2, 3, 4)}
+    ok = limit == 0 and all(d == bound(m["degree"], n=int(n)) for n, d in {**degrees, **closed}.items()) \
         and all(lemmas.values())
     return LineResult(ok, kind="exhaustive",
                       how="limit point, order and degree read from the Question; degree of the limit Bezier triangle "
