@@ -166,9 +166,8 @@ def printed_products() -> dict:
     (sec7-transformation-consequences: a recurrence of consecutive orders, symmetry and non-negativity, order
     elevation from n to n + 1).  Every formula is read by
     :mod:`paper_repro.printed.latex_math` (the lists of products by ``parse_list``); the prose around the ``$..$``
-    segments is matched as words.  ``ValueError`` on anything unread."""
-    import re
-
+    segments is read by :func:`~paper_repro.printed.latex_math.sentence`/``prose``.  ``ValueError`` on anything
+    unread."""
     import sympy
 
     from paper_repro.claims.lines import sec7 as X
@@ -214,12 +213,11 @@ def printed_products() -> dict:
     elevation = (X.read_expression(segs[1]), X.read_expression(segs[2]))
     if getattr(getattr(system, "func", None), "__name__", "") != "Tbar" or system.args != (2 * elevation[0],):
         raise ValueError(f"the blending system {system} is not T-bar of the order elevated from ({elevation[0]})")
-    index = verbatim("sec7-mixed-products-index-set")
-    if not re.search(r"\bfor all indices\b", index):  # prose
-        raise ValueError("no 'for all indices'")
+    index = X.read_sentence("for all indices {j} and {i}", verbatim("sec7-mixed-products-index-set"),
+                            "no 'for all indices $..$ and $..$'")  # prose, the two listed ranges its segments
     return {"easy": easy, "hard": hard, "target_order": target / 2, "elevation": elevation,
-            "index_set": lambda n: [(i, j) for j in X.listed_values(index, "j", n=n)
-                                    for i in X.listed_values(index, "i", n=n, j=j)]}
+            "index_set": lambda n: [(i, j) for j in X.listed_values(index["j"], "j", n=n)
+                                    for i in X.listed_values(index["i"], "i", n=n, j=j)]}
 
 
 def printed_products_agree(n_max: int = 12) -> dict:

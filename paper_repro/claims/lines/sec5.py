@@ -11,7 +11,6 @@ coefficients`), univariate constants from the expansion of ``(X^2 + 2 c X Y + Y^
 
 from __future__ import annotations
 
-import re
 from functools import cache
 from itertools import product
 from math import comb
@@ -148,8 +147,10 @@ def check_partition_sum(text: str | None = None) -> LineResult:
             raise LatexMathError("the row '& =sum' not read")
         if quant != "for all" or tuple(str(x) for x in args) != dom_vars:
             raise LatexMathError(f"domain read as {quant!r} {dom_vars}")
-        said = re.search(r"contains the constant function \$(\d+)\$.*?there exist (\w+) coefficients", prose, re.S)
-        if not said or sympy.Integer(said.group(1)) != const or said.group(2) != "unique":
+        said = LM.sentence("Since the function system ... that also contains the constant function {one}, it follows "
+                           "that there exist {unique:word} coefficients%", prose)
+        if said is None or said["unique"] != "unique" or not (number := LM.parse(said["one"])).is_Integer \
+                or number != const:
             raise LatexMathError("the constant function or 'unique' of the sentence not read")
         for labels_text in ([verbatim(x) for x in ("sec4_5-L-sum", "sec4_5-L-domain")] if text is None else [text]):
             if P.foreign_tags(labels_text):
@@ -535,7 +536,7 @@ def check_system(override: dict[str, str] | None = None) -> LineResult:
     try:
         _r, r_lo_e, r_hi_e = read_system(t["sec4_5-system"], t["sec4_5-system-r-range"])["orders"]
         for k in (1, 2, 3):
-            if not re.search(r"the unique solution", t[f"sec4_5-unique-solution-n{k}"]):
+            if LM.sentence("...the unique solution...", t[f"sec4_5-unique-solution-n{k}"]) is None:
                 raise LatexMathError(f"'the unique solution' not read in Example n = {k}")
         listed = example_heads()
         for k in (1, 2, 3):  # "the unique solution ... is": each Example lists every unknown once

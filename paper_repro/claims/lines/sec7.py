@@ -4,7 +4,8 @@ Every printed formula is read from its verbatim LaTeX -- relations, elevation ro
 expressions, sums with bounds, listed ranges and intervals by the one reader :mod:`paper_repro.printed.latex_math`
 (interpreted by :mod:`paper_repro.printed.parsed`), which refuses anything unread; a changed relation, sign or
 superscript changes what is read; the key words (orders, degrees, 'convex', 'innermost', 'linearly independent',
-...) are read from the prose (:func:`word_list`) -- and compared with an independent computation of the package:
+...) are read from the prose (:func:`~paper_repro.printed.latex_math.sentence`, a list of words by
+:func:`listed_words`) -- and compared with an independent computation of the package:
 
 * normalizing coefficients: the closed forms recovered by :mod:`paper_repro.theory.closed_forms` (proven for every
   alpha, ``proof_cached``), as rational functions of t = tan(alpha/4) (:mod:`paper_repro.theory.ratfunc`), and the
@@ -19,7 +20,7 @@ from __future__ import annotations
 
 import functools
 import math
-import re
+import operator
 from fractions import Fraction
 from functools import cache
 
@@ -60,30 +61,28 @@ DEGREE_WORDS = {"linear": 1, "quadratic": 2, "cubic": 3, "quartic": 4, "quintic"
                 "octic": 8, "nonic": 9}
 
 
-def word_list(text: str, vocabulary: dict[str, int], followed_by: str) -> list[int]:
-    """Values of the words of a prose list ``w1, w2 and w3`` (or ``w1 and w2``) right before ``followed_by``; every
-    word must be in ``vocabulary``, and a word listed twice is refused."""
-    text = re.sub(r"\s+", " ", text)
-    m = re.search(r"((?:[a-z]+, )*[a-z]+ and [a-z]+) " + re.escape(followed_by), text)
-    if not m:
-        raise ValueError(f"no list before {followed_by!r}")
-    words = re.split(r", | and ", m.group(1))
-    if any(w not in vocabulary for w in words) or len(set(words)) != len(words):
+def listed_words(words: str, vocabulary: dict[str, int]) -> list[int]:
+    """Values of the words of a prose list ``w1, w2 and w3`` (or ``w1 and w2``), as a ``{name:words}`` slot of
+    :func:`~paper_repro.printed.latex_math.sentence` returns it; every word must be in ``vocabulary``, and a word
+    listed twice is refused.
+
+    >>> listed_words("first, second and third", ORDINALS), listed_words("quadratic and octic", DEGREE_WORDS)
+    ([1, 2, 3], [2, 8])
+    """
+    head, sep, last = words.rpartition(" and ")
+    items = [*head.split(", "), last] if sep else []
+    if len(items) < 2 or any(w not in vocabulary for w in items) or len(set(items)) != len(items):
         raise ValueError(f"unread list {words!r}")
-    return [vocabulary[w] for w in words]
+    return [vocabulary[w] for w in items]
 
 
-def layout_free(tex: str) -> str:
-    """The text with its layout removed (``%`` line ends, colour macros, ``\\left``/``\\right``,
-    ``\\displaystyle``, ``\\limits``, ``&``, ``~``, ``\\,`` and white space): for the prose patterns of a line,
-    not for its formulas (those are read by :mod:`paper_repro.printed.latex_math`)."""
-    t = re.sub(r"%[^\n]*\n?", "", tex)
-    t = re.sub(r"\\(?:Red|Green|Blue|Orange)\{((?:[^{}]|\{[^{}]*\})*)\}", r"\1", t)
-    t = re.sub(r"\\(?:displaystyle|limits)(?![A-Za-z])", "", t)
-    t = re.sub(r"\\left(?![A-Za-z])|\\right(?![A-Za-z])", "", t)
-    t = t.replace("\\,", "").replace("~", "").replace("&", "")
-    t = re.sub(r"(\\[A-Za-z]+)\s+(?=[A-Za-z])", "\\1\0", t)
-    return re.sub(r"\s+", "", t).replace("\0", " ")
+def read_sentence(template: str, tex: str, what: str) -> dict:
+    """:func:`~paper_repro.printed.latex_math.sentence` of ``tex`` by ``template``; ``ValueError`` naming ``what``
+    when the words differ."""
+    got = LM.sentence(template, tex)
+    if got is None:
+        raise ValueError(f"unread line ({what})")
+    return got
 
 
 def read_expression(tex: str, allowed: tuple[str, ...] = NAMES):
@@ -272,9 +271,8 @@ def index_set_from_text(n: int) -> list[tuple[int, int]]:
     """(i, j) of the printed lists 'j=0,1,...,n-1 and i=j,j+1,...,2n-1-j' (first, step and last read from the
     verbatim)."""
     tex = VERBATIM["sec7-mixed-products-index-set"]
-    if not re.search(r"\bfor all indices\b", tex):
-        raise ValueError("no 'for all indices'")
-    return [(i, j) for j in listed_values(tex, "j", n=n) for i in listed_values(tex, "i", n=n, j=j)]
+    got = read_sentence("for all indices {j} and {i}", tex, "no 'for all indices $..$ and $..$'")
+    return [(i, j) for j in listed_values(got["j"], "j", n=n) for i in listed_values(got["i"], "i", n=n, j=j)]
 
 
 def _r_noncentre(n: int) -> list[tuple[int, int]]:
@@ -316,12 +314,12 @@ def product_expansion(n: int, t: str = "1/3") -> dict[tuple[str, str], list[fmpq
 def products_orders(tex: str) -> tuple[int, int]:
     """``(a, b)`` of the printed 'pairwise products of <a> order blending functions into linear combinations of
     <b> order blending functions' (ordinal words)."""
-    t = re.sub(r"\s+", " ", tex)
-    m = re.search(r"to transform the pairwise products of ([a-z]+) order blending functions into linear "
-                  r"combinations of ([a-z]+) order blending functions", t)
-    if not m or m.group(1) not in ORDINALS or m.group(2) not in ORDINALS:
+    got = read_sentence("For the moment, we are only able ... to transform the pairwise products of {a:word} order "
+                        "blending functions into linear combinations of {b:word} order blending functions.", tex,
+                        "orders of the products")
+    if got["a"] not in ORDINALS or got["b"] not in ORDINALS:
         raise ValueError("unread orders of the products")
-    return ORDINALS[m.group(1)], ORDINALS[m.group(2)]
+    return ORDINALS[got["a"]], ORDINALS[got["b"]]
 
 
 def products_in_span_modp(a: int, b: int) -> bool:
@@ -472,11 +470,13 @@ def check_same_as_example() -> LineResult:
     """The statement compares two printed things: the relations evaluated at the printed order-1 coefficients of
     Example normalizing_coefficients_n_1 against the printed order-2 ones of Example normalizing_coefficients_n_2
     (the order is read from the line: 'the same <ordinal> order normalizing coefficients ... Example \\ref{..}')."""
-    t = re.sub(r"\s+", " ", VERBATIM["sec7-rel-same-as-example"])
-    m = re.fullmatch(r"It is easy to verify that these relations lead to the same ([a-z]+) order normalizing "
-                     r"coefficients that were described in Example \\ref\{normalizing_coefficients_n_(\d+)\}", t)
-    if not m or m.group(1) not in ORDINALS:
+    got = read_sentence("It is easy to verify that these relations lead to the same {o:word} order normalizing "
+                        "coefficients that were described in Example \\ref{{example:word}}",
+                        VERBATIM["sec7-rel-same-as-example"], "order, Example")
+    example = got["example"].removeprefix("normalizing_coefficients_n_")
+    if got["o"] not in ORDINALS or example == got["example"] or not example.isdigit():
         raise ValueError("unread line")
+    said = [ORDINALS[got["o"]], int(example)]  # the ordinal and the order of the Example's label
     low, high = relation_orders()
     s, c = half_angle_functions()
     ns = {f"{col}2{k}": final_value(f"r_{{2,{k[0]},{k[1]}}}", s, c) for col in "rgb" for k in ("20", "10")}
@@ -490,22 +490,23 @@ def check_same_as_example() -> LineResult:
                              ns)
         if not val == final_value(rep[index_of(2)[label]], s, c):
             bad.append(slug)
-    orders = ORDINALS[m.group(1)] == int(m.group(2)) == high == 2 and low == 1
+    orders = said[0] == said[1] == high == 2 and low == 1
     return LineResult(not bad and orders, kind="proof", how="the order read from the line (and its Example) is the "
                       "order of the relations' left sides; the 19 relations at the printed order-1 closed forms "
                       "equal the printed order-2 closed forms, as rational functions of tan(alpha/4)",
                       detail={"relations": len(RELATION_IDS), "disagreeing": bad,
-                              "orders_read": [ORDINALS[m.group(1)], int(m.group(2))]})
+                              "orders_read": said})
 
 
 @line_check("sec7-rel-inheritance")
 def check_inheritance() -> LineResult:
-    t = re.sub(r"\s+", " ", VERBATIM["sec7-rel-inheritance"])
-    m = re.fullmatch(r"Observe that the symmetry and non-negativity of normalizing coefficients of order \$(\d+)\$ "
-                     r"are inherited by those of order \$(\d+)\$\.", t)
-    if not m:
-        raise ValueError("unread line (properties, orders)")
-    orders = (int(m.group(1)), int(m.group(2))) == relation_orders()
+    got = read_sentence("Observe that the symmetry and non-negativity of normalizing coefficients of order {low} are "
+                        "inherited by those of order {high}.", VERBATIM["sec7-rel-inheritance"], "properties, orders")
+    said = [read_expression(got[k], ()) for k in ("low", "high")]  # numbers: no name allowed
+    if not all(x.is_Integer for x in said):
+        raise ValueError(f"unread line (orders {said})")
+    said = [int(x) for x in said]
+    orders = tuple(said) == relation_orders()
     names = ("r220", "g220", "b220", "r210", "g210", "b210", "r211", "s", "c", "sinA", "tanH")
     ctx = fmpq_mpoly_ctx.get(names, "lex")
     gens = dict(zip(names, ctx.gens()))
@@ -524,7 +525,7 @@ def check_inheritance() -> LineResult:
                           "in the order-1 coefficients and s, c, sin(alpha), tan(alpha/2) (all positive on (0, pi)): "
                           "every coefficient is positive; with g = b = r at order 1 the r, g and b rows coincide",
                       detail={"all_coefficients_positive": nonneg, "rows_equal_under_symmetry": symmetric,
-                              "orders_read": [int(m.group(1)), int(m.group(2))]})
+                              "orders_read": said})
 
 
 # ---------------------------------------------------------------- Example exmp:degree_elevation_from_1_to_2
@@ -701,12 +702,12 @@ def same_patch_orders(tex: str) -> dict[str, int]:
     """Orders named by the line: the basis ``\\overline{T}_{2m}^{\\alpha}``, the '<ordinal> order blending
     functions', the '(i.e., <ordinal> order)' representation ``\\mathbf{s}_{k}^{\\alpha}`` and the original
     ``\\mathbf{s}_{l}^{\\alpha}``; every superscript must be ``\\alpha``."""
-    words, segs = LM.prose(tex)  # the words carry the ordinals; the three $..$ segments read by the one reader
-    m = re.fullmatch(r"into the basis \$\$ and then collecting the vector coefficients of ([a-z]+) order blending "
-                     r"functions, one obtains the order elevated \(i\.e\., ([a-z]+) order\) representation \$\$ of "
-                     r"the original patch \$\$", words)
-    if not m or m.group(1) not in ORDINALS or m.group(2) not in ORDINALS or len(segs) != 3:
+    got = LM.sentence("into the basis {basis} and then collecting the vector coefficients of {blending:word} order "
+                      "blending functions, one obtains the order elevated (i.e., {elevated:word} order) representation "
+                      "{s_elevated} of the original patch {s_original}", tex)  # the words carry the ordinals
+    if got is None or got["blending"] not in ORDINALS or got["elevated"] not in ORDINALS:
         raise ValueError("unread line (orders, superscripts)")
+    segs = [got[k] for k in ("basis", "s_elevated", "s_original")]  # read by the one reader
     basis, elevated, original = (LM.parse(seg) for seg in segs)  # every superscript must be the tag alpha:
     if any(LM.untagged(seg) or P.foreign_tags(seg) for seg in segs):  # none missing, none other
         raise ValueError("unread line (orders, superscripts)")
@@ -714,8 +715,9 @@ def same_patch_orders(tex: str) -> dict[str, int]:
             and all(len(x.args) == 1 and x.args[0].is_Integer for x in (basis, elevated, original))):
         raise ValueError(f"unread line (orders, superscripts): {basis}, {elevated}, {original}")
     k = int(basis.args[0])
-    return {"basis": k // 2 if k % 2 == 0 else -1, "blending": ORDINALS[m.group(1)],
-            "elevated": ORDINALS[m.group(2)], "s_elevated": int(elevated.args[0]), "s_original": int(original.args[0])}
+    return {"basis": k // 2 if k % 2 == 0 else -1, "blending": ORDINALS[got["blending"]],
+            "elevated": ORDINALS[got["elevated"]], "s_elevated": int(elevated.args[0]),
+            "s_original": int(original.args[0])}
 
 
 @line_check("sec7-elev-same-patch")
@@ -770,9 +772,9 @@ def _listed_points(tex: str) -> list[str]:
 @line_check("sec7-elev-convex")
 def check_elev_convex() -> LineResult:
     tex = VERBATIM["sec7-elev-convex"]
-    words = re.match(r"are in fact convex combinations of different subsets of control points\s*%", tex)
+    words = LM.sentence("are in fact convex combinations of different subsets of control points%...", tex)
     listed = _listed_points(tex)
-    if not words:
+    if words is None:
         raise ValueError("unread words ('convex combinations of different subsets')")
     listed_ok = sorted(listed) == _point_names(1)
     x = RatFunc(fmpq_poly([0, 1]))  # c2 = cos^2(alpha/2) runs over (0, 1) for alpha in (0, pi)
@@ -807,12 +809,12 @@ def _net_to_patch_distance(net: np.ndarray, patch_pts: np.ndarray) -> float:
 def check_elev_closer() -> LineResult:
     from paper_repro.core.domain import sample_points
 
-    t = re.sub(r"\s+", " ", VERBATIM["sec7-elev-closer"])
-    m = re.fullmatch(r"Thus, the degree elevated \(([a-z]+) order\) control net is closer to the given patch than its "
-                     r"original \(([a-z]+) order\) one for all values of \$\\alpha\$\.", t)
-    if not m or m.group(1) not in ORDINALS or m.group(2) not in ORDINALS:
+    got = read_sentence("Thus, the degree elevated ({elevated:word} order) control net is closer to the given patch "
+                        "than its original ({original:word} order) one for all values of $\\alpha$.",
+                        VERBATIM["sec7-elev-closer"], "orders, quantifier")
+    if got["elevated"] not in ORDINALS or got["original"] not in ORDINALS:
         raise ValueError("unread line (orders, quantifier)")
-    orders = (ORDINALS[m.group(2)], ORDINALS[m.group(1)]) == elevation_orders()
+    orders = (ORDINALS[got["original"]], ORDINALS[got["elevated"]]) == elevation_orders()
     rng = np.random.default_rng(23)
     results = {}
     for alpha in (0.6, math.pi / 2, 2.6):
@@ -834,18 +836,43 @@ def check_elev_closer() -> LineResult:
                       detail={"nets_closer_after_elevation_of_10": results})
 
 
+def alpha_condition(tex: str):
+    r"""The printed condition on alpha (``0<\alpha<\frac{\pi}{2}``, ``\alpha=\frac{\pi}{2}``: a chain of
+    ``<``, ``<=``, ``=``, read by :func:`~paper_repro.printed.latex_math.parse_relation`) as a predicate of alpha/pi
+    (a Fraction), evaluated exactly: every part must be a rational multiple of pi once alpha is.
+
+    >>> p = alpha_condition("\\frac{\\pi}{2}<\\alpha <\\pi")
+    >>> p(Fraction(1, 2)), p(Fraction(3, 4)), p(Fraction(1))
+    (False, True, False)
+    """
+    ops = {"<": operator.lt, "<=": operator.le, "=": operator.eq, ">": operator.gt, ">=": operator.ge}
+    rel = LM.parse_relation(tex)
+    alpha = sympy.Symbol("alpha")
+    names = set().union(*(x.free_symbols for x in rel.parts))
+    if rel.conditions or rel.lead or not rel.ops or any(op not in ops for op in rel.ops) or names != {alpha}:
+        raise ValueError(f"unread condition on alpha {tex!r}")
+
+    def holds(a: Fraction) -> bool:
+        vals = [sympy.nsimplify(x.subs(alpha, sympy.Rational(a.numerator, a.denominator) * sympy.pi) / sympy.pi)
+                for x in rel.parts]
+        if not all(v.is_Rational for v in vals):
+            raise ValueError(f"condition {tex!r}: not a rational multiple of pi")
+        return all(ops[op](Fraction(int(x.p), int(x.q)), Fraction(int(y.p), int(y.q)))
+                   for op, x, y in zip(rel.ops, vals, vals[1:]))
+
+    return holds
+
+
 @line_check("sec7-fig-elev-ranges")
 def check_fig_elev_ranges() -> LineResult:
-    import re
-
-    tex = VERBATIM["sec7-fig-elev-caption"]
-    conds = re.findall(r"\$([^$]*)\$", tex)[1:]
-    preds = []
-    for cond in conds:
-        c = cond.replace("\n", "").replace(" ", "").replace("\\frac{\\pi}{2}", "H").replace("\\pi", "P")
-        c = c.replace("\\alpha", "a")
-        preds.append({"0<a<H": lambda a: 0 < a < Fraction(1, 2), "a=H": lambda a: a == Fraction(1, 2),
-                      "H<a<P": lambda a: Fraction(1, 2) < a < 1}[c])
+    """The caption's three conditions on alpha (read by :func:`~paper_repro.printed.latex_math.sentence`, each by
+    :func:`alpha_condition`) partition (0, pi); the printed weights against the exact elevation in each case."""
+    got = read_sentence("in cases (\\emph{{a:word}}), (\\emph{{b:word}}) and (\\emph{{c:word}}) the parameter "
+                        "$\\alpha$ fulfills the conditions {ca}, {cb} and {cc}, respectively.",
+                        VERBATIM["sec7-fig-elev-caption"], "cases, conditions")
+    if (got["a"], got["b"], got["c"]) != ("a", "b", "c"):
+        raise ValueError("unread cases (a), (b), (c)")
+    preds = [alpha_condition(got[k]) for k in ("ca", "cb", "cc")]
     samples = [Fraction(k, 24) for k in range(1, 24)]  # alpha / pi
     partition = all(sum(p(a) for p in preds) == 1 for a in samples) and not any(p(Fraction(0)) or p(Fraction(1))
                                                                                  for p in preds)
@@ -1022,15 +1049,12 @@ def _numeric_limit(n: int, label: str, xyz=(Fraction(1, 2), Fraction(1, 4), Frac
         return mpmath.nstr(val / mono, 6)
 
 
-def _simplex_equation(text: str) -> bool:
-    """The printed ``$x+y+z=1$`` (exactly one ``=``) is the plane that the parametrization's rows make of
-    Omega^alpha: with u, v, w = alpha x, alpha y, alpha z and u + v + w = alpha, x + y + z = 1."""
+def _simplex_equation(tex: str) -> bool:
+    """The printed ``x+y+z=1`` (one ``=``, read by the one reader) is the plane that the parametrization's rows make
+    of Omega^alpha: with u, v, w = alpha x, alpha y, alpha z and u + v + w = alpha, x + y + z = 1."""
     import sympy as sp
 
-    found = [p for p in re.findall(r"\$([^$]*)\$", text) if "=" in p or "\\neq" in p]
-    if len(found) != 1 or found[0].count("=") != 1 or "\\" in found[0]:
-        raise ValueError(f"unread simplex equation {found!r}")
-    lhs, rhs = _relation(found[0]).parts
+    lhs, rhs = _relation(tex).parts
     alpha = sp.Symbol("alpha")
     rows = parametrization_rows()
     plane = sp.expand(sum(rows[r][1] for r in "uvw") / alpha)  # x + y + z of the parametrization (u+v+w = alpha)
@@ -1039,20 +1063,27 @@ def _simplex_equation(text: str) -> bool:
 
 def _orders_of_figure_cases() -> list[int]:
     """The orders of cases (a), (b), (c) of Fig. fig:limit_cases_n_1_2_3, read from its caption."""
-    return word_list(VERBATIM["sec7-fig-limit-caption-cases"], ORDINALS, "order constrained trivariate")
+    got = read_sentence("\\caption{Cases (\\emph{{a:word}}), (\\emph{{b:word}}) and (\\emph{{c:word}}) illustrate the "
+                        "limiting case $\\alpha\\to 0$ of the {orders:words} order constrained trivariate normalized "
+                        "trigonometric bases of type (\\ref{{eq:word}}), respectively.",
+                        VERBATIM["sec7-fig-limit-caption-cases"], "the cases' orders")
+    if (got["a"], got["b"], got["c"], got["eq"]) != ("a", "b", "c", "normalized_united_system"):
+        raise ValueError("unread caption of the cases (a), (b), (c)")
+    return listed_words(got["orders"], ORDINALS)
 
 
 @line_check("sec7-limit-degenerate-bernstein")
 def check_degenerate_bernstein() -> LineResult:
     tex = VERBATIM["sec7-limit-degenerate-bernstein"]
-    t = re.sub(r"\s+", " ", tex)
-    if not re.search(r"normalized constrained trivariate trigonometric function systems of type "
-                     r"\(\\ref\{normalized_united_system\}\) degenerate to constrained trivariate Bernstein "
-                     r"polynomials defined on the unit simplex \$", t):
-        raise ValueError("unread line (systems, 'degenerate to ... Bernstein polynomials ... unit simplex')")
-    ns = word_list(tex, ORDINALS, "order normalized")
+    got = read_sentence("it is easy to observe that the {orders:words} order normalized constrained trivariate "
+                        "trigonometric function systems of type (\\ref{{eq:word}}) degenerate to constrained "
+                        "trivariate Bernstein polynomials defined on the unit simplex {plane} as shown in "
+                        "Fig.\\ \\ref{...}.", tex, "systems, 'degenerate to Bernstein polynomials'")
+    if got["eq"] != "normalized_united_system":
+        raise ValueError("unread line (systems of type (normalized_united_system))")
+    ns = listed_words(got["orders"], ORDINALS)
     figure = ns == _orders_of_figure_cases()  # 'as shown in Fig.': the orders are those of the figure's cases
-    plane = _simplex_equation(tex)
+    plane = _simplex_equation(got["plane"])
     per_n = {str(n): bernstein_limits(n) for n in ns}
     printed = all(not r["proper_multiple"] for r in per_n.values())
     corrected = True
@@ -1150,7 +1181,8 @@ def _paper_spelling() -> str:
 
     from paper_repro.printed.lines import all_lines
 
-    words = Counter(w.lower() for ln in all_lines() for w in re.findall(r"\b[Tt]ri[a-z]*variate\b", ln.verbatim))
+    prose_words = (x.strip(".,;:(){}").lower() for ln in all_lines() for x in LM.prose(ln.verbatim)[0].split())
+    words = Counter(w for w in prose_words if w.startswith("tri") and w.endswith("variate") and w.isalpha())
     return words.most_common(1)[0][0]
 
 
@@ -1160,14 +1192,13 @@ def check_caption_centre() -> LineResult:
     0), the word 'vanish', and the limit point of alpha, read; compared with the limits of the proven closed forms
     (n = 1..3) and of the limit formula (n = 1..12), or, for a limit point other than 0, with the values there."""
     tex = VERBATIM["sec7-fig-limit-caption-centre"]
-    t = re.sub(r"\s+", " ", tex)
-    m = re.fullmatch(r"Constrained ([a-z]+) normalized trigonometric basis functions associated with the "
-                     r"(innermost|outermost) node of the graphs above vanish when (\$[^$]+\$)\.", t)
-    if not m:
+    m = read_sentence("Constrained {word:word} normalized trigonometric basis functions associated with the "
+                      "{node:word} node of the graphs above vanish when {limit}.", tex, "node, 'vanish when'")
+    if m["node"] not in ("innermost", "outermost"):
         raise ValueError("unread caption (node, 'vanish when')")
-    spelled = m.group(1) == _paper_spelling()  # 'triavariate' is a typographical slip (erratum on the line)
-    level = (lambda n: n) if m.group(2) == "innermost" else (lambda n: 0)
-    limit = alpha_limit(m.group(3))
+    spelled = m["word"] == _paper_spelling()  # 'triavariate' is a typographical slip (erratum on the line)
+    level = (lambda n: n) if m["node"] == "innermost" else (lambda n: 0)
+    limit = alpha_limit(m["limit"])
     named = {str(n): sorted(lab.paper for lab in united_system(n) if lab.j == level(n)) for n in range(1, 13)}
     if limit == 0:
         closed = {str(n): sorted(lab.paper for lab, (c, _) in zip(united_system(n), limit_terms(n)) if c == 0)
@@ -1178,7 +1209,7 @@ def check_caption_centre() -> LineResult:
         return LineResult(ok and spelled, ok, kind="exhaustive",
                           how="node read from the caption; limit coefficients P_f(1) of the proven closed forms "
                           "(n = 1..3) and the limit formula (n = 1..12): exactly the named node's functions tend to 0",
-                          detail={"word": m.group(1), "paper_spelling": _paper_spelling(),
+                          detail={"word": m["word"], "paper_spelling": _paper_spelling(),
                                   "named": {k: v for k, v in named.items() if int(k) <= 3},
                                   "vanishing_closed_forms": closed, "vanishing_formula_n_le_12": len(formula)})
     value = float(limit)
@@ -1191,12 +1222,12 @@ def check_caption_centre() -> LineResult:
                       detail={"values": vals})
 
 
-def _degrees_result(tex: str, degrees: list[int]) -> tuple[bool, dict]:
-    """Orders (ordinal words before 'order triangular') read from ``tex`` and the printed ``degrees``, paired in order,
-    against the degree of the alpha -> 0 limit from the proven closed forms and from the limit formula; the limit
-    point read (must be 0)."""
-    orders = word_list(tex, ORDINALS, "order triangular")
-    limit = alpha_limit(tex)
+def _degrees_result(got: dict, degrees: list[int]) -> tuple[bool, dict]:
+    """The orders (the ordinal words of the slot ``orders``) and the printed ``degrees``, paired in order, against the
+    degree of the alpha -> 0 limit from the proven closed forms and from the limit formula; the limit point (the
+    segment of the slot ``limit``) read (must be 0)."""
+    orders = listed_words(got["orders"], ORDINALS)
+    limit = alpha_limit(got["limit"])
     computed = {str(n): (limit_degree(n, "closed_forms"), limit_degree(n, "formula")) for n in orders}
     ok = limit == 0 and len(orders) == len(degrees) and all(
         a == b == d for (a, b), d in zip(computed.values(), degrees))
@@ -1206,12 +1237,20 @@ def _degrees_result(tex: str, degrees: list[int]) -> tuple[bool, dict]:
 
 @line_check("sec7-conversion-degrees")
 def check_conversion_degrees() -> LineResult:
-    line, cap = VERBATIM["sec7-conversion-degrees"], VERBATIM["sec7-fig-conversion-caption"]
-    ok1, d1 = _degrees_result(line, word_list(line, DEGREE_WORDS, "triangular B"))
-    caption = re.search(r"\(\\emph\{a\}\) ([a-z]+) and \(\\emph\{b\}\) ([a-z]+) triangular", cap)
-    if caption is None or any(w not in DEGREE_WORDS for w in caption.groups()):
+    """The orders, the degree words and 'when $\\alpha \\to 0$' of the line and of the caption of Fig.
+    fig:conversion (each read by :func:`~paper_repro.printed.latex_math.sentence`), paired in order."""
+    line = read_sentence("Moreover, the control nets of the original {orders:words} order triangular trigonometric "
+                         "patches can be converted to control nets that describe classical polynomial {degrees:words} "
+                         "triangular B\\'ezier patches, respectively, when {limit}.",
+                         VERBATIM["sec7-conversion-degrees"], "orders, degrees")
+    cap = read_sentence("\\caption{Conversion of control nets of original {orders:words} order triangular "
+                        "trigonometric patches to that of (\\emph{{a:word}}) {d1:word} and (\\emph{{b:word}}) "
+                        "{d2:word} triangular B\\'ezier patches, respectively, when {limit}.}",
+                        VERBATIM["sec7-fig-conversion-caption"], "caption degrees")
+    if (cap["a"], cap["b"]) != ("a", "b") or any(cap[d] not in DEGREE_WORDS for d in ("d1", "d2")):
         raise ValueError("unread caption degrees")
-    ok2, d2 = _degrees_result(cap, [DEGREE_WORDS[w] for w in caption.groups()])
+    ok1, d1 = _degrees_result(line, listed_words(line["degrees"], DEGREE_WORDS))
+    ok2, d2 = _degrees_result(cap, [DEGREE_WORDS[cap[d]] for d in ("d1", "d2")])
     return LineResult(ok1 and ok2, kind="proof", how="orders, degree words and alpha -> 0 read from the line and the "
                       "caption, paired in order; degree of the alpha -> 0 limit from the proven closed forms and from "
                       f"the limit formula, n = {', '.join(map(str, d1['orders']))} (the orders the line names)",
@@ -1310,10 +1349,8 @@ def check_conversion_symmetry() -> LineResult:
 
 @line_check("sec7-conversion-convex")
 def check_conversion_convex() -> LineResult:
-    t = re.sub(r"\s+", " ", VERBATIM["sec7-conversion-convex"])
-    if not re.fullmatch(r"shows all B\\'ezier points obtained by the evaluation of convex combinations describing "
-                        r"these conversion processes\.", t):
-        raise ValueError("unread line ('all ... convex combinations')")
+    read_sentence("shows all B\\'ezier points obtained by the evaluation of convex combinations describing these "
+                  "conversion processes.", VERBATIM["sec7-conversion-convex"], "'all ... convex combinations'")
     printed = printed_conversions()
     per_n = {}
     for n in sorted(printed):
@@ -1334,18 +1371,17 @@ def check_question_limiting_case(verbatim: str | None = None) -> LineResult:
     the limit formula and from the proven closed forms."""
     from paper_repro.printed.parsed import bound
 
-    t = re.sub(r"\s+", " ", VERBATIM["sec7-question-limiting-case"] if verbatim is None else verbatim)
-    m = re.match(r"Is the limiting case (\$[^$]+\$) of the \(rational\) triangular trigonometric patch of order "
-                 r"\$([^$]+)\$ a \(rational\) triangular B\\'ezier patch of degree \$([^$]+)\$ defined on the unit "
-                 r"simplex\?", t)
-    if not m:
+    m = LM.sentence("Is the limiting case {limit} of the (rational) triangular trigonometric patch of order {n} a "
+                    "(rational) triangular B\\'ezier patch of degree {degree} defined on the unit simplex?...",
+                    VERBATIM["sec7-question-limiting-case"] if verbatim is None else verbatim)
+    if m is None:
         return LineResult(False, how="the Question read from the transcription, n = 1..12", kind="exhaustive",
                           detail={"unread": "no 'limiting case $..$ ... of order $..$ ... of degree $..$'"})
-    limit = alpha_limit(m.group(1))
-    degrees = {str(n): limit_degree(bound(m.group(2), n=n), "formula") for n in range(1, 13)}
+    limit = alpha_limit(m["limit"])
+    degrees = {str(n): limit_degree(bound(m["n"], n=n), "formula") for n in range(1, 13)}
     lemmas = {str(n): all(v for k, v in limit_checks(n).items() if isinstance(v, bool)) for n in range(1, 6)}
-    closed = {str(n): limit_degree(bound(m.group(2), n=n), "closed_forms") for n in (1, 2, 3, 4)}
-    ok = limit == 0 and all(d == bound(m.group(3), n=int(n)) for n, d in {**degrees, **closed}.items()) \
+    closed = {str(n): limit_degree(bound(m["n"], n=n), "closed_forms") for n in (1, 2, 3, 4)}
+    ok = limit == 0 and all(d == bound(m["degree"], n=int(n)) for n, d in {**degrees, **closed}.items()) \
         and all(lemmas.values())
     return LineResult(ok, kind="exhaustive",
                       how="limit point, order and degree read from the Question; degree of the limit Bezier triangle "
