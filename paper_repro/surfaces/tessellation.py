@@ -60,7 +60,7 @@ from paper_repro.core.basis import monomials
 from paper_repro.core.context import BallContext, Context, MpContext
 from paper_repro.core.domain import RationalAngle, open_alpha
 from paper_repro.core.half_angle_matrices import derivative_nets, derivative_nets_checked
-from paper_repro.core.labels import exponent_matrix
+from paper_repro.core.labels import delta, exponent_matrix
 from paper_repro.core.nets import check_net
 from paper_repro.core.normalization import scaled_coefficient_vector, scaled_float_vector
 from paper_repro.core.subdivision import _arb_of, _certified, subdivision_matrices
@@ -430,10 +430,12 @@ ARITHS = ("float", "ball", "mp")
 DEFAULT_DPS = 30
 #: dps accepted by the ball and mp routes (the cost of every arb/mpf operation grows with it).
 MIN_TESS_DPS, MAX_TESS_DPS = 16, 200
-#: Vertex limit of the ball and mp routes: every vertex is evaluated in arb (mpf) at its exact lattice parameter, a
-#: Python-level loop of about (6 + 6 delta_n) ball operations.  Measured (docs/tessellation.md, "Rigorous route"):
-#: about 0.2 ms per vertex at n = 2 in ball arithmetic, so 50 000 vertices stay near 10 s.
-MAX_VERTICES_EXACT = 50_000
+#: Work limit of the ball and mp routes, in vertices times delta_n: every vertex is evaluated at its exact lattice
+#: parameter in arb (mpf), about 6 + 6 delta_n ball operations.  Measured on the torus piece (elevated for n >= 3;
+#: docs/tessellation.md, "Rigorous route"): 45 us per vertex at n = 1 (delta 7) to 770 us at n = 6 (delta 127),
+#: about 4-6 us per vertex and function; 2.5 M keeps the ball route near 15 s (131 000 vertices at n = 2, 19 600 at
+#: n = 6).  The default ``max_vertices`` of these routes is 2.5 M // delta_n, and a larger one is refused.
+MAX_BALL_WORK = 2_500_000
 
 
 def _up(x) -> float:
@@ -772,9 +774,12 @@ def _tessellate_route(net, n, alpha, tol, arith: str, dps: int, leaf_resolution,
                       ) -> Tessellation:
     """:func:`tessellate` with ``arith`` 'ball' or 'mp' (inputs checked as on the float route; alpha may be a
     float, an mpf or a :class:`~paper_repro.core.domain.RationalAngle`)."""
-    max_vertices = MAX_VERTICES_EXACT if max_vertices is None else max_vertices
-    max_vertices = check_int(max_vertices, "max_vertices", 3, MAX_VERTICES_EXACT,
-                             why=f"every vertex is evaluated in arith {arith!r} (about 0.2 ms each)")
+    n = check_int(n, "n", 1, MAX_N_TESSELLATE, why="each tree level builds the subdivision matrices at a new alpha")
+    limit = MAX_BALL_WORK // delta(n)
+    max_vertices = limit if max_vertices is None else max_vertices
+    max_vertices = check_int(max_vertices, "max_vertices", 3, limit,
+                             why=f"every vertex is evaluated in arith {arith!r} (the limit is {MAX_BALL_WORK} / "
+                                 "delta_n, about 15 s)")
     exact_alpha = open_alpha(alpha)
     arr, n, _, tol, leaf_resolution, max_depth, max_vertices = _check_inputs(
         net, n, float(exact_alpha), tol, leaf_resolution, max_depth, max_vertices)
@@ -794,4 +799,4 @@ def _tessellate_route(net, n, alpha, tol, arith: str, dps: int, leaf_resolution,
 
 
 __all__ = ["tessellate", "Tessellation", "second_derivative_bound", "second_derivative_nets", "derivative_nets_t",
-           "steps_for", "rounding_factor", "MAX_N_TESSELLATE", "MAX_VERTICES"]
+           "steps_for", "rounding_factor", "MAX_N_TESSELLATE", "MAX_VERTICES", "ARITHS", "MAX_BALL_WORK"]
