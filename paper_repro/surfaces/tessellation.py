@@ -436,6 +436,10 @@ MIN_TESS_DPS, MAX_TESS_DPS = 16, 200
 #: about 4-6 us per vertex and function; 2.5 M keeps the ball route near 15 s (131 000 vertices at n = 2, 19 600 at
 #: n = 6).  The default ``max_vertices`` of these routes is 2.5 M // delta_n, and a larger one is refused.
 MAX_BALL_WORK = 2_500_000
+#: Tree limit of the ball and mp routes, in nodes times delta_n (summed over the levels): a node costs about 70 us
+#: per function in ball arithmetic (its second-derivative nets and four children, measured at n = 2 and 6 from depth
+#: 3 on: 1.2 ms per node at n = 2, 28 ms at n = 6), so 200 000 keeps the tree near 15 s (10 500 nodes at n = 2).
+MAX_BALL_TREE_WORK = 200_000
 
 
 def _up(x) -> float:
@@ -574,9 +578,19 @@ class _BallRoute(_Route):
     def __init__(self, n: int, alpha, dps: int) -> None:
         self.n = n
         self.ctx = BallContext(prec=int(3.33 * dps) + 20)
-        with self.ctx.scope():
-            self.alpha = 4 * arb(alpha.t).atan() if isinstance(alpha, RationalAngle) else _arb_of(alpha)
+        if isinstance(alpha, RationalAngle):
+            # 4 atan(t): a ball of radius about 2^-(prec + 1024), so that the subdivision matrices at alpha / 2^k can
+            # be certified to 2^-prec (they amplify alpha's radius by up to 2^(8n + 4n log2(2^k / alpha)))
+            with BallContext(prec=self.ctx.prec + 1024).scope():
+                self.alpha = 4 * (arb(int(alpha.t.p)) / int(alpha.t.q)).atan()
+        else:
+            self.alpha = _arb_of(alpha)
         self.alpha_float = float(self.alpha.mid())
+
+    def beta(self, k: int):
+        """alpha / 2^k: exact (a division by 2^k at a precision above alpha's midpoint keeps every bit)."""
+        with BallContext(prec=self.ctx.prec + 1100).scope():
+            return self.alpha / (1 << k)
 
     def _sin(self, x):
         return x.sin()
@@ -691,6 +705,7 @@ def _tree_route(route: _Route, arr: np.ndarray, tol: float, leaf_resolution: int
     sign = np.ones(1, dtype=np.int64)
     cap = np.full(1, np.inf)
     out: list[tuple] = []
+    visited = 1
     for k in range(max_depth + 1):
         beta = route.alpha_float / (1 << k)
         m_bound = np.minimum(route.bound(nets, k), cap)
@@ -708,6 +723,11 @@ def _tree_route(route: _Route, arr: np.ndarray, tol: float, leaf_resolution: int
         keep = ~leaf
         if not keep.any():
             break
+        visited += 4 * int(keep.sum())
+        if visited * dn > MAX_BALL_TREE_WORK:
+            raise ValueError(f"tol = {tol:.3g} with leaf_resolution = {leaf_resolution} needs more than {visited} tree "
+                             f"nodes by depth {k + 1}, above the ball/mp routes' tree limit {MAX_BALL_TREE_WORK} / "
+                             f"delta_n = {MAX_BALL_TREE_WORK // dn}; raise tol or leaf_resolution")
         half = unit >> (k + 1)
         parent, pa, pb, ps = nets[:, keep], a[keep], b[keep], sign[keep]
         cap = np.tile(m_bound[keep], 4)
@@ -799,4 +819,5 @@ def _tessellate_route(net, n, alpha, tol, arith: str, dps: int, leaf_resolution,
 
 
 __all__ = ["tessellate", "Tessellation", "second_derivative_bound", "second_derivative_nets", "derivative_nets_t",
-           "steps_for", "rounding_factor", "MAX_N_TESSELLATE", "MAX_VERTICES", "ARITHS", "MAX_BALL_WORK"]
+           "steps_for", "rounding_factor", "MAX_N_TESSELLATE", "MAX_VERTICES", "ARITHS", "MAX_BALL_WORK",
+           "MAX_BALL_TREE_WORK"]
