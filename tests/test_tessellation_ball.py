@@ -119,6 +119,16 @@ def test_alpha_as_float_mpf_and_rational_angle():
         assert _deviation(mesh, Patch(n, a, net), k=4) <= mesh.bound
 
 
+def test_rational_angle_on_a_deeper_tree():
+    """alpha = 4 atan(1/3) enclosed in a ball: the subdivision matrices at alpha / 2^k are certified to the working
+    precision only if alpha's ball is far narrower than it (and halved exactly)."""
+    n, alpha, tol = 3, rational_alpha("1/3"), 1e-2
+    net = np.random.default_rng(11).normal(size=(delta(n), 3))
+    mesh = tessellate(net, n, alpha, tol, arith="ball", leaf_resolution=8)
+    assert mesh.depth >= 2 and mesh.bound <= tol
+    assert _deviation(mesh, Patch(n, float(alpha), net), k=3) <= mesh.bound
+
+
 def test_mp_route_agrees_with_the_ball_route():
     n, alpha, tol = 2, 1.0, 1e-2
     net = np.random.default_rng(3).normal(size=(delta(n), 3))
