@@ -33,10 +33,22 @@ cell, so its longest edge is at most the cell's and the bound holds unchanged.  
 shared segment both sides use the same sorted points.
 
 Vertices are evaluated on the given patch (:class:`~paper_repro.surfaces.patch.Patch`, float64), not taken from the
-sub-nets.  What is proven and what is measured: the inequality is proven; it is evaluated in float64 (the sub-nets,
-their derivative nets and the vertices carry rounding errors, not bounded rigorously; M is multiplied by
-:func:`rounding_factor` of the depth and an allowance for the vertices is subtracted from tol, see
-:func:`tessellate`), and the tests verify the deviation a posteriori by dense sampling.
+sub-nets.  What is proven and what is measured depends on the arithmetic (``arith``):
+
+* ``'float'`` (default): the inequality is proven; it is evaluated in float64 (the sub-nets, their derivative nets
+  and the vertices carry rounding errors, not bounded rigorously; M is multiplied by :func:`rounding_factor` of the
+  depth and an allowance for the vertices is subtracted from tol, see :func:`tessellate`), and the tests verify the
+  deviation a posteriori by dense sampling.
+* ``'ball'`` (python-flint arb; docs/tessellation.md, "Rigorous route (ball arithmetic)"): the sub-nets and the
+  second-derivative nets are balls containing the exact ones of the float64 input net (taken as exact); M is the
+  upper end of a ball enclosing lambda_max of the 2 x 2 matrix of upper bounds of the m_ab; the leaf bounds are
+  upper ends of balls; the vertices are s at the exact lattice parameters (rational multiples of alpha, the fan
+  centroids too) evaluated in balls and rounded to float64, with |s(x_i) - vertex_i| bounded by the ball's radius
+  plus the rounding.  ``Tessellation.bound`` is then a proven upper bound of max_x |s(x) - mesh(x)|, mesh the
+  piecewise-linear interpolant of the returned float64 vertices over the exact lattice triangulation; no measured
+  allowance is used.  ``params`` are those exact parameters rounded to float64.
+* ``'mp'`` (mpmath at ``dps`` digits): the same computation, not rigorous; the allowances of the float route with
+  2^-52 replaced by mpmath's 2^-prec (floor 10^(6 - dps)).
 
 >>> import numpy as np
 >>> from paper_repro.core.labels import delta
@@ -100,8 +112,9 @@ MAX_LATTICE_BITS = 21
 
 class Tessellation(NamedTuple):
     """A triangle mesh of a patch: ``points`` ``(V, d)`` on the surface, ``triangles`` ``(F, 3)`` vertex indices,
-    ``params`` ``(V, 3)`` the points' (u, v, w) on Omega^alpha, ``bound`` the proven bound (evaluated in float64)
-    of the parametric deviation max |s(x) - mesh(x)| (mesh(x) the piecewise-linear map of the parameter
+    ``params`` ``(V, 3)`` the points' (u, v, w) on Omega^alpha, ``bound`` the proven bound (evaluated in float64
+    with measured allowances on the float route, in mpmath on the mp route, rigorously in ball arithmetic on the
+    ball route) of the parametric deviation max |s(x) - mesh(x)| (mesh(x) the piecewise-linear map of the parameter
     triangulation; it bounds the distance of every mesh point from the surface and of every surface point from the
     mesh), ``leaves`` the number of subdivision leaves, ``depth`` the deepest one and ``fans`` the number of grid
     cells re-triangulated around their centroid to take a neighbour's edge points (no cracks)."""
@@ -763,11 +776,25 @@ def tessellate(net, n: int, alpha, tol, *, arith: str = "float", dps: int | None
     than 7168 steps (``ValueError`` naming max_vertices or tol); after it, a mesh above ``max_vertices`` or a lattice
     finer than alpha / (105 2^21) (``ValueError`` naming tol and max_depth).
 
+    ``arith``: ``'float'`` (default; float64, the bound up to measured rounding allowances), ``'ball'`` (python-flint
+    arb at 3.33 ``dps`` + 20 bits: ``bound`` is a proven upper bound of max_x |s(x) - mesh(x)|, mesh the
+    piecewise-linear interpolant of the returned float64 vertices over the exact lattice triangulation of
+    Omega^alpha; the module docstring) or ``'mp'`` (mpmath at ``dps`` digits; not rigorous, its allowances about
+    10^(6 - dps)).  ``dps``: 16..200, default 30, only with 'ball' and 'mp'.  On these two routes alpha may also be
+    an mpf or a :class:`~paper_repro.core.domain.RationalAngle` (4 atan(t), enclosed in a ball), ``max_vertices``
+    is at most :data:`MAX_BALL_WORK` // delta_n (default that limit; every vertex is evaluated in arb/mpf) and the
+    tree at most :data:`MAX_BALL_TREE_WORK` // delta_n nodes (``ValueError`` naming tol and leaf_resolution).  The
+    float route and its results do not depend on these parameters (the same bits as before they existed).
+
     >>> import numpy as np
     >>> from paper_repro.core.labels import delta
     >>> mesh = tessellate(np.zeros((delta(2), 3)), 2, 1.0, 1e-6)   # a point: one triangle
     >>> len(mesh.triangles), mesh.leaves
     (1, 1)
+    >>> net = np.random.default_rng(1).random((delta(1), 3))
+    >>> ball = tessellate(net, 1, 1.0, 1e-2, arith="ball")        # a proven bound
+    >>> bool(ball.bound <= 1e-2), len(ball.points) == len(tessellate(net, 1, 1.0, 1e-2).points)
+    (True, True)
     """
     arith, dps = _check_arith(arith, dps)
     if arith != "float":
