@@ -6,8 +6,8 @@ has order 2).
     PYTHONPATH=$PWD python tools/tessellation_ball_cost.py [--orders 1,2,3,4,5,6] [--tols 1e-2,1e-3,1e-4]
 
 Per order and tol: vertices, leaves, depth, the float and ball wall and CPU (process) times (one warm call each,
-after a first call that builds the matrices), the ball CPU time per vertex and the CPU ratio ball / float, both bounds, and whether the two routes give the
-same triangulation.  Measurements, not data.
+after a first call that builds the matrices), the ball CPU time per vertex and the CPU ratio ball / float, both
+bounds, and whether the two routes give the same triangulation.  Measurements, not data.
 """
 
 from __future__ import annotations
