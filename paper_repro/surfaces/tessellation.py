@@ -445,9 +445,10 @@ DEFAULT_DPS = 30
 MIN_TESS_DPS, MAX_TESS_DPS = 16, 200
 #: Work limit of the ball and mp routes, in vertices times delta_n: every vertex is evaluated at its exact lattice
 #: parameter in arb (mpf), about 6 + 6 delta_n ball operations.  Measured on the torus piece (elevated for n >= 3;
-#: docs/tessellation.md, "Rigorous route"): 45 us per vertex at n = 1 (delta 7) to 770 us at n = 6 (delta 127),
-#: about 4-6 us per vertex and function; 2.5 M keeps the ball route near 15 s (131 000 vertices at n = 2, 19 600 at
-#: n = 6).  The default ``max_vertices`` of these routes is 2.5 M // delta_n, and a larger one is refused.
+#: tools/tessellation_ball_cost.py, docs/tessellation.md, "Rigorous route"): 16 us of CPU per vertex at n = 1
+#: (delta 7) to 230 us at n = 6 (delta 127), about 1.6-2.3 us per vertex and function (wall 2-3 times more on the
+#: loaded 2-core machine); 2.5 M keeps the ball route's vertices near 5 s CPU, 15 s wall (131 578 vertices at n = 2,
+#: 19 685 at n = 6).  The default ``max_vertices`` of these routes is 2.5 M // delta_n, and a larger one is refused.
 MAX_BALL_WORK = 2_500_000
 #: Tree limit of the ball and mp routes, in nodes times delta_n (summed over the levels): a node costs about 70 us
 #: per function in ball arithmetic (its second-derivative nets and four children, measured at n = 2 and 6 from depth
