@@ -13,6 +13,7 @@
 from __future__ import annotations
 
 import math
+from fractions import Fraction
 
 import mpmath
 import numpy as np
@@ -177,3 +178,23 @@ def test_property_ball_bound_holds(n, seed, alpha, tol_exp):
     mesh = tessellate(net, n, alpha, tol, arith="ball", leaf_resolution=16)
     assert mesh.bound <= tol and math.isfinite(mesh.bound)
     assert _deviation(mesh, Patch(n, alpha, net), k=3) <= mesh.bound
+
+
+def test_vertices_at_exact_rational_parameters_with_their_error_counted():
+    """A fan centroid's parameter is a rational multiple of alpha (integer lattice sums / 3): the ball route
+    evaluates s there, not at a float image; the returned error covers the rounding of the points to float64 (half
+    an ulp of each coordinate: positive, about 1e-16 of the extent)."""
+    n, alpha = 2, 1.0
+    net = np.random.default_rng(4).normal(size=(delta(n), 3))
+    route = _BallRoute(n, alpha, 30)
+    xy = np.array([[0, 0], [1, 2]], dtype=np.int64)
+    csum = np.array([[1, 1], [2, 5]], dtype=np.int64)             # centroids (1/3, 1/3) and (2/3, 5/3) in units
+    points, params, err = route.vertices(net, xy, csum, 7)
+    exact = [(Fraction(0), Fraction(0)), (Fraction(1, 7), Fraction(2, 7)), (Fraction(1, 21), Fraction(1, 21)),
+             (Fraction(2, 21), Fraction(5, 21))]                 # alpha = 1: (u, v) = lattice / 7, sums / 21
+    for (u, v), p in zip(exact, params):
+        for exact_value, got in ((u, p[0]), (v, p[1]), (1 - u - v, p[2])):
+            assert abs(Fraction(got) - exact_value) <= Fraction(1, 2 ** 53) * exact_value   # the exact value rounded
+    truth = independent_patch.evaluate(net, n, alpha, params[:, :2]).astype(np.float64)
+    assert np.abs(truth - points).max() < 1e-14 * np.abs(net).max()
+    assert 0 < err < 1e-14 * np.abs(net).max()
