@@ -198,3 +198,13 @@ def test_vertices_at_exact_rational_parameters_with_their_error_counted():
     truth = independent_patch.evaluate(net, n, alpha, params[:, :2]).astype(np.float64)
     assert np.abs(truth - points).max() < 1e-14 * np.abs(net).max()
     assert 0 < err < 1e-14 * np.abs(net).max()
+
+
+@pytest.mark.parametrize("arith", ["float", "ball"])
+def test_a_scalar_patch_one_coordinate_column(arith):
+    """d = 1 (a height field): accepted by both routes, within tol, the deviation sampled within the bound."""
+    n, alpha, tol = 2, 1.0, 1e-3
+    net = np.random.default_rng(9).normal(size=(delta(n), 1))
+    mesh = tessellate(net, n, alpha, tol, arith=arith)
+    assert mesh.points.shape[1] == 1 and mesh.bound <= tol
+    assert _deviation(mesh, Patch(n, alpha, net), k=3) <= mesh.bound
