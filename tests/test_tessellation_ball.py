@@ -208,3 +208,13 @@ def test_a_scalar_patch_one_coordinate_column(arith):
     mesh = tessellate(net, n, alpha, tol, arith=arith)
     assert mesh.points.shape[1] == 1 and mesh.bound <= tol
     assert _deviation(mesh, Patch(n, alpha, net), k=3) <= mesh.bound
+
+
+@pytest.mark.parametrize("n, limit", [(1, 357_142), (2, 131_578), (6, 19_685)])
+def test_the_documented_vertex_limits(n, limit):
+    """max_vertices <= 2.5e6 // delta_n on the ball route (docs/tessellation.md: 131 578 at n = 2, 19 685 at n = 6)."""
+    net = np.random.default_rng(n).normal(size=(delta(n), 3))
+    with pytest.raises(ValueError, match="max_vertices"):
+        tessellate(net, n, 1.0, 1e-1, arith="ball", max_vertices=limit + 1)
+    if n == 1:
+        assert tessellate(net, n, 1.0, 1e-1, arith="ball", max_vertices=limit).bound <= 1e-1
