@@ -348,7 +348,17 @@ def cases(rng: random.Random, with_cli: bool):
                        ("tol=1j", ("tol",)), ("leaf_resolution=0", ("leaf_resolution",)),
                        ("leaf_resolution=10**9", ("leaf_resolution",)), ("leaf_resolution=2.5", ("leaf_resolution",)),
                        ("max_depth=-1", ("max_depth",)), ("max_depth=10**6", ("max_depth",)),
-                       ("max_vertices=0", ("max_vertices",)), ("max_vertices=10, tol=1e-6", ("max_vertices",))):
+                       ("max_vertices=0", ("max_vertices",)), ("max_vertices=10, tol=1e-6", ("max_vertices",)),
+                       # the ball and mp routes (arith, dps; their own vertex limit)
+                       ("arith='exact'", ("arith",)), ("arith=None", ("arith",)), ("arith='BALL'", ("arith",)),
+                       ("arith=2", ("arith",)), ("arith='float', dps=30", ("dps",)),
+                       ("arith='ball', dps=5", ("dps",)), ("arith='ball', dps=10**6", ("dps",)),
+                       ("arith='mp', dps=2.5", ("dps",)), ("arith='ball', dps='30'", ("dps",)),
+                       ("arith='ball', max_vertices=10**7", ("max_vertices",)), ("arith='ball', n=7", ("n",)),
+                       ("arith='ball', alpha=0.0", ("alpha",)), ("arith='mp', alpha=float('nan')", ("alpha",)),
+                       ("arith='ball', tol=-1e-3", ("tol",)), ("arith='ball', tol=1e-300", ("tol",)),
+                       ("arith='ball', leaf_resolution=0", ("leaf_resolution",)),
+                       ("arith='ball', max_vertices=10, tol=1e-6", ("max_vertices",))):
         kw = dict(x.split("=", 1) for x in ("n=2", "alpha=1.0", "tol=1e-3"))
         for part in arg.split(", "):
             key, val = part.split("=", 1)
@@ -368,6 +378,12 @@ def cases(rng: random.Random, with_cli: bool):
                     "c = m.params[m.triangles].mean(axis=1); "
                     f"d = float(np.linalg.norm(Patch({n}, {a}, net)(c) - m.points[m.triangles].mean(axis=1), "
                     "axis=1).max()); r = (m, t, d)", "ok|err", check, ("max_vertices",))
+    for n in (1, 2):
+        for a in (1e-3, 0.7, "'pi/2'", pi - 1e-3):
+            add("tessellate", tes + f"net = np.random.default_rng({n}).normal(size=(delta({n}), 3)); t = 1e-2; "
+                f"m = tessellate(net, {n}, {a}, t, arith='ball'); c = m.params[m.triangles].mean(axis=1); "
+                f"d = float(np.linalg.norm(Patch({n}, {a}, net)(c) - m.points[m.triangles].mean(axis=1), "
+                "axis=1).max()); r = (m, t, d)", "ok|err", check, ("max_vertices",))
     # --- joins along an edge (issue 38, item 4): every public function of paper_repro.surfaces.joins refuses hostile
     # input naming the parameter, before any work; valid calls at extreme alpha give finite, joined results
     joins = {

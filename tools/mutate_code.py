@@ -91,7 +91,7 @@ MODULES: dict[str, list[str]] = {
                            "tests/test_patch_arithmetics.py"],
     "surfaces/patch.py": ["tests/test_mutation_gaps.py", "tests/test_code_gaps.py", "tests/test_patches_surfaces.py",
                           "tests/test_patch_arithmetics.py", "tests/test_library_api.py"],
-    "surfaces/tessellation.py": ["tests/test_tessellation.py"],
+    "surfaces/tessellation.py": ["tests/test_tessellation.py", "tests/test_tessellation_ball.py"],
     "surfaces/joins.py": ["tests/test_joins.py"],
     "core/subdivision.py": ["tests/test_subdivision.py", "tests/test_subdivision_speed.py"],
     "core/subdivision_products.py": ["tests/test_mutation_gaps.py", "tests/test_subdivision_speed.py"],

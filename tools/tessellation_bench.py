@@ -2,13 +2,14 @@
 radii 2 and 1, alpha = pi/2; the lower triangle of the square [0, pi/2]^2) and check each mesh densely.
 
     PYTHONPATH=$PWD python tools/tessellation_bench.py [--tols 1e-3,1e-4,1e-5,1e-6] [--repeat 3] [--no-check]
-        [--check-steps K]
+        [--check-steps K] [--ball-tol 1e-4]
 
 Per tolerance: vertices, triangles, leaves, depth, fans, the bound, the measured deviation (barycentric grid of 4
 steps, 15 points, in every triangle, 3 steps, 10 points, above 1 M triangles unless --check-steps K is given;
 skipped with --no-check), the wall and CPU times (all threads) of
 ``repeat`` warm calls (the first call of the process, which builds the subdivision matrices, is reported
-separately), and the wall time per million vertices.
+separately), and the wall time per million vertices.  Then one row of the ball route (``arith='ball'``, the bound
+proven including every rounding) at ``--ball-tol`` (default 1e-4; 0 skips it).
 """
 
 from __future__ import annotations
@@ -44,6 +45,9 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--no-check", action="store_true")
     ap.add_argument("--check-steps", type=int, default=None,
                     help="barycentric steps of the deviation check in every triangle, for every tol (4: 15 points)")
+    ap.add_argument("--ball-tol", type=float, default=1e-4,
+                    help="one row of the ball route (arith='ball': the bound proven with every rounding) at this tol; "
+                         "0 skips it (1e-4: 13 041 vertices, about 1 s)")
     ap.add_argument("--out", help="also write the table as markdown to this file (e.g. reports/tessellation_bench.md)")
     args = ap.parse_args(argv)
     rows = []
@@ -72,6 +76,17 @@ def main(argv: list[str] | None = None) -> int:
               f"{best / len(mesh.points) * 1e6:.2f} s wall per M vertices")
         rows.append(f"| {tol:.0e} | {len(mesh.points)} | {len(mesh.triangles)} | {mesh.depth} | {mesh.bound:.2e} | "
                     f"{dev:.2e} | {'yes' if dev <= tol else 'NO'} | {best:.2f} | {min(cpu):.2f} |")
+    if args.ball_tol > 0:
+        tol = args.ball_tol
+        tessellate(net, 2, np.pi / 2, 1e-2, arith="ball")
+        t, c = time.perf_counter(), time.process_time()
+        mesh = tessellate(net, 2, np.pi / 2, tol, arith="ball")
+        wall, cpu = time.perf_counter() - t, time.process_time() - c
+        dev = float("nan") if args.no_check else deviation(mesh, piece, k=args.check_steps or 4)
+        print(f"ball, tol {tol:.0e}: {len(mesh.points)} vertices, {len(mesh.triangles)} triangles, bound "
+              f"{mesh.bound:.7e} (proven), deviation {dev:.3e}; wall {wall:.2f} s, CPU {cpu:.2f} s (one warm call)")
+        rows.append(f"| {tol:.0e} (ball) | {len(mesh.points)} | {len(mesh.triangles)} | {mesh.depth} | "
+                    f"{mesh.bound:.2e} | {dev:.2e} | {'yes' if dev <= tol else 'NO'} | {wall:.2f} | {cpu:.2f} |")
     if args.out:
         write_text(args.out, "\n".join([
             "# Adaptive tessellation of the torus piece (tools/tessellation_bench.py, run by `make bench`)", "",
@@ -80,7 +95,8 @@ def main(argv: list[str] | None = None) -> int:
             + (f"{args.check_steps} steps" if args.check_steps else "3 steps above 1 M triangles, else 4")
             + f"); times: best of {args.repeat} warm calls (wall) and CPU of all threads. Machine: "
             f"{os.cpu_count()} CPUs, load average at start {load[0]:.2f}. The first call of the process (the "
-            f"subdivision matrices, the kernels) took {first:.2f} s. Measurements, not data.", "",
+            f"subdivision matrices, the kernels) took {first:.2f} s. A row marked (ball) is `arith='ball'` (the "
+            "bound proven including every rounding; one warm call). Measurements, not data.", "",
             "| tol | vertices | triangles | depth | bound | deviation | within tol | wall (s) | CPU (s) |",
             "|---|---|---|---|---|---|---|---|---|", *rows, ""]))
         print(f"wrote {args.out}")

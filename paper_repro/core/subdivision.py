@@ -363,7 +363,10 @@ def _exact_matrices(n: int, alpha: RationalAngle) -> tuple[np.ndarray, ...]:
 
 
 def _arb_of(alpha) -> arb:
-    """alpha as an exact arb (float and mpf values are binary rationals)."""
+    """alpha as an exact arb (float and mpf values are binary rationals); an arb (a ball enclosing alpha, e.g. 4
+    atan(t) / 2^k for a RationalAngle halved k times) is kept as it is."""
+    if isinstance(alpha, arb):
+        return alpha
     if isinstance(alpha, mpmath.mpf):
         man, exp = alpha.man_exp
         return arb(int(man)) * arb(2) ** int(exp)

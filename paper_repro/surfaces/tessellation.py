@@ -33,10 +33,22 @@ cell, so its longest edge is at most the cell's and the bound holds unchanged.  
 shared segment both sides use the same sorted points.
 
 Vertices are evaluated on the given patch (:class:`~paper_repro.surfaces.patch.Patch`, float64), not taken from the
-sub-nets.  What is proven and what is measured: the inequality is proven; it is evaluated in float64 (the sub-nets,
-their derivative nets and the vertices carry rounding errors, not bounded rigorously; M is multiplied by
-:func:`rounding_factor` of the depth and an allowance for the vertices is subtracted from tol, see
-:func:`tessellate`), and the tests verify the deviation a posteriori by dense sampling.
+sub-nets.  What is proven and what is measured depends on the arithmetic (``arith``):
+
+* ``'float'`` (default): the inequality is proven; it is evaluated in float64 (the sub-nets, their derivative nets
+  and the vertices carry rounding errors, not bounded rigorously; M is multiplied by :func:`rounding_factor` of the
+  depth and an allowance for the vertices is subtracted from tol, see :func:`tessellate`), and the tests verify the
+  deviation a posteriori by dense sampling.
+* ``'ball'`` (python-flint arb; docs/tessellation.md, "Rigorous route (ball arithmetic)"): the sub-nets and the
+  second-derivative nets are balls containing the exact ones of the float64 input net (taken as exact); M is the
+  upper end of a ball enclosing lambda_max of the 2 x 2 matrix of upper bounds of the m_ab; the leaf bounds are
+  upper ends of balls; the vertices are s at the exact lattice parameters (rational multiples of alpha, the fan
+  centroids too) evaluated in balls and rounded to float64, with |s(x_i) - vertex_i| bounded by the ball's radius
+  plus the rounding.  ``Tessellation.bound`` is then a proven upper bound of max_x |s(x) - mesh(x)|, mesh the
+  piecewise-linear interpolant of the returned float64 vertices over the exact lattice triangulation; no measured
+  allowance is used.  ``params`` are those exact parameters rounded to float64.
+* ``'mp'`` (mpmath at ``dps`` digits): the same computation, not rigorous; the allowances of the float route with
+  2^-52 replaced by mpmath's 2^-prec (floor 10^(6 - dps)).
 
 >>> import numpy as np
 >>> from paper_repro.core.labels import delta
@@ -52,12 +64,18 @@ import math
 from functools import lru_cache
 from typing import NamedTuple
 
+import mpmath
 import numpy as np
+from flint import arb, arb_mat
 
-from paper_repro.core.half_angle_matrices import derivative_nets
+from paper_repro.core.basis import monomials
+from paper_repro.core.context import BallContext, Context, MpContext
+from paper_repro.core.domain import RationalAngle, open_alpha
+from paper_repro.core.half_angle_matrices import derivative_nets, derivative_nets_checked
+from paper_repro.core.labels import delta, exponent_matrix
 from paper_repro.core.nets import check_net
-from paper_repro.core.normalization import scaled_float_vector
-from paper_repro.core.subdivision import subdivision_matrices
+from paper_repro.core.normalization import scaled_coefficient_vector, scaled_float_vector
+from paper_repro.core.subdivision import _arb_of, _certified, subdivision_matrices
 from paper_repro.surfaces.patch import Patch, triangle_grid
 from paper_repro.util.limits import check_int, real_scalar
 from paper_repro.util.validation import check_alpha, parse_alpha
@@ -94,8 +112,9 @@ MAX_LATTICE_BITS = 21
 
 class Tessellation(NamedTuple):
     """A triangle mesh of a patch: ``points`` ``(V, d)`` on the surface, ``triangles`` ``(F, 3)`` vertex indices,
-    ``params`` ``(V, 3)`` the points' (u, v, w) on Omega^alpha, ``bound`` the proven bound (evaluated in float64)
-    of the parametric deviation max |s(x) - mesh(x)| (mesh(x) the piecewise-linear map of the parameter
+    ``params`` ``(V, 3)`` the points' (u, v, w) on Omega^alpha, ``bound`` the proven bound (evaluated in float64
+    with measured allowances on the float route, in mpmath on the mp route, rigorously in ball arithmetic on the
+    ball route) of the parametric deviation max |s(x) - mesh(x)| (mesh(x) the piecewise-linear map of the parameter
     triangulation; it bounds the distance of every mesh point from the surface and of every surface point from the
     mesh), ``leaves`` the number of subdivision leaves, ``depth`` the deepest one and ``fans`` the number of grid
     cells re-triangulated around their centroid to take a neighbour's edge points (no cracks)."""
@@ -417,8 +436,325 @@ def _mesh(leaves: _Leaves, max_depth: int, max_vertices: int):
     return xy, faces_all, np.array(centroids, dtype=np.float64).reshape(-1, 2), root
 
 
-def tessellate(net, n: int, alpha, tol, *, leaf_resolution: int = 64, max_depth: int = 10,
-               max_vertices: int = MAX_VERTICES) -> Tessellation:
+# --- the ball and mp routes -------------------------------------------------------------------------------------
+#: The arithmetics of :func:`tessellate`.
+ARITHS = ("float", "ball", "mp")
+#: Default digits of the ball route (working precision 3.33 dps + 20 bits) and of the mp route.
+DEFAULT_DPS = 30
+#: dps accepted by the ball and mp routes (the cost of every arb/mpf operation grows with it).
+MIN_TESS_DPS, MAX_TESS_DPS = 16, 200
+#: Work limit of the ball and mp routes, in vertices times delta_n: every vertex is evaluated at its exact lattice
+#: parameter in arb (mpf), about 6 + 6 delta_n ball operations.  Measured on the torus piece (elevated for n >= 3;
+#: tools/tessellation_ball_cost.py, docs/tessellation.md, "Rigorous route"): 16 us of CPU per vertex at n = 1
+#: (delta 7) to 230 us at n = 6 (delta 127), about 1.6-2.3 us per vertex and function (wall 2-3 times more on the
+#: loaded 2-core machine); 2.5 M keeps the ball route's vertices near 5 s CPU, 15 s wall (131 578 vertices at n = 2,
+#: 19 685 at n = 6).  The default ``max_vertices`` of these routes is 2.5 M // delta_n, and a larger one is refused.
+MAX_BALL_WORK = 2_500_000
+#: Tree limit of the ball and mp routes, in nodes times delta_n (summed over the levels): a node costs about 70 us
+#: per function in ball arithmetic (its second-derivative nets and four children, measured at n = 2 and 6 from depth
+#: 3 on: 1.2 ms per node at n = 2, 28 ms at n = 6), so 200 000 keeps the tree near 15 s (10 500 nodes at n = 2).
+MAX_BALL_TREE_WORK = 200_000
+
+
+def _up(x) -> float:
+    """The smallest float64 >= the upper end of the ball ``x`` (a rigorous float upper bound; inf if unbounded)."""
+    u = x.upper()
+    f = float(u)
+    if not math.isfinite(f) or not u.is_finite():
+        return math.inf
+    while not arb(f) >= u:
+        f = math.nextafter(f, math.inf)
+    return f
+
+
+def _check_arith(arith: object, dps: object) -> tuple[str, int | None]:
+    if not isinstance(arith, str) or arith not in ARITHS:
+        raise ValueError(f"arith must be one of {list(ARITHS)}, got {arith!r}")
+    if arith == "float":
+        if dps is not None:
+            raise ValueError(f"dps applies to arith 'ball' and 'mp' only (float64 has no digits to choose), got "
+                             f"dps = {dps!r}")
+        return arith, None
+    dps = DEFAULT_DPS if dps is None else dps
+    return arith, check_int(dps, "dps", MIN_TESS_DPS, MAX_TESS_DPS, why="digits of every ball/mpf operation")
+
+
+class _Route:
+    """The tree and the vertices of :func:`tessellate` in an object arithmetic (``ctx``): the nets of a level as an
+    ``(delta_n, N, d)`` object array.  Subclasses: :class:`_BallRoute` (rigorous) and :class:`_MpRoute`."""
+
+    ctx: Context
+    n: int
+    alpha: object            # alpha in the arithmetic (an arb ball, exact for a float or mpf alpha; an mpf)
+    alpha_float: float
+
+    def beta(self, k: int):
+        return self.alpha / (1 << k)
+
+    def start(self, arr: np.ndarray) -> np.ndarray:
+        with self.ctx.scope():
+            return np.array([[[self.ctx.convert(float(x)) for x in row]] for row in arr], dtype=object)
+
+    def _derivative_matrices(self, k: int) -> tuple:
+        """D_u, D_v at alpha / 2^k, ``(delta_n, delta_n)`` object arrays: the nets in T-bar^beta of d/du and d/dv
+        of the patch with net P are D_u P, D_v P (the closed-form C, as in :func:`derivative_nets_t`)."""
+        beta = self.beta(k)
+        ctx = self.ctx
+        with ctx.scope():
+            coef = scaled_coefficient_vector(self.n, beta, ctx)
+            dn = len(coef)
+            diag = ctx.zeros((dn, dn))
+            for i in range(dn):
+                diag[i, i] = coef[i]
+            qu, qv = derivative_nets_checked(self.n, beta, diag, ctx)
+            two_s = self._sin(beta / 2) * 2
+            scale = np.array([1 / (c * two_s) for c in coef], dtype=object)[:, None]
+            return qu * scale, qv * scale
+
+    def _levels(self, k: int) -> dict:
+        cache = self.__dict__.setdefault("_cache", {})
+        if k not in cache:
+            du, dv = self._derivative_matrices(k)
+            second = (self._matmul(du, du), self._matmul(dv, du), self._matmul(dv, dv))
+            cache[k] = {"second": second, "mats": None}
+        return cache[k]
+
+    def bound(self, nets: np.ndarray, k: int) -> np.ndarray:
+        """For each node, a float M >= lambda_max([[m_uu, m_uv], [m_uv, m_vv]]) (rigorous in :class:`_BallRoute`)."""
+        dn, count, dim = nets.shape
+        mids = self._mids(nets)
+        centre = mids.mean(axis=0)                        # any translation: D annihilates constants
+        with self.ctx.scope():
+            centred = nets - centre.astype(object)[None]
+            flat = centred.reshape(dn, count * dim)
+            ms = [self._norm_max(self._matmul(d, flat).reshape(dn, count, dim))
+                  for d in self._levels(k)["second"]]
+            return np.array([self._lambda_max(uu, vv, uv, k) for uu, uv, vv in zip(*ms)])
+
+    def children(self, nets: np.ndarray, k: int) -> list[np.ndarray]:
+        dn, count, dim = nets.shape
+        level = self._levels(k)
+        if level["mats"] is None:
+            level["mats"] = self._subdivision(k)
+        flat = nets.reshape(dn, count * dim)
+        with self.ctx.scope():
+            return [self._matmul(m, flat).reshape(dn, count, dim) for m in level["mats"]]
+
+    def steps(self, k: int, m_bound: np.ndarray, tol: float) -> tuple[np.ndarray, np.ndarray]:
+        """The grid steps r (as :func:`steps_for`) and the leaf bounds M beta^2 / (4 r^2) evaluated in the
+        arithmetic (rounded up), each <= tol (a step raised where the rounded bound exceeds tol)."""
+        r = steps_for(self.alpha_float / (1 << k), m_bound * (1 + 1e-9), tol)
+        out = np.empty(len(r))
+        for i, (m, ri) in enumerate(zip(m_bound.tolist(), r.tolist())):
+            while True:
+                out[i] = self._leaf_bound(m, k, ri)
+                if out[i] <= tol:
+                    break
+                nxt = [x for x in _STEPS if x > ri]
+                if not nxt:
+                    raise ValueError(f"tol = {tol!r} needs a leaf grid of more than {_STEPS[-1]} steps; raise tol "
+                                     "or max_depth")
+                ri = nxt[0]
+            r[i] = ri
+        return r, out
+
+    def vertices(self, net: np.ndarray, xy: np.ndarray, csum: np.ndarray, root: int):
+        """s at the exact lattice parameters (u, v) = alpha xy / root and at the fan centroids alpha csum /
+        (3 root), rounded to float64: ``(points, params, err)`` with err >= max_i |s(x_i) - points_i| (rigorous in
+        :class:`_BallRoute`)."""
+        ctx = self.ctx
+        with ctx.scope():
+            num = np.concatenate([3 * xy, csum]).astype(object)          # parameters times 3 root / alpha
+            third = self.alpha / (3 * root)
+            u = np.array([third * int(x) for x in num[:, 0]], dtype=object)
+            v = np.array([third * int(y) for y in num[:, 1]], dtype=object)
+            w = np.array([third * (3 * root - int(x) - int(y)) for x, y in num], dtype=object)
+            sa = self._sin(self.alpha / 2)
+            trig = []
+            for x in (u, v, w):
+                half = x / 2
+                trig += [ctx.sin(half) / sa, ctx.cos(half)]
+            coef = scaled_coefficient_vector(self.n, self.alpha, ctx)
+            values = monomials(exponent_matrix(self.n), trig, ctx) * coef[None, :]
+            surf = self._matmul(values, self.start(net)[:, 0, :])
+            params = self._mids(np.column_stack([u, v, w]))
+            points = self._mids(surf)
+            err = self._vertex_error(surf, points)
+        return points, np.maximum(params, 0.0), err
+
+
+class _BallRoute(_Route):
+    """Ball arithmetic (python-flint arb): every quantity an enclosure; the nets' balls contain the exact sub-nets of
+    the float64 input net (taken as exact), M and the leaf bounds are upper ends of balls rounded up."""
+
+    rigorous = True
+
+    def __init__(self, n: int, alpha, dps: int) -> None:
+        self.n = n
+        self.ctx = BallContext(prec=int(3.33 * dps) + 20)
+        if isinstance(alpha, RationalAngle):
+            # 4 atan(t): a ball of radius about 2^-(prec + 1024), so that the subdivision matrices at alpha / 2^k can
+            # be certified to 2^-prec (they amplify alpha's radius by up to 2^(8n + 4n log2(2^k / alpha)))
+            with BallContext(prec=self.ctx.prec + 1024).scope():
+                self.alpha = 4 * (arb(int(alpha.t.p)) / int(alpha.t.q)).atan()
+        else:
+            self.alpha = _arb_of(alpha)
+        self.alpha_float = float(self.alpha.mid())
+
+    def beta(self, k: int):
+        """alpha / 2^k: exact (a division by 2^k at a precision above alpha's midpoint keeps every bit)."""
+        with BallContext(prec=self.ctx.prec + 1100).scope():
+            return self.alpha / (1 << k)
+
+    def _sin(self, x):
+        return x.sin()
+
+    def _subdivision(self, k: int) -> list:
+        mats, _ = _certified(self.n, self.beta(k), self.ctx.prec)
+        return mats
+
+    @staticmethod
+    def _matmul(a, b) -> np.ndarray:
+        if not isinstance(a, arb_mat):
+            a = arb_mat(np.asarray(a, dtype=object).tolist())
+        return np.array((a * arb_mat(np.asarray(b, dtype=object).tolist())).tolist(), dtype=object)
+
+    @staticmethod
+    def _mids(x: np.ndarray) -> np.ndarray:
+        return np.vectorize(lambda y: float(y.mid()), otypes=[np.float64])(x)
+
+    @staticmethod
+    def _norm_max(x: np.ndarray) -> np.ndarray:
+        """Per node (axis 1), a float >= max_f |x_f| (Euclidean norm over the coordinates)."""
+        mag = np.vectorize(lambda y: y.abs_upper(), otypes=[object])(x)
+        norms = np.vectorize(lambda y: _up(y.sqrt()), otypes=[np.float64])((mag * mag).sum(axis=2))
+        return norms.max(axis=0)
+
+    def _lambda_max(self, a: float, b: float, c: float, k: int) -> float:
+        """Upper bound of lambda_max([[a, c], [c, b]]) (increasing in a, b and |c| >= 0: the bound of exact upper
+        bounds is an upper bound), evaluated in balls, rounded up."""
+        a, b, c = arb(a), arb(b), arb(c)
+        return _up((a + b) / 2 + (((a - b) / 2) ** 2 + c * c).sqrt())
+
+    def _leaf_bound(self, m: float, k: int, r: int) -> float:
+        with self.ctx.scope():
+            beta = self.beta(k)
+            return _up(arb(m) * 2 * beta * beta / (INTERPOLATION_DIVISOR * r * r))   # M l^2 / 8, l^2 = 2 beta^2 / r^2
+
+    @staticmethod
+    def _vertex_error(surf: np.ndarray, points: np.ndarray) -> float:
+        diff = surf - points.astype(object)
+        mag = np.vectorize(lambda y: y.abs_upper(), otypes=[object])(diff)
+        norms = np.vectorize(lambda y: _up(y.sqrt()), otypes=[np.float64])((mag * mag).sum(axis=1))
+        return float(norms.max())
+
+    def total(self, leaf_max: float, err: float) -> float:
+        return _up(arb(leaf_max) + arb(err))
+
+
+class _MpRoute(_Route):
+    """mpmath at ``dps`` digits: the same computation, not rigorous (the rounding of mpf arithmetic is allowed for
+    as on the float route, with eps = 2^-prec instead of 2^-52)."""
+
+    rigorous = False
+
+    def __init__(self, n: int, alpha, dps: int) -> None:
+        self.n, self.dps = n, dps
+        self.ctx = MpContext(dps=dps)
+        with self.ctx.scope():
+            self.alpha = 4 * mpmath.atan(mpmath.mpf(int(alpha.t.p)) / int(alpha.t.q)) if isinstance(
+                alpha, RationalAngle) else mpmath.mpf(alpha)
+            self.eps = mpmath.mpf(2) ** -mpmath.mp.prec
+        self.alpha_float = float(self.alpha)
+
+    def _sin(self, x):
+        return mpmath.sin(x)
+
+    def _allowance(self, k: int) -> float:
+        return float(max(mpmath.mpf(10) ** (6 - self.dps), ROUNDING_GROWTH * 4 ** k * self.eps))
+
+    def _subdivision(self, k: int) -> list:
+        return list(subdivision_matrices(self.n, self.beta(k), self.ctx))
+
+    @staticmethod
+    def _matmul(a, b) -> np.ndarray:
+        return np.dot(np.asarray(a, dtype=object), np.asarray(b, dtype=object))
+
+    @staticmethod
+    def _mids(x: np.ndarray) -> np.ndarray:
+        return np.asarray(x, dtype=object).astype(np.float64)
+
+    @staticmethod
+    def _norm_max(x: np.ndarray) -> np.ndarray:
+        return np.vectorize(lambda y: float(mpmath.sqrt(y)), otypes=[np.float64])((x * x).sum(axis=2)).max(axis=0)
+
+    def _lambda_max(self, a: float, b: float, c: float, k: int) -> float:
+        lam = 0.5 * (a + b) + math.sqrt(0.25 * (a - b) ** 2 + c * c)
+        return math.nextafter(lam * (1.0 + self._allowance(k)), math.inf)
+
+    def _leaf_bound(self, m: float, k: int, r: int) -> float:
+        with self.ctx.scope():
+            beta = self.beta(k)
+            return math.nextafter(float(mpmath.mpf(m) * 2 * beta * beta / (INTERPOLATION_DIVISOR * r * r)), math.inf)
+
+    def _vertex_error(self, surf: np.ndarray, points: np.ndarray) -> float:
+        diff = surf - points.astype(object)
+        worst = max(mpmath.sqrt(sum(x * x for x in row)) for row in diff)
+        return math.nextafter(float(worst) + self._allowance(0) * float(np.abs(points).max(initial=1.0)),
+                              math.inf)
+
+    def total(self, leaf_max: float, err: float) -> float:
+        return math.nextafter(leaf_max + err, math.inf)
+
+
+def _tree_route(route: _Route, arr: np.ndarray, tol: float, leaf_resolution: int, max_depth: int,
+                max_vertices: int) -> _Leaves:
+    """:func:`_tree` on a :class:`_Route` (the same leaves rule and refusals; the nets and bounds in the route's
+    arithmetic)."""
+    dn, dim = arr.shape
+    unit = 1 << (max_depth + 1)
+    nets = route.start(arr)
+    a = np.zeros(1, dtype=np.int64)
+    b = np.zeros(1, dtype=np.int64)
+    sign = np.ones(1, dtype=np.int64)
+    cap = np.full(1, np.inf)
+    out: list[tuple] = []
+    visited = 1
+    for k in range(max_depth + 1):
+        beta = route.alpha_float / (1 << k)
+        m_bound = np.minimum(route.bound(nets, k), cap)
+        need = _need(beta, m_bound, tol)
+        estimate = float(((need + 2) * (need + 3) / 2).sum())
+        if estimate > EARLY_REFUSAL * max_vertices:
+            raise ValueError(f"tol = {tol:.3g} needs about {estimate:.3g} vertices at depth {k} (the bound of this "
+                             f"level), far above max_vertices = {max_vertices}; raise tol (the count grows like 1/tol) "
+                             "or max_vertices")
+        last = k == max_depth or 4 * int((need > leaf_resolution).sum()) * dn * dim > MAX_TREE_FLOATS
+        leaf = np.ones(nets.shape[1], dtype=bool) if last else need <= leaf_resolution
+        if leaf.any():
+            r, bnd = route.steps(k, m_bound[leaf], tol)
+            out.append((np.full(int(leaf.sum()), k), a[leaf], b[leaf], sign[leaf], r, bnd))
+        keep = ~leaf
+        if not keep.any():
+            break
+        visited += 4 * int(keep.sum())
+        if visited * dn > MAX_BALL_TREE_WORK:
+            raise ValueError(f"tol = {tol:.3g} with leaf_resolution = {leaf_resolution} needs more than {visited} tree "
+                             f"nodes by depth {k + 1}, above the ball/mp routes' tree limit {MAX_BALL_TREE_WORK} / "
+                             f"delta_n = {MAX_BALL_TREE_WORK // dn}; raise tol or leaf_resolution")
+        half = unit >> (k + 1)
+        parent, pa, pb, ps = nets[:, keep], a[keep], b[keep], sign[keep]
+        cap = np.tile(m_bound[keep], 4)
+        nets = np.concatenate(route.children(parent, k), axis=1)
+        a = np.concatenate([pa + ps * half, pa, pa, pa + ps * half])
+        b = np.concatenate([pb, pb + ps * half, pb, pb + ps * half])
+        sign = np.concatenate([ps, ps, ps, -ps])
+    cols = list(zip(*out))
+    return _Leaves(*(np.concatenate(c) for c in cols))
+
+
+def tessellate(net, n: int, alpha, tol, *, arith: str = "float", dps: int | None = None, leaf_resolution: int = 64,
+               max_depth: int = 10, max_vertices: int | None = None) -> Tessellation:
     """A triangle mesh of the patch with control net ``net`` (``(delta_n, d)``, eq. triangular_trig_surface) whose
     parametric deviation from the surface is at most ``tol``: max over x of |s(x) - mesh(x)| <= tol, with mesh(x)
     the piecewise-linear map of the parameter triangulation (so every mesh point is within tol of the surface and
@@ -441,12 +777,30 @@ def tessellate(net, n: int, alpha, tol, *, leaf_resolution: int = 64, max_depth:
     than 7168 steps (``ValueError`` naming max_vertices or tol); after it, a mesh above ``max_vertices`` or a lattice
     finer than alpha / (105 2^21) (``ValueError`` naming tol and max_depth).
 
+    ``arith``: ``'float'`` (default; float64, the bound up to measured rounding allowances), ``'ball'`` (python-flint
+    arb at 3.33 ``dps`` + 20 bits: ``bound`` is a proven upper bound of max_x |s(x) - mesh(x)|, mesh the
+    piecewise-linear interpolant of the returned float64 vertices over the exact lattice triangulation of
+    Omega^alpha; the module docstring) or ``'mp'`` (mpmath at ``dps`` digits; not rigorous, its allowances about
+    10^(6 - dps)).  ``dps``: 16..200, default 30, only with 'ball' and 'mp'.  On these two routes alpha may also be
+    an mpf or a :class:`~paper_repro.core.domain.RationalAngle` (4 atan(t), enclosed in a ball), ``max_vertices``
+    is at most :data:`MAX_BALL_WORK` // delta_n (default that limit; every vertex is evaluated in arb/mpf) and the
+    tree at most :data:`MAX_BALL_TREE_WORK` // delta_n nodes (``ValueError`` naming tol and leaf_resolution).  The
+    float route and its results do not depend on these parameters (the same bits as before they existed).
+
     >>> import numpy as np
     >>> from paper_repro.core.labels import delta
     >>> mesh = tessellate(np.zeros((delta(2), 3)), 2, 1.0, 1e-6)   # a point: one triangle
     >>> len(mesh.triangles), mesh.leaves
     (1, 1)
+    >>> net = np.random.default_rng(1).random((delta(1), 3))
+    >>> ball = tessellate(net, 1, 1.0, 1e-2, arith="ball")        # a proven bound
+    >>> bool(ball.bound <= 1e-2), len(ball.points) == len(tessellate(net, 1, 1.0, 1e-2).points)
+    (True, True)
     """
+    arith, dps = _check_arith(arith, dps)
+    if arith != "float":
+        return _tessellate_route(net, n, alpha, tol, arith, dps, leaf_resolution, max_depth, max_vertices)
+    max_vertices = MAX_VERTICES if max_vertices is None else max_vertices
     arr, n, alpha, tol, leaf_resolution, max_depth, max_vertices = _check_inputs(
         net, n, alpha, tol, leaf_resolution, max_depth, max_vertices)
     extent = float(np.abs(arr).max())
@@ -464,5 +818,34 @@ def tessellate(net, n: int, alpha, tol, *, leaf_resolution: int = 64, max_depth:
     return Tessellation(points, tri, params, bound, int(len(leaves.steps)), int(leaves.level.max()), len(centroids))
 
 
+def _tessellate_route(net, n, alpha, tol, arith: str, dps: int, leaf_resolution, max_depth, max_vertices
+                      ) -> Tessellation:
+    """:func:`tessellate` with ``arith`` 'ball' or 'mp' (inputs checked as on the float route; alpha may be a
+    float, an mpf or a :class:`~paper_repro.core.domain.RationalAngle`)."""
+    n = check_int(n, "n", 1, MAX_N_TESSELLATE, why="each tree level builds the subdivision matrices at a new alpha")
+    limit = MAX_BALL_WORK // delta(n)
+    max_vertices = limit if max_vertices is None else max_vertices
+    max_vertices = check_int(max_vertices, "max_vertices", 3, limit,
+                             why=f"every vertex is evaluated in arith {arith!r} (the limit is {MAX_BALL_WORK} / "
+                                 "delta_n, about 15 s)")
+    exact_alpha = open_alpha(alpha)
+    arr, n, _, tol, leaf_resolution, max_depth, max_vertices = _check_inputs(
+        net, n, float(exact_alpha), tol, leaf_resolution, max_depth, max_vertices)
+    route: _Route = (_BallRoute if arith == "ball" else _MpRoute)(n, exact_alpha, dps)
+    extent = float(np.abs(arr).max())
+    # the vertices' own error (ball radius plus rounding to float64, about 1e-16 of the extent) is measured below and
+    # added; the tree works to tol less a reserve of 1e-13 extent for it
+    leaves = _tree_route(route, arr, tol - 1e-13 * extent, leaf_resolution, max_depth, max_vertices)
+    xy, tri, centroids, root = _mesh(leaves, max_depth, max_vertices)
+    csum = np.rint(centroids * 3.0).astype(np.int64)      # the centroids' lattice coordinates are integers / 3
+    points, params, err = route.vertices(arr, xy, csum, root)
+    bound = route.total(float(leaves.bound.max()), err)
+    if bound > tol:
+        raise ArithmeticError(f"the {arith} bound {bound!r} exceeds tol = {tol!r} (vertex error {err!r}); raise "
+                              "tol or dps")
+    return Tessellation(points, tri, params, bound, int(len(leaves.steps)), int(leaves.level.max()), len(centroids))
+
+
 __all__ = ["tessellate", "Tessellation", "second_derivative_bound", "second_derivative_nets", "derivative_nets_t",
-           "steps_for", "rounding_factor", "MAX_N_TESSELLATE", "MAX_VERTICES"]
+           "steps_for", "rounding_factor", "MAX_N_TESSELLATE", "MAX_VERTICES", "ARITHS", "MAX_BALL_WORK",
+           "MAX_BALL_TREE_WORK"]
