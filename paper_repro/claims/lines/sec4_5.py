@@ -1099,25 +1099,34 @@ def eval_dims(expr, n: int):
 
 def read_E_n() -> tuple[list, callable]:
     """The printed E_n: ``E_{n}^{\\alpha}=\\left\\{ ru+gv+bw:r,g,b\\in\\mathbb{N} ,~lo\\leq r,g,b\\leq hi\\right\\}``
-    -> (the coefficient letters in the order of u, v, w, n -> the set of triples)."""
+    -> (the coefficient letters in the order of u, v, w, n -> the set of triples).  Read by
+    :func:`~paper_repro.printed.latex_math.parse_relation`: ``E(n) = Family(r*u + g*v + b*w, conditions, ())``, the
+    conditions as the reader splits them at the commas: ``r, g, In(b, N_bb), lo <= r, g, b <= hi``."""
     import sympy as sp
 
-    tex = verbatim("sec4_5-E-n").replace("%", " ")
-    m = re.fullmatch(r"\s*E_\{n\}\^\{\\alpha\}=\\left\\\{\s*(.*?):\s*(\w),(\w),(\w)\\in\s*\\mathbb\{N\}\s*,~(.*?)"
-                     r"\\leq\s*(\w),(\w),(\w)\\leq\s*(.*?)\\right\\\}\s*\.?\s*", tex)
-    if not m:
-        raise LatexMathError("unread E_n")
-    combo, *rest = m.groups()
-    names, lo, names2, hi = rest[:3], rest[3], rest[4:7], rest[7]
+    rel = lm.parse_relation(verbatim("sec4_5-E-n"))
+    if rel.ops != ["="] or rel.conditions or rel.parts[0] != sp.Function("E")(sp.Symbol("n")) or \
+            getattr(rel.parts[1], "func", None) != lm.Family or rel.parts[1].args[2] != sp.Tuple():
+        raise LatexMathError("unread E_n: not E_{n} = {X : ..}")
+    combo, conds = rel.parts[1].args[0], list(rel.parts[1].args[1])
+    if len(conds) != 6 or not all(isinstance(conds[k], sp.Symbol) for k in (0, 1, 4)) or \
+            getattr(conds[2], "func", None) != sp.Function("In"):
+        raise LatexMathError("unread E_n: the conditions are not 'r,g,b in N, lo <= r,g,b <= hi'")
+    letters3, nat = conds[2].args
+    lo_rel, hi_rel = conds[3], conds[5]
+    if nat != sp.Symbol("N_bb") or not isinstance(lo_rel, sp.LessThan) or not isinstance(hi_rel, sp.LessThan):
+        raise LatexMathError("unread E_n: the letters are not natural numbers between two bounds")
+    names = [str(conds[0]), str(conds[1]), str(letters3)]
+    names2 = [str(lo_rel.rhs), str(conds[4]), str(hi_rel.lhs)]
     if names != names2 or len(set(names)) != 3:
         raise LatexMathError("the letters of the set and of the bounds differ")
     u, v, w = sp.symbols("u v w")
-    poly = sp.Poly(parse(combo), u, v, w)
+    poly = sp.Poly(section_names(combo), u, v, w)
     letters = [poly.coeff_monomial(x) for x in (u, v, w)]
     if [str(x) for x in letters] != [str(x) for x in sorted(letters, key=lambda s: names.index(str(s)))] or \
             {str(x) for x in letters} != set(names) or poly.coeff_monomial(1) != 0:
         raise LatexMathError("the combination does not use the three letters once each")
-    lo_e, hi_e = parse(lo), parse(hi)
+    lo_e, hi_e = section_names(lo_rel.lhs), section_names(hi_rel.rhs)
 
     def members(n: int) -> list:
         a, b = lo_e.subs("n", n), hi_e.subs("n", n)
