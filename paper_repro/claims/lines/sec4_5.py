@@ -1146,29 +1146,36 @@ def _dimension_items() -> dict[str, bool]:
         for n in range(1, 9))
     out["V_n_rank_is_delta_n"] = all(span_rank((("V", n),)) == len(united_system(n)) for n in (1, 2, 3))
     # order 2: new linearly independent functions; V_2 = span V_2
-    t = verbatim("sec4_5-n2-independent")
-    m = re.search(r"generate new linearly independent constrained trivariate cosine and sine functions over "
-                  r"\$\\Omega\^\{\\alpha\}\$, i\.e\., \$\\mathcal\{V\}_\{(\d+)\}\^\{\\alpha\}=~\$span~\$V_\{(\d+)\}"
-                  r"\^\{\\alpha\}\$", t)
-    out["order_2_independent"] = bool(m) and m.group(1) == m.group(2) == "2" and \
+    d = lm.sentence(r"generate new linearly independent constrained trivariate cosine and sine functions over "
+                    r"$\Omega^{\alpha}$, i.e., {space}span~{system}", verbatim("sec4_5-n2-independent"))
+    # the word "span" between the two segments is the operator: V_2 = span V_2 read as one relation
+    eq = lm.parse_relation(d["space"] + r"\operatorname{span}" + d["system"]) if d else None
+    vcal, span_v = sp.Function("Vcal"), sp.Function("span")
+    out["order_2_independent"] = eq is not None and eq.ops == ["="] and not eq.conditions and \
+        eq.parts[0].func == vcal and eq.parts[1].func == span_v and eq.parts[1].args[0].func == sp.Function("V") and \
+        eq.parts[0].args == eq.parts[1].args[0].args == (2,) and \
         span_rank((("V", 2),)) == 1 + 2 * (len(classes_of(2)) - 1) and span_rank((("V", 2),)) > span_rank((("V", 1),))
     # V_n = V_{n-1} with 6n new linearly independent functions, n >= 1
-    t = verbatim("sec4_5-prop-6n")
-    m = re.fullmatch(r"if \$n\\geq(\d+)\$ the function system \$V_\{n\}\^\{\\alpha\}\$ can be obtained by completing "
-                     r"\$V_\{n-1\}\^\{\\alpha\}\$ with \$(.*?)\$ new linearly independent", t)
-    if not m:
+    d = lm.sentence(r"if {start} the function system $V_{n}^{\alpha}$ can be obtained by completing "
+                    r"$V_{n-1}^{\alpha}$ with {count} new linearly independent", verbatim("sec4_5-prop-6n"))
+    if not d:
         raise ValueError("unread prop-6n")
-    count, n0 = parse(m.group(2)), int(m.group(1))
+    start = lm.parse_relation(d["start"])
+    if start.parts[0] != sp.Symbol("n") or start.ops != [">="] or not start.parts[1].is_Integer:
+        raise ValueError("prop-6n: the start is not n >= a number")
+    count, n0 = parse(d["count"]), int(start.parts[1])
     out["6n_new"] = n0 >= 1 and all(
         span_rank((("V", n),)) - span_rank((("V", n - 1),)) == count.subs("n", n) for n in range(n0, 4))
     # the recurrence, its start, the sum and the closed form
-    rec, cond = verbatim("sec4_5-dim-recurrence").split(",~")
-    mc = re.fullmatch(r"\s*n\\geq(\d+)\s*", cond)
-    parts = chain(rec)
-    out["recurrence"] = bool(mc) and int(mc.group(1)) >= 1 and len(parts) == 2 and all(
-        eval_dims(parts[0], n) == eval_dims(parts[1], n) for n in range(int(mc.group(1)), 4))
-    mi = re.fullmatch(r"\s*\$(.*)\$\s*", verbatim("sec4_5-dim-initial"))
-    ini = chain(mi.group(1)) if mi else []
+    rec = lm.parse_relation(verbatim("sec4_5-dim-recurrence"))
+    cond = rec.conditions[0] if len(rec.conditions) == 1 else None
+    rec_n0 = int(cond.parts[1]) if cond is not None and cond.ops == [">="] and cond.parts[0] == sp.Symbol("n") and \
+        cond.parts[1].is_Integer and not cond.conditions else None
+    parts = [section_names(x) for x in rec.parts]
+    out["recurrence"] = rec_n0 is not None and rec_n0 >= 1 and rec.ops == ["="] and len(parts) == 2 and all(
+        eval_dims(parts[0], n) == eval_dims(parts[1], n) for n in range(rec_n0, 4))
+    d = lm.sentence("{initial}", verbatim("sec4_5-dim-initial"))
+    ini = chain(d["initial"]) if d else []
     out["initial"] = len(ini) == 2 and eval_dims(ini[0], 0) == eval_dims(ini[1], 0) and ini[0].has(
         sp.Function("dim_V"))
     for key, lid, ns in (("sum", "sec4_5-dim-sum", range(1, 4)), ("closed", "sec4_5-dim-closed", range(1, 13))):
