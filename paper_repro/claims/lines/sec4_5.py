@@ -1193,19 +1193,33 @@ def check_dimension() -> LineResult:
     return items_result(_dimension_items, how, "exact-evidence", (ValueError, TypeError, AttributeError))
 
 
-_SPAN = re.compile(r"\\operatorname\{span\}%?\s*([TV])_\{([^{}]+)\}\^\{\\alpha\}|\\mathcal\{([TV])\}%?\s*_\{([^{}]+)\}"
-                   r"\^\{\\alpha\}")
+def _space(x, n: int) -> tuple[str, int]:
+    r"""``("T", 2n)`` / ``("V", n)`` of a parsed space at order n: ``Tcal(2n)`` (:math:`\mathcal{T}_{2n}`),
+    ``span(T(2n))``, ``span(V(n))``, ``Vcal(n)``; :class:`LatexMathError` for anything else."""
+    import sympy as sp
+
+    head = getattr(x, "func", None)
+    if head == sp.Function("span") and len(x.args) == 1:
+        x, head = x.args[0], getattr(x.args[0], "func", None)
+        kind = {sp.Function("T"): "T", sp.Function("V"): "V"}.get(head)
+    else:
+        kind = {sp.Function("Tcal"): "T", sp.Function("Vcal"): "V"}.get(head)
+    if kind is None or len(x.args) != 1:
+        raise LatexMathError(f"{x} is not a space T_{{..}}, V_{{..}} or their span")
+    idx = x.args[0].subs(sp.Symbol("n"), n)
+    if not idx.is_Integer:
+        raise LatexMathError(f"the index of {x} is not an integer at n = {n}")
+    return kind, int(idx)
 
 
 def read_spans(tex: str, n: int) -> list[tuple[str, int]]:
     """The spaces ``\\mathcal{T}_{2n}``, ``\\operatorname{span}T_{2n}``, ``\\operatorname{span}V_{n}``,
-    ``\\mathcal{V}_{n}`` of a printed chain, in order, their indices at order n."""
-
-    out = []
-    for m in _SPAN.finditer(tex.replace("%", " ").replace("% ", " ")):
-        kind, idx = (m.group(1), m.group(2)) if m.group(1) else (m.group(3), m.group(4))
-        out.append((kind, int(parse(idx).subs("n", n))))
-    return out
+    ``\\mathcal{V}_{n}`` of a printed chain of '=' (read by :func:`~paper_repro.printed.latex_math.parse_relation`),
+    in order, their indices at order n."""
+    rel = lm.parse_relation(tex)
+    if set(rel.ops) != {"="} or rel.conditions:
+        raise LatexMathError("not a chain of '='")
+    return [_space(x, n) for x in rel.parts]
 
 
 def _coincidence_items() -> dict[str, bool]:
@@ -1214,41 +1228,45 @@ def _coincidence_items() -> dict[str, bool]:
     out: dict[str, bool] = {}
     for lid in ("sec4_5-theorem", "sec4_5-conclusion"):
         tex = verbatim(lid)
-        body = tex.split("$")[1] if "$" in tex else tex
-        links = re.sub(r"\\(?:operatorname\{span\}|mathcal\{[TV]\})%?\s*(?:_\{[^{}]+\})?\s*(?:[TV]_\{[^{}]+\})?"
-                       r"\^\{\\alpha\}|\\text\{\.\}|%|\s", "", body)
-        ok = set(links) <= {"="} and len(links) == 3
+        if lid == "sec4_5-conclusion":
+            d = lm.sentence("therefore {chain}", tex)
+            if not d:
+                raise LatexMathError(f"{lid}: not 'therefore $..$'")
+            tex = d["chain"]
+        ok = len(lm.parse_relation(tex).ops) == 3
         for n in (1, 2):
             sp_ = read_spans(tex, n)
             ok &= len(sp_) == 4 and span_rank(tuple(sp_)) == span_rank((sp_[0],)) == span_rank((sp_[-1],))
             ok &= all(span_rank((x,)) == span_rank(tuple(sp_)) for x in sp_)
         out[lid] = ok
-    tex = verbatim("sec4_5-theorem-statement")
-    m = re.fullmatch(r"The system \$T_\{([^{}]+)\}\^\{\\alpha\}\$ of constrained trivariate functions forms a basis "
-                     r"of the vector space \$\\mathcal\{V\}_\{([^{}]+)\}\^\{\\alpha\}\$", tex)
-    ok = bool(m)
-    if m:
+    d = lm.sentence("The system {system} of constrained trivariate functions forms a basis of the vector space {space}",
+                    verbatim("sec4_5-theorem-statement"))
+    ok = bool(d)
+    if d:
+        system, space = parse(d["system"]), parse(d["space"])
+        ok = getattr(system, "func", None) == sp.Function("T") and getattr(space, "func", None) == sp.Function("Vcal")
         for n in (1, 2):
-            t_, v_ = ("T", int(sp.sympify(m.group(1).replace("2n", "2*n")).subs("n", n))), \
-                ("V", int(sp.sympify(m.group(2)).subs("n", n)))
+            t_, v_ = _space(sp.Function("span")(system), n), _space(space, n)
             ok &= span_rank((t_,)) == span_rank((t_, v_)) == span_rank((v_,)) == len(united_system(t_[1] // 2))
     out["basis"] = ok
     # 1 + delta_n = dim span{sigma, span T_2n} <= dim span V_n = delta_n
-    tex = verbatim("sec4_5-contradiction").replace("%", " ")
-    m = re.fullmatch(r"\s*\\\[\s*(.*?)=\\dim\s*\\operatorname\{span\}\s*\\left\\\{\s*\\sigma,\s*"
-                     r"\\operatorname\{span\}\s*"
-                     r"T_\{([^{}]+)\}\^\{\\alpha\}\\right\\\}\s*\\leq\\dim\s*\\operatorname\{span\}\s*V_\{([^{}]+)\}"
-                     r"\^\{\\alpha\}=(.*?),\s*\\\]\s*", tex)
-    ok = bool(m)
-    if m:
-        left, right = chain(m.group(1)), chain(m.group(4))
+    rel = lm.parse_relation(verbatim("sec4_5-contradiction"))
+    dim, span_ = sp.Function("dim"), sp.Function("span")
+    ok = rel.ops == ["=", "<=", "="] and not rel.conditions
+    if ok:
+        left, with_sigma, dim_v, right = (section_names(x) for x in rel.parts)
+        inner = with_sigma.args[0] if with_sigma.func == dim and len(with_sigma.args) == 1 else None
+        fam = inner.args[0] if getattr(inner, "func", None) == span_ and len(inner.args) == 1 else None
+        ok = getattr(fam, "func", None) == lm.Family and fam.args[1:] == (sp.Tuple(), sp.Tuple()) and \
+            len(fam.args[0]) == 2 and fam.args[0][0] == sp.Symbol("sigma") and dim_v.func == dim
+    if ok:
         for n in (1, 2, 3):
-            t_ = ("T", int(sp.sympify(m.group(2).replace("2n", "2*n")).subs("n", n)))
-            v_ = ("V", int(sp.sympify(m.group(3)).subs("n", n)))
+            t_, v_ = _space(fam.args[0][1], n), _space(dim_v.args[0], n)
             # sigma outside span T: the dimension grows by one; sigma and T in span V: at most dim V
-            ok &= len(left) == len(right) == 1 and eval_dims(left[0], n) == span_rank((t_,)) + 1
-            ok &= span_rank((t_, v_)) == span_rank((v_,)) == eval_dims(right[0], n)
-            ok &= eval_dims(left[0], n) > eval_dims(right[0], n)  # the contradiction
+            ok &= t_[0] == "T" and v_[0] == "V" and dim_v.args[0].func == span_
+            ok &= eval_dims(left, n) == span_rank((t_,)) + 1
+            ok &= span_rank((t_, v_)) == span_rank((v_,)) == eval_dims(right, n)
+            ok &= eval_dims(left, n) > eval_dims(right, n)  # the contradiction
     out["contradiction"] = ok
     parts = chain(verbatim("sec4_5-dim-T"))
     out["delta_is_dim_T"] = len(parts) == 2 and all(
