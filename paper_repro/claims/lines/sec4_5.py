@@ -1303,32 +1303,34 @@ def half_angle_exponents(expr) -> tuple[int, ...]:
 
 
 def read_proof_r() -> tuple:
-    """The ranges j = a..b, i = c..d (read from both lines that print them: they must agree), the printed indices of
-    R_{2n,2n-i,j} and its printed product of half-angle powers."""
-    from paper_repro.printed.parsed import listed_range
+    """The ranges j = a..b, i = c..d (read from both lines that print them: they must agree), the second listed item
+    of each range, the printed indices of R_{2n,2n-i,j} and its printed product of half-angle powers.  The words by
+    :func:`~paper_repro.printed.latex_math.sentence`, the ranges by :func:`paper_repro.printed.parsed.listed`, the
+    function by :func:`~paper_repro.printed.latex_math.parse_relation` (the line ends inside its ``$..$``)."""
+    import sympy as sp
 
-    rng = set()
-    for lid in ("sec4_5-proof-symmetry-reduction", "sec4_5-proof-R"):
-        tex = verbatim(lid)
-        m = re.search(r"(?:for all |^)indices \$j=(.*?)\$ and \$i=(.*?)\$", tex)
-        if lid == "sec4_5-proof-symmetry-reduction" and "it is sufficient to show that for all indices" not in tex:
-            raise LatexMathError(f"{lid}: not 'sufficient to show that for all indices'")
-        if not m:
+    from paper_repro.printed.parsed import listed, listed_range
+
+    templates = {"sec4_5-proof-symmetry-reduction": "... it is sufficient to show that for all indices {j} and {i}",
+                 "sec4_5-proof-R": "indices {j} and {i} the function ${function:words}"}
+    rng, found = set(), {}
+    for lid, template in templates.items():
+        found[lid] = d = lm.sentence(template, verbatim(lid))
+        if not d:
             raise LatexMathError(f"{lid}: no ranges of j and i")
-        rng.add((listed_range("j=" + m.group(1), "j")[1:], listed_range("i=" + m.group(2), "i")[1:],
-                 re.sub(r"\s", "", m.group(1)), re.sub(r"\s", "", m.group(2))))
+        items = {x: tuple(listed(d[x], x)) for x in ("j", "i")}
+        rng.add((listed_range(d["j"], "j")[1:], listed_range(d["i"], "i")[1:], items["j"], items["i"]))
     if len(rng) != 1:
         raise LatexMathError("the two lines print different ranges")
-    (jr, ir, jtxt, itxt) = rng.pop()
-    tex = verbatim("sec4_5-proof-R").replace("%", " ")
-    m = re.search(r"the function \$R_\{2n,([^{}]+),([^{}]+)\}\s*\^\{\\alpha\}\\left\(\s*u,v,w\\right\)\s*=(.*)$", tex)
-    if not m:
+    (jr, ir, jitems, iitems) = rng.pop()
+    rel = lm.parse_relation(found["sec4_5-proof-R"]["function"])
+    head = rel.parts[0]
+    n, u, v, w = sp.symbols("n u v w")
+    if rel.ops != ["="] or rel.conditions or getattr(head, "func", None) != sp.Function("R") or len(head.args) != 4 \
+            or head.args[0] != 2 * n or head.args[3] != sp.Tuple(u, v, w):
         raise LatexMathError("no R_{2n,..}(u,v,w) = ..")
-    parts = chain(m.group(3))
-    if len(parts) != 1:
-        raise LatexMathError("the formula is not one product")
-    second = {"j": re.match(r"j=[^,]+,([^,]+),", jtxt), "i": re.match(r"i=[^,]+,([^,]+),", itxt)}
-    return jr, ir, second, parse(m.group(1)), parse(m.group(2)), parts[0]
+    second = {"j": jitems[1], "i": iitems[1]}
+    return jr, ir, second, head.args[1], head.args[2], rel.parts[1]
 
 
 def _proof_reduction() -> dict[str, bool]:
@@ -1347,10 +1349,9 @@ def _proof_reduction() -> dict[str, bool]:
         for j in range(j_lo, j_hi + 1):
             for i in range(bound(ir[0], n=n, j=j), bound(ir[1], n=n, j=j) + 1):
                 pairs.append((i, j))
-        for var, m in second.items():  # the second listed element is the first plus one
-            if m:
-                lo = bound((jr if var == "j" else ir)[0], n=n, j=j_lo)
-                ok_steps &= parse(m.group(1)).subs({ns: n, is_: lo, js: lo}) == lo + 1
+        for var, item in second.items():  # the second listed element is the first plus one
+            lo = bound((jr if var == "j" else ir)[0], n=n, j=j_lo)
+            ok_steps &= item.subs({ns: n, is_: lo, js: lo}) == lo + 1
         for i, j in pairs:
             a_, b_ = idx(n, i, j)
             if Q(a_).denominator != 1 or Q(b_).denominator != 1:
