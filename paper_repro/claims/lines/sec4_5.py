@@ -1393,21 +1393,47 @@ POWER_LINES = {"cos": ("sec4_5-cos-power-odd", "sec4_5-cos-power-even"),
                "sin": ("sec4_5-sin-power-odd", "sec4_5-sin-power-even")}
 
 
-def read_power_reduction(which: str) -> tuple:
-    """The printed left side and the two cases ``(right side, parity)`` of the power reduction of ``which``."""
+def _parities(cond, names: tuple[str, ...]) -> tuple[int, ...]:
+    r"""The residues mod 2 of ``names`` for which a parsed condition holds, found by evaluating it at 0..3 for each
+    name: ``Eq(Mod(m + 1, 2), 0)`` gives ``(1,)``, ``Eq(Mod(i, 2), 0) & Eq(Mod(j, 2), 0)`` gives ``(0, 0)``; a clause
+    ``m\equiv r (mod q)`` (a :class:`Relation` ``m equiv (r, q)``) is first made ``Eq(Mod(m - r, q), 0)``.
+    :class:`LatexMathError` if the condition is not one parity class."""
+    import sympy as sp
 
-    odd, even = (verbatim(x).replace("%", " ") for x in POWER_LINES[which])
-    m = re.fullmatch(r"\s*(.*?)&\s*=\\left\\\{\s*\\begin\{array\}\s*\[c\]\{rl\}\s*(.*)$", odd)
-    if not m:
-        raise LatexMathError(f"{which}: no left side")
-    lhs = parse(m.group(1))
-    cases = []
-    for body in (m.group(2), even):
-        mc = re.fullmatch(r"\s*(.*?),\s*&\s*m\\equiv(\d)\\left\(\s*\\operatorname\{mod\}\s*2\\right\)\s*,(?:\\\\)?\s*",
-                          body)
-        if not mc:
-            raise LatexMathError(f"{which}: unread case {body[-40:]!r}")
-        cases.append((parse(mc.group(1)), int(mc.group(2))))
+    if isinstance(cond, lm.Relation):
+        if cond.ops != ["equiv"] or cond.conditions or not isinstance(cond.parts[1], sp.Tuple) or \
+                len(cond.parts[1]) != 2:
+            raise LatexMathError(f"{cond.parts} is not a congruence")
+        cond = sp.Eq(sp.Mod(cond.parts[0] - cond.parts[1][0], cond.parts[1][1]), 0)
+    syms = [sp.Symbol(x) for x in names]
+    if not cond.free_symbols <= set(syms):
+        raise LatexMathError(f"the condition {cond} names more than {names}")
+    truth = {k: bool(cond.subs(dict(zip(syms, k)))) for k in product(range(4), repeat=len(syms))}
+    held = {tuple(x % 2 for x in k) for k, v in truth.items() if v}
+    if len(held) != 1 or any(truth[k] != (tuple(x % 2 for x in k) in held) for k in truth):
+        raise LatexMathError(f"the condition {cond} is not one parity class of {names}")
+    return held.pop()
+
+
+def read_power_reduction(which: str) -> tuple:
+    """The printed left side and the two cases ``(right side, parity)`` of the power reduction of ``which``: the odd
+    line ``lhs & =\\left\\{ \\begin{array}.. value, & condition,\\\\`` by
+    :func:`~paper_repro.printed.latex_math.parse_relation` (``lhs = Cases((value, condition))``), the even line
+    (the array's next row) likewise (``value`` with the clause ``m equiv (0, 2)``)."""
+    import sympy as sp
+
+    odd, even = (lm.parse_relation(verbatim(x)) for x in POWER_LINES[which])
+    if odd.ops != ["="] or len(odd.parts) != 2 or getattr(odd.parts[1], "func", None) != lm.Cases or \
+            len(odd.parts[1].args) != 1 or odd.conditions:
+        raise LatexMathError(f"{which}: not 'lhs = {{ value, condition' (one row)")
+    if even.ops or len(even.parts) != 1 or len(even.conditions) != 1:
+        raise LatexMathError(f"{which}: the second row is not 'value, condition'")
+    (value, cond), = odd.parts[1].args
+    lhs = section_names(odd.parts[0])
+    cases = [(section_names(value), _parities(cond, ("m",))[0]),
+             (section_names(even.parts[0]), _parities(even.conditions[0], ("m",))[0])]
+    if not all(isinstance(c[0], sp.Expr) for c in cases):
+        raise LatexMathError(f"{which}: a case is not an expression")
     return lhs, cases
 
 
@@ -1435,10 +1461,8 @@ def check_power_reduction() -> LineResult:
            "the transcriptions) expanded exactly in t at every m = 0..16 of the case's parity; m in N, t in R read")
     try:
         out = {**power_reduction_holds("cos"), **power_reduction_holds("sin")}
-        rng = verbatim("sec4_5-power-ranges").replace("%", " ")
-        out["ranges_m_in_N_t_in_R"] = re.fullmatch(r"\s*\(\$m\\in\s*\\mathbb\{N\}\s*\$,\s*"
-                                                   r"\$t\\in\s*\\mathbb\{R\}\s*\$\)"
-                                                   r"\s*", rng) is not None
+        out["ranges_m_in_N_t_in_R"] = lm.sentence(r"($m\in\mathbb{N}$, $t\in\mathbb{R}$)",
+                                                  verbatim("sec4_5-power-ranges")) is not None
     except (LatexMathError, TypeError, ValueError) as exc:
         return LineResult(False, how=how, kind="exhaustive", detail={"unread": str(exc)})
     return LineResult(all(out.values()), how=how, kind="exhaustive", detail=out)
@@ -1554,19 +1578,22 @@ _KSYMS = "n i j k1 k2 k3 k4"
 
 
 def read_product_types() -> dict[tuple[int, int], object]:
-    """``{(i mod 2, j mod 2): product}`` of the printed cases of possible_products_inclusion (each read)."""
+    """``{(i mod 2, j mod 2): product}`` of the printed cases of possible_products_inclusion: each row
+    ``product, & i\\equiv a\\left(\\operatorname{mod}2\\right) \\text{ and }j\\equiv b..`` read by
+    :func:`~paper_repro.printed.latex_math.parse_relation` (the product and its one clause, a sympy boolean), the
+    parities by :func:`_parities`."""
+    import sympy as sp
 
     out = {}
     for lid in PRODUCT_LINES:
-        body, _, cond = verbatim(lid).replace("%", " ").partition("&")
-        m = re.fullmatch(r"\s*i\\equiv(\d)\\left\(\s*\\operatorname\{mod\}2\\right\)\s*\\text\{ and \}j\\equiv(\d)"
-                         r"\\left\(\s*\\operatorname\{mod\}2\\right\)\s*,?(?:\\\\)?\s*", cond)
-        if not m:
+        rel = lm.parse_relation(verbatim(lid))
+        if rel.ops or len(rel.parts) != 1 or len(rel.conditions) != 1 or rel.conditions[0].ops or \
+                len(rel.conditions[0].parts) != 1 or not isinstance(rel.conditions[0].parts[0], sp.And):
             raise LatexMathError(f"{lid}: unread condition")
-        key = (int(m.group(1)), int(m.group(2)))
-        if key in out or max(key) > 1:
-            raise LatexMathError(f"{lid}: case {key} printed twice or not a parity")
-        out[key] = parse(body.strip().rstrip(","))
+        key = _parities(rel.conditions[0].parts[0], ("i", "j"))
+        if key in out:
+            raise LatexMathError(f"{lid}: case {key} printed twice")
+        out[key] = section_names(rel.parts[0])
     return out
 
 
@@ -1614,14 +1641,12 @@ def check_product_types() -> LineResult:
         types = read_product_types()
         out = {f"{a},{b}": r_in_span_of(p, 3, (a, b)) for (a, b), p in types.items()}
         out["four_parities"] = sorted(types) == [(0, 0), (0, 1), (1, 0), (1, 1)]
-        tex = verbatim("sec4_5-parity")
-        m = re.fullmatch(r"and by the parity of powers \$(.*?)\$, \$(.*?)\$, \$(.*?)\$ and \$(.*?)"
-                         r"\$, one can easily see "
-                         r"that function \$R_\{2n,2n-i,j\}\^\{\\alpha\}\\left\( u,v,w\\right\) \$ can be written as "
-                         r"the sum of products of the type%", tex)
-        if not m:
+        d = lm.sentence(r"and by the parity of powers {p1}, {p2}, {p3} and {p4}, one can easily see that function "
+                        r"$R_{2n,2n-i,j}^{\alpha}\left( u,v,w\right)$ can be written as the sum of products of the "
+                        r"type%", verbatim("sec4_5-parity"))
+        if not d:
             raise LatexMathError("unread parity line")
-        powers = [parse(x) for x in m.groups()]
+        powers = [parse(d[f"p{k}"]) for k in (1, 2, 3, 4)]
         ns, is_, js = sp.symbols("n i j")
         out["powers_of_R"] = all(
             sorted(int(p.subs({ns: n, is_: i, js: j})) for p in powers) == sorted(
