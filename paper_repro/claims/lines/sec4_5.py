@@ -1500,20 +1500,25 @@ def listed_values(items: list, env: dict) -> list[int]:
 
 def read_k_sets(line_id: str) -> tuple[str, list]:
     """``(case, [four listed sets])`` of a printed ``K_{a,b} & =\\left\\{ 0,1,\\ldots,\\frac{..}{..}\\right\\}
-    \\times ..``: each set as its parsed items."""
+    \\times ..``: each set as its parsed items (``None`` for ``\\ldots``).  Read by
+    :func:`~paper_repro.printed.latex_math.parse_relation`: ``K(a, b) = Cartesian(Family(Tuple(0, 1, ldots, x)),
+    ..)``, the factors in the printed order."""
+    import sympy as sp
 
-    tex = verbatim(line_id).replace("%", " ")
-    m = re.fullmatch(r"\s*K_\{(\d),(\d)\}\s*&\s*=(.*?)[,.]?(?:\\\\)?\s*", tex)
-    if not m:
+    rel = lm.parse_relation(verbatim(line_id))
+    head = rel.parts[0]
+    if rel.ops != ["="] or rel.conditions or getattr(head, "func", None) != sp.Function("K") or len(head.args) != 2 \
+            or not all(x.is_Integer for x in head.args):
         raise LatexMathError(f"{line_id}: not K_{{a,b}} = ..")
-    factors = [x.strip() for x in m.group(3).split("\\times")]
+    prod_ = rel.parts[1]
+    factors = prod_.args if getattr(prod_, "func", None) == lm.Cartesian else (prod_,)
     sets = []
     for f in factors:
-        mf = re.fullmatch(r"\\left\\\{(.*)\\right\\\}", f)
-        if not mf:
-            raise LatexMathError(f"{line_id}: unread factor {f[:30]!r}")
-        sets.append([None if x.strip() == "\\ldots" else parse(x) for x in mf.group(1).split(",")])
-    return f"{m.group(1)},{m.group(2)}", sets
+        if getattr(f, "func", None) != lm.Family or f.args[1:] != (sp.Tuple(), sp.Tuple()):
+            raise LatexMathError(f"{line_id}: the factor {f} is not a listed set")
+        items = f.args[0] if isinstance(f.args[0], sp.Tuple) else (f.args[0],)
+        sets.append([None if x == lm.LDOTS else section_names(x) for x in items])
+    return f"{head.args[0]},{head.args[1]}", sets
 
 
 def true_k_ranges(n: int, i: int, j: int) -> list[list[int]]:
