@@ -1695,26 +1695,50 @@ def _abcd(n, i, j, k):
     return Q(e[0] - 2 * k[0], 2), Q(e[4] - 2 * k[1], 2), Q(e[3] - 2 * k[2], 2), Q(e[2] - 2 * k[3], 2)
 
 
-def read_signs() -> dict:
-    """The sign values of ``where $s_{1}=1$ and $s_{2},s_{3},s_{4}\\in\\left\\{ -1,+1\\right\\} $, i.e., $s_{r}^{2}=1$,
-    $r=1,2,3,4$`` (each read; s_r^2 = 1 checked for the listed r)."""
+def _sign_index(x) -> int:
+    """k of a parsed sign ``s(k)`` (``s_{k}``), :class:`LatexMathError` for anything else."""
     import sympy as sp
 
-    tex = verbatim("sec4_5-signs")
-    m = re.fullmatch(r"where \$s_\{(\d)\}=([-+]?\d+)\$ and \$((?:s_\{\d\},?)+)\\in\\left\\\{(.*?)\\right\\\} "
-                     r"\$, i\.e\., "
-                     r"\$s_\{r\}\^\{2\}=(\d+)\$, \$(r=.*)\$", tex)
-    if not m:
+    if getattr(x, "func", None) != sp.Function("s") or len(x.args) != 1 or not x.args[0].is_Integer:
+        raise LatexMathError(f"{x} is not a sign s_{{k}}")
+    return int(x.args[0])
+
+
+def read_signs() -> dict:
+    """The sign values of ``where $s_{1}=1$ and $s_{2},s_{3},s_{4}\\in\\left\\{ -1,+1\\right\\} $, i.e., $s_{r}^{2}=1$,
+    $r=1,2,3,4$`` (each read; s_r^p = c checked for the listed r, the power p and value c read).  The words by
+    :func:`~paper_repro.printed.latex_math.sentence`, each segment by
+    :func:`~paper_repro.printed.latex_math.parse_relation`: ``s(1) = 1``, ``(s(2), s(3), s(4)) in Family((-1, 1))``,
+    ``s_sup(r, 2) = 1``, ``r in (1, 2, 3, 4)``."""
+    import sympy as sp
+
+    d = lm.sentence("where {fixed} and {free}, i.e., {square}, {listed}", verbatim("sec4_5-signs"))
+    if not d:
         raise LatexMathError("unread signs")
-    vals = {f"s{m.group(1)}": [int(m.group(2))]}
-    options = [int(parse(x)) for x in m.group(4).split(",")]
-    for x in re.findall(r"s_\{(\d)\}", m.group(3)):
-        vals[f"s{x}"] = options
-    if not m.group(6).startswith("r=") or "\\ldots" in m.group(6):
+    fixed, free, square, listed = (lm.parse_relation(d[k]) for k in ("fixed", "free", "square", "listed"))
+    if any(x.conditions for x in (fixed, free, square, listed)) or fixed.ops != ["="] or free.ops != ["in"] or \
+            square.ops != ["="] or listed.ops != ["in"]:
+        raise LatexMathError("unread signs: not 's_a = c', 's_b,.. in {..}', 's_r^p = c', 'r = ..'")
+    if not fixed.parts[1].is_Integer:
+        raise LatexMathError("the fixed sign is not a number")
+    vals = {f"s{_sign_index(fixed.parts[0])}": [int(fixed.parts[1])]}
+    names, options = free.parts
+    if getattr(options, "func", None) != lm.Family or options.args[1:] != (sp.Tuple(), sp.Tuple()):
+        raise LatexMathError("the signs' values are not a listed set")
+    opts = options.args[0] if isinstance(options.args[0], sp.Tuple) else (options.args[0],)
+    if not all(x.is_Integer for x in opts):
+        raise LatexMathError("a sign's value is not a number")
+    for x in (names if isinstance(names, sp.Tuple) else (names,)):
+        vals[f"s{_sign_index(x)}"] = [int(o) for o in opts]
+    power, value = square.parts
+    var, rs = listed.parts
+    if getattr(power, "func", None) != sp.Function("s_sup") or len(power.args) != 2 or power.args[0] != var or \
+            not isinstance(var, sp.Symbol) or not power.args[1].is_Integer or not value.is_Integer:
+        raise LatexMathError("not s_{r}^{p} = c over the listed r")
+    if not isinstance(rs, sp.Tuple) or lm.LDOTS in rs or not all(x.is_Integer for x in rs):
         raise LatexMathError("the indices r are not listed")
-    rs = [int(parse(x)) for x in m.group(6)[2:].split(",")]
-    if sorted(vals) != [f"s{r}" for r in rs] or not all(
-            sp.Integer(x) ** 2 == int(m.group(5)) for r in rs for x in vals[f"s{r}"]):
+    if sorted(vals) != sorted(f"s{r}" for r in rs) or not all(
+            sp.Integer(x) ** power.args[1] == value for r in rs for x in vals[f"s{r}"]):
         raise LatexMathError("s_r^2 = 1 fails for the listed r, or the listed r are not the signs")
     return vals
 
