@@ -1766,12 +1766,11 @@ def check_eight_terms() -> LineResult:
            "in K_{1,1}, n <= 3, the 2^(factors-1) formal terms of the product are, up to sign, exactly the form at "
            "the printed signs (a sine for a sine series); the product spans R_{2n,2n-i,j} (n <= 3)")
     try:
-        tex = verbatim("sec4_5-eight-terms").replace("%", " ")
-        m = re.fullmatch(r"each of the (\w+) terms of the expansion of the product\s*\\\[(.*?)\\\]\s*has the form\s*"
-                         r"\\\[(.*?),?\s*\\\]\s*", tex)
-        if not m or m.group(1) not in NUMBER_WORDS:
+        d = lm.sentence(r"each of the {count:count} terms of the expansion of the product% \[ {product:words} \] has "
+                        r"the form% \[ {form:words} \]", verbatim("sec4_5-eight-terms"))
+        if not d or d["count"] is None:
             raise LatexMathError("unread line")
-        count, prod_e, form = NUMBER_WORDS[m.group(1)], parse(m.group(2)), parse(m.group(3).strip().rstrip(","))
+        count, prod_e, form = d["count"], parse(d["product"]), parse(d["form"])
         signs = read_signs()
         factors = sp.Mul.make_args(prod_e)
         if not all(isinstance(f, (sp.sin, sp.cos)) for f in factors) or not isinstance(form, (sp.sin, sp.cos)):
