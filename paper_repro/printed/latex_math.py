@@ -71,7 +71,7 @@ from lark.exceptions import LarkError, UnexpectedCharacters, UnexpectedEOF, Unex
 
 __all__ = ["LatexMathError", "Relation", "parse", "parse_relation", "parse_cases", "parse_vector", "index_set",
            "inline_math", "prose", "sentence", "NUMBER_WORDS", "evaluate_sums", "Term", "terms", "untagged",
-           "parse_conditions", "summands", "clean", "D", "Family", "Cartesian", "Cases", "PM"]
+           "parse_conditions", "summands", "underset_marks", "clean", "D", "Family", "Cartesian", "Cases", "PM"]
 
 
 class LatexMathError(ValueError):
@@ -943,6 +943,19 @@ def summands(tex: str) -> list[list]:
         return [e]
 
     return [flat(p) for p in rel.parts]
+
+
+def underset_marks(tex: str) -> list[tuple[Relation, Any]]:
+    r"""The marks :func:`parse` drops (its cleaning pass reads ``\underset{A}{B}`` as ``B``): each
+    ``\underset{A}{B}`` of ``tex`` in the printed order, as ``(A read by parse_relation, B read by parse)``.  A mark
+    ``\in\mathbb{N}`` is a relation without its left part (``lead == "in"``, ``parts == [N_bb]``).
+
+    >>> [(a.lead, a.parts, b) for a, b in underset_marks(r"\left[ \underset{\in\mathbb{N}}{\underbrace{a-z}},b\right]")]
+    [('in', [N_bb], a - z)]
+    """
+    found: list[tuple[str, str]] = []
+    _replace_macro(re.sub(r"(?<!\\)%\s*", "", tex), "underset", 2, lambda a, b: found.append((a, b)) or b)
+    return [(parse_relation(a), parse(b)) for a, b in found]
 
 
 def untagged(tex: str) -> list:

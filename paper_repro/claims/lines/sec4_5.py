@@ -1845,20 +1845,17 @@ def read_class_entries():
     (each marked as a natural number) and the arguments of the printed ``z=\\min\\left\\{ ..\\right\\}``."""
     import sympy as sp
 
-    tex = verbatim("sec4_5-class-N").replace("%", " ")
-    m = re.fullmatch(r"\s*\\left\[(.*)\\right\]\s*,?\s*", tex)
-    if not m:
+    tex = verbatim("sec4_5-class-N")
+    cls = lm.parse(tex)
+    if getattr(cls, "func", None) != sp.Function("cls") or len(cls.args) != 1 or not isinstance(cls.args[0], sp.Tuple):
         raise LatexMathError("no class [..]")
-    body, items, depth, last = m.group(1), [], 0, 0
-    for k, ch in enumerate(body):
-        depth += {"{": 1, "}": -1}.get(ch, 0)
-        if ch == "," and depth == 0:
-            items.append(body[last:k])
-            last = k + 1
-    items.append(body[last:])
-    if not all(re.match(r"\s*\\underset\{\\in\s*\\mathbb\{N\}\s*\}", x) for x in items):
+    entries = list(cls.args[0])
+    marks = lm.underset_marks(tex)  # \underset{\in\mathbb{N}}{\underbrace{X}}: the mark parse drops
+    if len(marks) != len(entries) or not all(
+            m.lead == "in" and m.parts == [sp.Symbol("N_bb")] and not m.ops and not m.conditions and x == e
+            for (m, x), e in zip(marks, entries)):
         raise LatexMathError("an entry is not marked natural")
-    entries = [parse(x) for x in items]
+    entries = [section_names(e) for e in entries]
     zparts = chain(verbatim("sec4_5-z-min"))
     if len(zparts) != 2 or zparts[0] != sp.Symbol("z") or not isinstance(zparts[1], sp.Min):
         raise LatexMathError("z-min is not z = min{..}")
