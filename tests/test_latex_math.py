@@ -483,3 +483,17 @@ def test_union_over_a_bound_quotient_and_ordered_product_of_sets():
     assert parse(r"2\times3") == 6
     with pytest.raises(LatexMathError):
         parse(r"E_{n}/_{\approx}")
+
+
+def test_underset_marks_reads_what_parse_drops():
+    """``\\underset{\\in\\mathbb{N}}{\\underbrace{X}}`` (the class entries of Section sec:coincidence): parse reads
+    X alone; underset_marks gives each mark (a relation without its left part: lead ``in``, part ``N_bb``) with
+    the X under it, in the printed order -- read by hand: entries a - z and b, marks \\in N and \\in Z."""
+    from sympy import Symbol
+
+    from paper_repro.printed.latex_math import underset_marks
+
+    a, b, z = Symbol("a"), Symbol("b"), Symbol("z")
+    got = underset_marks(r"\left[ \underset{\in% \mathbb{N} }{\underbrace{a-z}},\underset{\in\mathbb{Z}}{b}\right]")
+    assert [(m.lead, m.parts, x) for m, x in got] == [("in", [Symbol("N_bb")], a - z), ("in", [Symbol("Z_bb")], b)]
+    assert underset_marks(r"a+b") == []

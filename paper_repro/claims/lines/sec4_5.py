@@ -1880,24 +1880,28 @@ def check_integer_class() -> LineResult:
            "coefficients of X - (u+v+w)/2 (A, B, C, D from the powers of R, the signs read), every (i, j) of the "
            "printed parity, n <= 4")
     try:
-        tex = verbatim("sec4_5-integer")
-        m = re.fullmatch(r"where for all \$(\d+)\$-tuples \$\\left\( ((?:k_\{\d\},?)+)\\right\) \\in K_\{(\d),(\d)\}\$ "
-                         r"the coefficients of variables \$u\$, \$v\$ and \$w\$ are integer numbers and both of the "
-                         r"sine and cosine functions belong to the equivalence class%", tex)
-        if not m:
+        d = lm.sentence(r"where for all {length}-tuples {tuple} the coefficients of variables $u$, $v$ and $w$ are "
+                        r"integer numbers and both of the sine and cosine functions belong to the equivalence class%",
+                        verbatim("sec4_5-integer"))
+        if not d:
             raise LatexMathError("unread integer line")
-        ks = re.findall(r"k_\{(\d)\}", m.group(2))
-        parity = (int(m.group(3)), int(m.group(4)))
+        length, member = parse(d["length"]), lm.parse_relation(d["tuple"])
+        ks, kset = member.parts if member.ops == ["in"] and not member.conditions else (None, None)
+        if not isinstance(ks, sp.Tuple) or getattr(kset, "func", None) != sp.Function("K") or len(kset.args) != 2 \
+                or not all(x.is_Integer for x in kset.args) or not length.is_Integer:
+            raise LatexMathError("unread integer line: not 'n-tuples (k_1, ..) in K_{a,b}'")
+        ks = [k.args[0] if getattr(k, "func", None) == sp.Function("k") and len(k.args) == 1 else None for k in ks]
+        parity = (int(kset.args[0]), int(kset.args[1]))
         if max(parity) > 1:
             raise LatexMathError(f"K_{parity} is not a parity case")
-        other = re.fullmatch(r"The remaining (\w+) cases of \$z\$ can be treated analogously\.",
-                             verbatim("sec4_5-other-z-cases"))
-        if not other or other.group(1) not in NUMBER_WORDS:
+        other = lm.sentence("The remaining {count:count} cases of $z$ can be treated analogously.",
+                            verbatim("sec4_5-other-z-cases"))
+        if not other or other["count"] is None:
             raise LatexMathError("unread remaining cases")
         entries, zmin = read_class_entries()
         signs = read_signs()
-        ok = {"tuple": int(m.group(1)) == len(ks) == 4 and ks == ["1", "2", "3", "4"],
-              "remaining": NUMBER_WORDS[other.group(1)] == len(zmin.args) - 1}
+        ok = {"tuple": int(length) == len(ks) == 4 and ks == [1, 2, 3, 4],
+              "remaining": other["count"] == len(zmin.args) - 1}
         ok_int = ok_min = ok_nat = True
         params = (*sp.symbols(_KSYMS), *sp.symbols("s1 s2 s3 s4"))
         fz = [sp.lambdify(params, a) for a in zmin.args]
