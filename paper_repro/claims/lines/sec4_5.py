@@ -1928,30 +1928,66 @@ def check_integer_class() -> LineResult:
     return LineResult(all(ok.values()), how=how, kind="exhaustive", detail=ok)
 
 
-_MAX = re.compile(r"\s*&?\s*\\max\\left\\\{(.*?):\\left\(\s*k_\{1\},k_\{2\},k_\{3\},k_\{4\}\\right\)\s*"
-                  r"\\in K_\{(\d),(\d)\},~"
-                  r"(.*?)\\right\\\}\s*\\\\\s*(?:=\s*&|&\s*=)(.*)$")
+def _quantified(conds) -> tuple[tuple, dict[str, list[int]]]:
+    """``(the tuple a membership names, {sign: values})`` of the parsed conditions of a printed set
+    ``\\left\\{ X : \\left(k_{1},..\\right)\\in K_{a,b},~s_{1}=1,s_{2},s_{3}\\in\\left\\{ -1,+1\\right\\} \\right\\}``:
+    the reader gives them split at the commas, ``In(Tuple(k(1), ..), K(a, b)), Eq(s(1), 1), s(2), In(s(3), Family((-1,
+    1)))``; a bare sign before a membership is listed with it (``s_{2},s_{3}\\in``).  :class:`LatexMathError` for any
+    other condition."""
+    import sympy as sp
+
+    In = sp.Function("In")
+    quant: dict[str, list[int]] = {}
+    pending: list = []
+    member = None
+    for c in conds:
+        if isinstance(c, sp.Eq) and c.rhs.is_Integer:
+            quant[f"s{_sign_index(c.lhs)}"] = [int(c.rhs)]
+        elif getattr(c, "func", None) == sp.Function("s"):
+            pending.append(c)
+        elif getattr(c, "func", None) == In and isinstance(c.args[0], sp.Tuple) and member is None and not pending:
+            member = c
+        elif getattr(c, "func", None) == In and getattr(c.args[1], "func", None) == lm.Family and \
+                c.args[1].args[1:] == (sp.Tuple(), sp.Tuple()):
+            opts = c.args[1].args[0] if isinstance(c.args[1].args[0], sp.Tuple) else (c.args[1].args[0],)
+            if not all(o.is_Integer for o in opts):
+                raise LatexMathError(f"the values {opts} are not numbers")
+            for x in (*pending, c.args[0]):
+                quant[f"s{_sign_index(x)}"] = [int(o) for o in opts]
+            pending = []
+        else:
+            raise LatexMathError(f"unread quantifier {c}")
+    if pending or member is None:
+        raise LatexMathError("a listed sign without its set, or no tuple in K")
+    return member, quant
 
 
 def read_max(line_id: str) -> tuple:
-    """``(expression, {sign: values} quantified, parity of K, printed value)`` of a printed max{..} = value."""
+    """``(expression, {sign: values} quantified, parity of K, printed value)`` of a printed max{..} = value: the
+    row ``& \\max\\left\\{ X : \\left( k_{1},k_{2},k_{3},k_{4}\\right) \\in K_{a,b},~.. \\right\\} \\\\ = & value``
+    read by :func:`~paper_repro.printed.latex_math.parse_relation` (``max(Family(X, conditions, ())) = value``), the
+    conditions by :func:`_quantified`."""
+    import sympy as sp
 
-    m = _MAX.fullmatch(verbatim(line_id).replace("%", " "))
-    if not m:
+    rel = lm.parse_relation(verbatim(line_id))
+    top = rel.parts[0]
+    fam = top.args[0] if getattr(top, "func", None) == lm.FUNCS["max"] and len(top.args) == 1 else None
+    if rel.ops != ["="] or rel.lead or rel.conditions or getattr(fam, "func", None) != lm.Family or fam.args[2]:
         raise LatexMathError(f"{line_id}: unread max")
-    quant: dict[str, list[int]] = {}
-    q = m.group(4)
-    for var, val in re.findall(r"s_\{(\d)\}=([-+]?\d+)", q):
-        quant[f"s{var}"] = [int(val)]
-    for names, opts in re.findall(r"((?:s_\{\d\},?)+)\\in\\left\\\{(.*?)\\right\\\}", q):
-        for x in re.findall(r"s_\{(\d)\}", names):
-            quant[f"s{x}"] = [int(parse(o)) for o in opts.split(",")]
-    rest = re.sub(r"s_\{(\d)\}=([-+]?\d+)|((?:s_\{\d\},?)+)\\in\\left\\\{(.*?)\\right\\\}|,|\s", "", q)
-    if rest:
-        raise LatexMathError(f"{line_id}: unread quantifier {rest!r}")
-    if max(int(m.group(2)), int(m.group(3))) > 1:
-        raise LatexMathError(f"{line_id}: K_{{{m.group(2)},{m.group(3)}}} is not a parity case")
-    return parse(m.group(1)), quant, (int(m.group(2)), int(m.group(3))), parse(m.group(5))
+    member, quant = _quantified(fam.args[1])
+    kset = member.args[1]
+    if member.args[0] != sp.Tuple(*(sp.Function("k")(r) for r in (1, 2, 3, 4))) or \
+            getattr(kset, "func", None) != sp.Function("K") or len(kset.args) != 2 or \
+            not all(x.is_Integer for x in kset.args):
+        raise LatexMathError(f"{line_id}: not (k_1, k_2, k_3, k_4) in K_{{a,b}}")
+    if max(kset.args) > 1:
+        raise LatexMathError(f"{line_id}: K_{{{kset.args[0]},{kset.args[1]}}} is not a parity case")
+    return section_names(fam.args[0]), quant, (int(kset.args[0]), int(kset.args[1])), section_names(rel.parts[1])
+
+
+def _sign_names(expr) -> list[str]:
+    """The names ``s1``..``s9`` of the signs an expression uses (section_names makes ``s_{k}`` the Symbol ``sk``)."""
+    return sorted(str(x) for x in expr.free_symbols if len(str(x)) == 2 and str(x)[0] == "s" and str(x)[1].isdigit())
 
 
 def max_values(line_id: str, quantify_free: bool, n_max: int = 6) -> bool:
@@ -1961,7 +1997,7 @@ def max_values(line_id: str, quantify_free: bool, n_max: int = 6) -> bool:
     import sympy as sp
 
     expr, quant, parity, value = read_max(line_id)
-    signs = sorted(str(x) for x in expr.free_symbols if re.fullmatch(r"s\d", str(x)))
+    signs = _sign_names(expr)
     free = [x for x in signs if x not in quant]
     if quantify_free:
         quant = {**quant, **{x: [-1, 1] for x in free}}
@@ -2029,7 +2065,7 @@ def check_max2_quantifier() -> LineResult:
         expr, quant, _, _ = read_max("sec4_5-max2-set")
     except (LatexMathError, ValueError, TypeError) as exc:
         return LineResult(False, how=how, kind="exhaustive", detail={"unread": str(exc)})
-    free = sorted(str(x) for x in expr.free_symbols if re.fullmatch(r"s\d", str(x)) and str(x) not in quant)
+    free = [x for x in _sign_names(expr) if x not in quant]
     return LineResult(printed, corrected, how=how, kind="exhaustive",
                       detail={"quantified": sorted(quant), "unquantified_in_expression": free,
                               "example": "n = 1, i = j = 1, s4 = -1: max = 0, printed value i = 1"})
