@@ -2085,28 +2085,44 @@ def frequency_classes(n: int) -> set:
     return out
 
 
-def read_union(tex: str) -> tuple:
-    """``\\cup_{i=a}^{b}E_{i}^{\\alpha}/_{\\sim}`` of a line: (a, b) parsed."""
+def read_union(union) -> tuple:
+    """``(a, b)`` of a parsed ``\\cup_{i=a}^{b}E_{i}^{\\alpha}/_{\\sim}``: ``cup(Family(quotient(E(i)), (), ((i, a,
+    b),)))`` (:func:`~paper_repro.printed.latex_math.parse`)."""
+    import sympy as sp
 
-    m = re.findall(r"\\cup_\{i=([^{}]+)\}\^\{([^{}]+)\}E_\{i\}\^\{\\alpha\}/_\{\\sim\}", tex)
-    if len(m) != 1:
-        raise LatexMathError("no single union of E_i/~")
-    return parse(m[0][0]), parse(m[0][1])
+    fam = union.args[0] if getattr(union, "func", None) == sp.Function("cup") and len(union.args) == 1 else None
+    if getattr(fam, "func", None) != lm.Family or fam.args[1] or len(fam.args[2]) != 1:
+        raise LatexMathError(f"{union} is not a union over one bound")
+    (var, lo, hi), = fam.args[2]
+    if fam.args[0] != sp.Function("quotient")(sp.Function("E")(var)):
+        raise LatexMathError(f"{fam.args[0]} is not E_{{{var}}}/~ of the bound variable")
+    return lo, hi
 
 
-def union_holds(tex: str, v_idx: str) -> bool:
-    """The classes of every frequency of T_{2n} lie in the printed union cup_{i=a}^{b} E_i/~ (bounds read), which
-    lies in the classes of the printed V (n = 1..3)."""
+def union_holds(union, v_idx) -> bool:
+    """The classes of every frequency of T_{2n} lie in the printed union cup_{i=a}^{b} E_i/~ (parsed; bounds read),
+    which lies in the classes of the printed V (its index ``v_idx`` parsed), n = 1..3."""
     import sympy as sp
 
     ns = sp.Symbol("n")
-    lo, hi = read_union(tex)
+    lo, hi = read_union(union)
     good = True
     for n in (1, 2, 3):
-        a, b, v = int(lo.subs(ns, n)), int(hi.subs(ns, n)), int(sp.sympify(v_idx).subs(ns, n))
-        union = set().union(*(classes_of(x) for x in range(a, b + 1))) if b >= a else set()
-        good &= frequency_classes(n) <= union <= classes_of(v)
+        a, b, v = int(lo.subs(ns, n)), int(hi.subs(ns, n)), int(v_idx.subs(ns, n))
+        union_ = set().union(*(classes_of(x) for x in range(a, b + 1))) if b >= a else set()
+        good &= frequency_classes(n) <= union_ <= classes_of(v)
     return good
+
+
+def _space_index(x, letter: str) -> tuple[bool, object]:
+    """``(printed as a span, index)`` of a parsed ``X_{idx}`` or ``\\operatorname{span}X_{idx}`` with X = ``letter``."""
+    import sympy as sp
+
+    spanned = getattr(x, "func", None) == sp.Function("span") and len(x.args) == 1
+    inner = x.args[0] if spanned else x
+    if getattr(inner, "func", None) != sp.Function(letter) or len(inner.args) != 1:
+        raise LatexMathError(f"{x} is not {letter}_{{..}} or its span")
+    return spanned, inner.args[0]
 
 
 @line_check("sec4_5-in-Vn")
@@ -2122,19 +2138,29 @@ def check_in_vn() -> LineResult:
            "one triple per class); corrected: they lie in span V_n (exact ranks at rational points), and the "
            "frequencies of T_{2n} lie in the union, n = 1..2")
     try:
-        t_in = verbatim("sec4_5-in-Vn")
-        mv = re.search(r"\\left\[\s*r_\{1\},g_\{1\},b_\{1\}\\right\]\s*,\\left\[\s*r_\{2\},g_\{2\},b_\{2\}\\right\]\s*"
-                       r"\\in\\cup.*i\.e\., \\\[\s*\\cos\\left\(\s*r_\{1\}u\+g_\{1\}v\+b_\{1\}w\\right\)\s*,"
-                       r"\\sin\\left\(\s*r_\{2\}u\+g_\{2\}%?\s*v\+b_\{2\}w\\right\)\s*"
-                       r"\\in\s*(\\operatorname\{span\}\s*)?V_\{([^{}]+)\}\^\{\\alpha\}\.\s*$", t_in)
-        if not mv:
+        d = lm.sentence(r"where {classes}, i.e., \[ {functions:words}", verbatim("sec4_5-in-Vn"))
+        if not d:
             raise LatexMathError("unread line")
-        says_span, v_text = bool(mv.group(1)), mv.group(2)
+        classes, functions = lm.parse_relation(d["classes"]), lm.parse_relation(d["functions"])
+        cls, letters = sp.Function("cls"), [sp.Function(x) for x in "rgb"]
+        u, v, w = sp.symbols("u v w")
+        # two listed subjects: the reader gives the first as the part and the second with its membership as a clause
+        if classes.ops or len(classes.parts) != 1 or len(classes.conditions) != 1 or \
+                classes.conditions[0].ops != ["in"] or functions.ops or len(functions.parts) != 1 or \
+                len(functions.conditions) != 1 or functions.conditions[0].ops != ["in"]:
+            raise LatexMathError("unread line: not '[..], [..] in U, i.e., cos(..), sin(..) in V'")
+        first, (second, union) = classes.parts[0], classes.conditions[0].parts
+        cos_, (sin_, space) = functions.parts[0], functions.conditions[0].parts
+        if [first, second] != [cls(sp.Tuple(*(x(k) for x in letters))) for k in (1, 2)] or \
+                [cos_, sin_] != [f(letters[0](k) * u + letters[1](k) * v + letters[2](k) * w)
+                                 for f, k in ((sp.cos, 1), (sp.sin, 2))]:
+            raise LatexMathError("unread line: the classes or the functions are not [r_k, g_k, b_k], cos/sin of them")
+        says_span, v_idx = _space_index(space, "V")
         ns = sp.Symbol("n")
-        lo, hi = read_union(t_in)
-        literal, spans = True, union_holds(t_in, v_text)
+        lo, hi = read_union(union)
+        literal, spans = True, union_holds(union, v_idx)
         for n in (1, 2):
-            a, b, vi = int(lo.subs(ns, n)), int(hi.subs(ns, n)), int(sp.sympify(v_text).subs(ns, n))
+            a, b, vi = int(lo.subs(ns, n)), int(hi.subs(ns, n)), int(v_idx.subs(ns, n))
             triples = sorted({t for x in range(a, b + 1) for t in E(x)})
 
             def ep(f, t):  # f(r u + g v + b w) with w = alpha - u - v, over (u, v, alpha)
@@ -2167,15 +2193,20 @@ def check_inclusion() -> LineResult:
            "(indices read) by exact ranks of T and V at rational points, n <= 3")
     try:
         ns = sp.Symbol("n")
-        t_inc = verbatim("sec4_5-inclusion").replace("%", " ")
-        mi = re.search(r"linear combinations of sine and cosine functions that belong to some equivalence classes "
-                       r"\$\\left\[\s*r,g,b\\right\]\s*\\in\$ \$\\cup.*Consequently, \\\[\s*\\operatorname\{span\}\s*"
-                       r"T_\{([^{}]+)\}\^\{\\alpha\}\\subseteq\s*\\operatorname\{span\}\s*V_\{([^{}]+)\}\^\{\\alpha\}"
-                       r"\\text\{\.\}\s*\\\]\s*$", t_inc)
-        if not mi:
+        d = lm.sentence(r"Performing similar calculations as above, one concludes that all types of products from "
+                        r"(\ref{{label:word}}) can be expanded into linear combinations of sine and "
+                        r"cosine functions that belong to some equivalence classes {cls} {union}. Consequently, "
+                        r"\[ {inclusion:words} \]", verbatim("sec4_5-inclusion"))
+        if not d or d["label"] != "possible_products_inclusion":
             raise LatexMathError("unread line")
-        ok = {"inclusion": union_holds(t_inc, mi.group(2))}
-        t_idx, v_idx = sp.sympify(mi.group(1).replace("2n", "2*n")), sp.sympify(mi.group(2))
+        # the membership is printed over two segments, $\left[ r,g,b\right] \in$ $\cup..$: read as one relation
+        member, incl = lm.parse_relation(d["cls"] + " " + d["union"]), lm.parse_relation(d["inclusion"])
+        if member.ops != ["in"] or member.conditions or \
+                member.parts[0] != sp.Function("cls")(sp.Tuple(*sp.symbols("r g b"))) or \
+                incl.ops != ["subset"] or incl.conditions:
+            raise LatexMathError("unread line: not '[r,g,b] in U' and 'span T subset span V'")
+        (t_span, t_idx), (v_span, v_idx) = _space_index(incl.parts[0], "T"), _space_index(incl.parts[1], "V")
+        ok = {"inclusion": union_holds(member.parts[1], v_idx), "printed_spans": t_span and v_span}
         ok["spans"] = all(span_rank((("T", int(t_idx.subs(ns, n))), ("V", int(v_idx.subs(ns, n))))) == span_rank(
             (("V", int(v_idx.subs(ns, n))),)) for n in (1, 2, 3))
     except (LatexMathError, ValueError, TypeError, sp.SympifyError) as exc:
