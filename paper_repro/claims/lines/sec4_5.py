@@ -1373,8 +1373,13 @@ def _proof_reduction() -> dict[str, bool]:
         ok_cover &= all(any(tuple(((e[0], e[1]), (e[2], e[3]), (e[4], e[5]))[p[k]] for k in range(3)) in {
             ((x[0], x[1]), (x[2], x[3]), (x[4], x[5])) for x in (r_exponents(n, i, j) for i, j in pairs)}
             for p in perms) for e in (exponents(lab) for lab in united_system(n)))
-    words = "symmetry properties" in verbatim("sec4_5-proof-symmetry-reduction") and "\\ref{R_system}" in verbatim(
-        "sec4_5-proof-symmetry-reduction")
+    d = lm.sentence(r"First of all, we prove that functions of the system (\ref{{system:word}}) are elements of "
+                    r"{space}. Due to symmetry properties of functions (\ref{{r:word}}), (\ref{{g:word}}) and "
+                    r"(\ref{{b:word}}), it is sufficient to show that for all indices {j} and {i}",
+                    verbatim("sec4_5-proof-symmetry-reduction"))
+    words = bool(d) and [d[k] for k in ("system", "r", "g", "b")] == [
+        "united_system", "R_system", "G_system", "B_system"] and parse(d["space"]) == sp.Function("span")(
+        sp.Function("V")(ns))
     return {"formula_is_R": ok_formula, "every_member_a_permutation_of_one": ok_cover, "listed_steps": ok_steps,
             "by_symmetry": words}
 
