@@ -454,3 +454,46 @@ def test_set_with_a_lower_bound_only():
         parse(r"\left\{ C_{i}\right\} _{p\leq0}")
     with pytest.raises(LatexMathError):
         parse(r"\left\{ C_{i}\right\} _{p\geq}")
+
+
+def test_union_over_a_bound_quotient_and_ordered_product_of_sets():
+    """Three rules read by hand from the paper's notation (Section sec:coincidence):
+    ``\\cup_{i=1}^{n}E_{i}^{\\alpha}/_{\\sim}`` is the union over i = 1..n of the quotient sets, i.e.
+    ``cup(Family(quotient(E(i)), (), ((i, 1, n),)))``; ``X/_{\\sim}`` alone is ``quotient(X)``; and
+    ``\\left\\{..\\right\\} \\times\\left\\{..\\right\\}`` is the Cartesian product with its factors in the printed
+    order (sympy's commutative Mul would sort them, losing which set is the first factor).  A binary
+    ``A\\cup B`` stays ``cup(A, B)``."""
+    from sympy import Function, Symbol, Tuple
+
+    from paper_repro.printed.latex_math import Cartesian, Family, LatexMathError, parse, parse_relation
+
+    i, n, j = Symbol("i"), Symbol("n"), Symbol("j")
+    E, quotient, cup = Function("E"), Function("quotient"), Function("cup")
+    assert parse(r"\cup_{i=1}^{n}E_{i}^{\alpha}/_{\sim}") == cup(Family(quotient(E(i)), Tuple(), Tuple(Tuple(i, 1, n))))
+    assert parse(r"\cup_{i=0}^{n-1}E_{i}") == cup(Family(E(i), Tuple(), Tuple(Tuple(i, 0, n - 1))))
+    assert parse(r"E_{n}^{\alpha}/_{\sim}") == quotient(E(n))
+    assert parse(r"A\cup B") == cup(Symbol("A"), Symbol("B"))
+    rel = parse_relation(r"\left[ r,g,b\right] \in\cup_{i=1}^{n}E_{i}^{\alpha}/_{\sim}")
+    assert rel.ops == ["in"] and rel.parts[1] == cup(Family(quotient(E(i)), Tuple(), Tuple(Tuple(i, 1, n))))
+    got = parse(r"\left\{ 0,1,\ldots,j\right\} \times\left\{ 0,1\right\} \times\left\{ 5\right\}")
+    ldots = Symbol("ldots")
+    assert got == Cartesian(Family(Tuple(0, 1, ldots, j), Tuple(), Tuple()), Family(Tuple(0, 1), Tuple(), Tuple()),
+                            Family(5, Tuple(), Tuple()))
+    assert parse(r"\left\{ 5\right\} \times\left\{ 0,1\right\}").args[0] == Family(5, Tuple(), Tuple())
+    assert parse(r"2\times3") == 6
+    with pytest.raises(LatexMathError):
+        parse(r"E_{n}/_{\approx}")
+
+
+def test_underset_marks_reads_what_parse_drops():
+    """``\\underset{\\in\\mathbb{N}}{\\underbrace{X}}`` (the class entries of Section sec:coincidence): parse reads
+    X alone; underset_marks gives each mark (a relation without its left part: lead ``in``, part ``N_bb``) with
+    the X under it, in the printed order -- read by hand: entries a - z and b, marks \\in N and \\in Z."""
+    from sympy import Symbol
+
+    from paper_repro.printed.latex_math import underset_marks
+
+    a, b, z = Symbol("a"), Symbol("b"), Symbol("z")
+    got = underset_marks(r"\left[ \underset{\in% \mathbb{N} }{\underbrace{a-z}},\underset{\in\mathbb{Z}}{b}\right]")
+    assert [(m.lead, m.parts, x) for m, x in got] == [("in", [Symbol("N_bb")], a - z), ("in", [Symbol("Z_bb")], b)]
+    assert underset_marks(r"a+b") == []

@@ -201,3 +201,34 @@ def test_sec4_equivalent_mutants_exist_and_survive():
         line = sec4[k.split(":")[0]]
         (m,) = [m for m in mutants(line.verbatim, line.id) if m.key == k]
         assert _verdict(line.check, {line.id: m.text}) == verdict(line.check)
+
+
+def test_sec4_readers_of_parsed_objects():
+    """The helpers that replaced the regular expressions read the parsed objects, checked on hand-written LaTeX:
+    the parity class of a condition (m odd; i even and j odd; a mod-4 condition is no parity class), the quantified
+    signs of a set builder (s_2 listed with s_3's membership), the bounds of a union of quotient sets (refused when
+    the member is not E of the bound variable) and the ordered factors of K_{a,b}."""
+    import sympy as sp
+
+    from paper_repro.printed import latex_math as lm
+
+    m, i, j, n = sp.symbols("m i j n")
+    assert ck._parities(lm.parse_cases(r"\left\{ \begin{array}[c]{rl} 1, & m\equiv1\left( \operatorname{mod}2\right)"
+                                       r"\end{array}\right.")[0][1], ("m",)) == (1,)
+    assert ck._parities(lm.parse_conditions(r"m\equiv0\left( \operatorname{mod}2\right)")[0], ("m",)) == (0,)
+    cond = lm.parse_relation(r"x, & i\equiv0\left( \operatorname{mod}2\right) \text{ and }j\equiv1\left( "
+                             r"\operatorname{mod}2\right)").conditions[0].parts[0]
+    assert ck._parities(cond, ("i", "j")) == (0, 1)
+    with pytest.raises(ck.LatexMathError):
+        ck._parities(sp.Eq(sp.Mod(m, 4), 0), ("m",))
+    rel = lm.parse_relation(r"\max\left\{ x:\left( k_{1},k_{2},k_{3},k_{4}\right) \in K_{1,1},~s_{1}=1,s_{2},"
+                            r"s_{3}\in\left\{ -1,+1\right\} \right\} =1")
+    member, quant = ck._quantified(rel.parts[0].args[0].args[1])
+    assert quant == {"s1": [1], "s2": [-1, 1], "s3": [-1, 1]} and member.args[1] == sp.Function("K")(1, 1)
+    assert ck.read_union(lm.parse(r"\cup_{i=2}^{n-1}E_{i}^{\alpha}/_{\sim}")) == (2, n - 1)
+    with pytest.raises(ck.LatexMathError):
+        ck.read_union(lm.parse(r"\cup_{i=1}^{n}E_{j}^{\alpha}/_{\sim}"))
+    from paper_repro.printed.lines import substituted
+
+    with substituted({"sec4_5-K00": r"K_{0,0} & =\left\{ 0,1,\ldots,j\right\} \times\left\{ 5\right\} ,\\"}):
+        assert ck.read_k_sets("sec4_5-K00") == ("0,0", [[0, 1, None, j], [5]])

@@ -71,7 +71,7 @@ from lark.exceptions import LarkError, UnexpectedCharacters, UnexpectedEOF, Unex
 
 __all__ = ["LatexMathError", "Relation", "parse", "parse_relation", "parse_cases", "parse_vector", "index_set",
            "inline_math", "prose", "sentence", "NUMBER_WORDS", "evaluate_sums", "Term", "terms", "untagged",
-           "parse_conditions", "summands", "clean", "D", "Family", "Cases", "PM"]
+           "parse_conditions", "summands", "underset_marks", "clean", "D", "Family", "Cartesian", "Cases", "PM"]
 
 
 class LatexMathError(ValueError):
@@ -80,6 +80,8 @@ class LatexMathError(ValueError):
 
 D = sympy.Function("D")
 Family = sympy.Function("Family")
+#: ``\left\{..\right\} \times\left\{..\right\}``: the Cartesian product of sets, its factors in the printed order
+Cartesian = sympy.Function("Cartesian")
 Cases = sympy.Function("Cases")
 PM = sympy.Symbol("pm")
 LDOTS = sympy.Symbol("ldots")
@@ -293,6 +295,7 @@ relop: EQ | NEQ | LEQ | GEQ | LT | GT | IN | NOTIN | SIM | NSIM | EQUIV | SUBSET
      | "-" term                       -> neg
      | "+" term
      | CUP term                       -> cup_unary
+     | cup_bounds term                -> cup_bounded
      | PM term                        -> pm_unary
      | MP term                        -> mp_unary
      | term
@@ -300,6 +303,7 @@ relop: EQ | NEQ | LEQ | GEQ | LT | GT | IN | NOTIN | SIM | NSIM | EQUIV | SUBSET
 ?term: term factor                    -> mul
      | term CDOT factor               -> mul_dot
      | term "/" factor                -> div
+     | term "/" "_" "{" SIM "}"       -> quotient
      | prefix term                    -> apply_prefix
      | term prefix term               -> mul_prefix
      | term CDOT prefix term          -> mul_dot_prefix
@@ -310,6 +314,8 @@ relop: EQ | NEQ | LEQ | GEQ | LT | GT | IN | NOTIN | SIM | NSIM | EQUIV | SUBSET
 prefix: SUM "_" "{" (NAMEVAR | GREEKV) "=" expr "}" "^" sarg                         -> sum_prefix
       | LIM "_" "{" (NAMEVAR | GREEKV) RIGHTARROW expr "}"                           -> lim_prefix
       | FRAC "{" DIFF ("^" sarg)? "}" "{" dvar+ "}"                            -> deriv_prefix
+
+cup_bounds: CUP "_" "{" NAMEVAR "=" expr "}" "^" sarg
 
 dvar: DIFF dbase                      -> dvar
     | DIFF dbase "^" sarg             -> dvar_pow
@@ -632,7 +638,13 @@ class _Build(Transformer):
         return sympy.Mul(a, b)
 
     def mul_dot(self, c):
+        sets = [x for x in (c[0], c[2]) if getattr(x, "func", None) in (Family, Cartesian)]
+        if str(c[1]) == "\\times" and len(sets) == 2:  # a product of sets: sympy's Mul would reorder the factors
+            return Cartesian(*(a for x in sets for a in (x.args if x.func == Cartesian else (x,))))
         return self.mul([c[0], c[2]])
+
+    def quotient(self, c):
+        return sympy.Function("quotient")(c[0])
 
     def div(self, c):
         return c[0] / c[1]
@@ -653,6 +665,12 @@ class _Build(Transformer):
 
     def sum_prefix(self, c):
         return ("sum", (sympy.Symbol(_name(c[1])), c[2], c[3]))
+
+    def cup_bounds(self, c):
+        return sympy.Tuple(sympy.Symbol(_name(c[1])), c[2], self._scalar(c[3]))
+
+    def cup_bounded(self, c):  # \cup_{i=a}^{b} X: the union of the family of the X over i = a..b
+        return sympy.Function("cup")(Family(c[1], sympy.Tuple(), sympy.Tuple(c[0])))
 
     def lim_prefix(self, c):
         return ("lim", (sympy.Symbol(_name(c[1])), c[3]))
@@ -925,6 +943,19 @@ def summands(tex: str) -> list[list]:
         return [e]
 
     return [flat(p) for p in rel.parts]
+
+
+def underset_marks(tex: str) -> list[tuple[Relation, Any]]:
+    r"""The marks :func:`parse` drops (its cleaning pass reads ``\underset{A}{B}`` as ``B``): each
+    ``\underset{A}{B}`` of ``tex`` in the printed order, as ``(A read by parse_relation, B read by parse)``.  A mark
+    ``\in\mathbb{N}`` is a relation without its left part (``lead == "in"``, ``parts == [N_bb]``).
+
+    >>> [(a.lead, a.parts, b) for a, b in underset_marks(r"\left[ \underset{\in\mathbb{N}}{\underbrace{a-z}},b\right]")]
+    [('in', [N_bb], a - z)]
+    """
+    found: list[tuple[str, str]] = []
+    _replace_macro(re.sub(r"(?<!\\)%\s*", "", tex), "underset", 2, lambda a, b: found.append((a, b)) or b)
+    return [(parse_relation(a), parse(b)) for a, b in found]
 
 
 def untagged(tex: str) -> list:

@@ -1099,25 +1099,34 @@ def eval_dims(expr, n: int):
 
 def read_E_n() -> tuple[list, callable]:
     """The printed E_n: ``E_{n}^{\\alpha}=\\left\\{ ru+gv+bw:r,g,b\\in\\mathbb{N} ,~lo\\leq r,g,b\\leq hi\\right\\}``
-    -> (the coefficient letters in the order of u, v, w, n -> the set of triples)."""
+    -> (the coefficient letters in the order of u, v, w, n -> the set of triples).  Read by
+    :func:`~paper_repro.printed.latex_math.parse_relation`: ``E(n) = Family(r*u + g*v + b*w, conditions, ())``, the
+    conditions as the reader splits them at the commas: ``r, g, In(b, N_bb), lo <= r, g, b <= hi``."""
     import sympy as sp
 
-    tex = verbatim("sec4_5-E-n").replace("%", " ")
-    m = re.fullmatch(r"\s*E_\{n\}\^\{\\alpha\}=\\left\\\{\s*(.*?):\s*(\w),(\w),(\w)\\in\s*\\mathbb\{N\}\s*,~(.*?)"
-                     r"\\leq\s*(\w),(\w),(\w)\\leq\s*(.*?)\\right\\\}\s*\.?\s*", tex)
-    if not m:
-        raise LatexMathError("unread E_n")
-    combo, *rest = m.groups()
-    names, lo, names2, hi = rest[:3], rest[3], rest[4:7], rest[7]
+    rel = lm.parse_relation(verbatim("sec4_5-E-n"))
+    if rel.ops != ["="] or rel.conditions or rel.parts[0] != sp.Function("E")(sp.Symbol("n")) or \
+            getattr(rel.parts[1], "func", None) != lm.Family or rel.parts[1].args[2] != sp.Tuple():
+        raise LatexMathError("unread E_n: not E_{n} = {X : ..}")
+    combo, conds = rel.parts[1].args[0], list(rel.parts[1].args[1])
+    if len(conds) != 6 or not all(isinstance(conds[k], sp.Symbol) for k in (0, 1, 4)) or \
+            getattr(conds[2], "func", None) != sp.Function("In"):
+        raise LatexMathError("unread E_n: the conditions are not 'r,g,b in N, lo <= r,g,b <= hi'")
+    letters3, nat = conds[2].args
+    lo_rel, hi_rel = conds[3], conds[5]
+    if nat != sp.Symbol("N_bb") or not isinstance(lo_rel, sp.LessThan) or not isinstance(hi_rel, sp.LessThan):
+        raise LatexMathError("unread E_n: the letters are not natural numbers between two bounds")
+    names = [str(conds[0]), str(conds[1]), str(letters3)]
+    names2 = [str(lo_rel.rhs), str(conds[4]), str(hi_rel.lhs)]
     if names != names2 or len(set(names)) != 3:
         raise LatexMathError("the letters of the set and of the bounds differ")
     u, v, w = sp.symbols("u v w")
-    poly = sp.Poly(parse(combo), u, v, w)
+    poly = sp.Poly(section_names(combo), u, v, w)
     letters = [poly.coeff_monomial(x) for x in (u, v, w)]
     if [str(x) for x in letters] != [str(x) for x in sorted(letters, key=lambda s: names.index(str(s)))] or \
             {str(x) for x in letters} != set(names) or poly.coeff_monomial(1) != 0:
         raise LatexMathError("the combination does not use the three letters once each")
-    lo_e, hi_e = parse(lo), parse(hi)
+    lo_e, hi_e = section_names(lo_rel.lhs), section_names(hi_rel.rhs)
 
     def members(n: int) -> list:
         a, b = lo_e.subs("n", n), hi_e.subs("n", n)
@@ -1137,29 +1146,36 @@ def _dimension_items() -> dict[str, bool]:
         for n in range(1, 9))
     out["V_n_rank_is_delta_n"] = all(span_rank((("V", n),)) == len(united_system(n)) for n in (1, 2, 3))
     # order 2: new linearly independent functions; V_2 = span V_2
-    t = verbatim("sec4_5-n2-independent")
-    m = re.search(r"generate new linearly independent constrained trivariate cosine and sine functions over "
-                  r"\$\\Omega\^\{\\alpha\}\$, i\.e\., \$\\mathcal\{V\}_\{(\d+)\}\^\{\\alpha\}=~\$span~\$V_\{(\d+)\}"
-                  r"\^\{\\alpha\}\$", t)
-    out["order_2_independent"] = bool(m) and m.group(1) == m.group(2) == "2" and \
+    d = lm.sentence(r"generate new linearly independent constrained trivariate cosine and sine functions over "
+                    r"$\Omega^{\alpha}$, i.e., {space}span~{system}", verbatim("sec4_5-n2-independent"))
+    # the word "span" between the two segments is the operator: V_2 = span V_2 read as one relation
+    eq = lm.parse_relation(d["space"] + r"\operatorname{span}" + d["system"]) if d else None
+    vcal, span_v = sp.Function("Vcal"), sp.Function("span")
+    out["order_2_independent"] = eq is not None and eq.ops == ["="] and not eq.conditions and \
+        eq.parts[0].func == vcal and eq.parts[1].func == span_v and eq.parts[1].args[0].func == sp.Function("V") and \
+        eq.parts[0].args == eq.parts[1].args[0].args == (2,) and \
         span_rank((("V", 2),)) == 1 + 2 * (len(classes_of(2)) - 1) and span_rank((("V", 2),)) > span_rank((("V", 1),))
     # V_n = V_{n-1} with 6n new linearly independent functions, n >= 1
-    t = verbatim("sec4_5-prop-6n")
-    m = re.fullmatch(r"if \$n\\geq(\d+)\$ the function system \$V_\{n\}\^\{\\alpha\}\$ can be obtained by completing "
-                     r"\$V_\{n-1\}\^\{\\alpha\}\$ with \$(.*?)\$ new linearly independent", t)
-    if not m:
+    d = lm.sentence(r"if {start} the function system $V_{n}^{\alpha}$ can be obtained by completing "
+                    r"$V_{n-1}^{\alpha}$ with {count} new linearly independent", verbatim("sec4_5-prop-6n"))
+    if not d:
         raise ValueError("unread prop-6n")
-    count, n0 = parse(m.group(2)), int(m.group(1))
+    start = lm.parse_relation(d["start"])
+    if start.parts[0] != sp.Symbol("n") or start.ops != [">="] or not start.parts[1].is_Integer:
+        raise ValueError("prop-6n: the start is not n >= a number")
+    count, n0 = parse(d["count"]), int(start.parts[1])
     out["6n_new"] = n0 >= 1 and all(
         span_rank((("V", n),)) - span_rank((("V", n - 1),)) == count.subs("n", n) for n in range(n0, 4))
     # the recurrence, its start, the sum and the closed form
-    rec, cond = verbatim("sec4_5-dim-recurrence").split(",~")
-    mc = re.fullmatch(r"\s*n\\geq(\d+)\s*", cond)
-    parts = chain(rec)
-    out["recurrence"] = bool(mc) and int(mc.group(1)) >= 1 and len(parts) == 2 and all(
-        eval_dims(parts[0], n) == eval_dims(parts[1], n) for n in range(int(mc.group(1)), 4))
-    mi = re.fullmatch(r"\s*\$(.*)\$\s*", verbatim("sec4_5-dim-initial"))
-    ini = chain(mi.group(1)) if mi else []
+    rec = lm.parse_relation(verbatim("sec4_5-dim-recurrence"))
+    cond = rec.conditions[0] if len(rec.conditions) == 1 else None
+    rec_n0 = int(cond.parts[1]) if cond is not None and cond.ops == [">="] and cond.parts[0] == sp.Symbol("n") and \
+        cond.parts[1].is_Integer and not cond.conditions else None
+    parts = [section_names(x) for x in rec.parts]
+    out["recurrence"] = rec_n0 is not None and rec_n0 >= 1 and rec.ops == ["="] and len(parts) == 2 and all(
+        eval_dims(parts[0], n) == eval_dims(parts[1], n) for n in range(rec_n0, 4))
+    d = lm.sentence("{initial}", verbatim("sec4_5-dim-initial"))
+    ini = chain(d["initial"]) if d else []
     out["initial"] = len(ini) == 2 and eval_dims(ini[0], 0) == eval_dims(ini[1], 0) and ini[0].has(
         sp.Function("dim_V"))
     for key, lid, ns in (("sum", "sec4_5-dim-sum", range(1, 4)), ("closed", "sec4_5-dim-closed", range(1, 13))):
@@ -1177,19 +1193,33 @@ def check_dimension() -> LineResult:
     return items_result(_dimension_items, how, "exact-evidence", (ValueError, TypeError, AttributeError))
 
 
-_SPAN = re.compile(r"\\operatorname\{span\}%?\s*([TV])_\{([^{}]+)\}\^\{\\alpha\}|\\mathcal\{([TV])\}%?\s*_\{([^{}]+)\}"
-                   r"\^\{\\alpha\}")
+def _space(x, n: int) -> tuple[str, int]:
+    r"""``("T", 2n)`` / ``("V", n)`` of a parsed space at order n: ``Tcal(2n)`` (:math:`\mathcal{T}_{2n}`),
+    ``span(T(2n))``, ``span(V(n))``, ``Vcal(n)``; :class:`LatexMathError` for anything else."""
+    import sympy as sp
+
+    head = getattr(x, "func", None)
+    if head == sp.Function("span") and len(x.args) == 1:
+        x, head = x.args[0], getattr(x.args[0], "func", None)
+        kind = {sp.Function("T"): "T", sp.Function("V"): "V"}.get(head)
+    else:
+        kind = {sp.Function("Tcal"): "T", sp.Function("Vcal"): "V"}.get(head)
+    if kind is None or len(x.args) != 1:
+        raise LatexMathError(f"{x} is not a space T_{{..}}, V_{{..}} or their span")
+    idx = x.args[0].subs(sp.Symbol("n"), n)
+    if not idx.is_Integer:
+        raise LatexMathError(f"the index of {x} is not an integer at n = {n}")
+    return kind, int(idx)
 
 
 def read_spans(tex: str, n: int) -> list[tuple[str, int]]:
     """The spaces ``\\mathcal{T}_{2n}``, ``\\operatorname{span}T_{2n}``, ``\\operatorname{span}V_{n}``,
-    ``\\mathcal{V}_{n}`` of a printed chain, in order, their indices at order n."""
-
-    out = []
-    for m in _SPAN.finditer(tex.replace("%", " ").replace("% ", " ")):
-        kind, idx = (m.group(1), m.group(2)) if m.group(1) else (m.group(3), m.group(4))
-        out.append((kind, int(parse(idx).subs("n", n))))
-    return out
+    ``\\mathcal{V}_{n}`` of a printed chain of '=' (read by :func:`~paper_repro.printed.latex_math.parse_relation`),
+    in order, their indices at order n."""
+    rel = lm.parse_relation(tex)
+    if set(rel.ops) != {"="} or rel.conditions:
+        raise LatexMathError("not a chain of '='")
+    return [_space(x, n) for x in rel.parts]
 
 
 def _coincidence_items() -> dict[str, bool]:
@@ -1198,41 +1228,45 @@ def _coincidence_items() -> dict[str, bool]:
     out: dict[str, bool] = {}
     for lid in ("sec4_5-theorem", "sec4_5-conclusion"):
         tex = verbatim(lid)
-        body = tex.split("$")[1] if "$" in tex else tex
-        links = re.sub(r"\\(?:operatorname\{span\}|mathcal\{[TV]\})%?\s*(?:_\{[^{}]+\})?\s*(?:[TV]_\{[^{}]+\})?"
-                       r"\^\{\\alpha\}|\\text\{\.\}|%|\s", "", body)
-        ok = set(links) <= {"="} and len(links) == 3
+        if lid == "sec4_5-conclusion":
+            d = lm.sentence("therefore {chain}", tex)
+            if not d:
+                raise LatexMathError(f"{lid}: not 'therefore $..$'")
+            tex = d["chain"]
+        ok = len(lm.parse_relation(tex).ops) == 3
         for n in (1, 2):
             sp_ = read_spans(tex, n)
             ok &= len(sp_) == 4 and span_rank(tuple(sp_)) == span_rank((sp_[0],)) == span_rank((sp_[-1],))
             ok &= all(span_rank((x,)) == span_rank(tuple(sp_)) for x in sp_)
         out[lid] = ok
-    tex = verbatim("sec4_5-theorem-statement")
-    m = re.fullmatch(r"The system \$T_\{([^{}]+)\}\^\{\\alpha\}\$ of constrained trivariate functions forms a basis "
-                     r"of the vector space \$\\mathcal\{V\}_\{([^{}]+)\}\^\{\\alpha\}\$", tex)
-    ok = bool(m)
-    if m:
+    d = lm.sentence("The system {system} of constrained trivariate functions forms a basis of the vector space {space}",
+                    verbatim("sec4_5-theorem-statement"))
+    ok = bool(d)
+    if d:
+        system, space = parse(d["system"]), parse(d["space"])
+        ok = getattr(system, "func", None) == sp.Function("T") and getattr(space, "func", None) == sp.Function("Vcal")
         for n in (1, 2):
-            t_, v_ = ("T", int(sp.sympify(m.group(1).replace("2n", "2*n")).subs("n", n))), \
-                ("V", int(sp.sympify(m.group(2)).subs("n", n)))
+            t_, v_ = _space(sp.Function("span")(system), n), _space(space, n)
             ok &= span_rank((t_,)) == span_rank((t_, v_)) == span_rank((v_,)) == len(united_system(t_[1] // 2))
     out["basis"] = ok
     # 1 + delta_n = dim span{sigma, span T_2n} <= dim span V_n = delta_n
-    tex = verbatim("sec4_5-contradiction").replace("%", " ")
-    m = re.fullmatch(r"\s*\\\[\s*(.*?)=\\dim\s*\\operatorname\{span\}\s*\\left\\\{\s*\\sigma,\s*"
-                     r"\\operatorname\{span\}\s*"
-                     r"T_\{([^{}]+)\}\^\{\\alpha\}\\right\\\}\s*\\leq\\dim\s*\\operatorname\{span\}\s*V_\{([^{}]+)\}"
-                     r"\^\{\\alpha\}=(.*?),\s*\\\]\s*", tex)
-    ok = bool(m)
-    if m:
-        left, right = chain(m.group(1)), chain(m.group(4))
+    rel = lm.parse_relation(verbatim("sec4_5-contradiction"))
+    dim, span_ = sp.Function("dim"), sp.Function("span")
+    ok = rel.ops == ["=", "<=", "="] and not rel.conditions
+    if ok:
+        left, with_sigma, dim_v, right = (section_names(x) for x in rel.parts)
+        inner = with_sigma.args[0] if with_sigma.func == dim and len(with_sigma.args) == 1 else None
+        fam = inner.args[0] if getattr(inner, "func", None) == span_ and len(inner.args) == 1 else None
+        ok = getattr(fam, "func", None) == lm.Family and fam.args[1:] == (sp.Tuple(), sp.Tuple()) and \
+            len(fam.args[0]) == 2 and fam.args[0][0] == sp.Symbol("sigma") and dim_v.func == dim
+    if ok:
         for n in (1, 2, 3):
-            t_ = ("T", int(sp.sympify(m.group(2).replace("2n", "2*n")).subs("n", n)))
-            v_ = ("V", int(sp.sympify(m.group(3)).subs("n", n)))
+            t_, v_ = _space(fam.args[0][1], n), _space(dim_v.args[0], n)
             # sigma outside span T: the dimension grows by one; sigma and T in span V: at most dim V
-            ok &= len(left) == len(right) == 1 and eval_dims(left[0], n) == span_rank((t_,)) + 1
-            ok &= span_rank((t_, v_)) == span_rank((v_,)) == eval_dims(right[0], n)
-            ok &= eval_dims(left[0], n) > eval_dims(right[0], n)  # the contradiction
+            ok &= t_[0] == "T" and v_[0] == "V" and dim_v.args[0].func == span_
+            ok &= eval_dims(left, n) == span_rank((t_,)) + 1
+            ok &= span_rank((t_, v_)) == span_rank((v_,)) == eval_dims(right, n)
+            ok &= eval_dims(left, n) > eval_dims(right, n)  # the contradiction
     out["contradiction"] = ok
     parts = chain(verbatim("sec4_5-dim-T"))
     out["delta_is_dim_T"] = len(parts) == 2 and all(
@@ -1269,32 +1303,34 @@ def half_angle_exponents(expr) -> tuple[int, ...]:
 
 
 def read_proof_r() -> tuple:
-    """The ranges j = a..b, i = c..d (read from both lines that print them: they must agree), the printed indices of
-    R_{2n,2n-i,j} and its printed product of half-angle powers."""
-    from paper_repro.printed.parsed import listed_range
+    """The ranges j = a..b, i = c..d (read from both lines that print them: they must agree), the second listed item
+    of each range, the printed indices of R_{2n,2n-i,j} and its printed product of half-angle powers.  The words by
+    :func:`~paper_repro.printed.latex_math.sentence`, the ranges by :func:`paper_repro.printed.parsed.listed`, the
+    function by :func:`~paper_repro.printed.latex_math.parse_relation` (the line ends inside its ``$..$``)."""
+    import sympy as sp
 
-    rng = set()
-    for lid in ("sec4_5-proof-symmetry-reduction", "sec4_5-proof-R"):
-        tex = verbatim(lid)
-        m = re.search(r"(?:for all |^)indices \$j=(.*?)\$ and \$i=(.*?)\$", tex)
-        if lid == "sec4_5-proof-symmetry-reduction" and "it is sufficient to show that for all indices" not in tex:
-            raise LatexMathError(f"{lid}: not 'sufficient to show that for all indices'")
-        if not m:
+    from paper_repro.printed.parsed import listed, listed_range
+
+    templates = {"sec4_5-proof-symmetry-reduction": "... it is sufficient to show that for all indices {j} and {i}",
+                 "sec4_5-proof-R": "indices {j} and {i} the function ${function:words}"}
+    rng, found = set(), {}
+    for lid, template in templates.items():
+        found[lid] = d = lm.sentence(template, verbatim(lid))
+        if not d:
             raise LatexMathError(f"{lid}: no ranges of j and i")
-        rng.add((listed_range("j=" + m.group(1), "j")[1:], listed_range("i=" + m.group(2), "i")[1:],
-                 re.sub(r"\s", "", m.group(1)), re.sub(r"\s", "", m.group(2))))
+        items = {x: tuple(listed(d[x], x)) for x in ("j", "i")}
+        rng.add((listed_range(d["j"], "j")[1:], listed_range(d["i"], "i")[1:], items["j"], items["i"]))
     if len(rng) != 1:
         raise LatexMathError("the two lines print different ranges")
-    (jr, ir, jtxt, itxt) = rng.pop()
-    tex = verbatim("sec4_5-proof-R").replace("%", " ")
-    m = re.search(r"the function \$R_\{2n,([^{}]+),([^{}]+)\}\s*\^\{\\alpha\}\\left\(\s*u,v,w\\right\)\s*=(.*)$", tex)
-    if not m:
+    (jr, ir, jitems, iitems) = rng.pop()
+    rel = lm.parse_relation(found["sec4_5-proof-R"]["function"])
+    head = rel.parts[0]
+    n, u, v, w = sp.symbols("n u v w")
+    if rel.ops != ["="] or rel.conditions or getattr(head, "func", None) != sp.Function("R") or len(head.args) != 4 \
+            or head.args[0] != 2 * n or head.args[3] != sp.Tuple(u, v, w):
         raise LatexMathError("no R_{2n,..}(u,v,w) = ..")
-    parts = chain(m.group(3))
-    if len(parts) != 1:
-        raise LatexMathError("the formula is not one product")
-    second = {"j": re.match(r"j=[^,]+,([^,]+),", jtxt), "i": re.match(r"i=[^,]+,([^,]+),", itxt)}
-    return jr, ir, second, parse(m.group(1)), parse(m.group(2)), parts[0]
+    second = {"j": jitems[1], "i": iitems[1]}
+    return jr, ir, second, head.args[1], head.args[2], rel.parts[1]
 
 
 def _proof_reduction() -> dict[str, bool]:
@@ -1313,10 +1349,9 @@ def _proof_reduction() -> dict[str, bool]:
         for j in range(j_lo, j_hi + 1):
             for i in range(bound(ir[0], n=n, j=j), bound(ir[1], n=n, j=j) + 1):
                 pairs.append((i, j))
-        for var, m in second.items():  # the second listed element is the first plus one
-            if m:
-                lo = bound((jr if var == "j" else ir)[0], n=n, j=j_lo)
-                ok_steps &= parse(m.group(1)).subs({ns: n, is_: lo, js: lo}) == lo + 1
+        for var, item in second.items():  # the second listed element is the first plus one
+            lo = bound((jr if var == "j" else ir)[0], n=n, j=j_lo)
+            ok_steps &= item.subs({ns: n, is_: lo, js: lo}) == lo + 1
         for i, j in pairs:
             a_, b_ = idx(n, i, j)
             if Q(a_).denominator != 1 or Q(b_).denominator != 1:
@@ -1338,8 +1373,13 @@ def _proof_reduction() -> dict[str, bool]:
         ok_cover &= all(any(tuple(((e[0], e[1]), (e[2], e[3]), (e[4], e[5]))[p[k]] for k in range(3)) in {
             ((x[0], x[1]), (x[2], x[3]), (x[4], x[5])) for x in (r_exponents(n, i, j) for i, j in pairs)}
             for p in perms) for e in (exponents(lab) for lab in united_system(n)))
-    words = "symmetry properties" in verbatim("sec4_5-proof-symmetry-reduction") and "\\ref{R_system}" in verbatim(
-        "sec4_5-proof-symmetry-reduction")
+    d = lm.sentence(r"First of all, we prove that functions of the system (\ref{{system:word}}) are elements of "
+                    r"{space}. Due to symmetry properties of functions (\ref{{r:word}}), (\ref{{g:word}}) and "
+                    r"(\ref{{b:word}}), it is sufficient to show that for all indices {j} and {i}",
+                    verbatim("sec4_5-proof-symmetry-reduction"))
+    words = bool(d) and [d[k] for k in ("system", "r", "g", "b")] == [
+        "united_system", "R_system", "G_system", "B_system"] and parse(d["space"]) == sp.Function("span")(
+        sp.Function("V")(ns))
     return {"formula_is_R": ok_formula, "every_member_a_permutation_of_one": ok_cover, "listed_steps": ok_steps,
             "by_symmetry": words}
 
@@ -1358,21 +1398,47 @@ POWER_LINES = {"cos": ("sec4_5-cos-power-odd", "sec4_5-cos-power-even"),
                "sin": ("sec4_5-sin-power-odd", "sec4_5-sin-power-even")}
 
 
-def read_power_reduction(which: str) -> tuple:
-    """The printed left side and the two cases ``(right side, parity)`` of the power reduction of ``which``."""
+def _parities(cond, names: tuple[str, ...]) -> tuple[int, ...]:
+    r"""The residues mod 2 of ``names`` for which a parsed condition holds, found by evaluating it at 0..3 for each
+    name: ``Eq(Mod(m + 1, 2), 0)`` gives ``(1,)``, ``Eq(Mod(i, 2), 0) & Eq(Mod(j, 2), 0)`` gives ``(0, 0)``; a clause
+    ``m\equiv r (mod q)`` (a :class:`Relation` ``m equiv (r, q)``) is first made ``Eq(Mod(m - r, q), 0)``.
+    :class:`LatexMathError` if the condition is not one parity class."""
+    import sympy as sp
 
-    odd, even = (verbatim(x).replace("%", " ") for x in POWER_LINES[which])
-    m = re.fullmatch(r"\s*(.*?)&\s*=\\left\\\{\s*\\begin\{array\}\s*\[c\]\{rl\}\s*(.*)$", odd)
-    if not m:
-        raise LatexMathError(f"{which}: no left side")
-    lhs = parse(m.group(1))
-    cases = []
-    for body in (m.group(2), even):
-        mc = re.fullmatch(r"\s*(.*?),\s*&\s*m\\equiv(\d)\\left\(\s*\\operatorname\{mod\}\s*2\\right\)\s*,(?:\\\\)?\s*",
-                          body)
-        if not mc:
-            raise LatexMathError(f"{which}: unread case {body[-40:]!r}")
-        cases.append((parse(mc.group(1)), int(mc.group(2))))
+    if isinstance(cond, lm.Relation):
+        if cond.ops != ["equiv"] or cond.conditions or not isinstance(cond.parts[1], sp.Tuple) or \
+                len(cond.parts[1]) != 2:
+            raise LatexMathError(f"{cond.parts} is not a congruence")
+        cond = sp.Eq(sp.Mod(cond.parts[0] - cond.parts[1][0], cond.parts[1][1]), 0)
+    syms = [sp.Symbol(x) for x in names]
+    if not cond.free_symbols <= set(syms):
+        raise LatexMathError(f"the condition {cond} names more than {names}")
+    truth = {k: bool(cond.subs(dict(zip(syms, k)))) for k in product(range(4), repeat=len(syms))}
+    held = {tuple(x % 2 for x in k) for k, v in truth.items() if v}
+    if len(held) != 1 or any(truth[k] != (tuple(x % 2 for x in k) in held) for k in truth):
+        raise LatexMathError(f"the condition {cond} is not one parity class of {names}")
+    return held.pop()
+
+
+def read_power_reduction(which: str) -> tuple:
+    """The printed left side and the two cases ``(right side, parity)`` of the power reduction of ``which``: the odd
+    line ``lhs & =\\left\\{ \\begin{array}.. value, & condition,\\\\`` by
+    :func:`~paper_repro.printed.latex_math.parse_relation` (``lhs = Cases((value, condition))``), the even line
+    (the array's next row) likewise (``value`` with the clause ``m equiv (0, 2)``)."""
+    import sympy as sp
+
+    odd, even = (lm.parse_relation(verbatim(x)) for x in POWER_LINES[which])
+    if odd.ops != ["="] or len(odd.parts) != 2 or getattr(odd.parts[1], "func", None) != lm.Cases or \
+            len(odd.parts[1].args) != 1 or odd.conditions:
+        raise LatexMathError(f"{which}: not 'lhs = {{ value, condition' (one row)")
+    if even.ops or len(even.parts) != 1 or len(even.conditions) != 1:
+        raise LatexMathError(f"{which}: the second row is not 'value, condition'")
+    (value, cond), = odd.parts[1].args
+    lhs = section_names(odd.parts[0])
+    cases = [(section_names(value), _parities(cond, ("m",))[0]),
+             (section_names(even.parts[0]), _parities(even.conditions[0], ("m",))[0])]
+    if not all(isinstance(c[0], sp.Expr) for c in cases):
+        raise LatexMathError(f"{which}: a case is not an expression")
     return lhs, cases
 
 
@@ -1400,10 +1466,8 @@ def check_power_reduction() -> LineResult:
            "the transcriptions) expanded exactly in t at every m = 0..16 of the case's parity; m in N, t in R read")
     try:
         out = {**power_reduction_holds("cos"), **power_reduction_holds("sin")}
-        rng = verbatim("sec4_5-power-ranges").replace("%", " ")
-        out["ranges_m_in_N_t_in_R"] = re.fullmatch(r"\s*\(\$m\\in\s*\\mathbb\{N\}\s*\$,\s*"
-                                                   r"\$t\\in\s*\\mathbb\{R\}\s*\$\)"
-                                                   r"\s*", rng) is not None
+        out["ranges_m_in_N_t_in_R"] = lm.sentence(r"($m\in\mathbb{N}$, $t\in\mathbb{R}$)",
+                                                  verbatim("sec4_5-power-ranges")) is not None
     except (LatexMathError, TypeError, ValueError) as exc:
         return LineResult(False, how=how, kind="exhaustive", detail={"unread": str(exc)})
     return LineResult(all(out.values()), how=how, kind="exhaustive", detail=out)
@@ -1441,20 +1505,25 @@ def listed_values(items: list, env: dict) -> list[int]:
 
 def read_k_sets(line_id: str) -> tuple[str, list]:
     """``(case, [four listed sets])`` of a printed ``K_{a,b} & =\\left\\{ 0,1,\\ldots,\\frac{..}{..}\\right\\}
-    \\times ..``: each set as its parsed items."""
+    \\times ..``: each set as its parsed items (``None`` for ``\\ldots``).  Read by
+    :func:`~paper_repro.printed.latex_math.parse_relation`: ``K(a, b) = Cartesian(Family(Tuple(0, 1, ldots, x)),
+    ..)``, the factors in the printed order."""
+    import sympy as sp
 
-    tex = verbatim(line_id).replace("%", " ")
-    m = re.fullmatch(r"\s*K_\{(\d),(\d)\}\s*&\s*=(.*?)[,.]?(?:\\\\)?\s*", tex)
-    if not m:
+    rel = lm.parse_relation(verbatim(line_id))
+    head = rel.parts[0]
+    if rel.ops != ["="] or rel.conditions or getattr(head, "func", None) != sp.Function("K") or len(head.args) != 2 \
+            or not all(x.is_Integer for x in head.args):
         raise LatexMathError(f"{line_id}: not K_{{a,b}} = ..")
-    factors = [x.strip() for x in m.group(3).split("\\times")]
+    prod_ = rel.parts[1]
+    factors = prod_.args if getattr(prod_, "func", None) == lm.Cartesian else (prod_,)
     sets = []
     for f in factors:
-        mf = re.fullmatch(r"\\left\\\{(.*)\\right\\\}", f)
-        if not mf:
-            raise LatexMathError(f"{line_id}: unread factor {f[:30]!r}")
-        sets.append([None if x.strip() == "\\ldots" else parse(x) for x in mf.group(1).split(",")])
-    return f"{m.group(1)},{m.group(2)}", sets
+        if getattr(f, "func", None) != lm.Family or f.args[1:] != (sp.Tuple(), sp.Tuple()):
+            raise LatexMathError(f"{line_id}: the factor {f} is not a listed set")
+        items = f.args[0] if isinstance(f.args[0], sp.Tuple) else (f.args[0],)
+        sets.append([None if x == lm.LDOTS else section_names(x) for x in items])
+    return f"{head.args[0]},{head.args[1]}", sets
 
 
 def true_k_ranges(n: int, i: int, j: int) -> list[list[int]]:
@@ -1519,19 +1588,22 @@ _KSYMS = "n i j k1 k2 k3 k4"
 
 
 def read_product_types() -> dict[tuple[int, int], object]:
-    """``{(i mod 2, j mod 2): product}`` of the printed cases of possible_products_inclusion (each read)."""
+    """``{(i mod 2, j mod 2): product}`` of the printed cases of possible_products_inclusion: each row
+    ``product, & i\\equiv a\\left(\\operatorname{mod}2\\right) \\text{ and }j\\equiv b..`` read by
+    :func:`~paper_repro.printed.latex_math.parse_relation` (the product and its one clause, a sympy boolean), the
+    parities by :func:`_parities`."""
+    import sympy as sp
 
     out = {}
     for lid in PRODUCT_LINES:
-        body, _, cond = verbatim(lid).replace("%", " ").partition("&")
-        m = re.fullmatch(r"\s*i\\equiv(\d)\\left\(\s*\\operatorname\{mod\}2\\right\)\s*\\text\{ and \}j\\equiv(\d)"
-                         r"\\left\(\s*\\operatorname\{mod\}2\\right\)\s*,?(?:\\\\)?\s*", cond)
-        if not m:
+        rel = lm.parse_relation(verbatim(lid))
+        if rel.ops or len(rel.parts) != 1 or len(rel.conditions) != 1 or rel.conditions[0].ops or \
+                len(rel.conditions[0].parts) != 1 or not isinstance(rel.conditions[0].parts[0], sp.And):
             raise LatexMathError(f"{lid}: unread condition")
-        key = (int(m.group(1)), int(m.group(2)))
-        if key in out or max(key) > 1:
-            raise LatexMathError(f"{lid}: case {key} printed twice or not a parity")
-        out[key] = parse(body.strip().rstrip(","))
+        key = _parities(rel.conditions[0].parts[0], ("i", "j"))
+        if key in out:
+            raise LatexMathError(f"{lid}: case {key} printed twice")
+        out[key] = section_names(rel.parts[0])
     return out
 
 
@@ -1579,14 +1651,12 @@ def check_product_types() -> LineResult:
         types = read_product_types()
         out = {f"{a},{b}": r_in_span_of(p, 3, (a, b)) for (a, b), p in types.items()}
         out["four_parities"] = sorted(types) == [(0, 0), (0, 1), (1, 0), (1, 1)]
-        tex = verbatim("sec4_5-parity")
-        m = re.fullmatch(r"and by the parity of powers \$(.*?)\$, \$(.*?)\$, \$(.*?)\$ and \$(.*?)"
-                         r"\$, one can easily see "
-                         r"that function \$R_\{2n,2n-i,j\}\^\{\\alpha\}\\left\( u,v,w\\right\) \$ can be written as "
-                         r"the sum of products of the type%", tex)
-        if not m:
+        d = lm.sentence(r"and by the parity of powers {p1}, {p2}, {p3} and {p4}, one can easily see that function "
+                        r"$R_{2n,2n-i,j}^{\alpha}\left( u,v,w\right)$ can be written as the sum of products of the "
+                        r"type%", verbatim("sec4_5-parity"))
+        if not d:
             raise LatexMathError("unread parity line")
-        powers = [parse(x) for x in m.groups()]
+        powers = [parse(d[f"p{k}"]) for k in (1, 2, 3, 4)]
         ns, is_, js = sp.symbols("n i j")
         out["powers_of_R"] = all(
             sorted(int(p.subs({ns: n, is_: i, js: j})) for p in powers) == sorted(
@@ -1630,26 +1700,50 @@ def _abcd(n, i, j, k):
     return Q(e[0] - 2 * k[0], 2), Q(e[4] - 2 * k[1], 2), Q(e[3] - 2 * k[2], 2), Q(e[2] - 2 * k[3], 2)
 
 
-def read_signs() -> dict:
-    """The sign values of ``where $s_{1}=1$ and $s_{2},s_{3},s_{4}\\in\\left\\{ -1,+1\\right\\} $, i.e., $s_{r}^{2}=1$,
-    $r=1,2,3,4$`` (each read; s_r^2 = 1 checked for the listed r)."""
+def _sign_index(x) -> int:
+    """k of a parsed sign ``s(k)`` (``s_{k}``), :class:`LatexMathError` for anything else."""
     import sympy as sp
 
-    tex = verbatim("sec4_5-signs")
-    m = re.fullmatch(r"where \$s_\{(\d)\}=([-+]?\d+)\$ and \$((?:s_\{\d\},?)+)\\in\\left\\\{(.*?)\\right\\\} "
-                     r"\$, i\.e\., "
-                     r"\$s_\{r\}\^\{2\}=(\d+)\$, \$(r=.*)\$", tex)
-    if not m:
+    if getattr(x, "func", None) != sp.Function("s") or len(x.args) != 1 or not x.args[0].is_Integer:
+        raise LatexMathError(f"{x} is not a sign s_{{k}}")
+    return int(x.args[0])
+
+
+def read_signs() -> dict:
+    """The sign values of ``where $s_{1}=1$ and $s_{2},s_{3},s_{4}\\in\\left\\{ -1,+1\\right\\} $, i.e., $s_{r}^{2}=1$,
+    $r=1,2,3,4$`` (each read; s_r^p = c checked for the listed r, the power p and value c read).  The words by
+    :func:`~paper_repro.printed.latex_math.sentence`, each segment by
+    :func:`~paper_repro.printed.latex_math.parse_relation`: ``s(1) = 1``, ``(s(2), s(3), s(4)) in Family((-1, 1))``,
+    ``s_sup(r, 2) = 1``, ``r in (1, 2, 3, 4)``."""
+    import sympy as sp
+
+    d = lm.sentence("where {fixed} and {free}, i.e., {square}, {listed}", verbatim("sec4_5-signs"))
+    if not d:
         raise LatexMathError("unread signs")
-    vals = {f"s{m.group(1)}": [int(m.group(2))]}
-    options = [int(parse(x)) for x in m.group(4).split(",")]
-    for x in re.findall(r"s_\{(\d)\}", m.group(3)):
-        vals[f"s{x}"] = options
-    if not m.group(6).startswith("r=") or "\\ldots" in m.group(6):
+    fixed, free, square, listed = (lm.parse_relation(d[k]) for k in ("fixed", "free", "square", "listed"))
+    if any(x.conditions for x in (fixed, free, square, listed)) or fixed.ops != ["="] or free.ops != ["in"] or \
+            square.ops != ["="] or listed.ops != ["in"]:
+        raise LatexMathError("unread signs: not 's_a = c', 's_b,.. in {..}', 's_r^p = c', 'r = ..'")
+    if not fixed.parts[1].is_Integer:
+        raise LatexMathError("the fixed sign is not a number")
+    vals = {f"s{_sign_index(fixed.parts[0])}": [int(fixed.parts[1])]}
+    names, options = free.parts
+    if getattr(options, "func", None) != lm.Family or options.args[1:] != (sp.Tuple(), sp.Tuple()):
+        raise LatexMathError("the signs' values are not a listed set")
+    opts = options.args[0] if isinstance(options.args[0], sp.Tuple) else (options.args[0],)
+    if not all(x.is_Integer for x in opts):
+        raise LatexMathError("a sign's value is not a number")
+    for x in (names if isinstance(names, sp.Tuple) else (names,)):
+        vals[f"s{_sign_index(x)}"] = [int(o) for o in opts]
+    power, value = square.parts
+    var, rs = listed.parts
+    if getattr(power, "func", None) != sp.Function("s_sup") or len(power.args) != 2 or power.args[0] != var or \
+            not isinstance(var, sp.Symbol) or not power.args[1].is_Integer or not value.is_Integer:
+        raise LatexMathError("not s_{r}^{p} = c over the listed r")
+    if not isinstance(rs, sp.Tuple) or lm.LDOTS in rs or not all(x.is_Integer for x in rs):
         raise LatexMathError("the indices r are not listed")
-    rs = [int(parse(x)) for x in m.group(6)[2:].split(",")]
-    if sorted(vals) != [f"s{r}" for r in rs] or not all(
-            sp.Integer(x) ** 2 == int(m.group(5)) for r in rs for x in vals[f"s{r}"]):
+    if sorted(vals) != sorted(f"s{r}" for r in rs) or not all(
+            sp.Integer(x) ** power.args[1] == value for r in rs for x in vals[f"s{r}"]):
         raise LatexMathError("s_r^2 = 1 fails for the listed r, or the listed r are not the signs")
     return vals
 
@@ -1677,12 +1771,11 @@ def check_eight_terms() -> LineResult:
            "in K_{1,1}, n <= 3, the 2^(factors-1) formal terms of the product are, up to sign, exactly the form at "
            "the printed signs (a sine for a sine series); the product spans R_{2n,2n-i,j} (n <= 3)")
     try:
-        tex = verbatim("sec4_5-eight-terms").replace("%", " ")
-        m = re.fullmatch(r"each of the (\w+) terms of the expansion of the product\s*\\\[(.*?)\\\]\s*has the form\s*"
-                         r"\\\[(.*?),?\s*\\\]\s*", tex)
-        if not m or m.group(1) not in NUMBER_WORDS:
+        d = lm.sentence(r"each of the {count:count} terms of the expansion of the product% \[ {product:words} \] has "
+                        r"the form% \[ {form:words} \]", verbatim("sec4_5-eight-terms"))
+        if not d or d["count"] is None:
             raise LatexMathError("unread line")
-        count, prod_e, form = NUMBER_WORDS[m.group(1)], parse(m.group(2)), parse(m.group(3).strip().rstrip(","))
+        count, prod_e, form = d["count"], parse(d["product"]), parse(d["form"])
         signs = read_signs()
         factors = sp.Mul.make_args(prod_e)
         if not all(isinstance(f, (sp.sin, sp.cos)) for f in factors) or not isinstance(form, (sp.sin, sp.cos)):
@@ -1757,20 +1850,17 @@ def read_class_entries():
     (each marked as a natural number) and the arguments of the printed ``z=\\min\\left\\{ ..\\right\\}``."""
     import sympy as sp
 
-    tex = verbatim("sec4_5-class-N").replace("%", " ")
-    m = re.fullmatch(r"\s*\\left\[(.*)\\right\]\s*,?\s*", tex)
-    if not m:
+    tex = verbatim("sec4_5-class-N")
+    cls = lm.parse(tex)
+    if getattr(cls, "func", None) != sp.Function("cls") or len(cls.args) != 1 or not isinstance(cls.args[0], sp.Tuple):
         raise LatexMathError("no class [..]")
-    body, items, depth, last = m.group(1), [], 0, 0
-    for k, ch in enumerate(body):
-        depth += {"{": 1, "}": -1}.get(ch, 0)
-        if ch == "," and depth == 0:
-            items.append(body[last:k])
-            last = k + 1
-    items.append(body[last:])
-    if not all(re.match(r"\s*\\underset\{\\in\s*\\mathbb\{N\}\s*\}", x) for x in items):
+    entries = list(cls.args[0])
+    marks = lm.underset_marks(tex)  # \underset{\in\mathbb{N}}{\underbrace{X}}: the mark parse drops
+    if len(marks) != len(entries) or not all(
+            m.lead == "in" and m.parts == [sp.Symbol("N_bb")] and not m.ops and not m.conditions and x == e
+            for (m, x), e in zip(marks, entries)):
         raise LatexMathError("an entry is not marked natural")
-    entries = [parse(x) for x in items]
+    entries = [section_names(e) for e in entries]
     zparts = chain(verbatim("sec4_5-z-min"))
     if len(zparts) != 2 or zparts[0] != sp.Symbol("z") or not isinstance(zparts[1], sp.Min):
         raise LatexMathError("z-min is not z = min{..}")
@@ -1795,24 +1885,28 @@ def check_integer_class() -> LineResult:
            "coefficients of X - (u+v+w)/2 (A, B, C, D from the powers of R, the signs read), every (i, j) of the "
            "printed parity, n <= 4")
     try:
-        tex = verbatim("sec4_5-integer")
-        m = re.fullmatch(r"where for all \$(\d+)\$-tuples \$\\left\( ((?:k_\{\d\},?)+)\\right\) \\in K_\{(\d),(\d)\}\$ "
-                         r"the coefficients of variables \$u\$, \$v\$ and \$w\$ are integer numbers and both of the "
-                         r"sine and cosine functions belong to the equivalence class%", tex)
-        if not m:
+        d = lm.sentence(r"where for all {length}-tuples {tuple} the coefficients of variables $u$, $v$ and $w$ are "
+                        r"integer numbers and both of the sine and cosine functions belong to the equivalence class%",
+                        verbatim("sec4_5-integer"))
+        if not d:
             raise LatexMathError("unread integer line")
-        ks = re.findall(r"k_\{(\d)\}", m.group(2))
-        parity = (int(m.group(3)), int(m.group(4)))
+        length, member = parse(d["length"]), lm.parse_relation(d["tuple"])
+        ks, kset = member.parts if member.ops == ["in"] and not member.conditions else (None, None)
+        if not isinstance(ks, sp.Tuple) or getattr(kset, "func", None) != sp.Function("K") or len(kset.args) != 2 \
+                or not all(x.is_Integer for x in kset.args) or not length.is_Integer:
+            raise LatexMathError("unread integer line: not 'n-tuples (k_1, ..) in K_{a,b}'")
+        ks = [k.args[0] if getattr(k, "func", None) == sp.Function("k") and len(k.args) == 1 else None for k in ks]
+        parity = (int(kset.args[0]), int(kset.args[1]))
         if max(parity) > 1:
             raise LatexMathError(f"K_{parity} is not a parity case")
-        other = re.fullmatch(r"The remaining (\w+) cases of \$z\$ can be treated analogously\.",
-                             verbatim("sec4_5-other-z-cases"))
-        if not other or other.group(1) not in NUMBER_WORDS:
+        other = lm.sentence("The remaining {count:count} cases of $z$ can be treated analogously.",
+                            verbatim("sec4_5-other-z-cases"))
+        if not other or other["count"] is None:
             raise LatexMathError("unread remaining cases")
         entries, zmin = read_class_entries()
         signs = read_signs()
-        ok = {"tuple": int(m.group(1)) == len(ks) == 4 and ks == ["1", "2", "3", "4"],
-              "remaining": NUMBER_WORDS[other.group(1)] == len(zmin.args) - 1}
+        ok = {"tuple": int(length) == len(ks) == 4 and ks == [1, 2, 3, 4],
+              "remaining": other["count"] == len(zmin.args) - 1}
         ok_int = ok_min = ok_nat = True
         params = (*sp.symbols(_KSYMS), *sp.symbols("s1 s2 s3 s4"))
         fz = [sp.lambdify(params, a) for a in zmin.args]
@@ -1839,30 +1933,66 @@ def check_integer_class() -> LineResult:
     return LineResult(all(ok.values()), how=how, kind="exhaustive", detail=ok)
 
 
-_MAX = re.compile(r"\s*&?\s*\\max\\left\\\{(.*?):\\left\(\s*k_\{1\},k_\{2\},k_\{3\},k_\{4\}\\right\)\s*"
-                  r"\\in K_\{(\d),(\d)\},~"
-                  r"(.*?)\\right\\\}\s*\\\\\s*(?:=\s*&|&\s*=)(.*)$")
+def _quantified(conds) -> tuple[tuple, dict[str, list[int]]]:
+    """``(the tuple a membership names, {sign: values})`` of the parsed conditions of a printed set
+    ``\\left\\{ X : \\left(k_{1},..\\right)\\in K_{a,b},~s_{1}=1,s_{2},s_{3}\\in\\left\\{ -1,+1\\right\\} \\right\\}``:
+    the reader gives them split at the commas, ``In(Tuple(k(1), ..), K(a, b)), Eq(s(1), 1), s(2), In(s(3), Family((-1,
+    1)))``; a bare sign before a membership is listed with it (``s_{2},s_{3}\\in``).  :class:`LatexMathError` for any
+    other condition."""
+    import sympy as sp
+
+    In = sp.Function("In")
+    quant: dict[str, list[int]] = {}
+    pending: list = []
+    member = None
+    for c in conds:
+        if isinstance(c, sp.Eq) and c.rhs.is_Integer:
+            quant[f"s{_sign_index(c.lhs)}"] = [int(c.rhs)]
+        elif getattr(c, "func", None) == sp.Function("s"):
+            pending.append(c)
+        elif getattr(c, "func", None) == In and isinstance(c.args[0], sp.Tuple) and member is None and not pending:
+            member = c
+        elif getattr(c, "func", None) == In and getattr(c.args[1], "func", None) == lm.Family and \
+                c.args[1].args[1:] == (sp.Tuple(), sp.Tuple()):
+            opts = c.args[1].args[0] if isinstance(c.args[1].args[0], sp.Tuple) else (c.args[1].args[0],)
+            if not all(o.is_Integer for o in opts):
+                raise LatexMathError(f"the values {opts} are not numbers")
+            for x in (*pending, c.args[0]):
+                quant[f"s{_sign_index(x)}"] = [int(o) for o in opts]
+            pending = []
+        else:
+            raise LatexMathError(f"unread quantifier {c}")
+    if pending or member is None:
+        raise LatexMathError("a listed sign without its set, or no tuple in K")
+    return member, quant
 
 
 def read_max(line_id: str) -> tuple:
-    """``(expression, {sign: values} quantified, parity of K, printed value)`` of a printed max{..} = value."""
+    """``(expression, {sign: values} quantified, parity of K, printed value)`` of a printed max{..} = value: the
+    row ``& \\max\\left\\{ X : \\left( k_{1},k_{2},k_{3},k_{4}\\right) \\in K_{a,b},~.. \\right\\} \\\\ = & value``
+    read by :func:`~paper_repro.printed.latex_math.parse_relation` (``max(Family(X, conditions, ())) = value``), the
+    conditions by :func:`_quantified`."""
+    import sympy as sp
 
-    m = _MAX.fullmatch(verbatim(line_id).replace("%", " "))
-    if not m:
+    rel = lm.parse_relation(verbatim(line_id))
+    top = rel.parts[0]
+    fam = top.args[0] if getattr(top, "func", None) == lm.FUNCS["max"] and len(top.args) == 1 else None
+    if rel.ops != ["="] or rel.lead or rel.conditions or getattr(fam, "func", None) != lm.Family or fam.args[2]:
         raise LatexMathError(f"{line_id}: unread max")
-    quant: dict[str, list[int]] = {}
-    q = m.group(4)
-    for var, val in re.findall(r"s_\{(\d)\}=([-+]?\d+)", q):
-        quant[f"s{var}"] = [int(val)]
-    for names, opts in re.findall(r"((?:s_\{\d\},?)+)\\in\\left\\\{(.*?)\\right\\\}", q):
-        for x in re.findall(r"s_\{(\d)\}", names):
-            quant[f"s{x}"] = [int(parse(o)) for o in opts.split(",")]
-    rest = re.sub(r"s_\{(\d)\}=([-+]?\d+)|((?:s_\{\d\},?)+)\\in\\left\\\{(.*?)\\right\\\}|,|\s", "", q)
-    if rest:
-        raise LatexMathError(f"{line_id}: unread quantifier {rest!r}")
-    if max(int(m.group(2)), int(m.group(3))) > 1:
-        raise LatexMathError(f"{line_id}: K_{{{m.group(2)},{m.group(3)}}} is not a parity case")
-    return parse(m.group(1)), quant, (int(m.group(2)), int(m.group(3))), parse(m.group(5))
+    member, quant = _quantified(fam.args[1])
+    kset = member.args[1]
+    if member.args[0] != sp.Tuple(*(sp.Function("k")(r) for r in (1, 2, 3, 4))) or \
+            getattr(kset, "func", None) != sp.Function("K") or len(kset.args) != 2 or \
+            not all(x.is_Integer for x in kset.args):
+        raise LatexMathError(f"{line_id}: not (k_1, k_2, k_3, k_4) in K_{{a,b}}")
+    if max(kset.args) > 1:
+        raise LatexMathError(f"{line_id}: K_{{{kset.args[0]},{kset.args[1]}}} is not a parity case")
+    return section_names(fam.args[0]), quant, (int(kset.args[0]), int(kset.args[1])), section_names(rel.parts[1])
+
+
+def _sign_names(expr) -> list[str]:
+    """The names ``s1``..``s9`` of the signs an expression uses (section_names makes ``s_{k}`` the Symbol ``sk``)."""
+    return sorted(str(x) for x in expr.free_symbols if len(str(x)) == 2 and str(x)[0] == "s" and str(x)[1].isdigit())
 
 
 def max_values(line_id: str, quantify_free: bool, n_max: int = 6) -> bool:
@@ -1872,7 +2002,7 @@ def max_values(line_id: str, quantify_free: bool, n_max: int = 6) -> bool:
     import sympy as sp
 
     expr, quant, parity, value = read_max(line_id)
-    signs = sorted(str(x) for x in expr.free_symbols if re.fullmatch(r"s\d", str(x)))
+    signs = _sign_names(expr)
     free = [x for x in signs if x not in quant]
     if quantify_free:
         quant = {**quant, **{x: [-1, 1] for x in free}}
@@ -1940,7 +2070,7 @@ def check_max2_quantifier() -> LineResult:
         expr, quant, _, _ = read_max("sec4_5-max2-set")
     except (LatexMathError, ValueError, TypeError) as exc:
         return LineResult(False, how=how, kind="exhaustive", detail={"unread": str(exc)})
-    free = sorted(str(x) for x in expr.free_symbols if re.fullmatch(r"s\d", str(x)) and str(x) not in quant)
+    free = [x for x in _sign_names(expr) if x not in quant]
     return LineResult(printed, corrected, how=how, kind="exhaustive",
                       detail={"quantified": sorted(quant), "unquantified_in_expression": free,
                               "example": "n = 1, i = j = 1, s4 = -1: max = 0, printed value i = 1"})
@@ -1960,28 +2090,44 @@ def frequency_classes(n: int) -> set:
     return out
 
 
-def read_union(tex: str) -> tuple:
-    """``\\cup_{i=a}^{b}E_{i}^{\\alpha}/_{\\sim}`` of a line: (a, b) parsed."""
+def read_union(union) -> tuple:
+    """``(a, b)`` of a parsed ``\\cup_{i=a}^{b}E_{i}^{\\alpha}/_{\\sim}``: ``cup(Family(quotient(E(i)), (), ((i, a,
+    b),)))`` (:func:`~paper_repro.printed.latex_math.parse`)."""
+    import sympy as sp
 
-    m = re.findall(r"\\cup_\{i=([^{}]+)\}\^\{([^{}]+)\}E_\{i\}\^\{\\alpha\}/_\{\\sim\}", tex)
-    if len(m) != 1:
-        raise LatexMathError("no single union of E_i/~")
-    return parse(m[0][0]), parse(m[0][1])
+    fam = union.args[0] if getattr(union, "func", None) == sp.Function("cup") and len(union.args) == 1 else None
+    if getattr(fam, "func", None) != lm.Family or fam.args[1] or len(fam.args[2]) != 1:
+        raise LatexMathError(f"{union} is not a union over one bound")
+    (var, lo, hi), = fam.args[2]
+    if fam.args[0] != sp.Function("quotient")(sp.Function("E")(var)):
+        raise LatexMathError(f"{fam.args[0]} is not E_{{{var}}}/~ of the bound variable")
+    return lo, hi
 
 
-def union_holds(tex: str, v_idx: str) -> bool:
-    """The classes of every frequency of T_{2n} lie in the printed union cup_{i=a}^{b} E_i/~ (bounds read), which
-    lies in the classes of the printed V (n = 1..3)."""
+def union_holds(union, v_idx) -> bool:
+    """The classes of every frequency of T_{2n} lie in the printed union cup_{i=a}^{b} E_i/~ (parsed; bounds read),
+    which lies in the classes of the printed V (its index ``v_idx`` parsed), n = 1..3."""
     import sympy as sp
 
     ns = sp.Symbol("n")
-    lo, hi = read_union(tex)
+    lo, hi = read_union(union)
     good = True
     for n in (1, 2, 3):
-        a, b, v = int(lo.subs(ns, n)), int(hi.subs(ns, n)), int(sp.sympify(v_idx).subs(ns, n))
-        union = set().union(*(classes_of(x) for x in range(a, b + 1))) if b >= a else set()
-        good &= frequency_classes(n) <= union <= classes_of(v)
+        a, b, v = int(lo.subs(ns, n)), int(hi.subs(ns, n)), int(v_idx.subs(ns, n))
+        union_ = set().union(*(classes_of(x) for x in range(a, b + 1))) if b >= a else set()
+        good &= frequency_classes(n) <= union_ <= classes_of(v)
     return good
+
+
+def _space_index(x, letter: str) -> tuple[bool, object]:
+    """``(printed as a span, index)`` of a parsed ``X_{idx}`` or ``\\operatorname{span}X_{idx}`` with X = ``letter``."""
+    import sympy as sp
+
+    spanned = getattr(x, "func", None) == sp.Function("span") and len(x.args) == 1
+    inner = x.args[0] if spanned else x
+    if getattr(inner, "func", None) != sp.Function(letter) or len(inner.args) != 1:
+        raise LatexMathError(f"{x} is not {letter}_{{..}} or its span")
+    return spanned, inner.args[0]
 
 
 @line_check("sec4_5-in-Vn")
@@ -1997,19 +2143,29 @@ def check_in_vn() -> LineResult:
            "one triple per class); corrected: they lie in span V_n (exact ranks at rational points), and the "
            "frequencies of T_{2n} lie in the union, n = 1..2")
     try:
-        t_in = verbatim("sec4_5-in-Vn")
-        mv = re.search(r"\\left\[\s*r_\{1\},g_\{1\},b_\{1\}\\right\]\s*,\\left\[\s*r_\{2\},g_\{2\},b_\{2\}\\right\]\s*"
-                       r"\\in\\cup.*i\.e\., \\\[\s*\\cos\\left\(\s*r_\{1\}u\+g_\{1\}v\+b_\{1\}w\\right\)\s*,"
-                       r"\\sin\\left\(\s*r_\{2\}u\+g_\{2\}%?\s*v\+b_\{2\}w\\right\)\s*"
-                       r"\\in\s*(\\operatorname\{span\}\s*)?V_\{([^{}]+)\}\^\{\\alpha\}\.\s*$", t_in)
-        if not mv:
+        d = lm.sentence(r"where {classes}, i.e., \[ {functions:words}", verbatim("sec4_5-in-Vn"))
+        if not d:
             raise LatexMathError("unread line")
-        says_span, v_text = bool(mv.group(1)), mv.group(2)
+        classes, functions = lm.parse_relation(d["classes"]), lm.parse_relation(d["functions"])
+        cls, letters = sp.Function("cls"), [sp.Function(x) for x in "rgb"]
+        u, v, w = sp.symbols("u v w")
+        # two listed subjects: the reader gives the first as the part and the second with its membership as a clause
+        if classes.ops or len(classes.parts) != 1 or len(classes.conditions) != 1 or \
+                classes.conditions[0].ops != ["in"] or functions.ops or len(functions.parts) != 1 or \
+                len(functions.conditions) != 1 or functions.conditions[0].ops != ["in"]:
+            raise LatexMathError("unread line: not '[..], [..] in U, i.e., cos(..), sin(..) in V'")
+        first, (second, union) = classes.parts[0], classes.conditions[0].parts
+        cos_, (sin_, space) = functions.parts[0], functions.conditions[0].parts
+        if [first, second] != [cls(sp.Tuple(*(x(k) for x in letters))) for k in (1, 2)] or \
+                [cos_, sin_] != [f(letters[0](k) * u + letters[1](k) * v + letters[2](k) * w)
+                                 for f, k in ((sp.cos, 1), (sp.sin, 2))]:
+            raise LatexMathError("unread line: the classes or the functions are not [r_k, g_k, b_k], cos/sin of them")
+        says_span, v_idx = _space_index(space, "V")
         ns = sp.Symbol("n")
-        lo, hi = read_union(t_in)
-        literal, spans = True, union_holds(t_in, v_text)
+        lo, hi = read_union(union)
+        literal, spans = True, union_holds(union, v_idx)
         for n in (1, 2):
-            a, b, vi = int(lo.subs(ns, n)), int(hi.subs(ns, n)), int(sp.sympify(v_text).subs(ns, n))
+            a, b, vi = int(lo.subs(ns, n)), int(hi.subs(ns, n)), int(v_idx.subs(ns, n))
             triples = sorted({t for x in range(a, b + 1) for t in E(x)})
 
             def ep(f, t):  # f(r u + g v + b w) with w = alpha - u - v, over (u, v, alpha)
@@ -2042,15 +2198,20 @@ def check_inclusion() -> LineResult:
            "(indices read) by exact ranks of T and V at rational points, n <= 3")
     try:
         ns = sp.Symbol("n")
-        t_inc = verbatim("sec4_5-inclusion").replace("%", " ")
-        mi = re.search(r"linear combinations of sine and cosine functions that belong to some equivalence classes "
-                       r"\$\\left\[\s*r,g,b\\right\]\s*\\in\$ \$\\cup.*Consequently, \\\[\s*\\operatorname\{span\}\s*"
-                       r"T_\{([^{}]+)\}\^\{\\alpha\}\\subseteq\s*\\operatorname\{span\}\s*V_\{([^{}]+)\}\^\{\\alpha\}"
-                       r"\\text\{\.\}\s*\\\]\s*$", t_inc)
-        if not mi:
+        d = lm.sentence(r"Performing similar calculations as above, one concludes that all types of products from "
+                        r"(\ref{{label:word}}) can be expanded into linear combinations of sine and "
+                        r"cosine functions that belong to some equivalence classes {cls} {union}. Consequently, "
+                        r"\[ {inclusion:words} \]", verbatim("sec4_5-inclusion"))
+        if not d or d["label"] != "possible_products_inclusion":
             raise LatexMathError("unread line")
-        ok = {"inclusion": union_holds(t_inc, mi.group(2))}
-        t_idx, v_idx = sp.sympify(mi.group(1).replace("2n", "2*n")), sp.sympify(mi.group(2))
+        # the membership is printed over two segments, $\left[ r,g,b\right] \in$ $\cup..$: read as one relation
+        member, incl = lm.parse_relation(d["cls"] + " " + d["union"]), lm.parse_relation(d["inclusion"])
+        if member.ops != ["in"] or member.conditions or \
+                member.parts[0] != sp.Function("cls")(sp.Tuple(*sp.symbols("r g b"))) or \
+                incl.ops != ["subset"] or incl.conditions:
+            raise LatexMathError("unread line: not '[r,g,b] in U' and 'span T subset span V'")
+        (t_span, t_idx), (v_span, v_idx) = _space_index(incl.parts[0], "T"), _space_index(incl.parts[1], "V")
+        ok = {"inclusion": union_holds(member.parts[1], v_idx), "printed_spans": t_span and v_span}
         ok["spans"] = all(span_rank((("T", int(t_idx.subs(ns, n))), ("V", int(v_idx.subs(ns, n))))) == span_rank(
             (("V", int(v_idx.subs(ns, n))),)) for n in (1, 2, 3))
     except (LatexMathError, ValueError, TypeError, sp.SympifyError) as exc:
