@@ -52,11 +52,11 @@ import numpy as np
 import scipy.sparse as sp
 from flint import fmpq, fmpq_poly, fmpz, fmpz_mat, fmpz_poly
 
+from paper_repro.core.context import get_context
 from paper_repro.core.half_angle_rules import cotangent
 from paper_repro.core.labels import check_n, delta, exponent_matrix
 from paper_repro.core.normalization import orbits
 from paper_repro.core.normalizing_formula import scaled_table
-from paper_repro.core.context import get_context
 from paper_repro.core.subdivision_products import PARTS, _level_terms, factorization
 
 #: X = cos(alpha/4) and t = X - 1 as integer polynomials.
@@ -64,7 +64,7 @@ X_POLY = fmpz_poly([0, 1])
 _SHIFT = fmpz_poly([1, 1])  # X = 1 + t
 
 
-# --- polynomials in t, truncated ------------------------------------------------------------------------------------
+# --- polynomials in t, truncated --------------------------------------------------------------------------------------
 def shifted(p, terms: int) -> list:
     """The first ``terms`` coefficients of p(1 + t) for a polynomial p in X (``fmpz_poly``, ``fmpq_poly`` or a
     constant); zeros beyond the degree.
@@ -97,7 +97,8 @@ def _as_fmpz_mat(arr: np.ndarray) -> fmpz_mat | None:
     """A 2-d integer (int64 or object) array as ``fmpz_mat``; None if it is zero."""
     if not arr.any():
         return None
-    return fmpz_mat(arr.shape[0], arr.shape[1], [int(x) for x in arr.ravel().tolist()])
+    flat = arr.ravel().tolist() if arr.dtype == np.int64 else [int(x) for x in arr.ravel().tolist()]
+    return fmpz_mat(arr.shape[0], arr.shape[1], flat)
 
 
 def _as_array(m: fmpz_mat | None, shape: tuple[int, int]) -> np.ndarray:
@@ -107,7 +108,7 @@ def _as_array(m: fmpz_mat | None, shape: tuple[int, int]) -> np.ndarray:
     return out
 
 
-# --- order one: Lemma 11.1 over Z[X] ------------------------------------------------------------------------------------
+# --- order one: Lemma 11.1 over Z[X] ----------------------------------------------------------------------------------
 @cache
 def order_one_numerators(part: str) -> tuple[tuple[fmpz_poly, ...], ...]:
     """``N_1[g][h]`` with R_1^part[g, h] = N_1[g][h] / (2X)^{e(h)}: the algorithm of
@@ -199,14 +200,14 @@ def _combined_numerator(k: int, n1_shift: list, g: int, terms: int) -> list:
                 table[ai, bi, h] = shifted(X_POLY ** ai * sg ** bi * n1_shift[h][g], terms)
     out = []
     for i in range(terms):
-        weights = table[a, b, hidx, i]
-        if not any(weights):
+        small = table[:, :, :, i]
+        if not small.any():
             out.append(None)
             continue
-        big = max(abs(int(w)) for w in weights) * int(np.abs(coef).max()) * len(coef)
+        big = max(abs(int(w)) for w in small.ravel()) * int(np.abs(coef).max()) * len(coef)
         if big >= 2**62:  # pragma: no cover - small n
             raise OverflowError(f"level {k}: a product coefficient may not fit in int64")
-        vals = coef * weights.astype(np.int64)
+        vals = coef * small.astype(np.int64)[a, b, hidx]
         dense = sp.coo_matrix((vals, (rows, cols)), shape=shape).toarray()
         out.append(_as_fmpz_mat(dense))
     return out
@@ -255,7 +256,7 @@ def numerators(n: int, part: str, terms: int | None = None) -> tuple[list, int]:
     return cur, terms
 
 
-# --- the normalizing coefficients ---------------------------------------------------------------------------------------
+# --- the normalizing coefficients -------------------------------------------------------------------------------------
 @cache
 def scaled_xi(n: int, half: bool) -> tuple[fmpq_poly, ...]:
     """The scaled normalizing coefficients xi_f (``half=False``: at alpha, kappa = 2X^2 - 1, sigma = 4X^2(1 - X^2)) or
@@ -276,7 +277,12 @@ def _order(coeffs: list) -> int:
     return next((i for i, c in enumerate(coeffs) if c != 0), len(coeffs))
 
 
-# --- exact matrices at a value of X --------------------------------------------------------------------------------------
+def rows_where_xi_half_vanishes(n: int) -> list[int]:
+    """The members g with xi'_g(X = 1) = 0 (the rows where "no pole" is not vacuous)."""
+    return [g for g, p in enumerate(scaled_xi(n, True)) if p(1) == 0]
+
+
+# --- exact matrices at a value of X -----------------------------------------------------------------------------------
 def exact_matrices_at(n: int, x0) -> tuple[np.ndarray, ...]:
     """The four S_k (object arrays of ``fmpq``, order of :data:`PARTS`) at X = cos(alpha/4) = ``x0`` (rational, in
     (cos(pi/4), 1)), from the complete numerator polynomials (``terms=None``) and xi, xi' evaluated there."""
@@ -303,7 +309,7 @@ def exact_matrices_at(n: int, x0) -> tuple[np.ndarray, ...]:
     return tuple(out)
 
 
-# --- the check at X = 1 -----------------------------------------------------------------------------------------------------
+# --- the check at X = 1 -----------------------------------------------------------------------------------------------
 @dataclass
 class LimitResult:
     """The pole check at X = 1 for one n (all four parts).
@@ -380,4 +386,4 @@ def limit_check(n: int, terms: int | None = None) -> LimitResult:
 
 
 __all__ = ["limit_check", "LimitResult", "numerators", "order_one_numerators", "exact_matrices_at", "scaled_xi",
-           "shifted", "sine_degree", "degree_bound"]
+           "shifted", "sine_degree", "degree_bound", "rows_where_xi_half_vanishes"]
