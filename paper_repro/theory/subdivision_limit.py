@@ -318,9 +318,9 @@ class LimitResult:
     ``entries``: the number of entries checked (4 delta_n^2); ``nonzero``: per part, the entries whose numerator is
     not divisible by t^N; ``max_ord_xi_half``: max ord_{X-1} xi'_g; ``max_ord_xi``: max ord_{X-1} xi_f;
     ``cancelled``: per part, the nonzero entries of the rows with ord xi'_g >= 1 (where the numerator must vanish at
-    X = 1 for the check to pass); ``limits``: S_k(X = 1) exactly (object arrays of ``fmpq``, order of
-    :data:`PARTS`); ``slopes``: r'_{g,f}(1) = dS/dX at X = 1 (S(alpha) = S(0+) - r'(1) alpha^2/32 + O(alpha^4));
-    ``terms``: N; ``seconds``: wall time."""
+    X = 1 for the check to pass); ``limits`` (meaningful only when ``max_pole`` is 0): S_k(X = 1) exactly (object
+    arrays of ``fmpq``, order of :data:`PARTS`); ``slopes``: r'_{g,f}(1) = dS/dX at X = 1 (S(alpha) = S(0+) -
+    r'(1) alpha^2/32 + O(alpha^4)); ``terms``: N; ``seconds``: wall time."""
 
     n: int
     max_pole: int
@@ -363,21 +363,16 @@ def limit_check(n: int, terms: int | None = None) -> LimitResult:
         poles[part] = pole
         nonzero[part] = int((ordr < terms).sum())
         cancelled[part] = int(((ordr < terms) & (np.array(o1)[:, None] >= 1)).sum())
-        lim = np.empty((d, d), dtype=object)
-        slope = np.empty((d, d), dtype=object)
-        for f in range(d):
-            two = 2 ** int(e[f])
-            for g in range(d):
-                o = o1[g]
-                if ordr[g, f] >= terms:
-                    lim[g, f], slope[g, f] = fmpq(0), fmpq(0)
-                    continue
-                a_co = [sum((arr[i, g, f] * s0[f][k - i] for i in range(k + 1)), fmpq(0)) for k in (o, o + 1)]
-                # B = (2 + 2t)^E xi'_g: [t^o] and [t^(o+1)]; xi'_g has no coefficient below t^o
-                ee = int(e[f])
-                b_co = [two * s1[g][o], two * (ee * s1[g][o] + s1[g][o + 1])]
-                lim[g, f] = a_co[0] / b_co[0]
-                slope[g, f] = (a_co[1] * b_co[0] - a_co[0] * b_co[1]) / (b_co[0] * b_co[0])
+        lim = np.full((d, d), fmpq(0), dtype=object)  # the entries divisible by t^N: 0 and slope 0
+        slope = np.full((d, d), fmpq(0), dtype=object)
+        for g, f in zip(*np.nonzero(ordr < terms)):
+            o, ee = o1[g], int(e[f])
+            a_co = [sum((arr[i, g, f] * s0[f][k - i] for i in range(k + 1)), fmpq(0)) for k in (o, o + 1)]
+            # B = (2 + 2t)^E xi'_g: [t^o] and [t^(o+1)]; xi'_g has no coefficient below t^o
+            two = 2 ** ee
+            b_co = [two * s1[g][o], two * (ee * s1[g][o] + s1[g][o + 1])]
+            lim[g, f] = a_co[0] / b_co[0]
+            slope[g, f] = (a_co[1] * b_co[0] - a_co[0] * b_co[1]) / (b_co[0] * b_co[0])
         limits.append(lim)
         slopes.append(slope)
     return LimitResult(n=n, max_pole=max(poles.values()), poles=poles, entries=4 * d * d, nonzero=nonzero,
