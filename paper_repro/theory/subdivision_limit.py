@@ -118,9 +118,14 @@ def order_one_numerators(part: str) -> tuple[tuple[fmpz_poly, ...], ...]:
     C_x -> X C'_x - sigma' S'_x, S_y -> S'_y/(2X); under the point reflection S_x -> (C'_x - X S'_x)/(2X),
     C_x -> X C'_x + sigma' S'_x for every x.
 
-    >>> n1 = order_one_numerators("middle")
-    >>> n1[0][0]  # the centre's own coefficient: (2X)^3 (-1/2) ... as a polynomial, at X = 1 it is -4
-    -4*x^3
+    >>> import math
+    >>> from paper_repro.core.subdivision_products import order_one_restriction
+    >>> kp = math.cos(0.3)
+    >>> e = sine_degree(1)
+    >>> num = order_one_numerators("middle")
+    >>> r1 = np.array([[float(num[g][h](kp)) / (2 * kp) ** int(e[h]) for h in range(7)] for g in range(7)])
+    >>> bool(np.abs(r1 - order_one_restriction("middle", kp, 1 - kp * kp)).max() < 1e-14)
+    True
     """
     if part not in PARTS:
         raise ValueError(f"part must be one of {PARTS}, got {part!r}")
