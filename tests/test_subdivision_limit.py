@@ -5,13 +5,14 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from flint import fmpq
+from flint import fmpq, fmpq_poly
 
 import paper_repro.theory.subdivision_limit as sl
 from paper_repro.core.domain import rational_alpha
 from paper_repro.core.labels import united_system
 from paper_repro.core.subdivision import PARTS, subdivision_matrices, subdivision_matrix
 from paper_repro.theory.subdivision_limit import (
+    even_in_x,
     exact_matrices_at,
     limit_check,
     numerators,
@@ -132,3 +133,19 @@ def test_limit_against_float_route(n):
         diff = subdivision_matrix(n, alpha, part) - tiny
         assert np.abs(diff + slope * alpha**2 / 32).max() < 1e-14
         assert np.abs(diff).max() > 1e-9  # the alpha^2 term is there (n >= 1: some r'(1) != 0)
+
+
+@pytest.mark.parametrize("n", [1, 2, 3])
+def test_entries_are_even_in_x(n):
+    """Every r(X) is even (so S_k has entries in Q(cos(alpha/2)), X^2 = (1 + cos(alpha/2))/2): exact, complete
+    polynomials; n = 1 agrees with section 5 (every entry there a rational function of c)."""
+    assert even_in_x(n) == {part: 0 for part in PARTS}
+
+
+def test_evenness_check_can_fail(monkeypatch):
+    """With xi'_g multiplied by X (not even) the entries of the non-zero columns stop being even: the check counts
+    them."""
+    true = sl.scaled_xi
+    x = fmpq_poly([0, 1])
+    monkeypatch.setattr(sl, "scaled_xi", lambda n, half: tuple(p * x for p in true(n, half)) if half else true(n, half))
+    assert min(even_in_x(1).values()) > 0

@@ -31,7 +31,8 @@ have rational points, :func:`parent_points`):
    is checked) -- so S_k is analytic and even at alpha = 0 for these n; S_k(0+) exactly, its rows summing to 1; and,
    for n = 1..n_poly, the complete polynomials of that route evaluated at X = cos(alpha/4) equal the exact
    collocation S (check 1's matrices) at tan(alpha/8) = t8_poly, every entry (an independent route: the
-   transformation M_{alpha/2} Rot_k M_alpha^{-1}, no product forms).
+   transformation M_{alpha/2} Rot_k M_alpha^{-1}, no product forms); for n = 1..n_even every r_{g,f} is even in X
+   (exactly, from the complete polynomials), so S_k has entries in Q(X^2) = Q(cos(alpha/2)) for every alpha.
 
 Kind: exact-evidence at the sampled alpha; the hand proof carries every n and alpha; check 6 is exhaustive for
 n = 1..n_limit (every alpha: a statement about the rational functions).
@@ -46,7 +47,12 @@ from paper_repro.core.domain import RationalAngle, RationalPoints, rational_alph
 from paper_repro.core.labels import delta, index_of, united_system
 from paper_repro.core.normalization import evaluate_normalized
 from paper_repro.core.subdivision import PARTS, subdivision_matrices
-from paper_repro.theory.subdivision_limit import exact_matrices_at, limit_check, rows_where_xi_half_vanishes
+from paper_repro.theory.subdivision_limit import (
+    even_in_x,
+    exact_matrices_at,
+    limit_check,
+    rows_where_xi_half_vanishes,
+)
 from paper_repro.theory.subdivision_signs import explicit_g_columns_at, g_index
 from paper_repro.util.registry import Outcome, claim
 
@@ -220,12 +226,13 @@ def polynomial_check(n: int, t8: str) -> bool:
                  "entry of the four S_k, as a rational function of X = cos(alpha/4) (the product route over Z[X]), has "
                  "a pole at X = 1 -- exhaustive over the entries, exact -- so S_k is analytic and even at alpha = 0 "
                  "for these n (beyond n_limit: evidence); its complete rational functions equal the exact "
-                 "collocation S_k at tan(alpha/8) = {t8_poly}, n = 1..{n_poly}.",
+                 "collocation S_k at tan(alpha/8) = {t8_poly}, n = 1..{n_poly}; they are even in X for n = "
+                 "1..{n_even} (exact), so S_k has entries in Q(cos(alpha/2)) for every alpha for these n.",
        kind="exact-evidence", ts8=["1/20", "1/7", "1/3", "2/5"], n_max=4, ts_n1=["1/20", "1/3", "1/2", "9/10"],
-       t_irrational="1/2", n_rational=4, seed=5, n_limit=4, t8_poly="1/3", n_poly=3,
-       extended={"n_max": 8, "n_rational": 6, "n_limit": 10, "n_poly": 4})
+       t_irrational="1/2", n_rational=4, seed=5, n_limit=4, t8_poly="1/3", n_poly=3, n_even=4,
+       extended={"n_max": 8, "n_rational": 6, "n_limit": 10, "n_poly": 4, "n_even": 6})
 def run(ts8: list[str], n_max: int, ts_n1: list[str], t_irrational: str, n_rational: int, seed: int, n_limit: int,
-        t8_poly: str, n_poly: int) -> Outcome:
+        t8_poly: str, n_poly: int, n_even: int) -> Outcome:
     identities = {f"n={n}, tan(alpha/8)={t8}": identity_check(n, t8, seed) for n in range(1, n_max + 1) for t8 in ts8}
     ident_ok = all(v["rank_of_collocation"] and all(p["identity"] and p["rows_sum_to_1"] for p in v["parts"].values())
                    for v in identities.values())
@@ -241,8 +248,10 @@ def run(ts8: list[str], n_max: int, ts_n1: list[str], t_irrational: str, n_ratio
     poles = {str(n): pole_check(n) for n in range(1, n_limit + 1)}
     poles_ok = all(v["max_pole_order"] == 0 and v["limit_rows_sum_to_1"] for v in poles.values())
     polynomial = {str(n): polynomial_check(n, t8_poly) for n in range(1, n_poly + 1)}
+    not_even = {str(n): even_in_x(n) for n in range(1, n_even + 1)}
+    even_ok = all(c == 0 for v in not_even.values() for c in v.values())
     ok = (ident_ok and n1_ok and all(rational.values()) and not corner_cutting_somewhere and entry_ok and g_ok
-          and poles_ok and all(polynomial.values()))
+          and poles_ok and all(polynomial.values()) and even_ok)
     measured = {
         "sub_patch_equals_patch_on_sub_triangle": ("every part, n = 1.." f"{n_max} at tan(alpha/8) in {ts8}, exact"
                                                    if ident_ok else identities),
@@ -259,6 +268,8 @@ def run(ts8: list[str], n_max: int, ts_n1: list[str], t_irrational: str, n_ratio
                                "exact" if poles_ok else "fails"),
         "pole_check_per_n": poles,
         "rational_functions_equal_collocation": {f"n={n}, tan(alpha/8)={t8_poly}": v for n, v in polynomial.items()},
+        "entries_in_Q(cos(alpha/2))": (f"every r_(g,f) even in X = cos(alpha/4), n = 1..{n_even}: exact" if even_ok
+                                       else {"entries_not_even": not_even}),
         "scope": "exact at the sampled alpha (evidence for other alpha); the closure and the formula for S are proven "
                  "for every n and alpha in docs/subdivision_for_all_n.md, where also Theorem G (the G columns of S_u), "
                  "the negative corner entry for every n (so no order is corner cutting) and the n = 1 closed form are "

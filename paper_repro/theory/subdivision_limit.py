@@ -314,6 +314,42 @@ def exact_matrices_at(n: int, x0) -> tuple[np.ndarray, ...]:
     return tuple(out)
 
 
+def even_in_x(n: int) -> dict[str, int]:
+    """For each part, the number of entries of S_k whose rational function r(X) is *not* even, r(-X) != r(X)
+    (exactly, from the complete numerators).  An even r lies in Q(X^2) = Q(cos(alpha/2)) (X^2 = (1 + cos(alpha/2))/2),
+    so all-zero counts prove that S_k has entries in Q(cos(alpha/2)) for this n, for every alpha (docs, section 3,
+    "Rationality").  xi_f is a polynomial in X^2 (asserted), so r is even iff
+    N(X) (-1)^E(f) xi'_g(-X) = N(-X) xi'_g(X).
+
+    >>> even_in_x(1)
+    {'u': 0, 'v': 0, 'w': 0, 'middle': 0}
+    """
+    n = check_n(n)
+    d = delta(n)
+    x = fmpq_poly([0, 1])
+    back = fmpz_poly([-1, 1])  # t = X - 1
+    if any(p(-x) != p for p in scaled_xi(n, False)):  # pragma: no cover - kappa, sigma are polynomials in X^2
+        raise AssertionError("a scaled normalizing coefficient at alpha is not even in X")
+    half = scaled_xi(n, True)
+    half_minus = [p(-x) for p in half]
+    e = sine_degree(n)
+    out = {}
+    for part in PARTS:
+        coeffs, terms = numerators(n, part)
+        arr = np.stack([_as_array(c, (d, d)) for c in coeffs])
+        bad = 0
+        for g in range(d):
+            for f in range(d):
+                num = fmpq_poly(fmpz_poly([int(v) for v in arr[:, g, f]])(back))
+                if num == 0:
+                    continue
+                sign = -1 if int(e[f]) % 2 else 1
+                if num * sign * half_minus[g] != num(-x) * half[g]:
+                    bad += 1
+        out[part] = bad
+    return out
+
+
 # --- the check at X = 1 -----------------------------------------------------------------------------------------------
 @dataclass
 class LimitResult:
@@ -386,4 +422,4 @@ def limit_check(n: int, terms: int | None = None) -> LimitResult:
 
 
 __all__ = ["limit_check", "LimitResult", "numerators", "order_one_numerators", "exact_matrices_at", "scaled_xi",
-           "shifted", "sine_degree", "degree_bound", "rows_where_xi_half_vanishes"]
+           "shifted", "sine_degree", "degree_bound", "rows_where_xi_half_vanishes", "even_in_x"]
