@@ -28,7 +28,7 @@ Z[t] -> Z[t]/(t^N), so the first N coefficients are exact.  Two modes:
   level by level), so the polynomials are complete: S_k(X) exactly, evaluated at any X (:func:`exact_matrices_at`,
   compared in the tests with the exact collocation route at rational cos(alpha/4)).
 * ``terms=N`` small: enough to decide the pole order at t = 0 and to read the limit.  With o_g = ord_t xi'_g (at most 1
-  for n <= 12, counted by :func:`limit_check`), the entry has a pole at X = 1 exactly when
+  for n <= 16, counted by :func:`limit_check`), the entry has a pole at X = 1 exactly when
   ``ord_t N[g, f] + ord_t xi_f < o_g``, and its value and derivative at X = 1 need the coefficients up to t^{o_g + 1}:
   N = max o_g + 2 terms decide everything (:func:`limit_check` takes that N).
 
@@ -245,6 +245,9 @@ def numerators(n: int, part: str, terms: int | None = None) -> tuple[list, int]:
             start[:, g, h] = shifted(n1[g][h], terms)
     cur = [_as_fmpz_mat(start[i]) for i in range(terms)]
     for k, (order, bounds, pos) in zip(range(2, n + 1), _plan_all(n)):
+        fp, h = factorization(k)
+        if not (sine_degree(k) == sine_degree(1)[h] + sine_degree(k - 1)[fp]).all():  # pragma: no cover
+            raise AssertionError(f"level {k}: the denominators (2X)^E(f) do not multiply")
         arrays = [_as_array(c, (delta(k - 1), delta(k - 1))) for c in cur]
         nxt = [np.zeros((delta(k), delta(k)), dtype=object) for _ in range(terms)]
         for g in range(7):
