@@ -24,7 +24,18 @@ have rational points, :func:`parent_points`):
    witnesses of non-corner-cutting, -1/2 in the middle and -c/(2(1 + c)) in corner u, each the only negative entry
    of its matrix.
 
-Kind: exact-evidence at the sampled alpha; the hand proof carries every n and alpha.
+6. **No pole at alpha = 0** (Proposition 11.6 of docs/subdivision_for_all_n.md, section 11, and the paragraph after
+   it): for n = 1..n_limit every entry of the four S_k, a rational function r_{g,f} of X = cos(alpha/4) (the
+   product route run over Z[X] by :mod:`paper_repro.theory.subdivision_limit`), has no pole at X = 1 -- exhaustive
+   over the 4 delta_n^2 entries, exact (decided in Z[t]/(t^3), t = X - 1, enough since ord_{X-1} xi'_g <= 1, which
+   is checked) -- so S_k is analytic and even at alpha = 0 for these n; S_k(0+) exactly, its rows summing to 1; and,
+   for n = 1..n_poly, the complete polynomials of that route evaluated at X = cos(alpha/4) equal the exact
+   collocation S (check 1's matrices) at tan(alpha/8) = t8_poly, every entry (an independent route: the
+   transformation M_{alpha/2} Rot_k M_alpha^{-1}, no product forms); for n = 1..n_even every r_{g,f} is even in X
+   (exactly, from the complete polynomials), so S_k has entries in Q(X^2) = Q(cos(alpha/2)) for every alpha.
+
+Kind: exact-evidence at the sampled alpha; the hand proof carries every n and alpha; check 6 is exhaustive for
+n = 1..n_limit (every alpha: a statement about the rational functions).
 """
 
 from __future__ import annotations
@@ -36,6 +47,12 @@ from paper_repro.core.domain import RationalAngle, RationalPoints, rational_alph
 from paper_repro.core.labels import delta, index_of, united_system
 from paper_repro.core.normalization import evaluate_normalized
 from paper_repro.core.subdivision import PARTS, subdivision_matrices
+from paper_repro.theory.subdivision_limit import (
+    even_in_x,
+    exact_matrices_at,
+    limit_check,
+    rows_where_xi_half_vanishes,
+)
 from paper_repro.theory.subdivision_signs import explicit_g_columns_at, g_index
 from paper_repro.util.registry import Outcome, claim
 
@@ -164,6 +181,31 @@ def rational_check(n: int, t: str) -> bool:
         all(sum(row, fmpq(0)) == 1 for m in mats for row in m)
 
 
+def pole_check(n: int) -> dict:
+    """Check 6 at order ``n``: the pole order at X = cos(alpha/4) = 1 of every entry of the four S_k
+    (:func:`~paper_repro.theory.subdivision_limit.limit_check`), the rows where xi'_g vanishes at X = 1 (where the
+    check is not vacuous), S_k(0+)'s row sums and the largest |dS_k/dX| at X = 1 (exact, as strings)."""
+    res = limit_check(n)
+    labels = [lab.paper for lab in united_system(n)]
+    return {"max_pole_order": res.max_pole, "entries": res.entries, "max_ord_xi_half": res.max_ord_xi_half,
+            "rows_with_xi_half_vanishing": [labels[g] for g in rows_where_xi_half_vanishes(n)],
+            "nonzero_entries_in_those_rows": res.cancelled,
+            "limit_rows_sum_to_1": all(sum(row, fmpq(0)) == 1 for m in res.limits for row in m),
+            "max_abs_dS_dX_at_1": {part: str(max(abs(x) for x in m.reshape(-1)))
+                                   for part, m in zip(PARTS, res.slopes)}}
+
+
+def polynomial_check(n: int, t8: str) -> bool:
+    """Check 6's cross-check: the complete rational functions of the product route over Z[X]
+    (:func:`~paper_repro.theory.subdivision_limit.exact_matrices_at`) at X = cos(alpha/4) = (1 - t8^2)/(1 + t8^2)
+    equal the exact collocation S (:func:`~paper_repro.core.subdivision.subdivision_matrices`) at that alpha."""
+    q = fmpq(*map(int, t8.split("/")))
+    alpha, _ = alphas_from_eighth(q)
+    poly = exact_matrices_at(n, (1 - q * q) / (1 + q * q))
+    exact = subdivision_matrices(n, alpha, "exact")
+    return all(bool((a == b).all()) for a, b in zip(poly, exact))
+
+
 @claim("subdivision_all_n", paper_ref=["triangular_trig_surface", "united_system", "sec:coincidence",
                                        "que:open_problem_basis_transformation"],
        statement="Beyond the paper (issue 38): the restriction of an order-n patch with parameter alpha to each of "
@@ -180,10 +222,17 @@ def rational_check(n: int, t: str) -> bool:
                  "holds and the witnesses that n = 1 subdivision is not corner cutting are the only negative entries "
                  "of their matrices: -1/2 (middle, centre <- centre) and -c/(2(1+c)) (corner u, centre <- "
                  "G_(2,1,0)); S_k is rational at tan(alpha/4) = {t_irrational} (cos(alpha/4) irrational), n = "
-                 "1..{n_rational}.",
+                 "1..{n_rational}. No pole at alpha = 0 (Proposition 11.6's condition): for n = 1..{n_limit} no "
+                 "entry of the four S_k, as a rational function of X = cos(alpha/4) (the product route over Z[X]), has "
+                 "a pole at X = 1 -- exhaustive over the entries, exact -- so S_k is analytic and even at alpha = 0 "
+                 "for these n (beyond n_limit: evidence); its complete rational functions equal the exact "
+                 "collocation S_k at tan(alpha/8) = {t8_poly}, n = 1..{n_poly}; they are even in X for n = "
+                 "1..{n_even} (exact), so S_k has entries in Q(cos(alpha/2)) for every alpha for these n.",
        kind="exact-evidence", ts8=["1/20", "1/7", "1/3", "2/5"], n_max=4, ts_n1=["1/20", "1/3", "1/2", "9/10"],
-       t_irrational="1/2", n_rational=4, seed=5, extended={"n_max": 8, "n_rational": 6})
-def run(ts8: list[str], n_max: int, ts_n1: list[str], t_irrational: str, n_rational: int, seed: int) -> Outcome:
+       t_irrational="1/2", n_rational=4, seed=5, n_limit=4, t8_poly="1/3", n_poly=3, n_even=4,
+       extended={"n_max": 8, "n_rational": 6, "n_limit": 10, "n_poly": 4, "n_even": 6})
+def run(ts8: list[str], n_max: int, ts_n1: list[str], t_irrational: str, n_rational: int, seed: int, n_limit: int,
+        t8_poly: str, n_poly: int, n_even: int) -> Outcome:
     identities = {f"n={n}, tan(alpha/8)={t8}": identity_check(n, t8, seed) for n in range(1, n_max + 1) for t8 in ts8}
     ident_ok = all(v["rank_of_collocation"] and all(p["identity"] and p["rows_sum_to_1"] for p in v["parts"].values())
                    for v in identities.values())
@@ -196,7 +245,13 @@ def run(ts8: list[str], n_max: int, ts_n1: list[str], t_irrational: str, n_ratio
     g_ok = all(v["parts"]["u"]["theorem_g_columns"] for v in identities.values())
     outside_g = {key: v["parts"]["u"]["negatives_outside_g"] for key, v in identities.items()}
     rational = {str(n): rational_check(n, t_irrational) for n in range(1, n_rational + 1)}
-    ok = ident_ok and n1_ok and all(rational.values()) and not corner_cutting_somewhere and entry_ok and g_ok
+    poles = {str(n): pole_check(n) for n in range(1, n_limit + 1)}
+    poles_ok = all(v["max_pole_order"] == 0 and v["limit_rows_sum_to_1"] for v in poles.values())
+    polynomial = {str(n): polynomial_check(n, t8_poly) for n in range(1, n_poly + 1)}
+    not_even = {str(n): even_in_x(n) for n in range(1, n_even + 1)}
+    even_ok = all(c == 0 for v in not_even.values() for c in v.values())
+    ok = (ident_ok and n1_ok and all(rational.values()) and not corner_cutting_somewhere and entry_ok and g_ok
+          and poles_ok and all(polynomial.values()) and even_ok)
     measured = {
         "sub_patch_equals_patch_on_sub_triangle": ("every part, n = 1.." f"{n_max} at tan(alpha/8) in {ts8}, exact"
                                                    if ident_ok else identities),
@@ -209,12 +264,20 @@ def run(ts8: list[str], n_max: int, ts_n1: list[str], t_irrational: str, n_ratio
                                                              "not_corner_cutting_witness")} for t, v in n1.items()},
         "n1_negative_entries": {t: v["negative_entries"] for t, v in n1.items()},
         "rational_at_irrational_cos_quarter": rational,
+        "no_pole_at_alpha_0": (f"no pole at X = cos(alpha/4) = 1 for n = 1..{n_limit}: exhaustive over the entries, "
+                               "exact" if poles_ok else "fails"),
+        "pole_check_per_n": poles,
+        "rational_functions_equal_collocation": {f"n={n}, tan(alpha/8)={t8_poly}": v for n, v in polynomial.items()},
+        "entries_in_Q(cos(alpha/2))": (f"every r_(g,f) even in X = cos(alpha/4), n = 1..{n_even}: exact" if even_ok
+                                       else {"entries_not_even": not_even}),
         "scope": "exact at the sampled alpha (evidence for other alpha); the closure and the formula for S are proven "
                  "for every n and alpha in docs/subdivision_for_all_n.md, where also Theorem G (the G columns of S_u), "
                  "the negative corner entry for every n (so no order is corner cutting) and the n = 1 closed form are "
-                 "proven for every alpha; the total sign counts for n >= 3 are measured here, not proven",
+                 "proven for every alpha; the total sign counts for n >= 3 are measured here, not proven; no pole "
+                 f"at alpha = 0 is decided exactly for n = 1..{n_limit} (every alpha), evidence beyond",
     }
     return Outcome(ok, measured)
 
 
-__all__ = ["run", "parent_points", "alphas_from_eighth", "identity_check", "n1_closed_form", "theorem_g_check"]
+__all__ = ["run", "parent_points", "alphas_from_eighth", "identity_check", "n1_closed_form", "theorem_g_check",
+           "pole_check", "polynomial_check"]

@@ -70,8 +70,10 @@ from paper_repro.core.ordered import ordered_matmul
 #: The four sub-triangles (as :data:`paper_repro.core.subdivision.PARTS`).
 PARTS = ("u", "v", "w", "middle")
 #: Below this alpha the float route computes at ALPHA_TINY: the scaled coefficients of size sigma would underflow
-#: (0/0 in x_f / x'_g).  Measured S(alpha) - S(ALPHA_TINY) ~ alpha^2/32 (n = 2, 6, 10), S even and smooth at 0 (proven
-#: for n <= 2, docs/subdivision_for_all_n.md section 11): the difference below ALPHA_TINY is about 1e-200.
+#: (0/0 in x_f / x'_g).  Measured S(alpha) - S(ALPHA_TINY) ~ alpha^2/32 (n = 2, 6, 10); S even and analytic at 0,
+#: S(alpha) = S(0+) - dS/dX(1) alpha^2/32 + O(alpha^4) with max |dS/dX(1)| = 1, X = cos(alpha/4) (proven for
+#: n <= 16 by the exact pole check of :mod:`paper_repro.theory.subdivision_limit`, docs/subdivision_for_all_n.md
+#: section 11; evidence beyond): the difference below ALPHA_TINY is at most about 3e-202.
 ALPHA_TINY = 1e-100
 #: Roundings along any path of the order-one computation (:func:`order_one_restriction`; derived in
 #: docs/subdivision_for_all_n.md section 11, "Error estimate"), each occurrence of the correctly rounded inputs kappa',
