@@ -305,11 +305,13 @@ relop: EQ | NEQ | LEQ | GEQ | LT | GT | IN | NOTIN | SIM | NSIM | EQUIV | SUBSET
      | term CDOT prefix term          -> mul_dot_prefix
      | term MODP "{" expr "}"         -> modp
      | term MODP NUMBER               -> modp
+     | term "/" "_" "{" SIM ","? "}"  -> quotient
      | factor
 
 prefix: SUM "_" "{" (NAMEVAR | GREEKV) "=" expr "}" "^" sarg                         -> sum_prefix
       | LIM "_" "{" (NAMEVAR | GREEKV) RIGHTARROW expr "}"                           -> lim_prefix
       | FRAC "{" DIFF ("^" sarg)? "}" "{" dvar+ "}"                            -> deriv_prefix
+      | BIGCUP "{" (NAMEVAR | GREEKV) "=" expr "}" "^" sarg                          -> cup_prefix
 
 dvar: DIFF dbase                      -> dvar
     | DIFF dbase "^" sarg             -> dvar_pow
@@ -399,6 +401,7 @@ CDOT: /\\(cdot|times)(?![A-Za-z])/
 PM: /\\pm(?![A-Za-z])/
 MP: /\\mp(?![A-Za-z])/
 CUP: /\\cup(?![A-Za-z])/
+BIGCUP.2: /\\cup\s*_/
 SETMINUS: /\\setminus(?![A-Za-z])/
 MODP: /\\pmod(?![A-Za-z])/
 FORALL: /\\forall(?![A-Za-z])/
@@ -643,6 +646,8 @@ class _Build(Transformer):
     def apply_prefix(self, c):
         kind, data = c[0]
         body = c[1]
+        if kind == "cup":  # \cup_{i=a}^{b} X: the union of the family {X}_{i=a}^{b}
+            return sympy.Function("bigcup")(Family(_as_basic(body), sympy.Tuple(), sympy.Tuple(sympy.Tuple(*data))))
         if kind == "sum":
             var, lo, hi = data
             return sympy.Sum(body, (var, lo, hi))
@@ -653,6 +658,13 @@ class _Build(Transformer):
 
     def sum_prefix(self, c):
         return ("sum", (sympy.Symbol(_name(c[1])), c[2], c[3]))
+
+    def cup_prefix(self, c):
+        return ("cup", (sympy.Symbol(_name(c[1])), c[2], self._scalar(c[3])))
+
+    def quotient(self, c):
+        """``E_{n}^{\\alpha}/_{\\sim}`` (also as printed once, ``/_{\\sim,}``): the quotient set ``quot(E(n))``."""
+        return sympy.Function("quot")(_as_basic(c[0]))
 
     def lim_prefix(self, c):
         return ("lim", (sympy.Symbol(_name(c[1])), c[3]))
