@@ -398,18 +398,20 @@ def read_z_range():
     both lines that print it (they must agree): a function n -> the list of its integers.  Every listed element is
     read; two listed neighbours differ by 1, elements around ``\\ldots`` increase."""
 
-    ends = set()
+    sets = set()
     for lid in ("sec4_5-z-range", "sec4_5-z-range-2"):
-        tex = verbatim(lid)
-        m = re.search(r"exists an integer \$z\\in\\left\\\{(.*)\\right\\\}\s*\$", tex)
-        if not m:
+        got = lm.sentence("{lead:word} exists an integer {z} for which ...", verbatim(lid))
+        rel = lm.parse_relation(got["z"]) if got else None
+        if rel is None or rel.ops != ["in"] or rel.parts[0] != sp.Symbol("z") or rel.conditions:
             raise LatexMathError(f"{lid}: no 'exists an integer z in {{..}}'")
-        ends.add(m.group(1).replace(" ", ""))
-    if len(ends) != 1:
-        raise LatexMathError(f"the two lines print different ranges: {sorted(ends)}")
-    items = [x.strip() for x in re.split(r",(?![^()]*\\right\))", ends.pop().replace("\\left(", "(")
-                                                                     .replace("\\right)", ")"))]
-    exprs = [None if x == "\\ldots" else parse(x) for x in items]
+        sets.add(rel.parts[1])
+    if len(sets) != 1:
+        raise LatexMathError(f"the two lines print different ranges: {sorted(map(str, sets))}")
+    zset = sets.pop()
+    if not (isinstance(zset, sp.Function) and zset.func == lm.Family and not zset.args[1] and not zset.args[2]
+            and isinstance(zset.args[0], sp.Tuple)):
+        raise LatexMathError(f"not a listed set: {zset}")
+    exprs = [None if x == lm.LDOTS else section_names(x) for x in zset.args[0]]
     if exprs[0] is None or exprs[-1] is None:
         raise LatexMathError("the set starts or ends with an ellipsis")
 
