@@ -532,12 +532,16 @@ def phase_meaning() -> dict[str, bool]:
     of E_n, n <= 2."""
     import sympy as sp
 
-    tex = verbatim("sec4_5-phase-meaning")
-    pieces = [parse(x) for x in re.findall(r"\$([^$]*)\$", tex)]
-    if len(pieces) != 4 or not all(isinstance(x, (sp.sin, sp.cos)) for x in pieces):
-        raise LatexMathError(f"{len(pieces)} functions, not 4")
+    got = lm.sentence("i.e., function {f0} differs from {f1} only in a {what:words} and it can be expressed as a "
+                      "{how:words} of {f2} and {f3}", verbatim("sec4_5-phase-meaning"))
+    if got is None:
+        raise LatexMathError("sec4_5-phase-meaning: not 'function .. differs from .. only in a .. and it can be "
+                             "expressed as a .. of .. and ..'")
+    pieces = [parse(got[x]) for x in ("f0", "f1", "f2", "f3")]
+    if not all(isinstance(x, (sp.sin, sp.cos)) for x in pieces):
+        raise LatexMathError(f"not four functions cos/sin: {pieces}")
     f0, f1, f2, f3 = pieces
-    words = {"phase": "phase change" in tex, "combination": "linear combination" in tex and "differs" in tex}
+    words = {"phase": got["what"] == "phase change", "combination": got["how"] == "linear combination"}
     same_arg = f1.args[0] == f2.args[0] == f3.args[0] and {type(f2), type(f3)} == {sp.sin, sp.cos}
     cos_x, sin_x = (f2, f3) if isinstance(f2, sp.cos) else (f3, f2)
     same_function = type(f0) is type(f1)
