@@ -591,43 +591,46 @@ _register_phase("sin", "each '=' step of the sin chain read from the transcripti
 
 
 # -- readers of the worked examples (triples ru+gv+bw as printed) -------------------------------------------------
-def read_triple(expr: str, **env: int) -> tuple[int, int, int]:
-    """``(r, g, b)`` of a printed combination such as ``1\\cdot u+3\\cdot v+2\\cdot w``, ``v+2w`` or
-    ``0\\cdot u+g\\cdot v+2\\cdot w`` (a letter coefficient taken from ``env``)."""
-    text = expr.replace("\\cdot", "").replace(" ", "").replace("%", "")
-    out = {"u": 0, "v": 0, "w": 0}
-    terms = [t for t in text.split("+") if t]
-    for term in terms:
-        m = re.fullmatch(r"(\d*|[a-z])([uvw])", term)
-        if not m:
-            raise ValueError(f"unread term {term!r} of {expr!r}")
-        c = m.group(1)
-        out[m.group(2)] += int(c) if c.isdigit() else (env[c] if c else 1)
-    return out["u"], out["v"], out["w"]
+def _family(item):
+    """``(member, conditions, bounds)`` of a parsed set (latex_math's ``Family``); :class:`LatexMathError` otherwise."""
+    if not (isinstance(item, sp.Function) and item.func == lm.Family):
+        raise LatexMathError(f"not a set: {item}")
+    return item.args
 
 
-_DOMAIN = re.compile(r":\\left\(\s*u,v,w\\right\)\s*\\in\s*\\Omega\^\{\\alpha\s*\}\s*\\right\\\}")
+@cache
+def _omega_domain() -> tuple:
+    """The condition ``\\left( u,v,w\\right) \\in\\Omega^{\\alpha}`` of a set of functions, as the reader reads it."""
+    return tuple(_family(lm.parse(r"\left\{ u:\left( u,v,w\right) \in\Omega^{\alpha}\right\}"))[1])
 
 
-def read_cos_args(tex: str) -> list[tuple[int, int, int]]:
-    """Arguments of the printed ``\\cos\\left( .. \\right)`` of a set of functions, each with its ``\\sin``; the set
-    must end with its domain ``:\\left( u,v,w\\right) \\in\\Omega^{\\alpha}\\right\\}``."""
-    if len(_DOMAIN.findall(tex)) != 1:
-        raise ValueError("the set does not end with its domain (u,v,w) in Omega^alpha")
-    cos = re.findall(r"\\cos\\left\(\s*([^()]*?)\s*\\right\)", tex)
-    sin = re.findall(r"\\sin\\left\(\s*([^()]*?)\s*\\right\)", tex)
-    if sorted(cos) != sorted(sin):
-        raise ValueError(f"cos and sin arguments differ: {cos} vs {sin}")
-    return [read_triple(x) for x in cos]
+def cos_sin_triples(item) -> list[tuple[int, int, int]]:
+    """The triples (r, g, b) of the ``\\cos\\left( ru+gv+bw\\right)`` of a parsed set of functions
+    ``\\left\\{ \\cos\\left( .. \\right) ,\\sin\\left( .. \\right) ,..:\\left( u,v,w\\right) \\in\\Omega^{\\alpha}
+    \\right\\}``: each cos with its sin, the one condition its domain (u,v,w) in Omega^alpha, no bounds."""
+    members, conds, bounds = _family(item)
+    funcs = list(members) if isinstance(members, sp.Tuple) else [members]
+    if bounds or tuple(conds) != _omega_domain():
+        raise LatexMathError(f"the set does not end with its domain (u,v,w) in Omega^alpha: {tuple(conds)}")
+    if not all(isinstance(f, (sp.cos, sp.sin)) for f in funcs):
+        raise LatexMathError(f"not a set of cos and sin: {funcs}")
+    cos = sorted((f.args[0] for f in funcs if isinstance(f, sp.cos)), key=sp.default_sort_key)
+    sin = sorted((f.args[0] for f in funcs if isinstance(f, sp.sin)), key=sp.default_sort_key)
+    if cos != sin:
+        raise LatexMathError(f"cos and sin arguments differ: {cos} vs {sin}")
+    return [linear_triple(x) for x in cos]
 
 
-def read_class_family(tex: str) -> list[tuple[int, int, int]]:
-    """The classes ``\\left\\{ \\left[ .. \\right] \\right\\} _{g=a}^{b}`` of a printed family."""
-    m = re.search(r"\\left\[\s*(.*?)\s*\\right\]\s*\\right\\\}\s*_\{(\w)=(\d+)\}\^\{(\d+)\}", tex)
-    if not m:
-        raise ValueError(f"no family of classes in {tex[:50]!r}")
-    expr, var, lo, hi = m.groups()
-    return [read_triple(expr, **{var: x}) for x in range(int(lo), int(hi) + 1)]
+def class_family(item, env: dict | None = None) -> list[tuple[int, int, int]]:
+    """The triples of the classes ``\\left\\{ \\left[ .. \\right] \\right\\} _{g=a}^{b}`` of a parsed family (one
+    bound, no condition; the bounds evaluated with ``env``), in the order of the bound."""
+    member, conds, bounds = _family(item)
+    if conds or len(bounds) != 1 or not (isinstance(member, sp.Function) and member.func.__name__ == "cls"):
+        raise LatexMathError(f"not a family of classes over one bound: {item}")
+    var, lo, hi = bounds[0]
+    env = dict(env or {})
+    return [linear_triple(member.args[0], {**env, str(var): x})
+            for x in range(bound(lo, **env), bound(hi, **env) + 1)]
 
 
 def _texts(ids, override=None) -> dict[str, str]:
@@ -788,6 +791,27 @@ def read_if_then(tex: str) -> tuple[list[dict], list[str]]:
     return envs, _math(m.group(2))
 
 
+def read_v_step(rows: tuple[str, ...]) -> tuple[int, int, list[tuple[int, int, int]]]:
+    """``V_{a}^{\\alpha}=V_{b}^{\\alpha}\\cup\\left\\{ ..\\right\\}`` and the rows that go on with ``& \\cup\\left\\{
+    ..\\right\\}`` (each read by :func:`latex_math.parse_relation`): a, b and the triples of every set's cos
+    (:func:`cos_sin_triples`)."""
+    first = lm.parse_relation(rows[0])
+    if first.lead or first.ops != ["="] or first.conditions:
+        raise LatexMathError(f"not V_a = V_b cup {{..}}: {first.ops}")
+    lhs, rhs = first.parts
+    if not (rhs.func.__name__ == "cup" and len(rhs.args) == 2 and all(
+            x.func.__name__ == "V" and len(x.args) == 1 and x.args[0].is_Integer for x in (lhs, rhs.args[0]))):
+        raise LatexMathError(f"not V_a = V_b cup {{..}}: {lhs} = {rhs}")
+    sets = [rhs.args[1]]
+    for row in rows[1:]:
+        r = lm.parse_relation(row)
+        if r.lead or r.ops or r.conditions or len(r.parts) != 1 or r.parts[0].func.__name__ != "cup" or len(
+                r.parts[0].args) != 1:
+            raise LatexMathError(f"not a row '\\cup{{..}}': {r.parts}")
+        sets.append(r.parts[0].args[0])
+    return int(lhs.args[0]), int(rhs.args[0].args[0]), [x for fam in sets for x in cos_sin_triples(fam)]
+
+
 def _orders_1_2() -> dict[str, bool]:
     """The worked text of orders 1 and 2, every statement read from its transcription and checked with the class keys
     of phase equivalence."""
@@ -876,17 +900,12 @@ def _orders_1_2() -> dict[str, bool]:
     out["2v2w_is_2u"] = a_cls[0] == b_cls[0] == "class" and a_cls[1] == b_cls[1] and relation_chain_holds(
         pieces[1]) and "must be ignored" in t["sec4_5-n2-2v2w"] and "reappear" in t["sec4_5-n2-2v2w"]
     # the six classes of order 2, V_1 and V_2
-    n2 = [c for r in (1, 2, 3) for c in read_class_family(t[f"sec4_5-n2-classes-row{r}"])]
+    n2 = [c for r in (1, 2, 3) for c in class_family(lm.parse(t[f"sec4_5-n2-classes-row{r}"]))]
     out["six_classes_n2"] = {k(x) for x in n2} == new_class_keys(2) and len(n2) == 6
-    v1 = read_cos_args(t["sec4_5-V1"])
-    m1 = re.match(r"\s*V_\{(\d+)\}\^\{\\alpha\}=V_\{(\d+)\}\^\{\\alpha\}\\cup", t["sec4_5-V1"])
-    out["V1"] = bool(m1) and {k(x) for x in v1} == new_class_keys(int(m1.group(1))) and len(set(v1)) == 3 and int(
-        m1.group(2)) == int(m1.group(1)) - 1 == 0
-    v2 = [x for r in (1, 2, 3) for x in read_cos_args(t[f"sec4_5-V2-row{r}"])]
-    m2 = re.match(r"\s*V_\{(\d+)\}\^\{\\alpha\}=\s*&\s*V_\{(\d+)\}\^\{\\alpha\}\\cup", t["sec4_5-V2-row1"])
-    rows_cup = all(re.match(r"\s*&\s*\\cup\\left\\\{", t[f"sec4_5-V2-row{r}"]) for r in (2, 3))
-    out["V2"] = bool(m2) and rows_cup and {k(x) for x in v2} == new_class_keys(int(m2.group(1))) and len(set(v2)) == 6 \
-        and int(m2.group(2)) == int(m2.group(1)) - 1 == 1
+    order, prev, v1 = read_v_step((t["sec4_5-V1"],))
+    out["V1"] = {k(x) for x in v1} == new_class_keys(order) and len(set(v1)) == 3 and prev == order - 1 == 0
+    order, prev, v2 = read_v_step(tuple(t[f"sec4_5-V2-row{r}"] for r in (1, 2, 3)))
+    out["V2"] = {k(x) for x in v2} == new_class_keys(order) and len(set(v2)) == 6 and prev == order - 1 == 1
     return out
 
 
@@ -917,14 +936,16 @@ def check_b2() -> LineResult:
     the new classes of E_2 met by (r, g, b); corrected: those met with r <= g (the cases the text treats)."""
     how = ("new classes of E_2 met by the triples (r, g, b) with the printed b: all of them (printed), those with "
            "r <= g (corrected), against the printed family and count (read from the transcription)")
-    tex = verbatim("sec4_5-n2-b2-three")
-    m = re.fullmatch(r"Thus, equality \$b=(\d+)\$ generates only (\w+) acceptable equivalence classes, namely "
-                     r"\$(.*)\$", tex)
+    got = lm.sentence("Thus, equality {b} generates only {count:count} acceptable equivalence classes, namely {fam}",
+                      verbatim("sec4_5-n2-b2-three"))
     try:
-        if not m or m.group(2) not in NUMBER_WORDS:
+        if not got or got["count"] is None:
             raise ValueError("unread line")
-        bb, count = int(m.group(1)), NUMBER_WORDS[m.group(2)]
-        fam = read_class_family(m.group(3))
+        rel = lm.parse_relation(got["b"])
+        if rel.ops != ["="] or rel.parts[0] != sp.Symbol("b") or not rel.parts[1].is_Integer or rel.conditions:
+            raise ValueError(f"not b = an integer: {got['b']!r}")
+        bb, count = int(rel.parts[1]), got["count"]
+        fam = class_family(lm.parse(got["fam"]))
         keys = {class_key(t) for t in fam}
     except (ValueError, TypeError) as exc:
         return LineResult(False, how=how, kind="proof", detail={"unread": str(exc)})
@@ -936,40 +957,60 @@ def check_b2() -> LineResult:
 
 
 # -- Proposition iterative_construction_of_trivariate_extension ---------------------------------------------------
+def _union_items(x) -> list:
+    """The sets of a parsed union ``A\\cup B\\cup C`` (read as ``cup(cup(A, B), C)``), in the printed order."""
+    return [y for a in x.args for y in _union_items(a)] if x.func.__name__ == "cup" else [x]
+
+
 def read_prop_families(tex: str, n: int) -> list[tuple[int, int, int]]:
     """The representatives of the printed families ``\\left\\{ \\left[ .. \\right] \\right\\} _{g=0}^{n-1}`` of
-    Proposition iterative_construction_of_trivariate_extension at order n, read from the transcription."""
+    Proposition iterative_construction_of_trivariate_extension at order n, read from the transcription (the right
+    side of its equation, by :func:`latex_math.parse_relation`)."""
 
-    fams = re.findall(r"\\left\\\{\s*\\left\[\s*(.*?)\s*\\right\]\s*\\right\\\}"
-                      r"\s*_\{(\w)=([^{}]+)\}\^\{([^{}]+)\}", tex)
+    rel = lm.parse_relation(tex)
+    if rel.ops != ["="] or rel.conditions:
+        raise ValueError(f"not one equation: {rel.ops}")
+    fams = _union_items(rel.parts[1])
     if len(fams) != 3:
         raise ValueError(f"{len(fams)} families of classes, not 3")
-    return [linear_triple(parse(expr), {"n": n, var: x}) for expr, var, lo, hi in fams
-            for x in range(bound(lo, n=n), bound(hi, n=n) + 1)]
+    return [t for fam in fams for t in class_family(fam, {"n": n})]
 
 
-_UNION = re.compile(r"E_\{n\}\^\{\\alpha\}/_\{\\sim\}\\setminus\\left\(\s*\\cup_\{i=(\d+)\}\^\{([^{}]+)\}E_\{i\}"
-                    r"\^\{\\alpha\}/_\{\\sim\s*\}\\right\)")
+def _removed_union(x) -> tuple[int, sp.Expr]:
+    """``E_{n}^{\\alpha}/_{\\sim}\\setminus\\left( \\cup_{i=a}^{b}E_{i}^{\\alpha}/_{\\sim}\\right)``, parsed: a (an
+    integer) and b (an expression in n)."""
+    n, i = sp.symbols("n i")
+    quot, e_ = sp.Function("quot"), sp.Function("E")
+    if not (x.func.__name__ == "setminus" and x.args[0] == quot(e_(n)) and x.args[1].func.__name__ == "bigcup"):
+        raise ValueError(f"not E_n/~ minus a union: {x}")
+    member, conds, bounds = _family(x.args[1].args[0])
+    if member != quot(e_(i)) or conds or len(bounds) != 1 or bounds[0][0] != i or not bounds[0][1].is_Integer:
+        raise ValueError(f"not the union of E_i/~ over i = a..b: {x.args[1]}")
+    return int(bounds[0][1]), bounds[0][2]
 
 
-def read_prop() -> tuple[int, str]:
+def read_prop() -> tuple[int, sp.Expr]:
     """The union cup_{i=a}^{b} E_i/~ removed from E_n/~ in both lines of the Proposition (they must agree), and the
-    recurrence's other parts: V_n = V_{n-1} cup {cos, sin of one combination : (u,v,w) in Omega, [the same] in ..}."""
-    texts = [verbatim("sec4_5-prop-recurrence").replace("%", " "), verbatim("sec4_5-prop-new-classes")]
-    unions = {m for t in texts for m in _UNION.findall(t)}
-    if len(unions) != 1 or not all(_UNION.search(t) for t in texts):
-        raise ValueError(f"the unions differ or are unread: {sorted(unions)}")
-    rec = texts[0]
-    m = re.match(r"\s*V_\{n\}\^\{\\alpha\}=V_\{n-1\}\^\{\\alpha\}\\cup\\left\\\{\s*"
-                 r"\\cos\\left\(\s*ru\+gv\+bw\\right\)\s*,"
-                 r"\\sin\\left\(\s*ru\+gv\+bw\\right\)\s*:\\left\(\s*u,v,w\\right\)\s*\\in\\Omega\^\{\\alpha\s*\},~"
-                 r"\\left\[\s*ru\+gv\+bw\\right\]\s*\\in\s*(.*?)\\right\\\}\s*\\\]\s*$", rec)
-    if not m or not _UNION.fullmatch(m.group(1).strip()):
+    recurrence's other parts: V_n = V_{n-1} cup {cos, sin of one combination : (u,v,w) in Omega, [the same] in ..}
+    (both lines read by :func:`latex_math.parse_relation`)."""
+    rec = lm.parse_relation(verbatim("sec4_5-prop-recurrence"))
+    new = lm.parse_relation(verbatim("sec4_5-prop-new-classes"))
+    n = sp.Symbol("n")
+    v_ = sp.Function("V")
+    if rec.lead or rec.ops != ["="] or rec.conditions or new.ops != ["="]:
         raise ValueError("unread recurrence")
-    if not re.match(r"\s*E_\{n\}\^\{\\alpha\}/_\{\\sim\}\\setminus\\left\(\s*\\cup.*?\\right\)\s*=", texts[1]):
-        raise ValueError("unread left side of the new classes")
-    lo, hi = unions.pop()
-    return int(lo), hi
+    lhs, rhs = rec.parts
+    if lhs != v_(n) or rhs.func.__name__ != "cup" or len(rhs.args) != 2 or rhs.args[0] != v_(n - 1):
+        raise ValueError(f"unread recurrence: {lhs} = {rhs}")
+    members, conds, bounds = _family(rhs.args[1])
+    x = lm.parse("ru+gv+bw")
+    if bounds or members != sp.Tuple(sp.cos(x), sp.sin(x)) or len(conds) != 2 or (conds[0],) != _omega_domain() \
+            or conds[1].func.__name__ != "In" or conds[1].args[0] != sp.Function("cls")(x):
+        raise ValueError(f"unread recurrence set: {rhs.args[1]}")
+    union = _removed_union(conds[1].args[1])
+    if _removed_union(new.parts[0]) != union:
+        raise ValueError(f"the unions differ: {conds[1].args[1]} and {new.parts[0]}")
+    return union
 
 
 def prop_sets_agree(n_max: int, lowest: int, top: str) -> dict[int, bool]:
