@@ -71,7 +71,8 @@ from lark.exceptions import LarkError, UnexpectedCharacters, UnexpectedEOF, Unex
 
 __all__ = ["LatexMathError", "Relation", "parse", "parse_relation", "parse_cases", "parse_vector", "index_set",
            "inline_math", "prose", "sentence", "NUMBER_WORDS", "evaluate_sums", "Term", "terms", "untagged",
-           "parse_conditions", "summands", "clean", "D", "Family", "Cases", "PM"]
+           "parse_conditions", "summands", "clean", "D", "Family", "Cases", "PM", "Chain",
+           "chain_relation"]
 
 
 class LatexMathError(ValueError):
@@ -81,6 +82,9 @@ class LatexMathError(ValueError):
 D = sympy.Function("D")
 Family = sympy.Function("Family")
 Cases = sympy.Function("Cases")
+#: a case value printed as a relation chain (``\left[ w\right] \in E_{1}^{\alpha}/_{\sim}``) inside an expression:
+#: ``Chain(part, Symbol(op), part, ..)``; :func:`chain_relation` gives the :class:`Relation` back
+Chain = sympy.Function("Chain")
 PM = sympy.Symbol("pm")
 LDOTS = sympy.Symbol("ldots")
 
@@ -838,7 +842,7 @@ class _Build(Transformer):
     def cases(self, c):
         k = int(str(c[1]).strip("@")[3:])
         rows = self.arrays[k]
-        return Cases(*[sympy.Tuple(v, cnd if isinstance(cnd, sympy.Basic) else sympy.Symbol(cnd))
+        return Cases(*[sympy.Tuple(_chain_value(v), cnd if isinstance(cnd, sympy.Basic) else sympy.Symbol(cnd))
                        for v, cnd in _case_rows(rows)])
 
     def array(self, c):
@@ -1276,11 +1280,39 @@ def _case_rows(rows: list[list[str]]) -> list[tuple[Any, Any]]:
             continue
         v = _join_rows(pending, v).strip().rstrip(",").strip()
         pending = ""
-        value = _run("start_expr", v, [])
+        try:
+            value = _run("start_expr", v, [])
+        except LatexMathError as exc:  # a value printed as a relation chain: [w] \in E_{1}/_{\sim} (Section 4)
+            try:
+                value = _run("start_relation", v, [])
+            except LatexMathError:
+                raise exc from None
+            if not isinstance(value, Relation) or value.lead:
+                raise
         out.append((value, parse_condition_clean(cnd)))
     if pending:
         raise LatexMathError(f"a case value without its condition: {pending[:60]!r}")
     return out
+
+
+def _chain_value(v):
+    """A case value inside an expression: a :class:`Relation` as ``Chain(part, Symbol(op), part, ..)``."""
+    if not isinstance(v, Relation):
+        return v
+    return Chain(*[x for k, p in enumerate(v.parts) for x in ((p,) if k == 0 else (sympy.Symbol(v.ops[k - 1]), p))])
+
+
+def chain_relation(x) -> Relation:
+    r"""The :class:`Relation` of a case value printed as a chain (``Chain``, see :func:`_chain_value`).
+
+    >>> cases = parse(r"\left\{ \begin{array}{rc} \left[ w\right] =\left[ u+v\right]  & g=1 \end{array}\right.")
+    >>> r = chain_relation(cases.args[0][0])
+    >>> r.parts, r.ops
+    ([cls(w), cls(u + v)], ['='])
+    """
+    if not (isinstance(x, sympy.Basic) and x.func == Chain and len(x.args) % 2 == 1):
+        raise LatexMathError(f"not a chain of relations: {x}")
+    return Relation(list(x.args[0::2]), [str(op) for op in x.args[1::2]])
 
 
 def _join_rows(head: str, tail: str) -> str:

@@ -648,147 +648,123 @@ def check_examples_n3() -> LineResult:
     try:
         got = []
         for lid in ("sec4_5-examples-n3-1", "sec4_5-examples-n3-2", "sec4_5-examples-n3-3"):
-            tex = verbatim(lid).strip().rstrip(".,")
-            parts = split_relations(tex)
-            triples = [linear_triple(parse(x)) for x in parts[0::2]]
+            rel = lm.parse_relation(verbatim(lid))
+            triples = [linear_triple(section_names(x)) for x in rel.parts]
             in_e3 = all(0 <= c <= 3 for t in triples for c in t)
-            got.append(in_e3 and len(parts) >= 3 and relation_chain_holds(tex))
+            got.append(in_e3 and len(rel.parts) >= 2 and relation_chain_holds(rel))
     except (LatexMathError, TypeError) as exc:
         return LineResult(False, how=how, kind="proof", detail={"unread": str(exc)})
     return LineResult(all(got), how=how, kind="proof", detail={"lines_hold": got})
 
 
 # -- orders 1 and 2 -----------------------------------------------------------------------------------------------
-_REL = re.compile(r"(\\nsim|\\sim(?![a-z])|\\notin|\\in(?![a-z])|=)")
+def set_of_classes(x, env: dict | None = None) -> set:
+    """The class keys of a parsed set of classes: ``E_{a}^{\\alpha}/_{\\sim}`` (``quot(E(a))``), a difference
+    ``\\setminus`` and a union ``\\cup`` of such sets (indices evaluated with ``env``)."""
+    name = x.func.__name__
+    if name == "quot" and x.args[0].func.__name__ == "E" and len(x.args[0].args) == 1:
+        a = section_names(x.args[0].args[0]).subs({sp.Symbol(k): v for k, v in (env or {}).items()})
+        if not a.is_Integer:
+            raise LatexMathError(f"index {a} is not an integer")
+        return classes_of(int(a))
+    if name == "setminus":
+        return set_of_classes(x.args[0], env) - set_of_classes(x.args[1], env)
+    if name == "cup" and len(x.args) == 2:
+        return set_of_classes(x.args[0], env) | set_of_classes(x.args[1], env)
+    raise LatexMathError(f"not a quotient set: {x}")
 
 
-def split_relations(math: str) -> list[str]:
-    """``[item, relation, item, ...]``: ``math`` split at the relations of brace depth 0."""
-    out, depth, last = [], 0, 0
-    for m in re.finditer(r"[{}]|" + _REL.pattern, math):
-        tok = m.group()
-        if tok == "{":
-            depth += 1
-        elif tok == "}":
-            depth -= 1
-        elif depth == 0:
-            out += [math[last:m.start()], tok]
-            last = m.end()
-    return out + [math[last:]]
+def read_item(x, env: dict | None = None):
+    """One member of a parsed relation chain: ``("class", key)`` of ``\\left[ ..\\right]`` (``cls``), ``("set",
+    keys)`` of a quotient set (:func:`set_of_classes`) or ``("triple", t)`` of a combination ru+gv+bw."""
+
+    if x.func.__name__ == "cls":
+        return "class", class_key(linear_triple(section_names(x.args[0]), env))
+    if x.func.__name__ in ("quot", "setminus", "cup"):
+        return "set", set_of_classes(x, env)
+    return "triple", linear_triple(section_names(x), env)
 
 
-def read_set_of_classes(item: str, env: dict | None = None) -> set:
-    """``E_{a}^{\\alpha}/_{\\sim}`` or ``E_{a}/_{\\sim}\\setminus\\left( E_{b}/_{\\sim}\\cup ..\\right)``: the class
-    keys of E_a not in the removed E_b (indices evaluated with ``env``)."""
-
-    text = item.replace("%", " ")
-    head, _, removed = text.partition("\\setminus")
-    idx = re.findall(r"E_\{([^{}]+)\}\^\{\\alpha\s*\}\s*/_\{\\sim,?\}", head)
-    if len(idx) != 1 or re.sub(r"E_\{[^{}]+\}\^\{\\alpha\s*\}\s*/_\{\\sim,?\}", "", head).strip():
-        raise LatexMathError(f"not a quotient set: {item[:40]!r}")
-    pat = r"E_\{([^{}]+)\}\^\{\\alpha\s*\}\s*/_\{\\sim,?\}"
-    gone = re.findall(pat, removed)
-    rest = re.sub(pat, "", removed)
-    rest = re.sub(r"^\s*\\left\(|\\right\)\s*$", "", rest.strip()) if len(gone) > 1 else rest
-    if re.sub(r"\\cup|\s", "", rest) or (removed.strip() and not gone):
-        raise LatexMathError(f"unread removed sets {removed[:40]!r}")
-
-    def val(x: str) -> int:
-        e = parse(x).subs({k: v for k, v in (env or {}).items()})
-        if not e.is_Integer:
-            raise LatexMathError(f"index {x!r} is not an integer")
-        return int(e)
-
-    out = classes_of(val(idx[0]))
-    for g in gone:
-        out -= classes_of(val(g))
-    return out
-
-
-def read_item(item: str, env: dict | None = None):
-    """One member of a printed relation chain: ``("class", key)``, ``("set", keys)`` or ``("triple", t)``."""
-
-    text = item.strip().replace("%", " ").strip()
-    m = re.fullmatch(r"\\left\[\s*(.*?)\s*\\right\]", text)
-    if m:
-        return "class", class_key(linear_triple(parse(m.group(1)), env))
-    if "E_{" in text:
-        return "set", read_set_of_classes(text, env)
-    return "triple", linear_triple(parse(text), env)
-
-
-def relation_chain_holds(math: str, env: dict | None = None) -> bool:
+def relation_chain_holds(rel, env: dict | None = None) -> bool:
     """Every link of a printed chain such as ``1\\cdot u+1\\cdot v+1\\cdot w\\sim0\\cdot u+..\\in\\left[ 0\\right]
-    \\in E_{0}^{\\alpha}/_{\\sim}`` against the class keys (``~``: same class; ``\\in`` a class: same class; ``=``
-    of classes: same key; ``\\in`` a set: member); a link the reader does not know raises."""
+    \\in E_{0}^{\\alpha}/_{\\sim}`` (a text, read by :func:`latex_math.parse_relation`, or the parsed relation) against
+    the class keys (``~``: same class; ``\\in`` a class: same class; ``=`` of classes: same key; ``\\in`` a set:
+    member); a link the reader does not know raises."""
 
-    parts = split_relations(math)
-    items = [read_item(x, env) for x in parts[0::2]]
-    rels = parts[1::2]
-    if not rels:
-        raise LatexMathError(f"no relation in {math[:40]!r}")
+    if isinstance(rel, str):
+        rel = lm.parse_relation(rel)
+    if not isinstance(rel, lm.Relation) or rel.lead or rel.conditions or not rel.ops:
+        raise LatexMathError(f"not a chain of relations: {rel}")
+    items = [read_item(x, env) for x in rel.parts]
     ok = True
-    for (ka, a), rel, (kb, b) in zip(items, rels, items[1:]):
+    for (ka, a), rel_op, (kb, b) in zip(items, rel.ops, items[1:]):
         ka_key = class_key(a) if ka == "triple" else a
         if kb == "set":
             if ka == "set":
                 raise LatexMathError("a set related to a set")
-            ok &= (ka_key in b) == (rel == "\\in")
-            if rel not in ("\\in", "\\notin"):
-                raise LatexMathError(f"{rel} before a set")
-        elif rel in ("\\sim", "\\nsim", "=", "\\in"):
+            if rel_op not in ("in", "notin"):
+                raise LatexMathError(f"{rel_op} before a set")
+            ok &= (ka_key in b) == (rel_op == "in")
+        elif rel_op in ("sim", "nsim", "=", "in"):
             kb_key = class_key(b) if kb == "triple" else b
-            if rel == "\\in" and kb != "class":
+            if rel_op == "in" and kb != "class":
                 raise LatexMathError("\\in before a combination")
-            if rel == "=" and (ka, kb) != ("class", "class"):
+            if rel_op == "=" and (ka, kb) != ("class", "class"):
                 raise LatexMathError("= between combinations")
-            ok &= (ka_key == kb_key) == (rel != "\\nsim")
+            ok &= (ka_key == kb_key) == (rel_op != "nsim")
         else:
-            raise LatexMathError(f"unknown link {rel}")
+            raise LatexMathError(f"unknown link {rel_op}")
     return ok
-
-
-def _math(tex: str) -> list[str]:
-    return re.findall(r"\$([^$]*)\$", tex)
 
 
 def read_order_classes(tex: str) -> dict[str, bool]:
     """``\\left[ ru+gv+bw\\right] \\in E_{a}/_{\\sim}\\setminus .., where at least one of the coefficients r,g,b is
-    equal to $c$``: every new class of the printed difference of quotient sets is met, in E_a, only by triples with a
-    coefficient c (the new classes of order a are those of the triples with a coefficient a)."""
+    equal to $c$`` (the words by :func:`latex_math.sentence`, the display and c by the reader): every new class of the
+    printed difference of quotient sets is met, in E_a, only by triples with a coefficient c (the new classes of
+    order a are those of the triples with a coefficient a)."""
 
-    m = re.search(r"\\left\[\s*ru\+gv\+bw\\right\]\s*\\in(.*?),\s*\\\]\s*where at least one of the coefficients "
-                  r"\$r,g,b\$ is equal to \$(\d+)\$\.", tex)
-    if not m:
+    got = lm.sentence(r"{display:words} \] where at least one of the coefficients $r,g,b$ is equal to {c}.", tex)
+    if not got:
         raise LatexMathError("no 'classes in E_a/~ \\ .. where at least one of r,g,b is equal to c'")
-    new = read_set_of_classes(m.group(1))
-    order = int(re.search(r"E_\{(\d+)\}", m.group(1)).group(1))
-    c = int(m.group(2))
-    members = [t for t in E(order) if class_key(t) in new]
-    return {"classes_new": bool(new) and new == new_class_keys(order),
-            "coefficient_c": all(c in t for t in members)}
+    rel = lm.parse_relation(got["display"])
+    if rel.lead or rel.ops != ["in"] or rel.conditions or rel.parts[0] != sp.Function("cls")(lm.parse("ru+gv+bw")):
+        raise LatexMathError(f"not [ru+gv+bw] in a set of classes: {rel.parts}")
+    new = set_of_classes(rel.parts[1])
+    head = rel.parts[1].args[0] if rel.parts[1].func.__name__ == "setminus" else rel.parts[1]
+    order = head.args[0].args[0] if head.func.__name__ == "quot" else None
+    c = parse(got["c"])
+    if not (order is not None and order.is_Integer and c.is_Integer):
+        raise LatexMathError(f"the order {order} or the coefficient {c} is not an integer")
+    members = [t for t in E(int(order)) if class_key(t) in new]
+    return {"classes_new": bool(new) and new == new_class_keys(int(order)),
+            "coefficient_c": all(int(c) in t for t in members)}
 
 
 def read_if_then(tex: str) -> tuple[list[dict], list[str]]:
-    """``If $r=a$ and $g\\in\\left\\{ ..\\right\\} $, then $..$``: the environments the condition allows and the
-    math of the conclusion."""
+    """``If $r=a$ and $g\\in\\left\\{ ..\\right\\} $, then $..$`` (the words by :func:`latex_math.sentence`, each
+    condition by :func:`latex_math.parse_relation`): the environments the condition allows and the math of the
+    conclusion."""
 
-    m = re.match(r"\s*If (.*?), then (.*)$", tex)
-    if not m:
+    got = lm.sentence("If {cond:words}, then {concl:words}", tex)
+    if not got:
         raise LatexMathError("no 'If .., then ..'")
     envs: list[dict] = [{}]
-    for cond in _math(m.group(1)):
-        for piece in [x for x in re.split(r",(?![^{}]*\\right\\\})", cond) if x.strip()]:
-            ms = re.fullmatch(r"\s*(\w)\s*\\in\s*\\left\\\{(.*)\\right\\\}\s*", piece)
-            if ms:
-                vals = [int(parse(x)) for x in ms.group(2).split(",")]
-                envs = [{**e, ms.group(1): x} for e in envs for x in vals]
+    for seg in lm.inline_math(got["cond"]):
+        top = lm.parse_relation(seg)
+        for rel in (top, *top.conditions):
+            if rel.ops == ["in"] and rel.parts[0].is_Symbol:
+                members, conds, bounds = _family(rel.parts[1])
+                if conds or bounds:
+                    raise LatexMathError(f"not a listed set: {rel.parts[1]}")
+                vals = [int(x) for x in (members if isinstance(members, sp.Tuple) else (members,))]
+                envs = [{**e, str(rel.parts[0]): x} for e in envs for x in vals]
                 continue
-            parts = chain(piece)
-            if len(parts) < 2 or not parts[-1].is_Integer or not all(p.is_Symbol for p in parts[:-1]):
-                raise LatexMathError(f"unread condition {piece!r}")
+            parts = rel.parts
+            if rel.lead or set(rel.ops) != {"="} or not parts[-1].is_Integer or \
+                    not all(p.is_Symbol for p in parts[:-1]):
+                raise LatexMathError(f"unread condition {seg!r}")
             envs = [{**e, **{str(p): int(parts[-1]) for p in parts[:-1]}} for e in envs]
-    return envs, _math(m.group(2))
+    return envs, lm.inline_math(got["concl"])
 
 
 def read_v_step(rows: tuple[str, ...]) -> tuple[int, int, list[tuple[int, int, int]]]:
@@ -812,6 +788,14 @@ def read_v_step(rows: tuple[str, ...]) -> tuple[int, int, list[tuple[int, int, i
     return int(lhs.args[0]), int(rhs.args[0].args[0]), [x for fam in sets for x in cos_sin_triples(fam)]
 
 
+def _first_class(concl: list[str]):
+    """The combination inside the first class ``\\left[ ..\\right]`` of the one formula of a conclusion."""
+    first = lm.parse_relation(concl[0]).parts[0] if len(concl) == 1 else None
+    if first is None or first.func.__name__ != "cls":
+        raise LatexMathError(f"no class first in {concl}")
+    return section_names(first.args[0])
+
+
 def _orders_1_2() -> dict[str, bool]:
     """The worked text of orders 1 and 2, every statement read from its transcription and checked with the class keys
     of phase equivalence."""
@@ -822,33 +806,31 @@ def _orders_1_2() -> dict[str, bool]:
     out: dict[str, bool] = {}
     for lid in ("sec4_5-order1-classes", "sec4_5-order2-classes"):
         out.update({f"{lid}:{x}": v for x, v in read_order_classes(t[lid]).items()})
-    rel = t["sec4_5-order1-relations"]
-    pieces = _math(rel)
-    out["order1_relations"] = rel.startswith("Since") and len(pieces) == 4 and all(
-        relation_chain_holds(x) for x in pieces)
+    got = lm.sentence("Since {a}, {b}, {c} and {d}", t["sec4_5-order1-relations"])
+    out["order1_relations"] = got is not None and all(relation_chain_holds(got[x]) for x in "abcd")
     # b = 2 (the case the text assumes), r = g = 2
     envs, concl = read_if_then(t["sec4_5-n2-222"])
-    first = re.match(r"\s*\\left\[\s*(.*?)\s*\\right\]", concl[0]) if len(concl) == 1 else None
-    if not first:
-        raise LatexMathError("sec4_5-n2-222: no class")
-    out["222"] = len(envs) == 1 and relation_chain_holds(concl[0]) and linear_triple(parse(first.group(1))) == (
+    first = _first_class(concl)
+    out["222"] = len(envs) == 1 and relation_chain_holds(concl[0]) and linear_triple(first) == (
         envs[0].get("r"), envs[0].get("g"), 2)
     # 0 < r <= g <= 2, i.e. r = 1, g in {1, 2}; z = min{r, g} = 1
-    pieces = _math(t["sec4_5-n2-r1"])
-    if len(pieces) != 3:
-        raise LatexMathError("sec4_5-n2-r1: not three formulas")
-    ineq = re.split(r"(<|\\leq)", pieces[0].replace(" ", ""))
-    terms = [parse(x) for x in ineq[0::2]]
+    got = lm.sentence("If {ineq}, i.e., if {cond}, then let {z}", t["sec4_5-n2-r1"])
+    if got is None:
+        raise LatexMathError("sec4_5-n2-r1: not 'If .., i.e., if .., then let ..'")
+    ineq = lm.parse_relation(got["ineq"])
+    if ineq.lead or ineq.conditions or not set(ineq.ops) <= {"<", "<="}:
+        raise LatexMathError(f"sec4_5-n2-r1: not a chain of < and <=: {ineq.ops}")
+    terms = [section_names(x) for x in ineq.parts]
     rs, gs = sp.symbols("r g")
     grid = [(r, g) for r in range(3) for g in range(3)]
     sat = {(r, g) for r, g in grid
            if all((x.subs({rs: r, gs: g}) < y.subs({rs: r, gs: g})) if op == "<"
                   else (x.subs({rs: r, gs: g}) <= y.subs({rs: r, gs: g}))
-                  for x, op, y in zip(terms, ineq[1::2], terms[1:]))}
-    envs_r1, _ = read_if_then(f"If ${pieces[1]}$, then $x$")
+                  for x, op, y in zip(terms, ineq.ops, terms[1:]))}
+    envs_r1, _ = read_if_then(f"If ${got['cond']}$, then $x$")
     stated = {(e["r"], e["g"]) for e in envs_r1}
     out["r1_is_the_rest_of_0<r<=g<=2"] = sat - {(2, 2)} == stated  # r = g = 2 was treated in the sentence before
-    zparts = chain(pieces[2])
+    zparts = chain(got["z"])
     zsym = zparts[0]
     out["z_min_is_1"] = len(zparts) == 3 and zsym == sp.Symbol("z") and all(
         zparts[1].subs({rs: r, gs: g}) == zparts[2] for r, g in stated)
@@ -864,41 +846,38 @@ def _orders_1_2() -> dict[str, bool]:
         ok_chain &= not (ch[-1].free_symbols & {u, rs})  # the last form has no u: z = r
     out["chain"] = ok_chain
     # u+gv+2w in [(g-z)v+w] = {[w] (g = 1), [v+w] = [u] (g = 2)}
-    g12 = t["sec4_5-n2-g12"].replace("%", " ")
-    head, _, rows = g12.partition("\\begin{array} [c]{rc}")
-    rows = rows.split("\\end{array}")[0]
-    mh = re.fullmatch(r"\s*(.*?)\\in\s*\\left\[\s*(.*?)\s*\\right\]\s*=\s*\\left\\\{\s*", head)
-    if not mh:
-        raise LatexMathError("sec4_5-n2-g12: unread head")
+    g12 = lm.parse_relation(t["sec4_5-n2-g12"])
+    if g12.lead or g12.conditions or g12.ops != ["in", "="] or g12.parts[1].func.__name__ != "cls" or \
+            g12.parts[2].func != lm.Cases:
+        raise LatexMathError(f"sec4_5-n2-g12: not 'X in [Y] = {{cases}}': {g12.ops}")
     ok_g12, seen = True, set()
-    for row in [x for x in rows.split("\\\\") if x.strip()]:
-        stmt, _, cond = row.partition("&")
-        mc = re.fullmatch(r"\s*g=(\d+)[.,]?\s*", cond)
-        if not mc:
-            raise LatexMathError(f"sec4_5-n2-g12: unread row condition {cond!r}")
-        env = {"g": int(mc.group(1)), "z": zval}
+    for stmt, cond in g12.parts[2].args:
+        gsym = sp.Symbol("g")
+        if not (isinstance(cond, sp.Eq) and cond.lhs == gsym and cond.rhs.is_Integer):
+            raise LatexMathError(f"sec4_5-n2-g12: unread row condition {cond}")
+        env = {"g": int(cond.rhs), "z": zval}
         seen.add(env["g"])
-        lhs, cls = linear_triple(parse(mh.group(1)), env), linear_triple(parse(mh.group(2)), env)
-        first_cls = re.match(r"\s*\\left\[\s*(.*?)\s*\\right\]", stmt)
-        ok_g12 &= k(lhs) == k(cls) and bool(first_cls) and k(linear_triple(parse(first_cls.group(1)), env)) == k(cls)
-        ok_g12 &= relation_chain_holds(stmt, env)
+        lhs, cls = linear_triple(g12.parts[0], env), linear_triple(g12.parts[1].args[0], env)
+        row = lm.chain_relation(stmt)
+        first_cls = row.parts[0].args[0] if row.parts[0].func.__name__ == "cls" else None
+        ok_g12 &= k(lhs) == k(cls) and first_cls is not None and k(linear_triple(first_cls, env)) == k(cls)
+        ok_g12 &= relation_chain_holds(row, env)
     out["g12"] = ok_g12 and seen == {g for _, g in stated}
     # r = 0, g in {0, 1, 2}: [gv + 2w] new at order 2
     envs, concl = read_if_then(t["sec4_5-n2-r0"])
     ok_r0 = len(concl) == 1 and len(envs) >= 1
+    first = _first_class(concl)
     for env in envs:
-        cls = re.match(r"\s*\\left\[\s*(.*?)\s*\\right\]", concl[0])
-        ok_r0 &= bool(cls) and relation_chain_holds(concl[0], env) and linear_triple(
-            parse(cls.group(1)), env) == (env.get("r"), env.get("g"), 2)
+        ok_r0 &= relation_chain_holds(concl[0], env) and linear_triple(first, env) == (env.get("r"), env.get("g"), 2)
     out["r0"] = ok_r0
     # [2v+2w] reappears as [2u], new at order 2
-    pieces = _math(t["sec4_5-n2-2v2w"])
-    if len(pieces) != 2:
-        raise LatexMathError("sec4_5-n2-2v2w: not two formulas")
-    a_cls = read_item(pieces[0])
-    b_cls = read_item(split_relations(pieces[1])[0])
-    out["2v2w_is_2u"] = a_cls[0] == b_cls[0] == "class" and a_cls[1] == b_cls[1] and relation_chain_holds(
-        pieces[1]) and "must be ignored" in t["sec4_5-n2-2v2w"] and "reappear" in t["sec4_5-n2-2v2w"]
+    got = lm.sentence("from which {a} must be ignored, because this equivalence class will reappear as {b}",
+                      t["sec4_5-n2-2v2w"])
+    if got is None:
+        raise LatexMathError("sec4_5-n2-2v2w: not 'from which .. must be ignored, because .. will reappear as ..'")
+    a_cls = read_item(section_names(lm.parse(got["a"])))
+    b_cls = read_item(lm.parse_relation(got["b"]).parts[0])
+    out["2v2w_is_2u"] = a_cls[0] == b_cls[0] == "class" and a_cls[1] == b_cls[1] and relation_chain_holds(got["b"])
     # the six classes of order 2, V_1 and V_2
     n2 = [c for r in (1, 2, 3) for c in class_family(lm.parse(t[f"sec4_5-n2-classes-row{r}"]))]
     out["six_classes_n2"] = {k(x) for x in n2} == new_class_keys(2) and len(n2) == 6
