@@ -2,8 +2,9 @@
 
 Section sec:coincidence (lines 1414-1906): every check reads its lines at call time through
 :func:`paper_repro.printed.lines.verbatim`, formulas by :mod:`paper_repro.printed.latex_math` (:func:`parse`,
-:func:`chain`; prose by anchored regular expressions that must match the whole sentence, so
-that a changed word, index, count or quantifier is refused), and compares what it read with the computation below;
+:func:`chain`; prose by :func:`paper_repro.printed.latex_math.sentence` -- or, from :func:`dim_values` on, anchored
+regular expressions -- that must match the whole sentence, so that a changed word, index, count or quantifier is
+refused), and compares what it read with the computation below;
 no formula of the section is retyped.  The printed formulas become exact trigonometric polynomials
 (:func:`to_ep`, :func:`compile_ep`).
 
