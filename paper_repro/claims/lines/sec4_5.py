@@ -308,8 +308,11 @@ def linear_triple(expr, env: dict | None = None) -> tuple[int, int, int]:
     import sympy as sp
 
     u, v, w = sp.symbols("u v w")
-    e = sp.expand(sp.sympify(expr).subs({sp.Symbol(k): x for k, x in (env or {}).items()}))
-    if not e.free_symbols <= {u, v, w}:
+    e = sp.sympify(expr)
+    if not isinstance(e, sp.Expr):
+        raise LatexMathError(f"{e} is not a combination of u, v, w")
+    e = sp.expand(e.subs({sp.Symbol(k): x for k, x in (env or {}).items()}))
+    if not e.free_symbols <= {u, v, w} or not e.is_polynomial(u, v, w):
         raise LatexMathError(f"{e} is not a combination of u, v, w")
     poly = sp.Poly(e, u, v, w)
     if poly.total_degree() > 1 or poly.coeff_monomial(1) != 0:
