@@ -71,7 +71,8 @@ from lark.exceptions import LarkError, UnexpectedCharacters, UnexpectedEOF, Unex
 
 __all__ = ["LatexMathError", "Relation", "parse", "parse_relation", "parse_cases", "parse_vector", "index_set",
            "inline_math", "prose", "sentence", "NUMBER_WORDS", "evaluate_sums", "Term", "terms", "untagged",
-           "parse_conditions", "summands", "underset_marks", "clean", "D", "Family", "Cartesian", "Cases", "PM"]
+           "parse_conditions", "summands", "underset_marks", "clean", "D", "Family", "Cartesian", "Cases", "PM",
+           "Chain", "chain_relation"]
 
 
 class LatexMathError(ValueError):
@@ -83,6 +84,9 @@ Family = sympy.Function("Family")
 #: ``\left\{..\right\} \times\left\{..\right\}``: the Cartesian product of sets, its factors in the printed order
 Cartesian = sympy.Function("Cartesian")
 Cases = sympy.Function("Cases")
+#: a case value printed as a relation chain (``\left[ w\right] \in E_{1}^{\alpha}/_{\sim}``) inside an expression:
+#: ``Chain(part, Symbol(op), part, ..)``; :func:`chain_relation` gives the :class:`Relation` back
+Chain = sympy.Function("Chain")
 PM = sympy.Symbol("pm")
 LDOTS = sympy.Symbol("ldots")
 
@@ -295,7 +299,6 @@ relop: EQ | NEQ | LEQ | GEQ | LT | GT | IN | NOTIN | SIM | NSIM | EQUIV | SUBSET
      | "-" term                       -> neg
      | "+" term
      | CUP term                       -> cup_unary
-     | cup_bounds term                -> cup_bounded
      | PM term                        -> pm_unary
      | MP term                        -> mp_unary
      | term
@@ -303,19 +306,18 @@ relop: EQ | NEQ | LEQ | GEQ | LT | GT | IN | NOTIN | SIM | NSIM | EQUIV | SUBSET
 ?term: term factor                    -> mul
      | term CDOT factor               -> mul_dot
      | term "/" factor                -> div
-     | term "/" "_" "{" SIM "}"       -> quotient
      | prefix term                    -> apply_prefix
      | term prefix term               -> mul_prefix
      | term CDOT prefix term          -> mul_dot_prefix
      | term MODP "{" expr "}"         -> modp
      | term MODP NUMBER               -> modp
+     | term "/" "_" "{" SIM ","? "}"  -> quotient
      | factor
 
 prefix: SUM "_" "{" (NAMEVAR | GREEKV) "=" expr "}" "^" sarg                         -> sum_prefix
       | LIM "_" "{" (NAMEVAR | GREEKV) RIGHTARROW expr "}"                           -> lim_prefix
       | FRAC "{" DIFF ("^" sarg)? "}" "{" dvar+ "}"                            -> deriv_prefix
-
-cup_bounds: CUP "_" "{" NAMEVAR "=" expr "}" "^" sarg
+      | BIGCUP "{" (NAMEVAR | GREEKV) "=" expr "}" "^" sarg                          -> cup_prefix
 
 dvar: DIFF dbase                      -> dvar
     | DIFF dbase "^" sarg             -> dvar_pow
@@ -405,6 +407,7 @@ CDOT: /\\(cdot|times)(?![A-Za-z])/
 PM: /\\pm(?![A-Za-z])/
 MP: /\\mp(?![A-Za-z])/
 CUP: /\\cup(?![A-Za-z])/
+BIGCUP.2: /\\cup\s*_/
 SETMINUS: /\\setminus(?![A-Za-z])/
 MODP: /\\pmod(?![A-Za-z])/
 FORALL: /\\forall(?![A-Za-z])/
@@ -643,9 +646,6 @@ class _Build(Transformer):
             return Cartesian(*(a for x in sets for a in (x.args if x.func == Cartesian else (x,))))
         return self.mul([c[0], c[2]])
 
-    def quotient(self, c):
-        return sympy.Function("quotient")(c[0])
-
     def div(self, c):
         return c[0] / c[1]
 
@@ -655,6 +655,8 @@ class _Build(Transformer):
     def apply_prefix(self, c):
         kind, data = c[0]
         body = c[1]
+        if kind == "cup":  # \cup_{i=a}^{b} X: the union of the family {X}_{i=a}^{b}
+            return sympy.Function("bigcup")(Family(_as_basic(body), sympy.Tuple(), sympy.Tuple(sympy.Tuple(*data))))
         if kind == "sum":
             var, lo, hi = data
             return sympy.Sum(body, (var, lo, hi))
@@ -666,11 +668,12 @@ class _Build(Transformer):
     def sum_prefix(self, c):
         return ("sum", (sympy.Symbol(_name(c[1])), c[2], c[3]))
 
-    def cup_bounds(self, c):
-        return sympy.Tuple(sympy.Symbol(_name(c[1])), c[2], self._scalar(c[3]))
+    def cup_prefix(self, c):
+        return ("cup", (sympy.Symbol(_name(c[1])), c[2], self._scalar(c[3])))
 
-    def cup_bounded(self, c):  # \cup_{i=a}^{b} X: the union of the family of the X over i = a..b
-        return sympy.Function("cup")(Family(c[1], sympy.Tuple(), sympy.Tuple(c[0])))
+    def quotient(self, c):
+        """``E_{n}^{\\alpha}/_{\\sim}`` (also as printed once, ``/_{\\sim,}``): the quotient set ``quot(E(n))``."""
+        return sympy.Function("quot")(_as_basic(c[0]))
 
     def lim_prefix(self, c):
         return ("lim", (sympy.Symbol(_name(c[1])), c[3]))
@@ -844,7 +847,7 @@ class _Build(Transformer):
     def cases(self, c):
         k = int(str(c[1]).strip("@")[3:])
         rows = self.arrays[k]
-        return Cases(*[sympy.Tuple(v, cnd if isinstance(cnd, sympy.Basic) else sympy.Symbol(cnd))
+        return Cases(*[sympy.Tuple(_chain_value(v), cnd if isinstance(cnd, sympy.Basic) else sympy.Symbol(cnd))
                        for v, cnd in _case_rows(rows)])
 
     def array(self, c):
@@ -1295,11 +1298,39 @@ def _case_rows(rows: list[list[str]]) -> list[tuple[Any, Any]]:
             continue
         v = _join_rows(pending, v).strip().rstrip(",").strip()
         pending = ""
-        value = _run("start_expr", v, [])
+        try:
+            value = _run("start_expr", v, [])
+        except LatexMathError as exc:  # a value printed as a relation chain: [w] \in E_{1}/_{\sim} (Section 4)
+            try:
+                value = _run("start_relation", v, [])
+            except LatexMathError:
+                raise exc from None
+            if not isinstance(value, Relation) or value.lead:
+                raise
         out.append((value, parse_condition_clean(cnd)))
     if pending:
         raise LatexMathError(f"a case value without its condition: {pending[:60]!r}")
     return out
+
+
+def _chain_value(v):
+    """A case value inside an expression: a :class:`Relation` as ``Chain(part, Symbol(op), part, ..)``."""
+    if not isinstance(v, Relation):
+        return v
+    return Chain(*[x for k, p in enumerate(v.parts) for x in ((p,) if k == 0 else (sympy.Symbol(v.ops[k - 1]), p))])
+
+
+def chain_relation(x) -> Relation:
+    r"""The :class:`Relation` of a case value printed as a chain (``Chain``, see :func:`_chain_value`).
+
+    >>> cases = parse(r"\left\{ \begin{array}{rc} \left[ w\right] =\left[ u+v\right]  & g=1 \end{array}\right.")
+    >>> r = chain_relation(cases.args[0][0])
+    >>> r.parts, r.ops
+    ([cls(w), cls(u + v)], ['='])
+    """
+    if not (isinstance(x, sympy.Basic) and x.func == Chain and len(x.args) % 2 == 1):
+        raise LatexMathError(f"not a chain of relations: {x}")
+    return Relation(list(x.args[0::2]), [str(op) for op in x.args[1::2]])
 
 
 def _join_rows(head: str, tail: str) -> str:

@@ -270,6 +270,14 @@ _SEC4: dict[str, str] = {
     'sec4_5-n2-222:drop:2b71c34cbe': (
         'the term +0 v dropped from [0u+0v+0w]: the same class [0]'
     ),
+    'sec4_5-n2-classes-row2:sign:4f67c395f8': (
+        'the family {[2u-0v+bw]}_{b=0}^{1} is {[2u+0v+bw]}_{b=0}^{1} (a zero coefficient): the same classes; the old '
+        'regular expression refused the minus sign, the reader reads the combination'
+    ),
+    'sec4_5-n2-classes-row3:sign:782291672d': (
+        'the family {[ru+2v-0w]}_{r=0}^{1} is {[ru+2v+0w]}_{r=0}^{1} (a zero coefficient): the same classes; the old '
+        'regular expression refused the minus sign, the reader reads the combination'
+    ),
     'sec4_5-n2-222:sign:38424e3f74': (
         '0u-0v+0w is 0u+0v+0w (a zero coefficient): the same class [0]'
     ),

@@ -2,8 +2,9 @@
 
 Section sec:coincidence (lines 1414-1906): every check reads its lines at call time through
 :func:`paper_repro.printed.lines.verbatim`, formulas by :mod:`paper_repro.printed.latex_math` (:func:`parse`,
-:func:`chain`; prose by anchored regular expressions that must match the whole sentence, so
-that a changed word, index, count or quantifier is refused), and compares what it read with the computation below;
+:func:`chain`; prose by :func:`paper_repro.printed.latex_math.sentence` -- or, from :func:`dim_values` on, anchored
+regular expressions -- that must match the whole sentence, so that a changed word, index, count or quantifier is
+refused), and compares what it read with the computation below;
 no formula of the section is retyped.  The printed formulas become exact trigonometric polynomials
 (:func:`to_ep`, :func:`compile_ep`).
 
@@ -23,7 +24,6 @@ Independent machinery used here:
 
 from __future__ import annotations
 
-import re
 from fractions import Fraction
 from functools import cache
 from itertools import product
@@ -307,8 +307,11 @@ def linear_triple(expr, env: dict | None = None) -> tuple[int, int, int]:
     import sympy as sp
 
     u, v, w = sp.symbols("u v w")
-    e = sp.expand(sp.sympify(expr).subs({sp.Symbol(k): x for k, x in (env or {}).items()}))
-    if not e.free_symbols <= {u, v, w}:
+    e = sp.sympify(expr)
+    if not isinstance(e, sp.Expr):
+        raise LatexMathError(f"{e} is not a combination of u, v, w")
+    e = sp.expand(e.subs({sp.Symbol(k): x for k, x in (env or {}).items()}))
+    if not e.free_symbols <= {u, v, w} or not e.is_polynomial(u, v, w):
         raise LatexMathError(f"{e} is not a combination of u, v, w")
     poly = sp.Poly(e, u, v, w)
     if poly.total_degree() > 1 or poly.coeff_monomial(1) != 0:
@@ -398,18 +401,20 @@ def read_z_range():
     both lines that print it (they must agree): a function n -> the list of its integers.  Every listed element is
     read; two listed neighbours differ by 1, elements around ``\\ldots`` increase."""
 
-    ends = set()
+    sets = set()
     for lid in ("sec4_5-z-range", "sec4_5-z-range-2"):
-        tex = verbatim(lid)
-        m = re.search(r"exists an integer \$z\\in\\left\\\{(.*)\\right\\\}\s*\$", tex)
-        if not m:
+        got = lm.sentence("{lead:word} exists an integer {z} for which ...", verbatim(lid))
+        rel = lm.parse_relation(got["z"]) if got else None
+        if rel is None or rel.ops != ["in"] or rel.parts[0] != sp.Symbol("z") or rel.conditions:
             raise LatexMathError(f"{lid}: no 'exists an integer z in {{..}}'")
-        ends.add(m.group(1).replace(" ", ""))
-    if len(ends) != 1:
-        raise LatexMathError(f"the two lines print different ranges: {sorted(ends)}")
-    items = [x.strip() for x in re.split(r",(?![^()]*\\right\))", ends.pop().replace("\\left(", "(")
-                                                                     .replace("\\right)", ")"))]
-    exprs = [None if x == "\\ldots" else parse(x) for x in items]
+        sets.add(rel.parts[1])
+    if len(sets) != 1:
+        raise LatexMathError(f"the two lines print different ranges: {sorted(map(str, sets))}")
+    zset = sets.pop()
+    if not (isinstance(zset, sp.Function) and zset.func == lm.Family and not zset.args[1] and not zset.args[2]
+            and isinstance(zset.args[0], sp.Tuple)):
+        raise LatexMathError(f"not a listed set: {zset}")
+    exprs = [None if x == lm.LDOTS else section_names(x) for x in zset.args[0]]
     if exprs[0] is None or exprs[-1] is None:
         raise LatexMathError("the set starts or ends with an ellipsis")
 
@@ -530,12 +535,16 @@ def phase_meaning() -> dict[str, bool]:
     of E_n, n <= 2."""
     import sympy as sp
 
-    tex = verbatim("sec4_5-phase-meaning")
-    pieces = [parse(x) for x in re.findall(r"\$([^$]*)\$", tex)]
-    if len(pieces) != 4 or not all(isinstance(x, (sp.sin, sp.cos)) for x in pieces):
-        raise LatexMathError(f"{len(pieces)} functions, not 4")
+    got = lm.sentence("i.e., function {f0} differs from {f1} only in a {what:words} and it can be expressed as a "
+                      "{how:words} of {f2} and {f3}", verbatim("sec4_5-phase-meaning"))
+    if got is None:
+        raise LatexMathError("sec4_5-phase-meaning: not 'function .. differs from .. only in a .. and it can be "
+                             "expressed as a .. of .. and ..'")
+    pieces = [parse(got[x]) for x in ("f0", "f1", "f2", "f3")]
+    if not all(isinstance(x, (sp.sin, sp.cos)) for x in pieces):
+        raise LatexMathError(f"not four functions cos/sin: {pieces}")
     f0, f1, f2, f3 = pieces
-    words = {"phase": "phase change" in tex, "combination": "linear combination" in tex and "differs" in tex}
+    words = {"phase": got["what"] == "phase change", "combination": got["how"] == "linear combination"}
     same_arg = f1.args[0] == f2.args[0] == f3.args[0] and {type(f2), type(f3)} == {sp.sin, sp.cos}
     cos_x, sin_x = (f2, f3) if isinstance(f2, sp.cos) else (f3, f2)
     same_function = type(f0) is type(f1)
@@ -585,43 +594,46 @@ _register_phase("sin", "each '=' step of the sin chain read from the transcripti
 
 
 # -- readers of the worked examples (triples ru+gv+bw as printed) -------------------------------------------------
-def read_triple(expr: str, **env: int) -> tuple[int, int, int]:
-    """``(r, g, b)`` of a printed combination such as ``1\\cdot u+3\\cdot v+2\\cdot w``, ``v+2w`` or
-    ``0\\cdot u+g\\cdot v+2\\cdot w`` (a letter coefficient taken from ``env``)."""
-    text = expr.replace("\\cdot", "").replace(" ", "").replace("%", "")
-    out = {"u": 0, "v": 0, "w": 0}
-    terms = [t for t in text.split("+") if t]
-    for term in terms:
-        m = re.fullmatch(r"(\d*|[a-z])([uvw])", term)
-        if not m:
-            raise ValueError(f"unread term {term!r} of {expr!r}")
-        c = m.group(1)
-        out[m.group(2)] += int(c) if c.isdigit() else (env[c] if c else 1)
-    return out["u"], out["v"], out["w"]
+def _family(item):
+    """``(member, conditions, bounds)`` of a parsed set (latex_math's ``Family``); :class:`LatexMathError` otherwise."""
+    if not (isinstance(item, sp.Function) and item.func == lm.Family):
+        raise LatexMathError(f"not a set: {item}")
+    return item.args
 
 
-_DOMAIN = re.compile(r":\\left\(\s*u,v,w\\right\)\s*\\in\s*\\Omega\^\{\\alpha\s*\}\s*\\right\\\}")
+@cache
+def _omega_domain() -> tuple:
+    """The condition ``\\left( u,v,w\\right) \\in\\Omega^{\\alpha}`` of a set of functions, as the reader reads it."""
+    return tuple(_family(lm.parse(r"\left\{ u:\left( u,v,w\right) \in\Omega^{\alpha}\right\}"))[1])
 
 
-def read_cos_args(tex: str) -> list[tuple[int, int, int]]:
-    """Arguments of the printed ``\\cos\\left( .. \\right)`` of a set of functions, each with its ``\\sin``; the set
-    must end with its domain ``:\\left( u,v,w\\right) \\in\\Omega^{\\alpha}\\right\\}``."""
-    if len(_DOMAIN.findall(tex)) != 1:
-        raise ValueError("the set does not end with its domain (u,v,w) in Omega^alpha")
-    cos = re.findall(r"\\cos\\left\(\s*([^()]*?)\s*\\right\)", tex)
-    sin = re.findall(r"\\sin\\left\(\s*([^()]*?)\s*\\right\)", tex)
-    if sorted(cos) != sorted(sin):
-        raise ValueError(f"cos and sin arguments differ: {cos} vs {sin}")
-    return [read_triple(x) for x in cos]
+def cos_sin_triples(item) -> list[tuple[int, int, int]]:
+    """The triples (r, g, b) of the ``\\cos\\left( ru+gv+bw\\right)`` of a parsed set of functions
+    ``\\left\\{ \\cos\\left( .. \\right) ,\\sin\\left( .. \\right) ,..:\\left( u,v,w\\right) \\in\\Omega^{\\alpha}
+    \\right\\}``: each cos with its sin, the one condition its domain (u,v,w) in Omega^alpha, no bounds."""
+    members, conds, bounds = _family(item)
+    funcs = list(members) if isinstance(members, sp.Tuple) else [members]
+    if bounds or tuple(conds) != _omega_domain():
+        raise LatexMathError(f"the set does not end with its domain (u,v,w) in Omega^alpha: {tuple(conds)}")
+    if not all(isinstance(f, (sp.cos, sp.sin)) for f in funcs):
+        raise LatexMathError(f"not a set of cos and sin: {funcs}")
+    cos = sorted((f.args[0] for f in funcs if isinstance(f, sp.cos)), key=sp.default_sort_key)
+    sin = sorted((f.args[0] for f in funcs if isinstance(f, sp.sin)), key=sp.default_sort_key)
+    if cos != sin:
+        raise LatexMathError(f"cos and sin arguments differ: {cos} vs {sin}")
+    return [linear_triple(x) for x in cos]
 
 
-def read_class_family(tex: str) -> list[tuple[int, int, int]]:
-    """The classes ``\\left\\{ \\left[ .. \\right] \\right\\} _{g=a}^{b}`` of a printed family."""
-    m = re.search(r"\\left\[\s*(.*?)\s*\\right\]\s*\\right\\\}\s*_\{(\w)=(\d+)\}\^\{(\d+)\}", tex)
-    if not m:
-        raise ValueError(f"no family of classes in {tex[:50]!r}")
-    expr, var, lo, hi = m.groups()
-    return [read_triple(expr, **{var: x}) for x in range(int(lo), int(hi) + 1)]
+def class_family(item, env: dict | None = None) -> list[tuple[int, int, int]]:
+    """The triples of the classes ``\\left\\{ \\left[ .. \\right] \\right\\} _{g=a}^{b}`` of a parsed family (one
+    bound, no condition; the bounds evaluated with ``env``), in the order of the bound."""
+    member, conds, bounds = _family(item)
+    if conds or len(bounds) != 1 or not (isinstance(member, sp.Function) and member.func.__name__ == "cls"):
+        raise LatexMathError(f"not a family of classes over one bound: {item}")
+    var, lo, hi = bounds[0]
+    env = dict(env or {})
+    return [linear_triple(member.args[0], {**env, str(var): x})
+            for x in range(bound(lo, **env), bound(hi, **env) + 1)]
 
 
 def _texts(ids, override=None) -> dict[str, str]:
@@ -639,147 +651,152 @@ def check_examples_n3() -> LineResult:
     try:
         got = []
         for lid in ("sec4_5-examples-n3-1", "sec4_5-examples-n3-2", "sec4_5-examples-n3-3"):
-            tex = verbatim(lid).strip().rstrip(".,")
-            parts = split_relations(tex)
-            triples = [linear_triple(parse(x)) for x in parts[0::2]]
+            rel = lm.parse_relation(verbatim(lid))
+            triples = [linear_triple(section_names(x)) for x in rel.parts]
             in_e3 = all(0 <= c <= 3 for t in triples for c in t)
-            got.append(in_e3 and len(parts) >= 3 and relation_chain_holds(tex))
+            got.append(in_e3 and len(rel.parts) >= 2 and relation_chain_holds(rel))
     except (LatexMathError, TypeError) as exc:
         return LineResult(False, how=how, kind="proof", detail={"unread": str(exc)})
     return LineResult(all(got), how=how, kind="proof", detail={"lines_hold": got})
 
 
 # -- orders 1 and 2 -----------------------------------------------------------------------------------------------
-_REL = re.compile(r"(\\nsim|\\sim(?![a-z])|\\notin|\\in(?![a-z])|=)")
+def set_of_classes(x, env: dict | None = None) -> set:
+    """The class keys of a parsed set of classes: ``E_{a}^{\\alpha}/_{\\sim}`` (``quot(E(a))``), a difference
+    ``\\setminus`` and a union ``\\cup`` of such sets (indices evaluated with ``env``)."""
+    name = x.func.__name__
+    if name == "quot" and x.args[0].func.__name__ == "E" and len(x.args[0].args) == 1:
+        a = section_names(x.args[0].args[0]).subs({sp.Symbol(k): v for k, v in (env or {}).items()})
+        if not a.is_Integer:
+            raise LatexMathError(f"index {a} is not an integer")
+        return classes_of(int(a))
+    if name == "setminus":
+        return set_of_classes(x.args[0], env) - set_of_classes(x.args[1], env)
+    if name == "cup" and len(x.args) == 2:
+        return set_of_classes(x.args[0], env) | set_of_classes(x.args[1], env)
+    raise LatexMathError(f"not a quotient set: {x}")
 
 
-def split_relations(math: str) -> list[str]:
-    """``[item, relation, item, ...]``: ``math`` split at the relations of brace depth 0."""
-    out, depth, last = [], 0, 0
-    for m in re.finditer(r"[{}]|" + _REL.pattern, math):
-        tok = m.group()
-        if tok == "{":
-            depth += 1
-        elif tok == "}":
-            depth -= 1
-        elif depth == 0:
-            out += [math[last:m.start()], tok]
-            last = m.end()
-    return out + [math[last:]]
+def read_item(x, env: dict | None = None):
+    """One member of a parsed relation chain: ``("class", key)`` of ``\\left[ ..\\right]`` (``cls``), ``("set",
+    keys)`` of a quotient set (:func:`set_of_classes`) or ``("triple", t)`` of a combination ru+gv+bw."""
+
+    if x.func.__name__ == "cls":
+        return "class", class_key(linear_triple(section_names(x.args[0]), env))
+    if x.func.__name__ in ("quot", "setminus", "cup"):
+        return "set", set_of_classes(x, env)
+    return "triple", linear_triple(section_names(x), env)
 
 
-def read_set_of_classes(item: str, env: dict | None = None) -> set:
-    """``E_{a}^{\\alpha}/_{\\sim}`` or ``E_{a}/_{\\sim}\\setminus\\left( E_{b}/_{\\sim}\\cup ..\\right)``: the class
-    keys of E_a not in the removed E_b (indices evaluated with ``env``)."""
-
-    text = item.replace("%", " ")
-    head, _, removed = text.partition("\\setminus")
-    idx = re.findall(r"E_\{([^{}]+)\}\^\{\\alpha\s*\}\s*/_\{\\sim,?\}", head)
-    if len(idx) != 1 or re.sub(r"E_\{[^{}]+\}\^\{\\alpha\s*\}\s*/_\{\\sim,?\}", "", head).strip():
-        raise LatexMathError(f"not a quotient set: {item[:40]!r}")
-    pat = r"E_\{([^{}]+)\}\^\{\\alpha\s*\}\s*/_\{\\sim,?\}"
-    gone = re.findall(pat, removed)
-    rest = re.sub(pat, "", removed)
-    rest = re.sub(r"^\s*\\left\(|\\right\)\s*$", "", rest.strip()) if len(gone) > 1 else rest
-    if re.sub(r"\\cup|\s", "", rest) or (removed.strip() and not gone):
-        raise LatexMathError(f"unread removed sets {removed[:40]!r}")
-
-    def val(x: str) -> int:
-        e = parse(x).subs({k: v for k, v in (env or {}).items()})
-        if not e.is_Integer:
-            raise LatexMathError(f"index {x!r} is not an integer")
-        return int(e)
-
-    out = classes_of(val(idx[0]))
-    for g in gone:
-        out -= classes_of(val(g))
-    return out
-
-
-def read_item(item: str, env: dict | None = None):
-    """One member of a printed relation chain: ``("class", key)``, ``("set", keys)`` or ``("triple", t)``."""
-
-    text = item.strip().replace("%", " ").strip()
-    m = re.fullmatch(r"\\left\[\s*(.*?)\s*\\right\]", text)
-    if m:
-        return "class", class_key(linear_triple(parse(m.group(1)), env))
-    if "E_{" in text:
-        return "set", read_set_of_classes(text, env)
-    return "triple", linear_triple(parse(text), env)
-
-
-def relation_chain_holds(math: str, env: dict | None = None) -> bool:
+def relation_chain_holds(rel, env: dict | None = None) -> bool:
     """Every link of a printed chain such as ``1\\cdot u+1\\cdot v+1\\cdot w\\sim0\\cdot u+..\\in\\left[ 0\\right]
-    \\in E_{0}^{\\alpha}/_{\\sim}`` against the class keys (``~``: same class; ``\\in`` a class: same class; ``=``
-    of classes: same key; ``\\in`` a set: member); a link the reader does not know raises."""
+    \\in E_{0}^{\\alpha}/_{\\sim}`` (a text, read by :func:`latex_math.parse_relation`, or the parsed relation) against
+    the class keys (``~``: same class; ``\\in`` a class: same class; ``=`` of classes: same key; ``\\in`` a set:
+    member); a link the reader does not know raises."""
 
-    parts = split_relations(math)
-    items = [read_item(x, env) for x in parts[0::2]]
-    rels = parts[1::2]
-    if not rels:
-        raise LatexMathError(f"no relation in {math[:40]!r}")
+    if isinstance(rel, str):
+        rel = lm.parse_relation(rel)
+    if not isinstance(rel, lm.Relation) or rel.lead or rel.conditions or not rel.ops:
+        raise LatexMathError(f"not a chain of relations: {rel}")
+    items = [read_item(x, env) for x in rel.parts]
     ok = True
-    for (ka, a), rel, (kb, b) in zip(items, rels, items[1:]):
+    for (ka, a), rel_op, (kb, b) in zip(items, rel.ops, items[1:]):
         ka_key = class_key(a) if ka == "triple" else a
         if kb == "set":
             if ka == "set":
                 raise LatexMathError("a set related to a set")
-            ok &= (ka_key in b) == (rel == "\\in")
-            if rel not in ("\\in", "\\notin"):
-                raise LatexMathError(f"{rel} before a set")
-        elif rel in ("\\sim", "\\nsim", "=", "\\in"):
+            if rel_op not in ("in", "notin"):
+                raise LatexMathError(f"{rel_op} before a set")
+            ok &= (ka_key in b) == (rel_op == "in")
+        elif rel_op in ("sim", "nsim", "=", "in"):
             kb_key = class_key(b) if kb == "triple" else b
-            if rel == "\\in" and kb != "class":
+            if rel_op == "in" and kb != "class":
                 raise LatexMathError("\\in before a combination")
-            if rel == "=" and (ka, kb) != ("class", "class"):
+            if rel_op == "=" and (ka, kb) != ("class", "class"):
                 raise LatexMathError("= between combinations")
-            ok &= (ka_key == kb_key) == (rel != "\\nsim")
+            ok &= (ka_key == kb_key) == (rel_op != "nsim")
         else:
-            raise LatexMathError(f"unknown link {rel}")
+            raise LatexMathError(f"unknown link {rel_op}")
     return ok
-
-
-def _math(tex: str) -> list[str]:
-    return re.findall(r"\$([^$]*)\$", tex)
 
 
 def read_order_classes(tex: str) -> dict[str, bool]:
     """``\\left[ ru+gv+bw\\right] \\in E_{a}/_{\\sim}\\setminus .., where at least one of the coefficients r,g,b is
-    equal to $c$``: every new class of the printed difference of quotient sets is met, in E_a, only by triples with a
-    coefficient c (the new classes of order a are those of the triples with a coefficient a)."""
+    equal to $c$`` (the words by :func:`latex_math.sentence`, the display and c by the reader): every new class of the
+    printed difference of quotient sets is met, in E_a, only by triples with a coefficient c (the new classes of
+    order a are those of the triples with a coefficient a)."""
 
-    m = re.search(r"\\left\[\s*ru\+gv\+bw\\right\]\s*\\in(.*?),\s*\\\]\s*where at least one of the coefficients "
-                  r"\$r,g,b\$ is equal to \$(\d+)\$\.", tex)
-    if not m:
+    got = lm.sentence(r"{display:words} \] where at least one of the coefficients $r,g,b$ is equal to {c}.", tex)
+    if not got:
         raise LatexMathError("no 'classes in E_a/~ \\ .. where at least one of r,g,b is equal to c'")
-    new = read_set_of_classes(m.group(1))
-    order = int(re.search(r"E_\{(\d+)\}", m.group(1)).group(1))
-    c = int(m.group(2))
-    members = [t for t in E(order) if class_key(t) in new]
-    return {"classes_new": bool(new) and new == new_class_keys(order),
-            "coefficient_c": all(c in t for t in members)}
+    rel = lm.parse_relation(got["display"])
+    if rel.lead or rel.ops != ["in"] or rel.conditions or rel.parts[0] != sp.Function("cls")(lm.parse("ru+gv+bw")):
+        raise LatexMathError(f"not [ru+gv+bw] in a set of classes: {rel.parts}")
+    new = set_of_classes(rel.parts[1])
+    head = rel.parts[1].args[0] if rel.parts[1].func.__name__ == "setminus" else rel.parts[1]
+    order = head.args[0].args[0] if head.func.__name__ == "quot" else None
+    c = parse(got["c"])
+    if not (order is not None and order.is_Integer and c.is_Integer):
+        raise LatexMathError(f"the order {order} or the coefficient {c} is not an integer")
+    members = [t for t in E(int(order)) if class_key(t) in new]
+    return {"classes_new": bool(new) and new == new_class_keys(int(order)),
+            "coefficient_c": all(int(c) in t for t in members)}
 
 
 def read_if_then(tex: str) -> tuple[list[dict], list[str]]:
-    """``If $r=a$ and $g\\in\\left\\{ ..\\right\\} $, then $..$``: the environments the condition allows and the
-    math of the conclusion."""
+    """``If $r=a$ and $g\\in\\left\\{ ..\\right\\} $, then $..$`` (the words by :func:`latex_math.sentence`, each
+    condition by :func:`latex_math.parse_relation`): the environments the condition allows and the math of the
+    conclusion."""
 
-    m = re.match(r"\s*If (.*?), then (.*)$", tex)
-    if not m:
+    got = lm.sentence("If {cond:words}, then {concl:words}", tex)
+    if not got:
         raise LatexMathError("no 'If .., then ..'")
     envs: list[dict] = [{}]
-    for cond in _math(m.group(1)):
-        for piece in [x for x in re.split(r",(?![^{}]*\\right\\\})", cond) if x.strip()]:
-            ms = re.fullmatch(r"\s*(\w)\s*\\in\s*\\left\\\{(.*)\\right\\\}\s*", piece)
-            if ms:
-                vals = [int(parse(x)) for x in ms.group(2).split(",")]
-                envs = [{**e, ms.group(1): x} for e in envs for x in vals]
+    for seg in lm.inline_math(got["cond"]):
+        top = lm.parse_relation(seg)
+        for rel in (top, *top.conditions):
+            if rel.ops == ["in"] and rel.parts[0].is_Symbol:
+                members, conds, bounds = _family(rel.parts[1])
+                if conds or bounds:
+                    raise LatexMathError(f"not a listed set: {rel.parts[1]}")
+                vals = [int(x) for x in (members if isinstance(members, sp.Tuple) else (members,))]
+                envs = [{**e, str(rel.parts[0]): x} for e in envs for x in vals]
                 continue
-            parts = chain(piece)
-            if len(parts) < 2 or not parts[-1].is_Integer or not all(p.is_Symbol for p in parts[:-1]):
-                raise LatexMathError(f"unread condition {piece!r}")
+            parts = rel.parts
+            if rel.lead or set(rel.ops) != {"="} or not parts[-1].is_Integer or \
+                    not all(p.is_Symbol for p in parts[:-1]):
+                raise LatexMathError(f"unread condition {seg!r}")
             envs = [{**e, **{str(p): int(parts[-1]) for p in parts[:-1]}} for e in envs]
-    return envs, _math(m.group(2))
+    return envs, lm.inline_math(got["concl"])
+
+
+def read_v_step(rows: tuple[str, ...]) -> tuple[int, int, list[tuple[int, int, int]]]:
+    """``V_{a}^{\\alpha}=V_{b}^{\\alpha}\\cup\\left\\{ ..\\right\\}`` and the rows that go on with ``& \\cup\\left\\{
+    ..\\right\\}`` (each read by :func:`latex_math.parse_relation`): a, b and the triples of every set's cos
+    (:func:`cos_sin_triples`)."""
+    first = lm.parse_relation(rows[0])
+    if first.lead or first.ops != ["="] or first.conditions:
+        raise LatexMathError(f"not V_a = V_b cup {{..}}: {first.ops}")
+    lhs, rhs = first.parts
+    if not (rhs.func.__name__ == "cup" and len(rhs.args) == 2 and all(
+            x.func.__name__ == "V" and len(x.args) == 1 and x.args[0].is_Integer for x in (lhs, rhs.args[0]))):
+        raise LatexMathError(f"not V_a = V_b cup {{..}}: {lhs} = {rhs}")
+    sets = [rhs.args[1]]
+    for row in rows[1:]:
+        r = lm.parse_relation(row)
+        if r.lead or r.ops or r.conditions or len(r.parts) != 1 or r.parts[0].func.__name__ != "cup" or len(
+                r.parts[0].args) != 1:
+            raise LatexMathError(f"not a row '\\cup{{..}}': {r.parts}")
+        sets.append(r.parts[0].args[0])
+    return int(lhs.args[0]), int(rhs.args[0].args[0]), [x for fam in sets for x in cos_sin_triples(fam)]
+
+
+def _first_class(concl: list[str]):
+    """The combination inside the first class ``\\left[ ..\\right]`` of the one formula of a conclusion."""
+    first = lm.parse_relation(concl[0]).parts[0] if len(concl) == 1 else None
+    if first is None or first.func.__name__ != "cls":
+        raise LatexMathError(f"no class first in {concl}")
+    return section_names(first.args[0])
 
 
 def _orders_1_2() -> dict[str, bool]:
@@ -792,33 +809,31 @@ def _orders_1_2() -> dict[str, bool]:
     out: dict[str, bool] = {}
     for lid in ("sec4_5-order1-classes", "sec4_5-order2-classes"):
         out.update({f"{lid}:{x}": v for x, v in read_order_classes(t[lid]).items()})
-    rel = t["sec4_5-order1-relations"]
-    pieces = _math(rel)
-    out["order1_relations"] = rel.startswith("Since") and len(pieces) == 4 and all(
-        relation_chain_holds(x) for x in pieces)
+    got = lm.sentence("Since {a}, {b}, {c} and {d}", t["sec4_5-order1-relations"])
+    out["order1_relations"] = got is not None and all(relation_chain_holds(got[x]) for x in "abcd")
     # b = 2 (the case the text assumes), r = g = 2
     envs, concl = read_if_then(t["sec4_5-n2-222"])
-    first = re.match(r"\s*\\left\[\s*(.*?)\s*\\right\]", concl[0]) if len(concl) == 1 else None
-    if not first:
-        raise LatexMathError("sec4_5-n2-222: no class")
-    out["222"] = len(envs) == 1 and relation_chain_holds(concl[0]) and linear_triple(parse(first.group(1))) == (
+    first = _first_class(concl)
+    out["222"] = len(envs) == 1 and relation_chain_holds(concl[0]) and linear_triple(first) == (
         envs[0].get("r"), envs[0].get("g"), 2)
     # 0 < r <= g <= 2, i.e. r = 1, g in {1, 2}; z = min{r, g} = 1
-    pieces = _math(t["sec4_5-n2-r1"])
-    if len(pieces) != 3:
-        raise LatexMathError("sec4_5-n2-r1: not three formulas")
-    ineq = re.split(r"(<|\\leq)", pieces[0].replace(" ", ""))
-    terms = [parse(x) for x in ineq[0::2]]
+    got = lm.sentence("If {ineq}, i.e., if {cond}, then let {z}", t["sec4_5-n2-r1"])
+    if got is None:
+        raise LatexMathError("sec4_5-n2-r1: not 'If .., i.e., if .., then let ..'")
+    ineq = lm.parse_relation(got["ineq"])
+    if ineq.lead or ineq.conditions or not set(ineq.ops) <= {"<", "<="}:
+        raise LatexMathError(f"sec4_5-n2-r1: not a chain of < and <=: {ineq.ops}")
+    terms = [section_names(x) for x in ineq.parts]
     rs, gs = sp.symbols("r g")
     grid = [(r, g) for r in range(3) for g in range(3)]
     sat = {(r, g) for r, g in grid
            if all((x.subs({rs: r, gs: g}) < y.subs({rs: r, gs: g})) if op == "<"
                   else (x.subs({rs: r, gs: g}) <= y.subs({rs: r, gs: g}))
-                  for x, op, y in zip(terms, ineq[1::2], terms[1:]))}
-    envs_r1, _ = read_if_then(f"If ${pieces[1]}$, then $x$")
+                  for x, op, y in zip(terms, ineq.ops, terms[1:]))}
+    envs_r1, _ = read_if_then(f"If ${got['cond']}$, then $x$")
     stated = {(e["r"], e["g"]) for e in envs_r1}
     out["r1_is_the_rest_of_0<r<=g<=2"] = sat - {(2, 2)} == stated  # r = g = 2 was treated in the sentence before
-    zparts = chain(pieces[2])
+    zparts = chain(got["z"])
     zsym = zparts[0]
     out["z_min_is_1"] = len(zparts) == 3 and zsym == sp.Symbol("z") and all(
         zparts[1].subs({rs: r, gs: g}) == zparts[2] for r, g in stated)
@@ -834,53 +849,45 @@ def _orders_1_2() -> dict[str, bool]:
         ok_chain &= not (ch[-1].free_symbols & {u, rs})  # the last form has no u: z = r
     out["chain"] = ok_chain
     # u+gv+2w in [(g-z)v+w] = {[w] (g = 1), [v+w] = [u] (g = 2)}
-    g12 = t["sec4_5-n2-g12"].replace("%", " ")
-    head, _, rows = g12.partition("\\begin{array} [c]{rc}")
-    rows = rows.split("\\end{array}")[0]
-    mh = re.fullmatch(r"\s*(.*?)\\in\s*\\left\[\s*(.*?)\s*\\right\]\s*=\s*\\left\\\{\s*", head)
-    if not mh:
-        raise LatexMathError("sec4_5-n2-g12: unread head")
+    g12 = lm.parse_relation(t["sec4_5-n2-g12"])
+    if g12.lead or g12.conditions or g12.ops != ["in", "="] or g12.parts[1].func.__name__ != "cls" or \
+            g12.parts[2].func != lm.Cases:
+        raise LatexMathError(f"sec4_5-n2-g12: not 'X in [Y] = {{cases}}': {g12.ops}")
     ok_g12, seen = True, set()
-    for row in [x for x in rows.split("\\\\") if x.strip()]:
-        stmt, _, cond = row.partition("&")
-        mc = re.fullmatch(r"\s*g=(\d+)[.,]?\s*", cond)
-        if not mc:
-            raise LatexMathError(f"sec4_5-n2-g12: unread row condition {cond!r}")
-        env = {"g": int(mc.group(1)), "z": zval}
+    for stmt, cond in g12.parts[2].args:
+        gsym = sp.Symbol("g")
+        if not (isinstance(cond, sp.Eq) and cond.lhs == gsym and cond.rhs.is_Integer):
+            raise LatexMathError(f"sec4_5-n2-g12: unread row condition {cond}")
+        env = {"g": int(cond.rhs), "z": zval}
         seen.add(env["g"])
-        lhs, cls = linear_triple(parse(mh.group(1)), env), linear_triple(parse(mh.group(2)), env)
-        first_cls = re.match(r"\s*\\left\[\s*(.*?)\s*\\right\]", stmt)
-        ok_g12 &= k(lhs) == k(cls) and bool(first_cls) and k(linear_triple(parse(first_cls.group(1)), env)) == k(cls)
-        ok_g12 &= relation_chain_holds(stmt, env)
+        lhs, cls = linear_triple(g12.parts[0], env), linear_triple(g12.parts[1].args[0], env)
+        row = lm.chain_relation(stmt)
+        first_cls = row.parts[0].args[0] if row.parts[0].func.__name__ == "cls" else None
+        ok_g12 &= k(lhs) == k(cls) and first_cls is not None and k(linear_triple(first_cls, env)) == k(cls)
+        ok_g12 &= relation_chain_holds(row, env)
     out["g12"] = ok_g12 and seen == {g for _, g in stated}
     # r = 0, g in {0, 1, 2}: [gv + 2w] new at order 2
     envs, concl = read_if_then(t["sec4_5-n2-r0"])
     ok_r0 = len(concl) == 1 and len(envs) >= 1
+    first = _first_class(concl)
     for env in envs:
-        cls = re.match(r"\s*\\left\[\s*(.*?)\s*\\right\]", concl[0])
-        ok_r0 &= bool(cls) and relation_chain_holds(concl[0], env) and linear_triple(
-            parse(cls.group(1)), env) == (env.get("r"), env.get("g"), 2)
+        ok_r0 &= relation_chain_holds(concl[0], env) and linear_triple(first, env) == (env.get("r"), env.get("g"), 2)
     out["r0"] = ok_r0
     # [2v+2w] reappears as [2u], new at order 2
-    pieces = _math(t["sec4_5-n2-2v2w"])
-    if len(pieces) != 2:
-        raise LatexMathError("sec4_5-n2-2v2w: not two formulas")
-    a_cls = read_item(pieces[0])
-    b_cls = read_item(split_relations(pieces[1])[0])
-    out["2v2w_is_2u"] = a_cls[0] == b_cls[0] == "class" and a_cls[1] == b_cls[1] and relation_chain_holds(
-        pieces[1]) and "must be ignored" in t["sec4_5-n2-2v2w"] and "reappear" in t["sec4_5-n2-2v2w"]
+    got = lm.sentence("from which {a} must be ignored, because this equivalence class will reappear as {b}",
+                      t["sec4_5-n2-2v2w"])
+    if got is None:
+        raise LatexMathError("sec4_5-n2-2v2w: not 'from which .. must be ignored, because .. will reappear as ..'")
+    a_cls = read_item(section_names(lm.parse(got["a"])))
+    b_cls = read_item(lm.parse_relation(got["b"]).parts[0])
+    out["2v2w_is_2u"] = a_cls[0] == b_cls[0] == "class" and a_cls[1] == b_cls[1] and relation_chain_holds(got["b"])
     # the six classes of order 2, V_1 and V_2
-    n2 = [c for r in (1, 2, 3) for c in read_class_family(t[f"sec4_5-n2-classes-row{r}"])]
+    n2 = [c for r in (1, 2, 3) for c in class_family(lm.parse(t[f"sec4_5-n2-classes-row{r}"]))]
     out["six_classes_n2"] = {k(x) for x in n2} == new_class_keys(2) and len(n2) == 6
-    v1 = read_cos_args(t["sec4_5-V1"])
-    m1 = re.match(r"\s*V_\{(\d+)\}\^\{\\alpha\}=V_\{(\d+)\}\^\{\\alpha\}\\cup", t["sec4_5-V1"])
-    out["V1"] = bool(m1) and {k(x) for x in v1} == new_class_keys(int(m1.group(1))) and len(set(v1)) == 3 and int(
-        m1.group(2)) == int(m1.group(1)) - 1 == 0
-    v2 = [x for r in (1, 2, 3) for x in read_cos_args(t[f"sec4_5-V2-row{r}"])]
-    m2 = re.match(r"\s*V_\{(\d+)\}\^\{\\alpha\}=\s*&\s*V_\{(\d+)\}\^\{\\alpha\}\\cup", t["sec4_5-V2-row1"])
-    rows_cup = all(re.match(r"\s*&\s*\\cup\\left\\\{", t[f"sec4_5-V2-row{r}"]) for r in (2, 3))
-    out["V2"] = bool(m2) and rows_cup and {k(x) for x in v2} == new_class_keys(int(m2.group(1))) and len(set(v2)) == 6 \
-        and int(m2.group(2)) == int(m2.group(1)) - 1 == 1
+    order, prev, v1 = read_v_step((t["sec4_5-V1"],))
+    out["V1"] = {k(x) for x in v1} == new_class_keys(order) and len(set(v1)) == 3 and prev == order - 1 == 0
+    order, prev, v2 = read_v_step(tuple(t[f"sec4_5-V2-row{r}"] for r in (1, 2, 3)))
+    out["V2"] = {k(x) for x in v2} == new_class_keys(order) and len(set(v2)) == 6 and prev == order - 1 == 1
     return out
 
 
@@ -911,14 +918,16 @@ def check_b2() -> LineResult:
     the new classes of E_2 met by (r, g, b); corrected: those met with r <= g (the cases the text treats)."""
     how = ("new classes of E_2 met by the triples (r, g, b) with the printed b: all of them (printed), those with "
            "r <= g (corrected), against the printed family and count (read from the transcription)")
-    tex = verbatim("sec4_5-n2-b2-three")
-    m = re.fullmatch(r"Thus, equality \$b=(\d+)\$ generates only (\w+) acceptable equivalence classes, namely "
-                     r"\$(.*)\$", tex)
+    got = lm.sentence("Thus, equality {b} generates only {count:count} acceptable equivalence classes, namely {fam}",
+                      verbatim("sec4_5-n2-b2-three"))
     try:
-        if not m or m.group(2) not in NUMBER_WORDS:
+        if not got or got["count"] is None:
             raise ValueError("unread line")
-        bb, count = int(m.group(1)), NUMBER_WORDS[m.group(2)]
-        fam = read_class_family(m.group(3))
+        rel = lm.parse_relation(got["b"])
+        if rel.ops != ["="] or rel.parts[0] != sp.Symbol("b") or not rel.parts[1].is_Integer or rel.conditions:
+            raise ValueError(f"not b = an integer: {got['b']!r}")
+        bb, count = int(rel.parts[1]), got["count"]
+        fam = class_family(lm.parse(got["fam"]))
         keys = {class_key(t) for t in fam}
     except (ValueError, TypeError) as exc:
         return LineResult(False, how=how, kind="proof", detail={"unread": str(exc)})
@@ -930,40 +939,60 @@ def check_b2() -> LineResult:
 
 
 # -- Proposition iterative_construction_of_trivariate_extension ---------------------------------------------------
+def _union_items(x) -> list:
+    """The sets of a parsed union ``A\\cup B\\cup C`` (read as ``cup(cup(A, B), C)``), in the printed order."""
+    return [y for a in x.args for y in _union_items(a)] if x.func.__name__ == "cup" else [x]
+
+
 def read_prop_families(tex: str, n: int) -> list[tuple[int, int, int]]:
     """The representatives of the printed families ``\\left\\{ \\left[ .. \\right] \\right\\} _{g=0}^{n-1}`` of
-    Proposition iterative_construction_of_trivariate_extension at order n, read from the transcription."""
+    Proposition iterative_construction_of_trivariate_extension at order n, read from the transcription (the right
+    side of its equation, by :func:`latex_math.parse_relation`)."""
 
-    fams = re.findall(r"\\left\\\{\s*\\left\[\s*(.*?)\s*\\right\]\s*\\right\\\}"
-                      r"\s*_\{(\w)=([^{}]+)\}\^\{([^{}]+)\}", tex)
+    rel = lm.parse_relation(tex)
+    if rel.ops != ["="] or rel.conditions:
+        raise ValueError(f"not one equation: {rel.ops}")
+    fams = _union_items(rel.parts[1])
     if len(fams) != 3:
         raise ValueError(f"{len(fams)} families of classes, not 3")
-    return [linear_triple(parse(expr), {"n": n, var: x}) for expr, var, lo, hi in fams
-            for x in range(bound(lo, n=n), bound(hi, n=n) + 1)]
+    return [t for fam in fams for t in class_family(fam, {"n": n})]
 
 
-_UNION = re.compile(r"E_\{n\}\^\{\\alpha\}/_\{\\sim\}\\setminus\\left\(\s*\\cup_\{i=(\d+)\}\^\{([^{}]+)\}E_\{i\}"
-                    r"\^\{\\alpha\}/_\{\\sim\s*\}\\right\)")
+def _removed_union(x) -> tuple[int, sp.Expr]:
+    """``E_{n}^{\\alpha}/_{\\sim}\\setminus\\left( \\cup_{i=a}^{b}E_{i}^{\\alpha}/_{\\sim}\\right)``, parsed: a (an
+    integer) and b (an expression in n)."""
+    n, i = sp.symbols("n i")
+    quot, e_ = sp.Function("quot"), sp.Function("E")
+    if not (x.func.__name__ == "setminus" and x.args[0] == quot(e_(n)) and x.args[1].func.__name__ == "bigcup"):
+        raise ValueError(f"not E_n/~ minus a union: {x}")
+    member, conds, bounds = _family(x.args[1].args[0])
+    if member != quot(e_(i)) or conds or len(bounds) != 1 or bounds[0][0] != i or not bounds[0][1].is_Integer:
+        raise ValueError(f"not the union of E_i/~ over i = a..b: {x.args[1]}")
+    return int(bounds[0][1]), bounds[0][2]
 
 
-def read_prop() -> tuple[int, str]:
+def read_prop() -> tuple[int, sp.Expr]:
     """The union cup_{i=a}^{b} E_i/~ removed from E_n/~ in both lines of the Proposition (they must agree), and the
-    recurrence's other parts: V_n = V_{n-1} cup {cos, sin of one combination : (u,v,w) in Omega, [the same] in ..}."""
-    texts = [verbatim("sec4_5-prop-recurrence").replace("%", " "), verbatim("sec4_5-prop-new-classes")]
-    unions = {m for t in texts for m in _UNION.findall(t)}
-    if len(unions) != 1 or not all(_UNION.search(t) for t in texts):
-        raise ValueError(f"the unions differ or are unread: {sorted(unions)}")
-    rec = texts[0]
-    m = re.match(r"\s*V_\{n\}\^\{\\alpha\}=V_\{n-1\}\^\{\\alpha\}\\cup\\left\\\{\s*"
-                 r"\\cos\\left\(\s*ru\+gv\+bw\\right\)\s*,"
-                 r"\\sin\\left\(\s*ru\+gv\+bw\\right\)\s*:\\left\(\s*u,v,w\\right\)\s*\\in\\Omega\^\{\\alpha\s*\},~"
-                 r"\\left\[\s*ru\+gv\+bw\\right\]\s*\\in\s*(.*?)\\right\\\}\s*\\\]\s*$", rec)
-    if not m or not _UNION.fullmatch(m.group(1).strip()):
+    recurrence's other parts: V_n = V_{n-1} cup {cos, sin of one combination : (u,v,w) in Omega, [the same] in ..}
+    (both lines read by :func:`latex_math.parse_relation`)."""
+    rec = lm.parse_relation(verbatim("sec4_5-prop-recurrence"))
+    new = lm.parse_relation(verbatim("sec4_5-prop-new-classes"))
+    n = sp.Symbol("n")
+    v_ = sp.Function("V")
+    if rec.lead or rec.ops != ["="] or rec.conditions or new.ops != ["="]:
         raise ValueError("unread recurrence")
-    if not re.match(r"\s*E_\{n\}\^\{\\alpha\}/_\{\\sim\}\\setminus\\left\(\s*\\cup.*?\\right\)\s*=", texts[1]):
-        raise ValueError("unread left side of the new classes")
-    lo, hi = unions.pop()
-    return int(lo), hi
+    lhs, rhs = rec.parts
+    if lhs != v_(n) or rhs.func.__name__ != "cup" or len(rhs.args) != 2 or rhs.args[0] != v_(n - 1):
+        raise ValueError(f"unread recurrence: {lhs} = {rhs}")
+    members, conds, bounds = _family(rhs.args[1])
+    x = lm.parse("ru+gv+bw")
+    if bounds or members != sp.Tuple(sp.cos(x), sp.sin(x)) or len(conds) != 2 or (conds[0],) != _omega_domain() \
+            or conds[1].func.__name__ != "In" or conds[1].args[0] != sp.Function("cls")(x):
+        raise ValueError(f"unread recurrence set: {rhs.args[1]}")
+    union = _removed_union(conds[1].args[1])
+    if _removed_union(new.parts[0]) != union:
+        raise ValueError(f"the unions differ: {conds[1].args[1]} and {new.parts[0]}")
+    return union
 
 
 def prop_sets_agree(n_max: int, lowest: int, top: str) -> dict[int, bool]:
@@ -2091,15 +2120,15 @@ def frequency_classes(n: int) -> set:
 
 
 def read_union(union) -> tuple:
-    """``(a, b)`` of a parsed ``\\cup_{i=a}^{b}E_{i}^{\\alpha}/_{\\sim}``: ``cup(Family(quotient(E(i)), (), ((i, a,
+    """``(a, b)`` of a parsed ``\\cup_{i=a}^{b}E_{i}^{\\alpha}/_{\\sim}``: ``bigcup(Family(quot(E(i)), (), ((i, a,
     b),)))`` (:func:`~paper_repro.printed.latex_math.parse`)."""
     import sympy as sp
 
-    fam = union.args[0] if getattr(union, "func", None) == sp.Function("cup") and len(union.args) == 1 else None
+    fam = union.args[0] if getattr(union, "func", None) == sp.Function("bigcup") and len(union.args) == 1 else None
     if getattr(fam, "func", None) != lm.Family or fam.args[1] or len(fam.args[2]) != 1:
         raise LatexMathError(f"{union} is not a union over one bound")
     (var, lo, hi), = fam.args[2]
-    if fam.args[0] != sp.Function("quotient")(sp.Function("E")(var)):
+    if fam.args[0] != sp.Function("quot")(sp.Function("E")(var)):
         raise LatexMathError(f"{fam.args[0]} is not E_{{{var}}}/~ of the bound variable")
     return lo, hi
 
