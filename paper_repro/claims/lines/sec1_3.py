@@ -2600,10 +2600,7 @@ def induction_orders(verbatim_text: str | None = None) -> LineResult:
     tex = verbatim_text if verbatim_text is not None else _transcribed(["sec1_3-induction-orders"])[
         "sec1_3-induction-orders"]
 
-    def run(text: str) -> tuple[bool, list]:
-        lo, hi = listed_range(text, "r")
-        if "induction on the derivation order" not in text:
-            raise ValueError("not the induction on the derivation order")
+    def run(lo: sympy.Expr, hi: sympy.Expr) -> tuple[bool, list]:
         hyp_lo, hyp_hi = listed_range(_transcribed(["sec1_3-Lr-orders"])["sec1_3-Lr-orders"], "r")
         bad = []
         for n in N_PROOF:
@@ -2614,9 +2611,14 @@ def induction_orders(verbatim_text: str | None = None) -> LineResult:
                 bad.append({"n": n, "printed": printed, "orders_used": used})
         return not bad, bad
     try:
-        ok, bad = run(tex)
-        fixed = re.sub(r"(r=0,1,\\ldots,)n\$", lambda m: m.group(1) + "n-1$", tex)
-        corr = run(fixed)[0] if fixed != tex else None
+        words = lm.sentence("In order to prove the statement, we argue by mathematical induction on the derivation "
+                            "order {r}.", tex)
+        if words is None:
+            raise ValueError("not the induction on the derivation order")
+        lo, hi = listed_range(words["r"], "r")
+        ok, bad = run(lo, hi)
+        # the erratum's correction, on the parsed range: the last order n is n - 1
+        corr = run(lo, hi - 1)[0] if hi == sympy.Symbol("n") else None
     except ValueError as exc:
         return LineResult(False, how="the range read from the transcription", detail={"unread": str(exc)})
     return LineResult(ok, corr, how="the printed range of orders against the orders of the elimination recomputed from "
