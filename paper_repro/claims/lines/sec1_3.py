@@ -3979,9 +3979,9 @@ def r0p1_sines() -> LineResult:
     the definition of rho'_{2n,0,0}) it holds."""
     tex = _transcribed(["sec1_3-r0-p1-sines"])["sec1_3-r0-p1-sines"]
 
-    def run(text: str) -> tuple[bool, object]:
+    def run(value: sympy.Expr) -> tuple[bool, object]:
         try:
-            terms = read_products(_row_value(text))
+            terms = read_products(value)
         except ValueError as exc:
             return False, str(exc)
         for n in N_PROOF:
@@ -3996,11 +3996,30 @@ def r0p1_sines() -> LineResult:
                             n, STEP_PARAMS[0], 0, alive_before(n, 0, 0), pt):
                         return False, f"n={n}: values differ"
         return True, None
-    ok, why = run(tex)
-    fixed = re.sub(r"\\gamma_\{2n,2n-i,0\}(?=\s*\\sin\^\{2n\})", lambda _m: "\\gamma_{2n,2n,0}", tex)
-    corr = run(fixed)[0] if fixed != tex else None
+    try:
+        value = _row_value(tex)
+    except ValueError as exc:
+        return LineResult(False, how="the terms read from the transcription", detail={"unread": str(exc)})
+    ok, why = run(value)
+    fixed = _gamma_corner(value)
+    corr = run(fixed)[0] if fixed != value else None
     return LineResult(ok, corr, how="the terms read from the transcription against exact values at y = 0, n = 1..6",
                       detail={"unread": why})
+
+
+def _gamma_corner(value: sympy.Expr) -> sympy.Expr:
+    """The erratum's correction of line sec1_3-r0-p1-sines, on the parsed value: in the term outside the sum, the
+    constant ``gamma(2n, 2n-i, 0)`` of the factor ``sin(..)**(2n)`` is ``gamma(2n, 2n, 0)``."""
+    n, i = sympy.symbols("n i")
+    gamma = sympy.Function("gamma")
+    printed, corrected = gamma(2 * n, 2 * n - i, 0), gamma(2 * n, 2 * n, 0)
+    out = []
+    for t in sympy.Add.make_args(value):
+        factors = sympy.Mul.make_args(t)
+        if printed in factors and any(f.is_Pow and isinstance(f.base, sympy.sin) and f.exp == 2 * n for f in factors):
+            t = t.xreplace({printed: corrected})
+        out.append(t)
+    return sympy.Add(*out)
 
 
 # -- the conclusions of the order-0 steps: the primed constants vanish (read from the transcription) ---------------
