@@ -21,6 +21,7 @@ The independent computations:
 from __future__ import annotations
 
 import re
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from fractions import Fraction
 from functools import cache
@@ -3495,9 +3496,10 @@ def _quantified_value(rel: lm.Relation, param_index: int) -> sympy.Expr:
     return rel.parts[-1]
 
 
-def read_value_line(tex: str, param_index: int):
+def read_value_line(tex: str, param_index: int, correct: Callable[[sympy.Expr], sympy.Expr] | None = None):
     """(terms, k) of a printed value: a case row ``VALUE , & k=K`` (k = K), ``[0=] VALUE ,~\\forall x\\in[0,\\alpha]``
-    or ``& = VALUE \\\\`` (k None: the whole derivative)."""
+    or ``& = VALUE \\\\`` (k None: the whole derivative); ``correct`` (an erratum's correction) is applied to the
+    parsed value."""
     rel = lm.parse_relation(tex)
     last = rel.parts[-1] if rel.parts else None
     k = None
@@ -3512,20 +3514,21 @@ def read_value_line(tex: str, param_index: int):
         body = _quantified_value(rel, param_index)
     else:
         body = _row_value(tex)
-    return read_products(body), k
+    return read_products(correct(body) if correct else body), k
 
 
 def _alive_for(param_index: int, r: int, order0: bool, n: int):
     return alive_before(n, r if order0 else r + 1, param_index)
 
 
-def value_lines_check(check_id: str, texts: dict[str, str] | None = None, defs_texts: dict[str, str] | None = None
-                      ) -> LineResult:
+def value_lines_check(check_id: str, texts: dict[str, str] | None = None, defs_texts: dict[str, str] | None = None,
+                      correct: Callable[[sympy.Expr], sympy.Expr] | None = None) -> LineResult:
     """Every value line of ``check_id`` (and the definitions of its primed constants) read from the transcription
     and evaluated exactly at the boundary (constants resolved by the printed definitions, S, M by exact Taylor
     series, sines by exact half angles): the {member of T_{2n}: coefficient} it prints must equal the one computed
     from the exact derivatives of the step (the k-th term of its chain rule where the line is a case k = K, the
-    whole derivative of the step's order otherwise), n = 1..6 (order-0 steps) or n = 2..6, r = 0..n-2."""
+    whole derivative of the step's order otherwise), n = 1..6 (order-0 steps) or n = 2..6, r = 0..n-2.  ``correct``
+    (an erratum's correction) is applied to each parsed value of the check's own lines."""
     param_index, order, def_ids = VALUE_CHECKS[check_id]
     param = STEP_PARAMS[param_index]
     own = {x.id: x.verbatim for x in _lines_of(check_id)}
@@ -3538,11 +3541,11 @@ def value_lines_check(check_id: str, texts: dict[str, str] | None = None, defs_t
         for lid in def_ids:
             (color, level), cases = read_prime_definition(all_texts[lid])
             primes[color] = (level, cases)
-        values = {lid: read_value_line(t, param_index) for lid, t in sorted(all_texts.items())
+        values = {lid: read_value_line(t, param_index, correct) for lid, t in sorted(all_texts.items())
                   if lid in own and not _is_definition(t)}
         if check_id == "sec1_3-r-p1-rho-prime":  # the definition checked through the A-form it defines
             aform = _transcribed(["sec1_3-rp1-aform"])["sec1_3-rp1-aform"]
-            values = {"sec1_3-rp1-aform": read_value_line(_p1_corrected(aform), param_index)}
+            values = {"sec1_3-rp1-aform": read_value_line(aform, param_index, _p1_corrected)}
         if not values:
             raise ValueError("no value line")
     except (ValueError, KeyError) as exc:
@@ -3592,15 +3595,22 @@ def value_lines_check(check_id: str, texts: dict[str, str] | None = None, defs_t
                       detail=detail)
 
 
-def _p1_corrected(tex: str) -> str:
-    """The erratum's correction of the A-form of parametrization 1: upper bound 2n-(r+1) instead of 2n-1-(r+1)."""
-    return re.sub(r"\^\{2n-1-\\left\(\s*r\+1\\right\)\s*\}", lambda _m: "^{2n-\\left( r+1\\right) }", tex, count=1)
+def _p1_corrected(e: sympy.Expr) -> sympy.Expr:
+    """The erratum's correction of the A-form of parametrization 1, on the parsed object: the upper bound 2n-(r+1)
+    instead of 2n-1-(r+1) (``e`` that bound, or an expression whose sums over i end there)."""
+    n, r, i = sympy.symbols("n r i")
+    printed, corrected = 2 * n - 1 - (r + 1), 2 * n - (r + 1)
+    if e == printed:
+        return corrected
+    return e.replace(lambda x: isinstance(x, sympy.Sum),
+                     lambda x: sympy.Sum(x.function, *[(v, lo, corrected if v == i and hi == printed else hi)
+                                                      for v, lo, hi in x.limits]))
 
 
 def _value_erratum(check_id: str, correct) -> LineResult:
-    """An erratum value line: as printed (must fail) and with ``correct`` applied to each line's text (must hold)."""
+    """An erratum value line: as printed (must fail) and with ``correct`` applied to each parsed value (must hold)."""
     res = value_lines_check(check_id)
-    corrected = value_lines_check(check_id, texts={x.id: correct(x.verbatim) for x in _lines_of(check_id)})
+    corrected = value_lines_check(check_id, correct=correct)
     res.corrected_holds = corrected.holds_as_printed
     res.detail["corrected_mismatches"] = corrected.detail.get("mismatches", corrected.detail.get("unread"))
     return res
@@ -3762,8 +3772,9 @@ def asystem_check(check_id: str, param_index: int, correct=None) -> LineResult:
     """The printed system {A_{2n,2n-i}}_{i=a}^{b} (range read from the transcription) is exactly the set of A's in the
     exact derivative of the step, and linearly independent (exact rank), n = 2..6, r = 0..n-2."""
 
-    def run(tex: str) -> tuple[bool, list]:
+    def run(tex: str, fix=lambda e: e) -> tuple[bool, list]:
         first_e, last_e, idx = read_a_system(tex, param_index)
+        first_e, last_e = fix(first_e), fix(last_e)
         bad = []
         for n in range(2, N_PROOF.stop):
             for r in range(n - 1):
@@ -3778,7 +3789,7 @@ def asystem_check(check_id: str, param_index: int, correct=None) -> LineResult:
     lines = _lines_of(check_id)
     try:
         ok, bad = run(lines[0].verbatim)
-        corr = run(correct(lines[0].verbatim))[0] if correct else None
+        corr = run(lines[0].verbatim, correct)[0] if correct else None
     except ValueError as exc:
         return LineResult(False, how="the system read from the transcription", detail={"unread": str(exc)})
     return LineResult(ok, corr, how="the printed range read from the transcription against the A functions present "
