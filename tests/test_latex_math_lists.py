@@ -170,3 +170,22 @@ def test_sentence_reads_prose_by_a_template_of_its_words():
     assert sentence("where {w:words} holds", "where $a=1$ or\n$b=2$ holds") == {"w": "$a=1$ or $b=2$"}
     with pytest.raises(ValueError, match="slot kind"):
         sentence("{x:colour}", "red")
+
+
+def test_parse_as_printed_keeps_the_printed_structure():
+    import sympy
+
+    from paper_repro.printed.latex_math import parse_as_printed, parse_relation
+
+    x, s, n = sympy.symbols("x s n")
+    # ((1-s)+s)^{2n} is 1 when simplified; as printed it is a power of a two-term sum
+    rel = parse_as_printed(r"\left( \left( 1-s\right) +s\right) ^{2n}=\left( 1-s\right) ^{2}+2\left( 1-s\right) s")
+    assert rel.ops == ["="]
+    assert sympy.expand(rel.parts[0].xreplace({1 - s: x})) != 1
+    assert rel.parts[0].xreplace({1 - s: x}) == (x + s) ** (2 * n)
+    # the number 2 is not multiplied into (1-s): the change of variable reaches it
+    assert sympy.expand(rel.parts[1].xreplace({1 - s: x})) == x**2 + 2 * x * s
+    assert parse_relation(r"\left( \left( 1-s\right) +s\right) ^{2n}").parts[0] == 1
+    # the memo of the simplified reading is not polluted by the unevaluated one
+    parse_as_printed(r"2\left( 1-s\right) s")
+    assert parse_relation(r"2\left( 1-s\right) s").parts[0] == s * (2 - 2 * s)

@@ -943,6 +943,28 @@ def untagged(tex: str) -> list:
         _UNTAGGED = saved
 
 
+
+def parse_as_printed(tex: str) -> Relation:
+    r"""The relation ``tex`` read as :func:`parse_relation` does, but without sympy's automatic simplification: a
+    sum keeps its printed terms (as in :func:`summands`), a number times a parenthesised sum is not multiplied out
+    and ``\left(\left(1-s\right)+s\right)^{2n}`` stays a power of a sum, not 1.  For a check that substitutes in
+    the printed structure (a change of variable ``x = 1-s`` in the parsed object, never in the text) before it
+    computes; evaluate the parts (``sympy.expand``, ``.doit()``) after the substitution.
+
+    >>> x, s = sympy.symbols("x s")
+    >>> parse_as_printed(r"\left(\left(1-s\right)+s\right)^{2n}").parts[0].xreplace({1 - s: x})
+    (s + x)**(2*n)
+    >>> parse_relation(r"\left(\left(1-s\right)+s\right)^{2n}").parts[0]
+    1
+    """
+    global _ORDERED
+    saved, _ORDERED = _ORDERED, True  # also keeps the reading out of the memo (_run)
+    try:
+        with sympy.evaluate(False):
+            return parse_relation(tex)
+    finally:
+        _ORDERED = saved
+
 def _as_basic(x):
     if isinstance(x, Relation):
         if len(x.parts) == 2 and x.ops == ["in"]:

@@ -1441,10 +1441,15 @@ def bernstein_proof_limit() -> LineResult:
                                                        "termwise": termwise})
 
 
-def _one_minus_s(tex: str) -> str:
-    """The transcription with each parenthesized ``1-s`` read as the variable x (the change of variable of
+def _one_minus_s(tex: str) -> list[sympy.Expr]:
+    """The parts of an equality chain read without simplification (:func:`~paper_repro.printed.latex_math.
+    parse_as_printed`), each ``1-s`` in them replaced by the variable x (the change of variable of
     :func:`bernstein_polynomials`, so that ``(1-s)+s`` is not simplified to 1 before the comparison)."""
-    return re.sub(r"\\left\(\s*1-s\s*\\right\)", " x ", tex)
+    rel = lm.parse_as_printed(tex)
+    if rel.lead not in (None, "=") or any(op != "=" for op in rel.ops) or rel.conditions:
+        raise LatexMathError(f"not an equality chain: {rel.lead} {rel.ops} {len(rel.conditions)} clauses")
+    s = sympy.Symbol("s")
+    return [p.xreplace({1 - s: sympy.Symbol("x")}) for p in rel.parts]
 
 
 def _bernstein_xs(f: sympy.Expr, x: sympy.Symbol, s: sympy.Symbol) -> sympy.Expr:
@@ -1465,8 +1470,9 @@ def bernstein_polynomials() -> LineResult:
     s, x = sympy.symbols("s x")
     try:
         parts = [p for lid in ("sec1_3-bernstein-limit-step2", "sec1_3-bernstein-limit-step3")
-                 for p in relation("0" + _one_minus_s(verbatim(lid)).replace("\\end{align*}", ""))[1:]]
-        start = _limit_parts(_one_minus_s(verbatim("sec1_3-bernstein-limit-step1")))[-1]
+                 for p in _one_minus_s("0" + verbatim(lid).replace("\\end{align*}", ""))[1:]]
+        start = _one_minus_s(verbatim("sec1_3-bernstein-limit-step1").replace("\\begin{align*}", " ")
+                             .replace("\\end{align*}", " "))[-1]
         if len(parts) != 3:
             raise LatexMathError(f"{len(parts)} parts, not 3")
     except (LatexMathError, ValueError) as exc:
