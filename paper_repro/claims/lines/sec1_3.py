@@ -1955,26 +1955,90 @@ def param_ranges() -> LineResult:
                       detail={"onto": ok, "ranges": {k: [str(a), str(b)] for k, (a, b) in rng.items()}})
 
 
+def _refs(tex: str) -> list[str]:
+    """The labels of the ``\\ref{..}`` cross-references of a line, in order (LaTeX markup, not the paper's words)."""
+    out, k = [], tex.find("\\ref{")
+    while k >= 0:
+        end = tex.find("}", k)
+        out.append(tex[k + 5:end].strip())
+        k = tex.find("\\ref{", end)
+    return out
+
+
+def _layout_free(tex: str) -> str:
+    """The line with its ``%`` line ends and runs of white space as single spaces."""
+    return " ".join(tex.replace("%", " ").split())
+
+
+def _read_segment(seg: str):
+    """A ``$..$`` segment read by :func:`~paper_repro.printed.latex_math.parse_relation` (``None`` if unread)."""
+    try:
+        return lm.parse_relation(seg)
+    except LatexMathError:
+        return None
+
+
+def _is_point(rel) -> str | None:
+    """``"x"``/``"y"`` when a parsed segment is the point ``x=0``/``y=0``."""
+    xy = sympy.symbols("x y")
+    if rel is not None and rel.ops == ["="] and not rel.conditions and len(rel.parts) == 2 and \
+            rel.parts[1] == 0 and rel.parts[0] in xy:
+        return str(rel.parts[0])
+    return None
+
+
 def read_boundary_vars(tex: str) -> list[tuple[str, str]]:
     """(parametrization, variable set to 0) pairs of a line, in order: the ``\\ref{parametrization_..}`` it names and
-    the points ``$y=0$``/``$x=0$`` it evaluates at (``ValueError`` if their numbers differ or are 0)."""
-    params = re.findall(r"\\ref\{(parametrization_[123]_[xy]_0)\}", tex)
-    points = re.findall(r"\$([xy])=0\$", tex)
+    the points ``$y=0$``/``$x=0$`` it evaluates at (each ``$..$`` segment parsed; ``ValueError`` if their numbers
+    differ or are 0)."""
+    params = [r for r in _refs(tex) if r.startswith("parametrization_")]
+    points = [v for v in (_is_point(_read_segment(seg)) for seg in lm.prose(tex)[1]) if v]
     if not params or len(params) != len(points):
         raise ValueError(f"{len(params)} parametrizations but {len(points)} points in {tex[:50]!r}")
     return list(zip(params, points))
 
 
 _NUMBER = {"two": 2, "three": 3, "four": 4, "five": 5}
+_RESPECT = ("with respect to $$", "with respect to the variable $$", "with respect to variables $$")
 
 
 def _resp_vars(tex: str) -> list[list[str]]:
-    """The variables of every "with respect to [the variable|variables] $y$[, $x$ and $y$]" of a line."""
+    """The variables of every "with respect to [the variable|variables] $y$[, $x$ and $y$]" of a line (the segments
+    parsed: each must be a variable, else it is named as read)."""
+    words, segs = lm.prose(_layout_free(tex))
+    pieces = words.split("$$")  # pieces[k] is before segment k, pieces[k + 1] after it
     out = []
-    pat = r"with respect to (?:the variable |variables )?\$([xy])\$(?:, \$([xy])\$ and \$([xy])\$)?"
-    for m in re.finditer(pat, tex):
-        out.append([g for g in m.groups() if g])
+    for k, seg in enumerate(segs):
+        if not (pieces[k] + "$$").endswith(_RESPECT):
+            continue
+        group = [seg]
+        if k + 2 < len(segs) and pieces[k + 1] == ", " and pieces[k + 2] == " and ":
+            group += segs[k + 1:k + 3]
+        out.append([str(rel.parts[0]) if rel and not rel.ops and not rel.conditions else seg
+                    for rel in map(_read_segment, group)])
     return out
+
+
+def _orders_named(tex: str) -> tuple[list, bool]:
+    """The orders of derivatives a line names ("$r=0$", "zeroth order", "$\\left( r+1\\right) $th order"; each segment
+    parsed) and whether it speaks of an order at all (the word, or a segment ``r=..``/``r\\neq..``)."""
+    words, segs = lm.prose(_layout_free(tex))
+    pieces = words.split("$$")
+    r = sympy.Symbol("r")
+    orders: list = [sympy.Integer(0)] * sum(
+        1 for a, b in zip(words.split(), words.split()[1:]) if a == "zeroth" and b == "order")
+    speaks = "order" in words
+    for k, seg in enumerate(segs):
+        rel = _read_segment(seg)
+        if rel is None:
+            continue
+        if rel.ops and rel.parts[0] == r:
+            speaks = True
+            if rel.ops == ["="] and len(rel.parts) == 2 and not rel.conditions:
+                orders.append(rel.parts[1])
+        elif not rel.ops and pieces[k + 1].startswith("th order"):
+            orders.append(rel.parts[0])
+    return orders, speaks
 
 
 def _step_words_ok(line_id: str, tex: str, pairs: list[tuple[str, str]]) -> bool:
@@ -1982,29 +2046,28 @@ def _step_words_ok(line_id: str, tex: str, pairs: list[tuple[str, str]]) -> bool
     order": 0 in the order-0 steps, before the induction; "$\\left( r+1\\right) $th order": r + 1 in the step
     r -> r+1), the variables "with respect to" (those of the points), the number of "consecutive steps" (the
     parametrizations named), and what black and coloured dots mean (vanish / do not vanish, substitutions with 0)."""
-    t = re.sub(r"\s+", " ", tex.replace("%", " "))
-    orders = [("0" if m.group(1) or m.group(2) else m.group(3).replace(" ", ""))
-              for m in re.finditer(r"\$r=(0)\$|(?<![\w-])(zeroth) order|\$\\left\( ?(r\+1) ?\\right\) ?\$th order", t)]
-    if re.search(r"\$r(?:=|\\neq)[^$]*\$|order", t) and not orders and "partial derivative formula" not in t \
-            and "under parametrizations" not in t:
+    t = _layout_free(tex)
+    orders, speaks = _orders_named(t)
+    if speaks and not orders and "partial derivative formula" not in t and "under parametrizations" not in t:
         raise ValueError(f"{line_id}: an order not read")
     before_induction = transcribed_line(line_id).tex[0] < 912
-    if any(o != ("0" if before_induction else "r+1") for o in orders):
+    if any(o != (0 if before_induction else sympy.Symbol("r") + 1) for o in orders):
         return False
     points = [var for _p, var in pairs]
     for vs in _resp_vars(t):
         if vs != points[:len(vs)] and vs != points[-len(vs):]:
             return False
-    m = re.search(r"illustrate (\w+) consecutive steps", t)
-    if m and _NUMBER.get(m.group(1)) != len(pairs):
+    m = lm.sentence("illustrate {k:count} consecutive steps", t, search=True)
+    if m and m["k"] != len(pairs):
         return False
-    if "White dots" in t and not re.search(r"the combining constants of which proved to be \$0\$ in the previous "
-                                           r"steps", t):
+    if "White dots" in t and lm.sentence("the combining constants of which proved to be $0$ in the previous steps",
+                                         t, search=True) is None:
         return False
     if "black dots" in t:
-        if not re.search(r"black dots represent functions whose zeroth order partial derivatives vanish when", t) or \
-                not re.search(r"partial derivatives of which do not vanish under corresponding parametrizations and "
-                              r"substitutions with \$0\$", t):
+        if lm.sentence("black dots represent functions whose zeroth order partial derivatives vanish when", t,
+                       search=True) is None or \
+                lm.sentence("partial derivatives of which do not vanish under corresponding parametrizations and "
+                            "substitutions with $0$", t, search=True) is None:
             return False
     return True
 
