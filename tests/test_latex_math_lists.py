@@ -170,6 +170,14 @@ def test_sentence_reads_prose_by_a_template_of_its_words():
     assert sentence("where {w:words} holds", "where $a=1$ or\n$b=2$ holds") == {"w": "$a=1$ or $b=2$"}
     with pytest.raises(ValueError, match="slot kind"):
         sentence("{x:colour}", "red")
+    # a brace after a command is the command's argument, matched literally (hand-derived: the labels must agree)
+    line = r"under parametrizations (\ref{parametrization_1_y_0} )--(\ref{parametrization_3_y_0}), at $y=0$"
+    assert sentence(r"under parametrizations (\ref{parametrization_1_y_0} )--(\ref{parametrization_3_y_0}), at {p}",
+                    line) == {"p": "y=0"}
+    assert sentence(r"under parametrizations (\ref{parametrization_1_y_0} )--(\ref{parametrization_2_x_0}), at {p}",
+                    line) is None
+    cases = r"Cases (\emph{a})--(\emph{c}) show three steps"
+    assert sentence(r"Cases (\emph{a})--(\emph{c}) show {k:count} steps", cases) == {"k": 3}
 
 
 def test_parse_as_printed_keeps_the_printed_structure():

@@ -1424,7 +1424,9 @@ def prose(tex: str) -> tuple[str, list[str]]:
 #: Number words of the paper's prose (``{name:count}`` of :func:`sentence` reads them, and digits).
 NUMBER_WORDS = {"zero": 0, "one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7, "eight": 8,
                 "nine": 9, "ten": 10, "eleven": 11, "twelve": 12}
-_SLOT = re.compile(r"\{(\w+)(?::(\w+))?\}|\.\.\.|(?<!\\)\$(.+?)(?<!\\)\$", flags=re.S)
+#: a slot ``{name[:kind]}``, ``...`` or literal ``$..$``; a brace right after a letter is the argument of a LaTeX
+#: command (``\ref{label}``, ``\emph{a}``), literal text of the template, not a slot
+_SLOT = re.compile(r"(?<![A-Za-z])\{(\w+)(?::(\w+))?\}|\.\.\.|(?<!\\)\$(.+?)(?<!\\)\$", flags=re.S)
 _SLOT_PATTERNS = {"math": "\x00(\\d+)\x00", "word": r"([\w'-]+)", "words": r"(.+?)", "count": r"([\w]+)",
                   "number": r"(\d+)"}
 _MARK = re.compile("\x00(\\d+)\x00")
@@ -1479,6 +1481,7 @@ def sentence(template: str, tex: str, *, search: bool = False) -> dict[str, Any]
     * ``$..$`` literal mathematics: the printed segment must *read* the same (:func:`parse`/:func:`parse_relation`,
       compared as sympy objects, so spacing and ``\left`` do not matter, while a changed index does);
     * ``...`` any text; a space any white space (also none, so a template may break where the line does).
+    * a brace after a letter is the argument of a LaTeX command (``\\ref{label}``), matched literally.
 
     The whole line must match (``search=True``: anywhere in it).  Returns the slots' values, or ``None`` when the
     words differ or a literal segment reads differently.
