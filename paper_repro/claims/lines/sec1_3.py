@@ -1998,7 +1998,6 @@ def read_boundary_vars(tex: str) -> list[tuple[str, str]]:
     return list(zip(params, points))
 
 
-_NUMBER = {"two": 2, "three": 3, "four": 4, "five": 5}
 _RESPECT = ("with respect to $$", "with respect to the variable $$", "with respect to variables $$")
 
 
@@ -2542,36 +2541,45 @@ def _orders_prose(t: dict[str, str]) -> None:
     obtained and holds "for all orders"; the figure's caption shows "three consecutive steps" (the three
     parametrizations) whose "first (resp. (n-1)th) order partial derivatives vanish"; the text after it names the
     equalities 0 = L_0 and 0 = L_{n-2} on Omega^alpha under the successive parametrizations."""
-    def norm(k):
-        return re.sub(r"\s+", " ", t[k].replace("%", " "))
-    rng = norm("sec1_3-induction-range")
+    r_ = sympy.Symbol("r")
+
+    def of_r(seg: str | None) -> bool:  # a segment r=.. (its listed range is read by the caller)
+        rel = _read_segment(seg) if seg is not None else None
+        return rel is not None and bool(rel.ops) and rel.parts[0] == r_
+
+    rng = _layout_free(t["sec1_3-induction-range"])
     pairs = read_boundary_vars(rng)
-    if not re.search(r"an induction hypothesis with respect to the \$r\$th order \(\$r=", rng) or \
+    words = lm.sentence("an induction hypothesis with respect to the $r$th order ({r}) partial derivative", rng,
+                        search=True)
+    if words is None or not of_r(words["r"]) or \
             _resp_vars(rng) != [[v for _p, v in pairs]] or any(PARAMS[p][1] != v for p, v in pairs):
         raise ValueError("induction-range: words")
-    if not re.search(r"we prove our hypothesis from \$r\$ to \$r\+1\$ for all orders \$r=", norm("sec1_3-step-range")):
+    words = lm.sentence("we prove our hypothesis from $r$ to $r+1$ for all orders {r}",
+                        _layout_free(t["sec1_3-step-range"]), search=True)
+    if words is None or not of_r(words["r"]):
         raise ValueError("step-range: words")
-    con = norm("sec1_3-induction-conclusion")
-    if not re.fullmatch(r"Summarizing all calculations and zero constants obtained above, by evaluating the "
-                        r"\$\\left\( r\+1\\right\) \$th order \(\$r=[^$]*\$\) partial derivatives under successive "
-                        r"parametrizations \(\\ref\{parametrization_1_y_0\} ?\)--\(\\ref\{parametrization_3_y_0\}\) "
-                        r"of "
-                        r"the initial equality \(\\ref\{induction_hypothesis_for_linear_independence\}\), we conclude "
-                        r"that equality \(\\ref\{induction_hypothesis_nex_step\}\) is also valid, i\.e\., the "
-                        r"induction hypothesis \(\\ref\{induction_hypothesis_for_linear_independence\}\) is correct "
-                        r"for all orders \$r=[^$]*\$\.", con.strip()):
+    words = lm.sentence(
+        r"Summarizing all calculations and zero constants obtained above, by evaluating the $\left( r+1\right) $th "
+        r"order ({r1}) partial derivatives under successive parametrizations (\ref{parametrization_1_y_0} )--"
+        r"(\ref{parametrization_3_y_0}) of the initial equality (\ref{induction_hypothesis_for_linear_independence}), "
+        r"we conclude that equality (\ref{induction_hypothesis_nex_step}) is also valid, i.e., the induction "
+        r"hypothesis (\ref{induction_hypothesis_for_linear_independence}) is correct for all orders {r2}.",
+        _layout_free(t["sec1_3-induction-conclusion"]).strip())
+    if words is None or not of_r(words["r1"]) or not of_r(words["r2"]):
         raise ValueError("induction-conclusion: words")
-    cap = norm("sec1_3-fig-j1-caption-orders")
-    m = re.search(r"illustrate (\w+) consecutive steps", cap)
-    orders = re.findall(r"(?:whose|evaluates the) (first) \(resp\. \$\\left\( (n-1)\\right\) \$th\) order partial "
-                        r"derivatives (vanish when|of)", cap)
-    if not m or _NUMBER.get(m.group(1)) != len(STEP_PARAMS) or len(orders) != 2 or \
-            not re.search(r"Cases \(\\emph\{a\}\)--\(\\emph\{c\}\) and \(\\emph\{d\}\)--\(\\emph\{f\}\)", cap):
+    cap = _layout_free(t["sec1_3-fig-j1-caption-orders"])
+    steps = lm.sentence(r"Cases (\emph{a})--(\emph{c}) and (\emph{d})--(\emph{f}) illustrate {k:count} consecutive "
+                        "steps", cap, search=True)
+    orders = lm.sentence("whose first (resp. {a}th) order partial derivatives vanish when one evaluates the first "
+                         "(resp. {b}th) order partial derivatives of", cap, search=True)
+    last = sympy.Symbol("n") - 1
+    if steps is None or steps["k"] != len(STEP_PARAMS) or orders is None or \
+            any(_read_segment(orders[x]) is None or _read_segment(orders[x]).parts != [last] for x in "ab"):
         raise ValueError("fig-j1-caption-orders: words")
-    txt = norm("sec1_3-fig-j1-text")
+    txt = _layout_free(t["sec1_3-fig-j1-text"])
     eqs = _zero_l_orders(txt)
-    if len(eqs) != 2 or not re.search(r"under successive parametrizations \(\\ref\{parametrization_1_y_0\} ?\)--"
-                                      r"\(\\ref\{parametrization_3_y_0\}\), respectively", txt):
+    if len(eqs) != 2 or lm.sentence(r"under successive parametrizations (\ref{parametrization_1_y_0} )--"
+                                    r"(\ref{parametrization_3_y_0}), respectively", txt, search=True) is None:
         raise ValueError("fig-j1-text: words")
 
 
@@ -2625,12 +2633,11 @@ def elimination_orders(override: dict[str, str] | None = None) -> LineResult:
                 raise ValueError(f"{k}: listings differ")
         _orders_prose(t)
         caption_r = _r_values(t["sec1_3-fig-j1-caption-orders"])
-        words, segs = lm.prose(t["sec1_3-fig-j1-text"].split("order partial derivatives")[0])
-        ordinals = re.findall(r"\b(first)\b|\$\$th", words)  # the words; each $$ is the next segment, parsed
-        if ordinals.count("") != len(segs):
+        ordinals = lm.sentence("the evaluation of the first and {k}th order partial derivatives",
+                               _layout_free(t["sec1_3-fig-j1-text"]), search=True)
+        if ordinals is None:
             raise ValueError("fig-j1-text: orders")
-        it = iter(segs)
-        text_orders = [("first", None) if o else ("", lm.parse(next(it))) for o in ordinals]
+        text_orders = [("first", None), ("", lm.parse(ordinals["k"]))]
         text_l = _zero_l_orders(t["sec1_3-fig-j1-text"])
     except ValueError as exc:
         return LineResult(False, how="the orders read from the transcriptions", detail={"unread": str(exc)})
