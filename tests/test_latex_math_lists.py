@@ -197,3 +197,16 @@ def test_parse_as_printed_keeps_the_printed_structure():
     # the memo of the simplified reading is not polluted by the unevaluated one
     parse_as_printed(r"2\left( 1-s\right) s")
     assert parse_relation(r"2\left( 1-s\right) s").parts[0] == s * (2 - 2 * s)
+
+
+def test_an_emphasized_space_in_a_formula_is_a_space():
+    import sympy
+
+    from paper_repro.printed.latex_math import LatexMathError, parse, parse_relation
+
+    n = sympy.Symbol("n")
+    rel = parse_relation(r"\mathcal{T}_{2n}^{\alpha}=~\operatorname{span}\emph{~}T_{2n}^{\alpha}")
+    assert rel.ops == ["="]
+    assert rel.parts == [sympy.Function("Tcal")(2 * n), sympy.Function("span")(sympy.Function("T")(2 * n))]
+    with pytest.raises(LatexMathError, match="prose"):
+        parse(r"\emph{span} x")  # an emphasized word is prose, not mathematics

@@ -160,7 +160,7 @@ def _replace_macro(s: str, name: str, nargs: int, fn) -> str:
 
 
 _ARRAY_BEGIN = re.compile(r"\\begin\s*\{array\}\s*(\[[a-z]\])?\s*\{[^{}]*\}")
-_TEXT = re.compile(r"\\text\s*\{([^{}]*)\}")
+_TEXT = re.compile(r"\\(?:text|emph)\s*\{([^{}]*)\}")  # \emph{~} in a formula: an (emphasized) space
 
 
 def _decor(kind: str, inner: str) -> str:
@@ -203,7 +203,7 @@ def clean(tex: str, arrays: list | None = None) -> str:
         t = m.group(1).strip()
         if t == "d":
             return " \\dd "
-        if t in ("", ".", ",", ";"):
+        if t in ("", ".", ",", ";", "~"):
             return " "
         if t == "and":
             return " \\AND "

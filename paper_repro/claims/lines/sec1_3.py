@@ -1638,11 +1638,14 @@ def independence_rank() -> LineResult:
     n = 1..5 at tan(alpha/4) = 1/2 and n = 1..4 at tan(alpha/4) = 3/4.  Read from the transcription: the system
     (\\ref{united_system}), the words "is linearly independent", and the space whose dimension is claimed, the span
     of T_{2n}^alpha (its order 2n)."""
-    tex = re.sub(r"\s+", " ", _transcribed(["sec1_3-theorem"])["sec1_3-theorem"])
-    m = re.fullmatch(r"The function system \(\\ref\{united_system\}\) is linearly independent and the dimension of "
-                     r"the vector space \$\\mathcal\{T\}_\{(\w+)\}\^\{\\alpha\}=~\$\\emph\{span\}\$\\emph\{~\}"
-                     r"T_\{(\w+)\}\^\{\\alpha\}\$ is", tex.strip())
-    if not m or m.group(1) != m.group(2) or m.group(1) != "2n":
+    tex = _layout_free(_transcribed(["sec1_3-theorem"])["sec1_3-theorem"])
+    words = lm.sentence(r"The function system (\ref{united_system}) is linearly independent and the dimension of the "
+                        r"vector space {space}\emph{span}{spanned} is", tex)
+    # the formula is split by the text-mode word span: read as one relation with the operator in its place
+    rel = _read_segment(words["space"] + r"\operatorname{span}" + words["spanned"]) if words else None
+    two_n = 2 * sympy.Symbol("n")
+    want = [("Tcal", (two_n,)), ("span", (sympy.Function("T")(two_n),))]
+    if rel is None or rel.ops != ["="] or rel.conditions or [(p.func.__name__, p.args) for p in rel.parts] != want:
         return LineResult(False, how="the statement read from the transcription", detail={"unread": tex[:60]})
     detail, ok = {}, True
     for at, n_max in zip(ALPHA_TS, (5, 4)):
