@@ -3923,42 +3923,53 @@ def fig_n4_caption(order: int | None = None, n: int | None = None) -> LineResult
     vanishes at v = 0 exactly when gray or the second condition; the gray ones are exactly those with j > z."""
     from paper_repro.printed.derivatives import branch_disjuncts
 
-    tex = _transcribed(["sec1_3-fig-n4-caption"])["sec1_3-fig-n4-caption"].replace("%", " ")
+    tex = _layout_free(_transcribed(["sec1_3-fig-n4-caption"])["sec1_3-fig-n4-caption"])
     try:
-        m = re.search(r"the \$(\d+)\$th order mixed partial derivatives of which with respect to "
-                      r"\$v\\left\( x,y\\right\) =([^$]+)\$ and \$w\\left\( x,y\\right\) =([^$]+)\$ are zero and "
-                      r"non-zero, respectively, under parametrization \(\\ref\{(\w+)\}\) at \$([xy])=0\$", tex)
-        ks = re.findall(r"order \$k=0,1,\\ldots,(\d+)\$ of the partial derivative with respect to \$v",
-                        tex)
-        gray = re.search(r"raised to a power (greater than|less than|at least|at most) the corresponding order", tex)
-        conds = re.findall(r"due to the (first|second) condition of the zero branch|fulfills the (first|second) "
-                           r"condition of the zero branch", tex)
-        text_n = re.search(r"In the case of \$n=(\d+)\$", _transcribed(["sec1_3-L-prose"])["sec1_3-L-prose"])
-        if not (m and gray and len(ks) == 2 and len(conds) == 2 and text_n):
+        m = lm.sentence(
+            r"\caption{(\emph{a})--(\emph{e}) Using the sign function (\ref{derivative_cosine_sine_at_0}), one can "
+            r"easily verify that black and non-black dots represent those functions of system (\ref{united_system}) "
+            r"the {order}th order mixed partial derivatives of which with respect to {v} and {w} are zero and "
+            r"non-zero, respectively, under parametrization (\ref{{label:word}}) at {at}. Observe, that the gray "
+            r"shaded areas correspond to functions which comprise the factor "
+            r"$\sin \frac{v\left( x,y\right) }{2}=\sin\frac{y}{2}$ raised to a power {gray:words} the corresponding "
+            r"order {k1} of the partial derivative with respect to $v\left( x,y\right) =y$. Thus, these partial "
+            r"derivatives vanish at $y=0$ due to the {c1:word} condition of the zero branch of the sign function "
+            r"(\ref{derivative_cosine_sine_at_0}). Black dots that fall outside of the gray shaded areas correspond "
+            r"to constrained trivariate functions that comprise the factor "
+            r"$\sin\frac{v\left( x,y\right) }{2}=\sin\frac{y}{2}$ raised to a power which -- together with the order "
+            r"{k2} of the partial derivative with respect to $v\left( x,y\right) =y$, at $y=0$ -- fulfills the "
+            r"{c2:word} condition of the zero branch of the sign function (\ref{derivative_cosine_sine_at_0}). (For "
+            r"interpretation of the references to color in this figure legend, the reader is referred to the web "
+            r"version of this paper.)}", tex)
+        text_n = lm.sentence("In the case of {n}, we have provided an example",
+                             _layout_free(_transcribed(["sec1_3-L-prose"])["sec1_3-L-prose"]), search=True)
+        if not (m and text_n):
             raise ValueError("caption not read")
-        if not re.search(r"\(\\emph\{a\}\)--\(\\emph\{e\}\) Using the sign function", tex) or \
-                not re.search(r"Thus, these partial derivatives vanish at \$y=0\$", tex) or \
-                not re.search(r"black and non-black dots represent those functions of system "
-                              r"\(\\ref\{united_system\}\)", tex):
-            raise ValueError("caption words not read")
-        printed_order = int(m.group(1))
-        label, at = m.group(4), m.group(5)
+        n_rel, v_rel, w_rel = (_read_segment(text_n["n"]), _read_segment(m["v"]), _read_segment(m["w"]))
+        if n_rel is None or v_rel is None or w_rel is None or not (n_rel.ops == v_rel.ops == w_rel.ops == ["="]) or \
+                n_rel.parts[0] != sympy.Symbol("n") or \
+                [(r.parts[0].func.__name__, r.parts[0].args) for r in (v_rel, w_rel)] != \
+                [("v", (sympy.Tuple(*sympy.symbols("x y")),)), ("w", (sympy.Tuple(*sympy.symbols("x y")),))]:
+            raise ValueError("caption formulas not read")
+        printed_order, text_n_value = int(lm.parse(m["order"])), int(n_rel.parts[1])
+        ks = [listed_range(m[k], "k") for k in ("k1", "k2")]
+        label, at = m["label"], _is_point(_read_segment(m["at"]))
         fmap, run, maps, _r = _params()[label]
-        forms_ok = linear_form(m.group(2)) == maps[1] and linear_form(m.group(3)) == maps[2] and at == run
+        forms_ok = linear_form(v_rel.parts[1]) == maps[1] and linear_form(w_rel.parts[1]) == maps[2] and at == run
         parts = branch_disjuncts(_transcribed(["sec1_3-proposition-M"])["sec1_3-proposition-M"], 0, ("j", "z"))
         if len(parts) != 2:
             raise ValueError("the zero branch of the Proposition is not two conditions joined by 'or'")
         which = {"first": parts[0], "second": parts[1]}
-        gray_cond, black_cond = which[conds[0][0] or conds[0][1]], which[conds[1][0] or conds[1][1]]
+        gray_cond, black_cond = which[m["c1"]], which[m["c2"]]
         rel = {"greater than": lambda j, z: j > z, "less than": lambda j, z: j < z,
-               "at least": lambda j, z: j >= z, "at most": lambda j, z: j <= z}[gray.group(1)]
-    except (ValueError, KeyError) as exc:
+               "at least": lambda j, z: j >= z, "at most": lambda j, z: j <= z}[m["gray"]]
+    except (ValueError, KeyError, TypeError) as exc:
         return LineResult(False, how="the caption read from its transcription", detail={"unread": str(exc)})
     order = printed_order if order is None else order
-    n = int(text_n.group(1)) if n is None else n
+    n = text_n_value if n is None else n
     direction, zero_var, _fixed, _rest = step_geometry(label)
     bad, v_free, gray_bad = 0, 0, 0
-    ok_orders = [int(k) for k in ks] == [printed_order, printed_order]
+    ok_orders = ks == [(0, printed_order), (0, printed_order)]
     for lb in united_system(n):
         e = exponents(lb)
         j, i = e[2 * zero_var], e[2 * zero_var + 1]
