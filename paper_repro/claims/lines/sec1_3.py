@@ -2283,7 +2283,9 @@ def l_set(override: dict[str, str] | None = None) -> LineResult:
     t = _transcribed(["sec1_3-L-coefficients", "sec1_3-L-R-row", "sec1_3-L-G-row"], override)
     bad = []
     try:
-        if not re.match(r"\s*where \$\\rho_\{2n,n,n\}\$, \$\\left\\\{", t["sec1_3-L-coefficients"]):
+        sets = lm.sentence(r"where $\rho_{2n,n,n}$, {rho}, {gamma}", t["sec1_3-L-coefficients"].strip())
+        if sets is None or any(not isinstance(lm.parse(sets[k]), AppliedUndef) or lm.parse(sets[k]).func != lm.Family
+                               for k in ("rho", "gamma")):
             raise ValueError("not 'where rho_{2n,n,n}, {..}'")
         for n in range(1, 13):
             listed = sorted(constant_sets(t["sec1_3-L-coefficients"], n))
@@ -2395,8 +2397,10 @@ def _orders(line_id: str, n: int) -> range:
     tex = _transcribed([line_id])[line_id]
     (rng,) = listed_orders(tex, "r", n=n)
     if line_id == "sec1_3-Lr-orders":
-        if not re.fullmatch(r"for all orders \$r=.*\$, where the coefficients of all discarded functions are equal to "
-                            r"\$0\$\.", tex.strip()):
+        words = lm.sentence("for all orders {r}, where the coefficients of all discarded functions are equal to $0$.",
+                            tex.strip())
+        rel = _read_segment(words["r"]) if words else None
+        if rel is None or not rel.ops or rel.parts[0] != sympy.Symbol("r"):
             raise ValueError("not 'for all orders r=.., where the coefficients ... are equal to $0$.'")
         if list(rng) != sorted({r for r, _p, _b, _g in elimination(n)}):
             raise ValueError(f"the orders {list(rng)} are not those of the elimination")
