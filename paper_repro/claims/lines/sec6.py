@@ -16,7 +16,6 @@ Independent computations used here:
 from __future__ import annotations
 
 import functools
-import re
 from collections.abc import Callable, Sequence
 from math import comb
 
@@ -31,6 +30,7 @@ from paper_repro.core.domain import RationalAngle, RationalPoints, rational_alph
 from paper_repro.core.labels import delta, exponents, index_of, united_system
 from paper_repro.core.normalization import coefficient_vector, evaluate_normalized
 from paper_repro.core.univariate import c_const, c_numerator
+from paper_repro.printed.latex_math import sentence
 from paper_repro.printed.lines import live_lines
 from paper_repro.surfaces.fitting import ExactTrig, fit_exact
 
@@ -264,11 +264,11 @@ def order_range_ok(line_id: str) -> bool:
     function) with delta_n independent functions (rank at n = 1, 2 exact)."""
     from paper_repro.printed.parsed import chain, relation_holds
 
-    m = re.search(r"(?:rational )?triangular trigonometric patch of order \$([^$]+)\$", _LINE[line_id].verbatim)
+    m = sentence("triangular trigonometric patch of order {n}", _LINE[line_id].verbatim, search=True)
     if not m:
         return False
-    parts, ops = chain(m.group(1).replace("n", "u"))  # n read as a symbol (u: a letter the reader knows)
-    from paper_repro.printed.parsed import U
+    parts, ops = chain(m["n"])
+    U = sympy.Symbol("n")
 
     alpha = rational_alpha(fmpq(1, 3))
 
@@ -331,10 +331,11 @@ def delta3(verbatim: str | None = None) -> LineResult:
     if not found:
         return LineResult(False, how="the count read from the transcription", detail={"unread": tex[:60]})
     n, count = found[0]
-    order = re.search(r"illustrates a (\w+) order triangular trigonometric\s+patch defined by", tex)
-    said = ORDINALS.get(order.group(1)) if order else None
+    order = sentence(r"Fig.\ \ref{fig:third_order_patch} illustrates a {order:word} order triangular trigonometric "
+                     "patch defined by {count} control points.", tex)
+    said = ORDINALS.get(order["order"]) if order else None
     terms = len(patch_terms_read(n))
-    words = has_words(tex, "Fig.\\ \\ref{fig:third_order_patch} illustrates", "control points")
+    words = order is not None
     return LineResult(said == n and words and
                       terms == count == delta(n) == len(united_system(n)),
                       how="count read from the transcription vs the terms of eq. triangular_trig_surface (read) and "
@@ -352,9 +353,10 @@ def quadratic_growth() -> LineResult:
     sizes = [len(patch_terms_read(n)) for n in NS_ROWS]
     second = {c - 2 * b + a for a, b, c in zip(sizes, sizes[1:], sizes[2:])}
     first = sizes[1] - sizes[0]
-    m = re.search(r"patches of order higher than (\w+) would be used", tex)
-    beyond = {"one": 1, "two": 2, "three": 3, "four": 4}.get(m.group(1)) if m else None
-    words = has_words(tex, "quadratic growth of the control points")
+    m = sentence("considering the quadratic growth of the control points, it is very unlikely that in CAGD patches of "
+                 "order higher than {k:count} would be used for modeling.", tex)
+    beyond = m["k"] if m else None
+    words = m is not None
     proven = max(convex_hull_orders(), default=None)
     return LineResult(words and beyond == proven and second == {6} and first > 0,
                       how="second differences of the number of control points, n = 1..8; the order named vs the "
@@ -453,10 +455,10 @@ def affine_invariance() -> LineResult:
 def convex_hull_orders() -> list[int]:
     """The orders of "in the special cases of first, second and third order" (read from the transcription)."""
     tex = _LINE["sec6-convex-hull-n123"].verbatim
-    m = re.search(r"in the special cases of ((?:\w+, )*\w+ and \w+) order triangular", tex)
-    if not m:
+    m = sentence("in the special cases of {orders:words} order triangular", tex, search=True)
+    if not m or " and " not in m["orders"]:
         return []
-    words = re.split(r", | and ", m.group(1))
+    words = m["orders"].replace(" and ", ", ").split(", ")
     return [ORDINALS[w] for w in words if w in ORDINALS] if all(w in ORDINALS for w in words) else []
 
 
@@ -1079,10 +1081,10 @@ def torus_rho() -> LineResult:
     from paper_repro.printed.parsed import VARRHO, chain, relation_holds
 
     tex = _LINE["sec6-torus-rho"].verbatim
-    m = re.match(r"where \$([^$]*)\$ is the distance\s+from the origin to the center of the meridian circle$", tex)
+    m = sentence("where {rho} is the distance from the origin to the center of the meridian circle", tex)
     if not m:
         return LineResult(False, how="the line read from the transcription", detail={"unread": tex[:60]})
-    parts, ops = chain(m.group(1))
+    parts, ops = chain(m["rho"])
     positive = (all(relation_holds([x.subs(VARRHO, r) for x in parts], ops) for r in (fmpq(1, 3), 1, 7))
                 and not any(relation_holds([x.subs(VARRHO, r) for x in parts], ops) for r in (0, -1)))
     rho, mu = fmpq(7, 2), fmpq(5, 3)
@@ -1166,10 +1168,9 @@ def torus_mu_range() -> LineResult:
 
 
 def torus_order_word() -> int | None:
-    m = re.search(r"can exactly be described by a (\w+) order triangular\s+trigonometric patch defined by control "
-                  r"points$", _LINE["sec6-torus-order2"].verbatim)
-    return ORDINALS.get(m.group(1)) if m and "(\\ref{toroidal_triangle})" in _LINE["sec6-torus-order2"].verbatim \
-        else None
+    m = sentence(r"The toroidal triangle (\ref{toroidal_triangle}) can exactly be described by a {n:word} order "
+                 "triangular trigonometric patch defined by control points", _LINE["sec6-torus-order2"].verbatim)
+    return ORDINALS.get(m["n"]) if m else None
 
 
 @line_check("sec6-torus-order2")
@@ -1276,21 +1277,18 @@ def torus_joined() -> LineResult:
                               "continuity": "C1 in (U, V), G1" if all(smooth.values()) else "not C1"})
 
 
-_SETTINGS = re.compile(r"^with settings \$([^$]*)\$, \$([^$]*)\$ and \$([^$]*)\$\.$")
-
-
 def torus_settings_ring(tex: str | None) -> bool:
     """The caption's settings (parsed, in order) name parameters of eq. toroidal_triangle (read) or alpha, and give a
     ring torus (mu > 0, varrho > mu: exact for the algebraic number) with alpha in the range of sec6-alpha-range
     (read)."""
     from paper_repro.printed.parsed import ALPHA, MU, VARRHO, chain
 
-    m = _SETTINGS.match(tex or "")
+    m = sentence("with settings {a}, {b} and {c}.", tex or "")
     if not m:
         return False
     params = set(read_torus_parametrization()["params"]) | {ALPHA}
     values: dict = {}
-    for part in m.groups():
+    for part in (m["a"], m["b"], m["c"]):
         (lhs, rhs), ops = chain(part)
         if ops != ["="] or lhs not in params or lhs in values:
             return False
@@ -1549,11 +1547,13 @@ def q_normalized_independent() -> LineResult:
     tex = _LINE["sec6-q-normalized-independent"].verbatim
     from paper_repro.printed import latex_math as LM
 
-    words, segs = LM.prose(tex)  # the words carry the properties; the four $..$ segments read by the one reader
-    m = re.fullmatch(r"Quotient functions in \(\\ref\{rational_patch\}\) determine the constrained trivariate "
-                     r"rational trigonometric function system \$\$ of order \$\$ that inherits advantageous "
-                     r"properties of \$\$, i\.e\., \$\$ is also ((?:not )?normalized) and linearly "
-                     r"((?:in)?dependent)\.", words)
+    segs = LM.prose(tex)[1]  # the words are read by the sentence below; the four $..$ segments by the one reader
+    m = sentence(r"Quotient functions in (\ref{rational_patch}) determine the constrained trivariate rational "
+                 "trigonometric function system {q} of order {n} that inherits advantageous properties of {t}, i.e., "
+                 "{q2} is also {normalized:words} and linearly {independent:word}.", tex)
+    if m and (m["normalized"] not in ("normalized", "not normalized") or
+              m["independent"] not in ("independent", "dependent")):
+        m = None
     try:
         q, order, t, q_again = [LM.parse(seg) for seg in segs] if len(segs) == 4 else [None] * 4
         named = (q == q_again == sympy.Function("Qbar")(2 * order) and t == sympy.Function("Tbar")(2 * order)
@@ -1562,7 +1562,7 @@ def q_normalized_independent() -> LineResult:
         named = False
     if not m or not named:
         return LineResult(False, how="the properties read from the transcription", detail={"unread": tex[-60:]})
-    want = (m.group(1) == "normalized", m.group(2) == "independent")
+    want = (m["normalized"] == "normalized", m["independent"] == "independent")
     printed, corrected, ranks = True, True, {}
     for n in (1, 2, 3):
         rng = _rng(80 + n)
@@ -1724,11 +1724,11 @@ def dupin_count_holds(tex: str | None) -> tuple[bool, dict]:
     squares."""
     from paper_repro.printed.parsed import ALPHA, U, V
 
-    m = re.match(r"^by means of ([\w-]+) smoothly joined (\w+) order rational triangular trigonometric patches,$",
-                 tex or "")
-    if not m or m.group(1) not in NUMBER_WORDS or m.group(2) not in ORDINALS:
+    m = sentence("by means of {count:word} smoothly joined {order:word} order rational triangular trigonometric "
+                 "patches,", tex or "")
+    if not m or m["count"] not in NUMBER_WORDS or m["order"] not in ORDINALS:
         return False, {"unread": (tex or "")[:60]}
-    count, n = NUMBER_WORDS[m.group(1)], ORDINALS[m.group(2)]
+    count, n = NUMBER_WORDS[m["count"]], ORDINALS[m["order"]]
     from paper_repro.printed import latex_math as LM
 
     settings = {}  # the caption's settings: each $..$ segment 'name = value', read by the one reader
@@ -1923,13 +1923,13 @@ def fig_dupin_settings() -> LineResult:
     from paper_repro.printed.parsed import C as SC
 
     tex = _LINE["sec6-fig-dupin-settings"].verbatim
-    m = re.match(r"^cyclide \(with settings \$([^$]*)\$, \$([^$]*)\$, \$([^$]*)\$ and \$([^$]*)\$\) which is rendered "
-                 r"as a\s+transparent surface except the lower right figure\. The shape parameter of each\s+second "
-                 r"order rational triangular trigonometric patch is \$([^$]*)\$\.$", tex)
+    m = sentence("cyclide (with settings {a}, {b}, {c} and {mu}) which is rendered as a transparent surface except "
+                 "the lower right figure. The shape parameter of each second order rational triangular trigonometric "
+                 "patch is {alpha}.", tex)
     if not m:
         return LineResult(False, how="the settings read from the transcription", detail={"unread": tex[:60]})
     values = {}
-    for part in m.groups():
+    for part in (m["a"], m["b"], m["c"], m["mu"], m["alpha"]):
         (lhs, rhs), ops = chain(part)
         if ops != ["="] or not lhs.is_Symbol or lhs in values:
             return LineResult(False, how="the settings read", detail={"unread": part})
