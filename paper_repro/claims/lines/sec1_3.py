@@ -20,7 +20,6 @@ The independent computations:
 
 from __future__ import annotations
 
-import re
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from fractions import Fraction
@@ -572,10 +571,13 @@ def levels() -> LineResult:
                 at_least.conditions:
             raise LatexMathError(f"not n >= an integer: {segs[0]!r}")
         least, lo, hi = int(at_least.parts[1]), lm.parse(segs[1]), lm.parse(segs[2])
-        named = re.search(r"We refer to the index \$(\w)\$ of these functions as levels", verbatim("sec1_3-levels-j"))
-        ends = re.search(r"shrinking from the (\w+) to their common (\w+)", verbatim("sec1_3-levels-j"))
-        if not named or not ends:
+        said = lm.sentence("We refer to the index {j} of these functions as levels since they correspond to the nested "
+                           "triangles shrinking from the {outer:word} to their common {inner:word}",
+                           verbatim("sec1_3-levels-j"))
+        index = lm.parse(said["j"]) if said else None
+        if not isinstance(index, sympy.Symbol):
             raise LatexMathError("the named index or the nesting words are not read")
+        named, ends = str(index), (said["outer"], said["inner"])
     except (LatexMathError, ValueError) as exc:
         return _unread(how, exc, "exhaustive")
     first_n = min(n for n in range(0, 4) if _has_levels(n))
@@ -586,9 +588,9 @@ def levels() -> LineResult:
         ok &= lv == set(range(_env_int(lo, n=n), _env_int(hi, n=n) + 1)) and len(lv) == n
         for lb in labs:
             e = exponents(lb)
-            ok &= getattr(lb, named.group(1)) == min(e[0], e[2], e[4])
-        ok &= ends.groups() == ("boundary", "centroid") and min(lv) == 0
-    return LineResult(ok, how=how, kind="exhaustive", detail={"least_n": least, "index": named.group(1)})
+            ok &= getattr(lb, named, None) == min(e[0], e[2], e[4])
+        ok &= ends == ("boundary", "centroid") and min(lv) == 0
+    return LineResult(ok, how=how, kind="exhaustive", detail={"least_n": least, "index": named})
 
 
 def _has_levels(n: int) -> bool:
@@ -596,9 +598,6 @@ def _has_levels(n: int) -> bool:
         return any(not lb.is_centre for lb in united_system(n))
     except ValueError:
         return False
-
-
-_NUMBER_WORDS = {"zero": 0, "one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6}
 
 
 @line_check("sec1_3-corners-centre")
@@ -610,9 +609,9 @@ def corners_centre() -> LineResult:
     how = "exponent vectors of T_{2n} (package labels) against the functions read from the lines, n = 1..20"
     try:
         tex = verbatim("sec1_3-corners-centre")
-        count = re.search(r"The (\w+) outermost nodes", tex)
-        maths = re.findall(r"\$([^$]*)\$", tex)
-        if not count or count.group(1) not in _NUMBER_WORDS or len(maths) < 2:
+        count = lm.sentence("The {k:count} outermost nodes", tex, search=True)
+        maths = lm.inline_math(tex)
+        if not count or count["k"] is None or len(maths) < 2:
             raise LatexMathError("the corner count or the functions are not read")
         corners_tex, centre_tex = maths[:-1], maths[-1]
         nodes = ("innermost", "outermost", "stored in an inner node", "vertices of the outermost")
@@ -622,7 +621,7 @@ def corners_centre() -> LineResult:
         centre_f = printed_sym.monomial(centre_tex)
     except (LatexMathError, ValueError) as exc:
         return _unread(how, exc, "exhaustive")
-    ok = len(corners_tex) == _NUMBER_WORDS[count.group(1)]
+    ok = len(corners_tex) == count["k"]
     for n in range(1, 21):
         labs = united_system(n)
         ex = {exponents(lb) for lb in labs}
@@ -655,7 +654,7 @@ def nonnegative() -> LineResult:
     how = "exact values of the parsed R, G, B functions at points of Omega^alpha, n = 1..6"
     try:
         word, pred = sign_word(verbatim("sec1_3-nonnegative"))
-        if not re.search(r"consist of \S+ functions", verbatim("sec1_3-nonnegative")):
+        if lm.sentence("consist of {sign:word} functions", verbatim("sec1_3-nonnegative"), search=True) is None:
             raise LatexMathError("not a statement about the functions")
         funcs = {(c, h): printed_sym.explicit(c, h) for c in "RGB" for h in ("low", "high")}
     except (LatexMathError, ValueError) as exc:
@@ -924,7 +923,7 @@ def c_formula() -> LineResult:
     how = "exact values of the parsed formula against the expansion, n = 1..5 at 4 alpha (tan(alpha/4) rational)"
     try:
         word, pred = sign_word(tex.split("\\[", 1)[0])
-        if not re.search(r"\bnormalizing\b", tex):
+        if "normalizing" not in lm.prose(tex.split("\\[", 1)[0])[0].split():
             raise LatexMathError("the coefficients are not said to normalize")
         display = tex.split("\\[", 1)[1].split("\\]", 1)[0]
         (lhs, rhs), lo, hi = equation_over(display, "i")
@@ -1413,7 +1412,8 @@ def bernstein_proof_limit() -> LineResult:
     how = "60-digit values at alpha = 1e-15 of the parsed limits, n = 1..4"
     try:
         parts = _limit_parts(verbatim("sec1_3-bernstein-limit-step1"))
-        used = re.findall(r"\$(.*?)\$", verbatim("sec1_3-bernstein-limits-used"))
+        said = lm.sentence("since {a} and {b}", verbatim("sec1_3-bernstein-limits-used"))
+        used = [said["a"], said["b"]] if said else []
         used_parts = [relation(u.rstrip(". ")) for u in used]
         if len(parts) != 2 or len(used_parts) != 2 or any(len(p) != 2 for p in used_parts):
             raise LatexMathError("the limits are not read")
@@ -3169,15 +3169,17 @@ _POWER_WORDS = {"at least": lambda e, m: e >= m, "greater than or equal to": lam
                 "equal to": lambda e, m: e == m}
 
 
+#: the relations of a power to a number that the omitted functions' sentence may say
+_POWER_RELATIONS = ("at least", "greater than or equal to", "greater than", "at most", "less than", "equal to")
+
+
 def read_omitted(tex: str) -> dict:
     """The sentence "the omitted functions include the factor $\\left. \\sin\\frac{v_{1}(x,y)}{2}\\right\\vert _{y=0}
     =\\left. \\sin\\frac{y}{2}\\right\\vert _{y=0}=0$ raised to a power at least one", read: the coordinate and its
     parametrization index, the argument it equals, the points, the printed value and the power relation."""
     words, segs = lm.prose(tex)
-    w = re.search(r"factor \$\$ raised to a power "
-                  r"(at least|greater than or equal to|greater than|at most|less than|equal to) (zero|one|two|three)\b",
-                  words)  # the words (prose); the one segment is the formula
-    if not w or len(segs) != 1:
+    w = lm.sentence("... include the factor {f} raised to a power {relation:words} {power:count}", tex)
+    if not w or w["relation"] not in _POWER_RELATIONS or w["power"] is None or len(segs) != 1:
         raise ValueError(f"the omitted functions' factor not read in {tex[:50]!r}")
     try:
         rel = lm.parse_relation(segs[0])
@@ -3196,7 +3198,7 @@ def read_omitted(tex: str) -> dict:
             and coord.args[0].is_Integer and coord.args[1] == sympy.Tuple(*sympy.symbols("x y"))):
         raise ValueError(f"{coord} is not a coordinate u_k(x,y), v_k(x,y), w_k(x,y)")
     return {"coord": coord.func.__name__, "index": int(coord.args[0]), "points": {p1, p2}, "arg": arg,
-            "value": int(rel.parts[2]), "relation": w.group(1), "power": _NUMBER_WORDS[w.group(2)]}
+            "value": int(rel.parts[2]), "relation": w["relation"], "power": w["power"]}
 
 
 def omitted_check(line_id: str, before: str, terms_line: str, param_index: int,
@@ -3301,7 +3303,7 @@ def read_a_system(tex: str, param_index: int) -> tuple[sympy.Expr, sympy.Expr, s
     if not isinstance(interval, sympy.Interval) or interval.left_open or interval.right_open or \
             (_lin(interval.start, 1), _lin(interval.end, 1)) != (0, 1):
         raise ValueError(f"the interval {interval} is not [0, alpha]")
-    if re.search(r"\bdependent", t.replace("independent", "")):  # prose
+    if any(w.startswith("dependent") for w in words.replace("independent", "").replace("-", " ").split()):  # prose
         raise ValueError("'dependent'")
     return first, last, member.args[1]
 
@@ -4053,12 +4055,17 @@ def lemma_hypotheses(verbatim_text: str | None = None) -> LineResult:
         "sec1_3-lemma-hypotheses"]
 
     def run(text: str) -> tuple[bool, dict]:
-        m = re.search(r"Let ((?:\$[a-z]\$(?:, | and )?)+) be natural numbers greater than or equal to \$(\d+)\$", text)
+        m = lm.sentence("Let {letters:words} be natural numbers greater than or equal to {lo}.", text, search=True)
         sets = _sign_value_sets(text)
         if not m or len(set(sets)) != 1 or "\\lambda,\\mu>0" not in text:
             raise ValueError("hypotheses not read")
-        letters = re.findall(r"\$([a-z])\$", m.group(1))
-        lo = int(m.group(2))
+        listed = m["letters"].replace(" and ", ", ").split(", ")  # "$i$, $j$ and $p$": each a segment, parsed
+        letters = [str(lm.parse(x.strip("$"))) for x in listed]
+        lo = lm.parse(m["lo"])
+        if not all(x.startswith("$") and x.endswith("$") and len(x) > 2 for x in listed) or \
+                not all(len(x) == 1 for x in letters) or not lo.is_Integer:
+            raise ValueError("hypotheses not read")
+        lo = int(lo)
         p_lo = lo if "p" in letters else int(sets[0])
         consistent = p_lo == int(sets[0])
         rule = read_sign_function(_transcribed(["sec1_3-sign-sin"])["sec1_3-sign-sin"])
