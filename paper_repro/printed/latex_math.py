@@ -209,7 +209,7 @@ def clean(tex: str, arrays: list | None = None) -> str:
             return " \\AND "
         if t == "or":
             return " \\OR "
-        raise LatexMathError(f"prose in \\text{{{m.group(1)}}} is not mathematics")
+        raise LatexMathError(f"prose in {m.group(0)} is not mathematics")
 
     s = _TEXT.sub(text, s)
     s = re.sub(r"\\(mathrm|mathit|mbox)\s*\{\s*d\s*\}", " \\\\dd ", s)
