@@ -23,7 +23,7 @@ import numpy as np
 import sympy
 from flint import fmpq, fmpq_mat, fmpq_poly
 
-from paper_repro.claims.lines import LineResult, line_check
+from paper_repro.claims.lines import LineResult, items_result, line_check
 from paper_repro.core.basis import evaluate
 from paper_repro.core.derivatives_basis import basis_derivative
 from paper_repro.core.domain import RationalAngle, RationalPoints, rational_alpha, sample_rational_points
@@ -1048,28 +1048,30 @@ def torus_parametrization() -> LineResult:
 
     from paper_repro.surfaces.models import torus_xyz as model
 
-    try:
+    how = ("the parametrization and its parameter set read from the transcription; exact points (rational quarter "
+           "tangents) on the implicit torus and equal to the package's torus model (40 digits); the parameter set vs "
+           "Omega^alpha on a 11 x 11 grid")
+
+    def items() -> dict[str, bool]:
         dom = read_torus_parametrization()
-    except ValueError as exc:
-        return LineResult(False, how="eq. toroidal_triangle read from the transcription", detail={"unread": str(exc)})
-    rho, mu = fmpq(7, 2), fmpq(5, 3)
-    on_torus, same = True, True
-    with mpmath.workdps(40):
-        for tu in (fmpq(0), fmpq(1, 4), fmpq(2, 3), fmpq(-3, 2)):
-            for tv in (fmpq(1, 5), fmpq(3, 4), fmpq(-2, 7)):
-                p = parsed_torus_point(tu, tv, rho, mu)
-                on_torus &= torus_quartic(*p, rho, mu) == 0
-                want = model(4 * mpmath.atan(mpmath.mpf(int(tu.p)) / int(tu.q)),
-                             4 * mpmath.atan(mpmath.mpf(int(tv.p)) / int(tv.q)), mpmath.mpf(7) / 2, mpmath.mpf(5) / 3)
-                same &= all(abs(mpmath.mpf(int(x.p)) / int(x.q) - w) < mpmath.mpf(10) ** -30 for x, w in zip(p, want))
-    one = fmpq(1)
-    grid = [(fmpq(i, 8), fmpq(j, 8)) for i in range(-1, 10) for j in range(-1, 10)]
-    domain = all(_in_read_domain(dom, u, v, one) == (u >= 0 and v >= 0 and one - u - v >= 0) for u, v in grid)
-    return LineResult(on_torus and same and domain, how="the parametrization and its parameter set read from the "
-                      "transcription; exact points (rational quarter tangents) on the implicit torus and equal to the "
-                      "package's torus model (40 digits); the parameter set vs Omega^alpha on a 11 x 11 grid",
-                      kind="exact-evidence", detail={"on_torus": on_torus, "equals_model": same,
-                                                     "parameter_set_is_omega": domain})
+        rho, mu = fmpq(7, 2), fmpq(5, 3)
+        on_torus, same = True, True
+        with mpmath.workdps(40):
+            for tu in (fmpq(0), fmpq(1, 4), fmpq(2, 3), fmpq(-3, 2)):
+                for tv in (fmpq(1, 5), fmpq(3, 4), fmpq(-2, 7)):
+                    p = parsed_torus_point(tu, tv, rho, mu)
+                    on_torus &= torus_quartic(*p, rho, mu) == 0
+                    want = model(4 * mpmath.atan(mpmath.mpf(int(tu.p)) / int(tu.q)),
+                                 4 * mpmath.atan(mpmath.mpf(int(tv.p)) / int(tv.q)), mpmath.mpf(7) / 2,
+                                 mpmath.mpf(5) / 3)
+                    same &= all(abs(mpmath.mpf(int(x.p)) / int(x.q) - w) < mpmath.mpf(10) ** -30
+                                for x, w in zip(p, want))
+        one = fmpq(1)
+        grid = [(fmpq(i, 8), fmpq(j, 8)) for i in range(-1, 10) for j in range(-1, 10)]
+        domain = all(_in_read_domain(dom, u, v, one) == (u >= 0 and v >= 0 and one - u - v >= 0) for u, v in grid)
+        return {"on_torus": bool(on_torus), "equals_model": bool(same), "parameter_set_is_omega": domain}
+
+    return items_result(items, how, "exact-evidence", (ValueError,))
 
 
 @line_check("sec6-torus-rho")
@@ -1439,25 +1441,24 @@ def rational_patch(override: dict[str, str] | None = None) -> LineResult:
     tau-bar_n^alpha(u,v,w) (subscript and arguments read); with equal weights the rational patch is the polynomial
     patch (exact); the order range read from "of order $n\\geq1$" is the orders with a patch."""
     rows = ("sec6-rational-row-1", "sec6-rational-row-2", "sec6-rational-row-3")
-    try:
-        sets_ok = all(matches_basis(rows_labels(rows, n, "rational", override,
-                                                lhs=sympy.Function("q_vec")(N_SYM, UVW)), n) for n in NS_ROWS)
-    except ValueError as exc:
-        return LineResult(False, how="the rows read from the transcriptions", detail={"unread": str(exc)})
-    quotients = sets_ok
-    order_ok = order_range_ok("sec6-rational-order")
-    alpha = rational_alpha(TS[2])
-    same = True
-    for n in (1, 2):
-        net = random_net(n, 3, 11 + n)
-        pts = sample_rational_points(alpha, 3, seed=n)
-        poly = combine(evaluate_normalized(n, alpha, pts, "exact"), net)
-        same &= rational_eval(n, alpha, net, [fmpq(5, 2)] * delta(n), pts) == poly
-    return LineResult(sets_ok and quotients and order_ok and same, how="the rows read, n = 1..8; the denominators "
-                      "tau-bar_n^alpha(u,v,w) read; exact evaluation with equal weights, n = 1, 2",
-                      kind="exact-evidence",
-                      detail={"equal_weights_give_polynomial_patch": same, "quotients_read": quotients,
-                              "order_range_read": order_ok})
+
+    def items() -> dict[str, bool]:
+        # each row's terms (weight, point, function over tau-bar_n(u,v,w)) name T_{2n}: the quotients read
+        quotients = all(matches_basis(rows_labels(rows, n, "rational", override,
+                                                  lhs=sympy.Function("q_vec")(N_SYM, UVW)), n) for n in NS_ROWS)
+        order_ok = order_range_ok("sec6-rational-order")
+        alpha = rational_alpha(TS[2])
+        same = True
+        for n in (1, 2):
+            net = random_net(n, 3, 11 + n)
+            pts = sample_rational_points(alpha, 3, seed=n)
+            poly = combine(evaluate_normalized(n, alpha, pts, "exact"), net)
+            same &= rational_eval(n, alpha, net, [fmpq(5, 2)] * delta(n), pts) == poly
+        return {"quotients_read": quotients, "order_range_read": order_ok,
+                "equal_weights_give_polynomial_patch": bool(same)}
+
+    return items_result(items, "the rows read, n = 1..8; the denominators tau-bar_n^alpha(u,v,w) read; exact "
+                        "evaluation with equal weights, n = 1, 2", "exact-evidence", (ValueError,))
 
 
 _TAU_ROWS = ("sec6-tau-row-1", "sec6-tau-row-2")
@@ -1485,14 +1486,10 @@ def tau_index_sets(override: dict[str, str] | None = None) -> LineResult:
     """tau's sums over l = 0..n-1, k = l..2n-1-l (read from the transcriptions of its rows) name T_{2n}; row 1 writes
     tau-bar_n^alpha(u,v,w) and each of its functions with the arguments (u,v,w); with unit weights tau = 1 (exact)."""
     texts = {k: (override or {}).get(k, _LINE[k].verbatim) for k in _TAU_ROWS}
-    try:
-        sets = _tau_sets(texts, strict_row_2=False)
-    except ValueError as exc:
-        return LineResult(False, how="the rows read from the transcriptions", detail={"unread": str(exc)})
-    one = _tau_unit()
-    return LineResult(sets and one, how="the rows read by printed.latex_math, sums written out vs T_{2n}, n = 1..8 "
-                      "(row 1: every function of (u,v,w)); exact tau with unit weights, n = 1, 2, 3",
-                      kind="exact-evidence", detail={"unit_weights_tau_is_1": one})
+    how = ("the rows read by printed.latex_math, sums written out vs T_{2n}, n = 1..8 (row 1: every function of "
+           "(u,v,w)); exact tau with unit weights, n = 1, 2, 3")
+    return items_result(lambda: {"rows_name_T_2n": _tau_sets(texts, strict_row_2=False),
+                                 "unit_weights_tau_is_1": _tau_unit()}, how, "exact-evidence", (ValueError,))
 
 
 @line_check("sec6-tau-row-2")
