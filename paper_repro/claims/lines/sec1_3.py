@@ -4054,13 +4054,13 @@ def lemma_hypotheses(verbatim_text: str | None = None) -> LineResult:
     tex = verbatim_text if verbatim_text is not None else _transcribed(["sec1_3-lemma-hypotheses"])[
         "sec1_3-lemma-hypotheses"]
 
-    def run(text: str) -> tuple[bool, dict]:
+    def run(text: str, without: str | None = None) -> tuple[bool, dict]:
         m = lm.sentence("Let {letters:words} be natural numbers greater than or equal to {lo}.", text, search=True)
         sets = _sign_value_sets(text)
         if not m or len(set(sets)) != 1 or "\\lambda,\\mu>0" not in text:
             raise ValueError("hypotheses not read")
         listed = m["letters"].replace(" and ", ", ").split(", ")  # "$i$, $j$ and $p$": each a segment, parsed
-        letters = [str(lm.parse(x.strip("$"))) for x in listed]
+        letters = [str(lm.parse(x.strip("$"))) for x in listed if str(lm.parse(x.strip("$"))) != without]
         lo = lm.parse(m["lo"])
         if not all(x.startswith("$") and x.endswith("$") and len(x) > 2 for x in listed) or \
                 not all(len(x) == 1 for x in letters) or not lo.is_Integer:
@@ -4076,7 +4076,8 @@ def lemma_hypotheses(verbatim_text: str | None = None) -> LineResult:
                                       "consistent": consistent, "sine_rule_holds": holds}
     try:
         ok, detail = run(tex)
-        corr = run(tex.replace("$i$, $j$ and $p$", "$i$ and $j$"))[0] if "$i$, $j$ and $p$" in tex else None
+        # the erratum's correction, on the letters read: the hypothesis is on i and j only
+        corr = run(tex, without="p")[0] if detail["hypothesis_letters"] == ["i", "j", "p"] else None
     except ValueError as exc:
         return LineResult(False, how="the hypotheses read from the transcription", detail={"unread": str(exc)})
     return LineResult(ok, corr, how="the hypotheses and the index sets read from the transcription; the sine rule "
