@@ -2700,6 +2700,7 @@ def induction_orders(verbatim_text: str | None = None) -> LineResult:
         if words is None:
             raise ValueError("not the induction on the derivation order")
         lo, hi = listed_range(words["r"], "r")
+        listed_orders(words["r"], "r", n=N_PROOF.stop - 1)  # the listing steps by one (ValueError if not)
         ok, bad = run(lo, hi)
         # the erratum's correction, on the parsed range: the last order n is n - 1
         corr = run(lo, hi - 1)[0] if hi == sympy.Symbol("n") else None
