@@ -170,6 +170,46 @@ def test_sentence_reads_prose_by_a_template_of_its_words():
     assert sentence("where {w:words} holds", "where $a=1$ or\n$b=2$ holds") == {"w": "$a=1$ or $b=2$"}
     with pytest.raises(ValueError, match="slot kind"):
         sentence("{x:colour}", "red")
+    # a brace after a command is the command's argument, matched literally (hand-derived: the labels must agree)
+    line = r"under parametrizations (\ref{parametrization_1_y_0} )--(\ref{parametrization_3_y_0}), at $y=0$"
+    assert sentence(r"under parametrizations (\ref{parametrization_1_y_0} )--(\ref{parametrization_3_y_0}), at {p}",
+                    line) == {"p": "y=0"}
+    assert sentence(r"under parametrizations (\ref{parametrization_1_y_0} )--(\ref{parametrization_2_x_0}), at {p}",
+                    line) is None
+    cases = r"Cases (\emph{a})--(\emph{c}) show three steps"
+    assert sentence(r"Cases (\emph{a})--(\emph{c}) show {k:count} steps", cases) == {"k": 3}
+
+
+def test_parse_as_printed_keeps_the_printed_structure():
+    import sympy
+
+    from paper_repro.printed.latex_math import parse_as_printed, parse_relation
+
+    x, s, n = sympy.symbols("x s n")
+    # ((1-s)+s)^{2n} is 1 when simplified; as printed it is a power of a two-term sum
+    rel = parse_as_printed(r"\left( \left( 1-s\right) +s\right) ^{2n}=\left( 1-s\right) ^{2}+2\left( 1-s\right) s")
+    assert rel.ops == ["="]
+    assert sympy.expand(rel.parts[0].xreplace({1 - s: x})) != 1
+    assert rel.parts[0].xreplace({1 - s: x}) == (x + s) ** (2 * n)
+    # the number 2 is not multiplied into (1-s): the change of variable reaches it
+    assert sympy.expand(rel.parts[1].xreplace({1 - s: x})) == x**2 + 2 * x * s
+    assert parse_relation(r"\left( \left( 1-s\right) +s\right) ^{2n}").parts[0] == 1
+    # the memo of the simplified reading is not polluted by the unevaluated one
+    parse_as_printed(r"2\left( 1-s\right) s")
+    assert parse_relation(r"2\left( 1-s\right) s").parts[0] == s * (2 - 2 * s)
+
+
+def test_an_emphasized_space_in_a_formula_is_a_space():
+    import sympy
+
+    from paper_repro.printed.latex_math import LatexMathError, parse, parse_relation
+
+    n = sympy.Symbol("n")
+    rel = parse_relation(r"\mathcal{T}_{2n}^{\alpha}=~\operatorname{span}\emph{~}T_{2n}^{\alpha}")
+    assert rel.ops == ["="]
+    assert rel.parts == [sympy.Function("Tcal")(2 * n), sympy.Function("span")(sympy.Function("T")(2 * n))]
+    with pytest.raises(LatexMathError, match="prose"):
+        parse(r"\emph{span} x")  # an emphasized word is prose, not mathematics
 
 
 def test_sentence_takes_a_control_words_argument_literally():

@@ -166,7 +166,7 @@ def _replace_macro(s: str, name: str, nargs: int, fn) -> str:
 
 
 _ARRAY_BEGIN = re.compile(r"\\begin\s*\{array\}\s*(\[[a-z]\])?\s*\{[^{}]*\}")
-_TEXT = re.compile(r"\\text\s*\{([^{}]*)\}")
+_TEXT = re.compile(r"\\(?:text|emph)\s*\{([^{}]*)\}")  # \emph{~} in a formula: an (emphasized) space
 
 
 def _decor(kind: str, inner: str) -> str:
@@ -209,13 +209,13 @@ def clean(tex: str, arrays: list | None = None) -> str:
         t = m.group(1).strip()
         if t == "d":
             return " \\dd "
-        if t in ("", ".", ",", ";"):
+        if t in ("", ".", ",", ";", "~"):
             return " "
         if t == "and":
             return " \\AND "
         if t == "or":
             return " \\OR "
-        raise LatexMathError(f"prose in \\text{{{m.group(1)}}} is not mathematics")
+        raise LatexMathError(f"prose in {m.group(0)} is not mathematics")
 
     s = _TEXT.sub(text, s)
     s = re.sub(r"\\(mathrm|mathit|mbox)\s*\{\s*d\s*\}", " \\\\dd ", s)
@@ -977,6 +977,28 @@ def untagged(tex: str) -> list:
         _UNTAGGED = saved
 
 
+
+def parse_as_printed(tex: str) -> Relation:
+    r"""The relation ``tex`` read as :func:`parse_relation` does, but without sympy's automatic simplification: a
+    sum keeps its printed terms (as in :func:`summands`), a number times a parenthesised sum is not multiplied out
+    and ``\left(\left(1-s\right)+s\right)^{2n}`` stays a power of a sum, not 1.  For a check that substitutes in
+    the printed structure (a change of variable ``x = 1-s`` in the parsed object, never in the text) before it
+    computes; evaluate the parts (``sympy.expand``, ``.doit()``) after the substitution.
+
+    >>> x, s = sympy.symbols("x s")
+    >>> parse_as_printed(r"\left(\left(1-s\right)+s\right)^{2n}").parts[0].xreplace({1 - s: x})
+    (s + x)**(2*n)
+    >>> parse_relation(r"\left(\left(1-s\right)+s\right)^{2n}").parts[0]
+    1
+    """
+    global _ORDERED
+    saved, _ORDERED = _ORDERED, True  # also keeps the reading out of the memo (_run)
+    try:
+        with sympy.evaluate(False):
+            return parse_relation(tex)
+    finally:
+        _ORDERED = saved
+
 def _as_basic(x):
     if isinstance(x, Relation):
         if len(x.parts) == 2 and x.ops == ["in"]:
@@ -1464,7 +1486,9 @@ def prose(tex: str) -> tuple[str, list[str]]:
 #: Number words of the paper's prose (``{name:count}`` of :func:`sentence` reads them, and digits).
 NUMBER_WORDS = {"zero": 0, "one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7, "eight": 8,
                 "nine": 9, "ten": 10, "eleven": 11, "twelve": 12}
-_SLOT = re.compile(r"\{(\w+)(?::(\w+))?\}|\.\.\.|(?<!\\)\$(.+?)(?<!\\)\$", flags=re.S)
+#: a slot ``{name[:kind]}``, ``...`` or literal ``$..$``; a brace right after a letter is the argument of a LaTeX
+#: command (``\ref{label}``, ``\emph{a}``), literal text of the template, not a slot
+_SLOT = re.compile(r"(?<![A-Za-z])\{(\w+)(?::(\w+))?\}|\.\.\.|(?<!\\)\$(.+?)(?<!\\)\$", flags=re.S)
 _SLOT_PATTERNS = {"math": "\x00(\\d+)\x00", "word": r"([\w'-]+)", "words": r"(.+?)", "count": r"([\w]+)",
                   "number": r"(\d+)"}
 _MARK = re.compile("\x00(\\d+)\x00")
@@ -1521,8 +1545,8 @@ def sentence(template: str, tex: str, *, search: bool = False) -> dict[str, Any]
     * ``$..$`` literal mathematics: the printed segment must *read* the same (:func:`parse`/:func:`parse_relation`,
       compared as sympy objects, so spacing and ``\left`` do not matter, while a changed index does);
     * ``...`` any text; a space any white space (also none, so a template may break where the line does);
-    * a brace group right after a control word (``\ref{fig:limit}``, ``\emph{a}``) is literal text; write
-      ``\ref{{label:word}}`` to read the label as a slot.
+    * a brace group right after a letter or a control word (``\ref{fig:limit}``, ``\emph{a}``) is literal text;
+      write ``\ref{{label:word}}`` to read the label as a slot.
 
     The whole line must match (``search=True``: anywhere in it).  Returns the slots' values, or ``None`` when the
     words differ or a literal segment reads differently.

@@ -20,7 +20,7 @@ The independent computations:
 
 from __future__ import annotations
 
-import re
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from fractions import Fraction
 from functools import cache
@@ -571,10 +571,13 @@ def levels() -> LineResult:
                 at_least.conditions:
             raise LatexMathError(f"not n >= an integer: {segs[0]!r}")
         least, lo, hi = int(at_least.parts[1]), lm.parse(segs[1]), lm.parse(segs[2])
-        named = re.search(r"We refer to the index \$(\w)\$ of these functions as levels", verbatim("sec1_3-levels-j"))
-        ends = re.search(r"shrinking from the (\w+) to their common (\w+)", verbatim("sec1_3-levels-j"))
-        if not named or not ends:
+        said = lm.sentence("We refer to the index {j} of these functions as levels since they correspond to the nested "
+                           "triangles shrinking from the {outer:word} to their common {inner:word}",
+                           verbatim("sec1_3-levels-j"))
+        index = lm.parse(said["j"]) if said else None
+        if not isinstance(index, sympy.Symbol):
             raise LatexMathError("the named index or the nesting words are not read")
+        named, ends = str(index), (said["outer"], said["inner"])
     except (LatexMathError, ValueError) as exc:
         return _unread(how, exc, "exhaustive")
     first_n = min(n for n in range(0, 4) if _has_levels(n))
@@ -585,9 +588,9 @@ def levels() -> LineResult:
         ok &= lv == set(range(_env_int(lo, n=n), _env_int(hi, n=n) + 1)) and len(lv) == n
         for lb in labs:
             e = exponents(lb)
-            ok &= getattr(lb, named.group(1)) == min(e[0], e[2], e[4])
-        ok &= ends.groups() == ("boundary", "centroid") and min(lv) == 0
-    return LineResult(ok, how=how, kind="exhaustive", detail={"least_n": least, "index": named.group(1)})
+            ok &= getattr(lb, named, None) == min(e[0], e[2], e[4])
+        ok &= ends == ("boundary", "centroid") and min(lv) == 0
+    return LineResult(ok, how=how, kind="exhaustive", detail={"least_n": least, "index": named})
 
 
 def _has_levels(n: int) -> bool:
@@ -595,9 +598,6 @@ def _has_levels(n: int) -> bool:
         return any(not lb.is_centre for lb in united_system(n))
     except ValueError:
         return False
-
-
-_NUMBER_WORDS = {"zero": 0, "one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6}
 
 
 @line_check("sec1_3-corners-centre")
@@ -609,9 +609,9 @@ def corners_centre() -> LineResult:
     how = "exponent vectors of T_{2n} (package labels) against the functions read from the lines, n = 1..20"
     try:
         tex = verbatim("sec1_3-corners-centre")
-        count = re.search(r"The (\w+) outermost nodes", tex)
-        maths = re.findall(r"\$([^$]*)\$", tex)
-        if not count or count.group(1) not in _NUMBER_WORDS or len(maths) < 2:
+        count = lm.sentence("The {k:count} outermost nodes", tex, search=True)
+        maths = lm.inline_math(tex)
+        if not count or count["k"] is None or len(maths) < 2:
             raise LatexMathError("the corner count or the functions are not read")
         corners_tex, centre_tex = maths[:-1], maths[-1]
         nodes = ("innermost", "outermost", "stored in an inner node", "vertices of the outermost")
@@ -621,7 +621,7 @@ def corners_centre() -> LineResult:
         centre_f = printed_sym.monomial(centre_tex)
     except (LatexMathError, ValueError) as exc:
         return _unread(how, exc, "exhaustive")
-    ok = len(corners_tex) == _NUMBER_WORDS[count.group(1)]
+    ok = len(corners_tex) == count["k"]
     for n in range(1, 21):
         labs = united_system(n)
         ex = {exponents(lb) for lb in labs}
@@ -654,7 +654,7 @@ def nonnegative() -> LineResult:
     how = "exact values of the parsed R, G, B functions at points of Omega^alpha, n = 1..6"
     try:
         word, pred = sign_word(verbatim("sec1_3-nonnegative"))
-        if not re.search(r"consist of \S+ functions", verbatim("sec1_3-nonnegative")):
+        if lm.sentence("consist of {sign:word} functions", verbatim("sec1_3-nonnegative"), search=True) is None:
             raise LatexMathError("not a statement about the functions")
         funcs = {(c, h): printed_sym.explicit(c, h) for c in "RGB" for h in ("low", "high")}
     except (LatexMathError, ValueError) as exc:
@@ -923,7 +923,7 @@ def c_formula() -> LineResult:
     how = "exact values of the parsed formula against the expansion, n = 1..5 at 4 alpha (tan(alpha/4) rational)"
     try:
         word, pred = sign_word(tex.split("\\[", 1)[0])
-        if not re.search(r"\bnormalizing\b", tex):
+        if "normalizing" not in lm.prose(tex.split("\\[", 1)[0])[0].split():
             raise LatexMathError("the coefficients are not said to normalize")
         display = tex.split("\\[", 1)[1].split("\\]", 1)[0]
         (lhs, rhs), lo, hi = equation_over(display, "i")
@@ -1412,7 +1412,8 @@ def bernstein_proof_limit() -> LineResult:
     how = "60-digit values at alpha = 1e-15 of the parsed limits, n = 1..4"
     try:
         parts = _limit_parts(verbatim("sec1_3-bernstein-limit-step1"))
-        used = re.findall(r"\$(.*?)\$", verbatim("sec1_3-bernstein-limits-used"))
+        said = lm.sentence("since {a} and {b}", verbatim("sec1_3-bernstein-limits-used"))
+        used = [said["a"], said["b"]] if said else []
         used_parts = [relation(u.rstrip(". ")) for u in used]
         if len(parts) != 2 or len(used_parts) != 2 or any(len(p) != 2 for p in used_parts):
             raise LatexMathError("the limits are not read")
@@ -1440,10 +1441,15 @@ def bernstein_proof_limit() -> LineResult:
                                                        "termwise": termwise})
 
 
-def _one_minus_s(tex: str) -> str:
-    """The transcription with each parenthesized ``1-s`` read as the variable x (the change of variable of
+def _one_minus_s(tex: str) -> list[sympy.Expr]:
+    """The parts of an equality chain read without simplification (:func:`~paper_repro.printed.latex_math.
+    parse_as_printed`), each ``1-s`` in them replaced by the variable x (the change of variable of
     :func:`bernstein_polynomials`, so that ``(1-s)+s`` is not simplified to 1 before the comparison)."""
-    return re.sub(r"\\left\(\s*1-s\s*\\right\)", " x ", tex)
+    rel = lm.parse_as_printed(tex)
+    if rel.lead not in (None, "=") or any(op != "=" for op in rel.ops) or rel.conditions:
+        raise LatexMathError(f"not an equality chain: {rel.lead} {rel.ops} {len(rel.conditions)} clauses")
+    s = sympy.Symbol("s")
+    return [p.xreplace({1 - s: sympy.Symbol("x")}) for p in rel.parts]
 
 
 def _bernstein_xs(f: sympy.Expr, x: sympy.Symbol, s: sympy.Symbol) -> sympy.Expr:
@@ -1464,8 +1470,9 @@ def bernstein_polynomials() -> LineResult:
     s, x = sympy.symbols("s x")
     try:
         parts = [p for lid in ("sec1_3-bernstein-limit-step2", "sec1_3-bernstein-limit-step3")
-                 for p in relation("0" + _one_minus_s(verbatim(lid)).replace("\\end{align*}", ""))[1:]]
-        start = _limit_parts(_one_minus_s(verbatim("sec1_3-bernstein-limit-step1")))[-1]
+                 for p in _one_minus_s("0" + verbatim(lid).replace("\\end{align*}", ""))[1:]]
+        start = _one_minus_s(verbatim("sec1_3-bernstein-limit-step1").replace("\\begin{align*}", " ")
+                             .replace("\\end{align*}", " "))[-1]
         if len(parts) != 3:
             raise LatexMathError(f"{len(parts)} parts, not 3")
     except (LatexMathError, ValueError) as exc:
@@ -1631,11 +1638,14 @@ def independence_rank() -> LineResult:
     n = 1..5 at tan(alpha/4) = 1/2 and n = 1..4 at tan(alpha/4) = 3/4.  Read from the transcription: the system
     (\\ref{united_system}), the words "is linearly independent", and the space whose dimension is claimed, the span
     of T_{2n}^alpha (its order 2n)."""
-    tex = re.sub(r"\s+", " ", _transcribed(["sec1_3-theorem"])["sec1_3-theorem"])
-    m = re.fullmatch(r"The function system \(\\ref\{united_system\}\) is linearly independent and the dimension of "
-                     r"the vector space \$\\mathcal\{T\}_\{(\w+)\}\^\{\\alpha\}=~\$\\emph\{span\}\$\\emph\{~\}"
-                     r"T_\{(\w+)\}\^\{\\alpha\}\$ is", tex.strip())
-    if not m or m.group(1) != m.group(2) or m.group(1) != "2n":
+    tex = _layout_free(_transcribed(["sec1_3-theorem"])["sec1_3-theorem"])
+    words = lm.sentence(r"The function system (\ref{united_system}) is linearly independent and the dimension of the "
+                        r"vector space {space}\emph{span}{spanned} is", tex)
+    # the formula is split by the text-mode word span: read as one relation with the operator in its place
+    rel = _read_segment(words["space"] + r"\operatorname{span}" + words["spanned"]) if words else None
+    two_n = 2 * sympy.Symbol("n")
+    want = [("Tcal", (two_n,)), ("span", (sympy.Function("T")(two_n),))]
+    if rel is None or rel.ops != ["="] or rel.conditions or [(p.func.__name__, p.args) for p in rel.parts] != want:
         return LineResult(False, how="the statement read from the transcription", detail={"unread": tex[:60]})
     detail, ok = {}, True
     for at, n_max in zip(ALPHA_TS, (5, 4)):
@@ -1948,26 +1958,89 @@ def param_ranges() -> LineResult:
                       detail={"onto": ok, "ranges": {k: [str(a), str(b)] for k, (a, b) in rng.items()}})
 
 
+def _refs(tex: str) -> list[str]:
+    """The labels of the ``\\ref{..}`` cross-references of a line, in order (LaTeX markup, not the paper's words)."""
+    out, k = [], tex.find("\\ref{")
+    while k >= 0:
+        end = tex.find("}", k)
+        out.append(tex[k + 5:end].strip())
+        k = tex.find("\\ref{", end)
+    return out
+
+
+def _layout_free(tex: str) -> str:
+    """The line with its ``%`` line ends and runs of white space as single spaces."""
+    return " ".join(tex.replace("%", " ").split())
+
+
+def _read_segment(seg: str):
+    """A ``$..$`` segment read by :func:`~paper_repro.printed.latex_math.parse_relation` (``None`` if unread)."""
+    try:
+        return lm.parse_relation(seg)
+    except LatexMathError:
+        return None
+
+
+def _is_point(rel) -> str | None:
+    """``"x"``/``"y"`` when a parsed segment is the point ``x=0``/``y=0``."""
+    xy = sympy.symbols("x y")
+    if rel is not None and rel.ops == ["="] and not rel.conditions and len(rel.parts) == 2 and \
+            rel.parts[1] == 0 and rel.parts[0] in xy:
+        return str(rel.parts[0])
+    return None
+
+
 def read_boundary_vars(tex: str) -> list[tuple[str, str]]:
     """(parametrization, variable set to 0) pairs of a line, in order: the ``\\ref{parametrization_..}`` it names and
-    the points ``$y=0$``/``$x=0$`` it evaluates at (``ValueError`` if their numbers differ or are 0)."""
-    params = re.findall(r"\\ref\{(parametrization_[123]_[xy]_0)\}", tex)
-    points = re.findall(r"\$([xy])=0\$", tex)
+    the points ``$y=0$``/``$x=0$`` it evaluates at (each ``$..$`` segment parsed; ``ValueError`` if their numbers
+    differ or are 0)."""
+    params = [r for r in _refs(tex) if r.startswith("parametrization_")]
+    points = [v for v in (_is_point(_read_segment(seg)) for seg in lm.prose(tex)[1]) if v]
     if not params or len(params) != len(points):
         raise ValueError(f"{len(params)} parametrizations but {len(points)} points in {tex[:50]!r}")
     return list(zip(params, points))
 
 
-_NUMBER = {"two": 2, "three": 3, "four": 4, "five": 5}
+_RESPECT = ("with respect to $$", "with respect to the variable $$", "with respect to variables $$")
 
 
 def _resp_vars(tex: str) -> list[list[str]]:
-    """The variables of every "with respect to [the variable|variables] $y$[, $x$ and $y$]" of a line."""
+    """The variables of every "with respect to [the variable|variables] $y$[, $x$ and $y$]" of a line (the segments
+    parsed: each must be a variable, else it is named as read)."""
+    words, segs = lm.prose(_layout_free(tex))
+    pieces = words.split("$$")  # pieces[k] is before segment k, pieces[k + 1] after it
     out = []
-    pat = r"with respect to (?:the variable |variables )?\$([xy])\$(?:, \$([xy])\$ and \$([xy])\$)?"
-    for m in re.finditer(pat, tex):
-        out.append([g for g in m.groups() if g])
+    for k, seg in enumerate(segs):
+        if not (pieces[k] + "$$").endswith(_RESPECT):
+            continue
+        group = [seg]
+        if k + 2 < len(segs) and pieces[k + 1] == ", " and pieces[k + 2] == " and ":
+            group += segs[k + 1:k + 3]
+        out.append([str(rel.parts[0]) if rel and not rel.ops and not rel.conditions else seg
+                    for rel in map(_read_segment, group)])
     return out
+
+
+def _orders_named(tex: str) -> tuple[list, bool]:
+    """The orders of derivatives a line names ("$r=0$", "zeroth order", "$\\left( r+1\\right) $th order"; each segment
+    parsed) and whether it speaks of an order at all (the word, or a segment ``r=..``/``r\\neq..``)."""
+    words, segs = lm.prose(_layout_free(tex))
+    pieces = words.split("$$")
+    r = sympy.Symbol("r")
+    orders: list = [sympy.Integer(0)] * sum(
+        1 for a, b in zip(words.split(), words.split()[1:]) if a == "zeroth" and b == "order")
+    speaks = "order" in words
+    for k, seg in enumerate(segs):
+        rel = _read_segment(seg)
+        if rel is None:
+            continue
+        if rel.ops and rel.parts[0] == r:
+            speaks = True
+            if rel.ops == ["="] and len(rel.parts) == 2 and not rel.conditions:
+                orders.append(rel.parts[1])
+        elif not rel.ops and pieces[k + 1].startswith("th order"):
+            orders.append(rel.parts[0])
+    return orders, speaks
 
 
 def _step_words_ok(line_id: str, tex: str, pairs: list[tuple[str, str]]) -> bool:
@@ -1975,29 +2048,28 @@ def _step_words_ok(line_id: str, tex: str, pairs: list[tuple[str, str]]) -> bool
     order": 0 in the order-0 steps, before the induction; "$\\left( r+1\\right) $th order": r + 1 in the step
     r -> r+1), the variables "with respect to" (those of the points), the number of "consecutive steps" (the
     parametrizations named), and what black and coloured dots mean (vanish / do not vanish, substitutions with 0)."""
-    t = re.sub(r"\s+", " ", tex.replace("%", " "))
-    orders = [("0" if m.group(1) or m.group(2) else m.group(3).replace(" ", ""))
-              for m in re.finditer(r"\$r=(0)\$|(?<![\w-])(zeroth) order|\$\\left\( ?(r\+1) ?\\right\) ?\$th order", t)]
-    if re.search(r"\$r(?:=|\\neq)[^$]*\$|order", t) and not orders and "partial derivative formula" not in t \
-            and "under parametrizations" not in t:
+    t = _layout_free(tex)
+    orders, speaks = _orders_named(t)
+    if speaks and not orders and "partial derivative formula" not in t and "under parametrizations" not in t:
         raise ValueError(f"{line_id}: an order not read")
     before_induction = transcribed_line(line_id).tex[0] < 912
-    if any(o != ("0" if before_induction else "r+1") for o in orders):
+    if any(o != (0 if before_induction else sympy.Symbol("r") + 1) for o in orders):
         return False
     points = [var for _p, var in pairs]
     for vs in _resp_vars(t):
         if vs != points[:len(vs)] and vs != points[-len(vs):]:
             return False
-    m = re.search(r"illustrate (\w+) consecutive steps", t)
-    if m and _NUMBER.get(m.group(1)) != len(pairs):
+    m = lm.sentence("illustrate {k:count} consecutive steps", t, search=True)
+    if m and m["k"] != len(pairs):
         return False
-    if "White dots" in t and not re.search(r"the combining constants of which proved to be \$0\$ in the previous "
-                                           r"steps", t):
+    if "White dots" in t and lm.sentence("the combining constants of which proved to be $0$ in the previous steps",
+                                         t, search=True) is None:
         return False
     if "black dots" in t:
-        if not re.search(r"black dots represent functions whose zeroth order partial derivatives vanish when", t) or \
-                not re.search(r"partial derivatives of which do not vanish under corresponding parametrizations and "
-                              r"substitutions with \$0\$", t):
+        if lm.sentence("black dots represent functions whose zeroth order partial derivatives vanish when", t,
+                       search=True) is None or \
+                lm.sentence("partial derivatives of which do not vanish under corresponding parametrizations and "
+                            "substitutions with $0$", t, search=True) is None:
             return False
     return True
 
@@ -2211,7 +2283,9 @@ def l_set(override: dict[str, str] | None = None) -> LineResult:
     t = _transcribed(["sec1_3-L-coefficients", "sec1_3-L-R-row", "sec1_3-L-G-row"], override)
     bad = []
     try:
-        if not re.match(r"\s*where \$\\rho_\{2n,n,n\}\$, \$\\left\\\{", t["sec1_3-L-coefficients"]):
+        sets = lm.sentence(r"where $\rho_{2n,n,n}$, {rho}, {gamma}", t["sec1_3-L-coefficients"].strip())
+        if sets is None or any(not isinstance(lm.parse(sets[k]), AppliedUndef) or lm.parse(sets[k]).func != lm.Family
+                               for k in ("rho", "gamma")):
             raise ValueError("not 'where rho_{2n,n,n}, {..}'")
         for n in range(1, 13):
             listed = sorted(constant_sets(t["sec1_3-L-coefficients"], n))
@@ -2323,8 +2397,10 @@ def _orders(line_id: str, n: int) -> range:
     tex = _transcribed([line_id])[line_id]
     (rng,) = listed_orders(tex, "r", n=n)
     if line_id == "sec1_3-Lr-orders":
-        if not re.fullmatch(r"for all orders \$r=.*\$, where the coefficients of all discarded functions are equal to "
-                            r"\$0\$\.", tex.strip()):
+        words = lm.sentence("for all orders {r}, where the coefficients of all discarded functions are equal to $0$.",
+                            tex.strip())
+        rel = _read_segment(words["r"]) if words else None
+        if rel is None or not rel.ops or rel.parts[0] != sympy.Symbol("r"):
             raise ValueError("not 'for all orders r=.., where the coefficients ... are equal to $0$.'")
         if list(rng) != sorted({r for r, _p, _b, _g in elimination(n)}):
             raise ValueError(f"the orders {list(rng)} are not those of the elimination")
@@ -2472,36 +2548,45 @@ def _orders_prose(t: dict[str, str]) -> None:
     obtained and holds "for all orders"; the figure's caption shows "three consecutive steps" (the three
     parametrizations) whose "first (resp. (n-1)th) order partial derivatives vanish"; the text after it names the
     equalities 0 = L_0 and 0 = L_{n-2} on Omega^alpha under the successive parametrizations."""
-    def norm(k):
-        return re.sub(r"\s+", " ", t[k].replace("%", " "))
-    rng = norm("sec1_3-induction-range")
+    r_ = sympy.Symbol("r")
+
+    def of_r(seg: str | None) -> bool:  # a segment r=.. (its listed range is read by the caller)
+        rel = _read_segment(seg) if seg is not None else None
+        return rel is not None and bool(rel.ops) and rel.parts[0] == r_
+
+    rng = _layout_free(t["sec1_3-induction-range"])
     pairs = read_boundary_vars(rng)
-    if not re.search(r"an induction hypothesis with respect to the \$r\$th order \(\$r=", rng) or \
+    words = lm.sentence("an induction hypothesis with respect to the $r$th order ({r}) partial derivative", rng,
+                        search=True)
+    if words is None or not of_r(words["r"]) or \
             _resp_vars(rng) != [[v for _p, v in pairs]] or any(PARAMS[p][1] != v for p, v in pairs):
         raise ValueError("induction-range: words")
-    if not re.search(r"we prove our hypothesis from \$r\$ to \$r\+1\$ for all orders \$r=", norm("sec1_3-step-range")):
+    words = lm.sentence("we prove our hypothesis from $r$ to $r+1$ for all orders {r}",
+                        _layout_free(t["sec1_3-step-range"]), search=True)
+    if words is None or not of_r(words["r"]):
         raise ValueError("step-range: words")
-    con = norm("sec1_3-induction-conclusion")
-    if not re.fullmatch(r"Summarizing all calculations and zero constants obtained above, by evaluating the "
-                        r"\$\\left\( r\+1\\right\) \$th order \(\$r=[^$]*\$\) partial derivatives under successive "
-                        r"parametrizations \(\\ref\{parametrization_1_y_0\} ?\)--\(\\ref\{parametrization_3_y_0\}\) "
-                        r"of "
-                        r"the initial equality \(\\ref\{induction_hypothesis_for_linear_independence\}\), we conclude "
-                        r"that equality \(\\ref\{induction_hypothesis_nex_step\}\) is also valid, i\.e\., the "
-                        r"induction hypothesis \(\\ref\{induction_hypothesis_for_linear_independence\}\) is correct "
-                        r"for all orders \$r=[^$]*\$\.", con.strip()):
+    words = lm.sentence(
+        r"Summarizing all calculations and zero constants obtained above, by evaluating the $\left( r+1\right) $th "
+        r"order ({r1}) partial derivatives under successive parametrizations (\ref{parametrization_1_y_0} )--"
+        r"(\ref{parametrization_3_y_0}) of the initial equality (\ref{induction_hypothesis_for_linear_independence}), "
+        r"we conclude that equality (\ref{induction_hypothesis_nex_step}) is also valid, i.e., the induction "
+        r"hypothesis (\ref{induction_hypothesis_for_linear_independence}) is correct for all orders {r2}.",
+        _layout_free(t["sec1_3-induction-conclusion"]).strip())
+    if words is None or not of_r(words["r1"]) or not of_r(words["r2"]):
         raise ValueError("induction-conclusion: words")
-    cap = norm("sec1_3-fig-j1-caption-orders")
-    m = re.search(r"illustrate (\w+) consecutive steps", cap)
-    orders = re.findall(r"(?:whose|evaluates the) (first) \(resp\. \$\\left\( (n-1)\\right\) \$th\) order partial "
-                        r"derivatives (vanish when|of)", cap)
-    if not m or _NUMBER.get(m.group(1)) != len(STEP_PARAMS) or len(orders) != 2 or \
-            not re.search(r"Cases \(\\emph\{a\}\)--\(\\emph\{c\}\) and \(\\emph\{d\}\)--\(\\emph\{f\}\)", cap):
+    cap = _layout_free(t["sec1_3-fig-j1-caption-orders"])
+    steps = lm.sentence(r"Cases (\emph{a})--(\emph{c}) and (\emph{d})--(\emph{f}) illustrate {k:count} consecutive "
+                        "steps", cap, search=True)
+    orders = lm.sentence("whose first (resp. {a}th) order partial derivatives vanish when one evaluates the first "
+                         "(resp. {b}th) order partial derivatives of", cap, search=True)
+    last = sympy.Symbol("n") - 1
+    if steps is None or steps["k"] != len(STEP_PARAMS) or orders is None or \
+            any(_read_segment(orders[x]) is None or _read_segment(orders[x]).parts != [last] for x in "ab"):
         raise ValueError("fig-j1-caption-orders: words")
-    txt = norm("sec1_3-fig-j1-text")
+    txt = _layout_free(t["sec1_3-fig-j1-text"])
     eqs = _zero_l_orders(txt)
-    if len(eqs) != 2 or not re.search(r"under successive parametrizations \(\\ref\{parametrization_1_y_0\} ?\)--"
-                                      r"\(\\ref\{parametrization_3_y_0\}\), respectively", txt):
+    if len(eqs) != 2 or lm.sentence(r"under successive parametrizations (\ref{parametrization_1_y_0} )--"
+                                    r"(\ref{parametrization_3_y_0}), respectively", txt, search=True) is None:
         raise ValueError("fig-j1-text: words")
 
 
@@ -2555,12 +2640,11 @@ def elimination_orders(override: dict[str, str] | None = None) -> LineResult:
                 raise ValueError(f"{k}: listings differ")
         _orders_prose(t)
         caption_r = _r_values(t["sec1_3-fig-j1-caption-orders"])
-        words, segs = lm.prose(t["sec1_3-fig-j1-text"].split("order partial derivatives")[0])
-        ordinals = re.findall(r"\b(first)\b|\$\$th", words)  # the words; each $$ is the next segment, parsed
-        if ordinals.count("") != len(segs):
+        ordinals = lm.sentence("the evaluation of the first and {k}th order partial derivatives",
+                               _layout_free(t["sec1_3-fig-j1-text"]), search=True)
+        if ordinals is None:
             raise ValueError("fig-j1-text: orders")
-        it = iter(segs)
-        text_orders = [("first", None) if o else ("", lm.parse(next(it))) for o in ordinals]
+        text_orders = [("first", None), ("", lm.parse(ordinals["k"]))]
         text_l = _zero_l_orders(t["sec1_3-fig-j1-text"])
     except ValueError as exc:
         return LineResult(False, how="the orders read from the transcriptions", detail={"unread": str(exc)})
@@ -2600,10 +2684,7 @@ def induction_orders(verbatim_text: str | None = None) -> LineResult:
     tex = verbatim_text if verbatim_text is not None else _transcribed(["sec1_3-induction-orders"])[
         "sec1_3-induction-orders"]
 
-    def run(text: str) -> tuple[bool, list]:
-        lo, hi = listed_range(text, "r")
-        if "induction on the derivation order" not in text:
-            raise ValueError("not the induction on the derivation order")
+    def run(lo: sympy.Expr, hi: sympy.Expr) -> tuple[bool, list]:
         hyp_lo, hyp_hi = listed_range(_transcribed(["sec1_3-Lr-orders"])["sec1_3-Lr-orders"], "r")
         bad = []
         for n in N_PROOF:
@@ -2614,9 +2695,15 @@ def induction_orders(verbatim_text: str | None = None) -> LineResult:
                 bad.append({"n": n, "printed": printed, "orders_used": used})
         return not bad, bad
     try:
-        ok, bad = run(tex)
-        fixed = re.sub(r"(r=0,1,\\ldots,)n\$", lambda m: m.group(1) + "n-1$", tex)
-        corr = run(fixed)[0] if fixed != tex else None
+        words = lm.sentence("In order to prove the statement, we argue by mathematical induction on the derivation "
+                            "order {r}.", tex)
+        if words is None:
+            raise ValueError("not the induction on the derivation order")
+        lo, hi = listed_range(words["r"], "r")
+        listed_orders(words["r"], "r", n=N_PROOF.stop - 1)  # the listing steps by one (ValueError if not)
+        ok, bad = run(lo, hi)
+        # the erratum's correction, on the parsed range: the last order n is n - 1
+        corr = run(lo, hi - 1)[0] if hi == sympy.Symbol("n") else None
     except ValueError as exc:
         return LineResult(False, how="the range read from the transcription", detail={"unread": str(exc)})
     return LineResult(ok, corr, how="the printed range of orders against the orders of the elimination recomputed from "
@@ -3083,15 +3170,17 @@ _POWER_WORDS = {"at least": lambda e, m: e >= m, "greater than or equal to": lam
                 "equal to": lambda e, m: e == m}
 
 
+#: the relations of a power to a number that the omitted functions' sentence may say
+_POWER_RELATIONS = ("at least", "greater than or equal to", "greater than", "at most", "less than", "equal to")
+
+
 def read_omitted(tex: str) -> dict:
     """The sentence "the omitted functions include the factor $\\left. \\sin\\frac{v_{1}(x,y)}{2}\\right\\vert _{y=0}
     =\\left. \\sin\\frac{y}{2}\\right\\vert _{y=0}=0$ raised to a power at least one", read: the coordinate and its
     parametrization index, the argument it equals, the points, the printed value and the power relation."""
     words, segs = lm.prose(tex)
-    w = re.search(r"factor \$\$ raised to a power "
-                  r"(at least|greater than or equal to|greater than|at most|less than|equal to) (zero|one|two|three)\b",
-                  words)  # the words (prose); the one segment is the formula
-    if not w or len(segs) != 1:
+    w = lm.sentence("... include the factor {f} raised to a power {relation:words} {power:count}", tex)
+    if not w or w["relation"] not in _POWER_RELATIONS or w["power"] is None or len(segs) != 1:
         raise ValueError(f"the omitted functions' factor not read in {tex[:50]!r}")
     try:
         rel = lm.parse_relation(segs[0])
@@ -3110,7 +3199,7 @@ def read_omitted(tex: str) -> dict:
             and coord.args[0].is_Integer and coord.args[1] == sympy.Tuple(*sympy.symbols("x y"))):
         raise ValueError(f"{coord} is not a coordinate u_k(x,y), v_k(x,y), w_k(x,y)")
     return {"coord": coord.func.__name__, "index": int(coord.args[0]), "points": {p1, p2}, "arg": arg,
-            "value": int(rel.parts[2]), "relation": w.group(1), "power": _NUMBER_WORDS[w.group(2)]}
+            "value": int(rel.parts[2]), "relation": w["relation"], "power": w["power"]}
 
 
 def omitted_check(line_id: str, before: str, terms_line: str, param_index: int,
@@ -3215,7 +3304,7 @@ def read_a_system(tex: str, param_index: int) -> tuple[sympy.Expr, sympy.Expr, s
     if not isinstance(interval, sympy.Interval) or interval.left_open or interval.right_open or \
             (_lin(interval.start, 1), _lin(interval.end, 1)) != (0, 1):
         raise ValueError(f"the interval {interval} is not [0, alpha]")
-    if re.search(r"\bdependent", t.replace("independent", "")):  # prose
+    if any(w.startswith("dependent") for w in words.replace("independent", "").replace("-", " ").split()):  # prose
         raise ValueError("'dependent'")
     return first, last, member.args[1]
 
@@ -3493,9 +3582,10 @@ def _quantified_value(rel: lm.Relation, param_index: int) -> sympy.Expr:
     return rel.parts[-1]
 
 
-def read_value_line(tex: str, param_index: int):
+def read_value_line(tex: str, param_index: int, correct: Callable[[sympy.Expr], sympy.Expr] | None = None):
     """(terms, k) of a printed value: a case row ``VALUE , & k=K`` (k = K), ``[0=] VALUE ,~\\forall x\\in[0,\\alpha]``
-    or ``& = VALUE \\\\`` (k None: the whole derivative)."""
+    or ``& = VALUE \\\\`` (k None: the whole derivative); ``correct`` (an erratum's correction) is applied to the
+    parsed value."""
     rel = lm.parse_relation(tex)
     last = rel.parts[-1] if rel.parts else None
     k = None
@@ -3510,20 +3600,21 @@ def read_value_line(tex: str, param_index: int):
         body = _quantified_value(rel, param_index)
     else:
         body = _row_value(tex)
-    return read_products(body), k
+    return read_products(correct(body) if correct else body), k
 
 
 def _alive_for(param_index: int, r: int, order0: bool, n: int):
     return alive_before(n, r if order0 else r + 1, param_index)
 
 
-def value_lines_check(check_id: str, texts: dict[str, str] | None = None, defs_texts: dict[str, str] | None = None
-                      ) -> LineResult:
+def value_lines_check(check_id: str, texts: dict[str, str] | None = None, defs_texts: dict[str, str] | None = None,
+                      correct: Callable[[sympy.Expr], sympy.Expr] | None = None) -> LineResult:
     """Every value line of ``check_id`` (and the definitions of its primed constants) read from the transcription
     and evaluated exactly at the boundary (constants resolved by the printed definitions, S, M by exact Taylor
     series, sines by exact half angles): the {member of T_{2n}: coefficient} it prints must equal the one computed
     from the exact derivatives of the step (the k-th term of its chain rule where the line is a case k = K, the
-    whole derivative of the step's order otherwise), n = 1..6 (order-0 steps) or n = 2..6, r = 0..n-2."""
+    whole derivative of the step's order otherwise), n = 1..6 (order-0 steps) or n = 2..6, r = 0..n-2.  ``correct``
+    (an erratum's correction) is applied to each parsed value of the check's own lines."""
     param_index, order, def_ids = VALUE_CHECKS[check_id]
     param = STEP_PARAMS[param_index]
     own = {x.id: x.verbatim for x in _lines_of(check_id)}
@@ -3536,11 +3627,11 @@ def value_lines_check(check_id: str, texts: dict[str, str] | None = None, defs_t
         for lid in def_ids:
             (color, level), cases = read_prime_definition(all_texts[lid])
             primes[color] = (level, cases)
-        values = {lid: read_value_line(t, param_index) for lid, t in sorted(all_texts.items())
+        values = {lid: read_value_line(t, param_index, correct) for lid, t in sorted(all_texts.items())
                   if lid in own and not _is_definition(t)}
         if check_id == "sec1_3-r-p1-rho-prime":  # the definition checked through the A-form it defines
             aform = _transcribed(["sec1_3-rp1-aform"])["sec1_3-rp1-aform"]
-            values = {"sec1_3-rp1-aform": read_value_line(_p1_corrected(aform), param_index)}
+            values = {"sec1_3-rp1-aform": read_value_line(aform, param_index, _p1_corrected)}
         if not values:
             raise ValueError("no value line")
     except (ValueError, KeyError) as exc:
@@ -3590,15 +3681,22 @@ def value_lines_check(check_id: str, texts: dict[str, str] | None = None, defs_t
                       detail=detail)
 
 
-def _p1_corrected(tex: str) -> str:
-    """The erratum's correction of the A-form of parametrization 1: upper bound 2n-(r+1) instead of 2n-1-(r+1)."""
-    return re.sub(r"\^\{2n-1-\\left\(\s*r\+1\\right\)\s*\}", lambda _m: "^{2n-\\left( r+1\\right) }", tex, count=1)
+def _p1_corrected(e: sympy.Expr) -> sympy.Expr:
+    """The erratum's correction of the A-form of parametrization 1, on the parsed object: the upper bound 2n-(r+1)
+    instead of 2n-1-(r+1) (``e`` that bound, or an expression whose sums over i end there)."""
+    n, r, i = sympy.symbols("n r i")
+    printed, corrected = 2 * n - 1 - (r + 1), 2 * n - (r + 1)
+    if e == printed:
+        return corrected
+    return e.replace(lambda x: isinstance(x, sympy.Sum),
+                     lambda x: sympy.Sum(x.function, *[(v, lo, corrected if v == i and hi == printed else hi)
+                                                      for v, lo, hi in x.limits]))
 
 
 def _value_erratum(check_id: str, correct) -> LineResult:
-    """An erratum value line: as printed (must fail) and with ``correct`` applied to each line's text (must hold)."""
+    """An erratum value line: as printed (must fail) and with ``correct`` applied to each parsed value (must hold)."""
     res = value_lines_check(check_id)
-    corrected = value_lines_check(check_id, texts={x.id: correct(x.verbatim) for x in _lines_of(check_id)})
+    corrected = value_lines_check(check_id, correct=correct)
     res.corrected_holds = corrected.holds_as_printed
     res.detail["corrected_mismatches"] = corrected.detail.get("mismatches", corrected.detail.get("unread"))
     return res
@@ -3760,8 +3858,9 @@ def asystem_check(check_id: str, param_index: int, correct=None) -> LineResult:
     """The printed system {A_{2n,2n-i}}_{i=a}^{b} (range read from the transcription) is exactly the set of A's in the
     exact derivative of the step, and linearly independent (exact rank), n = 2..6, r = 0..n-2."""
 
-    def run(tex: str) -> tuple[bool, list]:
+    def run(tex: str, fix=lambda e: e) -> tuple[bool, list]:
         first_e, last_e, idx = read_a_system(tex, param_index)
+        first_e, last_e = fix(first_e), fix(last_e)
         bad = []
         for n in range(2, N_PROOF.stop):
             for r in range(n - 1):
@@ -3776,7 +3875,7 @@ def asystem_check(check_id: str, param_index: int, correct=None) -> LineResult:
     lines = _lines_of(check_id)
     try:
         ok, bad = run(lines[0].verbatim)
-        corr = run(correct(lines[0].verbatim))[0] if correct else None
+        corr = run(lines[0].verbatim, correct)[0] if correct else None
     except ValueError as exc:
         return LineResult(False, how="the system read from the transcription", detail={"unread": str(exc)})
     return LineResult(ok, corr, how="the printed range read from the transcription against the A functions present "
@@ -3831,42 +3930,53 @@ def fig_n4_caption(order: int | None = None, n: int | None = None) -> LineResult
     vanishes at v = 0 exactly when gray or the second condition; the gray ones are exactly those with j > z."""
     from paper_repro.printed.derivatives import branch_disjuncts
 
-    tex = _transcribed(["sec1_3-fig-n4-caption"])["sec1_3-fig-n4-caption"].replace("%", " ")
+    tex = _layout_free(_transcribed(["sec1_3-fig-n4-caption"])["sec1_3-fig-n4-caption"])
     try:
-        m = re.search(r"the \$(\d+)\$th order mixed partial derivatives of which with respect to "
-                      r"\$v\\left\( x,y\\right\) =([^$]+)\$ and \$w\\left\( x,y\\right\) =([^$]+)\$ are zero and "
-                      r"non-zero, respectively, under parametrization \(\\ref\{(\w+)\}\) at \$([xy])=0\$", tex)
-        ks = re.findall(r"order \$k=0,1,\\ldots,(\d+)\$ of the partial derivative with respect to \$v",
-                        tex)
-        gray = re.search(r"raised to a power (greater than|less than|at least|at most) the corresponding order", tex)
-        conds = re.findall(r"due to the (first|second) condition of the zero branch|fulfills the (first|second) "
-                           r"condition of the zero branch", tex)
-        text_n = re.search(r"In the case of \$n=(\d+)\$", _transcribed(["sec1_3-L-prose"])["sec1_3-L-prose"])
-        if not (m and gray and len(ks) == 2 and len(conds) == 2 and text_n):
+        m = lm.sentence(
+            r"\caption{(\emph{a})--(\emph{e}) Using the sign function (\ref{derivative_cosine_sine_at_0}), one can "
+            r"easily verify that black and non-black dots represent those functions of system (\ref{united_system}) "
+            r"the {order}th order mixed partial derivatives of which with respect to {v} and {w} are zero and "
+            r"non-zero, respectively, under parametrization (\ref{{label:word}}) at {at}. Observe, that the gray "
+            r"shaded areas correspond to functions which comprise the factor "
+            r"$\sin \frac{v\left( x,y\right) }{2}=\sin\frac{y}{2}$ raised to a power {gray:words} the corresponding "
+            r"order {k1} of the partial derivative with respect to $v\left( x,y\right) =y$. Thus, these partial "
+            r"derivatives vanish at $y=0$ due to the {c1:word} condition of the zero branch of the sign function "
+            r"(\ref{derivative_cosine_sine_at_0}). Black dots that fall outside of the gray shaded areas correspond "
+            r"to constrained trivariate functions that comprise the factor "
+            r"$\sin\frac{v\left( x,y\right) }{2}=\sin\frac{y}{2}$ raised to a power which -- together with the order "
+            r"{k2} of the partial derivative with respect to $v\left( x,y\right) =y$, at $y=0$ -- fulfills the "
+            r"{c2:word} condition of the zero branch of the sign function (\ref{derivative_cosine_sine_at_0}). (For "
+            r"interpretation of the references to color in this figure legend, the reader is referred to the web "
+            r"version of this paper.)}", tex)
+        text_n = lm.sentence("In the case of {n}, we have provided an example",
+                             _layout_free(_transcribed(["sec1_3-L-prose"])["sec1_3-L-prose"]), search=True)
+        if not (m and text_n):
             raise ValueError("caption not read")
-        if not re.search(r"\(\\emph\{a\}\)--\(\\emph\{e\}\) Using the sign function", tex) or \
-                not re.search(r"Thus, these partial derivatives vanish at \$y=0\$", tex) or \
-                not re.search(r"black and non-black dots represent those functions of system "
-                              r"\(\\ref\{united_system\}\)", tex):
-            raise ValueError("caption words not read")
-        printed_order = int(m.group(1))
-        label, at = m.group(4), m.group(5)
+        n_rel, v_rel, w_rel = (_read_segment(text_n["n"]), _read_segment(m["v"]), _read_segment(m["w"]))
+        if n_rel is None or v_rel is None or w_rel is None or not (n_rel.ops == v_rel.ops == w_rel.ops == ["="]) or \
+                n_rel.parts[0] != sympy.Symbol("n") or \
+                [(r.parts[0].func.__name__, r.parts[0].args) for r in (v_rel, w_rel)] != \
+                [("v", (sympy.Tuple(*sympy.symbols("x y")),)), ("w", (sympy.Tuple(*sympy.symbols("x y")),))]:
+            raise ValueError("caption formulas not read")
+        printed_order, text_n_value = int(lm.parse(m["order"])), int(n_rel.parts[1])
+        ks = [listed_range(m[k], "k") for k in ("k1", "k2")]
+        label, at = m["label"], _is_point(_read_segment(m["at"]))
         fmap, run, maps, _r = _params()[label]
-        forms_ok = linear_form(m.group(2)) == maps[1] and linear_form(m.group(3)) == maps[2] and at == run
+        forms_ok = linear_form(v_rel.parts[1]) == maps[1] and linear_form(w_rel.parts[1]) == maps[2] and at == run
         parts = branch_disjuncts(_transcribed(["sec1_3-proposition-M"])["sec1_3-proposition-M"], 0, ("j", "z"))
         if len(parts) != 2:
             raise ValueError("the zero branch of the Proposition is not two conditions joined by 'or'")
         which = {"first": parts[0], "second": parts[1]}
-        gray_cond, black_cond = which[conds[0][0] or conds[0][1]], which[conds[1][0] or conds[1][1]]
+        gray_cond, black_cond = which[m["c1"]], which[m["c2"]]
         rel = {"greater than": lambda j, z: j > z, "less than": lambda j, z: j < z,
-               "at least": lambda j, z: j >= z, "at most": lambda j, z: j <= z}[gray.group(1)]
-    except (ValueError, KeyError) as exc:
+               "at least": lambda j, z: j >= z, "at most": lambda j, z: j <= z}[m["gray"]]
+    except (ValueError, KeyError, TypeError) as exc:
         return LineResult(False, how="the caption read from its transcription", detail={"unread": str(exc)})
     order = printed_order if order is None else order
-    n = int(text_n.group(1)) if n is None else n
+    n = text_n_value if n is None else n
     direction, zero_var, _fixed, _rest = step_geometry(label)
     bad, v_free, gray_bad = 0, 0, 0
-    ok_orders = [int(k) for k in ks] == [printed_order, printed_order]
+    ok_orders = ks == [(0, printed_order), (0, printed_order)]
     for lb in united_system(n):
         e = exponents(lb)
         j, i = e[2 * zero_var], e[2 * zero_var + 1]
@@ -3945,13 +4055,18 @@ def lemma_hypotheses(verbatim_text: str | None = None) -> LineResult:
     tex = verbatim_text if verbatim_text is not None else _transcribed(["sec1_3-lemma-hypotheses"])[
         "sec1_3-lemma-hypotheses"]
 
-    def run(text: str) -> tuple[bool, dict]:
-        m = re.search(r"Let ((?:\$[a-z]\$(?:, | and )?)+) be natural numbers greater than or equal to \$(\d+)\$", text)
+    def run(text: str, without: str | None = None) -> tuple[bool, dict]:
+        m = lm.sentence("Let {letters:words} be natural numbers greater than or equal to {lo}.", text, search=True)
         sets = _sign_value_sets(text)
         if not m or len(set(sets)) != 1 or "\\lambda,\\mu>0" not in text:
             raise ValueError("hypotheses not read")
-        letters = re.findall(r"\$([a-z])\$", m.group(1))
-        lo = int(m.group(2))
+        listed = m["letters"].replace(" and ", ", ").split(", ")  # "$i$, $j$ and $p$": each a segment, parsed
+        letters = [str(lm.parse(x.strip("$"))) for x in listed if str(lm.parse(x.strip("$"))) != without]
+        lo = lm.parse(m["lo"])
+        if not all(x.startswith("$") and x.endswith("$") and len(x) > 2 for x in listed) or \
+                not all(len(x) == 1 for x in letters) or not lo.is_Integer:
+            raise ValueError("hypotheses not read")
+        lo = int(lo)
         p_lo = lo if "p" in letters else int(sets[0])
         consistent = p_lo == int(sets[0])
         rule = read_sign_function(_transcribed(["sec1_3-sign-sin"])["sec1_3-sign-sin"])
@@ -3962,7 +4077,8 @@ def lemma_hypotheses(verbatim_text: str | None = None) -> LineResult:
                                       "consistent": consistent, "sine_rule_holds": holds}
     try:
         ok, detail = run(tex)
-        corr = run(tex.replace("$i$, $j$ and $p$", "$i$ and $j$"))[0] if "$i$, $j$ and $p$" in tex else None
+        # the erratum's correction, on the letters read: the hypothesis is on i and j only
+        corr = run(tex, without="p")[0] if detail["hypothesis_letters"] == ["i", "j", "p"] else None
     except ValueError as exc:
         return LineResult(False, how="the hypotheses read from the transcription", detail={"unread": str(exc)})
     return LineResult(ok, corr, how="the hypotheses and the index sets read from the transcription; the sine rule "
@@ -3977,9 +4093,9 @@ def r0p1_sines() -> LineResult:
     the definition of rho'_{2n,0,0}) it holds."""
     tex = _transcribed(["sec1_3-r0-p1-sines"])["sec1_3-r0-p1-sines"]
 
-    def run(text: str) -> tuple[bool, object]:
+    def run(value: sympy.Expr) -> tuple[bool, object]:
         try:
-            terms = read_products(_row_value(text))
+            terms = read_products(value)
         except ValueError as exc:
             return False, str(exc)
         for n in N_PROOF:
@@ -3994,11 +4110,30 @@ def r0p1_sines() -> LineResult:
                             n, STEP_PARAMS[0], 0, alive_before(n, 0, 0), pt):
                         return False, f"n={n}: values differ"
         return True, None
-    ok, why = run(tex)
-    fixed = re.sub(r"\\gamma_\{2n,2n-i,0\}(?=\s*\\sin\^\{2n\})", lambda _m: "\\gamma_{2n,2n,0}", tex)
-    corr = run(fixed)[0] if fixed != tex else None
+    try:
+        value = _row_value(tex)
+    except ValueError as exc:
+        return LineResult(False, how="the terms read from the transcription", detail={"unread": str(exc)})
+    ok, why = run(value)
+    fixed = _gamma_corner(value)
+    corr = run(fixed)[0] if fixed != value else None
     return LineResult(ok, corr, how="the terms read from the transcription against exact values at y = 0, n = 1..6",
                       detail={"unread": why})
+
+
+def _gamma_corner(value: sympy.Expr) -> sympy.Expr:
+    """The erratum's correction of line sec1_3-r0-p1-sines, on the parsed value: in the term outside the sum, the
+    constant ``gamma(2n, 2n-i, 0)`` of the factor ``sin(..)**(2n)`` is ``gamma(2n, 2n, 0)``."""
+    n, i = sympy.symbols("n i")
+    gamma = sympy.Function("gamma")
+    printed, corrected = gamma(2 * n, 2 * n - i, 0), gamma(2 * n, 2 * n, 0)
+    out = []
+    for t in sympy.Add.make_args(value):
+        factors = sympy.Mul.make_args(t)
+        if printed in factors and any(f.is_Pow and isinstance(f.base, sympy.sin) and f.exp == 2 * n for f in factors):
+            t = t.xreplace({printed: corrected})
+        out.append(t)
+    return sympy.Add(*out)
 
 
 # -- the conclusions of the order-0 steps: the primed constants vanish (read from the transcription) ---------------

@@ -16,7 +16,6 @@ Independent computations used here:
 from __future__ import annotations
 
 import functools
-import re
 from collections.abc import Callable, Sequence
 from math import comb
 
@@ -24,13 +23,14 @@ import numpy as np
 import sympy
 from flint import fmpq, fmpq_mat, fmpq_poly
 
-from paper_repro.claims.lines import LineResult, line_check
+from paper_repro.claims.lines import LineResult, items_result, line_check
 from paper_repro.core.basis import evaluate
 from paper_repro.core.derivatives_basis import basis_derivative
 from paper_repro.core.domain import RationalAngle, RationalPoints, rational_alpha, sample_rational_points
 from paper_repro.core.labels import delta, exponents, index_of, united_system
 from paper_repro.core.normalization import coefficient_vector, evaluate_normalized
 from paper_repro.core.univariate import c_const, c_numerator
+from paper_repro.printed.latex_math import sentence
 from paper_repro.printed.lines import live_lines
 from paper_repro.surfaces.fitting import ExactTrig, fit_exact
 
@@ -264,11 +264,11 @@ def order_range_ok(line_id: str) -> bool:
     function) with delta_n independent functions (rank at n = 1, 2 exact)."""
     from paper_repro.printed.parsed import chain, relation_holds
 
-    m = re.search(r"(?:rational )?triangular trigonometric patch of order \$([^$]+)\$", _LINE[line_id].verbatim)
+    m = sentence("triangular trigonometric patch of order {n}", _LINE[line_id].verbatim, search=True)
     if not m:
         return False
-    parts, ops = chain(m.group(1).replace("n", "u"))  # n read as a symbol (u: a letter the reader knows)
-    from paper_repro.printed.parsed import U
+    parts, ops = chain(m["n"])
+    U = sympy.Symbol("n")
 
     alpha = rational_alpha(fmpq(1, 3))
 
@@ -331,10 +331,11 @@ def delta3(verbatim: str | None = None) -> LineResult:
     if not found:
         return LineResult(False, how="the count read from the transcription", detail={"unread": tex[:60]})
     n, count = found[0]
-    order = re.search(r"illustrates a (\w+) order triangular trigonometric\s+patch defined by", tex)
-    said = ORDINALS.get(order.group(1)) if order else None
+    order = sentence(r"Fig.\ \ref{fig:third_order_patch} illustrates a {order:word} order triangular trigonometric "
+                     "patch defined by {count} control points.", tex)
+    said = ORDINALS.get(order["order"]) if order else None
     terms = len(patch_terms_read(n))
-    words = has_words(tex, "Fig.\\ \\ref{fig:third_order_patch} illustrates", "control points")
+    words = order is not None
     return LineResult(said == n and words and
                       terms == count == delta(n) == len(united_system(n)),
                       how="count read from the transcription vs the terms of eq. triangular_trig_surface (read) and "
@@ -352,9 +353,10 @@ def quadratic_growth() -> LineResult:
     sizes = [len(patch_terms_read(n)) for n in NS_ROWS]
     second = {c - 2 * b + a for a, b, c in zip(sizes, sizes[1:], sizes[2:])}
     first = sizes[1] - sizes[0]
-    m = re.search(r"patches of order higher than (\w+) would be used", tex)
-    beyond = {"one": 1, "two": 2, "three": 3, "four": 4}.get(m.group(1)) if m else None
-    words = has_words(tex, "quadratic growth of the control points")
+    m = sentence("considering the quadratic growth of the control points, it is very unlikely that in CAGD patches of "
+                 "order higher than {k:count} would be used for modeling.", tex)
+    beyond = m["k"] if m else None
+    words = m is not None
     proven = max(convex_hull_orders(), default=None)
     return LineResult(words and beyond == proven and second == {6} and first > 0,
                       how="second differences of the number of control points, n = 1..8; the order named vs the "
@@ -453,10 +455,10 @@ def affine_invariance() -> LineResult:
 def convex_hull_orders() -> list[int]:
     """The orders of "in the special cases of first, second and third order" (read from the transcription)."""
     tex = _LINE["sec6-convex-hull-n123"].verbatim
-    m = re.search(r"in the special cases of ((?:\w+, )*\w+ and \w+) order triangular", tex)
-    if not m:
+    m = sentence("in the special cases of {orders:words} order triangular", tex, search=True)
+    if not m or " and " not in m["orders"]:
         return []
-    words = re.split(r", | and ", m.group(1))
+    words = m["orders"].replace(" and ", ", ").split(", ")
     return [ORDINALS[w] for w in words if w in ORDINALS] if all(w in ORDINALS for w in words) else []
 
 
@@ -1046,28 +1048,30 @@ def torus_parametrization() -> LineResult:
 
     from paper_repro.surfaces.models import torus_xyz as model
 
-    try:
+    how = ("the parametrization and its parameter set read from the transcription; exact points (rational quarter "
+           "tangents) on the implicit torus and equal to the package's torus model (40 digits); the parameter set vs "
+           "Omega^alpha on a 11 x 11 grid")
+
+    def items() -> dict[str, bool]:
         dom = read_torus_parametrization()
-    except ValueError as exc:
-        return LineResult(False, how="eq. toroidal_triangle read from the transcription", detail={"unread": str(exc)})
-    rho, mu = fmpq(7, 2), fmpq(5, 3)
-    on_torus, same = True, True
-    with mpmath.workdps(40):
-        for tu in (fmpq(0), fmpq(1, 4), fmpq(2, 3), fmpq(-3, 2)):
-            for tv in (fmpq(1, 5), fmpq(3, 4), fmpq(-2, 7)):
-                p = parsed_torus_point(tu, tv, rho, mu)
-                on_torus &= torus_quartic(*p, rho, mu) == 0
-                want = model(4 * mpmath.atan(mpmath.mpf(int(tu.p)) / int(tu.q)),
-                             4 * mpmath.atan(mpmath.mpf(int(tv.p)) / int(tv.q)), mpmath.mpf(7) / 2, mpmath.mpf(5) / 3)
-                same &= all(abs(mpmath.mpf(int(x.p)) / int(x.q) - w) < mpmath.mpf(10) ** -30 for x, w in zip(p, want))
-    one = fmpq(1)
-    grid = [(fmpq(i, 8), fmpq(j, 8)) for i in range(-1, 10) for j in range(-1, 10)]
-    domain = all(_in_read_domain(dom, u, v, one) == (u >= 0 and v >= 0 and one - u - v >= 0) for u, v in grid)
-    return LineResult(on_torus and same and domain, how="the parametrization and its parameter set read from the "
-                      "transcription; exact points (rational quarter tangents) on the implicit torus and equal to the "
-                      "package's torus model (40 digits); the parameter set vs Omega^alpha on a 11 x 11 grid",
-                      kind="exact-evidence", detail={"on_torus": on_torus, "equals_model": same,
-                                                     "parameter_set_is_omega": domain})
+        rho, mu = fmpq(7, 2), fmpq(5, 3)
+        on_torus, same = True, True
+        with mpmath.workdps(40):
+            for tu in (fmpq(0), fmpq(1, 4), fmpq(2, 3), fmpq(-3, 2)):
+                for tv in (fmpq(1, 5), fmpq(3, 4), fmpq(-2, 7)):
+                    p = parsed_torus_point(tu, tv, rho, mu)
+                    on_torus &= torus_quartic(*p, rho, mu) == 0
+                    want = model(4 * mpmath.atan(mpmath.mpf(int(tu.p)) / int(tu.q)),
+                                 4 * mpmath.atan(mpmath.mpf(int(tv.p)) / int(tv.q)), mpmath.mpf(7) / 2,
+                                 mpmath.mpf(5) / 3)
+                    same &= all(abs(mpmath.mpf(int(x.p)) / int(x.q) - w) < mpmath.mpf(10) ** -30
+                                for x, w in zip(p, want))
+        one = fmpq(1)
+        grid = [(fmpq(i, 8), fmpq(j, 8)) for i in range(-1, 10) for j in range(-1, 10)]
+        domain = all(_in_read_domain(dom, u, v, one) == (u >= 0 and v >= 0 and one - u - v >= 0) for u, v in grid)
+        return {"on_torus": bool(on_torus), "equals_model": bool(same), "parameter_set_is_omega": domain}
+
+    return items_result(items, how, "exact-evidence", (ValueError,))
 
 
 @line_check("sec6-torus-rho")
@@ -1079,10 +1083,10 @@ def torus_rho() -> LineResult:
     from paper_repro.printed.parsed import VARRHO, chain, relation_holds
 
     tex = _LINE["sec6-torus-rho"].verbatim
-    m = re.match(r"where \$([^$]*)\$ is the distance\s+from the origin to the center of the meridian circle$", tex)
+    m = sentence("where {rho} is the distance from the origin to the center of the meridian circle", tex)
     if not m:
         return LineResult(False, how="the line read from the transcription", detail={"unread": tex[:60]})
-    parts, ops = chain(m.group(1))
+    parts, ops = chain(m["rho"])
     positive = (all(relation_holds([x.subs(VARRHO, r) for x in parts], ops) for r in (fmpq(1, 3), 1, 7))
                 and not any(relation_holds([x.subs(VARRHO, r) for x in parts], ops) for r in (0, -1)))
     rho, mu = fmpq(7, 2), fmpq(5, 3)
@@ -1166,10 +1170,9 @@ def torus_mu_range() -> LineResult:
 
 
 def torus_order_word() -> int | None:
-    m = re.search(r"can exactly be described by a (\w+) order triangular\s+trigonometric patch defined by control "
-                  r"points$", _LINE["sec6-torus-order2"].verbatim)
-    return ORDINALS.get(m.group(1)) if m and "(\\ref{toroidal_triangle})" in _LINE["sec6-torus-order2"].verbatim \
-        else None
+    m = sentence(r"The toroidal triangle (\ref{toroidal_triangle}) can exactly be described by a {n:word} order "
+                 "triangular trigonometric patch defined by control points", _LINE["sec6-torus-order2"].verbatim)
+    return ORDINALS.get(m["n"]) if m else None
 
 
 @line_check("sec6-torus-order2")
@@ -1276,21 +1279,18 @@ def torus_joined() -> LineResult:
                               "continuity": "C1 in (U, V), G1" if all(smooth.values()) else "not C1"})
 
 
-_SETTINGS = re.compile(r"^with settings \$([^$]*)\$, \$([^$]*)\$ and \$([^$]*)\$\.$")
-
-
 def torus_settings_ring(tex: str | None) -> bool:
     """The caption's settings (parsed, in order) name parameters of eq. toroidal_triangle (read) or alpha, and give a
     ring torus (mu > 0, varrho > mu: exact for the algebraic number) with alpha in the range of sec6-alpha-range
     (read)."""
     from paper_repro.printed.parsed import ALPHA, MU, VARRHO, chain
 
-    m = _SETTINGS.match(tex or "")
+    m = sentence("with settings {a}, {b} and {c}.", tex or "")
     if not m:
         return False
     params = set(read_torus_parametrization()["params"]) | {ALPHA}
     values: dict = {}
-    for part in m.groups():
+    for part in (m["a"], m["b"], m["c"]):
         (lhs, rhs), ops = chain(part)
         if ops != ["="] or lhs not in params or lhs in values:
             return False
@@ -1441,25 +1441,24 @@ def rational_patch(override: dict[str, str] | None = None) -> LineResult:
     tau-bar_n^alpha(u,v,w) (subscript and arguments read); with equal weights the rational patch is the polynomial
     patch (exact); the order range read from "of order $n\\geq1$" is the orders with a patch."""
     rows = ("sec6-rational-row-1", "sec6-rational-row-2", "sec6-rational-row-3")
-    try:
-        sets_ok = all(matches_basis(rows_labels(rows, n, "rational", override,
-                                                lhs=sympy.Function("q_vec")(N_SYM, UVW)), n) for n in NS_ROWS)
-    except ValueError as exc:
-        return LineResult(False, how="the rows read from the transcriptions", detail={"unread": str(exc)})
-    quotients = sets_ok
-    order_ok = order_range_ok("sec6-rational-order")
-    alpha = rational_alpha(TS[2])
-    same = True
-    for n in (1, 2):
-        net = random_net(n, 3, 11 + n)
-        pts = sample_rational_points(alpha, 3, seed=n)
-        poly = combine(evaluate_normalized(n, alpha, pts, "exact"), net)
-        same &= rational_eval(n, alpha, net, [fmpq(5, 2)] * delta(n), pts) == poly
-    return LineResult(sets_ok and quotients and order_ok and same, how="the rows read, n = 1..8; the denominators "
-                      "tau-bar_n^alpha(u,v,w) read; exact evaluation with equal weights, n = 1, 2",
-                      kind="exact-evidence",
-                      detail={"equal_weights_give_polynomial_patch": same, "quotients_read": quotients,
-                              "order_range_read": order_ok})
+
+    def items() -> dict[str, bool]:
+        # each row's terms (weight, point, function over tau-bar_n(u,v,w)) name T_{2n}: the quotients read
+        quotients = all(matches_basis(rows_labels(rows, n, "rational", override,
+                                                  lhs=sympy.Function("q_vec")(N_SYM, UVW)), n) for n in NS_ROWS)
+        order_ok = order_range_ok("sec6-rational-order")
+        alpha = rational_alpha(TS[2])
+        same = True
+        for n in (1, 2):
+            net = random_net(n, 3, 11 + n)
+            pts = sample_rational_points(alpha, 3, seed=n)
+            poly = combine(evaluate_normalized(n, alpha, pts, "exact"), net)
+            same &= rational_eval(n, alpha, net, [fmpq(5, 2)] * delta(n), pts) == poly
+        return {"quotients_read": quotients, "order_range_read": order_ok,
+                "equal_weights_give_polynomial_patch": bool(same)}
+
+    return items_result(items, "the rows read, n = 1..8; the denominators tau-bar_n^alpha(u,v,w) read; exact "
+                        "evaluation with equal weights, n = 1, 2", "exact-evidence", (ValueError,))
 
 
 _TAU_ROWS = ("sec6-tau-row-1", "sec6-tau-row-2")
@@ -1487,14 +1486,10 @@ def tau_index_sets(override: dict[str, str] | None = None) -> LineResult:
     """tau's sums over l = 0..n-1, k = l..2n-1-l (read from the transcriptions of its rows) name T_{2n}; row 1 writes
     tau-bar_n^alpha(u,v,w) and each of its functions with the arguments (u,v,w); with unit weights tau = 1 (exact)."""
     texts = {k: (override or {}).get(k, _LINE[k].verbatim) for k in _TAU_ROWS}
-    try:
-        sets = _tau_sets(texts, strict_row_2=False)
-    except ValueError as exc:
-        return LineResult(False, how="the rows read from the transcriptions", detail={"unread": str(exc)})
-    one = _tau_unit()
-    return LineResult(sets and one, how="the rows read by printed.latex_math, sums written out vs T_{2n}, n = 1..8 "
-                      "(row 1: every function of (u,v,w)); exact tau with unit weights, n = 1, 2, 3",
-                      kind="exact-evidence", detail={"unit_weights_tau_is_1": one})
+    how = ("the rows read by printed.latex_math, sums written out vs T_{2n}, n = 1..8 (row 1: every function of "
+           "(u,v,w)); exact tau with unit weights, n = 1, 2, 3")
+    return items_result(lambda: {"rows_name_T_2n": _tau_sets(texts, strict_row_2=False),
+                                 "unit_weights_tau_is_1": _tau_unit()}, how, "exact-evidence", (ValueError,))
 
 
 @line_check("sec6-tau-row-2")
@@ -1549,11 +1544,13 @@ def q_normalized_independent() -> LineResult:
     tex = _LINE["sec6-q-normalized-independent"].verbatim
     from paper_repro.printed import latex_math as LM
 
-    words, segs = LM.prose(tex)  # the words carry the properties; the four $..$ segments read by the one reader
-    m = re.fullmatch(r"Quotient functions in \(\\ref\{rational_patch\}\) determine the constrained trivariate "
-                     r"rational trigonometric function system \$\$ of order \$\$ that inherits advantageous "
-                     r"properties of \$\$, i\.e\., \$\$ is also ((?:not )?normalized) and linearly "
-                     r"((?:in)?dependent)\.", words)
+    segs = LM.prose(tex)[1]  # the words are read by the sentence below; the four $..$ segments by the one reader
+    m = sentence(r"Quotient functions in (\ref{rational_patch}) determine the constrained trivariate rational "
+                 "trigonometric function system {q} of order {n} that inherits advantageous properties of {t}, i.e., "
+                 "{q2} is also {normalized:words} and linearly {independent:word}.", tex)
+    if m and (m["normalized"] not in ("normalized", "not normalized") or
+              m["independent"] not in ("independent", "dependent")):
+        m = None
     try:
         q, order, t, q_again = [LM.parse(seg) for seg in segs] if len(segs) == 4 else [None] * 4
         named = (q == q_again == sympy.Function("Qbar")(2 * order) and t == sympy.Function("Tbar")(2 * order)
@@ -1562,7 +1559,7 @@ def q_normalized_independent() -> LineResult:
         named = False
     if not m or not named:
         return LineResult(False, how="the properties read from the transcription", detail={"unread": tex[-60:]})
-    want = (m.group(1) == "normalized", m.group(2) == "independent")
+    want = (m["normalized"] == "normalized", m["independent"] == "independent")
     printed, corrected, ranks = True, True, {}
     for n in (1, 2, 3):
         rng = _rng(80 + n)
@@ -1724,11 +1721,11 @@ def dupin_count_holds(tex: str | None) -> tuple[bool, dict]:
     squares."""
     from paper_repro.printed.parsed import ALPHA, U, V
 
-    m = re.match(r"^by means of ([\w-]+) smoothly joined (\w+) order rational triangular trigonometric patches,$",
-                 tex or "")
-    if not m or m.group(1) not in NUMBER_WORDS or m.group(2) not in ORDINALS:
+    m = sentence("by means of {count:word} smoothly joined {order:word} order rational triangular trigonometric "
+                 "patches,", tex or "")
+    if not m or m["count"] not in NUMBER_WORDS or m["order"] not in ORDINALS:
         return False, {"unread": (tex or "")[:60]}
-    count, n = NUMBER_WORDS[m.group(1)], ORDINALS[m.group(2)]
+    count, n = NUMBER_WORDS[m["count"]], ORDINALS[m["order"]]
     from paper_repro.printed import latex_math as LM
 
     settings = {}  # the caption's settings: each $..$ segment 'name = value', read by the one reader
@@ -1923,13 +1920,13 @@ def fig_dupin_settings() -> LineResult:
     from paper_repro.printed.parsed import C as SC
 
     tex = _LINE["sec6-fig-dupin-settings"].verbatim
-    m = re.match(r"^cyclide \(with settings \$([^$]*)\$, \$([^$]*)\$, \$([^$]*)\$ and \$([^$]*)\$\) which is rendered "
-                 r"as a\s+transparent surface except the lower right figure\. The shape parameter of each\s+second "
-                 r"order rational triangular trigonometric patch is \$([^$]*)\$\.$", tex)
+    m = sentence("cyclide (with settings {a}, {b}, {c} and {mu}) which is rendered as a transparent surface except "
+                 "the lower right figure. The shape parameter of each second order rational triangular trigonometric "
+                 "patch is {alpha}.", tex)
     if not m:
         return LineResult(False, how="the settings read from the transcription", detail={"unread": tex[:60]})
     values = {}
-    for part in m.groups():
+    for part in (m["a"], m["b"], m["c"], m["mu"], m["alpha"]):
         (lhs, rhs), ops = chain(part)
         if ops != ["="] or not lhs.is_Symbol or lhs in values:
             return LineResult(False, how="the settings read", detail={"unread": part})
