@@ -61,12 +61,13 @@ sub-nets.  What is proven and what is measured depends on the arithmetic (``arit
 from __future__ import annotations
 
 import math
+from fractions import Fraction
 from functools import lru_cache
 from typing import NamedTuple
 
 import mpmath
 import numpy as np
-from flint import arb, arb_mat
+from flint import arb, arb_mat, fmpq, fmpz
 
 from paper_repro.core.basis import monomials
 from paper_repro.core.context import BallContext, Context, MpContext
@@ -221,13 +222,56 @@ def steps_for(beta: float, m_bound: np.ndarray, tol: float) -> np.ndarray:
 
 
 # --- validation -------------------------------------------------------------------------------------------------
+def _exact_value(x: object) -> Fraction | None:
+    """A finite real number as the exact Fraction it denotes (int, float, longdouble, mpf, fmpq, fmpz, Fraction; an
+    arb by its lower end), ``None`` for other types or non-finite values."""
+    if isinstance(x, np.ndarray) and x.ndim == 0:
+        x = x[()]
+    try:
+        if isinstance(x, arb):
+            x = x.lower()
+            if not x.is_finite():
+                return None
+            man, exp = x.man_exp()
+            return Fraction(int(man)) * Fraction(2) ** int(exp)
+        if isinstance(x, mpmath.mpf):
+            if not mpmath.isfinite(x):
+                return None
+            man, exp = x.man_exp
+            return Fraction(int(man)) * Fraction(2) ** int(exp)
+        if isinstance(x, fmpq):
+            return Fraction(int(x.p), int(x.q))
+        if isinstance(x, fmpz):
+            return Fraction(int(x))
+        if isinstance(x, (np.floating, float)):
+            return Fraction(*x.as_integer_ratio()) if np.isfinite(x) else None
+        if isinstance(x, (int, np.integer, Fraction)) and not isinstance(x, (bool, np.bool_)):
+            return Fraction(x)
+    except (TypeError, ValueError, OverflowError):  # pragma: no cover - the types above convert
+        return None
+    return None
+
+
 def _check_tol(tol: object) -> float:
+    """tol as a float64 rounded *down* when it is not one (a Fraction, mpf, fmpq, longdouble, ...): a bound
+    ``<= float(tol)`` is then ``<= tol`` exactly.
+
+    >>> from fractions import Fraction
+    >>> t = _check_tol(Fraction(1, 10))
+    >>> Fraction(t) <= Fraction(1, 10) < Fraction(math.nextafter(t, 1.0)), _check_tol(0.1) == 0.1
+    (True, True)
+    """
+    exact = _exact_value(tol)
     x = real_scalar(tol, "tol")
     try:
         x = float(x)
     except (TypeError, ValueError, OverflowError) as exc:  # pragma: no cover - real_scalar gives numbers
         raise TypeError(f"tol must be a positive real number, got {tol!r}") from exc
     if not math.isfinite(x) or x <= 0:
+        raise ValueError(f"tol must be a positive finite real number, got {tol!r}")
+    if exact is not None and Fraction(x) > exact:
+        x = math.nextafter(x, 0.0)                       # round down: bound <= x <= tol
+    if x <= 0:
         raise ValueError(f"tol must be a positive finite real number, got {tol!r}")
     return x
 
