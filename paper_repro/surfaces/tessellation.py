@@ -841,7 +841,7 @@ def _tree_route(route: _Route, arr: np.ndarray, tol: float, leaf_resolution: int
         m_bound = np.minimum(route.bound(nets, k), cap)
         if not np.isfinite(m_bound).all():
             raise ValueError(f"alpha = {route.alpha_float!r}: the bound M of the second derivatives (about "
-                             f"|P| / alpha^2) exceeds float64 at depth {k}; alpha must be above about 1e-150 times the "
+                             f"|P| / alpha^2) exceeds float64 at depth {k}; alpha must be above about 1e-152 times the "
                              "square root of the net's largest coordinate (a larger alpha or a smaller net)")
         need = _need(beta, m_bound, tol)
         estimate = float(((need + 2) * (need + 3) / 2).sum())
