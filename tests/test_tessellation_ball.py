@@ -13,21 +13,28 @@
 from __future__ import annotations
 
 import math
+import re
 from fractions import Fraction
 
 import mpmath
 import numpy as np
 import pytest
+from flint import arb, fmpq
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from paper_repro.core.context import BallContext
 from paper_repro.core.domain import rational_alpha
 from paper_repro.core.labels import delta
-from paper_repro.core.subdivision import subdivide_to_depth
+from paper_repro.core.subdivision import _arb_of, subdivide_to_depth
 from paper_repro.surfaces.patch import Patch
 from paper_repro.surfaces.tessellation import (
     MAX_BALL_WORK,
     _BallRoute,
+    _check_tol,
+    _mesh,
+    _tree_route,
+    check_tiling,
     rounding_factor,
     second_derivative_bound,
     tessellate,
@@ -218,3 +225,143 @@ def test_the_documented_vertex_limits(n, limit):
         tessellate(net, n, 1.0, 1e-1, arith="ball", max_vertices=limit + 1)
     if n == 1:
         assert tessellate(net, n, 1.0, 1e-1, arith="ball", max_vertices=limit).bound <= 1e-1
+
+
+# --- the referee's points (docs/tessellation.md, "Referee report and answers (ball route)") ------------------------
+def test_point1_a_40_digit_mpf_alpha_is_exact_on_a_deep_tree():
+    """An mpf alpha with a 136-bit mantissa: the route's alpha is that binary rational exactly (not rounded to flint's
+    53-bit default), so the subdivision matrices at alpha / 2^k certify and the tree subdivides (depth >= 1)."""
+    n, tol = 2, 1e-2
+    with mpmath.workdps(40):
+        alpha = mpmath.pi / 2
+    assert alpha.man_exp[0].bit_length() > 100
+    route = _BallRoute(n, alpha, 30)
+    assert route.alpha.is_exact() and route.alpha.man_exp() == tuple(int(x) for x in alpha.man_exp)
+    net = np.random.default_rng(7).normal(size=(delta(n), 3))
+    mesh = tessellate(net, n, alpha, tol, arith="ball", leaf_resolution=8)
+    assert mesh.depth >= 1 and mesh.bound <= tol
+    assert _deviation(mesh, Patch(n, float(alpha), net), k=3) <= mesh.bound
+
+
+@pytest.mark.parametrize("alpha", [fmpq(1, 3), Fraction(1, 3)])
+def test_point2_a_rational_alpha_is_enclosed_not_rounded(alpha):
+    """alpha = 1/3 as fmpq or Fraction: the route's ball contains 1/3 (radius below 2^-1000), not the float
+    0.333...3148 (which does not contain 1/3)."""
+    route = _BallRoute(2, alpha, 30)
+    with BallContext(prec=4000).scope():
+        assert (3 * route.alpha).contains(1)
+        assert not arb(float(alpha)).contains(route.alpha)
+    assert route.alpha.rad() < arb(2) ** -1000
+    net = np.random.default_rng(7).normal(size=(delta(2), 3))
+    mesh = tessellate(net, 2, alpha, 1e-2, arith="ball", leaf_resolution=8)
+    assert mesh.depth >= 1 and mesh.bound <= 1e-2
+
+
+def test_point2_other_alpha_types_refused_in_ball_arithmetic():
+    with pytest.raises(TypeError, match="alpha"):
+        _arb_of(object())
+    assert _arb_of(np.longdouble(1) / 3).is_exact()       # a longdouble: its 64-bit mantissa kept
+
+
+def test_point3_nets_of_higher_precision_are_taken_exactly():
+    """Fraction, mpf (40 digits) and longdouble entries: the ball route's start net contains each entry as given
+    (p/q in a ball, binary rationals exactly), not its float64 rounding."""
+    n = 1
+    ints = np.random.default_rng(3).integers(-50, 50, size=(delta(n), 2))
+    fractions = np.array([[Fraction(int(x), 3) for x in row] for row in ints], dtype=object)
+    with mpmath.workdps(40):
+        mpfs = np.array([[mpmath.mpf(int(x)) / 7 for x in row] for row in ints], dtype=object)
+    longs = ints.astype(np.longdouble) / 3
+    route = _BallRoute(n, 1.0, 30)
+    with BallContext(prec=4000).scope():
+        for row_b, row in zip(route.start(fractions)[:, 0, :], ints):
+            for b, x in zip(row_b, row):
+                assert (3 * b).contains(int(x))
+                assert x % 3 == 0 or not b.contains(arb(float(Fraction(int(x), 3))))
+    for row_b, row in zip(route.start(mpfs)[:, 0, :], mpfs):
+        assert all(b.is_exact() and b.man_exp() == tuple(int(t) for t in x.man_exp) for b, x in zip(row_b, row))
+    for row_b, row in zip(route.start(longs)[:, 0, :], longs):
+        assert all(Fraction(*x.as_integer_ratio()) == Fraction(int(b.man_exp()[0])) * Fraction(2) ** int(b.man_exp()[1])
+                   for b, x in zip(row_b, row) if x != 0)
+    mesh = tessellate(fractions, n, 1.0, 1e-1, arith="ball")
+    assert mesh.bound <= 1e-1
+    assert _deviation(mesh, Patch(n, 1.0, ints / 3.0), k=3) <= mesh.bound + 1e-13 * np.abs(ints).max()
+
+
+def test_point4_the_tiling_check_passes_on_a_ball_mesh_and_catches_broken_ones():
+    n = 2
+    net = np.random.default_rng(2).normal(size=(delta(n), 3))
+    leaves = _tree_route(_BallRoute(n, 1.0, 30), net, 1e-3, 8, 10, 100_000)
+    xy, tri, centroids, root = _mesh(leaves, 10, 100_000)
+    csum = np.rint(centroids * 3.0).astype(np.int64)
+    assert len(centroids) > 0 and len(tri) > 100
+    check_tiling(xy, tri, csum, root)
+    flipped = tri.copy()
+    flipped[5] = flipped[5, ::-1]
+    dropped, doubled = tri[1:], np.concatenate([tri, tri[:1]])
+    moved = tri.copy()
+    moved[7, 0] = tri[40, 0] if tri[40, 0] not in tri[7] else tri[41, 0]
+    outside = xy.copy()
+    outside[0] = (-1, 0)
+    for args, part in (((xy, flipped, csum), "(b)"), ((xy, dropped, csum), "(c)"), ((xy, doubled, csum), "(c)"),
+                       ((xy, moved, csum), "tiling check"), ((outside, tri, csum), "(a)")):
+        with pytest.raises(ArithmeticError, match=re.escape(part)):
+            check_tiling(*args, root)
+
+
+def test_point4_the_ball_route_runs_the_tiling_check(monkeypatch):
+    """A mesh with one triangle reversed, returned by a broken ``_mesh``: the ball route refuses it at run time."""
+    import paper_repro.surfaces.tessellation as tess
+
+    real = tess._mesh
+
+    def broken(*args):
+        xy, tri, centroids, root = real(*args)
+        tri = tri.copy()
+        tri[0] = tri[0, ::-1]
+        return xy, tri, centroids, root
+
+    monkeypatch.setattr(tess, "_mesh", broken)
+    net = np.random.default_rng(1).random((delta(1), 3))
+    with pytest.raises(ArithmeticError, match="tiling check"):
+        tessellate(net, 1, 1.0, 1e-2, arith="ball")
+
+
+@pytest.mark.parametrize("arith, alpha", [("ball", 1e-200), ("ball", 1e-300), ("float", 1e-100), ("float", 1e-300)])
+def test_point5_tiny_alpha_refused_at_once_naming_alpha(arith, alpha):
+    """M ~ |P| / alpha^2 overflows float64 (ball route, alpha ~< 1e-152), the float derivative nets overflow to NaN
+    (float route, alpha ~< 1e-75.5): refused at depth 0 naming alpha (the float route used to spend 100 s)."""
+    net = np.random.default_rng(7).normal(size=(delta(2), 3))
+    with pytest.raises(ValueError, match=r"alpha = .*depth 0"):
+        tessellate(net, 2, alpha, 1e-3, arith=arith)
+
+
+def test_point5_small_alpha_above_the_floor_still_works():
+    net = np.random.default_rng(7).normal(size=(delta(2), 3))
+    assert tessellate(net, 2, 1e-100, 1e-2, arith="ball").bound <= 1e-2
+    assert tessellate(net, 2, 1e-50, 1e-2, max_depth=3).bound <= 1e-2
+
+
+@pytest.mark.parametrize("tol", [Fraction(1, 10), fmpq(1, 10), np.longdouble(1) / 10, "mpf"])
+def test_point6_a_non_float_tol_is_rounded_down(tol):
+    """float(1/10) = 0.1000000000000000055 > 1/10: the tol used (and compared with the bound) is the float below."""
+    if tol == "mpf":
+        with mpmath.workdps(40):
+            tol = mpmath.mpf(1) / 10
+    exact = Fraction(1, 10) if not isinstance(tol, np.longdouble) else Fraction(*tol.as_integer_ratio())
+    used = _check_tol(tol)
+    assert Fraction(used) <= exact < Fraction(math.nextafter(used, 1.0))
+    assert _check_tol(0.1) == 0.1                                     # a float tol is kept
+    net = np.random.default_rng(1).random((delta(1), 3))
+    assert Fraction(tessellate(net, 1, 1.0, tol, arith="ball").bound) <= exact
+
+
+def test_point8_ball_context_converts_an_mpf_exactly():
+    """0.5 + 2^-100 at 60 bits: the old decimal route gave the exact ball 0.5 (not containing x)."""
+    x = mpmath.mpf(0.5) + mpmath.mpf(2) ** -100
+    ctx = BallContext(prec=60)
+    with ctx.scope():
+        b = ctx.convert(x)
+        big = ctx.convert(mpmath.mpf(2) ** 5000 + 1)
+    assert b.is_exact() and b.man_exp() == tuple(int(t) for t in x.man_exp)
+    assert big.is_exact()

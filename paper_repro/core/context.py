@@ -377,13 +377,33 @@ class BallContext(ObjectContext):
             raise ValueError(f"prec must be an integer >= 20 (bits), got {self.prec!r}")
 
     def convert(self, x):
+        """``x`` as a ball containing it: exact for ints, floats (numpy float64 and longdouble too) and finite mpf
+        (from the binary mantissa and exponent, ``arb((man, exp))``, whatever their precision); a ball of radius about
+        2^-prec for fmpq and Fraction p/q.
+
+        >>> import mpmath
+        >>> x = mpmath.mpf(0.5) + mpmath.mpf(2) ** -100
+        >>> ctx = BallContext(prec=60)
+        >>> with ctx.scope():
+        ...     b = ctx.convert(x)
+        >>> b.is_exact(), b.man_exp() == x.man_exp
+        (True, True)
+        """
+        if isinstance(x, np.ndarray) and x.ndim == 0:
+            x = x[()]
+        if isinstance(x, np.longdouble) and np.isfinite(x):
+            num, den = x.as_integer_ratio()                  # den a power of two: exact
+            return arb((num, 1 - den.bit_length()))
         x = _unwrap(x)
         if isinstance(x, arb):
             return x
         if isinstance(x, fmpq):
             return self.from_rational(x)
         if isinstance(x, mpmath.mpf):
-            return arb(mpmath.nstr(x, int(self.prec / 3.32) + 5))
+            if not mpmath.isfinite(x):
+                return arb(float(x))
+            man, exp = x.man_exp
+            return arb((int(man), int(exp)))                 # exact: man 2^exp at any precision
         if isinstance(x, Fraction):
             return arb(x.numerator) / x.denominator
         return arb(x)

@@ -51,13 +51,15 @@ import math
 import threading
 from collections import OrderedDict
 from collections.abc import Callable
+from fractions import Fraction
 from functools import lru_cache
 from typing import NamedTuple
 
 import mpmath
 import numpy as np
 import scipy.sparse as sp
-from flint import arb, arb_mat, fmpq, fmpq_mat
+from flint import arb, arb_mat, fmpq, fmpq_mat, fmpz
+from flint import ctx as flint_ctx
 
 from paper_repro.core.context import (
     BallContext,
@@ -362,15 +364,54 @@ def _exact_matrices(n: int, alpha: RationalAngle) -> tuple[np.ndarray, ...]:
     return tuple(out)
 
 
-def _arb_of(alpha) -> arb:
-    """alpha as an exact arb (float and mpf values are binary rationals); an arb (a ball enclosing alpha, e.g. 4
-    atan(t) / 2^k for a RationalAngle halved k times) is kept as it is."""
+#: Extra bits of a rational alpha's ball above the working precision (as for a RationalAngle's 4 atan(t)): the
+#: subdivision matrices at alpha / 2^k amplify alpha's radius, and must still be certified to 2^-prec.
+RATIONAL_ALPHA_EXTRA_BITS = 1024
+
+
+def _arb_of(alpha, prec: int | None = None) -> arb:
+    """alpha as an arb containing it.  Exact for a float, an int and an mpf of any precision (binary rationals:
+    ``arb((man, exp))`` keeps every bit of the mantissa, whatever flint's working precision); an fmpq or Fraction
+    p/q is enclosed in a ball of radius about 2^-(``prec`` + :data:`RATIONAL_ALPHA_EXTRA_BITS`) (``prec`` default
+    flint's current precision); an arb (a ball enclosing alpha, e.g. 4 atan(t) / 2^k for a RationalAngle halved k
+    times) is kept as it is.  ``TypeError`` naming alpha for any other type (no silent rounding).
+
+    >>> import mpmath
+    >>> with mpmath.workdps(40):
+    ...     a = _arb_of(mpmath.mpf(1) / 3)
+    >>> a.is_exact(), a.man_exp()[0].bit_length() > 53
+    (True, True)
+    >>> b = _arb_of(fmpq(1, 3), 53)
+    >>> (3 * b).contains(1), b.is_exact(), bool(b.rad() < arb(2) ** -1000)
+    (True, False, True)
+    """
     if isinstance(alpha, arb):
         return alpha
     if isinstance(alpha, mpmath.mpf):
+        if not mpmath.isfinite(alpha):
+            raise ValueError(f"alpha must be finite, got {alpha!r}")
         man, exp = alpha.man_exp
-        return arb(int(man)) * arb(2) ** int(exp)
-    return arb(float(alpha))
+        return arb((int(man), int(exp)))
+    if isinstance(alpha, (fmpq, Fraction)):
+        p, q = (int(alpha.p), int(alpha.q)) if isinstance(alpha, fmpq) else (alpha.numerator, alpha.denominator)
+        bits = (flint_ctx.prec if prec is None else prec) + RATIONAL_ALPHA_EXTRA_BITS
+        old = flint_ctx.prec
+        flint_ctx.prec = bits
+        try:
+            return arb(p) / q
+        finally:
+            flint_ctx.prec = old
+    if isinstance(alpha, np.ndarray) and alpha.ndim == 0:
+        return _arb_of(alpha[()], prec)
+    if isinstance(alpha, np.longdouble):
+        num, den = alpha.as_integer_ratio()              # den a power of two: exact
+        return arb((num, 1 - den.bit_length()))
+    if isinstance(alpha, (float, np.floating)):
+        return arb(float(alpha))                         # exact (float16/32/64 are float64 values)
+    if isinstance(alpha, (int, fmpz, np.integer)) and not isinstance(alpha, bool):
+        return arb(int(alpha))
+    raise TypeError(f"alpha must be a float, int, mpf, fmpq, Fraction or RationalAngle in ball arithmetic, got "
+                    f"{type(alpha).__name__} {alpha!r}")
 
 
 def _ball_matrices(n: int, alpha, prec: int) -> tuple[list[arb_mat], float]:

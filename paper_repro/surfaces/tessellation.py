@@ -61,19 +61,20 @@ sub-nets.  What is proven and what is measured depends on the arithmetic (``arit
 from __future__ import annotations
 
 import math
+from fractions import Fraction
 from functools import lru_cache
 from typing import NamedTuple
 
 import mpmath
 import numpy as np
-from flint import arb, arb_mat
+from flint import arb, arb_mat, fmpq, fmpz
 
 from paper_repro.core.basis import monomials
 from paper_repro.core.context import BallContext, Context, MpContext
 from paper_repro.core.domain import RationalAngle, open_alpha
 from paper_repro.core.half_angle_matrices import derivative_nets, derivative_nets_checked
 from paper_repro.core.labels import delta, exponent_matrix
-from paper_repro.core.nets import check_net
+from paper_repro.core.nets import check_net, check_net_exact
 from paper_repro.core.normalization import scaled_coefficient_vector, scaled_float_vector
 from paper_repro.core.subdivision import _arb_of, _certified, subdivision_matrices
 from paper_repro.surfaces.patch import Patch, triangle_grid
@@ -106,6 +107,10 @@ ROUNDING_GROWTH = 256.0
 #: from 1 to 4 and by at most 1.25 from 4 on), so all points lie on one lattice alpha / (105 * 2^K).
 LATTICE = 105
 _STEPS = sorted({m << j for m in (1, 3, 5, 7) for j in range(0, 11)})
+#: Measured floor of alpha on the float route: below about 1e-75.5 (n = 1..6, bisection on random nets,
+#: docs/tessellation.md "Referee report and answers (ball route)", point 5) the float64 second-derivative nets
+#: overflow (NaN) and the tree refuses at once, naming alpha.
+FLOAT_ALPHA_FLOOR = 1e-75
 #: Largest K of the lattice (the line keys, below about 5.5 * (4 * 105 * 2^K)^2, stay below 2^63).
 MAX_LATTICE_BITS = 21
 
@@ -217,13 +222,56 @@ def steps_for(beta: float, m_bound: np.ndarray, tol: float) -> np.ndarray:
 
 
 # --- validation -------------------------------------------------------------------------------------------------
+def _exact_value(x: object) -> Fraction | None:
+    """A finite real number as the exact Fraction it denotes (int, float, longdouble, mpf, fmpq, fmpz, Fraction; an
+    arb by its lower end), ``None`` for other types or non-finite values."""
+    if isinstance(x, np.ndarray) and x.ndim == 0:
+        x = x[()]
+    try:
+        if isinstance(x, arb):
+            x = x.lower()
+            if not x.is_finite():
+                return None
+            man, exp = x.man_exp()
+            return Fraction(int(man)) * Fraction(2) ** int(exp)
+        if isinstance(x, mpmath.mpf):
+            if not mpmath.isfinite(x):
+                return None
+            man, exp = x.man_exp
+            return Fraction(int(man)) * Fraction(2) ** int(exp)
+        if isinstance(x, fmpq):
+            return Fraction(int(x.p), int(x.q))
+        if isinstance(x, fmpz):
+            return Fraction(int(x))
+        if isinstance(x, (np.floating, float)):
+            return Fraction(*x.as_integer_ratio()) if np.isfinite(x) else None
+        if isinstance(x, (int, np.integer, Fraction)) and not isinstance(x, (bool, np.bool_)):
+            return Fraction(x)
+    except (TypeError, ValueError, OverflowError):  # pragma: no cover - the types above convert
+        return None
+    return None
+
+
 def _check_tol(tol: object) -> float:
+    """tol as a float64 rounded *down* when it is not one (a Fraction, mpf, fmpq, longdouble, ...): a bound
+    ``<= float(tol)`` is then ``<= tol`` exactly.
+
+    >>> from fractions import Fraction
+    >>> t = _check_tol(Fraction(1, 10))
+    >>> Fraction(t) <= Fraction(1, 10) < Fraction(math.nextafter(t, 1.0)), _check_tol(0.1) == 0.1
+    (True, True)
+    """
+    exact = _exact_value(tol)
     x = real_scalar(tol, "tol")
     try:
         x = float(x)
     except (TypeError, ValueError, OverflowError) as exc:  # pragma: no cover - real_scalar gives numbers
         raise TypeError(f"tol must be a positive real number, got {tol!r}") from exc
     if not math.isfinite(x) or x <= 0:
+        raise ValueError(f"tol must be a positive finite real number, got {tol!r}")
+    if exact is not None and Fraction(x) > exact:
+        x = math.nextafter(x, 0.0)                       # round down: bound <= x <= tol
+    if x <= 0:
         raise ValueError(f"tol must be a positive finite real number, got {tol!r}")
     return x
 
@@ -275,6 +323,11 @@ def _tree(arr: np.ndarray, n: int, alpha: float, tol: float, leaf_resolution: in
     for k in range(max_depth + 1):
         beta = alpha / (1 << k)
         m_bound = np.minimum(second_derivative_bound(nets, n, beta) * rounding_factor(k), cap)
+        if not np.isfinite(m_bound).all():
+            raise ValueError(f"alpha = {alpha!r}: the float64 second-derivative bound M is not finite at depth {k} "
+                             f"(beta = alpha / 2^{k}; the derivative nets' scaling overflows float64, measured for "
+                             f"alpha below about {FLOAT_ALPHA_FLOOR:g} for n = 1..6); use arith='ball' or a larger "
+                             "alpha")
         need = _need(beta, m_bound, tol)
         estimate = float(((need + 2) * (need + 3) / 2).sum())
         if estimate > EARLY_REFUSAL * max_vertices:
@@ -598,8 +651,21 @@ class _BallRoute(_Route):
             with BallContext(prec=self.ctx.prec + 1024).scope():
                 self.alpha = 4 * (arb(int(alpha.t.p)) / int(alpha.t.q)).atan()
         else:
-            self.alpha = _arb_of(alpha)
+            # exact for float, int, longdouble and mpf (any precision); a ball of radius ~2^-(prec + 1024) for an
+            # fmpq or Fraction p/q; TypeError naming alpha otherwise
+            self.alpha = _arb_of(alpha, self.ctx.prec)
+        with BallContext(prec=self.ctx.prec + 1100).scope():
+            if not (self.alpha > 0 and self.alpha < arb.pi()):
+                raise ValueError(f"alpha must lie in the open interval (0, pi) (checked in ball arithmetic), got "
+                                 f"{alpha!r}")
         self.alpha_float = float(self.alpha.mid())
+
+    def start(self, arr: np.ndarray) -> np.ndarray:
+        """The net as balls, each entry taken exactly as given (:meth:`BallContext.convert`: floats, ints,
+        longdouble and mpf exactly from their binary mantissa and exponent; fmpq and Fraction p/q as a ball of
+        radius about 2^-prec), not rounded to float64 first."""
+        with self.ctx.scope():
+            return np.array([[[self.ctx.convert(x) for x in row]] for row in arr], dtype=object)
 
     def beta(self, k: int):
         """alpha / 2^k: exact (a division by 2^k at a precision above alpha's midpoint keeps every bit)."""
@@ -707,6 +773,56 @@ class _MpRoute(_Route):
         return math.nextafter(leaf_max + err, math.inf)
 
 
+def check_tiling(xy: np.ndarray, triangles: np.ndarray, csum: np.ndarray, root: int) -> None:
+    """Verify exactly, in integers, that ``triangles`` tile Omega^alpha: the premise "x lies in a triangle of the
+    mesh, with barycentric coordinates lambda" of the ball route's bound (docs/tessellation.md §2, Theorem).
+
+    Coordinates: 3 ``xy`` for the lattice points (unit alpha / (3 ``root``)) and ``csum`` for the fan centroids
+    (vertex ids ``len(xy)`` on), so Omega^alpha is the triangle (0, 0), (3R, 0), (0, 3R), R = ``root``.  Checked:
+    (a) every vertex lies in that closed triangle; (b) every triangle is positively oriented (twice its signed area
+    > 0); (c) the twice-areas sum to (3R)^2; (d) no directed edge occurs twice, and a directed edge whose reverse
+    does not occur lies on one side of the boundary.  These imply the tiling: by (d) the boundary of the 2-chain
+    sum of the triangles lies in the boundary of Omega, so the number of triangles covering a point off all edges is
+    constant inside Omega and 0 outside (a); by (b) and (c) that constant is 1.  So the triangles have disjoint
+    interiors and their union is Omega.  ``ArithmeticError`` naming the failed check.  Cost O(F log F), integers
+    below 2^63 (3R <= 3 * 105 * 2^21).
+
+    >>> check_tiling(np.array([[0, 0], [1, 0], [0, 1]]), np.array([[0, 1, 2]]), np.zeros((0, 2), int), 1)
+    >>> check_tiling(np.array([[0, 0], [1, 0], [0, 1]]), np.array([[0, 2, 1]]), np.zeros((0, 2), int), 1)
+    Traceback (most recent call last):
+    ...
+    ArithmeticError: tiling check (b): 1 triangle(s) not positively oriented
+    """
+    big = 3 * int(root)
+    pts = np.concatenate([3 * np.asarray(xy, dtype=np.int64),
+                          np.asarray(csum, dtype=np.int64).reshape(-1, 2)])
+    x, y = pts[:, 0], pts[:, 1]
+    if not ((x >= 0) & (y >= 0) & (x + y <= big)).all():
+        raise ArithmeticError("tiling check (a): a vertex lies outside Omega^alpha")
+    tri = np.asarray(triangles, dtype=np.int64)
+    p0, p1, p2 = pts[tri[:, 0]], pts[tri[:, 1]], pts[tri[:, 2]]
+    twice = (p1[:, 0] - p0[:, 0]) * (p2[:, 1] - p0[:, 1]) - (p2[:, 0] - p0[:, 0]) * (p1[:, 1] - p0[:, 1])
+    if not (twice > 0).all():
+        raise ArithmeticError(f"tiling check (b): {int((twice <= 0).sum())} triangle(s) not positively oriented")
+    total = sum(twice.tolist())                           # Python integers: no overflow
+    if total != big * big:
+        raise ArithmeticError(f"tiling check (c): the twice-areas sum to {total}, not (3R)^2 = {big * big}")
+    nv = len(pts)
+    tail = tri.reshape(-1)
+    head = tri[:, [1, 2, 0]].reshape(-1)
+    keys = tail * nv + head
+    order = np.sort(keys)
+    if (order[1:] == order[:-1]).any():
+        raise ArithmeticError("tiling check (d): a directed edge occurs twice")
+    lone = ~np.isin(head * nv + tail, order)
+    ta, he = tail[lone], head[lone]
+    on_side = (((x[ta] == 0) & (x[he] == 0)) | ((y[ta] == 0) & (y[he] == 0))
+               | ((x[ta] + y[ta] == big) & (x[he] + y[he] == big)))
+    if not on_side.all():
+        raise ArithmeticError(f"tiling check (d): {int((~on_side).sum())} edge(s) without a reverse twin lie inside "
+                              "Omega^alpha")
+
+
 def _tree_route(route: _Route, arr: np.ndarray, tol: float, leaf_resolution: int, max_depth: int,
                 max_vertices: int) -> _Leaves:
     """:func:`_tree` on a :class:`_Route` (the same leaves rule and refusals; the nets and bounds in the route's
@@ -723,6 +839,10 @@ def _tree_route(route: _Route, arr: np.ndarray, tol: float, leaf_resolution: int
     for k in range(max_depth + 1):
         beta = route.alpha_float / (1 << k)
         m_bound = np.minimum(route.bound(nets, k), cap)
+        if not np.isfinite(m_bound).all():
+            raise ValueError(f"alpha = {route.alpha_float!r}: the bound M of the second derivatives (about "
+                             f"|P| / alpha^2) exceeds float64 at depth {k}; alpha must be above about 1e-152 times the "
+                             "square root of the net's largest coordinate (a larger alpha or a smaller net)")
         need = _need(beta, m_bound, tol)
         estimate = float(((need + 2) * (need + 3) / 2).sum())
         if estimate > EARLY_REFUSAL * max_vertices:
@@ -832,13 +952,17 @@ def _tessellate_route(net, n, alpha, tol, arith: str, dps: int, leaf_resolution,
     arr, n, _, tol, leaf_resolution, max_depth, max_vertices = _check_inputs(
         net, n, float(exact_alpha), tol, leaf_resolution, max_depth, max_vertices)
     route: _Route = (_BallRoute if arith == "ball" else _MpRoute)(n, exact_alpha, dps)
+    # the ball route takes the net's entries as given (exactly, or p/q in a ball); the mp route its float64 rounding
+    given = check_net_exact(net, n) if arith == "ball" else arr
     extent = float(np.abs(arr).max())
     # the vertices' own error (ball radius plus rounding to float64, about 1e-16 of the extent) is measured below and
     # added; the tree works to tol less a reserve of 1e-13 extent for it
-    leaves = _tree_route(route, arr, tol - 1e-13 * extent, leaf_resolution, max_depth, max_vertices)
+    leaves = _tree_route(route, given, tol - 1e-13 * extent, leaf_resolution, max_depth, max_vertices)
     xy, tri, centroids, root = _mesh(leaves, max_depth, max_vertices)
     csum = np.rint(centroids * 3.0).astype(np.int64)      # the centroids' lattice coordinates are integers / 3
-    points, params, err = route.vertices(arr, xy, csum, root)
+    if arith == "ball":
+        check_tiling(xy, tri, csum, root)                  # the premise of the bound, verified exactly
+    points, params, err = route.vertices(given, xy, csum, root)
     bound = route.total(float(leaves.bound.max()), err)
     if bound > tol:
         raise ArithmeticError(f"the {arith} bound {bound!r} exceeds tol = {tol!r} (vertex error {err!r}); raise "
@@ -847,5 +971,5 @@ def _tessellate_route(net, n, alpha, tol, arith: str, dps: int, leaf_resolution,
 
 
 __all__ = ["tessellate", "Tessellation", "second_derivative_bound", "second_derivative_nets", "derivative_nets_t",
-           "steps_for", "rounding_factor", "MAX_N_TESSELLATE", "MAX_VERTICES", "ARITHS", "MAX_BALL_WORK",
-           "MAX_BALL_TREE_WORK"]
+           "steps_for", "rounding_factor", "check_tiling", "MAX_N_TESSELLATE", "MAX_VERTICES", "ARITHS",
+           "MAX_BALL_WORK", "MAX_BALL_TREE_WORK"]
