@@ -70,7 +70,7 @@ import numpy as np
 from flint import arb, arb_mat, fmpq, fmpz
 
 from paper_repro.core.basis import monomials
-from paper_repro.core.context import BallContext, Context, MpContext
+from paper_repro.core.context import BallContext, Context, FloatContext, MpContext, get_context
 from paper_repro.core.domain import RationalAngle, open_alpha
 from paper_repro.core.half_angle_matrices import derivative_nets, derivative_nets_checked
 from paper_repro.core.labels import delta, exponent_matrix
@@ -322,7 +322,8 @@ def _tree(arr: np.ndarray, n: int, alpha: float, tol: float, leaf_resolution: in
     out: list[tuple] = []
     for k in range(max_depth + 1):
         beta = alpha / (1 << k)
-        m_bound = np.minimum(second_derivative_bound(nets, n, beta) * rounding_factor(k), cap)
+        with np.errstate(over="ignore", invalid="ignore", divide="ignore"):  # an overflow is refused just below
+            m_bound = np.minimum(second_derivative_bound(nets, n, beta) * rounding_factor(k), cap)
         if not np.isfinite(m_bound).all():
             raise ValueError(f"alpha = {alpha!r}: the float64 second-derivative bound M is not finite at depth {k} "
                              f"(beta = alpha / 2^{k}; the derivative nets' scaling overflows float64, measured for "
@@ -520,16 +521,19 @@ def _up(x) -> float:
     return f
 
 
-def _check_arith(arith: object, dps: object) -> tuple[str, int | None]:
+def _check_arith(arith: object, dps: object) -> tuple[Context, int | None]:
+    """The context of ``arith`` (one of :data:`ARITHS`, read by :func:`~paper_repro.core.context.get_context`) and
+    the digits of the ball/mp routes (``None`` for float64, which takes no ``dps``)."""
     if not isinstance(arith, str) or arith not in ARITHS:
         raise ValueError(f"arith must be one of {list(ARITHS)}, got {arith!r}")
-    if arith == "float":
+    if isinstance(get_context(arith), FloatContext):
         if dps is not None:
             raise ValueError(f"dps applies to arith 'ball' and 'mp' only (float64 has no digits to choose), got "
                              f"dps = {dps!r}")
-        return arith, None
+        return FloatContext(), None
     dps = DEFAULT_DPS if dps is None else dps
-    return arith, check_int(dps, "dps", MIN_TESS_DPS, MAX_TESS_DPS, why="digits of every ball/mpf operation")
+    dps = check_int(dps, "dps", MIN_TESS_DPS, MAX_TESS_DPS, why="digits of every ball/mpf operation")
+    return get_context(arith, dps=dps), dps
 
 
 class _Route:
@@ -917,9 +921,9 @@ def tessellate(net, n: int, alpha, tol, *, arith: str = "float", dps: int | None
     >>> bool(ball.bound <= 1e-2), len(ball.points) == len(tessellate(net, 1, 1.0, 1e-2).points)
     (True, True)
     """
-    arith, dps = _check_arith(arith, dps)
-    if arith != "float":
-        return _tessellate_route(net, n, alpha, tol, arith, dps, leaf_resolution, max_depth, max_vertices)
+    ctx, dps = _check_arith(arith, dps)
+    if not isinstance(ctx, FloatContext):
+        return _tessellate_route(net, n, alpha, tol, ctx, dps, leaf_resolution, max_depth, max_vertices)
     max_vertices = MAX_VERTICES if max_vertices is None else max_vertices
     arr, n, alpha, tol, leaf_resolution, max_depth, max_vertices = _check_inputs(
         net, n, alpha, tol, leaf_resolution, max_depth, max_vertices)
@@ -938,11 +942,13 @@ def tessellate(net, n: int, alpha, tol, *, arith: str = "float", dps: int | None
     return Tessellation(points, tri, params, bound, int(len(leaves.steps)), int(leaves.level.max()), len(centroids))
 
 
-def _tessellate_route(net, n, alpha, tol, arith: str, dps: int, leaf_resolution, max_depth, max_vertices
+def _tessellate_route(net, n, alpha, tol, ctx: Context, dps: int, leaf_resolution, max_depth, max_vertices
                       ) -> Tessellation:
     """:func:`tessellate` with ``arith`` 'ball' or 'mp' (inputs checked as on the float route; alpha may be a
     float, an mpf or a :class:`~paper_repro.core.domain.RationalAngle`)."""
     n = check_int(n, "n", 1, MAX_N_TESSELLATE, why="each tree level builds the subdivision matrices at a new alpha")
+    ball = isinstance(ctx, BallContext)
+    arith = "ball" if ball else "mp"
     limit = MAX_BALL_WORK // delta(n)
     max_vertices = limit if max_vertices is None else max_vertices
     max_vertices = check_int(max_vertices, "max_vertices", 3, limit,
@@ -951,16 +957,16 @@ def _tessellate_route(net, n, alpha, tol, arith: str, dps: int, leaf_resolution,
     exact_alpha = open_alpha(alpha)
     arr, n, _, tol, leaf_resolution, max_depth, max_vertices = _check_inputs(
         net, n, float(exact_alpha), tol, leaf_resolution, max_depth, max_vertices)
-    route: _Route = (_BallRoute if arith == "ball" else _MpRoute)(n, exact_alpha, dps)
+    route: _Route = (_BallRoute if ball else _MpRoute)(n, exact_alpha, dps)
     # the ball route takes the net's entries as given (exactly, or p/q in a ball); the mp route its float64 rounding
-    given = check_net_exact(net, n) if arith == "ball" else arr
+    given = check_net_exact(net, n) if ball else arr
     extent = float(np.abs(arr).max())
     # the vertices' own error (ball radius plus rounding to float64, about 1e-16 of the extent) is measured below and
     # added; the tree works to tol less a reserve of 1e-13 extent for it
     leaves = _tree_route(route, given, tol - 1e-13 * extent, leaf_resolution, max_depth, max_vertices)
     xy, tri, centroids, root = _mesh(leaves, max_depth, max_vertices)
     csum = np.rint(centroids * 3.0).astype(np.int64)      # the centroids' lattice coordinates are integers / 3
-    if arith == "ball":
+    if ball:
         check_tiling(xy, tri, csum, root)                  # the premise of the bound, verified exactly
     points, params, err = route.vertices(given, xy, csum, root)
     bound = route.total(float(leaves.bound.max()), err)
