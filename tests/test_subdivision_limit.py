@@ -182,3 +182,16 @@ def test_evenness_check_can_fail(monkeypatch):
     x = fmpq_poly([0, 1])
     monkeypatch.setattr(sl, "scaled_xi", lambda n, half: tuple(p * x for p in true(n, half)) if half else true(n, half))
     assert min(even_in_x(1).values()) > 0
+
+
+@pytest.mark.parametrize("part", PARTS)
+def test_order_one_numerators_every_part(part):
+    """N_1^k[:, h] / (2X)^e(h) is ``order_one_restriction``'s R_1^k at a float X = cos(alpha/4), every part (the
+    doctest covers the middle only)."""
+    from paper_repro.core.subdivision_products import order_one_restriction
+
+    e = sl.sine_degree(1)
+    num = sl.order_one_numerators(part)
+    for kp in (np.cos(0.3), np.cos(0.01), np.cos(0.7)):
+        r1 = np.array([[float(num[g][h](kp)) / (2 * kp) ** int(e[h]) for h in range(7)] for g in range(7)])
+        assert np.abs(r1 - order_one_restriction(part, kp, 1 - kp * kp)).max() < 1e-14
