@@ -123,7 +123,9 @@ def main(argv: list[str] | None = None) -> None:
         compare = args.compare_upto is None or n <= args.compare_upto
         lines = []
         if args.float_:
+            start = time.process_time()
             err, resid = float_comparison(n, res)
+            timings.append(f"| {n} | float route at 1e-100 and 1e-3 | {time.process_time() - start:.2f} |")
             lines.append(f"float: |S(1e-100) - S(0+)| <= {err:.2g}, alpha^2 residual at 1e-3 <= {resid:.2g}")
         if compare and args.collocation:
             start = time.process_time()
