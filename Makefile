@@ -174,11 +174,16 @@ check-docs: $(STAMP)           ## every docs page, reports/tests.html, the galle
 check-gallery: $(STAMP)        ## open figures/index.html in headless chromium; installs nothing unless INSTALL=1
 	$(PY) -m paper_repro.app.check_gallery $(if $(INSTALL),--install)
 
-bench: $(STAMP)                ## speed: pytest-benchmark, the comparison with bezier and mpmath, subdivision accuracy, tessellation -> reports/
+# The pole check of Proposition 11.6 (docs/subdivision_for_all_n.md section 11) in a range of about 2 min on an idle
+# machine; the full one-off record (n <= 13 with the comparisons to n = 10 and mp at n = 4, 8, 12; n = 14..16) is
+# reports/subdivision_pole_check.md and reports/subdivision_pole_check_14_16.md, commands in their first lines.
+POLE_CHECK_BENCH ?= 1 2 3 4 5 6 7 8 9 10 11 12 --float --collocation --even --compare-upto 8 --mp 4
+bench: $(STAMP)                ## speed: pytest-benchmark, the comparison with bezier and mpmath, subdivision accuracy, the pole check, tessellation -> reports/
 	mkdir -p reports
 	$(PY) -m pytest -q -m benchmark --benchmark-enable --benchmark-only --benchmark-json=reports/pytest-benchmark.json tests
 	$(PY) -m paper_repro.app.bench
 	PYTHONPATH=$(CURDIR) $(PY) tools/subdivision_accuracy.py
+	PYTHONPATH=$(CURDIR) $(PY) tools/subdivision_pole_check.py $(POLE_CHECK_BENCH) --out reports/subdivision_pole_check_bench.md
 	PYTHONPATH=$(CURDIR) $(PY) tools/tessellation_bench.py --out reports/tessellation_bench.md
 
 bench-coefficients: $(STAMP)   ## accuracy (float64 vs 40 digits, n <= 200) and cost of the normalizing coefficients -> reports/

@@ -3,8 +3,9 @@ issue 38, item 6; docs/subdivision_for_all_n.md, section 11, Lemma 8).
 
 The level forms are built level by level: the centre embedding of the previous level merged with the new columns,
 with no sort of the whole level.  The references: the dictionary construction of Theorem P in
-``paper_repro.core.half_angle_rules`` (``product_terms``, the code of the proofs) for n <= 7, and the former build
-(the seven forms of each order concatenated and the whole level sorted), kept below, for n <= 14.
+``paper_repro.core.half_angle_rules`` (``product_terms``, the code of the proofs) for n <= 16 (the levels the pole
+check of section 11 runs on for n <= 17), and the former build (the seven forms of each order concatenated and the
+whole level sorted), kept below, for n <= 14.
 Equal arrays (integers: exact) mean the float sums see the same terms in the same order, so the same bits.
 """
 
@@ -28,9 +29,9 @@ def _reference_level_terms(k: int) -> tuple[np.ndarray, ...]:
     return tuple(arr[order] for arr in cat) + (hidx[order],)
 
 
-@pytest.mark.parametrize("k", range(2, 9))
+@pytest.mark.parametrize("k", range(2, 18))
 def test_level_terms_equal_the_proofs_construction(k):
-    """n = k - 1 <= 7: every term (row, col, a, b, coef, h) in the same order as the dictionary construction."""
+    """n = k - 1 <= 16: every term (row, col, a, b, coef, h) in the same order as the dictionary construction."""
     got, ref = sp_mod._level_terms(k), _reference_level_terms(k)
     assert len(got) == len(ref) == 6
     for x, y in zip(got, ref):

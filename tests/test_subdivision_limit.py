@@ -96,6 +96,39 @@ def test_a_wrong_numerator_gives_a_pole(monkeypatch):
     monkeypatch.setattr(sl, "order_one_numerators", wrong)
     res = limit_check(1)
     assert res.poles["u"] == 1 and res.poles["middle"] == 0
+    labels = [lab.paper for lab in united_system(1)]
+    assert res.pole_entries["u"] == [(labels.index("R_{2,1,1}"), labels.index("R_{2,2,0}"))]
+    assert res.pole_entries["v"] == res.pole_entries["w"] == res.pole_entries["middle"] == []
+
+
+def test_no_pole_entries_unchanged():
+    """Without the change no entry is listed (the same function, so the test above is not vacuous)."""
+    assert all(v == [] for v in limit_check(1).pole_entries.values())
+
+
+@pytest.mark.parametrize("n", [1, 4, 9])
+def test_level_forms_equal_proof_code(n):
+    """The forms the check runs on (``_level_terms``) equal the proofs' dictionary construction, levels 2..n."""
+    assert sl.level_forms_equal_proof_code(n)
+
+
+def test_level_forms_comparison_can_fail(monkeypatch):
+    """One coefficient of the level-3 forms changed (a wrong fast build) is seen."""
+    import paper_repro.core.subdivision_products as sp_mod
+
+    true = sp_mod._level_terms
+
+    def wrong(k):
+        out = list(true(k))
+        if k == 3:
+            coef = out[4].copy()
+            coef[len(coef) // 2] += 1
+            out[4] = coef
+        return tuple(out)
+
+    monkeypatch.setattr(sl, "_level_terms", wrong)
+    assert sl.level_forms_equal_proof_code(2)
+    assert not sl.level_forms_equal_proof_code(3)
 
 
 @pytest.mark.parametrize("n", [1, 2, 3])
@@ -149,3 +182,16 @@ def test_evenness_check_can_fail(monkeypatch):
     x = fmpq_poly([0, 1])
     monkeypatch.setattr(sl, "scaled_xi", lambda n, half: tuple(p * x for p in true(n, half)) if half else true(n, half))
     assert min(even_in_x(1).values()) > 0
+
+
+@pytest.mark.parametrize("part", PARTS)
+def test_order_one_numerators_every_part(part):
+    """N_1^k[:, h] / (2X)^e(h) is ``order_one_restriction``'s R_1^k at a float X = cos(alpha/4), every part (the
+    doctest covers the middle only)."""
+    from paper_repro.core.subdivision_products import order_one_restriction
+
+    e = sl.sine_degree(1)
+    num = sl.order_one_numerators(part)
+    for kp in (np.cos(0.3), np.cos(0.01), np.cos(0.7)):
+        r1 = np.array([[float(num[g][h](kp)) / (2 * kp) ** int(e[h]) for h in range(7)] for g in range(7)])
+        assert np.abs(r1 - order_one_restriction(part, kp, 1 - kp * kp)).max() < 1e-14

@@ -27,15 +27,22 @@ have rational points, :func:`parent_points`):
 6. **No pole at alpha = 0** (Proposition 11.6 of docs/subdivision_for_all_n.md, section 11, and the paragraph after
    it): for n = 1..n_limit every entry of the four S_k, a rational function r_{g,f} of X = cos(alpha/4) (the
    product route run over Z[X] by :mod:`paper_repro.theory.subdivision_limit`), has no pole at X = 1 -- exhaustive
-   over the 4 delta_n^2 entries, exact (decided in Z[t]/(t^3), t = X - 1, enough since ord_{X-1} xi'_g <= 1, which
-   is checked) -- so S_k is analytic and even at alpha = 0 for these n; S_k(0+) exactly, its rows summing to 1; and,
+   over the 4 delta_n^2 entries, exact (decided in Z[t]/(t^m), t = X - 1, m = max_g ord_{X-1} xi'_g + 2: the
+   orders are computed from the complete xi'_g, not assumed, and the truncation adapts to them; 1 for n <= 16, so
+   m = 3) -- so S_k is analytic and even at alpha = 0 for these n; S_k(0+) exactly, its rows summing to 1; and,
    for n = 1..n_poly, the complete polynomials of that route evaluated at X = cos(alpha/4) equal the exact
-   collocation S (check 1's matrices) at tan(alpha/8) = t8_poly, every entry (an independent route: the
-   transformation M_{alpha/2} Rot_k M_alpha^{-1}, no product forms); for n = 1..n_even every r_{g,f} is even in X
-   (exactly, from the complete polynomials), so S_k has entries in Q(X^2) = Q(cos(alpha/2)) for every alpha.
+   collocation S (check 1's matrices) at tan(alpha/8) = t8_poly, every entry (the R part an independent route: the
+   transformation M_{alpha/2} Rot_k M_alpha^{-1}, no product forms; the scaled normalizing coefficients xi of
+   Theorem B are shared); for n = 1..n_even every r_{g,f} is even in X (exactly, from the complete polynomials), so
+   S_k has entries in Q(X^2) = Q(cos(alpha/2)) for every alpha.
 
-Kind: exact-evidence at the sampled alpha; the hand proof carries every n and alpha; check 6 is exhaustive for
-n = 1..n_limit (every alpha: a statement about the rational functions).
+Kind: exact-evidence at the sampled alpha; the hand proof carries every n and alpha; check 6 is a computer-assisted
+proof, exhaustive for n = 1..n_limit (every alpha: a statement about the rational functions). It computes with the
+fast implementation ``_level_terms`` of Theorem P's integer forms; for every n checked it also compares these forms,
+term for term and exactly, with the proofs' dictionary construction
+(:func:`~paper_repro.core.half_angle_rules.product_terms`) at every level 2..n
+(:func:`~paper_repro.theory.subdivision_limit.level_forms_equal_proof_code`), so the check does not rest on the fast
+build (docs/subdivision_for_all_n.md, section 11, "The pole check").
 """
 
 from __future__ import annotations
@@ -50,6 +57,7 @@ from paper_repro.core.subdivision import PARTS, subdivision_matrices
 from paper_repro.theory.subdivision_limit import (
     even_in_x,
     exact_matrices_at,
+    level_forms_equal_proof_code,
     limit_check,
     rows_where_xi_half_vanishes,
 )
@@ -184,10 +192,13 @@ def rational_check(n: int, t: str) -> bool:
 def pole_check(n: int) -> dict:
     """Check 6 at order ``n``: the pole order at X = cos(alpha/4) = 1 of every entry of the four S_k
     (:func:`~paper_repro.theory.subdivision_limit.limit_check`), the rows where xi'_g vanishes at X = 1 (where the
-    check is not vacuous), S_k(0+)'s row sums and the largest |dS_k/dX| at X = 1 (exact, as strings)."""
+    check is not vacuous), S_k(0+)'s row sums, the largest |dS_k/dX| at X = 1 (exact, as strings), and whether the
+    Theorem P forms the check ran on equal the proof code's at every level 2..n
+    (:func:`~paper_repro.theory.subdivision_limit.level_forms_equal_proof_code`)."""
     res = limit_check(n)
     labels = [lab.paper for lab in united_system(n)]
     return {"max_pole_order": res.max_pole, "entries": res.entries, "max_ord_xi_half": res.max_ord_xi_half,
+            "theorem_p_forms_equal_proof_code": level_forms_equal_proof_code(n),
             "rows_with_xi_half_vanishing": [labels[g] for g in rows_where_xi_half_vanishes(n)],
             "nonzero_entries_in_those_rows": res.cancelled,
             "limit_rows_sum_to_1": all(sum(row, fmpq(0)) == 1 for m in res.limits for row in m),
@@ -224,9 +235,13 @@ def polynomial_check(n: int, t8: str) -> bool:
                  "G_(2,1,0)); S_k is rational at tan(alpha/4) = {t_irrational} (cos(alpha/4) irrational), n = "
                  "1..{n_rational}. No pole at alpha = 0 (Proposition 11.6's condition): for n = 1..{n_limit} no "
                  "entry of the four S_k, as a rational function of X = cos(alpha/4) (the product route over Z[X]), has "
-                 "a pole at X = 1 -- exhaustive over the entries, exact -- so S_k is analytic and even at alpha = 0 "
-                 "for these n (beyond n_limit: evidence); its complete rational functions equal the exact "
-                 "collocation S_k at tan(alpha/8) = {t8_poly}, n = 1..{n_poly}; they are even in X for n = "
+                 "a pole at X = 1 -- exhaustive over the entries, exact; a computer-assisted proof, run on Theorem "
+                 "P's forms of the fast build _level_terms, checked equal term for term to the proof code's "
+                 "(half_angle_rules.product_terms) at every level -- so S_k is analytic and even at alpha = 0 for "
+                 "these n (beyond n_limit not run here: the tool's record for n <= 16 is "
+                 "reports/subdivision_pole_check.md and reports/subdivision_pole_check_14_16.md); its complete "
+                 "rational functions equal the exact collocation S_k at tan(alpha/8) = {t8_poly} (the scaled "
+                 "normalizing coefficients of Theorem B shared), n = 1..{n_poly}; they are even in X for n = "
                  "1..{n_even} (exact), so S_k has entries in Q(cos(alpha/2)) for every alpha for these n.",
        kind="exact-evidence", ts8=["1/20", "1/7", "1/3", "2/5"], n_max=4, ts_n1=["1/20", "1/3", "1/2", "9/10"],
        t_irrational="1/2", n_rational=4, seed=5, n_limit=4, t8_poly="1/3", n_poly=3, n_even=4,
@@ -246,7 +261,8 @@ def run(ts8: list[str], n_max: int, ts_n1: list[str], t_irrational: str, n_ratio
     outside_g = {key: v["parts"]["u"]["negatives_outside_g"] for key, v in identities.items()}
     rational = {str(n): rational_check(n, t_irrational) for n in range(1, n_rational + 1)}
     poles = {str(n): pole_check(n) for n in range(1, n_limit + 1)}
-    poles_ok = all(v["max_pole_order"] == 0 and v["limit_rows_sum_to_1"] for v in poles.values())
+    poles_ok = all(v["max_pole_order"] == 0 and v["limit_rows_sum_to_1"] and v["theorem_p_forms_equal_proof_code"]
+                   for v in poles.values())
     polynomial = {str(n): polynomial_check(n, t8_poly) for n in range(1, n_poly + 1)}
     not_even = {str(n): even_in_x(n) for n in range(1, n_even + 1)}
     even_ok = all(c == 0 for v in not_even.values() for c in v.values())
@@ -274,7 +290,8 @@ def run(ts8: list[str], n_max: int, ts_n1: list[str], t_irrational: str, n_ratio
                  "for every n and alpha in docs/subdivision_for_all_n.md, where also Theorem G (the G columns of S_u), "
                  "the negative corner entry for every n (so no order is corner cutting) and the n = 1 closed form are "
                  "proven for every alpha; the total sign counts for n >= 3 are measured here, not proven; no pole "
-                 f"at alpha = 0 is decided exactly for n = 1..{n_limit} (every alpha), evidence beyond",
+                 f"at alpha = 0 is decided exactly for n = 1..{n_limit} (every alpha; on Theorem P's forms checked "
+                 "equal to the proof code's), evidence beyond",
     }
     return Outcome(ok, measured)
 

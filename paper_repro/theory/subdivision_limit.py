@@ -53,7 +53,7 @@ import scipy.sparse as sp
 from flint import fmpq, fmpq_poly, fmpz, fmpz_mat, fmpz_poly
 
 from paper_repro.core.context import get_context
-from paper_repro.core.half_angle_rules import cotangent
+from paper_repro.core.half_angle_rules import cotangent, merge, product_terms
 from paper_repro.core.labels import check_n, delta, exponent_matrix
 from paper_repro.core.normalization import orbits
 from paper_repro.core.normalizing_formula import scaled_table
@@ -264,6 +264,31 @@ def numerators(n: int, part: str, terms: int | None = None) -> tuple[list, int]:
     return cur, terms
 
 
+def level_forms_equal_proof_code(n: int) -> bool:
+    """Whether the integer forms of Theorem P that the check uses, ``_level_terms(k)`` for the levels k = 2..n (the
+    fast vectorised build: Lemma 11.5's centre embedding plus the new columns), equal term for term, in the same
+    order, the forms of the proofs' dictionary construction
+    (:func:`~paper_repro.core.half_angle_rules.product_terms` of order k - 1 for the seven h, merged, concatenated by
+    h and sorted stably by (row, col)).  True means the pole check of order n runs on the proof code's forms, so it
+    does not rest on the fast build (docs/subdivision_for_all_n.md, section 11, "The pole check"; the arrays are
+    integers: the comparison is exact).
+
+    >>> level_forms_equal_proof_code(3)
+    True
+    """
+    n = check_n(n)
+    for k in range(2, n + 1):
+        forms = [merge(product_terms(k - 1, h)) for h in range(7)]
+        cat = [np.concatenate([f[i] for f in forms]) for i in range(5)]
+        hidx = np.concatenate([np.full(len(f[0]), h) for h, f in enumerate(forms)])
+        order = np.argsort(cat[0].astype(np.int64) * delta(k - 1) + cat[1], kind="stable")
+        ref = tuple(arr[order] for arr in cat) + (hidx[order],)
+        got = _level_terms(k)
+        if len(got) != len(ref) or not all(np.array_equal(x, y) for x, y in zip(got, ref)):
+            return False
+    return True
+
+
 # --- the normalizing coefficients -------------------------------------------------------------------------------------
 @cache
 def scaled_xi(n: int, half: bool) -> tuple[fmpq_poly, ...]:
@@ -364,7 +389,8 @@ class LimitResult:
     ``cancelled``: per part, the nonzero entries of the rows with ord xi'_g >= 1 (where the numerator must vanish at
     X = 1 for the check to pass); ``limits`` (meaningful only when ``max_pole`` is 0): S_k(X = 1) exactly (object
     arrays of ``fmpq``, order of :data:`PARTS`); ``slopes``: r'_{g,f}(1) = dS/dX at X = 1 (S(alpha) = S(0+) -
-    r'(1) alpha^2/32 + O(alpha^4)); ``terms``: N; ``seconds``: wall time."""
+    r'(1) alpha^2/32 + O(alpha^4)); ``terms``: N; ``seconds``: wall time; ``pole_entries``: per part, the entries
+    (g, f) with a pole at X = 1 (empty when ``max_pole`` is 0)."""
 
     n: int
     max_pole: int
@@ -378,6 +404,7 @@ class LimitResult:
     slopes: tuple = field(repr=False)
     terms: int
     seconds: float
+    pole_entries: dict = field(default_factory=dict, repr=False)
 
 
 def limit_check(n: int, terms: int | None = None) -> LimitResult:
@@ -396,7 +423,7 @@ def limit_check(n: int, terms: int | None = None) -> LimitResult:
     s1 = [shifted(p, terms) for p in xi1]
     s0 = [shifted(p, terms) for p in xi0]
     e = sine_degree(n)
-    poles, nonzero, cancelled, limits, slopes = {}, {}, {}, [], []
+    poles, nonzero, cancelled, limits, slopes, where = {}, {}, {}, [], [], {}
     for part in PARTS:
         coeffs, _ = numerators(n, part, terms)
         arr = np.stack([_as_array(c, (d, d)) for c in coeffs])  # (terms, d, d) of ints
@@ -405,6 +432,7 @@ def limit_check(n: int, terms: int | None = None) -> LimitResult:
         deficit = np.array(o1)[:, None] - ordr - np.array(o0)[None, :]
         pole = int(max(0, deficit.max()))
         poles[part] = pole
+        where[part] = [(int(g), int(f)) for g, f in zip(*np.nonzero(deficit > 0))]
         nonzero[part] = int((ordr < terms).sum())
         cancelled[part] = int(((ordr < terms) & (np.array(o1)[:, None] >= 1)).sum())
         lim = np.full((d, d), fmpq(0), dtype=object)  # the entries divisible by t^N: 0 and slope 0
@@ -421,8 +449,10 @@ def limit_check(n: int, terms: int | None = None) -> LimitResult:
         slopes.append(slope)
     return LimitResult(n=n, max_pole=max(poles.values()), poles=poles, entries=4 * d * d, nonzero=nonzero,
                        max_ord_xi_half=max(o1), max_ord_xi=max(o0), cancelled=cancelled, limits=tuple(limits),
-                       slopes=tuple(slopes), terms=terms, seconds=time.perf_counter() - start)
+                       slopes=tuple(slopes), terms=terms, seconds=time.perf_counter() - start,
+                       pole_entries=where)
 
 
-__all__ = ["limit_check", "LimitResult", "numerators", "order_one_numerators", "exact_matrices_at", "scaled_xi",
+__all__ = ["limit_check", "level_forms_equal_proof_code", "LimitResult", "numerators", "order_one_numerators",
+           "exact_matrices_at", "scaled_xi",
            "shifted", "sine_degree", "degree_bound", "rows_where_xi_half_vanishes", "even_in_x"]
