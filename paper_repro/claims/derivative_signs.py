@@ -52,13 +52,13 @@ def run(i_max, j_max, p_max, m_i_max, m_j_max, z_max, rates) -> Outcome:
                       ("sec1_3-proposition-M", sympy.Function("M_sup")(i, lam, j, mu, z, zero))):
         if sign_function_argument(verbatim(lid)) != head:  # sign C_{i,lambda}^{p}(0), parsed
             raise ValueError(f"{lid}: the left-hand side sign X(0) = is not read")
-    if not re.match(r"Independently of \$i\\in%?\s*\\mathbb\{N\}\s*\$ and \$\\lambda,\\mu>0\$, for all values of "
-                    r"\$j,z\\in%?\s*\\mathbb\{N\}\s*\$ such that \$[^$]*\$ and \$[^$]*\$ we have the equality", prop):
+    # the quantifiers, word by word and formula by formula; the hypotheses i + j != 0, z >= 1 read as relations
+    quant = lm.sentence(r"Independently of $i\in\mathbb{N}$ and $\lambda,\mu>0$, for all values of "
+                        r"$j,z\in\mathbb{N}$ such that {first} and {second} we have the equality ...", prop)
+    if quant is None:
         raise ValueError("the Proposition's quantifiers are not read")
     m_rule = read_sign_function(prop)
-    hyps = re.findall(r"\$([^$]*?(?:\\neq|\\geq)[^$]*?)\$", prop.split("\\begin{equation}")[0])
-    if len(hyps) != 2:
-        raise ValueError(f"the Proposition's hypotheses i+j != 0, z >= 1 not read: {hyps}")
+    hyps = [quant["first"], quant["second"]]
     m_domain = [Condition(lm.parse_relation(h).as_boolean(), ("i", "j", "z")) for h in hyps]
 
     def printed_sign_cos(i, p):
