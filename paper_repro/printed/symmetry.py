@@ -24,7 +24,7 @@ from functools import cache
 import sympy
 
 from paper_repro.printed import latex_math as lm
-from paper_repro.printed.latex_math import LatexMathError, clean
+from paper_repro.printed.latex_math import LatexMathError, clean, prose, sentence
 from paper_repro.printed.lines import verbatim
 
 VARS = ("u", "v", "w")
@@ -218,46 +218,67 @@ def printed_half() -> dict[str, tuple[int, int, int]]:
 
 
 _COLOURS = {"red": "R", "green": "G", "blue": "B"}
-_NUMBERS = {"two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7, "eight": 8}
+
+
+def _listed(text: str) -> list[str]:
+    """The items of a prose list ``a, b and c`` (or ``a and b``); ``LatexMathError`` for anything else.
+
+    >>> _listed("red, green and blue"), _listed("$$ and $$")
+    (['red', 'green', 'blue'], ['$$', '$$'])
+    """
+    head, sep, last = text.rpartition(" and ")
+    items = [*head.split(", "), last] if sep else []
+    if len(items) < 2 or not all(items):
+        raise LatexMathError(f"unread list {text!r}")
+    return items
+
+
+#: the two sentences of the caption of Fig. oriented_graph(b), word by word (:func:`latex_math.sentence`)
+CAPTION_TEMPLATE = ("Functions associated with the {shaded:words} shaded domains are symmetric in variables "
+                    "{shaded_pairs:words}, respectively. Functions which correspond to the adjacent domains "
+                    "{adjacent:words} are symmetric in variables {adjacent_pairs:words}, respectively.")
 
 
 def six_properties() -> list[tuple[str, tuple[int, int, int], str, str]]:
     """The symmetry properties of the caption of Fig. oriented_graph(b): (name, substitution, family, image family).
     "Functions associated with the red, green and blue shaded domains are symmetric in (w,u), (v,w), (u,v),
     respectively" maps each family onto itself; "adjacent domains red--green, ..." maps the first onto the second.
+    The words are read by :func:`latex_math.sentence`, each pair ``\\left(u,v\\right)`` by :func:`parse`.
     """
-    tex = verbatim(CAPTION_LINE)
+    got = sentence(CAPTION_TEMPLATE, verbatim(CAPTION_LINE))
+    if got is None:
+        raise LatexMathError(f"unread caption {verbatim(CAPTION_LINE)[:60]!r}")
     out = []
-    for sentence in re.split(r"(?<=respectively)\.", tex):
-        if not sentence.strip():
-            continue
-        m = re.search(r"(.*?) are symmetric in variables (.*?), respectively", sentence)
-        kinds = re.findall(r"\b(shaded|adjacent) domains", sentence)
-        if not m or len(kinds) != 1:
-            raise LatexMathError(f"unread caption sentence {sentence[:60]!r}")
-        (families, pairs_tex), kind = m.groups(), kinds[0]
-        names = re.findall(r"(?:red|green|blue)(?:--(?:red|green|blue))?", families)
-        swaps = re.findall(r"\\left\(\s*([uvw])\s*,\s*([uvw])\s*\\right\)", pairs_tex)
-        if len(names) != len(swaps) or not names:
-            raise LatexMathError(f"{len(names)} domains but {len(swaps)} pairs of variables in {sentence[:60]!r}")
-        for name, (a, b) in zip(names, swaps):
+    for kind in ("shaded", "adjacent"):
+        names = _listed(got[kind])
+        marks, segs = prose(got[kind + "_pairs"])
+        if _listed(marks) != ["$$"] * len(segs):
+            raise LatexMathError(f"not a list of pairs of variables: {got[kind + '_pairs']!r}")
+        swaps = [parse(t) for t in segs]
+        if len(names) != len(swaps):
+            raise LatexMathError(f"{len(names)} domains but {len(swaps)} pairs of variables ({kind})")
+        for name, pair in zip(names, swaps):
+            if not isinstance(pair, sympy.Tuple) or len(pair) != 2 or any(str(x) not in VARS for x in pair):
+                raise LatexMathError(f"{pair} is not a pair of the variables {VARS}")
+            a, b = map(str, pair)
             if a == b:
                 raise LatexMathError(f"({a},{b}) is not a swap")
             sub = [0, 1, 2]
             sub[VARS.index(a)], sub[VARS.index(b)] = VARS.index(b), VARS.index(a)
-            fam = [_COLOURS[c] for c in name.split("--")]
-            if (kind == "shaded") != (len(fam) == 1):
+            colours = name.split("--")
+            if any(c not in _COLOURS for c in colours) or (kind == "shaded") != (len(colours) == 1):
                 raise LatexMathError(f"{kind} domains with {name}")
+            fam = [_COLOURS[c] for c in colours]
             out.append((f"({a},{b})", tuple(sub), fam[0], fam[-1]))
     return out
 
 
 def six_count() -> int:
     """The number of symmetry properties the text announces ("six cyclic symmetry properties")."""
-    m = re.search(r"\b(\w+) cyclic symmetry properties", verbatim(COUNT_LINE))
-    if not m or m.group(1) not in _NUMBERS:
+    got = sentence("that fulfill {count:count} cyclic symmetry properties in their variables", verbatim(COUNT_LINE))
+    if got is None or got["count"] is None:
         raise LatexMathError(f"no count of symmetry properties in {verbatim(COUNT_LINE)!r}")
-    return _NUMBERS[m.group(1)]
+    return got["count"]
 
 
 __all__ = ["EXPLICIT_LINES", "RELATION_LINES", "parse", "bound", "half_angle_powers", "set_builders",
