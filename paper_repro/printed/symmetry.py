@@ -17,14 +17,13 @@ exponent vectors are in the order of :data:`paper_repro.core.labels.SLOTS` (sin 
 
 from __future__ import annotations
 
-import re
 from collections.abc import Callable
 from functools import cache
 
 import sympy
 
 from paper_repro.printed import latex_math as lm
-from paper_repro.printed.latex_math import LatexMathError, clean, prose, sentence
+from paper_repro.printed.latex_math import LatexMathError, prose, sentence
 from paper_repro.printed.lines import verbatim
 
 VARS = ("u", "v", "w")
@@ -36,14 +35,15 @@ def parse(tex: str) -> sympy.Expr:
     return lm.parse(tex)
 
 
-def bound(expr: str, **env: int) -> int:
-    """Integer value of a printed bound such as ``2n-1-j`` (read by :func:`parse`) with ``env`` bound;
-    :class:`LatexMathError` if a name stays unbound or the value is not an integer.
+def bound(expr: str | sympy.Expr, **env: int) -> int:
+    """Integer value of a printed bound such as ``2n-1-j`` (LaTeX read by :func:`parse`, or already read) with
+    ``env`` bound; :class:`LatexMathError` if a name stays unbound or the value is not an integer.
 
-    >>> bound("2n-1-j", n=3, j=1)
-    4
+    >>> bound("2n-1-j", n=3, j=1), bound(parse("2n-1-j"), n=3, j=1)
+    (4, 4)
     """
-    v = parse(expr).subs({sympy.Symbol(k): x for k, x in env.items()})
+    e = parse(expr) if isinstance(expr, str) else sympy.sympify(expr)
+    v = e.subs({sympy.Symbol(k): x for k, x in env.items()})
     if not v.is_Integer:
         raise LatexMathError(f"the bound {expr!r} is not an integer at {env}: {v}")
     return int(v)
@@ -78,22 +78,22 @@ RELATION_LINES = {"R": "sec1_3-R-geq-n-relation", "G": "sec1_3-G-geq-relation", 
 CAPTION_LINE = "sec1_3-fig-oriented-graph-caption"
 COUNT_LINE = "sec1_3-six-symmetries"
 
-_SET = re.compile(r"\\left\\\{(?P<body>.*?)\\right\\\}\s*_\{(?P<sub>[^{}]*)\}\s*%?\s*\^\{(?P<sup>[^{}]*)\}", re.S)
-IndexSet = tuple[tuple[str, str, str], tuple[str, str, str]]
+IndexSet = tuple[tuple[str, sympy.Expr, sympy.Expr], tuple[str, sympy.Expr, sympy.Expr]]
 
 
-def set_builders(tex: str) -> list[tuple[str, IndexSet, tuple[int, int]]]:
-    """The set-builders ``\\left\\{ body \\right\\} _{j=a,i=b}^{c,d}`` of ``tex``: (body, ((j, a, c), (i, b, d)),
-    span in ``tex``); ``LatexMathError`` if the index set is not a double one over j, i."""
+def set_builders(tex: str) -> tuple[lm.Relation, list[tuple[sympy.Expr, IndexSet]]]:
+    """The display ``tex`` read by :func:`latex_math.parse_relation` (``[lead] part = part ...``), and its parts, each
+    a set-builder ``\\left\\{ member \\right\\} _{j=a,i=b}^{c,d}`` (a bounded ``Family`` of the reader): (member,
+    ((j, a, c), (i, b, d))); ``LatexMathError`` if a part is anything else or its index set is not a double one.
+    """
+    rel = lm.parse_relation(tex)
     out = []
-    for m in _SET.finditer(tex):
-        sub, sup = m.group("sub").split(","), m.group("sup").split(",")
-        if len(sub) != 2 or len(sup) != 2 or any("=" not in s for s in sub):
-            raise LatexMathError(f"not a double index set: _{{{m.group('sub')}}}^{{{m.group('sup')}}}")
-        (ov, olo), (iv, ilo) = (s.split("=", 1) for s in sub)
-        out.append((m.group("body"), ((ov.strip(), olo.strip(), sup[0].strip()),
-                                      (iv.strip(), ilo.strip(), sup[1].strip())), m.span()))
-    return out
+    for part in rel.parts:
+        if getattr(part, "func", None) is not lm.Family or part.args[1] or len(part.args[2]) != 2:
+            raise LatexMathError(f"not a set-builder over a double index set: {part}")
+        (ov, olo, ohi), (iv, ilo, ihi) = part.args[2]
+        out.append((part.args[0], ((str(ov), olo, ohi), (str(iv), ilo, ihi))))
+    return rel, out
 
 
 def pairs(iset: IndexSet, n: int) -> list[tuple[int, int]]:
@@ -106,8 +106,9 @@ def pairs(iset: IndexSet, n: int) -> list[tuple[int, int]]:
 
 
 @cache
-def monomial(body: str) -> Callable[[int, int, int], tuple[int, ...]]:
-    powers = half_angle_powers(parse(body), VARS)
+def monomial(body: str | sympy.Expr) -> Callable[[int, int, int], tuple[int, ...]]:
+    """The exponent vector (n, i, j) -> (sin u, cos u, sin v, ...) of a printed monomial (LaTeX or read)."""
+    powers = half_angle_powers(parse(body) if isinstance(body, str) else body, VARS)
     n, i, j = sympy.symbols("n i j")
     extra = set().union(*(sympy.sympify(e).free_symbols for e in powers.values())) - {n, i, j}
     if extra:
@@ -120,18 +121,17 @@ def monomial(body: str) -> Callable[[int, int, int], tuple[int, ...]]:
 def explicit(color: str, half: str) -> tuple[Callable[[int, int, int], tuple[int, ...]], IndexSet]:
     """The printed explicit formula of ``color`` for ``half`` ("low"/"high") as (exponents(n, i, j), index set);
     the display must be ``... = \\left\\{ monomial \\right\\} _{..}^{..}`` (its last set-builder after an ``=``)."""
-    tex = verbatim(EXPLICIT_LINES[color, half])
-    found = set_builders(tex)
+    rel, found = set_builders(verbatim(EXPLICIT_LINES[color, half]))
     if not found:
         raise LatexMathError(f"no set-builder in {EXPLICIT_LINES[color, half]}")
-    body, iset, (a, _) = found[-1]
-    if not clean(tex[:a]).rstrip().endswith("="):
+    body, iset = found[-1]
+    if (rel.ops or [rel.lead])[-1] != "=" or len(found) > 2:
         raise LatexMathError(f"{EXPLICIT_LINES[color, half]}: the explicit set does not follow an '='")
     if len(found) == 2:  # the display names its left side: it must be color_{2n,2n-i,j}(u,v,w) on the same set
-        lhs, lset, _ = found[0]
-        if lset != iset or label(lhs) != (color, "2*n - i", "j", (0, 1, 2)):
-            raise LatexMathError(f"{EXPLICIT_LINES[color, half]}: left side {lhs!r} on {lset} is not "
-                           f"{color}_{{2n,2n-i,j}}(u,v,w) on {iset}")
+        lhs, lset = found[0]
+        if lset != iset or label_of(lhs) != (color, "2*n - i", "j", (0, 1, 2)):
+            raise LatexMathError(f"{EXPLICIT_LINES[color, half]}: left side {lhs} on {lset} is not "
+                                 f"{color}_{{2n,2n-i,j}}(u,v,w) on {iset}")
     return monomial(body), iset
 
 
@@ -195,14 +195,13 @@ def half_relation(color: str) -> tuple[tuple[str, str, str, tuple[int, ...]], tu
     """The printed relation ``{X_{2n,a,b}(x,y,z)}_{set} = {X_{2n,c,d}(p,q,r)}_{set}``: the two labels as
     (colour, first index, level, argument permutation) and the index set (both sides must print the same)."""
     lid = RELATION_LINES[color]
-    tex = verbatim(lid)
-    found = set_builders(tex)
+    rel, found = set_builders(verbatim(lid))
     if len(found) != 2:
         raise LatexMathError(f"{lid}: {len(found)} set-builders, not 2")
-    (lb, lset, (_, a_end)), (rb, rset, (b_start, _)) = found
-    if clean(tex[a_end:b_start]).strip() != "=" or lset != rset:
+    (lb, lset), (rb, rset) = found
+    if rel.ops != ["="] or rel.lead is not None or lset != rset:
         raise LatexMathError(f"{lid}: not an equality of two sets on one index set")
-    return label(lb), label(rb), lset
+    return label_of(lb), label_of(rb), lset
 
 
 def printed_half() -> dict[str, tuple[int, int, int]]:
