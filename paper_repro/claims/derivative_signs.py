@@ -10,8 +10,6 @@ corrected rule, itself checked on the same range).
 
 from __future__ import annotations
 
-import re
-
 import sympy
 from flint import fmpq
 
@@ -110,8 +108,10 @@ def run(i_max, j_max, p_max, m_i_max, m_j_max, z_max, rates) -> Outcome:
     # the erratum recorded on the line describes this transcription: its evidence counts the same mismatches
     from paper_repro.printed.lines import line
 
-    recorded = re.search(r"(\d+) of (\d+) cases", line("sec1_3-sign-cos").erratum["evidence"])
-    same_evidence = bool(recorded) and (int(recorded.group(1)), int(recorded.group(2))) == (len(cos_bad), n_cos)
+    # (our own typed evidence text, printed/lines/sec1_3.py, read word by word like a printed sentence)
+    recorded = lm.sentence("exact Taylor coefficients: {bad:number} of {cases:number} cases ...",
+                           line("sec1_3-sign-cos").erratum["evidence"])
+    same_evidence = recorded is not None and (recorded["bad"], recorded["cases"]) == (len(cos_bad), n_cos)
     # ... and its three kinds of failure: no branch (p even, i odd), two branches with different values (p, i odd),
     # a wrong sign (p even, i = 2 mod 4) -- recomputed from the rule read and the exact derivatives
     kinds = {"none": set(), "several": set(), "wrong": set()}
