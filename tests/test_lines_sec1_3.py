@@ -397,8 +397,9 @@ def test_explicit_formulas_are_read_by_latex_math(line_id):
     from paper_repro.printed.latex_math import LatexMathError
     from paper_repro.printed.lines import verbatim
 
-    body = S.set_builders(verbatim(line_id))[-1][0]
-    powers = S.half_angle_powers(S.parse(body))
+    _, found = S.set_builders(verbatim(line_id))  # the display read by parse_relation: its bounded families
+    body = found[-1][0]
+    powers = S.half_angle_powers(body)
     assert {x for _, x in powers} <= set(S.VARS) and len(powers) >= 2
     assert set().union(*(sympy.sympify(e).free_symbols for e in powers.values())) <= set(sympy.symbols("n i j"))
     with pytest.raises(LatexMathError):

@@ -10,8 +10,6 @@ corrected rule, itself checked on the same range).
 
 from __future__ import annotations
 
-import re
-
 import sympy
 from flint import fmpq
 
@@ -52,13 +50,13 @@ def run(i_max, j_max, p_max, m_i_max, m_j_max, z_max, rates) -> Outcome:
                       ("sec1_3-proposition-M", sympy.Function("M_sup")(i, lam, j, mu, z, zero))):
         if sign_function_argument(verbatim(lid)) != head:  # sign C_{i,lambda}^{p}(0), parsed
             raise ValueError(f"{lid}: the left-hand side sign X(0) = is not read")
-    if not re.match(r"Independently of \$i\\in%?\s*\\mathbb\{N\}\s*\$ and \$\\lambda,\\mu>0\$, for all values of "
-                    r"\$j,z\\in%?\s*\\mathbb\{N\}\s*\$ such that \$[^$]*\$ and \$[^$]*\$ we have the equality", prop):
+    # the quantifiers, word by word and formula by formula; the hypotheses i + j != 0, z >= 1 read as relations
+    quant = lm.sentence(r"Independently of $i\in\mathbb{N}$ and $\lambda,\mu>0$, for all values of "
+                        r"$j,z\in\mathbb{N}$ such that {first} and {second} we have the equality ...", prop)
+    if quant is None:
         raise ValueError("the Proposition's quantifiers are not read")
     m_rule = read_sign_function(prop)
-    hyps = re.findall(r"\$([^$]*?(?:\\neq|\\geq)[^$]*?)\$", prop.split("\\begin{equation}")[0])
-    if len(hyps) != 2:
-        raise ValueError(f"the Proposition's hypotheses i+j != 0, z >= 1 not read: {hyps}")
+    hyps = [quant["first"], quant["second"]]
     m_domain = [Condition(lm.parse_relation(h).as_boolean(), ("i", "j", "z")) for h in hyps]
 
     def printed_sign_cos(i, p):
@@ -110,8 +108,10 @@ def run(i_max, j_max, p_max, m_i_max, m_j_max, z_max, rates) -> Outcome:
     # the erratum recorded on the line describes this transcription: its evidence counts the same mismatches
     from paper_repro.printed.lines import line
 
-    recorded = re.search(r"(\d+) of (\d+) cases", line("sec1_3-sign-cos").erratum["evidence"])
-    same_evidence = bool(recorded) and (int(recorded.group(1)), int(recorded.group(2))) == (len(cos_bad), n_cos)
+    # (our own typed evidence text, printed/lines/sec1_3.py, read word by word like a printed sentence)
+    recorded = lm.sentence("exact Taylor coefficients: {bad:number} of {cases:number} cases ...",
+                           line("sec1_3-sign-cos").erratum["evidence"])
+    same_evidence = recorded is not None and (recorded["bad"], recorded["cases"]) == (len(cos_bad), n_cos)
     # ... and its three kinds of failure: no branch (p even, i odd), two branches with different values (p, i odd),
     # a wrong sign (p even, i = 2 mod 4) -- recomputed from the rule read and the exact derivatives
     kinds = {"none": set(), "several": set(), "wrong": set()}

@@ -29,17 +29,18 @@ joint_systems_linear_independence and the partition-of-unity system, each checke
 
 from __future__ import annotations
 
-import re
 from math import comb
 
 import mpmath
 import numpy as np
+import sympy
 from flint import fmpq, nmod_mat
 
 from paper_repro.core.domain import rational_alpha
 from paper_repro.core.labels import exponents, united_system
 from paper_repro.core.normalization import orbit_coefficients, orbits
 from paper_repro.printed import independence as printed
+from paper_repro.printed import latex_math as lm
 from paper_repro.theory.derivatives import mixed_derivative
 from paper_repro.theory.elimination import elimination
 from paper_repro.util.measured import bound
@@ -305,7 +306,9 @@ def run(n_max: int, r_max: int, system_n_max: int) -> Outcome:
     # the y-range of system_partition_of_unity (read), with the printed x-range of the parametrization
     pu = "parametrization_for_partition_of_unity"
     sys_line = verbatim("sec4_5-system-y-range")
-    if not re.fullmatch(r"\s*\\forall\s*y\\in\\left\[[^\]]*\\right\]\s*", sys_line):
+    y_rel = lm.parse_relation(sys_line)  # \forall y\in\left[ lo,hi\right], nothing else
+    if (y_rel.quantifier, y_rel.ops, y_rel.conditions) != ("forall", ["in"], []) or \
+            y_rel.parts[0] != sympy.Symbol("y") or not isinstance(y_rel.parts[1], sympy.Interval):
         raise ValueError(f"sec4_5-system-y-range not read: {sys_line!r}")
     system_range = parametrization_ok(pu, ranges={"x": _params()[pu][3]["x"], "y": interval(sys_line, "y")})
     # the errata recorded on the two lines describe these transcriptions: the y-range they call printed
@@ -313,8 +316,10 @@ def run(n_max: int, r_max: int, system_n_max: int) -> Outcome:
     from paper_repro.printed.lines import line
 
     def recorded_y(line_id: str):
-        m = re.search(r"y in \[([^\]]+)\]", line(line_id).erratum["printed"])
-        return [linear_form(p.strip().replace("alpha", "\\alpha")) for p in m.group(1).split(",")] if m else None
+        # the erratum's plain-text transcription "... y in [lo, hi]": its words by latex_math.sentence, each bound
+        # by the reader (our plain "alpha" written as the paper's \alpha)
+        got = lm.sentence("... y in [{lo:words}, {hi:words}]", line(line_id).erratum["printed"])
+        return None if got is None else [linear_form(got[k].strip().replace("alpha", "\\alpha")) for k in ("lo", "hi")]
     described = (recorded_y("sec1_3-param-partition-of-unity") == [linear_form(q) for q in _params()[pu][3]["y"]]
                  and recorded_y("sec4_5-system-y-range") == [linear_form(q) for q in interval(sys_line, "y")])
     sines = r0p1_sines()

@@ -118,17 +118,23 @@ def printed_conversions() -> list[tuple[str, str, tuple[int, int, int], list[tup
 
 
 def _recorded_correction(text: str) -> tuple[tuple[int, int, int], list[tuple[Fraction, str]]]:
-    """The correction recorded on an erratum line, ``p_{d,e,f} = w lab + w lab ...`` (plain text), read."""
-    import re
+    """The correction recorded on an erratum line, ``p_{d,e,f} = w lab + w lab ...``, read.  This is our own plain
+    notation (the erratum's ``corrected`` field, typed in printed/lines/sec7.py), not the paper's LaTeX: plain string
+    splits, strict (``ValueError`` on anything else).
 
-    m = re.fullmatch(r"p_\{(\d+),(\d+),(\d+)\} = (.+)", text.strip())
-    if not m:
+    >>> _recorded_correction("p_{8,8,0} = 1 r_{4,4,0} + 1/2 g_{4,1,0}")
+    ((8, 8, 0), [(Fraction(1, 1), 'r_{4,4,0}'), (Fraction(1, 2), 'g_{4,1,0}')])
+    """
+    head, sep, rhs = text.strip().partition(" = ")
+    idx = head.removeprefix("p_{").removesuffix("}").split(",")
+    if not sep or not head.startswith("p_{") or not head.endswith("}") or len(idx) != 3 or \
+            not all(i.isdigit() for i in idx) or not rhs:
         raise ValueError(f"unread correction {text!r}")
     terms = []
-    for part in m.group(4).split(" + "):
+    for part in rhs.split(" + "):
         w, lab = part.split(" ")
         terms.append((Fraction(w), lab))
-    return (int(m.group(1)), int(m.group(2)), int(m.group(3))), terms
+    return (int(idx[0]), int(idx[1]), int(idx[2])), terms
 
 
 def _slips(printed: tuple, corrected: tuple) -> int:

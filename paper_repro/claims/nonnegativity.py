@@ -13,12 +13,11 @@ Publishes ``data/normalization/closed_forms.json`` (shape fixed by issue 4) and 
 
 from __future__ import annotations
 
-import re
-
 from flint import fmpq_poly
 
 from paper_repro.core.labels import united_system
 from paper_repro.core.normalization import orbits
+from paper_repro.printed import latex_math as lm
 from paper_repro.theory.closed_forms import closed_forms_cached, proof_cached, records, remember, sign_on_unit_interval
 from paper_repro.util.registry import Outcome, claim
 from paper_repro.util.tasks import Task
@@ -96,21 +95,22 @@ def printed_orders() -> tuple[list[int], str]:
     property its ``are also ...`` states."""
     from paper_repro.printed.lines import verbatim
 
-    tex = verbatim("sec4_5-nonnegative")
-    m = re.search(r"the ((?:\w+, )*(?:the )?\w+(?: and the \w+)?) order cases of the function system .*?"
-                  r"are also ([\w-]+)", tex, re.S)
-    if not m:
+    got = lm.sentence(r"Based on Examples \ref{{first:word}}--\ref{{last:word}}, in addition to the property of "
+                      r"partition of unity, the {orders:words} order cases of the function system "
+                      r"(\ref{normalized_united_system}) are also {word:word}.", verbatim("sec4_5-nonnegative"))
+    if got is None:
         return [], ""
-    words = re.findall(r"\w+", m.group(1).replace(" and ", " "))
-    orders = [_ORDINALS[w] for w in words if w != "the" and w in _ORDINALS]
-    if len(orders) != len([w for w in words if w != "the"]):
-        return [], m.group(2)
+    head, sep, last = got["orders"].rpartition(" and ")
+    words = [w.strip().removeprefix("the ") for w in [*head.split(", "), last]] if sep else [got["orders"]]
+    if not all(w in _ORDINALS for w in words):
+        return [], got["word"]
+    orders = [_ORDINALS[w] for w in words]
     # "Based on Examples \ref{..n_1}--\ref{..n_3}": the Examples cited are those of the orders stated
-    cited = re.search(r"Examples \\ref\{normalizing_coefficients_n_(\d+)\}--\\ref\{normalizing_coefficients_n_(\d+)\}",
-                      tex)
-    if not cited or list(range(int(cited.group(1)), int(cited.group(2)) + 1)) != sorted(orders):
-        return [], m.group(2)
-    return sorted(orders), m.group(2)
+    cited = [got[k].removeprefix("normalizing_coefficients_n_") for k in ("first", "last")]
+    if not all(c.isdigit() and got[k] != c for c, k in zip(cited, ("first", "last"))) or \
+            list(range(int(cited[0]), int(cited[1]) + 1)) != sorted(orders):
+        return [], got["word"]
+    return sorted(orders), got["word"]
 
 
 @claim("nonnegativity", paper_ref=["normalizing_coefficients_n_1", "normalizing_coefficients_n_2",

@@ -1503,11 +1503,25 @@ def _same_math(printed: str, template: str) -> bool:
         except LatexMathError:
             continue
         if isinstance(a, Relation):
-            return (a.ops == b.ops and len(a.parts) == len(b.parts)
-                    and all(sympy.simplify(x - y) == 0 if isinstance(x, sympy.Expr) and isinstance(y, sympy.Expr)
-                            else x == y for x, y in zip(a.parts, b.parts)))
+            return _same_relation(a, b)
         return a == b
     return "".join(printed.split()) == "".join(template.split())
+
+
+def _same_relation(a: Relation, b: Relation) -> bool:
+    r"""Whether two read relations say the same: operators, parts (equal as expressions) and, recursively, their
+    conditions (``\lambda,\mu>0`` reads as ``lambda`` under the condition ``mu > 0``: the condition counts).
+
+    >>> _same_relation(parse_relation(r"\lambda,\mu>0"), parse_relation(r"\lambda ,\mu> 0"))
+    True
+    >>> _same_relation(parse_relation(r"\lambda,\mu>0"), parse_relation(r"\lambda,\mu<0"))
+    False
+    """
+    return (a.ops == b.ops and len(a.parts) == len(b.parts)
+            and all(sympy.simplify(x - y) == 0 if isinstance(x, sympy.Expr) and isinstance(y, sympy.Expr)
+                    else x == y for x, y in zip(a.parts, b.parts))
+            and len(a.conditions) == len(b.conditions)
+            and all(_same_relation(x, y) for x, y in zip(a.conditions, b.conditions)))
 
 
 @functools.lru_cache(maxsize=4096)

@@ -17,14 +17,13 @@ exponent vectors are in the order of :data:`paper_repro.core.labels.SLOTS` (sin 
 
 from __future__ import annotations
 
-import re
 from collections.abc import Callable
 from functools import cache
 
 import sympy
 
 from paper_repro.printed import latex_math as lm
-from paper_repro.printed.latex_math import LatexMathError, clean
+from paper_repro.printed.latex_math import LatexMathError, prose, sentence
 from paper_repro.printed.lines import verbatim
 
 VARS = ("u", "v", "w")
@@ -36,14 +35,15 @@ def parse(tex: str) -> sympy.Expr:
     return lm.parse(tex)
 
 
-def bound(expr: str, **env: int) -> int:
-    """Integer value of a printed bound such as ``2n-1-j`` (read by :func:`parse`) with ``env`` bound;
-    :class:`LatexMathError` if a name stays unbound or the value is not an integer.
+def bound(expr: str | sympy.Expr, **env: int) -> int:
+    """Integer value of a printed bound such as ``2n-1-j`` (LaTeX read by :func:`parse`, or already read) with
+    ``env`` bound; :class:`LatexMathError` if a name stays unbound or the value is not an integer.
 
-    >>> bound("2n-1-j", n=3, j=1)
-    4
+    >>> bound("2n-1-j", n=3, j=1), bound(parse("2n-1-j"), n=3, j=1)
+    (4, 4)
     """
-    v = parse(expr).subs({sympy.Symbol(k): x for k, x in env.items()})
+    e = parse(expr) if isinstance(expr, str) else sympy.sympify(expr)
+    v = e.subs({sympy.Symbol(k): x for k, x in env.items()})
     if not v.is_Integer:
         raise LatexMathError(f"the bound {expr!r} is not an integer at {env}: {v}")
     return int(v)
@@ -78,22 +78,22 @@ RELATION_LINES = {"R": "sec1_3-R-geq-n-relation", "G": "sec1_3-G-geq-relation", 
 CAPTION_LINE = "sec1_3-fig-oriented-graph-caption"
 COUNT_LINE = "sec1_3-six-symmetries"
 
-_SET = re.compile(r"\\left\\\{(?P<body>.*?)\\right\\\}\s*_\{(?P<sub>[^{}]*)\}\s*%?\s*\^\{(?P<sup>[^{}]*)\}", re.S)
-IndexSet = tuple[tuple[str, str, str], tuple[str, str, str]]
+IndexSet = tuple[tuple[str, sympy.Expr, sympy.Expr], tuple[str, sympy.Expr, sympy.Expr]]
 
 
-def set_builders(tex: str) -> list[tuple[str, IndexSet, tuple[int, int]]]:
-    """The set-builders ``\\left\\{ body \\right\\} _{j=a,i=b}^{c,d}`` of ``tex``: (body, ((j, a, c), (i, b, d)),
-    span in ``tex``); ``LatexMathError`` if the index set is not a double one over j, i."""
+def set_builders(tex: str) -> tuple[lm.Relation, list[tuple[sympy.Expr, IndexSet]]]:
+    """The display ``tex`` read by :func:`latex_math.parse_relation` (``[lead] part = part ...``), and its parts, each
+    a set-builder ``\\left\\{ member \\right\\} _{j=a,i=b}^{c,d}`` (a bounded ``Family`` of the reader): (member,
+    ((j, a, c), (i, b, d))); ``LatexMathError`` if a part is anything else or its index set is not a double one.
+    """
+    rel = lm.parse_relation(tex)
     out = []
-    for m in _SET.finditer(tex):
-        sub, sup = m.group("sub").split(","), m.group("sup").split(",")
-        if len(sub) != 2 or len(sup) != 2 or any("=" not in s for s in sub):
-            raise LatexMathError(f"not a double index set: _{{{m.group('sub')}}}^{{{m.group('sup')}}}")
-        (ov, olo), (iv, ilo) = (s.split("=", 1) for s in sub)
-        out.append((m.group("body"), ((ov.strip(), olo.strip(), sup[0].strip()),
-                                      (iv.strip(), ilo.strip(), sup[1].strip())), m.span()))
-    return out
+    for part in rel.parts:
+        if getattr(part, "func", None) is not lm.Family or part.args[1] or len(part.args[2]) != 2:
+            raise LatexMathError(f"not a set-builder over a double index set: {part}")
+        (ov, olo, ohi), (iv, ilo, ihi) = part.args[2]
+        out.append((part.args[0], ((str(ov), olo, ohi), (str(iv), ilo, ihi))))
+    return rel, out
 
 
 def pairs(iset: IndexSet, n: int) -> list[tuple[int, int]]:
@@ -106,8 +106,9 @@ def pairs(iset: IndexSet, n: int) -> list[tuple[int, int]]:
 
 
 @cache
-def monomial(body: str) -> Callable[[int, int, int], tuple[int, ...]]:
-    powers = half_angle_powers(parse(body), VARS)
+def monomial(body: str | sympy.Expr) -> Callable[[int, int, int], tuple[int, ...]]:
+    """The exponent vector (n, i, j) -> (sin u, cos u, sin v, ...) of a printed monomial (LaTeX or read)."""
+    powers = half_angle_powers(parse(body) if isinstance(body, str) else body, VARS)
     n, i, j = sympy.symbols("n i j")
     extra = set().union(*(sympy.sympify(e).free_symbols for e in powers.values())) - {n, i, j}
     if extra:
@@ -120,18 +121,17 @@ def monomial(body: str) -> Callable[[int, int, int], tuple[int, ...]]:
 def explicit(color: str, half: str) -> tuple[Callable[[int, int, int], tuple[int, ...]], IndexSet]:
     """The printed explicit formula of ``color`` for ``half`` ("low"/"high") as (exponents(n, i, j), index set);
     the display must be ``... = \\left\\{ monomial \\right\\} _{..}^{..}`` (its last set-builder after an ``=``)."""
-    tex = verbatim(EXPLICIT_LINES[color, half])
-    found = set_builders(tex)
+    rel, found = set_builders(verbatim(EXPLICIT_LINES[color, half]))
     if not found:
         raise LatexMathError(f"no set-builder in {EXPLICIT_LINES[color, half]}")
-    body, iset, (a, _) = found[-1]
-    if not clean(tex[:a]).rstrip().endswith("="):
+    body, iset = found[-1]
+    if (rel.ops or [rel.lead])[-1] != "=" or len(found) > 2:
         raise LatexMathError(f"{EXPLICIT_LINES[color, half]}: the explicit set does not follow an '='")
     if len(found) == 2:  # the display names its left side: it must be color_{2n,2n-i,j}(u,v,w) on the same set
-        lhs, lset, _ = found[0]
-        if lset != iset or label(lhs) != (color, "2*n - i", "j", (0, 1, 2)):
-            raise LatexMathError(f"{EXPLICIT_LINES[color, half]}: left side {lhs!r} on {lset} is not "
-                           f"{color}_{{2n,2n-i,j}}(u,v,w) on {iset}")
+        lhs, lset = found[0]
+        if lset != iset or label_of(lhs) != (color, "2*n - i", "j", (0, 1, 2)):
+            raise LatexMathError(f"{EXPLICIT_LINES[color, half]}: left side {lhs} on {lset} is not "
+                                 f"{color}_{{2n,2n-i,j}}(u,v,w) on {iset}")
     return monomial(body), iset
 
 
@@ -195,14 +195,13 @@ def half_relation(color: str) -> tuple[tuple[str, str, str, tuple[int, ...]], tu
     """The printed relation ``{X_{2n,a,b}(x,y,z)}_{set} = {X_{2n,c,d}(p,q,r)}_{set}``: the two labels as
     (colour, first index, level, argument permutation) and the index set (both sides must print the same)."""
     lid = RELATION_LINES[color]
-    tex = verbatim(lid)
-    found = set_builders(tex)
+    rel, found = set_builders(verbatim(lid))
     if len(found) != 2:
         raise LatexMathError(f"{lid}: {len(found)} set-builders, not 2")
-    (lb, lset, (_, a_end)), (rb, rset, (b_start, _)) = found
-    if clean(tex[a_end:b_start]).strip() != "=" or lset != rset:
+    (lb, lset), (rb, rset) = found
+    if rel.ops != ["="] or rel.lead is not None or lset != rset:
         raise LatexMathError(f"{lid}: not an equality of two sets on one index set")
-    return label(lb), label(rb), lset
+    return label_of(lb), label_of(rb), lset
 
 
 def printed_half() -> dict[str, tuple[int, int, int]]:
@@ -218,46 +217,67 @@ def printed_half() -> dict[str, tuple[int, int, int]]:
 
 
 _COLOURS = {"red": "R", "green": "G", "blue": "B"}
-_NUMBERS = {"two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7, "eight": 8}
+
+
+def _listed(text: str) -> list[str]:
+    """The items of a prose list ``a, b and c`` (or ``a and b``); ``LatexMathError`` for anything else.
+
+    >>> _listed("red, green and blue"), _listed("$$ and $$")
+    (['red', 'green', 'blue'], ['$$', '$$'])
+    """
+    head, sep, last = text.rpartition(" and ")
+    items = [*head.split(", "), last] if sep else []
+    if len(items) < 2 or not all(items):
+        raise LatexMathError(f"unread list {text!r}")
+    return items
+
+
+#: the two sentences of the caption of Fig. oriented_graph(b), word by word (:func:`latex_math.sentence`)
+CAPTION_TEMPLATE = ("Functions associated with the {shaded:words} shaded domains are symmetric in variables "
+                    "{shaded_pairs:words}, respectively. Functions which correspond to the adjacent domains "
+                    "{adjacent:words} are symmetric in variables {adjacent_pairs:words}, respectively.")
 
 
 def six_properties() -> list[tuple[str, tuple[int, int, int], str, str]]:
     """The symmetry properties of the caption of Fig. oriented_graph(b): (name, substitution, family, image family).
     "Functions associated with the red, green and blue shaded domains are symmetric in (w,u), (v,w), (u,v),
     respectively" maps each family onto itself; "adjacent domains red--green, ..." maps the first onto the second.
+    The words are read by :func:`latex_math.sentence`, each pair ``\\left(u,v\\right)`` by :func:`parse`.
     """
-    tex = verbatim(CAPTION_LINE)
+    got = sentence(CAPTION_TEMPLATE, verbatim(CAPTION_LINE))
+    if got is None:
+        raise LatexMathError(f"unread caption {verbatim(CAPTION_LINE)[:60]!r}")
     out = []
-    for sentence in re.split(r"(?<=respectively)\.", tex):
-        if not sentence.strip():
-            continue
-        m = re.search(r"(.*?) are symmetric in variables (.*?), respectively", sentence)
-        kinds = re.findall(r"\b(shaded|adjacent) domains", sentence)
-        if not m or len(kinds) != 1:
-            raise LatexMathError(f"unread caption sentence {sentence[:60]!r}")
-        (families, pairs_tex), kind = m.groups(), kinds[0]
-        names = re.findall(r"(?:red|green|blue)(?:--(?:red|green|blue))?", families)
-        swaps = re.findall(r"\\left\(\s*([uvw])\s*,\s*([uvw])\s*\\right\)", pairs_tex)
-        if len(names) != len(swaps) or not names:
-            raise LatexMathError(f"{len(names)} domains but {len(swaps)} pairs of variables in {sentence[:60]!r}")
-        for name, (a, b) in zip(names, swaps):
+    for kind in ("shaded", "adjacent"):
+        names = _listed(got[kind])
+        marks, segs = prose(got[kind + "_pairs"])
+        if _listed(marks) != ["$$"] * len(segs):
+            raise LatexMathError(f"not a list of pairs of variables: {got[kind + '_pairs']!r}")
+        swaps = [parse(t) for t in segs]
+        if len(names) != len(swaps):
+            raise LatexMathError(f"{len(names)} domains but {len(swaps)} pairs of variables ({kind})")
+        for name, pair in zip(names, swaps):
+            if not isinstance(pair, sympy.Tuple) or len(pair) != 2 or any(str(x) not in VARS for x in pair):
+                raise LatexMathError(f"{pair} is not a pair of the variables {VARS}")
+            a, b = map(str, pair)
             if a == b:
                 raise LatexMathError(f"({a},{b}) is not a swap")
             sub = [0, 1, 2]
             sub[VARS.index(a)], sub[VARS.index(b)] = VARS.index(b), VARS.index(a)
-            fam = [_COLOURS[c] for c in name.split("--")]
-            if (kind == "shaded") != (len(fam) == 1):
+            colours = name.split("--")
+            if any(c not in _COLOURS for c in colours) or (kind == "shaded") != (len(colours) == 1):
                 raise LatexMathError(f"{kind} domains with {name}")
+            fam = [_COLOURS[c] for c in colours]
             out.append((f"({a},{b})", tuple(sub), fam[0], fam[-1]))
     return out
 
 
 def six_count() -> int:
     """The number of symmetry properties the text announces ("six cyclic symmetry properties")."""
-    m = re.search(r"\b(\w+) cyclic symmetry properties", verbatim(COUNT_LINE))
-    if not m or m.group(1) not in _NUMBERS:
+    got = sentence("that fulfill {count:count} cyclic symmetry properties in their variables", verbatim(COUNT_LINE))
+    if got is None or got["count"] is None:
         raise LatexMathError(f"no count of symmetry properties in {verbatim(COUNT_LINE)!r}")
-    return _NUMBERS[m.group(1)]
+    return got["count"]
 
 
 __all__ = ["EXPLICIT_LINES", "RELATION_LINES", "parse", "bound", "half_angle_powers", "set_builders",

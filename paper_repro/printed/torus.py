@@ -21,12 +21,11 @@ cos(alpha/2)**2
 
 from __future__ import annotations
 
-import re
 from collections.abc import Callable
 
 import sympy
 
-from paper_repro.printed.latex_math import LatexMathError, parse_relation
+from paper_repro.printed.latex_math import LatexMathError, clean, parse_relation
 from paper_repro.printed.parsed import ALPHA, MU, VARRHO, exact_value, point_label
 from paper_repro.printed.parsed import expression as parse_expression
 
@@ -117,11 +116,11 @@ def coordinate_tex(line_id: str, axis: int) -> str:
     """The LaTeX of coordinate ``axis`` (0, 1, 2) of the printed point of ``line_id`` (for errata texts)."""
     from paper_repro.printed.lines import verbatim
 
-    tex = re.sub(r"%[^\n]*\n?", " ", verbatim(line_id))  # LaTeX comments (layout) out
-    begin, end = tex.find("{ccc}"), tex.find("\\end{array}")
-    if begin < 0 or end < begin:
+    arrays: list = []
+    clean(verbatim(line_id), arrays)  # the reader's cleaning: comments and layout out, the array's cells kept
+    if len(arrays) != 1 or len(arrays[0]) != 1 or len(arrays[0][0]) != 3:
         raise TorusReadError(f"not a printed control point row: {line_id}")
-    return " ".join(tex[begin + len("{ccc}"):end].split("&")[axis].split())
+    return " ".join(arrays[0][0][axis].split())
 
 
 # -- evaluation ------------------------------------------------------------------------------------------------

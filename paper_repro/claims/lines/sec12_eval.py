@@ -22,7 +22,6 @@ True
 
 from __future__ import annotations
 
-import re
 from collections.abc import Callable
 from functools import cache
 from math import comb
@@ -33,7 +32,7 @@ from flint import fmpq
 from sympy.core.function import AppliedUndef
 
 from paper_repro.core.univariate import c_numerator_by_expansion
-from paper_repro.printed.latex_math import LatexMathError
+from paper_repro.printed.latex_math import LatexMathError, prose
 
 
 @cache
@@ -160,11 +159,17 @@ def num(expr: sympy.Basic, env: dict, funcs: dict[str, Callable] | None = None):
 
 
 def sign_word(tex: str) -> tuple[str, Callable]:
-    """The sign the prose claims ("non-negative", "positive", "negative", ...) and its predicate."""
+    """The sign the prose claims ("non-negative", "positive", "negative", ...) and its predicate: a word of the
+    prose (:func:`~paper_repro.printed.latex_math.prose`, the ``$..$`` formulas set aside), punctuation stripped.
+
+    >>> sign_word("consist of non-negative functions")[0], sign_word("a $x>0$ positive, real")[0]
+    ('non-negative', 'positive')
+    """
+    words = {w.strip(".,;:()%") for w in prose(tex)[0].split()}
     for word, pred in (("non-negative", lambda x: x >= 0), ("nonnegative", lambda x: x >= 0),
                        ("non-positive", lambda x: x <= 0), ("positive", lambda x: x > 0),
                        ("negative", lambda x: x < 0)):
-        if re.search(rf"(?<![\w-]){word}\b", tex):
+        if word in words:
             return word, pred
     raise LatexMathError(f"no sign word in {tex[:60]!r}")
 

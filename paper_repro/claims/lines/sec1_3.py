@@ -699,8 +699,8 @@ def rgb_index_sets(override: dict[str, str] | None = None, n_max: int = 30) -> L
         for color, key in zip("RGB", INDEX_SET_LINES[:3]):
             if _member_labels(text[key]) != [(color, "2*n - i", "j", (0, 1, 2))]:
                 raise LatexMathError(f"{key}: the member is not {color}_{{2n,2n-i,j}}(u,v,w)")
-        leq = printed_sym.set_builders(text["sec1_3-R-leq-n"])
-        if not leq or printed_sym.label(leq[0][0]) != ("R", "2*n - i", "j", (0, 1, 2)):
+        _, leq = printed_sym.set_builders(text["sec1_3-R-leq-n"])
+        if not leq or printed_sym.label_of(leq[0][0]) != ("R", "2*n - i", "j", (0, 1, 2)):
             raise LatexMathError("sec1_3-R-leq-n: the left side is not R_{2n,2n-i,j}(u,v,w)")
     except (LatexMathError, ValueError) as exc:
         return _unread(how, exc, "exhaustive")
