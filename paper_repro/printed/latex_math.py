@@ -71,8 +71,8 @@ from lark.exceptions import LarkError, UnexpectedCharacters, UnexpectedEOF, Unex
 
 __all__ = ["LatexMathError", "Relation", "parse", "parse_relation", "parse_cases", "parse_vector", "index_set",
            "inline_math", "prose", "sentence", "NUMBER_WORDS", "evaluate_sums", "Term", "terms", "untagged",
-           "parse_conditions", "summands", "underset_marks", "clean", "D", "Family", "Cartesian", "Cases", "PM",
-           "Chain", "chain_relation"]
+           "parse_conditions", "summands", "underset_marks", "clean", "strip_comments", "D", "Family", "Cartesian",
+           "Cases", "PM", "Chain", "chain_relation"]
 
 
 class LatexMathError(ValueError):
@@ -177,6 +177,17 @@ def _decor(kind: str, inner: str) -> str:
     suffix = DECOR[kind]
     name = m.group(1) + suffix if suffix.startswith("_") else m.group(1) + suffix
     return f" @{name}@ "
+
+
+def strip_comments(tex: str) -> str:
+    r"""The LaTeX with its comments out (an unescaped ``%`` to the end of its line, line break included, becomes one
+    space), nothing else changed: for a text shown as printed (an erratum's cell), where :func:`clean` would also
+    drop ``\left``/``\right`` and the layout.
+
+    >>> strip_comments("\\left( u\\right) %\n& 50\\%")
+    '\\left( u\\right)  & 50\\%'
+    """
+    return re.sub(r"(?<!\\)%[^\n]*\n?", " ", tex)
 
 
 def clean(tex: str, arrays: list | None = None) -> str:

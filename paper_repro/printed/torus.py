@@ -25,7 +25,7 @@ from collections.abc import Callable
 
 import sympy
 
-from paper_repro.printed.latex_math import LatexMathError, clean, parse_relation
+from paper_repro.printed.latex_math import LatexMathError, clean, parse_relation, strip_comments
 from paper_repro.printed.parsed import ALPHA, MU, VARRHO, exact_value, point_label
 from paper_repro.printed.parsed import expression as parse_expression
 
@@ -113,14 +113,18 @@ def corrected_points() -> dict[str, tuple[str, int, sympy.Expr]]:
 
 
 def coordinate_tex(line_id: str, axis: int) -> str:
-    """The LaTeX of coordinate ``axis`` (0, 1, 2) of the printed point of ``line_id`` (for errata texts)."""
+    """The LaTeX of coordinate ``axis`` (0, 1, 2) of the printed point of ``line_id``, as printed (for errata
+    texts): the cell of the row's array, comments out (:func:`~paper_repro.printed.latex_math.strip_comments`); the
+    row must be one array row of three cells as the reader cleans it."""
     from paper_repro.printed.lines import verbatim
 
     arrays: list = []
-    clean(verbatim(line_id), arrays)  # the reader's cleaning: comments and layout out, the array's cells kept
-    if len(arrays) != 1 or len(arrays[0]) != 1 or len(arrays[0][0]) != 3:
+    clean(verbatim(line_id), arrays)  # the reader's cleaning: one array of one row of three cells
+    tex = strip_comments(verbatim(line_id))
+    begin, end = tex.find("{ccc}"), tex.find("\\end{array}")
+    if len(arrays) != 1 or len(arrays[0]) != 1 or len(arrays[0][0]) != 3 or begin < 0 or end < begin:
         raise TorusReadError(f"not a printed control point row: {line_id}")
-    return " ".join(arrays[0][0][axis].split())
+    return " ".join(tex[begin + len("{ccc}"):end].split("&")[axis].split())
 
 
 # -- evaluation ------------------------------------------------------------------------------------------------
