@@ -57,13 +57,16 @@ OPEN_QUESTIONS = [
      "steps; the observed 9n − 2 non-zeros per row of E (n ≤ 15)."),
     ("Beyond the paper (issue 38): midpoint subdivision and joins", ["subdivision_all_n", "joins_all_n"],
      "Proven for every n and α: the restriction to each midpoint sub-triangle is an order-n patch with parameter α/2, "
-     "net S_k P (docs/subdivision_for_all_n.md, a hand proof, not yet refereed cold); n = 1, 2: S_k in closed form "
+     "net S_k P (docs/subdivision_for_all_n.md, a hand proof, refereed cold); n = 1, 2: S_k in closed form "
      "for every α, with negative entries (not corner cutting); C0/C1/G1 joins with the point-reflected neighbour as "
      "linear conditions for every n, the edge coefficients in closed form (docs/joins_for_all_n.md); the "
      "torus and the cyclide pieces of Section 6 join C1 (exactly, at sampled rational α; the cyclide through its "
      "homogeneous nets). Proven for every n: a negative corner entry (Corollary W), so midpoint subdivision is "
      "not corner cutting; no Bézier-type de Casteljau step at the sampled α (exact certificates, n ≤ 4). "
-     "Adaptive tessellation within a tolerance, its bound proven (docs/tessellation.md). Measured only: "
+     "S_k is analytic and even at α = 0 for n ≤ 16 (an exact, computer-assisted check of Proposition 11.6's "
+     "condition; evidence beyond). Adaptive tessellation within a tolerance: the bound proven, and with "
+     "arith='ball' every rounding included (float64: measured rounding allowances; docs/tessellation.md). "
+     "Measured only: "
      "the rates at which sub-nets approach the patch (h² at the boundary, h inside at the layout positions). Still "
      "open: the remaining signs for n ≥ 3, the de Casteljau question at other α, proofs of the convergence rates."),
 ]
