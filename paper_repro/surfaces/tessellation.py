@@ -304,6 +304,22 @@ class _Leaves(NamedTuple):
     bound: np.ndarray   # M beta^2 / (4 r^2) = M l^2 / 8
 
 
+def _leaves_of_level(k: int, beta: float, m_bound: np.ndarray, tol: float, floats_per_node: int,
+                     leaf_resolution: int, max_depth: int, max_vertices: int) -> np.ndarray:
+    """Which nodes of tree level ``k`` (legs ``beta``, bounds ``m_bound``) are leaves: those whose unrounded step
+    need is at most ``leaf_resolution``, or all of them at ``max_depth`` or when the next level would hold more than
+    :data:`MAX_TREE_FLOATS` floats.  Refuses (``ValueError`` naming tol and max_vertices) a level whose grids would
+    need more than :data:`EARLY_REFUSAL` times ``max_vertices`` vertices.  The float and the ball/mp trees share it."""
+    need = _need(beta, m_bound, tol)
+    estimate = float(((need + 2) * (need + 3) / 2).sum())
+    if estimate > EARLY_REFUSAL * max_vertices:
+        raise ValueError(f"tol = {tol:.3g} needs about {estimate:.3g} vertices at depth {k} (the bound of this "
+                         f"level), far above max_vertices = {max_vertices}; raise tol (the count grows like 1/tol) "
+                         "or max_vertices")
+    last = k == max_depth or 4 * int((need > leaf_resolution).sum()) * floats_per_node > MAX_TREE_FLOATS
+    return np.ones(len(m_bound), dtype=bool) if last else need <= leaf_resolution
+
+
 def _tree(arr: np.ndarray, n: int, alpha: float, tol: float, leaf_resolution: int, max_depth: int,
           max_vertices: int) -> _Leaves:
     """Breadth-first subdivision: a node becomes a leaf when its unrounded grid step ``need`` is at most
@@ -329,14 +345,7 @@ def _tree(arr: np.ndarray, n: int, alpha: float, tol: float, leaf_resolution: in
                              f"(beta = alpha / 2^{k}; the derivative nets' scaling overflows float64, measured for "
                              f"alpha below about {FLOAT_ALPHA_FLOOR:g} for n = 1..6); use arith='ball' or a larger "
                              "alpha")
-        need = _need(beta, m_bound, tol)
-        estimate = float(((need + 2) * (need + 3) / 2).sum())
-        if estimate > EARLY_REFUSAL * max_vertices:
-            raise ValueError(f"tol = {tol:.3g} needs about {estimate:.3g} vertices at depth {k} (the bound of this "
-                             f"level), far above max_vertices = {max_vertices}; raise tol (the count grows like 1/tol) "
-                             "or max_vertices")
-        last = k == max_depth or 4 * int((need > leaf_resolution).sum()) * dn * dim > MAX_TREE_FLOATS
-        leaf = np.ones(len(nets), dtype=bool) if last else need <= leaf_resolution
+        leaf = _leaves_of_level(k, beta, m_bound, tol, dn * dim, leaf_resolution, max_depth, max_vertices)
         if leaf.any():
             r = steps_for(beta, m_bound[leaf], tol)
             out.append((np.full(int(leaf.sum()), k), a[leaf], b[leaf], sign[leaf], r,
@@ -847,14 +856,7 @@ def _tree_route(route: _Route, arr: np.ndarray, tol: float, leaf_resolution: int
             raise ValueError(f"alpha = {route.alpha_float!r}: the bound M of the second derivatives (about "
                              f"|P| / alpha^2) exceeds float64 at depth {k}; alpha must be above about 1e-152 times the "
                              "square root of the net's largest coordinate (a larger alpha or a smaller net)")
-        need = _need(beta, m_bound, tol)
-        estimate = float(((need + 2) * (need + 3) / 2).sum())
-        if estimate > EARLY_REFUSAL * max_vertices:
-            raise ValueError(f"tol = {tol:.3g} needs about {estimate:.3g} vertices at depth {k} (the bound of this "
-                             f"level), far above max_vertices = {max_vertices}; raise tol (the count grows like 1/tol) "
-                             "or max_vertices")
-        last = k == max_depth or 4 * int((need > leaf_resolution).sum()) * dn * dim > MAX_TREE_FLOATS
-        leaf = np.ones(nets.shape[1], dtype=bool) if last else need <= leaf_resolution
+        leaf = _leaves_of_level(k, beta, m_bound, tol, dn * dim, leaf_resolution, max_depth, max_vertices)
         if leaf.any():
             r, bnd = route.steps(k, m_bound[leaf], tol)
             out.append((np.full(int(leaf.sum()), k), a[leaf], b[leaf], sign[leaf], r, bnd))
