@@ -1496,11 +1496,12 @@ def prose(tex: str) -> tuple[str, list[str]]:
 
 #: Number words of the paper's prose (``{name:count}`` of :func:`sentence` reads them, and digits).
 NUMBER_WORDS = {"zero": 0, "one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7, "eight": 8,
-                "nine": 9, "ten": 10, "eleven": 11, "twelve": 12}
+                "nine": 9, "ten": 10, "eleven": 11, "twelve": 12, "sixteen": 16, "twenty-four": 24, "thirty-two": 32,
+                "sixty-four": 64}
 #: a slot ``{name[:kind]}``, ``...`` or literal ``$..$``; a brace right after a letter is the argument of a LaTeX
 #: command (``\ref{label}``, ``\emph{a}``), literal text of the template, not a slot
 _SLOT = re.compile(r"(?<![A-Za-z])\{(\w+)(?::(\w+))?\}|\.\.\.|(?<!\\)\$(.+?)(?<!\\)\$", flags=re.S)
-_SLOT_PATTERNS = {"math": "\x00(\\d+)\x00", "word": r"([\w'-]+)", "words": r"(.+?)", "count": r"([\w]+)",
+_SLOT_PATTERNS = {"math": "\x00(\\d+)\x00", "word": r"([\w'-]+)", "words": r"(.+?)", "count": r"([\w-]+)",
                   "number": r"(\d+)"}
 _MARK = re.compile("\x00(\\d+)\x00")
 

@@ -908,10 +908,6 @@ def b2_classes(b: int, restrict_r_le_g: bool) -> set:
             if class_key((r, g, b)) in new and (not restrict_r_le_g or r <= g)}
 
 
-NUMBER_WORDS = {"one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7, "eight": 8, "nine": 9,
-                "ten": 10, "sixteen": 16}
-
-
 @line_check("sec4_5-b2-three-classes")
 def check_b2() -> LineResult:
     """The printed value of b, the count (a word) and the family {[gv+2w]}_{g=0}^{2} are read; printed: they are all

@@ -1710,9 +1710,6 @@ def dupin_homogeneous(a, b2, c, mu, phi, psi, upper: bool = False, alpha: Ration
     return surface
 
 
-NUMBER_WORDS = {"eight": 8, "twelve": 12, "sixteen": 16, "twenty-four": 24, "thirty-two": 32, "sixty-four": 64}
-
-
 def dupin_count_holds(tex: str | None) -> tuple[bool, dict]:
     """The count and order of "by means of sixteen smoothly joined second order rational ... patches" (read from
     ``tex``) against the count of triangles needed to triangulate the cyclide: the phase torus (the square of the
@@ -1721,11 +1718,11 @@ def dupin_count_holds(tex: str | None) -> tuple[bool, dict]:
     squares."""
     from paper_repro.printed.parsed import ALPHA, U, V
 
-    m = sentence("by means of {count:word} smoothly joined {order:word} order rational triangular trigonometric "
+    m = sentence("by means of {count:count} smoothly joined {order:word} order rational triangular trigonometric "
                  "patches,", tex or "")
-    if not m or m["count"] not in NUMBER_WORDS or m["order"] not in ORDINALS:
+    if not m or m["count"] is None or m["order"] not in ORDINALS:
         return False, {"unread": (tex or "")[:60]}
-    count, n = NUMBER_WORDS[m["count"]], ORDINALS[m["order"]]
+    count, n = m["count"], ORDINALS[m["order"]]
     from paper_repro.printed import latex_math as LM
 
     settings = {}  # the caption's settings: each $..$ segment 'name = value', read by the one reader
