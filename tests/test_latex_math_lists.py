@@ -221,3 +221,14 @@ def test_sentence_takes_a_control_words_argument_literally():
     assert sentence(r"as in Figure \ref{{label:word}} and (\emph{a}) for {n}", line) is None  # ':' is not a word char
     assert sentence(r"as in Figure \ref{fig:{label:word}} and (\emph{a}) for {n}", line) == {"label": "limit",
                                                                                            "n": "n=1"}
+
+
+def test_sentence_and_strip_comments_refuse_what_is_not_text():
+    from paper_repro.printed.latex_math import sentence, strip_comments
+
+    with pytest.raises(TypeError, match="template must be a str"):
+        sentence(None, "x")
+    with pytest.raises(TypeError, match="tex must be a str"):
+        sentence("x", b"x")
+    with pytest.raises(TypeError, match="tex must be a str"):
+        strip_comments(None)

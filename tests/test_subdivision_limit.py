@@ -195,3 +195,21 @@ def test_order_one_numerators_every_part(part):
     for kp in (np.cos(0.3), np.cos(0.01), np.cos(0.7)):
         r1 = np.array([[float(num[g][h](kp)) / (2 * kp) ** int(e[h]) for h in range(7)] for g in range(7)])
         assert np.abs(r1 - order_one_restriction(part, kp, 1 - kp * kp)).max() < 1e-14
+
+
+@pytest.mark.parametrize("call, exc, words", [
+    (lambda L: L.limit_check(0), ValueError, "n must"),
+    (lambda L: L.limit_check(21), ValueError, "n must"),
+    (lambda L: L.limit_check(2.0), TypeError, "n must"),
+    (lambda L: L.limit_check(1, terms=0), ValueError, "terms"),
+    (lambda L: L.numerators(1, "x"), ValueError, "part must"),
+    (lambda L: L.exact_matrices_at(1, 0.8), TypeError, "x0 must"),
+    (lambda L: L.exact_matrices_at(1, fmpq(1, 2)), ValueError, "x0 = cos"),   # below cos(pi/4)
+    (lambda L: L.exact_matrices_at(1, 1), ValueError, "x0 = cos"),            # alpha = 0
+    (lambda L: L.even_in_x(None), TypeError, "n must"),
+])
+def test_hostile_input_is_refused_naming_the_parameter(call, exc, words):
+    from paper_repro.theory import subdivision_limit as L
+
+    with pytest.raises(exc, match=words):
+        call(L)

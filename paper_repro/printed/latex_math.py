@@ -187,6 +187,8 @@ def strip_comments(tex: str) -> str:
     >>> strip_comments("\\left( u\\right) %\n& 50\\%")
     '\\left( u\\right)  & 50\\%'
     """
+    if not isinstance(tex, str):
+        raise TypeError(f"tex must be a str, got {type(tex).__name__}")
     return re.sub(r"(?<!\\)%[^\n]*\n?", " ", tex)
 
 
@@ -1584,6 +1586,9 @@ def sentence(template: str, tex: str, *, search: bool = False) -> dict[str, Any]
     >>> sentence("is {w:word}", "is non-negative.") is None, sentence("is {w:word}.", "is non-negative.")
     (True, {'w': 'non-negative'})
     """
+    for name, val in (("template", template), ("tex", tex)):
+        if not isinstance(val, str):
+            raise TypeError(f"{name} must be a str, got {type(val).__name__}")
     words, segs = prose(tex)
     k = iter(range(len(segs)))
     marked = re.sub(r"\$\$", lambda _m: f"\x00{next(k)}\x00", words)

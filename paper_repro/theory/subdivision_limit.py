@@ -58,6 +58,7 @@ from paper_repro.core.labels import check_n, delta, exponent_matrix
 from paper_repro.core.normalization import orbits
 from paper_repro.core.normalizing_formula import scaled_table
 from paper_repro.core.subdivision_products import PARTS, _level_terms, factorization
+from paper_repro.util.limits import check_int
 
 #: X = cos(alpha/4) and t = X - 1 as integer polynomials.
 X_POLY = fmpz_poly([0, 1])
@@ -234,9 +235,11 @@ def numerators(n: int, part: str, terms: int | None = None) -> tuple[list, int]:
     """``(coeffs, N)``: the numerator N_n^part (delta_n x delta_n) as N coefficient matrices (``fmpz_mat`` or None
     for zero) in t = X - 1, all columns; N = ``terms`` or, for None, one more than :func:`degree_bound` (then the
     polynomials are complete).  Column f of R_n^part is (2X)^{-E(f)} times column f of the numerator."""
-    n = check_n(n)
+    n = _check_n_limit(n)
+    if part not in PARTS:
+        raise ValueError(f"part must be one of {list(PARTS)}, got {part!r}")
     full = terms is None
-    terms = degree_bound(n, part) + 1 if full else int(terms)
+    terms = degree_bound(n, part) + 1 if full else check_int(terms, "terms", 1, 64, why="powers of t = X - 1 kept")
     n1 = order_one_numerators(part)
     n1_shift = [[None if n1[h][g] == 0 else n1[h][g] for g in range(7)] for h in range(7)]
     start = np.zeros((terms, 7, 7), dtype=object)
@@ -276,7 +279,7 @@ def level_forms_equal_proof_code(n: int) -> bool:
     >>> level_forms_equal_proof_code(3)
     True
     """
-    n = check_n(n)
+    n = _check_n_limit(n)
     for k in range(2, n + 1):
         forms = [merge(product_terms(k - 1, h)) for h in range(7)]
         cat = [np.concatenate([f[i] for f in forms]) for i in range(5)]
@@ -316,10 +319,35 @@ def rows_where_xi_half_vanishes(n: int) -> list[int]:
 
 
 # --- exact matrices at a value of X -----------------------------------------------------------------------------------
+#: Largest order the exact routines take: measured CPU (tools/subdivision_pole_check.py) 24 s at n = 13 and 92 s at
+#: n = 16, growing about like n^5, so n = 20 is about 5 min; beyond that the integer matrices' conversions dominate.
+MAX_N_LIMIT = 20
+
+
+def _check_n_limit(n: object) -> int:
+    return check_int(check_n(n), "n", 1, MAX_N_LIMIT, why="exact polynomial route: about 92 s CPU at n = 16, "
+                     "growing like n^5")
+
+
+def _check_x0(x0: object) -> fmpq:
+    """``x0`` as an exact rational in (cos(pi/4), 1): an int, ``Fraction`` or ``fmpq`` (a float is refused: it is
+    not the exact value it prints)."""
+    from fractions import Fraction
+
+    if isinstance(x0, bool) or not isinstance(x0, (int, Fraction, fmpq)):
+        raise TypeError(f"x0 must be an exact rational (int, Fraction or fmpq), got {x0!r} of type "
+                        f"{type(x0).__name__}")
+    q = fmpq(x0.numerator, x0.denominator) if isinstance(x0, Fraction) else fmpq(x0)
+    if not (q > 0 and 2 * q * q > 1 and q < 1):
+        raise ValueError(f"x0 = cos(alpha/4) must lie in (cos(pi/4), 1) for alpha in (0, pi), got {x0}")
+    return q
+
+
 def exact_matrices_at(n: int, x0) -> tuple[np.ndarray, ...]:
     """The four S_k (object arrays of ``fmpq``, order of :data:`PARTS`) at X = cos(alpha/4) = ``x0`` (rational, in
     (cos(pi/4), 1)), from the complete numerator polynomials (``terms=None``) and xi, xi' evaluated there."""
-    x0 = fmpq(x0)
+    n = _check_n_limit(n)
+    x0 = _check_x0(x0)
     t0 = x0 - 1
     d = delta(n)
     xi0 = [p(x0) for p in scaled_xi(n, False)]
@@ -352,7 +380,7 @@ def even_in_x(n: int) -> dict[str, int]:
     >>> even_in_x(1)
     {'u': 0, 'v': 0, 'w': 0, 'middle': 0}
     """
-    n = check_n(n)
+    n = _check_n_limit(n)
     d = delta(n)
     x = fmpq_poly([0, 1])
     back = fmpz_poly([-1, 1])  # t = X - 1
@@ -411,7 +439,7 @@ def limit_check(n: int, terms: int | None = None) -> LimitResult:
     """Decide, for every entry of the four S_k of order n, whether its rational function of X = cos(alpha/4) has a
     pole at X = 1, and compute S_k(1) and dS_k/dX(1) exactly (module docstring).  ``terms``: N (default: the
     smallest that decides, max ord xi'_g + 2)."""
-    n = check_n(n)
+    n = _check_n_limit(n)
     start = time.perf_counter()
     d = delta(n)
     xi1 = scaled_xi(n, True)
@@ -419,7 +447,7 @@ def limit_check(n: int, terms: int | None = None) -> LimitResult:
     o1 = [_order(shifted(p, p.degree() + 1)) for p in xi1]
     o0 = [_order(shifted(p, p.degree() + 1)) for p in xi0]
     need = max(o1) + 2
-    terms = need if terms is None else max(int(terms), need)
+    terms = need if terms is None else max(check_int(terms, "terms", 1, 64, why="powers of t = X - 1 kept"), need)
     s1 = [shifted(p, terms) for p in xi1]
     s0 = [shifted(p, terms) for p in xi0]
     e = sine_degree(n)
