@@ -294,7 +294,7 @@ def test_proof_pages_render_their_formulas_as_math(tmp_path):
     assert proc.returncode == 0, proc.stderr[-3000:]
     pages = [md for md in sorted(DOCS.glob("*.md")) if md.name != "index.md"]
     assert {"question1_for_all_n.md", "limit_for_all_n.md"} <= {p.name for p in pages}
-    plain = re.compile(r"(?<![A-Za-z])[A-Za-zα-ωΩΔ][′']*_(?:\{|[A-Za-z0-9](?![a-z]))|\^[{(0-9A-Za-zα-ω]")
+    plain = re.compile(r"(?<![A-Za-z])[A-Za-zα-ωΩΔ][′']*_(?:\{|[A-Za-z0-9](?![a-z]))|\^[{(0-9A-Za-zα-ω−]")
     for md in pages:
         parser = _Text()
         parser.feed((out / md.with_suffix(".html").name).read_text(encoding="utf-8"))
